@@ -1,0 +1,52 @@
+//! The one error type of the core. `src/py/errors.rs` is the only place that turns it into
+//! Python exceptions, so every failure reaches Python as a specific, documented exception.
+
+/// Every way a core operation can fail.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum Error {
+    /// An argument has the right type but an unusable value (shape, NaN, empty, unknown name).
+    /// Becomes `ValueError`.
+    #[error("{arg}: {reason}")]
+    InvalidValue { arg: String, reason: String },
+
+    /// An index argument points outside the array it indexes. Becomes `IndexError`.
+    #[error("{arg}: {reason}")]
+    IndexOutOfRange { arg: String, reason: String },
+
+    /// An argument has an unsupported type or dtype. Becomes `TypeError`.
+    #[error("{arg}: {reason}")]
+    WrongType { arg: String, reason: String },
+
+    /// An iterative solver stopped before reaching its tolerance. Becomes `toonmesh.ConvergenceError`.
+    #[error("{0}")]
+    NotConverged(String),
+
+    /// No GPU adapter (hardware or software) could be found. Becomes `toonmesh.GpuUnavailableError`.
+    #[error("{0}")]
+    NoAdapter(String),
+
+    /// The GPU device failed while working (out of memory, device lost, validation).
+    /// Becomes `toonmesh.GpuError`.
+    #[error("{0}")]
+    Gpu(String),
+
+    /// A bug in toonmesh (for example a caught panic). Becomes `RuntimeError`.
+    #[error("internal error: {0}")]
+    Internal(String),
+}
+
+impl Error {
+    pub fn invalid(arg: impl Into<String>, reason: impl Into<String>) -> Self {
+        Error::InvalidValue { arg: arg.into(), reason: reason.into() }
+    }
+
+    pub fn out_of_range(arg: impl Into<String>, reason: impl Into<String>) -> Self {
+        Error::IndexOutOfRange { arg: arg.into(), reason: reason.into() }
+    }
+
+    pub fn wrong_type(arg: impl Into<String>, reason: impl Into<String>) -> Self {
+        Error::WrongType { arg: arg.into(), reason: reason.into() }
+    }
+}
+
+pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -1,0 +1,92 @@
+//! The thread pool every parallel routine runs in.
+//!
+//! A private pool rather than rayon's global one, for two reasons: the thread count can be
+//! changed at run time (`set_num_threads`), and a process forked after the pool started gets a
+//! fresh pool instead of waiting forever on threads that the fork did not copy.
+//! Results never depend on the thread count: work is split by fixed chunk sizes and partial sums
+//! are combined in a fixed order.
+
+use std::sync::{Arc, Mutex};
+
+use rayon::ThreadPool;
+
+struct PoolState {
+    pid: u32,
+    threads: usize,
+    pool: Arc<ThreadPool>,
+}
+
+static POOL: Mutex<Option<PoolState>> = Mutex::new(None);
+static REQUESTED: Mutex<Option<usize>> = Mutex::new(None);
+
+fn default_threads() -> usize {
+    if let Some(n) = std::env::var("TOONMESH_NUM_THREADS").ok().and_then(|s| s.parse::<usize>().ok()) {
+        if n > 0 {
+            return n;
+        }
+    }
+    std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1)
+}
+
+/// The pool for this process, created on first use (and again in a forked child).
+pub fn pool() -> Arc<ThreadPool> {
+    let pid = std::process::id();
+    let mut guard = POOL.lock().unwrap_or_else(|e| e.into_inner());
+    let wanted = REQUESTED.lock().unwrap_or_else(|e| e.into_inner()).unwrap_or_else(default_threads);
+    match guard.as_ref() {
+        Some(s) if s.pid == pid && s.threads == wanted => return s.pool.clone(),
+        Some(s) if s.pid != pid => {
+            // The parent's worker threads do not exist in a forked child: dropping the pool
+            // would wait for them, so it is leaked instead.
+            std::mem::forget(guard.take());
+        }
+        _ => {}
+    }
+    let pool = Arc::new(
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(wanted)
+            .thread_name(|i| format!("toonmesh-{i}"))
+            .build()
+            .expect("building a thread pool"),
+    );
+    *guard = Some(PoolState { pid, threads: wanted, pool: pool.clone() });
+    pool
+}
+
+/// Sets the number of worker threads (0 restores the default: `TOONMESH_NUM_THREADS` or the
+/// number of cores).
+pub fn set_num_threads(n: usize) {
+    *REQUESTED.lock().unwrap_or_else(|e| e.into_inner()) = if n == 0 { None } else { Some(n) };
+}
+
+/// The number of worker threads the next parallel call will use.
+pub fn num_threads() -> usize {
+    REQUESTED.lock().unwrap_or_else(|e| e.into_inner()).unwrap_or_else(default_threads)
+}
+
+/// Runs `f` inside the pool.
+pub fn install<R: Send>(f: impl FnOnce() -> R + Send) -> R {
+    pool().install(f)
+}
+
+/// Fixed chunk length for deterministic parallel reductions.
+pub const REDUCE_CHUNK: usize = 4096;
+
+/// Sums `f(i)` for i in 0..n in fixed chunks, combined in order: the same bits for any
+/// thread count.
+pub fn deterministic_sum(n: usize, f: impl Fn(usize) -> f64 + Sync) -> f64 {
+    use rayon::prelude::*;
+    let chunks = n.div_ceil(REDUCE_CHUNK);
+    let partial: Vec<f64> = (0..chunks)
+        .into_par_iter()
+        .map(|c| {
+            let end = ((c + 1) * REDUCE_CHUNK).min(n);
+            let mut s = 0.0;
+            for i in c * REDUCE_CHUNK..end {
+                s += f(i);
+            }
+            s
+        })
+        .collect();
+    partial.iter().sum()
+}

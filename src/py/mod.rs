@@ -1,0 +1,18 @@
+//! PyO3 glue: NumPy in and out, argument checks, GIL release, error mapping.
+
+mod convert;
+mod errors;
+mod runtime;
+mod shapes;
+mod smooth;
+
+use pyo3::prelude::*;
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    errors::register(m)?;
+    runtime::register(m)?;
+    shapes::register(m)?;
+    smooth::register(m)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

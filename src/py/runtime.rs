@@ -1,0 +1,41 @@
+//! Running core work from Python: outside the GIL, inside the thread pool, with panics caught
+//! so that none reaches Python.
+
+use pyo3::prelude::*;
+
+use super::errors::to_py;
+use crate::error::{Error, Result};
+use crate::parallel;
+
+/// Runs `work` with the GIL released and maps its error (or a panic) to a Python exception.
+pub fn detached<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
+    py.detach(|| {
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| parallel::install(work))).unwrap_or_else(|p| {
+            let what = p
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| p.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            Err(Error::Internal(what))
+        })
+    })
+    .map_err(to_py)
+}
+
+/// set_num_threads(n: int) -> None
+#[pyfunction]
+fn set_num_threads(n: usize) {
+    parallel::set_num_threads(n);
+}
+
+/// get_num_threads() -> int
+#[pyfunction]
+fn get_num_threads() -> usize {
+    parallel::num_threads()
+}
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(set_num_threads, m)?)?;
+    m.add_function(wrap_pyfunction!(get_num_threads, m)?)?;
+    Ok(())
+}

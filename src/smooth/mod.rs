@@ -1,0 +1,1 @@
+//! Mesh smoothing: Laplacian (uniform, cotangent, inverse distance), Taubin, HC and implicit.
