@@ -1,0 +1,33 @@
+"""Mesh input shared by every public function: (V, F) arrays or a ``trimesh.Trimesh``."""
+
+from __future__ import annotations
+
+from typing import Any, Optional, Tuple
+
+import numpy as np
+
+
+def mesh_arrays(vertices: Any, faces: Optional[Any]) -> Tuple[np.ndarray, np.ndarray]:
+    """Returns (V, F) as NumPy arrays without copying or modifying the caller's data.
+
+    ``vertices`` may be an (N, 3) array-like, or a ``trimesh.Trimesh`` when ``faces`` is None
+    (its ``vertices`` and ``faces`` are read, never changed). Dtype, shape, finiteness and index
+    checks happen in the core, which raises ``TypeError``/``ValueError``/``IndexError`` naming
+    the argument.
+    """
+    if faces is None:
+        if hasattr(vertices, "vertices") and hasattr(vertices, "faces"):
+            return np.asarray(vertices.vertices), np.asarray(vertices.faces)
+        raise TypeError("faces: required unless vertices is a trimesh.Trimesh")
+    return _as_array("vertices", vertices), _as_array("faces", faces)
+
+
+def _as_array(name: str, value: Any) -> np.ndarray:
+    if isinstance(value, np.ndarray):
+        return value
+    if hasattr(value, "vertices") and hasattr(value, "faces"):
+        raise TypeError(f"{name}: pass a trimesh.Trimesh alone, as the first argument")
+    try:
+        return np.asarray(value)
+    except Exception as exc:  # ragged lists and other non-arrays
+        raise TypeError(f"{name}: cannot be read as an array ({exc})") from None
