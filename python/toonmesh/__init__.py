@@ -1,5 +1,6 @@
 """toonmesh: mesh smoothing, outline extraction and headless toon rendering, on NumPy arrays."""
 
+from toonmesh import smooth
 from toonmesh._core import (
     ConvergenceError,
     GpuError,
@@ -10,6 +11,7 @@ from toonmesh._core import (
 )
 
 __all__ = [
+    "smooth",
     "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",

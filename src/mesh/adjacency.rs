@@ -5,7 +5,7 @@
 //! (`edge_faces[s]`: 1 on a boundary, 2 on a manifold interior edge, 3+ on a non-manifold edge)
 //! and the third vertex of each of those faces (`opposite[opp_offsets[s]..opp_offsets[s+1]]`),
 //! which is what cotangent weights need. Faces with a repeated index contribute only their
-//! non-degenerate edges.
+//! non-degenerate edges; their self-edges (a, a) are only counted, in `self_edges`.
 
 use rayon::prelude::*;
 
@@ -19,21 +19,29 @@ pub struct Adjacency {
     pub edge_faces: Vec<u32>,
     pub opp_offsets: Vec<u32>,
     pub opposite: Vec<u32>,
+    /// Per vertex: how many face-edges (a, a) of degenerate faces start and end at it.
+    pub self_edges: Vec<u32>,
 }
 
 impl Adjacency {
     pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Adjacency> {
         if faces.len() > (u32::MAX as usize) / 6 {
-            return Err(Error::invalid("faces", format!("{} faces is more than toonmesh supports", faces.len())));
+            return Err(Error::invalid(
+                "faces",
+                format!("{} faces is more than toonmesh supports", faces.len()),
+            ));
         }
         // Each face-edge {a, b} with opposite corner c appears once from a and once from b.
         let mut count = vec![0u32; n_vertices + 1];
+        let mut self_edges = vec![0u32; n_vertices];
         for f in faces {
             for j in 0..3 {
                 let (a, b) = (f[j], f[(j + 1) % 3]);
                 if a != b {
                     count[a as usize] += 1;
                     count[b as usize] += 1;
+                } else {
+                    self_edges[a as usize] += 1;
                 }
             }
         }
@@ -96,7 +104,14 @@ impl Adjacency {
         }
         opp_offsets.push(entries.len() as u32);
         let opposite = entries.into_iter().map(|(_, c)| c).collect();
-        Ok(Adjacency { offsets, nbrs, edge_faces, opp_offsets, opposite })
+        Ok(Adjacency {
+            offsets,
+            nbrs,
+            edge_faces,
+            opp_offsets,
+            opposite,
+            self_edges,
+        })
     }
 
     pub fn n_vertices(&self) -> usize {
@@ -120,12 +135,16 @@ impl Adjacency {
 
     /// Per vertex: does it lie on an edge with exactly one face?
     pub fn boundary_vertices(&self) -> Vec<bool> {
-        (0..self.n_vertices()).map(|i| self.slots(i).any(|s| self.edge_faces[s] == 1)).collect()
+        (0..self.n_vertices())
+            .map(|i| self.slots(i).any(|s| self.edge_faces[s] == 1))
+            .collect()
     }
 
     /// Per vertex: is it used by any non-degenerate face-edge?
     pub fn referenced(&self) -> Vec<bool> {
-        (0..self.n_vertices()).map(|i| self.offsets[i + 1] > self.offsets[i]).collect()
+        (0..self.n_vertices())
+            .map(|i| self.offsets[i + 1] > self.offsets[i])
+            .collect()
     }
 }
 
@@ -152,5 +171,6 @@ mod tests {
         assert_eq!(a.neighbours(0), &[1]);
         assert_eq!(a.edge_faces[a.slots(0).start], 2);
         assert_eq!(a.neighbours(2), &[] as &[u32]);
+        assert_eq!(a.self_edges, vec![1, 0, 0]);
     }
 }

@@ -1,0 +1,238 @@
+"""Mesh smoothing: Laplacian, Taubin, HC and implicit, with trimesh/pymeshlab presets.
+
+Every function takes ``(vertices, faces)`` or a ``trimesh.Trimesh`` (read, never modified) and
+returns a new ``(N, 3)`` array of the input's float dtype (float32 in, float32 out; float64 in,
+float64 out). Units are those of the input coordinates. The work runs in parallel outside the
+GIL and gives the same bits for any thread count (see :func:`toonmesh.set_num_threads`).
+
+Without a preset (the default) the behaviour is the clean one: each vertex is averaged over its
+distinct edge-neighbours with rows that sum to one, boundaries are handled as asked, and
+vertices that no face uses stay where they are. Presets reproduce other libraries, quirks
+included:
+
+``preset="trimesh"``
+    trimesh's ``filter_laplacian`` / ``filter_taubin`` / ``filter_humphrey`` (operator from
+    directed half-edges, so boundary and duplicate-face vertices drift toward the origin as they
+    do there; volume constraint on by default; Taubin counts passes, not pairs).
+``preset="pymeshlab"``
+    pymeshlab's ``apply_coord_laplacian_smoothing`` (cotangent weights and 3 steps by default),
+    ``apply_coord_taubin_smoothing`` and ``apply_coord_hc_laplacian_smoothing`` (one step per
+    iteration; the default is 1, like one call).
+``preset="paper"``
+    Al-Rousan et al. 2016: every vertex moves to the plain mean of its neighbours
+    (``laplacian`` only; ``lamb=1``, boundaries free).
+
+An argument a preset does not have (say ``boundary`` with ``preset="trimesh"``) raises
+``ValueError`` instead of being ignored.
+
+Degenerate input stays finite. Cotangent weights use ``cot = cos / max(sin, 1e-4)`` per corner
+(``|cot| <= 1e4``), a corner with a zero-length side adds nothing, an edge's weight is clamped at
+zero, and a vertex whose weights sum to zero falls back to uniform weights: every step is then a
+convex combination of neighbours and no vertex leaves the input's bounding box.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Optional
+
+import numpy as np
+import numpy.typing as npt
+
+from toonmesh import _core
+from toonmesh._input import mesh_arrays
+
+__all__ = ["laplacian", "taubin", "hc", "implicit"]
+
+_COMMON = """
+    Parameters shared by every smoothing function
+    ----------------------------------------------
+    vertices : (N, 3) float32 or float64 array, or trimesh.Trimesh
+        Vertex positions, any memory order. With a Trimesh, leave ``faces`` as None.
+    faces : (M, 3) int32, int64 or uint32 array
+        Triangles as vertex indices. Degenerate, duplicate, flipped and non-manifold faces are
+        allowed; vertices no face uses stay where they are (except under ``preset="trimesh"``).
+    pinned : 1-D integer array of vertex indices, or (N,) bool mask, optional
+        Vertices that must not move.
+    preset : None, "trimesh", "pymeshlab" or "paper"
+        Reproduce another library's filter (see the module docs). Default None.
+
+    Returns
+    -------
+    (N, 3) ndarray of the input's float dtype: a new array.
+
+    Raises
+    ------
+    TypeError
+        A wrong dtype (positions must be float32/float64, faces int32/int64/uint32).
+    ValueError
+        A wrong shape, NaN or inf, an empty mesh, an unknown option or one the preset lacks.
+    IndexError
+        A face or pinned index outside ``[0, N)``.
+"""
+
+
+def _call(method: str, vertices: Any, faces: Any, **kwargs: Any) -> npt.NDArray[np.floating[Any]]:
+    V, F = mesh_arrays(vertices, faces)
+    return _core._smooth(method, V, F, **kwargs)  # type: ignore[no-any-return]
+
+
+def laplacian(
+    vertices: Any,
+    faces: Any = None,
+    *,
+    iterations: Optional[int] = None,
+    lamb: Optional[float] = None,
+    weights: Optional[str] = None,
+    boundary: Optional[str] = None,
+    pinned: Optional[Any] = None,
+    volume_constraint: Optional[bool] = None,
+    preset: Optional[str] = None,
+) -> npt.NDArray[np.floating[Any]]:
+    """Explicit Laplacian smoothing: ``x <- x + lamb * (A x - x)``, repeated.
+
+    ``A x`` is the weighted mean of each vertex's neighbours.
+
+    Parameters
+    ----------
+    iterations : int, default 10 (pymeshlab preset: 3)
+        Number of steps (>= 0).
+    lamb : float in [0, 1], default 0.5 (paper preset: 1.0)
+        Step size; 1 moves each vertex all the way to its neighbours' mean. Not used by the
+        pymeshlab preset, whose update is ``(x + S) / (C + 1)``.
+    weights : "uniform", "cotangent" or "distance", default "uniform" (pymeshlab: "cotangent")
+        Neighbour weights. Cotangent and inverse-distance weights are recomputed from the
+        current positions at each step (trimesh's inverse-distance weights are computed once,
+        as trimesh does).
+    boundary : "fixed", "free" or "slide", default "fixed" (pymeshlab: "slide")
+        What vertices on a boundary edge (an edge with one face) do: stay put, average like
+        interior vertices, or average only with their boundary neighbours (sliding along the
+        boundary; pymeshlab's ``boundary=True``).
+    volume_constraint : bool, default False (trimesh preset: True)
+        After each step, rescale about the initial centre of mass to restore the enclosed
+        volume. Skipped on meshes that enclose no volume.
+    """
+    return _call(
+        "laplacian", vertices, faces, iterations=iterations, lamb=lamb, weights=weights,
+        boundary=boundary, pinned=pinned, volume_constraint=volume_constraint, preset=preset,
+    )
+
+
+def taubin(
+    vertices: Any,
+    faces: Any = None,
+    *,
+    iterations: Optional[int] = None,
+    lamb: Optional[float] = None,
+    mu: Optional[float] = None,
+    weights: Optional[str] = None,
+    boundary: Optional[str] = None,
+    pinned: Optional[Any] = None,
+    preset: Optional[str] = None,
+) -> npt.NDArray[np.floating[Any]]:
+    """Taubin (lambda/mu) smoothing, which removes noise without shrinking the mesh.
+
+    Each iteration is a shrink step ``x += lamb (A x - x)`` then an inflate step
+    ``x += mu (A x - x)`` (so 10 iterations are 20 passes, as in pymeshlab and open3d). With
+    ``preset="trimesh"``, ``iterations`` counts passes instead: even passes shrink, odd passes
+    inflate, and ``mu`` defaults to -0.5 (trimesh's ``nu=0.5``).
+
+    Parameters
+    ----------
+    iterations : int, default 10
+    lamb : float in [0, 1], default 0.5
+    mu : float in [-1, 0], default -0.53 (trimesh preset: -0.5)
+        Inflate factor; pymeshlab stores both factors as float32, and so does its preset.
+    weights, boundary
+        As in :func:`laplacian` (pymeshlab and trimesh presets: uniform only).
+    """
+    return _call(
+        "taubin", vertices, faces, iterations=iterations, lamb=lamb, mu=mu, weights=weights,
+        boundary=boundary, pinned=pinned, preset=preset,
+    )
+
+
+def hc(
+    vertices: Any,
+    faces: Any = None,
+    *,
+    iterations: Optional[int] = None,
+    alpha: Optional[float] = None,
+    beta: Optional[float] = None,
+    weights: Optional[str] = None,
+    boundary: Optional[str] = None,
+    pinned: Optional[Any] = None,
+    preset: Optional[str] = None,
+) -> npt.NDArray[np.floating[Any]]:
+    """HC smoothing (Vollmer, Mencl and Mueller 1999): Laplacian smoothing that pushes each
+    vertex back toward its original and previous positions, so the mesh does not shrink.
+
+    Per iteration, with ``o`` the original positions::
+
+        p = A x
+        b = p - (alpha o + (1 - alpha) x)
+        x <- p - (beta b + (1 - beta) A b)
+
+    ``preset="pymeshlab"`` reproduces ``apply_coord_hc_laplacian_smoothing`` instead (no alpha,
+    beta fixed at 0.5, ``x <- q - beta (q - x) + (1 - beta) A (q - x)`` with ``q = A x``; one
+    iteration is one call, and the default is 1).
+
+    Parameters
+    ----------
+    iterations : int, default 10 (pymeshlab preset: 1)
+    alpha : float in [0, 1], default 0.1
+        Pull toward the original positions.
+    beta : float in [0, 1], default 0.5
+        How much of the correction is the vertex's own versus its neighbours' mean.
+    weights, boundary
+        As in :func:`laplacian`.
+    """
+    return _call(
+        "hc", vertices, faces, iterations=iterations, alpha=alpha, beta=beta, weights=weights,
+        boundary=boundary, pinned=pinned, preset=preset,
+    )
+
+
+def implicit(
+    vertices: Any,
+    faces: Any = None,
+    *,
+    step: Optional[float] = None,
+    iterations: Optional[int] = None,
+    tol: Optional[float] = None,
+    max_iter: Optional[int] = None,
+    weights: Optional[str] = None,
+    boundary: Optional[str] = None,
+    pinned: Optional[Any] = None,
+    volume_constraint: Optional[bool] = None,
+    preset: Optional[str] = None,
+) -> npt.NDArray[np.floating[Any]]:
+    """Implicit (backward Euler) Laplacian smoothing: solves ``((1 + step) I - step A) x' = x``.
+
+    Stable for any step size, so one large step replaces many explicit ones (Desbrun et al.
+    1999). The sparse system is solved in parallel by Jacobi-preconditioned BiCGSTAB to a
+    relative residual ``tol``; the operator is rebuilt from the current positions at each
+    iteration when the weights depend on them.
+
+    Parameters
+    ----------
+    step : float >= 0, default 1.0 (trimesh preset: 0.5, its ``lamb``)
+        Time step, in units of one explicit step with ``lamb=1``.
+    iterations : int, default 1 (trimesh preset: 10)
+    tol : float in (0, 1), default 1e-10
+        Relative residual at which the solve stops.
+    max_iter : int, default 10000
+        Solver iterations before :class:`toonmesh.ConvergenceError` is raised.
+    weights : "uniform", "cotangent" or "distance", default "uniform"
+    boundary : "fixed" or "free", default "fixed"
+    volume_constraint : bool, default False (trimesh preset: True)
+    """
+    return _call(
+        "implicit", vertices, faces, step=step, iterations=iterations, tol=tol, max_iter=max_iter,
+        weights=weights, boundary=boundary, pinned=pinned, volume_constraint=volume_constraint,
+        preset=preset,
+    )
+
+
+for _f in (laplacian, taubin, hc, implicit):
+    _f.__doc__ = (_f.__doc__ or "") + _COMMON
+del _f

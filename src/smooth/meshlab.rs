@@ -1,0 +1,177 @@
+//! Operators that reproduce pymeshlab's (VCG's) coordinate smoothing filters, quirks included.
+//!
+//! VCG accumulates, per face-edge (a, b) with opposite corner c, a sum S and a weight C at both
+//! ends. A "border" face-edge is one whose vertex pair occurs exactly once among all face-edges
+//! (so a non-manifold edge is not a border, and a lone self-edge (a, a) of a degenerate face is).
+//! With boundary handling on, a vertex on a border edge forgets its interior sums and averages
+//! itself with its border neighbours only. The Laplacian moves x to (x + S) / (C + 1), Taubin
+//! to x + lambda (S / C - x); a vertex with C <= 0 does not move.
+
+use super::operator::Operator;
+use crate::mesh::Adjacency;
+use crate::real::{self, Real, Vec3};
+
+/// Per-face-edge weight, as VCG computes it: float32 tan(pi/2 - angle at c), or -1 when a side
+/// at c has zero length.
+#[inline]
+fn vcg_cotangent(xa: [f64; 3], xb: [f64; 3], xc: [f64; 3]) -> f64 {
+    let u = real::sub(xb, xc);
+    let v = real::sub(xa, xc);
+    let (lu, lv) = (real::norm(u), real::norm(v));
+    if lu == 0.0 || lv == 0.0 {
+        return -1.0;
+    }
+    let angle = (real::dot(u, v) / (lu * lv)).clamp(-1.0, 1.0).acos() as f32;
+    (std::f64::consts::FRAC_PI_2 - angle as f64).tan() as f32 as f64
+}
+
+/// Sums for one vertex: (weight of itself in S, weight per slot, C).
+fn accumulate<T: Real>(
+    adj: &Adjacency,
+    x: &[Vec3<T>],
+    i: usize,
+    cotangent: bool,
+    boundary: bool,
+    slot_w: &mut [f64],
+) -> (f64, f64) {
+    let slots = adj.slots(i);
+    let self_border = adj.self_edges[i] == 1;
+    let border = boundary && (self_border || slots.clone().any(|s| adj.edge_faces[s] == 1));
+    if border {
+        // Reset to the vertex itself, then add each border neighbour once; a lone self-edge
+        // adds the vertex twice (it is both ends of that border edge).
+        let mut c = 1.0;
+        let mut own = 1.0;
+        for (k, s) in slots.enumerate() {
+            slot_w[k] = if adj.edge_faces[s] == 1 { 1.0 } else { 0.0 };
+            c += slot_w[k];
+        }
+        if self_border {
+            own += 2.0;
+            c += 2.0;
+        }
+        return (own, c);
+    }
+    let xi = real::to_f64(x[i]);
+    let mut c = 0.0;
+    for (k, s) in slots.enumerate() {
+        slot_w[k] = if cotangent {
+            let xj = real::to_f64(x[adj.nbrs[s] as usize]);
+            adj.opposite_of(s)
+                .iter()
+                .map(|&o| vcg_cotangent(xi, xj, real::to_f64(x[o as usize])))
+                .sum()
+        } else {
+            adj.edge_faces[s] as f64
+        };
+        c += slot_w[k];
+    }
+    // Self-edges (a, a): the vertex is both ends, so each adds its weight twice.
+    let per_self = if cotangent { -1.0 } else { 1.0 };
+    let own = 2.0 * per_self * adj.self_edges[i] as f64;
+    (own, c + own)
+}
+
+/// The operator of `apply_coord_laplacian_smoothing`: x <- (x + S) / (C + 1).
+pub fn laplacian<T: Real>(
+    adj: &Adjacency,
+    x: &[Vec3<T>],
+    cotangent: bool,
+    boundary: bool,
+    pinned: Option<&[bool]>,
+) -> Operator {
+    build(adj, x, cotangent, boundary, pinned, |own, c| {
+        if c > 0.0 {
+            Some(((own + 1.0), c + 1.0))
+        } else {
+            None
+        }
+    })
+}
+
+/// The averaging operator of `apply_coord_taubin_smoothing`: S / C (uniform, border rules on).
+pub fn taubin_average<T: Real>(
+    adj: &Adjacency,
+    x: &[Vec3<T>],
+    pinned: Option<&[bool]>,
+) -> Operator {
+    build(adj, x, false, true, pinned, |own, c| {
+        if c > 0.0 {
+            Some((own, c))
+        } else {
+            None
+        }
+    })
+}
+
+fn build<T: Real>(
+    adj: &Adjacency,
+    x: &[Vec3<T>],
+    cotangent: bool,
+    boundary: bool,
+    pinned: Option<&[bool]>,
+    // (own weight in S, C) -> Some((self coefficient numerator, denominator)) or None to freeze.
+    rule: impl Fn(f64, f64) -> Option<(f64, f64)>,
+) -> Operator {
+    let n = adj.n_vertices();
+    let mut self_w = vec![0.0; n];
+    let mut w = vec![0.0; adj.nbrs.len()];
+    for i in 0..n {
+        let slots = adj.slots(i);
+        if pinned.is_some_and(|p| p[i]) {
+            self_w[i] = 1.0;
+            continue;
+        }
+        let row = &mut w[slots.clone()];
+        let (own, c) = accumulate(adj, x, i, cotangent, boundary, row);
+        match rule(own, c) {
+            Some((num, den)) => {
+                self_w[i] = num / den;
+                for v in row.iter_mut() {
+                    *v /= den;
+                }
+            }
+            None => {
+                self_w[i] = 1.0;
+                row.fill(0.0);
+            }
+        }
+    }
+    Operator::Weighted { self_w, w }
+}
+
+/// The neighbour weights of `apply_coord_hc_laplacian_smoothing`: each face-edge counts once,
+/// a border face-edge twice (so on a manifold mesh, a plain mean of all neighbours).
+pub fn hc_average(adj: &Adjacency, pinned: Option<&[bool]>) -> Operator {
+    let n = adj.n_vertices();
+    let mut self_w = vec![0.0; n];
+    let mut w = vec![0.0; adj.nbrs.len()];
+    for i in 0..n {
+        let slots = adj.slots(i);
+        if pinned.is_some_and(|p| p[i]) {
+            self_w[i] = 1.0;
+            continue;
+        }
+        let mut total = 0.0;
+        for s in slots.clone() {
+            let e = adj.edge_faces[s];
+            w[s] = if e == 1 { 2.0 } else { e as f64 };
+            total += w[s];
+        }
+        let own = match adj.self_edges[i] {
+            0 => 0.0,
+            1 => 4.0,
+            k => 2.0 * k as f64,
+        };
+        total += own;
+        if total > 0.0 {
+            self_w[i] = own / total;
+            for s in slots {
+                w[s] /= total;
+            }
+        } else {
+            self_w[i] = 1.0;
+        }
+    }
+    Operator::Weighted { self_w, w }
+}

@@ -1,0 +1,129 @@
+//! The averaging operator every smoothing method applies: avg = A x, one row per vertex.
+//!
+//! Rows live on the adjacency's slots, so no per-method sparse matrix is built. A row that maps
+//! a vertex to itself (frozen: pinned, fixed boundary, unreferenced) makes every method leave
+//! that vertex exactly where it is.
+
+use rayon::prelude::*;
+
+use crate::mesh::Adjacency;
+use crate::real::{Real, Vec3};
+
+/// Rows processed per parallel task: large enough to amortise scheduling, fixed so that the
+/// split (and so the result) never depends on the thread count.
+pub const ROW_CHUNK: usize = 2048;
+
+#[derive(Debug, Clone)]
+pub enum Operator {
+    /// The plain mean of the distinct neighbours; `frozen` vertices (and vertices without
+    /// neighbours) map to themselves. No weight array, so it is the fastest to apply.
+    Uniform { frozen: Vec<bool> },
+    /// avg_i = self_w[i] x_i + sum over slots s of i: w[s] x_nbr(s).
+    Weighted { self_w: Vec<f64>, w: Vec<f64> },
+}
+
+impl Operator {
+    /// avg_i for one vertex, accumulated in f64.
+    #[inline]
+    pub fn row<T: Real>(&self, adj: &Adjacency, x: &[Vec3<T>], i: usize) -> [f64; 3] {
+        let slots = adj.slots(i);
+        match self {
+            Operator::Uniform { frozen } => {
+                if frozen[i] || slots.is_empty() {
+                    return crate::real::to_f64(x[i]);
+                }
+                let k = slots.len() as f64;
+                let mut s = [0.0f64; 3];
+                for &j in &adj.nbrs[slots] {
+                    let p = x[j as usize];
+                    s[0] += p[0].to_f64();
+                    s[1] += p[1].to_f64();
+                    s[2] += p[2].to_f64();
+                }
+                [s[0] / k, s[1] / k, s[2] / k]
+            }
+            Operator::Weighted { self_w, w } => {
+                let own = crate::real::to_f64(x[i]);
+                let a = self_w[i];
+                let mut s = [a * own[0], a * own[1], a * own[2]];
+                for s_idx in slots {
+                    let ws = w[s_idx];
+                    if ws != 0.0 {
+                        let p = x[adj.nbrs[s_idx] as usize];
+                        s[0] += ws * p[0].to_f64();
+                        s[1] += ws * p[1].to_f64();
+                        s[2] += ws * p[2].to_f64();
+                    }
+                }
+                s
+            }
+        }
+    }
+}
+
+/// Fills `out[i] = f(i)` in parallel, in fixed chunks.
+pub fn par_rows<T: Real>(out: &mut [Vec3<T>], f: impl Fn(usize) -> Vec3<T> + Sync) {
+    out.par_chunks_mut(ROW_CHUNK)
+        .enumerate()
+        .for_each(|(c, chunk)| {
+            let base = c * ROW_CHUNK;
+            for (k, o) in chunk.iter_mut().enumerate() {
+                *o = f(base + k);
+            }
+        });
+}
+
+/// Fills `out[i] = f(i)` in parallel for f64 rows (solver vectors).
+pub fn par_rows_f64(out: &mut [[f64; 3]], f: impl Fn(usize) -> [f64; 3] + Sync) {
+    out.par_chunks_mut(ROW_CHUNK)
+        .enumerate()
+        .for_each(|(c, chunk)| {
+            let base = c * ROW_CHUNK;
+            for (k, o) in chunk.iter_mut().enumerate() {
+                *o = f(base + k);
+            }
+        });
+}
+
+#[inline]
+pub fn from_f64<T: Real>(p: [f64; 3]) -> Vec3<T> {
+    [T::from_f64(p[0]), T::from_f64(p[1]), T::from_f64(p[2])]
+}
+
+impl Operator {
+    /// (A v)_i for a scalar field, used by the implicit solver.
+    #[inline]
+    pub fn row_scalar(&self, adj: &Adjacency, v: &[f64], i: usize) -> f64 {
+        let slots = adj.slots(i);
+        match self {
+            Operator::Uniform { frozen } => {
+                if frozen[i] || slots.is_empty() {
+                    return v[i];
+                }
+                let k = slots.len() as f64;
+                adj.nbrs[slots].iter().map(|&j| v[j as usize]).sum::<f64>() / k
+            }
+            Operator::Weighted { self_w, w } => {
+                let mut s = self_w[i] * v[i];
+                for s_idx in slots {
+                    s += w[s_idx] * v[adj.nbrs[s_idx] as usize];
+                }
+                s
+            }
+        }
+    }
+
+    /// A_ii, the diagonal the solver's preconditioner needs.
+    pub fn diagonal(&self, adj: &Adjacency, i: usize) -> f64 {
+        match self {
+            Operator::Uniform { frozen } => {
+                if frozen[i] || adj.slots(i).is_empty() {
+                    1.0
+                } else {
+                    0.0
+                }
+            }
+            Operator::Weighted { self_w, .. } => self_w[i],
+        }
+    }
+}

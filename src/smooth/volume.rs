@@ -1,0 +1,68 @@
+//! The volume constraint: after each step, rescale about the initial centre of mass so that the
+//! enclosed volume stays what it was (trimesh's formula, divergence theorem over the faces).
+
+use crate::parallel::deterministic_sum;
+use crate::real::{Real, Vec3};
+
+/// Signed volume enclosed by the faces (meaningful for closed, consistently oriented meshes).
+pub fn volume<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> f64 {
+    deterministic_sum(faces.len(), |f| {
+        let [a, b, c] = corners(x, faces[f]);
+        let nx = (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]);
+        nx * (a[0] + b[0] + c[0])
+    }) / 6.0
+}
+
+/// Centre of mass of the solid the faces enclose, given its volume.
+pub fn center_of_mass<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], vol: f64) -> [f64; 3] {
+    let mut c = [0.0; 3];
+    for (k, ck) in c.iter_mut().enumerate() {
+        *ck = deterministic_sum(faces.len(), |f| {
+            let [a, b, cc] = corners(x, faces[f]);
+            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+            let v = [cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]];
+            let n = [
+                u[1] * v[2] - u[2] * v[1],
+                u[2] * v[0] - u[0] * v[2],
+                u[0] * v[1] - u[1] * v[0],
+            ];
+            n[k] * (a[k] * a[k] + b[k] * b[k] + a[k] * b[k] + cc[k] * (a[k] + b[k] + cc[k]))
+        }) / (24.0 * vol);
+    }
+    c
+}
+
+#[inline]
+fn corners<T: Real>(x: &[Vec3<T>], f: [u32; 3]) -> [[f64; 3]; 3] {
+    f.map(|i| crate::real::to_f64(x[i as usize]))
+}
+
+/// The initial state the constraint restores.
+#[derive(Debug, Clone, Copy)]
+pub struct VolumeConstraint {
+    pub volume: f64,
+    pub center: [f64; 3],
+}
+
+impl VolumeConstraint {
+    /// None when the mesh encloses no volume (an open or flat mesh): rescaling would divide by
+    /// zero, so the constraint is skipped rather than producing inf or NaN.
+    pub fn new<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> Option<VolumeConstraint> {
+        let volume = volume(x, faces);
+        let scale = crate::mesh::Bounds::of(x).diagonal();
+        if !(volume.abs() > 1e-12 * scale * scale * scale) || !volume.is_finite() {
+            return None;
+        }
+        Some(VolumeConstraint {
+            volume,
+            center: center_of_mass(x, faces, volume),
+        })
+    }
+
+    /// The factor to scale by, or None if the current volume is unusable.
+    pub fn factor<T: Real>(&self, x: &[Vec3<T>], faces: &[[u32; 3]]) -> Option<f64> {
+        let now = volume(x, faces);
+        let ratio = self.volume / now;
+        (ratio.is_finite() && ratio > 0.0).then(|| ratio.cbrt())
+    }
+}
