@@ -3,8 +3,7 @@
 
 use numpy::ndarray::{Array1, Array2};
 use numpy::{
-    IntoPyArray, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
-    PyUntypedArrayMethods,
+    IntoPyArray, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
 
@@ -27,39 +26,23 @@ impl Positions {
     }
 }
 
-fn untyped<'a, 'py>(
-    arg: &str,
-    obj: &'a Bound<'py, PyAny>,
-) -> Result<&'a Bound<'py, PyUntypedArray>> {
-    obj.cast::<PyUntypedArray>().map_err(|_| {
-        Error::wrong_type(
-            arg,
-            format!("expected a NumPy array, got {}", type_name(obj)),
-        )
-    })
+fn untyped<'a, 'py>(arg: &str, obj: &'a Bound<'py, PyAny>) -> Result<&'a Bound<'py, PyUntypedArray>> {
+    obj.cast::<PyUntypedArray>()
+        .map_err(|_| Error::wrong_type(arg, format!("expected a NumPy array, got {}", type_name(obj))))
 }
 
 fn type_name(obj: &Bound<'_, PyAny>) -> String {
-    obj.get_type()
-        .name()
-        .map(|n| n.to_string())
-        .unwrap_or_else(|_| "an unknown type".into())
+    obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "an unknown type".into())
 }
 
 fn dtype_name(a: &Bound<'_, PyUntypedArray>) -> String {
-    a.dtype()
-        .str()
-        .map(|s| s.to_string())
-        .unwrap_or_else(|_| "?".into())
+    a.dtype().str().map(|s| s.to_string()).unwrap_or_else(|_| "?".into())
 }
 
 fn check_rows3(arg: &str, a: &Bound<'_, PyUntypedArray>, what: &str) -> Result<()> {
     let shape = a.shape();
     if shape.len() != 2 || shape[1] != 3 {
-        return Err(Error::invalid(
-            arg,
-            format!("expected shape ({what}, 3), got {shape:?}"),
-        ));
+        return Err(Error::invalid(arg, format!("expected shape ({what}, 3), got {shape:?}")));
     }
     Ok(())
 }
@@ -69,10 +52,7 @@ fn rows3<T: numpy::Element + Copy>(a: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
     if let Some(flat) = view.as_slice() {
         flat.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
     } else {
-        view.rows()
-            .into_iter()
-            .map(|r| [r[0], r[1], r[2]])
-            .collect()
+        view.rows().into_iter().map(|r| [r[0], r[1], r[2]]).collect()
     }
 }
 
@@ -110,19 +90,11 @@ pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Fac
     } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, u64>>() {
         check_faces(
             arg,
-            rows3(&x)
-                .into_iter()
-                .map(|r| r.map(|i| i64::try_from(i).unwrap_or(i64::MAX))),
+            rows3(&x).into_iter().map(|r| r.map(|i| i64::try_from(i).unwrap_or(i64::MAX))),
             n_vertices,
         )
     } else {
-        Err(Error::wrong_type(
-            arg,
-            format!(
-                "dtype must be int32, int64 or uint32, got {}",
-                dtype_name(a)
-            ),
-        ))
+        Err(Error::wrong_type(arg, format!("dtype must be int32, int64 or uint32, got {}", dtype_name(a))))
     }
 }
 
@@ -139,10 +111,7 @@ pub fn vertex_mask(
     }
     let a = untyped(arg, obj)?;
     if a.ndim() != 1 {
-        return Err(Error::invalid(
-            arg,
-            format!("expected a 1-D array, got shape {:?}", a.shape()),
-        ));
+        return Err(Error::invalid(arg, format!("expected a 1-D array, got shape {:?}", a.shape())));
     }
     if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, bool>>() {
         let v = x.as_array();
@@ -161,26 +130,17 @@ pub fn vertex_mask(
     } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, u32>>() {
         x.as_array().iter().map(|&i| i as i64).collect()
     } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, u64>>() {
-        x.as_array()
-            .iter()
-            .map(|&i| i64::try_from(i).unwrap_or(i64::MAX))
-            .collect()
+        x.as_array().iter().map(|&i| i64::try_from(i).unwrap_or(i64::MAX)).collect()
     } else {
         return Err(Error::wrong_type(
             arg,
-            format!(
-                "expected integer indices or a boolean mask, got dtype {}",
-                dtype_name(a)
-            ),
+            format!("expected integer indices or a boolean mask, got dtype {}", dtype_name(a)),
         ));
     };
     let mut mask = vec![false; n_vertices];
     for i in idx {
         if i < 0 || i as u64 >= n_vertices as u64 {
-            return Err(Error::out_of_range(
-                arg,
-                format!("vertex index {i} is outside [0, {n_vertices})"),
-            ));
+            return Err(Error::out_of_range(arg, format!("vertex index {i} is outside [0, {n_vertices})")));
         }
         mask[i as usize] = true;
     }
@@ -194,24 +154,17 @@ pub fn rows3_to_numpy<'py, T: Real + numpy::Element>(
 ) -> Bound<'py, PyArray2<T>> {
     let n = v.len();
     let flat: Vec<T> = flatten3(v);
-    Array2::from_shape_vec((n, 3), flat)
-        .expect("length is 3n")
-        .into_pyarray(py)
+    Array2::from_shape_vec((n, 3), flat).expect("length is 3n").into_pyarray(py)
 }
 
 /// Hands (M, 3) indices to NumPy as int64 (NumPy's default index type).
 pub fn faces_to_numpy<'py>(py: Python<'py>, f: Vec<[u32; 3]>) -> Bound<'py, PyArray2<i64>> {
     let m = f.len();
     let flat: Vec<i64> = f.into_iter().flat_map(|r| r.map(|i| i as i64)).collect();
-    Array2::from_shape_vec((m, 3), flat)
-        .expect("length is 3m")
-        .into_pyarray(py)
+    Array2::from_shape_vec((m, 3), flat).expect("length is 3m").into_pyarray(py)
 }
 
-pub fn vec_to_numpy<'py, T: numpy::Element>(
-    py: Python<'py>,
-    v: Vec<T>,
-) -> Bound<'py, numpy::PyArray1<T>> {
+pub fn vec_to_numpy<'py, T: numpy::Element>(py: Python<'py>, v: Vec<T>) -> Bound<'py, numpy::PyArray1<T>> {
     Array1::from_vec(v).into_pyarray(py)
 }
 

@@ -17,12 +17,7 @@ pyo3::create_exception!(
     PyRuntimeError,
     "No GPU adapter (hardware, or Mesa's lavapipe/llvmpipe) could be found."
 );
-pyo3::create_exception!(
-    toonmesh,
-    GpuError,
-    PyRuntimeError,
-    "The GPU device failed while rendering."
-);
+pyo3::create_exception!(toonmesh, GpuError, PyRuntimeError, "The GPU device failed while rendering.");
 
 pub fn to_py(e: Error) -> PyErr {
     let msg = e.to_string();

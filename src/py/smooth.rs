@@ -15,10 +15,7 @@ fn method(name: &str) -> Result<Method, Error> {
         "taubin" => Ok(Method::Taubin),
         "hc" => Ok(Method::Hc),
         "implicit" => Ok(Method::Implicit),
-        _ => Err(Error::invalid(
-            "method",
-            format!("unknown smoothing method '{name}'"),
-        )),
+        _ => Err(Error::invalid("method", format!("unknown smoothing method '{name}'"))),
     }
 }
 

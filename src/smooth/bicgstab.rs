@@ -77,17 +77,13 @@ pub fn solve(
         matvec(&y, &mut v);
         let rv = dot(&r_hat, &v);
         if rv == 0.0 || !rv.is_finite() {
-            return Err(Error::NotConverged(format!(
-                "implicit solve broke down after {it} iterations"
-            )));
+            return Err(Error::NotConverged(format!("implicit solve broke down after {it} iterations")));
         }
         alpha = rho_new / rv;
         zip_map(&mut s, |i| r[i] - alpha * v[i]);
         let s_norm = dot(&s, &s).sqrt();
         if s_norm <= goal {
-            x.par_iter_mut()
-                .zip(y.par_iter())
-                .for_each(|(xi, yi)| *xi += alpha * yi);
+            x.par_iter_mut().zip(y.par_iter()).for_each(|(xi, yi)| *xi += alpha * yi);
             return Ok(it);
         }
         zip_map(&mut z, |i| s[i] * inv_diag[i]);
@@ -109,9 +105,7 @@ pub fn solve(
             return Ok(it);
         }
         if omega == 0.0 {
-            return Err(Error::NotConverged(format!(
-                "implicit solve stagnated after {it} iterations"
-            )));
+            return Err(Error::NotConverged(format!("implicit solve stagnated after {it} iterations")));
         }
         rho = rho_new;
     }

@@ -43,9 +43,7 @@ pub fn operator<T: Real>(
     is_boundary: &[bool],
 ) -> Operator {
     if weights == Weights::Uniform && boundary != Boundary::Slide {
-        return Operator::Uniform {
-            frozen: frozen.to_vec(),
-        };
+        return Operator::Uniform { frozen: frozen.to_vec() };
     }
     let n = adj.n_vertices();
     let tiny = 1e-12 * Bounds::of(x).diagonal().max(f64::MIN_POSITIVE);
@@ -59,27 +57,14 @@ pub fn operator<T: Real>(
         w_rows.push(head);
         rest = tail;
     }
-    self_w
-        .par_chunks_mut(ROW_CHUNK)
-        .zip(w_rows.par_chunks_mut(ROW_CHUNK))
-        .enumerate()
-        .for_each(|(c, (sw_chunk, w_chunk))| {
+    self_w.par_chunks_mut(ROW_CHUNK).zip(w_rows.par_chunks_mut(ROW_CHUNK)).enumerate().for_each(
+        |(c, (sw_chunk, w_chunk))| {
             for (k, (sw, row)) in sw_chunk.iter_mut().zip(w_chunk.iter_mut()).enumerate() {
                 let i = c * ROW_CHUNK + k;
-                fill_row(
-                    adj,
-                    x,
-                    i,
-                    weights,
-                    boundary,
-                    frozen[i],
-                    is_boundary[i],
-                    tiny,
-                    sw,
-                    row,
-                );
+                fill_row(adj, x, i, weights, boundary, frozen[i], is_boundary[i], tiny, sw, row);
             }
-        });
+        },
+    );
     Operator::Weighted { self_w, w }
 }
 

@@ -57,10 +57,7 @@ fn accumulate<T: Real>(
     for (k, s) in slots.enumerate() {
         slot_w[k] = if cotangent {
             let xj = real::to_f64(x[adj.nbrs[s] as usize]);
-            adj.opposite_of(s)
-                .iter()
-                .map(|&o| vcg_cotangent(xi, xj, real::to_f64(x[o as usize])))
-                .sum()
+            adj.opposite_of(s).iter().map(|&o| vcg_cotangent(xi, xj, real::to_f64(x[o as usize]))).sum()
         } else {
             adj.edge_faces[s] as f64
         };
@@ -80,28 +77,25 @@ pub fn laplacian<T: Real>(
     boundary: bool,
     pinned: Option<&[bool]>,
 ) -> Operator {
-    build(adj, x, cotangent, boundary, pinned, |own, c| {
-        if c > 0.0 {
-            Some(((own + 1.0), c + 1.0))
-        } else {
-            None
-        }
-    })
+    build(
+        adj,
+        x,
+        cotangent,
+        boundary,
+        pinned,
+        |own, c| {
+            if c > 0.0 {
+                Some(((own + 1.0), c + 1.0))
+            } else {
+                None
+            }
+        },
+    )
 }
 
 /// The averaging operator of `apply_coord_taubin_smoothing`: S / C (uniform, border rules on).
-pub fn taubin_average<T: Real>(
-    adj: &Adjacency,
-    x: &[Vec3<T>],
-    pinned: Option<&[bool]>,
-) -> Operator {
-    build(adj, x, false, true, pinned, |own, c| {
-        if c > 0.0 {
-            Some((own, c))
-        } else {
-            None
-        }
-    })
+pub fn taubin_average<T: Real>(adj: &Adjacency, x: &[Vec3<T>], pinned: Option<&[bool]>) -> Operator {
+    build(adj, x, false, true, pinned, |own, c| if c > 0.0 { Some((own, c)) } else { None })
 }
 
 fn build<T: Real>(

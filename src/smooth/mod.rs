@@ -29,42 +29,20 @@ use volume::VolumeConstraint;
 /// when the weights depend on the geometry.
 enum Source {
     Fixed(Operator),
-    Clean {
-        weights: Weights,
-        boundary: Boundary,
-        frozen: Vec<bool>,
-        is_boundary: Vec<bool>,
-    },
-    MeshlabCotangent {
-        boundary: bool,
-        pinned: Option<Vec<bool>>,
-    },
+    Clean { weights: Weights, boundary: Boundary, frozen: Vec<bool>, is_boundary: Vec<bool> },
+    MeshlabCotangent { boundary: bool, pinned: Option<Vec<bool>> },
 }
 
 impl Source {
     fn at<'a, T: Real>(&'a self, adj: &Adjacency, x: &[Vec3<T>]) -> Cow<'a, Operator> {
         match self {
             Source::Fixed(op) => Cow::Borrowed(op),
-            Source::Clean {
-                weights,
-                boundary,
-                frozen,
-                is_boundary,
-            } => Cow::Owned(clean::operator(
-                adj,
-                x,
-                *weights,
-                *boundary,
-                frozen,
-                is_boundary,
-            )),
-            Source::MeshlabCotangent { boundary, pinned } => Cow::Owned(meshlab::laplacian(
-                adj,
-                x,
-                true,
-                *boundary,
-                pinned.as_deref(),
-            )),
+            Source::Clean { weights, boundary, frozen, is_boundary } => {
+                Cow::Owned(clean::operator(adj, x, *weights, *boundary, frozen, is_boundary))
+            }
+            Source::MeshlabCotangent { boundary, pinned } => {
+                Cow::Owned(meshlab::laplacian(adj, x, true, *boundary, pinned.as_deref()))
+            }
         }
     }
 }
@@ -76,7 +54,10 @@ pub fn smooth<T: Real>(
     plan: &Plan,
     pinned: Option<&[bool]>,
 ) -> Result<Vec<Vec3<T>>> {
-    let adj = Adjacency::build(x0.len(), faces)?;
+    let mut adj = Adjacency::build(x0.len(), faces)?;
+    if plan.weights == Weights::Cotangent {
+        adj = adj.with_corners(faces);
+    }
     let mut x = x0.to_vec();
     if plan.iterations == 0 {
         return Ok(x);
@@ -89,21 +70,9 @@ pub fn smooth<T: Real>(
             let frozen = clean::frozen_vertices(&adj, plan.boundary, &is_boundary, pinned);
             rescale_mask = Some(frozen.iter().map(|f| !f).collect());
             if plan.weights == Weights::Uniform {
-                Source::Fixed(clean::operator(
-                    &adj,
-                    x0,
-                    plan.weights,
-                    plan.boundary,
-                    &frozen,
-                    &is_boundary,
-                ))
+                Source::Fixed(clean::operator(&adj, x0, plan.weights, plan.boundary, &frozen, &is_boundary))
             } else {
-                Source::Clean {
-                    weights: plan.weights,
-                    boundary: plan.boundary,
-                    frozen,
-                    is_boundary,
-                }
+                Source::Clean { weights: plan.weights, boundary: plan.boundary, frozen, is_boundary }
             }
         }
         Preset::Trimesh => Source::Fixed(match plan.weights {
@@ -114,24 +83,15 @@ pub fn smooth<T: Real>(
             let boundary = plan.boundary == Boundary::Slide;
             match plan.method {
                 Method::Laplacian if plan.weights == Weights::Cotangent => {
-                    Source::MeshlabCotangent {
-                        boundary,
-                        pinned: pinned.map(|p| p.to_vec()),
-                    }
+                    Source::MeshlabCotangent { boundary, pinned: pinned.map(|p| p.to_vec()) }
                 }
-                Method::Laplacian => {
-                    Source::Fixed(meshlab::laplacian(&adj, x0, false, boundary, pinned))
-                }
+                Method::Laplacian => Source::Fixed(meshlab::laplacian(&adj, x0, false, boundary, pinned)),
                 Method::Taubin => Source::Fixed(meshlab::taubin_average(&adj, x0, pinned)),
                 _ => Source::Fixed(meshlab::hc_average(&adj, pinned)),
             }
         }
     };
-    let volume = if plan.volume_constraint {
-        VolumeConstraint::new(x0, faces)
-    } else {
-        None
-    };
+    let volume = if plan.volume_constraint { VolumeConstraint::new(x0, faces) } else { None };
     let mut y = vec![[T::zero(); 3]; x.len()];
     for it in 0..plan.iterations {
         match plan.method {
@@ -182,21 +142,11 @@ fn taubin_factors(plan: &Plan, it: u32) -> Vec<f64> {
 }
 
 /// x' = x + f (A x - x).
-fn explicit_step<T: Real>(
-    adj: &Adjacency,
-    op: &Operator,
-    x: &[Vec3<T>],
-    out: &mut [Vec3<T>],
-    f: f64,
-) {
+fn explicit_step<T: Real>(adj: &Adjacency, op: &Operator, x: &[Vec3<T>], out: &mut [Vec3<T>], f: f64) {
     par_rows(out, |i| {
         let a = op.row(adj, x, i);
         let xi = real::to_f64(x[i]);
-        from_f64([
-            xi[0] + f * (a[0] - xi[0]),
-            xi[1] + f * (a[1] - xi[1]),
-            xi[2] + f * (a[2] - xi[2]),
-        ])
+        from_f64([xi[0] + f * (a[0] - xi[0]), xi[1] + f * (a[1] - xi[1]), xi[2] + f * (a[2] - xi[2])])
     });
 }
 
@@ -220,20 +170,12 @@ fn hc_step<T: Real>(
     });
     par_rows(out, |i| {
         let ab = op.row(adj, &b, i);
-        from_f64(std::array::from_fn(|k| {
-            p[i][k] - (beta * b[i][k] + (1.0 - beta) * ab[k])
-        }))
+        from_f64(std::array::from_fn(|k| p[i][k] - (beta * b[i][k] + (1.0 - beta) * ab[k])))
     });
 }
 
 /// pymeshlab's HC: q = A x; d = A (q - x); x' = q - beta (q - x) + (1 - beta) d.
-fn hc_meshlab_step<T: Real>(
-    adj: &Adjacency,
-    op: &Operator,
-    x: &[Vec3<T>],
-    out: &mut [Vec3<T>],
-    beta: f64,
-) {
+fn hc_meshlab_step<T: Real>(adj: &Adjacency, op: &Operator, x: &[Vec3<T>], out: &mut [Vec3<T>], beta: f64) {
     let n = x.len();
     let mut q = vec![[0.0f64; 3]; n];
     par_rows_f64(&mut q, |i| op.row(adj, x, i));
@@ -244,9 +186,7 @@ fn hc_meshlab_step<T: Real>(
     });
     par_rows(out, |i| {
         let d = op.row(adj, &qx, i);
-        from_f64(std::array::from_fn(|k| {
-            q[i][k] - beta * qx[i][k] + (1.0 - beta) * d[k]
-        }))
+        from_f64(std::array::from_fn(|k| q[i][k] - beta * qx[i][k] + (1.0 - beta) * d[k]))
     });
 }
 
@@ -262,10 +202,8 @@ fn implicit_step<T: Real>(
     max_iter: u32,
 ) -> Result<()> {
     let n = x.len();
-    let inv_diag: Vec<f64> = (0..n)
-        .into_par_iter()
-        .map(|i| 1.0 / ((1.0 + s) - s * op.diagonal(adj, i)))
-        .collect();
+    let inv_diag: Vec<f64> =
+        (0..n).into_par_iter().map(|i| 1.0 / ((1.0 + s) - s * op.diagonal(adj, i))).collect();
     let mut rhs = vec![[0.0f64; 3]; n];
     {
         let xr: &[Vec3<T>] = x;
@@ -276,22 +214,18 @@ fn implicit_step<T: Real>(
         });
     }
     let matvec = |v: &[f64], out: &mut [f64]| {
-        out.par_chunks_mut(ROW_CHUNK)
-            .enumerate()
-            .for_each(|(c, ch)| {
-                for (k, o) in ch.iter_mut().enumerate() {
-                    let i = c * ROW_CHUNK + k;
-                    *o = (1.0 + s) * v[i] - s * op.row_scalar(adj, v, i);
-                }
-            });
+        out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, ch)| {
+            for (k, o) in ch.iter_mut().enumerate() {
+                let i = c * ROW_CHUNK + k;
+                *o = (1.0 + s) * v[i] - s * op.row_scalar(adj, v, i);
+            }
+        });
     };
     for k in 0..3 {
         let b: Vec<f64> = rhs.iter().map(|r| r[k]).collect();
         let mut d = vec![0.0; n];
         bicgstab::solve(matvec, &inv_diag, &b, &mut d, tol, max_iter)?;
-        x.par_iter_mut()
-            .zip(d.par_iter())
-            .for_each(|(p, di)| p[k] = T::from_f64(p[k].to_f64() + di));
+        x.par_iter_mut().zip(d.par_iter()).for_each(|(p, di)| p[k] = T::from_f64(p[k].to_f64() + di));
     }
     Ok(())
 }

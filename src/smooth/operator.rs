@@ -63,26 +63,22 @@ impl Operator {
 
 /// Fills `out[i] = f(i)` in parallel, in fixed chunks.
 pub fn par_rows<T: Real>(out: &mut [Vec3<T>], f: impl Fn(usize) -> Vec3<T> + Sync) {
-    out.par_chunks_mut(ROW_CHUNK)
-        .enumerate()
-        .for_each(|(c, chunk)| {
-            let base = c * ROW_CHUNK;
-            for (k, o) in chunk.iter_mut().enumerate() {
-                *o = f(base + k);
-            }
-        });
+    out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
+        let base = c * ROW_CHUNK;
+        for (k, o) in chunk.iter_mut().enumerate() {
+            *o = f(base + k);
+        }
+    });
 }
 
 /// Fills `out[i] = f(i)` in parallel for f64 rows (solver vectors).
 pub fn par_rows_f64(out: &mut [[f64; 3]], f: impl Fn(usize) -> [f64; 3] + Sync) {
-    out.par_chunks_mut(ROW_CHUNK)
-        .enumerate()
-        .for_each(|(c, chunk)| {
-            let base = c * ROW_CHUNK;
-            for (k, o) in chunk.iter_mut().enumerate() {
-                *o = f(base + k);
-            }
-        });
+    out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
+        let base = c * ROW_CHUNK;
+        for (k, o) in chunk.iter_mut().enumerate() {
+            *o = f(base + k);
+        }
+    });
 }
 
 #[inline]

@@ -79,55 +79,29 @@ pub struct Plan {
 
 fn parse<T: Copy>(arg: &str, value: &str, table: &[(&str, T)]) -> Result<T> {
     let v = value.to_ascii_lowercase();
-    table
-        .iter()
-        .find(|(k, _)| *k == v)
-        .map(|(_, t)| *t)
-        .ok_or_else(|| {
-            let names: Vec<String> = table.iter().map(|(k, _)| format!("'{k}'")).collect();
-            Error::invalid(
-                arg,
-                format!(
-                    "unknown value '{value}'; expected one of {}",
-                    names.join(", ")
-                ),
-            )
-        })
+    table.iter().find(|(k, _)| *k == v).map(|(_, t)| *t).ok_or_else(|| {
+        let names: Vec<String> = table.iter().map(|(k, _)| format!("'{k}'")).collect();
+        Error::invalid(arg, format!("unknown value '{value}'; expected one of {}", names.join(", ")))
+    })
 }
 
 pub fn parse_weights(s: &str) -> Result<Weights> {
     parse(
         "weights",
         s,
-        &[
-            ("uniform", Weights::Uniform),
-            ("cotangent", Weights::Cotangent),
-            ("distance", Weights::Distance),
-        ],
+        &[("uniform", Weights::Uniform), ("cotangent", Weights::Cotangent), ("distance", Weights::Distance)],
     )
 }
 
 pub fn parse_boundary(s: &str) -> Result<Boundary> {
-    parse(
-        "boundary",
-        s,
-        &[
-            ("fixed", Boundary::Fixed),
-            ("free", Boundary::Free),
-            ("slide", Boundary::Slide),
-        ],
-    )
+    parse("boundary", s, &[("fixed", Boundary::Fixed), ("free", Boundary::Free), ("slide", Boundary::Slide)])
 }
 
 pub fn parse_preset(s: &str) -> Result<Preset> {
     parse(
         "preset",
         s,
-        &[
-            ("trimesh", Preset::Trimesh),
-            ("pymeshlab", Preset::Pymeshlab),
-            ("paper", Preset::Paper),
-        ],
+        &[("trimesh", Preset::Trimesh), ("pymeshlab", Preset::Pymeshlab), ("paper", Preset::Paper)],
     )
 }
 
@@ -153,10 +127,7 @@ fn finite(arg: &str, v: f64, lo: f64, hi: f64) -> Result<f64> {
     if v.is_finite() && v >= lo && v <= hi {
         Ok(v)
     } else {
-        Err(Error::invalid(
-            arg,
-            format!("must be a finite number in [{lo}, {hi}], got {v}"),
-        ))
+        Err(Error::invalid(arg, format!("must be a finite number in [{lo}, {hi}], got {v}")))
     }
 }
 
@@ -166,25 +137,16 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
         Some(s) => parse_preset(s)?,
     };
     let unsupported = |arg: &str, why: &str| {
-        Error::invalid(
-            arg,
-            format!("{}(preset={}) {why}", name(method), preset_name(preset)),
-        )
+        Error::invalid(arg, format!("{}(preset={}) {why}", name(method), preset_name(preset)))
     };
     use Method::*;
     use Preset::*;
     match (method, preset) {
         (Taubin | Hc | Implicit, Paper) => {
-            return Err(unsupported(
-                "preset",
-                "does not exist: the paper describes only the plain Laplacian",
-            ))
+            return Err(unsupported("preset", "does not exist: the paper describes only the plain Laplacian"))
         }
         (Implicit, Pymeshlab) => {
-            return Err(unsupported(
-                "preset",
-                "does not exist: pymeshlab has no implicit smoothing",
-            ))
+            return Err(unsupported("preset", "does not exist: pymeshlab has no implicit smoothing"))
         }
         _ => {}
     }
@@ -202,11 +164,8 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
         _ => 0.5,
     };
     let mu_default = if preset == Trimesh { -0.5 } else { -0.53 };
-    let weights_default = if (method, preset) == (Laplacian, Pymeshlab) {
-        Weights::Cotangent
-    } else {
-        Weights::Uniform
-    };
+    let weights_default =
+        if (method, preset) == (Laplacian, Pymeshlab) { Weights::Cotangent } else { Weights::Uniform };
     let boundary_default = match preset {
         Pymeshlab => Boundary::Slide,
         Paper | Trimesh => Boundary::Free,
@@ -216,10 +175,7 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
 
     let iterations = a.iterations.unwrap_or(iterations_default);
     if !(0..=1_000_000).contains(&iterations) {
-        return Err(Error::invalid(
-            "iterations",
-            format!("must be in [0, 1000000], got {iterations}"),
-        ));
+        return Err(Error::invalid("iterations", format!("must be in [0, 1000000], got {iterations}")));
     }
     let weights = match &a.weights {
         None => weights_default,
@@ -250,10 +206,7 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
         }
         Pymeshlab => {
             if a.lamb.is_some() && method == Laplacian {
-                return Err(unsupported(
-                    "lamb",
-                    "has no step size: VCG moves x to (x + S) / (C + 1)",
-                ));
+                return Err(unsupported("lamb", "has no step size: VCG moves x to (x + S) / (C + 1)"));
             }
             if method != Laplacian && weights != Weights::Uniform {
                 return Err(unsupported("weights", "uses uniform weights only"));
@@ -268,18 +221,12 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
                 ));
             }
             if method == Hc && (a.alpha.is_some() || a.beta.is_some_and(|b| b != 0.5)) {
-                return Err(unsupported(
-                    "alpha",
-                    "has no alpha, and beta is fixed at 0.5",
-                ));
+                return Err(unsupported("alpha", "has no alpha, and beta is fixed at 0.5"));
             }
         }
         Paper => {
             if weights != Weights::Uniform {
-                return Err(unsupported(
-                    "weights",
-                    "uses the plain neighbour mean (uniform)",
-                ));
+                return Err(unsupported("weights", "uses the plain neighbour mean (uniform)"));
             }
         }
         Clean => {
@@ -289,19 +236,14 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
         }
     }
     if volume_constraint && !matches!(method, Laplacian | Implicit) {
-        return Err(unsupported(
-            "volume_constraint",
-            "is only available for laplacian and implicit",
-        ));
+        return Err(unsupported("volume_constraint", "is only available for laplacian and implicit"));
     }
     if volume_constraint && matches!(preset, Pymeshlab | Paper) {
         return Err(unsupported("volume_constraint", "has no volume constraint"));
     }
 
     let lamb = match method {
-        Laplacian if preset == Trimesh => {
-            finite("lamb", a.lamb.unwrap_or(lamb_default), -1e6, 1e6)?
-        }
+        Laplacian if preset == Trimesh => finite("lamb", a.lamb.unwrap_or(lamb_default), -1e6, 1e6)?,
         _ => finite("lamb", a.lamb.unwrap_or(lamb_default), 0.0, 1.0)?,
     };
     let mu = finite("mu", a.mu.unwrap_or(mu_default), -1.0, 0.0)?;
@@ -311,17 +253,11 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
     let step = finite("step", a.step.unwrap_or(step_default), 0.0, 1e12)?;
     let tol = a.tol.unwrap_or(1e-10);
     if !(tol.is_finite() && tol > 0.0 && tol < 1.0) {
-        return Err(Error::invalid(
-            "tol",
-            format!("must be in (0, 1), got {tol}"),
-        ));
+        return Err(Error::invalid("tol", format!("must be in (0, 1), got {tol}")));
     }
     let max_iter = a.max_iter.unwrap_or(10_000);
     if !(1..=10_000_000).contains(&max_iter) {
-        return Err(Error::invalid(
-            "max_iter",
-            format!("must be in [1, 10000000], got {max_iter}"),
-        ));
+        return Err(Error::invalid("max_iter", format!("must be in [1, 10000000], got {max_iter}")));
     }
     let (lamb, mu) = if preset == Pymeshlab && method == Taubin {
         // VCG stores both factors as float32.
@@ -352,61 +288,24 @@ mod tests {
 
     #[test]
     fn presets_pick_their_defaults() {
-        let p = resolve(
-            Method::Laplacian,
-            &Args {
-                preset: Some("pymeshlab".into()),
-                ..Default::default()
-            },
-        )
-        .unwrap();
-        assert_eq!(
-            (p.iterations, p.weights, p.boundary),
-            (3, Weights::Cotangent, Boundary::Slide)
-        );
-        let t = resolve(
-            Method::Laplacian,
-            &Args {
-                preset: Some("trimesh".into()),
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let p = resolve(Method::Laplacian, &Args { preset: Some("pymeshlab".into()), ..Default::default() })
+            .unwrap();
+        assert_eq!((p.iterations, p.weights, p.boundary), (3, Weights::Cotangent, Boundary::Slide));
+        let t = resolve(Method::Laplacian, &Args { preset: Some("trimesh".into()), ..Default::default() })
+            .unwrap();
         assert!(t.volume_constraint);
         let c = resolve(Method::Laplacian, &Args::default()).unwrap();
-        assert_eq!(
-            (c.boundary, c.volume_constraint, c.lamb),
-            (Boundary::Fixed, false, 0.5)
-        );
+        assert_eq!((c.boundary, c.volume_constraint, c.lamb), (Boundary::Fixed, false, 0.5));
     }
 
     #[test]
     fn refuses_what_a_preset_lacks() {
-        let e = resolve(
-            Method::Implicit,
-            &Args {
-                preset: Some("pymeshlab".into()),
-                ..Default::default()
-            },
-        )
-        .unwrap_err();
+        let e = resolve(Method::Implicit, &Args { preset: Some("pymeshlab".into()), ..Default::default() })
+            .unwrap_err();
         assert!(e.to_string().starts_with("preset:"));
-        let e = resolve(
-            Method::Laplacian,
-            &Args {
-                weights: Some("cot".into()),
-                ..Default::default()
-            },
-        )
-        .unwrap_err();
+        let e = resolve(Method::Laplacian, &Args { weights: Some("cot".into()), ..Default::default() })
+            .unwrap_err();
         assert!(e.to_string().contains("'cotangent'"));
-        assert!(resolve(
-            Method::Laplacian,
-            &Args {
-                lamb: Some(f64::NAN),
-                ..Default::default()
-            }
-        )
-        .is_err());
+        assert!(resolve(Method::Laplacian, &Args { lamb: Some(f64::NAN), ..Default::default() }).is_err());
     }
 }

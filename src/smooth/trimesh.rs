@@ -41,9 +41,8 @@ pub fn uniform(adj: &Adjacency, faces: &[[u32; 3]], pinned: Option<&[bool]>) -> 
             if b as usize == i {
                 self_w[i] = inv;
             } else {
-                let k = adj.nbrs[slots.clone()]
-                    .binary_search(&b)
-                    .expect("every half-edge target is a neighbour");
+                let k =
+                    adj.nbrs[slots.clone()].binary_search(&b).expect("every half-edge target is a neighbour");
                 w[slots.start + k] = inv;
             }
         }

@@ -21,11 +21,7 @@ pub fn center_of_mass<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], vol: f64) -> [
             let [a, b, cc] = corners(x, faces[f]);
             let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
             let v = [cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]];
-            let n = [
-                u[1] * v[2] - u[2] * v[1],
-                u[2] * v[0] - u[0] * v[2],
-                u[0] * v[1] - u[1] * v[0],
-            ];
+            let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
             n[k] * (a[k] * a[k] + b[k] * b[k] + a[k] * b[k] + cc[k] * (a[k] + b[k] + cc[k]))
         }) / (24.0 * vol);
     }
@@ -53,10 +49,7 @@ impl VolumeConstraint {
         if !(volume.abs() > 1e-12 * scale * scale * scale) || !volume.is_finite() {
             return None;
         }
-        Some(VolumeConstraint {
-            volume,
-            center: center_of_mass(x, faces, volume),
-        })
+        Some(VolumeConstraint { volume, center: center_of_mass(x, faces, volume) })
     }
 
     /// The factor to scale by, or None if the current volume is unusable.
