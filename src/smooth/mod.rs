@@ -169,6 +169,9 @@ fn hc_step<T: Real>(
         std::array::from_fn(|k| p[i][k] - (alpha * oi[k] + (1.0 - alpha) * xi[k]))
     });
     par_rows(out, |i| {
+        if op.is_identity(adj, i) {
+            return x[i]; // exactly, rather than x - b with b rounding to 1e-16
+        }
         let ab = op.row(adj, &b, i);
         from_f64(std::array::from_fn(|k| p[i][k] - (beta * b[i][k] + (1.0 - beta) * ab[k])))
     });
@@ -185,6 +188,9 @@ fn hc_meshlab_step<T: Real>(adj: &Adjacency, op: &Operator, x: &[Vec3<T>], out: 
         std::array::from_fn(|k| q[i][k] - xi[k])
     });
     par_rows(out, |i| {
+        if op.is_identity(adj, i) {
+            return x[i];
+        }
         let d = op.row(adj, &qx, i);
         from_f64(std::array::from_fn(|k| q[i][k] - beta * qx[i][k] + (1.0 - beta) * d[k]))
     });
@@ -221,11 +227,18 @@ fn implicit_step<T: Real>(
             }
         });
     };
+    // A vertex that never moves has the equation d_i = 0 exactly; the iterative solution
+    // only approximates it, so such rows are left untouched.
+    let fixed: Vec<bool> = (0..n).into_par_iter().map(|i| op.is_identity(adj, i)).collect();
     for k in 0..3 {
         let b: Vec<f64> = rhs.iter().map(|r| r[k]).collect();
         let mut d = vec![0.0; n];
         bicgstab::solve(matvec, &inv_diag, &b, &mut d, tol, max_iter)?;
-        x.par_iter_mut().zip(d.par_iter()).for_each(|(p, di)| p[k] = T::from_f64(p[k].to_f64() + di));
+        x.par_iter_mut().zip(d.par_iter()).zip(fixed.par_iter()).for_each(|((p, di), &f)| {
+            if !f {
+                p[k] = T::from_f64(p[k].to_f64() + di)
+            }
+        });
     }
     Ok(())
 }

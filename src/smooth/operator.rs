@@ -109,6 +109,14 @@ impl Operator {
         }
     }
 
+    /// Is row i the identity (a vertex that never moves)?
+    pub fn is_identity(&self, adj: &Adjacency, i: usize) -> bool {
+        match self {
+            Operator::Uniform { frozen } => frozen[i] || adj.slots(i).is_empty(),
+            Operator::Weighted { self_w, w } => self_w[i] == 1.0 && w[adj.slots(i)].iter().all(|&v| v == 0.0),
+        }
+    }
+
     /// A_ii, the diagonal the solver's preconditioner needs.
     pub fn diagonal(&self, adj: &Adjacency, i: usize) -> f64 {
         match self {
