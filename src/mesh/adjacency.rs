@@ -27,6 +27,8 @@ pub struct Adjacency {
 struct Corners {
     offsets: Vec<u32>,
     opposite: Vec<u32>,
+    /// The same corners as face * 3 + position in the face, for per-face quantities.
+    corner: Vec<u32>,
 }
 
 impl Adjacency {
@@ -40,7 +42,7 @@ impl Adjacency {
             ));
         }
         parallel::install(|| {
-            let (start, mut entries, self_edges) = half_edges(n_vertices, faces, |_, b, _| b);
+            let (start, mut entries, self_edges) = half_edges(n_vertices, faces, |b, _| b);
             // Sort each vertex's neighbour list (so nothing below depends on face order or
             // thread count) and count its distinct neighbours.
             let ranges = vertex_chunks(n_vertices);
@@ -94,12 +96,21 @@ impl Adjacency {
         &self.nbrs[self.slots(i)]
     }
 
-    /// The third vertex of each face on the edge of `slot`, one per face-edge, ascending.
+    /// The third vertex of each face on the edge of `slot`, one per face-edge, in face order.
     /// Needs `with_corners` first (an empty slice otherwise).
     #[inline]
     pub fn opposite_of(&self, slot: usize) -> &[u32] {
         match &self.corners {
             Some(c) => &c.opposite[c.offsets[slot] as usize..c.offsets[slot + 1] as usize],
+            None => &[],
+        }
+    }
+
+    /// The opposite corners of `slot` as face * 3 + k (k: the corner's place in its face).
+    #[inline]
+    pub fn corners_of(&self, slot: usize) -> &[u32] {
+        match &self.corners {
+            Some(c) => &c.corner[c.offsets[slot] as usize..c.offsets[slot + 1] as usize],
             None => &[],
         }
     }
@@ -117,7 +128,8 @@ impl Adjacency {
         parallel::install(|| {
             // Same grouping as the neighbour entries, sorted by (neighbour, corner), so each
             // slot's run has exactly `edge_faces[slot]` entries, in slot order.
-            let (start, mut entries, _) = half_edges(n, faces, |_, b, c| ((b as u64) << 32) | c as u64);
+            let (start, mut entries, _) =
+                half_edges(n, faces, |b, corner| ((b as u64) << 32) | corner as u64);
             let ranges = vertex_chunks(n);
             split_by(&mut entries, &ranges, |r| start[r.start] as usize)
                 .into_par_iter()
@@ -135,8 +147,9 @@ impl Adjacency {
                 acc += e;
             }
             offsets.push(acc);
-            let opposite = entries.par_iter().map(|e| *e as u32).collect();
-            Corners { offsets, opposite }
+            let corner: Vec<u32> = entries.par_iter().map(|e| *e as u32).collect();
+            let opposite = corner.par_iter().map(|&c| faces[c as usize / 3][c as usize % 3]).collect();
+            Corners { offsets, opposite, corner }
         })
     }
 
@@ -156,7 +169,8 @@ impl Adjacency {
 fn half_edges<E: Copy + Default + Send + Sync>(
     n: usize,
     faces: &[[u32; 3]],
-    entry: impl Fn(u32, u32, u32) -> E + Sync,
+    // (the other end b, the opposite corner as face * 3 + k) -> the entry stored at a
+    entry: impl Fn(u32, u32) -> E + Sync,
 ) -> (Vec<u32>, Vec<E>, Vec<u32>) {
     let parts = rayon::current_num_threads().clamp(1, 8);
     let per = faces.len().div_ceil(parts).max(1);
@@ -198,17 +212,19 @@ fn half_edges<E: Copy + Default + Send + Sync>(
     drop(counts);
     let mut entries = vec![E::default(); acc as usize];
     let out = SharedSlice(entries.as_mut_ptr());
-    chunks.par_iter().zip(cursors.par_iter_mut()).for_each(|(ch, cur)| {
+    chunks.par_iter().zip(cursors.par_iter_mut()).enumerate().for_each(|(p, (ch, cur))| {
         let out = &out;
-        for f in ch.iter() {
+        for (local, f) in ch.iter().enumerate() {
+            let face = (p * per + local) as u32;
             for j in 0..3 {
-                let (a, b, c) = (f[j], f[(j + 1) % 3], f[(j + 2) % 3]);
+                let (a, b) = (f[j], f[(j + 1) % 3]);
+                let corner = face * 3 + ((j + 2) % 3) as u32;
                 if a != b {
                     // SAFETY: each part writes only inside the index ranges its own cursors
                     // cover, which are disjoint from every other part's by construction.
                     unsafe {
-                        out.write(cur[a as usize] as usize, entry(a, b, c));
-                        out.write(cur[b as usize] as usize, entry(b, a, c));
+                        out.write(cur[a as usize] as usize, entry(b, corner));
+                        out.write(cur[b as usize] as usize, entry(a, corner));
                     }
                     cur[a as usize] += 1;
                     cur[b as usize] += 1;
@@ -314,7 +330,12 @@ mod tests {
         let mut got = BTreeMap::new();
         for i in 0..n {
             for s in a.slots(i) {
-                got.insert((i as u32, a.nbrs[s]), a.opposite_of(s).to_vec());
+                let mut opp = a.opposite_of(s).to_vec();
+                opp.sort_unstable();
+                got.insert((i as u32, a.nbrs[s]), opp);
+                for (&c, &o) in a.corners_of(s).iter().zip(a.opposite_of(s)) {
+                    assert_eq!(faces[c as usize / 3][c as usize % 3], o);
+                }
                 assert_eq!(a.edge_faces[s] as usize, a.opposite_of(s).len());
             }
         }

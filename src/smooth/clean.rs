@@ -37,6 +37,7 @@ pub fn frozen_vertices(
 pub fn operator<T: Real>(
     adj: &Adjacency,
     x: &[Vec3<T>],
+    faces: &[[u32; 3]],
     weights: Weights,
     boundary: Boundary,
     frozen: &[bool],
@@ -47,6 +48,8 @@ pub fn operator<T: Real>(
     }
     let n = adj.n_vertices();
     let tiny = 1e-12 * Bounds::of(x).diagonal().max(f64::MIN_POSITIVE);
+    // Each corner's cotangent once per face, then gathered per edge.
+    let face_cot = if weights == Weights::Cotangent { face_cotangents(x, faces) } else { Vec::new() };
     let mut self_w = vec![0.0f64; n];
     let mut w = vec![0.0f64; adj.nbrs.len()];
     // Each vertex owns a contiguous run of slots, so rows can be filled independently.
@@ -61,7 +64,7 @@ pub fn operator<T: Real>(
         |(c, (sw_chunk, w_chunk))| {
             for (k, (sw, row)) in sw_chunk.iter_mut().zip(w_chunk.iter_mut()).enumerate() {
                 let i = c * ROW_CHUNK + k;
-                fill_row(adj, x, i, weights, boundary, frozen[i], is_boundary[i], tiny, sw, row);
+                fill_row(adj, x, &face_cot, i, weights, boundary, frozen[i], is_boundary[i], tiny, sw, row);
             }
         },
     );
@@ -72,6 +75,7 @@ pub fn operator<T: Real>(
 fn fill_row<T: Real>(
     adj: &Adjacency,
     x: &[Vec3<T>],
+    face_cot: &[f64],
     i: usize,
     weights: Weights,
     boundary: Boundary,
@@ -100,11 +104,7 @@ fn fill_row<T: Real>(
                 Weights::Uniform => 1.0,
                 Weights::Distance => 1.0 / real::norm(real::sub(xi, xj)).max(tiny),
                 Weights::Cotangent => {
-                    let c: f64 = adj
-                        .opposite_of(s)
-                        .iter()
-                        .map(|&o| cotangent(xi, xj, real::to_f64(x[o as usize])))
-                        .sum();
+                    let c: f64 = adj.corners_of(s).iter().map(|&k| face_cot[k as usize]).sum();
                     c.max(0.0)
                 }
             };
@@ -119,6 +119,21 @@ fn fill_row<T: Real>(
         *v /= total;
     }
     *self_w = 0.0;
+}
+
+/// The bounded cotangent of each face's three angles, indexed face * 3 + corner.
+pub fn face_cotangents<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<f64> {
+    let mut out = vec![0.0; faces.len() * 3];
+    out.par_chunks_mut(3 * ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
+        for (k, cots) in chunk.chunks_exact_mut(3).enumerate() {
+            let f = faces[c * ROW_CHUNK + k];
+            let p = f.map(|i| real::to_f64(x[i as usize]));
+            for j in 0..3 {
+                cots[j] = cotangent(p[(j + 1) % 3], p[(j + 2) % 3], p[j]);
+            }
+        }
+    });
+    out
 }
 
 /// cot of the angle at `k` in triangle (i, j, k), bounded as the module documents.

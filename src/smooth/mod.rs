@@ -21,7 +21,7 @@ use rayon::prelude::*;
 use crate::error::Result;
 use crate::mesh::Adjacency;
 use crate::real::{self, Real, Vec3};
-use operator::{from_f64, par_rows, par_rows_f64, Operator, ROW_CHUNK};
+use operator::{from_f64, par_rows, par_rows_f64, Operator};
 pub use options::{resolve, Args, Boundary, Method, Plan, Preset, Weights};
 use volume::VolumeConstraint;
 
@@ -34,11 +34,11 @@ enum Source {
 }
 
 impl Source {
-    fn at<'a, T: Real>(&'a self, adj: &Adjacency, x: &[Vec3<T>]) -> Cow<'a, Operator> {
+    fn at<'a, T: Real>(&'a self, adj: &Adjacency, x: &[Vec3<T>], faces: &[[u32; 3]]) -> Cow<'a, Operator> {
         match self {
             Source::Fixed(op) => Cow::Borrowed(op),
             Source::Clean { weights, boundary, frozen, is_boundary } => {
-                Cow::Owned(clean::operator(adj, x, *weights, *boundary, frozen, is_boundary))
+                Cow::Owned(clean::operator(adj, x, faces, *weights, *boundary, frozen, is_boundary))
             }
             Source::MeshlabCotangent { boundary, pinned } => {
                 Cow::Owned(meshlab::laplacian(adj, x, true, *boundary, pinned.as_deref()))
@@ -70,7 +70,15 @@ pub fn smooth<T: Real>(
             let frozen = clean::frozen_vertices(&adj, plan.boundary, &is_boundary, pinned);
             rescale_mask = Some(frozen.iter().map(|f| !f).collect());
             if plan.weights == Weights::Uniform {
-                Source::Fixed(clean::operator(&adj, x0, plan.weights, plan.boundary, &frozen, &is_boundary))
+                Source::Fixed(clean::operator(
+                    &adj,
+                    x0,
+                    faces,
+                    plan.weights,
+                    plan.boundary,
+                    &frozen,
+                    &is_boundary,
+                ))
             } else {
                 Source::Clean { weights: plan.weights, boundary: plan.boundary, frozen, is_boundary }
             }
@@ -96,20 +104,20 @@ pub fn smooth<T: Real>(
     for it in 0..plan.iterations {
         match plan.method {
             Method::Laplacian => {
-                let op = source.at(&adj, &x);
+                let op = source.at(&adj, &x, faces);
                 explicit_step(&adj, &op, &x, &mut y, plan.lamb);
                 std::mem::swap(&mut x, &mut y);
             }
             Method::Taubin => {
                 let factors: Vec<f64> = taubin_factors(plan, it);
                 for f in factors {
-                    let op = source.at(&adj, &x);
+                    let op = source.at(&adj, &x, faces);
                     explicit_step(&adj, &op, &x, &mut y, f);
                     std::mem::swap(&mut x, &mut y);
                 }
             }
             Method::Hc => {
-                let op = source.at(&adj, &x);
+                let op = source.at(&adj, &x, faces);
                 if plan.preset == Preset::Pymeshlab {
                     hc_meshlab_step(&adj, &op, &x, &mut y, plan.beta);
                 } else {
@@ -118,7 +126,7 @@ pub fn smooth<T: Real>(
                 std::mem::swap(&mut x, &mut y);
             }
             Method::Implicit => {
-                let op = source.at(&adj, &x);
+                let op = source.at(&adj, &x, faces);
                 implicit_step(&adj, &op, &mut x, plan.step, plan.tol, plan.max_iter)?;
             }
         }
@@ -219,27 +227,21 @@ fn implicit_step<T: Real>(
             std::array::from_fn(|k| s * (a[k] - xi[k]))
         });
     }
-    let matvec = |v: &[f64], out: &mut [f64]| {
-        out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, ch)| {
-            for (k, o) in ch.iter_mut().enumerate() {
-                let i = c * ROW_CHUNK + k;
-                *o = (1.0 + s) * v[i] - s * op.row_scalar(adj, v, i);
-            }
+    let matvec = |v: &[[f64; 3]], out: &mut [[f64; 3]]| {
+        par_rows_f64(out, |i| {
+            let a = op.row(adj, v, i);
+            std::array::from_fn(|k| (1.0 + s) * v[i][k] - s * a[k])
         });
     };
+    let mut d = vec![[0.0f64; 3]; n];
+    bicgstab::solve(matvec, &inv_diag, &rhs, &mut d, tol, max_iter)?;
     // A vertex that never moves has the equation d_i = 0 exactly; the iterative solution
     // only approximates it, so such rows are left untouched.
-    let fixed: Vec<bool> = (0..n).into_par_iter().map(|i| op.is_identity(adj, i)).collect();
-    for k in 0..3 {
-        let b: Vec<f64> = rhs.iter().map(|r| r[k]).collect();
-        let mut d = vec![0.0; n];
-        bicgstab::solve(matvec, &inv_diag, &b, &mut d, tol, max_iter)?;
-        x.par_iter_mut().zip(d.par_iter()).zip(fixed.par_iter()).for_each(|((p, di), &f)| {
-            if !f {
-                p[k] = T::from_f64(p[k].to_f64() + di)
-            }
-        });
-    }
+    x.par_iter_mut().zip(d.par_iter()).enumerate().for_each(|(i, (p, di))| {
+        if !op.is_identity(adj, i) {
+            *p = from_f64(std::array::from_fn(|k| p[k].to_f64() + di[k]));
+        }
+    });
     Ok(())
 }
 

@@ -87,28 +87,6 @@ pub fn from_f64<T: Real>(p: [f64; 3]) -> Vec3<T> {
 }
 
 impl Operator {
-    /// (A v)_i for a scalar field, used by the implicit solver.
-    #[inline]
-    pub fn row_scalar(&self, adj: &Adjacency, v: &[f64], i: usize) -> f64 {
-        let slots = adj.slots(i);
-        match self {
-            Operator::Uniform { frozen } => {
-                if frozen[i] || slots.is_empty() {
-                    return v[i];
-                }
-                let k = slots.len() as f64;
-                adj.nbrs[slots].iter().map(|&j| v[j as usize]).sum::<f64>() / k
-            }
-            Operator::Weighted { self_w, w } => {
-                let mut s = self_w[i] * v[i];
-                for s_idx in slots {
-                    s += w[s_idx] * v[adj.nbrs[s_idx] as usize];
-                }
-                s
-            }
-        }
-    }
-
     /// Is row i the identity (a vertex that never moves)?
     pub fn is_identity(&self, adj: &Adjacency, i: usize) -> bool {
         match self {
