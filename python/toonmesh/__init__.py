@@ -1,6 +1,6 @@
 """toonmesh: mesh smoothing, outline extraction and headless toon rendering, on NumPy arrays."""
 
-from toonmesh import smooth
+from toonmesh import shapes, smooth
 from toonmesh._core import (
     ConvergenceError,
     GpuError,
@@ -11,6 +11,7 @@ from toonmesh._core import (
 )
 
 __all__ = [
+    "shapes",
     "smooth",
     "ConvergenceError",
     "GpuError",
