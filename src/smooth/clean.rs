@@ -136,18 +136,19 @@ pub fn face_cotangents<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<f64> {
     out
 }
 
-/// cot of the angle at `k` in triangle (i, j, k), bounded as the module documents.
+/// cot of the angle at `k` in triangle (i, j, k), bounded as the module documents:
+/// cos / max(sin, 1e-4) = (u.v) / max(|u x v|, 1e-4 |u| |v|), with one square root.
 #[inline]
 pub fn cotangent(xi: [f64; 3], xj: [f64; 3], xk: [f64; 3]) -> f64 {
     let u = real::sub(xi, xk);
     let v = real::sub(xj, xk);
-    let (lu, lv) = (real::norm(u), real::norm(v));
-    if lu == 0.0 || lv == 0.0 {
+    let lengths2 = real::dot(u, u) * real::dot(v, v);
+    if lengths2 == 0.0 {
         return 0.0;
     }
-    let cos = real::dot(u, v) / (lu * lv);
-    let sin = real::norm(real::cross(u, v)) / (lu * lv);
-    cos.clamp(-1.0, 1.0) / sin.max(COT_MIN_SIN)
+    let c = real::cross(u, v);
+    let sin2_scaled = real::dot(c, c).max(COT_MIN_SIN * COT_MIN_SIN * lengths2);
+    real::dot(u, v) / sin2_scaled.sqrt()
 }
 
 #[cfg(test)]
