@@ -14,11 +14,10 @@ pub mod options;
 pub mod trimesh;
 pub mod volume;
 
-use std::borrow::Cow;
-
 use rayon::prelude::*;
 
 use crate::error::Result;
+use crate::mesh::reorder::{self, Reordering};
 use crate::mesh::Adjacency;
 use crate::real::{self, Real, Vec3};
 use operator::{from_f64, par_rows, par_rows_f64, Operator};
@@ -34,21 +33,49 @@ enum Source {
 }
 
 impl Source {
-    fn at<'a, T: Real>(&'a self, adj: &Adjacency, x: &[Vec3<T>], faces: &[[u32; 3]]) -> Cow<'a, Operator> {
-        match self {
-            Source::Fixed(op) => Cow::Borrowed(op),
+    /// The operator for positions `x`. Rebuilt operators reuse `scratch`'s buffers; `slot`
+    /// holds the current one so that it can be recycled at the next step.
+    fn at<'a, T: Real>(
+        &'a self,
+        adj: &Adjacency,
+        x: &[Vec3<T>],
+        faces: &[[u32; 3]],
+        scratch: &mut clean::Scratch,
+        slot: &'a mut Option<Operator>,
+    ) -> &'a Operator {
+        if let Some(old) = slot.take() {
+            scratch.recycle(old);
+        }
+        let fresh = match self {
+            Source::Fixed(op) => return op,
             Source::Clean { weights, boundary, frozen, is_boundary } => {
-                Cow::Owned(clean::operator(adj, x, faces, *weights, *boundary, frozen, is_boundary))
+                clean::operator(adj, x, faces, *weights, *boundary, frozen, is_boundary, scratch)
             }
             Source::MeshlabCotangent { boundary, pinned } => {
-                Cow::Owned(meshlab::laplacian(adj, x, true, *boundary, pinned.as_deref()))
+                meshlab::laplacian(adj, x, true, *boundary, pinned.as_deref())
             }
-        }
+        };
+        slot.insert(fresh)
     }
 }
 
 /// Smooths `x0` as `plan` says. `pinned` marks vertices that must not move.
 pub fn smooth<T: Real>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    plan: &Plan,
+    pinned: Option<&[bool]>,
+) -> Result<Vec<Vec3<T>>> {
+    if x0.len() < reorder::MIN_VERTICES || plan.iterations == 0 {
+        return smooth_in_order(x0, faces, plan, pinned);
+    }
+    let r = Reordering::spatial(x0);
+    let pinned = pinned.map(|p| r.mask(p));
+    let out = smooth_in_order(&r.positions(x0), &r.faces(faces), plan, pinned.as_deref())?;
+    Ok(r.restore(out))
+}
+
+fn smooth_in_order<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
     plan: &Plan,
@@ -78,6 +105,7 @@ pub fn smooth<T: Real>(
                     plan.boundary,
                     &frozen,
                     &is_boundary,
+                    &mut clean::Scratch::default(),
                 ))
             } else {
                 Source::Clean { weights: plan.weights, boundary: plan.boundary, frozen, is_boundary }
@@ -101,23 +129,25 @@ pub fn smooth<T: Real>(
     };
     let volume = if plan.volume_constraint { VolumeConstraint::new(x0, faces) } else { None };
     let mut y = vec![[T::zero(); 3]; x.len()];
+    let mut scratch = clean::Scratch::default();
+    let mut slot: Option<Operator> = None;
     for it in 0..plan.iterations {
         match plan.method {
             Method::Laplacian => {
-                let op = source.at(&adj, &x, faces);
+                let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
                 explicit_step(&adj, &op, &x, &mut y, plan.lamb);
                 std::mem::swap(&mut x, &mut y);
             }
             Method::Taubin => {
                 let factors: Vec<f64> = taubin_factors(plan, it);
                 for f in factors {
-                    let op = source.at(&adj, &x, faces);
+                    let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
                     explicit_step(&adj, &op, &x, &mut y, f);
                     std::mem::swap(&mut x, &mut y);
                 }
             }
             Method::Hc => {
-                let op = source.at(&adj, &x, faces);
+                let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
                 if plan.preset == Preset::Pymeshlab {
                     hc_meshlab_step(&adj, &op, &x, &mut y, plan.beta);
                 } else {
@@ -126,7 +156,7 @@ pub fn smooth<T: Real>(
                 std::mem::swap(&mut x, &mut y);
             }
             Method::Implicit => {
-                let op = source.at(&adj, &x, faces);
+                let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
                 implicit_step(&adj, &op, &mut x, plan.step, plan.tol, plan.max_iter)?;
             }
         }

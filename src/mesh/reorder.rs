@@ -1,0 +1,112 @@
+//! A spatial vertex order for cache locality.
+//!
+//! Iterating over a mesh gathers each vertex's neighbours; when neighbours have distant indices
+//! (as in a subdivided sphere, or a scan written in acquisition order) every gather misses the
+//! cache. Sorting vertices along a Morton (Z-order) curve and faces by their first vertex makes
+//! neighbours close in memory. The order is computed from positions only, so it is the same for
+//! any thread count, and results are mapped back to the caller's order.
+
+use rayon::prelude::*;
+
+use crate::mesh::Bounds;
+use crate::real::{Real, Vec3};
+
+/// Below this many vertices the mesh fits in cache and reordering does not pay.
+pub const MIN_VERTICES: usize = 32_768;
+
+pub struct Reordering {
+    /// new index -> old index
+    order: Vec<u32>,
+    /// old index -> new index
+    inverse: Vec<u32>,
+}
+
+/// Spreads the low 21 bits of `v` to every third bit.
+fn spread(v: u64) -> u64 {
+    let mut x = v & 0x1f_ffff;
+    x = (x | (x << 32)) & 0x1f_0000_0000_ffff;
+    x = (x | (x << 16)) & 0x1f_0000_ff00_00ff;
+    x = (x | (x << 8)) & 0x100f_00f0_0f00_f00f;
+    x = (x | (x << 4)) & 0x10c3_0c30_c30c_30c3;
+    x = (x | (x << 2)) & 0x1249_2492_4924_9249;
+    x
+}
+
+impl Reordering {
+    pub fn spatial<T: Real>(x: &[Vec3<T>]) -> Reordering {
+        let b = Bounds::of(x);
+        let extent = (0..3).map(|k| b.max[k] - b.min[k]).fold(0.0f64, f64::max);
+        let scale = if extent > 0.0 { ((1u64 << 21) - 1) as f64 / extent } else { 0.0 };
+        let mut keyed: Vec<(u64, u32)> = x
+            .par_iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let q = |k: usize| ((p[k].to_f64() - b.min[k]) * scale) as u64;
+                (spread(q(0)) | (spread(q(1)) << 1) | (spread(q(2)) << 2), i as u32)
+            })
+            .collect();
+        // Ties keep index order, so the permutation is fully determined.
+        keyed.par_sort_unstable();
+        let order: Vec<u32> = keyed.into_iter().map(|(_, i)| i).collect();
+        let mut inverse = vec![0u32; order.len()];
+        for (new, &old) in order.iter().enumerate() {
+            inverse[old as usize] = new as u32;
+        }
+        Reordering { order, inverse }
+    }
+
+    pub fn positions<T: Real>(&self, x: &[Vec3<T>]) -> Vec<Vec3<T>> {
+        self.order.par_iter().map(|&o| x[o as usize]).collect()
+    }
+
+    pub fn mask(&self, m: &[bool]) -> Vec<bool> {
+        self.order.par_iter().map(|&o| m[o as usize]).collect()
+    }
+
+    /// Faces with new indices, sorted by their smallest vertex (a stable counting sort, so
+    /// faces with the same smallest vertex keep their relative order).
+    pub fn faces(&self, faces: &[[u32; 3]]) -> Vec<[u32; 3]> {
+        let mapped: Vec<[u32; 3]> = faces.par_iter().map(|f| f.map(|i| self.inverse[i as usize])).collect();
+        let n = self.order.len();
+        let mut start = vec![0u32; n + 1];
+        for f in &mapped {
+            start[f[0].min(f[1]).min(f[2]) as usize + 1] += 1;
+        }
+        for i in 0..n {
+            start[i + 1] += start[i];
+        }
+        let mut out = vec![[0u32; 3]; mapped.len()];
+        for f in mapped {
+            let k = f[0].min(f[1]).min(f[2]) as usize;
+            out[start[k] as usize] = f;
+            start[k] += 1;
+        }
+        out
+    }
+
+    /// Puts per-vertex results back in the caller's order.
+    pub fn restore<T: Copy + Send + Sync>(&self, y: Vec<T>) -> Vec<T> {
+        self.inverse.par_iter().map(|&n| y[n as usize]).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn round_trips() {
+        let (v, f) = crate::mesh::shapes::icosphere(2, 0.0, 0).unwrap();
+        let r = Reordering::spatial(&v);
+        let v2 = r.positions(&v);
+        assert_eq!(r.restore(v2.clone()), v);
+        let f2 = r.faces(&f);
+        let mut a: Vec<[[u64; 3]; 3]> =
+            f.iter().map(|t| t.map(|i| v[i as usize].map(f64::to_bits))).collect();
+        let mut b: Vec<[[u64; 3]; 3]> =
+            f2.iter().map(|t| t.map(|i| v2[i as usize].map(f64::to_bits))).collect();
+        a.sort();
+        b.sort();
+        assert_eq!(a, b);
+    }
+}
