@@ -83,7 +83,7 @@ pub fn solve(
         let mut beta = [0.0; 3];
         for k in 0..3 {
             beta[k] = if done[k] { 0.0 } else { (rho_new[k] / rho[k]) * (alpha[k] / omega[k]) };
-            if !done[k] && !(beta[k].is_finite() && rho_new[k] != 0.0) {
+            if !(done[k] || (beta[k].is_finite() && rho_new[k] != 0.0)) {
                 return Err(Error::NotConverged(format!("implicit solve broke down after {it} iterations")));
             }
         }

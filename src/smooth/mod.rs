@@ -131,33 +131,34 @@ fn smooth_in_order<T: Real>(
     let mut y = vec![[T::zero(); 3]; x.len()];
     let mut scratch = clean::Scratch::default();
     let mut slot: Option<Operator> = None;
+    let mut hc_buf = HcBuffers::default();
     for it in 0..plan.iterations {
         match plan.method {
             Method::Laplacian => {
                 let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
-                explicit_step(&adj, &op, &x, &mut y, plan.lamb);
+                explicit_step(&adj, op, &x, &mut y, plan.lamb);
                 std::mem::swap(&mut x, &mut y);
             }
             Method::Taubin => {
                 let factors: Vec<f64> = taubin_factors(plan, it);
                 for f in factors {
                     let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
-                    explicit_step(&adj, &op, &x, &mut y, f);
+                    explicit_step(&adj, op, &x, &mut y, f);
                     std::mem::swap(&mut x, &mut y);
                 }
             }
             Method::Hc => {
                 let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
                 if plan.preset == Preset::Pymeshlab {
-                    hc_meshlab_step(&adj, &op, &x, &mut y, plan.beta);
+                    hc_meshlab_step(&adj, op, &x, &mut y, plan.beta, &mut hc_buf);
                 } else {
-                    hc_step(&adj, &op, x0, &x, &mut y, plan.alpha, plan.beta);
+                    hc_step(&adj, op, x0, &x, &mut y, plan.alpha, plan.beta, &mut hc_buf);
                 }
                 std::mem::swap(&mut x, &mut y);
             }
             Method::Implicit => {
                 let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
-                implicit_step(&adj, &op, &mut x, plan.step, plan.tol, plan.max_iter)?;
+                implicit_step(&adj, op, &mut x, plan.step, plan.tol, plan.max_iter)?;
             }
         }
         if let Some(vc) = &volume {
@@ -188,7 +189,23 @@ fn explicit_step<T: Real>(adj: &Adjacency, op: &Operator, x: &[Vec3<T>], out: &m
     });
 }
 
+/// The two f64 fields an HC step needs, kept from step to step.
+#[derive(Default)]
+struct HcBuffers {
+    p: Vec<[f64; 3]>,
+    b: Vec<[f64; 3]>,
+}
+
+impl HcBuffers {
+    fn get(&mut self, n: usize) -> (&mut Vec<[f64; 3]>, &mut Vec<[f64; 3]>) {
+        self.p.resize(n, [0.0; 3]);
+        self.b.resize(n, [0.0; 3]);
+        (&mut self.p, &mut self.b)
+    }
+}
+
 /// Vollmer et al.: p = A x; b = p - (alpha o + (1 - alpha) x); x' = p - (beta b + (1 - beta) A b).
+#[allow(clippy::too_many_arguments)]
 fn hc_step<T: Real>(
     adj: &Adjacency,
     op: &Operator,
@@ -197,12 +214,12 @@ fn hc_step<T: Real>(
     out: &mut [Vec3<T>],
     alpha: f64,
     beta: f64,
+    buf: &mut HcBuffers,
 ) {
-    let n = x.len();
-    let mut p = vec![[0.0f64; 3]; n];
-    par_rows_f64(&mut p, |i| op.row(adj, x, i));
-    let mut b = vec![[0.0f64; 3]; n];
-    par_rows_f64(&mut b, |i| {
+    let (p, b) = buf.get(x.len());
+    par_rows_f64(p, |i| op.row(adj, x, i));
+    let p: &[[f64; 3]] = p;
+    par_rows_f64(b, |i| {
         let (oi, xi) = (real::to_f64(o[i]), real::to_f64(x[i]));
         std::array::from_fn(|k| p[i][k] - (alpha * oi[k] + (1.0 - alpha) * xi[k]))
     });
@@ -210,18 +227,24 @@ fn hc_step<T: Real>(
         if op.is_identity(adj, i) {
             return x[i]; // exactly, rather than x - b with b rounding to 1e-16
         }
-        let ab = op.row(adj, &b, i);
+        let ab = op.row(adj, b, i);
         from_f64(std::array::from_fn(|k| p[i][k] - (beta * b[i][k] + (1.0 - beta) * ab[k])))
     });
 }
 
 /// pymeshlab's HC: q = A x; d = A (q - x); x' = q - beta (q - x) + (1 - beta) d.
-fn hc_meshlab_step<T: Real>(adj: &Adjacency, op: &Operator, x: &[Vec3<T>], out: &mut [Vec3<T>], beta: f64) {
-    let n = x.len();
-    let mut q = vec![[0.0f64; 3]; n];
-    par_rows_f64(&mut q, |i| op.row(adj, x, i));
-    let mut qx = vec![[0.0f64; 3]; n];
-    par_rows_f64(&mut qx, |i| {
+fn hc_meshlab_step<T: Real>(
+    adj: &Adjacency,
+    op: &Operator,
+    x: &[Vec3<T>],
+    out: &mut [Vec3<T>],
+    beta: f64,
+    buf: &mut HcBuffers,
+) {
+    let (q, qx) = buf.get(x.len());
+    par_rows_f64(q, |i| op.row(adj, x, i));
+    let q: &[[f64; 3]] = q;
+    par_rows_f64(qx, |i| {
         let xi = real::to_f64(x[i]);
         std::array::from_fn(|k| q[i][k] - xi[k])
     });
@@ -229,7 +252,7 @@ fn hc_meshlab_step<T: Real>(adj: &Adjacency, op: &Operator, x: &[Vec3<T>], out: 
         if op.is_identity(adj, i) {
             return x[i];
         }
-        let d = op.row(adj, &qx, i);
+        let d = op.row(adj, qx, i);
         from_f64(std::array::from_fn(|k| q[i][k] - beta * qx[i][k] + (1.0 - beta) * d[k]))
     });
 }

@@ -46,7 +46,8 @@ impl VolumeConstraint {
     pub fn new<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> Option<VolumeConstraint> {
         let volume = volume(x, faces);
         let scale = crate::mesh::Bounds::of(x).diagonal();
-        if !(volume.abs() > 1e-12 * scale * scale * scale) || !volume.is_finite() {
+        let enclosed = volume.is_finite() && volume.abs() > 1e-12 * scale * scale * scale;
+        if !enclosed {
             return None;
         }
         Some(VolumeConstraint { volume, center: center_of_mass(x, faces, volume) })
