@@ -8,12 +8,34 @@ from toonmesh._core import (
     get_num_threads,
     set_num_threads,
 )
+from toonmesh._render import (
+    Camera,
+    Light,
+    Material,
+    Mesh,
+    MeshHandle,
+    Renderer,
+    RenderResult,
+    gpu_info,
+    kang_table,
+    render,
+)
 
 __all__ = [
+    "Camera",
     "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",
+    "Light",
+    "Material",
+    "Mesh",
+    "MeshHandle",
+    "RenderResult",
+    "Renderer",
     "__version__",
     "get_num_threads",
+    "gpu_info",
+    "kang_table",
+    "render",
     "set_num_threads",
 ]
