@@ -44,19 +44,10 @@ mod tests {
     #[test]
     fn larger_face_dominates_and_isolated_vertex_is_zero() {
         // two faces sharing vertex 0: a big one in the xy-plane, a small one in the xz-plane
-        let p = [
-            [0.0, 0.0, 0.0],
-            [2.0, 0.0, 0.0],
-            [0.0, 2.0, 0.0],
-            [0.0, 0.0, -0.1],
-            [9.0, 9.0, 9.0],
-        ];
+        let p = [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, -0.1], [9.0, 9.0, 9.0]];
         let n = vertex_normals(&p, &[[0, 1, 2], [0, 3, 1]]);
         assert!(n[0][2] > 0.99);
         assert_eq!(n[4], [0.0; 3]);
-        assert_eq!(
-            triangle_unit_normal([0.0f32; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
-            [0.0, 0.0, 1.0]
-        );
+        assert_eq!(triangle_unit_normal([0.0f32; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]), [0.0, 0.0, 1.0]);
     }
 }

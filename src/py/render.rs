@@ -36,30 +36,20 @@ fn without_gil<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send)
 }
 
 fn get<'py>(d: &Bound<'py, PyDict>, key: &str) -> Result<Option<Bound<'py, PyAny>>> {
-    d.get_item(key)
-        .map(|v| v.filter(|v| !v.is_none()))
-        .map_err(|e| Error::invalid(key, e.to_string()))
+    d.get_item(key).map(|v| v.filter(|v| !v.is_none())).map_err(|e| Error::invalid(key, e.to_string()))
 }
 
 fn number(arg: &str, v: &Bound<'_, PyAny>) -> Result<f64> {
-    v.extract::<f64>()
-        .map_err(|_| Error::wrong_type(arg, format!("expected a number, got {}", type_name(v))))
+    v.extract::<f64>().map_err(|_| Error::wrong_type(arg, format!("expected a number, got {}", type_name(v))))
 }
 
 fn type_name(v: &Bound<'_, PyAny>) -> String {
-    v.get_type()
-        .name()
-        .map(|n| n.to_string())
-        .unwrap_or_else(|_| "?".into())
+    v.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "?".into())
 }
 
 fn numbers(arg: &str, v: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
-    v.extract::<Vec<f64>>().map_err(|_| {
-        Error::wrong_type(
-            arg,
-            format!("expected a sequence of numbers, got {}", type_name(v)),
-        )
-    })
+    v.extract::<Vec<f64>>()
+        .map_err(|_| Error::wrong_type(arg, format!("expected a sequence of numbers, got {}", type_name(v))))
 }
 
 fn triple(arg: &str, v: &Bound<'_, PyAny>) -> Result<[f64; 3]> {
@@ -74,34 +64,24 @@ fn text(arg: &str, v: &Bound<'_, PyAny>) -> Result<String> {
 }
 
 fn number_or(d: &Bound<'_, PyDict>, arg: &str, key: &str, default: f64) -> Result<f64> {
-    get(d, key)?
-        .map(|v| number(&format!("{arg}.{key}"), &v))
-        .transpose()
-        .map(|v| v.unwrap_or(default))
+    get(d, key)?.map(|v| number(&format!("{arg}.{key}"), &v)).transpose().map(|v| v.unwrap_or(default))
 }
 
 /// An sRGB colour in [0, 1] as linear light.
 fn color(arg: &str, v: &Bound<'_, PyAny>) -> Result<[f32; 3]> {
     let c = triple(arg, v)?;
     if !c.iter().all(|x| x.is_finite() && *x >= 0.0) {
-        return Err(Error::invalid(
-            arg,
-            format!("channels must be finite and >= 0, got {c:?}"),
-        ));
+        return Err(Error::invalid(arg, format!("channels must be finite and >= 0, got {c:?}")));
     }
     Ok(rgb_to_linear(c))
 }
 
 fn color_or(d: &Bound<'_, PyDict>, arg: &str, key: &str, default: [f32; 3]) -> Result<[f32; 3]> {
-    get(d, key)?
-        .map(|v| color(&format!("{arg}.{key}"), &v))
-        .transpose()
-        .map(|v| v.unwrap_or(default))
+    get(d, key)?.map(|v| color(&format!("{arg}.{key}"), &v)).transpose().map(|v| v.unwrap_or(default))
 }
 
 fn dict<'a, 'py>(arg: &str, v: &'a Bound<'py, PyAny>) -> Result<&'a Bound<'py, PyDict>> {
-    v.cast::<PyDict>()
-        .map_err(|_| Error::wrong_type(arg, format!("expected a dict, got {}", type_name(v))))
+    v.cast::<PyDict>().map_err(|_| Error::wrong_type(arg, format!("expected a dict, got {}", type_name(v))))
 }
 
 fn material(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Material> {
@@ -112,10 +92,7 @@ fn material(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Material> {
         .unwrap_or_else(|| "bands".into());
     let floats = |key: &str| -> Result<Option<Vec<f32>>> {
         get(d, key)?
-            .map(|v| {
-                numbers(&format!("{arg}.{key}"), &v)
-                    .map(|x| x.into_iter().map(|f| f as f32).collect())
-            })
+            .map(|v| numbers(&format!("{arg}.{key}"), &v).map(|x| x.into_iter().map(|f| f as f32).collect()))
             .transpose()
     };
     let model = match name.as_str() {
@@ -124,14 +101,24 @@ fn material(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Material> {
         "thresholded_phong" => Model::ThresholdedPhong {
             t_h: number_or(d, arg, "t_h", 0.0)? as f32,
             t_s: number_or(d, arg, "t_s", 0.95)? as f32,
-            highlight: match get(d, "highlight")?.map(|v| text(&format!("{arg}.highlight"), &v)).transpose()?.as_deref() {
+            highlight: match get(d, "highlight")?
+                .map(|v| text(&format!("{arg}.highlight"), &v))
+                .transpose()?
+                .as_deref()
+            {
                 None | Some("blinn") => Highlight::Blinn,
                 Some("paper") => Highlight::Paper,
-                Some(o) => return Err(Error::invalid(format!("{arg}.highlight"), format!("must be 'paper' or 'blinn', got {o:?}"))),
+                Some(o) => {
+                    return Err(Error::invalid(
+                        format!("{arg}.highlight"),
+                        format!("must be 'paper' or 'blinn', got {o:?}"),
+                    ))
+                }
             },
         },
         "bands" => Model::Bands {
-            thresholds: floats("thresholds")?.unwrap_or_else(|| crate::render::material::PAPER_BAND_THRESHOLDS.to_vec()),
+            thresholds: floats("thresholds")?
+                .unwrap_or_else(|| crate::render::material::PAPER_BAND_THRESHOLDS.to_vec()),
             values: floats("values")?.unwrap_or_else(|| crate::render::material::PAPER_BAND_VALUES.to_vec()),
         },
         "lut" => Model::Lut {
@@ -149,14 +136,15 @@ fn material(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Material> {
         other => {
             return Err(Error::invalid(
                 format!("{arg}.model"),
-                format!("unknown shading model {other:?}; use lambert, phong, thresholded_phong, bands or lut"),
+                format!(
+                    "unknown shading model {other:?}; use lambert, phong, thresholded_phong, bands or lut"
+                ),
             ))
         }
     };
     let per_vertex = get(d, "per_vertex")?
         .map(|v| {
-            v.extract::<bool>()
-                .map_err(|_| Error::wrong_type(format!("{arg}.per_vertex"), "expected a bool"))
+            v.extract::<bool>().map_err(|_| Error::wrong_type(format!("{arg}.per_vertex"), "expected a bool"))
         })
         .transpose()?
         .unwrap_or(false);
@@ -189,43 +177,26 @@ fn camera_of(obj: Option<Bound<'_, PyAny>>) -> Result<Camera> {
     let d = dict("camera", &obj)?;
     let defaults = Camera::default();
     let opt_triple = |key: &str, default: [f64; 3]| -> Result<[f64; 3]> {
-        get(d, key)?
-            .map(|v| triple(&format!("camera.{key}"), &v))
-            .transpose()
-            .map(|v| v.unwrap_or(default))
+        get(d, key)?.map(|v| triple(&format!("camera.{key}"), &v)).transpose().map(|v| v.unwrap_or(default))
     };
-    let projection = match get(d, "projection")?
-        .map(|v| text("camera.projection", &v))
-        .transpose()?
-        .as_deref()
-    {
-        None | Some("perspective") => Projection::Perspective {
-            fov_y_deg: number_or(d, "camera", "fov_y", 35.0)?,
-        },
-        Some("orthographic") => Projection::Orthographic {
-            height: number_or(d, "camera", "height", 2.0)?,
-        },
-        Some(o) => {
-            return Err(Error::invalid(
-                "camera.projection",
-                format!("must be 'perspective' or 'orthographic', got {o:?}"),
-            ))
-        }
-    };
-    let placement = match get(d, "kind")?
-        .map(|v| text("camera.kind", &v))
-        .transpose()?
-        .as_deref()
-    {
+    let projection =
+        match get(d, "projection")?.map(|v| text("camera.projection", &v)).transpose()?.as_deref() {
+            None | Some("perspective") => {
+                Projection::Perspective { fov_y_deg: number_or(d, "camera", "fov_y", 35.0)? }
+            }
+            Some("orthographic") => {
+                Projection::Orthographic { height: number_or(d, "camera", "height", 2.0)? }
+            }
+            Some(o) => {
+                return Err(Error::invalid(
+                    "camera.projection",
+                    format!("must be 'perspective' or 'orthographic', got {o:?}"),
+                ))
+            }
+        };
+    let placement = match get(d, "kind")?.map(|v| text("camera.kind", &v)).transpose()?.as_deref() {
         None | Some("fit") => {
-            let Placement::Fit {
-                direction,
-                up,
-                margin,
-            } = defaults.placement
-            else {
-                unreachable!()
-            };
+            let Placement::Fit { direction, up, margin } = defaults.placement else { unreachable!() };
             Placement::Fit {
                 direction: opt_triple("direction", direction)?,
                 up: opt_triple("up", up)?,
@@ -238,35 +209,19 @@ fn camera_of(obj: Option<Bound<'_, PyAny>>) -> Result<Camera> {
             up: opt_triple("up", [0.0, 1.0, 0.0])?,
         },
         Some(o) => {
-            return Err(Error::invalid(
-                "camera.kind",
-                format!("must be 'fit' or 'look_at', got {o:?}"),
-            ))
+            return Err(Error::invalid("camera.kind", format!("must be 'fit' or 'look_at', got {o:?}")))
         }
     };
-    let near = get(d, "near")?
-        .map(|v| number("camera.near", &v))
-        .transpose()?;
-    let far = get(d, "far")?
-        .map(|v| number("camera.far", &v))
-        .transpose()?;
-    let cam = Camera {
-        placement,
-        projection,
-        near,
-        far,
-    };
+    let near = get(d, "near")?.map(|v| number("camera.near", &v)).transpose()?;
+    let far = get(d, "far")?.map(|v| number("camera.far", &v)).transpose()?;
+    let cam = Camera { placement, projection, near, far };
     cam.validate()?;
     Ok(cam)
 }
 
 fn light(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Light> {
     let d = dict(arg, obj)?;
-    let kind = match get(d, "kind")?
-        .map(|v| text(&format!("{arg}.kind"), &v))
-        .transpose()?
-        .as_deref()
-    {
+    let kind = match get(d, "kind")?.map(|v| text(&format!("{arg}.kind"), &v)).transpose()?.as_deref() {
         None | Some("directional") => LightKind::Directional {
             direction: get(d, "direction")?
                 .map(|v| triple(&format!("{arg}.direction"), &v))
@@ -277,9 +232,7 @@ fn light(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Light> {
             position: get(d, "position")?
                 .map(|v| triple(&format!("{arg}.position"), &v))
                 .transpose()?
-                .ok_or_else(|| {
-                    Error::invalid(format!("{arg}.position"), "a point light needs a position")
-                })?,
+                .ok_or_else(|| Error::invalid(format!("{arg}.position"), "a point light needs a position"))?,
         },
         Some(o) => {
             return Err(Error::invalid(
@@ -288,11 +241,7 @@ fn light(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Light> {
             ))
         }
     };
-    let space = match get(d, "space")?
-        .map(|v| text(&format!("{arg}.space"), &v))
-        .transpose()?
-        .as_deref()
-    {
+    let space = match get(d, "space")?.map(|v| text(&format!("{arg}.space"), &v)).transpose()?.as_deref() {
         None | Some("world") => Space::World,
         Some("camera") => Space::Camera,
         Some(o) => {
@@ -310,11 +259,7 @@ fn light(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Light> {
         ));
     }
     let c = color_or(d, arg, "color", [1.0; 3])?;
-    let l = Light {
-        kind,
-        space,
-        color: c.map(|x| x * intensity as f32),
-    };
+    let l = Light { kind, space, color: c.map(|x| x * intensity as f32) };
     l.validate(arg)?;
     Ok(l)
 }
@@ -344,28 +289,13 @@ fn output_dict<'py>(py: Python<'py>, out: RenderOutput) -> PyResult<Bound<'py, P
     let shape = "the readback has one value per pixel";
     d.set_item(
         "color",
-        out.color.map(|c| {
-            Array3::from_shape_vec((h, w, 4), c)
-                .expect(shape)
-                .into_pyarray(py)
-        }),
+        out.color.map(|c| Array3::from_shape_vec((h, w, 4), c).expect(shape).into_pyarray(py)),
     )?;
     d.set_item(
         "normal",
-        out.normal.map(|n| {
-            Array3::from_shape_vec((h, w, 3), n)
-                .expect(shape)
-                .into_pyarray(py)
-        }),
+        out.normal.map(|n| Array3::from_shape_vec((h, w, 3), n).expect(shape).into_pyarray(py)),
     )?;
-    d.set_item(
-        "depth",
-        out.depth.map(|z| {
-            Array2::from_shape_vec((h, w), z)
-                .expect(shape)
-                .into_pyarray(py)
-        }),
-    )?;
+    d.set_item("depth", out.depth.map(|z| Array2::from_shape_vec((h, w), z).expect(shape).into_pyarray(py)))?;
     d.set_item("timings", out.timings)?;
     d.set_item("view", matrix(py, out.view))?;
     d.set_item("proj", matrix(py, out.proj))?;
@@ -444,10 +374,9 @@ impl PyRenderer {
             let mut scene_items = Vec::with_capacity(items.len());
             for (i, item) in items.iter().enumerate() {
                 let arg = format!("meshes[{i}]");
-                let (id, mat, tf): (u64, Bound<'_, PyAny>, Option<Bound<'_, PyAny>>) =
-                    item.extract().map_err(|_| {
-                        Error::wrong_type(&arg, "expected (mesh id, material, transform)")
-                    })?;
+                let (id, mat, tf): (u64, Bound<'_, PyAny>, Option<Bound<'_, PyAny>>) = item
+                    .extract()
+                    .map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform)"))?;
                 scene_items.push(SceneItem {
                     mesh: self.inner.mesh(id)?,
                     material: material(&format!("{arg}.material"), &mat)?,
@@ -498,13 +427,9 @@ impl PyRenderer {
             }
             let size = |arg: &str, v: i64| -> Result<u32> {
                 if v < 1 {
-                    return Err(Error::invalid(
-                        arg,
-                        format!("must be at least 1 pixel, got {v}"),
-                    ));
+                    return Err(Error::invalid(arg, format!("must be at least 1 pixel, got {v}")));
                 }
-                u32::try_from(v)
-                    .map_err(|_| Error::invalid(arg, format!("{v} pixels is too large")))
+                u32::try_from(v).map_err(|_| Error::invalid(arg, format!("{v} pixels is too large")))
             };
             let small = |arg: &str, v: i64| {
                 u32::try_from(v).map_err(|_| Error::invalid(arg, format!("invalid value {v}")))
@@ -517,15 +442,7 @@ impl PyRenderer {
                 supersample: small("supersample", supersample)?,
                 background,
             };
-            Ok((
-                Scene {
-                    items: scene_items,
-                    camera: camera_of(camera)?,
-                    lights,
-                    ambient,
-                },
-                frame,
-            ))
+            Ok((Scene { items: scene_items, camera: camera_of(camera)?, lights, ambient }, frame))
         })()
         .map_err(to_py)?;
         let inner = &self.inner;
@@ -545,22 +462,13 @@ fn gpu_info<'py>(py: Python<'py>, backend: Option<&str>) -> PyResult<Bound<'py, 
 
 /// encode_png(color: uint8 (H, W, 4)) -> bytes
 #[pyfunction]
-fn encode_png_rgba<'py>(
-    py: Python<'py>,
-    color: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, PyBytes>> {
-    let a: PyReadonlyArray3<'py, u8> = color.extract().map_err(|_| {
-        to_py(Error::wrong_type(
-            "color",
-            "expected a uint8 array of shape (H, W, 4)",
-        ))
-    })?;
+fn encode_png_rgba<'py>(py: Python<'py>, color: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyBytes>> {
+    let a: PyReadonlyArray3<'py, u8> = color
+        .extract()
+        .map_err(|_| to_py(Error::wrong_type("color", "expected a uint8 array of shape (H, W, 4)")))?;
     let shape = a.as_array().shape().to_vec();
     if shape[2] != 4 {
-        return Err(to_py(Error::invalid(
-            "color",
-            format!("expected shape (H, W, 4), got {shape:?}"),
-        )));
+        return Err(to_py(Error::invalid("color", format!("expected shape (H, W, 4), got {shape:?}"))));
     }
     let pixels: Vec<u8> = a.as_array().iter().copied().collect();
     let png = without_gil(py, || encode_png(shape[1] as u32, shape[0] as u32, &pixels))?;

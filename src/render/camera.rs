@@ -19,18 +19,10 @@ pub enum Projection {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Placement {
     /// An explicit eye, target and up vector.
-    LookAt {
-        eye: [f64; 3],
-        target: [f64; 3],
-        up: [f64; 3],
-    },
+    LookAt { eye: [f64; 3], target: [f64; 3], up: [f64; 3] },
     /// Look at the scene's bounding sphere from `direction` (pointing from the scene toward
     /// the eye), far enough that the sphere fits the image with `margin` (1 = touching).
-    Fit {
-        direction: [f64; 3],
-        up: [f64; 3],
-        margin: f64,
-    },
+    Fit { direction: [f64; 3], up: [f64; 3], margin: f64 },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -46,11 +38,7 @@ impl Default for Camera {
     /// Framed to fit, seen from the front, a little from the right and above.
     fn default() -> Self {
         Camera {
-            placement: Placement::Fit {
-                direction: [0.35, 0.3, 1.0],
-                up: [0.0, 1.0, 0.0],
-                margin: 1.05,
-            },
+            placement: Placement::Fit { direction: [0.35, 0.3, 1.0], up: [0.0, 1.0, 0.0], margin: 1.05 },
             projection: Projection::Perspective { fov_y_deg: 35.0 },
             near: None,
             far: None,
@@ -102,10 +90,7 @@ impl Camera {
                 ))
             }
             Projection::Orthographic { height } if !(height > 0.0 && height.is_finite()) => {
-                return Err(Error::invalid(
-                    "camera.height",
-                    format!("must be finite and > 0, got {height}"),
-                ))
+                return Err(Error::invalid("camera.height", format!("must be finite and > 0, got {height}")))
             }
             _ => {}
         }
@@ -114,31 +99,18 @@ impl Camera {
                 let (e, t) = (vec3("camera.eye", eye)?, vec3("camera.target", target)?);
                 let forward = t - e;
                 if !(forward.length() > 0.0) {
-                    return Err(Error::invalid(
-                        "camera.target",
-                        "must differ from camera.eye",
-                    ));
+                    return Err(Error::invalid("camera.target", "must differ from camera.eye"));
                 }
                 let u = unit("camera.up", up)?;
                 if forward.normalize().cross(u).length() < 1e-9 {
-                    return Err(Error::invalid(
-                        "camera.up",
-                        "must not be parallel to the viewing direction",
-                    ));
+                    return Err(Error::invalid("camera.up", "must not be parallel to the viewing direction"));
                 }
             }
-            Placement::Fit {
-                direction,
-                up,
-                margin,
-            } => {
+            Placement::Fit { direction, up, margin } => {
                 let d = unit("camera.direction", direction)?;
                 let u = unit("camera.up", up)?;
                 if d.cross(u).length() < 1e-9 {
-                    return Err(Error::invalid(
-                        "camera.up",
-                        "must not be parallel to camera.direction",
-                    ));
+                    return Err(Error::invalid("camera.up", "must not be parallel to camera.direction"));
                 }
                 if !(margin > 0.0 && margin.is_finite()) {
                     return Err(Error::invalid(
@@ -150,8 +122,7 @@ impl Camera {
         }
         for (arg, v) in [("camera.near", self.near), ("camera.far", self.far)] {
             if let Some(x) = v {
-                if !(x.is_finite()
-                    && (x > 0.0 || matches!(self.projection, Projection::Orthographic { .. })))
+                if !(x.is_finite() && (x > 0.0 || matches!(self.projection, Projection::Orthographic { .. })))
                 {
                     return Err(Error::invalid(
                         arg,
@@ -175,17 +146,10 @@ impl Camera {
     pub fn resolve(&self, scene: Sphere, aspect: f64) -> Result<ResolvedCamera> {
         self.validate()?;
         let (eye, target, up, projection) = match self.placement {
-            Placement::LookAt { eye, target, up } => (
-                DVec3::from_array(eye),
-                DVec3::from_array(target),
-                DVec3::from_array(up),
-                self.projection,
-            ),
-            Placement::Fit {
-                direction,
-                up,
-                margin,
-            } => {
+            Placement::LookAt { eye, target, up } => {
+                (DVec3::from_array(eye), DVec3::from_array(target), DVec3::from_array(up), self.projection)
+            }
+            Placement::Fit { direction, up, margin } => {
                 let dir = DVec3::from_array(direction).normalize();
                 let r = scene.radius * margin;
                 match self.projection {
@@ -194,22 +158,12 @@ impl Camera {
                         let half_y = (fov_y_deg.to_radians() / 2.0).tan();
                         let half = half_y.min(half_y * aspect).atan();
                         let dist = r / half.sin();
-                        (
-                            scene.center + dir * dist,
-                            scene.center,
-                            DVec3::from_array(up),
-                            self.projection,
-                        )
+                        (scene.center + dir * dist, scene.center, DVec3::from_array(up), self.projection)
                     }
                     Projection::Orthographic { .. } => {
                         let height = 2.0 * r * (1.0f64 / aspect).max(1.0);
                         let eye = scene.center + dir * (2.0 * r.max(1e-300));
-                        (
-                            eye,
-                            scene.center,
-                            DVec3::from_array(up),
-                            Projection::Orthographic { height },
-                        )
+                        (eye, scene.center, DVec3::from_array(up), Projection::Orthographic { height })
                     }
                 }
             }
@@ -228,32 +182,18 @@ impl Camera {
             (((d - r * 1.01).max(far * 1e-4)).min(far * 0.5), far)
         };
         let near = self.near.unwrap_or(auto_near);
-        let far = self
-            .far
-            .unwrap_or(auto_far)
-            .max(near * (1.0 + 1e-6) + 1e-12);
+        let far = self.far.unwrap_or(auto_far).max(near * (1.0 + 1e-6) + 1e-12);
         let proj = match projection {
-            Projection::Perspective { fov_y_deg } => {
-                perspective(fov_y_deg.to_radians(), aspect, near, far)
-            }
+            Projection::Perspective { fov_y_deg } => perspective(fov_y_deg.to_radians(), aspect, near, far),
             Projection::Orthographic { height } => {
                 let (h, w) = (height / 2.0, height / 2.0 * aspect);
                 self::orthographic(w, h, near, far)
             }
         };
         if !view.is_finite() || !proj.is_finite() {
-            return Err(Error::invalid(
-                "camera",
-                "the camera gives a non-finite view or projection matrix",
-            ));
+            return Err(Error::invalid("camera", "the camera gives a non-finite view or projection matrix"));
         }
-        Ok(ResolvedCamera {
-            view,
-            proj,
-            near,
-            far,
-            orthographic,
-        })
+        Ok(ResolvedCamera { view, proj, near, far, orthographic })
     }
 }
 
@@ -301,10 +241,7 @@ mod tests {
 
     #[test]
     fn projections_map_near_to_0_and_far_to_1() {
-        for p in [
-            perspective(1.0, 1.5, 0.5, 20.0),
-            orthographic(2.0, 1.0, 0.5, 20.0),
-        ] {
+        for p in [perspective(1.0, 1.5, 0.5, 20.0), orthographic(2.0, 1.0, 0.5, 20.0)] {
             for (z, want) in [(-0.5, 0.0), (-20.0, 1.0)] {
                 let c = p * glam::DVec4::new(0.3, 0.2, z, 1.0);
                 assert!((c.z / c.w - want).abs() < 1e-12);
@@ -317,10 +254,7 @@ mod tests {
     #[test]
     fn fit_frames_the_sphere_and_encloses_it() {
         let cam = Camera::default();
-        let s = Sphere {
-            center: DVec3::new(1.0, 2.0, 3.0),
-            radius: 2.0,
-        };
+        let s = Sphere { center: DVec3::new(1.0, 2.0, 3.0), radius: 2.0 };
         let r = cam.resolve(s, 2.0).unwrap();
         let c = r.view.transform_point3(s.center);
         assert!(-c.z - s.radius > r.near && -c.z + s.radius < r.far);

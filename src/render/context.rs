@@ -30,10 +30,9 @@ impl BackendChoice {
             "" | "auto" => Ok(Self::Auto),
             "vulkan" | "vk" => Ok(Self::Vulkan),
             "gl" | "gles" | "opengl" | "egl" => Ok(Self::Gl),
-            other => Err(Error::invalid(
-                arg,
-                format!("unknown backend {other:?}; use 'auto', 'vulkan' or 'gl'"),
-            )),
+            other => {
+                Err(Error::invalid(arg, format!("unknown backend {other:?}; use 'auto', 'vulkan' or 'gl'")))
+            }
         }
     }
 
@@ -93,9 +92,8 @@ pub fn context(choice: BackendChoice) -> Result<Arc<GpuContext>> {
     let ctx = match choice {
         BackendChoice::Vulkan | BackendChoice::Gl => Arc::new(create(choice)?),
         BackendChoice::Auto => {
-            let found = [BackendChoice::Vulkan, BackendChoice::Gl]
-                .into_iter()
-                .find_map(|b| match map.get(&b) {
+            let found =
+                [BackendChoice::Vulkan, BackendChoice::Gl].into_iter().find_map(|b| match map.get(&b) {
                     Some(c) => Some(Ok(c.clone())),
                     None => match create(b) {
                         Ok(c) => Some(Ok(Arc::new(c))),
@@ -109,11 +107,7 @@ pub fn context(choice: BackendChoice) -> Result<Arc<GpuContext>> {
             }
         }
     };
-    let concrete = if ctx.is_gl {
-        BackendChoice::Gl
-    } else {
-        BackendChoice::Vulkan
-    };
+    let concrete = if ctx.is_gl { BackendChoice::Gl } else { BackendChoice::Vulkan };
     map.insert(concrete, ctx.clone());
     map.insert(choice, ctx.clone());
     Ok(ctx)
@@ -158,21 +152,14 @@ fn create(choice: BackendChoice) -> Result<GpuContext> {
         memory_hints: wgpu::MemoryHints::Performance,
         trace: wgpu::Trace::Off,
     }))
-    .map_err(|e| {
-        Error::NoAdapter(format!(
-            "the {} adapter refused to open a device: {e}",
-            choice.name()
-        ))
-    })?;
+    .map_err(|e| Error::NoAdapter(format!("the {} adapter refused to open a device: {e}", choice.name())))?;
     // Errors are caught per render with error scopes; anything outside one must not panic.
     device.on_uncaptured_error(Arc::new(|e| {
         eprintln!("toonmesh: GPU error outside a render: {e}");
     }));
     let a = adapter.get_info();
     let is_gl = a.backend == wgpu::Backend::Gl;
-    let color_samples = adapter
-        .get_texture_format_features(super::targets::COLOR_FORMAT)
-        .flags;
+    let color_samples = adapter.get_texture_format_features(super::targets::COLOR_FORMAT).flags;
     let msaa_samples = [1u32, 2, 4, 8, 16]
         .into_iter()
         .filter(|&s| s == 1 || color_samples.sample_count_supported(s))

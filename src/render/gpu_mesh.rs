@@ -12,10 +12,7 @@ use super::context::GpuContext;
 
 /// Bounds of the vertices that faces refer to (unreferenced ones do not count for framing).
 fn used_bounds<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Bounds {
-    let mut b = Bounds {
-        min: [f64::INFINITY; 3],
-        max: [f64::NEG_INFINITY; 3],
-    };
+    let mut b = Bounds { min: [f64::INFINITY; 3], max: [f64::NEG_INFINITY; 3] };
     for &i in faces.iter().flatten() {
         let p = positions[i as usize];
         for k in 0..3 {
@@ -39,10 +36,7 @@ impl NormalMode {
         match s {
             "smooth" => Ok(Self::Smooth),
             "flat" => Ok(Self::Flat),
-            other => Err(Error::invalid(
-                arg,
-                format!("must be 'smooth' or 'flat', got {other:?}"),
-            )),
+            other => Err(Error::invalid(arg, format!("must be 'smooth' or 'flat', got {other:?}"))),
         }
     }
 }
@@ -88,25 +82,18 @@ impl GpuMesh {
             .flatten()
             .map(|&i| {
                 let p = positions[i as usize];
-                (0..3)
-                    .map(|k| (p[k].to_f64() - origin[k]).powi(2))
-                    .sum::<f64>()
+                (0..3).map(|k| (p[k].to_f64() - origin[k]).powi(2)).sum::<f64>()
             })
             .fold(0.0f64, f64::max)
             .sqrt();
-        let rel = |p: Vec3<T>| -> [f32; 3] {
-            std::array::from_fn(|k| (p[k].to_f64() - origin[k]) as f32)
-        };
+        let rel = |p: Vec3<T>| -> [f32; 3] { std::array::from_fn(|k| (p[k].to_f64() - origin[k]) as f32) };
         let (vertices, indices): (Vec<Vertex>, Option<&[[u32; 3]]>) = match normals {
             NormalMode::Smooth => {
                 let n = vertex_normals(positions, faces);
                 let v = positions
                     .iter()
                     .zip(&n)
-                    .map(|(p, n)| Vertex {
-                        position: rel(*p),
-                        normal: n.map(|x| x as f32),
-                    })
+                    .map(|(p, n)| Vertex { position: rel(*p), normal: n.map(|x| x as f32) })
                     .collect();
                 (v, Some(faces))
             }
@@ -115,10 +102,7 @@ impl GpuMesh {
                 for f in faces {
                     let [a, b, c] = f.map(|i| positions[i as usize]);
                     let n = triangle_unit_normal(a, b, c).map(|x| x as f32);
-                    v.extend([a, b, c].map(|p| Vertex {
-                        position: rel(p),
-                        normal: n,
-                    }));
+                    v.extend([a, b, c].map(|p| Vertex { position: rel(p), normal: n }));
                 }
                 (v, None)
             }
@@ -136,8 +120,8 @@ impl GpuMesh {
             Some(f) => f.len() * 3,
             None => vertices.len(),
         };
-        let draw_count = u32::try_from(draw_count)
-            .map_err(|_| Error::invalid("faces", "too many faces for one draw"))?;
+        let draw_count =
+            u32::try_from(draw_count).map_err(|_| Error::invalid("faces", "too many faces for one draw"))?;
         let device = &ctx.device;
         let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("mesh vertices"),
@@ -165,8 +149,7 @@ impl GpuMesh {
     }
 
     pub fn vertex_layout() -> wgpu::VertexBufferLayout<'static> {
-        const ATTRS: [wgpu::VertexAttribute; 2] =
-            wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
+        const ATTRS: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
         wgpu::VertexBufferLayout {
             array_stride: std::mem::size_of::<Vertex>() as u64,
             step_mode: wgpu::VertexStepMode::Vertex,

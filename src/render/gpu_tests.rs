@@ -18,18 +18,12 @@ fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene 
     let (v, f) = icosphere(4, 0.0, 0).unwrap();
     let id = r.add_mesh(&v, &f, normals).unwrap();
     Scene {
-        items: vec![SceneItem {
-            mesh: r.mesh(id).unwrap(),
-            transform: IDENTITY,
-            material,
-        }],
+        items: vec![SceneItem { mesh: r.mesh(id).unwrap(), transform: IDENTITY, material }],
         camera: Camera::default(),
         lights: vec![
             Light::default(),
             Light {
-                kind: super::light::LightKind::Point {
-                    position: [3.0, 1.0, 2.0],
-                },
+                kind: super::light::LightKind::Point { position: [3.0, 1.0, 2.0] },
                 space: super::light::Space::World,
                 color: [0.3, 0.2, 0.1],
             },
@@ -42,11 +36,7 @@ fn all_outputs(w: u32, h: u32) -> FrameSpec {
     FrameSpec {
         width: w,
         height: h,
-        outputs: Outputs {
-            color: true,
-            normal: true,
-            depth: true,
-        },
+        outputs: Outputs { color: true, normal: true, depth: true },
         ..Default::default()
     }
 }
@@ -64,11 +54,8 @@ fn agreement(scene: &Scene, out: &RenderOutput) -> (f64, usize) {
             ViewLight::At(p) => RefLight::At(p.as_vec3(), Vec3::from(l.color)),
         })
         .collect();
-    let (color, normal, depth) = (
-        out.color.as_ref().unwrap(),
-        out.normal.as_ref().unwrap(),
-        out.depth.as_ref().unwrap(),
-    );
+    let (color, normal, depth) =
+        (out.color.as_ref().unwrap(), out.normal.as_ref().unwrap(), out.depth.as_ref().unwrap());
     let inv = proj.inverse();
     let (mut good, mut covered) = (0usize, 0usize);
     for y in 0..h {
@@ -88,11 +75,8 @@ fn agreement(scene: &Scene, out: &RenderOutput) -> (f64, usize) {
             );
             let q = inv * DVec4::new(ndc.x, ndc.y, ndc.z, 1.0);
             let q = q.truncate() / q.w;
-            let p = if proj.w_axis.w == 1.0 {
-                DVec3::new(q.x, q.y, -(z as f64))
-            } else {
-                q * (z as f64 / -q.z)
-            };
+            let p =
+                if proj.w_axis.w == 1.0 { DVec3::new(q.x, q.y, -(z as f64)) } else { q * (z as f64 / -q.z) };
             let c = shade(
                 &scene.items[0].material,
                 n,
@@ -119,18 +103,9 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
     let models = [
         Model::Lambert,
         Model::Phong { shininess: 20.0 },
-        Model::ThresholdedPhong {
-            t_h: 0.1,
-            t_s: 0.95,
-            highlight: Highlight::Blinn,
-        },
-        Model::Bands {
-            thresholds: vec![0.2, 0.5, 0.7, 0.9],
-            values: vec![0.0, 0.2, 0.7, 0.9, 1.0],
-        },
-        Model::Lut {
-            table: kang_table(),
-        },
+        Model::ThresholdedPhong { t_h: 0.1, t_s: 0.95, highlight: Highlight::Blinn },
+        Model::Bands { thresholds: vec![0.2, 0.5, 0.7, 0.9], values: vec![0.0, 0.2, 0.7, 0.9, 1.0] },
+        Model::Lut { table: kang_table() },
     ];
     for backend in backends() {
         let r = Renderer::new(backend).expect("a GPU adapter (install Mesa's lavapipe/llvmpipe)");
@@ -145,18 +120,10 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
             let scene = sphere_scene(&r, material, NormalMode::Smooth);
             let out = r.render(&scene, &all_outputs(161, 97)).unwrap();
             let (ok, covered) = agreement(&scene, &out);
-            assert!(
-                covered > 3000,
-                "{backend:?} model {}: the sphere covers {covered} pixels",
-                model.id()
-            );
+            assert!(covered > 3000, "{backend:?} model {}: the sphere covers {covered} pixels", model.id());
             // band and threshold edges: a pixel whose L.n lies within f16-free f32 rounding of a
             // threshold may land on either side; they are far fewer than 0.5%
-            assert!(
-                ok >= 0.995,
-                "{backend:?} model {}: only {ok} of covered pixels match",
-                model.id()
-            );
+            assert!(ok >= 0.995, "{backend:?} model {}: only {ok} of covered pixels match", model.id());
         }
     }
 }
@@ -178,27 +145,15 @@ fn odd_and_tiny_sizes_read_back_whole_rows() {
 #[test]
 fn empty_scene_is_background() {
     let r = Renderer::new(BackendChoice::Auto).unwrap();
-    let scene = Scene {
-        items: vec![],
-        camera: Camera::default(),
-        lights: vec![],
-        ambient: [0.0; 3],
-    };
-    let frame = FrameSpec {
-        background: [0.2, 0.4, 0.6, 1.0],
-        ..all_outputs(5, 4)
-    };
+    let scene = Scene { items: vec![], camera: Camera::default(), lights: vec![], ambient: [0.0; 3] };
+    let frame = FrameSpec { background: [0.2, 0.4, 0.6, 1.0], ..all_outputs(5, 4) };
     let out = r.render(&scene, &frame).unwrap();
     let c = out.color.unwrap();
     assert_eq!(&c[..4], &[51, 102, 153, 255]);
     assert!(out.depth.unwrap().iter().all(|d| *d == f32::INFINITY));
     assert!(out.normal.unwrap().iter().all(|n| *n == 0.0));
     let _ = Camera {
-        placement: Placement::LookAt {
-            eye: [0.0; 3],
-            target: [0.0, 0.0, -1.0],
-            up: [0.0, 1.0, 0.0],
-        },
+        placement: Placement::LookAt { eye: [0.0; 3], target: [0.0, 0.0, -1.0], up: [0.0, 1.0, 0.0] },
         projection: Projection::Perspective { fov_y_deg: 40.0 },
         near: None,
         far: None,

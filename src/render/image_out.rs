@@ -9,10 +9,7 @@ pub fn encode_png(width: u32, height: u32, rgba: &[u8]) -> Result<Vec<u8>> {
     if width == 0 || height == 0 || rgba.len() as u64 != width as u64 * height as u64 * 4 {
         return Err(Error::invalid(
             "image",
-            format!(
-                "expected {width} x {height} RGBA pixels, got {} bytes",
-                rgba.len()
-            ),
+            format!("expected {width} x {height} RGBA pixels, got {} bytes", rgba.len()),
         ));
     }
     let mut out = Vec::new();

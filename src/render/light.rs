@@ -34,9 +34,7 @@ impl Default for Light {
     /// A key light from the upper left, behind the viewer, that moves with the camera.
     fn default() -> Self {
         Light {
-            kind: LightKind::Directional {
-                direction: [0.4, -0.55, -0.75],
-            },
+            kind: LightKind::Directional { direction: [0.4, -0.55, -0.75] },
             space: Space::Camera,
             color: [1.0, 1.0, 1.0],
         }
@@ -63,10 +61,7 @@ impl Light {
                     ));
                 }
                 if !(d.length() > 1e-300) {
-                    return Err(Error::invalid(
-                        format!("{arg}.direction"),
-                        "must not be the zero vector",
-                    ));
+                    return Err(Error::invalid(format!("{arg}.direction"), "must not be the zero vector"));
                 }
             }
             LightKind::Point { position } => {
@@ -93,23 +88,17 @@ impl Light {
             Space::Camera => DMat4::IDENTITY,
         };
         match self.kind {
-            LightKind::Directional { direction } => ViewLight::Toward(
-                -m.transform_vector3(DVec3::from_array(direction))
-                    .normalize(),
-            ),
-            LightKind::Point { position } => {
-                ViewLight::At(m.transform_point3(DVec3::from_array(position)))
+            LightKind::Directional { direction } => {
+                ViewLight::Toward(-m.transform_vector3(DVec3::from_array(direction)).normalize())
             }
+            LightKind::Point { position } => ViewLight::At(m.transform_point3(DVec3::from_array(position))),
         }
     }
 }
 
 pub fn validate_lights(lights: &[Light]) -> Result<()> {
     if lights.len() > MAX_LIGHTS {
-        return Err(Error::invalid(
-            "lights",
-            format!("at most {MAX_LIGHTS} lights, got {}", lights.len()),
-        ));
+        return Err(Error::invalid("lights", format!("at most {MAX_LIGHTS} lights, got {}", lights.len())));
     }
     for (i, l) in lights.iter().enumerate() {
         l.validate(&format!("lights[{i}]"))?;

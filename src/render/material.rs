@@ -27,16 +27,9 @@ pub enum Model {
     /// f = max(L.n, 0), s = max(R.v, 0)^shininess where L.n > 0 (R = reflect(-L, n)).
     Phong { shininess: f32 },
     /// Al-Rousan et al.: f = thresh(L.n, t_h), s = thresh(L.v or n.h, t_s); thresh(a, b) = a >= b.
-    ThresholdedPhong {
-        t_h: f32,
-        t_s: f32,
-        highlight: Highlight,
-    },
+    ThresholdedPhong { t_h: f32, t_s: f32, highlight: Highlight },
     /// Borquez and Yepez: f = values[number of thresholds t with L.n >= t].
-    Bands {
-        thresholds: Vec<f32>,
-        values: Vec<f32>,
-    },
+    Bands { thresholds: Vec<f32>, values: Vec<f32> },
     /// Kang et al.: f = table[min(floor(clamp(L.n, 0, 1) N), N - 1)], an RGB gradient map.
     Lut { table: Vec<[f32; 3]> },
 }
@@ -72,9 +65,7 @@ pub const PAPER_BAND_VALUES: [f32; 5] = [0.0, 0.2, 0.7, 0.9, 1.0];
 /// A 256-entry table with three levels, as Kang et al. map 256 intensities to 3 tones
 /// (the paper gives no numbers: these split the range in thirds).
 pub fn kang_table() -> Vec<[f32; 3]> {
-    (0..256)
-        .map(|i| [[0.3f32, 0.65, 1.0][i * 3 / 256]; 3])
-        .collect()
+    (0..256).map(|i| [[0.3f32, 0.65, 1.0][i * 3 / 256]; 3]).collect()
 }
 
 impl Default for Material {
@@ -97,10 +88,7 @@ fn check_color(arg: &str, c: [f32; 3]) -> Result<()> {
     if c.iter().all(|v| v.is_finite() && *v >= 0.0) {
         Ok(())
     } else {
-        Err(Error::invalid(
-            arg,
-            format!("must be finite and >= 0, got {c:?}"),
-        ))
+        Err(Error::invalid(arg, format!("must be finite and >= 0, got {c:?}")))
     }
 }
 
@@ -133,10 +121,7 @@ impl Material {
                 if thresholds.is_empty() || thresholds.len() > MAX_BANDS {
                     return Err(Error::invalid(
                         format!("{arg}.thresholds"),
-                        format!(
-                            "needs 1 to {MAX_BANDS} thresholds, got {}",
-                            thresholds.len()
-                        ),
+                        format!("needs 1 to {MAX_BANDS} thresholds, got {}", thresholds.len()),
                     ));
                 }
                 if values.len() != thresholds.len() + 1 {
@@ -149,9 +134,7 @@ impl Material {
                         ),
                     ));
                 }
-                if !thresholds.iter().all(|t| t.is_finite())
-                    || thresholds.windows(2).any(|w| w[1] <= w[0])
-                {
+                if !thresholds.iter().all(|t| t.is_finite()) || thresholds.windows(2).any(|w| w[1] <= w[0]) {
                     return Err(Error::invalid(
                         format!("{arg}.thresholds"),
                         format!("must be finite and strictly increasing, got {thresholds:?}"),
@@ -172,10 +155,7 @@ impl Material {
                     ));
                 }
                 if !table.iter().flatten().all(|v| v.is_finite() && *v >= 0.0) {
-                    return Err(Error::invalid(
-                        format!("{arg}.table"),
-                        "entries must be finite and >= 0",
-                    ));
+                    return Err(Error::invalid(format!("{arg}.table"), "entries must be finite and >= 0"));
                 }
             }
         }

@@ -14,13 +14,8 @@ const DOWNSAMPLE_WGSL: &str = include_str!("shaders/downsample.wgsl");
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PipelineKey {
-    /// The shading pass; with normal/depth targets when it also writes them.
-    Shade {
-        samples: u32,
-        normal: bool,
-        depth: bool,
-        per_vertex: bool,
-    },
+    /// The shading pass; with normal/depth targets (in that order, no gaps) when it writes them.
+    Shade { samples: u32, normal: bool, depth: bool, per_vertex: bool },
     /// The geometry-only pass.
     GBuffer { normal: bool, depth: bool },
     /// Supersampling's box filter.
@@ -54,11 +49,7 @@ fn uniform_layout(device: &wgpu::Device, label: &str) -> wgpu::BindGroupLayout {
 }
 
 fn target(format: wgpu::TextureFormat) -> Option<wgpu::ColorTargetState> {
-    Some(wgpu::ColorTargetState {
-        format,
-        blend: None,
-        write_mask: wgpu::ColorWrites::ALL,
-    })
+    Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })
 }
 
 impl PipelineCache {
@@ -83,12 +74,11 @@ impl PipelineCache {
             bind_group_layouts: &[Some(&frame_layout), Some(&draw_layout)],
             immediate_size: 0,
         });
-        let source_pipeline_layout =
-            device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-                label: Some("image passes"),
-                bind_group_layouts: &[Some(&source_layout)],
-                immediate_size: 0,
-            });
+        let source_pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("image passes"),
+            bind_group_layouts: &[Some(&source_layout)],
+            immediate_size: 0,
+        });
         PipelineCache {
             frame_layout,
             draw_layout,
@@ -119,21 +109,11 @@ impl PipelineCache {
     }
 
     pub fn get(&self, device: &wgpu::Device, key: PipelineKey) -> Arc<wgpu::RenderPipeline> {
-        if let Some(p) = self
-            .pipelines
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .get(&key)
-        {
+        if let Some(p) = self.pipelines.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
             return p.clone();
         }
         let p = Arc::new(self.build(device, key));
-        self.pipelines
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .entry(key)
-            .or_insert(p)
-            .clone()
+        self.pipelines.lock().unwrap_or_else(|e| e.into_inner()).entry(key).or_insert(p).clone()
     }
 
     fn build(&self, device: &wgpu::Device, key: PipelineKey) -> wgpu::RenderPipeline {
@@ -145,36 +125,21 @@ impl PipelineCache {
             bias: Default::default(),
         });
         // Both sides are drawn: a camera inside a mesh, or an open surface, shows back faces.
-        let mesh_primitive = wgpu::PrimitiveState {
-            cull_mode: None,
-            front_face: wgpu::FrontFace::Ccw,
-            ..Default::default()
-        };
+        let mesh_primitive =
+            wgpu::PrimitiveState { cull_mode: None, front_face: wgpu::FrontFace::Ccw, ..Default::default() };
         let vertex_buffers = [Some(GpuMesh::vertex_layout())];
         match key {
-            PipelineKey::Shade {
-                samples,
-                normal,
-                depth,
-                per_vertex,
-            } => {
+            PipelineKey::Shade { samples, normal, depth, per_vertex } => {
                 let module = self.module(device, "shade");
                 let constants = [("PER_VERTEX", if per_vertex { 1.0 } else { 0.0 })];
-                let targets = [
-                    target(COLOR_FORMAT),
-                    if normal { target(NORMAL_FORMAT) } else { None },
-                    if depth {
-                        target(LINEAR_DEPTH_FORMAT)
-                    } else {
-                        None
-                    },
-                ];
-                let n_targets = if depth {
-                    3
-                } else if normal {
-                    2
-                } else {
-                    1
+                let mut targets = vec![target(COLOR_FORMAT)];
+                targets.extend(normal.then(|| target(NORMAL_FORMAT)));
+                targets.extend(depth.then(|| target(LINEAR_DEPTH_FORMAT)));
+                let entry = match (normal, depth) {
+                    (false, false) => "fs_color",
+                    (true, false) => "fs_color_normal",
+                    (false, true) => "fs_color_depth",
+                    (true, true) => "fs_color_normal_depth",
                 };
                 device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                     label: Some("shade"),
@@ -197,12 +162,12 @@ impl PipelineCache {
                     },
                     fragment: Some(wgpu::FragmentState {
                         module: &module,
-                        entry_point: Some("fs_shade"),
+                        entry_point: Some(entry),
                         compilation_options: wgpu::PipelineCompilationOptions {
                             constants: &constants,
                             ..Default::default()
                         },
-                        targets: &targets[..n_targets],
+                        targets: &targets,
                     }),
                     multiview_mask: None,
                     cache: None,
@@ -210,15 +175,16 @@ impl PipelineCache {
             }
             PipelineKey::GBuffer { normal, depth } => {
                 let module = self.module(device, "gbuffer");
-                let targets = [
-                    if normal { target(NORMAL_FORMAT) } else { None },
-                    if depth {
-                        target(LINEAR_DEPTH_FORMAT)
-                    } else {
-                        None
-                    },
-                ];
-                let n_targets = if depth { 2 } else { 1 };
+                let mut targets = vec![];
+                targets.extend(normal.then(|| target(NORMAL_FORMAT)));
+                targets.extend(depth.then(|| target(LINEAR_DEPTH_FORMAT)));
+                let entry = if normal && depth {
+                    "fs_normal_depth"
+                } else if normal {
+                    "fs_normal"
+                } else {
+                    "fs_depth"
+                };
                 device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                     label: Some("gbuffer"),
                     layout: Some(&self.mesh_layout),
@@ -233,9 +199,9 @@ impl PipelineCache {
                     multisample: Default::default(),
                     fragment: Some(wgpu::FragmentState {
                         module: &module,
-                        entry_point: Some("fs_gbuffer"),
+                        entry_point: Some(entry),
                         compilation_options: Default::default(),
-                        targets: &targets[..n_targets],
+                        targets: &targets,
                     }),
                     multiview_mask: None,
                     cache: None,

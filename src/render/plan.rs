@@ -52,23 +52,15 @@ pub fn plan(frame: &FrameSpec) -> Vec<Pass> {
     let gbuffer = o.normal || o.depth;
     let mut passes = Vec::new();
     if o.color {
-        passes.push(Pass::Shade {
-            gbuffer: gbuffer && key.gbuffer_in_shade(),
-        });
+        passes.push(Pass::Shade { gbuffer: gbuffer && key.gbuffer_in_shade() });
     }
     if gbuffer && !key.gbuffer_in_shade() {
         passes.push(Pass::GBuffer);
     }
     if o.color && frame.supersample > 1 {
-        passes.push(Pass::Downsample {
-            factor: frame.supersample,
-        });
+        passes.push(Pass::Downsample { factor: frame.supersample });
     }
-    for (wanted, out) in [
-        (o.color, Output::Color),
-        (o.normal, Output::Normal),
-        (o.depth, Output::Depth),
-    ] {
+    for (wanted, out) in [(o.color, Output::Color), (o.normal, Output::Normal), (o.depth, Output::Depth)] {
         if wanted {
             passes.push(Pass::Readback(out));
         }
@@ -92,42 +84,17 @@ mod tests {
 
     #[test]
     fn gbuffer_joins_shading_only_when_sample_counts_match() {
-        let mut f = FrameSpec {
-            outputs: Outputs {
-                color: true,
-                normal: true,
-                depth: true,
-            },
-            ..Default::default()
-        };
-        assert_eq!(
-            names(&f),
-            [
-                "shade",
-                "readback_color",
-                "readback_normal",
-                "readback_depth"
-            ]
-        );
+        let mut f =
+            FrameSpec { outputs: Outputs { color: true, normal: true, depth: true }, ..Default::default() };
+        assert_eq!(names(&f), ["shade", "readback_color", "readback_normal", "readback_depth"]);
         assert_eq!(plan(&f)[0], Pass::Shade { gbuffer: true });
         f.msaa = 4;
         f.supersample = 2;
         assert_eq!(
             names(&f),
-            [
-                "shade",
-                "gbuffer",
-                "downsample",
-                "readback_color",
-                "readback_normal",
-                "readback_depth"
-            ]
+            ["shade", "gbuffer", "downsample", "readback_color", "readback_normal", "readback_depth"]
         );
-        f.outputs = Outputs {
-            color: false,
-            normal: false,
-            depth: true,
-        };
+        f.outputs = Outputs { color: false, normal: false, depth: true };
         assert_eq!(names(&f), ["gbuffer", "readback_depth"]);
     }
 }

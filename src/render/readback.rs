@@ -24,13 +24,7 @@ impl ReadbackBuffer {
             usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        ReadbackBuffer {
-            buffer,
-            width: size.0,
-            height: size.1,
-            bytes_per_pixel,
-            padded_row,
-        }
+        ReadbackBuffer { buffer, width: size.0, height: size.1, bytes_per_pixel, padded_row }
     }
 
     pub fn encode_copy(&self, encoder: &mut wgpu::CommandEncoder, texture: &wgpu::Texture) {
@@ -49,29 +43,18 @@ impl ReadbackBuffer {
                     rows_per_image: Some(self.height),
                 },
             },
-            wgpu::Extent3d {
-                width: self.width,
-                height: self.height,
-                depth_or_array_layers: 1,
-            },
+            wgpu::Extent3d { width: self.width, height: self.height, depth_or_array_layers: 1 },
         );
     }
 
     /// Waits for `submission` and returns the rows, top row first, without padding.
-    pub fn read(
-        &self,
-        device: &wgpu::Device,
-        submission: wgpu::SubmissionIndex,
-    ) -> Result<Vec<u8>> {
+    pub fn read(&self, device: &wgpu::Device, submission: wgpu::SubmissionIndex) -> Result<Vec<u8>> {
         let (tx, rx) = std::sync::mpsc::channel();
         self.buffer.map_async(wgpu::MapMode::Read, .., move |r| {
             let _ = tx.send(r);
         });
         device
-            .poll(wgpu::PollType::Wait {
-                submission_index: Some(submission),
-                timeout: None,
-            })
+            .poll(wgpu::PollType::Wait { submission_index: Some(submission), timeout: None })
             .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))?;
         rx.recv()
             .map_err(|_| Error::Gpu("the readback was dropped".into()))?
@@ -99,12 +82,7 @@ pub fn words_to_f32(bytes: &[u8], words_per_pixel: usize, keep: usize) -> Vec<f3
     let mut out = Vec::with_capacity(n * keep);
     for px in bytes.chunks_exact(4 * words_per_pixel) {
         for k in 0..keep {
-            out.push(f32::from_le_bytes([
-                px[4 * k],
-                px[4 * k + 1],
-                px[4 * k + 2],
-                px[4 * k + 3],
-            ]));
+            out.push(f32::from_le_bytes([px[4 * k], px[4 * k + 1], px[4 * k + 2], px[4 * k + 3]]));
         }
     }
     out

@@ -52,18 +52,10 @@ pub fn shade(
             Model::Lambert => (Vec3::splat(d.max(0.0)), 0.0),
             Model::Phong { shininess } => {
                 let r = 2.0 * d * n - l;
-                let s = if d > 0.0 {
-                    r.dot(v).max(0.0).powf(*shininess)
-                } else {
-                    0.0
-                };
+                let s = if d > 0.0 { r.dot(v).max(0.0).powf(*shininess) } else { 0.0 };
                 (Vec3::splat(d.max(0.0)), s)
             }
-            Model::ThresholdedPhong {
-                t_h,
-                t_s,
-                highlight,
-            } => {
+            Model::ThresholdedPhong { t_h, t_s, highlight } => {
                 let hl = match highlight {
                     Highlight::Paper => l.dot(v),
                     Highlight::Blinn => {

@@ -78,11 +78,7 @@ impl Renderer {
         normals: NormalMode,
     ) -> Result<u64> {
         crate::mesh::check_positions("vertices", positions)?;
-        if let Some(bad) = faces
-            .iter()
-            .flatten()
-            .find(|&&i| i as usize >= positions.len())
-        {
+        if let Some(bad) = faces.iter().flatten().find(|&&i| i as usize >= positions.len()) {
             return Err(Error::out_of_range(
                 "faces",
                 format!("vertex index {bad} is outside [0, {})", positions.len()),
@@ -90,34 +86,19 @@ impl Renderer {
         }
         let mesh = GpuMesh::upload(&self.ctx, positions, faces, normals)?;
         let id = self.next_id.fetch_add(1, Ordering::Relaxed);
-        self.meshes
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .insert(id, Arc::new(mesh));
+        self.meshes.lock().unwrap_or_else(|e| e.into_inner()).insert(id, Arc::new(mesh));
         Ok(id)
     }
 
     pub fn mesh(&self, id: u64) -> Result<Arc<GpuMesh>> {
-        self.meshes
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .get(&id)
-            .cloned()
-            .ok_or_else(|| {
-                Error::invalid(
-                    "mesh",
-                    format!("no mesh with id {id} in this renderer (removed?)"),
-                )
-            })
+        self.meshes.lock().unwrap_or_else(|e| e.into_inner()).get(&id).cloned().ok_or_else(|| {
+            Error::invalid("mesh", format!("no mesh with id {id} in this renderer (removed?)"))
+        })
     }
 
     /// Frees a mesh's device memory once no render in flight uses it. False if unknown.
     pub fn remove_mesh(&self, id: u64) -> bool {
-        self.meshes
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .remove(&id)
-            .is_some()
+        self.meshes.lock().unwrap_or_else(|e| e.into_inner()).remove(&id).is_some()
     }
 
     pub fn mesh_count(&self) -> usize {
@@ -128,10 +109,7 @@ impl Renderer {
     pub fn render(&self, scene: &Scene, frame: &FrameSpec) -> Result<RenderOutput> {
         frame.validate(self.ctx.info.max_texture_size, &self.ctx.info.msaa_samples)?;
         scene.validate()?;
-        let cam = scene.camera.resolve(
-            scene.bounding_sphere(),
-            frame.width as f64 / frame.height as f64,
-        )?;
+        let cam = scene.camera.resolve(scene.bounding_sphere(), frame.width as f64 / frame.height as f64)?;
         let device = &self.ctx.device;
         // Error scopes are per thread, so concurrent renders each see only their own errors.
         let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
@@ -159,10 +137,7 @@ impl Renderer {
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some(label),
                 layout,
-                entries: &[wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: buffer.as_entire_binding(),
-                }],
+                entries: &[wgpu::BindGroupEntry { binding: 0, resource: buffer.as_entire_binding() }],
             })
         };
         let pipelines = &self.ctx.pipelines;
@@ -211,9 +186,8 @@ impl Renderer {
         };
         for pass in plan(frame) {
             let start = Instant::now();
-            let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some(pass.name()),
-            });
+            let mut encoder =
+                device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(pass.name()) });
             match pass {
                 Pass::Shade { gbuffer } => {
                     passes::shade::encode(ctx, &mut encoder, &targets, &list, gbuffer, background)
@@ -239,17 +213,11 @@ impl Renderer {
                 }
                 _ => {
                     device
-                        .poll(wgpu::PollType::Wait {
-                            submission_index: Some(submission),
-                            timeout: None,
-                        })
-                        .map_err(|e| {
-                            Error::Gpu(format!("waiting for the {} pass: {e}", pass.name()))
-                        })?;
+                        .poll(wgpu::PollType::Wait { submission_index: Some(submission), timeout: None })
+                        .map_err(|e| Error::Gpu(format!("waiting for the {} pass: {e}", pass.name())))?;
                 }
             }
-            out.timings
-                .push((pass.name(), start.elapsed().as_secs_f64()));
+            out.timings.push((pass.name(), start.elapsed().as_secs_f64()));
         }
         ctx.targets.give_back(targets);
         Ok(out)
@@ -259,17 +227,8 @@ impl Renderer {
 fn readback_of(t: &FrameTargets, o: Output) -> (&super::readback::ReadbackBuffer, &wgpu::Texture) {
     let missing = "the plan reads back only targets the frame has";
     match o {
-        Output::Color => (
-            t.color_readback.as_ref().expect(missing),
-            t.color.as_ref().expect(missing),
-        ),
-        Output::Normal => (
-            t.normal_readback.as_ref().expect(missing),
-            t.normal.as_ref().expect(missing),
-        ),
-        Output::Depth => (
-            t.depth_readback.as_ref().expect(missing),
-            t.linear_depth.as_ref().expect(missing),
-        ),
+        Output::Color => (t.color_readback.as_ref().expect(missing), t.color.as_ref().expect(missing)),
+        Output::Normal => (t.normal_readback.as_ref().expect(missing), t.normal.as_ref().expect(missing)),
+        Output::Depth => (t.depth_readback.as_ref().expect(missing), t.linear_depth.as_ref().expect(missing)),
     }
 }

@@ -47,11 +47,7 @@ impl Default for FrameSpec {
         FrameSpec {
             width: 512,
             height: 512,
-            outputs: Outputs {
-                color: true,
-                normal: false,
-                depth: false,
-            },
+            outputs: Outputs { color: true, normal: false, depth: false },
             msaa: 1,
             supersample: 1,
             background: [1.0, 1.0, 1.0, 1.0],
@@ -78,24 +74,15 @@ impl FrameSpec {
             }
         }
         if !self.outputs.any() {
-            return Err(Error::invalid(
-                "outputs",
-                "ask for at least one of 'color', 'normal', 'depth'",
-            ));
+            return Err(Error::invalid("outputs", "ask for at least one of 'color', 'normal', 'depth'"));
         }
         if !(self.msaa == 1 || self.msaa == 4) {
-            return Err(Error::invalid(
-                "msaa",
-                format!("must be 1 or 4, got {}", self.msaa),
-            ));
+            return Err(Error::invalid("msaa", format!("must be 1 or 4, got {}", self.msaa)));
         }
         if !msaa_supported.contains(&self.msaa) {
             return Err(Error::invalid(
                 "msaa",
-                format!(
-                    "{}x is not supported by this GPU (it offers {msaa_supported:?})",
-                    self.msaa
-                ),
+                format!("{}x is not supported by this GPU (it offers {msaa_supported:?})", self.msaa),
             ));
         }
         if !(1..=MAX_SUPERSAMPLE).contains(&self.supersample) {
@@ -108,14 +95,13 @@ impl FrameSpec {
         if self.outputs.color && big > max_size as u64 {
             return Err(Error::invalid(
                 "supersample",
-                format!("{}x supersampling needs {big} pixels across, beyond this GPU's limit of {max_size}", self.supersample),
+                format!(
+                    "{}x supersampling needs {big} pixels across, beyond this GPU's limit of {max_size}",
+                    self.supersample
+                ),
             ));
         }
-        if !self
-            .background
-            .iter()
-            .all(|c| c.is_finite() && (0.0..=1.0).contains(c))
-        {
+        if !self.background.iter().all(|c| c.is_finite() && (0.0..=1.0).contains(c)) {
             return Err(Error::invalid(
                 "background",
                 format!("channels must be in [0, 1], got {:?}", self.background),
@@ -134,12 +120,8 @@ pub struct SceneItem {
     pub material: Material,
 }
 
-pub const IDENTITY: [[f64; 4]; 4] = [
-    [1.0, 0.0, 0.0, 0.0],
-    [0.0, 1.0, 0.0, 0.0],
-    [0.0, 0.0, 1.0, 0.0],
-    [0.0, 0.0, 0.0, 1.0],
-];
+pub const IDENTITY: [[f64; 4]; 4] =
+    [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
 
 impl SceneItem {
     pub fn model_matrix(&self) -> DMat4 {
@@ -159,10 +141,7 @@ impl SceneItem {
         }
         let det = DMat3::from_mat4(self.model_matrix()).determinant();
         if !(det.abs() > 1e-300) || !det.is_finite() {
-            return Err(Error::invalid(
-                format!("{arg}.transform"),
-                "is singular (it flattens the mesh)",
-            ));
+            return Err(Error::invalid(format!("{arg}.transform"), "is singular (it flattens the mesh)"));
         }
         self.material.validate(&format!("{arg}.material"))
     }
@@ -208,14 +187,10 @@ impl Scene {
             });
         }
         match all {
-            Some(s) if s.center.is_finite() && s.radius.is_finite() => Sphere {
-                center: s.center,
-                radius: s.radius.max(1e-9 * s.center.length().max(1.0)),
-            },
-            _ => Sphere {
-                center: DVec3::ZERO,
-                radius: 1.0,
-            },
+            Some(s) if s.center.is_finite() && s.radius.is_finite() => {
+                Sphere { center: s.center, radius: s.radius.max(1e-9 * s.center.length().max(1.0)) }
+            }
+            _ => Sphere { center: DVec3::ZERO, radius: 1.0 },
         }
     }
 }

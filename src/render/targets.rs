@@ -71,11 +71,7 @@ fn texture(
 ) -> wgpu::Texture {
     device.create_texture(&wgpu::TextureDescriptor {
         label: Some(label),
-        size: wgpu::Extent3d {
-            width: size.0,
-            height: size.1,
-            depth_or_array_layers: 1,
-        },
+        size: wgpu::Extent3d { width: size.0, height: size.1, depth_or_array_layers: 1 },
         mip_level_count: 1,
         sample_count: samples,
         dimension: wgpu::TextureDimension::D2,
@@ -97,16 +93,8 @@ impl FrameTargets {
         let o = key.outputs;
         let ms = key.msaa > 1;
         let ss = key.supersample > 1;
-        let color_ms = (o.color && ms).then(|| {
-            view(texture(
-                device,
-                "colour msaa",
-                hi,
-                key.msaa,
-                COLOR_FORMAT,
-                U::RENDER_ATTACHMENT,
-            ))
-        });
+        let color_ms = (o.color && ms)
+            .then(|| view(texture(device, "colour msaa", hi, key.msaa, COLOR_FORMAT, U::RENDER_ATTACHMENT)));
         let color_hi = (o.color && ss).then(|| {
             view(texture(
                 device,
@@ -117,56 +105,21 @@ impl FrameTargets {
                 U::RENDER_ATTACHMENT | U::TEXTURE_BINDING,
             ))
         });
-        let color = o.color.then(|| {
-            texture(
-                device,
-                "colour",
-                out,
-                1,
-                COLOR_FORMAT,
-                U::RENDER_ATTACHMENT | U::COPY_SRC,
-            )
-        });
-        let shade_depth = o.color.then(|| {
-            view(texture(
-                device,
-                "depth buffer",
-                hi,
-                key.msaa,
-                DEPTH_FORMAT,
-                U::RENDER_ATTACHMENT,
-            ))
-        });
+        let color = o
+            .color
+            .then(|| texture(device, "colour", out, 1, COLOR_FORMAT, U::RENDER_ATTACHMENT | U::COPY_SRC));
+        let shade_depth = o
+            .color
+            .then(|| view(texture(device, "depth buffer", hi, key.msaa, DEPTH_FORMAT, U::RENDER_ATTACHMENT)));
         let gbuffer = o.normal || o.depth;
         let gbuffer_depth = (gbuffer && !key.gbuffer_in_shade()).then(|| {
-            view(texture(
-                device,
-                "gbuffer depth buffer",
-                out,
-                1,
-                DEPTH_FORMAT,
-                U::RENDER_ATTACHMENT,
-            ))
+            view(texture(device, "gbuffer depth buffer", out, 1, DEPTH_FORMAT, U::RENDER_ATTACHMENT))
         });
-        let normal = o.normal.then(|| {
-            texture(
-                device,
-                "normal",
-                out,
-                1,
-                NORMAL_FORMAT,
-                U::RENDER_ATTACHMENT | U::COPY_SRC,
-            )
-        });
+        let normal = o
+            .normal
+            .then(|| texture(device, "normal", out, 1, NORMAL_FORMAT, U::RENDER_ATTACHMENT | U::COPY_SRC));
         let linear_depth = o.depth.then(|| {
-            texture(
-                device,
-                "linear depth",
-                out,
-                1,
-                LINEAR_DEPTH_FORMAT,
-                U::RENDER_ATTACHMENT | U::COPY_SRC,
-            )
+            texture(device, "linear depth", out, 1, LINEAR_DEPTH_FORMAT, U::RENDER_ATTACHMENT | U::COPY_SRC)
         });
         FrameTargets {
             key,
@@ -177,15 +130,9 @@ impl FrameTargets {
             gbuffer_depth,
             normal,
             linear_depth,
-            color_readback: o
-                .color
-                .then(|| ReadbackBuffer::new(device, "colour readback", out, 4)),
-            normal_readback: o
-                .normal
-                .then(|| ReadbackBuffer::new(device, "normal readback", out, 16)),
-            depth_readback: o
-                .depth
-                .then(|| ReadbackBuffer::new(device, "depth readback", out, 4)),
+            color_readback: o.color.then(|| ReadbackBuffer::new(device, "colour readback", out, 4)),
+            normal_readback: o.normal.then(|| ReadbackBuffer::new(device, "normal readback", out, 16)),
+            depth_readback: o.depth.then(|| ReadbackBuffer::new(device, "depth readback", out, 4)),
         }
     }
 }

@@ -48,19 +48,13 @@ fn rgb0(c: [f32; 3]) -> [f32; 4] {
 }
 
 pub fn frame_block(scene: &Scene, cam: &ResolvedCamera) -> FrameBlock {
-    let mut lights = [LightBlock {
-        position: [0.0; 4],
-        color: [0.0; 4],
-    }; MAX_LIGHTS];
+    let mut lights = [LightBlock { position: [0.0; 4], color: [0.0; 4] }; MAX_LIGHTS];
     for (slot, light) in lights.iter_mut().zip(&scene.lights) {
         let position = match light.to_view(&cam.view) {
             ViewLight::Toward(l) => [l.x as f32, l.y as f32, l.z as f32, 0.0],
             ViewLight::At(p) => [p.x as f32, p.y as f32, p.z as f32, 1.0],
         };
-        *slot = LightBlock {
-            position,
-            color: rgb0(light.color),
-        };
+        *slot = LightBlock { position, color: rgb0(light.color) };
     }
     FrameBlock {
         proj: f32_cols(cam.proj),
@@ -91,11 +85,7 @@ pub fn draw_block(item: &SceneItem, cam: &ResolvedCamera) -> Box<DrawBlock> {
     match &m.model {
         Model::Lambert => {}
         Model::Phong { shininess } => b.params[0] = *shininess,
-        Model::ThresholdedPhong {
-            t_h,
-            t_s,
-            highlight,
-        } => {
+        Model::ThresholdedPhong { t_h, t_s, highlight } => {
             b.params[1] = *t_h;
             b.params[2] = *t_s;
             b.model[1] = (*highlight == Highlight::Blinn) as u32;

@@ -7,26 +7,14 @@ use crate::render::targets::FrameTargets;
 use super::attachment;
 
 pub fn encode(ctx: &GpuContext, encoder: &mut wgpu::CommandEncoder, t: &FrameTargets, factor: u32) {
-    let source = t
-        .color_hi
-        .as_ref()
-        .expect("supersampling renders into a large colour target");
-    let output = t
-        .color
-        .as_ref()
-        .expect("colour is asked for")
-        .create_view(&Default::default());
+    let source = t.color_hi.as_ref().expect("supersampling renders into a large colour target");
+    let output = t.color.as_ref().expect("colour is asked for").create_view(&Default::default());
     let group = ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: Some("downsample source"),
         layout: &ctx.pipelines.source_layout,
-        entries: &[wgpu::BindGroupEntry {
-            binding: 0,
-            resource: wgpu::BindingResource::TextureView(source),
-        }],
+        entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(source) }],
     });
-    let pipeline = ctx
-        .pipelines
-        .get(&ctx.device, PipelineKey::Downsample { factor });
+    let pipeline = ctx.pipelines.get(&ctx.device, PipelineKey::Downsample { factor });
     let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
         label: Some("downsample"),
         color_attachments: &[attachment(&output, wgpu::Color::TRANSPARENT)],

@@ -31,11 +31,7 @@ pub fn draw_meshes(
     let mut current: Option<Arc<wgpu::RenderPipeline>> = None;
     for d in &list.draws {
         let p = pipeline_for(d);
-        if current
-            .as_ref()
-            .map(|c| !Arc::ptr_eq(c, &p))
-            .unwrap_or(true)
-        {
+        if current.as_ref().map(|c| !Arc::ptr_eq(c, &p)).unwrap_or(true) {
             pass.set_pipeline(&p);
             current = Some(p);
         }
@@ -57,12 +53,7 @@ pub fn normal_clear() -> wgpu::Color {
 }
 
 pub fn linear_depth_clear() -> wgpu::Color {
-    wgpu::Color {
-        r: f32::INFINITY.to_bits() as f64,
-        g: 0.0,
-        b: 0.0,
-        a: 0.0,
-    }
+    wgpu::Color { r: f32::INFINITY.to_bits() as f64, g: 0.0, b: 0.0, a: 0.0 }
 }
 
 pub fn attachment(
@@ -73,22 +64,14 @@ pub fn attachment(
         view,
         depth_slice: None,
         resolve_target: None,
-        ops: wgpu::Operations {
-            load: wgpu::LoadOp::Clear(clear),
-            store: wgpu::StoreOp::Store,
-        },
+        ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
     })
 }
 
-pub fn depth_attachment(
-    view: &wgpu::TextureView,
-) -> Option<wgpu::RenderPassDepthStencilAttachment<'_>> {
+pub fn depth_attachment(view: &wgpu::TextureView) -> Option<wgpu::RenderPassDepthStencilAttachment<'_>> {
     Some(wgpu::RenderPassDepthStencilAttachment {
         view,
-        depth_ops: Some(wgpu::Operations {
-            load: wgpu::LoadOp::Clear(1.0),
-            store: wgpu::StoreOp::Discard,
-        }),
+        depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
         stencil_ops: None,
     })
 }

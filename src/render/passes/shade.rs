@@ -5,9 +5,7 @@ use crate::render::context::GpuContext;
 use crate::render::pipelines::PipelineKey;
 use crate::render::targets::FrameTargets;
 
-use super::{
-    attachment, depth_attachment, draw_meshes, linear_depth_clear, normal_clear, DrawList,
-};
+use super::{attachment, depth_attachment, draw_meshes, linear_depth_clear, normal_clear, DrawList};
 
 pub fn encode(
     ctx: &GpuContext,
@@ -31,39 +29,16 @@ pub fn encode(
             depth_slice: None,
             resolve_target: Some(single),
             // the samples are needed only until they are resolved
-            ops: wgpu::Operations {
-                load: wgpu::LoadOp::Clear(background),
-                store: wgpu::StoreOp::Discard,
-            },
+            ops: wgpu::Operations { load: wgpu::LoadOp::Clear(background), store: wgpu::StoreOp::Discard },
         }),
         None => attachment(single, background),
     };
-    let normal_view = t
-        .normal
-        .as_ref()
-        .filter(|_| gbuffer)
-        .map(|n| n.create_view(&Default::default()));
-    let depth_view = t
-        .linear_depth
-        .as_ref()
-        .filter(|_| gbuffer)
-        .map(|d| d.create_view(&Default::default()));
+    let normal_view = t.normal.as_ref().filter(|_| gbuffer).map(|n| n.create_view(&Default::default()));
+    let depth_view = t.linear_depth.as_ref().filter(|_| gbuffer).map(|d| d.create_view(&Default::default()));
     let mut attachments = vec![color];
-    if gbuffer {
-        attachments.push(
-            normal_view
-                .as_ref()
-                .and_then(|v| attachment(v, normal_clear())),
-        );
-        attachments.push(
-            depth_view
-                .as_ref()
-                .and_then(|v| attachment(v, linear_depth_clear())),
-        );
-        while attachments.last().map(|a| a.is_none()).unwrap_or(false) {
-            attachments.pop();
-        }
-    }
+    // contiguous, in the order of the pipeline's targets (no gaps: GL mishandles them)
+    attachments.extend(normal_view.as_ref().map(|v| attachment(v, normal_clear())));
+    attachments.extend(depth_view.as_ref().map(|v| attachment(v, linear_depth_clear())));
     let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
         label: Some("shade"),
         color_attachments: &attachments,
@@ -78,12 +53,7 @@ pub fn encode(
     draw_meshes(&mut pass, list, |d| {
         ctx.pipelines.get(
             &ctx.device,
-            PipelineKey::Shade {
-                samples: key.msaa,
-                normal,
-                depth,
-                per_vertex: d.per_vertex,
-            },
+            PipelineKey::Shade { samples: key.msaa, normal, depth, per_vertex: d.per_vertex },
         )
     });
 }
