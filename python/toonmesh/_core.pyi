@@ -16,3 +16,35 @@ def icosphere(
     subdivisions: int = 3, noise: float = 0.0, seed: int = 0
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
 def grid(n: int = 32, noise: float = 0.0, seed: int = 0) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
+
+# --- rendering (src/py/render.rs); the public API is toonmesh._render ---
+from typing import Dict, List, final
+
+# (after merging: add "Renderer", "encode_png_rgba" and "gpu_info" to __all__ at the top)
+
+@final
+class Renderer:
+    def __new__(cls, backend: Optional[str] = None) -> "Renderer": ...
+    @property
+    def info(self) -> Dict[str, Any]: ...
+    @property
+    def mesh_count(self) -> int: ...
+    def add_mesh(self, vertices: Any, faces: Any, normals: str = "smooth") -> int: ...
+    def remove_mesh(self, mesh: int) -> bool: ...
+    def render(
+        self,
+        items: List[Any],
+        *,
+        camera: Optional[Any] = None,
+        lights: Optional[List[Any]] = None,
+        ambient: Optional[Any] = None,
+        background: Optional[Any] = None,
+        width: int = 512,
+        height: int = 512,
+        outputs: Optional[List[str]] = None,
+        msaa: int = 1,
+        supersample: int = 1,
+    ) -> Dict[str, Any]: ...
+
+def gpu_info(backend: Optional[str] = None) -> Dict[str, Any]: ...
+def encode_png_rgba(color: Any) -> bytes: ...

@@ -194,7 +194,7 @@ class Material:
         if t.ndim == 1:
             t = np.repeat(t[:, None], 3, axis=1)
         if t.ndim != 2 or t.shape[1] != 3 or not 1 <= t.shape[0] <= 256:
-            raise ValueError(f"table: expected shape (N,) or (N, 3) with 1 <= N <= 256, got {np.shape(table)}")
+            raise ValueError(f"table: expected shape (N,) or (N, 3) with 1 <= N <= 256, got {t.shape}")
         if not np.all(np.isfinite(t)) or (t < 0).any():
             raise ValueError("table: entries must be finite and >= 0")
         rows = tuple((float(r[0]), float(r[1]), float(r[2])) for r in t)
@@ -495,7 +495,7 @@ def _smoothed(vertices: np.ndarray, faces: np.ndarray, iterations: int) -> np.nd
     if iterations == 0:
         return vertices
     try:
-        from toonmesh import smooth
+        from toonmesh import smooth  # type: ignore[attr-defined,unused-ignore]
     except ImportError:
         smooth = None
     if smooth is not None and hasattr(smooth, "laplacian"):
@@ -688,7 +688,7 @@ def render(
         items = [Mesh(V, F, normals=normals)]
     if smooth_iterations:
         items = [
-            _with_vertices(m, _smoothed(m.vertices, m.faces, smooth_iterations)) if m.vertices is not None else m
+            _with_vertices(m, _smoothed(m.vertices, m.faces, smooth_iterations)) if m.vertices is not None and m.faces is not None else m
             for m in (x if isinstance(x, Mesh) else Mesh(x) for x in items)
         ]
     return _shared_renderer(backend).render(
