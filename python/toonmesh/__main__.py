@@ -28,8 +28,8 @@ def _demo(args: argparse.Namespace) -> int:
     ]
     result = tm.render(
         scene,
-        camera=tm.Camera.fit((0.45, 0.55, 1.0), margin=0.95),
-        lights=[tm.Light.directional((-0.5, -1.0, -0.6))],
+        camera=tm.Camera.fit((0.25, 0.35, 1.0), margin=0.8),
+        lights=[tm.Light.directional((0.6, -0.5, -0.45), space="camera")],
         width=args.width,
         height=args.height,
         msaa=4,
