@@ -274,7 +274,6 @@ def test_renderer_keeps_meshes_for_many_views(sphere):
     h = r.add_mesh(*sphere)
     frames = [r.render(h, camera=tm.Camera.fit((np.sin(a), 0.3, np.cos(a))), width=48, height=48).color for a in np.linspace(0, 3, 4)]
     assert r._engine.mesh_count == 1
-    assert not np.array_equal(frames[0], frames[1]) or True
     # the same view twice gives the same image
     again = r.render(h, camera=tm.Camera.fit((np.sin(0.0), 0.3, np.cos(0.0))), width=48, height=48).color
     assert np.array_equal(frames[0], again)
