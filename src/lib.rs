@@ -7,6 +7,7 @@ pub mod error;
 pub mod mesh;
 pub mod parallel;
 pub mod real;
+pub mod render;
 pub mod smooth;
 
 #[cfg(feature = "python")]

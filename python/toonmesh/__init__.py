@@ -9,14 +9,36 @@ from toonmesh._core import (
     get_num_threads,
     set_num_threads,
 )
+from toonmesh._render import (
+    Camera,
+    Light,
+    Material,
+    Mesh,
+    MeshHandle,
+    Renderer,
+    RenderResult,
+    gpu_info,
+    kang_table,
+    render,
+)
 
 __all__ = [
+    "Camera",
     "shapes",
     "smooth",
     "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",
+    "Light",
+    "Material",
+    "Mesh",
+    "MeshHandle",
+    "RenderResult",
+    "Renderer",
     "__version__",
     "get_num_threads",
+    "gpu_info",
+    "kang_table",
+    "render",
     "set_num_threads",
 ]

@@ -1,5 +1,5 @@
 # Type stubs for the compiled core (checked against it with `python -m mypy.stubtest toonmesh._core`).
-from typing import Any, Optional, Tuple
+from typing import Any, Dict, List, Optional, Tuple, final
 
 import numpy as np
 import numpy.typing as npt
@@ -8,9 +8,12 @@ __all__ = [
     "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",
+    "Renderer",
     "__version__",
     "_smooth",
+    "encode_png_rgba",
     "get_num_threads",
+    "gpu_info",
     "grid",
     "icosphere",
     "set_num_threads",
@@ -46,3 +49,32 @@ def _smooth(
     volume_constraint: Optional[bool] = None,
     preset: Optional[str] = None,
 ) -> npt.NDArray[np.floating[Any]]: ...
+
+# --- rendering (src/py/render.rs); the public API is toonmesh._render ---
+
+@final
+class Renderer:
+    def __new__(cls, backend: Optional[str] = None) -> "Renderer": ...
+    @property
+    def info(self) -> Dict[str, Any]: ...
+    @property
+    def mesh_count(self) -> int: ...
+    def add_mesh(self, vertices: Any, faces: Any, normals: str = "smooth") -> int: ...
+    def remove_mesh(self, mesh: int) -> bool: ...
+    def render(
+        self,
+        items: List[Any],
+        *,
+        camera: Optional[Any] = None,
+        lights: Optional[List[Any]] = None,
+        ambient: Optional[Any] = None,
+        background: Optional[Any] = None,
+        width: int = 512,
+        height: int = 512,
+        outputs: Optional[List[str]] = None,
+        msaa: int = 1,
+        supersample: int = 1,
+    ) -> Dict[str, Any]: ...
+
+def gpu_info(backend: Optional[str] = None) -> Dict[str, Any]: ...
+def encode_png_rgba(color: Any) -> bytes: ...

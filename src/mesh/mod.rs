@@ -3,6 +3,7 @@
 pub mod adjacency;
 pub mod bounds;
 pub mod input;
+pub mod normals;
 pub mod reorder;
 pub mod shapes;
 

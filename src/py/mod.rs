@@ -2,6 +2,7 @@
 
 mod convert;
 mod errors;
+mod render;
 mod runtime;
 mod shapes;
 mod smooth;
@@ -13,6 +14,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     runtime::register(m)?;
     shapes::register(m)?;
     smooth::register(m)?;
+    render::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

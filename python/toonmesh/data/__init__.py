@@ -1,0 +1,41 @@
+"""Meshes shipped with toonmesh, for demos and examples."""
+
+from __future__ import annotations
+
+import os
+from typing import List, Tuple
+
+import numpy as np
+
+_HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def load_obj(path: str) -> Tuple[np.ndarray, np.ndarray]:
+    """Reads the vertices and faces of a Wavefront OBJ file.
+
+    Returns (V, F): (N, 3) float64 positions and (M, 3) int64 triangles (polygons are split
+    into fans; texture and normal indices are ignored; negative indices count from the end).
+    """
+    with open(path, "rb") as f:
+        lines = f.read().split(b"\n")
+    v = b" ".join(line[2:] for line in lines if line.startswith(b"v "))
+    V = np.array(v.split(), dtype=np.float64).reshape(-1, 3)
+    tris: List[List[int]] = []
+    face_lines = [line[2:].split() for line in lines if line.startswith(b"f ")]
+    if all(len(t) == 3 and b"/" not in b"".join(t) for t in face_lines):
+        F = np.array(b" ".join(b" ".join(t) for t in face_lines).split(), dtype=np.int64).reshape(-1, 3)
+    else:
+        for t in face_lines:
+            idx = [int(x.split(b"/")[0]) for x in t]
+            tris.extend([idx[0], idx[k], idx[k + 1]] for k in range(1, len(idx) - 1))
+        F = np.array(tris, dtype=np.int64).reshape(-1, 3)
+    F = np.where(F < 0, F + len(V), F - 1)
+    return V, F
+
+
+def bunny() -> Tuple[np.ndarray, np.ndarray]:
+    """The Stanford bunny (Stanford 3D Scanning Repository): 35,947 vertices, 69,451 faces.
+
+    (V, F) as float64 (N, 3) and int64 (M, 3); y is up. About 1,100 vertices are used by no face.
+    """
+    return load_obj(os.path.join(_HERE, "bunny.obj"))

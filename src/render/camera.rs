@@ -1,0 +1,263 @@
+//! Cameras: a perspective or orthographic look-at camera, or one framed to fit the scene.
+//!
+//! Conventions: right-handed world; the camera looks down its -z axis with +y up (view space).
+//! wgpu's clip space has depth in [0, 1] and y up (the Direct3D convention); the matrices below
+//! are written out in f64 for that convention.
+
+use glam::{DMat4, DVec3};
+
+use crate::error::{Error, Result};
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    /// Vertical field of view in degrees, in (0, 180).
+    Perspective { fov_y_deg: f64 },
+    /// Height of the view volume in world units (> 0).
+    Orthographic { height: f64 },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Placement {
+    /// An explicit eye, target and up vector.
+    LookAt { eye: [f64; 3], target: [f64; 3], up: [f64; 3] },
+    /// Look at the scene's bounding sphere from `direction` (pointing from the scene toward
+    /// the eye), far enough that the sphere fits the image with `margin` (1 = touching).
+    Fit { direction: [f64; 3], up: [f64; 3], margin: f64 },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    pub placement: Placement,
+    pub projection: Projection,
+    /// Clip distances; chosen from the scene's bounding sphere when `None`.
+    pub near: Option<f64>,
+    pub far: Option<f64>,
+}
+
+impl Default for Camera {
+    /// Framed to fit, seen from the front, a little from the right and above.
+    fn default() -> Self {
+        Camera {
+            placement: Placement::Fit { direction: [0.35, 0.3, 1.0], up: [0.0, 1.0, 0.0], margin: 1.05 },
+            projection: Projection::Perspective { fov_y_deg: 35.0 },
+            near: None,
+            far: None,
+        }
+    }
+}
+
+/// A camera resolved for one image: matrices and clip distances.
+#[derive(Clone, Copy, Debug)]
+pub struct ResolvedCamera {
+    pub view: DMat4,
+    pub proj: DMat4,
+    pub near: f64,
+    pub far: f64,
+    pub orthographic: bool,
+}
+
+/// A sphere enclosing what is to be seen.
+#[derive(Clone, Copy, Debug)]
+pub struct Sphere {
+    pub center: DVec3,
+    pub radius: f64,
+}
+
+fn vec3(arg: &str, v: [f64; 3]) -> Result<DVec3> {
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(DVec3::from_array(v))
+    } else {
+        Err(Error::invalid(arg, format!("must be finite, got {v:?}")))
+    }
+}
+
+fn unit(arg: &str, v: [f64; 3]) -> Result<DVec3> {
+    let v = vec3(arg, v)?;
+    let l = v.length();
+    if !(l > 1e-300) {
+        return Err(Error::invalid(arg, "must not be the zero vector"));
+    }
+    Ok(v / l)
+}
+
+impl Camera {
+    pub fn validate(&self) -> Result<()> {
+        match self.projection {
+            Projection::Perspective { fov_y_deg } if !(fov_y_deg > 0.0 && fov_y_deg < 180.0) => {
+                return Err(Error::invalid(
+                    "camera.fov_y",
+                    format!("must be in (0, 180) degrees, got {fov_y_deg}"),
+                ))
+            }
+            Projection::Orthographic { height } if !(height > 0.0 && height.is_finite()) => {
+                return Err(Error::invalid("camera.height", format!("must be finite and > 0, got {height}")))
+            }
+            _ => {}
+        }
+        match self.placement {
+            Placement::LookAt { eye, target, up } => {
+                let (e, t) = (vec3("camera.eye", eye)?, vec3("camera.target", target)?);
+                let forward = t - e;
+                if !(forward.length() > 0.0) {
+                    return Err(Error::invalid("camera.target", "must differ from camera.eye"));
+                }
+                let u = unit("camera.up", up)?;
+                if forward.normalize().cross(u).length() < 1e-9 {
+                    return Err(Error::invalid("camera.up", "must not be parallel to the viewing direction"));
+                }
+            }
+            Placement::Fit { direction, up, margin } => {
+                let d = unit("camera.direction", direction)?;
+                let u = unit("camera.up", up)?;
+                if d.cross(u).length() < 1e-9 {
+                    return Err(Error::invalid("camera.up", "must not be parallel to camera.direction"));
+                }
+                if !(margin > 0.0 && margin.is_finite()) {
+                    return Err(Error::invalid(
+                        "camera.margin",
+                        format!("must be finite and > 0, got {margin}"),
+                    ));
+                }
+            }
+        }
+        for (arg, v) in [("camera.near", self.near), ("camera.far", self.far)] {
+            if let Some(x) = v {
+                if !(x.is_finite() && (x > 0.0 || matches!(self.projection, Projection::Orthographic { .. })))
+                {
+                    return Err(Error::invalid(
+                        arg,
+                        format!("must be finite (and > 0 for a perspective camera), got {x}"),
+                    ));
+                }
+            }
+        }
+        if let (Some(n), Some(f)) = (self.near, self.far) {
+            if !(f > n) {
+                return Err(Error::invalid(
+                    "camera.far",
+                    format!("must be greater than camera.near ({n}), got {f}"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Matrices for an image of the given aspect ratio (width / height) showing `scene`.
+    pub fn resolve(&self, scene: Sphere, aspect: f64) -> Result<ResolvedCamera> {
+        self.validate()?;
+        let (eye, target, up, projection) = match self.placement {
+            Placement::LookAt { eye, target, up } => {
+                (DVec3::from_array(eye), DVec3::from_array(target), DVec3::from_array(up), self.projection)
+            }
+            Placement::Fit { direction, up, margin } => {
+                let dir = DVec3::from_array(direction).normalize();
+                let r = scene.radius * margin;
+                match self.projection {
+                    Projection::Perspective { fov_y_deg } => {
+                        // the narrower of the two fields of view decides the distance
+                        let half_y = (fov_y_deg.to_radians() / 2.0).tan();
+                        let half = half_y.min(half_y * aspect).atan();
+                        let dist = r / half.sin();
+                        (scene.center + dir * dist, scene.center, DVec3::from_array(up), self.projection)
+                    }
+                    Projection::Orthographic { .. } => {
+                        let height = 2.0 * r * (1.0f64 / aspect).max(1.0);
+                        let eye = scene.center + dir * (2.0 * r.max(1e-300));
+                        (eye, scene.center, DVec3::from_array(up), Projection::Orthographic { height })
+                    }
+                }
+            }
+        };
+        let view = look_at(eye, target, up);
+        // clip distances that enclose the scene's sphere
+        let forward = (target - eye).normalize();
+        let d = (scene.center - eye).dot(forward);
+        let r = scene.radius.max(1e-300);
+        let orthographic = matches!(projection, Projection::Orthographic { .. });
+        let (auto_near, auto_far) = if orthographic {
+            ((d - r * 1.01).max(0.0), (d + r * 1.01).max(r * 1e-3))
+        } else {
+            let far = (d + r * 1.01).max(r * 1e-3);
+            // inside the sphere (or it is behind): keep a small positive near plane
+            (((d - r * 1.01).max(far * 1e-4)).min(far * 0.5), far)
+        };
+        let near = self.near.unwrap_or(auto_near);
+        let far = self.far.unwrap_or(auto_far).max(near * (1.0 + 1e-6) + 1e-12);
+        let proj = match projection {
+            Projection::Perspective { fov_y_deg } => perspective(fov_y_deg.to_radians(), aspect, near, far),
+            Projection::Orthographic { height } => {
+                let (h, w) = (height / 2.0, height / 2.0 * aspect);
+                self::orthographic(w, h, near, far)
+            }
+        };
+        if !view.is_finite() || !proj.is_finite() {
+            return Err(Error::invalid("camera", "the camera gives a non-finite view or projection matrix"));
+        }
+        Ok(ResolvedCamera { view, proj, near, far, orthographic })
+    }
+}
+
+fn from_rows(r: [[f64; 4]; 4]) -> DMat4 {
+    DMat4::from_cols_array_2d(&r).transpose()
+}
+
+/// World -> view: the eye at the origin looking down -z, `up` projected to +y.
+pub fn look_at(eye: DVec3, target: DVec3, up: DVec3) -> DMat4 {
+    let f = (target - eye).normalize();
+    let s = f.cross(up).normalize();
+    let u = s.cross(f);
+    from_rows([
+        [s.x, s.y, s.z, -s.dot(eye)],
+        [u.x, u.y, u.z, -u.dot(eye)],
+        [-f.x, -f.y, -f.z, f.dot(eye)],
+        [0.0, 0.0, 0.0, 1.0],
+    ])
+}
+
+/// View -> clip for a perspective camera: view depth `near` maps to 0 and `far` to 1.
+pub fn perspective(fov_y: f64, aspect: f64, near: f64, far: f64) -> DMat4 {
+    let f = 1.0 / (fov_y / 2.0).tan();
+    from_rows([
+        [f / aspect, 0.0, 0.0, 0.0],
+        [0.0, f, 0.0, 0.0],
+        [0.0, 0.0, far / (near - far), near * far / (near - far)],
+        [0.0, 0.0, -1.0, 0.0],
+    ])
+}
+
+/// View -> clip for an orthographic camera with half extents `half_w`, `half_h`.
+pub fn orthographic(half_w: f64, half_h: f64, near: f64, far: f64) -> DMat4 {
+    from_rows([
+        [1.0 / half_w, 0.0, 0.0, 0.0],
+        [0.0, 1.0 / half_h, 0.0, 0.0],
+        [0.0, 0.0, 1.0 / (near - far), near / (near - far)],
+        [0.0, 0.0, 0.0, 1.0],
+    ])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn projections_map_near_to_0_and_far_to_1() {
+        for p in [perspective(1.0, 1.5, 0.5, 20.0), orthographic(2.0, 1.0, 0.5, 20.0)] {
+            for (z, want) in [(-0.5, 0.0), (-20.0, 1.0)] {
+                let c = p * glam::DVec4::new(0.3, 0.2, z, 1.0);
+                assert!((c.z / c.w - want).abs() < 1e-12);
+            }
+        }
+        let v = look_at(DVec3::new(0.0, 0.0, 5.0), DVec3::ZERO, DVec3::Y);
+        assert!((v.transform_point3(DVec3::ZERO) - DVec3::new(0.0, 0.0, -5.0)).length() < 1e-12);
+    }
+
+    #[test]
+    fn fit_frames_the_sphere_and_encloses_it() {
+        let cam = Camera::default();
+        let s = Sphere { center: DVec3::new(1.0, 2.0, 3.0), radius: 2.0 };
+        let r = cam.resolve(s, 2.0).unwrap();
+        let c = r.view.transform_point3(s.center);
+        assert!(-c.z - s.radius > r.near && -c.z + s.radius < r.far);
+        assert!(c.x.abs() < 1e-9 && c.y.abs() < 1e-9);
+    }
+}

@@ -1,0 +1,161 @@
+//! Renders on the real device (Vulkan and GL; Mesa's software drivers where there is no GPU)
+//! and holds the pixels against `reference.rs`.
+
+use glam::{DMat4, DVec3, DVec4, Vec3};
+
+use super::camera::{Camera, Placement, Projection};
+use super::color::linear_to_srgb8;
+use super::context::BackendChoice;
+use super::gpu_mesh::NormalMode;
+use super::light::{Light, ViewLight};
+use super::material::{kang_table, Highlight, Material, Model};
+use super::reference::{shade, RefLight};
+use super::renderer::{RenderOutput, Renderer};
+use super::scene::{FrameSpec, Outputs, Scene, SceneItem, IDENTITY};
+use crate::mesh::shapes::icosphere;
+
+fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene {
+    let (v, f) = icosphere(4, 0.0, 0).unwrap();
+    let id = r.add_mesh(&v, &f, normals).unwrap();
+    Scene {
+        items: vec![SceneItem { mesh: r.mesh(id).unwrap(), transform: IDENTITY, material }],
+        camera: Camera::default(),
+        lights: vec![
+            Light::default(),
+            Light {
+                kind: super::light::LightKind::Point { position: [3.0, 1.0, 2.0] },
+                space: super::light::Space::World,
+                color: [0.3, 0.2, 0.1],
+            },
+        ],
+        ambient: [1.0, 1.0, 1.0],
+    }
+}
+
+fn all_outputs(w: u32, h: u32) -> FrameSpec {
+    FrameSpec {
+        width: w,
+        height: h,
+        outputs: Outputs { color: true, normal: true, depth: true },
+        ..Default::default()
+    }
+}
+
+/// Fraction of covered pixels whose colour matches the reference from the normal and depth outputs.
+fn agreement(scene: &Scene, out: &RenderOutput) -> (f64, usize) {
+    let (w, h) = (out.width as usize, out.height as usize);
+    let proj = DMat4::from_cols_array_2d(&out.proj).transpose();
+    let view = DMat4::from_cols_array_2d(&out.view).transpose();
+    let lights: Vec<RefLight> = scene
+        .lights
+        .iter()
+        .map(|l| match l.to_view(&view) {
+            ViewLight::Toward(d) => RefLight::Toward(d.as_vec3(), Vec3::from(l.color)),
+            ViewLight::At(p) => RefLight::At(p.as_vec3(), Vec3::from(l.color)),
+        })
+        .collect();
+    let (color, normal, depth) =
+        (out.color.as_ref().unwrap(), out.normal.as_ref().unwrap(), out.depth.as_ref().unwrap());
+    let inv = proj.inverse();
+    let (mut good, mut covered) = (0usize, 0usize);
+    for y in 0..h {
+        for x in 0..w {
+            let i = y * w + x;
+            let z = depth[i];
+            if !z.is_finite() {
+                continue;
+            }
+            covered += 1;
+            let n = Vec3::new(normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]);
+            // the view-space point on the pixel's ray at linear depth z
+            let ndc = DVec3::new(
+                (x as f64 + 0.5) / w as f64 * 2.0 - 1.0,
+                1.0 - (y as f64 + 0.5) / h as f64 * 2.0,
+                0.5,
+            );
+            let q = inv * DVec4::new(ndc.x, ndc.y, ndc.z, 1.0);
+            let q = q.truncate() / q.w;
+            let p =
+                if proj.w_axis.w == 1.0 { DVec3::new(q.x, q.y, -(z as f64)) } else { q * (z as f64 / -q.z) };
+            let c = shade(
+                &scene.items[0].material,
+                n,
+                p.as_vec3(),
+                proj.w_axis.w == 1.0,
+                Vec3::from(scene.ambient),
+                &lights,
+            );
+            let want = [c.x, c.y, c.z].map(|v| linear_to_srgb8(v as f64) as i32);
+            if (0..3).all(|k| (color[4 * i + k] as i32 - want[k]).abs() <= 1) {
+                good += 1;
+            }
+        }
+    }
+    (good as f64 / covered.max(1) as f64, covered)
+}
+
+fn backends() -> Vec<BackendChoice> {
+    vec![BackendChoice::Vulkan, BackendChoice::Gl]
+}
+
+#[test]
+fn every_model_matches_the_cpu_reference_on_both_backends() {
+    let models = [
+        Model::Lambert,
+        Model::Phong { shininess: 20.0 },
+        Model::ThresholdedPhong { t_h: 0.1, t_s: 0.95, highlight: Highlight::Blinn },
+        Model::Bands { thresholds: vec![0.2, 0.5, 0.7, 0.9], values: vec![0.0, 0.2, 0.7, 0.9, 1.0] },
+        Model::Lut { table: kang_table() },
+    ];
+    for backend in backends() {
+        let r = Renderer::new(backend).expect("a GPU adapter (install Mesa's lavapipe/llvmpipe)");
+        for model in &models {
+            let material = Material {
+                model: model.clone(),
+                ambient: [0.05, 0.05, 0.1],
+                diffuse: [0.8, 0.5, 0.3],
+                specular: [0.5, 0.5, 0.5],
+                per_vertex: false,
+            };
+            let scene = sphere_scene(&r, material, NormalMode::Smooth);
+            let out = r.render(&scene, &all_outputs(161, 97)).unwrap();
+            let (ok, covered) = agreement(&scene, &out);
+            assert!(covered > 3000, "{backend:?} model {}: the sphere covers {covered} pixels", model.id());
+            // band and threshold edges: a pixel whose L.n lies within f16-free f32 rounding of a
+            // threshold may land on either side; they are far fewer than 0.5%
+            assert!(ok >= 0.995, "{backend:?} model {}: only {ok} of covered pixels match", model.id());
+        }
+    }
+}
+
+#[test]
+fn odd_and_tiny_sizes_read_back_whole_rows() {
+    for backend in backends() {
+        let r = Renderer::new(backend).unwrap();
+        let scene = sphere_scene(&r, Material::default(), NormalMode::Flat);
+        for (w, h) in [(301, 199), (1, 1), (3, 2)] {
+            let out = r.render(&scene, &all_outputs(w, h)).unwrap();
+            assert_eq!(out.color.unwrap().len(), (w * h * 4) as usize);
+            assert_eq!(out.normal.unwrap().len(), (w * h * 3) as usize);
+            assert_eq!(out.depth.unwrap().len(), (w * h) as usize);
+        }
+    }
+}
+
+#[test]
+fn empty_scene_is_background() {
+    let r = Renderer::new(BackendChoice::Auto).unwrap();
+    let scene = Scene { items: vec![], camera: Camera::default(), lights: vec![], ambient: [0.0; 3] };
+    let frame = FrameSpec { background: [0.2, 0.4, 0.6, 1.0], ..all_outputs(5, 4) };
+    let out = r.render(&scene, &frame).unwrap();
+    let c = out.color.unwrap();
+    assert_eq!(&c[..4], &[51, 102, 153, 255]);
+    assert!(out.depth.unwrap().iter().all(|d| *d == f32::INFINITY));
+    assert!(out.normal.unwrap().iter().all(|n| *n == 0.0));
+    let _ = Camera {
+        placement: Placement::LookAt { eye: [0.0; 3], target: [0.0, 0.0, -1.0], up: [0.0, 1.0, 0.0] },
+        projection: Projection::Perspective { fov_y_deg: 40.0 },
+        near: None,
+        far: None,
+    };
+}

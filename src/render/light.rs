@@ -1,0 +1,107 @@
+//! Lights: directional (sun-like) or point lights, fixed in the world or to the camera.
+
+use glam::{DMat4, DVec3};
+
+use crate::error::{Error, Result};
+
+/// Most lights one scene may have (the shader's fixed-size array).
+pub const MAX_LIGHTS: usize = 8;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightKind {
+    /// Parallel light travelling along `direction` (from the light toward the scene).
+    Directional { direction: [f64; 3] },
+    /// Light radiating from `position`, without falloff.
+    Point { position: [f64; 3] },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Space {
+    World,
+    /// Fixed to the camera: x right, y up, -z forward (a light that moves with the view).
+    Camera,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    pub kind: LightKind,
+    pub space: Space,
+    /// Linear RGB, already multiplied by the intensity: d_l = S_l of the papers.
+    pub color: [f32; 3],
+}
+
+impl Default for Light {
+    /// A key light from the upper left, behind the viewer, that moves with the camera.
+    fn default() -> Self {
+        Light {
+            kind: LightKind::Directional { direction: [0.4, -0.55, -0.75] },
+            space: Space::Camera,
+            color: [1.0, 1.0, 1.0],
+        }
+    }
+}
+
+/// A light as the shader sees it, in view space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ViewLight {
+    /// Unit vector from the surface toward the light (the papers' L).
+    Toward(DVec3),
+    At(DVec3),
+}
+
+impl Light {
+    pub fn validate(&self, arg: &str) -> Result<()> {
+        match self.kind {
+            LightKind::Directional { direction } => {
+                let d = DVec3::from_array(direction);
+                if !d.is_finite() {
+                    return Err(Error::invalid(
+                        format!("{arg}.direction"),
+                        format!("must be finite, got {direction:?}"),
+                    ));
+                }
+                if !(d.length() > 1e-300) {
+                    return Err(Error::invalid(format!("{arg}.direction"), "must not be the zero vector"));
+                }
+            }
+            LightKind::Point { position } => {
+                if !DVec3::from_array(position).is_finite() {
+                    return Err(Error::invalid(
+                        format!("{arg}.position"),
+                        format!("must be finite, got {position:?}"),
+                    ));
+                }
+            }
+        }
+        if !self.color.iter().all(|c| c.is_finite() && *c >= 0.0) {
+            return Err(Error::invalid(
+                format!("{arg}.color"),
+                format!("must be finite and >= 0, got {:?}", self.color),
+            ));
+        }
+        Ok(())
+    }
+
+    pub fn to_view(&self, view: &DMat4) -> ViewLight {
+        let m = match self.space {
+            Space::World => *view,
+            Space::Camera => DMat4::IDENTITY,
+        };
+        match self.kind {
+            LightKind::Directional { direction } => {
+                ViewLight::Toward(-m.transform_vector3(DVec3::from_array(direction)).normalize())
+            }
+            LightKind::Point { position } => ViewLight::At(m.transform_point3(DVec3::from_array(position))),
+        }
+    }
+}
+
+pub fn validate_lights(lights: &[Light]) -> Result<()> {
+    if lights.len() > MAX_LIGHTS {
+        return Err(Error::invalid("lights", format!("at most {MAX_LIGHTS} lights, got {}", lights.len())));
+    }
+    for (i, l) in lights.iter().enumerate() {
+        l.validate(&format!("lights[{i}]"))?;
+    }
+    Ok(())
+}

@@ -1,0 +1,158 @@
+// Shared by the passes that draw meshes: uniforms, the vertex stage and the shading models.
+// The formulas mirror src/render/reference.rs (see src/render/material.rs for the maths).
+
+struct Light {
+    position: vec4<f32>,   // w = 0: xyz is the unit vector toward the light; w = 1: a point
+    color: vec4<f32>,      // linear rgb, intensity included
+};
+
+struct Frame {
+    proj: mat4x4<f32>,
+    ambient: vec4<f32>,    // ambient light a_l, linear rgb
+    info: vec4<u32>,       // x: light count, y: 1 for an orthographic camera
+    lights: array<Light, 8>,
+};
+
+struct Draw {
+    model_view: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+    ambient: vec4<f32>,
+    diffuse: vec4<f32>,
+    specular: vec4<f32>,
+    params: vec4<f32>,     // x: shininess, y: t_h, z: t_s
+    model: vec4<u32>,      // x: model id, y: highlight (0 paper, 1 blinn), z: thresholds, w: table length
+    flags: vec4<u32>,      // x: 1 when the transform mirrors (flips the winding)
+    thresholds: array<vec4<f32>, 2>,
+    values: array<vec4<f32>, 3>,
+    table: array<vec4<f32>, 256>,
+};
+
+@group(0) @binding(0) var<uniform> frame: Frame;
+@group(1) @binding(0) var<uniform> draw: Draw;
+
+// Gouraud: shade the vertices and interpolate (chosen per pipeline).
+override PER_VERTEX: bool = false;
+
+struct VsIn {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+};
+
+struct VsOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) view_pos: vec3<f32>,
+    @location(1) view_normal: vec3<f32>,
+    @location(2) color_front: vec3<f32>,
+    @location(3) color_back: vec3<f32>,
+};
+
+fn unit_or_zero(v: vec3<f32>) -> vec3<f32> {
+    let l2 = dot(v, v);
+    if (l2 > 0.0) {
+        return v * inverseSqrt(l2);
+    }
+    return vec3<f32>(0.0);
+}
+
+fn view_dir(p: vec3<f32>) -> vec3<f32> {
+    if (frame.info.y == 1u) {
+        return vec3<f32>(0.0, 0.0, 1.0);
+    }
+    return normalize(-p);
+}
+
+fn thresh(a: f32, b: f32) -> f32 {
+    return select(0.0, 1.0, a >= b);
+}
+
+fn band_value(d: f32) -> f32 {
+    var k = 0u;
+    for (var i = 0u; i < draw.model.z; i++) {
+        if (d >= draw.thresholds[i / 4u][i % 4u]) {
+            k = i + 1u;
+        }
+    }
+    return draw.values[k / 4u][k % 4u];
+}
+
+fn table_value(d: f32) -> vec3<f32> {
+    let n = draw.model.w;
+    let i = min(u32(floor(clamp(d, 0.0, 1.0) * f32(n))), n - 1u);
+    return draw.table[i].rgb;
+}
+
+// Linear colour of a point with unit view-space normal n at view-space position p.
+fn shade(n: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
+    let v = view_dir(p);
+    var c = frame.ambient.rgb * draw.ambient.rgb;
+    for (var k = 0u; k < frame.info.x; k++) {
+        let light = frame.lights[k];
+        var l = light.position.xyz;
+        if (light.position.w != 0.0) {
+            l = normalize(light.position.xyz - p);
+        }
+        let d = dot(n, l);
+        var f = vec3<f32>(0.0);
+        var s = 0.0;
+        switch draw.model.x {
+            case 0u: {
+                f = vec3<f32>(max(d, 0.0));
+            }
+            case 1u: {
+                f = vec3<f32>(max(d, 0.0));
+                let r = 2.0 * d * n - l;
+                if (d > 0.0) {
+                    s = pow(max(dot(r, v), 0.0), draw.params.x);
+                }
+            }
+            case 2u: {
+                f = vec3<f32>(thresh(d, draw.params.y));
+                var hl = dot(l, v);
+                if (draw.model.y == 1u) {
+                    let h = l + v;
+                    hl = -1.0;
+                    if (dot(h, h) > 1e-12) {
+                        hl = dot(n, normalize(h));
+                    }
+                }
+                s = thresh(hl, draw.params.z);
+            }
+            case 3u: {
+                f = vec3<f32>(band_value(d));
+            }
+            default: {
+                f = table_value(d);
+            }
+        }
+        c += f * light.color.rgb * draw.diffuse.rgb + s * light.color.rgb * draw.specular.rgb;
+    }
+    return c;
+}
+
+// True when the fragment sees the side the normals point out of.
+fn outer_side(front_facing: bool) -> bool {
+    return front_facing != (draw.flags.x == 1u);
+}
+
+// The shading normal: unit, and turned toward the viewer on the inner side of a surface.
+fn facing_normal(n: vec3<f32>, front_facing: bool) -> vec3<f32> {
+    let u = unit_or_zero(n);
+    return select(-u, u, outer_side(front_facing));
+}
+
+@vertex
+fn vs_main(v: VsIn) -> VsOut {
+    var o: VsOut;
+    let p = draw.model_view * vec4<f32>(v.position, 1.0);
+    o.clip = frame.proj * p;
+    o.view_pos = p.xyz;
+    o.view_normal = (draw.normal_matrix * vec4<f32>(v.normal, 0.0)).xyz;
+    o.color_front = vec3<f32>(0.0);
+    o.color_back = vec3<f32>(0.0);
+    if (PER_VERTEX) {
+        let n = unit_or_zero(o.view_normal);
+        o.color_front = shade(n, p.xyz);
+        o.color_back = shade(-n, p.xyz);
+    }
+    return o;
+}
