@@ -3,6 +3,7 @@
 pub mod adjacency;
 pub mod bounds;
 pub mod input;
+pub mod normals;
 pub mod shapes;
 
 pub use adjacency::Adjacency;

@@ -1,0 +1,196 @@
+//! Boundary, crease and non-manifold edges: the view-independent outlines, found once per mesh.
+//!
+//! Rules (stated in the Python docstrings too):
+//! - boundary: exactly one face-edge on the edge;
+//! - non-manifold: three or more face-edges;
+//! - crease: exactly two face-edges, from two different faces that both have a normal, whose
+//!   dihedral angle atan2(|n1 x n2|, n1 . n2) exceeds the threshold (strictly). The atan2 form
+//!   keeps full precision near 0 and 180 degrees, where acos(n1 . n2) loses half the digits.
+//!   An edge next to a degenerate face (see `mesh::normals`) is never a crease: a face without
+//!   a normal has no angle to its neighbour.
+//! - a crease is convex (a ridge) when (n1 x n2) . (b - a) >= 0, where face 1 walks the edge from
+//!   a to b; this is independent of which face is called 1 when the two faces are consistently
+//!   oriented, and concave (a valley) otherwise.
+
+use rayon::prelude::*;
+
+use super::edge_table::EdgeTable;
+use crate::error::{Error, Result};
+use crate::mesh::normals::is_defined;
+use crate::real::{Real, Vec3};
+
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct FeatureEdges {
+    pub boundary: Vec<[u32; 2]>,
+    pub crease: Vec<[u32; 2]>,
+    /// Dihedral angle of each crease in degrees, in (threshold, 180].
+    pub crease_angle: Vec<f64>,
+    /// Whether each crease is convex (a ridge) rather than concave (a valley).
+    pub crease_convex: Vec<bool>,
+    pub nonmanifold: Vec<[u32; 2]>,
+}
+
+/// Checks a crease threshold in degrees.
+pub fn check_crease_angle(degrees: f64) -> Result<()> {
+    if !(0.0..=180.0).contains(&degrees) {
+        return Err(Error::invalid(
+            "crease_angle",
+            format!("must be in [0, 180] degrees, got {degrees}"),
+        ));
+    }
+    Ok(())
+}
+
+/// The angle between two unit normals in degrees and whether the fold is convex, given the
+/// direction `along` in which the first face walks the edge.
+#[inline]
+pub fn dihedral(n1: [f64; 3], n2: [f64; 3], along: [f64; 3]) -> (f64, bool) {
+    let c = [
+        n1[1] * n2[2] - n1[2] * n2[1],
+        n1[2] * n2[0] - n1[0] * n2[2],
+        n1[0] * n2[1] - n1[1] * n2[0],
+    ];
+    let sin = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+    let cos = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
+    let convex = c[0] * along[0] + c[1] * along[1] + c[2] * along[2] >= 0.0;
+    (sin.atan2(cos).to_degrees(), convex)
+}
+
+/// The two faces of a manifold edge when both have normals, first the one that walks a -> b.
+#[inline]
+pub fn crease_pair(table: &EdgeTable, e: usize, normals: &[[f64; 3]]) -> Option<(u32, u32, bool)> {
+    let mut u = table.uses(e);
+    let (u1, u2) = (u.next()?, u.next()?);
+    if u1.face == u2.face
+        || !is_defined(normals[u1.face as usize])
+        || !is_defined(normals[u2.face as usize])
+    {
+        return None;
+    }
+    Some((u1.face, u2.face, u1.reversed))
+}
+
+const CHUNK: usize = 16384;
+
+pub fn feature_edges<T: Real>(
+    positions: &[Vec3<T>],
+    table: &EdgeTable,
+    normals: &[[f64; 3]],
+    crease_angle: f64,
+) -> Result<FeatureEdges> {
+    check_crease_angle(crease_angle)?;
+    // Cheap pre-test sin(angle - threshold) > -slack before the exact atan2 on the few survivors.
+    let (st, ct) = crease_angle.to_radians().sin_cos();
+    let n = table.len();
+    let parts: Vec<FeatureEdges> = (0..n.div_ceil(CHUNK))
+        .into_par_iter()
+        .map(|c| {
+            let mut out = FeatureEdges::default();
+            for e in c * CHUNK..((c + 1) * CHUNK).min(n) {
+                let edge = table.edges[e];
+                match table.face_count(e) {
+                    1 => out.boundary.push(edge),
+                    2 => {
+                        let Some((f1, f2, reversed)) = crease_pair(table, e, normals) else {
+                            continue;
+                        };
+                        let (n1, n2) = (normals[f1 as usize], normals[f2 as usize]);
+                        let cx = [
+                            n1[1] * n2[2] - n1[2] * n2[1],
+                            n1[2] * n2[0] - n1[0] * n2[2],
+                            n1[0] * n2[1] - n1[1] * n2[0],
+                        ];
+                        let sin = (cx[0] * cx[0] + cx[1] * cx[1] + cx[2] * cx[2]).sqrt();
+                        let cos = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
+                        if sin * ct - cos * st <= -1e-9 {
+                            continue;
+                        }
+                        let (pa, pb) = (positions[edge[0] as usize], positions[edge[1] as usize]);
+                        let mut along = [0.0; 3];
+                        for k in 0..3 {
+                            along[k] = pb[k].to_f64() - pa[k].to_f64();
+                            if reversed {
+                                along[k] = -along[k];
+                            }
+                        }
+                        let (angle, convex) = dihedral(n1, n2, along);
+                        if angle > crease_angle {
+                            out.crease.push(edge);
+                            out.crease_angle.push(angle);
+                            out.crease_convex.push(convex);
+                        }
+                    }
+                    _ => out.nonmanifold.push(edge),
+                }
+            }
+            out
+        })
+        .collect();
+    let mut all = FeatureEdges::default();
+    for p in parts {
+        all.boundary.extend(p.boundary);
+        all.crease.extend(p.crease);
+        all.crease_angle.extend(p.crease_angle);
+        all.crease_convex.extend(p.crease_convex);
+        all.nonmanifold.extend(p.nonmanifold);
+    }
+    Ok(all)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::normals::face_normals;
+
+    fn run(v: &[[f64; 3]], f: &[[u32; 3]], angle: f64) -> FeatureEdges {
+        let t = EdgeTable::build(v.len(), f).unwrap();
+        feature_edges(v, &t, &face_normals(v, f), angle).unwrap()
+    }
+
+    /// Two triangles on edge 0-1 (along x); the second is folded by `fold` radians.
+    fn hinge(fold: f64) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
+        let v = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.5, 1.0, 0.0],
+            [0.5, -fold.cos(), -fold.sin()],
+        ];
+        (v, vec![[0, 1, 2], [1, 0, 3]])
+    }
+
+    #[test]
+    fn ridge_valley_and_precision() {
+        for deg in [1e-6f64, 0.5, 30.0, 90.0, 179.0, 180.0 - 1e-6] {
+            let (v, f) = hinge(deg.to_radians());
+            let r = run(&v, &f, 0.0);
+            assert_eq!(r.crease, vec![[0, 1]]);
+            assert!(
+                (r.crease_angle[0] - deg).abs() < 1e-9 * deg.max(1.0),
+                "{deg}: {}",
+                r.crease_angle[0]
+            );
+            assert!(r.crease_convex[0], "folding down is a ridge");
+            let (v, f) = hinge(-deg.to_radians());
+            assert!(!run(&v, &f, 0.0).crease_convex[0], "folding up is a valley");
+        }
+        let (v, f) = hinge(0.0);
+        assert!(
+            run(&v, &f, 0.0).crease.is_empty(),
+            "coplanar faces are not a crease"
+        );
+    }
+
+    #[test]
+    fn degenerate_face_never_creases() {
+        let v = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [2.0, 0.0, 0.0],
+        ];
+        let r = run(&v, &[[0, 1, 2], [1, 0, 3]], 10.0);
+        assert!(r.crease.is_empty());
+        assert_eq!(r.boundary, vec![[0, 2], [0, 3], [1, 2], [1, 3]]);
+        assert!(check_crease_angle(-1.0).is_err() && check_crease_angle(f64::NAN).is_err());
+    }
+}
