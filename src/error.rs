@@ -37,24 +37,15 @@ pub enum Error {
 
 impl Error {
     pub fn invalid(arg: impl Into<String>, reason: impl Into<String>) -> Self {
-        Error::InvalidValue {
-            arg: arg.into(),
-            reason: reason.into(),
-        }
+        Error::InvalidValue { arg: arg.into(), reason: reason.into() }
     }
 
     pub fn out_of_range(arg: impl Into<String>, reason: impl Into<String>) -> Self {
-        Error::IndexOutOfRange {
-            arg: arg.into(),
-            reason: reason.into(),
-        }
+        Error::IndexOutOfRange { arg: arg.into(), reason: reason.into() }
     }
 
     pub fn wrong_type(arg: impl Into<String>, reason: impl Into<String>) -> Self {
-        Error::WrongType {
-            arg: arg.into(),
-            reason: reason.into(),
-        }
+        Error::WrongType { arg: arg.into(), reason: reason.into() }
     }
 }
 

@@ -20,27 +20,19 @@ static POOL: Mutex<Option<PoolState>> = Mutex::new(None);
 static REQUESTED: Mutex<Option<usize>> = Mutex::new(None);
 
 fn default_threads() -> usize {
-    if let Some(n) = std::env::var("TOONMESH_NUM_THREADS")
-        .ok()
-        .and_then(|s| s.parse::<usize>().ok())
-    {
+    if let Some(n) = std::env::var("TOONMESH_NUM_THREADS").ok().and_then(|s| s.parse::<usize>().ok()) {
         if n > 0 {
             return n;
         }
     }
-    std::thread::available_parallelism()
-        .map(|n| n.get())
-        .unwrap_or(1)
+    std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1)
 }
 
 /// The pool for this process, created on first use (and again in a forked child).
 pub fn pool() -> Arc<ThreadPool> {
     let pid = std::process::id();
     let mut guard = POOL.lock().unwrap_or_else(|e| e.into_inner());
-    let wanted = REQUESTED
-        .lock()
-        .unwrap_or_else(|e| e.into_inner())
-        .unwrap_or_else(default_threads);
+    let wanted = REQUESTED.lock().unwrap_or_else(|e| e.into_inner()).unwrap_or_else(default_threads);
     match guard.as_ref() {
         Some(s) if s.pid == pid && s.threads == wanted => return s.pool.clone(),
         Some(s) if s.pid != pid => {
@@ -57,11 +49,7 @@ pub fn pool() -> Arc<ThreadPool> {
             .build()
             .expect("building a thread pool"),
     );
-    *guard = Some(PoolState {
-        pid,
-        threads: wanted,
-        pool: pool.clone(),
-    });
+    *guard = Some(PoolState { pid, threads: wanted, pool: pool.clone() });
     pool
 }
 
@@ -73,10 +61,7 @@ pub fn set_num_threads(n: usize) {
 
 /// The number of worker threads the next parallel call will use.
 pub fn num_threads() -> usize {
-    REQUESTED
-        .lock()
-        .unwrap_or_else(|e| e.into_inner())
-        .unwrap_or_else(default_threads)
+    REQUESTED.lock().unwrap_or_else(|e| e.into_inner()).unwrap_or_else(default_threads)
 }
 
 /// Runs `f` inside the pool.

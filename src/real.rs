@@ -54,11 +54,7 @@ pub fn dot<T: Real>(a: Vec3<T>, b: Vec3<T>) -> T {
 
 #[inline]
 pub fn cross<T: Real>(a: Vec3<T>, b: Vec3<T>) -> Vec3<T> {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
 #[inline]

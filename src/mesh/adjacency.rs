@@ -24,10 +24,7 @@ pub struct Adjacency {
 impl Adjacency {
     pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Adjacency> {
         if faces.len() > (u32::MAX as usize) / 6 {
-            return Err(Error::invalid(
-                "faces",
-                format!("{} faces is more than toonmesh supports", faces.len()),
-            ));
+            return Err(Error::invalid("faces", format!("{} faces is more than toonmesh supports", faces.len())));
         }
         // Each face-edge {a, b} with opposite corner c appears once from a and once from b.
         let mut count = vec![0u32; n_vertices + 1];
@@ -99,13 +96,7 @@ impl Adjacency {
         }
         opp_offsets.push(entries.len() as u32);
         let opposite = entries.into_iter().map(|(_, c)| c).collect();
-        Ok(Adjacency {
-            offsets,
-            nbrs,
-            edge_faces,
-            opp_offsets,
-            opposite,
-        })
+        Ok(Adjacency { offsets, nbrs, edge_faces, opp_offsets, opposite })
     }
 
     pub fn n_vertices(&self) -> usize {
@@ -129,16 +120,12 @@ impl Adjacency {
 
     /// Per vertex: does it lie on an edge with exactly one face?
     pub fn boundary_vertices(&self) -> Vec<bool> {
-        (0..self.n_vertices())
-            .map(|i| self.slots(i).any(|s| self.edge_faces[s] == 1))
-            .collect()
+        (0..self.n_vertices()).map(|i| self.slots(i).any(|s| self.edge_faces[s] == 1)).collect()
     }
 
     /// Per vertex: is it used by any non-degenerate face-edge?
     pub fn referenced(&self) -> Vec<bool> {
-        (0..self.n_vertices())
-            .map(|i| self.offsets[i + 1] > self.offsets[i])
-            .collect()
+        (0..self.n_vertices()).map(|i| self.offsets[i + 1] > self.offsets[i]).collect()
     }
 }
 

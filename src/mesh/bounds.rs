@@ -24,11 +24,7 @@ impl Bounds {
     }
 
     pub fn diagonal(&self) -> f64 {
-        let d = [
-            self.max[0] - self.min[0],
-            self.max[1] - self.min[1],
-            self.max[2] - self.min[2],
-        ];
+        let d = [self.max[0] - self.min[0], self.max[1] - self.min[1], self.max[2] - self.min[2]];
         (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
     }
 
@@ -42,9 +38,6 @@ impl Bounds {
 
     /// The largest absolute coordinate: the scale at which rounding happens.
     pub fn magnitude(&self) -> f64 {
-        self.min
-            .iter()
-            .chain(self.max.iter())
-            .fold(0.0f64, |m, v| m.max(v.abs()))
+        self.min.iter().chain(self.max.iter()).fold(0.0f64, |m, v| m.max(v.abs()))
     }
 }

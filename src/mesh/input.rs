@@ -11,33 +11,20 @@ pub type Faces = Vec<[u32; 3]>;
 /// Checks positions: at least one vertex and every coordinate finite.
 pub fn check_positions<T: Real>(arg: &str, positions: &[Vec3<T>]) -> Result<()> {
     if positions.is_empty() {
-        return Err(Error::invalid(
-            arg,
-            "the mesh has no vertices (shape (0, 3))",
-        ));
+        return Err(Error::invalid(arg, "the mesh has no vertices (shape (0, 3))"));
     }
-    if let Some(i) = positions
-        .iter()
-        .position(|p| !(p[0].is_finite() && p[1].is_finite() && p[2].is_finite()))
-    {
+    if let Some(i) = positions.iter().position(|p| !(p[0].is_finite() && p[1].is_finite() && p[2].is_finite())) {
         let p = positions[i];
         return Err(Error::invalid(
             arg,
-            format!(
-                "vertex {i} is not finite ({:?}, {:?}, {:?}); NaN and inf are not allowed",
-                p[0], p[1], p[2]
-            ),
+            format!("vertex {i} is not finite ({:?}, {:?}, {:?}); NaN and inf are not allowed", p[0], p[1], p[2]),
         ));
     }
     Ok(())
 }
 
 /// Converts face rows of any integer type to u32, checking each index against `n_vertices`.
-pub fn check_faces<I>(
-    arg: &str,
-    rows: impl Iterator<Item = [I; 3]>,
-    n_vertices: usize,
-) -> Result<Faces>
+pub fn check_faces<I>(arg: &str, rows: impl Iterator<Item = [I; 3]>, n_vertices: usize) -> Result<Faces>
 where
     I: Copy + TryInto<i64>,
 {
@@ -47,17 +34,12 @@ where
         for k in 0..3 {
             let idx: i64 = row[k].try_into().unwrap_or(i64::MAX);
             if idx < 0 {
-                return Err(Error::out_of_range(
-                    arg,
-                    format!("face {f} has a negative vertex index {idx}"),
-                ));
+                return Err(Error::out_of_range(arg, format!("face {f} has a negative vertex index {idx}")));
             }
             if idx as u64 >= n_vertices as u64 {
                 return Err(Error::out_of_range(
                     arg,
-                    format!(
-                        "face {f} refers to vertex {idx}, but there are only {n_vertices} vertices"
-                    ),
+                    format!("face {f} refers to vertex {idx}, but there are only {n_vertices} vertices"),
                 ));
             }
             out[k] = idx as u32;
@@ -88,9 +70,6 @@ mod tests {
         let e = check_faces("faces", [[0i32, -1, 2]].into_iter(), 3).unwrap_err();
         assert!(e.to_string().contains("negative"));
         assert!(check_faces::<i32>("faces", std::iter::empty(), 3).is_err());
-        assert_eq!(
-            check_faces("faces", [[0u32, 1, 2]].into_iter(), 3).unwrap(),
-            vec![[0, 1, 2]]
-        );
+        assert_eq!(check_faces("faces", [[0u32, 1, 2]].into_iter(), 3).unwrap(), vec![[0, 1, 2]]);
     }
 }

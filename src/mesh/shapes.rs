@@ -31,53 +31,22 @@ pub type Shape = (Vec<[f64; 3]>, Vec<[u32; 3]>);
 /// uniform number in [-1, 1).
 pub fn icosphere(subdivisions: u32, noise: f64, seed: u64) -> Result<Shape> {
     if subdivisions > 10 {
-        return Err(Error::invalid(
-            "subdivisions",
-            format!("{subdivisions} is too many (at most 10)"),
-        ));
+        return Err(Error::invalid("subdivisions", format!("{subdivisions} is too many (at most 10)")));
     }
     if !noise.is_finite() || noise < 0.0 {
-        return Err(Error::invalid(
-            "noise",
-            format!("must be finite and >= 0, got {noise}"),
-        ));
+        return Err(Error::invalid("noise", format!("must be finite and >= 0, got {noise}")));
     }
     let t = (1.0 + 5f64.sqrt()) / 2.0;
     let mut v: Vec<[f64; 3]> = vec![
-        [-1.0, t, 0.0],
-        [1.0, t, 0.0],
-        [-1.0, -t, 0.0],
-        [1.0, -t, 0.0],
-        [0.0, -1.0, t],
-        [0.0, 1.0, t],
-        [0.0, -1.0, -t],
-        [0.0, 1.0, -t],
-        [t, 0.0, -1.0],
-        [t, 0.0, 1.0],
-        [-t, 0.0, -1.0],
-        [-t, 0.0, 1.0],
+        [-1.0, t, 0.0], [1.0, t, 0.0], [-1.0, -t, 0.0], [1.0, -t, 0.0],
+        [0.0, -1.0, t], [0.0, 1.0, t], [0.0, -1.0, -t], [0.0, 1.0, -t],
+        [t, 0.0, -1.0], [t, 0.0, 1.0], [-t, 0.0, -1.0], [-t, 0.0, 1.0],
     ];
     let mut f: Vec<[u32; 3]> = vec![
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
+        [0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11],
+        [1, 5, 9], [5, 11, 4], [11, 10, 2], [10, 7, 6], [7, 1, 8],
+        [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9],
+        [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1],
     ];
     for p in v.iter_mut() {
         *p = normalized(*p);
@@ -117,27 +86,17 @@ pub fn icosphere(subdivisions: u32, noise: f64, seed: u64) -> Result<Shape> {
 /// with seeded noise of amplitude `noise` added to z.
 pub fn grid(n: u32, noise: f64, seed: u64) -> Result<Shape> {
     if !(2..=4096).contains(&n) {
-        return Err(Error::invalid(
-            "n",
-            format!("must be in [2, 4096], got {n}"),
-        ));
+        return Err(Error::invalid("n", format!("must be in [2, 4096], got {n}")));
     }
     if !noise.is_finite() || noise < 0.0 {
-        return Err(Error::invalid(
-            "noise",
-            format!("must be finite and >= 0, got {noise}"),
-        ));
+        return Err(Error::invalid("noise", format!("must be finite and >= 0, got {noise}")));
     }
     let mut rng = SplitMix64::new(seed);
     let step = 1.0 / (n - 1) as f64;
     let mut v = Vec::with_capacity((n * n) as usize);
     for r in 0..n {
         for c in 0..n {
-            let z = if noise > 0.0 {
-                noise * rng.symmetric()
-            } else {
-                0.0
-            };
+            let z = if noise > 0.0 { noise * rng.symmetric() } else { 0.0 };
             v.push([c as f64 * step, r as f64 * step, z]);
         }
     }
@@ -169,9 +128,7 @@ mod tests {
         let (v2, _) = icosphere(2, 0.01, 7).unwrap();
         let (v3, _) = icosphere(2, 0.01, 7).unwrap();
         assert_eq!(v2, v3);
-        assert!(v2.iter().all(
-            |p| ((p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt() - 1.0).abs() <= 0.01 + 1e-12
-        ));
+        assert!(v2.iter().all(|p| ((p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt() - 1.0).abs() <= 0.01 + 1e-12));
     }
 
     #[test]

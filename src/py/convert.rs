@@ -2,10 +2,7 @@
 //! order works); outputs are handed to NumPy without a copy.
 
 use numpy::ndarray::{Array1, Array2};
-use numpy::{
-    IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
-    PyUntypedArrayMethods,
-};
+use numpy::{IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use crate::error::{Error, Result};
@@ -27,39 +24,23 @@ impl Positions {
     }
 }
 
-fn untyped<'a, 'py>(
-    arg: &str,
-    obj: &'a Bound<'py, PyAny>,
-) -> Result<&'a Bound<'py, PyUntypedArray>> {
-    obj.cast::<PyUntypedArray>().map_err(|_| {
-        Error::wrong_type(
-            arg,
-            format!("expected a NumPy array, got {}", type_name(obj)),
-        )
-    })
+fn untyped<'a, 'py>(arg: &str, obj: &'a Bound<'py, PyAny>) -> Result<&'a Bound<'py, PyUntypedArray>> {
+    obj.cast::<PyUntypedArray>()
+        .map_err(|_| Error::wrong_type(arg, format!("expected a NumPy array, got {}", type_name(obj))))
 }
 
 fn type_name(obj: &Bound<'_, PyAny>) -> String {
-    obj.get_type()
-        .name()
-        .map(|n| n.to_string())
-        .unwrap_or_else(|_| "an unknown type".into())
+    obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "an unknown type".into())
 }
 
 fn dtype_name(a: &Bound<'_, PyUntypedArray>) -> String {
-    a.dtype()
-        .str()
-        .map(|s| s.to_string())
-        .unwrap_or_else(|_| "?".into())
+    a.dtype().str().map(|s| s.to_string()).unwrap_or_else(|_| "?".into())
 }
 
 fn check_rows3(arg: &str, a: &Bound<'_, PyUntypedArray>, what: &str) -> Result<()> {
     let shape = a.shape();
     if shape.len() != 2 || shape[1] != 3 {
-        return Err(Error::invalid(
-            arg,
-            format!("expected shape ({what}, 3), got {shape:?}"),
-        ));
+        return Err(Error::invalid(arg, format!("expected shape ({what}, 3), got {shape:?}")));
     }
     Ok(())
 }
@@ -69,10 +50,7 @@ fn rows3<T: numpy::Element + Copy>(a: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
     if let Some(flat) = view.as_slice() {
         flat.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
     } else {
-        view.rows()
-            .into_iter()
-            .map(|r| [r[0], r[1], r[2]])
-            .collect()
+        view.rows().into_iter().map(|r| [r[0], r[1], r[2]]).collect()
     }
 }
 
@@ -85,10 +63,7 @@ pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
     } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, f64>>() {
         Positions::F64(rows3(&x))
     } else {
-        return Err(Error::wrong_type(
-            arg,
-            format!("dtype must be float32 or float64, got {}", dtype_name(a)),
-        ));
+        return Err(Error::wrong_type(arg, format!("dtype must be float32 or float64, got {}", dtype_name(a))));
     };
     match &p {
         Positions::F32(v) => check_positions(arg, v)?,
@@ -108,49 +83,27 @@ pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Fac
     } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, u32>>() {
         check_faces(arg, rows3(&x).into_iter(), n_vertices)
     } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, u64>>() {
-        check_faces(
-            arg,
-            rows3(&x)
-                .into_iter()
-                .map(|r| r.map(|i| i64::try_from(i).unwrap_or(i64::MAX))),
-            n_vertices,
-        )
+        check_faces(arg, rows3(&x).into_iter().map(|r| r.map(|i| i64::try_from(i).unwrap_or(i64::MAX))), n_vertices)
     } else {
-        Err(Error::wrong_type(
-            arg,
-            format!(
-                "dtype must be int32, int64 or uint32, got {}",
-                dtype_name(a)
-            ),
-        ))
+        Err(Error::wrong_type(arg, format!("dtype must be int32, int64 or uint32, got {}", dtype_name(a))))
     }
 }
 
 /// Reads an optional 1-D array of vertex indices (any integer dtype) or a boolean mask of
 /// length `n_vertices`, returning a per-vertex flag.
-pub fn vertex_mask(
-    arg: &str,
-    obj: Option<&Bound<'_, PyAny>>,
-    n_vertices: usize,
-) -> Result<Option<Vec<bool>>> {
+pub fn vertex_mask(arg: &str, obj: Option<&Bound<'_, PyAny>>, n_vertices: usize) -> Result<Option<Vec<bool>>> {
     let Some(obj) = obj else { return Ok(None) };
     if obj.is_none() {
         return Ok(None);
     }
     let a = untyped(arg, obj)?;
     if a.ndim() != 1 {
-        return Err(Error::invalid(
-            arg,
-            format!("expected a 1-D array, got shape {:?}", a.shape()),
-        ));
+        return Err(Error::invalid(arg, format!("expected a 1-D array, got shape {:?}", a.shape())));
     }
     if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, bool>>() {
         let v = x.as_array();
         if v.len() != n_vertices {
-            return Err(Error::invalid(
-                arg,
-                format!("a boolean mask needs {n_vertices} entries, got {}", v.len()),
-            ));
+            return Err(Error::invalid(arg, format!("a boolean mask needs {n_vertices} entries, got {}", v.len())));
         }
         return Ok(Some(v.iter().copied().collect()));
     }
@@ -161,26 +114,14 @@ pub fn vertex_mask(
     } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, u32>>() {
         x.as_array().iter().map(|&i| i as i64).collect()
     } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, u64>>() {
-        x.as_array()
-            .iter()
-            .map(|&i| i64::try_from(i).unwrap_or(i64::MAX))
-            .collect()
+        x.as_array().iter().map(|&i| i64::try_from(i).unwrap_or(i64::MAX)).collect()
     } else {
-        return Err(Error::wrong_type(
-            arg,
-            format!(
-                "expected integer indices or a boolean mask, got dtype {}",
-                dtype_name(a)
-            ),
-        ));
+        return Err(Error::wrong_type(arg, format!("expected integer indices or a boolean mask, got dtype {}", dtype_name(a))));
     };
     let mut mask = vec![false; n_vertices];
     for i in idx {
         if i < 0 || i as u64 >= n_vertices as u64 {
-            return Err(Error::out_of_range(
-                arg,
-                format!("vertex index {i} is outside [0, {n_vertices})"),
-            ));
+            return Err(Error::out_of_range(arg, format!("vertex index {i} is outside [0, {n_vertices})")));
         }
         mask[i as usize] = true;
     }
@@ -188,30 +129,20 @@ pub fn vertex_mask(
 }
 
 /// Hands an (N, 3) result to NumPy without copying.
-pub fn rows3_to_numpy<'py, T: Real + numpy::Element>(
-    py: Python<'py>,
-    v: Vec<[T; 3]>,
-) -> Bound<'py, PyArray2<T>> {
+pub fn rows3_to_numpy<'py, T: Real + numpy::Element>(py: Python<'py>, v: Vec<[T; 3]>) -> Bound<'py, PyArray2<T>> {
     let n = v.len();
     let flat: Vec<T> = flatten3(v);
-    Array2::from_shape_vec((n, 3), flat)
-        .expect("length is 3n")
-        .into_pyarray(py)
+    Array2::from_shape_vec((n, 3), flat).expect("length is 3n").into_pyarray(py)
 }
 
 /// Hands (M, 3) indices to NumPy as int64 (NumPy's default index type).
 pub fn faces_to_numpy<'py>(py: Python<'py>, f: Vec<[u32; 3]>) -> Bound<'py, PyArray2<i64>> {
     let m = f.len();
     let flat: Vec<i64> = f.into_iter().flat_map(|r| r.map(|i| i as i64)).collect();
-    Array2::from_shape_vec((m, 3), flat)
-        .expect("length is 3m")
-        .into_pyarray(py)
+    Array2::from_shape_vec((m, 3), flat).expect("length is 3m").into_pyarray(py)
 }
 
-pub fn vec_to_numpy<'py, T: numpy::Element>(
-    py: Python<'py>,
-    v: Vec<T>,
-) -> Bound<'py, numpy::PyArray1<T>> {
+pub fn vec_to_numpy<'py, T: numpy::Element>(py: Python<'py>, v: Vec<T>) -> Bound<'py, numpy::PyArray1<T>> {
     Array1::from_vec(v).into_pyarray(py)
 }
 

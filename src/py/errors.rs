@@ -5,24 +5,14 @@ use pyo3::prelude::*;
 
 use crate::error::Error;
 
-pyo3::create_exception!(
-    toonmesh,
-    ConvergenceError,
-    PyRuntimeError,
-    "An iterative solver did not reach its tolerance."
-);
+pyo3::create_exception!(toonmesh, ConvergenceError, PyRuntimeError, "An iterative solver did not reach its tolerance.");
 pyo3::create_exception!(
     toonmesh,
     GpuUnavailableError,
     PyRuntimeError,
     "No GPU adapter (hardware, or Mesa's lavapipe/llvmpipe) could be found."
 );
-pyo3::create_exception!(
-    toonmesh,
-    GpuError,
-    PyRuntimeError,
-    "The GPU device failed while rendering."
-);
+pyo3::create_exception!(toonmesh, GpuError, PyRuntimeError, "The GPU device failed while rendering.");
 
 pub fn to_py(e: Error) -> PyErr {
     let msg = e.to_string();

@@ -10,15 +10,14 @@ use crate::parallel;
 /// Runs `work` with the GIL released and maps its error (or a panic) to a Python exception.
 pub fn detached<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
     py.detach(|| {
-        std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| parallel::install(work)))
-            .unwrap_or_else(|p| {
-                let what = p
-                    .downcast_ref::<&str>()
-                    .map(|s| s.to_string())
-                    .or_else(|| p.downcast_ref::<String>().cloned())
-                    .unwrap_or_else(|| "unknown panic".into());
-                Err(Error::Internal(what))
-            })
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| parallel::install(work))).unwrap_or_else(|p| {
+            let what = p
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| p.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            Err(Error::Internal(what))
+        })
     })
     .map_err(to_py)
 }

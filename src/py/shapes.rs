@@ -1,6 +1,6 @@
 //! Procedural meshes, exposed for examples, tests and benchmarks.
 
-use numpy::PyArray2;
+use numpy::{PyArray2};
 use pyo3::prelude::*;
 
 use super::convert::{faces_to_numpy, rows3_to_numpy};
