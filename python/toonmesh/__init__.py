@@ -8,12 +8,14 @@ from toonmesh._core import (
     get_num_threads,
     set_num_threads,
 )
+from toonmesh import edges
 
 __all__ = [
     "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",
     "__version__",
+    "edges",
     "get_num_threads",
     "set_num_threads",
 ]
