@@ -20,8 +20,6 @@ def grid(n: int = 32, noise: float = 0.0, seed: int = 0) -> Tuple[npt.NDArray[np
 # --- edges (toonmesh.edges wraps these) ---
 from typing import final
 
-from typing_extensions import disjoint_base
-
 _Pairs = npt.NDArray[np.int64]
 _FeatureTuple = Tuple[
     _Pairs, _Pairs, npt.NDArray[np.float64], npt.NDArray[np.bool_], _Pairs, npt.NDArray[np.int64]
@@ -37,7 +35,6 @@ def _sobel(image: Any, output: str = "magnitude", convention: str = "skimage") -
 def _paper_gradient(buffer: Any) -> Any: ...
 
 @final
-@disjoint_base
 class _EdgeIndex:
     def __new__(cls, vertices: Any, faces: Any, weld: bool = False) -> _EdgeIndex: ...
     def silhouette(self, eye: _Point = None, direction: _Point = None) -> _Pairs: ...
