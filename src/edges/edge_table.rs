@@ -9,6 +9,7 @@
 
 use rayon::prelude::*;
 
+use super::huge_pages::{filled_vec, with_capacity};
 use crate::error::{Error, Result};
 
 /// One face walking along an edge: `face` and whether it walks from the larger index to the
@@ -33,10 +34,10 @@ impl FaceUse {
 pub struct EdgeTable {
     /// Unique edges (a, b), a < b, in lexicographic order.
     pub edges: Vec<[u32; 2]>,
-    /// `uses[use_offsets[e]..use_offsets[e + 1]]` are edge e's face-edges, packed as
-    /// face << 1 | reversed, ascending.
+    /// The low 32 bits of `uses[use_offsets[e]..use_offsets[e + 1]]` are edge e's face-edges,
+    /// packed as face << 1 | reversed, ascending.
     pub use_offsets: Vec<u32>,
-    uses: Vec<u32>,
+    uses: Vec<u64>,
 }
 
 impl EdgeTable {
@@ -63,7 +64,7 @@ impl EdgeTable {
         let total = start[n_vertices] as usize;
         // Entry: larger vertex << 32 | face << 1 | reversed, so sorting a bucket sorts by the
         // other end, then face, then direction.
-        let mut entries = vec![0u64; total];
+        let mut entries = filled_vec(total, 0u64);
         let mut cursor = start.clone();
         for (fi, f) in faces.iter().enumerate() {
             for j in 0..3 {
@@ -119,8 +120,8 @@ impl EdgeTable {
             .collect();
 
         let n_edges: usize = per_chunk.iter().map(|(e, _)| e.len()).sum();
-        let mut edges = Vec::with_capacity(n_edges);
-        let mut use_offsets = Vec::with_capacity(n_edges + 1);
+        let mut edges = with_capacity(n_edges);
+        let mut use_offsets = with_capacity(n_edges + 1);
         use_offsets.push(0u32);
         let mut acc = 0u32;
         for (e, counts) in per_chunk {
@@ -130,11 +131,10 @@ impl EdgeTable {
                 use_offsets.push(acc);
             }
         }
-        let uses: Vec<u32> = entries.par_iter().map(|&x| x as u32).collect();
         Ok(EdgeTable {
             edges,
             use_offsets,
-            uses,
+            uses: entries,
         })
     }
 
@@ -157,7 +157,7 @@ impl EdgeTable {
     pub fn uses(&self, e: usize) -> impl ExactSizeIterator<Item = FaceUse> + '_ {
         self.uses[self.use_offsets[e] as usize..self.use_offsets[e + 1] as usize]
             .iter()
-            .map(|&t| FaceUse::unpack(t))
+            .map(|&t| FaceUse::unpack(t as u32))
     }
 }
 

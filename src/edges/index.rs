@@ -5,11 +5,11 @@
 use rayon::prelude::*;
 
 use super::edge_table::EdgeTable;
+use super::face_normals;
 use super::feature::{crease_pair, feature_edges, FeatureEdges};
 use super::silhouette::{facing, View, BACK, FRONT};
 use super::weld::{weld_faces, weld_map};
 use crate::error::Result;
-use crate::mesh::normals::face_normals;
 use crate::real::{Real, Vec3};
 
 #[derive(Debug, Clone)]
@@ -229,5 +229,44 @@ mod tests {
             .unwrap()
             .is_empty());
         assert_eq!(idx.feature_edges(30.0).unwrap().boundary.len(), 4 * 7);
+    }
+}
+#[cfg(test)]
+mod timing_tmp {
+    use super::*;
+    use crate::mesh::shapes::icosphere;
+    #[test]
+    #[ignore]
+    fn time_parts() {
+        let (v, f) = icosphere(8, 0.002, 1).unwrap();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            for _ in 0..3 {
+                let t = std::time::Instant::now();
+                let table = EdgeTable::build(v.len(), &f).unwrap();
+                let t1 = t.elapsed().as_secs_f64();
+                let normals = face_normals(&v, &f);
+                let t2 = t.elapsed().as_secs_f64();
+                let fe = feature_edges(&v, &table, &normals, 30.0).unwrap();
+                let t3 = t.elapsed().as_secs_f64();
+                let idx = EdgeIndex::build(&v, &f, false).unwrap();
+                let t4 = t.elapsed().as_secs_f64();
+                let s = idx.silhouette(View::Eye([3.0, 0.0, 1.0])).unwrap();
+                let t5 = t.elapsed().as_secs_f64();
+                println!(
+                    "table {:.1} normals {:.1} features {:.1} index {:.1} sil {:.1} ms ({} {})",
+                    t1 * 1e3,
+                    (t2 - t1) * 1e3,
+                    (t3 - t2) * 1e3,
+                    (t4 - t3) * 1e3,
+                    (t5 - t4) * 1e3,
+                    fe.crease.len(),
+                    s.len()
+                );
+            }
+        });
     }
 }

@@ -75,60 +75,137 @@ pub fn sobel<T: Real>(
         Convention::Skimage => (T::from_f64(0.25), T::from_f64(2f64.sqrt())),
         Convention::OpenCv => (T::one(), T::one()),
     };
+    let k = Kernel {
+        width,
+        left_border,
+        right_border,
+        output,
+        scale,
+        mag_div,
+    };
     out.par_chunks_mut(BAND_ROWS * width)
         .enumerate()
         .for_each(|(band, out_band)| {
             let mut smooth = vec![T::zero(); width + 2];
             let mut diff = vec![T::zero(); width + 2];
-            for (k, out_row) in out_band.chunks_exact_mut(width).enumerate() {
-                let r = band * BAND_ROWS + k;
+            for (i, out_row) in out_band.chunks_exact_mut(width).enumerate() {
+                let r = band * BAND_ROWS + i;
                 let above = if r == 0 { up_border } else { r - 1 };
                 let below = if r + 1 == height { down_border } else { r + 1 };
                 let row = |i: usize| &image[i * width..(i + 1) * width];
-                let (a, m, b) = (row(above), row(r), row(below));
-                for (((s, d), (&a, &m)), &b) in smooth[1..width + 1]
-                    .iter_mut()
-                    .zip(diff[1..width + 1].iter_mut())
-                    .zip(a.iter().zip(m))
-                    .zip(b)
-                {
-                    *s = a + (m + m) + b;
-                    *d = b - a;
-                }
-                smooth[0] = smooth[1 + left_border];
-                diff[0] = diff[1 + left_border];
-                smooth[width + 1] = smooth[1 + right_border];
-                diff[width + 1] = diff[1 + right_border];
-                let (s0, s2) = (&smooth[0..width], &smooth[2..width + 2]);
-                let (d0, d1, d2) = (&diff[0..width], &diff[1..width + 1], &diff[2..width + 2]);
-                match output {
-                    Output::Magnitude => {
-                        for ((o, (&s0, &s2)), ((&d0, &d1), &d2)) in out_row
-                            .iter_mut()
-                            .zip(s0.iter().zip(s2))
-                            .zip(d0.iter().zip(d1).zip(d2))
-                        {
-                            let v = (s2 - s0) * scale;
-                            let h = (d0 + (d1 + d1) + d2) * scale;
-                            *o = (h * h + v * v).sqrt() / mag_div;
-                        }
-                    }
-                    Output::AlongRows => {
-                        for (o, ((&d0, &d1), &d2)) in
-                            out_row.iter_mut().zip(d0.iter().zip(d1).zip(d2))
-                        {
-                            *o = (d0 + (d1 + d1) + d2) * scale;
-                        }
-                    }
-                    Output::AlongColumns => {
-                        for (o, (&s0, &s2)) in out_row.iter_mut().zip(s0.iter().zip(s2)) {
-                            *o = (s2 - s0) * scale;
-                        }
-                    }
-                }
+                k.run(
+                    row(above),
+                    row(r),
+                    row(below),
+                    &mut smooth,
+                    &mut diff,
+                    out_row,
+                );
             }
         });
     Ok(())
+}
+
+/// One output row's work, with everything that is fixed per image.
+struct Kernel<T> {
+    width: usize,
+    left_border: usize,
+    right_border: usize,
+    output: Output,
+    scale: T,
+    mag_div: T,
+}
+
+impl<T: Real> Kernel<T> {
+    fn run(
+        &self,
+        above: &[T],
+        mid: &[T],
+        below: &[T],
+        smooth: &mut [T],
+        diff: &mut [T],
+        out: &mut [T],
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if std::arch::is_x86_feature_detected!("avx2") {
+                // SAFETY: the CPU supports AVX2, checked just above.
+                return unsafe { self.row_avx2(above, mid, below, smooth, diff, out) };
+            }
+        }
+        self.row(above, mid, below, smooth, diff, out)
+    }
+
+    /// The same loops compiled for 8-wide f32 vectors. FMA stays off, so the rounding is the
+    /// same as on the baseline path.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn row_avx2(
+        &self,
+        above: &[T],
+        mid: &[T],
+        below: &[T],
+        smooth: &mut [T],
+        diff: &mut [T],
+        out: &mut [T],
+    ) {
+        self.row(above, mid, below, smooth, diff, out)
+    }
+
+    /// Vertical smoothing [1, 2, 1] and difference [-1, 0, 1] into padded row buffers, then the
+    /// horizontal pass.
+    #[inline(always)]
+    fn row(
+        &self,
+        above: &[T],
+        mid: &[T],
+        below: &[T],
+        smooth: &mut [T],
+        diff: &mut [T],
+        out: &mut [T],
+    ) {
+        let w = self.width;
+        let (above, mid, below, out) = (&above[..w], &mid[..w], &below[..w], &mut out[..w]);
+        for (((s, d), (&a, &m)), &b) in smooth[1..w + 1]
+            .iter_mut()
+            .zip(diff[1..w + 1].iter_mut())
+            .zip(above.iter().zip(mid))
+            .zip(below)
+        {
+            *s = a + (m + m) + b;
+            *d = b - a;
+        }
+        smooth[0] = smooth[1 + self.left_border];
+        diff[0] = diff[1 + self.left_border];
+        smooth[w + 1] = smooth[1 + self.right_border];
+        diff[w + 1] = diff[1 + self.right_border];
+        let (s0, s2) = (&smooth[0..w], &smooth[2..w + 2]);
+        let (d0, d1, d2) = (&diff[0..w], &diff[1..w + 1], &diff[2..w + 2]);
+        let (scale, mag_div) = (self.scale, self.mag_div);
+        match self.output {
+            Output::Magnitude => {
+                for ((o, (&s0, &s2)), ((&d0, &d1), &d2)) in out
+                    .iter_mut()
+                    .zip(s0.iter().zip(s2))
+                    .zip(d0.iter().zip(d1).zip(d2))
+                {
+                    let v = (s2 - s0) * scale;
+                    let h = (d0 + (d1 + d1) + d2) * scale;
+                    *o = (h * h + v * v).sqrt() / mag_div;
+                }
+            }
+            Output::AlongRows => {
+                for (o, ((&d0, &d1), &d2)) in out.iter_mut().zip(d0.iter().zip(d1).zip(d2)) {
+                    *o = (d0 + (d1 + d1) + d2) * scale;
+                }
+            }
+            Output::AlongColumns => {
+                for (o, (&s0, &s2)) in out.iter_mut().zip(s0.iter().zip(s2)) {
+                    *o = (s2 - s0) * scale;
+                }
+            }
+        }
+    }
 }
 
 #[cfg(test)]
@@ -201,5 +278,42 @@ mod tests {
             Convention::Skimage
         )
         .is_err());
+    }
+}
+#[cfg(test)]
+mod timing_tmp {
+    use super::*;
+    #[test]
+    #[ignore]
+    fn time_sobel() {
+        let n = 4096;
+        let img: Vec<f32> = (0..n * n)
+            .map(|i| ((i * 7919) % 1000) as f32 / 1000.0)
+            .collect();
+        let mut out = vec![0.0f32; n * n];
+        for which in [Output::Magnitude, Output::AlongRows] {
+            for threads in [1, 2] {
+                let pool = rayon::ThreadPoolBuilder::new()
+                    .num_threads(threads)
+                    .build()
+                    .unwrap();
+                let mut best = f64::MAX;
+                for _ in 0..5 {
+                    let t = std::time::Instant::now();
+                    pool.install(|| {
+                        sobel(&img, n, n, &mut out, which, Convention::Skimage).unwrap()
+                    });
+                    best = best.min(t.elapsed().as_secs_f64());
+                }
+                let t = std::time::Instant::now();
+                let mut fresh = vec![0.0f32; n * n];
+                pool.install(|| sobel(&img, n, n, &mut fresh, which, Convention::Skimage).unwrap());
+                println!(
+                    "{which:?} threads {threads}: reused {:.1} ms, fresh {:.1} ms",
+                    best * 1e3,
+                    t.elapsed().as_secs_f64() * 1e3
+                );
+            }
+        }
     }
 }

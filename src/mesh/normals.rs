@@ -49,6 +49,12 @@ pub fn face_normal<T: Real>(positions: &[Vec3<T>], face: [u32; 3]) -> Option<[f6
 /// Unit normals of all faces (zero for degenerate faces), in f64, computed in parallel.
 pub fn face_normals<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<[f64; 3]> {
     let mut out = vec![[0.0; 3]; faces.len()];
+    face_normals_into(positions, faces, &mut out);
+    out
+}
+
+/// `face_normals` into a caller's buffer of `faces.len()` normals.
+pub fn face_normals_into<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], out: &mut [[f64; 3]]) {
     out.par_chunks_mut(4096)
         .zip(faces.par_chunks(4096))
         .for_each(|(o, f)| {
@@ -56,7 +62,6 @@ pub fn face_normals<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<[
                 *n = face_normal(positions, face).unwrap_or([0.0; 3]);
             }
         });
-    out
 }
 
 /// Whether a normal returned by `face_normals` is defined (not the zero of a degenerate face).

@@ -3,7 +3,8 @@
 
 use numpy::ndarray::Array2;
 use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArray, PyUntypedArrayMethods,
+    IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3,
+    PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
 
@@ -12,23 +13,33 @@ use super::errors::to_py;
 use super::runtime::detached;
 use crate::edges::chains::chain_edges;
 use crate::edges::detect::paper_gradient;
-use crate::edges::feature::{feature_edges, FeatureEdges};
+use crate::edges::feature::FeatureEdges;
 use crate::edges::sobel::{sobel, Convention, Output};
-use crate::edges::weld::{weld_faces, weld_map};
-use crate::edges::{EdgeIndex, EdgeTable, View};
+use crate::edges::{find_feature_edges, EdgeIndex, View};
 use crate::error::{Error, Result};
-use crate::mesh::normals::face_normals;
-use crate::real::{Real, Vec3};
+use crate::mesh::check_faces;
+use crate::real::Real;
 
 type Pairs<'py> = Bound<'py, PyArray2<i64>>;
 /// boundary, crease, crease angles (degrees), crease convex, non-manifold, degenerate faces
-type FeatureOut<'py> =
-    (Pairs<'py>, Pairs<'py>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<bool>>, Pairs<'py>, Bound<'py, PyArray1<i64>>);
+type FeatureOut<'py> = (
+    Pairs<'py>,
+    Pairs<'py>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<bool>>,
+    Pairs<'py>,
+    Bound<'py, PyArray1<i64>>,
+);
 
 fn pairs_to_numpy(py: Python<'_>, pairs: Vec<[u32; 2]>) -> Pairs<'_> {
     let k = pairs.len();
-    let flat: Vec<i64> = pairs.into_iter().flat_map(|p| p.map(|i| i as i64)).collect();
-    Array2::from_shape_vec((k, 2), flat).expect("length is 2k").into_pyarray(py)
+    let flat: Vec<i64> = pairs
+        .into_iter()
+        .flat_map(|p| p.map(|i| i as i64))
+        .collect();
+    Array2::from_shape_vec((k, 2), flat)
+        .expect("length is 2k")
+        .into_pyarray(py)
 }
 
 fn feature_to_numpy(py: Python<'_>, fe: FeatureEdges, degenerate: Vec<u32>) -> FeatureOut<'_> {
@@ -46,29 +57,44 @@ fn view_of(eye: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> Result<View> {
     match (eye, direction) {
         (Some(e), None) => View::Eye(e).check(),
         (None, Some(d)) => View::Direction(d).check(),
-        _ => Err(Error::invalid("eye", "give exactly one of eye= (perspective) or direction= (orthographic)")),
+        _ => Err(Error::invalid(
+            "eye",
+            "give exactly one of eye= (perspective) or direction= (orthographic)",
+        )),
     }
 }
 
-fn read_mesh(vertices: &Bound<'_, PyAny>, faces_obj: &Bound<'_, PyAny>) -> Result<(Positions, Vec<[u32; 3]>)> {
+fn read_mesh(
+    vertices: &Bound<'_, PyAny>,
+    faces_obj: &Bound<'_, PyAny>,
+) -> Result<(Positions, Vec<[u32; 3]>)> {
     let v = positions("vertices", vertices)?;
-    let f = faces("faces", faces_obj, v.len())?;
+    let f = match contiguous_faces(faces_obj, v.len()) {
+        Some(f) => f?,
+        None => faces("faces", faces_obj, v.len())?,
+    };
     Ok((v, f))
 }
 
-fn features_of<T: Real>(v: &[Vec3<T>], f: &[[u32; 3]], crease_angle: f64, weld: bool) -> Result<(FeatureEdges, Vec<u32>)> {
-    crate::edges::feature::check_crease_angle(crease_angle)?;
-    let welded;
-    let f = if weld {
-        welded = weld_faces(f, &weld_map(v));
-        &welded[..]
-    } else {
-        f
-    };
-    let (table, normals) = rayon::join(|| EdgeTable::build(v.len(), f), || face_normals(v, f));
-    let fe = feature_edges(v, &table?, &normals, crease_angle)?;
-    let degenerate = (0..normals.len() as u32).filter(|&i| normals[i as usize] == [0.0; 3]).collect();
-    Ok((fe, degenerate))
+/// C-contiguous (M, 3) int64 or int32 faces read straight from NumPy's buffer, without the
+/// intermediate copy of the general path (same checks, same messages).
+fn contiguous_faces(obj: &Bound<'_, PyAny>, n_vertices: usize) -> Option<Result<Vec<[u32; 3]>>> {
+    fn from<I: numpy::Element + Copy + TryInto<i64>>(
+        obj: &Bound<'_, PyAny>,
+        n: usize,
+    ) -> Option<Result<Vec<[u32; 3]>>> {
+        let x = obj.extract::<PyReadonlyArray2<'_, I>>().ok()?;
+        if x.as_array().ncols() != 3 || !x.is_c_contiguous() {
+            return None;
+        }
+        let flat = x.as_slice().ok()?;
+        Some(check_faces(
+            "faces",
+            flat.chunks_exact(3).map(|c| [c[0], c[1], c[2]]),
+            n,
+        ))
+    }
+    from::<i64>(obj, n_vertices).or_else(|| from::<i32>(obj, n_vertices))
 }
 
 #[pyfunction]
@@ -82,8 +108,8 @@ fn _feature_edges<'py>(
 ) -> PyResult<FeatureOut<'py>> {
     let (v, f) = read_mesh(vertices, faces).map_err(to_py)?;
     let (fe, degenerate) = detached(py, || match &v {
-        Positions::F32(v) => features_of(v, &f, crease_angle, weld),
-        Positions::F64(v) => features_of(v, &f, crease_angle, weld),
+        Positions::F32(v) => find_feature_edges(v, &f, crease_angle, weld),
+        Positions::F64(v) => find_feature_edges(v, &f, crease_angle, weld),
     })?;
     Ok(feature_to_numpy(py, fe, degenerate))
 }
@@ -120,7 +146,12 @@ struct PyEdgeIndex {
 impl PyEdgeIndex {
     #[new]
     #[pyo3(signature = (vertices, faces, weld = false))]
-    fn new(py: Python<'_>, vertices: &Bound<'_, PyAny>, faces: &Bound<'_, PyAny>, weld: bool) -> PyResult<Self> {
+    fn new(
+        py: Python<'_>,
+        vertices: &Bound<'_, PyAny>,
+        faces: &Bound<'_, PyAny>,
+        weld: bool,
+    ) -> PyResult<Self> {
         let (v, f) = read_mesh(vertices, faces).map_err(to_py)?;
         let inner = detached(py, || match &v {
             Positions::F32(v) => EdgeIndex::build(v, &f, weld),
@@ -130,7 +161,12 @@ impl PyEdgeIndex {
     }
 
     #[pyo3(signature = (eye = None, direction = None))]
-    fn silhouette<'py>(&self, py: Python<'py>, eye: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> PyResult<Pairs<'py>> {
+    fn silhouette<'py>(
+        &self,
+        py: Python<'py>,
+        eye: Option<[f64; 3]>,
+        direction: Option<[f64; 3]>,
+    ) -> PyResult<Pairs<'py>> {
         let view = view_of(eye, direction).map_err(to_py)?;
         let inner = &self.inner;
         let s = detached(py, || inner.silhouette(view))?;
@@ -140,22 +176,30 @@ impl PyEdgeIndex {
     #[pyo3(signature = (crease_angle = 30.0))]
     fn feature_edges<'py>(&self, py: Python<'py>, crease_angle: f64) -> PyResult<FeatureOut<'py>> {
         let inner = &self.inner;
-        let (fe, degenerate) = detached(py, || Ok((inner.feature_edges(crease_angle)?, inner.degenerate_faces())))?;
+        let (fe, degenerate) = detached(py, || {
+            Ok((inner.feature_edges(crease_angle)?, inner.degenerate_faces()))
+        })?;
         Ok(feature_to_numpy(py, fe, degenerate))
     }
 
     fn face_normals<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
         let flat: Vec<f64> = self.inner.normals().iter().flatten().copied().collect();
-        Array2::from_shape_vec((self.inner.n_faces(), 3), flat).expect("3m").into_pyarray(py)
+        Array2::from_shape_vec((self.inner.n_faces(), 3), flat)
+            .expect("3m")
+            .into_pyarray(py)
     }
 
     fn vertices<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
         let flat: Vec<f64> = self.inner.positions().iter().flatten().copied().collect();
-        Array2::from_shape_vec((self.inner.n_vertices(), 3), flat).expect("3n").into_pyarray(py)
+        Array2::from_shape_vec((self.inner.n_vertices(), 3), flat)
+            .expect("3n")
+            .into_pyarray(py)
     }
 
     fn weld_map<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<i64>>> {
-        self.inner.weld_map().map(|m| vec_to_numpy(py, m.iter().map(|&i| i as i64).collect()))
+        self.inner
+            .weld_map()
+            .map(|m| vec_to_numpy(py, m.iter().map(|&i| i as i64).collect()))
     }
 
     #[getter]
@@ -176,18 +220,30 @@ impl PyEdgeIndex {
 
 /// Reads (K, 2) non-negative integer pairs.
 fn read_pairs(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[u32; 2]>> {
-    let a = obj.cast::<PyUntypedArray>().map_err(|_| Error::wrong_type(arg, "expected a NumPy array"))?;
+    let a = obj
+        .cast::<PyUntypedArray>()
+        .map_err(|_| Error::wrong_type(arg, "expected a NumPy array"))?;
     if a.ndim() != 2 || a.shape()[1] != 2 {
-        return Err(Error::invalid(arg, format!("expected shape (K, 2), got {:?}", a.shape())));
+        return Err(Error::invalid(
+            arg,
+            format!("expected shape (K, 2), got {:?}", a.shape()),
+        ));
     }
-    let x = obj
-        .extract::<PyReadonlyArray2<'_, i64>>()
-        .map_err(|_| Error::wrong_type(arg, "expected an int64 array (the Python wrapper converts)"))?;
+    let x = obj.extract::<PyReadonlyArray2<'_, i64>>().map_err(|_| {
+        Error::wrong_type(arg, "expected an int64 array (the Python wrapper converts)")
+    })?;
     let view = x.as_array();
     let mut out = Vec::with_capacity(view.nrows());
     for (k, row) in view.rows().into_iter().enumerate() {
-        if row[0] < 0 || row[1] < 0 || row[0] > u32::MAX as i64 - 1 || row[1] > u32::MAX as i64 - 1 {
-            return Err(Error::out_of_range(arg, format!("edge {k} has an invalid vertex index ({}, {})", row[0], row[1])));
+        if row[0] < 0 || row[1] < 0 || row[0] > u32::MAX as i64 - 1 || row[1] > u32::MAX as i64 - 1
+        {
+            return Err(Error::out_of_range(
+                arg,
+                format!(
+                    "edge {k} has an invalid vertex index ({}, {})",
+                    row[0], row[1]
+                ),
+            ));
         }
         out.push([row[0] as u32, row[1] as u32]);
     }
@@ -195,7 +251,10 @@ fn read_pairs(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[u32; 2]>> {
 }
 
 #[pyfunction]
-fn _chains<'py>(py: Python<'py>, edges: &Bound<'py, PyAny>) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<i64>>)> {
+fn _chains<'py>(
+    py: Python<'py>,
+    edges: &Bound<'py, PyAny>,
+) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<i64>>)> {
     let e = read_pairs("edges", edges).map_err(to_py)?;
     let (flat, offsets) = detached(py, || Ok(chain_edges(&e)))?;
     Ok((
@@ -217,7 +276,10 @@ fn parse_convention(name: &str) -> Result<Convention> {
     match name {
         "skimage" => Ok(Convention::Skimage),
         "opencv" => Ok(Convention::OpenCv),
-        _ => Err(Error::invalid("convention", format!("must be 'skimage' or 'opencv', got {name:?}"))),
+        _ => Err(Error::invalid(
+            "convention",
+            format!("must be 'skimage' or 'opencv', got {name:?}"),
+        )),
     }
 }
 
@@ -227,21 +289,40 @@ fn sobel_typed<'py, T: Real + numpy::Element>(
     output: Output,
     convention: Convention,
 ) -> PyResult<Bound<'py, PyArray2<T>>> {
-    let view = image.as_array();
-    let (h, w) = view.dim();
-    let data = image.as_slice().map_err(|_| to_py(Error::Internal("sobel: image is not C-contiguous".into())))?;
-    let out = detached(py, || {
-        let mut out = vec![T::zero(); h * w];
-        sobel(data, h, w, &mut out, output, convention)?;
-        Ok(out)
-    })?;
-    Ok(Array2::from_shape_vec((h, w), out).expect("h*w").into_pyarray(py))
+    let (h, w) = image.as_array().dim();
+    if !image.is_c_contiguous() {
+        return Err(to_py(Error::invalid(
+            "image",
+            "must be C-contiguous (the Python wrapper makes it so)",
+        )));
+    }
+    let data = image
+        .as_slice()
+        .map_err(|_| to_py(Error::Internal("sobel: image is not C-contiguous".into())))?;
+    // NumPy's allocator asks the kernel for huge pages on large arrays; a Vec here would pay
+    // one page fault per 4 KiB of output, which costs as much as the filter itself.
+    // SAFETY: every element is written by `sobel` before the array is returned (on error it is
+    // dropped unread).
+    let result = unsafe { PyArray2::<T>::new(py, [h, w], false) };
+    {
+        let mut rw = result.readwrite();
+        let out = rw
+            .as_slice_mut()
+            .map_err(|_| to_py(Error::Internal("sobel: new array not contiguous".into())))?;
+        detached(py, || sobel(data, h, w, out, output, convention))?;
+    }
+    Ok(result)
 }
 
 /// Sobel of a C-contiguous 2-D float32 or float64 image; the Python wrapper does dtype rules.
 #[pyfunction]
 #[pyo3(signature = (image, output = "magnitude", convention = "skimage"))]
-fn _sobel<'py>(py: Python<'py>, image: &Bound<'py, PyAny>, output: &str, convention: &str) -> PyResult<Bound<'py, PyAny>> {
+fn _sobel<'py>(
+    py: Python<'py>,
+    image: &Bound<'py, PyAny>,
+    output: &str,
+    convention: &str,
+) -> PyResult<Bound<'py, PyAny>> {
     let output = parse_output(output).map_err(to_py)?;
     let convention = parse_convention(convention).map_err(to_py)?;
     if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f32>>() {
@@ -249,26 +330,48 @@ fn _sobel<'py>(py: Python<'py>, image: &Bound<'py, PyAny>, output: &str, convent
     } else if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f64>>() {
         Ok(sobel_typed(py, x, output, convention)?.into_any())
     } else {
-        Err(to_py(Error::wrong_type("image", "expected a 2-D float32 or float64 array")))
+        Err(to_py(Error::wrong_type(
+            "image",
+            "expected a 2-D float32 or float64 array",
+        )))
     }
 }
 
-fn gradient_typed<'py, T: Real + numpy::Element>(py: Python<'py>, buffer: PyReadonlyArray3<'py, T>) -> PyResult<Bound<'py, PyArray2<T>>> {
+fn gradient_typed<'py, T: Real + numpy::Element>(
+    py: Python<'py>,
+    buffer: PyReadonlyArray3<'py, T>,
+) -> PyResult<Bound<'py, PyArray2<T>>> {
     let (h, w, c) = buffer.as_array().dim();
-    let data = buffer.as_slice().map_err(|_| to_py(Error::Internal("buffer is not C-contiguous".into())))?;
+    if !buffer.is_c_contiguous() {
+        return Err(to_py(Error::invalid(
+            "buffer",
+            "must be C-contiguous (the Python wrapper makes it so)",
+        )));
+    }
+    let data = buffer
+        .as_slice()
+        .map_err(|_| to_py(Error::Internal("buffer is not C-contiguous".into())))?;
     let out = detached(py, || paper_gradient(data, h, w, c))?;
-    Ok(Array2::from_shape_vec((h, w), out).expect("h*w").into_pyarray(py))
+    Ok(Array2::from_shape_vec((h, w), out)
+        .expect("h*w")
+        .into_pyarray(py))
 }
 
 /// max over channels of max(|Gx|, |Gy|) for a C-contiguous (H, W, C) float buffer.
 #[pyfunction]
-fn _paper_gradient<'py>(py: Python<'py>, buffer: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+fn _paper_gradient<'py>(
+    py: Python<'py>,
+    buffer: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
     if let Ok(x) = buffer.extract::<PyReadonlyArray3<'py, f32>>() {
         Ok(gradient_typed(py, x)?.into_any())
     } else if let Ok(x) = buffer.extract::<PyReadonlyArray3<'py, f64>>() {
         Ok(gradient_typed(py, x)?.into_any())
     } else {
-        Err(to_py(Error::wrong_type("buffer", "expected a 3-D float32 or float64 array")))
+        Err(to_py(Error::wrong_type(
+            "buffer",
+            "expected a 3-D float32 or float64 array",
+        )))
     }
 }
 
