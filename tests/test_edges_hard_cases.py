@@ -1,27 +1,12 @@
 """Hard cases for the outline rules: angles near 0 and 180 degrees, zero-area faces, UV-seam
 duplicates, grazing views with many faces edge-on, and an eye placed on the surface."""
 
-import os
-from pathlib import Path
-
 import numpy as np
 import pytest
+from conftest_edges import MESHES, is_sorted_unique, need, oracle, rows
 
 import toonmesh as tm
 from toonmesh import edges as te
-
-from test_edges import is_sorted_unique, oracle, rows
-
-MESHES = Path(__file__).parent / "data" / "meshes"
-
-
-def need(module):
-    try:
-        return __import__(module)
-    except ImportError:
-        if os.environ.get("CI") == "true":
-            raise
-        pytest.skip(f"{module} is not installed")
 
 
 def hinge(fold_degrees):
