@@ -79,8 +79,10 @@ pub fn feature_edges<T: Real>(
     crease_angle: f64,
 ) -> Result<FeatureEdges> {
     check_crease_angle(crease_angle)?;
-    // Cheap pre-test sin(angle - threshold) > -slack before the exact atan2 on the few survivors.
-    let (st, ct) = crease_angle.to_radians().sin_cos();
+    // Cheap pre-test on n1 . n2 alone: a pair whose cosine is clearly above the threshold's
+    // cannot be a crease (rounding in the dot product is ~1e-16, far below the slack), so
+    // only the few survivors pay for the cross product and the exact atan2.
+    let skip_above = crease_angle.to_radians().cos() + 1e-9;
     let n = table.len();
     let parts: Vec<FeatureEdges> = (0..n.div_ceil(CHUNK))
         .into_par_iter()
@@ -95,14 +97,8 @@ pub fn feature_edges<T: Real>(
                             continue;
                         };
                         let (n1, n2) = (normals[f1 as usize], normals[f2 as usize]);
-                        let cx = [
-                            n1[1] * n2[2] - n1[2] * n2[1],
-                            n1[2] * n2[0] - n1[0] * n2[2],
-                            n1[0] * n2[1] - n1[1] * n2[0],
-                        ];
-                        let sin = (cx[0] * cx[0] + cx[1] * cx[1] + cx[2] * cx[2]).sqrt();
                         let cos = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
-                        if sin * ct - cos * st <= -1e-9 {
+                        if cos >= skip_above {
                             continue;
                         }
                         let (pa, pb) = (positions[edge[0] as usize], positions[edge[1] as usize]);

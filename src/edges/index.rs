@@ -238,7 +238,7 @@ mod timing_tmp {
     #[test]
     #[ignore]
     fn time_parts() {
-        let (v, f) = icosphere(8, 0.002, 1).unwrap();
+        let (v, f) = icosphere(8, 0.0002, 1).unwrap();
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(2)
             .build()

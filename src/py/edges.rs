@@ -17,7 +17,6 @@ use crate::edges::feature::FeatureEdges;
 use crate::edges::sobel::{sobel, Convention, Output};
 use crate::edges::{find_feature_edges, EdgeIndex, View};
 use crate::error::{Error, Result};
-use crate::mesh::check_faces;
 use crate::real::Real;
 
 type Pairs<'py> = Bound<'py, PyArray2<i64>>;
@@ -64,37 +63,183 @@ fn view_of(eye: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> Result<View> {
     }
 }
 
-fn read_mesh(
-    vertices: &Bound<'_, PyAny>,
-    faces_obj: &Bound<'_, PyAny>,
-) -> Result<(Positions, Vec<[u32; 3]>)> {
-    let v = positions("vertices", vertices)?;
-    let f = match contiguous_faces(faces_obj, v.len()) {
-        Some(f) => f?,
-        None => faces("faces", faces_obj, v.len())?,
-    };
-    Ok((v, f))
+/// Mesh input read straight from NumPy's buffers when they are C-contiguous (the usual case),
+/// so a million-face mesh is not copied and checked serially before the parallel work starts.
+/// Anything else, and every error message, goes through the general readers in `convert`.
+struct MeshInput<'py> {
+    v32: Option<PyReadonlyArray2<'py, f32>>,
+    v64: Option<PyReadonlyArray2<'py, f64>>,
+    owned: Option<Positions>,
+    faces64: Option<PyReadonlyArray2<'py, i64>>,
+    faces32: Option<PyReadonlyArray2<'py, i32>>,
+    owned_faces: Option<Vec<[u32; 3]>>,
+    n_vertices: usize,
 }
 
-/// C-contiguous (M, 3) int64 or int32 faces read straight from NumPy's buffer, without the
-/// intermediate copy of the general path (same checks, same messages).
-fn contiguous_faces(obj: &Bound<'_, PyAny>, n_vertices: usize) -> Option<Result<Vec<[u32; 3]>>> {
-    fn from<I: numpy::Element + Copy + TryInto<i64>>(
-        obj: &Bound<'_, PyAny>,
-        n: usize,
-    ) -> Option<Result<Vec<[u32; 3]>>> {
-        let x = obj.extract::<PyReadonlyArray2<'_, I>>().ok()?;
-        if x.as_array().ncols() != 3 || !x.is_c_contiguous() {
-            return None;
+#[derive(Clone, Copy)]
+enum PositionsRef<'a> {
+    F32(&'a [[f32; 3]]),
+    F64(&'a [[f64; 3]]),
+}
+
+#[derive(Clone, Copy)]
+enum FacesRef<'a> {
+    I64(&'a [i64]),
+    I32(&'a [i32]),
+    Checked(&'a [[u32; 3]]),
+}
+
+fn rows_of<T>(flat: &[T]) -> &[[T; 3]] {
+    // SAFETY: [T; 3] has T's alignment and is three Ts laid out contiguously; the caller
+    // checked that the length is a multiple of 3.
+    unsafe { std::slice::from_raw_parts(flat.as_ptr() as *const [T; 3], flat.len() / 3) }
+}
+
+fn contiguous_rows3<'py, T: numpy::Element>(
+    obj: &Bound<'py, PyAny>,
+) -> Option<PyReadonlyArray2<'py, T>> {
+    let x = obj.extract::<PyReadonlyArray2<'py, T>>().ok()?;
+    let shape = x.shape();
+    (shape[1] == 3 && shape[0] > 0 && x.is_c_contiguous()).then_some(x)
+}
+
+fn all_finite<T: Real>(flat: &[T]) -> bool {
+    flat.iter().fold(true, |ok, x| ok & x.is_finite())
+}
+
+impl<'py> MeshInput<'py> {
+    fn read(vertices: &Bound<'py, PyAny>, faces_obj: &Bound<'py, PyAny>) -> Result<Self> {
+        let mut me = MeshInput {
+            v32: contiguous_rows3::<f32>(vertices),
+            v64: None,
+            owned: None,
+            faces64: None,
+            faces32: None,
+            owned_faces: None,
+            n_vertices: 0,
+        };
+        if me.v32.is_none() {
+            me.v64 = contiguous_rows3::<f64>(vertices);
         }
-        let flat = x.as_slice().ok()?;
-        Some(check_faces(
-            "faces",
-            flat.chunks_exact(3).map(|c| [c[0], c[1], c[2]]),
-            n,
-        ))
+        let finite = match (&me.v32, &me.v64) {
+            (Some(x), _) => all_finite(x.as_slice().unwrap_or(&[f32::NAN])),
+            (_, Some(x)) => all_finite(x.as_slice().unwrap_or(&[f64::NAN])),
+            _ => false,
+        };
+        if finite {
+            me.n_vertices = me
+                .v32
+                .as_ref()
+                .map(|x| x.shape()[0])
+                .or(me.v64.as_ref().map(|x| x.shape()[0]))
+                .unwrap_or(0);
+        } else {
+            me.v32 = None;
+            me.v64 = None;
+            let p = positions("vertices", vertices)?;
+            me.n_vertices = p.len();
+            me.owned = Some(p);
+        }
+        me.faces64 = contiguous_rows3::<i64>(faces_obj);
+        if me.faces64.is_none() {
+            me.faces32 = contiguous_rows3::<i32>(faces_obj);
+        }
+        if me.faces64.is_none() && me.faces32.is_none() {
+            me.owned_faces = Some(faces("faces", faces_obj, me.n_vertices)?);
+        }
+        Ok(me)
     }
-    from::<i64>(obj, n_vertices).or_else(|| from::<i32>(obj, n_vertices))
+
+    fn positions(&self) -> PositionsRef<'_> {
+        if let Some(x) = &self.v32 {
+            return PositionsRef::F32(rows_of(x.as_slice().expect("checked contiguous")));
+        }
+        if let Some(x) = &self.v64 {
+            return PositionsRef::F64(rows_of(x.as_slice().expect("checked contiguous")));
+        }
+        match self.owned.as_ref().expect("one of the three is set") {
+            Positions::F32(v) => PositionsRef::F32(v),
+            Positions::F64(v) => PositionsRef::F64(v),
+        }
+    }
+
+    fn faces(&self) -> FacesRef<'_> {
+        if let Some(x) = &self.faces64 {
+            return FacesRef::I64(x.as_slice().expect("checked contiguous"));
+        }
+        if let Some(x) = &self.faces32 {
+            return FacesRef::I32(x.as_slice().expect("checked contiguous"));
+        }
+        FacesRef::Checked(
+            self.owned_faces
+                .as_deref()
+                .expect("one of the three is set"),
+        )
+    }
+
+    /// Runs `work` on the mesh with the GIL released. Faces are converted to u32 inside, in
+    /// parallel; if any index is bad, the general reader produces the error message.
+    fn run<R: Send>(
+        &self,
+        py: Python<'_>,
+        faces_obj: &Bound<'_, PyAny>,
+        work: impl Fn(PositionsRef<'_>, &[[u32; 3]]) -> Result<R> + Send + Sync,
+    ) -> PyResult<R> {
+        let (positions, faces_ref, n) = (self.positions(), self.faces(), self.n_vertices);
+        let outcome = detached(py, || {
+            let converted = match faces_ref {
+                FacesRef::Checked(f) => return work(positions, f).map(Some),
+                FacesRef::I64(flat) => faces_to_u32(flat, n),
+                FacesRef::I32(flat) => faces_to_u32(flat, n),
+            };
+            match converted {
+                Some(f) => work(positions, &f).map(Some),
+                None => Ok(None),
+            }
+        })?;
+        match outcome {
+            Some(r) => Ok(r),
+            // Some index is out of range: let the general reader say which one.
+            None => Err(to_py(faces("faces", faces_obj, n).err().unwrap_or_else(
+                || {
+                    Error::Internal(
+                        "faces: rejected by the fast reader but not by the general one".into(),
+                    )
+                },
+            ))),
+        }
+    }
+}
+
+/// Faces as u32 rows, or None if any index is outside [0, n).
+fn faces_to_u32<I: Copy + Into<i64> + Sync>(flat: &[I], n: usize) -> Option<Vec<[u32; 3]>> {
+    use rayon::prelude::*;
+    let rows = rows_of(flat);
+    let mut out = crate::edges::huge_pages::filled_vec(rows.len(), [0u32; 3]);
+    let ok = out
+        .par_chunks_mut(16384)
+        .zip(rows.par_chunks(16384))
+        .all(|(o, r)| {
+            let mut ok = true;
+            for (o, r) in o.iter_mut().zip(r) {
+                for k in 0..3 {
+                    let i: i64 = r[k].into();
+                    ok &= i >= 0 && (i as u64) < n as u64;
+                    o[k] = i as u32;
+                }
+            }
+            ok
+        });
+    ok.then_some(out)
+}
+
+macro_rules! on_positions {
+    ($p:expr, $v:ident => $body:expr) => {
+        match $p {
+            PositionsRef::F32($v) => $body,
+            PositionsRef::F64($v) => $body,
+        }
+    };
 }
 
 #[pyfunction]
@@ -106,11 +251,12 @@ fn _feature_edges<'py>(
     crease_angle: f64,
     weld: bool,
 ) -> PyResult<FeatureOut<'py>> {
-    let (v, f) = read_mesh(vertices, faces).map_err(to_py)?;
-    let (fe, degenerate) = detached(py, || match &v {
-        Positions::F32(v) => find_feature_edges(v, &f, crease_angle, weld),
-        Positions::F64(v) => find_feature_edges(v, &f, crease_angle, weld),
-    })?;
+    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let (fe, degenerate) = mesh.run(
+        py,
+        faces,
+        |p, f| on_positions!(p, v => find_feature_edges(v, f, crease_angle, weld)),
+    )?;
     Ok(feature_to_numpy(py, fe, degenerate))
 }
 
@@ -125,14 +271,12 @@ fn _silhouette<'py>(
     weld: bool,
 ) -> PyResult<Pairs<'py>> {
     let view = view_of(eye, direction).map_err(to_py)?;
-    let (v, f) = read_mesh(vertices, faces).map_err(to_py)?;
-    let s = detached(py, || {
-        let idx = match &v {
-            Positions::F32(v) => EdgeIndex::build(v, &f, weld)?,
-            Positions::F64(v) => EdgeIndex::build(v, &f, weld)?,
-        };
-        idx.silhouette(view)
-    })?;
+    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let s = mesh.run(
+        py,
+        faces,
+        |p, f| on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)),
+    )?;
     Ok(pairs_to_numpy(py, s))
 }
 
@@ -152,11 +296,12 @@ impl PyEdgeIndex {
         faces: &Bound<'_, PyAny>,
         weld: bool,
     ) -> PyResult<Self> {
-        let (v, f) = read_mesh(vertices, faces).map_err(to_py)?;
-        let inner = detached(py, || match &v {
-            Positions::F32(v) => EdgeIndex::build(v, &f, weld),
-            Positions::F64(v) => EdgeIndex::build(v, &f, weld),
-        })?;
+        let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+        let inner = mesh.run(
+            py,
+            faces,
+            |p, f| on_positions!(p, v => EdgeIndex::build(v, f, weld)),
+        )?;
         Ok(PyEdgeIndex { inner })
     }
 
