@@ -25,6 +25,7 @@ Rules shared by every mesh-space function:
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any, List, NamedTuple, Optional, Tuple
 
 import numpy as np
@@ -198,10 +199,20 @@ class EdgeIndex:
         V, F = mesh_arrays(vertices, faces)
         self._index = _core._EdgeIndex(V, F, bool(weld))
         self.features = self.feature_edges(crease_angle)
-        self.vertices: np.ndarray = self._index.vertices()
-        self.vertices.flags.writeable = False
-        self.face_normals: np.ndarray = self._index.face_normals()
-        self.face_normals.flags.writeable = False
+
+    @cached_property
+    def vertices(self) -> np.ndarray:
+        """(N, 3) float64 positions the index was built from (read-only)."""
+        v = self._index.vertices()
+        v.flags.writeable = False
+        return v
+
+    @cached_property
+    def face_normals(self) -> np.ndarray:
+        """(M, 3) float64 unit face normals, zero for degenerate faces (read-only)."""
+        n = self._index.face_normals()
+        n.flags.writeable = False
+        return n
 
     @property
     def n_vertices(self) -> int:
