@@ -152,6 +152,28 @@ impl EdgeTable {
         (self.use_offsets[e + 1] - self.use_offsets[e]) as usize
     }
 
+    /// Asks the CPU to start loading `data[f]` for the (first two) faces on edge `e`, if it
+    /// exists. Loops over edges read per-face data in an order the hardware prefetcher cannot
+    /// guess, and those cache misses were the largest single cost of finding creases.
+    #[inline(always)]
+    pub fn prefetch_faces<T>(&self, e: usize, data: &[T]) {
+        #[cfg(target_arch = "x86_64")]
+        if e < self.len() {
+            for u in self.uses(e).take(2) {
+                let p = data.as_ptr().wrapping_add(u.face as usize);
+                // SAFETY: a prefetch is only a hint; it never faults, whatever the address.
+                #[allow(unused_unsafe)]
+                unsafe {
+                    std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(
+                        p as *const i8,
+                    )
+                };
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = (e, data);
+    }
+
     /// The face-edges on edge `e`, by ascending face index.
     #[inline]
     pub fn uses(&self, e: usize) -> impl ExactSizeIterator<Item = FaceUse> + '_ {

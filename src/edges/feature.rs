@@ -71,6 +71,8 @@ pub fn crease_pair(table: &EdgeTable, e: usize, normals: &[[f64; 3]]) -> Option<
 }
 
 const CHUNK: usize = 16384;
+/// How many edges ahead to prefetch face normals: enough to cover a memory latency.
+pub const PREFETCH_AHEAD: usize = 16;
 
 pub fn feature_edges<T: Real>(
     positions: &[Vec3<T>],
@@ -89,6 +91,7 @@ pub fn feature_edges<T: Real>(
         .map(|c| {
             let mut out = FeatureEdges::default();
             for e in c * CHUNK..((c + 1) * CHUNK).min(n) {
+                table.prefetch_faces(e + PREFETCH_AHEAD, normals);
                 let edge = table.edges[e];
                 match table.face_count(e) {
                     1 => out.boundary.push(edge),

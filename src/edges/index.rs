@@ -6,7 +6,7 @@ use rayon::prelude::*;
 
 use super::edge_table::EdgeTable;
 use super::face_normals;
-use super::feature::{crease_pair, feature_edges, FeatureEdges};
+use super::feature::{crease_pair, feature_edges, FeatureEdges, PREFETCH_AHEAD};
 use super::silhouette::{facing, View, BACK, FRONT};
 use super::weld::{weld_faces, weld_map};
 use crate::error::Result;
@@ -64,6 +64,7 @@ impl EdgeIndex {
             .map(|c| {
                 let (mut me, mut mf, mut nm) = (Vec::new(), Vec::new(), Vec::new());
                 for e in c * CHUNK..((c + 1) * CHUNK).min(n) {
+                    table.prefetch_faces(e + PREFETCH_AHEAD, &normals);
                     match table.face_count(e) {
                         1 => {}
                         2 => {

@@ -7,6 +7,7 @@ left out of the tables.
 from __future__ import annotations
 
 import math
+import os
 from typing import Any, List, Optional, Sequence
 
 import numpy as np
@@ -129,7 +130,8 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
     subdivisions = 5 if quick else 8
     size = 1024 if quick else 4096
     repeat = 1 if quick else repeat
-    print(f"toonmesh {_core.__version__}, {_core.get_num_threads()} threads; median of {repeat} runs")
+    load = f", load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores" if hasattr(os, "getloadavg") else ""
+    print(f"toonmesh {_core.__version__}, {_core.get_num_threads()} threads; median of {repeat} runs{load}")
     rows = mesh_rows(subdivisions, repeat)
     print(table(["case", "call", "toonmesh", "peer", "speed-up"], rows, title="Mesh-space outlines"))
     print(table(["case", "call", "toonmesh", "peer", "speed-up"], sobel_rows(size, repeat), title="Sobel"))
