@@ -21,8 +21,10 @@ pub struct FaceUse {
 }
 
 impl FaceUse {
+    /// Decodes the low 32 bits of a bucket entry (face << 1 | reversed).
     #[inline]
-    fn unpack(tag: u32) -> FaceUse {
+    pub fn unpack(entry: u64) -> FaceUse {
+        let tag = entry as u32;
         FaceUse {
             face: tag >> 1,
             reversed: tag & 1 == 1,
@@ -30,25 +32,28 @@ impl FaceUse {
     }
 }
 
-#[derive(Debug, Clone)]
-pub struct EdgeTable {
-    /// Unique edges (a, b), a < b, in lexicographic order.
-    pub edges: Vec<[u32; 2]>,
-    /// The low 32 bits of `uses[use_offsets[e]..use_offsets[e + 1]]` are edge e's face-edges,
-    /// packed as face << 1 | reversed, ascending.
-    pub use_offsets: Vec<u32>,
-    uses: Vec<u64>,
+/// Face-edges bucketed by their smaller vertex with a counting sort; each entry is
+/// larger vertex << 32 | face << 1 | reversed, so sorting a bucket sorts by the other end, then
+/// face, then direction.
+pub struct Buckets {
+    start: Vec<u32>,
+    entries: Vec<u64>,
 }
 
-impl EdgeTable {
-    pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<EdgeTable> {
+/// Vertices per parallel task when visiting buckets (fixed, so results never depend on the
+/// thread count).
+const CHUNK: usize = 8192;
+/// How many buckets ahead `visit` hands to its prefetch hook.
+const PREFETCH_BUCKETS: usize = 4;
+
+impl Buckets {
+    pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Buckets> {
         if faces.len() >= (1usize << 31) / 3 {
             return Err(Error::invalid(
                 "faces",
                 format!("{} faces is more than toonmesh supports", faces.len()),
             ));
         }
-        // Counting sort of face-edges by their smaller vertex.
         let mut start = vec![0u32; n_vertices + 1];
         for f in faces {
             for j in 0..3 {
@@ -62,8 +67,6 @@ impl EdgeTable {
             start[i + 1] += start[i];
         }
         let total = start[n_vertices] as usize;
-        // Entry: larger vertex << 32 | face << 1 | reversed, so sorting a bucket sorts by the
-        // other end, then face, then direction.
         let mut entries = filled_vec(total, 0u64);
         let mut cursor = start.clone();
         for (fi, f) in faces.iter().enumerate() {
@@ -77,13 +80,24 @@ impl EdgeTable {
                 }
             }
         }
-        drop(cursor);
+        Ok(Buckets { start, entries })
+    }
 
-        // Sort each bucket and count its distinct edges, in parallel over fixed vertex chunks.
-        const CHUNK: usize = 8192;
+    /// Sorts every bucket and calls `visit(state, [a, b], entries)` for each distinct edge, in
+    /// lexicographic order within fixed chunks of vertices that run in parallel; returns each
+    /// chunk's state, in order. Before a bucket is visited, `prefetch` sees the (unsorted)
+    /// entries of a bucket a few vertices ahead, to start loading what the visitor will need.
+    pub fn visit<S: Send>(
+        &mut self,
+        init: impl Fn() -> S + Sync,
+        prefetch: impl Fn(&[u64]) + Sync,
+        visit: impl Fn(&mut S, [u32; 2], &[u64]) + Sync,
+    ) -> Vec<S> {
+        let n_vertices = self.start.len() - 1;
+        let start = &self.start;
         let n_chunks = n_vertices.div_ceil(CHUNK);
         let mut pieces: Vec<&mut [u64]> = Vec::with_capacity(n_chunks);
-        let mut rest: &mut [u64] = &mut entries;
+        let mut rest: &mut [u64] = &mut self.entries;
         for c in 0..n_chunks {
             let hi = ((c + 1) * CHUNK).min(n_vertices);
             let len = (start[hi] - start[c * CHUNK]) as usize;
@@ -91,16 +105,19 @@ impl EdgeTable {
             pieces.push(head);
             rest = tail;
         }
-        let per_chunk: Vec<(Vec<[u32; 2]>, Vec<u32>)> = pieces
+        pieces
             .into_par_iter()
             .enumerate()
             .map(|(c, piece)| {
                 let v0 = c * CHUNK;
                 let v1 = ((c + 1) * CHUNK).min(n_vertices);
                 let base = start[v0] as usize;
-                let mut edges = Vec::new();
-                let mut counts = Vec::new();
+                let mut state = init();
                 for a in v0..v1 {
+                    let ahead = (a + PREFETCH_BUCKETS).min(v1 - 1);
+                    prefetch(
+                        &piece[start[ahead] as usize - base..start[ahead + 1] as usize - base],
+                    );
                     let bucket = &mut piece[start[a] as usize - base..start[a + 1] as usize - base];
                     bucket.sort_unstable();
                     let mut k = 0;
@@ -110,15 +127,37 @@ impl EdgeTable {
                         while e < bucket.len() && (bucket[e] >> 32) as u32 == b {
                             e += 1;
                         }
-                        edges.push([a as u32, b]);
-                        counts.push((e - k) as u32);
+                        visit(&mut state, [a as u32, b], &bucket[k..e]);
                         k = e;
                     }
                 }
-                (edges, counts)
+                state
             })
-            .collect();
+            .collect()
+    }
+}
 
+#[derive(Debug, Clone)]
+pub struct EdgeTable {
+    /// Unique edges (a, b), a < b, in lexicographic order.
+    pub edges: Vec<[u32; 2]>,
+    /// `uses[use_offsets[e]..use_offsets[e + 1]]` are edge e's bucket entries (see `Buckets`),
+    /// ascending by face.
+    pub use_offsets: Vec<u32>,
+    uses: Vec<u64>,
+}
+
+impl EdgeTable {
+    pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<EdgeTable> {
+        let mut buckets = Buckets::build(n_vertices, faces)?;
+        let per_chunk = buckets.visit(
+            || (Vec::new(), Vec::new()),
+            |_| {},
+            |(edges, counts): &mut (Vec<[u32; 2]>, Vec<u32>), edge, uses| {
+                edges.push(edge);
+                counts.push(uses.len() as u32);
+            },
+        );
         let n_edges: usize = per_chunk.iter().map(|(e, _)| e.len()).sum();
         let mut edges = with_capacity(n_edges);
         let mut use_offsets = with_capacity(n_edges + 1);
@@ -134,7 +173,7 @@ impl EdgeTable {
         Ok(EdgeTable {
             edges,
             use_offsets,
-            uses: entries,
+            uses: buckets.entries,
         })
     }
 
@@ -152,26 +191,16 @@ impl EdgeTable {
         (self.use_offsets[e + 1] - self.use_offsets[e]) as usize
     }
 
-    /// Asks the CPU to start loading `data[f]` for the (first two) faces on edge `e`, if it
-    /// exists. Loops over edges read per-face data in an order the hardware prefetcher cannot
-    /// guess, and those cache misses were the largest single cost of finding creases.
+    /// Starts loading `data[f]` for the (first two) faces on edge `e`, if it exists: loops
+    /// over edges read per-face data in an order the hardware prefetcher cannot guess, and those
+    /// cache misses were the largest single cost of finding creases.
     #[inline(always)]
     pub fn prefetch_faces<T>(&self, e: usize, data: &[T]) {
-        #[cfg(target_arch = "x86_64")]
         if e < self.len() {
             for u in self.uses(e).take(2) {
-                let p = data.as_ptr().wrapping_add(u.face as usize);
-                // SAFETY: a prefetch is only a hint; it never faults, whatever the address.
-                #[allow(unused_unsafe)]
-                unsafe {
-                    std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(
-                        p as *const i8,
-                    )
-                };
+                prefetch(data, u.face as usize);
             }
         }
-        #[cfg(not(target_arch = "x86_64"))]
-        let _ = (e, data);
     }
 
     /// The face-edges on edge `e`, by ascending face index.
@@ -179,7 +208,7 @@ impl EdgeTable {
     pub fn uses(&self, e: usize) -> impl ExactSizeIterator<Item = FaceUse> + '_ {
         self.uses[self.use_offsets[e] as usize..self.use_offsets[e + 1] as usize]
             .iter()
-            .map(|&t| FaceUse::unpack(t as u32))
+            .map(|&t| FaceUse::unpack(t))
     }
 }
 
@@ -222,4 +251,20 @@ mod tests {
         assert_eq!(t.edges, vec![[0, 1]]);
         assert_eq!(t.face_count(0), 2);
     }
+}
+
+/// Asks the CPU to start loading `data[i]` (any `i`: a prefetch is only a hint and never faults).
+#[inline(always)]
+pub fn prefetch<T>(data: &[T], i: usize) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        let p = data.as_ptr().wrapping_add(i);
+        // SAFETY: prefetching never faults, whatever the address.
+        #[allow(unused_unsafe)]
+        unsafe {
+            std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(p as *const i8)
+        };
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (data, i);
 }

@@ -14,7 +14,7 @@
 
 use rayon::prelude::*;
 
-use super::edge_table::EdgeTable;
+use super::edge_table::{prefetch, Buckets, EdgeTable, FaceUse};
 use crate::error::{Error, Result};
 use crate::mesh::normals::is_defined;
 use crate::real::{Real, Vec3};
@@ -59,8 +59,15 @@ pub fn dihedral(n1: [f64; 3], n2: [f64; 3], along: [f64; 3]) -> (f64, bool) {
 /// The two faces of a manifold edge when both have normals, first the one that walks a -> b.
 #[inline]
 pub fn crease_pair(table: &EdgeTable, e: usize, normals: &[[f64; 3]]) -> Option<(u32, u32, bool)> {
-    let mut u = table.uses(e);
-    let (u1, u2) = (u.next()?, u.next()?);
+    pair_with_normals(table.uses(e), normals)
+}
+
+#[inline]
+fn pair_with_normals(
+    mut uses: impl Iterator<Item = FaceUse>,
+    normals: &[[f64; 3]],
+) -> Option<(u32, u32, bool)> {
+    let (u1, u2) = (uses.next()?, uses.next()?);
     if u1.face == u2.face
         || !is_defined(normals[u1.face as usize])
         || !is_defined(normals[u2.face as usize])
@@ -74,57 +81,72 @@ const CHUNK: usize = 16384;
 /// How many edges ahead to prefetch face normals: enough to cover a memory latency.
 pub const PREFETCH_AHEAD: usize = 16;
 
-pub fn feature_edges<T: Real>(
-    positions: &[Vec3<T>],
-    table: &EdgeTable,
-    normals: &[[f64; 3]],
+/// The per-edge rule, shared by the table and bucket paths.
+struct Classifier<'a, T> {
+    positions: &'a [Vec3<T>],
+    normals: &'a [[f64; 3]],
     crease_angle: f64,
-) -> Result<FeatureEdges> {
-    check_crease_angle(crease_angle)?;
-    // Cheap pre-test on n1 . n2 alone: a pair whose cosine is clearly above the threshold's
-    // cannot be a crease (rounding in the dot product is ~1e-16, far below the slack), so
-    // only the few survivors pay for the cross product and the exact atan2.
-    let skip_above = crease_angle.to_radians().cos() + 1e-9;
-    let n = table.len();
-    let parts: Vec<FeatureEdges> = (0..n.div_ceil(CHUNK))
-        .into_par_iter()
-        .map(|c| {
-            let mut out = FeatureEdges::default();
-            for e in c * CHUNK..((c + 1) * CHUNK).min(n) {
-                table.prefetch_faces(e + PREFETCH_AHEAD, normals);
-                let edge = table.edges[e];
-                match table.face_count(e) {
-                    1 => out.boundary.push(edge),
-                    2 => {
-                        let Some((f1, f2, reversed)) = crease_pair(table, e, normals) else {
-                            continue;
-                        };
-                        let (n1, n2) = (normals[f1 as usize], normals[f2 as usize]);
-                        let cos = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
-                        if cos >= skip_above {
-                            continue;
-                        }
-                        let (pa, pb) = (positions[edge[0] as usize], positions[edge[1] as usize]);
-                        let mut along = [0.0; 3];
-                        for k in 0..3 {
-                            along[k] = pb[k].to_f64() - pa[k].to_f64();
-                            if reversed {
-                                along[k] = -along[k];
-                            }
-                        }
-                        let (angle, convex) = dihedral(n1, n2, along);
-                        if angle > crease_angle {
-                            out.crease.push(edge);
-                            out.crease_angle.push(angle);
-                            out.crease_convex.push(convex);
-                        }
+    /// Cheap pre-test on n1 . n2 alone: a pair whose cosine is clearly above the threshold's
+    /// cannot be a crease (rounding in the dot product is ~1e-16, far below the slack), so
+    /// only the few survivors pay for the cross product and the exact atan2.
+    skip_above: f64,
+}
+
+impl<'a, T: Real> Classifier<'a, T> {
+    fn new(positions: &'a [Vec3<T>], normals: &'a [[f64; 3]], crease_angle: f64) -> Result<Self> {
+        check_crease_angle(crease_angle)?;
+        let skip_above = crease_angle.to_radians().cos() + 1e-9;
+        Ok(Classifier {
+            positions,
+            normals,
+            crease_angle,
+            skip_above,
+        })
+    }
+
+    #[inline]
+    fn classify(
+        &self,
+        out: &mut FeatureEdges,
+        edge: [u32; 2],
+        uses: impl ExactSizeIterator<Item = FaceUse>,
+    ) {
+        match uses.len() {
+            1 => out.boundary.push(edge),
+            2 => {
+                let normals = self.normals;
+                let Some((f1, f2, reversed)) = pair_with_normals(uses, normals) else {
+                    return;
+                };
+                let (n1, n2) = (normals[f1 as usize], normals[f2 as usize]);
+                let cos = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
+                if cos >= self.skip_above {
+                    return;
+                }
+                let (pa, pb) = (
+                    self.positions[edge[0] as usize],
+                    self.positions[edge[1] as usize],
+                );
+                let mut along = [0.0; 3];
+                for k in 0..3 {
+                    along[k] = pb[k].to_f64() - pa[k].to_f64();
+                    if reversed {
+                        along[k] = -along[k];
                     }
-                    _ => out.nonmanifold.push(edge),
+                }
+                let (angle, convex) = dihedral(n1, n2, along);
+                if angle > self.crease_angle {
+                    out.crease.push(edge);
+                    out.crease_angle.push(angle);
+                    out.crease_convex.push(convex);
                 }
             }
-            out
-        })
-        .collect();
+            _ => out.nonmanifold.push(edge),
+        }
+    }
+}
+
+fn concatenate(parts: Vec<FeatureEdges>) -> FeatureEdges {
     let mut all = FeatureEdges::default();
     for p in parts {
         all.boundary.extend(p.boundary);
@@ -133,7 +155,51 @@ pub fn feature_edges<T: Real>(
         all.crease_convex.extend(p.crease_convex);
         all.nonmanifold.extend(p.nonmanifold);
     }
-    Ok(all)
+    all
+}
+
+/// Feature edges from a built edge table (what `EdgeIndex` keeps).
+pub fn feature_edges<T: Real>(
+    positions: &[Vec3<T>],
+    table: &EdgeTable,
+    normals: &[[f64; 3]],
+    crease_angle: f64,
+) -> Result<FeatureEdges> {
+    let rule = Classifier::new(positions, normals, crease_angle)?;
+    let n = table.len();
+    let parts: Vec<FeatureEdges> = (0..n.div_ceil(CHUNK))
+        .into_par_iter()
+        .map(|c| {
+            let mut out = FeatureEdges::default();
+            for e in c * CHUNK..((c + 1) * CHUNK).min(n) {
+                table.prefetch_faces(e + PREFETCH_AHEAD, normals);
+                rule.classify(&mut out, table.edges[e], table.uses(e));
+            }
+            out
+        })
+        .collect();
+    Ok(concatenate(parts))
+}
+
+/// Feature edges straight from the face-edge buckets, classifying each edge as its bucket is
+/// sorted: a one-off query never builds the full edge table.
+pub fn feature_edges_from_buckets<T: Real>(
+    positions: &[Vec3<T>],
+    buckets: &mut Buckets,
+    normals: &[[f64; 3]],
+    crease_angle: f64,
+) -> Result<FeatureEdges> {
+    let rule = Classifier::new(positions, normals, crease_angle)?;
+    let parts = buckets.visit(
+        FeatureEdges::default,
+        |ahead| {
+            for &entry in ahead {
+                prefetch(normals, FaceUse::unpack(entry).face as usize);
+            }
+        },
+        |out, edge, uses| rule.classify(out, edge, uses.iter().map(|&x| FaceUse::unpack(x))),
+    );
+    Ok(concatenate(parts))
 }
 
 #[cfg(test)]
@@ -191,5 +257,19 @@ mod tests {
         assert!(r.crease.is_empty());
         assert_eq!(r.boundary, vec![[0, 2], [0, 3], [1, 2], [1, 3]]);
         assert!(check_crease_angle(-1.0).is_err() && check_crease_angle(f64::NAN).is_err());
+    }
+
+    #[test]
+    fn table_and_bucket_paths_agree() {
+        let (v, f) = crate::mesh::shapes::icosphere(4, 0.02, 3).unwrap();
+        let normals = face_normals(&v, &f);
+        let table = EdgeTable::build(v.len(), &f).unwrap();
+        let mut buckets = Buckets::build(v.len(), &f).unwrap();
+        for angle in [0.0, 5.0, 30.0] {
+            let a = feature_edges(&v, &table, &normals, angle).unwrap();
+            let b = feature_edges_from_buckets(&v, &mut buckets, &normals, angle).unwrap();
+            assert_eq!(a, b);
+            assert!(!a.crease.is_empty());
+        }
     }
 }

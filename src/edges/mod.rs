@@ -42,11 +42,11 @@ pub fn find_feature_edges<T: Real>(
     } else {
         faces
     };
-    let (table, normals) = rayon::join(
-        || EdgeTable::build(positions.len(), faces),
+    let (buckets, normals) = rayon::join(
+        || edge_table::Buckets::build(positions.len(), faces),
         || face_normals(positions, faces),
     );
-    let fe = feature::feature_edges(positions, &table?, &normals, crease_angle)?;
+    let fe = feature::feature_edges_from_buckets(positions, &mut buckets?, &normals, crease_angle)?;
     let degenerate = (0..normals.len() as u32)
         .filter(|&i| normals[i as usize] == [0.0; 3])
         .collect();
