@@ -30,6 +30,9 @@ pub struct EdgeIndex {
 
 const CHUNK: usize = 16384;
 
+/// One chunk's manifold edges, their face pairs, and its non-manifold edge ids.
+type ChunkPairs = (Vec<[u32; 2]>, Vec<[u32; 2]>, Vec<u32>);
+
 impl EdgeIndex {
     pub fn build<T: Real>(
         positions: &[Vec3<T>],
@@ -59,7 +62,7 @@ impl EdgeIndex {
             })
             .collect();
         let n = table.len();
-        let parts: Vec<(Vec<[u32; 2]>, Vec<[u32; 2]>, Vec<u32>)> = (0..n.div_ceil(CHUNK))
+        let parts: Vec<ChunkPairs> = (0..n.div_ceil(CHUNK))
             .into_par_iter()
             .map(|c| {
                 let (mut me, mut mf, mut nm) = (Vec::new(), Vec::new(), Vec::new());

@@ -40,6 +40,8 @@ pub fn face_normal<T: Real>(positions: &[Vec3<T>], face: [u32; 3]) -> Option<[f6
     let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
     let sq = |e: [f64; 3]| e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
     let longest = sq(e1).max(sq(e2)).max(sq(e3));
+    // Written negated so that a NaN (from overflow) also counts as degenerate.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     if !(len > DEGENERATE_RELATIVE_AREA * longest) {
         return None;
     }
