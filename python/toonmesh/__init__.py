@@ -1,6 +1,6 @@
 """toonmesh: mesh smoothing, outline extraction and headless toon rendering, on NumPy arrays."""
 
-from toonmesh import shapes, smooth
+from toonmesh import edges, shapes, smooth
 from toonmesh._core import (
     ConvergenceError,
     GpuError,
@@ -36,6 +36,7 @@ __all__ = [
     "RenderResult",
     "Renderer",
     "__version__",
+    "edges",
     "get_num_threads",
     "gpu_info",
     "kang_table",

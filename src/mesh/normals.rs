@@ -1,6 +1,71 @@
-//! Per-vertex normals for shading.
+//! Unit face normals, with an explicit rule for faces that have none, and area-weighted vertex
+//! normals for shading.
+//!
+//! The normal of face (a, b, c) is (b - a) x (c - a), normalised: counter-clockwise faces seen
+//! from the front face the viewer. It is computed in f64 whatever the input precision, so the
+//! rule below does not depend on the dtype's rounding.
+//!
+//! A face is *degenerate* (no defined normal) when it repeats a vertex index or when
+//! |(b - a) x (c - a)| <= DEGENERATE_RELATIVE_AREA * L^2, with L its longest edge: zero-area and
+//! collinear faces, scale-invariant. Degenerate faces get the zero vector.
+
+use rayon::prelude::*;
 
 use crate::real::{cross, sub, to_f64, Real, Vec3};
+
+/// Twice the area of a face, relative to its longest edge squared, below which it has no normal.
+/// A needle with relative area 1e-12 has a normal whose direction is still meaningful in f64
+/// (rounding moves it by about 1e-4 rad at worst); below that it is noise.
+pub const DEGENERATE_RELATIVE_AREA: f64 = 1e-12;
+
+/// Unit normal of one face in f64, or None when the face is degenerate.
+#[inline]
+pub fn face_normal<T: Real>(positions: &[Vec3<T>], face: [u32; 3]) -> Option<[f64; 3]> {
+    let [a, b, c] = face;
+    if a == b || b == c || a == c {
+        return None;
+    }
+    let p = |i: u32| {
+        let q = positions[i as usize];
+        [q[0].to_f64(), q[1].to_f64(), q[2].to_f64()]
+    };
+    let (pa, pb, pc) = (p(a), p(b), p(c));
+    let e1 = [pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]];
+    let e2 = [pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]];
+    let e3 = [pc[0] - pb[0], pc[1] - pb[1], pc[2] - pb[2]];
+    let n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    let sq = |e: [f64; 3]| e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    let longest = sq(e1).max(sq(e2)).max(sq(e3));
+    // Written negated so that a NaN (from overflow) also counts as degenerate.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
+    if !(len > DEGENERATE_RELATIVE_AREA * longest) {
+        return None;
+    }
+    Some([n[0] / len, n[1] / len, n[2] / len])
+}
+
+/// Unit normals of all faces (zero for degenerate faces), in f64, computed in parallel.
+pub fn face_normals<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<[f64; 3]> {
+    let mut out = vec![[0.0; 3]; faces.len()];
+    face_normals_into(positions, faces, &mut out);
+    out
+}
+
+/// `face_normals` into a caller's buffer of `faces.len()` normals.
+pub fn face_normals_into<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], out: &mut [[f64; 3]]) {
+    out.par_chunks_mut(4096).zip(faces.par_chunks(4096)).for_each(|(o, f)| {
+        for (n, &face) in o.iter_mut().zip(f) {
+            *n = face_normal(positions, face).unwrap_or([0.0; 3]);
+        }
+    });
+}
+
+/// Whether a normal returned by `face_normals` is defined (not the zero of a degenerate face).
+#[inline]
+pub fn is_defined(n: [f64; 3]) -> bool {
+    n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0
+}
 
 /// Area-weighted vertex normals: each vertex gets the normalised sum of the (unnormalised)
 /// cross products of the faces around it, so large faces count more than slivers.
@@ -40,6 +105,24 @@ fn unit_or_zero(n: [f64; 3]) -> [f64; 3] {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn unit_normal_and_degenerates() {
+        let v: Vec<[f32; 3]> = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [2.0, 0.0, 0.0]];
+        let n = face_normals(&v, &[[0, 1, 2], [0, 2, 1], [0, 1, 3], [0, 0, 2]]);
+        assert_eq!(n[0], [0.0, 0.0, 1.0]);
+        assert_eq!(n[1], [0.0, 0.0, -1.0]);
+        assert!(!is_defined(n[2]), "collinear face has no normal");
+        assert!(!is_defined(n[3]), "repeated index has no normal");
+    }
+
+    #[test]
+    fn scale_invariant() {
+        for s in [1e-30, 1.0, 1e30] {
+            let v = vec![[0.0, 0.0, 0.0], [s, 0.0, 0.0], [0.0, s * 1e-9, 0.0]];
+            assert!(face_normal(&v, [0, 1, 2]).is_some(), "thin but valid at scale {s}");
+        }
+    }
 
     #[test]
     fn larger_face_dominates_and_isolated_vertex_is_zero() {

@@ -1,6 +1,7 @@
 //! PyO3 glue: NumPy in and out, argument checks, GIL release, error mapping.
 
 mod convert;
+mod edges;
 mod errors;
 mod render;
 mod runtime;
@@ -11,6 +12,7 @@ use pyo3::prelude::*;
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
+    edges::register(m)?;
     runtime::register(m)?;
     shapes::register(m)?;
     smooth::register(m)?;

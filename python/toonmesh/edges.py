@@ -1,0 +1,516 @@
+"""Outlines: feature edges and silhouettes found on the mesh, Sobel edges found in images.
+
+Mesh space (Kang, Kim and Yoon): boundary, crease and non-manifold edges are found once per mesh
+(:func:`feature_edges`, :class:`EdgeIndex`), silhouettes once per view (:func:`silhouette`,
+:meth:`EdgeIndex.silhouette`). Image space (Borquez and Yepez): :func:`sobel`, :func:`sobel_h`,
+:func:`sobel_v` give the numbers of ``skimage.filters`` (or OpenCV's, on request), and
+:func:`detect_edges` applies the paper's per-buffer thresholds to normal and depth buffers.
+
+Rules shared by every mesh-space function:
+
+- An *edge* is an unordered vertex pair used by at least one face; it is reported once, smaller
+  index first, and every edge array is sorted lexicographically (by first, then second index).
+  Edge arrays are (K, 2) int64.
+- An edge's *face-edges* are the sides of faces lying on it. Boundary: exactly one; manifold:
+  two; non-manifold: three or more. A face that repeats an index, like (a, a, b), uses a-b twice
+  and has no self-edge a-a.
+- A face is *degenerate* when it repeats an index or its area is at most 1e-12 times its
+  longest edge squared (zero-area and collinear faces). It has no normal, so an edge next to it
+  is never a crease and never a silhouette; it still counts for boundary and non-manifold edges.
+  Degenerate faces are listed in ``FeatureEdges.degenerate_faces``. (trimesh gives such faces a
+  zero normal and a 90 degree angle to every neighbour, which creates creases at random.)
+- Face normals follow the right-hand rule, (b - a) x (c - a), and are computed in float64.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any, List, NamedTuple, Optional, Tuple
+
+import numpy as np
+
+from toonmesh import _core
+from toonmesh._input import mesh_arrays
+
+__all__ = [
+    "EdgeDetection",
+    "EdgeIndex",
+    "FeatureEdges",
+    "chains",
+    "detect_edges",
+    "feature_edges",
+    "segments",
+    "silhouette",
+    "sobel",
+    "sobel_h",
+    "sobel_v",
+]
+
+
+@dataclass(frozen=True)
+class FeatureEdges:
+    """View-independent outline edges of a mesh. All edge arrays are (K, 2) int64, smaller index
+    first, sorted lexicographically.
+
+    Attributes:
+        boundary: edges with exactly one face-edge.
+        crease: manifold edges whose two faces (both with a normal) meet at a dihedral angle
+            above ``crease_angle``.
+        crease_angles: (K,) float64, each crease's angle between the two face normals in
+            degrees, in (crease_angle, 180]; computed as atan2(|n1 x n2|, n1 . n2), which stays
+            accurate near 0 and 180 degrees.
+        crease_convex: (K,) bool, True for a convex crease (a ridge), False for a concave one (a
+            valley). With faces 1 and 2 and face 1 walking the edge from a to b, convex means
+            (n1 x n2) . (b - a) >= 0. Meaningful when the two faces are consistently oriented.
+        nonmanifold: edges with three or more face-edges.
+        degenerate_faces: (D,) int64, faces without a normal (see the module rules).
+        crease_angle: the threshold used, in degrees.
+    """
+
+    boundary: np.ndarray
+    crease: np.ndarray
+    crease_angles: np.ndarray
+    crease_convex: np.ndarray
+    nonmanifold: np.ndarray
+    degenerate_faces: np.ndarray
+    crease_angle: float
+
+    @property
+    def ridge(self) -> np.ndarray:
+        """Convex creases, (K, 2) int64."""
+        return self.crease[self.crease_convex]
+
+    @property
+    def valley(self) -> np.ndarray:
+        """Concave creases, (K, 2) int64."""
+        return self.crease[~self.crease_convex]
+
+    @property
+    def outlines(self) -> np.ndarray:
+        """Boundary, crease and non-manifold edges together, (K, 2) int64, sorted, unique."""
+        return _union(self.boundary, self.crease, self.nonmanifold)
+
+
+def _features(raw: Tuple[Any, ...], crease_angle: float) -> FeatureEdges:
+    boundary, crease, angles, convex, nonmanifold, degenerate = raw
+    return FeatureEdges(boundary, crease, angles, convex, nonmanifold, degenerate, float(crease_angle))
+
+
+def _union(*parts: np.ndarray) -> np.ndarray:
+    edges = np.concatenate([p.reshape(-1, 2) for p in parts]).astype(np.int64, copy=False)
+    if len(edges) == 0:
+        return np.zeros((0, 2), dtype=np.int64)
+    return np.unique(edges, axis=0)
+
+
+def feature_edges(vertices: Any, faces: Any = None, crease_angle: float = 30.0, *, weld: bool = False) -> FeatureEdges:
+    """Boundary, crease and non-manifold edges of a triangle mesh.
+
+    Args:
+        vertices: (N, 3) float32 or float64 positions, or a ``trimesh.Trimesh`` (then leave
+            ``faces`` out).
+        faces: (M, 3) int32, int64 or uint32 vertex indices.
+        crease_angle: threshold in degrees, in [0, 180]; an edge is a crease when the angle
+            between its two face normals is strictly greater. Default 30.
+        weld: merge vertices at exactly the same position first (UV seams and split normals
+            store one point twice, which otherwise shows up as boundary edges). Edges then refer
+            to the smallest index of each group of coincident vertices.
+
+    Returns:
+        :class:`FeatureEdges`. See the module docstring for the rules on order, face counts and
+        degenerate faces.
+
+    Raises:
+        TypeError, ValueError, IndexError: bad input, naming the argument.
+    """
+    V, F = mesh_arrays(vertices, faces)
+    return _features(_core._feature_edges(V, F, float(crease_angle), bool(weld)), crease_angle)
+
+
+def _view(eye: Any, direction: Any) -> Tuple[Optional[Tuple[float, float, float]], Optional[Tuple[float, float, float]]]:
+    if (eye is None) == (direction is None):
+        raise ValueError("eye: give exactly one of eye= (perspective) or direction= (orthographic)")
+    name, value = ("eye", eye) if eye is not None else ("direction", direction)
+    try:
+        arr = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"{name}: expected 3 numbers ({exc})") from None
+    if arr.shape != (3,):
+        raise ValueError(f"{name}: expected 3 numbers, got shape {arr.shape}")
+    point = (float(arr[0]), float(arr[1]), float(arr[2]))
+    return (point, None) if eye is not None else (None, point)
+
+
+def silhouette(
+    vertices: Any, faces: Any = None, *, eye: Any = None, direction: Any = None, weld: bool = False
+) -> np.ndarray:
+    """Silhouette edges for one view: (K, 2) int64, smaller index first, sorted.
+
+    Give exactly one of:
+        eye: (3,) camera position, perspective view. The view vector is taken from the eye to
+            each face (not one global direction), so the answer is exact per face.
+        direction: (3,) direction the orthographic camera looks in (from the camera into the
+            scene); its length does not matter.
+
+    A face is front-facing when n . V < 0, with V the view vector (face point minus eye, or the
+    direction), and back-facing otherwise: a face exactly edge-on (n . V = 0) counts as
+    back-facing, as with back-face culling. An edge is a silhouette when its faces include at
+    least one front-facing and one back-facing face: for a manifold edge that is the paper's
+    (n1 . V)(n2 . V) <= 0 with that tie rule, for a non-manifold edge any such pair. Boundary
+    edges (one face) are never silhouettes: they are outlines in every view, see
+    :func:`feature_edges`. Edges next to a degenerate face are never silhouettes. An eye exactly
+    on a face's plane sees that face edge-on.
+
+    For many views of one mesh, build an :class:`EdgeIndex` once instead.
+
+    Args:
+        vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        weld: as in :func:`feature_edges`.
+    """
+    V, F = mesh_arrays(vertices, faces)
+    e, d = _view(eye, direction)
+    return _core._silhouette(V, F, e, d, bool(weld))
+
+
+class EdgeIndex:
+    """Once-per-mesh outline data (edges, face normals, boundaries, creases) that answers
+    silhouettes for each new view quickly: the paper's pre-processing / run-time split, for
+    turntables and many views.
+
+    Building costs about as much as :func:`feature_edges`; each :meth:`silhouette` is one pass
+    over faces and one over edges, run in parallel with the GIL released. The index is
+    immutable: one index may serve several threads at once.
+
+    Args:
+        vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too). They are
+            copied; later changes to the caller's arrays do not affect the index.
+        crease_angle: threshold in degrees for :attr:`features` (default 30).
+        weld: merge coincident vertices first, as in :func:`feature_edges`.
+
+    Attributes:
+        features: :class:`FeatureEdges` at ``crease_angle``.
+        boundary, crease, nonmanifold: shortcuts into :attr:`features`.
+        vertices: (N, 3) float64 positions; face_normals: (M, 3) float64 unit normals (zero for
+            degenerate faces).
+    """
+
+    def __init__(self, vertices: Any, faces: Any = None, *, crease_angle: float = 30.0, weld: bool = False) -> None:
+        V, F = mesh_arrays(vertices, faces)
+        self._index = _core._EdgeIndex(V, F, bool(weld))
+        self.features = self.feature_edges(crease_angle)
+
+    @cached_property
+    def vertices(self) -> np.ndarray:
+        """(N, 3) float64 positions the index was built from (read-only)."""
+        v = self._index.vertices()
+        v.flags.writeable = False
+        return v
+
+    @cached_property
+    def face_normals(self) -> np.ndarray:
+        """(M, 3) float64 unit face normals, zero for degenerate faces (read-only)."""
+        n = self._index.face_normals()
+        n.flags.writeable = False
+        return n
+
+    @property
+    def n_vertices(self) -> int:
+        return int(self._index.n_vertices)
+
+    @property
+    def n_faces(self) -> int:
+        return int(self._index.n_faces)
+
+    @property
+    def n_edges(self) -> int:
+        """Number of distinct edges."""
+        return int(self._index.n_edges)
+
+    @property
+    def boundary(self) -> np.ndarray:
+        return self.features.boundary
+
+    @property
+    def crease(self) -> np.ndarray:
+        return self.features.crease
+
+    @property
+    def nonmanifold(self) -> np.ndarray:
+        return self.features.nonmanifold
+
+    def feature_edges(self, crease_angle: float = 30.0) -> FeatureEdges:
+        """:class:`FeatureEdges` at another threshold, without rebuilding anything."""
+        return _features(self._index.feature_edges(float(crease_angle)), crease_angle)
+
+    def silhouette(self, *, eye: Any = None, direction: Any = None) -> np.ndarray:
+        """Silhouette edges for one view, (K, 2) int64; rules as in :func:`silhouette`."""
+        e, d = _view(eye, direction)
+        return self._index.silhouette(e, d)
+
+    def outlines(self, *, eye: Any = None, direction: Any = None) -> np.ndarray:
+        """Silhouettes of this view plus boundary, crease and non-manifold edges, (K, 2) int64,
+        sorted, each edge once: everything a mesh-space outline pass draws."""
+        return _union(self.silhouette(eye=eye, direction=direction), self.features.outlines)
+
+    def segments(self, edges: Any) -> np.ndarray:
+        """Edge end points of this mesh, (K, 2, 3) float64; see :func:`segments`."""
+        return segments(self.vertices, edges)
+
+    def __repr__(self) -> str:
+        return f"EdgeIndex({self.n_vertices} vertices, {self.n_faces} faces, {self.n_edges} edges)"
+
+
+def _edge_array(edges: Any) -> np.ndarray:
+    arr = np.asarray(edges)
+    if arr.size == 0:
+        return np.zeros((0, 2), dtype=np.int64)
+    if arr.ndim != 2 or arr.shape[1] != 2:
+        raise ValueError(f"edges: expected shape (K, 2), got {arr.shape}")
+    if arr.dtype.kind not in "iu":
+        raise TypeError(f"edges: expected integer vertex indices, got dtype {arr.dtype}")
+    if arr.dtype.kind == "u" and arr.size and arr.max() > np.iinfo(np.int64).max:
+        raise IndexError("edges: vertex index too large")
+    return np.ascontiguousarray(arr, dtype=np.int64)
+
+
+def chains(edges: Any) -> List[np.ndarray]:
+    """Edges chained into polylines: a list of int64 vertex-index arrays.
+
+    A chain runs between vertices whose degree in ``edges`` is not 2 (ends and junctions),
+    through vertices of degree 2. Chains start from those vertices in ascending index order,
+    taking their edges in the given order; the rest are closed loops, each started at the first
+    unused edge (in the given order) from its first vertex and closed by repeating that vertex
+    at the end. Every edge is used exactly once, so ``sum(len(c) - 1 for c in chains(e))`` equals
+    ``len(e)``.
+
+    Args:
+        edges: (K, 2) integer vertex pairs, e.g. from :func:`silhouette` or :class:`FeatureEdges`.
+    """
+    flat, offsets = _core._chains(_edge_array(edges))
+    return [flat[offsets[i] : offsets[i + 1]] for i in range(len(offsets) - 1)]
+
+
+def segments(vertices: Any, edges: Any) -> np.ndarray:
+    """End points of each edge, (K, 2, 3) in the dtype of ``vertices`` (float32 or float64),
+    ready for ``matplotlib``'s ``Line3DCollection`` or for export.
+
+    Args:
+        vertices: (N, 3) positions, or a ``trimesh.Trimesh``.
+        edges: (K, 2) integer vertex pairs.
+    """
+    if hasattr(vertices, "vertices") and hasattr(vertices, "faces"):
+        vertices = vertices.vertices
+    V = np.asarray(vertices)
+    if V.ndim != 2 or V.shape[1] != 3:
+        raise ValueError(f"vertices: expected shape (N, 3), got {V.shape}")
+    E = _edge_array(edges)
+    if E.size and (E.min() < 0 or E.max() >= len(V)):
+        raise IndexError(f"edges: vertex indices must be in [0, {len(V)})")
+    return V[E]
+
+
+# ---------------------------------------------------------------------------------------------
+# Sobel
+
+_CONVENTIONS = ("skimage", "opencv")
+
+
+def _float_image(image: Any, convention: str) -> np.ndarray:
+    """The float image the filter runs on, following the convention's dtype rules."""
+    if convention not in _CONVENTIONS:
+        raise ValueError(f"convention: must be 'skimage' or 'opencv', got {convention!r}")
+    arr = np.asarray(image)
+    if arr.ndim not in (2, 3):
+        raise ValueError(f"image: expected a 2-D (H, W) or 3-D (H, W, C) image, got shape {arr.shape}")
+    if arr.size == 0:
+        raise ValueError(f"image: must not be empty, got shape {arr.shape}")
+    kind = arr.dtype.kind
+    if kind == "f":
+        if arr.dtype == np.float16:
+            return arr.astype(np.float32)
+        if arr.dtype in (np.float32, np.float64):
+            return arr
+        return arr.astype(np.float64)
+    if kind == "b":
+        return arr.astype(np.float64)
+    if kind in "iu":
+        if convention == "opencv":
+            return arr.astype(np.float64)
+        # skimage's img_as_float: integers scaled to [0, 1] (signed: [-1, 1]) in float64
+        scaled = np.multiply(arr, 1.0 / np.iinfo(arr.dtype).max, dtype=np.float64)
+        return np.maximum(scaled, -1.0, out=scaled) if kind == "i" else scaled
+    raise TypeError(f"image: unsupported dtype {arr.dtype} (expected a real number or bool image)")
+
+
+def _erode(mask: Any, shape: Tuple[int, ...]) -> np.ndarray:
+    m = np.asarray(mask)
+    if m.shape != shape[:2]:
+        raise ValueError(f"mask: expected shape {shape[:2]}, got {m.shape}")
+    m = m.astype(bool)
+    # Erosion by a full 3x3 footprint with pixels outside the image counting as False.
+    padded = np.zeros((m.shape[0] + 2, m.shape[1] + 2), dtype=bool)
+    padded[1:-1, 1:-1] = m
+    out = np.ones_like(m)
+    for dr in range(3):
+        for dc in range(3):
+            out &= padded[dr : dr + m.shape[0], dc : dc + m.shape[1]]
+    return out
+
+
+def _sobel(image: Any, mask: Any, output: str, convention: str) -> np.ndarray:
+    img = _float_image(image, convention)
+    if img.ndim == 2:
+        result = _core._sobel(np.ascontiguousarray(img), output, convention)
+    else:
+        result = np.stack(
+            [_core._sobel(np.ascontiguousarray(img[..., c]), output, convention) for c in range(img.shape[2])],
+            axis=-1,
+        )
+    if mask is not None:
+        eroded = _erode(mask, img.shape)
+        result *= eroded[..., None] if result.ndim == 3 else eroded
+    return result
+
+
+_SOBEL_DOC = """
+
+    Args:
+        image: (H, W) image, or (H, W, C) filtered per channel (the last axis is channels; note
+            that ``skimage.filters`` would instead treat a 3-D array as a volume). Any real or
+            bool dtype, any memory order; never modified.
+        mask: optional (H, W) array, True where the result is kept. As in ``skimage.filters``
+            it is first eroded by one pixel (a full 3x3 footprint, pixels outside the image
+            count as False), then the result is zeroed where the eroded mask is False.
+        convention: ``"skimage"`` (default) gives the numbers of ``skimage.filters``: kernels
+            [1, 0, -1] x [1, 2, 1] / 4, border 'reflect' (d c b a | a b c d). float32 in gives
+            float32 out, float16 gives float32, other floats float64; integer images are scaled
+            to [0, 1] (signed: [-1, 1]) and bool to {0, 1}, as skimage's ``img_as_float``, and give
+            float64. ``"opencv"`` gives the numbers of ``cv2.Sobel(img, ddepth, dx, dy, ksize=3)``
+            with its default border BORDER_REFLECT_101 (d c b | a b c d): unnormalised (a unit
+            step gives 4), integers kept in their own units (as float64).
+
+    Returns:
+        An array of the image's shape in the float dtype above. Each output row is computed in
+        one pass over the three input rows it needs, in parallel over row bands, with the GIL
+        released.
+    """
+
+
+def sobel(image: Any, mask: Any = None, *, convention: str = "skimage") -> np.ndarray:
+    return _sobel(image, mask, "magnitude", convention)
+
+
+def sobel_h(image: Any, mask: Any = None, *, convention: str = "skimage") -> np.ndarray:
+    return _sobel(image, mask, "h", convention)
+
+
+def sobel_v(image: Any, mask: Any = None, *, convention: str = "skimage") -> np.ndarray:
+    return _sobel(image, mask, "v", convention)
+
+
+sobel.__doc__ = (
+    """Sobel gradient magnitude.
+
+    ``"skimage"``: sqrt((h^2 + v^2) / 2), as ``skimage.filters.sobel`` in 2-D (a unit step gives
+    0.7071). ``"opencv"``: sqrt(h^2 + v^2), as ``cv2.magnitude`` of the two ``cv2.Sobel`` results
+    (a unit step gives 4). h and v are :func:`sobel_h` and :func:`sobel_v`."""
+    + _SOBEL_DOC
+)
+sobel_h.__doc__ = (
+    """Sobel derivative along axis 0 (rows): the row below minus the row above, smoothed along the
+    row, as ``skimage.filters.sobel_h`` (``"opencv"``: ``cv2.Sobel(img, ddepth, 0, 1)``)."""
+    + _SOBEL_DOC
+)
+sobel_v.__doc__ = (
+    """Sobel derivative along axis 1 (columns): the right neighbour minus the left, smoothed along
+    the column, as ``skimage.filters.sobel_v`` (``"opencv"``: ``cv2.Sobel(img, ddepth, 1, 0)``)."""
+    + _SOBEL_DOC
+)
+
+
+class EdgeDetection(NamedTuple):
+    """Result of :func:`detect_edges`: ``mask`` (H, W) bool, and each buffer's gradient map
+    max(|Gx|, |Gy|) (H, W), or None for a buffer that was not given."""
+
+    mask: np.ndarray
+    normal_gradient: Optional[np.ndarray]
+    depth_gradient: Optional[np.ndarray]
+
+
+def _buffer(name: str, value: Any, channels_axis: bool) -> np.ndarray:
+    arr = np.asarray(value)
+    if arr.dtype.kind not in "fiub":
+        raise TypeError(f"{name}: unsupported dtype {arr.dtype}")
+    if arr.dtype not in (np.float32, np.float64):
+        arr = arr.astype(np.float64)
+    if channels_axis:
+        if arr.ndim == 2:
+            arr = arr[..., None]
+        if arr.ndim != 3:
+            raise ValueError(f"{name}: expected shape (H, W, C) or (H, W), got {arr.shape}")
+    elif arr.ndim == 2:
+        arr = arr[..., None]
+    else:
+        raise ValueError(f"{name}: expected shape (H, W), got {arr.shape}")
+    if arr.size == 0:
+        raise ValueError(f"{name}: must not be empty, got shape {arr.shape}")
+    return np.ascontiguousarray(arr)
+
+
+def detect_edges(
+    normal: Any = None,
+    depth: Any = None,
+    *,
+    normal_threshold: float = 1.0,
+    depth_threshold: float = 0.1,
+) -> EdgeDetection:
+    """Image-space outlines by the rule of Borquez and Yepez: 3x3 Sobel on the normal buffer and
+    on the depth buffer, an edge where max(|Gx|, |Gy|) exceeds that buffer's own threshold; the
+    two results are combined with a logical or.
+
+    Gx and Gy use the paper's unnormalised kernels Sx = [[1, 0, -1], [2, 0, -2], [1, 0, -1]] and
+    Sy = Sx transposed (a unit step gives 4, so a threshold t finds steps larger than t / 4
+    between neighbouring pixels), with the 'reflect' border, so the image border alone never
+    makes an edge. For the normal buffer the gradient is the largest over its channels.
+
+    Background: a pixel is background when its depth (or any normal channel) is not finite
+    (inf or NaN). A pixel whose 3x3 neighbourhood mixes background and object gets an infinite
+    gradient, so the object's outline against the background is always an edge; a pixel deep in
+    the background gets 0. Use inf or NaN for background depth, not a large finite far value,
+    or the outline's strength will depend on that value.
+
+    Args:
+        normal: (H, W, 3) normal buffer (any number of channels; (H, W) is one channel), or
+            None to use depth alone.
+        depth: (H, W) depth buffer, or None to use normals alone.
+        normal_threshold: threshold for the normal buffer (unit normals; default 1.0, about a
+            15 degree turn between neighbouring pixels).
+        depth_threshold: threshold for the depth buffer, in depth units times 4 (default 0.1,
+            meant for a linear depth of order 1: scale it with your scene).
+
+    Returns:
+        :class:`EdgeDetection` ``(mask, normal_gradient, depth_gradient)``; gradients are
+        float32 when the buffer is float32, float64 otherwise.
+    """
+    if normal is None and depth is None:
+        raise ValueError("normal: give a normal buffer, a depth buffer, or both")
+    gn = gd = None
+    shape = None
+    if normal is not None:
+        nb = _buffer("normal", normal, channels_axis=True)
+        gn = _core._paper_gradient(nb)
+        shape = nb.shape[:2]
+    if depth is not None:
+        db = _buffer("depth", depth, channels_axis=False)
+        if shape is not None and db.shape[:2] != shape:
+            raise ValueError(f"depth: shape {db.shape[:2]} does not match the normal buffer's {shape}")
+        gd = _core._paper_gradient(db)
+        shape = db.shape[:2]
+    assert shape is not None
+    mask = np.zeros(shape, dtype=bool)
+    if gn is not None:
+        mask |= gn > float(normal_threshold)
+    if gd is not None:
+        mask |= gd > float(depth_threshold)
+    return EdgeDetection(mask, gn, gd)

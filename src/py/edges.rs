@@ -1,0 +1,459 @@
+//! Python bindings for `crate::edges`. The public API, docstrings and result classes live in
+//! `python/toonmesh/edges.py`; these are the underscored entry points it calls.
+
+use numpy::ndarray::Array2;
+use numpy::{
+    IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArray,
+    PyUntypedArrayMethods,
+};
+use pyo3::prelude::*;
+
+use super::convert::{faces, positions, vec_to_numpy, Positions};
+use super::errors::to_py;
+use super::runtime::detached;
+use crate::edges::chains::chain_edges;
+use crate::edges::detect::paper_gradient;
+use crate::edges::feature::FeatureEdges;
+use crate::edges::sobel::{sobel, Convention, Output};
+use crate::edges::{find_feature_edges, EdgeIndex, View};
+use crate::error::{Error, Result};
+use crate::real::Real;
+
+type Pairs<'py> = Bound<'py, PyArray2<i64>>;
+/// boundary, crease, crease angles (degrees), crease convex, non-manifold, degenerate faces
+type FeatureOut<'py> = (
+    Pairs<'py>,
+    Pairs<'py>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<bool>>,
+    Pairs<'py>,
+    Bound<'py, PyArray1<i64>>,
+);
+
+fn pairs_to_numpy(py: Python<'_>, pairs: Vec<[u32; 2]>) -> Pairs<'_> {
+    let k = pairs.len();
+    let flat: Vec<i64> = pairs.into_iter().flat_map(|p| p.map(|i| i as i64)).collect();
+    Array2::from_shape_vec((k, 2), flat).expect("length is 2k").into_pyarray(py)
+}
+
+fn feature_to_numpy(py: Python<'_>, fe: FeatureEdges, degenerate: Vec<u32>) -> FeatureOut<'_> {
+    (
+        pairs_to_numpy(py, fe.boundary),
+        pairs_to_numpy(py, fe.crease),
+        vec_to_numpy(py, fe.crease_angle),
+        vec_to_numpy(py, fe.crease_convex),
+        pairs_to_numpy(py, fe.nonmanifold),
+        vec_to_numpy(py, degenerate.into_iter().map(|f| f as i64).collect()),
+    )
+}
+
+fn view_of(eye: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> Result<View> {
+    match (eye, direction) {
+        (Some(e), None) => View::Eye(e).check(),
+        (None, Some(d)) => View::Direction(d).check(),
+        _ => {
+            Err(Error::invalid("eye", "give exactly one of eye= (perspective) or direction= (orthographic)"))
+        }
+    }
+}
+
+/// Mesh input read straight from NumPy's buffers when they are C-contiguous (the usual case),
+/// so a million-face mesh is not copied and checked serially before the parallel work starts.
+/// Anything else, and every error message, goes through the general readers in `convert`.
+struct MeshInput<'py> {
+    v32: Option<PyReadonlyArray2<'py, f32>>,
+    v64: Option<PyReadonlyArray2<'py, f64>>,
+    owned: Option<Positions>,
+    faces64: Option<PyReadonlyArray2<'py, i64>>,
+    faces32: Option<PyReadonlyArray2<'py, i32>>,
+    owned_faces: Option<Vec<[u32; 3]>>,
+    n_vertices: usize,
+}
+
+#[derive(Clone, Copy)]
+enum PositionsRef<'a> {
+    F32(&'a [[f32; 3]]),
+    F64(&'a [[f64; 3]]),
+}
+
+#[derive(Clone, Copy)]
+enum FacesRef<'a> {
+    I64(&'a [i64]),
+    I32(&'a [i32]),
+    Checked(&'a [[u32; 3]]),
+}
+
+fn rows_of<T>(flat: &[T]) -> &[[T; 3]] {
+    // SAFETY: [T; 3] has T's alignment and is three Ts laid out contiguously; the caller
+    // checked that the length is a multiple of 3.
+    unsafe { std::slice::from_raw_parts(flat.as_ptr() as *const [T; 3], flat.len() / 3) }
+}
+
+fn contiguous_rows3<'py, T: numpy::Element>(obj: &Bound<'py, PyAny>) -> Option<PyReadonlyArray2<'py, T>> {
+    let x = obj.extract::<PyReadonlyArray2<'py, T>>().ok()?;
+    let shape = x.shape();
+    (shape[1] == 3 && shape[0] > 0 && x.is_c_contiguous()).then_some(x)
+}
+
+fn all_finite<T: Real>(flat: &[T]) -> bool {
+    flat.iter().fold(true, |ok, x| ok & x.is_finite())
+}
+
+impl<'py> MeshInput<'py> {
+    fn read(vertices: &Bound<'py, PyAny>, faces_obj: &Bound<'py, PyAny>) -> Result<Self> {
+        let mut me = MeshInput {
+            v32: contiguous_rows3::<f32>(vertices),
+            v64: None,
+            owned: None,
+            faces64: None,
+            faces32: None,
+            owned_faces: None,
+            n_vertices: 0,
+        };
+        if me.v32.is_none() {
+            me.v64 = contiguous_rows3::<f64>(vertices);
+        }
+        let finite = match (&me.v32, &me.v64) {
+            (Some(x), _) => all_finite(x.as_slice().unwrap_or(&[f32::NAN])),
+            (_, Some(x)) => all_finite(x.as_slice().unwrap_or(&[f64::NAN])),
+            _ => false,
+        };
+        if finite {
+            me.n_vertices =
+                me.v32.as_ref().map(|x| x.shape()[0]).or(me.v64.as_ref().map(|x| x.shape()[0])).unwrap_or(0);
+        } else {
+            me.v32 = None;
+            me.v64 = None;
+            let p = positions("vertices", vertices)?;
+            me.n_vertices = p.len();
+            me.owned = Some(p);
+        }
+        me.faces64 = contiguous_rows3::<i64>(faces_obj);
+        if me.faces64.is_none() {
+            me.faces32 = contiguous_rows3::<i32>(faces_obj);
+        }
+        if me.faces64.is_none() && me.faces32.is_none() {
+            me.owned_faces = Some(faces("faces", faces_obj, me.n_vertices)?);
+        }
+        Ok(me)
+    }
+
+    fn positions(&self) -> PositionsRef<'_> {
+        if let Some(x) = &self.v32 {
+            return PositionsRef::F32(rows_of(x.as_slice().expect("checked contiguous")));
+        }
+        if let Some(x) = &self.v64 {
+            return PositionsRef::F64(rows_of(x.as_slice().expect("checked contiguous")));
+        }
+        match self.owned.as_ref().expect("one of the three is set") {
+            Positions::F32(v) => PositionsRef::F32(v),
+            Positions::F64(v) => PositionsRef::F64(v),
+        }
+    }
+
+    fn faces(&self) -> FacesRef<'_> {
+        if let Some(x) = &self.faces64 {
+            return FacesRef::I64(x.as_slice().expect("checked contiguous"));
+        }
+        if let Some(x) = &self.faces32 {
+            return FacesRef::I32(x.as_slice().expect("checked contiguous"));
+        }
+        FacesRef::Checked(self.owned_faces.as_deref().expect("one of the three is set"))
+    }
+
+    /// Runs `work` on the mesh with the GIL released. Faces are converted to u32 inside, in
+    /// parallel; if any index is bad, the general reader produces the error message.
+    fn run<R: Send>(
+        &self,
+        py: Python<'_>,
+        faces_obj: &Bound<'_, PyAny>,
+        work: impl Fn(PositionsRef<'_>, &[[u32; 3]]) -> Result<R> + Send + Sync,
+    ) -> PyResult<R> {
+        let (positions, faces_ref, n) = (self.positions(), self.faces(), self.n_vertices);
+        let outcome = detached(py, || {
+            let converted = match faces_ref {
+                FacesRef::Checked(f) => return work(positions, f).map(Some),
+                FacesRef::I64(flat) => faces_to_u32(flat, n),
+                FacesRef::I32(flat) => faces_to_u32(flat, n),
+            };
+            match converted {
+                Some(f) => work(positions, &f).map(Some),
+                None => Ok(None),
+            }
+        })?;
+        match outcome {
+            Some(r) => Ok(r),
+            // Some index is out of range: let the general reader say which one.
+            None => Err(to_py(faces("faces", faces_obj, n).err().unwrap_or_else(|| {
+                Error::Internal("faces: rejected by the fast reader but not by the general one".into())
+            }))),
+        }
+    }
+}
+
+/// Faces as u32 rows, or None if any index is outside [0, n).
+fn faces_to_u32<I: Copy + Into<i64> + Sync>(flat: &[I], n: usize) -> Option<Vec<[u32; 3]>> {
+    use rayon::prelude::*;
+    let rows = rows_of(flat);
+    let mut out = crate::edges::huge_pages::filled_vec(rows.len(), [0u32; 3]);
+    let ok = out.par_chunks_mut(16384).zip(rows.par_chunks(16384)).all(|(o, r)| {
+        let mut ok = true;
+        for (o, r) in o.iter_mut().zip(r) {
+            for k in 0..3 {
+                let i: i64 = r[k].into();
+                ok &= i >= 0 && (i as u64) < n as u64;
+                o[k] = i as u32;
+            }
+        }
+        ok
+    });
+    ok.then_some(out)
+}
+
+macro_rules! on_positions {
+    ($p:expr, $v:ident => $body:expr) => {
+        match $p {
+            PositionsRef::F32($v) => $body,
+            PositionsRef::F64($v) => $body,
+        }
+    };
+}
+
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, crease_angle = 30.0, weld = false))]
+fn _feature_edges<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    crease_angle: f64,
+    weld: bool,
+) -> PyResult<FeatureOut<'py>> {
+    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let (fe, degenerate) =
+        mesh.run(py, faces, |p, f| on_positions!(p, v => find_feature_edges(v, f, crease_angle, weld)))?;
+    Ok(feature_to_numpy(py, fe, degenerate))
+}
+
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, eye = None, direction = None, weld = false))]
+fn _silhouette<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    eye: Option<[f64; 3]>,
+    direction: Option<[f64; 3]>,
+    weld: bool,
+) -> PyResult<Pairs<'py>> {
+    let view = view_of(eye, direction).map_err(to_py)?;
+    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let s =
+        mesh.run(py, faces, |p, f| on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)))?;
+    Ok(pairs_to_numpy(py, s))
+}
+
+/// The once-per-mesh part of outline finding; immutable, so one index serves many threads.
+#[pyclass(frozen, name = "_EdgeIndex", module = "toonmesh._core")]
+struct PyEdgeIndex {
+    inner: EdgeIndex,
+}
+
+#[pymethods]
+impl PyEdgeIndex {
+    #[new]
+    #[pyo3(signature = (vertices, faces, weld = false))]
+    fn new(
+        py: Python<'_>,
+        vertices: &Bound<'_, PyAny>,
+        faces: &Bound<'_, PyAny>,
+        weld: bool,
+    ) -> PyResult<Self> {
+        let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+        let inner = mesh.run(py, faces, |p, f| on_positions!(p, v => EdgeIndex::build(v, f, weld)))?;
+        Ok(PyEdgeIndex { inner })
+    }
+
+    #[pyo3(signature = (eye = None, direction = None))]
+    fn silhouette<'py>(
+        &self,
+        py: Python<'py>,
+        eye: Option<[f64; 3]>,
+        direction: Option<[f64; 3]>,
+    ) -> PyResult<Pairs<'py>> {
+        let view = view_of(eye, direction).map_err(to_py)?;
+        let inner = &self.inner;
+        let s = detached(py, || inner.silhouette(view))?;
+        Ok(pairs_to_numpy(py, s))
+    }
+
+    #[pyo3(signature = (crease_angle = 30.0))]
+    fn feature_edges<'py>(&self, py: Python<'py>, crease_angle: f64) -> PyResult<FeatureOut<'py>> {
+        let inner = &self.inner;
+        let (fe, degenerate) =
+            detached(py, || Ok((inner.feature_edges(crease_angle)?, inner.degenerate_faces())))?;
+        Ok(feature_to_numpy(py, fe, degenerate))
+    }
+
+    fn face_normals<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        let flat: Vec<f64> = self.inner.normals().iter().flatten().copied().collect();
+        Array2::from_shape_vec((self.inner.n_faces(), 3), flat).expect("3m").into_pyarray(py)
+    }
+
+    fn vertices<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        let flat: Vec<f64> = self.inner.positions().iter().flatten().copied().collect();
+        Array2::from_shape_vec((self.inner.n_vertices(), 3), flat).expect("3n").into_pyarray(py)
+    }
+
+    fn weld_map<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<i64>>> {
+        self.inner.weld_map().map(|m| vec_to_numpy(py, m.iter().map(|&i| i as i64).collect()))
+    }
+
+    #[getter]
+    fn n_vertices(&self) -> usize {
+        self.inner.n_vertices()
+    }
+
+    #[getter]
+    fn n_faces(&self) -> usize {
+        self.inner.n_faces()
+    }
+
+    #[getter]
+    fn n_edges(&self) -> usize {
+        self.inner.n_edges()
+    }
+}
+
+/// Reads (K, 2) non-negative integer pairs.
+fn read_pairs(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[u32; 2]>> {
+    let a = obj.cast::<PyUntypedArray>().map_err(|_| Error::wrong_type(arg, "expected a NumPy array"))?;
+    if a.ndim() != 2 || a.shape()[1] != 2 {
+        return Err(Error::invalid(arg, format!("expected shape (K, 2), got {:?}", a.shape())));
+    }
+    let x = obj
+        .extract::<PyReadonlyArray2<'_, i64>>()
+        .map_err(|_| Error::wrong_type(arg, "expected an int64 array (the Python wrapper converts)"))?;
+    let view = x.as_array();
+    let mut out = Vec::with_capacity(view.nrows());
+    for (k, row) in view.rows().into_iter().enumerate() {
+        if row[0] < 0 || row[1] < 0 || row[0] > u32::MAX as i64 - 1 || row[1] > u32::MAX as i64 - 1 {
+            return Err(Error::out_of_range(
+                arg,
+                format!("edge {k} has an invalid vertex index ({}, {})", row[0], row[1]),
+            ));
+        }
+        out.push([row[0] as u32, row[1] as u32]);
+    }
+    Ok(out)
+}
+
+#[pyfunction]
+fn _chains<'py>(
+    py: Python<'py>,
+    edges: &Bound<'py, PyAny>,
+) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<i64>>)> {
+    let e = read_pairs("edges", edges).map_err(to_py)?;
+    let (flat, offsets) = detached(py, || Ok(chain_edges(&e)))?;
+    Ok((
+        vec_to_numpy(py, flat.into_iter().map(|i| i as i64).collect()),
+        vec_to_numpy(py, offsets.into_iter().map(|i| i as i64).collect()),
+    ))
+}
+
+fn parse_output(name: &str) -> Result<Output> {
+    match name {
+        "magnitude" => Ok(Output::Magnitude),
+        "h" => Ok(Output::AlongRows),
+        "v" => Ok(Output::AlongColumns),
+        _ => Err(Error::invalid("output", format!("unknown output {name:?}"))),
+    }
+}
+
+fn parse_convention(name: &str) -> Result<Convention> {
+    match name {
+        "skimage" => Ok(Convention::Skimage),
+        "opencv" => Ok(Convention::OpenCv),
+        _ => Err(Error::invalid("convention", format!("must be 'skimage' or 'opencv', got {name:?}"))),
+    }
+}
+
+fn sobel_typed<'py, T: Real + numpy::Element>(
+    py: Python<'py>,
+    image: PyReadonlyArray2<'py, T>,
+    output: Output,
+    convention: Convention,
+) -> PyResult<Bound<'py, PyArray2<T>>> {
+    let (h, w) = image.as_array().dim();
+    if !image.is_c_contiguous() {
+        return Err(to_py(Error::invalid("image", "must be C-contiguous (the Python wrapper makes it so)")));
+    }
+    let data =
+        image.as_slice().map_err(|_| to_py(Error::Internal("sobel: image is not C-contiguous".into())))?;
+    // NumPy's allocator asks the kernel for huge pages on large arrays; a Vec here would pay
+    // one page fault per 4 KiB of output, which costs as much as the filter itself.
+    // SAFETY: every element is written by `sobel` before the array is returned (on error it is
+    // dropped unread).
+    let result = unsafe { PyArray2::<T>::new(py, [h, w], false) };
+    {
+        let mut rw = result.readwrite();
+        let out = rw
+            .as_slice_mut()
+            .map_err(|_| to_py(Error::Internal("sobel: new array not contiguous".into())))?;
+        detached(py, || sobel(data, h, w, out, output, convention))?;
+    }
+    Ok(result)
+}
+
+/// Sobel of a C-contiguous 2-D float32 or float64 image; the Python wrapper does dtype rules.
+#[pyfunction]
+#[pyo3(signature = (image, output = "magnitude", convention = "skimage"))]
+fn _sobel<'py>(
+    py: Python<'py>,
+    image: &Bound<'py, PyAny>,
+    output: &str,
+    convention: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let output = parse_output(output).map_err(to_py)?;
+    let convention = parse_convention(convention).map_err(to_py)?;
+    if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f32>>() {
+        Ok(sobel_typed(py, x, output, convention)?.into_any())
+    } else if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f64>>() {
+        Ok(sobel_typed(py, x, output, convention)?.into_any())
+    } else {
+        Err(to_py(Error::wrong_type("image", "expected a 2-D float32 or float64 array")))
+    }
+}
+
+fn gradient_typed<'py, T: Real + numpy::Element>(
+    py: Python<'py>,
+    buffer: PyReadonlyArray3<'py, T>,
+) -> PyResult<Bound<'py, PyArray2<T>>> {
+    let (h, w, c) = buffer.as_array().dim();
+    if !buffer.is_c_contiguous() {
+        return Err(to_py(Error::invalid("buffer", "must be C-contiguous (the Python wrapper makes it so)")));
+    }
+    let data = buffer.as_slice().map_err(|_| to_py(Error::Internal("buffer is not C-contiguous".into())))?;
+    let out = detached(py, || paper_gradient(data, h, w, c))?;
+    Ok(Array2::from_shape_vec((h, w), out).expect("h*w").into_pyarray(py))
+}
+
+/// max over channels of max(|Gx|, |Gy|) for a C-contiguous (H, W, C) float buffer.
+#[pyfunction]
+fn _paper_gradient<'py>(py: Python<'py>, buffer: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    if let Ok(x) = buffer.extract::<PyReadonlyArray3<'py, f32>>() {
+        Ok(gradient_typed(py, x)?.into_any())
+    } else if let Ok(x) = buffer.extract::<PyReadonlyArray3<'py, f64>>() {
+        Ok(gradient_typed(py, x)?.into_any())
+    } else {
+        Err(to_py(Error::wrong_type("buffer", "expected a 3-D float32 or float64 array")))
+    }
+}
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(_feature_edges, m)?)?;
+    m.add_function(wrap_pyfunction!(_silhouette, m)?)?;
+    m.add_function(wrap_pyfunction!(_chains, m)?)?;
+    m.add_function(wrap_pyfunction!(_sobel, m)?)?;
+    m.add_function(wrap_pyfunction!(_paper_gradient, m)?)?;
+    m.add_class::<PyEdgeIndex>()?;
+    Ok(())
+}
