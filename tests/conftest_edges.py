@@ -1,6 +1,5 @@
 """Helpers shared by the edge tests: peer imports, mesh loading, and the brute-force oracles."""
 
-import os
 from pathlib import Path
 
 import numpy as np
@@ -9,14 +8,7 @@ import pytest
 MESHES = Path(__file__).parent / "data" / "meshes"
 
 
-def need(module):
-    """Imports a peer library; skips on a user machine without it, fails in CI."""
-    try:
-        return __import__(module)
-    except ImportError:
-        if os.environ.get("CI") == "true":
-            raise
-        pytest.skip(f"{module} is not installed")
+from conftest import need  # noqa: E402  (skips on a user machine without the peer, fails in CI)
 
 
 def load(name):

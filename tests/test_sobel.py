@@ -1,6 +1,5 @@
 """Sobel filters cross-validated against scikit-image and OpenCV; the paper's edge rule."""
 
-import os
 
 import numpy as np
 import pytest
@@ -8,14 +7,7 @@ import pytest
 from toonmesh import edges as te
 
 
-def need(module):
-    """Imports a peer library; skips on a user machine without it, fails in CI."""
-    try:
-        return __import__(module)
-    except ImportError:
-        if os.environ.get("CI") == "true":
-            raise
-        pytest.skip(f"{module} is not installed")
+from conftest import need  # noqa: E402  (skips on a user machine without the peer, fails in CI)
 
 
 def skimage_filters():

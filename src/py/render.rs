@@ -9,6 +9,7 @@ use pyo3::types::{PyBytes, PyDict, PyList};
 
 use super::convert::{faces, positions, Positions};
 use super::errors::to_py;
+use super::runtime::catching_panics;
 use crate::error::{Error, Result};
 use crate::render::camera::{Camera, Placement, Projection};
 use crate::render::color::rgb_to_linear;
@@ -22,17 +23,7 @@ use crate::render::{BackendChoice, GpuInfo, RenderOutput, Renderer};
 /// Runs GPU work with the GIL released, catching panics. Not in the compute pool: a render
 /// mostly waits on the device, and concurrent renders should not queue behind each other there.
 fn without_gil<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
-    py.detach(|| {
-        std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)).unwrap_or_else(|p| {
-            let what = p
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| p.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".into());
-            Err(Error::Internal(what))
-        })
-    })
-    .map_err(to_py)
+    py.detach(|| catching_panics(work)).map_err(to_py)
 }
 
 fn get<'py>(d: &Bound<'py, PyDict>, key: &str) -> Result<Option<Bound<'py, PyAny>>> {

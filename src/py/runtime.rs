@@ -7,21 +7,22 @@ use super::errors::to_py;
 use crate::error::{Error, Result};
 use crate::parallel;
 
-/// Runs `work` with the GIL released and maps its error (or a panic) to a Python exception.
+/// Runs compute work with the GIL released, inside the thread pool, and maps its error (or a
+/// panic) to a Python exception.
 pub fn detached<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
-    py.detach(|| {
-        std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| parallel::install(work))).unwrap_or_else(
-            |p| {
-                let what = p
-                    .downcast_ref::<&str>()
-                    .map(|s| s.to_string())
-                    .or_else(|| p.downcast_ref::<String>().cloned())
-                    .unwrap_or_else(|| "unknown panic".into());
-                Err(Error::Internal(what))
-            },
-        )
+    py.detach(|| catching_panics(|| parallel::install(work))).map_err(to_py)
+}
+
+/// Runs `work`, turning a panic into `Error::Internal` so that none reaches Python.
+pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)).unwrap_or_else(|p| {
+        let what = p
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| p.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown panic".into());
+        Err(Error::Internal(what))
     })
-    .map_err(to_py)
 }
 
 /// set_num_threads(n: int) -> None
