@@ -107,65 +107,39 @@ fn build<T: Real>(
     // (own weight in S, C) -> Some((self coefficient numerator, denominator)) or None to freeze.
     rule: impl Fn(f64, f64) -> Option<(f64, f64)>,
 ) -> Operator {
-    let n = adj.n_vertices();
-    let mut self_w = vec![0.0; n];
-    let mut w = vec![0.0; adj.nbrs.len()];
-    for i in 0..n {
-        let slots = adj.slots(i);
-        if pinned.is_some_and(|p| p[i]) {
-            self_w[i] = 1.0;
-            continue;
-        }
-        let row = &mut w[slots.clone()];
+    Operator::from_rows(adj, pinned, |i, row| {
         let (own, c) = accumulate(adj, x, i, cotangent, boundary, row);
         match rule(own, c) {
             Some((num, den)) => {
-                self_w[i] = num / den;
-                for v in row.iter_mut() {
-                    *v /= den;
-                }
+                row.iter_mut().for_each(|v| *v /= den);
+                num / den
             }
             None => {
-                self_w[i] = 1.0;
                 row.fill(0.0);
+                1.0
             }
         }
-    }
-    Operator::Weighted { self_w, w }
+    })
 }
 
 /// The neighbour weights of `apply_coord_hc_laplacian_smoothing`: each face-edge counts once,
 /// a border face-edge twice (so on a manifold mesh, a plain mean of all neighbours).
 pub fn hc_average(adj: &Adjacency, pinned: Option<&[bool]>) -> Operator {
-    let n = adj.n_vertices();
-    let mut self_w = vec![0.0; n];
-    let mut w = vec![0.0; adj.nbrs.len()];
-    for i in 0..n {
-        let slots = adj.slots(i);
-        if pinned.is_some_and(|p| p[i]) {
-            self_w[i] = 1.0;
-            continue;
-        }
-        let mut total = 0.0;
-        for s in slots.clone() {
-            let e = adj.edge_faces[s];
-            w[s] = if e == 1 { 2.0 } else { e as f64 };
-            total += w[s];
+    Operator::from_rows(adj, pinned, |i, row| {
+        for (r, &e) in row.iter_mut().zip(&adj.edge_faces[adj.slots(i)]) {
+            *r = if e == 1 { 2.0 } else { e as f64 };
         }
         let own = match adj.self_edges[i] {
             0 => 0.0,
             1 => 4.0,
             k => 2.0 * k as f64,
         };
-        total += own;
+        let total = own + row.iter().sum::<f64>();
         if total > 0.0 {
-            self_w[i] = own / total;
-            for s in slots {
-                w[s] /= total;
-            }
+            row.iter_mut().for_each(|r| *r /= total);
+            own / total
         } else {
-            self_w[i] = 1.0;
+            1.0
         }
-    }
-    Operator::Weighted { self_w, w }
+    })
 }

@@ -61,6 +61,25 @@ impl Operator {
     }
 }
 
+impl Operator {
+    /// A weighted operator built row by row: a pinned vertex gets the identity row; for every
+    /// other vertex, `fill(i, row)` writes the weights of its slots (zeroed on entry) and returns
+    /// the weight of the vertex itself.
+    pub fn from_rows(
+        adj: &Adjacency,
+        pinned: Option<&[bool]>,
+        mut fill: impl FnMut(usize, &mut [f64]) -> f64,
+    ) -> Operator {
+        let n = adj.n_vertices();
+        let mut self_w = vec![0.0; n];
+        let mut w = vec![0.0; adj.nbrs.len()];
+        for i in 0..n {
+            self_w[i] = if pinned.is_some_and(|p| p[i]) { 1.0 } else { fill(i, &mut w[adj.slots(i)]) };
+        }
+        Operator::Weighted { self_w, w }
+    }
+}
+
 /// Fills `out[i] = f(i)` in parallel, in fixed chunks.
 pub fn par_rows<T: Real>(out: &mut [Vec3<T>], f: impl Fn(usize) -> Vec3<T> + Sync) {
     out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, chunk)| {

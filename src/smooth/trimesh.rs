@@ -22,54 +22,35 @@ pub fn uniform(adj: &Adjacency, faces: &[[u32; 3]], pinned: Option<&[bool]>) -> 
             targets[a].push(b);
         }
     }
-    let mut self_w = vec![0.0; n];
-    let mut w = vec![0.0; adj.nbrs.len()];
-    for i in 0..n {
-        if pinned.is_some_and(|p| p[i]) {
-            self_w[i] = 1.0;
-            continue;
-        }
+    Operator::from_rows(adj, pinned, |i, row| {
         if outgoing[i] == 0 {
-            continue;
+            return 0.0; // an empty row: the vertex drifts toward the origin, as in trimesh
         }
         let inv = 1.0 / outgoing[i] as f64;
         let t = &mut targets[i];
         t.sort_unstable();
         t.dedup();
-        let slots = adj.slots(i);
+        let nbrs = adj.neighbours(i);
+        let mut own = 0.0;
         for &b in t.iter() {
             if b as usize == i {
-                self_w[i] = inv;
+                own = inv;
             } else {
-                let k =
-                    adj.nbrs[slots.clone()].binary_search(&b).expect("every half-edge target is a neighbour");
-                w[slots.start + k] = inv;
+                row[nbrs.binary_search(&b).expect("every half-edge target is a neighbour")] = inv;
             }
         }
-    }
-    Operator::Weighted { self_w, w }
+        own
+    })
 }
 
 pub fn distance<T: Real>(adj: &Adjacency, x: &[Vec3<T>], pinned: Option<&[bool]>) -> Operator {
-    let n = adj.n_vertices();
-    let mut self_w = vec![0.0; n];
-    let mut w = vec![0.0; adj.nbrs.len()];
-    for i in 0..n {
-        if pinned.is_some_and(|p| p[i]) {
-            self_w[i] = 1.0;
-            continue;
-        }
+    Operator::from_rows(adj, pinned, |i, row| {
         let xi = real::to_f64(x[i]);
-        let slots = adj.slots(i);
-        let mut total = 0.0;
-        for s in slots.clone() {
-            let d = real::norm(real::sub(xi, real::to_f64(x[adj.nbrs[s] as usize])));
-            w[s] = 1.0 / d.max(1e-6);
-            total += w[s];
+        for (r, &j) in row.iter_mut().zip(adj.neighbours(i)) {
+            *r = 1.0 / real::norm(real::sub(xi, real::to_f64(x[j as usize]))).max(1e-6);
         }
-        for s in slots {
-            w[s] /= total;
-        }
-    }
-    Operator::Weighted { self_w, w }
+        let total: f64 = row.iter().sum();
+        row.iter_mut().for_each(|r| *r /= total);
+        0.0
+    })
 }
