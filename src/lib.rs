@@ -5,6 +5,7 @@
 
 pub mod edges;
 pub mod error;
+pub mod huge_pages;
 pub mod mesh;
 pub mod parallel;
 pub mod real;

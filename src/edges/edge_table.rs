@@ -9,7 +9,7 @@
 
 use rayon::prelude::*;
 
-use super::huge_pages::{filled_vec, with_capacity};
+use crate::huge_pages::{filled_vec, with_capacity};
 use crate::error::{Error, Result};
 
 /// One face walking along an edge: `face` and whether it walks from the larger index to the

@@ -5,7 +5,6 @@ pub mod chains;
 pub mod detect;
 pub mod edge_table;
 pub mod feature;
-pub mod huge_pages;
 pub mod index;
 pub mod silhouette;
 pub mod sobel;
@@ -21,7 +20,7 @@ use crate::real::{Real, Vec3};
 
 /// Face normals as `mesh::normals::face_normals` computes them, in a huge-page buffer.
 pub fn face_normals<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<[f64; 3]> {
-    let mut out = huge_pages::filled_vec(faces.len(), [0.0; 3]);
+    let mut out = crate::huge_pages::filled_vec(faces.len(), [0.0; 3]);
     crate::mesh::normals::face_normals_into(positions, faces, &mut out);
     out
 }

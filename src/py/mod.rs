@@ -3,6 +3,7 @@
 mod convert;
 mod edges;
 mod errors;
+mod mesh_input;
 mod render;
 mod runtime;
 mod shapes;

@@ -75,7 +75,7 @@ pub fn smooth<T: Real>(
     Ok(r.restore(out))
 }
 
-fn smooth_in_order<T: Real>(
+pub fn smooth_in_order<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
     plan: &Plan,
