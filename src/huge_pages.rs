@@ -5,11 +5,24 @@
 //! Asking for transparent huge pages (as NumPy does for its large arrays) cuts them 512-fold.
 //! Elsewhere, or when the kernel says no, this is an ordinary allocation.
 
+/// Bytes above which a buffer is filled by every thread rather than one: first touch of fresh
+/// memory (page faults and the kernel's zeroing) is slow enough to be worth sharing.
+const PARALLEL_FILL: usize = 1 << 22;
+
 /// A vector of `n` copies of `value` whose memory was advised for huge pages before it was
 /// first touched.
-pub fn filled_vec<T: Copy>(n: usize, value: T) -> Vec<T> {
+pub fn filled_vec<T: Copy + Send + Sync>(n: usize, value: T) -> Vec<T> {
+    use rayon::prelude::*;
     let mut v = with_capacity(n);
-    v.resize(n, value);
+    if n * std::mem::size_of::<T>() < PARALLEL_FILL {
+        v.resize(n, value);
+        return v;
+    }
+    v.spare_capacity_mut()[..n]
+        .par_chunks_mut((1 << 16) / std::mem::size_of::<T>().max(1))
+        .for_each(|c| c.fill(std::mem::MaybeUninit::new(value)));
+    // SAFETY: the first n elements were all written just above.
+    unsafe { v.set_len(n) };
     v
 }
 

@@ -9,8 +9,8 @@
 
 use rayon::prelude::*;
 
-use crate::huge_pages::{filled_vec, with_capacity};
 use crate::error::{Error, Result};
+use crate::huge_pages::{filled_vec, with_capacity};
 
 /// One face walking along an edge: `face` and whether it walks from the larger index to the
 /// smaller (`reversed`).

@@ -10,6 +10,7 @@
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
+use crate::huge_pages;
 use crate::parallel;
 
 #[derive(Debug)]
@@ -61,8 +62,8 @@ impl Adjacency {
                 });
             let offsets = prefix_sum(&distinct);
             let slots = offsets[n_vertices] as usize;
-            let mut nbrs = vec![0u32; slots];
-            let mut edge_faces = vec![0u32; slots];
+            let mut nbrs: Vec<u32> = huge_pages::filled_vec(slots, 0);
+            let mut edge_faces: Vec<u32> = huge_pages::filled_vec(slots, 0);
             let slot_start = |r: &std::ops::Range<usize>| offsets[r.start] as usize;
             split_by(&mut nbrs, &ranges, slot_start)
                 .into_par_iter()
@@ -210,7 +211,7 @@ fn half_edges<E: Copy + Default + Send + Sync>(
     }
     start.push(acc);
     drop(counts);
-    let mut entries = vec![E::default(); acc as usize];
+    let mut entries = huge_pages::filled_vec(acc as usize, E::default());
     let out = SharedSlice(entries.as_mut_ptr());
     chunks.par_iter().zip(cursors.par_iter_mut()).enumerate().for_each(|(p, (ch, cur))| {
         let out = &out;

@@ -58,7 +58,6 @@ fn view_of(eye: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> Result<View> {
     }
 }
 
-
 #[pyfunction]
 #[pyo3(signature = (vertices, faces, crease_angle = 30.0, weld = false))]
 fn _feature_edges<'py>(

@@ -90,6 +90,10 @@ impl<'py> MeshInput<'py> {
         Ok(me)
     }
 
+    pub fn n_vertices(&self) -> usize {
+        self.n_vertices
+    }
+
     pub fn positions(&self) -> PositionsRef<'_> {
         if let Some(x) = &self.v32 {
             return PositionsRef::F32(rows_of(x.as_slice().expect("checked contiguous")));

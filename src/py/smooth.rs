@@ -3,9 +3,9 @@
 
 use pyo3::prelude::*;
 
-use super::convert::{faces, positions, rows3_to_numpy, vertex_mask, Positions};
+use super::convert::{rows3_to_numpy, vertex_mask};
 use super::errors::to_py;
-use super::runtime::detached;
+use super::mesh_input::{MeshInput, PositionsRef};
 use crate::error::Error;
 use crate::smooth::{self, Args, Method};
 
@@ -61,19 +61,25 @@ fn _smooth<'py>(
         preset,
     };
     let plan = smooth::resolve(m, &args).map_err(to_py)?;
-    let v = positions("vertices", vertices).map_err(to_py)?;
-    let f = faces("faces", faces_arr, v.len()).map_err(to_py)?;
-    let pin = vertex_mask("pinned", pinned, v.len()).map_err(to_py)?;
-    Ok(match v {
-        Positions::F32(v) => {
-            let out = detached(py, || smooth::smooth(&v, &f, &plan, pin.as_deref()))?;
-            rows3_to_numpy(py, out).into_any()
-        }
-        Positions::F64(v) => {
-            let out = detached(py, || smooth::smooth(&v, &f, &plan, pin.as_deref()))?;
-            rows3_to_numpy(py, out).into_any()
-        }
+    let mesh = MeshInput::read(vertices, faces_arr).map_err(to_py)?;
+    let pin = vertex_mask("pinned", pinned, mesh.n_vertices()).map_err(to_py)?;
+    let pin = pin.as_deref();
+    let out = mesh.run(py, faces_arr, |p, f| {
+        Ok(match p {
+            PositionsRef::F32(v) => Smoothed::F32(smooth::smooth(v, f, &plan, pin)?),
+            PositionsRef::F64(v) => Smoothed::F64(smooth::smooth(v, f, &plan, pin)?),
+        })
+    })?;
+    Ok(match out {
+        Smoothed::F32(v) => rows3_to_numpy(py, v).into_any(),
+        Smoothed::F64(v) => rows3_to_numpy(py, v).into_any(),
     })
+}
+
+/// Smoothed positions, in the input's precision.
+enum Smoothed {
+    F32(Vec<[f32; 3]>),
+    F64(Vec<[f64; 3]>),
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -17,10 +17,11 @@ pub mod volume;
 use rayon::prelude::*;
 
 use crate::error::Result;
+use crate::huge_pages;
 use crate::mesh::reorder::{self, Reordering};
 use crate::mesh::Adjacency;
 use crate::real::{self, Real, Vec3};
-use operator::{from_f64, par_rows, par_rows_f64, Operator};
+use operator::{from_f64, par_rows_gathering, Operator};
 pub use options::{resolve, Args, Boundary, Method, Plan, Preset, Weights};
 use volume::VolumeConstraint;
 
@@ -66,7 +67,10 @@ pub fn smooth<T: Real>(
     plan: &Plan,
     pinned: Option<&[bool]>,
 ) -> Result<Vec<Vec3<T>>> {
-    if x0.len() < reorder::MIN_VERTICES || plan.iterations == 0 {
+    if plan.iterations == 0 {
+        return Ok(x0.to_vec());
+    }
+    if x0.len() < reorder::MIN_VERTICES || !reorder::is_scattered(faces) {
         return smooth_in_order(x0, faces, plan, pinned);
     }
     let r = Reordering::spatial(x0);
@@ -84,10 +88,6 @@ pub fn smooth_in_order<T: Real>(
     let mut adj = Adjacency::build(x0.len(), faces)?;
     if plan.weights == Weights::Cotangent {
         adj = adj.with_corners(faces);
-    }
-    let mut x = x0.to_vec();
-    if plan.iterations == 0 {
-        return Ok(x);
     }
     // Which vertices the volume constraint may rescale (None: all, as trimesh does).
     let mut rescale_mask: Option<Vec<bool>> = None;
@@ -128,46 +128,87 @@ pub fn smooth_in_order<T: Real>(
         }
     };
     let volume = if plan.volume_constraint { VolumeConstraint::new(x0, faces) } else { None };
-    let mut y = vec![[T::zero(); 3]; x.len()];
+    let mut x = Steps::new(x0);
     let mut scratch = clean::Scratch::default();
     let mut slot: Option<Operator> = None;
     let mut hc_buf = HcBuffers::default();
     for it in 0..plan.iterations {
         match plan.method {
             Method::Laplacian => {
-                let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
-                explicit_step(&adj, op, &x, &mut y, plan.lamb);
-                std::mem::swap(&mut x, &mut y);
+                let op = source.at(&adj, x.current(), faces, &mut scratch, &mut slot);
+                x.step(|src, out| explicit_step(&adj, op, src, out, plan.lamb));
             }
             Method::Taubin => {
-                let factors: Vec<f64> = taubin_factors(plan, it);
-                for f in factors {
-                    let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
-                    explicit_step(&adj, op, &x, &mut y, f);
-                    std::mem::swap(&mut x, &mut y);
+                for f in taubin_factors(plan, it) {
+                    let op = source.at(&adj, x.current(), faces, &mut scratch, &mut slot);
+                    x.step(|src, out| explicit_step(&adj, op, src, out, f));
                 }
             }
             Method::Hc => {
-                let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
+                let op = source.at(&adj, x.current(), faces, &mut scratch, &mut slot);
                 if plan.preset == Preset::Pymeshlab {
-                    hc_meshlab_step(&adj, op, &x, &mut y, plan.beta, &mut hc_buf);
+                    x.step(|src, out| hc_meshlab_step(&adj, op, src, out, plan.beta, &mut hc_buf));
                 } else {
-                    hc_step(&adj, op, x0, &x, &mut y, plan.alpha, plan.beta, &mut hc_buf);
+                    x.step(|src, out| hc_step(&adj, op, x0, src, out, plan.alpha, plan.beta, &mut hc_buf));
                 }
-                std::mem::swap(&mut x, &mut y);
             }
             Method::Implicit => {
-                let op = source.at(&adj, &x, faces, &mut scratch, &mut slot);
-                implicit_step(&adj, op, &mut x, plan.step, plan.tol, plan.max_iter)?;
+                let op = source.at(&adj, x.current(), faces, &mut scratch, &mut slot);
+                implicit_step(&adj, op, x.owned(), plan.step, plan.tol, plan.max_iter)?;
             }
         }
         if let Some(vc) = &volume {
-            if let Some(s) = vc.factor(&x, faces) {
-                rescale(&mut x, vc.center, s, rescale_mask.as_deref());
+            if let Some(s) = vc.factor(x.current(), faces) {
+                rescale(x.owned(), vc.center, s, rescale_mask.as_deref());
             }
         }
     }
-    Ok(x)
+    Ok(x.into_result())
+}
+
+/// The positions between steps: the caller's input until the first step (so it is never
+/// copied), then two buffers that trade places at every explicit step.
+struct Steps<'a, T> {
+    initial: &'a [Vec3<T>],
+    x: Vec<Vec3<T>>,
+    spare: Vec<Vec3<T>>,
+}
+
+impl<'a, T: Real> Steps<'a, T> {
+    fn new(initial: &'a [Vec3<T>]) -> Self {
+        Steps { initial, x: Vec::new(), spare: Vec::new() }
+    }
+
+    fn current(&self) -> &[Vec3<T>] {
+        if self.x.is_empty() {
+            self.initial
+        } else {
+            &self.x
+        }
+    }
+
+    /// out = f(current); out becomes current.
+    fn step(&mut self, f: impl FnOnce(&[Vec3<T>], &mut [Vec3<T>])) {
+        let mut out = std::mem::take(&mut self.spare);
+        if out.len() != self.initial.len() {
+            out = huge_pages::filled_vec(self.initial.len(), [T::zero(); 3]);
+        }
+        f(self.current(), &mut out);
+        self.spare = std::mem::replace(&mut self.x, out);
+    }
+
+    /// The current positions, to change in place.
+    fn owned(&mut self) -> &mut Vec<Vec3<T>> {
+        if self.x.is_empty() {
+            self.x = self.initial.to_vec();
+        }
+        &mut self.x
+    }
+
+    fn into_result(mut self) -> Vec<Vec3<T>> {
+        self.owned();
+        self.x
+    }
 }
 
 /// The step factors of one Taubin iteration: a shrink then an inflate pass, except that
@@ -182,29 +223,30 @@ fn taubin_factors(plan: &Plan, it: u32) -> Vec<f64> {
 
 /// x' = x + f (A x - x).
 fn explicit_step<T: Real>(adj: &Adjacency, op: &Operator, x: &[Vec3<T>], out: &mut [Vec3<T>], f: f64) {
-    par_rows(out, |i| {
+    par_rows_gathering(out, adj, x, |i| {
         let a = op.row(adj, x, i);
         let xi = real::to_f64(x[i]);
         from_f64([xi[0] + f * (a[0] - xi[0]), xi[1] + f * (a[1] - xi[1]), xi[2] + f * (a[2] - xi[2])])
     });
 }
 
-/// The two f64 fields an HC step needs, kept from step to step.
+/// The f64 field an HC step keeps between its two passes, reused from step to step.
 #[derive(Default)]
 struct HcBuffers {
-    p: Vec<[f64; 3]>,
     b: Vec<[f64; 3]>,
 }
 
 impl HcBuffers {
-    fn get(&mut self, n: usize) -> (&mut Vec<[f64; 3]>, &mut Vec<[f64; 3]>) {
-        self.p.resize(n, [0.0; 3]);
-        self.b.resize(n, [0.0; 3]);
-        (&mut self.p, &mut self.b)
+    fn get(&mut self, n: usize) -> &mut Vec<[f64; 3]> {
+        if self.b.len() != n {
+            self.b = huge_pages::filled_vec(n, [0.0; 3]);
+        }
+        &mut self.b
     }
 }
 
 /// Vollmer et al.: p = A x; b = p - (alpha o + (1 - alpha) x); x' = p - (beta b + (1 - beta) A b).
+/// Two passes: the first stores only b, the second gathers A b and recovers p from b.
 #[allow(clippy::too_many_arguments)]
 fn hc_step<T: Real>(
     adj: &Adjacency,
@@ -216,23 +258,27 @@ fn hc_step<T: Real>(
     beta: f64,
     buf: &mut HcBuffers,
 ) {
-    let (p, b) = buf.get(x.len());
-    par_rows_f64(p, |i| op.row(adj, x, i));
-    let p: &[[f64; 3]] = p;
-    par_rows_f64(b, |i| {
+    let anchor = |i: usize| -> [f64; 3] {
         let (oi, xi) = (real::to_f64(o[i]), real::to_f64(x[i]));
-        std::array::from_fn(|k| p[i][k] - (alpha * oi[k] + (1.0 - alpha) * xi[k]))
+        std::array::from_fn(|k| alpha * oi[k] + (1.0 - alpha) * xi[k])
+    };
+    let b = buf.get(x.len());
+    par_rows_gathering(b, adj, x, |i| {
+        let (p, q) = (op.row(adj, x, i), anchor(i));
+        std::array::from_fn(|k| p[k] - q[k])
     });
-    par_rows(out, |i| {
+    let b: &[[f64; 3]] = b;
+    par_rows_gathering(out, adj, b, |i| {
         if op.is_identity(adj, i) {
             return x[i]; // exactly, rather than x - b with b rounding to 1e-16
         }
-        let ab = op.row(adj, b, i);
-        from_f64(std::array::from_fn(|k| p[i][k] - (beta * b[i][k] + (1.0 - beta) * ab[k])))
+        let (ab, q) = (op.row(adj, b, i), anchor(i));
+        from_f64(std::array::from_fn(|k| (b[i][k] + q[k]) - (beta * b[i][k] + (1.0 - beta) * ab[k])))
     });
 }
 
-/// pymeshlab's HC: q = A x; d = A (q - x); x' = q - beta (q - x) + (1 - beta) d.
+/// pymeshlab's HC: q = A x; d = A (q - x); x' = q - beta (q - x) + (1 - beta) d. Two passes:
+/// the first stores q - x, the second gathers d and recovers q.
 fn hc_meshlab_step<T: Real>(
     adj: &Adjacency,
     op: &Operator,
@@ -241,19 +287,18 @@ fn hc_meshlab_step<T: Real>(
     beta: f64,
     buf: &mut HcBuffers,
 ) {
-    let (q, qx) = buf.get(x.len());
-    par_rows_f64(q, |i| op.row(adj, x, i));
-    let q: &[[f64; 3]] = q;
-    par_rows_f64(qx, |i| {
-        let xi = real::to_f64(x[i]);
-        std::array::from_fn(|k| q[i][k] - xi[k])
+    let qx = buf.get(x.len());
+    par_rows_gathering(qx, adj, x, |i| {
+        let (q, xi) = (op.row(adj, x, i), real::to_f64(x[i]));
+        std::array::from_fn(|k| q[k] - xi[k])
     });
-    par_rows(out, |i| {
+    let qx: &[[f64; 3]] = qx;
+    par_rows_gathering(out, adj, qx, |i| {
         if op.is_identity(adj, i) {
             return x[i];
         }
-        let d = op.row(adj, qx, i);
-        from_f64(std::array::from_fn(|k| q[i][k] - beta * qx[i][k] + (1.0 - beta) * d[k]))
+        let (d, xi) = (op.row(adj, qx, i), real::to_f64(x[i]));
+        from_f64(std::array::from_fn(|k| (qx[i][k] + xi[k]) - beta * qx[i][k] + (1.0 - beta) * d[k]))
     });
 }
 
@@ -274,14 +319,14 @@ fn implicit_step<T: Real>(
     let mut rhs = vec![[0.0f64; 3]; n];
     {
         let xr: &[Vec3<T>] = x;
-        par_rows_f64(&mut rhs, |i| {
+        par_rows_gathering(&mut rhs, adj, xr, |i| {
             let a = op.row(adj, xr, i);
             let xi = real::to_f64(xr[i]);
             std::array::from_fn(|k| s * (a[k] - xi[k]))
         });
     }
     let matvec = |v: &[[f64; 3]], out: &mut [[f64; 3]]| {
-        par_rows_f64(out, |i| {
+        par_rows_gathering(out, adj, v, |i| {
             let a = op.row(adj, v, i);
             std::array::from_fn(|k| (1.0 + s) * v[i][k] - s * a[k])
         });

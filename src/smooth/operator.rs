@@ -22,6 +22,27 @@ pub enum Operator {
     Weighted { self_w: Vec<f64>, w: Vec<f64> },
 }
 
+/// 1/k for the valences most vertices have, looked up rather than divided: three divisions
+/// per vertex cost as much as the memory traffic of a whole uniform step.
+const RECIPROCALS: [f64; 64] = {
+    let mut t = [0.0; 64];
+    let mut k = 1;
+    while k < 64 {
+        t[k] = 1.0 / k as f64;
+        k += 1;
+    }
+    t
+};
+
+#[inline]
+fn reciprocal(k: usize) -> f64 {
+    if k < RECIPROCALS.len() {
+        RECIPROCALS[k]
+    } else {
+        1.0 / k as f64
+    }
+}
+
 impl Operator {
     /// avg_i for one vertex, accumulated in f64.
     #[inline]
@@ -32,7 +53,7 @@ impl Operator {
                 if frozen[i] || slots.is_empty() {
                     return crate::real::to_f64(x[i]);
                 }
-                let k = slots.len() as f64;
+                let inv = reciprocal(slots.len());
                 let mut s = [0.0f64; 3];
                 for &j in &adj.nbrs[slots] {
                     let p = x[j as usize];
@@ -40,7 +61,7 @@ impl Operator {
                     s[1] += p[1].to_f64();
                     s[2] += p[2].to_f64();
                 }
-                [s[0] / k, s[1] / k, s[2] / k]
+                [s[0] * inv, s[1] * inv, s[2] * inv]
             }
             Operator::Weighted { self_w, w } => {
                 let own = crate::real::to_f64(x[i]);
@@ -80,8 +101,37 @@ impl Operator {
     }
 }
 
-/// Fills `out[i] = f(i)` in parallel, in fixed chunks.
-pub fn par_rows<T: Real>(out: &mut [Vec3<T>], f: impl Fn(usize) -> Vec3<T> + Sync) {
+/// Rows ahead whose neighbours are prefetched: enough to cover a memory access at the speed one
+/// row is computed.
+const PREFETCH_AHEAD: usize = 16;
+
+/// Fills `out[i] = f(i)` in parallel, in fixed chunks, where `f` gathers `x` over row i's
+/// neighbours. The neighbours of row i + PREFETCH_AHEAD are requested while row i is
+/// computed: the gathers are scattered enough that the hardware prefetcher cannot guess them,
+/// and waiting for them is most of a step's time.
+pub fn par_rows_gathering<O: Send, E: Sync>(
+    out: &mut [O],
+    adj: &Adjacency,
+    x: &[E],
+    f: impl Fn(usize) -> O + Sync,
+) {
+    let n = out.len();
+    out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
+        let base = c * ROW_CHUNK;
+        for (k, o) in chunk.iter_mut().enumerate() {
+            let i = base + k;
+            if i + PREFETCH_AHEAD < n {
+                for &j in adj.neighbours(i + PREFETCH_AHEAD) {
+                    prefetch(x.as_ptr().wrapping_add(j as usize));
+                }
+            }
+            *o = f(i);
+        }
+    });
+}
+
+/// Fills `out[i] = f(i)` in parallel, in fixed chunks, for rows that gather nothing.
+pub fn par_rows<O: Send>(out: &mut [O], f: impl Fn(usize) -> O + Sync) {
     out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
         let base = c * ROW_CHUNK;
         for (k, o) in chunk.iter_mut().enumerate() {
@@ -90,14 +140,15 @@ pub fn par_rows<T: Real>(out: &mut [Vec3<T>], f: impl Fn(usize) -> Vec3<T> + Syn
     });
 }
 
-/// Fills `out[i] = f(i)` in parallel for f64 rows (solver vectors).
-pub fn par_rows_f64(out: &mut [[f64; 3]], f: impl Fn(usize) -> [f64; 3] + Sync) {
-    out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
-        let base = c * ROW_CHUNK;
-        for (k, o) in chunk.iter_mut().enumerate() {
-            *o = f(base + k);
-        }
-    });
+#[inline(always)]
+fn prefetch<E>(p: *const E) {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: a prefetch is only a hint; it never faults, whatever the address.
+    unsafe {
+        std::arch::x86_64::_mm_prefetch(p as *const i8, std::arch::x86_64::_MM_HINT_T0)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = p;
 }
 
 #[inline]
