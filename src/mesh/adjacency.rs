@@ -35,6 +35,13 @@ struct Corners {
 impl Adjacency {
     /// Builds the one-rings (neighbours and edge face counts). Opposite corners are added by
     /// `with_corners`, since only cotangent weights need them.
+    ///
+    /// Each face corner at v contributes the vertex after v and the vertex before it (the two
+    /// face-edges at v); v's distinct neighbours are the union of those, and the number of
+    /// face-edges joining v to a neighbour is how often it occurs. Most vertices of a real mesh
+    /// are simple: the vertices after v are distinct and are the vertices before v in another
+    /// order (a closed, consistently oriented fan), so their neighbours are just the vertices
+    /// after v, each on two faces, and no general sort and merge is needed.
     pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Adjacency> {
         if faces.len() > (u32::MAX as usize) / 6 {
             return Err(Error::invalid(
@@ -42,25 +49,41 @@ impl Adjacency {
                 format!("{} faces is more than toonmesh supports", faces.len()),
             ));
         }
+        if n_vertices >= NOT_A_VERTEX as usize {
+            return Err(Error::invalid(
+                "vertices",
+                format!("{n_vertices} vertices is more than toonmesh supports"),
+            ));
+        }
         parallel::install(|| {
-            let (start, mut entries, self_edges) = half_edges(n_vertices, faces, |b, _| b);
-            // Sort each vertex's neighbour list (so nothing below depends on face order or
-            // thread count) and count its distinct neighbours.
+            let (start, corners) = corner_lists(n_vertices, faces);
+            let ring = |i: usize| &corners[start[i] as usize..start[i + 1] as usize];
             let ranges = vertex_chunks(n_vertices);
-            let mut distinct = vec![0u32; n_vertices];
-            split_by(&mut entries, &ranges, |r| start[r.start] as usize)
+            // Pass 1: how many distinct neighbours, and self-edges, per vertex.
+            let mut distinct: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
+            let mut self_edges: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
+            let mut simple: Vec<bool> = huge_pages::filled_vec(n_vertices, false);
+            split_by(&mut distinct, &ranges, |r| r.start)
                 .into_par_iter()
-                .zip(split_by(&mut distinct, &ranges, |r| r.start))
+                .zip(split_by(&mut self_edges, &ranges, |r| r.start))
+                .zip(split_by(&mut simple, &ranges, |r| r.start))
                 .zip(ranges.par_iter())
-                .for_each(|((ent, dist), r)| {
-                    let base = start[r.start] as usize;
+                .for_each_init(Vec::new, |scratch, (((dist, selfe), simple), r)| {
                     for (k, i) in r.clone().enumerate() {
-                        let e = &mut ent[start[i] as usize - base..start[i + 1] as usize - base];
-                        e.sort_unstable();
-                        dist[k] = e.chunk_by(|x, y| x == y).count() as u32;
+                        let c = ring(i);
+                        selfe[k] = c.iter().filter(|e| e[0] == i as u32).count() as u32;
+                        simple[k] = is_simple(i as u32, c);
+                        dist[k] = if simple[k] {
+                            c.len() as u32
+                        } else {
+                            general_ring(i as u32, c, scratch);
+                            runs(scratch).count() as u32
+                        };
                     }
                 });
             let offsets = prefix_sum(&distinct);
+            drop(distinct);
+            // Pass 2: the sorted neighbours and their face-edge counts.
             let slots = offsets[n_vertices] as usize;
             let mut nbrs: Vec<u32> = huge_pages::filled_vec(slots, 0);
             let mut edge_faces: Vec<u32> = huge_pages::filled_vec(slots, 0);
@@ -69,13 +92,29 @@ impl Adjacency {
                 .into_par_iter()
                 .zip(split_by(&mut edge_faces, &ranges, slot_start))
                 .zip(ranges.par_iter())
-                .for_each(|((nb, ef), r)| {
-                    let mut s = 0;
+                .for_each_init(Vec::new, |scratch, ((nb, ef), r)| {
+                    let base = offsets[r.start] as usize;
                     for i in r.clone() {
-                        for run in entries[start[i] as usize..start[i + 1] as usize].chunk_by(|x, y| x == y) {
-                            nb[s] = run[0];
-                            ef[s] = run.len() as u32;
-                            s += 1;
+                        let c = ring(i);
+                        let at = offsets[i] as usize - base..offsets[i + 1] as usize - base;
+                        let (nb, ef) = (&mut nb[at.clone()], &mut ef[at]);
+                        if simple[i] {
+                            let mut after = [NOT_A_VERTEX; 8];
+                            for (a, e) in after.iter_mut().zip(c) {
+                                *a = e[0];
+                            }
+                            sort8(&mut after);
+                            // Element loops: a call to memcpy per vertex costs more than the copy.
+                            for ((n, f), a) in nb.iter_mut().zip(ef.iter_mut()).zip(after) {
+                                *n = a;
+                                *f = 2;
+                            }
+                        } else {
+                            general_ring(i as u32, c, scratch);
+                            for (k, (v, count)) in runs(scratch).enumerate() {
+                                nb[k] = v;
+                                ef[k] = count;
+                            }
                         }
                     }
                 });
@@ -161,6 +200,115 @@ impl Adjacency {
             .map(|i| self.slots(i).any(|s| self.edge_faces[s] == 1))
             .collect()
     }
+}
+
+/// Larger than any vertex index (`build` refuses meshes that reach it): pads small rings.
+const NOT_A_VERTEX: u32 = u32::MAX - 1;
+
+/// For every face corner, (the vertex after it, the vertex before it) in its face, grouped by
+/// the corner's vertex in face order: returns (group starts, pairs).
+fn corner_lists(n: usize, faces: &[[u32; 3]]) -> (Vec<u32>, Vec<[u32; 2]>) {
+    let parts = rayon::current_num_threads().clamp(1, 8);
+    let per = faces.len().div_ceil(parts).max(1);
+    let chunks: Vec<&[[u32; 3]]> = faces.chunks(per).collect();
+    let counts: Vec<Vec<u32>> = chunks
+        .par_iter()
+        .map(|ch| {
+            let mut c = huge_pages::filled_vec(n, 0u32);
+            for f in ch.iter() {
+                for &v in f {
+                    c[v as usize] += 1;
+                }
+            }
+            c
+        })
+        .collect();
+    // start[v], and where each part writes its first corner of v (parts in face order).
+    let mut start: Vec<u32> = huge_pages::filled_vec(n + 1, 0);
+    let mut cursors: Vec<Vec<u32>> = counts.iter().map(|_| huge_pages::filled_vec(n, 0u32)).collect();
+    let mut acc = 0u32;
+    for v in 0..n {
+        start[v] = acc;
+        for (p, c) in counts.iter().enumerate() {
+            cursors[p][v] = acc;
+            acc += c[v];
+        }
+    }
+    start[n] = acc;
+    drop(counts);
+    let mut pairs: Vec<[u32; 2]> = huge_pages::with_capacity(acc as usize);
+    let out = SharedSlice(pairs.as_mut_ptr());
+    chunks.par_iter().zip(cursors.par_iter_mut()).for_each(|(ch, cur)| {
+        let out = &out;
+        for f in ch.iter() {
+            for j in 0..3 {
+                let v = f[j] as usize;
+                // SAFETY: each part writes only inside the index ranges its own cursors
+                // cover, which are disjoint from every other part's, and together they cover
+                // 0..acc exactly once.
+                unsafe { out.write(cur[v] as usize, [f[(j + 1) % 3], f[(j + 2) % 3]]) };
+                cur[v] += 1;
+            }
+        }
+    });
+    // SAFETY: every index in 0..acc was written above.
+    unsafe { pairs.set_len(acc as usize) };
+    (start, pairs)
+}
+
+/// Is v's fan simple: at most 8 corners, the vertices after v distinct and none of them v,
+/// each equal to exactly one vertex before v? Then those are v's neighbours, each on two
+/// faces. Branch-free, since which vertices fail is unpredictable.
+#[inline]
+fn is_simple(v: u32, ring: &[[u32; 2]]) -> bool {
+    if ring.len() > 8 {
+        return false;
+    }
+    let mut after = [NOT_A_VERTEX; 8];
+    let mut before = [u32::MAX; 8];
+    for (k, c) in ring.iter().enumerate() {
+        after[k] = c[0];
+        before[k] = c[1];
+    }
+    let mut ok = !ring.is_empty();
+    for i in 0..8 {
+        let (mut same, mut matched) = (0u32, 0u32);
+        for j in 0..8 {
+            same += (after[j] == after[i]) as u32;
+            matched += (before[j] == after[i]) as u32;
+        }
+        ok &= i >= ring.len() || (same == 1) & (matched == 1) & (after[i] != v);
+    }
+    ok
+}
+
+/// The face-edge ends of v's corners, v itself left out, sorted into `out`.
+fn general_ring(v: u32, ring: &[[u32; 2]], out: &mut Vec<u32>) {
+    out.clear();
+    for e in ring {
+        out.extend(e.iter().copied().filter(|&u| u != v));
+    }
+    out.sort_unstable();
+}
+
+/// Each distinct value of a sorted list with how often it occurs.
+fn runs(sorted: &[u32]) -> impl Iterator<Item = (u32, u32)> + '_ {
+    sorted.chunk_by(|a, b| a == b).map(|r| (r[0], r.len() as u32))
+}
+
+/// Sorts 8 values with a fixed network (19 comparators; checked on every 0-1 input by a
+/// test), unrolled so that they stay in registers.
+#[inline(always)]
+fn sort8(a: &mut [u32; 8]) {
+    macro_rules! exchange {
+        ($($i:literal $j:literal),*) => {$(
+            let (x, y) = (a[$i], a[$j]);
+            a[$i] = x.min(y);
+            a[$j] = x.max(y);
+        )*};
+    }
+    exchange!(0 2, 1 3, 4 6, 5 7, 0 4, 1 5, 2 6, 3 7, 0 1, 2 3, 4 5, 6 7, 2 4, 3 5, 1 4, 3 6, 1 2, 3 4,
+        5 6);
 }
 
 /// For every face-edge {a, b} (a != b) with opposite corner c, one entry at a and one at b,
@@ -286,6 +434,41 @@ fn split_by<'a, T>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_sorting_network_sorts_every_zero_one_input() {
+        for bits in 0u32..256 {
+            let mut a: [u32; 8] = std::array::from_fn(|i| (bits >> i) & 1);
+            sort8(&mut a);
+            assert!(a.windows(2).all(|w| w[0] <= w[1]), "{bits:b}");
+        }
+    }
+
+    #[test]
+    fn fans_take_the_simple_path_only_when_they_are_simple() {
+        // A closed fan of 6 around vertex 0: simple.
+        let fan: Vec<[u32; 2]> = (1..=6).map(|k| [k, (k + 4) % 6 + 1]).collect();
+        assert!(is_simple(0, &fan));
+        // An open fan (a boundary vertex), a repeated face and a degenerate one: not simple.
+        assert!(!is_simple(0, &fan[..5]));
+        let mut twice = fan.clone();
+        twice[1] = twice[0];
+        assert!(!is_simple(0, &twice));
+        assert!(!is_simple(0, &[[0, 1], [1, 0]]));
+        assert!(!is_simple(0, &[]));
+    }
+
+    #[test]
+    fn high_valence_and_mixed_vertices_match_the_simple_ones() {
+        // A closed fan of 40 triangles around vertex 0 (the general path) on a cone with apex 41.
+        let mut faces: Vec<[u32; 3]> = (1..=40).map(|k| [0, k, k % 40 + 1]).collect();
+        faces.extend((1..=40).map(|k| [41, k % 40 + 1, k]));
+        let a = Adjacency::build(42, &faces).unwrap();
+        assert_eq!(a.neighbours(0), &(1..=40).collect::<Vec<u32>>()[..]);
+        assert!(a.slots(0).all(|s| a.edge_faces[s] == 2));
+        assert_eq!(a.neighbours(5), &[0, 4, 6, 41]);
+        assert!(a.boundary_vertices().iter().all(|b| !b));
+    }
 
     #[test]
     fn square_of_two_triangles() {
