@@ -20,6 +20,10 @@ pub struct Adjacency {
     pub edge_faces: Vec<u32>,
     /// Per vertex: how many face-edges (a, a) of degenerate faces start and end at it.
     pub self_edges: Vec<u32>,
+    /// Is every vertex's fan closed and consistently oriented (so no boundary, no non-manifold
+    /// edge, no degenerate face and no unreferenced vertex)? Then each vertex's outgoing
+    /// half-edges reach exactly its neighbours, once each.
+    pub all_fans_closed: bool,
     corners: Option<Corners>,
 }
 
@@ -83,6 +87,7 @@ impl Adjacency {
                 });
             let offsets = prefix_sum(&distinct);
             drop(distinct);
+            let all_fans_closed = simple.par_iter().all(|&s| s);
             // Pass 2: the sorted neighbours and their face-edge counts.
             let slots = offsets[n_vertices] as usize;
             let mut nbrs: Vec<u32> = huge_pages::filled_vec(slots, 0);
@@ -98,7 +103,7 @@ impl Adjacency {
                         let c = ring(i);
                         let at = offsets[i] as usize - base..offsets[i + 1] as usize - base;
                         let (nb, ef) = (&mut nb[at.clone()], &mut ef[at]);
-                        if simple[i] {
+                        if simple[i] && c.len() <= 8 {
                             let mut after = [NOT_A_VERTEX; 8];
                             for (a, e) in after.iter_mut().zip(c) {
                                 *a = e[0];
@@ -118,7 +123,7 @@ impl Adjacency {
                         }
                     }
                 });
-            Ok(Adjacency { offsets, nbrs, edge_faces, self_edges, corners: None })
+            Ok(Adjacency { offsets, nbrs, edge_faces, self_edges, all_fans_closed, corners: None })
         })
     }
 
@@ -256,13 +261,19 @@ fn corner_lists(n: usize, faces: &[[u32; 3]]) -> (Vec<u32>, Vec<[u32; 2]>) {
     (start, pairs)
 }
 
-/// Is v's fan simple: at most 8 corners, the vertices after v distinct and none of them v,
-/// each equal to exactly one vertex before v? Then those are v's neighbours, each on two
-/// faces. Branch-free, since which vertices fail is unpredictable.
+/// Is v's fan closed and consistently oriented: the vertices after v distinct and none of them
+/// v, each equal to exactly one vertex before v? Then those are v's neighbours, each on two
+/// faces. Branch-free for up to 8 corners, since which vertices fail is unpredictable.
 #[inline]
 fn is_simple(v: u32, ring: &[[u32; 2]]) -> bool {
     if ring.len() > 8 {
-        return false;
+        let sorted = |k: usize| {
+            let mut s: Vec<u32> = ring.iter().map(|e| e[k]).collect();
+            s.sort_unstable();
+            s
+        };
+        let (after, before) = (sorted(0), sorted(1));
+        return after == before && after.windows(2).all(|w| w[0] != w[1]) && !after.contains(&v);
     }
     let mut after = [NOT_A_VERTEX; 8];
     let mut before = [u32::MAX; 8];
@@ -467,6 +478,8 @@ mod tests {
         assert_eq!(a.neighbours(0), &(1..=40).collect::<Vec<u32>>()[..]);
         assert!(a.slots(0).all(|s| a.edge_faces[s] == 2));
         assert_eq!(a.neighbours(5), &[0, 4, 6, 41]);
+        assert!(a.all_fans_closed);
+        assert!(!Adjacency::build(43, &faces).unwrap().all_fans_closed); // an unreferenced vertex
         assert!(a.boundary_vertices().iter().all(|b| !b));
     }
 

@@ -3,7 +3,8 @@
 //! Uniform: neighbours come from the directed half-edges f0->f1, f1->f2, f2->f0; row i has
 //! 1/d_i for each distinct target, where d_i counts i's outgoing half-edges with duplicates.
 //! Rows sum below one where half-edges repeat, and unreferenced vertices get an empty row,
-//! so such vertices drift toward the origin exactly as they do in trimesh.
+//! so such vertices drift toward the origin exactly as they do in trimesh. On a mesh whose fans
+//! are all closed and consistently oriented, that is the plain neighbour mean.
 //! Distance (`equal_weight=False`): distinct undirected neighbours, w = 1/max(1e-6, |xi - xj|)
 //! from the initial positions, normalised per row. Pinned rows are the identity.
 
@@ -13,6 +14,10 @@ use crate::real::{self, Real, Vec3};
 
 pub fn uniform(adj: &Adjacency, faces: &[[u32; 3]], pinned: Option<&[bool]>) -> Operator {
     let n = adj.n_vertices();
+    if adj.all_fans_closed {
+        // Outgoing half-edges reach each neighbour once: the plain neighbour mean.
+        return Operator::Uniform { frozen: pinned.map_or_else(|| vec![false; n], <[bool]>::to_vec) };
+    }
     let mut outgoing = vec![0u32; n];
     let mut targets: Vec<Vec<u32>> = vec![Vec::new(); n];
     for f in faces {
