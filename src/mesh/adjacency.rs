@@ -63,21 +63,53 @@ impl Adjacency {
             let (start, corners) = corner_lists(n_vertices, faces);
             let ring = |i: usize| &corners[start[i] as usize..start[i + 1] as usize];
             let ranges = vertex_chunks(n_vertices);
-            // Pass 1: how many distinct neighbours, and self-edges, per vertex.
-            let mut distinct: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
+            // Pass 1: classify every fan and count its self-edges. A closed fan has one
+            // neighbour per corner, so its sorted neighbours go straight to their final place
+            // if every fan turns out closed: the corner lists' offsets.
             let mut self_edges: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
             let mut simple: Vec<bool> = huge_pages::filled_vec(n_vertices, false);
-            split_by(&mut distinct, &ranges, |r| r.start)
+            let mut nbrs: Vec<u32> = huge_pages::filled_vec(corners.len(), 0);
+            let corner_start = |r: &std::ops::Range<usize>| start[r.start] as usize;
+            split_by(&mut self_edges, &ranges, |r| r.start)
                 .into_par_iter()
-                .zip(split_by(&mut self_edges, &ranges, |r| r.start))
                 .zip(split_by(&mut simple, &ranges, |r| r.start))
+                .zip(split_by(&mut nbrs, &ranges, corner_start))
                 .zip(ranges.par_iter())
-                .for_each_init(Vec::new, |scratch, (((dist, selfe), simple), r)| {
+                .for_each_init(Vec::new, |scratch, (((selfe, simple), nb), r)| {
+                    let base = start[r.start] as usize;
                     for (k, i) in r.clone().enumerate() {
                         let c = ring(i);
                         selfe[k] = c.iter().filter(|e| e[0] == i as u32).count() as u32;
                         simple[k] = is_simple(i as u32, c);
-                        dist[k] = if simple[k] {
+                        if simple[k] {
+                            let nb = &mut nb[start[i] as usize - base..start[i + 1] as usize - base];
+                            write_closed_fan(i as u32, c, nb, scratch);
+                        }
+                    }
+                });
+            let all_fans_closed = simple.par_iter().all(|&s| s);
+            if all_fans_closed {
+                let edge_faces = huge_pages::filled_vec(corners.len(), 2);
+                return Ok(Adjacency {
+                    offsets: start,
+                    nbrs,
+                    edge_faces,
+                    self_edges,
+                    all_fans_closed,
+                    corners: None,
+                });
+            }
+            drop(nbrs);
+            // Otherwise, pass 2: how many distinct neighbours per vertex; pass 3: the sorted
+            // neighbours and their face-edge counts.
+            let mut distinct: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
+            split_by(&mut distinct, &ranges, |r| r.start)
+                .into_par_iter()
+                .zip(ranges.par_iter())
+                .for_each_init(Vec::new, |scratch, (dist, r)| {
+                    for (k, i) in r.clone().enumerate() {
+                        let c = ring(i);
+                        dist[k] = if simple[i] {
                             c.len() as u32
                         } else {
                             general_ring(i as u32, c, scratch);
@@ -87,8 +119,6 @@ impl Adjacency {
                 });
             let offsets = prefix_sum(&distinct);
             drop(distinct);
-            let all_fans_closed = simple.par_iter().all(|&s| s);
-            // Pass 2: the sorted neighbours and their face-edge counts.
             let slots = offsets[n_vertices] as usize;
             let mut nbrs: Vec<u32> = huge_pages::filled_vec(slots, 0);
             let mut edge_faces: Vec<u32> = huge_pages::filled_vec(slots, 0);
@@ -103,17 +133,9 @@ impl Adjacency {
                         let c = ring(i);
                         let at = offsets[i] as usize - base..offsets[i + 1] as usize - base;
                         let (nb, ef) = (&mut nb[at.clone()], &mut ef[at]);
-                        if simple[i] && c.len() <= 8 {
-                            let mut after = [NOT_A_VERTEX; 8];
-                            for (a, e) in after.iter_mut().zip(c) {
-                                *a = e[0];
-                            }
-                            sort8(&mut after);
-                            // Element loops: a call to memcpy per vertex costs more than the copy.
-                            for ((n, f), a) in nb.iter_mut().zip(ef.iter_mut()).zip(after) {
-                                *n = a;
-                                *f = 2;
-                            }
+                        if simple[i] {
+                            write_closed_fan(i as u32, c, nb, scratch);
+                            ef.fill(2);
                         } else {
                             general_ring(i as u32, c, scratch);
                             for (k, (v, count)) in runs(scratch).enumerate() {
@@ -291,6 +313,27 @@ fn is_simple(v: u32, ring: &[[u32; 2]]) -> bool {
         ok &= i >= ring.len() || (same == 1) & (matched == 1) & (after[i] != v);
     }
     ok
+}
+
+/// Writes the sorted neighbours of a closed fan (the vertices after v, one per corner).
+#[inline]
+fn write_closed_fan(v: u32, ring: &[[u32; 2]], out: &mut [u32], scratch: &mut Vec<u32>) {
+    if ring.len() <= 8 {
+        let mut after = [NOT_A_VERTEX; 8];
+        for (a, e) in after.iter_mut().zip(ring) {
+            *a = e[0];
+        }
+        sort8(&mut after);
+        // An element loop: a call to memcpy per vertex costs more than the copy.
+        for (o, a) in out.iter_mut().zip(after) {
+            *o = a;
+        }
+    } else {
+        general_ring(v, ring, scratch);
+        for (o, (u, _)) in out.iter_mut().zip(runs(scratch)) {
+            *o = u;
+        }
+    }
 }
 
 /// The face-edge ends of v's corners, v itself left out, sorted into `out`.

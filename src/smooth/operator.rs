@@ -45,7 +45,7 @@ fn reciprocal(k: usize) -> f64 {
 
 impl Operator {
     /// avg_i for one vertex, accumulated in f64.
-    #[inline]
+    #[inline(always)]
     pub fn row<T: Real>(&self, adj: &Adjacency, x: &[Vec3<T>], i: usize) -> [f64; 3] {
         let slots = adj.slots(i);
         match self {
