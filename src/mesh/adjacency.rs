@@ -116,6 +116,17 @@ impl Adjacency {
         }
     }
 
+    /// The opposite corners of a run of consecutive slots, all together: slot s's own come
+    /// next, `edge_faces[s]` of them, so a pass over slots in order walks this without looking
+    /// up each slot's offsets. Needs `with_corners` first (an empty slice otherwise).
+    #[inline]
+    pub fn corners_of_run(&self, slots: std::ops::Range<usize>) -> &[u32] {
+        match &self.corners {
+            Some(c) => &c.corner[c.offsets[slots.start] as usize..c.offsets[slots.end] as usize],
+            None => &[],
+        }
+    }
+
     /// Adds the opposite corners of every face-edge (for cotangent weights).
     pub fn with_corners(mut self, faces: &[[u32; 3]]) -> Self {
         if self.corners.is_none() {

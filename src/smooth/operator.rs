@@ -103,7 +103,7 @@ impl Operator {
 
 /// Rows ahead whose neighbours are prefetched: enough to cover a memory access at the speed one
 /// row is computed.
-const PREFETCH_AHEAD: usize = 16;
+pub const PREFETCH_AHEAD: usize = 16;
 
 /// Fills `out[i] = f(i)` in parallel, in fixed chunks, where `f` gathers `x` over row i's
 /// neighbours. The neighbours of row i + PREFETCH_AHEAD are requested while row i is
@@ -141,7 +141,7 @@ pub fn par_rows<O: Send>(out: &mut [O], f: impl Fn(usize) -> O + Sync) {
 }
 
 #[inline(always)]
-fn prefetch<E>(p: *const E) {
+pub fn prefetch<E>(p: *const E) {
     #[cfg(target_arch = "x86_64")]
     // SAFETY: a prefetch is only a hint; it never faults, whatever the address.
     unsafe {
