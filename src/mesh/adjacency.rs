@@ -159,8 +159,16 @@ impl Adjacency {
                 acc += e;
             }
             offsets.push(acc);
-            let corner: Vec<u32> = entries.par_iter().map(|e| *e as u32).collect();
-            let opposite = corner.par_iter().map(|&c| faces[c as usize / 3][c as usize % 3]).collect();
+            // Into huge-page buffers, written by every thread: these arrays are as long as the
+            // entries, and first-touch faults on them cost as much as filling them.
+            let mut corner: Vec<u32> = huge_pages::filled_vec(entries.len(), 0);
+            corner.par_iter_mut().zip(entries.par_iter()).for_each(|(c, e)| *c = *e as u32);
+            drop(entries);
+            let mut opposite: Vec<u32> = huge_pages::filled_vec(corner.len(), 0);
+            opposite
+                .par_iter_mut()
+                .zip(corner.par_iter())
+                .for_each(|(o, &c)| *o = faces[c as usize / 3][c as usize % 3]);
             Corners { offsets, opposite, corner }
         })
     }

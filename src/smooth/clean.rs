@@ -10,7 +10,7 @@
 
 use rayon::prelude::*;
 
-use super::operator::{prefetch, Operator, PREFETCH_AHEAD, ROW_CHUNK};
+use super::operator::{prefetch, weighted_average, Operator, PREFETCH_AHEAD, ROW_CHUNK};
 use super::options::{Boundary, Weights};
 use crate::mesh::{Adjacency, Bounds};
 use crate::real::{self, Real, Vec3};
@@ -53,6 +53,103 @@ impl Scratch {
     }
 }
 
+/// The clean rows at positions `x`: what decides each row's weights, with the quantities the
+/// whole step shares (each face's cotangents) already computed.
+pub struct Rows<'a, T> {
+    adj: &'a Adjacency,
+    x: &'a [Vec3<T>],
+    face_cot: &'a [f64],
+    weights: Weights,
+    boundary: Boundary,
+    /// Floor of a distance, for inverse-distance weights.
+    tiny: f64,
+    frozen: &'a [bool],
+    is_boundary: &'a [bool],
+}
+
+impl<'a, T: Real> Rows<'a, T> {
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        adj: &'a Adjacency,
+        x: &'a [Vec3<T>],
+        faces: &[[u32; 3]],
+        weights: Weights,
+        boundary: Boundary,
+        frozen: &'a [bool],
+        is_boundary: &'a [bool],
+        face_cot: &'a mut Vec<f64>,
+    ) -> Self {
+        // Only inverse-distance weights need a length scale; the box costs a pass over x.
+        let tiny = match weights {
+            Weights::Distance => 1e-12 * Bounds::of(x).diagonal().max(f64::MIN_POSITIVE),
+            _ => 0.0,
+        };
+        if weights == Weights::Cotangent {
+            // Each corner's cotangent once per face, then gathered per edge.
+            face_cotangents_into(x, faces, face_cot);
+        }
+        Rows { adj, x, face_cot, weights, boundary, tiny, frozen, is_boundary }
+    }
+
+    /// Requests what row i will read, a few rows before it is filled: the corners'
+    /// cotangents are scattered over the face array, as the neighbours' positions are over x.
+    #[inline]
+    fn prefetch(&self, i: usize) {
+        if self.weights == Weights::Cotangent {
+            for &c in self.adj.corners_of_run(self.adj.slots(i)) {
+                prefetch(self.face_cot.as_ptr().wrapping_add(c as usize));
+            }
+        }
+    }
+
+    /// Writes row i's neighbour weights and returns its own weight.
+    #[inline]
+    fn fill(&self, i: usize, row: &mut [f64]) -> f64 {
+        let adj = self.adj;
+        let slots = adj.slots(i);
+        if self.frozen[i] {
+            row.fill(0.0);
+            return 1.0;
+        }
+        if self.boundary == Boundary::Slide && self.is_boundary[i] {
+            // Along the boundary curve only: the vertex slides along its border edges.
+            for (r, &e) in row.iter_mut().zip(&adj.edge_faces[slots]) {
+                *r = if e == 1 { 1.0 } else { 0.0 };
+            }
+        } else {
+            match self.weights {
+                Weights::Uniform => row.fill(1.0),
+                Weights::Distance => {
+                    let xi = real::to_f64(self.x[i]);
+                    for (r, &j) in row.iter_mut().zip(&adj.nbrs[slots]) {
+                        let xj = real::to_f64(self.x[j as usize]);
+                        *r = 1.0 / real::norm(real::sub(xi, xj)).max(self.tiny);
+                    }
+                }
+                Weights::Cotangent => {
+                    // The row's corners lie together, slot after slot: walk them in step.
+                    let mut corners = adj.corners_of_run(slots.clone());
+                    for (r, &e) in row.iter_mut().zip(&adj.edge_faces[slots]) {
+                        let (here, next) = corners.split_at(e as usize);
+                        corners = next;
+                        let c: f64 = here.iter().map(|&k| self.face_cot[k as usize]).sum();
+                        *r = c.max(0.0);
+                    }
+                }
+            }
+        }
+        let mut total: f64 = row.iter().sum();
+        if !(total > 0.0 && total.is_finite()) {
+            row.fill(1.0);
+            total = row.len() as f64;
+        }
+        for v in row.iter_mut() {
+            *v /= total;
+        }
+        0.0
+    }
+}
+
 /// Builds the clean operator for the current positions `x`.
 #[allow(clippy::too_many_arguments)]
 pub fn operator<T: Real>(
@@ -69,20 +166,11 @@ pub fn operator<T: Real>(
         return Operator::Uniform { frozen: frozen.to_vec() };
     }
     let n = adj.n_vertices();
-    // Only inverse-distance weights need a length scale; the box costs a pass over x.
-    let tiny = match weights {
-        Weights::Distance => 1e-12 * Bounds::of(x).diagonal().max(f64::MIN_POSITIVE),
-        _ => 0.0,
-    };
-    if weights == Weights::Cotangent {
-        // Each corner's cotangent once per face, then gathered per edge.
-        face_cotangents_into(x, faces, &mut scratch.face_cot);
-    }
-    let face_cot = &scratch.face_cot;
     let mut self_w = std::mem::take(&mut scratch.self_w);
     let mut w = std::mem::take(&mut scratch.w);
     refill(&mut self_w, n);
     refill(&mut w, adj.nbrs.len());
+    let rows = Rows::new(adj, x, faces, weights, boundary, frozen, is_boundary, &mut scratch.face_cot);
     // Rows are filled in chunks of vertices; each chunk owns a contiguous run of slots.
     let chunks: Vec<std::ops::Range<usize>> =
         (0..n.div_ceil(ROW_CHUNK)).map(|c| c * ROW_CHUNK..((c + 1) * ROW_CHUNK).min(n)).collect();
@@ -94,25 +182,56 @@ pub fn operator<T: Real>(
         w_chunks.push(head);
         rest = tail;
     }
-    let rule = RowRule { weights, boundary, tiny };
     self_w.par_chunks_mut(ROW_CHUNK).zip(w_chunks.into_par_iter()).zip(chunks.par_iter()).for_each(
         |((sw_chunk, w_chunk), r)| {
             let base = adj.offsets[r.start] as usize;
             for (k, i) in r.clone().enumerate() {
-                if weights == Weights::Cotangent && i + PREFETCH_AHEAD < r.end {
-                    // The corners' cotangents are scattered over the face array: request
-                    // them a few rows ahead, as the steps do for the neighbours' positions.
-                    for &c in adj.corners_of_run(adj.slots(i + PREFETCH_AHEAD)) {
-                        prefetch(face_cot.as_ptr().wrapping_add(c as usize));
-                    }
+                if i + PREFETCH_AHEAD < r.end {
+                    rows.prefetch(i + PREFETCH_AHEAD);
                 }
                 let slots = adj.slots(i);
-                let row = &mut w_chunk[slots.start - base..slots.end - base];
-                sw_chunk[k] = rule.fill(adj, x, face_cot, i, frozen[i], is_boundary[i], row);
+                sw_chunk[k] = rows.fill(i, &mut w_chunk[slots.start - base..slots.end - base]);
             }
         },
     );
     Operator::Weighted { self_w, w }
+}
+
+/// out[i] = f(i, avg_i) with avg = A x for the clean operator at `x`, each row built and used
+/// at once: the same numbers as `operator` then `Operator::row`, without writing the weights
+/// out and reading them back.
+#[allow(clippy::too_many_arguments)]
+pub fn map_averages<T: Real, O: Send>(
+    adj: &Adjacency,
+    x: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    weights: Weights,
+    boundary: Boundary,
+    frozen: &[bool],
+    is_boundary: &[bool],
+    scratch: &mut Scratch,
+    out: &mut [O],
+    f: impl Fn(usize, [f64; 3]) -> O + Sync,
+) {
+    let n = out.len();
+    let rows = Rows::new(adj, x, faces, weights, boundary, frozen, is_boundary, &mut scratch.face_cot);
+    out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
+        let base = c * ROW_CHUNK;
+        let mut row = Vec::new();
+        for (k, o) in chunk.iter_mut().enumerate() {
+            let i = base + k;
+            if i + PREFETCH_AHEAD < n {
+                rows.prefetch(i + PREFETCH_AHEAD);
+                for &j in adj.neighbours(i + PREFETCH_AHEAD) {
+                    prefetch(x.as_ptr().wrapping_add(j as usize));
+                }
+            }
+            row.clear();
+            row.resize(adj.slots(i).len(), 0.0);
+            let own = rows.fill(i, &mut row);
+            *o = f(i, weighted_average(adj.neighbours(i), x, i, own, &row));
+        }
+    });
 }
 
 /// Makes `v` hold `n` elements, reusing its memory; a first allocation is a huge-page one,
@@ -122,72 +241,6 @@ fn refill(v: &mut Vec<f64>, n: usize) {
         *v = crate::huge_pages::filled_vec(n, 0.0);
     } else {
         v.resize(n, 0.0);
-    }
-}
-
-/// What decides a row's weights, fixed for a whole operator.
-struct RowRule {
-    weights: Weights,
-    boundary: Boundary,
-    /// Floor of a distance, for inverse-distance weights.
-    tiny: f64,
-}
-
-impl RowRule {
-    /// Writes row i's neighbour weights and returns its own weight.
-    #[allow(clippy::too_many_arguments)]
-    #[inline]
-    fn fill<T: Real>(
-        &self,
-        adj: &Adjacency,
-        x: &[Vec3<T>],
-        face_cot: &[f64],
-        i: usize,
-        frozen: bool,
-        on_boundary: bool,
-        row: &mut [f64],
-    ) -> f64 {
-        let slots = adj.slots(i);
-        if frozen {
-            row.fill(0.0);
-            return 1.0;
-        }
-        if self.boundary == Boundary::Slide && on_boundary {
-            // Along the boundary curve only: the vertex slides along its border edges.
-            for (r, &e) in row.iter_mut().zip(&adj.edge_faces[slots]) {
-                *r = if e == 1 { 1.0 } else { 0.0 };
-            }
-        } else {
-            match self.weights {
-                Weights::Uniform => row.fill(1.0),
-                Weights::Distance => {
-                    let xi = real::to_f64(x[i]);
-                    for (r, &j) in row.iter_mut().zip(&adj.nbrs[slots]) {
-                        let xj = real::to_f64(x[j as usize]);
-                        *r = 1.0 / real::norm(real::sub(xi, xj)).max(self.tiny);
-                    }
-                }
-                Weights::Cotangent => {
-                    // The row's corners lie together, slot after slot: walk them in step.
-                    let mut corners = adj.corners_of_run(slots.clone());
-                    for (r, &e) in row.iter_mut().zip(&adj.edge_faces[slots]) {
-                        let (here, next) = corners.split_at(e as usize);
-                        corners = next;
-                        let c: f64 = here.iter().map(|&k| face_cot[k as usize]).sum();
-                        *r = c.max(0.0);
-                    }
-                }
-            }
-        }
-        let mut total: f64 = row.iter().sum();
-        if !(total > 0.0 && total.is_finite()) {
-            row.fill(1.0);
-            total = row.len() as f64;
-        }
-        for v in row.iter_mut() {
-            *v /= total;
-        }
-        0.0
     }
 }
 

@@ -64,22 +64,26 @@ impl Operator {
                 [s[0] * inv, s[1] * inv, s[2] * inv]
             }
             Operator::Weighted { self_w, w } => {
-                let own = crate::real::to_f64(x[i]);
-                let a = self_w[i];
-                let mut s = [a * own[0], a * own[1], a * own[2]];
-                for s_idx in slots {
-                    let ws = w[s_idx];
-                    if ws != 0.0 {
-                        let p = x[adj.nbrs[s_idx] as usize];
-                        s[0] += ws * p[0].to_f64();
-                        s[1] += ws * p[1].to_f64();
-                        s[2] += ws * p[2].to_f64();
-                    }
-                }
-                s
+                weighted_average(&adj.nbrs[slots.clone()], x, i, self_w[i], &w[slots])
             }
         }
     }
+}
+
+/// a x_i + sum over k of w[k] x_nbrs[k]: one weighted row applied, in f64.
+#[inline]
+pub fn weighted_average<T: Real>(nbrs: &[u32], x: &[Vec3<T>], i: usize, a: f64, w: &[f64]) -> [f64; 3] {
+    let own = crate::real::to_f64(x[i]);
+    let mut s = [a * own[0], a * own[1], a * own[2]];
+    for (&ws, &j) in w.iter().zip(nbrs) {
+        if ws != 0.0 {
+            let p = x[j as usize];
+            s[0] += ws * p[0].to_f64();
+            s[1] += ws * p[1].to_f64();
+            s[2] += ws * p[2].to_f64();
+        }
+    }
+    s
 }
 
 impl Operator {
