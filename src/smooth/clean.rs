@@ -10,7 +10,7 @@
 
 use rayon::prelude::*;
 
-use super::operator::{prefetch, weighted_average, Operator, PREFETCH_AHEAD, ROW_CHUNK};
+use super::operator::{prefetch, refill, weighted_average, Operator, PREFETCH_AHEAD, ROW_CHUNK};
 use super::options::{Boundary, Weights};
 use crate::mesh::{Adjacency, Bounds};
 use crate::real::{self, Real, Vec3};
@@ -38,7 +38,8 @@ pub fn frozen_vertices(
 /// page-fault) tens of megabytes per step on large meshes.
 #[derive(Default)]
 pub struct Scratch {
-    face_cot: Vec<f64>,
+    /// One value per face corner (face * 3 + k): the corners' cotangents.
+    pub face_cot: Vec<f64>,
     self_w: Vec<f64>,
     w: Vec<f64>,
 }
@@ -50,6 +51,11 @@ impl Scratch {
             self.self_w = self_w;
             self.w = w;
         }
+    }
+
+    /// The weight buffers of an earlier operator, for a new one to fill.
+    pub fn take_weights(&mut self) -> (Vec<f64>, Vec<f64>) {
+        (std::mem::take(&mut self.self_w), std::mem::take(&mut self.w))
     }
 }
 
@@ -166,35 +172,14 @@ pub fn operator<T: Real>(
         return Operator::Uniform { frozen: frozen.to_vec() };
     }
     let n = adj.n_vertices();
-    let mut self_w = std::mem::take(&mut scratch.self_w);
-    let mut w = std::mem::take(&mut scratch.w);
-    refill(&mut self_w, n);
-    refill(&mut w, adj.nbrs.len());
+    let (self_w, w) = scratch.take_weights();
     let rows = Rows::new(adj, x, faces, weights, boundary, frozen, is_boundary, &mut scratch.face_cot);
-    // Rows are filled in chunks of vertices; each chunk owns a contiguous run of slots.
-    let chunks: Vec<std::ops::Range<usize>> =
-        (0..n.div_ceil(ROW_CHUNK)).map(|c| c * ROW_CHUNK..((c + 1) * ROW_CHUNK).min(n)).collect();
-    let mut w_chunks = Vec::with_capacity(chunks.len());
-    let mut rest: &mut [f64] = &mut w;
-    for r in &chunks {
-        let len = (adj.offsets[r.end] - adj.offsets[r.start]) as usize;
-        let (head, tail) = rest.split_at_mut(len);
-        w_chunks.push(head);
-        rest = tail;
-    }
-    self_w.par_chunks_mut(ROW_CHUNK).zip(w_chunks.into_par_iter()).zip(chunks.par_iter()).for_each(
-        |((sw_chunk, w_chunk), r)| {
-            let base = adj.offsets[r.start] as usize;
-            for (k, i) in r.clone().enumerate() {
-                if i + PREFETCH_AHEAD < r.end {
-                    rows.prefetch(i + PREFETCH_AHEAD);
-                }
-                let slots = adj.slots(i);
-                sw_chunk[k] = rows.fill(i, &mut w_chunk[slots.start - base..slots.end - base]);
-            }
-        },
-    );
-    Operator::Weighted { self_w, w }
+    Operator::from_rows_par(adj, None, self_w, w, |i, row| {
+        if i + PREFETCH_AHEAD < n {
+            rows.prefetch(i + PREFETCH_AHEAD);
+        }
+        rows.fill(i, row)
+    })
 }
 
 /// out[i] = f(i, avg_i) with avg = A x for the clean operator at `x`, each row built and used
@@ -232,16 +217,6 @@ pub fn map_averages<T: Real, O: Send>(
             *o = f(i, weighted_average(adj.neighbours(i), x, i, own, &row));
         }
     });
-}
-
-/// Makes `v` hold `n` elements, reusing its memory; a first allocation is a huge-page one,
-/// since these buffers are tens of megabytes on large meshes.
-fn refill(v: &mut Vec<f64>, n: usize) {
-    if v.capacity() < n {
-        *v = crate::huge_pages::filled_vec(n, 0.0);
-    } else {
-        v.resize(n, 0.0);
-    }
 }
 
 /// The bounded cotangent of each face's three angles, indexed face * 3 + corner.

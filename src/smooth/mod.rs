@@ -53,7 +53,7 @@ impl Source {
                 clean::operator(adj, x, faces, *weights, *boundary, frozen, is_boundary, scratch)
             }
             Source::MeshlabCotangent { boundary, pinned } => {
-                meshlab::laplacian(adj, x, true, *boundary, pinned.as_deref())
+                meshlab::laplacian(adj, x, faces, true, *boundary, pinned.as_deref(), scratch)
             }
         };
         slot.insert(fresh)
@@ -148,8 +148,16 @@ pub fn smooth_in_order<T: Real>(
                 Method::Laplacian if plan.weights == Weights::Cotangent => {
                     Source::MeshlabCotangent { boundary, pinned: pinned.map(|p| p.to_vec()) }
                 }
-                Method::Laplacian => Source::Fixed(meshlab::laplacian(&adj, x0, false, boundary, pinned)),
-                Method::Taubin => Source::Fixed(meshlab::taubin_average(&adj, x0, pinned)),
+                Method::Laplacian => Source::Fixed(meshlab::laplacian(
+                    &adj,
+                    x0,
+                    faces,
+                    false,
+                    boundary,
+                    pinned,
+                    &mut clean::Scratch::default(),
+                )),
+                Method::Taubin => Source::Fixed(meshlab::taubin_average(&adj, pinned)),
                 _ => Source::Fixed(meshlab::hc_average(&adj, pinned)),
             }
         }
