@@ -182,6 +182,17 @@ impl Adjacency {
         }
     }
 
+    /// The opposite corners of a run of consecutive slots, all together: slot s's own come
+    /// next, `edge_faces[s]` of them, so a pass over slots in order walks this without looking
+    /// up each slot's offsets. Needs `with_corners` first (an empty slice otherwise).
+    #[inline]
+    pub fn corners_of_run(&self, slots: std::ops::Range<usize>) -> &[u32] {
+        match &self.corners {
+            Some(c) => &c.corner[c.offsets[slots.start] as usize..c.offsets[slots.end] as usize],
+            None => &[],
+        }
+    }
+
     /// Adds the opposite corners of every face-edge (for cotangent weights).
     pub fn with_corners(mut self, faces: &[[u32; 3]]) -> Self {
         if self.corners.is_none() {
@@ -214,8 +225,16 @@ impl Adjacency {
                 acc += e;
             }
             offsets.push(acc);
-            let corner: Vec<u32> = entries.par_iter().map(|e| *e as u32).collect();
-            let opposite = corner.par_iter().map(|&c| faces[c as usize / 3][c as usize % 3]).collect();
+            // Into huge-page buffers, written by every thread: these arrays are as long as the
+            // entries, and first-touch faults on them cost as much as filling them.
+            let mut corner: Vec<u32> = huge_pages::filled_vec(entries.len(), 0);
+            corner.par_iter_mut().zip(entries.par_iter()).for_each(|(c, e)| *c = *e as u32);
+            drop(entries);
+            let mut opposite: Vec<u32> = huge_pages::filled_vec(corner.len(), 0);
+            opposite
+                .par_iter_mut()
+                .zip(corner.par_iter())
+                .for_each(|(o, &c)| *o = faces[c as usize / 3][c as usize % 3]);
             Corners { offsets, opposite, corner }
         })
     }

@@ -10,7 +10,7 @@
 
 use rayon::prelude::*;
 
-use super::operator::{Operator, ROW_CHUNK};
+use super::operator::{prefetch, refill, weighted_average, Operator, PREFETCH_AHEAD, ROW_CHUNK};
 use super::options::{Boundary, Weights};
 use crate::mesh::{Adjacency, Bounds};
 use crate::real::{self, Real, Vec3};
@@ -38,7 +38,8 @@ pub fn frozen_vertices(
 /// page-fault) tens of megabytes per step on large meshes.
 #[derive(Default)]
 pub struct Scratch {
-    face_cot: Vec<f64>,
+    /// One value per face corner (face * 3 + k): the corners' cotangents.
+    pub face_cot: Vec<f64>,
     self_w: Vec<f64>,
     w: Vec<f64>,
 }
@@ -50,6 +51,108 @@ impl Scratch {
             self.self_w = self_w;
             self.w = w;
         }
+    }
+
+    /// The weight buffers of an earlier operator, for a new one to fill.
+    pub fn take_weights(&mut self) -> (Vec<f64>, Vec<f64>) {
+        (std::mem::take(&mut self.self_w), std::mem::take(&mut self.w))
+    }
+}
+
+/// The clean rows at positions `x`: what decides each row's weights, with the quantities the
+/// whole step shares (each face's cotangents) already computed.
+pub struct Rows<'a, T> {
+    adj: &'a Adjacency,
+    x: &'a [Vec3<T>],
+    face_cot: &'a [f64],
+    weights: Weights,
+    boundary: Boundary,
+    /// Floor of a distance, for inverse-distance weights.
+    tiny: f64,
+    frozen: &'a [bool],
+    is_boundary: &'a [bool],
+}
+
+impl<'a, T: Real> Rows<'a, T> {
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        adj: &'a Adjacency,
+        x: &'a [Vec3<T>],
+        faces: &[[u32; 3]],
+        weights: Weights,
+        boundary: Boundary,
+        frozen: &'a [bool],
+        is_boundary: &'a [bool],
+        face_cot: &'a mut Vec<f64>,
+    ) -> Self {
+        // Only inverse-distance weights need a length scale; the box costs a pass over x.
+        let tiny = match weights {
+            Weights::Distance => 1e-12 * Bounds::of(x).diagonal().max(f64::MIN_POSITIVE),
+            _ => 0.0,
+        };
+        if weights == Weights::Cotangent {
+            // Each corner's cotangent once per face, then gathered per edge.
+            face_cotangents_into(x, faces, face_cot);
+        }
+        Rows { adj, x, face_cot, weights, boundary, tiny, frozen, is_boundary }
+    }
+
+    /// Requests what row i will read, a few rows before it is filled: the corners'
+    /// cotangents are scattered over the face array, as the neighbours' positions are over x.
+    #[inline]
+    fn prefetch(&self, i: usize) {
+        if self.weights == Weights::Cotangent {
+            for &c in self.adj.corners_of_run(self.adj.slots(i)) {
+                prefetch(self.face_cot.as_ptr().wrapping_add(c as usize));
+            }
+        }
+    }
+
+    /// Writes row i's neighbour weights and returns its own weight.
+    #[inline]
+    fn fill(&self, i: usize, row: &mut [f64]) -> f64 {
+        let adj = self.adj;
+        let slots = adj.slots(i);
+        if self.frozen[i] {
+            row.fill(0.0);
+            return 1.0;
+        }
+        if self.boundary == Boundary::Slide && self.is_boundary[i] {
+            // Along the boundary curve only: the vertex slides along its border edges.
+            for (r, &e) in row.iter_mut().zip(&adj.edge_faces[slots]) {
+                *r = if e == 1 { 1.0 } else { 0.0 };
+            }
+        } else {
+            match self.weights {
+                Weights::Uniform => row.fill(1.0),
+                Weights::Distance => {
+                    let xi = real::to_f64(self.x[i]);
+                    for (r, &j) in row.iter_mut().zip(&adj.nbrs[slots]) {
+                        let xj = real::to_f64(self.x[j as usize]);
+                        *r = 1.0 / real::norm(real::sub(xi, xj)).max(self.tiny);
+                    }
+                }
+                Weights::Cotangent => {
+                    // The row's corners lie together, slot after slot: walk them in step.
+                    let mut corners = adj.corners_of_run(slots.clone());
+                    for (r, &e) in row.iter_mut().zip(&adj.edge_faces[slots]) {
+                        let (here, next) = corners.split_at(e as usize);
+                        corners = next;
+                        let c: f64 = here.iter().map(|&k| self.face_cot[k as usize]).sum();
+                        *r = c.max(0.0);
+                    }
+                }
+            }
+        }
+        let mut total: f64 = row.iter().sum();
+        if !(total > 0.0 && total.is_finite()) {
+            row.fill(1.0);
+            total = row.len() as f64;
+        }
+        for v in row.iter_mut() {
+            *v /= total;
+        }
+        0.0
     }
 }
 
@@ -69,99 +172,51 @@ pub fn operator<T: Real>(
         return Operator::Uniform { frozen: frozen.to_vec() };
     }
     let n = adj.n_vertices();
-    let tiny = 1e-12 * Bounds::of(x).diagonal().max(f64::MIN_POSITIVE);
-    if weights == Weights::Cotangent {
-        // Each corner's cotangent once per face, then gathered per edge.
-        face_cotangents_into(x, faces, &mut scratch.face_cot);
-    }
-    let face_cot = &scratch.face_cot;
-    let mut self_w = std::mem::take(&mut scratch.self_w);
-    let mut w = std::mem::take(&mut scratch.w);
-    self_w.resize(n, 0.0);
-    w.resize(adj.nbrs.len(), 0.0);
-    // Rows are filled in chunks of vertices; each chunk owns a contiguous run of slots.
-    let chunks: Vec<std::ops::Range<usize>> =
-        (0..n.div_ceil(ROW_CHUNK)).map(|c| c * ROW_CHUNK..((c + 1) * ROW_CHUNK).min(n)).collect();
-    let mut w_chunks = Vec::with_capacity(chunks.len());
-    let mut rest: &mut [f64] = &mut w;
-    for r in &chunks {
-        let len = (adj.offsets[r.end] - adj.offsets[r.start]) as usize;
-        let (head, tail) = rest.split_at_mut(len);
-        w_chunks.push(head);
-        rest = tail;
-    }
-    self_w.par_chunks_mut(ROW_CHUNK).zip(w_chunks.into_par_iter()).zip(chunks.par_iter()).for_each(
-        |((sw_chunk, w_chunk), r)| {
-            let base = adj.offsets[r.start] as usize;
-            for (k, i) in r.clone().enumerate() {
-                let row = &mut w_chunk[adj.offsets[i] as usize - base..adj.offsets[i + 1] as usize - base];
-                fill_row(
-                    adj,
-                    x,
-                    face_cot,
-                    i,
-                    weights,
-                    boundary,
-                    frozen[i],
-                    is_boundary[i],
-                    tiny,
-                    &mut sw_chunk[k],
-                    row,
-                );
-            }
-        },
-    );
-    Operator::Weighted { self_w, w }
+    let (self_w, w) = scratch.take_weights();
+    let rows = Rows::new(adj, x, faces, weights, boundary, frozen, is_boundary, &mut scratch.face_cot);
+    Operator::from_rows_par(adj, None, self_w, w, |i, row| {
+        if i + PREFETCH_AHEAD < n {
+            rows.prefetch(i + PREFETCH_AHEAD);
+        }
+        rows.fill(i, row)
+    })
 }
 
+/// out[i] = f(i, avg_i) with avg = A x for the clean operator at `x`, each row built and used
+/// at once: the same numbers as `operator` then `Operator::row`, without writing the weights
+/// out and reading them back.
 #[allow(clippy::too_many_arguments)]
-fn fill_row<T: Real>(
+pub fn map_averages<T: Real, O: Send>(
     adj: &Adjacency,
     x: &[Vec3<T>],
-    face_cot: &[f64],
-    i: usize,
+    faces: &[[u32; 3]],
     weights: Weights,
     boundary: Boundary,
-    frozen: bool,
-    on_boundary: bool,
-    tiny: f64,
-    self_w: &mut f64,
-    row: &mut [f64],
+    frozen: &[bool],
+    is_boundary: &[bool],
+    scratch: &mut Scratch,
+    out: &mut [O],
+    f: impl Fn(usize, [f64; 3]) -> O + Sync,
 ) {
-    let slots = adj.slots(i);
-    if frozen {
-        *self_w = 1.0;
-        row.fill(0.0);
-        return;
-    }
-    if boundary == Boundary::Slide && on_boundary {
-        // Along the boundary curve only: the vertex slides along its border edges.
-        for (k, s) in slots.clone().enumerate() {
-            row[k] = if adj.edge_faces[s] == 1 { 1.0 } else { 0.0 };
-        }
-    } else {
-        let xi = real::to_f64(x[i]);
-        for (k, s) in slots.clone().enumerate() {
-            let xj = real::to_f64(x[adj.nbrs[s] as usize]);
-            row[k] = match weights {
-                Weights::Uniform => 1.0,
-                Weights::Distance => 1.0 / real::norm(real::sub(xi, xj)).max(tiny),
-                Weights::Cotangent => {
-                    let c: f64 = adj.corners_of(s).iter().map(|&k| face_cot[k as usize]).sum();
-                    c.max(0.0)
+    let n = out.len();
+    let rows = Rows::new(adj, x, faces, weights, boundary, frozen, is_boundary, &mut scratch.face_cot);
+    out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
+        let base = c * ROW_CHUNK;
+        let mut row = Vec::new();
+        for (k, o) in chunk.iter_mut().enumerate() {
+            let i = base + k;
+            if i + PREFETCH_AHEAD < n {
+                rows.prefetch(i + PREFETCH_AHEAD);
+                for &j in adj.neighbours(i + PREFETCH_AHEAD) {
+                    prefetch(x.as_ptr().wrapping_add(j as usize));
                 }
-            };
+            }
+            row.clear();
+            row.resize(adj.slots(i).len(), 0.0);
+            let own = rows.fill(i, &mut row);
+            *o = f(i, weighted_average(adj.neighbours(i), x, i, own, &row));
         }
-    }
-    let mut total: f64 = row.iter().sum();
-    if !(total > 0.0 && total.is_finite()) {
-        row.fill(1.0);
-        total = row.len() as f64;
-    }
-    for v in row.iter_mut() {
-        *v /= total;
-    }
-    *self_w = 0.0;
+    });
 }
 
 /// The bounded cotangent of each face's three angles, indexed face * 3 + corner.
@@ -172,14 +227,75 @@ pub fn face_cotangents<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<f64> {
 }
 
 fn face_cotangents_into<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], out: &mut Vec<f64>) {
-    out.resize(faces.len() * 3, 0.0);
-    out.par_chunks_mut(3 * ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
-        for (k, cots) in chunk.chunks_exact_mut(3).enumerate() {
-            let f = faces[c * ROW_CHUNK + k];
-            let cot = triangle_cotangents(f.map(|i| real::to_f64(x[i as usize])));
-            cots.copy_from_slice(&cot);
+    refill(out, faces.len() * 3);
+    out.par_chunks_mut(3 * ROW_CHUNK).zip(faces.par_chunks(ROW_CHUNK)).for_each(|(cots, faces)| {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if std::arch::is_x86_feature_detected!("avx2") {
+                // SAFETY: the CPU supports AVX2, checked just above.
+                return unsafe { face_chunk_avx2(x, faces, cots) };
+            }
         }
+        face_chunk(x, faces, cots)
     });
+}
+
+/// `face_chunk` compiled for 4-wide f64 vectors. FMA stays off, so every lane rounds exactly
+/// as the scalar `triangle_cotangents` does.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn face_chunk_avx2<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], out: &mut [f64]) {
+    face_chunk(x, faces, out)
+}
+
+/// Faces computed side by side: enough for two vector registers per quantity.
+const LANES: usize = 8;
+
+/// The cotangents of a run of faces, `LANES` at a time with every quantity held per lane (so
+/// the compiler can vectorise the square roots and divisions), the rest one by one.
+#[inline(always)]
+fn face_chunk<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], out: &mut [f64]) {
+    let mut blocks = faces.chunks_exact(LANES);
+    let mut outs = out.chunks_exact_mut(3 * LANES);
+    for (block, o) in (&mut blocks).zip(&mut outs) {
+        // e[k][axis][lane]: the side opposite corner k, as in `triangle_cotangents`.
+        let mut e = [[[0.0f64; LANES]; 3]; 3];
+        for (l, f) in block.iter().enumerate() {
+            let p = f.map(|i| real::to_f64(x[i as usize]));
+            for a in 0..3 {
+                e[0][a][l] = p[2][a] - p[1][a];
+                e[1][a][l] = p[0][a] - p[2][a];
+                e[2][a][l] = p[1][a] - p[0][a];
+            }
+        }
+        let dot = |u: &[[f64; LANES]; 3], v: &[[f64; LANES]; 3], l: usize| {
+            u[0][l] * v[0][l] + u[1][l] * v[1][l] + u[2][l] * v[2][l]
+        };
+        let mut cot = [[0.0f64; LANES]; 3];
+        for l in 0..LANES {
+            let longest2 =
+                0.0f64.max(dot(&e[0], &e[0], l)).max(dot(&e[1], &e[1], l)).max(dot(&e[2], &e[2], l));
+            let c = [
+                e[0][1][l] * e[1][2][l] - e[0][2][l] * e[1][1][l],
+                e[0][2][l] * e[1][0][l] - e[0][0][l] * e[1][2][l],
+                e[0][0][l] * e[1][1][l] - e[0][1][l] * e[1][0][l],
+            ];
+            let twice_area = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt().max(COT_FLOOR * longest2);
+            let inv = 1.0 / twice_area;
+            for k in 0..3 {
+                let v = -dot(&e[(k + 1) % 3], &e[(k + 2) % 3], l) * inv;
+                cot[k][l] = if longest2 == 0.0 { 0.0 } else { v };
+            }
+        }
+        for l in 0..LANES {
+            for k in 0..3 {
+                o[3 * l + k] = cot[k][l];
+            }
+        }
+    }
+    for (f, o) in blocks.remainder().iter().zip(outs.into_remainder().chunks_exact_mut(3)) {
+        o.copy_from_slice(&triangle_cotangents(f.map(|i| real::to_f64(x[i as usize]))));
+    }
 }
 
 /// The three bounded cotangents of a triangle, corner by corner. Every corner shares the same

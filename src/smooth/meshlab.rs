@@ -7,7 +7,10 @@
 //! itself with its border neighbours only. The Laplacian moves x to (x + S) / (C + 1), Taubin
 //! to x + lambda (S / C - x); a vertex with C <= 0 does not move.
 
-use super::operator::Operator;
+use rayon::prelude::*;
+
+use super::clean::Scratch;
+use super::operator::{refill, Operator, ROW_CHUNK};
 use crate::mesh::Adjacency;
 use crate::real::{self, Real, Vec3};
 
@@ -25,10 +28,25 @@ fn vcg_cotangent(xa: [f64; 3], xb: [f64; 3], xc: [f64; 3]) -> f64 {
     (std::f64::consts::FRAC_PI_2 - angle as f64).tan() as f32 as f64
 }
 
-/// Sums for one vertex: (weight of itself in S, weight per slot, C).
-fn accumulate<T: Real>(
+/// VCG's weight of every face corner (face * 3 + k), the one both ends of the opposite
+/// face-edge use: `vcg_cotangent` is symmetric in the edge's two ends, bit for bit.
+fn corner_cotangents<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], out: &mut Vec<f64>) {
+    refill(out, faces.len() * 3);
+    out.par_chunks_mut(3 * ROW_CHUNK).zip(faces.par_chunks(ROW_CHUNK)).for_each(|(cots, faces)| {
+        for (o, f) in cots.chunks_exact_mut(3).zip(faces) {
+            let p = f.map(|i| real::to_f64(x[i as usize]));
+            for k in 0..3 {
+                o[k] = vcg_cotangent(p[(k + 1) % 3], p[(k + 2) % 3], p[k]);
+            }
+        }
+    });
+}
+
+/// Sums for one vertex: (weight of itself in S, weight per slot, C). `corner_w` holds each
+/// corner's cotangent when `cotangent` is on.
+fn accumulate(
     adj: &Adjacency,
-    x: &[Vec3<T>],
+    corner_w: &[f64],
     i: usize,
     cotangent: bool,
     boundary: bool,
@@ -52,16 +70,21 @@ fn accumulate<T: Real>(
         }
         return (own, c);
     }
-    let xi = real::to_f64(x[i]);
     let mut c = 0.0;
-    for (k, s) in slots.enumerate() {
-        slot_w[k] = if cotangent {
-            let xj = real::to_f64(x[adj.nbrs[s] as usize]);
-            adj.opposite_of(s).iter().map(|&o| vcg_cotangent(xi, xj, real::to_f64(x[o as usize]))).sum()
-        } else {
-            adj.edge_faces[s] as f64
-        };
-        c += slot_w[k];
+    if cotangent {
+        // The row's corners lie together, slot after slot, in the order of `opposite_of`.
+        let mut corners = adj.corners_of_run(slots.clone());
+        for (w, &e) in slot_w.iter_mut().zip(&adj.edge_faces[slots]) {
+            let (here, next) = corners.split_at(e as usize);
+            corners = next;
+            *w = here.iter().map(|&k| corner_w[k as usize]).sum();
+            c += *w;
+        }
+    } else {
+        for (w, &e) in slot_w.iter_mut().zip(&adj.edge_faces[slots]) {
+            *w = e as f64;
+            c += *w;
+        }
     }
     // Self-edges (a, a): the vertex is both ends, so each adds its weight twice.
     let per_self = if cotangent { -1.0 } else { 1.0 };
@@ -69,46 +92,51 @@ fn accumulate<T: Real>(
     (own, c + own)
 }
 
-/// The operator of `apply_coord_laplacian_smoothing`: x <- (x + S) / (C + 1).
+/// The operator of `apply_coord_laplacian_smoothing`: x <- (x + S) / (C + 1). With cotangent
+/// weights it depends on `x`; `scratch` lends the buffers.
 pub fn laplacian<T: Real>(
     adj: &Adjacency,
     x: &[Vec3<T>],
+    faces: &[[u32; 3]],
     cotangent: bool,
     boundary: bool,
     pinned: Option<&[bool]>,
+    scratch: &mut Scratch,
 ) -> Operator {
-    build(
-        adj,
-        x,
-        cotangent,
-        boundary,
-        pinned,
-        |own, c| {
-            if c > 0.0 {
-                Some(((own + 1.0), c + 1.0))
-            } else {
-                None
-            }
-        },
-    )
+    let mut corner_w = std::mem::take(&mut scratch.face_cot);
+    if cotangent {
+        corner_cotangents(x, faces, &mut corner_w);
+    }
+    let op = build(adj, &corner_w, cotangent, boundary, pinned, scratch, |own, c| {
+        if c > 0.0 {
+            Some(((own + 1.0), c + 1.0))
+        } else {
+            None
+        }
+    });
+    scratch.face_cot = corner_w;
+    op
 }
 
 /// The averaging operator of `apply_coord_taubin_smoothing`: S / C (uniform, border rules on).
-pub fn taubin_average<T: Real>(adj: &Adjacency, x: &[Vec3<T>], pinned: Option<&[bool]>) -> Operator {
-    build(adj, x, false, true, pinned, |own, c| if c > 0.0 { Some((own, c)) } else { None })
+pub fn taubin_average(adj: &Adjacency, pinned: Option<&[bool]>) -> Operator {
+    let rule = |own, c| if c > 0.0 { Some((own, c)) } else { None };
+    build(adj, &[], false, true, pinned, &mut Scratch::default(), rule)
 }
 
-fn build<T: Real>(
+fn build(
     adj: &Adjacency,
-    x: &[Vec3<T>],
+    corner_w: &[f64],
     cotangent: bool,
     boundary: bool,
     pinned: Option<&[bool]>,
+    scratch: &mut Scratch,
     // (own weight in S, C) -> Some((self coefficient numerator, denominator)) or None to freeze.
-    rule: impl Fn(f64, f64) -> Option<(f64, f64)>,
+    rule: impl Fn(f64, f64) -> Option<(f64, f64)> + Sync,
 ) -> Operator {
-    Operator::from_rows(adj, pinned, |i, row| {
-        let (own, c) = accumulate(adj, x, i, cotangent, boundary, row);
+    let (self_w, w) = scratch.take_weights();
+    Operator::from_rows_par(adj, pinned, self_w, w, |i, row| {
+        let (own, c) = accumulate(adj, corner_w, i, cotangent, boundary, row);
         match rule(own, c) {
             Some((num, den)) => {
                 row.iter_mut().for_each(|v| *v /= den);
@@ -125,7 +153,7 @@ fn build<T: Real>(
 /// The neighbour weights of `apply_coord_hc_laplacian_smoothing`: each face-edge counts once,
 /// a border face-edge twice (so on a manifold mesh, a plain mean of all neighbours).
 pub fn hc_average(adj: &Adjacency, pinned: Option<&[bool]>) -> Operator {
-    Operator::from_rows(adj, pinned, |i, row| {
+    Operator::from_rows_par(adj, pinned, Vec::new(), Vec::new(), |i, row| {
         for (r, &e) in row.iter_mut().zip(&adj.edge_faces[adj.slots(i)]) {
             *r = if e == 1 { 2.0 } else { e as f64 };
         }

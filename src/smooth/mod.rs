@@ -53,10 +53,37 @@ impl Source {
                 clean::operator(adj, x, faces, *weights, *boundary, frozen, is_boundary, scratch)
             }
             Source::MeshlabCotangent { boundary, pinned } => {
-                meshlab::laplacian(adj, x, true, *boundary, pinned.as_deref())
+                meshlab::laplacian(adj, x, faces, true, *boundary, pinned.as_deref(), scratch)
             }
         };
         slot.insert(fresh)
+    }
+
+    /// out = x + f (A x - x) with the operator at `x`. Clean rows are built and used at once,
+    /// never stored.
+    #[allow(clippy::too_many_arguments)]
+    fn explicit_step<T: Real>(
+        &self,
+        adj: &Adjacency,
+        x: &[Vec3<T>],
+        out: &mut [Vec3<T>],
+        f: f64,
+        faces: &[[u32; 3]],
+        scratch: &mut clean::Scratch,
+        slot: &mut Option<Operator>,
+    ) {
+        match self {
+            Source::Clean { weights, boundary, frozen, is_boundary } => {
+                let (w, b) = (*weights, *boundary);
+                clean::map_averages(adj, x, faces, w, b, frozen, is_boundary, scratch, out, |i, a| {
+                    relax(x[i], a, f)
+                })
+            }
+            _ => {
+                let op = self.at(adj, x, faces, scratch, slot);
+                explicit_step(adj, op, x, out, f)
+            }
+        }
     }
 }
 
@@ -121,8 +148,16 @@ pub fn smooth_in_order<T: Real>(
                 Method::Laplacian if plan.weights == Weights::Cotangent => {
                     Source::MeshlabCotangent { boundary, pinned: pinned.map(|p| p.to_vec()) }
                 }
-                Method::Laplacian => Source::Fixed(meshlab::laplacian(&adj, x0, false, boundary, pinned)),
-                Method::Taubin => Source::Fixed(meshlab::taubin_average(&adj, x0, pinned)),
+                Method::Laplacian => Source::Fixed(meshlab::laplacian(
+                    &adj,
+                    x0,
+                    faces,
+                    false,
+                    boundary,
+                    pinned,
+                    &mut clean::Scratch::default(),
+                )),
+                Method::Taubin => Source::Fixed(meshlab::taubin_average(&adj, pinned)),
                 _ => Source::Fixed(meshlab::hc_average(&adj, pinned)),
             }
         }
@@ -135,13 +170,15 @@ pub fn smooth_in_order<T: Real>(
     for it in 0..plan.iterations {
         match plan.method {
             Method::Laplacian => {
-                let op = source.at(&adj, x.current(), faces, &mut scratch, &mut slot);
-                x.step(|src, out| explicit_step(&adj, op, src, out, plan.lamb));
+                x.step(|src, out| {
+                    source.explicit_step(&adj, src, out, plan.lamb, faces, &mut scratch, &mut slot)
+                });
             }
             Method::Taubin => {
                 for f in taubin_factors(plan, it) {
-                    let op = source.at(&adj, x.current(), faces, &mut scratch, &mut slot);
-                    x.step(|src, out| explicit_step(&adj, op, src, out, f));
+                    x.step(|src, out| {
+                        source.explicit_step(&adj, src, out, f, faces, &mut scratch, &mut slot)
+                    });
                 }
             }
             Method::Hc => {
@@ -223,11 +260,14 @@ fn taubin_factors(plan: &Plan, it: u32) -> Vec<f64> {
 
 /// x' = x + f (A x - x).
 fn explicit_step<T: Real>(adj: &Adjacency, op: &Operator, x: &[Vec3<T>], out: &mut [Vec3<T>], f: f64) {
-    par_rows_gathering(out, adj, x, |i| {
-        let a = op.row(adj, x, i);
-        let xi = real::to_f64(x[i]);
-        from_f64([xi[0] + f * (a[0] - xi[0]), xi[1] + f * (a[1] - xi[1]), xi[2] + f * (a[2] - xi[2])])
-    });
+    par_rows_gathering(out, adj, x, |i| relax(x[i], op.row(adj, x, i), f));
+}
+
+/// x + f (a - x), a vertex moved part of the way to its average a.
+#[inline]
+fn relax<T: Real>(x: Vec3<T>, a: [f64; 3], f: f64) -> Vec3<T> {
+    let x = real::to_f64(x);
+    from_f64([x[0] + f * (a[0] - x[0]), x[1] + f * (a[1] - x[1]), x[2] + f * (a[2] - x[2])])
 }
 
 /// The f64 field an HC step keeps between its two passes, reused from step to step.

@@ -64,22 +64,26 @@ impl Operator {
                 [s[0] * inv, s[1] * inv, s[2] * inv]
             }
             Operator::Weighted { self_w, w } => {
-                let own = crate::real::to_f64(x[i]);
-                let a = self_w[i];
-                let mut s = [a * own[0], a * own[1], a * own[2]];
-                for s_idx in slots {
-                    let ws = w[s_idx];
-                    if ws != 0.0 {
-                        let p = x[adj.nbrs[s_idx] as usize];
-                        s[0] += ws * p[0].to_f64();
-                        s[1] += ws * p[1].to_f64();
-                        s[2] += ws * p[2].to_f64();
-                    }
-                }
-                s
+                weighted_average(&adj.nbrs[slots.clone()], x, i, self_w[i], &w[slots])
             }
         }
     }
+}
+
+/// a x_i + sum over k of w[k] x_nbrs[k]: one weighted row applied, in f64.
+#[inline]
+pub fn weighted_average<T: Real>(nbrs: &[u32], x: &[Vec3<T>], i: usize, a: f64, w: &[f64]) -> [f64; 3] {
+    let own = crate::real::to_f64(x[i]);
+    let mut s = [a * own[0], a * own[1], a * own[2]];
+    for (&ws, &j) in w.iter().zip(nbrs) {
+        if ws != 0.0 {
+            let p = x[j as usize];
+            s[0] += ws * p[0].to_f64();
+            s[1] += ws * p[1].to_f64();
+            s[2] += ws * p[2].to_f64();
+        }
+    }
+    s
 }
 
 impl Operator {
@@ -101,9 +105,58 @@ impl Operator {
     }
 }
 
+impl Operator {
+    /// As `from_rows`, for a `fill` that needs no state of its own: rows are filled in
+    /// parallel, in fixed chunks, into `self_w` and `w` (buffers of an earlier operator,
+    /// reused; resized here).
+    pub fn from_rows_par(
+        adj: &Adjacency,
+        pinned: Option<&[bool]>,
+        mut self_w: Vec<f64>,
+        mut w: Vec<f64>,
+        fill: impl Fn(usize, &mut [f64]) -> f64 + Sync,
+    ) -> Operator {
+        let n = adj.n_vertices();
+        refill(&mut self_w, n);
+        refill(&mut w, adj.nbrs.len());
+        // Each chunk of rows owns a contiguous run of slots.
+        let mut w_chunks = Vec::with_capacity(n.div_ceil(ROW_CHUNK));
+        let mut rest: &mut [f64] = &mut w;
+        for c in 0..n.div_ceil(ROW_CHUNK) {
+            let r = c * ROW_CHUNK..((c + 1) * ROW_CHUNK).min(n);
+            let (head, tail) = rest.split_at_mut((adj.offsets[r.end] - adj.offsets[r.start]) as usize);
+            w_chunks.push(head);
+            rest = tail;
+        }
+        self_w.par_chunks_mut(ROW_CHUNK).zip(w_chunks.into_par_iter()).enumerate().for_each(
+            |(c, (sw_chunk, w_chunk))| {
+                let base = adj.offsets[c * ROW_CHUNK] as usize;
+                for (k, sw) in sw_chunk.iter_mut().enumerate() {
+                    let i = c * ROW_CHUNK + k;
+                    let slots = adj.slots(i);
+                    let row = &mut w_chunk[slots.start - base..slots.end - base];
+                    row.fill(0.0);
+                    *sw = if pinned.is_some_and(|p| p[i]) { 1.0 } else { fill(i, row) };
+                }
+            },
+        );
+        Operator::Weighted { self_w, w }
+    }
+}
+
+/// Makes `v` hold `n` elements, reusing its memory; a first allocation is a huge-page one,
+/// since weight buffers are tens of megabytes on large meshes.
+pub fn refill(v: &mut Vec<f64>, n: usize) {
+    if v.capacity() < n {
+        *v = crate::huge_pages::filled_vec(n, 0.0);
+    } else {
+        v.resize(n, 0.0);
+    }
+}
+
 /// Rows ahead whose neighbours are prefetched: enough to cover a memory access at the speed one
 /// row is computed.
-const PREFETCH_AHEAD: usize = 16;
+pub const PREFETCH_AHEAD: usize = 16;
 
 /// Fills `out[i] = f(i)` in parallel, in fixed chunks, where `f` gathers `x` over row i's
 /// neighbours. The neighbours of row i + PREFETCH_AHEAD are requested while row i is
@@ -141,7 +194,7 @@ pub fn par_rows<O: Send>(out: &mut [O], f: impl Fn(usize) -> O + Sync) {
 }
 
 #[inline(always)]
-fn prefetch<E>(p: *const E) {
+pub fn prefetch<E>(p: *const E) {
     #[cfg(target_arch = "x86_64")]
     // SAFETY: a prefetch is only a hint; it never faults, whatever the address.
     unsafe {
