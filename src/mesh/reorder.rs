@@ -1,9 +1,10 @@
 //! A spatial vertex order for cache locality.
 //!
-//! Iterating over a mesh gathers each vertex's neighbours; when neighbours have distant indices
-//! (as in a subdivided sphere, or a scan written in acquisition order) every gather misses the
-//! cache. Sorting vertices along a Morton (Z-order) curve makes neighbours close in memory. The order is computed from positions only, so it is the same for
-//! any thread count, and results are mapped back to the caller's order.
+//! Iterating over a mesh gathers each vertex's neighbours; when neighbours are scattered in
+//! memory (a scan written in acquisition order, a shuffled mesh) every gather misses the cache.
+//! Sorting vertices along a Morton (Z-order) curve makes neighbours close in memory. The order
+//! is computed from positions only, so it is the same for any thread count, and results are
+//! mapped back to the caller's order.
 
 use rayon::prelude::*;
 
