@@ -241,6 +241,9 @@ impl Adjacency {
 
     /// Per vertex: does it lie on an edge with exactly one face?
     pub fn boundary_vertices(&self) -> Vec<bool> {
+        if self.all_fans_closed {
+            return huge_pages::filled_vec(self.n_vertices(), false);
+        }
         (0..self.n_vertices())
             .into_par_iter()
             .map(|i| self.slots(i).any(|s| self.edge_faces[s] == 1))

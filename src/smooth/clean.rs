@@ -26,6 +26,7 @@ pub fn frozen_vertices(
     pinned: Option<&[bool]>,
 ) -> Vec<bool> {
     (0..adj.n_vertices())
+        .into_par_iter()
         .map(|i| {
             adj.slots(i).is_empty()
                 || pinned.is_some_and(|p| p[i])

@@ -122,7 +122,9 @@ pub fn smooth_in_order<T: Real>(
         Preset::Clean | Preset::Paper => {
             let is_boundary = adj.boundary_vertices();
             let frozen = clean::frozen_vertices(&adj, plan.boundary, &is_boundary, pinned);
-            rescale_mask = Some(frozen.iter().map(|f| !f).collect());
+            if plan.volume_constraint {
+                rescale_mask = Some(frozen.par_iter().map(|f| !f).collect());
+            }
             if plan.weights == Weights::Uniform {
                 Source::Fixed(clean::operator(
                     &adj,
