@@ -202,6 +202,9 @@ impl Adjacency {
     }
 
     fn build_corners(&self, faces: &[[u32; 3]]) -> Corners {
+        if self.all_fans_closed {
+            return self.closed_fan_corners(faces);
+        }
         let n = self.n_vertices();
         parallel::install(|| {
             // Same grouping as the neighbour entries, sorted by (neighbour, corner), so each
@@ -239,6 +242,55 @@ impl Adjacency {
         })
     }
 
+    /// Corners when every fan is closed: each slot (v, u) has exactly two, one from the corner
+    /// at v whose next vertex is u and one from the corner at v whose previous vertex is u. Both
+    /// lists are sorted by that vertex, so their k-th entries belong to slot k.
+    fn closed_fan_corners(&self, faces: &[[u32; 3]]) -> Corners {
+        let n = self.n_vertices();
+        parallel::install(|| {
+            // Per corner at v: (next << 32 | opposite corner of v-next, prev << 32 | opposite
+            // corner of prev-v), corners written as face * 3 + position.
+            let (start, entries) = corner_entries(n, faces, |f, j, face| {
+                let (next, prev) = (f[(j + 1) % 3] as u64, f[(j + 2) % 3] as u64);
+                let corner = |k: usize| (face * 3 + (k % 3) as u32) as u64;
+                [next << 32 | corner(j + 2), prev << 32 | corner(j + 1)]
+            });
+            let slots = self.nbrs.len();
+            let mut corner: Vec<u32> = huge_pages::filled_vec(2 * slots, 0);
+            let ranges = vertex_chunks(n);
+            split_by(&mut corner, &ranges, |r| 2 * self.offsets[r.start] as usize)
+                .into_par_iter()
+                .zip(ranges.par_iter())
+                .for_each(|(out, r)| {
+                    let base = 2 * self.offsets[r.start] as usize;
+                    let (mut after, mut before) = (Vec::new(), Vec::new());
+                    for i in r.clone() {
+                        let ring = &entries[start[i] as usize..start[i + 1] as usize];
+                        after.clear();
+                        before.clear();
+                        after.extend(ring.iter().map(|e| e[0]));
+                        before.extend(ring.iter().map(|e| e[1]));
+                        after.sort_unstable();
+                        before.sort_unstable();
+                        let at = 2 * self.offsets[i] as usize - base;
+                        for (k, (a, b)) in after.iter().zip(&before).enumerate() {
+                            let (ca, cb) = (*a as u32, *b as u32);
+                            out[at + 2 * k] = ca.min(cb);
+                            out[at + 2 * k + 1] = ca.max(cb);
+                        }
+                    }
+                });
+            drop(entries);
+            let offsets: Vec<u32> = (0..=slots as u32).into_par_iter().map(|s| 2 * s).collect();
+            let mut opposite: Vec<u32> = huge_pages::filled_vec(corner.len(), 0);
+            opposite
+                .par_iter_mut()
+                .zip(corner.par_iter())
+                .for_each(|(o, &c)| *o = faces[c as usize / 3][c as usize % 3]);
+            Corners { offsets, opposite, corner }
+        })
+    }
+
     /// Per vertex: does it lie on an edge with exactly one face?
     pub fn boundary_vertices(&self) -> Vec<bool> {
         if self.all_fans_closed {
@@ -257,6 +309,16 @@ const NOT_A_VERTEX: u32 = u32::MAX - 1;
 /// For every face corner, (the vertex after it, the vertex before it) in its face, grouped by
 /// the corner's vertex in face order: returns (group starts, pairs).
 fn corner_lists(n: usize, faces: &[[u32; 3]]) -> (Vec<u32>, Vec<[u32; 2]>) {
+    corner_entries(n, faces, |f, j, _| [f[(j + 1) % 3], f[(j + 2) % 3]])
+}
+
+/// `entry(face, k, face index)` for every face corner, grouped by the corner's vertex in face
+/// order: returns (group starts, entries).
+fn corner_entries<E: Copy + Send + Sync>(
+    n: usize,
+    faces: &[[u32; 3]],
+    entry: impl Fn(&[u32; 3], usize, u32) -> E + Sync,
+) -> (Vec<u32>, Vec<E>) {
     let parts = rayon::current_num_threads().clamp(1, 8);
     let per = faces.len().div_ceil(parts).max(1);
     let chunks: Vec<&[[u32; 3]]> = faces.chunks(per).collect();
@@ -285,17 +347,18 @@ fn corner_lists(n: usize, faces: &[[u32; 3]]) -> (Vec<u32>, Vec<[u32; 2]>) {
     }
     start[n] = acc;
     drop(counts);
-    let mut pairs: Vec<[u32; 2]> = huge_pages::with_capacity(acc as usize);
+    let mut pairs: Vec<E> = huge_pages::with_capacity(acc as usize);
     let out = SharedSlice(pairs.as_mut_ptr());
-    chunks.par_iter().zip(cursors.par_iter_mut()).for_each(|(ch, cur)| {
+    chunks.par_iter().zip(cursors.par_iter_mut()).enumerate().for_each(|(p, (ch, cur))| {
         let out = &out;
-        for f in ch.iter() {
+        for (local, f) in ch.iter().enumerate() {
+            let face = (p * per + local) as u32;
             for j in 0..3 {
                 let v = f[j] as usize;
                 // SAFETY: each part writes only inside the index ranges its own cursors
                 // cover, which are disjoint from every other part's, and together they cover
                 // 0..acc exactly once.
-                unsafe { out.write(cur[v] as usize, [f[(j + 1) % 3], f[(j + 2) % 3]]) };
+                unsafe { out.write(cur[v] as usize, entry(f, j, face)) };
                 cur[v] += 1;
             }
         }
@@ -546,6 +609,22 @@ mod tests {
         assert!(a.all_fans_closed);
         assert!(!Adjacency::build(43, &faces).unwrap().all_fans_closed); // an unreferenced vertex
         assert!(a.boundary_vertices().iter().all(|b| !b));
+    }
+
+    #[test]
+    fn closed_fan_corners_match_the_general_ones() {
+        let (_, faces) = crate::mesh::shapes::icosphere(2, 0.0, 0).unwrap();
+        let n = 162;
+        let fast = Adjacency::build(n, &faces).unwrap();
+        assert!(fast.all_fans_closed);
+        let fast = fast.with_corners(&faces);
+        let mut general = Adjacency::build(n, &faces).unwrap();
+        general.all_fans_closed = false;
+        let general = general.with_corners(&faces);
+        for s in 0..fast.nbrs.len() {
+            assert_eq!(fast.corners_of(s), general.corners_of(s), "slot {s}");
+            assert_eq!(fast.opposite_of(s), general.opposite_of(s), "slot {s}");
+        }
     }
 
     #[test]
