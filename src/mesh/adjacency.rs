@@ -36,6 +36,20 @@ struct Corners {
     corner: Vec<u32>,
 }
 
+impl Corners {
+    /// Completes the corners (face * 3 + position) with the vertex at each. Into a huge-page
+    /// buffer, written by every thread: it is as long as the corners, and first-touch faults
+    /// on it cost as much as filling it.
+    fn with_opposites(offsets: Vec<u32>, corner: Vec<u32>, faces: &[[u32; 3]]) -> Corners {
+        let mut opposite: Vec<u32> = huge_pages::filled_vec(corner.len(), 0);
+        opposite
+            .par_iter_mut()
+            .zip(corner.par_iter())
+            .for_each(|(o, &c)| *o = faces[c as usize / 3][c as usize % 3]);
+        Corners { offsets, opposite, corner }
+    }
+}
+
 impl Adjacency {
     /// Builds the one-rings (neighbours and edge face counts). Opposite corners are added by
     /// `with_corners`, since only cotangent weights need them.
@@ -233,12 +247,7 @@ impl Adjacency {
             let mut corner: Vec<u32> = huge_pages::filled_vec(entries.len(), 0);
             corner.par_iter_mut().zip(entries.par_iter()).for_each(|(c, e)| *c = *e as u32);
             drop(entries);
-            let mut opposite: Vec<u32> = huge_pages::filled_vec(corner.len(), 0);
-            opposite
-                .par_iter_mut()
-                .zip(corner.par_iter())
-                .for_each(|(o, &c)| *o = faces[c as usize / 3][c as usize % 3]);
-            Corners { offsets, opposite, corner }
+            Corners::with_opposites(offsets, corner, faces)
         })
     }
 
@@ -282,12 +291,7 @@ impl Adjacency {
                 });
             drop(entries);
             let offsets: Vec<u32> = (0..=slots as u32).into_par_iter().map(|s| 2 * s).collect();
-            let mut opposite: Vec<u32> = huge_pages::filled_vec(corner.len(), 0);
-            opposite
-                .par_iter_mut()
-                .zip(corner.par_iter())
-                .for_each(|(o, &c)| *o = faces[c as usize / 3][c as usize % 3]);
-            Corners { offsets, opposite, corner }
+            Corners::with_opposites(offsets, corner, faces)
         })
     }
 
