@@ -106,7 +106,7 @@ pub fn smooth<T: Real>(
     Ok(r.restore(out))
 }
 
-pub fn smooth_in_order<T: Real>(
+fn smooth_in_order<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
     plan: &Plan,
