@@ -2,7 +2,7 @@
 //!
 //! For vertex `i`, `nbrs[offsets[i]..offsets[i+1]]` are its distinct neighbours in ascending order
 //! (never `i` itself). Each such slot `s` also records how many face-edges join the pair
-//! (`edge_faces[s]`: 1 on a boundary, 2 on a manifold interior edge, 3+ on a non-manifold edge)
+//! (`edge_faces_at(s)`: 1 on a boundary, 2 on a manifold interior edge, 3+ on a non-manifold edge)
 //! and, built on first use, the third vertex of each of those faces (`opposite_of(s)`), which
 //! is what cotangent weights need. Faces with a repeated index contribute only their
 //! non-degenerate edges; their self-edges (a, a) are only counted, in `self_edges`.
@@ -17,7 +17,9 @@ use crate::parallel;
 pub struct Adjacency {
     pub offsets: Vec<u32>,
     pub nbrs: Vec<u32>,
-    pub edge_faces: Vec<u32>,
+    /// Face-edges per slot; when every fan is closed they are all 2 and this only holds as
+    /// many 2s as the longest row (so a closed mesh needs no array as long as `nbrs`).
+    edge_faces: Vec<u32>,
     /// Per vertex: how many face-edges (a, a) of degenerate faces start and end at it.
     pub self_edges: Vec<u32>,
     /// Is every vertex's fan closed and consistently oriented (so no boundary, no non-manifold
@@ -103,7 +105,8 @@ impl Adjacency {
                 });
             let all_fans_closed = simple.par_iter().all(|&s| s);
             if all_fans_closed {
-                let edge_faces = huge_pages::filled_vec(corners.len(), 2);
+                let longest = (0..n_vertices).into_par_iter().map(|i| ring(i).len()).max().unwrap_or(0);
+                let edge_faces = vec![2; longest];
                 return Ok(Adjacency {
                     offsets: start,
                     nbrs,
@@ -177,6 +180,27 @@ impl Adjacency {
         &self.nbrs[self.slots(i)]
     }
 
+    /// How many face-edges join vertex i to each of its neighbours, slot by slot.
+    #[inline]
+    pub fn edge_faces(&self, i: usize) -> &[u32] {
+        let slots = self.slots(i);
+        if self.all_fans_closed {
+            &self.edge_faces[..slots.len()]
+        } else {
+            &self.edge_faces[slots]
+        }
+    }
+
+    /// How many face-edges join the two ends of `slot`.
+    #[inline]
+    pub fn edge_faces_at(&self, slot: usize) -> u32 {
+        if self.all_fans_closed {
+            2
+        } else {
+            self.edge_faces[slot]
+        }
+    }
+
     /// The third vertex of each face on the edge of `slot`, one per face-edge, in face order.
     /// Needs `with_corners` first (an empty slice otherwise).
     #[inline]
@@ -219,6 +243,10 @@ impl Adjacency {
         if self.all_fans_closed {
             return self.closed_fan_corners(faces);
         }
+        self.general_corners(faces)
+    }
+
+    fn general_corners(&self, faces: &[[u32; 3]]) -> Corners {
         let n = self.n_vertices();
         parallel::install(|| {
             // Same grouping as the neighbour entries, sorted by (neighbour, corner), so each
@@ -237,7 +265,7 @@ impl Adjacency {
                 });
             let mut offsets = Vec::with_capacity(self.nbrs.len() + 1);
             let mut acc = 0u32;
-            for &e in &self.edge_faces {
+            for &e in (0..n).flat_map(|i| self.edge_faces(i)) {
                 offsets.push(acc);
                 acc += e;
             }
@@ -300,10 +328,7 @@ impl Adjacency {
         if self.all_fans_closed {
             return huge_pages::filled_vec(self.n_vertices(), false);
         }
-        (0..self.n_vertices())
-            .into_par_iter()
-            .map(|i| self.slots(i).any(|s| self.edge_faces[s] == 1))
-            .collect()
+        (0..self.n_vertices()).into_par_iter().map(|i| self.edge_faces(i).contains(&1)).collect()
     }
 }
 
@@ -326,7 +351,7 @@ fn corner_entries<E: Copy + Send + Sync>(
     let parts = rayon::current_num_threads().clamp(1, 8);
     let per = faces.len().div_ceil(parts).max(1);
     let chunks: Vec<&[[u32; 3]]> = faces.chunks(per).collect();
-    let counts: Vec<Vec<u32>> = chunks
+    let mut cursors: Vec<Vec<u32>> = chunks
         .par_iter()
         .map(|ch| {
             let mut c = huge_pages::filled_vec(n, 0u32);
@@ -338,19 +363,44 @@ fn corner_entries<E: Copy + Send + Sync>(
             c
         })
         .collect();
-    // start[v], and where each part writes its first corner of v (parts in face order).
-    let mut start: Vec<u32> = huge_pages::filled_vec(n + 1, 0);
-    let mut cursors: Vec<Vec<u32>> = counts.iter().map(|_| huge_pages::filled_vec(n, 0u32)).collect();
+    // start[v], and (in place of the counts) where each part writes its first corner of v:
+    // parts in face order. A two-level prefix sum: totals per vertex range, then each range.
+    let ranges = vertex_chunks(n);
+    let range_totals: Vec<u32> =
+        ranges.par_iter().map(|r| cursors.iter().map(|c| c[r.clone()].iter().sum::<u32>()).sum()).collect();
+    let mut range_start = Vec::with_capacity(ranges.len());
     let mut acc = 0u32;
-    for v in 0..n {
-        start[v] = acc;
-        for (p, c) in counts.iter().enumerate() {
-            cursors[p][v] = acc;
-            acc += c[v];
-        }
+    for t in &range_totals {
+        range_start.push(acc);
+        acc += t;
     }
+    let mut start: Vec<u32> = huge_pages::filled_vec(n + 1, 0);
     start[n] = acc;
-    drop(counts);
+    {
+        let mut per_part: Vec<Vec<&mut [u32]>> =
+            cursors.iter_mut().map(|c| split_by(c, &ranges, |r| r.start)).collect();
+        let mut by_range: Vec<Vec<&mut [u32]>> = (0..ranges.len()).map(|_| Vec::new()).collect();
+        for part in per_part.iter_mut() {
+            for (k, piece) in part.drain(..).enumerate() {
+                by_range[k].push(piece);
+            }
+        }
+        split_by(&mut start[..n], &ranges, |r| r.start)
+            .into_par_iter()
+            .zip(by_range.into_par_iter())
+            .zip(range_start.par_iter())
+            .for_each(|((st, mut parts), &base)| {
+                let mut acc = base;
+                for (k, s) in st.iter_mut().enumerate() {
+                    *s = acc;
+                    for c in parts.iter_mut() {
+                        let count = c[k];
+                        c[k] = acc;
+                        acc += count;
+                    }
+                }
+            });
+    }
     let mut pairs: Vec<E> = huge_pages::with_capacity(acc as usize);
     let out = SharedSlice(pairs.as_mut_ptr());
     chunks.par_iter().zip(cursors.par_iter_mut()).enumerate().for_each(|(p, (ch, cur))| {
@@ -608,7 +658,7 @@ mod tests {
         faces.extend((1..=40).map(|k| [41, k % 40 + 1, k]));
         let a = Adjacency::build(42, &faces).unwrap();
         assert_eq!(a.neighbours(0), &(1..=40).collect::<Vec<u32>>()[..]);
-        assert!(a.slots(0).all(|s| a.edge_faces[s] == 2));
+        assert!(a.edge_faces(0).iter().all(|&e| e == 2));
         assert_eq!(a.neighbours(5), &[0, 4, 6, 41]);
         assert!(a.all_fans_closed);
         assert!(!Adjacency::build(43, &faces).unwrap().all_fans_closed); // an unreferenced vertex
@@ -621,13 +671,12 @@ mod tests {
         let n = 162;
         let fast = Adjacency::build(n, &faces).unwrap();
         assert!(fast.all_fans_closed);
+        let general = fast.general_corners(&faces);
         let fast = fast.with_corners(&faces);
-        let mut general = Adjacency::build(n, &faces).unwrap();
-        general.all_fans_closed = false;
-        let general = general.with_corners(&faces);
+        let range = |c: &Corners, s: usize| c.offsets[s] as usize..c.offsets[s + 1] as usize;
         for s in 0..fast.nbrs.len() {
-            assert_eq!(fast.corners_of(s), general.corners_of(s), "slot {s}");
-            assert_eq!(fast.opposite_of(s), general.opposite_of(s), "slot {s}");
+            assert_eq!(fast.corners_of(s), &general.corner[range(&general, s)], "slot {s}");
+            assert_eq!(fast.opposite_of(s), &general.opposite[range(&general, s)], "slot {s}");
         }
     }
 
@@ -640,7 +689,7 @@ mod tests {
         assert_eq!(a.neighbours(4), &[] as &[u32]);
         // edge 0-2 is shared by both faces; its opposite corners are 1 and 3
         let s = a.slots(0).start + 1;
-        assert_eq!(a.edge_faces[s], 2);
+        assert_eq!(a.edge_faces_at(s), 2);
         assert_eq!(a.opposite_of(s), &[1, 3]);
         assert_eq!(a.boundary_vertices(), vec![true, true, true, true, false]);
     }
@@ -649,7 +698,7 @@ mod tests {
     fn degenerate_face_keeps_only_real_edges() {
         let a = Adjacency::build(3, &[[0, 0, 1]]).unwrap();
         assert_eq!(a.neighbours(0), &[1]);
-        assert_eq!(a.edge_faces[a.slots(0).start], 2);
+        assert_eq!(a.edge_faces_at(a.slots(0).start), 2);
         assert_eq!(a.neighbours(2), &[] as &[u32]);
         assert_eq!(a.self_edges, vec![1, 0, 0]);
     }
@@ -681,7 +730,7 @@ mod tests {
                 for (&c, &o) in a.corners_of(s).iter().zip(a.opposite_of(s)) {
                     assert_eq!(faces[c as usize / 3][c as usize % 3], o);
                 }
-                assert_eq!(a.edge_faces[s] as usize, a.opposite_of(s).len());
+                assert_eq!(a.edge_faces_at(s) as usize, a.opposite_of(s).len());
             }
         }
         for v in expect.values_mut() {

@@ -151,18 +151,25 @@ impl<'py> MeshInput<'py> {
 fn faces_to_u32<I: Copy + Into<i64> + Sync>(flat: &[I], n: usize) -> Option<Vec<[u32; 3]>> {
     use rayon::prelude::*;
     let rows = rows_of(flat);
-    let mut out = crate::huge_pages::filled_vec(rows.len(), [0u32; 3]);
-    let ok = out.par_chunks_mut(16384).zip(rows.par_chunks(16384)).all(|(o, r)| {
-        let mut ok = true;
-        for (o, r) in o.iter_mut().zip(r) {
-            for k in 0..3 {
-                let i: i64 = r[k].into();
-                ok &= i >= 0 && (i as u64) < n as u64;
-                o[k] = i as u32;
+    let mut out: Vec<[u32; 3]> = crate::huge_pages::with_capacity(rows.len());
+    let ok = out.spare_capacity_mut()[..rows.len()].par_chunks_mut(16384).zip(rows.par_chunks(16384)).all(
+        |(o, r)| {
+            let mut ok = true;
+            for (o, r) in o.iter_mut().zip(r) {
+                let row = r.map(|i| {
+                    let i: i64 = i.into();
+                    ok &= i >= 0 && (i as u64) < n as u64;
+                    i as u32
+                });
+                o.write(row);
             }
-        }
-        ok
-    });
+            ok
+        },
+    );
+    if ok {
+        // SAFETY: `all` returned true, so every chunk ran and wrote each of its elements.
+        unsafe { out.set_len(rows.len()) };
+    }
     ok.then_some(out)
 }
 

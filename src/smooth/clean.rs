@@ -120,7 +120,7 @@ impl<'a, T: Real> Rows<'a, T> {
         }
         if self.boundary == Boundary::Slide && self.is_boundary[i] {
             // Along the boundary curve only: the vertex slides along its border edges.
-            for (r, &e) in row.iter_mut().zip(&adj.edge_faces[slots]) {
+            for (r, &e) in row.iter_mut().zip(adj.edge_faces(i)) {
                 *r = if e == 1 { 1.0 } else { 0.0 };
             }
         } else {
@@ -136,7 +136,7 @@ impl<'a, T: Real> Rows<'a, T> {
                 Weights::Cotangent => {
                     // The row's corners lie together, slot after slot: walk them in step.
                     let mut corners = adj.corners_of_run(slots.clone());
-                    for (r, &e) in row.iter_mut().zip(&adj.edge_faces[slots]) {
+                    for (r, &e) in row.iter_mut().zip(adj.edge_faces(i)) {
                         let (here, next) = corners.split_at(e as usize);
                         corners = next;
                         let c: f64 = here.iter().map(|&k| self.face_cot[k as usize]).sum();

@@ -54,14 +54,14 @@ fn accumulate(
 ) -> (f64, f64) {
     let slots = adj.slots(i);
     let self_border = adj.self_edges[i] == 1;
-    let border = boundary && (self_border || slots.clone().any(|s| adj.edge_faces[s] == 1));
+    let border = boundary && (self_border || adj.edge_faces(i).contains(&1));
     if border {
         // Reset to the vertex itself, then add each border neighbour once; a lone self-edge
         // adds the vertex twice (it is both ends of that border edge).
         let mut c = 1.0;
         let mut own = 1.0;
         for (k, s) in slots.enumerate() {
-            slot_w[k] = if adj.edge_faces[s] == 1 { 1.0 } else { 0.0 };
+            slot_w[k] = if adj.edge_faces_at(s) == 1 { 1.0 } else { 0.0 };
             c += slot_w[k];
         }
         if self_border {
@@ -74,14 +74,14 @@ fn accumulate(
     if cotangent {
         // The row's corners lie together, slot after slot, in the order of `opposite_of`.
         let mut corners = adj.corners_of_run(slots.clone());
-        for (w, &e) in slot_w.iter_mut().zip(&adj.edge_faces[slots]) {
+        for (w, &e) in slot_w.iter_mut().zip(adj.edge_faces(i)) {
             let (here, next) = corners.split_at(e as usize);
             corners = next;
             *w = here.iter().map(|&k| corner_w[k as usize]).sum();
             c += *w;
         }
     } else {
-        for (w, &e) in slot_w.iter_mut().zip(&adj.edge_faces[slots]) {
+        for (w, &e) in slot_w.iter_mut().zip(adj.edge_faces(i)) {
             *w = e as f64;
             c += *w;
         }
@@ -154,7 +154,7 @@ fn build(
 /// a border face-edge twice (so on a manifold mesh, a plain mean of all neighbours).
 pub fn hc_average(adj: &Adjacency, pinned: Option<&[bool]>) -> Operator {
     Operator::from_rows_par(adj, pinned, Vec::new(), Vec::new(), |i, row| {
-        for (r, &e) in row.iter_mut().zip(&adj.edge_faces[adj.slots(i)]) {
+        for (r, &e) in row.iter_mut().zip(adj.edge_faces(i)) {
             *r = if e == 1 { 2.0 } else { e as f64 };
         }
         let own = match adj.self_edges[i] {
