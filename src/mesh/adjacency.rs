@@ -303,17 +303,27 @@ impl Adjacency {
                     let (mut after, mut before) = (Vec::new(), Vec::new());
                     for i in r.clone() {
                         let ring = &entries[start[i] as usize..start[i + 1] as usize];
-                        after.clear();
-                        before.clear();
-                        after.extend(ring.iter().map(|e| e[0]));
-                        before.extend(ring.iter().map(|e| e[1]));
-                        after.sort_unstable();
-                        before.sort_unstable();
                         let at = 2 * self.offsets[i] as usize - base;
-                        for (k, (a, b)) in after.iter().zip(&before).enumerate() {
-                            let (ca, cb) = (*a as u32, *b as u32);
-                            out[at + 2 * k] = ca.min(cb);
-                            out[at + 2 * k + 1] = ca.max(cb);
+                        let out = &mut out[at..at + 2 * ring.len()];
+                        if ring.len() <= 8 {
+                            // Padding sorts last and is never written out.
+                            let mut a = [u64::MAX; 8];
+                            let mut b = [u64::MAX; 8];
+                            for (k, e) in ring.iter().enumerate() {
+                                a[k] = e[0];
+                                b[k] = e[1];
+                            }
+                            sort8(&mut a);
+                            sort8(&mut b);
+                            pair_corners(&a, &b, out);
+                        } else {
+                            after.clear();
+                            before.clear();
+                            after.extend(ring.iter().map(|e| e[0]));
+                            before.extend(ring.iter().map(|e| e[1]));
+                            after.sort_unstable();
+                            before.sort_unstable();
+                            pair_corners(&after, &before, out);
                         }
                     }
                 });
@@ -329,6 +339,16 @@ impl Adjacency {
             return huge_pages::filled_vec(self.n_vertices(), false);
         }
         (0..self.n_vertices()).into_par_iter().map(|i| self.edge_faces(i).contains(&1)).collect()
+    }
+}
+
+/// Slot k's two corners, smaller first, from the k-th entries of both sorted corner lists.
+#[inline]
+fn pair_corners(after: &[u64], before: &[u64], out: &mut [u32]) {
+    for (o, (a, b)) in out.chunks_exact_mut(2).zip(after.iter().zip(before)) {
+        let (ca, cb) = (*a as u32, *b as u32);
+        o[0] = ca.min(cb);
+        o[1] = ca.max(cb);
     }
 }
 
@@ -492,7 +512,7 @@ fn runs(sorted: &[u32]) -> impl Iterator<Item = (u32, u32)> + '_ {
 /// Sorts 8 values with a fixed network (19 comparators; checked on every 0-1 input by a
 /// test), unrolled so that they stay in registers.
 #[inline(always)]
-fn sort8(a: &mut [u32; 8]) {
+fn sort8<T: Ord + Copy>(a: &mut [T; 8]) {
     macro_rules! exchange {
         ($($i:literal $j:literal),*) => {$(
             let (x, y) = (a[$i], a[$j]);
