@@ -91,16 +91,13 @@ impl Adjacency {
                 .zip(split_by(&mut simple, &ranges, |r| r.start))
                 .zip(split_by(&mut nbrs, &ranges, corner_start))
                 .zip(ranges.par_iter())
-                .for_each_init(Vec::new, |scratch, (((selfe, simple), nb), r)| {
+                .for_each(|(((selfe, simple), nb), r)| {
                     let base = start[r.start] as usize;
                     for (k, i) in r.clone().enumerate() {
                         let c = ring(i);
                         selfe[k] = c.iter().filter(|e| e[0] == i as u32).count() as u32;
-                        simple[k] = is_simple(i as u32, c);
-                        if simple[k] {
-                            let nb = &mut nb[start[i] as usize - base..start[i + 1] as usize - base];
-                            write_closed_fan(i as u32, c, nb, scratch);
-                        }
+                        let nb = &mut nb[start[i] as usize - base..start[i + 1] as usize - base];
+                        simple[k] = closed_fan(i as u32, c, nb);
                     }
                 });
             let all_fans_closed = simple.par_iter().all(|&s| s);
@@ -151,7 +148,7 @@ impl Adjacency {
                         let at = offsets[i] as usize - base..offsets[i + 1] as usize - base;
                         let (nb, ef) = (&mut nb[at.clone()], &mut ef[at]);
                         if simple[i] {
-                            write_closed_fan(i as u32, c, nb, scratch);
+                            closed_fan(i as u32, c, nb);
                             ef.fill(2);
                         } else {
                             general_ring(i as u32, c, scratch);
@@ -442,11 +439,12 @@ fn corner_entries<E: Copy + Send + Sync>(
     (start, pairs)
 }
 
-/// Is v's fan closed and consistently oriented: the vertices after v distinct and none of them
-/// v, each equal to exactly one vertex before v? Then those are v's neighbours, each on two
-/// faces. Branch-free for up to 8 corners, since which vertices fail is unpredictable.
+/// If v's fan is closed and consistently oriented (the vertices after v distinct and none of
+/// them v, and the same set as the vertices before v), writes those vertices (v's neighbours,
+/// each on two faces) sorted into `out` and returns true. Branch-free for up to 8 corners:
+/// two sorting networks and a comparison, since which vertices fail is unpredictable.
 #[inline]
-fn is_simple(v: u32, ring: &[[u32; 2]]) -> bool {
+fn closed_fan(v: u32, ring: &[[u32; 2]], out: &mut [u32]) -> bool {
     if ring.len() > 8 {
         let sorted = |k: usize| {
             let mut s: Vec<u32> = ring.iter().map(|e| e[k]).collect();
@@ -454,45 +452,35 @@ fn is_simple(v: u32, ring: &[[u32; 2]]) -> bool {
             s
         };
         let (after, before) = (sorted(0), sorted(1));
-        return after == before && after.windows(2).all(|w| w[0] != w[1]) && !after.contains(&v);
+        let closed = after == before && after.windows(2).all(|w| w[0] != w[1]) && !after.contains(&v);
+        if closed {
+            out.copy_from_slice(&after);
+        }
+        return closed;
     }
     let mut after = [NOT_A_VERTEX; 8];
-    let mut before = [u32::MAX; 8];
+    let mut before = [NOT_A_VERTEX; 8];
     for (k, c) in ring.iter().enumerate() {
         after[k] = c[0];
         before[k] = c[1];
     }
-    let mut ok = !ring.is_empty();
-    for i in 0..8 {
-        let (mut same, mut matched) = (0u32, 0u32);
-        for j in 0..8 {
-            same += (after[j] == after[i]) as u32;
-            matched += (before[j] == after[i]) as u32;
+    sort8(&mut after);
+    sort8(&mut before);
+    let mut closed = !ring.is_empty() & (after == before);
+    for k in 0..8 {
+        let inside = k < ring.len();
+        closed &= !inside | (after[k] != v);
+        if k > 0 {
+            closed &= !inside | (after[k - 1] < after[k]);
         }
-        ok &= i >= ring.len() || (same == 1) & (matched == 1) & (after[i] != v);
     }
-    ok
-}
-
-/// Writes the sorted neighbours of a closed fan (the vertices after v, one per corner).
-#[inline]
-fn write_closed_fan(v: u32, ring: &[[u32; 2]], out: &mut [u32], scratch: &mut Vec<u32>) {
-    if ring.len() <= 8 {
-        let mut after = [NOT_A_VERTEX; 8];
-        for (a, e) in after.iter_mut().zip(ring) {
-            *a = e[0];
-        }
-        sort8(&mut after);
+    if closed {
         // An element loop: a call to memcpy per vertex costs more than the copy.
         for (o, a) in out.iter_mut().zip(after) {
             *o = a;
         }
-    } else {
-        general_ring(v, ring, scratch);
-        for (o, (u, _)) in out.iter_mut().zip(runs(scratch)) {
-            *o = u;
-        }
     }
+    closed
 }
 
 /// The face-edge ends of v's corners, v itself left out, sorted into `out`.
@@ -660,15 +648,18 @@ mod tests {
     #[test]
     fn fans_take_the_simple_path_only_when_they_are_simple() {
         // A closed fan of 6 around vertex 0: simple.
+        let is_simple = |ring: &[[u32; 2]]| closed_fan(0, ring, &mut vec![0; ring.len()]);
         let fan: Vec<[u32; 2]> = (1..=6).map(|k| [k, (k + 4) % 6 + 1]).collect();
-        assert!(is_simple(0, &fan));
+        let mut out = vec![0; 6];
+        assert!(closed_fan(0, &fan, &mut out));
+        assert_eq!(out, [1, 2, 3, 4, 5, 6]);
         // An open fan (a boundary vertex), a repeated face and a degenerate one: not simple.
-        assert!(!is_simple(0, &fan[..5]));
+        assert!(!is_simple(&fan[..5]));
         let mut twice = fan.clone();
         twice[1] = twice[0];
-        assert!(!is_simple(0, &twice));
-        assert!(!is_simple(0, &[[0, 1], [1, 0]]));
-        assert!(!is_simple(0, &[]));
+        assert!(!is_simple(&twice));
+        assert!(!is_simple(&[[0, 1], [1, 0]]));
+        assert!(!is_simple(&[]));
     }
 
     #[test]
