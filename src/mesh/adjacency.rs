@@ -59,7 +59,7 @@ impl Adjacency {
     /// Each face corner at v contributes the vertex after v and the vertex before it (the two
     /// face-edges at v); v's distinct neighbours are the union of those, and the number of
     /// face-edges joining v to a neighbour is how often it occurs. Most vertices of a real mesh
-    /// are simple: the vertices after v are distinct and are the vertices before v in another
+    /// have a closed fan: the vertices after v are distinct and are the vertices before v in another
     /// order (a closed, consistently oriented fan), so their neighbours are just the vertices
     /// after v, each on two faces, and no general sort and merge is needed.
     pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Adjacency> {
@@ -83,24 +83,24 @@ impl Adjacency {
             // neighbour per corner, so its sorted neighbours go straight to their final place
             // if every fan turns out closed: the corner lists' offsets.
             let mut self_edges: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
-            let mut simple: Vec<bool> = huge_pages::filled_vec(n_vertices, false);
+            let mut closed: Vec<bool> = huge_pages::filled_vec(n_vertices, false);
             let mut nbrs: Vec<u32> = huge_pages::filled_vec(corners.len(), 0);
             let corner_start = |r: &std::ops::Range<usize>| start[r.start] as usize;
             split_by(&mut self_edges, &ranges, |r| r.start)
                 .into_par_iter()
-                .zip(split_by(&mut simple, &ranges, |r| r.start))
+                .zip(split_by(&mut closed, &ranges, |r| r.start))
                 .zip(split_by(&mut nbrs, &ranges, corner_start))
                 .zip(ranges.par_iter())
-                .for_each(|(((selfe, simple), nb), r)| {
+                .for_each(|(((selfe, closed), nb), r)| {
                     let base = start[r.start] as usize;
                     for (k, i) in r.clone().enumerate() {
                         let c = ring(i);
                         selfe[k] = c.iter().filter(|e| e[0] == i as u32).count() as u32;
                         let nb = &mut nb[start[i] as usize - base..start[i + 1] as usize - base];
-                        simple[k] = closed_fan(i as u32, c, nb);
+                        closed[k] = closed_fan(i as u32, c, nb);
                     }
                 });
-            let all_fans_closed = simple.par_iter().all(|&s| s);
+            let all_fans_closed = closed.par_iter().all(|&s| s);
             if all_fans_closed {
                 let longest = (0..n_vertices).into_par_iter().map(|i| ring(i).len()).max().unwrap_or(0);
                 let edge_faces = vec![2; longest];
@@ -123,7 +123,7 @@ impl Adjacency {
                 .for_each_init(Vec::new, |scratch, (dist, r)| {
                     for (k, i) in r.clone().enumerate() {
                         let c = ring(i);
-                        dist[k] = if simple[i] {
+                        dist[k] = if closed[i] {
                             c.len() as u32
                         } else {
                             general_ring(i as u32, c, scratch);
@@ -147,7 +147,7 @@ impl Adjacency {
                         let c = ring(i);
                         let at = offsets[i] as usize - base..offsets[i + 1] as usize - base;
                         let (nb, ef) = (&mut nb[at.clone()], &mut ef[at]);
-                        if simple[i] {
+                        if closed[i] {
                             closed_fan(i as u32, c, nb);
                             ef.fill(2);
                         } else {
@@ -646,24 +646,24 @@ mod tests {
     }
 
     #[test]
-    fn fans_take_the_simple_path_only_when_they_are_simple() {
-        // A closed fan of 6 around vertex 0: simple.
-        let is_simple = |ring: &[[u32; 2]]| closed_fan(0, ring, &mut vec![0; ring.len()]);
+    fn only_closed_consistent_fans_take_the_shortcut() {
+        // A closed fan of 6 around vertex 0: closed.
+        let is_closed = |ring: &[[u32; 2]]| closed_fan(0, ring, &mut vec![0; ring.len()]);
         let fan: Vec<[u32; 2]> = (1..=6).map(|k| [k, (k + 4) % 6 + 1]).collect();
         let mut out = vec![0; 6];
         assert!(closed_fan(0, &fan, &mut out));
         assert_eq!(out, [1, 2, 3, 4, 5, 6]);
-        // An open fan (a boundary vertex), a repeated face and a degenerate one: not simple.
-        assert!(!is_simple(&fan[..5]));
+        // An open fan (a boundary vertex), a repeated face and a degenerate one: not closed.
+        assert!(!is_closed(&fan[..5]));
         let mut twice = fan.clone();
         twice[1] = twice[0];
-        assert!(!is_simple(&twice));
-        assert!(!is_simple(&[[0, 1], [1, 0]]));
-        assert!(!is_simple(&[]));
+        assert!(!is_closed(&twice));
+        assert!(!is_closed(&[[0, 1], [1, 0]]));
+        assert!(!is_closed(&[]));
     }
 
     #[test]
-    fn high_valence_and_mixed_vertices_match_the_simple_ones() {
+    fn high_valence_fans_and_their_neighbours_are_found() {
         // A closed fan of 40 triangles around vertex 0 (the general path) on a cone with apex 41.
         let mut faces: Vec<[u32; 3]> = (1..=40).map(|k| [0, k, k % 40 + 1]).collect();
         faces.extend((1..=40).map(|k| [41, k % 40 + 1, k]));
