@@ -18,21 +18,29 @@ use crate::real::{self, Real, Vec3};
 /// Floor of 2 area / L^2 in a cotangent, which bounds |cot| by its inverse.
 pub const COT_FLOOR: f64 = 1e-4;
 
-/// Which vertices never move under the clean rules.
-pub fn frozen_vertices(
-    adj: &Adjacency,
-    boundary: Boundary,
-    is_boundary: &[bool],
-    pinned: Option<&[bool]>,
-) -> Vec<bool> {
-    (0..adj.n_vertices())
-        .into_par_iter()
-        .map(|i| {
-            adj.slots(i).is_empty()
-                || pinned.is_some_and(|p| p[i])
-                || (boundary == Boundary::Fixed && is_boundary[i])
-        })
-        .collect()
+/// What decides the clean rows apart from the positions: the weights, how boundaries are
+/// handled, and which vertices never move.
+pub struct Rules {
+    pub weights: Weights,
+    pub boundary: Boundary,
+    /// Vertices that never move: pinned, without neighbours, or on a fixed boundary.
+    pub frozen: Vec<bool>,
+    pub is_boundary: Vec<bool>,
+}
+
+impl Rules {
+    pub fn new(adj: &Adjacency, weights: Weights, boundary: Boundary, pinned: Option<&[bool]>) -> Rules {
+        let is_boundary = adj.boundary_vertices();
+        let frozen = (0..adj.n_vertices())
+            .into_par_iter()
+            .map(|i| {
+                adj.slots(i).is_empty()
+                    || pinned.is_some_and(|p| p[i])
+                    || (boundary == Boundary::Fixed && is_boundary[i])
+            })
+            .collect();
+        Rules { weights, boundary, frozen, is_boundary }
+    }
 }
 
 /// Buffers reused from step to step, so that geometry-dependent weights do not allocate (and
@@ -66,43 +74,36 @@ pub struct Rows<'a, T> {
     adj: &'a Adjacency,
     x: &'a [Vec3<T>],
     face_cot: &'a [f64],
-    weights: Weights,
-    boundary: Boundary,
+    rules: &'a Rules,
     /// Floor of a distance, for inverse-distance weights.
     tiny: f64,
-    frozen: &'a [bool],
-    is_boundary: &'a [bool],
 }
 
 impl<'a, T: Real> Rows<'a, T> {
-    #[allow(clippy::too_many_arguments)]
     pub fn new(
         adj: &'a Adjacency,
         x: &'a [Vec3<T>],
         faces: &[[u32; 3]],
-        weights: Weights,
-        boundary: Boundary,
-        frozen: &'a [bool],
-        is_boundary: &'a [bool],
+        rules: &'a Rules,
         face_cot: &'a mut Vec<f64>,
     ) -> Self {
         // Only inverse-distance weights need a length scale; the box costs a pass over x.
-        let tiny = match weights {
+        let tiny = match rules.weights {
             Weights::Distance => 1e-12 * Bounds::of(x).diagonal().max(f64::MIN_POSITIVE),
             _ => 0.0,
         };
-        if weights == Weights::Cotangent {
+        if rules.weights == Weights::Cotangent {
             // Each corner's cotangent once per face, then gathered per edge.
             face_cotangents_into(x, faces, face_cot);
         }
-        Rows { adj, x, face_cot, weights, boundary, tiny, frozen, is_boundary }
+        Rows { adj, x, face_cot, rules, tiny }
     }
 
     /// Requests what row i will read, a few rows before it is filled: the corners'
     /// cotangents are scattered over the face array, as the neighbours' positions are over x.
     #[inline]
     fn prefetch(&self, i: usize) {
-        if self.weights == Weights::Cotangent {
+        if self.rules.weights == Weights::Cotangent {
             for &c in self.adj.corners_of_run(self.adj.slots(i)) {
                 prefetch(self.face_cot.as_ptr().wrapping_add(c as usize));
             }
@@ -114,17 +115,17 @@ impl<'a, T: Real> Rows<'a, T> {
     fn fill(&self, i: usize, row: &mut [f64]) -> f64 {
         let adj = self.adj;
         let slots = adj.slots(i);
-        if self.frozen[i] {
+        if self.rules.frozen[i] {
             row.fill(0.0);
             return 1.0;
         }
-        if self.boundary == Boundary::Slide && self.is_boundary[i] {
+        if self.rules.boundary == Boundary::Slide && self.rules.is_boundary[i] {
             // Along the boundary curve only: the vertex slides along its border edges.
             for (r, &e) in row.iter_mut().zip(adj.edge_faces(i)) {
                 *r = if e == 1 { 1.0 } else { 0.0 };
             }
         } else {
-            match self.weights {
+            match self.rules.weights {
                 Weights::Uniform => row.fill(1.0),
                 Weights::Distance => {
                     let xi = real::to_f64(self.x[i]);
@@ -158,23 +159,19 @@ impl<'a, T: Real> Rows<'a, T> {
 }
 
 /// Builds the clean operator for the current positions `x`.
-#[allow(clippy::too_many_arguments)]
 pub fn operator<T: Real>(
     adj: &Adjacency,
     x: &[Vec3<T>],
     faces: &[[u32; 3]],
-    weights: Weights,
-    boundary: Boundary,
-    frozen: &[bool],
-    is_boundary: &[bool],
+    rules: &Rules,
     scratch: &mut Scratch,
 ) -> Operator {
-    if weights == Weights::Uniform && boundary != Boundary::Slide {
-        return Operator::Uniform { frozen: frozen.to_vec() };
+    if rules.weights == Weights::Uniform && rules.boundary != Boundary::Slide {
+        return Operator::Uniform { frozen: rules.frozen.clone() };
     }
     let n = adj.n_vertices();
     let (self_w, w) = scratch.take_weights();
-    let rows = Rows::new(adj, x, faces, weights, boundary, frozen, is_boundary, &mut scratch.face_cot);
+    let rows = Rows::new(adj, x, faces, rules, &mut scratch.face_cot);
     Operator::from_rows_par(adj, None, self_w, w, |i, row| {
         if i + PREFETCH_AHEAD < n {
             rows.prefetch(i + PREFETCH_AHEAD);
@@ -191,16 +188,13 @@ pub fn map_averages<T: Real, O: Send>(
     adj: &Adjacency,
     x: &[Vec3<T>],
     faces: &[[u32; 3]],
-    weights: Weights,
-    boundary: Boundary,
-    frozen: &[bool],
-    is_boundary: &[bool],
+    rules: &Rules,
     scratch: &mut Scratch,
     out: &mut [O],
     f: impl Fn(usize, [f64; 3]) -> O + Sync,
 ) {
     let n = out.len();
-    let rows = Rows::new(adj, x, faces, weights, boundary, frozen, is_boundary, &mut scratch.face_cot);
+    let rows = Rows::new(adj, x, faces, rules, &mut scratch.face_cot);
     out.par_chunks_mut(ROW_CHUNK).enumerate().for_each(|(c, chunk)| {
         let base = c * ROW_CHUNK;
         let mut row = Vec::new();

@@ -29,7 +29,7 @@ use volume::VolumeConstraint;
 /// when the weights depend on the geometry.
 enum Source {
     Fixed(Operator),
-    Clean { weights: Weights, boundary: Boundary, frozen: Vec<bool>, is_boundary: Vec<bool> },
+    Clean(clean::Rules),
     MeshlabCotangent { boundary: bool, pinned: Option<Vec<bool>> },
 }
 
@@ -49,9 +49,7 @@ impl Source {
         }
         let fresh = match self {
             Source::Fixed(op) => return op,
-            Source::Clean { weights, boundary, frozen, is_boundary } => {
-                clean::operator(adj, x, faces, *weights, *boundary, frozen, is_boundary, scratch)
-            }
+            Source::Clean(rules) => clean::operator(adj, x, faces, rules, scratch),
             Source::MeshlabCotangent { boundary, pinned } => {
                 meshlab::laplacian(adj, x, faces, true, *boundary, pinned.as_deref(), scratch)
             }
@@ -73,11 +71,8 @@ impl Source {
         slot: &mut Option<Operator>,
     ) {
         match self {
-            Source::Clean { weights, boundary, frozen, is_boundary } => {
-                let (w, b) = (*weights, *boundary);
-                clean::map_averages(adj, x, faces, w, b, frozen, is_boundary, scratch, out, |i, a| {
-                    relax(x[i], a, f)
-                })
+            Source::Clean(rules) => {
+                clean::map_averages(adj, x, faces, rules, scratch, out, |i, a| relax(x[i], a, f))
             }
             _ => {
                 let op = self.at(adj, x, faces, scratch, slot);
@@ -120,24 +115,14 @@ fn smooth_in_order<T: Real>(
     let mut rescale_mask: Option<Vec<bool>> = None;
     let source = match plan.preset {
         Preset::Clean | Preset::Paper => {
-            let is_boundary = adj.boundary_vertices();
-            let frozen = clean::frozen_vertices(&adj, plan.boundary, &is_boundary, pinned);
+            let rules = clean::Rules::new(&adj, plan.weights, plan.boundary, pinned);
             if plan.volume_constraint {
-                rescale_mask = Some(frozen.par_iter().map(|f| !f).collect());
+                rescale_mask = Some(rules.frozen.par_iter().map(|f| !f).collect());
             }
             if plan.weights == Weights::Uniform {
-                Source::Fixed(clean::operator(
-                    &adj,
-                    x0,
-                    faces,
-                    plan.weights,
-                    plan.boundary,
-                    &frozen,
-                    &is_boundary,
-                    &mut clean::Scratch::default(),
-                ))
+                Source::Fixed(clean::operator(&adj, x0, faces, &rules, &mut clean::Scratch::default()))
             } else {
-                Source::Clean { weights: plan.weights, boundary: plan.boundary, frozen, is_boundary }
+                Source::Clean(rules)
             }
         }
         Preset::Trimesh => Source::Fixed(match plan.weights {
