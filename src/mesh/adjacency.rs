@@ -246,20 +246,7 @@ impl Adjacency {
     fn general_corners(&self, faces: &[[u32; 3]]) -> Corners {
         let n = self.n_vertices();
         parallel::install(|| {
-            // Same grouping as the neighbour entries, sorted by (neighbour, corner), so each
-            // slot's run has exactly `edge_faces[slot]` entries, in slot order.
-            let (start, mut entries, _) =
-                half_edges(n, faces, |b, corner| ((b as u64) << 32) | corner as u64);
-            let ranges = vertex_chunks(n);
-            split_by(&mut entries, &ranges, |r| start[r.start] as usize)
-                .into_par_iter()
-                .zip(ranges.par_iter())
-                .for_each(|(ent, r)| {
-                    let base = start[r.start] as usize;
-                    for i in r.clone() {
-                        ent[start[i] as usize - base..start[i + 1] as usize - base].sort_unstable();
-                    }
-                });
+            let (start, entries) = opposite_corner_entries(n, faces);
             let mut offsets = Vec::with_capacity(self.nbrs.len() + 1);
             let mut acc = 0u32;
             for &e in (0..n).flat_map(|i| self.edge_faces(i)) {
@@ -267,11 +254,26 @@ impl Adjacency {
                 acc += e;
             }
             offsets.push(acc);
-            // Into huge-page buffers, written by every thread: these arrays are as long as the
-            // entries, and first-touch faults on them cost as much as filling them.
-            let mut corner: Vec<u32> = huge_pages::filled_vec(entries.len(), 0);
-            corner.par_iter_mut().zip(entries.par_iter()).for_each(|(c, e)| *c = *e as u32);
-            drop(entries);
+            // Each vertex's face-edges sorted by (neighbour, corner): its slots' runs, each of
+            // `edge_faces` entries, in slot order. Self-edges (v, v) have no slot.
+            let mut corner: Vec<u32> = huge_pages::filled_vec(acc as usize, 0);
+            let ranges = vertex_chunks(n);
+            let corner_at = |i: usize| offsets[self.offsets[i] as usize] as usize;
+            split_by(&mut corner, &ranges, |r| corner_at(r.start))
+                .into_par_iter()
+                .zip(ranges.par_iter())
+                .for_each_init(Vec::<u64>::new, |sorted, (out, r)| {
+                    let base = corner_at(r.start);
+                    for i in r.clone() {
+                        let ring = &entries[start[i] as usize..start[i + 1] as usize];
+                        sorted.clear();
+                        sorted.extend(ring.iter().flatten().copied().filter(|&e| (e >> 32) as usize != i));
+                        sorted.sort_unstable();
+                        for (o, e) in out[corner_at(i) - base..].iter_mut().zip(sorted.iter()) {
+                            *o = *e as u32;
+                        }
+                    }
+                });
             Corners::with_opposites(offsets, corner, faces)
         })
     }
@@ -282,13 +284,7 @@ impl Adjacency {
     fn closed_fan_corners(&self, faces: &[[u32; 3]]) -> Corners {
         let n = self.n_vertices();
         parallel::install(|| {
-            // Per corner at v: (next << 32 | opposite corner of v-next, prev << 32 | opposite
-            // corner of prev-v), corners written as face * 3 + position.
-            let (start, entries) = corner_entries(n, faces, |f, j, face| {
-                let (next, prev) = (f[(j + 1) % 3] as u64, f[(j + 2) % 3] as u64);
-                let corner = |k: usize| (face * 3 + (k % 3) as u32) as u64;
-                [next << 32 | corner(j + 2), prev << 32 | corner(j + 1)]
-            });
+            let (start, entries) = opposite_corner_entries(n, faces);
             let slots = self.nbrs.len();
             let mut corner: Vec<u32> = huge_pages::filled_vec(2 * slots, 0);
             let ranges = vertex_chunks(n);
@@ -356,6 +352,16 @@ const NOT_A_VERTEX: u32 = u32::MAX - 1;
 /// the corner's vertex in face order: returns (group starts, pairs).
 fn corner_lists(n: usize, faces: &[[u32; 3]]) -> (Vec<u32>, Vec<[u32; 2]>) {
     corner_entries(n, faces, |f, j, _| [f[(j + 1) % 3], f[(j + 2) % 3]])
+}
+
+/// Per corner at v: (next << 32 | opposite corner of the face-edge v-next, prev << 32 |
+/// opposite corner of prev-v), corners written as face * 3 + position; grouped by vertex.
+fn opposite_corner_entries(n: usize, faces: &[[u32; 3]]) -> (Vec<u32>, Vec<[u64; 2]>) {
+    corner_entries(n, faces, |f, j, face| {
+        let (next, prev) = (f[(j + 1) % 3] as u64, f[(j + 2) % 3] as u64);
+        let corner = |k: usize| (face * 3 + (k % 3) as u32) as u64;
+        [next << 32 | corner(j + 2), prev << 32 | corner(j + 1)]
+    })
 }
 
 /// `entry(face, k, face index)` for every face corner, grouped by the corner's vertex in face
@@ -510,79 +516,6 @@ fn sort8<T: Ord + Copy>(a: &mut [T; 8]) {
     }
     exchange!(0 2, 1 3, 4 6, 5 7, 0 4, 1 5, 2 6, 3 7, 0 1, 2 3, 4 5, 6 7, 2 4, 3 5, 1 4, 3 6, 1 2, 3 4,
         5 6);
-}
-
-/// For every face-edge {a, b} (a != b) with opposite corner c, one entry at a and one at b,
-/// grouped by vertex: returns (group starts, entries, self-edge counts per vertex).
-/// Faces are split into parts filled in parallel; the order inside a group is therefore not
-/// fixed, and callers sort each group.
-fn half_edges<E: Copy + Default + Send + Sync>(
-    n: usize,
-    faces: &[[u32; 3]],
-    // (the other end b, the opposite corner as face * 3 + k) -> the entry stored at a
-    entry: impl Fn(u32, u32) -> E + Sync,
-) -> (Vec<u32>, Vec<E>, Vec<u32>) {
-    let parts = rayon::current_num_threads().clamp(1, 8);
-    let per = faces.len().div_ceil(parts).max(1);
-    let chunks: Vec<&[[u32; 3]]> = faces.chunks(per).collect();
-    // Per part: how many entries each vertex gets, and its self-edges.
-    let counts: Vec<(Vec<u32>, Vec<u32>)> = chunks
-        .par_iter()
-        .map(|ch| {
-            let mut c = vec![0u32; n];
-            let mut selfe = vec![0u32; n];
-            for f in ch.iter() {
-                for j in 0..3 {
-                    let (a, b) = (f[j], f[(j + 1) % 3]);
-                    if a != b {
-                        c[a as usize] += 1;
-                        c[b as usize] += 1;
-                    } else {
-                        selfe[a as usize] += 1;
-                    }
-                }
-            }
-            (c, selfe)
-        })
-        .collect();
-    let mut start = Vec::with_capacity(n + 1);
-    let mut self_edges = vec![0u32; n];
-    // cursors[p][v]: where part p writes its next entry for v.
-    let mut cursors: Vec<Vec<u32>> = vec![vec![0u32; n]; counts.len()];
-    let mut acc = 0u32;
-    for v in 0..n {
-        start.push(acc);
-        for (p, (c, s)) in counts.iter().enumerate() {
-            cursors[p][v] = acc;
-            acc += c[v];
-            self_edges[v] += s[v];
-        }
-    }
-    start.push(acc);
-    drop(counts);
-    let mut entries = huge_pages::filled_vec(acc as usize, E::default());
-    let out = SharedSlice(entries.as_mut_ptr());
-    chunks.par_iter().zip(cursors.par_iter_mut()).enumerate().for_each(|(p, (ch, cur))| {
-        let out = &out;
-        for (local, f) in ch.iter().enumerate() {
-            let face = (p * per + local) as u32;
-            for j in 0..3 {
-                let (a, b) = (f[j], f[(j + 1) % 3]);
-                let corner = face * 3 + ((j + 2) % 3) as u32;
-                if a != b {
-                    // SAFETY: each part writes only inside the index ranges its own cursors
-                    // cover, which are disjoint from every other part's by construction.
-                    unsafe {
-                        out.write(cur[a as usize] as usize, entry(b, corner));
-                        out.write(cur[b as usize] as usize, entry(a, corner));
-                    }
-                    cur[a as usize] += 1;
-                    cur[b as usize] += 1;
-                }
-            }
-        }
-    });
-    (start, entries, self_edges)
 }
 
 struct SharedSlice<E>(*mut E);
