@@ -24,3 +24,17 @@ def test_smooth_command_writes_a_smoothed_mesh(tmp_path):
 def test_bench_quick_smoke_lists_the_suites():
     r = subprocess.run([sys.executable, "-m", "toonmesh.bench", "--help"], capture_output=True, text=True, check=True)
     assert "smooth" in r.stdout
+
+
+def test_bench_thread_scaling_table_restores_the_thread_count():
+    import toonmesh as tm
+    from toonmesh.bench.smooth import scaling_table
+
+    before = tm.get_num_threads()
+    text = scaling_table("10k", 1)
+    assert tm.get_num_threads() == before
+    rows = [l for l in text.splitlines() if l.startswith("| ") and "threads" not in l]
+    assert len(rows) >= 4  # one row per job at 1 thread at least
+    assert rows[0].split("|")[2].strip() == "1"
+    assert all(float(r.split("|")[3]) > 0 for r in rows)
+    assert "1.00x" in rows[0]

@@ -177,6 +177,36 @@ def bandwidth_table(size: str, repeat: int) -> str:
                  f"Uniform Laplacian memory bandwidth ({size})")
 
 
+def scaling_table(size: str, repeat: int) -> str:
+    """toonmesh's time against its thread count (1, 2, 4, ... up to the default).
+
+    The peers run on one core, so the ratios in the speed table grow with the cores toonmesh
+    is given; this shows by how much on the machine at hand.
+    """
+    V, F = _core.icosphere(SIZES[size], 0.02, 1)
+    jobs = [
+        ("uniform Laplacian", lambda: tm.smooth.laplacian(V, F)),
+        ("cotangent Laplacian", lambda: tm.smooth.laplacian(V, F, weights="cotangent")),
+        ("Taubin", lambda: tm.smooth.taubin(V, F)),
+        ("HC", lambda: tm.smooth.hc(V, F)),
+    ]
+    default = tm.get_num_threads()
+    counts = sorted({1, default} | {2**k for k in range(1, 8) if 2**k < default})
+    rows = []
+    try:
+        for name, fn in jobs:
+            base = None
+            for n in counts:
+                tm.set_num_threads(n)
+                t = median_time(fn, repeat=repeat)
+                base = t if base is None else base
+                rows.append([name if n == counts[0] else "", n, f"{t * 1e3:.1f}", f"{base / t:.2f}x"])
+    finally:
+        tm.set_num_threads(default)
+    return table(["toonmesh (10 iterations)", "threads", "ms", "speed-up over 1 thread"], rows,
+                 f"Thread scaling ({size})")
+
+
 def accuracy_table(repeat: int, quick: bool) -> str:
     """Error to the true sphere against time, per method, precision and iteration count."""
     V, F = _core.icosphere(6, 0.0, 0)
@@ -210,4 +240,5 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
     print(speed_table(sizes, reps))
     print(memory_table(sizes[-1]))
     print(bandwidth_table(sizes[-1], reps))
+    print(scaling_table(sizes[-1], reps))
     print(accuracy_table(reps, quick))
