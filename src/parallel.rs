@@ -10,6 +10,12 @@ use std::sync::{Arc, Mutex};
 
 use rayon::ThreadPool;
 
+use crate::error::{Error, Result};
+
+/// The most worker threads a pool may have: far above any machine's cores, low enough that a
+/// mistyped count cannot exhaust the process's threads.
+pub const MAX_THREADS: usize = 1024;
+
 struct PoolState {
     pid: u32,
     threads: usize,
@@ -22,7 +28,7 @@ static REQUESTED: Mutex<Option<usize>> = Mutex::new(None);
 fn default_threads() -> usize {
     if let Some(n) = std::env::var("TOONMESH_NUM_THREADS").ok().and_then(|s| s.parse::<usize>().ok()) {
         if n > 0 {
-            return n;
+            return n.min(MAX_THREADS);
         }
     }
     std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1)
@@ -42,21 +48,23 @@ pub fn pool() -> Arc<ThreadPool> {
         }
         _ => {}
     }
-    let pool = Arc::new(
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(wanted)
-            .thread_name(|i| format!("toonmesh-{i}"))
-            .build()
-            .expect("building a thread pool"),
-    );
+    let build = |n: usize| {
+        rayon::ThreadPoolBuilder::new().num_threads(n).thread_name(|i| format!("toonmesh-{i}")).build()
+    };
+    // Where the system refuses that many threads, one thread still gives the same results.
+    let pool = Arc::new(build(wanted).or_else(|_| build(1)).expect("the system refused to start even one thread"));
     *guard = Some(PoolState { pid, threads: wanted, pool: pool.clone() });
     pool
 }
 
 /// Sets the number of worker threads (0 restores the default: `TOONMESH_NUM_THREADS` or the
-/// number of cores).
-pub fn set_num_threads(n: usize) {
+/// number of cores). More than `MAX_THREADS` is refused.
+pub fn set_num_threads(n: usize) -> Result<()> {
+    if n > MAX_THREADS {
+        return Err(Error::invalid("n", format!("at most {MAX_THREADS} threads, got {n}")));
+    }
     *REQUESTED.lock().unwrap_or_else(|e| e.into_inner()) = if n == 0 { None } else { Some(n) };
+    Ok(())
 }
 
 /// The number of worker threads the next parallel call will use.

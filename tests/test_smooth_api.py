@@ -142,6 +142,16 @@ def test_same_bits_for_any_thread_count():
     assert tm.get_num_threads() == before
 
 
+def test_an_absurd_thread_count_is_refused_and_changes_nothing():
+    before = tm.get_num_threads()
+    with pytest.raises(ValueError, match=r"n.*at most 1024 threads, got 1000000"):
+        tm.set_num_threads(10**6)
+    assert tm.get_num_threads() == before
+    with pytest.raises(ValueError, match=r"n: must be >= 0"):
+        tm.set_num_threads(-1)
+    assert tm.get_num_threads() == before
+
+
 @pytest.mark.skipif(not hasattr(os, "fork"), reason="needs os.fork")
 def test_works_in_a_forked_child_after_the_pool_started(mesh):
     V, F = mesh

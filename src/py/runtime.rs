@@ -26,12 +26,23 @@ pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
 }
 
 /// set_num_threads(n: int) -> None
+///
+/// Sets how many worker threads toonmesh's parallel work uses, from the next call on.
+///
+/// n: a count from 1 to 1024, or 0 to restore the default (the ``TOONMESH_NUM_THREADS``
+/// environment variable if set, else the number of cores). Results are the same bits for any
+/// count. Raises ValueError below 0 or above 1024.
 #[pyfunction]
-fn set_num_threads(n: usize) {
-    parallel::set_num_threads(n);
+fn set_num_threads(n: i64) -> PyResult<()> {
+    let n = usize::try_from(n)
+        .map_err(|_| Error::invalid("n", format!("must be >= 0 (0 restores the default), got {n}")))
+        .map_err(to_py)?;
+    parallel::set_num_threads(n).map_err(to_py)
 }
 
 /// get_num_threads() -> int
+///
+/// The number of worker threads the next parallel call will use (see ``set_num_threads``).
 #[pyfunction]
 fn get_num_threads() -> usize {
     parallel::num_threads()
