@@ -52,7 +52,8 @@ pub fn pool() -> Arc<ThreadPool> {
         rayon::ThreadPoolBuilder::new().num_threads(n).thread_name(|i| format!("toonmesh-{i}")).build()
     };
     // Where the system refuses that many threads, one thread still gives the same results.
-    let pool = Arc::new(build(wanted).or_else(|_| build(1)).expect("the system refused to start even one thread"));
+    let pool =
+        Arc::new(build(wanted).or_else(|_| build(1)).expect("the system refused to start even one thread"));
     *guard = Some(PoolState { pid, threads: wanted, pool: pool.clone() });
     pool
 }
