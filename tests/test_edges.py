@@ -212,3 +212,21 @@ def test_outlines_union():
     assert is_sorted_unique(out)
     assert rows(out) == rows(index.silhouette(eye=(0, 0, 10))) | rows(index.crease) | rows(index.boundary)
     assert np.array_equal(index.feature_edges(40.0).crease, te.feature_edges(mesh, crease_angle=40.0).crease)
+
+
+def test_outlines_union_matches_row_unique_on_open_and_closed_meshes():
+    V, F = tm._core.icosphere(4, 0.03, 2)
+    open_F = F[: len(F) // 2]  # half a sphere: a boundary loop, creases and silhouettes overlap
+    for faces in (F, open_F):
+        index = te.EdgeIndex(V, faces, crease_angle=10.0)
+        for eye in [(0, 0, 5), (3, -2, 1), (0, 0, 0.1)]:
+            sil = index.silhouette(eye=eye)
+            ref = np.unique(np.concatenate([sil, index.boundary, index.crease, index.nonmanifold]), axis=0)
+            out = index.outlines(eye=eye)
+            assert out.dtype == np.int64 and np.array_equal(out, ref)
+        assert np.array_equal(index.features.outlines, np.unique(
+            np.concatenate([index.boundary, index.crease, index.nonmanifold]), axis=0))
+    # No feature edges at all.
+    empty = te.FeatureEdges(*(np.zeros((0, 2), np.int64) for _ in range(2)), np.zeros(0), np.zeros(0, bool),
+                            np.zeros((0, 2), np.int64), np.zeros(0, np.int64), 30.0)
+    assert empty.outlines.shape == (0, 2) and empty.outlines.dtype == np.int64

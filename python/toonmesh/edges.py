@@ -97,11 +97,31 @@ def _features(raw: Tuple[Any, ...], crease_angle: float) -> FeatureEdges:
     return FeatureEdges(boundary, crease, angles, convex, nonmanifold, degenerate, float(crease_angle))
 
 
+def _edge_keys(edges: np.ndarray, n: int) -> np.ndarray:
+    """One int64 per edge, lo * n + hi: sorts as the (lo, hi) rows do, and far faster than
+    comparing rows (``np.unique(axis=0)`` took about a second on a million edges)."""
+    e = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
+    return np.minimum(e[:, 0], e[:, 1]) * n + np.maximum(e[:, 0], e[:, 1])
+
+
+def _union_keys(n: int, *keys: np.ndarray) -> np.ndarray:
+    """Edges of the union of sorted-or-not key arrays, (K, 2) int64, sorted, each once."""
+    k = np.concatenate(keys)
+    # Stable sort is a merge sort: it merges already-sorted runs (cached static edges, a view's
+    # silhouettes) in linear time.
+    k.sort(kind="stable")
+    if len(k):
+        k = k[np.concatenate(([True], k[1:] != k[:-1]))]
+    return np.stack([k // n, k % n], axis=1) if len(k) else np.zeros((0, 2), dtype=np.int64)
+
+
 def _union(*parts: np.ndarray) -> np.ndarray:
-    edges = np.concatenate([p.reshape(-1, 2) for p in parts]).astype(np.int64, copy=False)
-    if len(edges) == 0:
-        return np.zeros((0, 2), dtype=np.int64)
-    return np.unique(edges, axis=0)
+    edges = [np.asarray(p, dtype=np.int64).reshape(-1, 2) for p in parts]
+    n = 1 + max((int(e.max()) for e in edges if e.size), default=0)
+    if n > 2**31:  # keys would overflow int64
+        stacked = np.concatenate([np.sort(e, axis=1) for e in edges])
+        return np.unique(stacked, axis=0) if len(stacked) else np.zeros((0, 2), dtype=np.int64)
+    return _union_keys(n, *(_edge_keys(e, n) for e in edges))
 
 
 def feature_edges(vertices: Any, faces: Any = None, crease_angle: float = 30.0, *, weld: bool = False) -> FeatureEdges:
@@ -251,7 +271,16 @@ class EdgeIndex:
     def outlines(self, *, eye: Any = None, direction: Any = None) -> np.ndarray:
         """Silhouettes of this view plus boundary, crease and non-manifold edges, (K, 2) int64,
         sorted, each edge once: everything a mesh-space outline pass draws."""
-        return _union(self.silhouette(eye=eye, direction=direction), self.features.outlines)
+        sil = self.silhouette(eye=eye, direction=direction)
+        n = max(self.n_vertices, 1)
+        if n > 2**31:
+            return _union(sil, self.features.outlines)
+        return _union_keys(n, self._static_keys, _edge_keys(sil, n))
+
+    @cached_property
+    def _static_keys(self) -> np.ndarray:
+        """Sorted keys of the view-independent outlines (boundary, crease, non-manifold)."""
+        return _edge_keys(self.features.outlines, max(self.n_vertices, 1))
 
     def segments(self, edges: Any) -> np.ndarray:
         """Edge end points of this mesh, (K, 2, 3) float64; see :func:`segments`."""
