@@ -38,3 +38,11 @@ def test_bench_thread_scaling_table_restores_the_thread_count():
     assert rows[0].split("|")[2].strip() == "1"
     assert all(float(r.split("|")[3]) > 0 for r in rows)
     assert "1.00x" in rows[0]
+
+
+def test_bench_refuses_unknown_options_before_running_anything():
+    r = subprocess.run([sys.executable, "-m", "toonmesh.bench", "smooth", "--quik"], capture_output=True, text=True,
+                       timeout=60)
+    assert r.returncode == 2
+    assert "unrecognised arguments: --quik" in r.stderr
+    assert r.stdout == ""

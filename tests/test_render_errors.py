@@ -12,6 +12,14 @@ import pytest
 import toonmesh as tm
 from toonmesh import _core
 
+
+def _camera_bypassing_checks(**fields):
+    """A camera with fields the Python constructors refuse, to test the core's own checks."""
+    cam = tm.Camera.look_at(eye=(0, 0, 1))
+    for k, v in fields.items():
+        object.__setattr__(cam, k, v)
+    return cam
+
 V, F = _core.icosphere(1, 0.0, 0)
 
 
@@ -51,7 +59,7 @@ def render(**kw):
         (dict(transform=np.zeros((4, 4))), ValueError, "transform"),
         (dict(transform=np.eye(3)), ValueError, "transform"),
         (dict(transform=np.full((4, 4), np.inf)), ValueError, "transform"),
-        (dict(camera=tm.Camera.look_at((0, 0, 5), (0, 0, 5))), ValueError, "camera.target"),
+        (dict(camera=_camera_bypassing_checks(eye=(0.0, 0.0, 5.0), target=(0.0, 0.0, 5.0))), ValueError, "camera.target"),
         (dict(camera=tm.Camera.look_at((0, 0, 5), up=(0, 0, 1))), ValueError, "camera.up"),
         (dict(camera=tm.Camera.look_at((0, 0, 5), fov_y=0)), ValueError, "fov_y"),
         (dict(camera=tm.Camera.look_at((0, 0, 5), near=2.0, far=1.0)), ValueError, "camera.far"),
@@ -126,3 +134,10 @@ def test_environment_variable_picks_the_backend():
     env["TOONMESH_BACKEND"] = "nope"
     out = subprocess.run([sys.executable, "-c", "import toonmesh as tm; tm.gpu_info()"], env=env, capture_output=True, text=True, timeout=120)
     assert "TOONMESH_BACKEND" in out.stderr
+
+
+def test_a_camera_looking_at_its_own_eye_is_refused_when_made():
+    for make in (tm.Camera.look_at, tm.Camera.orthographic):
+        with pytest.raises(ValueError, match=r"target: must differ from eye"):
+            make(eye=(1, 2, 3), target=(1, 2, 3))
+    assert tm.Camera.look_at(eye=(0, 0, 1)).target == (0.0, 0.0, 0.0)

@@ -59,7 +59,7 @@ def test_inputs_are_never_modified(mesh):
         (np.eye(3), np.zeros((0, 3), np.int64), ValueError, "faces: the mesh has no faces"),
         (np.eye(3), np.array([[0, 1, 3]]), IndexError, "faces: face 0 refers to vertex 3"),
         (np.eye(3), np.array([[0, -1, 2]]), IndexError, "faces: face 0 has a negative vertex index"),
-        (np.eye(3), np.array([[0.0, 1, 2]]), TypeError, "faces: dtype must be int32, int64 or uint32"),
+        (np.eye(3), np.array([[0.0, 1, 2]]), TypeError, "faces: dtype must be int32, int64, uint32 or uint64"),
         (np.eye(3), np.array([[0, 1, 2, 0]]), ValueError, r"faces: expected shape \(M, 3\)"),
         (np.eye(3), None, TypeError, "faces: required"),
     ],
@@ -199,3 +199,47 @@ def test_releases_the_gil():
     during = [x for x in ticks if t0 < x < t1]
     # With the GIL held the ticker could not run at all while smoothing.
     assert t1 - t0 > 0.02 and len(during) >= 3
+
+
+@pytest.mark.parametrize(
+    "kwargs, error, message",
+    [
+        (dict(iterations=2.5), TypeError, "iterations: expected an integer, got float"),
+        (dict(iterations=True), TypeError, "iterations: expected an integer, got bool"),
+        (dict(lamb="0.5"), TypeError, "lamb: expected a number, got str"),
+        (dict(weights=1), TypeError, "weights: expected a string, got int"),
+        (dict(preset=("trimesh",)), TypeError, "preset: expected a string"),
+        (dict(volume_constraint=1), TypeError, "volume_constraint: expected True or False"),
+        (dict(pinned=3), TypeError, "pinned: expected vertex indices or an"),
+        (dict(pinned=[[0, 1]]), TypeError, "pinned: expected vertex indices or an"),
+    ],
+)
+def test_options_of_the_wrong_python_type_are_named(mesh, kwargs, error, message):
+    V, F = mesh
+    with pytest.raises(error, match=message):
+        tm.smooth.laplacian(V, F, **kwargs)
+
+
+def test_pinned_accepts_lists_tuples_and_empty_input(mesh):
+    V, F = mesh
+    as_array = tm.smooth.laplacian(V, F, pinned=np.array([0, 5]))
+    assert np.array_equal(tm.smooth.laplacian(V, F, pinned=[0, 5]), as_array)
+    mask = [i in (0, 5) for i in range(len(V))]
+    assert np.array_equal(tm.smooth.laplacian(V, F, pinned=tuple(mask)), as_array)
+    assert np.array_equal(as_array[[0, 5]], V[[0, 5]])
+    free = tm.smooth.laplacian(V, F)
+    assert np.array_equal(tm.smooth.laplacian(V, F, pinned=[]), free)
+    assert np.array_equal(tm.smooth.laplacian(V, F, pinned=np.array([])), free)
+    # NumPy scalars are fine where Python numbers are.
+    assert np.array_equal(tm.smooth.laplacian(V, F, iterations=np.int64(3), lamb=np.float32(0.25)),
+                          tm.smooth.laplacian(V, F, iterations=3, lamb=float(np.float32(0.25))))
+
+
+def test_huge_unsigned_indices_are_reported_as_given(mesh):
+    V, F = mesh
+    Fu = F.astype(np.uint64)
+    Fu[0, 0] = 2**63 + 5
+    with pytest.raises(IndexError, match=r"faces: face 0 refers to vertex 9223372036854775813,"):
+        tm.smooth.laplacian(V, Fu)
+    with pytest.raises(IndexError, match=r"pinned: vertex index 18446744073709551615 is outside"):
+        tm.smooth.laplacian(V, F, pinned=np.array([2**64 - 1], dtype=np.uint64))

@@ -349,6 +349,11 @@ class Camera:
             far=far,
         )
 
+    def __post_init__(self) -> None:
+        # Caught when the camera is made rather than at the first render, far from the mistake.
+        if self.kind == "look_at" and self.eye is not None and self.eye == self.target:
+            raise ValueError(f"target: must differ from eye, both are {self.eye}")
+
     def _spec(self) -> Dict[str, Any]:
         return {k: getattr(self, k) for k in ("kind", "projection", "eye", "target", "up", "direction", "margin", "fov_y", "height", "near", "far")}
 

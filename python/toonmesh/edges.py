@@ -130,7 +130,7 @@ def feature_edges(vertices: Any, faces: Any = None, crease_angle: float = 30.0, 
     Args:
         vertices: (N, 3) float32 or float64 positions, or a ``trimesh.Trimesh`` (then leave
             ``faces`` out).
-        faces: (M, 3) int32, int64 or uint32 vertex indices.
+        faces: (M, 3) int32, int64, uint32 or uint64 vertex indices.
         crease_angle: threshold in degrees, in [0, 180]; an edge is a crease when the angle
             between its two face normals is strictly greater. Default 30.
         weld: merge vertices at exactly the same position first (UV seams and split normals

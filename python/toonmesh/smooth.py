@@ -48,11 +48,11 @@ _COMMON = """
     ----------------------------------------------
     vertices : (N, 3) float32 or float64 array, or trimesh.Trimesh
         Vertex positions, any memory order. With a Trimesh, leave ``faces`` as None.
-    faces : (M, 3) int32, int64 or uint32 array
+    faces : (M, 3) int32, int64, uint32 or uint64 array
         Triangles as vertex indices. Degenerate, duplicate, flipped and non-manifold faces are
         allowed; vertices no face uses stay where they are (except under ``preset="trimesh"``).
     pinned : 1-D integer array of vertex indices, or (N,) bool mask, optional
-        Vertices that must not move.
+        Vertices that must not move (a list or tuple works too; an empty one pins nothing).
     preset : None, "trimesh", "pymeshlab" or "paper"
         Reproduce another library's filter (see the module docs). Default None.
 
@@ -63,7 +63,7 @@ _COMMON = """
     Raises
     ------
     TypeError
-        A wrong dtype (positions must be float32/float64, faces int32/int64/uint32).
+        A wrong dtype (positions must be float32/float64, faces int32/int64/uint32/uint64).
     ValueError
         A wrong shape, NaN or inf, an empty mesh, an unknown option or one the preset lacks.
     IndexError
@@ -71,9 +71,46 @@ _COMMON = """
 """
 
 
+_INTEGER_OPTIONS = ("iterations", "max_iter")
+_NUMBER_OPTIONS = ("lamb", "mu", "alpha", "beta", "step", "tol")
+_NAME_OPTIONS = ("weights", "boundary", "preset")
+
+
+def _option(name: str, value: Any) -> Any:
+    """Checks an option's Python type, so that a wrong one is named in the error (values are
+    checked in the core)."""
+    if value is None:
+        return None
+    is_bool = isinstance(value, (bool, np.bool_))
+    if name in _INTEGER_OPTIONS:
+        if is_bool or not isinstance(value, (int, np.integer)):
+            raise TypeError(f"{name}: expected an integer, got {type(value).__name__} {value!r}")
+        return int(value)
+    if name in _NUMBER_OPTIONS:
+        if is_bool or not isinstance(value, (int, float, np.integer, np.floating)):
+            raise TypeError(f"{name}: expected a number, got {type(value).__name__} {value!r}")
+        return float(value)
+    if name == "volume_constraint":
+        if not is_bool:
+            raise TypeError(f"volume_constraint: expected True or False, got {type(value).__name__} {value!r}")
+        return bool(value)
+    if name in _NAME_OPTIONS and not isinstance(value, str):
+        raise TypeError(f"{name}: expected a string, got {type(value).__name__} {value!r}")
+    if name == "pinned" and not isinstance(value, np.ndarray):
+        # Lists and tuples of indices or booleans read as arrays; an empty one pins nothing.
+        arr = np.asarray(value)
+        if arr.ndim != 1:
+            raise TypeError(f"pinned: expected vertex indices or an (N,) bool mask, got {type(value).__name__} {value!r}")
+        return arr if arr.size else np.zeros(0, dtype=np.int64)
+    if name == "pinned" and value.ndim == 1 and value.size == 0:
+        return np.zeros(0, dtype=np.int64)
+    return value
+
+
 def _call(method: str, vertices: Any, faces: Any, **kwargs: Any) -> npt.NDArray[np.floating[Any]]:
     V, F = mesh_arrays(vertices, faces)
-    return _core._smooth(method, V, F, **kwargs)  # type: ignore[no-any-return]
+    options = {k: _option(k, v) for k, v in kwargs.items()}
+    return _core._smooth(method, V, F, **options)  # type: ignore[no-any-return]
 
 
 def laplacian(

@@ -31,13 +31,20 @@ pub fn check_positions<T: Real>(arg: &str, positions: &[Vec3<T>]) -> Result<()> 
 /// Converts face rows of any integer type to u32, checking each index against `n_vertices`.
 pub fn check_faces<I>(arg: &str, rows: impl Iterator<Item = [I; 3]>, n_vertices: usize) -> Result<Faces>
 where
-    I: Copy + TryInto<i64>,
+    I: Copy + TryInto<i64> + std::fmt::Display,
 {
     let mut faces = Vec::with_capacity(rows.size_hint().0);
     for (f, row) in rows.enumerate() {
         let mut out = [0u32; 3];
         for k in 0..3 {
+            // An index beyond i64 (from uint64 faces) is out of range too; name it as given.
             let idx: i64 = row[k].try_into().unwrap_or(i64::MAX);
+            if idx == i64::MAX {
+                return Err(Error::out_of_range(
+                    arg,
+                    format!("face {f} refers to vertex {}, but there are only {n_vertices} vertices", row[k]),
+                ));
+            }
             if idx < 0 {
                 return Err(Error::out_of_range(arg, format!("face {f} has a negative vertex index {idx}")));
             }

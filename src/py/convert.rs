@@ -77,7 +77,7 @@ pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
     Ok(p)
 }
 
-/// Reads (M, 3) int32, int64 or uint32 faces, checking every index against `n_vertices`.
+/// Reads (M, 3) int32, int64, uint32 or uint64 faces, checking every index against `n_vertices`.
 pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Faces> {
     let a = untyped(arg, obj)?;
     check_rows3(arg, a, "M")?;
@@ -88,13 +88,12 @@ pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Fac
     } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, u32>>() {
         check_faces(arg, rows3(&x).into_iter(), n_vertices)
     } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, u64>>() {
-        check_faces(
-            arg,
-            rows3(&x).into_iter().map(|r| r.map(|i| i64::try_from(i).unwrap_or(i64::MAX))),
-            n_vertices,
-        )
+        check_faces(arg, rows3(&x).into_iter(), n_vertices)
     } else {
-        Err(Error::wrong_type(arg, format!("dtype must be int32, int64 or uint32, got {}", dtype_name(a))))
+        Err(Error::wrong_type(
+            arg,
+            format!("dtype must be int32, int64, uint32 or uint64, got {}", dtype_name(a)),
+        ))
     }
 }
 
@@ -130,7 +129,10 @@ pub fn vertex_mask(
     } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, u32>>() {
         x.as_array().iter().map(|&i| i as i64).collect()
     } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, u64>>() {
-        x.as_array().iter().map(|&i| i64::try_from(i).unwrap_or(i64::MAX)).collect()
+        if let Some(&big) = x.as_array().iter().find(|&&i| i >= n_vertices as u64) {
+            return Err(Error::out_of_range(arg, format!("vertex index {big} is outside [0, {n_vertices})")));
+        }
+        x.as_array().iter().map(|&i| i as i64).collect()
     } else {
         return Err(Error::wrong_type(
             arg,

@@ -16,6 +16,10 @@ def main(argv: "list[str] | None" = None) -> int:
     parser.add_argument("--repeat", type=int, default=3, help="timed runs per case; the median is reported")
     args, rest = parser.parse_known_args(argv)
     suites = SUITES if args.suite == "all" else (args.suite,)
+    # Only the render suite has options of its own; anything else is a mistake worth stopping
+    # for, since a full run takes many minutes.
+    if rest and "render" not in suites:
+        parser.error(f"unrecognised arguments: {' '.join(rest)}")
     for name in suites:
         try:
             module = importlib.import_module(f"toonmesh.bench.{name}")
@@ -24,7 +28,7 @@ def main(argv: "list[str] | None" = None) -> int:
                 print(f"[{name}] not available in this version", file=sys.stderr)
                 continue
             raise
-        module.main(quick=args.quick, repeat=args.repeat, extra=rest)
+        module.main(quick=args.quick, repeat=args.repeat, extra=rest if name == "render" else ())
     return 0
 
 
