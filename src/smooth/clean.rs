@@ -134,6 +134,14 @@ impl<'a, T: Real> Rows<'a, T> {
                         *r = 1.0 / real::norm(real::sub(xi, xj)).max(self.tiny);
                     }
                 }
+                Weights::Cotangent if adj.all_fans_closed => {
+                    // Every edge has exactly two faces: the corners come in pairs, slot by slot.
+                    let corners = adj.corners_of_run(slots.clone());
+                    for (r, pair) in row.iter_mut().zip(corners.chunks_exact(2)) {
+                        let c: f64 = pair.iter().map(|&k| self.face_cot[k as usize]).sum();
+                        *r = c.max(0.0);
+                    }
+                }
                 Weights::Cotangent => {
                     // The row's corners lie together, slot after slot: walk them in step.
                     let mut corners = adj.corners_of_run(slots.clone());
