@@ -96,14 +96,14 @@ def _option(name: str, value: Any) -> Any:
         return bool(value)
     if name in _NAME_OPTIONS and not isinstance(value, str):
         raise TypeError(f"{name}: expected a string, got {type(value).__name__} {value!r}")
-    if name == "pinned" and not isinstance(value, np.ndarray):
-        # Lists and tuples of indices or booleans read as arrays; an empty one pins nothing.
-        arr = np.asarray(value)
-        if arr.ndim != 1:
-            raise TypeError(f"pinned: expected vertex indices or an (N,) bool mask, got {type(value).__name__} {value!r}")
-        return arr if arr.size else np.zeros(0, dtype=np.int64)
-    if name == "pinned" and value.ndim == 1 and value.size == 0:
-        return np.zeros(0, dtype=np.int64)
+    if name == "pinned":
+        if not isinstance(value, np.ndarray):  # lists and tuples of indices or booleans
+            arr = np.asarray(value)
+            if arr.ndim != 1:
+                raise TypeError(f"pinned: expected vertex indices or an (N,) bool mask, got {type(value).__name__} {value!r}")
+            value = arr
+        # An empty one pins nothing, whatever dtype NumPy gave it.
+        return np.zeros(0, dtype=np.int64) if value.shape == (0,) else value
     return value
 
 

@@ -37,24 +37,25 @@ where
     for (f, row) in rows.enumerate() {
         let mut out = [0u32; 3];
         for k in 0..3 {
-            // An index beyond i64 (from uint64 faces) is out of range too; name it as given.
-            let idx: i64 = row[k].try_into().unwrap_or(i64::MAX);
-            if idx == i64::MAX {
-                return Err(Error::out_of_range(
-                    arg,
-                    format!("face {f} refers to vertex {}, but there are only {n_vertices} vertices", row[k]),
-                ));
+            // An index beyond i64 (from uint64 faces) is out of range too, and named as given.
+            match row[k].try_into().ok() {
+                Some(idx) if idx < 0 => {
+                    return Err(Error::out_of_range(
+                        arg,
+                        format!("face {f} has a negative vertex index {idx}"),
+                    ));
+                }
+                Some(idx) if (idx as u64) < n_vertices as u64 => out[k] = idx as u32,
+                _ => {
+                    return Err(Error::out_of_range(
+                        arg,
+                        format!(
+                            "face {f} refers to vertex {}, but there are only {n_vertices} vertices",
+                            row[k]
+                        ),
+                    ));
+                }
             }
-            if idx < 0 {
-                return Err(Error::out_of_range(arg, format!("face {f} has a negative vertex index {idx}")));
-            }
-            if idx as u64 >= n_vertices as u64 {
-                return Err(Error::out_of_range(
-                    arg,
-                    format!("face {f} refers to vertex {idx}, but there are only {n_vertices} vertices"),
-                ));
-            }
-            out[k] = idx as u32;
         }
         faces.push(out);
     }
