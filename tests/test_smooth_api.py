@@ -243,3 +243,12 @@ def test_huge_unsigned_indices_are_reported_as_given(mesh):
         tm.smooth.laplacian(V, Fu)
     with pytest.raises(IndexError, match=r"pinned: vertex index 18446744073709551615 is outside"):
         tm.smooth.laplacian(V, F, pinned=np.array([2**64 - 1], dtype=np.uint64))
+
+
+def test_an_absurd_thread_count_in_the_environment_is_capped():
+    import subprocess
+
+    env = dict(os.environ, TOONMESH_NUM_THREADS="5000")
+    out = subprocess.run([sys.executable, "-c", "import toonmesh; print(toonmesh.get_num_threads())"],
+                         env=env, capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "1024"
