@@ -3,32 +3,32 @@
 
 use glam::{DMat4, DVec3, DVec4, Vec3};
 
-use super::camera::{Camera, Placement, Projection};
-use super::color::linear_to_srgb8;
-use super::context::BackendChoice;
+use super::color::{linear_to_srgb8, to_linear};
+use super::device::BackendChoice;
 use super::gpu_mesh::NormalMode;
-use super::light::{Light, ViewLight};
-use super::material::{kang_table, Highlight, Material, Model};
 use super::reference::{shade, RefLight};
 use super::renderer::{RenderOutput, Renderer};
+use super::scene::camera::{Camera, Placement, Projection};
+use super::scene::light::{Light, ViewLight};
+use super::scene::material::{kang_table, Highlight, Material, Model};
 use super::scene::{FrameSpec, Outputs, Scene, SceneItem, IDENTITY};
 use crate::mesh::shapes::icosphere;
 
 fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene {
     let (v, f) = icosphere(4, 0.0, 0).unwrap();
-    let id = r.add_mesh(&v, &f, normals).unwrap();
+    let id = r.add_mesh(&v, f, normals).unwrap();
     Scene {
-        items: vec![SceneItem { mesh: r.mesh(id).unwrap(), transform: IDENTITY, material }],
-        camera: Camera::default(),
+        items: vec![SceneItem { mesh: id, transform: IDENTITY, material }],
         lights: vec![
             Light::default(),
             Light {
-                kind: super::light::LightKind::Point { position: [3.0, 1.0, 2.0] },
-                space: super::light::Space::World,
-                color: [0.3, 0.2, 0.1],
+                kind: super::scene::light::LightKind::Point { position: [3.0, 1.0, 2.0] },
+                space: super::scene::light::Space::World,
+                color: [0.6, 0.5, 0.35],
+                intensity: 0.5,
             },
         ],
-        ambient: [1.0, 1.0, 1.0],
+        ..Default::default()
     }
 }
 
@@ -36,7 +36,7 @@ fn all_outputs(w: u32, h: u32) -> FrameSpec {
     FrameSpec {
         width: w,
         height: h,
-        outputs: Outputs { color: true, normal: true, depth: true },
+        outputs: Outputs { color: true, normal: true, depth: true, ..Default::default() },
         ..Default::default()
     }
 }
@@ -44,14 +44,14 @@ fn all_outputs(w: u32, h: u32) -> FrameSpec {
 /// Fraction of covered pixels whose colour matches the reference from the normal and depth outputs.
 fn agreement(scene: &Scene, out: &RenderOutput) -> (f64, usize) {
     let (w, h) = (out.width as usize, out.height as usize);
-    let proj = DMat4::from_cols_array_2d(&out.proj).transpose();
-    let view = DMat4::from_cols_array_2d(&out.view).transpose();
+    let proj = DMat4::from_cols_array_2d(&out.report.proj).transpose();
+    let view = DMat4::from_cols_array_2d(&out.report.view).transpose();
     let lights: Vec<RefLight> = scene
         .lights
         .iter()
         .map(|l| match l.to_view(&view) {
-            ViewLight::Toward(d) => RefLight::Toward(d.as_vec3(), Vec3::from(l.color)),
-            ViewLight::At(p) => RefLight::At(p.as_vec3(), Vec3::from(l.color)),
+            ViewLight::Toward(d) => RefLight::Toward(d.as_vec3(), Vec3::from(l.radiance())),
+            ViewLight::At(p) => RefLight::At(p.as_vec3(), Vec3::from(l.radiance())),
         })
         .collect();
     let (color, normal, depth) =
@@ -82,7 +82,7 @@ fn agreement(scene: &Scene, out: &RenderOutput) -> (f64, usize) {
                 n,
                 p.as_vec3(),
                 proj.w_axis.w == 1.0,
-                Vec3::from(scene.ambient),
+                Vec3::from(to_linear(scene.ambient)),
                 &lights,
             );
             let want = [c.x, c.y, c.z].map(|v| linear_to_srgb8(v as f64) as i32);
@@ -112,7 +112,7 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
         for model in &models {
             let material = Material {
                 model: model.clone(),
-                ambient: [0.05, 0.05, 0.1],
+                ambient: [0.2, 0.2, 0.3],
                 diffuse: [0.8, 0.5, 0.3],
                 specular: [0.5, 0.5, 0.5],
                 per_vertex: false,
@@ -145,7 +145,7 @@ fn odd_and_tiny_sizes_read_back_whole_rows() {
 #[test]
 fn empty_scene_is_background() {
     let r = Renderer::new(BackendChoice::Auto).unwrap();
-    let scene = Scene { items: vec![], camera: Camera::default(), lights: vec![], ambient: [0.0; 3] };
+    let scene = Scene { lights: vec![], ambient: [0.0; 3], ..Default::default() };
     let frame = FrameSpec { background: [0.2, 0.4, 0.6, 1.0], ..all_outputs(5, 4) };
     let out = r.render(&scene, &frame).unwrap();
     let c = out.color.unwrap();

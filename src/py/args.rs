@@ -1,0 +1,133 @@
+//! Strict conversion of Python arguments, each error naming the argument: booleans take bools
+//! (and NumPy bools), numbers take numbers (not bools, not strings), integers take integers (not
+//! floats), colours take '#rrggbb' or three numbers in [0, 1].
+
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyFloat, PyInt, PyString};
+
+use crate::error::{Error, Result};
+use crate::render::color;
+
+pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "an unknown type".into())
+}
+
+fn numpy_kind(obj: &Bound<'_, PyAny>) -> Option<String> {
+    let t = obj.get_type();
+    let module = t.getattr("__module__").ok()?.extract::<String>().ok()?;
+    (module == "numpy").then(|| type_name(obj))
+}
+
+fn is_bool(obj: &Bound<'_, PyAny>) -> bool {
+    obj.is_instance_of::<PyBool>() || numpy_kind(obj).is_some_and(|k| k == "bool" || k == "bool_")
+}
+
+/// A bool (True/False or a NumPy bool).
+pub fn flag(name: &str, obj: &Bound<'_, PyAny>) -> Result<bool> {
+    if is_bool(obj) {
+        return obj.is_truthy().map_err(|e| Error::wrong_type(name, e.to_string()));
+    }
+    Err(Error::wrong_type(name, format!("expected a bool (True or False), got {}", type_name(obj))))
+}
+
+/// `flag`, or `default` when absent.
+pub fn flag_or(name: &str, obj: Option<&Bound<'_, PyAny>>, default: bool) -> Result<bool> {
+    obj.map_or(Ok(default), |o| flag(name, o))
+}
+
+/// A real number (int, float or NumPy number; not a bool or a string). NaN and inf pass: range
+/// checks decide.
+pub fn number(name: &str, obj: &Bound<'_, PyAny>) -> Result<f64> {
+    if is_bool(obj) || obj.is_instance_of::<PyString>() {
+        return Err(Error::wrong_type(name, format!("expected a number, got {}", type_name(obj))));
+    }
+    obj.extract::<f64>().map_err(|e| {
+        if obj.is_instance_of::<PyInt>() {
+            Error::invalid(name, format!("{} is too large for a float ({e})", obj))
+        } else {
+            Error::wrong_type(name, format!("expected a number, got {}", type_name(obj)))
+        }
+    })
+}
+
+/// `number`, or None when absent.
+pub fn opt_number(name: &str, obj: Option<&Bound<'_, PyAny>>) -> Result<Option<f64>> {
+    obj.map(|o| number(name, o)).transpose()
+}
+
+/// An integer (int or NumPy integer; not a bool or a float), within i64.
+pub fn integer(name: &str, obj: &Bound<'_, PyAny>) -> Result<i64> {
+    let integral = obj.is_instance_of::<PyInt>() || (numpy_kind(obj).is_some() && obj.hasattr("__index__").unwrap_or(false));
+    if is_bool(obj) || !integral || obj.is_instance_of::<PyFloat>() {
+        return Err(Error::wrong_type(name, format!("expected an integer, got {}", type_name(obj))));
+    }
+    obj.extract::<i64>().map_err(|_| Error::invalid(name, format!("{obj} is out of range")))
+}
+
+/// A text argument.
+pub fn text(name: &str, obj: &Bound<'_, PyAny>) -> Result<String> {
+    obj.extract::<String>().map_err(|_| Error::wrong_type(name, format!("expected a string, got {}", type_name(obj))))
+}
+
+/// A sequence of numbers (list, tuple, 1-D array).
+pub fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
+    if obj.is_instance_of::<PyString>() {
+        return Err(Error::wrong_type(name, "expected a sequence of numbers, got str"));
+    }
+    let items = obj
+        .try_iter()
+        .map_err(|_| Error::wrong_type(name, format!("expected a sequence of numbers, got {}", type_name(obj))))?;
+    items
+        .enumerate()
+        .map(|(i, item)| {
+            let item = item.map_err(|e| Error::invalid(name, e.to_string()))?;
+            number(&format!("{name}[{i}]"), &item)
+        })
+        .collect()
+}
+
+/// Three finite numbers.
+pub fn triple(name: &str, obj: &Bound<'_, PyAny>) -> Result<[f64; 3]> {
+    let v = numbers(name, obj)?;
+    let t: [f64; 3] =
+        v.as_slice().try_into().map_err(|_| Error::invalid(name, format!("expected 3 numbers, got {}", v.len())))?;
+    if !t.iter().all(|x| x.is_finite()) {
+        return Err(Error::invalid(name, format!("must be finite, got {t:?}")));
+    }
+    Ok(t)
+}
+
+/// Channels of a colour: '#rrggbb' ('#rrggbbaa') or numbers.
+fn channels(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
+    if obj.is_instance_of::<PyString>() {
+        return color::parse_hex(name, &text(name, obj)?);
+    }
+    numbers(name, obj).map_err(|e| match e {
+        Error::WrongType { .. } => Error::wrong_type(
+            name,
+            format!("expected a colour: '#rrggbb' or 3 numbers in [0, 1], got {}", type_name(obj)),
+        ),
+        other => other,
+    })
+}
+
+/// An sRGB colour: '#rrggbb' or 3 numbers in [0, 1].
+pub fn rgb(name: &str, obj: &Bound<'_, PyAny>) -> Result<color::Srgb> {
+    color::from_channels(name, &channels(name, obj)?)
+}
+
+/// `rgb`, or None when absent.
+pub fn opt_rgb(name: &str, obj: Option<&Bound<'_, PyAny>>) -> Result<Option<color::Srgb>> {
+    obj.map(|o| rgb(name, o)).transpose()
+}
+
+/// An sRGB colour with alpha: '#rrggbb', '#rrggbbaa', or 3 or 4 numbers in [0, 1] (alpha 1
+/// when not given).
+pub fn rgba(name: &str, obj: &Bound<'_, PyAny>) -> Result<[f64; 4]> {
+    let c = channels(name, obj)?;
+    if !(c.len() == 3 || c.len() == 4) {
+        return Err(Error::invalid(name, format!("expected 3 or 4 channels, got {}", c.len())));
+    }
+    color::check_unit(name, &c)?;
+    Ok([c[0], c[1], c[2], c.get(3).copied().unwrap_or(1.0)])
+}
