@@ -61,12 +61,16 @@ impl Outline {
                 .collect(),
         };
         let of = |edges: &[[u32; 2]], kind| Outline { edges: edges.to_vec(), kinds: vec![kind; edges.len()] };
-        merge(&merge(&of(&fe.boundary, LineKind::Boundary), &of(&fe.nonmanifold, LineKind::NonManifold)), &creases)
+        merge(
+            &merge(&of(&fe.boundary, LineKind::Boundary), &of(&fe.nonmanifold, LineKind::NonManifold)),
+            &creases,
+        )
     }
 
     /// These lines and a view's silhouettes (sorted), a silhouette taking precedence.
     pub fn with_silhouettes(&self, silhouettes: &[[u32; 2]]) -> Outline {
-        let sil = Outline { edges: silhouettes.to_vec(), kinds: vec![LineKind::Silhouette; silhouettes.len()] };
+        let sil =
+            Outline { edges: silhouettes.to_vec(), kinds: vec![LineKind::Silhouette; silhouettes.len()] };
         merge(&sil, self)
     }
 }

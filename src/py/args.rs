@@ -57,7 +57,8 @@ pub fn opt_number(name: &str, obj: Option<&Bound<'_, PyAny>>) -> Result<Option<f
 
 /// An integer (int or NumPy integer; not a bool or a float), within i64.
 pub fn integer(name: &str, obj: &Bound<'_, PyAny>) -> Result<i64> {
-    let integral = obj.is_instance_of::<PyInt>() || (numpy_kind(obj).is_some() && obj.hasattr("__index__").unwrap_or(false));
+    let integral = obj.is_instance_of::<PyInt>()
+        || (numpy_kind(obj).is_some() && obj.hasattr("__index__").unwrap_or(false));
     if is_bool(obj) || !integral || obj.is_instance_of::<PyFloat>() {
         return Err(Error::wrong_type(name, format!("expected an integer, got {}", type_name(obj))));
     }
@@ -66,7 +67,8 @@ pub fn integer(name: &str, obj: &Bound<'_, PyAny>) -> Result<i64> {
 
 /// A text argument.
 pub fn text(name: &str, obj: &Bound<'_, PyAny>) -> Result<String> {
-    obj.extract::<String>().map_err(|_| Error::wrong_type(name, format!("expected a string, got {}", type_name(obj))))
+    obj.extract::<String>()
+        .map_err(|_| Error::wrong_type(name, format!("expected a string, got {}", type_name(obj))))
 }
 
 /// A sequence of numbers (list, tuple, 1-D array).
@@ -74,9 +76,9 @@ pub fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
     if obj.is_instance_of::<PyString>() {
         return Err(Error::wrong_type(name, "expected a sequence of numbers, got str"));
     }
-    let items = obj
-        .try_iter()
-        .map_err(|_| Error::wrong_type(name, format!("expected a sequence of numbers, got {}", type_name(obj))))?;
+    let items = obj.try_iter().map_err(|_| {
+        Error::wrong_type(name, format!("expected a sequence of numbers, got {}", type_name(obj)))
+    })?;
     items
         .enumerate()
         .map(|(i, item)| {
@@ -89,8 +91,10 @@ pub fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
 /// Three finite numbers.
 pub fn triple(name: &str, obj: &Bound<'_, PyAny>) -> Result<[f64; 3]> {
     let v = numbers(name, obj)?;
-    let t: [f64; 3] =
-        v.as_slice().try_into().map_err(|_| Error::invalid(name, format!("expected 3 numbers, got {}", v.len())))?;
+    let t: [f64; 3] = v
+        .as_slice()
+        .try_into()
+        .map_err(|_| Error::invalid(name, format!("expected 3 numbers, got {}", v.len())))?;
     if !t.iter().all(|x| x.is_finite()) {
         return Err(Error::invalid(name, format!("must be finite, got {t:?}")));
     }

@@ -49,8 +49,7 @@ fn matrix<'py>(py: Python<'py>, m: [[f64; 4]; 4]) -> Bound<'py, PyAny> {
 }
 
 /// A size in pixels, at least 1.
-fn pixels(name: &str, obj: Obj<'_, '_>, default: u32) -> Result<u32> {
-    let Some(o) = obj else { return Ok(default) };
+fn pixels(name: &str, o: &Bound<'_, PyAny>) -> Result<u32> {
     let v = integer(name, o)?;
     if v < 1 {
         return Err(Error::invalid(name, format!("must be at least 1 pixel, got {v}")));
@@ -58,8 +57,7 @@ fn pixels(name: &str, obj: Obj<'_, '_>, default: u32) -> Result<u32> {
     u32::try_from(v).map_err(|_| Error::invalid(name, format!("{v} pixels is too large")))
 }
 
-fn small(name: &str, obj: Obj<'_, '_>) -> Result<u32> {
-    let Some(o) = obj else { return Ok(1) };
+fn small(name: &str, o: &Bound<'_, PyAny>) -> Result<u32> {
     let v = integer(name, o)?;
     u32::try_from(v).map_err(|_| Error::invalid(name, format!("invalid value {v}")))
 }
@@ -88,7 +86,12 @@ fn outputs(obj: Obj<'_, '_>) -> Result<Outputs> {
         vec![obj.clone()]
     } else {
         obj.try_iter()
-            .map_err(|_| Error::wrong_type("outputs", format!("expected a name or a sequence of names, got {}", type_name(obj))))?
+            .map_err(|_| {
+                Error::wrong_type(
+                    "outputs",
+                    format!("expected a name or a sequence of names, got {}", type_name(obj)),
+                )
+            })?
             .collect::<PyResult<_>>()
             .map_err(|e| Error::invalid("outputs", e.to_string()))?
     };
@@ -96,7 +99,10 @@ fn outputs(obj: Obj<'_, '_>) -> Result<Outputs> {
         o.add("outputs", &text("outputs", n)?)?;
     }
     if !o.any() {
-        return Err(Error::invalid("outputs", "ask for at least one output ('color', 'normal', 'depth', ...)"));
+        return Err(Error::invalid(
+            "outputs",
+            "ask for at least one output ('color', 'normal', 'depth', ...)",
+        ));
     }
     Ok(o)
 }
@@ -122,14 +128,20 @@ fn lights_arg(obj: Obj<'_, '_>) -> Result<Vec<Light>> {
         return Ok(vec![l.get().inner]);
     }
     let items = obj.try_iter().map_err(|_| {
-        Error::wrong_type("lights", format!("expected a toonmesh.Light or a list of them, got {}", type_name(obj)))
+        Error::wrong_type(
+            "lights",
+            format!("expected a toonmesh.Light or a list of them, got {}", type_name(obj)),
+        )
     })?;
     items
         .enumerate()
         .map(|(i, l)| {
             let l = l.map_err(|e| Error::invalid("lights", e.to_string()))?;
             l.cast::<PyLight>().map(|l| l.get().inner).map_err(|_| {
-                Error::wrong_type(format!("lights[{i}]"), format!("expected a toonmesh.Light, got {}", type_name(&l)))
+                Error::wrong_type(
+                    format!("lights[{i}]"),
+                    format!("expected a toonmesh.Light, got {}", type_name(&l)),
+                )
             })
         })
         .collect()
@@ -240,7 +252,13 @@ impl PyRenderer {
     }
 
     #[pyo3(signature = (vertices, faces, normals = None))]
-    fn add_mesh(&self, py: Python<'_>, vertices: &Bound<'_, PyAny>, faces: &Bound<'_, PyAny>, normals: Obj<'_, '_>) -> PyResult<u64> {
+    fn add_mesh(
+        &self,
+        py: Python<'_>,
+        vertices: &Bound<'_, PyAny>,
+        faces: &Bound<'_, PyAny>,
+        normals: Obj<'_, '_>,
+    ) -> PyResult<u64> {
         let (mode, p, f) = (|| {
             let mode = match normals {
                 None => NormalMode::Smooth,
@@ -263,24 +281,23 @@ impl PyRenderer {
     }
 
     /// items: [(mesh id, Material or None, 4x4 transform or None)].
-    #[pyo3(signature = (items, *, material = None, camera = None, lights = None, ambient = None,
-                        background = None, width = None, height = None, outputs = None, msaa = None,
-                        supersample = None, outlines = None))]
+    #[pyo3(signature = (items, *, width, height, msaa, supersample, material = None, camera = None,
+                        lights = None, ambient = None, background = None, outputs = None, outlines = None))]
     #[allow(clippy::too_many_arguments)]
     fn render<'py>(
         &self,
         py: Python<'py>,
         items: &Bound<'py, PyAny>,
+        width: &Bound<'py, PyAny>,
+        height: &Bound<'py, PyAny>,
+        msaa: &Bound<'py, PyAny>,
+        supersample: &Bound<'py, PyAny>,
         material: Obj<'_, 'py>,
         camera: Obj<'_, 'py>,
         lights: Obj<'_, 'py>,
         ambient: Obj<'_, 'py>,
         background: Obj<'_, 'py>,
-        width: Obj<'_, 'py>,
-        height: Obj<'_, 'py>,
         outputs: Obj<'_, 'py>,
-        msaa: Obj<'_, 'py>,
-        supersample: Obj<'_, 'py>,
         outlines: Obj<'_, 'py>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let (scene, frame) = (|| -> Result<(Scene, FrameSpec)> {
@@ -289,7 +306,8 @@ impl PyRenderer {
                 Some(m) => material_arg("material", m)?,
             };
             let mut scene_items = Vec::new();
-            let list = items.try_iter().map_err(|_| Error::wrong_type("meshes", "expected a list of meshes"))?;
+            let list =
+                items.try_iter().map_err(|_| Error::wrong_type("meshes", "expected a list of meshes"))?;
             for (i, item) in list.enumerate() {
                 let arg = format!("meshes[{i}]");
                 let item = item.map_err(|e| Error::invalid(&arg, e.to_string()))?;
@@ -323,10 +341,9 @@ impl PyRenderer {
                 ambient: ambient.map(|a| rgb("ambient", a)).transpose()?.unwrap_or([1.0; 3]),
                 outlines: outlines_arg(outlines)?,
             };
-            let defaults = FrameSpec::default();
             let frame = FrameSpec {
-                width: pixels("width", width, defaults.width)?,
-                height: pixels("height", height, defaults.height)?,
+                width: pixels("width", width)?,
+                height: pixels("height", height)?,
                 outputs: self::outputs(outputs)?,
                 msaa: small("msaa", msaa)?,
                 supersample: small("supersample", supersample)?,

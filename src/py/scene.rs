@@ -26,6 +26,11 @@ fn hash_of(x: &impl std::fmt::Debug) -> u64 {
     h.finish()
 }
 
+/// A triple as a Python tuple.
+fn tup(v: [f64; 3]) -> (f64, f64, f64) {
+    (v[0], v[1], v[2])
+}
+
 fn f32s(v: Vec<f64>) -> Vec<f32> {
     v.into_iter().map(|x| x as f32).collect()
 }
@@ -38,7 +43,9 @@ fn color_or(name: &str, obj: Obj<'_, '_>) -> Result<Srgb> {
 fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 3]>> {
     let rows: Vec<Bound<'_, PyAny>> = obj
         .try_iter()
-        .map_err(|_| Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj))))?
+        .map_err(|_| {
+            Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj)))
+        })?
         .collect::<PyResult<_>>()
         .map_err(|e| Error::invalid(name, e.to_string()))?;
     if rows.is_empty() || rows.len() > MAX_LUT {
@@ -88,7 +95,11 @@ impl PyMaterial {
     #[pyo3(signature = (color = None, *, ambient = None, per_vertex = None))]
     fn lambert(color: Obj<'_, '_>, ambient: Obj<'_, '_>, per_vertex: Obj<'_, '_>) -> PyResult<Self> {
         Self::made((|| {
-            Material::lambert(color_or("color", color)?, opt_rgb("ambient", ambient)?, flag_or("per_vertex", per_vertex, false)?)
+            Material::lambert(
+                color_or("color", color)?,
+                opt_rgb("ambient", ambient)?,
+                flag_or("per_vertex", per_vertex, false)?,
+            )
         })())
     }
 
@@ -137,7 +148,8 @@ impl PyMaterial {
         per_vertex: Obj<'_, '_>,
     ) -> PyResult<Self> {
         Self::made((|| {
-            let highlight = highlight.map(|h| Highlight::parse("highlight", &text("highlight", h)?)).transpose()?;
+            let highlight =
+                highlight.map(|h| Highlight::parse("highlight", &text("highlight", h)?)).transpose()?;
             Material::thresholded_phong(
                 color_or("color", color)?,
                 opt_number("t_h", t_h)?.map(|x| x as f32),
@@ -157,7 +169,12 @@ impl PyMaterial {
     /// times ``color``. 1 to 8 strictly increasing thresholds, and one value more (each >= 0).
     #[staticmethod]
     #[pyo3(signature = (color = None, *, thresholds = None, values = None, per_vertex = None))]
-    fn bands(color: Obj<'_, '_>, thresholds: Obj<'_, '_>, values: Obj<'_, '_>, per_vertex: Obj<'_, '_>) -> PyResult<Self> {
+    fn bands(
+        color: Obj<'_, '_>,
+        thresholds: Obj<'_, '_>,
+        values: Obj<'_, '_>,
+        per_vertex: Obj<'_, '_>,
+    ) -> PyResult<Self> {
         Self::made((|| {
             Material::bands(
                 color_or("color", color)?,
@@ -192,18 +209,18 @@ impl PyMaterial {
 
     /// sRGB coefficients (tuples of 3 floats).
     #[getter]
-    fn diffuse(&self) -> Srgb {
-        self.inner.diffuse
+    fn diffuse(&self) -> (f64, f64, f64) {
+        tup(self.inner.diffuse)
     }
 
     #[getter]
-    fn ambient(&self) -> Srgb {
-        self.inner.ambient
+    fn ambient(&self) -> (f64, f64, f64) {
+        tup(self.inner.ambient)
     }
 
     #[getter]
-    fn specular(&self) -> Srgb {
-        self.inner.specular
+    fn specular(&self) -> (f64, f64, f64) {
+        tup(self.inner.specular)
     }
 
     #[getter]
@@ -247,26 +264,26 @@ impl PyMaterial {
 
     /// The bands' thresholds and values (None for other models).
     #[getter]
-    fn thresholds(&self) -> Option<Vec<f32>> {
+    fn thresholds(&self) -> Option<Vec<f64>> {
         match &self.inner.model {
-            Model::Bands { thresholds, .. } => Some(thresholds.clone()),
+            Model::Bands { thresholds, .. } => Some(thresholds.iter().map(|&x| x as f64).collect()),
             _ => None,
         }
     }
 
     #[getter]
-    fn values(&self) -> Option<Vec<f32>> {
+    fn values(&self) -> Option<Vec<f64>> {
         match &self.inner.model {
-            Model::Bands { values, .. } => Some(values.clone()),
+            Model::Bands { values, .. } => Some(values.iter().map(|&x| x as f64).collect()),
             _ => None,
         }
     }
 
     /// The lookup table's (N, 3) rows (None for other models).
     #[getter]
-    fn table(&self) -> Option<Vec<[f32; 3]>> {
+    fn table(&self) -> Option<Vec<(f64, f64, f64)>> {
         match &self.inner.model {
-            Model::Lut { table } => Some(table.clone()),
+            Model::Lut { table } => Some(table.iter().map(|c| tup(c.map(|x| x as f64))).collect()),
             _ => None,
         }
     }
@@ -310,7 +327,12 @@ pub struct PyLight {
     pub inner: Light,
 }
 
-fn light(kind: LightKind, color: Obj<'_, '_>, intensity: Obj<'_, '_>, space: Obj<'_, '_>) -> PyResult<PyLight> {
+fn light(
+    kind: LightKind,
+    color: Obj<'_, '_>,
+    intensity: Obj<'_, '_>,
+    space: Obj<'_, '_>,
+) -> PyResult<PyLight> {
     (|| {
         let space = match space {
             None => Space::World,
@@ -334,7 +356,12 @@ impl PyLight {
     /// scene; any length > 0).
     #[staticmethod]
     #[pyo3(signature = (direction, *, color = None, intensity = None, space = None))]
-    fn directional(direction: &Bound<'_, PyAny>, color: Obj<'_, '_>, intensity: Obj<'_, '_>, space: Obj<'_, '_>) -> PyResult<Self> {
+    fn directional(
+        direction: &Bound<'_, PyAny>,
+        color: Obj<'_, '_>,
+        intensity: Obj<'_, '_>,
+        space: Obj<'_, '_>,
+    ) -> PyResult<Self> {
         let direction = triple("direction", direction).map_err(to_py)?;
         light(LightKind::Directional { direction }, color, intensity, space)
     }
@@ -342,7 +369,12 @@ impl PyLight {
     /// Light radiating from ``position`` (3 numbers; no falloff with distance).
     #[staticmethod]
     #[pyo3(signature = (position, *, color = None, intensity = None, space = None))]
-    fn point(position: &Bound<'_, PyAny>, color: Obj<'_, '_>, intensity: Obj<'_, '_>, space: Obj<'_, '_>) -> PyResult<Self> {
+    fn point(
+        position: &Bound<'_, PyAny>,
+        color: Obj<'_, '_>,
+        intensity: Obj<'_, '_>,
+        space: Obj<'_, '_>,
+    ) -> PyResult<Self> {
         let position = triple("position", position).map_err(to_py)?;
         light(LightKind::Point { position }, color, intensity, space)
     }
@@ -363,24 +395,24 @@ impl PyLight {
     }
 
     #[getter]
-    fn direction(&self) -> Option<[f64; 3]> {
+    fn direction(&self) -> Option<(f64, f64, f64)> {
         match self.inner.kind {
-            LightKind::Directional { direction } => Some(direction),
+            LightKind::Directional { direction } => Some(tup(direction)),
             _ => None,
         }
     }
 
     #[getter]
-    fn position(&self) -> Option<[f64; 3]> {
+    fn position(&self) -> Option<(f64, f64, f64)> {
         match self.inner.kind {
-            LightKind::Point { position } => Some(position),
+            LightKind::Point { position } => Some(tup(position)),
             _ => None,
         }
     }
 
     #[getter]
-    fn color(&self) -> Srgb {
-        self.inner.color
+    fn color(&self) -> (f64, f64, f64) {
+        tup(self.inner.color)
     }
 
     #[getter]
@@ -425,14 +457,15 @@ pub struct PyCamera {
     pub inner: Camera,
 }
 
-fn camera(placement: Placement, projection: Projection, near: Obj<'_, '_>, far: Obj<'_, '_>) -> PyResult<PyCamera> {
+fn camera(
+    placement: Placement,
+    projection: Projection,
+    near: Obj<'_, '_>,
+    far: Obj<'_, '_>,
+) -> PyResult<PyCamera> {
     (|| {
-        let c = Camera {
-            placement,
-            projection,
-            near: opt_number("near", near)?,
-            far: opt_number("far", far)?,
-        };
+        let c =
+            Camera { placement, projection, near: opt_number("near", near)?, far: opt_number("far", far)? };
         c.validate().map_err(|e| match e {
             Error::InvalidValue { arg, reason } => Error::invalid(arg.trim_start_matches("camera."), reason),
             other => other,
@@ -455,7 +488,13 @@ impl PyCamera {
     /// sphere (default 1.05); orthographic: bool (default False).
     #[staticmethod]
     #[pyo3(signature = (direction = None, *, up = None, fov_y = None, margin = None, orthographic = None))]
-    fn fit(direction: Obj<'_, '_>, up: Obj<'_, '_>, fov_y: Obj<'_, '_>, margin: Obj<'_, '_>, orthographic: Obj<'_, '_>) -> PyResult<Self> {
+    fn fit(
+        direction: Obj<'_, '_>,
+        up: Obj<'_, '_>,
+        fov_y: Obj<'_, '_>,
+        margin: Obj<'_, '_>,
+        orthographic: Obj<'_, '_>,
+    ) -> PyResult<Self> {
         let (placement, projection) = (|| {
             let placement = Placement::Fit {
                 direction: opt_triple("direction", direction, camera::DEFAULT_DIRECTION)?,
@@ -465,7 +504,9 @@ impl PyCamera {
             let projection = if flag_or("orthographic", orthographic, false)? {
                 Projection::Orthographic { height: camera::DEFAULT_HEIGHT }
             } else {
-                Projection::Perspective { fov_y_deg: opt_number("fov_y", fov_y)?.unwrap_or(camera::DEFAULT_FOV_Y) }
+                Projection::Perspective {
+                    fov_y_deg: opt_number("fov_y", fov_y)?.unwrap_or(camera::DEFAULT_FOV_Y),
+                }
             };
             Ok((placement, projection))
         })()
@@ -491,7 +532,12 @@ impl PyCamera {
                 target: opt_triple("target", target, [0.0; 3])?,
                 up: opt_triple("up", up, camera::DEFAULT_UP)?,
             };
-            Ok((placement, Projection::Perspective { fov_y_deg: opt_number("fov_y", fov_y)?.unwrap_or(camera::DEFAULT_FOV_Y) }))
+            Ok((
+                placement,
+                Projection::Perspective {
+                    fov_y_deg: opt_number("fov_y", fov_y)?.unwrap_or(camera::DEFAULT_FOV_Y),
+                },
+            ))
         })()
         .map_err(to_py)?;
         camera(placement, projection, near, far)
@@ -515,7 +561,12 @@ impl PyCamera {
                 target: opt_triple("target", target, [0.0; 3])?,
                 up: opt_triple("up", up, camera::DEFAULT_UP)?,
             };
-            Ok((placement, Projection::Orthographic { height: opt_number("height", height)?.unwrap_or(camera::DEFAULT_HEIGHT) }))
+            Ok((
+                placement,
+                Projection::Orthographic {
+                    height: opt_number("height", height)?.unwrap_or(camera::DEFAULT_HEIGHT),
+                },
+            ))
         })()
         .map_err(to_py)?;
         camera(placement, projection, near, far)
@@ -540,32 +591,32 @@ impl PyCamera {
     }
 
     #[getter]
-    fn eye(&self) -> Option<[f64; 3]> {
+    fn eye(&self) -> Option<(f64, f64, f64)> {
         match self.inner.placement {
-            Placement::LookAt { eye, .. } => Some(eye),
+            Placement::LookAt { eye, .. } => Some(tup(eye)),
             _ => None,
         }
     }
 
     #[getter]
-    fn target(&self) -> Option<[f64; 3]> {
+    fn target(&self) -> Option<(f64, f64, f64)> {
         match self.inner.placement {
-            Placement::LookAt { target, .. } => Some(target),
+            Placement::LookAt { target, .. } => Some(tup(target)),
             _ => None,
         }
     }
 
     #[getter]
-    fn up(&self) -> [f64; 3] {
+    fn up(&self) -> (f64, f64, f64) {
         match self.inner.placement {
-            Placement::LookAt { up, .. } | Placement::Fit { up, .. } => up,
+            Placement::LookAt { up, .. } | Placement::Fit { up, .. } => tup(up),
         }
     }
 
     #[getter]
-    fn direction(&self) -> Option<[f64; 3]> {
+    fn direction(&self) -> Option<(f64, f64, f64)> {
         match self.inner.placement {
-            Placement::Fit { direction, .. } => Some(direction),
+            Placement::Fit { direction, .. } => Some(tup(direction)),
             _ => None,
         }
     }
@@ -609,7 +660,10 @@ impl PyCamera {
     }
 
     fn __repr__(&self) -> String {
-        format!("Camera({:?}, {:?}, near={:?}, far={:?})", self.inner.placement, self.inner.projection, self.inner.near, self.inner.far)
+        format!(
+            "Camera({:?}, {:?}, near={:?}, far={:?})",
+            self.inner.placement, self.inner.projection, self.inner.near, self.inner.far
+        )
     }
 
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
@@ -637,7 +691,9 @@ impl PyLineStyle {
                 width: opt_number("width", width)?.map_or(d.width, |w| w as f32),
             };
             s.validate("style").map_err(|e| match e {
-                Error::InvalidValue { arg, reason } => Error::invalid(arg.trim_start_matches("style."), reason),
+                Error::InvalidValue { arg, reason } => {
+                    Error::invalid(arg.trim_start_matches("style."), reason)
+                }
                 other => other,
             })?;
             Ok(PyLineStyle { inner: s })
@@ -646,8 +702,8 @@ impl PyLineStyle {
     }
 
     #[getter]
-    fn color(&self) -> Srgb {
-        self.inner.color
+    fn color(&self) -> (f64, f64, f64) {
+        tup(self.inner.color)
     }
 
     #[getter]
@@ -746,10 +802,11 @@ impl PyOutlines {
                 width: opt_number("width", width)?.map_or(d.width, |w| w as f32),
             };
             let crease_style = style("crease", crease, common)?;
-            let mut set = |k: usize, name: &str, obj: Obj<'_, '_>, fallback: Option<LineStyle>| -> Result<()> {
-                o.styles[k] = if obj.is_some() { style(name, obj, common)? } else { fallback };
-                Ok(())
-            };
+            let mut set =
+                |k: usize, name: &str, obj: Obj<'_, '_>, fallback: Option<LineStyle>| -> Result<()> {
+                    o.styles[k] = if obj.is_some() { style(name, obj, common)? } else { fallback };
+                    Ok(())
+                };
             set(LineKind::Silhouette as usize, "silhouette", silhouette, Some(common))?;
             set(LineKind::Boundary as usize, "boundary", boundary, Some(common))?;
             set(LineKind::NonManifold as usize, "nonmanifold", nonmanifold, Some(common))?;
@@ -770,7 +827,9 @@ impl PyOutlines {
                 o.depth_offset = t as f32;
             }
             o.validate("outlines").map_err(|e| match e {
-                Error::InvalidValue { arg, reason } => Error::invalid(arg.trim_start_matches("outlines."), reason),
+                Error::InvalidValue { arg, reason } => {
+                    Error::invalid(arg.trim_start_matches("outlines."), reason)
+                }
                 other => other,
             })?;
             Ok(PyOutlines { inner: o })
@@ -894,7 +953,10 @@ pub mod state {
     }
 
     fn list(v: &[f32]) -> String {
-        std::iter::once(v.len().to_string()).chain(v.iter().map(|x| x.to_string())).collect::<Vec<_>>().join(";")
+        std::iter::once(v.len().to_string())
+            .chain(v.iter().map(|x| x.to_string()))
+            .collect::<Vec<_>>()
+            .join(";")
     }
 
     impl State for Material {
@@ -902,7 +964,9 @@ pub mod state {
             let params = match &self.model {
                 Model::Lambert => String::new(),
                 Model::Phong { shininess } => shininess.to_string(),
-                Model::ThresholdedPhong { t_h, t_s, highlight } => format!("{t_h};{t_s};{}", highlight.name()),
+                Model::ThresholdedPhong { t_h, t_s, highlight } => {
+                    format!("{t_h};{t_s};{}", highlight.name())
+                }
                 Model::Bands { thresholds, values } => format!("{};{}", list(thresholds), list(values)),
                 Model::Lut { table } => list(&table.iter().flatten().copied().collect::<Vec<_>>()),
             };
@@ -930,7 +994,9 @@ pub mod state {
                     highlight: Highlight::parse("state", r.next()?)?,
                 },
                 "bands" => Model::Bands { thresholds: r.list()?, values: r.list()? },
-                "lut" => Model::Lut { table: r.list()?.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect() },
+                "lut" => {
+                    Model::Lut { table: r.list()?.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect() }
+                }
                 other => return Err(Error::invalid("state", format!("unknown model {other:?}"))),
             };
             let m = Material { model, ambient, diffuse, specular, per_vertex };
@@ -966,8 +1032,12 @@ pub mod state {
     impl State for Camera {
         fn save(&self) -> String {
             let placement = match self.placement {
-                Placement::Fit { direction, up, margin } => format!("fit;{};{};{margin}", v3(direction), v3(up)),
-                Placement::LookAt { eye, target, up } => format!("look_at;{};{};{}", v3(eye), v3(target), v3(up)),
+                Placement::Fit { direction, up, margin } => {
+                    format!("fit;{};{};{margin}", v3(direction), v3(up))
+                }
+                Placement::LookAt { eye, target, up } => {
+                    format!("look_at;{};{};{}", v3(eye), v3(target), v3(up))
+                }
             };
             let projection = match self.projection {
                 Projection::Perspective { fov_y_deg } => format!("perspective;{fov_y_deg}"),

@@ -63,7 +63,8 @@ impl Placement {
         // half the diagonal, without squaring coordinates that may be near float64's limits
         let extent: [f64; 3] = std::array::from_fn(|k| 0.5 * bounds.max[k] - 0.5 * bounds.min[k]);
         let m = extent.iter().fold(0.0f64, |m, e| m.max(e.abs()));
-        let half = if m > 0.0 { m * extent.iter().map(|e| (e / m) * (e / m)).sum::<f64>().sqrt() } else { 0.0 };
+        let half =
+            if m > 0.0 { m * extent.iter().map(|e| (e / m) * (e / m)).sum::<f64>().sqrt() } else { 0.0 };
         let scale = if half.is_finite() && half > 0.0 { 2f64.powi(half.log2().ceil() as i32) } else { 1.0 };
         Placement { origin, scale: if scale.is_finite() && scale > 0.0 { scale } else { 1.0 } }
     }
@@ -135,7 +136,9 @@ impl GpuMesh {
         let stored: Vec<[f64; 3]> = positions.par_iter().map(|&p| placement.to_stored(p)).collect();
         let radius = faces
             .par_iter()
-            .map(|f| f.iter().map(|&i| stored[i as usize].iter().map(|x| x * x).sum::<f64>()).fold(0.0, f64::max))
+            .map(|f| {
+                f.iter().map(|&i| stored[i as usize].iter().map(|x| x * x).sum::<f64>()).fold(0.0, f64::max)
+            })
             .reduce(|| 0.0, f64::max)
             .sqrt()
             * placement.scale;
@@ -143,7 +146,11 @@ impl GpuMesh {
         let vertices: Vec<Vertex> = match normals {
             NormalMode::Smooth => {
                 let n = vertex_normals(&stored, &faces);
-                stored.par_iter().zip(&n).map(|(p, n)| Vertex { position: f32s(p), normal: f32s(n) }).collect()
+                stored
+                    .par_iter()
+                    .zip(&n)
+                    .map(|(p, n)| Vertex { position: f32s(p), normal: f32s(n) })
+                    .collect()
             }
             NormalMode::Flat => faces
                 .par_iter()
@@ -205,7 +212,10 @@ impl GpuMesh {
 
     /// The mesh's bounding sphere in its own coordinates.
     pub fn sphere(&self) -> super::scene::camera::Sphere {
-        super::scene::camera::Sphere { center: glam::DVec3::from_array(self.placement.origin), radius: self.radius }
+        super::scene::camera::Sphere {
+            center: glam::DVec3::from_array(self.placement.origin),
+            radius: self.radius,
+        }
     }
 }
 

@@ -26,7 +26,9 @@ impl MeshLines {
 
     pub fn index(&self, weld: bool) -> Result<&EdgeIndex> {
         self.indices[weld as usize]
-            .get_or_init(|| crate::parallel::install(|| EdgeIndex::build(&self.host.positions, &self.host.faces, weld)))
+            .get_or_init(|| {
+                crate::parallel::install(|| EdgeIndex::build(&self.host.positions, &self.host.faces, weld))
+            })
             .as_ref()
             .map_err(Clone::clone)
     }

@@ -36,7 +36,11 @@ fn uniform_layout(device: &wgpu::Device, label: &str, dynamic: bool) -> wgpu::Bi
     })
 }
 
-fn texture_layout(device: &wgpu::Device, label: &str, sample_type: wgpu::TextureSampleType) -> wgpu::BindGroupLayout {
+fn texture_layout(
+    device: &wgpu::Device,
+    label: &str,
+    sample_type: wgpu::TextureSampleType,
+) -> wgpu::BindGroupLayout {
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some(label),
         entries: &[wgpu::BindGroupLayoutEntry {
@@ -96,7 +100,11 @@ impl PipelineCache {
     }
 
     /// The pipeline `key`, built by `build` on first use.
-    pub fn get(&self, key: PipelineKey, build: impl FnOnce() -> wgpu::RenderPipeline) -> Arc<wgpu::RenderPipeline> {
+    pub fn get(
+        &self,
+        key: PipelineKey,
+        build: impl FnOnce() -> wgpu::RenderPipeline,
+    ) -> Arc<wgpu::RenderPipeline> {
         if let Some(p) = self.pipelines.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
             return p.clone();
         }
@@ -106,7 +114,12 @@ impl PipelineCache {
         self.pipelines.lock().unwrap_or_else(|e| e.into_inner()).entry(key).or_insert(p).clone()
     }
 
-    pub fn layout(&self, device: &wgpu::Device, label: &str, groups: &[&wgpu::BindGroupLayout]) -> wgpu::PipelineLayout {
+    pub fn layout(
+        &self,
+        device: &wgpu::Device,
+        label: &str,
+        groups: &[&wgpu::BindGroupLayout],
+    ) -> wgpu::PipelineLayout {
         let groups: Vec<Option<&wgpu::BindGroupLayout>> = groups.iter().map(|g| Some(*g)).collect();
         device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some(label),

@@ -73,8 +73,13 @@ pub fn plan(features: Features, frame: &FrameSpec) -> Plan {
     };
     let single = frame.msaa == 1 && frame.supersample == 1;
     let in_shade = o.color && single && geometry.is_some();
-    let shape =
-        Shape { width: frame.width, height: frame.height, msaa: frame.msaa, supersample: frame.supersample, geometry };
+    let shape = Shape {
+        width: frame.width,
+        height: frame.height,
+        msaa: frame.msaa,
+        supersample: frame.supersample,
+        geometry,
+    };
     let mut passes: Vec<Box<dyn Pass>> = Vec::new();
     if o.color {
         passes.push(Box::new(Shade {
@@ -167,7 +172,8 @@ impl Plan {
             *usage.entry(u.0).or_insert(wgpu::TextureUsages::empty()) |= u.1.usage();
         }
         let queries = if timestamps { 2 * self.timed() as u32 } else { 0 };
-        let staging_bytes = if queries > 0 { self.timestamp_offset() + 8 * queries as u64 } else { self.readback_bytes };
+        let staging_bytes =
+            if queries > 0 { self.timestamp_offset() + 8 * queries as u64 } else { self.readback_bytes };
         ResourceKey {
             textures: usage.into_iter().map(|(t, u)| (t, t.desc(&self.shape), u)).collect(),
             staging_bytes,
@@ -201,7 +207,10 @@ mod tests {
         assert_eq!(names(NONE, &f), ["shade", "readback_color", "readback_normal_depth"]);
         f.msaa = 4;
         f.supersample = 2;
-        assert_eq!(names(NONE, &f), ["shade", "gbuffer", "downsample", "readback_color", "readback_normal_depth"]);
+        assert_eq!(
+            names(NONE, &f),
+            ["shade", "gbuffer", "downsample", "readback_color", "readback_normal_depth"]
+        );
         f.outputs = Outputs { depth: true, ..Default::default() };
         assert_eq!(names(NONE, &f), ["gbuffer", "readback_depth"]);
         assert_eq!(plan(NONE, &f).shape.geometry, Some(GeometryLayout::Depth));

@@ -102,7 +102,11 @@ const DEPTH_SCALE_RANGE: std::ops::RangeInclusive<f64> = 1.0e-30..=1.0e30;
 impl Renderer {
     /// A renderer on the process-wide context of `backend` (created on first use).
     pub fn new(backend: BackendChoice) -> Result<Self> {
-        Ok(Renderer { ctx: context(backend)?, meshes: Mutex::new(HashMap::new()), next_id: AtomicU64::new(1) })
+        Ok(Renderer {
+            ctx: context(backend)?,
+            meshes: Mutex::new(HashMap::new()),
+            next_id: AtomicU64::new(1),
+        })
     }
 
     pub fn info(&self) -> &GpuInfo {
@@ -114,7 +118,12 @@ impl Renderer {
     }
 
     /// Uploads a mesh (faces already checked against `positions`) and returns its id.
-    pub fn add_mesh<T: Real>(&self, positions: &[Vec3<T>], faces: Vec<[u32; 3]>, normals: NormalMode) -> Result<MeshId> {
+    pub fn add_mesh<T: Real>(
+        &self,
+        positions: &[Vec3<T>],
+        faces: Vec<[u32; 3]>,
+        normals: NormalMode,
+    ) -> Result<MeshId> {
         self.ctx.check_process()?;
         crate::mesh::check_positions("vertices", positions)?;
         if let Some(bad) = faces.iter().flatten().find(|&&i| i as usize >= positions.len()) {
@@ -173,7 +182,10 @@ impl Renderer {
         scene.validate()?;
         let o = frame.outputs;
         if o.outline && scene.outlines.is_none() {
-            return Err(Error::invalid("outputs", "'outline' needs outlines (outlines='mesh', 'image' or 'both')"));
+            return Err(Error::invalid(
+                "outputs",
+                "'outline' needs outlines (outlines='mesh', 'image' or 'both')",
+            ));
         }
         if o.lines && !scene.mesh_lines() {
             return Err(Error::invalid(
@@ -188,7 +200,12 @@ impl Renderer {
     }
 
     /// Renders `scene` as `frame` asks, running only the passes its plan lists, into `out`.
-    pub fn render_into(&self, scene: &Scene, frame: &FrameSpec, out: OutputBuffers<'_>) -> Result<FrameReport> {
+    pub fn render_into(
+        &self,
+        scene: &Scene,
+        frame: &FrameSpec,
+        out: OutputBuffers<'_>,
+    ) -> Result<FrameReport> {
         let start = Instant::now();
         self.check(scene, frame)?;
         let records: Vec<Arc<MeshRecord>> =
@@ -315,7 +332,10 @@ impl Renderer {
                     b: p[e[1] as usize].map(|x| x as f32),
                     pad: 0,
                 }));
-                line_draws.push(LineDraw { uniform_offset: i as u32 * stride, instances: first..instances.len() as u32 });
+                line_draws.push(LineDraw {
+                    uniform_offset: i as u32 * stride,
+                    instances: first..instances.len() as u32,
+                });
             }
         }
         res.write_lines(ctx, &instances);
@@ -345,7 +365,8 @@ impl Renderer {
                 a: bg[3] as f64,
             },
         };
-        let mut encoder = ctx.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
+        let mut encoder =
+            ctx.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
         let mut timed = Vec::new();
         for pass in &plan.passes {
             let timing = match (&f.res.queries, pass.timed()) {
@@ -386,8 +407,9 @@ impl Renderer {
             .map_err(|_| Error::Gpu("the readback was dropped".into()))?
             .map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
         {
-            let mapped =
-                staging.get_mapped_range(..).map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
+            let mapped = staging
+                .get_mapped_range(..)
+                .map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
             let scale = cam.scale as f32;
             crate::parallel::install(|| {
                 if let (Some(r), Some(o)) = (plan.color, out.color) {

@@ -76,7 +76,12 @@ fn uniforms(dev: &Device, layouts: &Layouts, draw_capacity: usize) -> Uniforms {
     };
     Uniforms {
         frame_group: group("frame uniforms", &layouts.frame, &frame, None),
-        draw_group: group("draw uniforms", &layouts.draw, &draws, Some(std::mem::size_of::<DrawBlock>() as u64)),
+        draw_group: group(
+            "draw uniforms",
+            &layouts.draw,
+            &draws,
+            Some(std::mem::size_of::<DrawBlock>() as u64),
+        ),
         frame,
         draws,
         draw_capacity: draw_capacity.max(1),

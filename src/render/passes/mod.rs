@@ -39,7 +39,11 @@ pub fn mesh_pipeline(
             buffers: &[Some(GpuMesh::vertex_layout())],
         },
         // Both sides are drawn: a camera inside a mesh, or an open surface, shows back faces.
-        primitive: wgpu::PrimitiveState { cull_mode: None, front_face: wgpu::FrontFace::Ccw, ..Default::default() },
+        primitive: wgpu::PrimitiveState {
+            cull_mode: None,
+            front_face: wgpu::FrontFace::Ccw,
+            ..Default::default()
+        },
         depth_stencil: Some(wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
             depth_write_enabled: Some(true),
@@ -48,7 +52,12 @@ pub fn mesh_pipeline(
             bias: Default::default(),
         }),
         multisample: wgpu::MultisampleState { count: samples, mask: !0, alpha_to_coverage_enabled: false },
-        fragment: Some(wgpu::FragmentState { module, entry_point: Some(entry), compilation_options: options, targets }),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(entry),
+            compilation_options: options,
+            targets,
+        }),
         multiview_mask: None,
         cache: None,
     })
@@ -79,14 +88,23 @@ pub fn fullscreen_pipeline(
         primitive: Default::default(),
         depth_stencil: None,
         multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState { module, entry_point: Some(entry), compilation_options: options, targets }),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(entry),
+            compilation_options: options,
+            targets,
+        }),
         multiview_mask: None,
         cache: None,
     })
 }
 
 /// A bind group of one texture view.
-pub fn texture_group(f: &FrameCtx<'_>, layout: &wgpu::BindGroupLayout, view: &wgpu::TextureView) -> wgpu::BindGroup {
+pub fn texture_group(
+    f: &FrameCtx<'_>,
+    layout: &wgpu::BindGroupLayout,
+    view: &wgpu::TextureView,
+) -> wgpu::BindGroup {
     f.dev.device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: None,
         layout,

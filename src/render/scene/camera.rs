@@ -47,7 +47,11 @@ impl Default for Camera {
     /// Framed to fit from the default direction.
     fn default() -> Self {
         Camera {
-            placement: Placement::Fit { direction: DEFAULT_DIRECTION, up: DEFAULT_UP, margin: DEFAULT_MARGIN },
+            placement: Placement::Fit {
+                direction: DEFAULT_DIRECTION,
+                up: DEFAULT_UP,
+                margin: DEFAULT_MARGIN,
+            },
             projection: Projection::Perspective { fov_y_deg: DEFAULT_FOV_Y },
             near: None,
             far: None,
@@ -131,7 +135,12 @@ fn unit(arg: &str, v: [f64; 3]) -> Result<DVec3> {
 
 impl Camera {
     /// A checked camera.
-    pub fn new(placement: Placement, projection: Projection, near: Option<f64>, far: Option<f64>) -> Result<Self> {
+    pub fn new(
+        placement: Placement,
+        projection: Projection,
+        near: Option<f64>,
+        far: Option<f64>,
+    ) -> Result<Self> {
         let c = Camera { placement, projection, near, far };
         c.validate()?;
         Ok(c)

@@ -295,7 +295,10 @@ mod tests {
     #[test]
     fn constructors_apply_defaults_and_checks() {
         let m = Material::default();
-        assert_eq!(m.model, Model::Bands { thresholds: PAPER_BAND_THRESHOLDS.to_vec(), values: PAPER_BAND_VALUES.to_vec() });
+        assert_eq!(
+            m.model,
+            Model::Bands { thresholds: PAPER_BAND_THRESHOLDS.to_vec(), values: PAPER_BAND_VALUES.to_vec() }
+        );
         assert_eq!(m.diffuse, DEFAULT_COLOR);
         let l = Material::lambert([1.0, 1.0, 1.0], None, false).unwrap();
         assert!((crate::render::color::srgb_to_linear(l.ambient[0]) - 0.1).abs() < 1e-12);

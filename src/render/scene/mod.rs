@@ -50,7 +50,10 @@ impl Outputs {
             other => {
                 return Err(Error::invalid(
                     arg,
-                    format!("unknown output {other:?}; use {}", Self::NAMES.map(|n| format!("'{n}'")).join(", ")),
+                    format!(
+                        "unknown output {other:?}; use {}",
+                        Self::NAMES.map(|n| format!("'{n}'")).join(", ")
+                    ),
                 ))
             }
         };
@@ -105,7 +108,10 @@ impl FrameSpec {
             }
         }
         if !self.outputs.any() {
-            return Err(Error::invalid("outputs", "ask for at least one output ('color', 'normal', 'depth', ...)"));
+            return Err(Error::invalid(
+                "outputs",
+                "ask for at least one output ('color', 'normal', 'depth', ...)",
+            ));
         }
         if !(self.msaa == 1 || self.msaa == 4) {
             return Err(Error::invalid("msaa", format!("must be 1 or 4, got {}", self.msaa)));

@@ -139,16 +139,20 @@ impl Outlines {
                 s.validate(&format!("{arg}.{name}"))?;
             }
         }
-        crate::edges::feature::check_crease_angle(self.crease_angle)
-            .map_err(|_| {
-                Error::invalid(
-                    format!("{arg}.crease_angle"),
-                    format!("must be in [0, 180] degrees, got {}", self.crease_angle),
-                )
-            })?;
-        for (name, t) in [("normal_threshold", self.normal_threshold), ("depth_threshold", self.depth_threshold)] {
+        crate::edges::feature::check_crease_angle(self.crease_angle).map_err(|_| {
+            Error::invalid(
+                format!("{arg}.crease_angle"),
+                format!("must be in [0, 180] degrees, got {}", self.crease_angle),
+            )
+        })?;
+        for (name, t) in
+            [("normal_threshold", self.normal_threshold), ("depth_threshold", self.depth_threshold)]
+        {
             if !(t.is_finite() && t >= 0.0) {
-                return Err(Error::invalid(format!("{arg}.{name}"), format!("must be finite and >= 0, got {t}")));
+                return Err(Error::invalid(
+                    format!("{arg}.{name}"),
+                    format!("must be finite and >= 0, got {t}"),
+                ));
             }
         }
         if !(self.depth_offset.is_finite() && self.depth_offset >= 0.0) {

@@ -31,8 +31,7 @@ impl Pass for Geometry {
     ) -> Result<()> {
         let layout = self.layout;
         let pipeline = f.pipelines.get(("gbuffer", layout as u64), || {
-            let module =
-                f.pipelines.module(&f.dev.device, "gbuffer", || crate::render::wgsl::source(WGSL));
+            let module = f.pipelines.module(&f.dev.device, "gbuffer", || crate::render::wgsl::source(WGSL));
             let entry = match layout {
                 GeometryLayout::NormalDepth => "fs_normal_depth",
                 GeometryLayout::Depth => "fs_depth",

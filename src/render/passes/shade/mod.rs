@@ -32,12 +32,10 @@ impl Shade {
     }
 
     fn pipeline(&self, f: &FrameCtx<'_>, per_vertex: bool) -> Arc<wgpu::RenderPipeline> {
-        let variant = self.samples as u64
-            | (per_vertex as u64) << 8
-            | (self.geometry.map_or(0, |g| 1 + g as u64)) << 9;
+        let variant =
+            self.samples as u64 | (per_vertex as u64) << 8 | (self.geometry.map_or(0, |g| 1 + g as u64)) << 9;
         f.pipelines.get(("shade", variant), || {
-            let module =
-                f.pipelines.module(&f.dev.device, "shade", || crate::render::wgsl::source(WGSL));
+            let module = f.pipelines.module(&f.dev.device, "shade", || crate::render::wgsl::source(WGSL));
             let mut targets = vec![target(COLOR_FORMAT)];
             let entry = match self.geometry {
                 None => "fs_color",
@@ -84,7 +82,10 @@ impl Pass for Shade {
                 depth_slice: None,
                 resolve_target: Some(single),
                 // the samples are needed only until they are resolved
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(f.background), store: wgpu::StoreOp::Discard },
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(f.background),
+                    store: wgpu::StoreOp::Discard,
+                },
             })
         } else {
             cleared(single, f.background)
