@@ -159,3 +159,108 @@ fn empty_scene_is_background() {
         far: None,
     };
 }
+
+/// A bumpy sphere and a smaller one in front of it, so that some lines are hidden.
+fn two_spheres(r: &Renderer, outlines: super::scene::outlines::Outlines) -> Scene {
+    let (v, f) = icosphere(3, 0.04, 3).unwrap();
+    let id = r.add_mesh(&v, f, NormalMode::Smooth).unwrap();
+    let front = [[0.5, 0.0, 0.0, 0.4], [0.0, 0.5, 0.0, 0.2], [0.0, 0.0, 0.5, 1.2], [0.0, 0.0, 0.0, 1.0]];
+    Scene {
+        items: vec![
+            SceneItem { mesh: id, transform: IDENTITY, material: Material::default() },
+            SceneItem { mesh: id, transform: front, material: Material::default() },
+        ],
+        camera: Camera {
+            placement: Placement::LookAt { eye: [0.3, 0.4, 5.0], target: [0.0; 3], up: [0.0, 1.0, 0.0] },
+            projection: Projection::Perspective { fov_y_deg: 40.0 },
+            near: None,
+            far: None,
+        },
+        outlines: Some(outlines),
+        ..Default::default()
+    }
+}
+
+#[test]
+fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
+    use super::passes::lines::visibility::{coverage_image, DepthImage};
+    use super::scene::outlines::{Outlines, INK_KINDS};
+    let outlines = Outlines { crease_angle: 25.0, ..Outlines::new(true, false) };
+    for backend in backends() {
+        let r = Renderer::new(backend).unwrap();
+        let scene = two_spheres(&r, outlines.clone());
+        let frame = FrameSpec {
+            width: 240,
+            height: 180,
+            outputs: Outputs { outline: true, depth: true, ..Default::default() },
+            ..Default::default()
+        };
+        let out = r.render(&scene, &frame).unwrap();
+        let p = r.prepare(&scene, &frame).unwrap();
+        let depth: Vec<f32> = out.depth.as_ref().unwrap().iter().map(|d| d / p.cam.scale as f32).collect();
+        let img = DepthImage { depth: &depth, width: 240, height: 180 };
+        let mut lines = Vec::new();
+        for ((item, rec), view) in scene.items.iter().zip(&p.records).zip(&p.views) {
+            let projector = p.projector(item, rec, &frame);
+            let pos = rec.lines.positions();
+            let view = view.as_ref().expect("mesh lines are drawn");
+            lines.extend(
+                view.edges.iter().zip(&view.kinds).filter_map(|(e, k)| {
+                    projector.project(pos[e[0] as usize], pos[e[1] as usize], *k as usize)
+                }),
+            );
+        }
+        let widths: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.width)).collect();
+        let want = coverage_image(&lines, &widths, false, &img, p.visibility(&frame));
+        let got = out.outline.unwrap();
+        let n = got.len() as f64;
+        let mean = got.iter().zip(&want).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / n;
+        let off = got.iter().zip(&want).filter(|(a, b)| (*a - *b).abs() > 0.25).count() as f64 / n;
+        let inked = want.iter().filter(|&&c| c > 0.0).count();
+        assert!(inked > 500, "{backend:?}: the reference inks {inked} pixels");
+        assert!(
+            mean < 0.01 && off < 0.005,
+            "{backend:?}: mean difference {mean}, {off} of pixels off by > 0.25"
+        );
+        // the rule hides something here: with an infinite offset every line would show
+        let all = coverage_image(
+            &lines,
+            &widths,
+            false,
+            &img,
+            super::passes::lines::visibility::Visibility { offset: 1e30, ..p.visibility(&frame) },
+        );
+        let shown = all.iter().filter(|&&c| c > 0.0).count();
+        assert!(shown > inked + 200, "{backend:?}: hidden-line removal hid only {} pixels", shown - inked);
+    }
+}
+
+#[test]
+fn image_edges_match_the_cpu_rule_on_the_same_buffers_on_both_backends() {
+    use super::passes::edges::reference::edge_mask;
+    use super::scene::outlines::Outlines;
+    let outlines = Outlines { depth_threshold: 0.05, ..Outlines::new(false, true) };
+    for backend in backends() {
+        let r = Renderer::new(backend).unwrap();
+        let scene = two_spheres(&r, outlines.clone());
+        let frame = FrameSpec {
+            width: 199,
+            height: 151,
+            outputs: Outputs { outline: true, normal: true, depth: true, color: true, ..Default::default() },
+            ..Default::default()
+        };
+        let out = r.render(&scene, &frame).unwrap();
+        let (normal, depth) = (out.normal.unwrap(), out.depth.unwrap());
+        let want =
+            edge_mask(&normal, &depth, 151, 199, (outlines.normal_threshold, outlines.depth_threshold))
+                .unwrap();
+        let got: Vec<bool> = out.outline.unwrap().iter().map(|&c| c > 0.5).collect();
+        let agree = got.iter().zip(&want).filter(|(a, b)| a == b).count() as f64 / got.len() as f64;
+        let edges = want.iter().filter(|&&e| e).count();
+        assert!(edges > 300, "{backend:?}: {edges} edge pixels");
+        assert!(agree >= 0.999, "{backend:?}: the GPU mask agrees on {agree} of pixels");
+        // edge pixels are painted in the image ink (black) over the colour
+        let color = out.color.unwrap();
+        assert!(want.iter().zip(color.chunks(4)).filter(|(e, _)| **e).all(|(_, c)| c[..3] == [0, 0, 0]));
+    }
+}

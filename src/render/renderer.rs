@@ -27,7 +27,7 @@ use super::passes::lines::visibility::{visible_runs, DepthImage, Projector, Visi
 use super::plan::{plan, Features, Plan, SILHOUETTES, VISIBLE_LINES};
 use super::scene::camera::ResolvedCamera;
 use super::scene::outlines::Outlines;
-use super::scene::{FrameSpec, MeshId, Scene};
+use super::scene::{FrameSpec, MeshId, Scene, SceneItem};
 use super::uniforms::{draw_block, footprint, frame_block, model_view, LineInstance};
 
 /// A mesh the renderer holds.
@@ -199,14 +199,9 @@ impl Renderer {
         Ok(())
     }
 
-    /// Renders `scene` as `frame` asks, running only the passes its plan lists, into `out`.
-    pub fn render_into(
-        &self,
-        scene: &Scene,
-        frame: &FrameSpec,
-        out: OutputBuffers<'_>,
-    ) -> Result<FrameReport> {
-        let start = Instant::now();
+    /// Everything a frame needs before the GPU: the meshes, the camera, the plan and each mesh's
+    /// lines for this view (the `silhouettes` step).
+    pub(crate) fn prepare(&self, scene: &Scene, frame: &FrameSpec) -> Result<Prepared> {
         self.check(scene, frame)?;
         let records: Vec<Arc<MeshRecord>> =
             scene.items.iter().map(|i| self.mesh(i.mesh)).collect::<Result<_>>()?;
@@ -223,14 +218,6 @@ impl Renderer {
             ));
         }
         let plan = plan(Features::of(scene), frame);
-        let mut report = FrameReport {
-            passes: plan.names(),
-            view: rows(cam.view),
-            proj: rows(cam.proj),
-            near: cam.near,
-            far: cam.far,
-            ..Default::default()
-        };
         let outlines = scene.outlines.clone().unwrap_or_else(|| Outlines::new(false, false));
         let t = Instant::now();
         let views: Vec<Option<Outline>> = if plan.silhouettes {
@@ -246,16 +233,36 @@ impl Renderer {
         } else {
             vec![None; records.len()]
         };
-        if plan.silhouettes {
-            report.timings.push((SILHOUETTES, t.elapsed().as_secs_f64()));
+        Ok(Prepared { records, cam, plan, views, outlines, silhouette_seconds: t.elapsed().as_secs_f64() })
+    }
+
+    /// Renders `scene` as `frame` asks, running only the passes its plan lists, into `out`.
+    pub fn render_into(
+        &self,
+        scene: &Scene,
+        frame: &FrameSpec,
+        out: OutputBuffers<'_>,
+    ) -> Result<FrameReport> {
+        let start = Instant::now();
+        let p = self.prepare(scene, frame)?;
+        let mut report = FrameReport {
+            passes: p.plan.names(),
+            view: rows(p.cam.view),
+            proj: rows(p.cam.proj),
+            near: p.cam.near,
+            far: p.cam.far,
+            ..Default::default()
+        };
+        if p.plan.silhouettes {
+            report.timings.push((SILHOUETTES, p.silhouette_seconds));
         }
-        let gpu_part = self.run_frame(scene, frame, &plan, &cam, &records, &views, out)?;
+        let gpu_part = self.run_frame(scene, frame, &p, out)?;
         report.timings.extend(gpu_part.timings);
         report.gpu_timed = gpu_part.gpu_timed;
-        if plan.visible_lines {
+        if p.plan.visible_lines {
             let t = Instant::now();
             let depth = gpu_part.line_depth.as_deref().expect("the plan reads depth back for visible lines");
-            report.lines = Some(self.visible_lines(scene, frame, &cam, &records, &views, &outlines, depth));
+            report.lines = Some(self.visible_lines(scene, frame, &p, depth));
             report.timings.push((VISIBLE_LINES, t.elapsed().as_secs_f64()));
         }
         report.timings.push(("frame", start.elapsed().as_secs_f64()));
@@ -263,27 +270,23 @@ impl Renderer {
     }
 
     /// Records, submits and reads back one frame.
-    #[allow(clippy::too_many_arguments)]
     fn run_frame(
         &self,
         scene: &Scene,
         frame: &FrameSpec,
-        plan: &Plan,
-        cam: &ResolvedCamera,
-        records: &[Arc<MeshRecord>],
-        views: &[Option<Outline>],
+        p: &Prepared,
         out: OutputBuffers<'_>,
     ) -> Result<GpuPart> {
         let ctx = &*self.ctx;
         let device = &ctx.device;
         let timestamps = ctx.info.timestamps;
-        let key = plan.resource_key(timestamps);
+        let key = p.plan.resource_key(timestamps);
         let layouts = &ctx.pipelines.layouts;
         let mut res = ctx.frames.take(ctx, layouts, &key);
         // Error scopes are per thread, so concurrent renders each see only their own errors.
         let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-        let result = self.record_and_read(scene, frame, plan, cam, records, views, &mut res, out);
+        let result = self.record_and_read(scene, frame, p, &mut res, out);
         let memory_error = pollster::block_on(memory.pop());
         let validation_error = pollster::block_on(validation.pop());
         ctx.frames.give_back(res);
@@ -296,18 +299,15 @@ impl Renderer {
         result
     }
 
-    #[allow(clippy::too_many_arguments)]
     fn record_and_read(
         &self,
         scene: &Scene,
         frame: &FrameSpec,
-        plan: &Plan,
-        cam: &ResolvedCamera,
-        records: &[Arc<MeshRecord>],
-        views: &[Option<Outline>],
+        p: &Prepared,
         res: &mut FrameResources,
         out: OutputBuffers<'_>,
     ) -> Result<GpuPart> {
+        let (plan, cam, records, views) = (&p.plan, &p.cam, &p.records, &p.views);
         let ctx = &*self.ctx;
         let layouts = &ctx.pipelines.layouts;
         // uniforms and line instances
@@ -448,32 +448,14 @@ impl Renderer {
     }
 
     /// The visible mesh-space lines as polylines, chained per kind.
-    #[allow(clippy::too_many_arguments)]
-    fn visible_lines(
-        &self,
-        scene: &Scene,
-        frame: &FrameSpec,
-        cam: &ResolvedCamera,
-        records: &[Arc<MeshRecord>],
-        views: &[Option<Outline>],
-        outlines: &Outlines,
-        depth: &[f32],
-    ) -> Vec<Polyline> {
-        let (a, b) = footprint(cam, frame.height);
-        let rule = Visibility { offset: outlines.depth_offset as f64, footprint: (a, b) };
+    fn visible_lines(&self, scene: &Scene, frame: &FrameSpec, p: &Prepared, depth: &[f32]) -> Vec<Polyline> {
+        let rule = p.visibility(frame);
         let img = DepthImage { depth, width: frame.width as usize, height: frame.height as usize };
         let mut out = Vec::new();
-        for ((item, rec), view) in scene.items.iter().zip(records).zip(views) {
+        for ((item, rec), view) in scene.items.iter().zip(&p.records).zip(&p.views) {
             let Some(outline) = view else { continue };
-            let projector = Projector {
-                model_view: model_view(item, &rec.gpu.placement, cam),
-                proj: cam.normalized_proj(),
-                width: frame.width as f64,
-                height: frame.height as f64,
-                orthographic: cam.orthographic,
-                near: cam.near / cam.scale,
-            };
-            let p = rec.lines.positions();
+            let projector = p.projector(item, rec, frame);
+            let positions = rec.lines.positions();
             let mut kinds: Vec<usize> = outline.kinds.iter().map(|&k| k as usize).collect();
             kinds.sort_unstable();
             kinds.dedup();
@@ -490,10 +472,12 @@ impl Renderer {
                     let chain = &flat[w[0] as usize..w[1] as usize];
                     let screen: Vec<_> = chain
                         .windows(2)
-                        .filter_map(|s| projector.project(p[s[0] as usize], p[s[1] as usize], kind))
+                        .filter_map(|s| {
+                            projector.project(positions[s[0] as usize], positions[s[1] as usize], kind)
+                        })
                         .collect();
                     out.extend(
-                        visible_runs(&screen, cam.orthographic, &img, rule)
+                        visible_runs(&screen, p.cam.orthographic, &img, rule)
                             .into_iter()
                             .map(|points| Polyline { kind, points }),
                     );
@@ -501,6 +485,39 @@ impl Renderer {
             }
         }
         out
+    }
+}
+
+/// A frame's host-side preparation.
+pub(crate) struct Prepared {
+    pub records: Vec<Arc<MeshRecord>>,
+    pub cam: ResolvedCamera,
+    pub plan: Plan,
+    /// Each mesh's lines for this view (when the plan draws or returns them).
+    pub views: Vec<Option<Outline>>,
+    pub outlines: Outlines,
+    silhouette_seconds: f64,
+}
+
+impl Prepared {
+    /// Projects one mesh's lines to pixels, in normalised view units (like the GPU).
+    pub fn projector(&self, item: &SceneItem, rec: &MeshRecord, frame: &FrameSpec) -> Projector {
+        Projector {
+            model_view: model_view(item, &rec.gpu.placement, &self.cam),
+            proj: self.cam.normalized_proj(),
+            width: frame.width as f64,
+            height: frame.height as f64,
+            orthographic: self.cam.orthographic,
+            near: self.cam.near / self.cam.scale,
+        }
+    }
+
+    /// The hidden-line rule of this frame (depths in normalised view units).
+    pub fn visibility(&self, frame: &FrameSpec) -> Visibility {
+        Visibility {
+            offset: self.outlines.depth_offset as f64,
+            footprint: footprint(&self.cam, frame.height),
+        }
     }
 }
 

@@ -106,7 +106,7 @@ pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec) -> Fr
             outlines.depth_offset,
             outlines.normal_threshold,
             (outlines.depth_threshold as f64 / cam.scale) as f32,
-            0.0,
+            (cam.near / cam.scale) as f32,
         ],
         ink,
         lights,

@@ -13,7 +13,7 @@ struct Frame {
     ambient: vec4<f32>,    // ambient light a_l, linear rgb
     info: vec4<u32>,       // x: light count, y: 1 for an orthographic camera
     viewport: vec4<f32>,   // xy: output size in pixels; a pixel's footprint at depth d is d * z + w
-    outline: vec4<f32>,    // x: hidden-line offset (footprints), y: normal threshold, z: depth threshold
+    outline: vec4<f32>,    // x: hidden-line offset (footprints), y: normal threshold, z: depth threshold, w: near plane
     ink: array<vec4<f32>, INK_KINDS>,  // per ink kind: linear rgb, width in pixels (0: not drawn)
     lights: array<Light, MAX_LIGHTS>,
 };
