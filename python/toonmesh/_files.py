@@ -29,8 +29,11 @@ def _trimesh() -> Any:
 def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
     """(V, F) of a mesh file: (N, 3) float64 positions, (M, 3) int64 triangles.
 
-    Vertices are kept in the file's order (no merging or cleanup); a scene (GLB, glTF) is
-    flattened into one mesh with its transforms applied.
+    Vertices are kept as the file lists them (no merging or cleanup; an OBJ's positions are
+    not split where texture coordinates change), except in STL files, which
+    store every triangle's corners separately: those are merged by position, so that the mesh is
+    connected (smoothing and smooth normals need that). A scene (GLB, glTF) is flattened into one
+    mesh with its transforms applied.
 
     Raises:
         FileNotFoundError: no such file.
@@ -43,9 +46,13 @@ def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
         raise IsADirectoryError(f"{path}: is a folder, not a mesh file")
     trimesh = _trimesh()
     try:
-        mesh = trimesh.load(path, process=False, force="mesh")
+        # maintain_order: OBJ positions as listed, not split at texture seams
+        extra = {"maintain_order": True} if path.lower().endswith(".obj") else {}
+        mesh = trimesh.load(path, process=False, force="mesh", **extra)
     except Exception as exc:  # trimesh raises many kinds for files it cannot parse
         raise ValueError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
+    if path.lower().endswith(".stl") and hasattr(mesh, "merge_vertices"):
+        mesh.merge_vertices()
     faces = np.asarray(getattr(mesh, "faces", np.zeros((0, 3))))
     if faces.ndim != 2 or faces.shape[1] != 3 or len(faces) == 0:
         raise ValueError(f"{path}: no triangles in the file")

@@ -129,6 +129,8 @@ def _render_targets(meshes: Sequence[str], out: str, views: int, outputs: List[s
         return [[out]]
     if suffix in IMAGE_SUFFIXES:
         raise CliError(f"-o: {len(meshes) * views} images are written: give a folder, not {out}")
+    if suffix and not os.path.isdir(out):
+        raise CliError(f"-o: images are written as .png or .npz (or into a folder), not {suffix}")
     if os.path.exists(out) and not os.path.isdir(out):
         raise CliError(f"-o: {out} is a file; several images need a folder")
     check_distinct_names(meshes)

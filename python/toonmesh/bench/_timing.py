@@ -94,7 +94,7 @@ def _record(headers: Sequence[str], rows: List[Sequence[Any]], title: Optional[s
 def record_value(cell: Any) -> Tuple[Any, Optional[str]]:
     """A table cell as a JSON value and its unit: numbers stay numbers, and text that reads as a
     number with an optional unit ("47.8 ms", "3.3x", "1,024", "2.00e-02") becomes a float and
-    that unit; empty cells and NaN become None; other text stays text."""
+    that unit; empty cells, "-" (no value) and NaN become None; other text stays text."""
     if cell is None or isinstance(cell, bool):
         return cell, None
     if isinstance(cell, numbers.Integral):
@@ -102,7 +102,7 @@ def record_value(cell: Any) -> Tuple[Any, Optional[str]]:
     if isinstance(cell, numbers.Real):
         return (None if math.isnan(cell) else float(cell)), None
     text = str(cell).strip()
-    if not text:
+    if text in ("", "-"):
         return None, None
     m = _NUMBER.match(text)
     if m is None:
