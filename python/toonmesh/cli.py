@@ -143,7 +143,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     from toonmesh.batch import render_views
 
     for m in args.meshes:  # before any work, so a typo in the last name costs nothing
-        if not os.path.isfile(m):
+        if not os.path.exists(m):
             raise FileNotFoundError(f"{m}: no such file")
     style = STYLES[args.style]
     material = style(color=args.color) if args.color is not None else style()
@@ -315,8 +315,10 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                    help="paper: each vertex to its neighbours' mean (the renderer's own); or a toonmesh.smooth method")
     p.add_argument("--outputs", type=_outputs, default=["color"], metavar="LIST",
                    help="comma-separated: color, normal, depth (anything but color alone writes .npz)")
-    p.add_argument("--msaa", type=int, choices=(1, 4), default=1, help="multisampling (default 1)")
-    p.add_argument("--supersample", type=int, choices=(1, 2, 3, 4), default=1, help="render larger and average (default 1)")
+    # ranges are the renderer's to check (it knows the device)
+    p.add_argument("--msaa", type=_positive, default=1, metavar="N", help="samples per pixel (1 or 4; default 1)")
+    p.add_argument("--supersample", type=_positive, default=1, metavar="N",
+                   help="render N times larger and average (default 1)")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_render)
 
