@@ -8,7 +8,7 @@ outputs (normal, depth) are asked for, as NPZ with every output array and the ca
 from __future__ import annotations
 
 import os
-from typing import Any, List, Sequence, Tuple
+from typing import Any, Dict, List, Sequence, Tuple
 
 import numpy as np
 
@@ -105,7 +105,7 @@ def view_paths(mesh_path: str, out_dir: str, views: int, suffix: str) -> List[st
 
 def check_distinct_names(paths: Sequence[str]) -> None:
     """Meshes written into one folder must not share a file name stem."""
-    seen = {}
+    seen: Dict[str, str] = {}
     for p in paths:
         stem = os.path.splitext(os.path.basename(p))[0]
         if stem in seen:

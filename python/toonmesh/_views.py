@@ -10,7 +10,9 @@ exactly :meth:`toonmesh.Camera.fit`'s default direction.
 from __future__ import annotations
 
 import math
-from typing import Dict, List, Tuple
+from typing import Any, Dict, List, Tuple
+
+import numpy as np
 
 from toonmesh import Camera
 
@@ -48,9 +50,15 @@ def view_direction(up: str, angle: float = 0.0) -> Vec3:
     return tuple(a * side[i] + 0.3 * upv[i] + b * front[i] for i in range(3))  # type: ignore[return-value]
 
 
+def check_views(views: Any) -> int:
+    """``views`` as an int, which must be >= 1."""
+    if isinstance(views, bool) or not isinstance(views, (int, np.integer)) or views < 1:
+        raise ValueError(f"views: expected an int >= 1, got {views!r}")
+    return int(views)
+
+
 def turntable(views: int, up: str = "y") -> List[Camera]:
     """``views`` fit cameras evenly spaced around the up axis, the first one the front view."""
-    if isinstance(views, bool) or not isinstance(views, int) or views < 1:
-        raise ValueError(f"views: expected an int >= 1, got {views!r}")
+    views = check_views(views)
     upv = up_vector(up)
     return [Camera.fit(view_direction(up, 2.0 * math.pi * k / views), up=upv) for k in range(views)]

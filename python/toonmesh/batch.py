@@ -25,7 +25,7 @@ from typing import Any, Dict, List, Optional, Sequence
 import numpy as np
 
 from toonmesh._files import check_distinct_names, image_suffix, read_mesh, save_result, view_paths
-from toonmesh._views import turntable
+from toonmesh._views import check_views, turntable
 
 __all__ = ["render_file", "render_files"]
 
@@ -101,14 +101,8 @@ def render_file(mesh_path: str, out_dir: str, *, views: int = 1, **options: Any)
     outputs = options.get("outputs", ("color",))
     outputs = [outputs] if isinstance(outputs, str) else list(outputs)
     os.makedirs(out_dir, exist_ok=True)
-    files = view_paths(mesh_path, out_dir, _views(views), image_suffix(outputs))
+    files = view_paths(mesh_path, out_dir, check_views(views), image_suffix(outputs))
     return render_views(mesh_path, files, **options)
-
-
-def _views(views: Any) -> int:
-    if isinstance(views, bool) or not isinstance(views, (int, np.integer)) or views < 1:
-        raise ValueError(f"views: expected an int >= 1, got {views!r}")
-    return int(views)
 
 
 def render_files(
@@ -165,7 +159,7 @@ def render_files(
         raise ImportError("render_files needs dask.distributed: pip install 'toonmesh[batch]'") from None
     paths = [os.fspath(p) for p in paths]
     check_distinct_names(paths)
-    n_views = _views(views)
+    n_views = check_views(views)
     options = dict(render_options, up=up, backend=backend, smooth_iterations=smooth_iterations,
                    smooth_method=smooth_method, normals=normals)
     os.makedirs(out_dir, exist_ok=True)
