@@ -1,5 +1,9 @@
 """toonmesh: mesh smoothing, outline extraction and headless toon rendering, on NumPy arrays."""
 
+from toonmesh._runtime_dir import ensure_runtime_dir
+
+ensure_runtime_dir()  # before any GPU device is made: keeps Mesa's Wayland probe quiet
+
 from toonmesh import edges, shapes, smooth
 from toonmesh._core import (
     ConvergenceError,
