@@ -173,13 +173,18 @@ def test_edges_svg_draws_the_nine_visible_cube_edges(tmp_path, capsys, monkeypat
     cube = write_mesh(tmp_path / "cube.off", *_cube())
     r = toonmesh("edges", cube, "-o", "cube.svg", "--size", "200x150", cwd=tmp_path)
     svg = (tmp_path / "cube.svg").read_text()
-    assert svg.startswith("<svg") and 'width="200" height="150"' in svg
+    assert 'width="200" height="150"' in svg and "<svg" in svg
     # seen from the front, above and to the side: 3 faces, so 9 of the 12 creases; the 3 that meet
-    # at the far corner are hidden (the face diagonals are flat, not creases)
-    assert svg.count("<line") == 9 and "drew 9 of 12 lines" in r.stdout
+    # at the far corner are hidden (the face diagonals are flat, not creases). The 6 around are
+    # one closed silhouette; the 3 meeting at the near corner are ridges.
+    assert svg.count('<g id="silhouette"') == 1 and svg.count('<g id="ridge"') == 1
+    assert svg.count("<polyline") == 4 and "hidden" not in svg
+    assert "4 visible polylines" in r.stdout
     in_process(capsys, "edges", cube, "-o", "all.svg", "--size", "200x150", "--hidden")
     svg = (tmp_path / "all.svg").read_text()
-    assert svg.count("<line") == 12 and svg.count("<line", svg.index('id="hidden"'), svg.index("</g>")) == 3
+    hidden = svg[svg.index('<g id="hidden"'):]
+    assert hidden.index("</g>") > hidden.index("<polyline")  # the hidden group has lines
+    assert svg.index('<g id="hidden"') < svg.index('<g id="silhouette"')  # drawn underneath
 
 
 def test_edges_npz_has_the_arrays_and_an_orthographic_view_along_minus_eye(tmp_path, capsys, monkeypatch):
@@ -189,12 +194,12 @@ def test_edges_npz_has_the_arrays_and_an_orthographic_view_along_minus_eye(tmp_p
     in_process(capsys, "edges", cube, "-o", "cube.npz", "--eye", "0", "0", "5", "--size", "100x100")
     with np.load(tmp_path / "cube.npz") as z:
         assert len(z["crease"]) == 12 and len(z["boundary"]) == 0
-        # looking straight down -z: the 4 edges around the z = +1 face are the silhouette
-        # (front face against side faces seen edge-on) and 4 more at the back coincide on screen
-        assert z["segments"].shape == (len(z["edges"]), 2, 3) and z["points"].shape == (len(z["edges"]), 2, 2)
-        front = np.all(z["segments"][..., 2] == 1.0, axis=1)
-        assert front.sum() == 4 and z["visible"][front].all()
         assert z["projection"][3, 3] == 1.0  # orthographic
+        # looking straight down -z: one square silhouette around the z = +1 face
+        assert list(z["kinds"]) == ["silhouette"] and z["starts"].tolist() == [0, len(z["points"])]
+        p = z["points"]
+        assert np.allclose(p[0], p[-1]) and len(p) == 5  # a closed square
+        assert (p[:, 0].max() - p[:, 0].min()) > 30 and (p[:, 1].max() - p[:, 1].min()) > 30
 
 
 @pytest.mark.parametrize(

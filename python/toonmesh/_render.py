@@ -106,10 +106,8 @@ class RenderResult:
         self.far: float = raw["far"]
         self.backend = backend
         self.outlines = outlines
-        first = next(a for a in (self.color, self.depth, self.normal, self.outline) if a is not None) if any(
-            a is not None for a in (self.color, self.depth, self.normal, self.outline)
-        ) else None
-        self.height, self.width = (int(first.shape[0]), int(first.shape[1])) if first is not None else (0, 0)
+        self.width: int = raw["width"]
+        self.height: int = raw["height"]
 
     @property
     def total_time(self) -> float:

@@ -226,14 +226,13 @@ def cmd_edges(args: argparse.Namespace) -> int:
         camera = tm.Camera.fit(view_direction(args.up), up=up_vector(args.up))
     w, h = args.size
     lines = _line_drawing.view_lines(V, F, camera, width=w, height=h, crease_angle=args.crease_angle,
-                                     weld=args.weld, backend=args.backend)
-    counts = ", ".join(f"{len(lines[k]):,} {k}" for k in _line_drawing.KINDS)
+                                     weld=args.weld, stroke_width=args.stroke_width, hidden=args.hidden,
+                                     backend=args.backend)
     if suffix == ".svg":
-        drawn = _line_drawing.write_svg(args.out, lines, keep_hidden=args.hidden, stroke_width=args.stroke_width)
-        print(f"{args.mesh}: {counts}; drew {drawn:,} of {len(lines['edges']):,} lines ({w}x{h}) to {args.out}")
+        _line_drawing.write_svg(args.out, lines)
     else:
         _line_drawing.write_npz(args.out, lines)
-        print(f"{args.mesh}: {counts}; wrote {len(lines['edges']):,} lines ({int(lines['visible'].sum()):,} visible) to {args.out}")
+    print(f"{args.mesh}: {_line_drawing.summary(lines)} ({w}x{h}) to {args.out}")
     return 0
 
 
@@ -344,7 +343,8 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                    help="look orthographically along -eye (default: the renderer's fit camera from --up)")
     p.add_argument("--up", **up)  # type: ignore[arg-type]
     p.add_argument("--crease-angle", type=float, default=30.0, metavar="DEG", help="default 30")
-    p.add_argument("--weld", action="store_true", help="merge vertices at the same position first")
+    p.add_argument("--no-weld", dest="weld", action="store_false",
+                   help="keep vertices at the same position apart (seams then show as boundaries)")
     p.add_argument("--size", type=_size, default=(800, 600), metavar="WxH", help="drawing size (default 800x600)")
     p.add_argument("--hidden", action="store_true", help="draw hidden lines too (dashed)")
     p.add_argument("--stroke-width", type=float, default=1.5, metavar="PX")

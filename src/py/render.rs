@@ -186,8 +186,15 @@ impl<'py> Images<'py> {
         }
     }
 
-    fn into_dict(self, py: Python<'py>, report: FrameReport) -> PyResult<Bound<'py, PyDict>> {
+    fn into_dict(
+        self,
+        py: Python<'py>,
+        frame: &FrameSpec,
+        report: FrameReport,
+    ) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
+        d.set_item("width", frame.width)?;
+        d.set_item("height", frame.height)?;
         d.set_item("color", self.color)?;
         d.set_item("normal", self.normal)?;
         d.set_item("depth", self.depth)?;
@@ -357,7 +364,7 @@ impl PyRenderer {
         let buffers = images.buffers();
         let inner = &self.inner;
         let report = without_gil(py, || inner.render_into(&scene, &frame, buffers))?;
-        images.into_dict(py, report)
+        images.into_dict(py, &frame, report)
     }
 }
 

@@ -758,7 +758,8 @@ fn style(name: &str, obj: Obj<'_, '_>, common: LineStyle) -> Result<Option<LineS
 /// 1.0) and depth_threshold (default 0.1, in world depth units times 4): the rule of
 /// :func:`toonmesh.edges.detect_edges`. depth_offset: hidden-line removal keeps a point of a
 /// line when its depth is at most the largest surface depth in the 3x3 pixels around it plus
-/// this many pixel footprints (the world size of one pixel at that depth; default 1.0).
+/// this many pixel footprints (the world size of one pixel at that depth; default 1.0); a
+/// silhouette or boundary with background among those pixels is on the rim and always shows.
 #[pyclass(name = "Outlines", module = "toonmesh._core", frozen, eq)]
 #[derive(Clone, PartialEq)]
 pub struct PyOutlines {

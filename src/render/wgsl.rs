@@ -2,6 +2,8 @@
 //! mirror, so array sizes and ids are never repeated as bare numbers), then the shared
 //! `shaders/common.wgsl`, then the pass's own file.
 
+use crate::edges::outlines::LineKind;
+
 use super::scene::light::MAX_LIGHTS;
 use super::scene::material::{Model, MAX_LUT};
 use super::scene::outlines::{IMAGE_KIND, INK_KINDS};
@@ -16,6 +18,8 @@ pub fn prelude() -> String {
     constant("MAX_LUT", MAX_LUT);
     constant("INK_KINDS", INK_KINDS);
     constant("IMAGE_KIND", IMAGE_KIND);
+    constant("LINE_SILHOUETTE", LineKind::Silhouette as usize);
+    constant("LINE_BOUNDARY", LineKind::Boundary as usize);
     for (id, name) in Model::NAMES.iter().enumerate() {
         constant(&format!("MODEL_{}", name.to_ascii_uppercase()), id);
     }

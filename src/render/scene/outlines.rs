@@ -78,7 +78,8 @@ pub struct Outlines {
     pub depth_threshold: f32,
     /// Hidden-line removal: a line point is visible when its depth is at most the largest
     /// surface depth in the 3x3 output pixels around it plus this many pixel footprints (the
-    /// world size of one pixel at that depth).
+    /// world size of one pixel at that depth); a silhouette or boundary with background among
+    /// those pixels is on the rim and visible (see `passes::lines::visibility`).
     pub depth_offset: f32,
 }
 

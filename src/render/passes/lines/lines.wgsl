@@ -5,6 +5,8 @@
 // of the line is visible when its depth is at most the largest surface depth in the 3x3 pixels
 // around it plus `depth offset` pixel footprints (src/render/scene/outlines.rs), decided at the
 // nearest point of the centre line, so that the whole width of a line shows or hides together.
+// A silhouette or boundary with background among those pixels is on the rim and shows; other
+// lines are tested against the surface pixels only (a crease behind the rim stays hidden).
 // `reference.rs` holds the same rule on the CPU.
 
 @group(2) @binding(0) var geometry: texture_2d<u32>;
@@ -78,22 +80,28 @@ fn surface_depth(p: vec2<i32>) -> u32 {
     return textureLoad(geometry, p, 0)[DEPTH_COMPONENT];
 }
 
-// Whether the line point at pixel position `c` with depth `z` is visible.
-fn visible(c: vec2<f32>, z: f32) -> bool {
+// Whether the line point at pixel position `c` with depth `z` and kind `kind` is visible.
+fn visible(c: vec2<f32>, z: f32, kind: u32) -> bool {
     let size = vec2<i32>(textureDimensions(geometry));
     let q = vec2<i32>(floor(c));
+    let rim = kind == LINE_SILHOUETTE || kind == LINE_BOUNDARY;
     var far = 0.0;
+    var surface = false;
     for (var j = -1; j <= 1; j++) {
         for (var i = -1; i <= 1; i++) {
             let bits = surface_depth(clamp(q + vec2<i32>(i, j), vec2<i32>(0), size - 1));
             if ((bits & 0x7f800000u) == 0x7f800000u) {
-                return true;  // background next to the line: nothing covers it
+                if (rim) {
+                    return true;  // a rim line next to the background: nothing covers it
+                }
+            } else {
+                surface = true;
+                far = max(far, bitcast<f32>(bits));
             }
-            far = max(far, bitcast<f32>(bits));
         }
     }
     let footprint = z * frame.viewport.z + frame.viewport.w;
-    return z <= far + frame.outline.x * footprint + z * 1e-5;
+    return !surface || z <= far + frame.outline.x * footprint + z * 1e-5;
 }
 
 // Ink coverage of this pixel by the line, 0 where it is hidden.
@@ -115,7 +123,7 @@ fn coverage(o: LineOut) -> f32 {
         // perspective: 1 / depth is linear on screen
         z = 1.0 / mix(1.0 / o.depths.x, 1.0 / o.depths.y, t);
     }
-    return select(0.0, cov, visible(c, z));
+    return select(0.0, cov, visible(c, z, o.kind));
 }
 
 fn ink(kind: u32, cov: f32) -> vec4<f32> {

@@ -5,6 +5,8 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
+use crate::edges::outlines::LineKind;
+
 /// The relative depth tolerance of the visibility test (float rounding of the line's own depth).
 pub const DEPTH_EPSILON: f64 = 1e-5;
 
@@ -89,25 +91,31 @@ pub struct Visibility {
 }
 
 impl Visibility {
-    /// Whether the line point at pixel position `c` with depth `z` is visible: its depth is at
-    /// most the largest surface depth in the 3x3 pixels around it (background there: visible)
-    /// plus `offset` footprints, plus `DEPTH_EPSILON` of itself.
-    pub fn visible(&self, img: &DepthImage<'_>, c: [f64; 2], z: f64) -> bool {
+    /// Whether the point at pixel position `c`, depth `z`, of a line of kind `kind` is visible:
+    /// its depth is at most the largest surface depth in the 3x3 pixels around it plus `offset`
+    /// footprints (plus `DEPTH_EPSILON` of itself). A silhouette or boundary with background
+    /// among those pixels is on the rim and visible; other kinds are held against the surface
+    /// pixels only, so a crease behind the rim stays hidden. No surface around: visible.
+    pub fn visible(&self, img: &DepthImage<'_>, c: [f64; 2], z: f64, kind: usize) -> bool {
+        let rim = kind == LineKind::Silhouette as usize || kind == LineKind::Boundary as usize;
         let (qx, qy) = (c[0].floor() as i64, c[1].floor() as i64);
-        let mut far = 0.0f64;
+        let mut far: Option<f64> = None;
         for j in -1..=1 {
             for i in -1..=1 {
                 let x = (qx + i).clamp(0, img.width as i64 - 1) as usize;
                 let y = (qy + j).clamp(0, img.height as i64 - 1) as usize;
                 let d = img.depth[y * img.width + x];
                 if !d.is_finite() {
-                    return true;
+                    if rim {
+                        return true;
+                    }
+                } else {
+                    far = Some(far.unwrap_or(0.0).max(d as f64));
                 }
-                far = far.max(d as f64);
             }
         }
         let footprint = z * self.footprint.0 + self.footprint.1;
-        z <= far + self.offset * footprint + z * DEPTH_EPSILON
+        far.is_none_or(|far| z <= far + self.offset * footprint + z * DEPTH_EPSILON)
     }
 }
 
@@ -141,7 +149,7 @@ pub fn coverage_image(
                 };
                 let (c, z) = l.at(t, orthographic);
                 let cov = (width / 2.0 + 0.5 - (p[0] - c[0]).hypot(p[1] - c[1])).clamp(0.0, 1.0);
-                if cov > 0.0 && rule.visible(img, c, z) {
+                if cov > 0.0 && rule.visible(img, c, z, l.kind) {
                     let o = &mut out[y * w + x];
                     *o = o.max(cov as f32);
                 }
@@ -151,8 +159,14 @@ pub fn coverage_image(
     out
 }
 
+/// Visible runs shorter than this many pixels are dropped from the polylines: where a hidden
+/// line leaves a visible vertex, its first half pixel is visible too.
+pub const MIN_RUN: f64 = 1.0;
+
 /// The visible parts of a chain of lines (each starting where the last ended) as polylines in
-/// pixel coordinates, sampled every half pixel and cut to the image.
+/// pixel coordinates: visibility is sampled every half pixel, a run keeps the points where it
+/// starts and stops and the ends of the lines it passes, runs are cut to the image, and runs
+/// shorter than `MIN_RUN` pixels are left out.
 pub fn visible_runs(
     chain: &[ScreenLine],
     orthographic: bool,
@@ -163,7 +177,8 @@ pub fn visible_runs(
     let mut runs = Vec::new();
     let mut current: Vec<[f64; 2]> = Vec::new();
     let mut close = |current: &mut Vec<[f64; 2]>| {
-        if current.len() >= 2 {
+        let length: f64 = current.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum();
+        if length >= MIN_RUN {
             runs.push(std::mem::take(current));
         }
         current.clear();
@@ -174,14 +189,23 @@ pub fn visible_runs(
             close(&mut current);
         }
         let n = (l.length() / 0.5).ceil().max(1.0) as usize;
+        // a run's points: where it starts, the ends of lines it passes, and where it stops
+        let mut last_visible: Option<[f64; 2]> = None;
         for s in 0..=n {
             let (p, z) = l.at(s as f64 / n as f64, orthographic);
             let inside = (0.0..=w).contains(&p[0]) && (0.0..=h).contains(&p[1]);
-            if inside && z > 0.0 && rule.visible(img, p, z) {
-                if current.last() != Some(&p) {
-                    current.push(p);
+            if inside && z > 0.0 && rule.visible(img, p, z, l.kind) {
+                if current.is_empty() || s == n {
+                    if current.last() != Some(&p) {
+                        current.push(p);
+                    }
                 }
+                last_visible = Some(p);
             } else {
+                if let Some(q) = last_visible.filter(|q| current.last() != Some(q)) {
+                    current.push(q);
+                }
+                last_visible = None;
                 close(&mut current);
             }
         }
@@ -199,9 +223,15 @@ mod tests {
         let depth = vec![2.0f32; 16 * 16];
         let img = DepthImage { depth: &depth, width: 16, height: 16 };
         let rule = Visibility { offset: 1.0, footprint: (0.01, 0.0) };
-        assert!(rule.visible(&img, [8.0, 8.0], 2.0), "on the surface");
-        assert!(rule.visible(&img, [8.0, 8.0], 2.01), "within a footprint");
-        assert!(!rule.visible(&img, [8.0, 8.0], 2.1), "behind it");
+        assert!(rule.visible(&img, [8.0, 8.0], 2.0, 0), "on the surface");
+        assert!(rule.visible(&img, [8.0, 8.0], 2.01, 0), "within a footprint");
+        assert!(!rule.visible(&img, [8.0, 8.0], 2.1, 0), "behind it");
+        // at the rim: a silhouette shows, a crease behind the surface does not
+        let mut rim = depth.clone();
+        rim[8 * 16 + 9] = f32::INFINITY;
+        let img = DepthImage { depth: &rim, width: 16, height: 16 };
+        assert!(rule.visible(&img, [8.0, 8.0], 3.0, LineKind::Silhouette as usize));
+        assert!(!rule.visible(&img, [8.0, 8.0], 3.0, LineKind::Ridge as usize));
         let line = ScreenLine { a: [2.0, 8.5], b: [14.0, 8.5], za: 2.0, zb: 2.0, kind: 0 };
         let cov = coverage_image(&[line], &[1.5], false, &img, rule);
         assert_eq!(cov[8 * 16 + 8], 1.0);
