@@ -229,9 +229,9 @@ mod tests {
         // at the rim: a silhouette shows, a crease behind the surface does not
         let mut rim = depth.clone();
         rim[8 * 16 + 9] = f32::INFINITY;
-        let img = DepthImage { depth: &rim, width: 16, height: 16 };
-        assert!(rule.visible(&img, [8.0, 8.0], 3.0, LineKind::Silhouette as usize));
-        assert!(!rule.visible(&img, [8.0, 8.0], 3.0, LineKind::Ridge as usize));
+        let rim_img = DepthImage { depth: &rim, width: 16, height: 16 };
+        assert!(rule.visible(&rim_img, [8.0, 8.0], 3.0, LineKind::Silhouette as usize));
+        assert!(!rule.visible(&rim_img, [8.0, 8.0], 3.0, LineKind::Ridge as usize));
         let line = ScreenLine { a: [2.0, 8.5], b: [14.0, 8.5], za: 2.0, zb: 2.0, kind: 0 };
         let cov = coverage_image(&[line], &[1.5], false, &img, rule);
         assert_eq!(cov[8 * 16 + 8], 1.0);
