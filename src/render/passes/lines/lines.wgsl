@@ -11,14 +11,15 @@
 
 @group(2) @binding(0) var geometry: texture_2d<u32>;
 
-// The texel component that holds the depth: 3 in the normal + depth layout, 0 in depth only.
-override DEPTH_COMPONENT: u32 = 3u;
-
 struct LineIn {
     @location(0) a: vec3<f32>,
     @location(1) kind: u32,
     @location(2) b: vec3<f32>,
 };
+
+
+// The texel component that holds the depth: 3 in the normal + depth layout, 0 in depth only.
+override DEPTH_COMPONENT: u32 = 3u;
 
 struct LineOut {
     @builtin(position) clip: vec4<f32>,
@@ -37,7 +38,8 @@ fn to_pixels(v: vec3<f32>) -> vec2<f32> {
 @vertex
 fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
     var o: LineOut;
-    o.kind = l.kind;
+    let kind = l.kind;
+    o.kind = kind;
     var pa = (draw.model_view * vec4<f32>(l.a, 1.0)).xyz;
     var pb = (draw.model_view * vec4<f32>(l.b, 1.0)).xyz;
     if (frame.info.y == 0u) {
@@ -57,7 +59,7 @@ fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
     }
     let sa = to_pixels(pa);
     let sb = to_pixels(pb);
-    let half = frame.ink[l.kind].w * 0.5 + 1.0;
+    let half = frame.ink[kind].w * 0.5 + 1.0;
     let ab = sb - sa;
     let len = length(ab);
     var dir = vec2<f32>(1.0, 0.0);
@@ -85,6 +87,14 @@ fn visible(c: vec2<f32>, z: f32, kind: u32) -> bool {
     let size = vec2<i32>(textureDimensions(geometry));
     let q = vec2<i32>(floor(c));
     let rim = kind == LINE_SILHOUETTE || kind == LINE_BOUNDARY;
+    let tolerance = frame.outline.x * (z * frame.viewport.z + frame.viewport.w) + z * 1e-5;
+    // the pixel itself usually decides: in front of (or on) its surface, the largest depth
+    // around can only agree
+    let own = surface_depth(clamp(q, vec2<i32>(0), size - 1));
+    let own_background = (own & 0x7f800000u) == 0x7f800000u;
+    if ((own_background && rim) || (!own_background && z <= bitcast<f32>(own) + tolerance)) {
+        return true;
+    }
     var far = 0.0;
     var surface = false;
     for (var j = -1; j <= 1; j++) {
@@ -100,8 +110,7 @@ fn visible(c: vec2<f32>, z: f32, kind: u32) -> bool {
             }
         }
     }
-    let footprint = z * frame.viewport.z + frame.viewport.w;
-    return !surface || z <= far + frame.outline.x * footprint + z * 1e-5;
+    return !surface || z <= far + tolerance;
 }
 
 // Ink coverage of this pixel by the line, 0 where it is hidden.
