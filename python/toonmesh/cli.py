@@ -248,13 +248,17 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
 
 def cmd_demo(args: argparse.Namespace) -> int:
-    """toonmesh demo: the built-in scene (the Stanford bunny on a ground plane) to a PNG."""
+    """toonmesh demo: the papers' pipeline on the built-in scene, to a PNG: the Stanford bunny
+    smoothed (Al-Rousan et al.), shaded with the thresholded Phong model, with ink outlines
+    (Kang et al.'s silhouettes and creases, Borquez and Yepez's image-space edges), on a ground
+    plane."""
     t0 = time.perf_counter()
     import numpy as np
 
     from toonmesh.data import bunny
 
     V, F = bunny()
+    V = tm.smooth.laplacian(V, F, iterations=5, preset="paper")
     # a ground plane under the bunny, as a second mesh with its own material
     lo, hi = V.min(axis=0), V.max(axis=0)
     c, r = (lo + hi) / 2, float(np.linalg.norm(hi - lo))
@@ -262,7 +266,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
     plane_v += [c[0], lo[1], c[2]]
     plane_f = np.array([[0, 2, 1], [0, 3, 2]])
     scene = [
-        tm.Mesh(V, F, material=tm.Material.bands("#f08a3c")),
+        tm.Mesh(V, F, material=tm.Material.thresholded_phong("#f08a3c", t_h=0.1, t_s=0.9)),
         tm.Mesh(plane_v, plane_f, material=tm.Material.bands("#9ec5e8", thresholds=(0.2, 0.6), values=(0.55, 0.8, 1.0))),
     ]
     result = tm.render(
@@ -271,7 +275,8 @@ def cmd_demo(args: argparse.Namespace) -> int:
         lights=[tm.Light.directional((0.6, -0.5, -0.45), space="camera")],
         width=args.width,
         height=args.height,
-        msaa=4,
+        supersample=2,
+        outlines=tm.Outlines("mesh", width=2.0, crease_angle=60.0),
         backend=args.backend,
         background=(1.0, 1.0, 1.0, 1.0),
     )
