@@ -172,10 +172,14 @@ def _outline_accuracy(sizes: Sequence[int], repeat: int) -> List[Sequence[Any]]:
         exact = r.render(mesh, camera=cam, width=4 * size, height=4 * size, outputs="outline",
                          outlines=tm.Outlines("mesh", width=1.0, **rims)).outline > 0.5
         truth = exact.reshape(size, 4, size, 4).any(axis=(1, 3))
-        plain = median_time(lambda: r.render(mesh, **kw), repeat=repeat)
         for label, outlines, knob in variants:
-            t = median_time(lambda: r.render(mesh, outlines=outlines, **kw, **knob), repeat=repeat)
-            t0 = median_time(lambda: r.render(mesh, **kw, **knob), repeat=repeat) if knob else plain
+            # the frame with and without outlines in turns, so that a change in the machine's
+            # load falls on both
+            with_, without = [], []
+            for _ in range(max(1, repeat)):
+                with_.append(median_time(lambda: r.render(mesh, outlines=outlines, **kw, **knob), repeat=1))
+                without.append(median_time(lambda: r.render(mesh, **kw, **knob), repeat=1))
+            t, t0 = float(np.median(with_)), float(np.median(without))
             found = r.render(mesh, outputs="outline", outlines=outlines, **kw, **knob).outline > 0.5
             precision = float((found & _near(truth)).sum() / max(found.sum(), 1))
             recall = float((truth & _near(found)).sum() / max(truth.sum(), 1))
