@@ -239,3 +239,14 @@ def test_settings_pickle_and_compare_by_value():
     assert tm.Material.bands() != tm.Material.bands("#000000")
     with pytest.raises(AttributeError):
         objects[0].model = "lut"  # frozen
+
+
+def test_edge_index_gives_the_renderers_outline_set():
+    idx = tm.edges.EdgeIndex(CUBE_V, CUBE_F)
+    edges, kinds = idx.outlines(eye=(3.0, 2.5, 2.0), kinds=True)
+    assert np.array_equal(edges, idx.outlines(eye=(3.0, 2.5, 2.0)))
+    # the 12 cube edges: a hexagon of 6 silhouettes around, the other 6 are convex creases
+    assert len(edges) == 12 and sorted(map(tuple, edges)) == list(map(tuple, edges))
+    assert (kinds == "silhouette").sum() == 6 and (kinds == "ridge").sum() == 6
+    sil = idx.silhouette(eye=(3.0, 2.5, 2.0))
+    assert {tuple(e) for e in edges[kinds == "silhouette"]} == {tuple(e) for e in sil}

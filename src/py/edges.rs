@@ -15,6 +15,7 @@ use super::runtime::detached;
 use crate::edges::chains::chain_edges;
 use crate::edges::detect::paper_gradient;
 use crate::edges::feature::FeatureEdges;
+use crate::edges::outlines::Outline;
 use crate::edges::sobel::{sobel, Convention, Output};
 use crate::edges::{find_feature_edges, EdgeIndex, View};
 use crate::error::{Error, Result};
@@ -94,6 +95,8 @@ fn _silhouette<'py>(
 #[pyclass(frozen, name = "_EdgeIndex", module = "toonmesh._core")]
 struct PyEdgeIndex {
     inner: EdgeIndex,
+    /// The view-independent outline lines at the last crease angle asked for.
+    statics: std::sync::Mutex<Option<(u64, std::sync::Arc<Outline>)>>,
 }
 
 #[pymethods]
@@ -108,7 +111,7 @@ impl PyEdgeIndex {
     ) -> PyResult<Self> {
         let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
         let inner = mesh.run(py, faces, |p, f| on_positions!(p, v => EdgeIndex::build(v, f, weld)))?;
-        Ok(PyEdgeIndex { inner })
+        Ok(PyEdgeIndex { inner, statics: Default::default() })
     }
 
     #[pyo3(signature = (eye = None, direction = None))]
@@ -122,6 +125,33 @@ impl PyEdgeIndex {
         let inner = &self.inner;
         let s = detached(py, || inner.silhouette(view))?;
         Ok(pairs_to_numpy(py, s))
+    }
+
+    /// The outline set of one view: silhouettes, boundaries, creases and non-manifold edges,
+    /// each edge once with its kind (`edges::outlines::LineKind` as an int8).
+    #[pyo3(signature = (crease_angle, eye = None, direction = None))]
+    fn outlines<'py>(
+        &self,
+        py: Python<'py>,
+        crease_angle: f64,
+        eye: Option<[f64; 3]>,
+        direction: Option<[f64; 3]>,
+    ) -> PyResult<(Pairs<'py>, Bound<'py, PyArray1<i8>>)> {
+        let view = view_of(eye, direction).map_err(to_py)?;
+        let key = crease_angle.to_bits();
+        let cached =
+            self.statics.lock().unwrap_or_else(|e| e.into_inner()).clone().filter(|(k, _)| *k == key);
+        let inner = &self.inner;
+        let (all, statics) = detached(py, || {
+            let statics = match cached {
+                Some((_, s)) => s,
+                None => std::sync::Arc::new(Outline::statics(&inner.feature_edges(crease_angle)?)),
+            };
+            Ok((statics.with_silhouettes(&inner.silhouette(view)?), statics))
+        })?;
+        *self.statics.lock().unwrap_or_else(|e| e.into_inner()) = Some((key, statics));
+        let kinds = all.kinds.iter().map(|&k| k as i8).collect();
+        Ok((pairs_to_numpy(py, all.edges), vec_to_numpy(py, kinds)))
     }
 
     #[pyo3(signature = (crease_angle = 30.0))]
