@@ -8,7 +8,7 @@
 
 use std::collections::HashMap;
 use std::mem::ManuallyDrop;
-use std::sync::atomic::{AtomicPtr, Ordering};
+use std::sync::atomic::{AtomicPtr, AtomicU32, Ordering};
 use std::sync::{Arc, Mutex};
 
 use crate::error::{Error, Result};
@@ -89,8 +89,25 @@ fn registry() -> &'static Registry {
     }
 }
 
+/// The process that opened a GL device (0: none). EGL keeps its display per process and a forked
+/// child inherits it half-alive: opening GL again there hangs, so a child refuses at once.
+static GL_OPENED_BY: AtomicU32 = AtomicU32::new(0);
+
 fn create(choice: BackendChoice) -> Result<GpuContext> {
+    let pid = std::process::id();
+    let gl_parent = GL_OPENED_BY.load(Ordering::Acquire);
+    if choice == BackendChoice::Gl && gl_parent != 0 && gl_parent != pid {
+        return Err(Error::Gpu(
+            "the GL backend cannot open in a process forked from one that used it (EGL's state \
+             does not survive fork()); use the Vulkan backend in the child, or start workers \
+             with the 'spawn' or 'forkserver' method"
+                .into(),
+        ));
+    }
     let dev = Device::open(choice)?;
+    if dev.is_gl {
+        GL_OPENED_BY.store(pid, Ordering::Release);
+    }
     Ok(GpuContext {
         pipelines: PipelineCache::new(&dev.device),
         frames: FramePool::default(),
