@@ -544,17 +544,17 @@ impl GpuPart {
     }
 }
 
-/// The view of `cam` in a mesh's stored coordinates (for its silhouette test).
+/// The view of `cam` in a mesh's stored coordinates (for its silhouette test). The mesh's
+/// placement is undone by subtracting and dividing, not by inverting a matrix whose
+/// determinant may be out of float64's range.
 fn stored_view(cam: &ResolvedCamera, model: DMat4, mesh: &GpuMesh) -> View {
-    let to_stored = (model
-        * DMat4::from_translation(mesh.placement.origin.into())
-        * DMat4::from_scale(DVec3::splat(mesh.placement.scale)))
-    .inverse();
-    let world_from_view = cam.view.inverse();
+    let to_model = model.inverse();
+    let p = mesh.placement;
     if cam.orthographic {
-        let dir = world_from_view.transform_vector3(DVec3::NEG_Z);
-        View::Direction(to_stored.transform_vector3(dir).to_array())
+        let d = to_model.transform_vector3(cam.forward);
+        View::Direction(super::scene::camera::direction_of(d).to_array())
     } else {
-        View::Eye(to_stored.transform_point3(world_from_view.transform_point3(DVec3::ZERO)).to_array())
+        let e = (to_model.transform_point3(cam.eye) - DVec3::from_array(p.origin)) / p.scale;
+        View::Eye(e.to_array())
     }
 }
