@@ -40,12 +40,12 @@ def test_threads_give_the_same_images_as_one_after_another(backend):
 
     def worker(k):
         try:
-            for i in range(k, len(results), 4):
+            for i in range(k, len(results), 8):
                 results[i] = one(jobs[i % len(jobs)])
         except Exception as e:  # pragma: no cover - reported below
             errors.append(e)
 
-    threads = [threading.Thread(target=worker, args=(k,)) for k in range(4)]
+    threads = [threading.Thread(target=worker, args=(k,)) for k in range(8)]
     for t in threads:
         t.start()
     for t in threads:
@@ -56,16 +56,28 @@ def test_threads_give_the_same_images_as_one_after_another(backend):
 
 
 def test_a_thousand_renders_keep_memory_flat():
-    V, F = _core.icosphere(2, 0.0, 0)
+    # every kind of frame: outputs, outlines, vector lines, antialiasing, a stream of views
+    V, F = _core.icosphere(2, 0.03, 0)
     r = tm.Renderer()
     mesh = r.add_mesh(V, F)
-    for _ in range(100):
-        r.render(mesh, width=64, height=64)
+    kinds = [
+        dict(),
+        dict(outputs=("color", "normal", "depth")),
+        dict(outlines="both", outputs=("color", "outline", "lines")),
+        dict(msaa=4, supersample=2, outlines="mesh"),
+    ]
+
+    def frames(n):
+        for i in range(n):
+            r.render(mesh, width=64, height=64, camera=tm.Camera.fit((1.0, 0.1 * (i % 7), 1.0)), **kinds[i % 4])
+            if i % 100 == 0:
+                r.render_many(mesh, [tm.Camera.fit((1.0, 0.1 * k, 1.0)) for k in range(4)], width=32, height=32)
+
+    frames(200)
     before = _rss_bytes()
-    for i in range(1000):
-        r.render(mesh, width=64, height=64, camera=tm.Camera.fit((1.0, 0.1 * (i % 7), 1.0)))
+    frames(1000)
     grown = _rss_bytes() - before
-    assert grown < 16 * 2**20, f"RSS grew by {grown / 2**20:.1f} MiB over 1000 renders"
+    assert grown < 0.05 * before, f"RSS grew by {grown / 2**20:.1f} MiB ({grown / before:.1%}) over 1000 renders"
 
 
 def test_transient_meshes_are_freed():

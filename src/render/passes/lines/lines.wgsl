@@ -42,21 +42,17 @@ fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
     o.kind = kind;
     var pa = (draw.model_view * vec4<f32>(l.a, 1.0)).xyz;
     var pb = (draw.model_view * vec4<f32>(l.b, 1.0)).xyz;
-    if (frame.info.y == 0u) {
-        // keep the part in front of the near plane
-        let near = frame.outline.w;
-        let za = -pa.z;
-        let zb = -pb.z;
-        if (za < near && zb < near) {
-            o.clip = vec4<f32>(-2.0, -2.0, 0.0, 1.0);
-            return o;
-        }
-        if (za < near) {
-            pa = mix(pa, pb, (near - za) / (zb - za));
-        } else if (zb < near) {
-            pb = mix(pb, pa, (near - zb) / (za - zb));
-        }
-    }
+    // Keep the part in front of the near plane (perspective only). No branch tests uniforms
+    // alone: for such branches lavapipe (Mesa 22) compiles a shader variant at every draw and
+    // never frees it.
+    let clips = frame.info.y == 0u;
+    let near = frame.outline.w;
+    let za = -pa.z;
+    let zb = -pb.z;
+    let cut_a = clips && za < near;
+    let cut_b = clips && zb < near;
+    pa = select(pa, mix(pa, pb, (near - za) / (zb - za)), cut_a && !cut_b);
+    pb = select(pb, mix(pb, pa, (near - zb) / (za - zb)), cut_b && !cut_a);
     let sa = to_pixels(pa);
     let sb = to_pixels(pb);
     let half = frame.ink[kind].w * 0.5 + 1.0;
@@ -75,6 +71,8 @@ fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
     o.sa = sa;
     o.sb = sb;
     o.depths = vec2<f32>(-pa.z, -pb.z);
+    // wholly behind the near plane: outside the viewport
+    o.clip = select(o.clip, vec4<f32>(-2.0, -2.0, 0.0, 1.0), cut_a && cut_b);
     return o;
 }
 
@@ -127,11 +125,12 @@ fn coverage(o: LineOut) -> f32 {
     if (cov <= 0.0) {
         return 0.0;
     }
-    var z = mix(o.depths.x, o.depths.y, t);
-    if (frame.info.y == 0u) {
-        // perspective: 1 / depth is linear on screen
-        z = 1.0 / mix(1.0 / o.depths.x, 1.0 / o.depths.y, t);
-    }
+    // in perspective 1 / depth is linear on screen (a select: see the near plane above)
+    let z = select(
+        mix(o.depths.x, o.depths.y, t),
+        1.0 / mix(1.0 / o.depths.x, 1.0 / o.depths.y, t),
+        frame.info.y == 0u,
+    );
     return select(0.0, cov, visible(c, z, o.kind));
 }
 
