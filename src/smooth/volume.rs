@@ -1,24 +1,33 @@
 //! The volume constraint: after each step, rescale about the initial centre of mass so that the
 //! enclosed volume stays what it was (trimesh's formula, divergence theorem over the faces).
+//!
+//! The sums are taken about a reference point `about`. For a closed mesh the volume and centre
+//! do not depend on it, but the rounding does: about the origin, a mesh at distance D from it
+//! sums terms of size D^2 L (L its size) to a result of size L^3 and loses the centre entirely
+//! once D / L passes about 1e4. Measured about a point inside the mesh, the terms stay of size
+//! L^3. trimesh measures about the origin (which also decides open meshes' "volume"), and so
+//! does its preset.
 
 use crate::parallel::deterministic_sum;
 use crate::real::{Real, Vec3};
 
-/// Signed volume enclosed by the faces (meaningful for closed, consistently oriented meshes).
-pub fn volume<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> f64 {
+/// Signed volume enclosed by the faces, measured about `about` (meaningful for closed,
+/// consistently oriented meshes).
+pub fn volume<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], about: [f64; 3]) -> f64 {
     deterministic_sum(faces.len(), |f| {
-        let [a, b, c] = corners(x, faces[f]);
+        let [a, b, c] = corners(x, faces[f], about);
         let nx = (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]);
         nx * (a[0] + b[0] + c[0])
     }) / 6.0
 }
 
-/// Centre of mass of the solid the faces enclose, given its volume.
-pub fn center_of_mass<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], vol: f64) -> [f64; 3] {
+/// Centre of mass of the solid the faces enclose, given its volume, with the sums taken about
+/// `about`.
+pub fn center_of_mass<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], vol: f64, about: [f64; 3]) -> [f64; 3] {
     let mut c = [0.0; 3];
     for (k, ck) in c.iter_mut().enumerate() {
-        *ck = deterministic_sum(faces.len(), |f| {
-            let [a, b, cc] = corners(x, faces[f]);
+        *ck = about[k] + deterministic_sum(faces.len(), |f| {
+            let [a, b, cc] = corners(x, faces[f], about);
             let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
             let v = [cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]];
             let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
@@ -28,9 +37,13 @@ pub fn center_of_mass<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], vol: f64) -> [
     c
 }
 
+/// A face's corners relative to `about` (exactly the corners when `about` is the origin).
 #[inline]
-fn corners<T: Real>(x: &[Vec3<T>], f: [u32; 3]) -> [[f64; 3]; 3] {
-    f.map(|i| crate::real::to_f64(x[i as usize]))
+fn corners<T: Real>(x: &[Vec3<T>], f: [u32; 3], about: [f64; 3]) -> [[f64; 3]; 3] {
+    f.map(|i| {
+        let p = crate::real::to_f64(x[i as usize]);
+        [p[0] - about[0], p[1] - about[1], p[2] - about[2]]
+    })
 }
 
 /// The initial state the constraint restores.
@@ -38,24 +51,26 @@ fn corners<T: Real>(x: &[Vec3<T>], f: [u32; 3]) -> [[f64; 3]; 3] {
 pub struct VolumeConstraint {
     pub volume: f64,
     pub center: [f64; 3],
+    /// The point volumes are measured about.
+    pub about: [f64; 3],
 }
 
 impl VolumeConstraint {
     /// None when the mesh encloses no volume (an open or flat mesh): rescaling would divide by
     /// zero, so the constraint is skipped rather than producing inf or NaN.
-    pub fn new<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> Option<VolumeConstraint> {
-        let volume = volume(x, faces);
+    pub fn new<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], about: [f64; 3]) -> Option<VolumeConstraint> {
+        let volume = volume(x, faces, about);
         let scale = crate::mesh::Bounds::of(x).diagonal();
         let enclosed = volume.is_finite() && volume.abs() > 1e-12 * scale * scale * scale;
         if !enclosed {
             return None;
         }
-        Some(VolumeConstraint { volume, center: center_of_mass(x, faces, volume) })
+        Some(VolumeConstraint { volume, center: center_of_mass(x, faces, volume, about), about })
     }
 
     /// The factor to scale by, or None if the current volume is unusable.
     pub fn factor<T: Real>(&self, x: &[Vec3<T>], faces: &[[u32; 3]]) -> Option<f64> {
-        let now = volume(x, faces);
+        let now = volume(x, faces, self.about);
         let ratio = self.volume / now;
         (ratio.is_finite() && ratio > 0.0).then(|| ratio.cbrt())
     }
