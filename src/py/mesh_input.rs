@@ -1,13 +1,15 @@
 //! Mesh input read straight from NumPy's buffers when they are C-contiguous (the usual case),
 //! so a million-face mesh is not copied and checked serially before the parallel work starts.
 //! Anything else, and every error message, goes through the general readers in `convert`.
+//! Arrays in the other byte order are converted once, on entry.
 
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
-use super::convert::{faces, positions, Positions};
+use super::convert::{faces, native_order, positions, Positions};
 use super::errors::to_py;
-use super::runtime::detached;
+use super::runtime::detached_cancellable;
+use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::real::Real;
 
@@ -53,6 +55,7 @@ fn all_finite<T: Real>(flat: &[T]) -> bool {
 
 impl<'py> MeshInput<'py> {
     pub fn read(vertices: &Bound<'py, PyAny>, faces_obj: &Bound<'py, PyAny>) -> Result<Self> {
+        let (vertices, faces_obj) = (&native_order(vertices)?, &native_order(faces_obj)?);
         let mut me = MeshInput {
             v32: contiguous_rows3::<f32>(vertices),
             v64: None,
@@ -117,23 +120,24 @@ impl<'py> MeshInput<'py> {
         FacesRef::Checked(self.owned_faces.as_deref().expect("one of the three is set"))
     }
 
-    /// Runs `work` on the mesh with the GIL released. Faces are converted to u32 inside, in
+    /// Runs `work` on the mesh with the GIL released, stopping on Ctrl-C when `work` checks its
+    /// `Cancel` (see `runtime::detached_cancellable`). Faces are converted to u32 inside, in
     /// parallel; if any index is bad, the general reader produces the error message.
     pub fn run<R: Send>(
         &self,
         py: Python<'_>,
         faces_obj: &Bound<'_, PyAny>,
-        work: impl Fn(PositionsRef<'_>, &[[u32; 3]]) -> Result<R> + Send + Sync,
+        work: impl Fn(PositionsRef<'_>, &[[u32; 3]], &Cancel) -> Result<R> + Send + Sync,
     ) -> PyResult<R> {
         let (positions, faces_ref, n) = (self.positions(), self.faces(), self.n_vertices);
-        let outcome = detached(py, || {
+        let outcome = detached_cancellable(py, |cancel| {
             let converted = match faces_ref {
-                FacesRef::Checked(f) => return work(positions, f).map(Some),
+                FacesRef::Checked(f) => return work(positions, f, cancel).map(Some),
                 FacesRef::I64(flat) => faces_to_u32(flat, n),
                 FacesRef::I32(flat) => faces_to_u32(flat, n),
             };
             match converted {
-                Some(f) => work(positions, &f).map(Some),
+                Some(f) => work(positions, &f, cancel).map(Some),
                 None => Ok(None),
             }
         })?;

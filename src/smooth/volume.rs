@@ -26,13 +26,14 @@ pub fn volume<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], about: [f64; 3]) -> f6
 pub fn center_of_mass<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], vol: f64, about: [f64; 3]) -> [f64; 3] {
     let mut c = [0.0; 3];
     for (k, ck) in c.iter_mut().enumerate() {
-        *ck = about[k] + deterministic_sum(faces.len(), |f| {
-            let [a, b, cc] = corners(x, faces[f], about);
-            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-            let v = [cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]];
-            let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
-            n[k] * (a[k] * a[k] + b[k] * b[k] + a[k] * b[k] + cc[k] * (a[k] + b[k] + cc[k]))
-        }) / (24.0 * vol);
+        *ck = about[k]
+            + deterministic_sum(faces.len(), |f| {
+                let [a, b, cc] = corners(x, faces[f], about);
+                let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+                let v = [cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]];
+                let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+                n[k] * (a[k] * a[k] + b[k] * b[k] + a[k] * b[k] + cc[k] * (a[k] + b[k] + cc[k]))
+            }) / (24.0 * vol);
     }
     c
 }
