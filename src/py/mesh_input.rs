@@ -11,7 +11,7 @@ use super::errors::to_py;
 use super::runtime::detached_cancellable;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
-use crate::real::Real;
+use crate::smooth::range::largest_if_finite;
 
 /// Vertices and faces as read from Python: borrowed when possible, owned otherwise.
 pub struct MeshInput<'py> {
@@ -22,6 +22,8 @@ pub struct MeshInput<'py> {
     faces32: Option<PyReadonlyArray2<'py, i32>>,
     owned_faces: Option<Vec<[u32; 3]>>,
     n_vertices: usize,
+    /// The largest absolute coordinate, when the fast path computed it.
+    largest: Option<f64>,
 }
 
 #[derive(Clone, Copy)]
@@ -49,10 +51,6 @@ fn contiguous_rows3<'py, T: numpy::Element>(obj: &Bound<'py, PyAny>) -> Option<P
     (shape[1] == 3 && shape[0] > 0 && x.is_c_contiguous()).then_some(x)
 }
 
-fn all_finite<T: Real>(flat: &[T]) -> bool {
-    flat.iter().fold(true, |ok, x| ok & x.is_finite())
-}
-
 impl<'py> MeshInput<'py> {
     pub fn read(vertices: &Bound<'py, PyAny>, faces_obj: &Bound<'py, PyAny>) -> Result<Self> {
         let (vertices, faces_obj) = (&native_order(vertices)?, &native_order(faces_obj)?);
@@ -64,16 +62,18 @@ impl<'py> MeshInput<'py> {
             faces32: None,
             owned_faces: None,
             n_vertices: 0,
+            largest: None,
         };
         if me.v32.is_none() {
             me.v64 = contiguous_rows3::<f64>(vertices);
         }
-        let finite = match (&me.v32, &me.v64) {
-            (Some(x), _) => all_finite(x.as_slice().unwrap_or(&[f32::NAN])),
-            (_, Some(x)) => all_finite(x.as_slice().unwrap_or(&[f64::NAN])),
-            _ => false,
+        // One pass checks finiteness and finds the scale (which smoothing needs).
+        me.largest = match (&me.v32, &me.v64) {
+            (Some(x), _) => largest_if_finite(x.as_slice().unwrap_or(&[f32::NAN])),
+            (_, Some(x)) => largest_if_finite(x.as_slice().unwrap_or(&[f64::NAN])),
+            _ => None,
         };
-        if finite {
+        if me.largest.is_some() {
             me.n_vertices =
                 me.v32.as_ref().map(|x| x.shape()[0]).or(me.v64.as_ref().map(|x| x.shape()[0])).unwrap_or(0);
         } else {
@@ -95,6 +95,11 @@ impl<'py> MeshInput<'py> {
 
     pub fn n_vertices(&self) -> usize {
         self.n_vertices
+    }
+
+    /// The largest absolute coordinate, if reading found it.
+    pub fn largest_coordinate(&self) -> Option<f64> {
+        self.largest
     }
 
     pub fn positions(&self) -> PositionsRef<'_> {

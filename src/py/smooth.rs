@@ -68,11 +68,15 @@ fn _smooth<'py>(
     let plan = smooth::resolve(m, &args).map_err(to_py)?;
     let mesh = MeshInput::read(vertices, faces_arr).map_err(to_py)?;
     let pin = vertex_mask("pinned", pinned, mesh.n_vertices()).map_err(to_py)?;
-    let pin = pin.as_deref();
+    let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
     let out = mesh.run(py, faces_arr, |p, f, cancel| {
         Ok(match p {
-            PositionsRef::F32(v) => Smoothed::F32(smooth::smooth_cancellable(v, f, &plan, pin, cancel)?),
-            PositionsRef::F64(v) => Smoothed::F64(smooth::smooth_cancellable(v, f, &plan, pin, cancel)?),
+            PositionsRef::F32(v) => {
+                Smoothed::F32(smooth::smooth_cancellable(v, f, &plan, pin, cancel, largest)?)
+            }
+            PositionsRef::F64(v) => {
+                Smoothed::F64(smooth::smooth_cancellable(v, f, &plan, pin, cancel, largest)?)
+            }
         })
     })?;
     Ok(match out {

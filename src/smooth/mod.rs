@@ -91,23 +91,25 @@ pub fn smooth<T: Real>(
     plan: &Plan,
     pinned: Option<&[bool]>,
 ) -> Result<Vec<Vec3<T>>> {
-    smooth_cancellable(x0, faces, plan, pinned, Cancel::never())
+    smooth_cancellable(x0, faces, plan, pinned, Cancel::never(), None)
 }
 
 /// `smooth`, stopping with `Error::Interrupted` at the next step (or solver iteration) after
 /// `cancel` is raised. Meshes of any scale are handled (see `range`); a result that is not
-/// finite in the input's dtype is refused rather than returned.
+/// finite in the input's dtype is refused rather than returned. `largest` is the largest
+/// absolute coordinate of `x0` if the caller already has it (it saves a pass over `x0`).
 pub fn smooth_cancellable<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
     plan: &Plan,
     pinned: Option<&[bool]>,
     cancel: &Cancel,
+    largest: Option<f64>,
 ) -> Result<Vec<Vec3<T>>> {
     if plan.iterations == 0 {
         return Ok(x0.to_vec());
     }
-    let out = match range::Pow2::to_fit(x0) {
+    let out = match range::Pow2::to_fit(x0, largest) {
         None => smooth_any_order(x0, faces, plan, pinned, cancel, None)?,
         Some(s) => {
             let scaled = s.scale(x0);
@@ -116,10 +118,19 @@ pub fn smooth_cancellable<T: Real>(
             out
         }
     };
-    if !range::all_finite(&out) {
+    if may_grow(plan) && !range::all_finite(&out) {
         return Err(overflow_error::<T>(x0, plan));
     }
     Ok(out)
+}
+
+/// Whether a result can leave the input's bounding box (and so, in principle, the dtype's
+/// range). The clean and paper Laplacians cannot: each step is a convex combination of
+/// neighbours (see `clean`), so they skip the final check.
+fn may_grow(plan: &Plan) -> bool {
+    !(plan.method == Method::Laplacian
+        && matches!(plan.preset, Preset::Clean | Preset::Paper)
+        && !plan.volume_constraint)
 }
 
 /// The error for a result that overflowed the dtype: the input was too close to its largest

@@ -18,23 +18,33 @@ use crate::real::{Real, Vec3};
 pub const LOW: f64 = pow2(-200);
 pub const HIGH: f64 = pow2(200);
 
-/// The largest absolute coordinate, in parallel (eight lanes per task so the loop vectorises).
+/// The largest absolute value in `flat`, or None if any value is NaN or infinite. One pass,
+/// eight lanes at a time so that it vectorises: a finiteness check that also gives the scale.
+pub fn largest_if_finite<T: Real>(flat: &[T]) -> Option<f64> {
+    let (mut largest, mut finite) = ([0.0f64; 8], [true; 8]);
+    let mut blocks = flat.chunks_exact(8);
+    for block in &mut blocks {
+        for l in 0..8 {
+            let a = Real::to_f64(block[l]).abs();
+            finite[l] &= a <= f64::MAX;
+            largest[l] = if a > largest[l] { a } else { largest[l] };
+        }
+    }
+    let mut ok = finite.iter().all(|&f| f);
+    let mut m = largest.iter().fold(0.0f64, |m, &v| m.max(v));
+    for &c in blocks.remainder() {
+        let a = Real::to_f64(c).abs();
+        ok &= a <= f64::MAX;
+        m = m.max(a);
+    }
+    ok.then_some(m)
+}
+
+/// The largest absolute coordinate of finite positions, in parallel.
 pub fn largest_coordinate<T: Real>(x: &[Vec3<T>]) -> f64 {
-    x.par_chunks(8192)
-        .map(|chunk| {
-            let mut lanes = [0.0f64; 8];
-            let mut rows = chunk.chunks_exact(8);
-            for block in &mut rows {
-                for (l, p) in block.iter().enumerate() {
-                    for c in p {
-                        let a = Real::to_f64(*c).abs();
-                        lanes[l] = if a > lanes[l] { a } else { lanes[l] };
-                    }
-                }
-            }
-            let rest = rows.remainder().iter().flatten().fold(0.0f64, |m, c| m.max(Real::to_f64(*c).abs()));
-            lanes.iter().fold(rest, |m, &v| m.max(v))
-        })
+    x.as_flattened()
+        .par_chunks(3 * 8192)
+        .map(|c| largest_if_finite(c).unwrap_or(f64::INFINITY))
         .reduce(|| 0.0, f64::max)
 }
 
@@ -60,12 +70,13 @@ fn exponent(m: f64) -> i32 {
 
 impl Pow2 {
     /// The scale that brings `x` into [1, 2) when its largest coordinate is outside
-    /// [LOW, HIGH] (and not zero), or None when no scaling is needed.
-    pub fn to_fit<T: Real>(x: &[Vec3<T>]) -> Option<Pow2> {
+    /// [LOW, HIGH] (and not zero), or None when no scaling is needed. `largest` is that
+    /// coordinate if the caller already has it (it saves a pass over `x`).
+    pub fn to_fit<T: Real>(x: &[Vec3<T>], largest: Option<f64>) -> Option<Pow2> {
         if T::max_value().to_f64() < HIGH {
             return None; // f32: see the module docs
         }
-        let m = largest_coordinate(x);
+        let m = largest.unwrap_or_else(|| largest_coordinate(x));
         if m == 0.0 || (LOW..=HIGH).contains(&m) {
             return None;
         }
@@ -97,9 +108,9 @@ impl Pow2 {
     }
 }
 
-/// Whether every coordinate is finite.
+/// Whether every coordinate is finite, in parallel.
 pub fn all_finite<T: Real>(x: &[Vec3<T>]) -> bool {
-    x.par_chunks(8192).all(|chunk| chunk.iter().flatten().fold(true, |ok, c| ok & c.is_finite()))
+    x.as_flattened().par_chunks(3 * 8192).all(|c| largest_if_finite(c).is_some())
 }
 
 #[cfg(test)]
@@ -110,7 +121,7 @@ mod tests {
     fn fits_extreme_meshes_into_one_to_two_exactly() {
         for m in [1e-320, 1e-300, 1e-61, 1e61, 1e300, f64::MAX] {
             let x = vec![[m, -m / 3.0, 0.0], [0.5 * m, 0.0, 1e-310]];
-            let s = Pow2::to_fit(&x).expect("outside the safe range");
+            let s = Pow2::to_fit(&x, None).expect("outside the safe range");
             let y = s.scale(&x);
             let top = largest_coordinate(&y);
             assert!((1.0..2.0).contains(&top), "{m}: {top}");
@@ -118,9 +129,9 @@ mod tests {
             s.restore(&x, &y, &mut back);
             assert_eq!(back[0][0], 0.5 * m, "{m}");
         }
-        assert_eq!(Pow2::to_fit(&[[1e60f64, 0.0, 0.0]]), None);
-        assert_eq!(Pow2::to_fit(&[[0.0f64; 3]]), None);
-        assert_eq!(Pow2::to_fit(&[[f32::MAX, 0.0, 0.0]]), None);
+        assert_eq!(Pow2::to_fit(&[[1e60f64, 0.0, 0.0]], None), None);
+        assert_eq!(Pow2::to_fit(&[[0.0f64; 3]], None), None);
+        assert_eq!(Pow2::to_fit(&[[f32::MAX, 0.0, 0.0]], None), None);
         for m in [f64::MIN_POSITIVE, 5e-324, 1e-310, 0.75, 1.0, 3.0, f64::MAX] {
             let e = exponent(m);
             assert!(m / 2f64.powi(e) >= 1.0 && m / 2f64.powi(e) < 2.0 || e < -1022, "{m}: {e}");
@@ -129,10 +140,26 @@ mod tests {
     }
 
     #[test]
+    fn largest_if_finite_sees_every_lane_and_the_tail() {
+        for n in [1, 7, 8, 9, 17, 100] {
+            for at in [0, n / 2, n - 1] {
+                let mut v = vec![1.0f64; n];
+                v[at] = -3.0;
+                assert_eq!(largest_if_finite(&v), Some(3.0));
+                for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                    v[at] = bad;
+                    assert_eq!(largest_if_finite(&v), None, "{n} {at} {bad}");
+                }
+            }
+        }
+        assert_eq!(largest_if_finite::<f32>(&[]), Some(0.0));
+    }
+
+    #[test]
     fn unmoved_vertices_keep_their_exact_input() {
         // 1e-310 is lost when scaled down from 1e300, but a vertex that does not move is restored.
         let x = vec![[1e300, 0.0, 0.0], [1e-310, 2.0, 3.0]];
-        let s = Pow2::to_fit(&x).unwrap();
+        let s = Pow2::to_fit(&x, None).unwrap();
         let y = s.scale(&x);
         let mut out = y.clone();
         s.restore(&x, &y, &mut out);
