@@ -503,7 +503,7 @@ def detect_edges(
         float32 when the buffer is float32, float64 otherwise.
     """
     if normal is None and depth is None:
-        raise ValueError("normal: give a normal buffer, a depth buffer, or both")
+        raise ValueError("normal, depth: give a normal buffer, a depth buffer, or both")
     gn = gd = None
     mask = None
     if normal is not None:

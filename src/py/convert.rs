@@ -77,6 +77,9 @@ fn rows3<T: numpy::Element + Copy>(a: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
 pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
     let obj = &native_order(obj)?;
     let a = untyped(arg, obj)?;
+    if a.dtype().kind() != b'f' {
+        return Err(Error::wrong_type(arg, format!("dtype must be float32 or float64, got {}", dtype_name(a))));
+    }
     check_rows3(arg, a, "N")?;
     let p = if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, f32>>() {
         Positions::F32(rows3(&x))
@@ -100,6 +103,12 @@ pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
 pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Faces> {
     let obj = &native_order(obj)?;
     let a = untyped(arg, obj)?;
+    let wrong_dtype = || {
+        Error::wrong_type(arg, format!("dtype must be int32, int64, uint32 or uint64, got {}", dtype_name(a)))
+    };
+    if !matches!(a.dtype().kind(), b'i' | b'u') {
+        return Err(wrong_dtype());
+    }
     check_rows3(arg, a, "M")?;
     if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, i32>>() {
         check_faces(arg, rows3(&x).into_iter(), n_vertices)
@@ -110,10 +119,7 @@ pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Fac
     } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, u64>>() {
         check_faces(arg, rows3(&x).into_iter(), n_vertices)
     } else {
-        Err(Error::wrong_type(
-            arg,
-            format!("dtype must be int32, int64, uint32 or uint64, got {}", dtype_name(a)),
-        ))
+        Err(wrong_dtype())
     }
 }
 

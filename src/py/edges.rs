@@ -57,7 +57,7 @@ fn view_of(eye: Option<&Bound<'_, PyAny>>, direction: Option<&Bound<'_, PyAny>>)
         (Some(e), None) => View::Eye(e).check(),
         (None, Some(d)) => View::Direction(d).check(),
         _ => {
-            Err(Error::invalid("eye", "give exactly one of eye= (perspective) or direction= (orthographic)"))
+            Err(Error::invalid("eye, direction", "give exactly one of eye= (perspective) or direction= (orthographic)"))
         }
     }
 }
