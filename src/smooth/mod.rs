@@ -232,10 +232,15 @@ fn smooth_in_order<T: Real>(
             }
         }
     };
-    // trimesh measures volume about the origin; elsewhere about the box centre, which keeps the
-    // sums exact enough on meshes far from the origin.
-    let about = if plan.preset == Preset::Trimesh { [0.0; 3] } else { crate::mesh::Bounds::of(x0).center() };
-    let volume = if plan.volume_constraint { VolumeConstraint::new(x0, faces, about) } else { None };
+    // trimesh measures volume about the origin; elsewhere about the vertices' mean, which keeps
+    // the sums accurate far from the origin and moves with the mesh (an open mesh's "volume"
+    // depends on that point).
+    let about = if plan.preset == Preset::Trimesh { [0.0; 3] } else { volume::mean(x0) };
+    // The clean behaviour constrains only what encloses a volume; trimesh's rule applies its
+    // formula to any mesh.
+    let closed_only = plan.preset != Preset::Trimesh;
+    let volume =
+        if plan.volume_constraint { VolumeConstraint::new(x0, faces, about, closed_only) } else { None };
     let mut x = Steps::new(x0);
     let mut scratch = clean::Scratch::default();
     let mut slot: Option<Operator> = None;

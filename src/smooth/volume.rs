@@ -5,8 +5,9 @@
 //! do not depend on it, but the rounding does: about the origin, a mesh at distance D from it
 //! sums terms of size D^2 L (L its size) to a result of size L^3 and loses the centre entirely
 //! once D / L passes about 1e4. Measured about a point inside the mesh, the terms stay of size
-//! L^3. trimesh measures about the origin (which also decides open meshes' "volume"), and so
-//! does its preset.
+//! L^3. For an open mesh the "volume" (that of the cone from `about` over the faces) depends
+//! on the point: the clean behaviour uses the vertices' mean, which moves with the mesh, so the
+//! result commutes with rigid motions. trimesh measures about the origin, and so does its preset.
 
 use crate::parallel::deterministic_sum;
 use crate::real::{Real, Vec3};
@@ -38,6 +39,12 @@ pub fn center_of_mass<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], vol: f64, abou
     c
 }
 
+/// The mean of the positions (in a fixed summation order, so the same bits for any thread count).
+pub fn mean<T: Real>(x: &[Vec3<T>]) -> [f64; 3] {
+    let n = x.len().max(1) as f64;
+    std::array::from_fn(|k| deterministic_sum(x.len(), |i| x[i][k].to_f64()) / n)
+}
+
 /// A face's corners relative to `about` (exactly the corners when `about` is the origin).
 #[inline]
 fn corners<T: Real>(x: &[Vec3<T>], f: [u32; 3], about: [f64; 3]) -> [[f64; 3]; 3] {
@@ -59,12 +66,28 @@ pub struct VolumeConstraint {
 impl VolumeConstraint {
     /// None when the mesh encloses no volume (an open or flat mesh): rescaling would divide by
     /// zero, so the constraint is skipped rather than producing inf or NaN.
-    pub fn new<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], about: [f64; 3]) -> Option<VolumeConstraint> {
+    ///
+    /// With `closed_only`, a mesh whose volume depends on the point it is measured from (an open
+    /// or inconsistently oriented one, where "enclosed volume" and its centre mean nothing) is
+    /// skipped too: the volume is measured again about a point one diagonal away, and the two
+    /// must agree to 1e-6.
+    pub fn new<T: Real>(
+        x: &[Vec3<T>],
+        faces: &[[u32; 3]],
+        about: [f64; 3],
+        closed_only: bool,
+    ) -> Option<VolumeConstraint> {
         let volume = volume(x, faces, about);
         let scale = crate::mesh::Bounds::of(x).diagonal();
         let enclosed = volume.is_finite() && volume.abs() > 1e-12 * scale * scale * scale;
         if !enclosed {
             return None;
+        }
+        if closed_only {
+            let elsewhere = self::volume(x, faces, about.map(|c| c + scale));
+            if !((elsewhere - volume).abs() <= 1e-6 * volume.abs()) {
+                return None;
+            }
         }
         Some(VolumeConstraint { volume, center: center_of_mass(x, faces, volume, about), about })
     }
