@@ -78,7 +78,10 @@ pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
     let obj = &native_order(obj)?;
     let a = untyped(arg, obj)?;
     if a.dtype().kind() != b'f' {
-        return Err(Error::wrong_type(arg, format!("dtype must be float32 or float64, got {}", dtype_name(a))));
+        return Err(Error::wrong_type(
+            arg,
+            format!("dtype must be float32 or float64, got {}", dtype_name(a)),
+        ));
     }
     check_rows3(arg, a, "N")?;
     let p = if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, f32>>() {

@@ -56,9 +56,10 @@ fn view_of(eye: Option<&Bound<'_, PyAny>>, direction: Option<&Bound<'_, PyAny>>)
     match (eye, direction) {
         (Some(e), None) => View::Eye(e).check(),
         (None, Some(d)) => View::Direction(d).check(),
-        _ => {
-            Err(Error::invalid("eye, direction", "give exactly one of eye= (perspective) or direction= (orthographic)"))
-        }
+        _ => Err(Error::invalid(
+            "eye, direction",
+            "give exactly one of eye= (perspective) or direction= (orthographic)",
+        )),
     }
 }
 

@@ -232,15 +232,8 @@ fn smooth_in_order<T: Real>(
             }
         }
     };
-    // trimesh measures volume about the origin; elsewhere about the vertices' mean, which keeps
-    // the sums accurate far from the origin and moves with the mesh (an open mesh's "volume"
-    // depends on that point).
-    let about = if plan.preset == Preset::Trimesh { [0.0; 3] } else { volume::mean(x0) };
-    // The clean behaviour constrains only what encloses a volume; trimesh's rule applies its
-    // formula to any mesh.
-    let closed_only = plan.preset != Preset::Trimesh;
-    let volume =
-        if plan.volume_constraint { VolumeConstraint::new(x0, faces, about, closed_only) } else { None };
+    let rule = if plan.preset == Preset::Trimesh { volume::Rule::Trimesh } else { volume::Rule::Enclosed };
+    let volume = if plan.volume_constraint { VolumeConstraint::new(x0, faces, rule) } else { None };
     let mut x = Steps::new(x0);
     let mut scratch = clean::Scratch::default();
     let mut slot: Option<Operator> = None;
