@@ -44,8 +44,10 @@ pub fn cone_volume<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]], about: [f64; 3]) 
     }) / 6.0
 }
 
-/// Whether the faces' vector area vanishes (to 1e-9 of their total area): true of closed,
-/// consistently oriented meshes, whose enclosed volume does not depend on where it is measured.
+/// Whether the faces' vector area vanishes (to `CLOSED_TOLERANCE` times the dtype's epsilon
+/// of their total area): true of closed, consistently oriented meshes, whose enclosed volume
+/// does not depend on where it is measured. The tolerance lies well above the rounding of the
+/// coordinates (a collinear face rounded to float32 opens about 1e-8 of the area).
 pub fn encloses<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> bool {
     let cross = |f: usize| {
         let [a, b, c] = corners(x, faces[f], [0.0; 3]);
@@ -54,8 +56,11 @@ pub fn encloses<T: Real>(x: &[Vec3<T>], faces: &[[u32; 3]]) -> bool {
     };
     let total = deterministic_sum(faces.len(), |f| crate::real::norm(cross(f)));
     let vector: [f64; 3] = std::array::from_fn(|k| deterministic_sum(faces.len(), |f| cross(f)[k]));
-    crate::real::norm(vector) <= 1e-9 * total
+    crate::real::norm(vector) <= CLOSED_TOLERANCE * T::EPS * total
 }
+
+/// See `encloses`.
+pub const CLOSED_TOLERANCE: f64 = 1e3;
 
 /// Centre of mass of the solid the faces enclose, given its volume, with the sums taken about
 /// `about`.
