@@ -19,7 +19,13 @@ Rules shared by every mesh-space function:
   is never a crease and never a silhouette; it still counts for boundary and non-manifold edges.
   Degenerate faces are listed in ``FeatureEdges.degenerate_faces``. (trimesh gives such faces a
   zero normal and a 90 degree angle to every neighbour, which creates creases at random.)
-- Face normals follow the right-hand rule, (b - a) x (c - a), and are computed in float64.
+- Face normals follow the right-hand rule, (b - a) x (c - a), and are computed in float64, from
+  rescaled edges where the face is too large or too small for the direct formula, so every
+  rule holds for coordinates from subnormal up to about 1e307.
+- Arguments: arrays in any memory order and either byte order; ``crease_angle`` and the
+  thresholds are numbers (not bools, not strings), ``weld`` is True or False, ``eye`` and
+  ``direction`` are three numbers. Anything else raises TypeError, ValueError or IndexError
+  whose message starts with the argument's name.
 """
 
 from __future__ import annotations
@@ -133,9 +139,9 @@ def feature_edges(vertices: Any, faces: Any = None, crease_angle: float = 30.0, 
         faces: (M, 3) int32, int64, uint32 or uint64 vertex indices.
         crease_angle: threshold in degrees, in [0, 180]; an edge is a crease when the angle
             between its two face normals is strictly greater. Default 30.
-        weld: merge vertices at exactly the same position first (UV seams and split normals
-            store one point twice, which otherwise shows up as boundary edges). Edges then refer
-            to the smallest index of each group of coincident vertices.
+        weld: True to merge vertices at exactly the same position first (UV seams and split
+            normals store one point twice, which otherwise shows up as boundary edges). Edges
+            then refer to the smallest index of each group of coincident vertices.
 
     Returns:
         :class:`FeatureEdges`. See the module docstring for the rules on order, face counts and

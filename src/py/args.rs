@@ -46,8 +46,7 @@ fn is_bool(obj: &Bound<'_, PyAny>) -> bool {
         return true;
     }
     let ty = obj.get_type();
-    ty.module().is_ok_and(|m| m.to_string() == "numpy")
-        && ty.name().is_ok_and(|n| n == "bool_" || n == "bool")
+    ty.module().is_ok_and(|m| m == "numpy") && ty.name().is_ok_and(|n| n == "bool_" || n == "bool")
 }
 
 /// True or False (or a NumPy bool).

@@ -100,7 +100,8 @@ pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
 ///
 /// n: a count from 1 to 1024, or 0 to restore the default (the ``TOONMESH_NUM_THREADS``
 /// environment variable if set, else the number of cores). Results are the same bits for any
-/// count. Raises ValueError below 0 or above 1024.
+/// count. Raises TypeError for anything but an int (or NumPy integer; bools are refused) and
+/// ValueError below 0 or above 1024.
 #[pyfunction]
 fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
     let n = args::integer("n", n).map_err(to_py)?;
