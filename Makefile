@@ -1,11 +1,12 @@
 # Two entry points on a fresh machine:
 #   make demo   builds toonmesh into .venv and runs the main job
 #   make test   builds it with the peer libraries and runs every test (Rust and Python)
+# and: make docs (the API reference from the docstrings, into docs/api/)
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 
-.PHONY: demo test bench sysdeps build build-test clean
+.PHONY: demo test bench docs sysdeps build build-test clean
 
 sysdeps:
 	@bash scripts/system-deps.sh
@@ -15,8 +16,9 @@ $(BIN)/maturin:
 	$(BIN)/pip install -q --upgrade pip
 	$(BIN)/pip install -q "maturin>=1.9.4,<2.0"
 
+# the io extra: trimesh (mesh files) and tqdm (progress bars) for the toonmesh command
 build: sysdeps $(BIN)/maturin
-	$(BIN)/maturin develop --release -q
+	$(BIN)/maturin develop --release -q -E io
 
 build-test: sysdeps $(BIN)/maturin
 	$(BIN)/maturin develop --release -q -E test
@@ -30,6 +32,9 @@ test: build-test
 
 bench: build-test
 	$(BIN)/python -m toonmesh.bench all
+
+docs: build-test
+	$(BIN)/python docs/api_docs.py docs/api
 
 clean:
 	rm -rf $(VENV) target

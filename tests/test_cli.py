@@ -1,33 +1,283 @@
-"""The command line entry points run as the README says."""
+"""The command line, end to end in subprocesses, as a user runs it: `toonmesh` and `python -m toonmesh`."""
 
 from __future__ import annotations
 
+import inspect
+import json
+import os
+import shutil
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
+import pytest
+
+import toonmesh as tm
+from conftest import MESHES, need
+
+SPOT = str(MESHES / "spot.obj")  # 2,930 vertices: small enough to render in a few ms
 
 
-def test_smooth_command_writes_a_smoothed_mesh(tmp_path):
-    out = tmp_path / "smoothed.obj"
-    r = subprocess.run(
-        [sys.executable, "-m", "toonmesh", "smooth", "--subdivisions", "3", "--out", str(out)],
-        capture_output=True, text=True, check=True,
-    )
-    assert "radius spread" in r.stdout
-    V = np.array([list(map(float, l.split()[1:])) for l in out.read_text().splitlines() if l.startswith("v ")])
-    assert V.shape == (642, 3)
-    r_out = np.linalg.norm(V, axis=1)
-    assert r_out.std() < 0.01  # the noisy input's spread is about 0.017
+def toonmesh(*args: str, cwd: Path, env: dict = None, check: bool = True) -> subprocess.CompletedProcess:
+    """Runs `python -m toonmesh ARGS` (the console script runs the same main())."""
+    r = subprocess.run([sys.executable, "-m", "toonmesh", *args], cwd=cwd, capture_output=True, text=True,
+                       timeout=120, env=env)
+    if check:
+        assert r.returncode == 0, r.stderr
+        assert r.stderr == "", r.stderr  # quiet: no warnings, no Mesa chatter, no progress bar off a terminal
+    return r
 
 
-def test_bench_quick_smoke_lists_the_suites():
-    r = subprocess.run([sys.executable, "-m", "toonmesh.bench", "--help"], capture_output=True, text=True, check=True)
-    assert "smooth" in r.stdout
+def in_process(capsys, *args: str, check: bool = True) -> subprocess.CompletedProcess:
+    """The same main() in this process (no interpreter start, trimesh import and GPU set-up per
+    call), as a CompletedProcess."""
+    from toonmesh.cli import main
+
+    capsys.readouterr()
+    rc = main(list(args))
+    out, err = capsys.readouterr()
+    r = subprocess.CompletedProcess(args, rc, out, err)
+    if check:
+        assert rc == 0 and err == "", err
+    return r
+
+
+def read_png(path) -> np.ndarray:
+    Image = need("PIL.Image")
+    return np.asarray(Image.open(path))
+
+
+def one_line_error(r: subprocess.CompletedProcess, *words: str) -> str:
+    assert r.returncode != 0
+    assert r.stdout == ""
+    assert "Traceback" not in r.stderr
+    lines = r.stderr.splitlines()
+    assert len(lines) == 1, r.stderr
+    for w in words:
+        assert w in lines[0], lines[0]
+    return lines[0]
+
+
+def write_mesh(path: Path, V: np.ndarray, F: np.ndarray) -> str:
+    trimesh = need("trimesh")
+    trimesh.Trimesh(V, F, process=False).export(str(path))
+    return str(path)
+
+
+def test_version_names_the_package_version(tmp_path):
+    r = toonmesh("--version", cwd=tmp_path)
+    assert r.stdout.strip() == f"toonmesh {tm.__version__}"
+
+
+def test_console_script_is_installed(tmp_path):
+    exe = shutil.which("toonmesh", path=os.path.dirname(sys.executable))
+    assert exe, "the toonmesh console script is not next to this Python"
+    r = subprocess.run([exe, "--version"], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0 and r.stdout.strip() == f"toonmesh {tm.__version__}"
+
+
+def test_render_one_mesh_gives_the_api_image(tmp_path):
+    need("trimesh")
+    r = toonmesh("render", SPOT, "-o", "spot.png", "--size", "64x48", cwd=tmp_path)
+    assert "wrote spot.png (64x48" in r.stdout
+    from toonmesh.data import load_obj
+
+    V, F = load_obj(SPOT)
+    expected = tm.render(V, F, width=64, height=48).color  # the default camera is the y-up front view
+    assert np.array_equal(read_png(tmp_path / "spot.png"), expected)
+
+
+def test_render_turntable_of_several_meshes_into_a_folder(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    need("trimesh")
+    ico = write_mesh(tmp_path / "ball.ply", *tm.shapes.icosphere(2, noise=0.05, seed=3))
+    # in a subprocess, whose stderr is no terminal: no progress bar, stderr stays empty
+    toonmesh("render", SPOT, ico, "-o", "frames", "--views", "3", "--size", "40x30", "--style", "thresholded-phong",
+             cwd=tmp_path)
+    names = sorted(os.listdir(tmp_path / "frames"))
+    assert names == [f"{stem}-{k:03d}.png" for stem in ("ball", "spot") for k in range(3)]
+    frames = [read_png(tmp_path / "frames" / f"spot-{k:03d}.png") for k in range(3)]
+    assert all(f.shape == (30, 40, 4) for f in frames)
+    assert not np.array_equal(frames[0], frames[1]) and not np.array_equal(frames[1], frames[2])
+    in_process(capsys, "render", SPOT, "-o", "front.png", "--size", "40x30", "--style", "thresholded-phong")
+    assert np.array_equal(frames[0], read_png(tmp_path / "front.png"))  # view 0 is the front view
+
+
+def test_up_z_shows_a_z_up_mesh_as_y_up_shows_the_original(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    V, F = tm.shapes.icosphere(2, noise=0.2, seed=1)
+    V = V * [1.0, 1.6, 0.7]  # no symmetry to hide a wrong axis
+    y_up = write_mesh(tmp_path / "y.ply", V, F)
+    z_up = write_mesh(tmp_path / "z.ply", np.stack([V[:, 0], -V[:, 2], V[:, 1]], axis=1), F)
+    in_process(capsys, "render", y_up, "-o", "y.png", "--size", "48x40")
+    in_process(capsys, "render", z_up, "-o", "z.png", "--size", "48x40", "--up", "z")
+    in_process(capsys, "render", z_up, "-o", "z_as_y.png", "--size", "48x40")
+    y, z = read_png(tmp_path / "y.png").astype(int), read_png(tmp_path / "z.png").astype(int)
+    assert np.abs(y - z).max() <= 2  # same picture (positions went through float32 in PLY)
+    assert not np.array_equal(y, read_png(tmp_path / "z_as_y.png"))
+
+
+def test_render_float_outputs_write_npz(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    need("trimesh")
+    in_process(capsys, "render", SPOT, "-o", "spot.npz", "--size", "32x24", "--outputs", "color,depth", "--smooth", "2")
+    with np.load(tmp_path / "spot.npz") as z:
+        assert z["color"].shape == (24, 32, 4) and z["depth"].shape == (24, 32)
+        assert np.isfinite(z["depth"]).any() and np.isinf(z["depth"]).any()
+        assert z["view_matrix"].shape == (4, 4)
+
+
+def test_outlines_flag_passes_through_or_says_it_is_not_there_yet(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    need("trimesh")
+    r = in_process(capsys, "render", SPOT, "-o", "o.png", "--size", "32x24", "--outlines", "mesh", check=False)
+    if "outlines" in inspect.signature(tm.Renderer.render).parameters:
+        assert r.returncode == 0, r.stderr
+    else:
+        one_line_error(r, "--outlines", "not available")
+
+
+def test_smooth_command_matches_the_api(tmp_path):
+    V, F = tm.shapes.icosphere(3, noise=0.03, seed=0)
+    src = write_mesh(tmp_path / "noisy.obj", V, F)
+    r = toonmesh("smooth", src, "smoothed.ply", "--method", "taubin", "--iterations", "4", cwd=tmp_path)
+    assert "642 vertices" in r.stdout and "wrote smoothed.ply" in r.stdout
+    trimesh = need("trimesh")
+    out = trimesh.load(tmp_path / "smoothed.ply", process=False)
+    V_obj = trimesh.load(src, process=False).vertices  # what the command read
+    expected = tm.smooth.taubin(np.asarray(V_obj), F, iterations=4)
+    assert np.abs(np.asarray(out.vertices) - expected).max() < 1e-6
+    assert np.array_equal(np.asarray(out.faces), F)
+
+
+def test_smooth_weld_passes_through_or_says_it_is_not_there_yet(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    src = write_mesh(tmp_path / "m.obj", *tm.shapes.icosphere(1))
+    r = in_process(capsys, "smooth", src, "out.obj", "--weld", check=False)
+    if "weld" in inspect.signature(tm.smooth.laplacian).parameters:
+        assert r.returncode == 0, r.stderr
+    else:
+        one_line_error(r, "--weld", "not available")
+
+
+def _cube() -> tuple:
+    V = np.array([[x, y, z] for x in (-1.0, 1.0) for y in (-1.0, 1.0) for z in (-1.0, 1.0)])
+    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+    return V, F
+
+
+def test_edges_svg_draws_the_nine_visible_cube_edges(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    cube = write_mesh(tmp_path / "cube.off", *_cube())
+    r = toonmesh("edges", cube, "-o", "cube.svg", "--size", "200x150", cwd=tmp_path)
+    svg = (tmp_path / "cube.svg").read_text()
+    assert 'width="200" height="150"' in svg and "<svg" in svg
+    # seen from the front, above and to the side: 3 faces, so 9 of the 12 creases; the 3 that meet
+    # at the far corner are hidden (the face diagonals are flat, not creases). The 6 around are
+    # one closed silhouette; the 3 meeting at the near corner are ridges.
+    assert svg.count('<g id="silhouette"') == 1 and svg.count('<g id="ridge"') == 1
+    assert svg.count("<polyline") == 4 and "hidden" not in svg
+    assert "4 visible polylines" in r.stdout
+    in_process(capsys, "edges", cube, "-o", "all.svg", "--size", "200x150", "--hidden")
+    svg = (tmp_path / "all.svg").read_text()
+    hidden = svg[svg.index('<g id="hidden"'):]
+    assert hidden.index("</g>") > hidden.index("<polyline")  # the hidden group has lines
+    assert svg.index('<g id="hidden"') < svg.index('<g id="silhouette"')  # drawn underneath
+
+
+def test_edges_npz_has_the_arrays_and_an_orthographic_view_along_minus_eye(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    V, F = _cube()
+    cube = write_mesh(tmp_path / "cube.ply", V, F)
+    in_process(capsys, "edges", cube, "-o", "cube.npz", "--eye", "0", "0", "5", "--size", "100x100")
+    with np.load(tmp_path / "cube.npz") as z:
+        assert len(z["crease"]) == 12 and len(z["boundary"]) == 0
+        assert z["projection"][3, 3] == 1.0  # orthographic
+        # looking straight down -z: one square silhouette around the z = +1 face
+        assert list(z["kinds"]) == ["silhouette"] and z["starts"].tolist() == [0, len(z["points"])]
+        p = z["points"]
+        assert np.allclose(p[0], p[-1]) and len(p) == 5  # a closed square
+        assert (p[:, 0].max() - p[:, 0].min()) > 30 and (p[:, 1].max() - p[:, 1].min()) > 30
+
+
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["render", "missing.obj", "-o", "x.png"], ["missing.obj", "no such file"]),
+        (["render", SPOT, "-o", "x.png", "--size", "0x5"], ["--size", "0x5"]),
+        (["render", SPOT, "-o", "x.png", "--up", "w"], ["--up", "'w'"]),
+        (["render", SPOT, "-o", "x.jpg"], ["-o", ".jpg"]),
+        (["render", SPOT, SPOT, "-o", "x.png"], ["-o", "folder"]),
+        (["render", SPOT, "-o", "x.png", "--outputs", "colour"], ["--outputs", "colour"]),
+        (["smooth", "nothere.ply", "out.obj"], ["nothere.ply", "no such file"]),
+        (["edges", SPOT, "-o", "lines.pdf"], [".svg or .npz"]),
+        (["render", SPOT, "-o", "x.png", "--bogus"], ["--bogus"]),
+        ([], ["COMMAND"]),
+    ],
+)
+def test_mistakes_print_one_line_and_fail(tmp_path, capsys, monkeypatch, args, words):
+    monkeypatch.chdir(tmp_path)
+    r = in_process(capsys, *args, check=False)
+    one_line_error(r, *words)
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_an_unreadable_mesh_is_one_line(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    need("trimesh")
+    (tmp_path / "bad.obj").write_text("this is not a mesh\n")
+    (tmp_path / "bad.ply").write_bytes(b"ply\nformat binary_little_endian 1.0\nelement vertex 99\n")
+    one_line_error(in_process(capsys, "render", "bad.obj", "-o", "b.png", check=False), "bad.obj")
+    one_line_error(in_process(capsys, "smooth", "bad.ply", "b.obj", check=False), "bad.ply")
+
+
+def test_missing_trimesh_is_one_line_naming_the_extra(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setitem(sys.modules, "trimesh", None)  # import trimesh now raises ImportError
+    one_line_error(in_process(capsys, "render", SPOT, "-o", "x.png", check=False), "trimesh", "toonmesh[io]")
+    one_line_error(in_process(capsys, "smooth", SPOT, "x.obj", check=False), "trimesh", "toonmesh[io]")
+
+
+def test_bench_json_has_every_table_row_as_a_record(tmp_path):
+    r = toonmesh("bench", "edges", "--quick", "--json", "edges.json", cwd=tmp_path)
+    records = json.loads((tmp_path / "edges.json").read_text())
+    printed_rows = [l for l in r.stdout.splitlines() if l.startswith("| ") and not l.startswith("| case")]
+    assert len(records) == len(printed_rows) > 0
+    rec = records[0]
+    assert rec["suite"] == "edges" and rec["table"] == "Mesh-space outlines"
+    assert isinstance(rec["toonmesh"], float) and rec["units"]["toonmesh"] == "ms"
+
+
+def test_bench_json_values():
+    from toonmesh.bench._timing import record_value, recording, table
+
+    assert record_value("47.8 ms") == (47.8, "ms")
+    assert record_value("3.3x") == (3.3, "x")
+    assert record_value("2.00e-02") == (0.02, None)
+    assert record_value("1,024") == (1024.0, None)
+    assert record_value("-") == (None, None) and record_value("") == (None, None)
+    assert record_value(float("nan")) == (None, None) and record_value(np.int64(3)) == (3, None)
+    assert record_value("icosphere(5)") == ("icosphere(5)", None)
+    with recording("s") as rows:
+        table(["a", "b"], [("x", "1.5 ms"), ("y", 2)], title="T")
+    assert rows == [{"suite": "s", "table": "T", "row": 0, "a": "x", "b": 1.5, "units": {"b": "ms"}},
+                    {"suite": "s", "table": "T", "row": 1, "a": "y", "b": 2}]
+    table(["a"], [("z",)])  # outside recording: nothing kept
+    assert len(rows) == 2
+
+
+def test_bench_refuses_unknown_options_before_running_anything(tmp_path):
+    r = subprocess.run([sys.executable, "-m", "toonmesh.bench", "smooth", "--quik"], capture_output=True, text=True,
+                       timeout=60)
+    assert r.returncode == 2
+    assert "unrecognised arguments: --quik" in r.stderr
+    assert r.stdout == ""
+    one_line_error(toonmesh("bench", "smooth", "--quik", cwd=tmp_path, check=False), "--quik")
 
 
 def test_bench_thread_scaling_table_restores_the_thread_count():
-    import toonmesh as tm
     from toonmesh.bench.smooth import scaling_table
 
     before = tm.get_num_threads()
@@ -40,9 +290,8 @@ def test_bench_thread_scaling_table_restores_the_thread_count():
     assert "1.00x" in rows[0]
 
 
-def test_bench_refuses_unknown_options_before_running_anything():
-    r = subprocess.run([sys.executable, "-m", "toonmesh.bench", "smooth", "--quik"], capture_output=True, text=True,
-                       timeout=60)
-    assert r.returncode == 2
-    assert "unrecognised arguments: --quik" in r.stderr
-    assert r.stdout == ""
+def test_demo_still_renders_the_bunny(tmp_path):
+    r = toonmesh("demo", "--out", "demo.png", "--width", "80", "--height", "60", cwd=tmp_path)
+    assert "wrote demo.png (80x60)" in r.stdout
+    img = read_png(tmp_path / "demo.png")
+    assert img.shape == (60, 80, 4) and len(np.unique(img.reshape(-1, 4), axis=0)) > 3

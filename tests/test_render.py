@@ -144,12 +144,14 @@ def test_top_left_origin_and_normals_in_view_space(sphere):
 def test_passes_list_only_what_runs(sphere):
     assert tm.render(*sphere, width=32, height=32).passes == ["shade", "readback_color"]
     full = tm.render(*sphere, width=32, height=32, outputs=("color", "normal", "depth"))
-    assert full.passes == ["shade", "readback_color", "readback_normal", "readback_depth"]
+    assert full.passes == ["shade", "readback_color", "readback_normal_depth"]
     fuller = tm.render(*sphere, width=32, height=32, outputs=("color", "normal", "depth"), msaa=4, supersample=2)
-    assert fuller.passes == ["shade", "gbuffer", "downsample", "readback_color", "readback_normal", "readback_depth"]
+    assert fuller.passes == ["shade", "gbuffer", "downsample", "readback_color", "readback_normal_depth"]
     assert tm.render(*sphere, width=32, height=32, outputs="depth").passes == ["gbuffer", "readback_depth"]
     assert tm.render(*sphere, width=32, height=32, supersample=3).passes == ["shade", "downsample", "readback_color"]
-    assert set(fuller.timings) == set(fuller.passes) and all(t >= 0 for t in fuller.timings.values())
+    assert "frame" in fuller.timings and all(t >= 0 for t in fuller.timings.values())
+    if fuller.timing_source == "gpu":
+        assert {"shade", "gbuffer", "downsample"} <= set(fuller.timings)
 
 
 def test_only_requested_outputs_are_returned(sphere):

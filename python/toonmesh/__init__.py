@@ -1,5 +1,9 @@
 """toonmesh: mesh smoothing, outline extraction and headless toon rendering, on NumPy arrays."""
 
+from toonmesh._runtime_dir import ensure_runtime_dir
+
+ensure_runtime_dir()  # before any GPU device is made: keeps Mesa's Wayland probe quiet
+
 from toonmesh import edges, shapes, smooth
 from toonmesh._core import (
     ConvergenceError,
@@ -12,9 +16,11 @@ from toonmesh._core import (
 from toonmesh._render import (
     Camera,
     Light,
+    LineStyle,
     Material,
     Mesh,
     MeshHandle,
+    Outlines,
     Renderer,
     RenderResult,
     gpu_info,
@@ -30,9 +36,11 @@ __all__ = [
     "GpuError",
     "GpuUnavailableError",
     "Light",
+    "LineStyle",
     "Material",
     "Mesh",
     "MeshHandle",
+    "Outlines",
     "RenderResult",
     "Renderer",
     "__version__",

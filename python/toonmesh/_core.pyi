@@ -5,15 +5,24 @@ import numpy as np
 import numpy.typing as npt
 
 __all__ = [
+    "Camera",
     "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",
+    "Light",
+    "LineStyle",
+    "Material",
+    "Outlines",
     "Renderer",
     "_EdgeIndex",
     "__version__",
     "_chains",
     "_feature_edges",
     "_paper_edges",
+    "_restore_camera",
+    "_restore_light",
+    "_restore_material",
+    "_restore_outlines",
     "_segments",
     "_silhouette",
     "_smooth",
@@ -23,6 +32,7 @@ __all__ = [
     "gpu_info",
     "grid",
     "icosphere",
+    "kang_table",
     "set_num_threads",
 ]
 __version__: str
@@ -55,33 +65,238 @@ def _smooth(
     preset: Optional[str] = None,
 ) -> npt.NDArray[np.floating[Any]]: ...
 
-# --- rendering (src/py/render.rs); the public API is toonmesh._render ---
+# --- rendering (src/py/scene.rs, src/py/render.rs); the public API is toonmesh._render ---
+
+_Color = Any  # '#rrggbb' or 3 numbers in [0, 1]
+_Vec3 = Tuple[float, float, float]
+
+@final
+class Material:
+    @staticmethod
+    def lambert(color: Optional[_Color] = ..., *, ambient: Optional[_Color] = ..., per_vertex: Optional[bool] = ...) -> Material: ...
+    @staticmethod
+    def phong(
+        color: Optional[_Color] = ...,
+        *,
+        specular: Optional[_Color] = ...,
+        shininess: Optional[float] = ...,
+        ambient: Optional[_Color] = ...,
+        per_vertex: Optional[bool] = ...,
+    ) -> Material: ...
+    @staticmethod
+    def thresholded_phong(
+        color: Optional[_Color] = ...,
+        *,
+        t_h: Optional[float] = ...,
+        t_s: Optional[float] = ...,
+        highlight: Optional[str] = ...,
+        ambient: Optional[_Color] = ...,
+        specular: Optional[_Color] = ...,
+        per_vertex: Optional[bool] = ...,
+    ) -> Material: ...
+    @staticmethod
+    def bands(
+        color: Optional[_Color] = ...,
+        *,
+        thresholds: Optional[Any] = ...,
+        values: Optional[Any] = ...,
+        per_vertex: Optional[bool] = ...,
+    ) -> Material: ...
+    @staticmethod
+    def lut(table: Optional[Any] = ..., color: Optional[_Color] = ..., *, per_vertex: Optional[bool] = ...) -> Material: ...
+    @property
+    def model(self) -> str: ...
+    @property
+    def diffuse(self) -> _Vec3: ...
+    @property
+    def ambient(self) -> _Vec3: ...
+    @property
+    def specular(self) -> _Vec3: ...
+    @property
+    def per_vertex(self) -> bool: ...
+    @property
+    def shininess(self) -> Optional[float]: ...
+    @property
+    def t_h(self) -> Optional[float]: ...
+    @property
+    def t_s(self) -> Optional[float]: ...
+    @property
+    def highlight(self) -> Optional[str]: ...
+    @property
+    def thresholds(self) -> Optional[List[float]]: ...
+    @property
+    def values(self) -> Optional[List[float]]: ...
+    @property
+    def table(self) -> Optional[List[_Vec3]]: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
+
+@final
+class Light:
+    @staticmethod
+    def directional(
+        direction: Any, *, color: Optional[_Color] = ..., intensity: Optional[float] = ..., space: Optional[str] = ...
+    ) -> Light: ...
+    @staticmethod
+    def point(
+        position: Any, *, color: Optional[_Color] = ..., intensity: Optional[float] = ..., space: Optional[str] = ...
+    ) -> Light: ...
+    @staticmethod
+    def key() -> Light: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def direction(self) -> Optional[_Vec3]: ...
+    @property
+    def position(self) -> Optional[_Vec3]: ...
+    @property
+    def color(self) -> _Vec3: ...
+    @property
+    def intensity(self) -> float: ...
+    @property
+    def space(self) -> str: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
+
+@final
+class Camera:
+    @staticmethod
+    def fit(
+        direction: Optional[Any] = ...,
+        *,
+        up: Optional[Any] = ...,
+        fov_y: Optional[float] = ...,
+        margin: Optional[float] = ...,
+        orthographic: Optional[bool] = ...,
+    ) -> Camera: ...
+    @staticmethod
+    def look_at(
+        eye: Any,
+        target: Optional[Any] = ...,
+        *,
+        up: Optional[Any] = ...,
+        fov_y: Optional[float] = ...,
+        near: Optional[float] = ...,
+        far: Optional[float] = ...,
+    ) -> Camera: ...
+    @staticmethod
+    def orthographic(
+        eye: Any,
+        target: Optional[Any] = ...,
+        *,
+        up: Optional[Any] = ...,
+        height: Optional[float] = ...,
+        near: Optional[float] = ...,
+        far: Optional[float] = ...,
+    ) -> Camera: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def projection(self) -> str: ...
+    @property
+    def eye(self) -> Optional[_Vec3]: ...
+    @property
+    def target(self) -> Optional[_Vec3]: ...
+    @property
+    def up(self) -> _Vec3: ...
+    @property
+    def direction(self) -> Optional[_Vec3]: ...
+    @property
+    def margin(self) -> Optional[float]: ...
+    @property
+    def fov_y(self) -> Optional[float]: ...
+    @property
+    def height(self) -> Optional[float]: ...
+    @property
+    def near(self) -> Optional[float]: ...
+    @property
+    def far(self) -> Optional[float]: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
+
+@final
+class LineStyle:
+    def __new__(cls, color: Optional[_Color] = ..., width: Optional[float] = ...) -> LineStyle: ...
+    @property
+    def color(self) -> _Vec3: ...
+    @property
+    def width(self) -> float: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[Optional[_Vec3], Optional[float]]]: ...
+
+_Style = Any  # None, True, False, a LineStyle or a colour
+
+@final
+class Outlines:
+    def __new__(
+        cls,
+        kind: Optional[str] = ...,
+        *,
+        color: Optional[_Color] = ...,
+        width: Optional[float] = ...,
+        silhouette: _Style = ...,
+        boundary: _Style = ...,
+        crease: _Style = ...,
+        ridge: _Style = ...,
+        valley: _Style = ...,
+        nonmanifold: _Style = ...,
+        image: _Style = ...,
+        crease_angle: Optional[float] = ...,
+        weld: Optional[bool] = ...,
+        normal_threshold: Optional[float] = ...,
+        depth_threshold: Optional[float] = ...,
+        depth_offset: Optional[float] = ...,
+    ) -> Outlines: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def styles(self) -> Dict[str, Optional[LineStyle]]: ...
+    @property
+    def crease_angle(self) -> float: ...
+    @property
+    def weld(self) -> bool: ...
+    @property
+    def normal_threshold(self) -> float: ...
+    @property
+    def depth_threshold(self) -> float: ...
+    @property
+    def depth_offset(self) -> float: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
+
+def _restore_material(state: str) -> Material: ...
+def _restore_light(state: str) -> Light: ...
+def _restore_camera(state: str) -> Camera: ...
+def _restore_outlines(state: str) -> Outlines: ...
+def kang_table() -> npt.NDArray[np.float64]: ...
 
 @final
 class Renderer:
-    def __new__(cls, backend: Optional[str] = None) -> "Renderer": ...
+    def __new__(cls, backend: Optional[str] = ...) -> "Renderer": ...
     @property
     def info(self) -> Dict[str, Any]: ...
     @property
     def mesh_count(self) -> int: ...
-    def add_mesh(self, vertices: Any, faces: Any, normals: str = "smooth") -> int: ...
+    def add_mesh(self, vertices: Any, faces: Any, normals: Optional[str] = ...) -> int: ...
     def remove_mesh(self, mesh: int) -> bool: ...
     def render(
         self,
-        items: List[Any],
+        items: Any,
         *,
-        camera: Optional[Any] = None,
-        lights: Optional[List[Any]] = None,
-        ambient: Optional[Any] = None,
-        background: Optional[Any] = None,
-        width: int = 512,
-        height: int = 512,
-        outputs: Optional[List[str]] = None,
-        msaa: int = 1,
-        supersample: int = 1,
+        width: int,
+        height: int,
+        msaa: int,
+        supersample: int,
+        material: Optional[Material] = ...,
+        camera: Optional[Camera] = ...,
+        lights: Optional[Any] = ...,
+        ambient: Optional[_Color] = ...,
+        background: Optional[_Color] = ...,
+        outputs: Optional[Any] = ...,
+        outlines: Optional[Any] = ...,
     ) -> Dict[str, Any]: ...
 
-def gpu_info(backend: Optional[str] = None) -> Dict[str, Any]: ...
+def gpu_info(backend: Optional[str] = ...) -> Dict[str, Any]: ...
 def encode_png_rgba(color: Any) -> bytes: ...
 
 
@@ -105,6 +320,9 @@ def _paper_edges(name: str, buffer: Any, threshold: float) -> Tuple[Any, npt.NDA
 class _EdgeIndex:
     def __new__(cls, vertices: Any, faces: Any, weld: bool) -> _EdgeIndex: ...
     def silhouette(self, eye: _Point, direction: _Point) -> _Pairs: ...
+    def outlines(
+        self, crease_angle: float, eye: _Point, direction: _Point, kinds: bool
+    ) -> Tuple[_Pairs, Optional[npt.NDArray[np.int8]]]: ...
     def feature_edges(self, crease_angle: float) -> _FeatureTuple: ...
     def face_normals(self) -> npt.NDArray[np.float64]: ...
     def vertices(self) -> npt.NDArray[np.float64]: ...

@@ -103,6 +103,10 @@ def _features(raw: Tuple[Any, ...], crease_angle: float) -> FeatureEdges:
     return FeatureEdges(boundary, crease, angles, convex, nonmanifold, degenerate, float(crease_angle))
 
 
+#: Kinds of outline lines, by their code in the core (``edges::outlines::LineKind``).
+_LINE_KINDS = ("silhouette", "boundary", "nonmanifold", "ridge", "valley")
+
+
 def _edge_keys(edges: np.ndarray, n: int) -> np.ndarray:
     """One int64 per edge, lo * n + hi: sorts as the (lo, hi) rows do, and far faster than
     comparing rows (``np.unique(axis=0)`` took about a second on a million edges)."""
@@ -258,19 +262,15 @@ class EdgeIndex:
         """Silhouette edges for one view, (K, 2) int64; rules as in :func:`silhouette`."""
         return self._index.silhouette(eye, direction)
 
-    def outlines(self, *, eye: Any = None, direction: Any = None) -> np.ndarray:
+    def outlines(self, *, eye: Any = None, direction: Any = None, kinds: bool = False) -> Any:
         """Silhouettes of this view plus boundary, crease and non-manifold edges, (K, 2) int64,
-        sorted, each edge once: everything a mesh-space outline pass draws."""
-        sil = self.silhouette(eye=eye, direction=direction)
-        n = max(self.n_vertices, 1)
-        if n > 2**31:
-            return _union(sil, self.features.outlines)
-        return _union_keys(n, self._static_keys, _edge_keys(sil, n))
-
-    @cached_property
-    def _static_keys(self) -> np.ndarray:
-        """Sorted keys of the view-independent outlines (boundary, crease, non-manifold)."""
-        return _edge_keys(self.features.outlines, max(self.n_vertices, 1))
+        sorted, each edge once: everything a mesh-space outline pass draws (the renderer's own
+        outline set). With ``kinds=True``, also each edge's kind as (K,) str: the first of
+        "silhouette", "boundary", "nonmanifold", "ridge", "valley" that it is."""
+        edges, codes = self._index.outlines(self.features.crease_angle, eye, direction, kinds)
+        if codes is not None:
+            return edges, np.asarray(_LINE_KINDS)[codes]
+        return edges
 
     def segments(self, edges: Any) -> np.ndarray:
         """Edge end points of this mesh, (K, 2, 3) float64; see :func:`segments`."""

@@ -12,6 +12,11 @@
 
 use rayon::prelude::*;
 
+/// Default thresholds of the rule: a normal threshold of 1 finds turns of about 15 degrees
+/// between neighbouring pixels; a depth threshold of 0.1 finds steps of 0.025 depth units.
+pub const DEFAULT_NORMAL_THRESHOLD: f64 = 1.0;
+pub const DEFAULT_DEPTH_THRESHOLD: f64 = 0.1;
+
 use crate::error::{Error, Result};
 use crate::real::Real;
 

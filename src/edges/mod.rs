@@ -6,6 +6,7 @@ pub mod detect;
 pub mod edge_table;
 pub mod feature;
 pub mod index;
+pub mod outlines;
 pub mod silhouette;
 pub mod sobel;
 pub mod weld;
@@ -16,6 +17,9 @@ pub use index::EdgeIndex;
 pub use silhouette::View;
 
 use crate::error::Result;
+
+/// Dihedral angle in degrees above which an edge is a crease, when none is given.
+pub const DEFAULT_CREASE_ANGLE: f64 = 30.0;
 use crate::real::{Real, Vec3};
 
 /// Face normals as `mesh::normals::face_normals` computes them, in a huge-page buffer.

@@ -1,157 +1,162 @@
-//! Python scalars and small vectors as Rust values, with the type rules every public function
-//! shares:
-//!
-//! - a flag takes True or False (or a NumPy bool), nothing else: `"no"` and `1` are refused;
-//! - a number takes an int or a float (or a NumPy number, or any `numbers.Real`), never a bool
-//!   or a string;
-//! - an integer takes an int (or a NumPy integer, or any `numbers.Integral`), never a bool or a
-//!   float;
-//! - a name takes a str.
-//!
-//! A wrong type is a `TypeError` that names the argument and shows what was given; an integer
-//! beyond 64 bits, or one too large for a float, is a `ValueError` naming it. Ranges (and NaN,
-//! which no range admits) are checked by the core, where each rule lives.
+//! Strict conversion of Python arguments, each error naming the argument: booleans take bools
+//! (and NumPy bools), numbers take numbers (not bools, not strings), integers take integers (not
+//! floats), colours take '#rrggbb' or three numbers in [0, 1]. A wrong type is a TypeError; an
+//! integer beyond 64 bits, or one too large for a float, a ValueError. Ranges (and NaN, which no
+//! range admits) are checked by the core, where each rule lives.
 
-use numpy::{PyArrayDescrMethods, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::sync::PyOnceLock;
-use pyo3::types::{PyBool, PyFloat, PyInt, PyString, PyType};
+use pyo3::types::{PyBool, PyFloat, PyInt, PyString};
 
 use crate::error::{Error, Result};
+use crate::render::color;
 
-/// `type value`, for messages: "str '30'", "bool True", "NoneType None".
-fn shown(obj: &Bound<'_, PyAny>) -> String {
-    let ty = obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "object".into());
-    let repr = obj.repr().map(|r| r.to_string()).unwrap_or_else(|_| "?".into());
-    let repr = if repr.chars().count() > 40 {
-        format!("{}...", repr.chars().take(40).collect::<String>())
-    } else {
-        repr
-    };
-    format!("{ty} {repr}")
+pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "an unknown type".into())
 }
 
-fn abstract_type<'py>(
-    py: Python<'py>,
-    cell: &'static PyOnceLock<Py<PyType>>,
-    module: &str,
-    name: &str,
-) -> Result<&'py Bound<'py, PyType>> {
-    cell.import(py, module, name).map_err(|e| Error::Internal(format!("cannot import {module}.{name}: {e}")))
+fn numpy_kind(obj: &Bound<'_, PyAny>) -> Option<String> {
+    let t = obj.get_type();
+    let module = t.getattr("__module__").ok()?.extract::<String>().ok()?;
+    (module == "numpy").then(|| type_name(obj))
 }
 
-/// True for Python's bool and NumPy's bool, which count as flags, not numbers.
 fn is_bool(obj: &Bound<'_, PyAny>) -> bool {
-    if obj.is_instance_of::<PyBool>() {
-        return true;
-    }
-    let ty = obj.get_type();
-    ty.module().is_ok_and(|m| m == "numpy") && ty.name().is_ok_and(|n| n == "bool_" || n == "bool")
+    obj.is_instance_of::<PyBool>() || numpy_kind(obj).is_some_and(|k| k == "bool" || k == "bool_")
 }
 
-/// True or False (or a NumPy bool).
-pub fn flag(arg: &str, obj: &Bound<'_, PyAny>) -> Result<bool> {
+/// A bool (True/False or a NumPy bool).
+pub fn flag(name: &str, obj: &Bound<'_, PyAny>) -> Result<bool> {
     if is_bool(obj) {
-        return obj.is_truthy().map_err(|e| Error::wrong_type(arg, format!("expected True or False ({e})")));
+        return obj.is_truthy().map_err(|e| Error::wrong_type(name, e.to_string()));
     }
-    Err(Error::wrong_type(arg, format!("expected True or False, got {}", shown(obj))))
+    Err(Error::wrong_type(name, format!("expected a bool (True or False), got {}", type_name(obj))))
 }
 
-/// An int or float (or NumPy number, or `numbers.Real`) as f64. NaN and inf pass: the core's
-/// range checks refuse them where they are not allowed.
-pub fn number(arg: &str, obj: &Bound<'_, PyAny>) -> Result<f64> {
-    static REAL: PyOnceLock<Py<PyType>> = PyOnceLock::new();
-    let numeric = obj.is_instance_of::<PyFloat>()
-        || obj.is_instance_of::<PyInt>()
-        || obj.is_instance(abstract_type(obj.py(), &REAL, "numbers", "Real")?).unwrap_or(false);
-    if is_bool(obj) || !numeric {
-        return Err(Error::wrong_type(arg, format!("expected a number, got {}", shown(obj))));
-    }
-    obj.extract::<f64>().map_err(|_| Error::invalid(arg, format!("{} is too large for a float", shown(obj))))
+/// `flag`, or `default` when absent.
+pub fn flag_or(name: &str, obj: Option<&Bound<'_, PyAny>>, default: bool) -> Result<bool> {
+    obj.map_or(Ok(default), |o| flag(name, o))
 }
 
-/// An int (or NumPy integer, or `numbers.Integral`) that fits in 64 bits.
-pub fn integer(arg: &str, obj: &Bound<'_, PyAny>) -> Result<i64> {
-    static INTEGRAL: PyOnceLock<Py<PyType>> = PyOnceLock::new();
-    let integral = obj.is_instance_of::<PyInt>()
-        || obj.is_instance(abstract_type(obj.py(), &INTEGRAL, "numbers", "Integral")?).unwrap_or(false);
-    if is_bool(obj) || !integral {
-        return Err(Error::wrong_type(arg, format!("expected an integer, got {}", shown(obj))));
+/// A real number (int, float or NumPy number; not a bool or a string). NaN and inf pass: range
+/// checks decide.
+pub fn number(name: &str, obj: &Bound<'_, PyAny>) -> Result<f64> {
+    if is_bool(obj) || obj.is_instance_of::<PyString>() {
+        return Err(Error::wrong_type(name, format!("expected a number, got {}", type_name(obj))));
     }
-    obj.extract::<i64>().map_err(|_| {
-        Error::invalid(arg, format!("{} is out of range (it does not fit in 64 bits)", shown(obj)))
+    obj.extract::<f64>().map_err(|e| {
+        if obj.is_instance_of::<PyInt>() {
+            Error::invalid(name, format!("{} is too large for a float ({e})", obj))
+        } else {
+            Error::wrong_type(name, format!("expected a number, got {}", type_name(obj)))
+        }
     })
 }
 
+/// `number`, or None when absent.
+pub fn opt_number(name: &str, obj: Option<&Bound<'_, PyAny>>) -> Result<Option<f64>> {
+    obj.map(|o| number(name, o)).transpose()
+}
+
+/// An integer (int or NumPy integer; not a bool or a float), within i64.
+pub fn integer(name: &str, obj: &Bound<'_, PyAny>) -> Result<i64> {
+    integer_type(name, obj)?;
+    obj.extract::<i64>().map_err(|_| Error::invalid(name, format!("{obj} is out of range")))
+}
+
 /// A non-negative integer below 2^64 (a seed).
-pub fn unsigned(arg: &str, obj: &Bound<'_, PyAny>) -> Result<u64> {
-    static INTEGRAL: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+pub fn unsigned(name: &str, obj: &Bound<'_, PyAny>) -> Result<u64> {
+    integer_type(name, obj)?;
+    obj.extract::<u64>().map_err(|_| Error::invalid(name, format!("must be in [0, 2**64), got {obj}")))
+}
+
+fn integer_type(name: &str, obj: &Bound<'_, PyAny>) -> Result<()> {
     let integral = obj.is_instance_of::<PyInt>()
-        || obj.is_instance(abstract_type(obj.py(), &INTEGRAL, "numbers", "Integral")?).unwrap_or(false);
-    if is_bool(obj) || !integral {
-        return Err(Error::wrong_type(arg, format!("expected an integer, got {}", shown(obj))));
+        || (numpy_kind(obj).is_some() && obj.hasattr("__index__").unwrap_or(false));
+    if is_bool(obj) || !integral || obj.is_instance_of::<PyFloat>() {
+        return Err(Error::wrong_type(name, format!("expected an integer, got {}", type_name(obj))));
     }
-    obj.extract::<u64>()
-        .map_err(|_| Error::invalid(arg, format!("must be in [0, 2**64), got {}", shown(obj))))
+    Ok(())
 }
 
-/// A str.
-pub fn name(arg: &str, obj: &Bound<'_, PyAny>) -> Result<String> {
-    match obj.cast::<PyString>() {
-        Ok(s) => Ok(s.to_string()),
-        Err(_) => Err(Error::wrong_type(arg, format!("expected a string, got {}", shown(obj)))),
-    }
-}
-
-/// `None` (use the default) or a value read by `read`.
+/// `None` (or absent: use the default) or a value read by `read`.
 pub fn optional<T>(
-    arg: &str,
+    name: &str,
     obj: Option<&Bound<'_, PyAny>>,
     read: impl FnOnce(&str, &Bound<'_, PyAny>) -> Result<T>,
 ) -> Result<Option<T>> {
     match obj {
-        Some(o) if !o.is_none() => read(arg, o).map(Some),
+        Some(o) if !o.is_none() => read(name, o).map(Some),
         _ => Ok(None),
     }
 }
 
-/// Three numbers: a sequence of three Python or NumPy numbers, or a (3,) numeric array.
-pub fn vec3(arg: &str, obj: &Bound<'_, PyAny>) -> Result<[f64; 3]> {
-    if let Ok(a) = obj.cast::<PyUntypedArray>() {
-        let kind = a.dtype().kind();
-        if !matches!(kind, b'i' | b'u' | b'f') {
-            return Err(Error::wrong_type(
-                arg,
-                format!(
-                    "expected 3 numbers, got an array of dtype {}",
-                    a.dtype().str().map(|s| s.to_string()).unwrap_or_default()
-                ),
-            ));
-        }
-        if a.shape() != [3] {
-            return Err(Error::invalid(
-                arg,
-                format!("expected 3 numbers, got an array of shape {:?}", a.shape()),
-            ));
-        }
-    } else if obj.is_instance_of::<PyString>() || obj.len().is_err() {
-        return Err(Error::wrong_type(arg, format!("expected 3 numbers, got {}", shown(obj))));
+/// A text argument.
+pub fn text(name: &str, obj: &Bound<'_, PyAny>) -> Result<String> {
+    obj.extract::<String>()
+        .map_err(|_| Error::wrong_type(name, format!("expected a string, got {}", type_name(obj))))
+}
+
+/// A sequence of numbers (list, tuple, 1-D array).
+pub fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
+    if obj.is_instance_of::<PyString>() {
+        return Err(Error::wrong_type(name, "expected a sequence of numbers, got str"));
     }
-    let n = obj.len().unwrap_or(0);
-    if n != 3 {
-        return Err(Error::invalid(arg, format!("expected 3 numbers, got {n}")));
+    let items = obj.try_iter().map_err(|_| {
+        Error::wrong_type(name, format!("expected a sequence of numbers, got {}", type_name(obj)))
+    })?;
+    items
+        .enumerate()
+        .map(|(i, item)| {
+            let item = item.map_err(|e| Error::invalid(name, e.to_string()))?;
+            number(&format!("{name}[{i}]"), &item)
+        })
+        .collect()
+}
+
+/// Three finite numbers.
+pub fn triple(name: &str, obj: &Bound<'_, PyAny>) -> Result<[f64; 3]> {
+    let v = numbers(name, obj)?;
+    let t: [f64; 3] = v
+        .as_slice()
+        .try_into()
+        .map_err(|_| Error::invalid(name, format!("expected 3 numbers, got {}", v.len())))?;
+    if !t.iter().all(|x| x.is_finite()) {
+        return Err(Error::invalid(name, format!("must be finite, got {t:?}")));
     }
-    let mut out = [0.0; 3];
-    for (k, o) in out.iter_mut().enumerate() {
-        let item = obj
-            .get_item(k)
-            .map_err(|_| Error::wrong_type(arg, format!("expected 3 numbers, got {}", shown(obj))))?;
-        *o = number(arg, &item).map_err(|e| match e {
-            Error::WrongType { .. } => {
-                Error::wrong_type(arg, format!("expected 3 numbers, got {} at position {k}", shown(&item)))
-            }
-            other => other,
-        })?;
+    Ok(t)
+}
+
+/// Channels of a colour: '#rrggbb' ('#rrggbbaa') or numbers.
+fn channels(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
+    if obj.is_instance_of::<PyString>() {
+        return color::parse_hex(name, &text(name, obj)?);
     }
-    Ok(out)
+    numbers(name, obj).map_err(|e| match e {
+        Error::WrongType { .. } => Error::wrong_type(
+            name,
+            format!("expected a colour: '#rrggbb' or 3 numbers in [0, 1], got {}", type_name(obj)),
+        ),
+        other => other,
+    })
+}
+
+/// An sRGB colour: '#rrggbb' or 3 numbers in [0, 1].
+pub fn rgb(name: &str, obj: &Bound<'_, PyAny>) -> Result<color::Srgb> {
+    color::from_channels(name, &channels(name, obj)?)
+}
+
+/// `rgb`, or None when absent.
+pub fn opt_rgb(name: &str, obj: Option<&Bound<'_, PyAny>>) -> Result<Option<color::Srgb>> {
+    obj.map(|o| rgb(name, o)).transpose()
+}
+
+/// An sRGB colour with alpha: '#rrggbb', '#rrggbbaa', or 3 or 4 numbers in [0, 1] (alpha 1
+/// when not given).
+pub fn rgba(name: &str, obj: &Bound<'_, PyAny>) -> Result<[f64; 4]> {
+    let c = channels(name, obj)?;
+    if !(c.len() == 3 || c.len() == 4) {
+        return Err(Error::invalid(name, format!("expected 3 or 4 channels, got {}", c.len())));
+    }
+    color::check_unit(name, &c)?;
+    Ok([c[0], c[1], c[2], c.get(3).copied().unwrap_or(1.0)])
 }

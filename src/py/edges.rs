@@ -16,6 +16,7 @@ use super::runtime::detached;
 use crate::edges::chains::chain_edges;
 use crate::edges::detect::{paper_gradient, threshold_mask};
 use crate::edges::feature::FeatureEdges;
+use crate::edges::outlines::Outline;
 use crate::edges::sobel::{sobel, Convention, Output};
 use crate::edges::{find_feature_edges, EdgeIndex, View};
 use crate::error::{Error, Result};
@@ -51,8 +52,8 @@ fn feature_to_numpy(py: Python<'_>, fe: FeatureEdges, degenerate: Vec<u32>) -> F
 
 /// The view from `eye=` or `direction=` (None or absent: not given).
 fn view_of(eye: Option<&Bound<'_, PyAny>>, direction: Option<&Bound<'_, PyAny>>) -> Result<View> {
-    let eye = args::optional("eye", eye, args::vec3)?;
-    let direction = args::optional("direction", direction, args::vec3)?;
+    let eye = args::optional("eye", eye, args::triple)?;
+    let direction = args::optional("direction", direction, args::triple)?;
     match (eye, direction) {
         (Some(e), None) => View::Eye(e).check(),
         (None, Some(d)) => View::Direction(d).check(),
@@ -108,6 +109,8 @@ fn _silhouette<'py>(
 #[pyclass(frozen, name = "_EdgeIndex", module = "toonmesh._core")]
 struct PyEdgeIndex {
     inner: EdgeIndex,
+    /// The view-independent outline lines at the last crease angle asked for.
+    statics: std::sync::Mutex<Option<(u64, std::sync::Arc<Outline>)>>,
 }
 
 #[pymethods]
@@ -122,7 +125,7 @@ impl PyEdgeIndex {
         let weld = args::flag("weld", weld).map_err(to_py)?;
         let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
         let inner = mesh.run(py, faces, |p, f, _| on_positions!(p, v => EdgeIndex::build(v, f, weld)))?;
-        Ok(PyEdgeIndex { inner })
+        Ok(PyEdgeIndex { inner, statics: Default::default() })
     }
 
     #[pyo3(signature = (eye, direction))]
@@ -136,6 +139,37 @@ impl PyEdgeIndex {
         let inner = &self.inner;
         let s = detached(py, || inner.silhouette(view))?;
         Ok(pairs_to_numpy(py, s))
+    }
+
+    /// The outline set of one view: silhouettes, boundaries, creases and non-manifold edges,
+    /// each edge once, and with `kinds` each edge's kind (`edges::outlines::LineKind` as an
+    /// int8; None without).
+    #[pyo3(signature = (crease_angle, eye, direction, kinds))]
+    fn outlines<'py>(
+        &self,
+        py: Python<'py>,
+        crease_angle: &Bound<'py, PyAny>,
+        eye: Option<&Bound<'py, PyAny>>,
+        direction: Option<&Bound<'py, PyAny>>,
+        kinds: &Bound<'py, PyAny>,
+    ) -> PyResult<(Pairs<'py>, Option<Bound<'py, PyArray1<i8>>>)> {
+        let crease_angle = crease_angle_of(crease_angle).map_err(to_py)?;
+        let view = view_of(eye, direction).map_err(to_py)?;
+        let with_kinds = args::flag("kinds", kinds).map_err(to_py)?;
+        let key = crease_angle.to_bits();
+        let cached =
+            self.statics.lock().unwrap_or_else(|e| e.into_inner()).clone().filter(|(k, _)| *k == key);
+        let inner = &self.inner;
+        let (all, statics) = detached(py, || {
+            let statics = match cached {
+                Some((_, s)) => s,
+                None => std::sync::Arc::new(Outline::statics(&inner.feature_edges(crease_angle)?)),
+            };
+            Ok((statics.with_silhouettes(&inner.silhouette(view)?), statics))
+        })?;
+        *self.statics.lock().unwrap_or_else(|e| e.into_inner()) = Some((key, statics));
+        let kinds = with_kinds.then(|| vec_to_numpy(py, all.kinds.iter().map(|&k| k as i8).collect()));
+        Ok((pairs_to_numpy(py, all.edges), kinds))
     }
 
     fn feature_edges<'py>(
@@ -300,7 +334,7 @@ fn _sobel<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let output = parse_output(output).map_err(to_py)?;
     let convention =
-        args::name("convention", convention).and_then(|c| parse_convention(&c)).map_err(to_py)?;
+        args::text("convention", convention).and_then(|c| parse_convention(&c)).map_err(to_py)?;
     let image = &native_order(image).map_err(to_py)?;
     if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f32>>() {
         Ok(sobel_typed(py, x, output, convention)?.into_any())

@@ -58,10 +58,10 @@ fn _smooth<'py>(
             step: args::optional("step", step, args::number)?,
             tol: args::optional("tol", tol, args::number)?,
             max_iter: args::optional("max_iter", max_iter, args::integer)?,
-            weights: args::optional("weights", weights, args::name)?,
-            boundary: args::optional("boundary", boundary, args::name)?,
+            weights: args::optional("weights", weights, args::text)?,
+            boundary: args::optional("boundary", boundary, args::text)?,
             volume_constraint: args::optional("volume_constraint", volume_constraint, args::flag)?,
-            preset: args::optional("preset", preset, args::name)?,
+            preset: args::optional("preset", preset, args::text)?,
         })
     })()
     .map_err(to_py)?;

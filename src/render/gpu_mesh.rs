@@ -1,6 +1,12 @@
 //! A mesh on the device: interleaved positions and normals (plus indices when shared), kept
 //! for as many renders as the caller wants.
+//!
+//! Positions reach the GPU in 32-bit floats, so they are stored relative to the centre of the
+//! mesh's bounds and divided by a power of two near its size: whatever the mesh's offset and
+//! scale (anywhere in float64's range), the stored coordinates lie in [-1, 1] and keep float32's
+//! full precision. The model matrix puts offset and scale back, in float64 (see `uniforms.rs`).
 
+use rayon::prelude::*;
 use wgpu::util::DeviceExt;
 
 use crate::error::{Error, Result};
@@ -8,20 +14,7 @@ use crate::mesh::normals::{triangle_unit_normal, vertex_normals};
 use crate::mesh::Bounds;
 use crate::real::{Real, Vec3};
 
-use super::context::GpuContext;
-
-/// Bounds of the vertices that faces refer to (unreferenced ones do not count for framing).
-fn used_bounds<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Bounds {
-    let mut b = Bounds { min: [f64::INFINITY; 3], max: [f64::NEG_INFINITY; 3] };
-    for &i in faces.iter().flatten() {
-        let p = positions[i as usize];
-        for k in 0..3 {
-            b.min[k] = b.min[k].min(p[k].to_f64());
-            b.max[k] = b.max[k].max(p[k].to_f64());
-        }
-    }
-    b
-}
+use super::device::Device;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum NormalMode {
@@ -39,6 +32,13 @@ impl NormalMode {
             other => Err(Error::invalid(arg, format!("must be 'smooth' or 'flat', got {other:?}"))),
         }
     }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Smooth => "smooth",
+            Self::Flat => "flat",
+        }
+    }
 }
 
 #[repr(C)]
@@ -48,17 +48,71 @@ pub struct Vertex {
     pub normal: [f32; 3],
 }
 
+/// Where a mesh's stored coordinates sit in its own space: `p = origin + scale * stored`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placement {
+    pub origin: [f64; 3],
+    /// A power of two, so that dividing and multiplying by it are exact.
+    pub scale: f64,
+}
+
+impl Placement {
+    /// Centre of `bounds`, and the power of two at or above its half diagonal.
+    pub fn of(bounds: &Bounds) -> Placement {
+        let origin = std::array::from_fn(|k| 0.5 * bounds.min[k] + 0.5 * bounds.max[k]);
+        // half the diagonal, without squaring coordinates that may be near float64's limits
+        let extent: [f64; 3] = std::array::from_fn(|k| 0.5 * bounds.max[k] - 0.5 * bounds.min[k]);
+        let m = extent.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+        let half =
+            if m > 0.0 { m * extent.iter().map(|e| (e / m) * (e / m)).sum::<f64>().sqrt() } else { 0.0 };
+        let scale = if half.is_finite() && half > 0.0 { 2f64.powi(half.log2().ceil() as i32) } else { 1.0 };
+        Placement { origin, scale: if scale.is_finite() && scale > 0.0 { scale } else { 1.0 } }
+    }
+
+    /// The stored (normalised) coordinates of `p`.
+    pub fn to_stored<T: Real>(&self, p: Vec3<T>) -> [f64; 3] {
+        std::array::from_fn(|k| (p[k].to_f64() - self.origin[k]) / self.scale)
+    }
+}
+
+/// Bounds of the vertices that faces refer to (unreferenced ones do not count for framing).
+fn used_bounds<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Bounds {
+    let empty = || Bounds { min: [f64::INFINITY; 3], max: [f64::NEG_INFINITY; 3] };
+    faces
+        .par_chunks(8192)
+        .map(|chunk| {
+            let mut b = empty();
+            for &i in chunk.iter().flatten() {
+                let p = positions[i as usize];
+                for k in 0..3 {
+                    b.min[k] = b.min[k].min(p[k].to_f64());
+                    b.max[k] = b.max[k].max(p[k].to_f64());
+                }
+            }
+            b
+        })
+        .reduce(empty, |a, b| Bounds {
+            min: std::array::from_fn(|k| a.min[k].min(b.min[k])),
+            max: std::array::from_fn(|k| a.max[k].max(b.max[k])),
+        })
+}
+
+/// A mesh's geometry in stored coordinates, kept on the host for the outline analysis.
+pub struct HostMesh {
+    pub positions: Vec<[f64; 3]>,
+    pub faces: Vec<[u32; 3]>,
+}
+
 pub struct GpuMesh {
     pub vertices: wgpu::Buffer,
     pub indices: Option<wgpu::Buffer>,
     /// Indices (indexed) or vertices (flat) to draw.
     pub draw_count: u32,
-    /// Positions are stored relative to this point (the centre of the bounds), so that large
-    /// coordinates keep their precision in f32; the model matrix adds it back in f64.
-    pub origin: [f64; 3],
+    pub placement: Placement,
     /// Bounds of the vertices the faces use, in the mesh's own coordinates.
     pub bounds: Bounds,
-    /// Distance from `origin` to the farthest vertex a face uses (a tighter frame than the box).
+    /// Distance from `placement.origin` to the farthest vertex a face uses (a tighter frame
+    /// than the box).
     pub radius: f64,
     pub n_vertices: usize,
     pub n_faces: usize,
@@ -66,86 +120,85 @@ pub struct GpuMesh {
 }
 
 impl GpuMesh {
+    /// Uploads a mesh whose faces index `positions` (checked by the caller). Returns the
+    /// device mesh and the host copy in stored coordinates.
     pub fn upload<T: Real>(
-        ctx: &GpuContext,
+        dev: &Device,
         positions: &[Vec3<T>],
-        faces: &[[u32; 3]],
+        faces: Vec<[u32; 3]>,
         normals: NormalMode,
-    ) -> Result<GpuMesh> {
+    ) -> Result<(GpuMesh, HostMesh)> {
         if faces.is_empty() || positions.is_empty() {
             return Err(Error::invalid("faces", "the mesh has no faces"));
         }
-        let bounds = used_bounds(positions, faces);
-        let origin = bounds.center();
+        let bounds = used_bounds(positions, &faces);
+        let placement = Placement::of(&bounds);
+        let stored: Vec<[f64; 3]> = positions.par_iter().map(|&p| placement.to_stored(p)).collect();
         let radius = faces
-            .iter()
-            .flatten()
-            .map(|&i| {
-                let p = positions[i as usize];
-                (0..3).map(|k| (p[k].to_f64() - origin[k]).powi(2)).sum::<f64>()
+            .par_iter()
+            .map(|f| {
+                f.iter().map(|&i| stored[i as usize].iter().map(|x| x * x).sum::<f64>()).fold(0.0, f64::max)
             })
-            .fold(0.0f64, f64::max)
-            .sqrt();
-        let rel = |p: Vec3<T>| -> [f32; 3] { std::array::from_fn(|k| (p[k].to_f64() - origin[k]) as f32) };
-        let (vertices, indices): (Vec<Vertex>, Option<&[[u32; 3]]>) = match normals {
+            .reduce(|| 0.0, f64::max)
+            .sqrt()
+            * placement.scale;
+        let f32s = |p: &[f64; 3]| p.map(|x| x as f32);
+        let vertices: Vec<Vertex> = match normals {
             NormalMode::Smooth => {
-                let n = vertex_normals(positions, faces);
-                let v = positions
-                    .iter()
+                let n = vertex_normals(&stored, &faces);
+                stored
+                    .par_iter()
                     .zip(&n)
-                    .map(|(p, n)| Vertex { position: rel(*p), normal: n.map(|x| x as f32) })
-                    .collect();
-                (v, Some(faces))
+                    .map(|(p, n)| Vertex { position: f32s(p), normal: f32s(n) })
+                    .collect()
             }
-            NormalMode::Flat => {
-                let mut v = Vec::with_capacity(faces.len() * 3);
-                for f in faces {
-                    let [a, b, c] = f.map(|i| positions[i as usize]);
-                    let n = triangle_unit_normal(a, b, c).map(|x| x as f32);
-                    v.extend([a, b, c].map(|p| Vertex { position: rel(p), normal: n }));
-                }
-                (v, None)
-            }
+            NormalMode::Flat => faces
+                .par_iter()
+                .flat_map_iter(|f| {
+                    let [a, b, c] = f.map(|i| stored[i as usize]);
+                    let n = f32s(&triangle_unit_normal(a, b, c));
+                    [a, b, c].map(|p| Vertex { position: f32s(&p), normal: n })
+                })
+                .collect(),
         };
+        let indexed = normals == NormalMode::Smooth;
         let vertex_bytes: &[u8] = bytemuck::cast_slice(&vertices);
-        let index_bytes: &[u8] = indices.map(bytemuck::cast_slice).unwrap_or(&[]);
-        let max = ctx.limits.max_buffer_size;
+        let index_bytes: &[u8] = if indexed { bytemuck::cast_slice(&faces) } else { &[] };
+        let max = dev.limits.max_buffer_size;
         if vertex_bytes.len() as u64 > max || index_bytes.len() as u64 > max {
             return Err(Error::invalid(
                 "vertices",
                 format!("the mesh needs a buffer larger than this GPU's limit of {max} bytes"),
             ));
         }
-        let draw_count = match indices {
-            Some(f) => f.len() * 3,
-            None => vertices.len(),
-        };
+        let draw_count = if indexed { faces.len() * 3 } else { vertices.len() };
         let draw_count =
             u32::try_from(draw_count).map_err(|_| Error::invalid("faces", "too many faces for one draw"))?;
-        let device = &ctx.device;
-        let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        let device = &dev.device;
+        let vertex_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("mesh vertices"),
             contents: vertex_bytes,
             usage: wgpu::BufferUsages::VERTEX,
         });
-        let indices = indices.map(|_| {
+        let index_buffer = indexed.then(|| {
             device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("mesh indices"),
                 contents: index_bytes,
                 usage: wgpu::BufferUsages::INDEX,
             })
         });
-        Ok(GpuMesh {
-            vertices,
-            indices,
+        let mesh = GpuMesh {
+            vertices: vertex_buffer,
+            indices: index_buffer,
             draw_count,
-            origin,
+            placement,
             bounds,
             radius,
             n_vertices: positions.len(),
             n_faces: faces.len(),
             normals,
-        })
+        };
+        Ok((mesh, HostMesh { positions: stored, faces }))
     }
 
     pub fn vertex_layout() -> wgpu::VertexBufferLayout<'static> {
@@ -154,6 +207,31 @@ impl GpuMesh {
             array_stride: std::mem::size_of::<Vertex>() as u64,
             step_mode: wgpu::VertexStepMode::Vertex,
             attributes: &ATTRS,
+        }
+    }
+
+    /// The mesh's bounding sphere in its own coordinates.
+    pub fn sphere(&self) -> super::scene::camera::Sphere {
+        super::scene::camera::Sphere {
+            center: glam::DVec3::from_array(self.placement.origin),
+            radius: self.radius,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn placement_keeps_stored_coordinates_within_one() {
+        for (offset, size) in [(0.0, 1.0), (1e10, 1.0), (0.0, 1e-11), (-3e200, 5e190), (0.0, 1e-300)] {
+            let b = Bounds { min: [offset - size; 3], max: [offset + size; 3] };
+            let p = Placement::of(&b);
+            assert_eq!(p.scale.log2().fract(), 0.0, "a power of two");
+            let s = p.to_stored([offset + size, offset - size, offset]);
+            assert!(s.iter().all(|x| x.abs() <= 1.0 && x.is_finite()), "{s:?}");
+            assert!(s[0] > 0.25, "the size is kept: {s:?}");
         }
     }
 }

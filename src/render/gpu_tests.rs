@@ -3,32 +3,32 @@
 
 use glam::{DMat4, DVec3, DVec4, Vec3};
 
-use super::camera::{Camera, Placement, Projection};
-use super::color::linear_to_srgb8;
-use super::context::BackendChoice;
+use super::color::{linear_to_srgb8, to_linear};
+use super::device::BackendChoice;
 use super::gpu_mesh::NormalMode;
-use super::light::{Light, ViewLight};
-use super::material::{kang_table, Highlight, Material, Model};
 use super::reference::{shade, RefLight};
 use super::renderer::{RenderOutput, Renderer};
+use super::scene::camera::{Camera, Placement, Projection};
+use super::scene::light::{Light, ViewLight};
+use super::scene::material::{kang_table, Highlight, Material, Model};
 use super::scene::{FrameSpec, Outputs, Scene, SceneItem, IDENTITY};
 use crate::mesh::shapes::icosphere;
 
 fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene {
     let (v, f) = icosphere(4, 0.0, 0).unwrap();
-    let id = r.add_mesh(&v, &f, normals).unwrap();
+    let id = r.add_mesh(&v, f, normals).unwrap();
     Scene {
-        items: vec![SceneItem { mesh: r.mesh(id).unwrap(), transform: IDENTITY, material }],
-        camera: Camera::default(),
+        items: vec![SceneItem { mesh: id, transform: IDENTITY, material }],
         lights: vec![
             Light::default(),
             Light {
-                kind: super::light::LightKind::Point { position: [3.0, 1.0, 2.0] },
-                space: super::light::Space::World,
-                color: [0.3, 0.2, 0.1],
+                kind: super::scene::light::LightKind::Point { position: [3.0, 1.0, 2.0] },
+                space: super::scene::light::Space::World,
+                color: [0.6, 0.5, 0.35],
+                intensity: 0.5,
             },
         ],
-        ambient: [1.0, 1.0, 1.0],
+        ..Default::default()
     }
 }
 
@@ -36,7 +36,7 @@ fn all_outputs(w: u32, h: u32) -> FrameSpec {
     FrameSpec {
         width: w,
         height: h,
-        outputs: Outputs { color: true, normal: true, depth: true },
+        outputs: Outputs { color: true, normal: true, depth: true, ..Default::default() },
         ..Default::default()
     }
 }
@@ -44,14 +44,14 @@ fn all_outputs(w: u32, h: u32) -> FrameSpec {
 /// Fraction of covered pixels whose colour matches the reference from the normal and depth outputs.
 fn agreement(scene: &Scene, out: &RenderOutput) -> (f64, usize) {
     let (w, h) = (out.width as usize, out.height as usize);
-    let proj = DMat4::from_cols_array_2d(&out.proj).transpose();
-    let view = DMat4::from_cols_array_2d(&out.view).transpose();
+    let proj = DMat4::from_cols_array_2d(&out.report.proj).transpose();
+    let view = DMat4::from_cols_array_2d(&out.report.view).transpose();
     let lights: Vec<RefLight> = scene
         .lights
         .iter()
         .map(|l| match l.to_view(&view) {
-            ViewLight::Toward(d) => RefLight::Toward(d.as_vec3(), Vec3::from(l.color)),
-            ViewLight::At(p) => RefLight::At(p.as_vec3(), Vec3::from(l.color)),
+            ViewLight::Toward(d) => RefLight::Toward(d.as_vec3(), Vec3::from(l.radiance())),
+            ViewLight::At(p) => RefLight::At(p.as_vec3(), Vec3::from(l.radiance())),
         })
         .collect();
     let (color, normal, depth) =
@@ -82,7 +82,7 @@ fn agreement(scene: &Scene, out: &RenderOutput) -> (f64, usize) {
                 n,
                 p.as_vec3(),
                 proj.w_axis.w == 1.0,
-                Vec3::from(scene.ambient),
+                Vec3::from(to_linear(scene.ambient)),
                 &lights,
             );
             let want = [c.x, c.y, c.z].map(|v| linear_to_srgb8(v as f64) as i32);
@@ -112,7 +112,7 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
         for model in &models {
             let material = Material {
                 model: model.clone(),
-                ambient: [0.05, 0.05, 0.1],
+                ambient: [0.2, 0.2, 0.3],
                 diffuse: [0.8, 0.5, 0.3],
                 specular: [0.5, 0.5, 0.5],
                 per_vertex: false,
@@ -145,7 +145,7 @@ fn odd_and_tiny_sizes_read_back_whole_rows() {
 #[test]
 fn empty_scene_is_background() {
     let r = Renderer::new(BackendChoice::Auto).unwrap();
-    let scene = Scene { items: vec![], camera: Camera::default(), lights: vec![], ambient: [0.0; 3] };
+    let scene = Scene { lights: vec![], ambient: [0.0; 3], ..Default::default() };
     let frame = FrameSpec { background: [0.2, 0.4, 0.6, 1.0], ..all_outputs(5, 4) };
     let out = r.render(&scene, &frame).unwrap();
     let c = out.color.unwrap();
@@ -158,4 +158,109 @@ fn empty_scene_is_background() {
         near: None,
         far: None,
     };
+}
+
+/// A bumpy sphere and a smaller one in front of it, so that some lines are hidden.
+fn two_spheres(r: &Renderer, outlines: super::scene::outlines::Outlines) -> Scene {
+    let (v, f) = icosphere(3, 0.04, 3).unwrap();
+    let id = r.add_mesh(&v, f, NormalMode::Smooth).unwrap();
+    let front = [[0.5, 0.0, 0.0, 0.4], [0.0, 0.5, 0.0, 0.2], [0.0, 0.0, 0.5, 1.2], [0.0, 0.0, 0.0, 1.0]];
+    Scene {
+        items: vec![
+            SceneItem { mesh: id, transform: IDENTITY, material: Material::default() },
+            SceneItem { mesh: id, transform: front, material: Material::default() },
+        ],
+        camera: Camera {
+            placement: Placement::LookAt { eye: [0.3, 0.4, 5.0], target: [0.0; 3], up: [0.0, 1.0, 0.0] },
+            projection: Projection::Perspective { fov_y_deg: 40.0 },
+            near: None,
+            far: None,
+        },
+        outlines: Some(outlines),
+        ..Default::default()
+    }
+}
+
+#[test]
+fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
+    use super::passes::lines::visibility::{coverage_image, DepthImage};
+    use super::scene::outlines::{Outlines, INK_KINDS};
+    let outlines = Outlines { crease_angle: 25.0, ..Outlines::new(true, false) };
+    for backend in backends() {
+        let r = Renderer::new(backend).unwrap();
+        let scene = two_spheres(&r, outlines.clone());
+        let frame = FrameSpec {
+            width: 240,
+            height: 180,
+            outputs: Outputs { outline: true, depth: true, ..Default::default() },
+            ..Default::default()
+        };
+        let out = r.render(&scene, &frame).unwrap();
+        let p = r.prepare(&scene, &frame).unwrap();
+        let depth: Vec<f32> = out.depth.as_ref().unwrap().iter().map(|d| d / p.cam.scale as f32).collect();
+        let img = DepthImage { depth: &depth, width: 240, height: 180 };
+        let mut lines = Vec::new();
+        for ((item, rec), view) in scene.items.iter().zip(&p.records).zip(&p.views) {
+            let projector = p.projector(item, rec, &frame);
+            let pos = rec.lines.positions();
+            let view = view.as_ref().expect("mesh lines are drawn");
+            lines.extend(
+                view.edges.iter().zip(&view.kinds).filter_map(|(e, k)| {
+                    projector.project(pos[e[0] as usize], pos[e[1] as usize], *k as usize)
+                }),
+            );
+        }
+        let widths: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.width)).collect();
+        let want = coverage_image(&lines, &widths, false, &img, p.visibility(&frame));
+        let got = out.outline.unwrap();
+        let n = got.len() as f64;
+        let mean = got.iter().zip(&want).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / n;
+        let off = got.iter().zip(&want).filter(|(a, b)| (*a - *b).abs() > 0.25).count() as f64 / n;
+        let inked = want.iter().filter(|&&c| c > 0.0).count();
+        assert!(inked > 500, "{backend:?}: the reference inks {inked} pixels");
+        assert!(
+            mean < 0.01 && off < 0.005,
+            "{backend:?}: mean difference {mean}, {off} of pixels off by > 0.25"
+        );
+        // the rule hides something here: with an infinite offset every line would show
+        let all = coverage_image(
+            &lines,
+            &widths,
+            false,
+            &img,
+            super::passes::lines::visibility::Visibility { offset: 1e30, ..p.visibility(&frame) },
+        );
+        let shown = all.iter().filter(|&&c| c > 0.0).count();
+        assert!(shown > inked + 200, "{backend:?}: hidden-line removal hid only {} pixels", shown - inked);
+    }
+}
+
+#[test]
+fn image_edges_match_the_cpu_rule_on_the_same_buffers_on_both_backends() {
+    use super::passes::edges::reference::edge_mask;
+    use super::scene::outlines::Outlines;
+    let outlines = Outlines { depth_threshold: 0.05, ..Outlines::new(false, true) };
+    for backend in backends() {
+        let r = Renderer::new(backend).unwrap();
+        let scene = two_spheres(&r, outlines.clone());
+        let frame = FrameSpec {
+            width: 199,
+            height: 151,
+            outputs: Outputs { outline: true, normal: true, depth: true, color: true, ..Default::default() },
+            ..Default::default()
+        };
+        let out = r.render(&scene, &frame).unwrap();
+        let (normal, depth) = (out.normal.unwrap(), out.depth.unwrap());
+        let want =
+            edge_mask(&normal, &depth, 151, 199, (outlines.normal_threshold, outlines.depth_threshold))
+                .unwrap();
+        let got: Vec<bool> = out.outline.unwrap().iter().map(|&c| c > 0.5).collect();
+        let agree = got.iter().zip(&want).filter(|(a, b)| a == b).count() as f64 / got.len() as f64;
+        let edges = want.iter().filter(|&&e| e).count();
+        assert!(edges > 300, "{backend:?}: {edges} edge pixels");
+        assert!(agree >= 0.999, "{backend:?}: the GPU mask agrees on {agree} of pixels");
+        // edge pixels are painted in the image ink (black) over the colour
+        let color = out.color.unwrap();
+        assert!(want.iter().zip(color.chunks(4)).filter(|(e, _)| **e).all(|(_, c)| c[..3] == [0, 0, 0]));
+    }
 }

@@ -1,26 +1,29 @@
-//! Headless toon rendering with wgpu: a scene of meshes, a camera and lights becomes the list
-//! of passes it needs (`plan`), which run on a process-wide GPU context (`context`) and are
-//! read back to host memory (`readback`).
+//! Headless toon rendering with wgpu. A scene (plain data: meshes by id, camera, lights,
+//! materials, outlines) and a frame spec become a plan of passes (`plan`), recorded as one frame
+//! on a process-wide device (`context`) and read back straight into the caller's arrays.
+//!
+//! Layers, each using only those above it: `color`, `scene` (plain data) and `device`; then
+//! `gpu_mesh`, `pipelines`, `uniforms` and `wgsl`; then `graph` (targets, resources, the pass
+//! trait) and `context`; then `passes`; then `plan`; then `mesh_lines` and `renderer`.
 
-pub mod camera;
 pub mod color;
 pub mod context;
+pub mod device;
 pub mod gpu_mesh;
+pub mod graph;
 pub mod image_out;
-pub mod light;
-pub mod material;
+pub mod mesh_lines;
 pub mod passes;
 pub mod pipelines;
 pub mod plan;
-pub mod readback;
 pub mod reference;
 pub mod renderer;
 pub mod scene;
-pub mod targets;
 pub mod uniforms;
+pub mod wgsl;
 
-pub use context::{BackendChoice, GpuInfo};
-pub use renderer::{RenderOutput, Renderer};
+pub use device::{BackendChoice, GpuInfo};
+pub use renderer::{FrameReport, OutputBuffers, Polyline, RenderOutput, Renderer};
 
 #[cfg(test)]
 mod gpu_tests;

@@ -1,38 +1,26 @@
-//! Render pipelines, built on first use and cached by everything they depend on. Each pass asks
-//! for the variant it needs, so a scene compiles only what it uses.
+//! Shader modules and render pipelines, built on first use and cached per device by the pass
+//! that asks for them (its name and the variant it needs), so a scene compiles only what it uses.
+//! The bind group layouts that several passes share live here too.
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use super::gpu_mesh::GpuMesh;
-use super::targets::{COLOR_FORMAT, DEPTH_FORMAT, LINEAR_DEPTH_FORMAT, NORMAL_FORMAT};
+/// A pipeline's name in the cache: the pass that builds it and the bits of its variant.
+pub type PipelineKey = (&'static str, u64);
 
-const COMMON_WGSL: &str = include_str!("shaders/common.wgsl");
-const SHADE_WGSL: &str = include_str!("shaders/shade.wgsl");
-const GBUFFER_WGSL: &str = include_str!("shaders/gbuffer.wgsl");
-const DOWNSAMPLE_WGSL: &str = include_str!("shaders/downsample.wgsl");
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum PipelineKey {
-    /// The shading pass; with normal/depth targets (in that order, no gaps) when it writes them.
-    Shade { samples: u32, normal: bool, depth: bool, per_vertex: bool },
-    /// The geometry-only pass.
-    GBuffer { normal: bool, depth: bool },
-    /// Supersampling's box filter.
-    Downsample { factor: u32 },
+/// Bind group layouts shared by passes.
+pub struct Layouts {
+    /// Group 0 of every pass: the frame's uniforms (`Frame` in common.wgsl).
+    pub frame: wgpu::BindGroupLayout,
+    /// Group 1 of mesh and line passes: one mesh's uniforms (`Draw`), at a dynamic offset.
+    pub draw: wgpu::BindGroupLayout,
+    /// One unsigned-integer texture (the geometry target), read with textureLoad.
+    pub uint_texture: wgpu::BindGroupLayout,
+    /// One float texture, read with textureLoad.
+    pub float_texture: wgpu::BindGroupLayout,
 }
 
-pub struct PipelineCache {
-    pub frame_layout: wgpu::BindGroupLayout,
-    pub draw_layout: wgpu::BindGroupLayout,
-    pub source_layout: wgpu::BindGroupLayout,
-    mesh_layout: wgpu::PipelineLayout,
-    source_pipeline_layout: wgpu::PipelineLayout,
-    modules: Mutex<HashMap<&'static str, wgpu::ShaderModule>>,
-    pipelines: Mutex<HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>>,
-}
-
-fn uniform_layout(device: &wgpu::Device, label: &str) -> wgpu::BindGroupLayout {
+fn uniform_layout(device: &wgpu::Device, label: &str, dynamic: bool) -> wgpu::BindGroupLayout {
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some(label),
         entries: &[wgpu::BindGroupLayoutEntry {
@@ -40,7 +28,7 @@ fn uniform_layout(device: &wgpu::Device, label: &str) -> wgpu::BindGroupLayout {
             visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
             ty: wgpu::BindingType::Buffer {
                 ty: wgpu::BufferBindingType::Uniform,
-                has_dynamic_offset: false,
+                has_dynamic_offset: dynamic,
                 min_binding_size: None,
             },
             count: None,
@@ -48,193 +36,105 @@ fn uniform_layout(device: &wgpu::Device, label: &str) -> wgpu::BindGroupLayout {
     })
 }
 
-fn target(format: wgpu::TextureFormat) -> Option<wgpu::ColorTargetState> {
-    Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })
+fn texture_layout(
+    device: &wgpu::Device,
+    label: &str,
+    sample_type: wgpu::TextureSampleType,
+) -> wgpu::BindGroupLayout {
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some(label),
+        entries: &[wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Texture {
+                sample_type,
+                view_dimension: wgpu::TextureViewDimension::D2,
+                multisampled: false,
+            },
+            count: None,
+        }],
+    })
+}
+
+pub struct PipelineCache {
+    pub layouts: Layouts,
+    modules: Mutex<HashMap<&'static str, wgpu::ShaderModule>>,
+    pipelines: Mutex<HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>>,
 }
 
 impl PipelineCache {
     pub fn new(device: &wgpu::Device) -> Self {
-        let frame_layout = uniform_layout(device, "frame uniforms");
-        let draw_layout = uniform_layout(device, "draw uniforms");
-        let source_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("source texture"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            }],
-        });
-        let mesh_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("mesh passes"),
-            bind_group_layouts: &[Some(&frame_layout), Some(&draw_layout)],
-            immediate_size: 0,
-        });
-        let source_pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("image passes"),
-            bind_group_layouts: &[Some(&source_layout)],
-            immediate_size: 0,
-        });
         PipelineCache {
-            frame_layout,
-            draw_layout,
-            source_layout,
-            mesh_layout,
-            source_pipeline_layout,
+            layouts: Layouts {
+                frame: uniform_layout(device, "frame uniforms", false),
+                draw: uniform_layout(device, "draw uniforms", true),
+                uint_texture: texture_layout(device, "uint texture", wgpu::TextureSampleType::Uint),
+                float_texture: texture_layout(
+                    device,
+                    "float texture",
+                    wgpu::TextureSampleType::Float { filterable: false },
+                ),
+            },
             modules: Mutex::new(HashMap::new()),
             pipelines: Mutex::new(HashMap::new()),
         }
     }
 
-    fn module(&self, device: &wgpu::Device, name: &'static str) -> wgpu::ShaderModule {
+    /// The shader module called `name`, compiled from `source()` on first use.
+    pub fn module(
+        &self,
+        device: &wgpu::Device,
+        name: &'static str,
+        source: impl FnOnce() -> String,
+    ) -> wgpu::ShaderModule {
         let mut modules = self.modules.lock().unwrap_or_else(|e| e.into_inner());
         modules
             .entry(name)
             .or_insert_with(|| {
-                let source = match name {
-                    "shade" => format!("{COMMON_WGSL}\n{SHADE_WGSL}"),
-                    "gbuffer" => format!("{COMMON_WGSL}\n{GBUFFER_WGSL}"),
-                    _ => DOWNSAMPLE_WGSL.to_string(),
-                };
                 device.create_shader_module(wgpu::ShaderModuleDescriptor {
                     label: Some(name),
-                    source: wgpu::ShaderSource::Wgsl(source.into()),
+                    source: wgpu::ShaderSource::Wgsl(source().into()),
                 })
             })
             .clone()
     }
 
-    pub fn get(&self, device: &wgpu::Device, key: PipelineKey) -> Arc<wgpu::RenderPipeline> {
+    /// The pipeline `key`, built by `build` on first use.
+    pub fn get(
+        &self,
+        key: PipelineKey,
+        build: impl FnOnce() -> wgpu::RenderPipeline,
+    ) -> Arc<wgpu::RenderPipeline> {
         if let Some(p) = self.pipelines.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
             return p.clone();
         }
-        let p = Arc::new(self.build(device, key));
+        // built outside the lock: compiling can take a while, and concurrent builds of the same
+        // key are harmless (the first one stored wins)
+        let p = Arc::new(build());
         self.pipelines.lock().unwrap_or_else(|e| e.into_inner()).entry(key).or_insert(p).clone()
     }
 
-    fn build(&self, device: &wgpu::Device, key: PipelineKey) -> wgpu::RenderPipeline {
-        let mesh_depth = Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        });
-        // Both sides are drawn: a camera inside a mesh, or an open surface, shows back faces.
-        let mesh_primitive =
-            wgpu::PrimitiveState { cull_mode: None, front_face: wgpu::FrontFace::Ccw, ..Default::default() };
-        let vertex_buffers = [Some(GpuMesh::vertex_layout())];
-        match key {
-            PipelineKey::Shade { samples, normal, depth, per_vertex } => {
-                let module = self.module(device, "shade");
-                let constants = [("PER_VERTEX", if per_vertex { 1.0 } else { 0.0 })];
-                let mut targets = vec![target(COLOR_FORMAT)];
-                targets.extend(normal.then(|| target(NORMAL_FORMAT)));
-                targets.extend(depth.then(|| target(LINEAR_DEPTH_FORMAT)));
-                let entry = match (normal, depth) {
-                    (false, false) => "fs_color",
-                    (true, false) => "fs_color_normal",
-                    (false, true) => "fs_color_depth",
-                    (true, true) => "fs_color_normal_depth",
-                };
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some("shade"),
-                    layout: Some(&self.mesh_layout),
-                    vertex: wgpu::VertexState {
-                        module: &module,
-                        entry_point: Some("vs_main"),
-                        compilation_options: wgpu::PipelineCompilationOptions {
-                            constants: &constants,
-                            ..Default::default()
-                        },
-                        buffers: &vertex_buffers,
-                    },
-                    primitive: mesh_primitive,
-                    depth_stencil: mesh_depth,
-                    multisample: wgpu::MultisampleState {
-                        count: samples,
-                        mask: !0,
-                        alpha_to_coverage_enabled: false,
-                    },
-                    fragment: Some(wgpu::FragmentState {
-                        module: &module,
-                        entry_point: Some(entry),
-                        compilation_options: wgpu::PipelineCompilationOptions {
-                            constants: &constants,
-                            ..Default::default()
-                        },
-                        targets: &targets,
-                    }),
-                    multiview_mask: None,
-                    cache: None,
-                })
-            }
-            PipelineKey::GBuffer { normal, depth } => {
-                let module = self.module(device, "gbuffer");
-                let mut targets = vec![];
-                targets.extend(normal.then(|| target(NORMAL_FORMAT)));
-                targets.extend(depth.then(|| target(LINEAR_DEPTH_FORMAT)));
-                let entry = if normal && depth {
-                    "fs_normal_depth"
-                } else if normal {
-                    "fs_normal"
-                } else {
-                    "fs_depth"
-                };
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some("gbuffer"),
-                    layout: Some(&self.mesh_layout),
-                    vertex: wgpu::VertexState {
-                        module: &module,
-                        entry_point: Some("vs_main"),
-                        compilation_options: Default::default(),
-                        buffers: &vertex_buffers,
-                    },
-                    primitive: mesh_primitive,
-                    depth_stencil: mesh_depth,
-                    multisample: Default::default(),
-                    fragment: Some(wgpu::FragmentState {
-                        module: &module,
-                        entry_point: Some(entry),
-                        compilation_options: Default::default(),
-                        targets: &targets,
-                    }),
-                    multiview_mask: None,
-                    cache: None,
-                })
-            }
-            PipelineKey::Downsample { factor } => {
-                let module = self.module(device, "downsample");
-                let constants = [("FACTOR", factor as f64)];
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some("downsample"),
-                    layout: Some(&self.source_pipeline_layout),
-                    vertex: wgpu::VertexState {
-                        module: &module,
-                        entry_point: Some("vs_fullscreen"),
-                        compilation_options: Default::default(),
-                        buffers: &[],
-                    },
-                    primitive: Default::default(),
-                    depth_stencil: None,
-                    multisample: Default::default(),
-                    fragment: Some(wgpu::FragmentState {
-                        module: &module,
-                        entry_point: Some("fs_downsample"),
-                        compilation_options: wgpu::PipelineCompilationOptions {
-                            constants: &constants,
-                            ..Default::default()
-                        },
-                        targets: &[target(COLOR_FORMAT)],
-                    }),
-                    multiview_mask: None,
-                    cache: None,
-                })
-            }
-        }
+    pub fn layout(
+        &self,
+        device: &wgpu::Device,
+        label: &str,
+        groups: &[&wgpu::BindGroupLayout],
+    ) -> wgpu::PipelineLayout {
+        let groups: Vec<Option<&wgpu::BindGroupLayout>> = groups.iter().map(|g| Some(*g)).collect();
+        device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(label),
+            bind_group_layouts: &groups,
+            immediate_size: 0,
+        })
     }
+}
+
+/// A colour target without blending.
+pub fn target(format: wgpu::TextureFormat) -> Option<wgpu::ColorTargetState> {
+    Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })
+}
+
+/// A colour target with a blend state.
+pub fn blended(format: wgpu::TextureFormat, blend: wgpu::BlendState) -> Option<wgpu::ColorTargetState> {
+    Some(wgpu::ColorTargetState { format, blend: Some(blend), write_mask: wgpu::ColorWrites::ALL })
 }

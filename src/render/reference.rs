@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use super::material::{Highlight, Material, Model};
+use super::scene::material::{Highlight, Material, Model};
 
 /// A light in view space, as the shader receives it.
 #[derive(Clone, Copy, Debug)]
@@ -41,7 +41,7 @@ pub fn shade(
     lights: &[RefLight],
 ) -> Vec3 {
     let v = view_dir(p, orthographic);
-    let mut c = ambient_light * Vec3::from(m.ambient);
+    let mut c = ambient_light * Vec3::from(m.ambient_linear());
     for light in lights {
         let (l, color) = match *light {
             RefLight::Toward(l, c) => (l, c),
@@ -79,7 +79,7 @@ pub fn shade(
                 (Vec3::from(table[i]), 0.0)
             }
         };
-        c += f * color * Vec3::from(m.diffuse) + s * color * Vec3::from(m.specular);
+        c += f * color * Vec3::from(m.diffuse_linear()) + s * color * Vec3::from(m.specular_linear());
     }
     c
 }

@@ -1,4 +1,6 @@
-//! A renderer: meshes kept on the device, rendered in any number of scenes and views.
+//! A renderer: meshes kept on the device, rendered in any number of scenes and views. A frame
+//! is planned (`plan`), recorded into one command encoder, submitted once, and its readbacks
+//! are mapped once and copied straight into the caller's arrays.
 //! Everything here may be called from several threads at once.
 
 use std::collections::HashMap;
@@ -6,51 +8,96 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
-use wgpu::util::DeviceExt;
+use glam::{DMat4, DVec3};
 
+use crate::edges::chains::chain_edges;
+use crate::edges::outlines::Outline;
+use crate::edges::View;
 use crate::error::{Error, Result};
 use crate::real::{Real, Vec3};
 
-use super::camera::ResolvedCamera;
 use super::color::srgb_to_linear;
-use super::context::{context, BackendChoice, GpuContext, GpuInfo};
+use super::context::{context, GpuContext};
+use super::device::{BackendChoice, GpuInfo};
 use super::gpu_mesh::{GpuMesh, NormalMode};
-use super::passes::{self, Draw, DrawList};
-use super::plan::{plan, Output, Pass};
-use super::readback::words_to_f32;
-use super::scene::{FrameSpec, Scene};
-use super::targets::{FrameTargets, TargetKey};
-use super::uniforms::{draw_block, frame_block};
+use super::graph::resources::FrameResources;
+use super::graph::{DrawItem, FrameCtx, LineDraw};
+use super::mesh_lines::MeshLines;
+use super::passes::lines::visibility::{visible_runs, DepthImage, Projector, Visibility};
+use super::plan::{plan, Features, Plan, SILHOUETTES, VISIBLE_LINES};
+use super::scene::camera::ResolvedCamera;
+use super::scene::outlines::Outlines;
+use super::scene::{FrameSpec, MeshId, Scene, SceneItem};
+use super::uniforms::{draw_block, footprint, frame_block, model_view, LineInstance};
 
-/// What a render returns. Images are row-major with the top row first.
-#[derive(Debug, Clone, Default)]
-pub struct RenderOutput {
-    pub width: u32,
-    pub height: u32,
-    /// (H, W, 4) sRGB colour with alpha.
-    pub color: Option<Vec<u8>>,
-    /// (H, W, 3) view-space unit normals, facing the camera; 0 where no mesh is.
-    pub normal: Option<Vec<f32>>,
-    /// (H, W) linear depth: distance from the camera plane along the view axis; +inf where no mesh is.
-    pub depth: Option<Vec<f32>>,
-    /// The passes that ran, in order, with their wall-clock seconds.
+/// A mesh the renderer holds.
+pub struct MeshRecord {
+    pub gpu: GpuMesh,
+    pub lines: MeshLines,
+}
+
+/// Where a render writes its images: (H, W, 4) colour, (H, W, 3) normals, (H, W) depth and
+/// (H, W) outline coverage, row-major, top row first. Each must be given exactly when its
+/// output is asked for.
+#[derive(Default)]
+pub struct OutputBuffers<'a> {
+    pub color: Option<&'a mut [u8]>,
+    pub normal: Option<&'a mut [f32]>,
+    pub depth: Option<&'a mut [f32]>,
+    pub outline: Option<&'a mut [f32]>,
+}
+
+/// One visible mesh-space polyline in pixel coordinates, and its kind.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Polyline {
+    pub kind: usize,
+    pub points: Vec<[f64; 2]>,
+}
+
+/// What a render reports besides its images.
+#[derive(Clone, Debug, Default)]
+pub struct FrameReport {
+    /// Every step that ran, in order (host steps included).
+    pub passes: Vec<&'static str>,
+    /// Seconds per step: GPU passes from timestamps where the device has them, host steps and
+    /// `readback` (waiting for the frame and copying it out) by the wall clock, and `frame`,
+    /// the whole render's wall time.
     pub timings: Vec<(&'static str, f64)>,
+    /// Whether the GPU passes were timed on the GPU.
+    pub gpu_timed: bool,
     /// The camera used: row-major world -> view and view -> clip matrices, clip distances.
     pub view: [[f64; 4]; 4],
     pub proj: [[f64; 4]; 4],
     pub near: f64,
     pub far: f64,
+    /// The visible mesh-space lines, when asked for.
+    pub lines: Option<Vec<Polyline>>,
+}
+
+/// A render's images in vectors (see `Renderer::render`).
+#[derive(Clone, Debug, Default)]
+pub struct RenderOutput {
+    pub width: u32,
+    pub height: u32,
+    pub color: Option<Vec<u8>>,
+    pub normal: Option<Vec<f32>>,
+    pub depth: Option<Vec<f32>>,
+    pub outline: Option<Vec<f32>>,
+    pub report: FrameReport,
 }
 
 pub struct Renderer {
     ctx: Arc<GpuContext>,
-    meshes: Mutex<HashMap<u64, Arc<GpuMesh>>>,
+    meshes: Mutex<HashMap<MeshId, Arc<MeshRecord>>>,
     next_id: AtomicU64,
 }
 
-fn rows(m: glam::DMat4) -> [[f64; 4]; 4] {
+fn rows(m: DMat4) -> [[f64; 4]; 4] {
     m.transpose().to_cols_array_2d()
 }
+
+/// Depth is returned in float32: scenes whose size lies outside these powers of two cannot be.
+const DEPTH_SCALE_RANGE: std::ops::RangeInclusive<f64> = 1.0e-30..=1.0e30;
 
 impl Renderer {
     /// A renderer on the process-wide context of `backend` (created on first use).
@@ -74,9 +121,10 @@ impl Renderer {
     pub fn add_mesh<T: Real>(
         &self,
         positions: &[Vec3<T>],
-        faces: &[[u32; 3]],
+        faces: Vec<[u32; 3]>,
         normals: NormalMode,
-    ) -> Result<u64> {
+    ) -> Result<MeshId> {
+        self.ctx.check_process()?;
         crate::mesh::check_positions("vertices", positions)?;
         if let Some(bad) = faces.iter().flatten().find(|&&i| i as usize >= positions.len()) {
             return Err(Error::out_of_range(
@@ -84,20 +132,21 @@ impl Renderer {
                 format!("vertex index {bad} is outside [0, {})", positions.len()),
             ));
         }
-        let mesh = GpuMesh::upload(&self.ctx, positions, faces, normals)?;
+        let (gpu, host) = crate::parallel::install(|| GpuMesh::upload(&self.ctx, positions, faces, normals))?;
         let id = self.next_id.fetch_add(1, Ordering::Relaxed);
-        self.meshes.lock().unwrap_or_else(|e| e.into_inner()).insert(id, Arc::new(mesh));
+        let record = MeshRecord { gpu, lines: MeshLines::new(host) };
+        self.meshes.lock().unwrap_or_else(|e| e.into_inner()).insert(id, Arc::new(record));
         Ok(id)
     }
 
-    pub fn mesh(&self, id: u64) -> Result<Arc<GpuMesh>> {
+    pub fn mesh(&self, id: MeshId) -> Result<Arc<MeshRecord>> {
         self.meshes.lock().unwrap_or_else(|e| e.into_inner()).get(&id).cloned().ok_or_else(|| {
             Error::invalid("mesh", format!("no mesh with id {id} in this renderer (removed?)"))
         })
     }
 
     /// Frees a mesh's device memory once no render in flight uses it. False if unknown.
-    pub fn remove_mesh(&self, id: u64) -> bool {
+    pub fn remove_mesh(&self, id: MeshId) -> bool {
         self.meshes.lock().unwrap_or_else(|e| e.into_inner()).remove(&id).is_some()
     }
 
@@ -105,18 +154,142 @@ impl Renderer {
         self.meshes.lock().unwrap_or_else(|e| e.into_inner()).len()
     }
 
-    /// Renders `scene` as `frame` asks, running only the passes its plan lists.
+    /// Renders into newly allocated vectors.
     pub fn render(&self, scene: &Scene, frame: &FrameSpec) -> Result<RenderOutput> {
+        let n = frame.width as usize * frame.height as usize;
+        let o = frame.outputs;
+        let mut color = o.color.then(|| vec![0u8; 4 * n]);
+        let mut normal = o.normal.then(|| vec![0f32; 3 * n]);
+        let mut depth = o.depth.then(|| vec![0f32; n]);
+        let mut outline = o.outline.then(|| vec![0f32; n]);
+        let report = self.render_into(
+            scene,
+            frame,
+            OutputBuffers {
+                color: color.as_deref_mut(),
+                normal: normal.as_deref_mut(),
+                depth: depth.as_deref_mut(),
+                outline: outline.as_deref_mut(),
+            },
+        )?;
+        Ok(RenderOutput { width: frame.width, height: frame.height, color, normal, depth, outline, report })
+    }
+
+    /// Checks a scene and frame before any work: everything a render would refuse.
+    pub fn check(&self, scene: &Scene, frame: &FrameSpec) -> Result<()> {
+        self.ctx.check_process()?;
         frame.validate(self.ctx.info.max_texture_size, &self.ctx.info.msaa_samples)?;
         scene.validate()?;
-        let cam = scene.camera.resolve(scene.bounding_sphere(), frame.width as f64 / frame.height as f64)?;
-        let device = &self.ctx.device;
+        let o = frame.outputs;
+        if o.outline && scene.outlines.is_none() {
+            return Err(Error::invalid(
+                "outputs",
+                "'outline' needs outlines (outlines='mesh', 'image' or 'both')",
+            ));
+        }
+        if o.lines && !scene.mesh_lines() {
+            return Err(Error::invalid(
+                "outputs",
+                "'lines' needs mesh-space outlines (outlines='mesh' or 'both', with some kind of line drawn)",
+            ));
+        }
+        for id in scene.items.iter().map(|i| i.mesh) {
+            self.mesh(id)?;
+        }
+        Ok(())
+    }
+
+    /// Everything a frame needs before the GPU: the meshes, the camera, the plan and each mesh's
+    /// lines for this view (the `silhouettes` step).
+    pub(crate) fn prepare(&self, scene: &Scene, frame: &FrameSpec) -> Result<Prepared> {
+        self.check(scene, frame)?;
+        let records: Vec<Arc<MeshRecord>> =
+            scene.items.iter().map(|i| self.mesh(i.mesh)).collect::<Result<_>>()?;
+        let sphere = scene.bounding_sphere(|id| Ok(self.mesh(id)?.gpu.sphere()))?;
+        let cam = scene.camera.resolve(sphere, frame.width as f64 / frame.height as f64)?;
+        if frame.outputs.depth && !DEPTH_SCALE_RANGE.contains(&cam.scale) {
+            return Err(Error::invalid(
+                "outputs",
+                format!(
+                    "'depth': the scene's depths (about {:e}) are outside float32's range; \
+                     render the colour or normals, or rescale the scene",
+                    cam.scale
+                ),
+            ));
+        }
+        let plan = plan(Features::of(scene), frame);
+        let outlines = scene.outlines.clone().unwrap_or_else(|| Outlines::new(false, false));
+        let t = Instant::now();
+        let views: Vec<Option<Outline>> = if plan.silhouettes {
+            scene
+                .items
+                .iter()
+                .zip(&records)
+                .map(|(item, rec)| {
+                    let view = stored_view(&cam, item.model_matrix(), &rec.gpu);
+                    rec.lines.outline(view, &outlines).map(Some)
+                })
+                .collect::<Result<_>>()?
+        } else {
+            vec![None; records.len()]
+        };
+        Ok(Prepared { records, cam, plan, views, outlines, silhouette_seconds: t.elapsed().as_secs_f64() })
+    }
+
+    /// Renders `scene` as `frame` asks, running only the passes its plan lists, into `out`.
+    pub fn render_into(
+        &self,
+        scene: &Scene,
+        frame: &FrameSpec,
+        out: OutputBuffers<'_>,
+    ) -> Result<FrameReport> {
+        let start = Instant::now();
+        let p = self.prepare(scene, frame)?;
+        let mut report = FrameReport {
+            passes: p.plan.names(),
+            view: rows(p.cam.view),
+            proj: rows(p.cam.proj),
+            near: p.cam.near,
+            far: p.cam.far,
+            ..Default::default()
+        };
+        if p.plan.silhouettes {
+            report.timings.push((SILHOUETTES, p.silhouette_seconds));
+        }
+        let gpu_part = self.run_frame(scene, frame, &p, out)?;
+        report.timings.extend(gpu_part.timings);
+        report.gpu_timed = gpu_part.gpu_timed;
+        if p.plan.visible_lines {
+            let t = Instant::now();
+            let depth = gpu_part.line_depth.as_deref().expect("the plan reads depth back for visible lines");
+            report.lines = Some(self.visible_lines(scene, frame, &p, depth));
+            report.timings.push((VISIBLE_LINES, t.elapsed().as_secs_f64()));
+        }
+        report.timings.push(("frame", start.elapsed().as_secs_f64()));
+        Ok(report)
+    }
+
+    /// Records, submits and reads back one frame.
+    fn run_frame(
+        &self,
+        scene: &Scene,
+        frame: &FrameSpec,
+        p: &Prepared,
+        out: OutputBuffers<'_>,
+    ) -> Result<GpuPart> {
+        let ctx = &*self.ctx;
+        let device = &ctx.device;
+        let timestamps = ctx.info.timestamps;
+        let key = p.plan.resource_key(timestamps);
+        let layouts = &ctx.pipelines.layouts;
+        let mut res = ctx.frames.take(ctx, layouts, &key);
         // Error scopes are per thread, so concurrent renders each see only their own errors.
         let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-        let result = self.run(scene, frame, &cam);
+        let result = self.record_and_read(scene, frame, p, &mut res, out);
         let memory_error = pollster::block_on(memory.pop());
         let validation_error = pollster::block_on(validation.pop());
+        ctx.frames.give_back(res);
         if let Some(e) = memory_error {
             return Err(Error::Gpu(format!("the GPU ran out of memory: {e}")));
         }
@@ -126,109 +299,262 @@ impl Renderer {
         result
     }
 
-    fn draw_list(&self, scene: &Scene, cam: &ResolvedCamera) -> DrawList {
-        let device = &self.ctx.device;
-        let uniforms = |label: &str, bytes: &[u8], layout: &wgpu::BindGroupLayout| {
-            let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(label),
-                contents: bytes,
-                usage: wgpu::BufferUsages::UNIFORM,
-            });
-            device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(label),
-                layout,
-                entries: &[wgpu::BindGroupEntry { binding: 0, resource: buffer.as_entire_binding() }],
-            })
-        };
-        let pipelines = &self.ctx.pipelines;
-        DrawList {
-            frame_uniforms: uniforms(
-                "frame",
-                bytemuck::bytes_of(&frame_block(scene, cam)),
-                &pipelines.frame_layout,
-            ),
-            draws: scene
-                .items
-                .iter()
-                .map(|item| Draw {
-                    mesh: item.mesh.clone(),
-                    uniforms: uniforms(
-                        "draw",
-                        bytemuck::bytes_of(&*draw_block(item, cam)),
-                        &pipelines.draw_layout,
-                    ),
-                    per_vertex: item.material.per_vertex,
-                })
-                .collect(),
-        }
-    }
-
-    fn run(&self, scene: &Scene, frame: &FrameSpec, cam: &ResolvedCamera) -> Result<RenderOutput> {
+    fn record_and_read(
+        &self,
+        scene: &Scene,
+        frame: &FrameSpec,
+        p: &Prepared,
+        res: &mut FrameResources,
+        out: OutputBuffers<'_>,
+    ) -> Result<GpuPart> {
+        let (plan, cam, records, views) = (&p.plan, &p.cam, &p.records, &p.views);
         let ctx = &*self.ctx;
-        let device = &ctx.device;
-        let targets = ctx.targets.take(device, TargetKey::of(frame));
-        let list = self.draw_list(scene, cam);
-        let bg = frame.background;
-        let background = wgpu::Color {
-            r: srgb_to_linear(bg[0] as f64),
-            g: srgb_to_linear(bg[1] as f64),
-            b: srgb_to_linear(bg[2] as f64),
-            a: bg[3] as f64,
-        };
-        let mut out = RenderOutput {
-            width: frame.width,
-            height: frame.height,
-            view: rows(cam.view),
-            proj: rows(cam.proj),
-            near: cam.near,
-            far: cam.far,
-            ..Default::default()
-        };
-        for pass in plan(frame) {
-            let start = Instant::now();
-            let mut encoder =
-                device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(pass.name()) });
-            match pass {
-                Pass::Shade { gbuffer } => {
-                    passes::shade::encode(ctx, &mut encoder, &targets, &list, gbuffer, background)
-                }
-                Pass::GBuffer => passes::gbuffer::encode(ctx, &mut encoder, &targets, &list),
-                Pass::Downsample { factor } => {
-                    passes::downsample::encode(ctx, &mut encoder, &targets, factor)
-                }
-                Pass::Readback(o) => {
-                    let (buffer, texture) = readback_of(&targets, o);
-                    buffer.encode_copy(&mut encoder, texture);
-                }
+        let layouts = &ctx.pipelines.layouts;
+        // uniforms and line instances
+        res.reserve_draws(ctx, layouts, scene.items.len());
+        let stride = res.uniforms.draw_stride as u32;
+        let blocks: Vec<_> = scene
+            .items
+            .iter()
+            .zip(records)
+            .map(|(item, rec)| draw_block(item, &rec.gpu.placement, cam))
+            .collect();
+        res.write_uniforms(ctx, &frame_block(scene, cam, frame), &blocks);
+        let mut instances = Vec::new();
+        let mut line_draws = Vec::new();
+        for (i, (view, rec)) in views.iter().zip(records).enumerate() {
+            if let Some(outline) = view {
+                let first = instances.len() as u32;
+                let p = rec.lines.positions();
+                instances.extend(outline.edges.iter().zip(&outline.kinds).map(|(e, k)| LineInstance {
+                    a: p[e[0] as usize].map(|x| x as f32),
+                    kind: *k as u32,
+                    b: p[e[1] as usize].map(|x| x as f32),
+                    pad: 0,
+                }));
+                line_draws.push(LineDraw {
+                    uniform_offset: i as u32 * stride,
+                    instances: first..instances.len() as u32,
+                });
             }
-            let submission = ctx.queue.submit([encoder.finish()]);
-            match pass {
-                Pass::Readback(o) => {
-                    let bytes = readback_of(&targets, o).0.read(device, submission)?;
-                    match o {
-                        Output::Color => out.color = Some(bytes),
-                        Output::Normal => out.normal = Some(words_to_f32(&bytes, 4, 3)),
-                        Output::Depth => out.depth = Some(words_to_f32(&bytes, 1, 1)),
+        }
+        res.write_lines(ctx, &instances);
+        let draws: Vec<DrawItem> = scene
+            .items
+            .iter()
+            .zip(records)
+            .enumerate()
+            .map(|(i, (item, rec))| DrawItem {
+                mesh: &rec.gpu,
+                uniform_offset: i as u32 * stride,
+                per_vertex: item.material.per_vertex,
+            })
+            .collect();
+        let bg = frame.background;
+        let f = FrameCtx {
+            dev: ctx,
+            pipelines: &ctx.pipelines,
+            res,
+            shape: plan.shape,
+            draws: &draws,
+            lines: &line_draws,
+            background: wgpu::Color {
+                r: srgb_to_linear(bg[0] as f64),
+                g: srgb_to_linear(bg[1] as f64),
+                b: srgb_to_linear(bg[2] as f64),
+                a: bg[3] as f64,
+            },
+        };
+        let mut encoder =
+            ctx.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
+        let mut timed = Vec::new();
+        for pass in &plan.passes {
+            let timing = match (&f.res.queries, pass.timed()) {
+                (Some((set, _)), true) => {
+                    let i = 2 * timed.len() as u32;
+                    timed.push(pass.name());
+                    Some(wgpu::RenderPassTimestampWrites {
+                        query_set: set,
+                        beginning_of_pass_write_index: Some(i),
+                        end_of_pass_write_index: Some(i + 1),
+                    })
+                }
+                _ => None,
+            };
+            pass.encode(&f, &mut encoder, timing)?;
+        }
+        let staging = f.res.staging.as_ref();
+        if let (Some((set, resolve)), Some(staging)) = (&f.res.queries, staging) {
+            let n = 2 * timed.len() as u32;
+            if n > 0 {
+                encoder.resolve_query_set(set, 0..n, resolve, 0);
+                encoder.copy_buffer_to_buffer(resolve, 0, staging, plan.timestamp_offset(), n as u64 * 8);
+            }
+        }
+        let submission = ctx.queue.submit([encoder.finish()]);
+        let t = Instant::now();
+        let mut part = GpuPart::default();
+        let Some(staging) = staging else {
+            ctx.wait(submission, "the frame")?;
+            return Ok(part);
+        };
+        let (tx, rx) = std::sync::mpsc::channel();
+        staging.map_async(wgpu::MapMode::Read, .., move |r| {
+            let _ = tx.send(r);
+        });
+        ctx.wait(submission, "the frame")?;
+        rx.recv()
+            .map_err(|_| Error::Gpu("the readback was dropped".into()))?
+            .map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
+        {
+            let mapped = staging
+                .get_mapped_range(..)
+                .map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
+            let scale = cam.scale as f32;
+            crate::parallel::install(|| {
+                if let (Some(r), Some(o)) = (plan.color, out.color) {
+                    r.copy_bytes(&mapped, o);
+                }
+                if let Some(r) = plan.geometry {
+                    let layout = plan.shape.geometry.expect("a geometry readback has a layout");
+                    if let Some(o) = out.normal {
+                        r.copy_words(&mapped, 0, 3, 1.0, o);
+                    }
+                    if let Some(o) = out.depth {
+                        r.copy_words(&mapped, layout.depth_component(), 1, scale, o);
+                    }
+                    if plan.visible_lines {
+                        let mut d = vec![0f32; frame.width as usize * frame.height as usize];
+                        r.copy_words(&mapped, layout.depth_component(), 1, 1.0, &mut d);
+                        part.line_depth = Some(d);
                     }
                 }
-                _ => {
-                    device
-                        .poll(wgpu::PollType::Wait { submission_index: Some(submission), timeout: None })
-                        .map_err(|e| Error::Gpu(format!("waiting for the {} pass: {e}", pass.name())))?;
+                if let (Some(r), Some(o)) = (plan.outline, out.outline) {
+                    r.copy_unorm8(&mapped, o);
+                }
+            });
+            if !timed.is_empty() {
+                let at = plan.timestamp_offset() as usize;
+                let ticks: Vec<u64> = mapped[at..at + 16 * timed.len()]
+                    .chunks_exact(8)
+                    .map(|b| u64::from_le_bytes(b.try_into().expect("8 bytes")))
+                    .collect();
+                part.set_gpu_times(&timed, &ticks, ctx.queue.get_timestamp_period() as f64);
+            }
+        }
+        staging.unmap();
+        part.timings.push(("readback", t.elapsed().as_secs_f64()));
+        Ok(part)
+    }
+
+    /// The visible mesh-space lines as polylines, chained per kind.
+    fn visible_lines(&self, scene: &Scene, frame: &FrameSpec, p: &Prepared, depth: &[f32]) -> Vec<Polyline> {
+        let rule = p.visibility(frame);
+        let img = DepthImage { depth, width: frame.width as usize, height: frame.height as usize };
+        let mut out = Vec::new();
+        for ((item, rec), view) in scene.items.iter().zip(&p.records).zip(&p.views) {
+            let Some(outline) = view else { continue };
+            let projector = p.projector(item, rec, frame);
+            let positions = rec.lines.positions();
+            let mut kinds: Vec<usize> = outline.kinds.iter().map(|&k| k as usize).collect();
+            kinds.sort_unstable();
+            kinds.dedup();
+            for kind in kinds {
+                let edges: Vec<[u32; 2]> = outline
+                    .edges
+                    .iter()
+                    .zip(&outline.kinds)
+                    .filter(|(_, k)| **k as usize == kind)
+                    .map(|(e, _)| *e)
+                    .collect();
+                let (flat, starts) = chain_edges(&edges);
+                for w in starts.windows(2) {
+                    let chain = &flat[w[0] as usize..w[1] as usize];
+                    let screen: Vec<_> = chain
+                        .windows(2)
+                        .filter_map(|s| {
+                            projector.project(positions[s[0] as usize], positions[s[1] as usize], kind)
+                        })
+                        .collect();
+                    out.extend(
+                        visible_runs(&screen, p.cam.orthographic, &img, rule)
+                            .into_iter()
+                            .map(|points| Polyline { kind, points }),
+                    );
                 }
             }
-            out.timings.push((pass.name(), start.elapsed().as_secs_f64()));
         }
-        ctx.targets.give_back(targets);
-        Ok(out)
+        out
     }
 }
 
-fn readback_of(t: &FrameTargets, o: Output) -> (&super::readback::ReadbackBuffer, &wgpu::Texture) {
-    let missing = "the plan reads back only targets the frame has";
-    match o {
-        Output::Color => (t.color_readback.as_ref().expect(missing), t.color.as_ref().expect(missing)),
-        Output::Normal => (t.normal_readback.as_ref().expect(missing), t.normal.as_ref().expect(missing)),
-        Output::Depth => (t.depth_readback.as_ref().expect(missing), t.linear_depth.as_ref().expect(missing)),
+/// A frame's host-side preparation.
+pub(crate) struct Prepared {
+    pub records: Vec<Arc<MeshRecord>>,
+    pub cam: ResolvedCamera,
+    pub plan: Plan,
+    /// Each mesh's lines for this view (when the plan draws or returns them).
+    pub views: Vec<Option<Outline>>,
+    pub outlines: Outlines,
+    silhouette_seconds: f64,
+}
+
+impl Prepared {
+    /// Projects one mesh's lines to pixels, in normalised view units (like the GPU).
+    pub fn projector(&self, item: &SceneItem, rec: &MeshRecord, frame: &FrameSpec) -> Projector {
+        Projector {
+            model_view: model_view(item, &rec.gpu.placement, &self.cam),
+            proj: self.cam.normalized_proj(),
+            width: frame.width as f64,
+            height: frame.height as f64,
+            orthographic: self.cam.orthographic,
+            near: self.cam.near / self.cam.scale,
+        }
+    }
+
+    /// The hidden-line rule of this frame (depths in normalised view units).
+    pub fn visibility(&self, frame: &FrameSpec) -> Visibility {
+        Visibility {
+            offset: self.outlines.depth_offset as f64,
+            footprint: footprint(&self.cam, frame.height),
+        }
+    }
+}
+
+/// What the GPU half of a frame reports.
+#[derive(Default)]
+struct GpuPart {
+    timings: Vec<(&'static str, f64)>,
+    gpu_timed: bool,
+    /// Normalised linear depth, for the visible-line step.
+    line_depth: Option<Vec<f32>>,
+}
+
+impl GpuPart {
+    /// GPU durations from begin/end tick pairs, kept only when they are plausible (some
+    /// drivers report zeros or ticks that run backwards).
+    fn set_gpu_times(&mut self, names: &[&'static str], ticks: &[u64], period_ns: f64) {
+        let times: Vec<f64> =
+            ticks.chunks_exact(2).map(|t| (t[1] as f64 - t[0] as f64) * period_ns * 1e-9).collect();
+        let plausible = times.iter().all(|&s| s >= 0.0 && s < 3600.0) && times.iter().any(|&s| s > 0.0);
+        if plausible {
+            self.timings.extend(names.iter().copied().zip(times));
+            self.gpu_timed = true;
+        }
+    }
+}
+
+/// The view of `cam` in a mesh's stored coordinates (for its silhouette test).
+fn stored_view(cam: &ResolvedCamera, model: DMat4, mesh: &GpuMesh) -> View {
+    let to_stored = (model
+        * DMat4::from_translation(mesh.placement.origin.into())
+        * DMat4::from_scale(DVec3::splat(mesh.placement.scale)))
+    .inverse();
+    let world_from_view = cam.view.inverse();
+    if cam.orthographic {
+        let dir = world_from_view.transform_vector3(DVec3::NEG_Z);
+        View::Direction(to_stored.transform_vector3(dir).to_array())
+    } else {
+        View::Eye(to_stored.transform_point3(world_from_view.transform_point3(DVec3::ZERO)).to_array())
     }
 }

@@ -1,11 +1,17 @@
-//! The uniform blocks of `shaders/common.wgsl`, laid out byte for byte.
+//! The uniform blocks and instance data of `shaders/common.wgsl`, laid out byte for byte.
+//!
+//! Everything the GPU sees is in normalised view space: view space divided by the camera's
+//! `scale` (a power of two near the scene's size), so that float32 keeps its precision for
+//! scenes of any size and distance (see `ResolvedCamera::scale`).
 
 use glam::{DMat3, DMat4};
 
-use super::camera::ResolvedCamera;
-use super::light::{ViewLight, MAX_LIGHTS};
-use super::material::{Highlight, Model, MAX_LUT};
-use super::scene::{Scene, SceneItem};
+use super::gpu_mesh::Placement;
+use super::scene::camera::ResolvedCamera;
+use super::scene::light::{ViewLight, MAX_LIGHTS};
+use super::scene::material::{Highlight, Material, Model, MAX_LUT};
+use super::scene::outlines::{Outlines, INK_KINDS};
+use super::scene::{FrameSpec, Scene, SceneItem};
 
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
@@ -20,6 +26,9 @@ pub struct FrameBlock {
     pub proj: [[f32; 4]; 4],
     pub ambient: [f32; 4],
     pub info: [u32; 4],
+    pub viewport: [f32; 4],
+    pub outline: [f32; 4],
+    pub ink: [[f32; 4]; INK_KINDS],
     pub lights: [LightBlock; MAX_LIGHTS],
 }
 
@@ -39,6 +48,16 @@ pub struct DrawBlock {
     pub table: [[f32; 4]; MAX_LUT],
 }
 
+/// One mesh-space line: its end points in the mesh's stored coordinates and its kind.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct LineInstance {
+    pub a: [f32; 3],
+    pub kind: u32,
+    pub b: [f32; 3],
+    pub pad: u32,
+}
+
 fn f32_cols(m: DMat4) -> [[f32; 4]; 4] {
     m.as_mat4().to_cols_array_2d()
 }
@@ -47,39 +66,72 @@ fn rgb0(c: [f32; 3]) -> [f32; 4] {
     [c[0], c[1], c[2], 0.0]
 }
 
-pub fn frame_block(scene: &Scene, cam: &ResolvedCamera) -> FrameBlock {
+/// The world size of one output pixel at normalised depth z is `a z + b` (in normalised units).
+pub fn footprint(cam: &ResolvedCamera, height: u32) -> (f64, f64) {
+    let per_unit = 2.0 / (cam.proj.y_axis.y * height as f64);
+    if cam.orthographic {
+        (0.0, per_unit / cam.scale)
+    } else {
+        (per_unit, 0.0)
+    }
+}
+
+pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec) -> FrameBlock {
     let mut lights = [LightBlock { position: [0.0; 4], color: [0.0; 4] }; MAX_LIGHTS];
     for (slot, light) in lights.iter_mut().zip(&scene.lights) {
         let position = match light.to_view(&cam.view) {
             ViewLight::Toward(l) => [l.x as f32, l.y as f32, l.z as f32, 0.0],
-            ViewLight::At(p) => [p.x as f32, p.y as f32, p.z as f32, 1.0],
+            ViewLight::At(p) => {
+                let p = p / cam.scale;
+                [p.x as f32, p.y as f32, p.z as f32, 1.0]
+            }
         };
-        *slot = LightBlock { position, color: rgb0(light.color) };
+        *slot = LightBlock { position, color: rgb0(light.radiance()) };
+    }
+    let (a, b) = footprint(cam, frame.height);
+    let outlines = scene.outlines.clone().unwrap_or_else(|| Outlines::new(false, false));
+    let mut ink = [[0.0f32; 4]; INK_KINDS];
+    for (slot, style) in ink.iter_mut().zip(&outlines.styles) {
+        if let Some(s) = style {
+            let c = crate::render::color::to_linear(s.color);
+            *slot = [c[0], c[1], c[2], s.width];
+        }
     }
     FrameBlock {
-        proj: f32_cols(cam.proj),
-        ambient: rgb0(scene.ambient),
+        proj: f32_cols(cam.normalized_proj()),
+        ambient: rgb0(crate::render::color::to_linear(scene.ambient)),
         info: [scene.lights.len() as u32, cam.orthographic as u32, 0, 0],
+        viewport: [frame.width as f32, frame.height as f32, a as f32, b as f32],
+        outline: [
+            outlines.depth_offset,
+            outlines.normal_threshold,
+            (outlines.depth_threshold as f64 / cam.scale) as f32,
+            (cam.near / cam.scale) as f32,
+        ],
+        ink,
         lights,
     }
 }
 
-/// Model -> view for an item, including the mesh's storage offset.
-pub fn model_view(item: &SceneItem, cam: &ResolvedCamera) -> DMat4 {
-    cam.view * item.model_matrix() * DMat4::from_translation(item.mesh.origin.into())
+/// Model -> normalised view for an item, including the mesh's storage placement.
+pub fn model_view(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera) -> DMat4 {
+    cam.normalized_view()
+        * item.model_matrix()
+        * DMat4::from_translation(placement.origin.into())
+        * DMat4::from_scale(glam::DVec3::splat(placement.scale))
 }
 
-pub fn draw_block(item: &SceneItem, cam: &ResolvedCamera) -> Box<DrawBlock> {
-    let mv = model_view(item, cam);
+pub fn draw_block(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera) -> DrawBlock {
+    let mv = model_view(item, placement, cam);
     let normal_matrix = DMat4::from_mat3(DMat3::from_mat4(mv).inverse().transpose());
     let mirrored = DMat3::from_mat4(item.model_matrix()).determinant() < 0.0;
-    let m = &item.material;
-    let mut b: Box<DrawBlock> = Box::new(bytemuck::Zeroable::zeroed());
+    let m: &Material = &item.material;
+    let mut b: DrawBlock = bytemuck::Zeroable::zeroed();
     b.model_view = f32_cols(mv);
     b.normal_matrix = f32_cols(normal_matrix);
-    b.ambient = rgb0(m.ambient);
-    b.diffuse = rgb0(m.diffuse);
-    b.specular = rgb0(m.specular);
+    b.ambient = rgb0(m.ambient_linear());
+    b.diffuse = rgb0(m.diffuse_linear());
+    b.specular = rgb0(m.specular_linear());
     b.flags = [mirrored as u32, 0, 0, 0];
     b.model[0] = m.model.id();
     match &m.model {

@@ -4,7 +4,8 @@ Same mesh (``toonmesh._core.icosphere(8, 0.02, 1)``: 655,362 vertices, 1,310,720
 camera, same size (1024 x 1024), steady state (mesh on the device, one warm-up frame, median of
 ``repeat``). Each peer runs in its own process (a GL platform is chosen at import), so one run
 of ``python -m toonmesh.bench render`` fills the whole table. Also: the cost of each accuracy
-knob (MSAA, supersampling) and a fresh process from import to the first PNG of the bunny.
+knob (MSAA, supersampling), outlines against exact silhouettes at several sizes (what accuracy
+costs), and a fresh process from import to the first PNG of the bunny.
 
 Options after the suite name: ``--size N``, ``--subdivisions S``, ``--skip-peers``.
 """
@@ -101,9 +102,19 @@ def _toonmesh_times(size: int, subdiv: int, repeat: int) -> List[Sequence[Any]]:
         t0 = time.perf_counter()
         mesh = r.add_mesh(V, F)
         upload = time.perf_counter() - t0
+        name = f"toonmesh {backend} ({r.info['name'].split(' (')[0]})"
         for label, outputs in (("bands colour", ("color",)), ("bands colour+depth", ("color", "depth"))):
             t = median_time(lambda: r.render(mesh, camera=cam, width=size, height=size, outputs=outputs), repeat=repeat)
-            rows.append((f"toonmesh {backend} ({r.info['name'].split(' (')[0]})", label, t))
+            rows.append((name, label, t))
+        # Outlines on the same sphere without noise: its lines are the rim. (On the noisy
+        # sphere nearly every edge is a crease at 30 degrees, so mesh-space lines draw about two
+        # million strips: see the README.)
+        smooth = r.add_mesh(*_core.icosphere(subdiv, 0.0, 1))
+        for label, outlines in (("smooth sphere: bands colour", None), ("  + mesh outlines", "mesh"),
+                                ("  + image outlines", "image"), ("  + both outlines", "both")):
+            t = median_time(lambda: r.render(smooth, camera=cam, width=size, height=size, outlines=outlines), repeat=repeat)
+            rows.append((name, label, t))
+        r.remove_mesh(smooth)
         rows.append((f"toonmesh {backend}", "upload (once)", upload))
         r.remove_mesh(mesh)
     return rows
@@ -125,6 +136,54 @@ def _knobs(size: int, repeat: int) -> List[Sequence[Any]]:
         diff = np.abs(img - reference)[..., :3]
         name = ", ".join(f"{k}={v}" for k, v in knob.items()) or "msaa=1, supersample=1"
         rows.append((name, t, float(diff.mean()), float((diff.max(axis=-1) > 8).mean() * 100)))
+    return rows
+
+
+def _near(mask: np.ndarray) -> np.ndarray:
+    """Pixels within one pixel (3x3) of a set pixel."""
+    p = np.pad(mask, 1)
+    h, w = mask.shape
+    return np.any([p[dy : dy + h, dx : dx + w] for dy in range(3) for dx in range(3)], axis=0)
+
+
+def _outline_accuracy(sizes: Sequence[int], repeat: int) -> List[Sequence[Any]]:
+    """Mesh-space against image-space outlines, each against the exact visible silhouettes (and
+    boundaries) of the bunny rasterised at 4x, pooled to the size: precision and recall of
+    outline pixels with a one-pixel tolerance, and each frame's time against the plain frame."""
+    import toonmesh as tm
+    from toonmesh.data import bunny
+
+    V, F = bunny()
+    r = tm.Renderer()
+    mesh = r.add_mesh(V, F)
+    cam = tm.Camera.fit((0.35, 0.3, 1.0))
+    rims = dict(crease=False, nonmanifold=False)
+    variants = [
+        ("mesh-space, width 1.5", tm.Outlines("mesh", **rims), {}),
+        ("mesh-space, width 1", tm.Outlines("mesh", width=1.0, **rims), {}),
+        ("mesh-space, width 3", tm.Outlines("mesh", width=3.0, **rims), {}),
+        ("mesh-space, width 1.5, msaa 4", tm.Outlines("mesh", **rims), dict(msaa=4)),
+        ("image-space (detect_edges defaults)", tm.Outlines("image"), {}),
+        ("image-space, depth only", tm.Outlines("image", normal_threshold=1e9), {}),
+    ]
+    rows = []
+    for size in sizes:
+        kw = dict(camera=cam, width=size, height=size)
+        exact = r.render(mesh, camera=cam, width=4 * size, height=4 * size, outputs="outline",
+                         outlines=tm.Outlines("mesh", width=1.0, **rims)).outline > 0.5
+        truth = exact.reshape(size, 4, size, 4).any(axis=(1, 3))
+        for label, outlines, knob in variants:
+            # the frame with and without outlines in turns, so that a change in the machine's
+            # load falls on both
+            with_, without = [], []
+            for _ in range(max(1, repeat)):
+                with_.append(median_time(lambda: r.render(mesh, outlines=outlines, **kw, **knob), repeat=1))
+                without.append(median_time(lambda: r.render(mesh, **kw, **knob), repeat=1))
+            t, t0 = float(np.median(with_)), float(np.median(without))
+            found = r.render(mesh, outputs="outline", outlines=outlines, **kw, **knob).outline > 0.5
+            precision = float((found & _near(truth)).sum() / max(found.sum(), 1))
+            recall = float((truth & _near(found)).sum() / max(truth.sum(), 1))
+            rows.append((f"{size}x{size}", label, f"{t * 1e3:.1f} ms", f"+{(t - t0) * 1e3:.1f} ms", precision, recall))
     return rows
 
 
@@ -177,6 +236,13 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
         ["accuracy knob", "time", "mean abs difference (0-255)", "% pixels off by > 8"],
         [(k, f"{t * 1e3:.1f} ms", d, f"{p:.2f}") for k, t, d, p in _knobs(knob_size, repeat)],
         title=f"Accuracy knobs: the bunny at {knob_size}x{knob_size}, toon bands, against 4x supersampling",
+    ))
+    sizes = (128, 256) if quick else (256, 512, 1024, 2048)
+    print(table(
+        ["size", "outlines", "frame", "cost over the same frame without", "precision", "recall"],
+        _outline_accuracy(sizes, repeat),
+        title="Outlines: the bunny's silhouettes and boundaries against the exact ones rasterised at 4x "
+              "(outline pixels, one-pixel tolerance)",
     ))
     cold = _cold_start(512)
     print(table(["cold start (fresh process, bunny 512x512 to PNG)", "seconds"], [(k, v) for k, v in cold.items()]))

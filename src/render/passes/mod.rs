@@ -1,77 +1,113 @@
-//! The passes of a render plan (see `plan.rs`), each encoding its work into a command encoder.
+//! The passes a frame can run, one module each with its WGSL beside it. A pass declares the
+//! targets it uses (`graph::Pass::uses`); `render::plan` decides which passes a frame runs.
 
 pub mod downsample;
-pub mod gbuffer;
+pub mod edges;
+pub mod geometry;
+pub mod lines;
+pub mod readback;
 pub mod shade;
 
-use std::sync::Arc;
+use crate::render::gpu_mesh::GpuMesh;
+use crate::render::graph::target::DEPTH_FORMAT;
+use crate::render::graph::FrameCtx;
 
-use super::gpu_mesh::GpuMesh;
+/// Every pass's own WGSL, for the shader validation test.
+pub const SHADERS: [&str; 5] = [shade::WGSL, geometry::WGSL, downsample::WGSL, edges::WGSL, lines::WGSL];
 
-/// One mesh to draw, with its uniforms bound.
-pub struct Draw {
-    pub mesh: Arc<GpuMesh>,
-    pub uniforms: wgpu::BindGroup,
-    pub per_vertex: bool,
-}
-
-/// What every mesh-drawing pass binds.
-pub struct DrawList {
-    pub frame_uniforms: wgpu::BindGroup,
-    pub draws: Vec<Draw>,
-}
-
-/// Draws every mesh, switching pipelines only when the variant changes.
-pub fn draw_meshes(
-    pass: &mut wgpu::RenderPass<'_>,
-    list: &DrawList,
-    pipeline_for: impl Fn(&Draw) -> Arc<wgpu::RenderPipeline>,
-) {
-    pass.set_bind_group(0, &list.frame_uniforms, &[]);
-    let mut current: Option<Arc<wgpu::RenderPipeline>> = None;
-    for d in &list.draws {
-        let p = pipeline_for(d);
-        if current.as_ref().map(|c| !Arc::ptr_eq(c, &p)).unwrap_or(true) {
-            pass.set_pipeline(&p);
-            current = Some(p);
-        }
-        pass.set_bind_group(1, &d.uniforms, &[]);
-        pass.set_vertex_buffer(0, d.mesh.vertices.slice(..));
-        match &d.mesh.indices {
-            Some(ib) => {
-                pass.set_index_buffer(ib.slice(..), wgpu::IndexFormat::Uint32);
-                pass.draw_indexed(0..d.mesh.draw_count, 0, 0..1);
-            }
-            None => pass.draw(0..d.mesh.draw_count, 0..1),
-        }
-    }
-}
-
-/// Clear values of the normal and linear-depth targets: no normal, depth +inf.
-pub fn normal_clear() -> wgpu::Color {
-    wgpu::Color::TRANSPARENT
-}
-
-pub fn linear_depth_clear() -> wgpu::Color {
-    wgpu::Color { r: f32::INFINITY.to_bits() as f64, g: 0.0, b: 0.0, a: 0.0 }
-}
-
-pub fn attachment(
-    view: &wgpu::TextureView,
-    clear: wgpu::Color,
-) -> Option<wgpu::RenderPassColorAttachment<'_>> {
-    Some(wgpu::RenderPassColorAttachment {
-        view,
-        depth_slice: None,
-        resolve_target: None,
-        ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
+/// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms) with depth testing.
+pub fn mesh_pipeline(
+    f: &FrameCtx<'_>,
+    label: &'static str,
+    module: &wgpu::ShaderModule,
+    entry: &str,
+    targets: &[Option<wgpu::ColorTargetState>],
+    samples: u32,
+    constants: &[(&str, f64)],
+) -> wgpu::RenderPipeline {
+    let device = &f.dev.device;
+    let layouts = &f.pipelines.layouts;
+    let layout = f.pipelines.layout(device, label, &[&layouts.frame, &layouts.draw]);
+    let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(label),
+        layout: Some(&layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some("vs_main"),
+            compilation_options: options.clone(),
+            buffers: &[Some(GpuMesh::vertex_layout())],
+        },
+        // Both sides are drawn: a camera inside a mesh, or an open surface, shows back faces.
+        primitive: wgpu::PrimitiveState {
+            cull_mode: None,
+            front_face: wgpu::FrontFace::Ccw,
+            ..Default::default()
+        },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Less),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample: wgpu::MultisampleState { count: samples, mask: !0, alpha_to_coverage_enabled: false },
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(entry),
+            compilation_options: options,
+            targets,
+        }),
+        multiview_mask: None,
+        cache: None,
     })
 }
 
-pub fn depth_attachment(view: &wgpu::TextureView) -> Option<wgpu::RenderPassDepthStencilAttachment<'_>> {
-    Some(wgpu::RenderPassDepthStencilAttachment {
-        view,
-        depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
-        stencil_ops: None,
+/// A pipeline that covers the output with one triangle (`vs_fullscreen` in common.wgsl).
+pub fn fullscreen_pipeline(
+    f: &FrameCtx<'_>,
+    label: &'static str,
+    module: &wgpu::ShaderModule,
+    entry: &str,
+    groups: &[&wgpu::BindGroupLayout],
+    targets: &[Option<wgpu::ColorTargetState>],
+    constants: &[(&str, f64)],
+) -> wgpu::RenderPipeline {
+    let device = &f.dev.device;
+    let layout = f.pipelines.layout(device, label, groups);
+    let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(label),
+        layout: Some(&layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some("vs_fullscreen"),
+            compilation_options: options.clone(),
+            buffers: &[],
+        },
+        primitive: Default::default(),
+        depth_stencil: None,
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(entry),
+            compilation_options: options,
+            targets,
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+/// A bind group of one texture view.
+pub fn texture_group(
+    f: &FrameCtx<'_>,
+    layout: &wgpu::BindGroupLayout,
+    view: &wgpu::TextureView,
+) -> wgpu::BindGroup {
+    f.dev.device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout,
+        entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(view) }],
     })
 }

@@ -1,5 +1,7 @@
-// Shared by the passes that draw meshes: uniforms, the vertex stage and the shading models.
-// The formulas mirror src/render/reference.rs (see src/render/material.rs for the maths).
+// Shared by every pass: the uniforms, the mesh vertex stage and the shading models. The
+// constants (array sizes, model ids, ink kinds) come from the Rust side (src/render/wgsl.rs),
+// which prepends them. The formulas mirror src/render/reference.rs (see scene/material.rs).
+// Positions are in normalised view space: view space divided by the camera's scale.
 
 struct Light {
     position: vec4<f32>,   // w = 0: xyz is the unit vector toward the light; w = 1: a point
@@ -10,7 +12,10 @@ struct Frame {
     proj: mat4x4<f32>,
     ambient: vec4<f32>,    // ambient light a_l, linear rgb
     info: vec4<u32>,       // x: light count, y: 1 for an orthographic camera
-    lights: array<Light, 8>,
+    viewport: vec4<f32>,   // xy: output size in pixels; a pixel's footprint at depth d is d * z + w
+    outline: vec4<f32>,    // x: hidden-line offset (footprints), y: normal threshold, z: depth threshold, w: near plane
+    ink: array<vec4<f32>, INK_KINDS>,  // per ink kind: linear rgb, width in pixels (0: not drawn)
+    lights: array<Light, MAX_LIGHTS>,
 };
 
 struct Draw {
@@ -24,7 +29,7 @@ struct Draw {
     flags: vec4<u32>,      // x: 1 when the transform mirrors (flips the winding)
     thresholds: array<vec4<f32>, 2>,
     values: array<vec4<f32>, 3>,
-    table: array<vec4<f32>, 256>,
+    table: array<vec4<f32>, MAX_LUT>,
 };
 
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -95,17 +100,17 @@ fn shade(n: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
         var f = vec3<f32>(0.0);
         var s = 0.0;
         switch draw.model.x {
-            case 0u: {
+            case MODEL_LAMBERT: {
                 f = vec3<f32>(max(d, 0.0));
             }
-            case 1u: {
+            case MODEL_PHONG: {
                 f = vec3<f32>(max(d, 0.0));
                 let r = 2.0 * d * n - l;
                 if (d > 0.0) {
                     s = pow(max(dot(r, v), 0.0), draw.params.x);
                 }
             }
-            case 2u: {
+            case MODEL_THRESHOLDED_PHONG: {
                 f = vec3<f32>(thresh(d, draw.params.y));
                 var hl = dot(l, v);
                 if (draw.model.y == 1u) {
@@ -117,7 +122,7 @@ fn shade(n: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
                 }
                 s = thresh(hl, draw.params.z);
             }
-            case 3u: {
+            case MODEL_BANDS: {
                 f = vec3<f32>(band_value(d));
             }
             default: {
@@ -155,4 +160,22 @@ fn vs_main(v: VsIn) -> VsOut {
         o.color_back = shade(-n, p.xyz);
     }
     return o;
+}
+
+// The geometry target's texels: f32 bit patterns of the facing unit normal and the linear depth
+// (distance from the camera plane, in normalised view units).
+fn depth_bits(i: VsOut) -> u32 {
+    return bitcast<u32>(-i.view_pos.z);
+}
+
+fn normal_depth_bits(i: VsOut, front_facing: bool) -> vec4<u32> {
+    return vec4<u32>(bitcast<vec3<u32>>(facing_normal(i.view_normal, front_facing)), depth_bits(i));
+}
+
+// One triangle that covers the viewport (full-screen passes).
+@vertex
+fn vs_fullscreen(@builtin(vertex_index) vi: u32) -> @builtin(position) vec4<f32> {
+    let x = f32(i32(vi & 1u) * 4 - 1);
+    let y = f32(i32(vi >> 1u) * 4 - 1);
+    return vec4<f32>(x, y, 0.0, 1.0);
 }

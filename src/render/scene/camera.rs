@@ -34,12 +34,25 @@ pub struct Camera {
     pub far: Option<f64>,
 }
 
+/// Defaults of the camera constructors: seen from the front, a little from the right and above,
+/// with +y up, a 35 degree vertical field of view, and 5% room around the scene.
+pub const DEFAULT_DIRECTION: [f64; 3] = [0.35, 0.3, 1.0];
+pub const DEFAULT_UP: [f64; 3] = [0.0, 1.0, 0.0];
+pub const DEFAULT_FOV_Y: f64 = 35.0;
+pub const DEFAULT_MARGIN: f64 = 1.05;
+/// Height of an orthographic view in world units.
+pub const DEFAULT_HEIGHT: f64 = 2.0;
+
 impl Default for Camera {
-    /// Framed to fit, seen from the front, a little from the right and above.
+    /// Framed to fit from the default direction.
     fn default() -> Self {
         Camera {
-            placement: Placement::Fit { direction: [0.35, 0.3, 1.0], up: [0.0, 1.0, 0.0], margin: 1.05 },
-            projection: Projection::Perspective { fov_y_deg: 35.0 },
+            placement: Placement::Fit {
+                direction: DEFAULT_DIRECTION,
+                up: DEFAULT_UP,
+                margin: DEFAULT_MARGIN,
+            },
+            projection: Projection::Perspective { fov_y_deg: DEFAULT_FOV_Y },
             near: None,
             far: None,
         }
@@ -54,6 +67,46 @@ pub struct ResolvedCamera {
     pub near: f64,
     pub far: f64,
     pub orthographic: bool,
+    /// The projection's own parameters: vertical field of view (radians) or view height, and
+    /// the aspect ratio (width / height).
+    pub fov_or_height: f64,
+    pub aspect: f64,
+    /// A power of two near the scene's size. The GPU works in view space divided by it, so that
+    /// float32 keeps its precision however small, large or far away the scene is.
+    pub scale: f64,
+}
+
+impl ResolvedCamera {
+    /// World -> normalised view space (view space / `scale`).
+    pub fn normalized_view(&self) -> DMat4 {
+        DMat4::from_scale(DVec3::splat(1.0 / self.scale)) * self.view
+    }
+
+    /// Normalised view space -> clip space: the same image as `proj` of view space. For a
+    /// perspective camera the clip coordinates are also divided by `scale` (which changes no
+    /// image: they are homogeneous), keeping every entry near 1.
+    pub fn normalized_proj(&self) -> DMat4 {
+        let (n, f) = (self.near / self.scale, self.far / self.scale);
+        if self.orthographic {
+            let h = self.fov_or_height / 2.0 / self.scale;
+            orthographic(h * self.aspect, h, n, f)
+        } else {
+            perspective(self.fov_or_height, self.aspect, n, f)
+        }
+    }
+}
+
+/// The power of two at or above `x` (1 for zero or non-finite `x`).
+pub fn power_of_two_above(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let p = 2f64.powi(x.log2().ceil() as i32);
+    if p.is_finite() && p > 0.0 {
+        p
+    } else {
+        1.0
+    }
 }
 
 /// A sphere enclosing what is to be seen.
@@ -81,6 +134,18 @@ fn unit(arg: &str, v: [f64; 3]) -> Result<DVec3> {
 }
 
 impl Camera {
+    /// A checked camera.
+    pub fn new(
+        placement: Placement,
+        projection: Projection,
+        near: Option<f64>,
+        far: Option<f64>,
+    ) -> Result<Self> {
+        let c = Camera { placement, projection, near, far };
+        c.validate()?;
+        Ok(c)
+    }
+
     pub fn validate(&self) -> Result<()> {
         match self.projection {
             Projection::Perspective { fov_y_deg } if !(fov_y_deg > 0.0 && fov_y_deg < 180.0) => {
@@ -183,17 +248,21 @@ impl Camera {
         };
         let near = self.near.unwrap_or(auto_near);
         let far = self.far.unwrap_or(auto_far).max(near * (1.0 + 1e-6) + 1e-12);
-        let proj = match projection {
-            Projection::Perspective { fov_y_deg } => perspective(fov_y_deg.to_radians(), aspect, near, far),
-            Projection::Orthographic { height } => {
-                let (h, w) = (height / 2.0, height / 2.0 * aspect);
-                self::orthographic(w, h, near, far)
-            }
+        let fov_or_height = match projection {
+            Projection::Perspective { fov_y_deg } => fov_y_deg.to_radians(),
+            Projection::Orthographic { height } => height,
+        };
+        let proj = if orthographic {
+            let h = fov_or_height / 2.0;
+            self::orthographic(h * aspect, h, near, far)
+        } else {
+            perspective(fov_or_height, aspect, near, far)
         };
         if !view.is_finite() || !proj.is_finite() {
             return Err(Error::invalid("camera", "the camera gives a non-finite view or projection matrix"));
         }
-        Ok(ResolvedCamera { view, proj, near, far, orthographic })
+        let scale = power_of_two_above(scene.radius);
+        Ok(ResolvedCamera { view, proj, near, far, orthographic, fov_or_height, aspect, scale })
     }
 }
 
@@ -220,7 +289,8 @@ pub fn perspective(fov_y: f64, aspect: f64, near: f64, far: f64) -> DMat4 {
     from_rows([
         [f / aspect, 0.0, 0.0, 0.0],
         [0.0, f, 0.0, 0.0],
-        [0.0, 0.0, far / (near - far), near * far / (near - far)],
+        // near * (far / (near - far)), not (near * far) / ...: no underflow for tiny scenes
+        [0.0, 0.0, far / (near - far), near * (far / (near - far))],
         [0.0, 0.0, -1.0, 0.0],
     ])
 }

@@ -1,17 +1,9 @@
 // Supersampling: a box filter over FACTOR x FACTOR texels. The source is sRGB, so loads decode
 // to linear light and the average is taken there; the sRGB target encodes on store.
 
-@group(0) @binding(0) var source: texture_2d<f32>;
+@group(1) @binding(0) var source: texture_2d<f32>;
 
 override FACTOR: u32 = 2u;
-
-@vertex
-fn vs_fullscreen(@builtin(vertex_index) vi: u32) -> @builtin(position) vec4<f32> {
-    // one triangle that covers the viewport
-    let x = f32(i32(vi & 1u) * 4 - 1);
-    let y = f32(i32(vi >> 1u) * 4 - 1);
-    return vec4<f32>(x, y, 0.0, 1.0);
-}
 
 @fragment
 fn fs_downsample(@builtin(position) pos: vec4<f32>) -> @location(0) vec4<f32> {

@@ -3,6 +3,7 @@
 use glam::{DMat4, DVec3};
 
 use crate::error::{Error, Result};
+use crate::render::color::{check_unit, to_linear, Srgb};
 
 /// Most lights one scene may have (the shader's fixed-size array).
 pub const MAX_LIGHTS: usize = 8;
@@ -22,12 +23,23 @@ pub enum Space {
     Camera,
 }
 
+impl Space {
+    pub fn parse(arg: &str, s: &str) -> Result<Self> {
+        match s {
+            "world" => Ok(Self::World),
+            "camera" => Ok(Self::Camera),
+            other => Err(Error::invalid(arg, format!("must be 'world' or 'camera', got {other:?}"))),
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Light {
     pub kind: LightKind,
     pub space: Space,
-    /// Linear RGB, already multiplied by the intensity: d_l = S_l of the papers.
-    pub color: [f32; 3],
+    /// sRGB colour; d_l = S_l of the papers is its linear light times `intensity`.
+    pub color: Srgb,
+    pub intensity: f64,
 }
 
 impl Default for Light {
@@ -37,6 +49,7 @@ impl Default for Light {
             kind: LightKind::Directional { direction: [0.4, -0.55, -0.75] },
             space: Space::Camera,
             color: [1.0, 1.0, 1.0],
+            intensity: 1.0,
         }
     }
 }
@@ -50,6 +63,13 @@ pub enum ViewLight {
 }
 
 impl Light {
+    /// A checked light; `arg` names it in errors.
+    pub fn new(kind: LightKind, space: Space, color: Srgb, intensity: f64) -> Result<Self> {
+        let l = Light { kind, space, color, intensity };
+        l.validate("light")?;
+        Ok(l)
+    }
+
     pub fn validate(&self, arg: &str) -> Result<()> {
         match self.kind {
             LightKind::Directional { direction } => {
@@ -73,13 +93,26 @@ impl Light {
                 }
             }
         }
-        if !self.color.iter().all(|c| c.is_finite() && *c >= 0.0) {
+        check_unit(&format!("{arg}.color"), &self.color)?;
+        if !(self.intensity.is_finite() && self.intensity >= 0.0) {
             return Err(Error::invalid(
-                format!("{arg}.color"),
-                format!("must be finite and >= 0, got {:?}", self.color),
+                format!("{arg}.intensity"),
+                format!("must be finite and >= 0, got {}", self.intensity),
             ));
         }
         Ok(())
+    }
+
+    /// d_l = S_l: linear light of the colour times the intensity.
+    pub fn radiance(&self) -> [f32; 3] {
+        to_linear(self.color).map(|c| c * self.intensity as f32)
+    }
+
+    pub fn space_name(&self) -> &'static str {
+        match self.space {
+            Space::World => "world",
+            Space::Camera => "camera",
+        }
     }
 
     pub fn to_view(&self, view: &DMat4) -> ViewLight {

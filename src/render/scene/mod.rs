@@ -1,17 +1,22 @@
-//! What to render (meshes placed in the world, camera, lights) and how (size, outputs, accuracy).
+//! What to render (meshes placed in the world, camera, lights, materials, outlines) and how
+//! (size, outputs, accuracy). All of it is plain data: a scene can be built, checked and sent
+//! to another process without a device; meshes are named by the id their renderer gave them.
 
-use std::sync::Arc;
+pub mod camera;
+pub mod light;
+pub mod material;
+pub mod outlines;
 
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::error::{Error, Result};
 
-use super::camera::{Camera, Sphere};
-use super::gpu_mesh::GpuMesh;
-use super::light::{validate_lights, Light};
-use super::material::Material;
+use camera::{Camera, Sphere};
+use light::{validate_lights, Light};
+use material::Material;
+use outlines::Outlines;
 
-/// The images a render can return.
+/// What a render can return.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Outputs {
     /// (H, W, 4) sRGB colour.
@@ -20,11 +25,40 @@ pub struct Outputs {
     pub normal: bool,
     /// (H, W) linear view depth.
     pub depth: bool,
+    /// (H, W) ink coverage of the outlines in [0, 1].
+    pub outline: bool,
+    /// The visible mesh-space lines as polylines in pixel coordinates.
+    pub lines: bool,
 }
 
 impl Outputs {
+    /// The names `outputs=` accepts, in the order they are read back.
+    pub const NAMES: [&'static str; 5] = ["color", "normal", "depth", "outline", "lines"];
+
     pub fn any(&self) -> bool {
-        self.color || self.normal || self.depth
+        self.color || self.normal || self.depth || self.outline || self.lines
+    }
+
+    /// Sets the output called `name`.
+    pub fn add(&mut self, arg: &str, name: &str) -> Result<()> {
+        let flag = match name {
+            "color" => &mut self.color,
+            "normal" => &mut self.normal,
+            "depth" => &mut self.depth,
+            "outline" => &mut self.outline,
+            "lines" => &mut self.lines,
+            other => {
+                return Err(Error::invalid(
+                    arg,
+                    format!(
+                        "unknown output {other:?}; use {}",
+                        Self::NAMES.map(|n| format!("'{n}'")).join(", ")
+                    ),
+                ))
+            }
+        };
+        *flag = true;
+        Ok(())
     }
 }
 
@@ -47,7 +81,7 @@ impl Default for FrameSpec {
         FrameSpec {
             width: 512,
             height: 512,
-            outputs: Outputs { color: true, normal: false, depth: false },
+            outputs: Outputs { color: true, ..Default::default() },
             msaa: 1,
             supersample: 1,
             background: [1.0, 1.0, 1.0, 1.0],
@@ -74,7 +108,10 @@ impl FrameSpec {
             }
         }
         if !self.outputs.any() {
-            return Err(Error::invalid("outputs", "ask for at least one of 'color', 'normal', 'depth'"));
+            return Err(Error::invalid(
+                "outputs",
+                "ask for at least one output ('color', 'normal', 'depth', ...)",
+            ));
         }
         if !(self.msaa == 1 || self.msaa == 4) {
             return Err(Error::invalid("msaa", format!("must be 1 or 4, got {}", self.msaa)));
@@ -111,10 +148,13 @@ impl FrameSpec {
     }
 }
 
+/// A renderer's name for a mesh it holds.
+pub type MeshId = u64;
+
 /// A mesh placed in the world with a material.
-#[derive(Clone)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct SceneItem {
-    pub mesh: Arc<GpuMesh>,
+    pub mesh: MeshId,
     /// Row-major 4x4 affine model -> world transform (applied to column vectors).
     pub transform: [[f64; 4]; 4],
     pub material: Material,
@@ -147,13 +187,28 @@ impl SceneItem {
     }
 }
 
-#[derive(Clone)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     pub items: Vec<SceneItem>,
     pub camera: Camera,
     pub lights: Vec<Light>,
-    /// Ambient light a_l, linear RGB.
-    pub ambient: [f32; 3],
+    /// Ambient light a_l (sRGB).
+    pub ambient: crate::render::color::Srgb,
+    /// Ink lines, if any.
+    pub outlines: Option<Outlines>,
+}
+
+impl Default for Scene {
+    /// No meshes; the default camera, key light and white ambient light; no outlines.
+    fn default() -> Self {
+        Scene {
+            items: Vec::new(),
+            camera: Camera::default(),
+            lights: vec![Light::default()],
+            ambient: [1.0; 3],
+            outlines: None,
+        }
+    }
 }
 
 impl Scene {
@@ -163,35 +218,48 @@ impl Scene {
         }
         self.camera.validate()?;
         validate_lights(&self.lights)?;
-        if !self.ambient.iter().all(|c| c.is_finite() && *c >= 0.0) {
-            return Err(Error::invalid(
-                "ambient",
-                format!("must be finite and >= 0, got {:?}", self.ambient),
-            ));
+        crate::render::color::check_unit("ambient", &self.ambient)?;
+        if let Some(o) = &self.outlines {
+            o.validate("outlines")?;
         }
         Ok(())
     }
 
-    /// A sphere around every mesh as placed (a unit sphere at the origin for an empty scene).
-    pub fn bounding_sphere(&self) -> Sphere {
+    /// Mesh-space lines are drawn.
+    pub fn mesh_lines(&self) -> bool {
+        self.outlines.as_ref().is_some_and(|o| o.draws_mesh_lines())
+    }
+
+    /// Image-space edges are drawn.
+    pub fn image_edges(&self) -> bool {
+        self.outlines.as_ref().is_some_and(|o| o.draws_image_edges())
+    }
+
+    /// A sphere around every mesh as placed (a unit sphere at the origin for an empty scene),
+    /// given each mesh's own bounding sphere.
+    pub fn bounding_sphere(&self, mesh_sphere: impl Fn(MeshId) -> Result<Sphere>) -> Result<Sphere> {
         let mut all: Option<Sphere> = None;
         for item in &self.items {
             let m = item.model_matrix();
+            let own = mesh_sphere(item.mesh)?;
             let s = Sphere {
-                center: m.transform_point3(DVec3::from_array(item.mesh.origin)),
-                radius: item.mesh.radius * largest_stretch(DMat3::from_mat4(m)),
+                center: m.transform_point3(own.center),
+                radius: own.radius * largest_stretch(DMat3::from_mat4(m)),
             };
             all = Some(match all {
                 None => s,
                 Some(a) => merge(a, s),
             });
         }
-        match all {
-            Some(s) if s.center.is_finite() && s.radius.is_finite() => {
-                Sphere { center: s.center, radius: s.radius.max(1e-9 * s.center.length().max(1.0)) }
-            }
+        Ok(match all {
+            // a scene collapsed to a point (within the precision of its position) still gets a
+            // frame; any larger scene keeps its own size, however small
+            Some(s) if s.center.is_finite() && s.radius.is_finite() => Sphere {
+                center: s.center,
+                radius: s.radius.max(4.0 * f64::EPSILON * s.center.length()).max(f64::MIN_POSITIVE),
+            },
             _ => Sphere { center: DVec3::ZERO, radius: 1.0 },
-        }
+        })
     }
 }
 

@@ -1,0 +1,46 @@
+"""Draws docs/outlines.png: ink outlines in the render. Top row: the fandisk CAD part with
+mesh-space lines (silhouettes, boundaries, creases as ridges and valleys: Kang, Kim and Yoon),
+with image-space edges (Sobel on the normal and depth buffers: Borquez and Yepez), and the
+line drawing alone (the ``outline`` output). Bottom row: the same for the smoothed bunny.
+Needs trimesh to read the OBJ file. Run from the repository root: ``python docs/outlines_figure.py``.
+"""
+
+from pathlib import Path
+
+import numpy as np
+import trimesh
+
+import toonmesh as tm
+from toonmesh.data import bunny
+
+ROOT = Path(__file__).resolve().parent.parent
+SIZE = 360
+
+
+def panels(V, F, material, camera, crease_angle):
+    # depth edges are found in world units: a threshold of 2% of the model's size
+    depth_threshold = 0.02 * float(np.linalg.norm(V.max(0) - V.min(0)))
+    mesh = tm.Outlines("mesh", crease_angle=crease_angle, ridge="#202060", valley="#a02020", width=1.8)
+    image = tm.Outlines("image", depth_threshold=depth_threshold)
+    kw = dict(material=material, camera=camera, width=SIZE, height=SIZE, supersample=2)
+    a = tm.render(V, F, outlines=mesh, **kw).color
+    b = tm.render(V, F, outlines=image, **kw).color
+    ink = tm.render(V, F, outlines=tm.Outlines("both", crease_angle=crease_angle, depth_threshold=depth_threshold),
+                    outputs="outline", **kw).outline
+    c = np.dstack([np.repeat(((1 - ink) * 255).astype(np.uint8)[..., None], 3, axis=2), np.full(ink.shape, 255, np.uint8)])
+    return np.concatenate([a, b, c], axis=1)
+
+
+def main() -> None:
+    fandisk = trimesh.load(ROOT / "tests/data/meshes/fandisk.obj", process=False)
+    V1, F1 = np.asarray(fandisk.vertices), np.asarray(fandisk.faces)
+    V2, F2 = bunny()
+    V2 = tm.smooth.laplacian(V2, F2, iterations=5, preset="paper")
+    top = panels(V1, F1, tm.Material.bands("#8fb8de"), tm.Camera.fit((0.6, 0.5, 1.0)), 40.0)
+    bottom = panels(V2, F2, tm.Material.thresholded_phong("#f08a3c", t_h=0.1, t_s=0.9), tm.Camera.fit((0.35, 0.3, 1.0)), 60.0)
+    figure = np.ascontiguousarray(np.concatenate([top, bottom], axis=0))
+    (ROOT / "docs/outlines.png").write_bytes(tm._core.encode_png_rgba(figure))
+
+
+if __name__ == "__main__":
+    main()

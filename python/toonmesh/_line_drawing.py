@@ -1,0 +1,105 @@
+"""Mesh-space outlines seen by a camera, as SVG line art or NPZ arrays (``toonmesh edges``).
+
+The lines are the renderer's own ``lines`` output (silhouettes of the view, boundaries, creases,
+non-manifold edges, with hidden lines removed against its depth buffer), so they fall exactly
+where a render with that camera draws the mesh. Hidden lines are those of the same render with
+hidden-line removal turned off, less the visible ones.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Dict, List, Optional
+
+import numpy as np
+
+import toonmesh as tm
+
+#: Depth offset (in pixel footprints) that lets every line through: no hidden-line removal.
+_SHOW_ALL = 1e30
+
+
+def view_lines(
+    vertices: np.ndarray,
+    faces: np.ndarray,
+    camera: Any,
+    *,
+    width: int,
+    height: int,
+    crease_angle: float = 30.0,
+    weld: bool = True,
+    stroke_width: float = 1.5,
+    hidden: bool = False,
+    backend: Optional[str] = None,
+) -> Dict[str, Any]:
+    """The visible (and, with ``hidden``, every) outline polyline of one view, and the mesh's
+    feature edges; see :func:`write_npz` for the arrays."""
+    outlines = tm.Outlines("mesh", crease_angle=crease_angle, weld=weld, width=stroke_width)
+    kw = dict(camera=camera, width=width, height=height, outputs=("lines",), backend=backend)
+    seen = tm.render(vertices, faces, outlines=outlines, **kw)
+    everything = None
+    if hidden:
+        all_lines = tm.Outlines("mesh", crease_angle=crease_angle, weld=weld, depth_offset=_SHOW_ALL)
+        everything = tm.render(vertices, faces, outlines=all_lines, **kw)
+    features = tm.edges.feature_edges(vertices, faces, crease_angle, weld=weld)
+    return {"seen": seen, "everything": everything, "features": features}
+
+
+def _length(lines: List[np.ndarray]) -> float:
+    return float(sum(np.linalg.norm(np.diff(p, axis=0), axis=1).sum() for p in lines))
+
+
+def summary(lines: Dict[str, Any]) -> str:
+    """Counts of polylines per kind, and how much of the drawing is hidden."""
+    seen = lines["seen"]
+    kinds = seen.line_kinds or []
+    counts = ", ".join(f"{kinds.count(k):,} {k}" for k in sorted(set(kinds))) or "no lines"
+    text = f"{len(kinds):,} visible polylines ({counts})"
+    if lines["everything"] is not None:
+        total = _length(lines["everything"].lines)
+        text += f"; {100 * (1 - _length(seen.lines) / total) if total else 0:.0f}% of the line length is hidden"
+    return text
+
+
+def write_svg(path: str, lines: Dict[str, Any]) -> None:
+    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg`); with hidden lines,
+    those go underneath, dashed and grey."""
+    svg = lines["seen"].svg()
+    everything = lines["everything"]
+    if everything is not None:
+        polylines = "\n".join(
+            '<polyline points="' + " ".join(f"{x:.2f},{y:.2f}" for x, y in p) + '"/>' for p in everything.lines
+        )
+        under = (
+            '<g id="hidden" fill="none" stroke="#9a9a9a" stroke-width="1" stroke-dasharray="4 3">\n'
+            f"{polylines}\n</g>\n"
+        )
+        head_end = svg.index(">", svg.index("<svg")) + 1
+        svg = svg[:head_end] + "\n" + under + svg[head_end + 1 :]
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(svg)
+
+
+def write_npz(path: str, lines: Dict[str, Any]) -> None:
+    """Writes the drawing as arrays: ``points`` (P, 2) float64 pixel coordinates of every visible
+    polyline, one after another, with ``starts`` (L + 1,) int64 where each begins and
+    ``kinds`` (L,) its kind; the mesh's feature edges (``boundary``, ``crease``,
+    ``crease_angles``, ``crease_convex``, ``nonmanifold``); and ``view_matrix``,
+    ``projection``, ``width``, ``height`` of the camera."""
+    seen, fe = lines["seen"], lines["features"]
+    polylines = seen.lines or []
+    starts = np.concatenate([[0], np.cumsum([len(p) for p in polylines])]).astype(np.int64)
+    np.savez_compressed(
+        path,
+        points=np.concatenate(polylines) if polylines else np.zeros((0, 2)),
+        starts=starts,
+        kinds=np.array(seen.line_kinds or [], dtype=str),
+        boundary=fe.boundary,
+        crease=fe.crease,
+        crease_angles=fe.crease_angles,
+        crease_convex=fe.crease_convex,
+        nonmanifold=fe.nonmanifold,
+        view_matrix=seen.view_matrix,
+        projection=seen.projection,
+        width=np.int64(seen.width),
+        height=np.int64(seen.height),
+    )

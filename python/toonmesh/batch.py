@@ -1,0 +1,179 @@
+"""Render many mesh files, and many views of each, in this process or on a Dask cluster.
+
+>>> from toonmesh.batch import render_files
+>>> rows = render_files(["a.obj", "b.ply"], "frames/", views=8, width=512, height=512)
+>>> # on a cluster: render_files(..., client=Client("tcp://scheduler:8786"))
+
+Each mesh is one task: it is read, uploaded once, and rendered from every view by the worker's
+own :class:`toonmesh.Renderer` (one per worker process and backend, kept between tasks), then
+its images are written to ``out_dir`` (a folder every worker can reach). The result is a list of
+dicts, one per image written, in the order of ``paths`` and views; ``pandas.DataFrame(rows)``
+turns it into a table.
+
+Needs ``pip install 'toonmesh[batch]'`` (``dask[distributed]`` and trimesh) for
+:func:`render_files`; :func:`render_file` needs trimesh only.
+"""
+
+from __future__ import annotations
+
+import os
+import socket
+import threading
+import time
+from typing import Any, Dict, List, Optional, Sequence
+
+import numpy as np
+
+from toonmesh._files import check_distinct_names, image_suffix, read_mesh, save_result, view_paths
+from toonmesh._views import check_views, turntable
+
+__all__ = ["render_file", "render_files"]
+
+_renderers: Dict[Optional[str], Any] = {}
+_renderers_lock = threading.Lock()
+
+
+def worker_renderer(backend: Optional[str] = None) -> Any:
+    """This process's :class:`toonmesh.Renderer` for ``backend``, made on first use and kept,
+    so that every task a worker runs shares one GPU context and its cached pipelines."""
+    import toonmesh as tm
+
+    with _renderers_lock:
+        r = _renderers.get(backend)
+        if r is None:
+            r = _renderers[backend] = tm.Renderer(backend)
+        return r
+
+
+def _smoothed(V: np.ndarray, F: np.ndarray, method: str, iterations: int) -> np.ndarray:
+    import toonmesh as tm
+
+    if method not in ("laplacian", "taubin", "hc", "implicit"):
+        raise ValueError(f"smooth_method: expected 'paper', 'laplacian', 'taubin', 'hc' or 'implicit', got {method!r}")
+    return getattr(tm.smooth, method)(V, F, iterations=iterations)  # type: ignore[no-any-return]
+
+
+def render_views(
+    mesh_path: str,
+    files: Sequence[str],
+    *,
+    up: str = "y",
+    backend: Optional[str] = None,
+    smooth_iterations: int = 0,
+    smooth_method: str = "paper",
+    normals: str = "smooth",
+    **render_options: Any,
+) -> List[Dict[str, Any]]:
+    """Renders one mesh file into ``files``, one view each (a turntable about ``up`` when there
+    are several files, unless ``camera`` is given with one file). Returns one dict per file:
+    see :func:`render_files`."""
+    t0 = time.perf_counter()
+    V, F = read_mesh(mesh_path)
+    if smooth_iterations and smooth_method != "paper":
+        V, smooth_iterations = _smoothed(V, F, smooth_method, smooth_iterations), 0
+    renderer = worker_renderer(backend)
+    # "paper": the renderer's own pre-smoothing, each vertex to its neighbours' mean
+    handle = renderer.add_mesh(V, F, normals=normals, smooth_iterations=smooth_iterations)
+    load_s = time.perf_counter() - t0
+    if "camera" in render_options and len(files) != 1:
+        raise ValueError("camera: give either a camera or several views, not both")
+    cameras = [render_options.pop("camera")] if "camera" in render_options else turntable(len(files), up)
+    worker = f"{socket.gethostname()}:{os.getpid()}"
+    rows = []
+    try:
+        for k, (camera, path) in enumerate(zip(cameras, files)):
+            t1 = time.perf_counter()
+            result = renderer.render(handle, camera=camera, **render_options)
+            t2 = time.perf_counter()
+            save_result(result, path)
+            rows.append({
+                "mesh": mesh_path, "view": k, "path": path, "vertices": len(V), "faces": len(F),
+                "load_s": load_s if k == 0 else 0.0, "render_s": t2 - t1,
+                "write_s": time.perf_counter() - t2, "worker": worker,
+            })
+    finally:
+        renderer.remove_mesh(handle)
+    return rows
+
+
+def render_file(mesh_path: str, out_dir: str, *, views: int = 1, **options: Any) -> List[Dict[str, Any]]:
+    """Renders one mesh file in this process into ``out_dir``; options as in :func:`render_files`."""
+    outputs = options.get("outputs", ("color",))
+    outputs = [outputs] if isinstance(outputs, str) else list(outputs)
+    os.makedirs(out_dir, exist_ok=True)
+    files = view_paths(mesh_path, out_dir, check_views(views), image_suffix(outputs))
+    return render_views(mesh_path, files, **options)
+
+
+def render_files(
+    paths: Sequence[str],
+    out_dir: str,
+    *,
+    views: int = 1,
+    client: Any = None,
+    up: str = "y",
+    backend: Optional[str] = None,
+    smooth_iterations: int = 0,
+    smooth_method: str = "paper",
+    normals: str = "smooth",
+    **render_options: Any,
+) -> List[Dict[str, Any]]:
+    """Renders every mesh file in ``paths`` from ``views`` views on a Dask cluster.
+
+    Args:
+        paths: mesh files (OBJ, PLY, STL, OFF, GLB, ... as trimesh reads them), readable by the
+            workers. File name stems must differ: images are named after them.
+        out_dir: folder for the images, created if needed, writable by the workers. One view
+            gives ``STEM.png``; several give ``STEM-000.png``, ``STEM-001.png``, ... (``.npz``
+            with every output array when ``outputs`` asks for ``normal`` or ``depth``).
+        views: views per mesh: a turntable of fit cameras about ``up``, the first one the front
+            view slightly from above (see ``toonmesh render --up``).
+        client: a ``dask.distributed.Client``; None starts a local cluster (one worker process
+            per core, one thread each) for this call and closes it afterwards.
+        up: the meshes' up axis, "x", "y" (default) or "z".
+        backend: as in :class:`toonmesh.Renderer`.
+        smooth_iterations, smooth_method: smoothing before rendering: ``"paper"`` (default) is
+            the renderer's own (each vertex to its neighbours' mean, as in
+            :func:`toonmesh.render`), or ``"laplacian"``, ``"taubin"``, ``"hc"``, ``"implicit"``
+            with that many iterations and their defaults.
+        normals: "smooth" or "flat".
+        **render_options: passed to :meth:`toonmesh.Renderer.render` for every view (``width``,
+            ``height``, ``material``, ``lights``, ``outputs``, ``msaa``, ``supersample``,
+            ``background``, ...; ``camera`` only with one view). Materials, cameras and lights
+            pickle, so they travel to the workers.
+
+    Returns:
+        A list of dicts, one per image, in the order of ``paths`` and then views: ``mesh``,
+        ``view`` (0-based), ``path`` (the file written), ``vertices``, ``faces``, ``load_s``
+        (reading, smoothing and uploading the mesh; on the first view's row), ``render_s``,
+        ``write_s`` (seconds) and ``worker`` (host:pid). ``pandas.DataFrame(rows)`` makes it a
+        table.
+
+    Raises:
+        ImportError: dask.distributed is not installed.
+        The first task's error (a missing or unreadable file, a bad option) as it was raised.
+    """
+    try:
+        from dask.distributed import Client, LocalCluster
+    except ImportError:
+        raise ImportError("render_files needs dask.distributed: pip install 'toonmesh[batch]'") from None
+    paths = [os.fspath(p) for p in paths]
+    check_distinct_names(paths)
+    n_views = check_views(views)
+    options = dict(render_options, up=up, backend=backend, smooth_iterations=smooth_iterations,
+                   smooth_method=smooth_method, normals=normals)
+    os.makedirs(out_dir, exist_ok=True)
+    own = None
+    if client is None:
+        cluster = LocalCluster(n_workers=os.cpu_count() or 1, threads_per_worker=1, processes=True,
+                               dashboard_address=None)
+        own = client = Client(cluster)
+    try:
+        futures = client.map(render_file, paths, out_dir=out_dir, views=n_views, pure=False, **options)
+        results = client.gather(futures)
+    finally:
+        if own is not None:
+            cluster = own.cluster
+            own.close()
+            cluster.close()
+    return [row for rows in results for row in rows]

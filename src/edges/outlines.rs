@@ -1,0 +1,125 @@
+//! The outline set of one view: what a mesh-space outline pass draws (Kang, Kim and Yoon).
+//! The view-independent part (boundaries, creases as ridges and valleys, non-manifold edges) is
+//! found once per mesh; each view adds its silhouettes. Every edge appears once, with one kind:
+//! a silhouette first, then what it is on the mesh.
+
+use super::feature::FeatureEdges;
+
+/// Kinds of mesh-space lines, in priority order (an edge that is several is drawn as the first).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[repr(u32)]
+pub enum LineKind {
+    Silhouette = 0,
+    Boundary = 1,
+    NonManifold = 2,
+    /// A convex crease.
+    Ridge = 3,
+    /// A concave crease.
+    Valley = 4,
+}
+
+impl LineKind {
+    pub const COUNT: usize = 5;
+    pub const ALL: [LineKind; LineKind::COUNT] =
+        [LineKind::Silhouette, LineKind::Boundary, LineKind::NonManifold, LineKind::Ridge, LineKind::Valley];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            LineKind::Silhouette => "silhouette",
+            LineKind::Boundary => "boundary",
+            LineKind::NonManifold => "nonmanifold",
+            LineKind::Ridge => "ridge",
+            LineKind::Valley => "valley",
+        }
+    }
+}
+
+/// Edges (smaller index first, sorted lexicographically, each once) with their kinds.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Outline {
+    pub edges: Vec<[u32; 2]>,
+    pub kinds: Vec<LineKind>,
+}
+
+impl Outline {
+    pub fn len(&self) -> usize {
+        self.edges.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.edges.is_empty()
+    }
+
+    /// The view-independent lines of a mesh.
+    pub fn statics(fe: &FeatureEdges) -> Outline {
+        let creases = Outline {
+            edges: fe.crease.clone(),
+            kinds: fe
+                .crease_convex
+                .iter()
+                .map(|&convex| if convex { LineKind::Ridge } else { LineKind::Valley })
+                .collect(),
+        };
+        let of = |edges: &[[u32; 2]], kind| Outline { edges: edges.to_vec(), kinds: vec![kind; edges.len()] };
+        merge(
+            &merge(&of(&fe.boundary, LineKind::Boundary), &of(&fe.nonmanifold, LineKind::NonManifold)),
+            &creases,
+        )
+    }
+
+    /// These lines and a view's silhouettes (sorted), a silhouette taking precedence.
+    pub fn with_silhouettes(&self, silhouettes: &[[u32; 2]]) -> Outline {
+        let sil =
+            Outline { edges: silhouettes.to_vec(), kinds: vec![LineKind::Silhouette; silhouettes.len()] };
+        merge(&sil, self)
+    }
+}
+
+/// The union of two sorted outlines; on an edge in both, the kind of higher priority.
+fn merge(a: &Outline, b: &Outline) -> Outline {
+    let mut out = Outline {
+        edges: Vec::with_capacity(a.len() + b.len()),
+        kinds: Vec::with_capacity(a.len() + b.len()),
+    };
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() || j < b.len() {
+        let take_a = j == b.len() || (i < a.len() && a.edges[i] <= b.edges[j]);
+        let (e, k) = if take_a { (a.edges[i], a.kinds[i]) } else { (b.edges[j], b.kinds[j]) };
+        if out.edges.last() == Some(&e) {
+            let last = out.kinds.last_mut().expect("kinds follow edges");
+            *last = (*last).min(k);
+        } else {
+            out.edges.push(e);
+            out.kinds.push(k);
+        }
+        if take_a {
+            i += 1;
+        } else {
+            j += 1;
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn silhouettes_take_precedence_and_edges_stay_sorted_and_unique() {
+        let fe = FeatureEdges {
+            boundary: vec![[0, 1], [4, 5]],
+            crease: vec![[1, 2], [2, 3]],
+            crease_angle: vec![40.0, 50.0],
+            crease_convex: vec![true, false],
+            nonmanifold: vec![[3, 9]],
+        };
+        let s = Outline::statics(&fe);
+        assert_eq!(s.edges, vec![[0, 1], [1, 2], [2, 3], [3, 9], [4, 5]]);
+        use LineKind::*;
+        assert_eq!(s.kinds, vec![Boundary, Ridge, Valley, NonManifold, Boundary]);
+        let v = s.with_silhouettes(&[[1, 2], [7, 8]]);
+        assert_eq!(v.edges, vec![[0, 1], [1, 2], [2, 3], [3, 9], [4, 5], [7, 8]]);
+        assert_eq!(v.kinds, vec![Boundary, Silhouette, Valley, NonManifold, Boundary, Silhouette]);
+    }
+}

@@ -1,0 +1,172 @@
+// Mesh-space outlines (Kang, Kim and Yoon) as screen-space strips: each line is a quad around
+// its projected segment, `width` output pixels wide plus one pixel of antialiasing, with round
+// ends so that the lines of a polyline join without gaps. Coverage is the distance of the pixel
+// centre to the segment. Hidden lines are removed against the geometry target's depth: a point
+// of the line is visible when its depth is at most the largest surface depth in the 3x3 pixels
+// around it plus `depth offset` pixel footprints (src/render/scene/outlines.rs), decided at the
+// nearest point of the centre line, so that the whole width of a line shows or hides together.
+// A silhouette or boundary with background among those pixels is on the rim and shows; other
+// lines are tested against the surface pixels only (a crease behind the rim stays hidden).
+// `reference.rs` holds the same rule on the CPU.
+
+@group(2) @binding(0) var geometry: texture_2d<u32>;
+
+struct LineIn {
+    @location(0) a: vec3<f32>,
+    @location(1) kind: u32,
+    @location(2) b: vec3<f32>,
+};
+
+
+// The texel component that holds the depth: 3 in the normal + depth layout, 0 in depth only.
+override DEPTH_COMPONENT: u32 = 3u;
+
+struct LineOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) @interpolate(flat) sa: vec2<f32>,
+    @location(1) @interpolate(flat) sb: vec2<f32>,
+    @location(2) @interpolate(flat) depths: vec2<f32>,
+    @location(3) @interpolate(flat) kind: u32,
+};
+
+fn to_pixels(v: vec3<f32>) -> vec2<f32> {
+    let c = frame.proj * vec4<f32>(v, 1.0);
+    let ndc = c.xy / c.w;
+    return vec2<f32>((ndc.x * 0.5 + 0.5) * frame.viewport.x, (0.5 - ndc.y * 0.5) * frame.viewport.y);
+}
+
+@vertex
+fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
+    var o: LineOut;
+    let kind = l.kind;
+    o.kind = kind;
+    var pa = (draw.model_view * vec4<f32>(l.a, 1.0)).xyz;
+    var pb = (draw.model_view * vec4<f32>(l.b, 1.0)).xyz;
+    if (frame.info.y == 0u) {
+        // keep the part in front of the near plane
+        let near = frame.outline.w;
+        let za = -pa.z;
+        let zb = -pb.z;
+        if (za < near && zb < near) {
+            o.clip = vec4<f32>(-2.0, -2.0, 0.0, 1.0);
+            return o;
+        }
+        if (za < near) {
+            pa = mix(pa, pb, (near - za) / (zb - za));
+        } else if (zb < near) {
+            pb = mix(pb, pa, (near - zb) / (za - zb));
+        }
+    }
+    let sa = to_pixels(pa);
+    let sb = to_pixels(pb);
+    let half = frame.ink[kind].w * 0.5 + 1.0;
+    let ab = sb - sa;
+    let len = length(ab);
+    var dir = vec2<f32>(1.0, 0.0);
+    if (len > 1e-6) {
+        dir = ab / len;
+    }
+    let side = vec2<f32>(-dir.y, dir.x);
+    // a triangle strip: 0 and 2 at the start, 1 and 3 at the end
+    let along = select(-half, len + half, (vi & 1u) == 1u);
+    let across = select(-half, half, vi >= 2u);
+    let s = sa + dir * along + side * across;
+    o.clip = vec4<f32>(s.x / frame.viewport.x * 2.0 - 1.0, 1.0 - s.y / frame.viewport.y * 2.0, 0.0, 1.0);
+    o.sa = sa;
+    o.sb = sb;
+    o.depths = vec2<f32>(-pa.z, -pb.z);
+    return o;
+}
+
+fn surface_depth(p: vec2<i32>) -> u32 {
+    return textureLoad(geometry, p, 0)[DEPTH_COMPONENT];
+}
+
+// Whether the line point at pixel position `c` with depth `z` and kind `kind` is visible.
+fn visible(c: vec2<f32>, z: f32, kind: u32) -> bool {
+    let size = vec2<i32>(textureDimensions(geometry));
+    let q = vec2<i32>(floor(c));
+    let rim = kind == LINE_SILHOUETTE || kind == LINE_BOUNDARY;
+    let tolerance = frame.outline.x * (z * frame.viewport.z + frame.viewport.w) + z * 1e-5;
+    // the pixel itself usually decides: in front of (or on) its surface, the largest depth
+    // around can only agree
+    let own = surface_depth(clamp(q, vec2<i32>(0), size - 1));
+    let own_background = (own & 0x7f800000u) == 0x7f800000u;
+    if ((own_background && rim) || (!own_background && z <= bitcast<f32>(own) + tolerance)) {
+        return true;
+    }
+    var far = 0.0;
+    var surface = false;
+    for (var j = -1; j <= 1; j++) {
+        for (var i = -1; i <= 1; i++) {
+            let bits = surface_depth(clamp(q + vec2<i32>(i, j), vec2<i32>(0), size - 1));
+            if ((bits & 0x7f800000u) == 0x7f800000u) {
+                if (rim) {
+                    return true;  // a rim line next to the background: nothing covers it
+                }
+            } else {
+                surface = true;
+                far = max(far, bitcast<f32>(bits));
+            }
+        }
+    }
+    return !surface || z <= far + tolerance;
+}
+
+// Ink coverage of this pixel by the line, 0 where it is hidden.
+fn coverage(o: LineOut) -> f32 {
+    let pos = o.clip;  // in the fragment stage: the pixel centre
+    let ab = o.sb - o.sa;
+    let l2 = dot(ab, ab);
+    var t = 0.0;
+    if (l2 > 0.0) {
+        t = clamp(dot(pos.xy - o.sa, ab) / l2, 0.0, 1.0);
+    }
+    let c = o.sa + ab * t;
+    let cov = clamp(frame.ink[o.kind].w * 0.5 + 0.5 - length(pos.xy - c), 0.0, 1.0);
+    if (cov <= 0.0) {
+        return 0.0;
+    }
+    var z = mix(o.depths.x, o.depths.y, t);
+    if (frame.info.y == 0u) {
+        // perspective: 1 / depth is linear on screen
+        z = 1.0 / mix(1.0 / o.depths.x, 1.0 / o.depths.y, t);
+    }
+    return select(0.0, cov, visible(c, z, o.kind));
+}
+
+fn ink(kind: u32, cov: f32) -> vec4<f32> {
+    return vec4<f32>(frame.ink[kind].rgb * cov, cov);
+}
+
+@fragment
+fn fs_color(o: LineOut) -> @location(0) vec4<f32> {
+    let cov = coverage(o);
+    if (cov <= 0.0) {
+        discard;
+    }
+    return ink(o.kind, cov);
+}
+
+@fragment
+fn fs_outline(o: LineOut) -> @location(0) vec4<f32> {
+    let cov = coverage(o);
+    if (cov <= 0.0) {
+        discard;
+    }
+    return vec4<f32>(cov);
+}
+
+struct Both {
+    @location(0) color: vec4<f32>,
+    @location(1) outline: vec4<f32>,
+};
+
+@fragment
+fn fs_both(o: LineOut) -> Both {
+    let cov = coverage(o);
+    if (cov <= 0.0) {
+        discard;
+    }
+    return Both(ink(o.kind, cov), vec4<f32>(cov));
+}

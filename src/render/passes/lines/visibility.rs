@@ -1,0 +1,246 @@
+//! The line pass's rules on the CPU: projecting a line to pixels (with the near plane), which
+//! points of it are visible against a depth image, its ink coverage, and the visible runs of
+//! lines as polylines (`RenderResult.lines`). The shader (`lines.wgsl`) follows the same rules;
+//! tests hold its pixels against `coverage_image`.
+
+use glam::{DMat4, DVec3, DVec4};
+
+use crate::edges::outlines::LineKind;
+
+/// The relative depth tolerance of the visibility test (float rounding of the line's own depth).
+pub const DEPTH_EPSILON: f64 = 1e-5;
+
+/// A line projected to the image: end points in pixels (x right, y down, origin at the top-left
+/// corner of the image) and their linear depths.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScreenLine {
+    pub a: [f64; 2],
+    pub b: [f64; 2],
+    pub za: f64,
+    pub zb: f64,
+    pub kind: usize,
+}
+
+impl ScreenLine {
+    /// Point and depth at parameter t in [0, 1] (1/depth is linear on screen in perspective).
+    pub fn at(&self, t: f64, orthographic: bool) -> ([f64; 2], f64) {
+        let p = [self.a[0] + (self.b[0] - self.a[0]) * t, self.a[1] + (self.b[1] - self.a[1]) * t];
+        let z = if orthographic {
+            self.za + (self.zb - self.za) * t
+        } else {
+            1.0 / (1.0 / self.za + (1.0 / self.zb - 1.0 / self.za) * t)
+        };
+        (p, z)
+    }
+
+    pub fn length(&self) -> f64 {
+        (self.b[0] - self.a[0]).hypot(self.b[1] - self.a[1])
+    }
+}
+
+/// Projects lines of one mesh: model (stored coordinates) -> view -> pixels.
+pub struct Projector {
+    pub model_view: DMat4,
+    pub proj: DMat4,
+    pub width: f64,
+    pub height: f64,
+    pub orthographic: bool,
+    pub near: f64,
+}
+
+impl Projector {
+    fn pixels(&self, v: DVec3) -> [f64; 2] {
+        let c = self.proj * DVec4::new(v.x, v.y, v.z, 1.0);
+        let (x, y) = (c.x / c.w, c.y / c.w);
+        [(x * 0.5 + 0.5) * self.width, (0.5 - y * 0.5) * self.height]
+    }
+
+    /// The line from `a` to `b`, cut to the part in front of the near plane; None when none is.
+    pub fn project(&self, a: [f64; 3], b: [f64; 3], kind: usize) -> Option<ScreenLine> {
+        let mut pa = self.model_view.transform_point3(DVec3::from_array(a));
+        let mut pb = self.model_view.transform_point3(DVec3::from_array(b));
+        if !self.orthographic {
+            let (za, zb) = (-pa.z, -pb.z);
+            if za < self.near && zb < self.near {
+                return None;
+            }
+            if za < self.near {
+                pa = pa.lerp(pb, (self.near - za) / (zb - za));
+            } else if zb < self.near {
+                pb = pb.lerp(pa, (self.near - zb) / (za - zb));
+            }
+        }
+        Some(ScreenLine { a: self.pixels(pa), b: self.pixels(pb), za: -pa.z, zb: -pb.z, kind })
+    }
+}
+
+/// A depth image: (H, W) linear depths, +inf (any non-finite value) where no surface is.
+pub struct DepthImage<'a> {
+    pub depth: &'a [f32],
+    pub width: usize,
+    pub height: usize,
+}
+
+/// The hidden-line rule.
+#[derive(Clone, Copy, Debug)]
+pub struct Visibility {
+    /// Offset in pixel footprints.
+    pub offset: f64,
+    /// A pixel's footprint at depth z is `footprint.0 * z + footprint.1`.
+    pub footprint: (f64, f64),
+}
+
+impl Visibility {
+    /// Whether the point at pixel position `c`, depth `z`, of a line of kind `kind` is visible:
+    /// its depth is at most the largest surface depth in the 3x3 pixels around it plus `offset`
+    /// footprints (plus `DEPTH_EPSILON` of itself). A silhouette or boundary with background
+    /// among those pixels is on the rim and visible; other kinds are held against the surface
+    /// pixels only, so a crease behind the rim stays hidden. No surface around: visible.
+    pub fn visible(&self, img: &DepthImage<'_>, c: [f64; 2], z: f64, kind: usize) -> bool {
+        let rim = kind == LineKind::Silhouette as usize || kind == LineKind::Boundary as usize;
+        let (qx, qy) = (c[0].floor() as i64, c[1].floor() as i64);
+        let mut far: Option<f64> = None;
+        for j in -1..=1 {
+            for i in -1..=1 {
+                let x = (qx + i).clamp(0, img.width as i64 - 1) as usize;
+                let y = (qy + j).clamp(0, img.height as i64 - 1) as usize;
+                let d = img.depth[y * img.width + x];
+                if !d.is_finite() {
+                    if rim {
+                        return true;
+                    }
+                } else {
+                    far = Some(far.unwrap_or(0.0).max(d as f64));
+                }
+            }
+        }
+        let footprint = z * self.footprint.0 + self.footprint.1;
+        far.is_none_or(|far| z <= far + self.offset * footprint + z * DEPTH_EPSILON)
+    }
+}
+
+/// Ink coverage of every pixel by `lines` (widths in pixels per kind), 0 where hidden: what the
+/// line pass writes into the outline output.
+pub fn coverage_image(
+    lines: &[ScreenLine],
+    widths: &[f32],
+    orthographic: bool,
+    img: &DepthImage<'_>,
+    rule: Visibility,
+) -> Vec<f32> {
+    let (w, h) = (img.width, img.height);
+    let mut out = vec![0.0f32; w * h];
+    for l in lines {
+        let width = widths[l.kind] as f64;
+        let reach = width / 2.0 + 1.0;
+        let x0 = (l.a[0].min(l.b[0]) - reach).floor().max(0.0) as usize;
+        let y0 = (l.a[1].min(l.b[1]) - reach).floor().max(0.0) as usize;
+        let x1 = ((l.a[0].max(l.b[0]) + reach).ceil().max(0.0) as usize).min(w);
+        let y1 = ((l.a[1].max(l.b[1]) + reach).ceil().max(0.0) as usize).min(h);
+        let ab = [l.b[0] - l.a[0], l.b[1] - l.a[1]];
+        let l2 = ab[0] * ab[0] + ab[1] * ab[1];
+        for y in y0..y1 {
+            for x in x0..x1 {
+                let p = [x as f64 + 0.5, y as f64 + 0.5];
+                let t = if l2 > 0.0 {
+                    (((p[0] - l.a[0]) * ab[0] + (p[1] - l.a[1]) * ab[1]) / l2).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                let (c, z) = l.at(t, orthographic);
+                let cov = (width / 2.0 + 0.5 - (p[0] - c[0]).hypot(p[1] - c[1])).clamp(0.0, 1.0);
+                if cov > 0.0 && rule.visible(img, c, z, l.kind) {
+                    let o = &mut out[y * w + x];
+                    *o = o.max(cov as f32);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Visible runs shorter than this many pixels are dropped from the polylines: where a hidden
+/// line leaves a visible vertex, its first half pixel is visible too.
+pub const MIN_RUN: f64 = 1.0;
+
+/// The visible parts of a chain of lines (each starting where the last ended) as polylines in
+/// pixel coordinates: visibility is sampled every half pixel, a run keeps the points where it
+/// starts and stops and the ends of the lines it passes, runs are cut to the image, and runs
+/// shorter than `MIN_RUN` pixels are left out.
+pub fn visible_runs(
+    chain: &[ScreenLine],
+    orthographic: bool,
+    img: &DepthImage<'_>,
+    rule: Visibility,
+) -> Vec<Vec<[f64; 2]>> {
+    let (w, h) = (img.width as f64, img.height as f64);
+    let mut runs = Vec::new();
+    let mut current: Vec<[f64; 2]> = Vec::new();
+    let mut close = |current: &mut Vec<[f64; 2]>| {
+        let length: f64 = current.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum();
+        if length >= MIN_RUN {
+            runs.push(std::mem::take(current));
+        }
+        current.clear();
+    };
+    for (i, l) in chain.iter().enumerate() {
+        // a gap between lines (one cut by the near plane) ends the run
+        if i > 0 && chain[i - 1].b != l.a {
+            close(&mut current);
+        }
+        let n = (l.length() / 0.5).ceil().max(1.0) as usize;
+        // a run's points: where it starts, the ends of lines it passes, and where it stops
+        let mut last_visible: Option<[f64; 2]> = None;
+        for s in 0..=n {
+            let (p, z) = l.at(s as f64 / n as f64, orthographic);
+            let inside = (0.0..=w).contains(&p[0]) && (0.0..=h).contains(&p[1]);
+            if inside && z > 0.0 && rule.visible(img, p, z, l.kind) {
+                if current.is_empty() || s == n {
+                    if current.last() != Some(&p) {
+                        current.push(p);
+                    }
+                }
+                last_visible = Some(p);
+            } else {
+                if let Some(q) = last_visible.filter(|q| current.last() != Some(q)) {
+                    current.push(q);
+                }
+                last_visible = None;
+                close(&mut current);
+            }
+        }
+    }
+    close(&mut current);
+    runs
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_line_in_front_shows_and_one_behind_hides() {
+        let depth = vec![2.0f32; 16 * 16];
+        let img = DepthImage { depth: &depth, width: 16, height: 16 };
+        let rule = Visibility { offset: 1.0, footprint: (0.01, 0.0) };
+        assert!(rule.visible(&img, [8.0, 8.0], 2.0, 0), "on the surface");
+        assert!(rule.visible(&img, [8.0, 8.0], 2.01, 0), "within a footprint");
+        assert!(!rule.visible(&img, [8.0, 8.0], 2.1, 0), "behind it");
+        // at the rim: a silhouette shows, a crease behind the surface does not
+        let mut rim = depth.clone();
+        rim[8 * 16 + 9] = f32::INFINITY;
+        let rim_img = DepthImage { depth: &rim, width: 16, height: 16 };
+        assert!(rule.visible(&rim_img, [8.0, 8.0], 3.0, LineKind::Silhouette as usize));
+        assert!(!rule.visible(&rim_img, [8.0, 8.0], 3.0, LineKind::Ridge as usize));
+        let line = ScreenLine { a: [2.0, 8.5], b: [14.0, 8.5], za: 2.0, zb: 2.0, kind: 0 };
+        let cov = coverage_image(&[line], &[1.5], false, &img, rule);
+        assert_eq!(cov[8 * 16 + 8], 1.0);
+        assert!(cov[7 * 16 + 8] > 0.0 && cov[5 * 16 + 8] == 0.0);
+        let hidden = ScreenLine { za: 3.0, zb: 3.0, ..line };
+        assert!(coverage_image(&[hidden], &[1.5], false, &img, rule).iter().all(|&c| c == 0.0));
+        let runs = visible_runs(&[line], false, &img, rule);
+        assert_eq!(runs.len(), 1);
+        assert_eq!(runs[0].first(), Some(&[2.0, 8.5]));
+        assert_eq!(runs[0].last(), Some(&[14.0, 8.5]));
+    }
+}

@@ -1,0 +1,187 @@
+//! Ink outlines a scene asks for: mesh-space lines (Kang, Kim and Yoon: silhouettes per view,
+//! boundaries, creases and non-manifold edges once per mesh) drawn as screen-space strips with
+//! hidden lines removed, and image-space edges (Borquez and Yepez: Sobel on the normal and depth
+//! buffers, with the rule and defaults of `edges::detect`).
+
+use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
+use crate::edges::outlines::LineKind;
+use crate::edges::DEFAULT_CREASE_ANGLE;
+use crate::error::{Error, Result};
+use crate::render::color::{check_unit, Srgb};
+
+/// Width of lines in output pixels when none is given.
+pub const DEFAULT_WIDTH: f32 = 1.5;
+/// Ink colour when none is given (sRGB).
+pub const DEFAULT_INK: Srgb = [0.0, 0.0, 0.0];
+/// Widest line, in output pixels.
+pub const MAX_WIDTH: f32 = 64.0;
+/// Hidden-line offset in pixel footprints (see `Outlines::depth_offset`).
+pub const DEFAULT_DEPTH_OFFSET: f32 = 1.0;
+
+/// The kinds of ink: the mesh-space kinds of `edges::outlines::LineKind`, then image-space edges.
+pub const IMAGE_KIND: usize = LineKind::COUNT;
+pub const INK_KINDS: usize = LineKind::COUNT + 1;
+
+/// How one kind of line is drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LineStyle {
+    pub color: Srgb,
+    /// Full width in output pixels (the same at every resolution and supersampling factor).
+    /// Image-space edges are one pixel wide whatever this says.
+    pub width: f32,
+}
+
+impl Default for LineStyle {
+    fn default() -> Self {
+        LineStyle { color: DEFAULT_INK, width: DEFAULT_WIDTH }
+    }
+}
+
+impl LineStyle {
+    pub fn validate(&self, arg: &str) -> Result<()> {
+        check_unit(&format!("{arg}.color"), &self.color)?;
+        if !(self.width > 0.0 && self.width <= MAX_WIDTH) {
+            return Err(Error::invalid(
+                format!("{arg}.width"),
+                format!("must be in (0, {MAX_WIDTH}] pixels, got {}", self.width),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Names of the ink kinds, in index order (the Python keywords and `RenderResult.lines` keys).
+pub fn kind_names() -> [&'static str; INK_KINDS] {
+    let mut names = ["image"; INK_KINDS];
+    for k in LineKind::ALL {
+        names[k as usize] = k.name();
+    }
+    names
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Outlines {
+    /// Draw mesh-space lines.
+    pub mesh: bool,
+    /// Draw image-space edges.
+    pub image: bool,
+    /// The style of each ink kind (indexed by `LineKind as usize`, then `IMAGE_KIND`); None
+    /// leaves that kind out.
+    pub styles: [Option<LineStyle>; INK_KINDS],
+    /// Dihedral angle in degrees above which an edge is a crease.
+    pub crease_angle: f64,
+    /// Merge vertices at equal positions before finding mesh-space lines, so that UV or normal
+    /// seams are not taken for boundaries.
+    pub weld: bool,
+    /// Image-space thresholds, as in `edges::detect`.
+    pub normal_threshold: f32,
+    pub depth_threshold: f32,
+    /// Hidden-line removal: a line point is visible when its depth is at most the largest
+    /// surface depth in the 3x3 output pixels around it plus this many pixel footprints (the
+    /// world size of one pixel at that depth); a silhouette or boundary with background among
+    /// those pixels is on the rim and visible (see `passes::lines::visibility`).
+    pub depth_offset: f32,
+}
+
+impl Default for Outlines {
+    fn default() -> Self {
+        Outlines::new(true, true)
+    }
+}
+
+impl Outlines {
+    /// Every kind in the default style.
+    pub fn new(mesh: bool, image: bool) -> Self {
+        Outlines {
+            mesh,
+            image,
+            styles: [Some(LineStyle::default()); INK_KINDS],
+            crease_angle: DEFAULT_CREASE_ANGLE,
+            weld: true,
+            normal_threshold: DEFAULT_NORMAL_THRESHOLD as f32,
+            depth_threshold: DEFAULT_DEPTH_THRESHOLD as f32,
+            depth_offset: DEFAULT_DEPTH_OFFSET,
+        }
+    }
+
+    /// `"mesh"`, `"image"` or `"both"`.
+    pub fn parse_kind(arg: &str, s: &str) -> Result<(bool, bool)> {
+        match s {
+            "mesh" => Ok((true, false)),
+            "image" => Ok((false, true)),
+            "both" => Ok((true, true)),
+            other => Err(Error::invalid(arg, format!("must be 'mesh', 'image' or 'both', got {other:?}"))),
+        }
+    }
+
+    pub fn kind_name(&self) -> &'static str {
+        match (self.mesh, self.image) {
+            (true, false) => "mesh",
+            (false, true) => "image",
+            _ => "both",
+        }
+    }
+
+    /// Whether mesh-space lines of some kind are drawn.
+    pub fn draws_mesh_lines(&self) -> bool {
+        self.mesh && self.styles[..LineKind::COUNT].iter().any(Option::is_some)
+    }
+
+    pub fn draws_image_edges(&self) -> bool {
+        self.image && self.styles[IMAGE_KIND].is_some()
+    }
+
+    pub fn validate(&self, arg: &str) -> Result<()> {
+        if !self.mesh && !self.image {
+            return Err(Error::invalid(format!("{arg}.kind"), "must draw mesh lines, image edges or both"));
+        }
+        for (style, name) in self.styles.iter().zip(kind_names()) {
+            if let Some(s) = style {
+                s.validate(&format!("{arg}.{name}"))?;
+            }
+        }
+        crate::edges::feature::check_crease_angle(self.crease_angle).map_err(|_| {
+            Error::invalid(
+                format!("{arg}.crease_angle"),
+                format!("must be in [0, 180] degrees, got {}", self.crease_angle),
+            )
+        })?;
+        for (name, t) in
+            [("normal_threshold", self.normal_threshold), ("depth_threshold", self.depth_threshold)]
+        {
+            if !(t.is_finite() && t >= 0.0) {
+                return Err(Error::invalid(
+                    format!("{arg}.{name}"),
+                    format!("must be finite and >= 0, got {t}"),
+                ));
+            }
+        }
+        if !(self.depth_offset.is_finite() && self.depth_offset >= 0.0) {
+            return Err(Error::invalid(
+                format!("{arg}.depth_offset"),
+                format!("must be finite and >= 0 pixels, got {}", self.depth_offset),
+            ));
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_those_of_the_edge_functions_and_checks_name_the_field() {
+        let o = Outlines::default();
+        assert!(o.validate("outlines").is_ok());
+        assert_eq!(o.crease_angle, DEFAULT_CREASE_ANGLE);
+        assert_eq!(o.normal_threshold as f64, DEFAULT_NORMAL_THRESHOLD);
+        let mut bad = o.clone();
+        bad.styles[LineKind::Silhouette as usize] = Some(LineStyle { color: [0.0; 3], width: f32::NAN });
+        assert!(bad.validate("outlines").unwrap_err().to_string().starts_with("outlines.silhouette.width"));
+        let mut bad = o.clone();
+        bad.depth_threshold = -1.0;
+        assert!(bad.validate("outlines").is_err());
+        assert_eq!(kind_names()[IMAGE_KIND], "image");
+    }
+}
