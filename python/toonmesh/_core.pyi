@@ -295,6 +295,22 @@ class Renderer:
         outputs: Optional[Any] = ...,
         outlines: Optional[Any] = ...,
     ) -> Dict[str, Any]: ...
+    def render_views(
+        self,
+        items: Any,
+        cameras: Any,
+        *,
+        width: int,
+        height: int,
+        msaa: int,
+        supersample: int,
+        material: Optional[Material] = ...,
+        lights: Optional[Any] = ...,
+        ambient: Optional[_Color] = ...,
+        background: Optional[_Color] = ...,
+        outputs: Optional[Any] = ...,
+        outlines: Optional[Any] = ...,
+    ) -> Tuple[Dict[str, Any], List[Dict[str, Any]]]: ...
 
 def gpu_info(backend: Optional[str] = ...) -> Dict[str, Any]: ...
 def encode_png_rgba(color: Any) -> bytes: ...

@@ -9,9 +9,10 @@ README "Rendering" for the conventions of every output.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import threading
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Dict, Iterator, List, Optional, Sequence
 
 import numpy as np
 
@@ -271,6 +272,72 @@ class Renderer:
         ``supersample`` times larger and averages) trade time for smoother edges. ``outlines``:
         None, ``"mesh"``, ``"image"``, ``"both"`` or an :class:`Outlines` (ink lines).
         """
+        with self._scene(meshes, transform) as specs:
+            raw = self._engine.render(
+                specs,
+                material=material,
+                camera=camera,
+                lights=lights,
+                ambient=ambient,
+                background=background,
+                width=width,
+                height=height,
+                outputs=outputs,
+                msaa=msaa,
+                supersample=supersample,
+                outlines=outlines,
+            )
+        return RenderResult(raw, self.backend, _outlines_of(outlines))
+
+    def render_many(
+        self,
+        meshes: Any,
+        cameras: Sequence[Camera],
+        *,
+        material: Optional[Material] = None,
+        transform: Optional[Any] = None,
+        lights: Any = None,
+        ambient: Any = None,
+        background: Any = None,
+        width: int = 512,
+        height: int = 512,
+        outputs: Any = ("color",),
+        msaa: int = 1,
+        supersample: int = 1,
+        outlines: Any = None,
+    ) -> "RenderStack":
+        """Renders the same scene from each of ``cameras`` (a turntable, a dataset sweep),
+        keeping a few frames in flight so that the GPU draws one view while the last is read
+        back. Returns a :class:`RenderStack`: the views' images stacked, (K, H, W, 4) colour and
+        so on, and one :class:`RenderResult` a view (the same bits as rendering each view alone).
+        Other arguments as in :meth:`render`.
+        """
+        with self._scene(meshes, transform) as specs:
+            images, reports = self._engine.render_views(
+                specs,
+                cameras,
+                material=material,
+                lights=lights,
+                ambient=ambient,
+                background=background,
+                width=width,
+                height=height,
+                outputs=outputs,
+                msaa=msaa,
+                supersample=supersample,
+                outlines=outlines,
+            )
+        kept = _outlines_of(outlines)
+        results = []
+        for i, raw in enumerate(reports):
+            raw.update({k: None if images[k] is None else images[k][i] for k in ("color", "normal", "depth", "outline")})
+            results.append(RenderResult(raw, self.backend, kept))
+        return RenderStack(images, results)
+
+    @contextlib.contextmanager
+    def _scene(self, meshes: Any, transform: Optional[Any]) -> Iterator[List[Any]]:
+        """The scene's items as the core takes them: meshes not yet on the device are uploaded
+        for the render and removed after it."""
         items = [] if meshes is None else (list(meshes) if isinstance(meshes, (list, tuple)) else [meshes])
         uploaded: List[MeshHandle] = []
         try:
@@ -288,24 +355,33 @@ class Renderer:
                     raise ValueError(f"meshes[{i}]: the MeshHandle belongs to another Renderer")
                 t = item.transform if item.transform is not None else transform
                 specs.append((handle.id, item.material, None if t is None else np.asarray(t, dtype=np.float64)))
-            raw = self._engine.render(
-                specs,
-                material=material,
-                camera=camera,
-                lights=lights,
-                ambient=ambient,
-                background=background,
-                width=width,
-                height=height,
-                outputs=outputs,
-                msaa=msaa,
-                supersample=supersample,
-                outlines=outlines,
-            )
+            yield specs
         finally:
             for h in uploaded:
                 self._engine.remove_mesh(h.id)
-        return RenderResult(raw, self.backend, _outlines_of(outlines))
+
+
+class RenderStack(Sequence[RenderResult]):
+    """The views of :meth:`Renderer.render_many`: a sequence of :class:`RenderResult`, one a
+    camera, whose images are slices of the stacked arrays ``color`` (K, H, W, 4) uint8,
+    ``normal`` (K, H, W, 3) float32, ``depth`` (K, H, W) float32 and ``outline`` (K, H, W)
+    float32 (None for outputs not asked for)."""
+
+    def __init__(self, images: Dict[str, Any], results: List[RenderResult]):
+        self.color: Optional[np.ndarray] = images["color"]
+        self.normal: Optional[np.ndarray] = images["normal"]
+        self.depth: Optional[np.ndarray] = images["depth"]
+        self.outline: Optional[np.ndarray] = images["outline"]
+        self._results = results
+
+    def __len__(self) -> int:
+        return len(self._results)
+
+    def __getitem__(self, i: Any) -> Any:
+        return self._results[i]
+
+    def __repr__(self) -> str:
+        return f"RenderStack({len(self)} views)"
 
 
 _renderers: Dict[Optional[str], Renderer] = {}
@@ -418,6 +494,7 @@ __all__ = [
     "MeshHandle",
     "Outlines",
     "RenderResult",
+    "RenderStack",
     "Renderer",
     "gpu_info",
     "kang_table",

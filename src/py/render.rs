@@ -231,10 +231,130 @@ impl<'py> Images<'py> {
     }
 }
 
+/// The images of a stream of views, stacked: (K, H, W, ...) arrays, one slice a view.
+struct Stacks<'py> {
+    color: Option<Bound<'py, numpy::PyArray4<u8>>>,
+    normal: Option<Bound<'py, numpy::PyArray4<f32>>>,
+    depth: Option<Bound<'py, PyArray3<f32>>>,
+    outline: Option<Bound<'py, PyArray3<f32>>>,
+}
+
+impl<'py> Stacks<'py> {
+    fn allocate(py: Python<'py>, frame: &FrameSpec, k: usize) -> Self {
+        let (h, w) = (frame.height as usize, frame.width as usize);
+        let o = frame.outputs;
+        // SAFETY (all four): every element is written by the render before Python sees it.
+        Stacks {
+            color: o.color.then(|| unsafe { numpy::PyArray4::<u8>::new(py, [k, h, w, 4], false) }),
+            normal: o.normal.then(|| unsafe { numpy::PyArray4::<f32>::new(py, [k, h, w, 3], false) }),
+            depth: o.depth.then(|| unsafe { PyArray3::<f32>::new(py, [k, h, w], false) }),
+            outline: o.outline.then(|| unsafe { PyArray3::<f32>::new(py, [k, h, w], false) }),
+        }
+    }
+
+    /// One set of buffers a view.
+    fn buffers(&self, k: usize) -> Vec<OutputBuffers<'_>> {
+        fn split<T>(s: Option<&mut [T]>, k: usize) -> Vec<Option<&mut [T]>> {
+            match s {
+                Some(s) if k > 0 => {
+                    let n = s.len() / k;
+                    s.chunks_mut(n.max(1)).map(Some).collect()
+                }
+                _ => (0..k).map(|_| None).collect(),
+            }
+        }
+        // SAFETY: the arrays were just made here, are C-contiguous and shared with no one.
+        let (c, n, d, o) = unsafe {
+            (
+                split(self.color.as_ref().map(|a| a.as_slice_mut().expect("contiguous")), k),
+                split(self.normal.as_ref().map(|a| a.as_slice_mut().expect("contiguous")), k),
+                split(self.depth.as_ref().map(|a| a.as_slice_mut().expect("contiguous")), k),
+                split(self.outline.as_ref().map(|a| a.as_slice_mut().expect("contiguous")), k),
+            )
+        };
+        c.into_iter()
+            .zip(n)
+            .zip(d)
+            .zip(o)
+            .map(|(((color, normal), depth), outline)| OutputBuffers { color, normal, depth, outline })
+            .collect()
+    }
+}
+
 /// The device-side half of `toonmesh.Renderer` (see python/toonmesh/_render.py).
 #[pyclass(name = "Renderer", module = "toonmesh._core", frozen)]
 struct PyRenderer {
     inner: Renderer,
+}
+
+impl PyRenderer {
+    /// The scene and frame of `render`'s arguments, checked.
+    #[allow(clippy::too_many_arguments)]
+    fn scene_and_frame(
+        &self,
+        items: &Bound<'_, PyAny>,
+        width: &Bound<'_, PyAny>,
+        height: &Bound<'_, PyAny>,
+        msaa: &Bound<'_, PyAny>,
+        supersample: &Bound<'_, PyAny>,
+        material: Obj<'_, '_>,
+        camera: Obj<'_, '_>,
+        lights: Obj<'_, '_>,
+        ambient: Obj<'_, '_>,
+        background: Obj<'_, '_>,
+        outputs: Obj<'_, '_>,
+        outlines: Obj<'_, '_>,
+    ) -> Result<(Scene, FrameSpec)> {
+        let default_material = match material {
+            None => Default::default(),
+            Some(m) => material_arg("material", m)?,
+        };
+        let mut scene_items = Vec::new();
+        let list = items.try_iter().map_err(|_| Error::wrong_type("meshes", "expected a list of meshes"))?;
+        for (i, item) in list.enumerate() {
+            let arg = format!("meshes[{i}]");
+            let item = item.map_err(|e| Error::invalid(&arg, e.to_string()))?;
+            let (id, mat, tf): (u64, Bound<'_, PyAny>, Bound<'_, PyAny>) = item
+                .extract()
+                .map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform)"))?;
+            scene_items.push(SceneItem {
+                mesh: id,
+                material: if mat.is_none() {
+                    default_material.clone()
+                } else {
+                    material_arg(&format!("{arg}.material"), &mat)?
+                },
+                transform: transform(&format!("{arg}.transform"), &tf)?,
+            });
+        }
+        let camera = match camera {
+            None => Default::default(),
+            Some(c) => c.cast::<PyCamera>().map(|c| c.get().inner).map_err(|_| {
+                Error::wrong_type("camera", format!("expected a toonmesh.Camera, got {}", type_name(c)))
+            })?,
+        };
+        let background = match background {
+            None => [1.0f32; 4],
+            Some(b) => rgba("background", b)?.map(|c| c as f32),
+        };
+        let scene = Scene {
+            items: scene_items,
+            camera,
+            lights: lights_arg(lights)?,
+            ambient: ambient.map(|a| rgb("ambient", a)).transpose()?.unwrap_or([1.0; 3]),
+            outlines: outlines_arg(outlines)?,
+        };
+        let frame = FrameSpec {
+            width: pixels("width", width)?,
+            height: pixels("height", height)?,
+            outputs: self::outputs(outputs)?,
+            msaa: small("msaa", msaa)?,
+            supersample: small("supersample", supersample)?,
+            background,
+        };
+        self.inner.check(&scene, &frame)?;
+        Ok((scene, frame))
+    }
 }
 
 #[pymethods]
@@ -307,64 +427,101 @@ impl PyRenderer {
         outputs: Obj<'_, 'py>,
         outlines: Obj<'_, 'py>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let (scene, frame) = (|| -> Result<(Scene, FrameSpec)> {
-            let default_material = match material {
-                None => Default::default(),
-                Some(m) => material_arg("material", m)?,
-            };
-            let mut scene_items = Vec::new();
-            let list =
-                items.try_iter().map_err(|_| Error::wrong_type("meshes", "expected a list of meshes"))?;
-            for (i, item) in list.enumerate() {
-                let arg = format!("meshes[{i}]");
-                let item = item.map_err(|e| Error::invalid(&arg, e.to_string()))?;
-                let (id, mat, tf): (u64, Bound<'_, PyAny>, Bound<'_, PyAny>) = item
-                    .extract()
-                    .map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform)"))?;
-                scene_items.push(SceneItem {
-                    mesh: id,
-                    material: if mat.is_none() {
-                        default_material.clone()
-                    } else {
-                        material_arg(&format!("{arg}.material"), &mat)?
-                    },
-                    transform: transform(&format!("{arg}.transform"), &tf)?,
-                });
-            }
-            let camera = match camera {
-                None => Default::default(),
-                Some(c) => c.cast::<PyCamera>().map(|c| c.get().inner).map_err(|_| {
-                    Error::wrong_type("camera", format!("expected a toonmesh.Camera, got {}", type_name(c)))
-                })?,
-            };
-            let background = match background {
-                None => [1.0f32; 4],
-                Some(b) => rgba("background", b)?.map(|c| c as f32),
-            };
-            let scene = Scene {
-                items: scene_items,
+        let (scene, frame) = self
+            .scene_and_frame(
+                items,
+                width,
+                height,
+                msaa,
+                supersample,
+                material,
                 camera,
-                lights: lights_arg(lights)?,
-                ambient: ambient.map(|a| rgb("ambient", a)).transpose()?.unwrap_or([1.0; 3]),
-                outlines: outlines_arg(outlines)?,
-            };
-            let frame = FrameSpec {
-                width: pixels("width", width)?,
-                height: pixels("height", height)?,
-                outputs: self::outputs(outputs)?,
-                msaa: small("msaa", msaa)?,
-                supersample: small("supersample", supersample)?,
+                lights,
+                ambient,
                 background,
-            };
-            self.inner.check(&scene, &frame)?;
-            Ok((scene, frame))
-        })()
-        .map_err(to_py)?;
+                outputs,
+                outlines,
+            )
+            .map_err(to_py)?;
         let images = Images::allocate(py, &frame);
         let buffers = images.buffers();
         let inner = &self.inner;
         let report = without_gil(py, || inner.render_into(&scene, &frame, buffers))?;
         images.into_dict(py, &frame, report)
+    }
+
+    /// The same scene from each of `cameras`, frames in flight: (stacked images, reports).
+    #[pyo3(signature = (items, cameras, *, width, height, msaa, supersample, material = None,
+                        lights = None, ambient = None, background = None, outputs = None, outlines = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn render_views<'py>(
+        &self,
+        py: Python<'py>,
+        items: &Bound<'py, PyAny>,
+        cameras: &Bound<'py, PyAny>,
+        width: &Bound<'py, PyAny>,
+        height: &Bound<'py, PyAny>,
+        msaa: &Bound<'py, PyAny>,
+        supersample: &Bound<'py, PyAny>,
+        material: Obj<'_, 'py>,
+        lights: Obj<'_, 'py>,
+        ambient: Obj<'_, 'py>,
+        background: Obj<'_, 'py>,
+        outputs: Obj<'_, 'py>,
+        outlines: Obj<'_, 'py>,
+    ) -> PyResult<(Bound<'py, PyDict>, Vec<Bound<'py, PyDict>>)> {
+        let cams = (|| -> Result<Vec<crate::render::scene::camera::Camera>> {
+            let list = cameras.try_iter().map_err(|_| {
+                Error::wrong_type(
+                    "cameras",
+                    format!("expected a list of toonmesh.Camera, got {}", type_name(cameras)),
+                )
+            })?;
+            list.enumerate()
+                .map(|(i, c)| {
+                    let c = c.map_err(|e| Error::invalid("cameras", e.to_string()))?;
+                    c.cast::<PyCamera>().map(|c| c.get().inner).map_err(|_| {
+                        Error::wrong_type(
+                            format!("cameras[{i}]"),
+                            format!("expected a toonmesh.Camera, got {}", type_name(&c)),
+                        )
+                    })
+                })
+                .collect()
+        })()
+        .map_err(to_py)?;
+        let (scene, frame) = self
+            .scene_and_frame(
+                items,
+                width,
+                height,
+                msaa,
+                supersample,
+                material,
+                None,
+                lights,
+                ambient,
+                background,
+                outputs,
+                outlines,
+            )
+            .map_err(to_py)?;
+        let stacks = Stacks::allocate(py, &frame, cams.len());
+        let buffers = stacks.buffers(cams.len());
+        let inner = &self.inner;
+        let reports = without_gil(py, || inner.render_views(&scene, &cams, &frame, buffers, || Ok(())))?;
+        let images = PyDict::new(py);
+        images.set_item("color", stacks.color)?;
+        images.set_item("normal", stacks.normal)?;
+        images.set_item("depth", stacks.depth)?;
+        images.set_item("outline", stacks.outline)?;
+        let reports = reports
+            .into_iter()
+            .map(|r| {
+                Images { color: None, normal: None, depth: None, outline: None }.into_dict(py, &frame, r)
+            })
+            .collect::<PyResult<_>>()?;
+        Ok((images, reports))
     }
 }
 

@@ -25,6 +25,7 @@ use super::graph::{DrawItem, FrameCtx, LineDraw};
 use super::mesh_lines::MeshLines;
 use super::passes::lines::visibility::{visible_runs, DepthImage, Projector, Visibility};
 use super::plan::{plan, Features, Plan, SILHOUETTES, VISIBLE_LINES};
+use super::scene::camera::Camera;
 use super::scene::camera::ResolvedCamera;
 use super::scene::outlines::Outlines;
 use super::scene::{FrameSpec, MeshId, Scene, SceneItem};
@@ -243,8 +244,59 @@ impl Renderer {
         frame: &FrameSpec,
         out: OutputBuffers<'_>,
     ) -> Result<FrameReport> {
+        let f = self.submit(scene.clone(), *frame)?;
+        self.finish(f, out)
+    }
+
+    /// Renders `scene` once from each of `cameras` into `outs` (one set of buffers a view),
+    /// keeping `IN_FLIGHT` frames submitted at once so that the GPU draws one while the host
+    /// reads the last back. Gives the same bits as rendering each view alone. `interrupted`
+    /// is asked between frames and stops the work with its error.
+    pub fn render_views(
+        &self,
+        scene: &Scene,
+        cameras: &[Camera],
+        frame: &FrameSpec,
+        outs: Vec<OutputBuffers<'_>>,
+        interrupted: impl Fn() -> Result<()>,
+    ) -> Result<Vec<FrameReport>> {
+        if outs.len() != cameras.len() {
+            return Err(Error::Internal("render_views: one set of output buffers a camera".into()));
+        }
+        let mut in_flight: std::collections::VecDeque<InFlight> = Default::default();
+        let mut outs = outs.into_iter();
+        let mut reports = Vec::with_capacity(cameras.len());
+        let mut run = || -> Result<()> {
+            for camera in cameras {
+                interrupted()?;
+                let view = Scene { camera: *camera, ..scene.clone() };
+                in_flight.push_back(self.submit(view, *frame)?);
+                if in_flight.len() >= IN_FLIGHT {
+                    let f = in_flight.pop_front().expect("just pushed");
+                    reports.push(self.finish(f, outs.next().expect("one a camera"))?);
+                }
+            }
+            while let Some(f) = in_flight.pop_front() {
+                reports.push(self.finish(f, outs.next().expect("one a camera"))?);
+            }
+            Ok(())
+        };
+        let result = run();
+        // frames left in flight by an error: wait for them, then free their resources
+        for f in in_flight {
+            let _ = self.ctx.wait(f.submission.clone(), "an abandoned frame");
+            if let Some(staging) = &f.res.staging {
+                staging.unmap();
+            }
+            self.ctx.frames.give_back(f.res);
+        }
+        result.map(|_| reports)
+    }
+
+    /// Prepares, records and submits one frame, and asks for its readback to be mapped.
+    fn submit(&self, scene: Scene, frame: FrameSpec) -> Result<InFlight> {
         let start = Instant::now();
-        let p = self.prepare(scene, frame)?;
+        let p = self.prepare(&scene, &frame)?;
         let mut report = FrameReport {
             passes: p.plan.names(),
             view: rows(p.cam.view),
@@ -256,57 +308,72 @@ impl Renderer {
         if p.plan.silhouettes {
             report.timings.push((SILHOUETTES, p.silhouette_seconds));
         }
-        let gpu_part = self.run_frame(scene, frame, &p, out)?;
-        report.timings.extend(gpu_part.timings);
-        report.gpu_timed = gpu_part.gpu_timed;
+        let ctx = &*self.ctx;
+        let device = &ctx.device;
+        let key = p.plan.resource_key(ctx.info.timestamps);
+        let mut res = ctx.frames.take(ctx, &ctx.pipelines.layouts, &key);
+        // Error scopes are per thread, so concurrent renders each see only their own errors.
+        let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let recorded = self.record_and_submit(&scene, &frame, &p, &mut res);
+        let memory_error = pollster::block_on(memory.pop());
+        let validation_error = pollster::block_on(validation.pop());
+        let error = match (memory_error, validation_error, &recorded) {
+            (Some(e), _, _) => Some(Error::Gpu(format!("the GPU ran out of memory: {e}"))),
+            (_, Some(e), _) => Some(Error::Gpu(format!("the GPU rejected the work: {e}"))),
+            (_, _, Err(e)) => Some(e.clone()),
+            _ => None,
+        };
+        if let Some(e) = error {
+            if let Ok((submission, _)) = recorded {
+                let _ = ctx.wait(submission, "a failed frame");
+            }
+            ctx.frames.give_back(res);
+            return Err(e);
+        }
+        let (submission, timed) = recorded.expect("no error");
+        let mapped = res.staging.as_ref().map(|staging| {
+            let (tx, rx) = std::sync::mpsc::channel();
+            staging.map_async(wgpu::MapMode::Read, .., move |r| {
+                let _ = tx.send(r);
+            });
+            rx
+        });
+        Ok(InFlight { scene, frame, prepared: p, res, submission, mapped, timed, start, report })
+    }
+
+    /// Waits for a submitted frame, copies its readbacks into `out`, and finishes its report.
+    fn finish(&self, f: InFlight, out: OutputBuffers<'_>) -> Result<FrameReport> {
+        let InFlight { scene, frame, prepared: p, res, submission, mapped, timed, start, mut report } = f;
+        let t = Instant::now();
+        let read = self.read_back(&frame, &p, &res, submission, mapped, &timed, out);
+        if let Some(staging) = &res.staging {
+            staging.unmap();
+        }
+        self.ctx.frames.give_back(res);
+        let part = read?;
+        report.timings.extend(part.timings);
+        report.timings.push(("readback", t.elapsed().as_secs_f64()));
+        report.gpu_timed = part.gpu_timed;
         if p.plan.visible_lines {
             let t = Instant::now();
-            let depth = gpu_part.line_depth.as_deref().expect("the plan reads depth back for visible lines");
-            report.lines = Some(self.visible_lines(scene, frame, &p, depth));
+            let depth = part.line_depth.as_deref().expect("the plan reads depth back for visible lines");
+            report.lines = Some(self.visible_lines(&scene, &frame, &p, depth));
             report.timings.push((VISIBLE_LINES, t.elapsed().as_secs_f64()));
         }
         report.timings.push(("frame", start.elapsed().as_secs_f64()));
         Ok(report)
     }
 
-    /// Records, submits and reads back one frame.
-    fn run_frame(
-        &self,
-        scene: &Scene,
-        frame: &FrameSpec,
-        p: &Prepared,
-        out: OutputBuffers<'_>,
-    ) -> Result<GpuPart> {
-        let ctx = &*self.ctx;
-        let device = &ctx.device;
-        let timestamps = ctx.info.timestamps;
-        let key = p.plan.resource_key(timestamps);
-        let layouts = &ctx.pipelines.layouts;
-        let mut res = ctx.frames.take(ctx, layouts, &key);
-        // Error scopes are per thread, so concurrent renders each see only their own errors.
-        let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-        let result = self.record_and_read(scene, frame, p, &mut res, out);
-        let memory_error = pollster::block_on(memory.pop());
-        let validation_error = pollster::block_on(validation.pop());
-        ctx.frames.give_back(res);
-        if let Some(e) = memory_error {
-            return Err(Error::Gpu(format!("the GPU ran out of memory: {e}")));
-        }
-        if let Some(e) = validation_error {
-            return Err(Error::Gpu(format!("the GPU rejected the work: {e}")));
-        }
-        result
-    }
-
-    fn record_and_read(
+    /// Records the frame's passes into one command encoder and submits it. Returns the
+    /// submission and the passes timed on the GPU, in order.
+    fn record_and_submit(
         &self,
         scene: &Scene,
         frame: &FrameSpec,
         p: &Prepared,
         res: &mut FrameResources,
-        out: OutputBuffers<'_>,
-    ) -> Result<GpuPart> {
+    ) -> Result<(wgpu::SubmissionIndex, Vec<&'static str>)> {
         let (plan, cam, records, views) = (&p.plan, &p.cam, &p.records, &p.views);
         let ctx = &*self.ctx;
         let layouts = &ctx.pipelines.layouts;
@@ -383,67 +450,71 @@ impl Renderer {
             };
             pass.encode(&f, &mut encoder, timing)?;
         }
-        let staging = f.res.staging.as_ref();
-        if let (Some((set, resolve)), Some(staging)) = (&f.res.queries, staging) {
+        if let (Some((set, resolve)), Some(staging)) = (&f.res.queries, &f.res.staging) {
             let n = 2 * timed.len() as u32;
             if n > 0 {
                 encoder.resolve_query_set(set, 0..n, resolve, 0);
                 encoder.copy_buffer_to_buffer(resolve, 0, staging, plan.timestamp_offset(), n as u64 * 8);
             }
         }
-        let submission = ctx.queue.submit([encoder.finish()]);
-        let t = Instant::now();
+        Ok((ctx.queue.submit([encoder.finish()]), timed))
+    }
+
+    /// Waits for the frame, then copies its mapped readbacks into `out`.
+    #[allow(clippy::too_many_arguments)]
+    fn read_back(
+        &self,
+        frame: &FrameSpec,
+        p: &Prepared,
+        res: &FrameResources,
+        submission: wgpu::SubmissionIndex,
+        mapped: Option<MapReceiver>,
+        timed: &[&'static str],
+        out: OutputBuffers<'_>,
+    ) -> Result<GpuPart> {
+        let ctx = &*self.ctx;
+        let (plan, cam) = (&p.plan, &p.cam);
         let mut part = GpuPart::default();
-        let Some(staging) = staging else {
-            ctx.wait(submission, "the frame")?;
+        ctx.wait(submission, "the frame")?;
+        let (Some(staging), Some(rx)) = (&res.staging, mapped) else {
             return Ok(part);
         };
-        let (tx, rx) = std::sync::mpsc::channel();
-        staging.map_async(wgpu::MapMode::Read, .., move |r| {
-            let _ = tx.send(r);
-        });
-        ctx.wait(submission, "the frame")?;
         rx.recv()
             .map_err(|_| Error::Gpu("the readback was dropped".into()))?
             .map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
-        {
-            let mapped = staging
-                .get_mapped_range(..)
-                .map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
-            let scale = cam.scale as f32;
-            crate::parallel::install(|| {
-                if let (Some(r), Some(o)) = (plan.color, out.color) {
-                    r.copy_bytes(&mapped, o);
-                }
-                if let Some(r) = plan.geometry {
-                    let layout = plan.shape.geometry.expect("a geometry readback has a layout");
-                    if let Some(o) = out.normal {
-                        r.copy_words(&mapped, 0, 3, 1.0, o);
-                    }
-                    if let Some(o) = out.depth {
-                        r.copy_words(&mapped, layout.depth_component(), 1, scale, o);
-                    }
-                    if plan.visible_lines {
-                        let mut d = vec![0f32; frame.width as usize * frame.height as usize];
-                        r.copy_words(&mapped, layout.depth_component(), 1, 1.0, &mut d);
-                        part.line_depth = Some(d);
-                    }
-                }
-                if let (Some(r), Some(o)) = (plan.outline, out.outline) {
-                    r.copy_unorm8(&mapped, o);
-                }
-            });
-            if !timed.is_empty() {
-                let at = plan.timestamp_offset() as usize;
-                let ticks: Vec<u64> = mapped[at..at + 16 * timed.len()]
-                    .chunks_exact(8)
-                    .map(|b| u64::from_le_bytes(b.try_into().expect("8 bytes")))
-                    .collect();
-                part.set_gpu_times(&timed, &ticks, ctx.queue.get_timestamp_period() as f64);
+        let mapped =
+            staging.get_mapped_range(..).map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
+        let scale = cam.scale as f32;
+        crate::parallel::install(|| {
+            if let (Some(r), Some(o)) = (plan.color, out.color) {
+                r.copy_bytes(&mapped, o);
             }
+            if let Some(r) = plan.geometry {
+                let layout = plan.shape.geometry.expect("a geometry readback has a layout");
+                if let Some(o) = out.normal {
+                    r.copy_words(&mapped, 0, 3, 1.0, o);
+                }
+                if let Some(o) = out.depth {
+                    r.copy_words(&mapped, layout.depth_component(), 1, scale, o);
+                }
+                if plan.visible_lines {
+                    let mut d = vec![0f32; frame.width as usize * frame.height as usize];
+                    r.copy_words(&mapped, layout.depth_component(), 1, 1.0, &mut d);
+                    part.line_depth = Some(d);
+                }
+            }
+            if let (Some(r), Some(o)) = (plan.outline, out.outline) {
+                r.copy_unorm8(&mapped, o);
+            }
+        });
+        if !timed.is_empty() {
+            let at = plan.timestamp_offset() as usize;
+            let ticks: Vec<u64> = mapped[at..at + 16 * timed.len()]
+                .chunks_exact(8)
+                .map(|b| u64::from_le_bytes(b.try_into().expect("8 bytes")))
+                .collect();
+            part.set_gpu_times(timed, &ticks, ctx.queue.get_timestamp_period() as f64);
         }
-        staging.unmap();
-        part.timings.push(("readback", t.elapsed().as_secs_f64()));
         Ok(part)
     }
 
@@ -486,6 +557,24 @@ impl Renderer {
         }
         out
     }
+}
+
+/// Frames a stream of views keeps submitted at once.
+pub const IN_FLIGHT: usize = 3;
+
+type MapReceiver = std::sync::mpsc::Receiver<std::result::Result<(), wgpu::BufferAsyncError>>;
+
+/// A frame submitted to the GPU whose readback is not yet copied out.
+struct InFlight {
+    scene: Scene,
+    frame: FrameSpec,
+    prepared: Prepared,
+    res: FrameResources,
+    submission: wgpu::SubmissionIndex,
+    mapped: Option<MapReceiver>,
+    timed: Vec<&'static str>,
+    start: Instant,
+    report: FrameReport,
 }
 
 /// A frame's host-side preparation.
@@ -544,17 +633,17 @@ impl GpuPart {
     }
 }
 
-/// The view of `cam` in a mesh's stored coordinates (for its silhouette test).
+/// The view of `cam` in a mesh's stored coordinates (for its silhouette test). The mesh's
+/// placement is undone by subtracting and dividing, not by inverting a matrix whose
+/// determinant may be out of float64's range.
 fn stored_view(cam: &ResolvedCamera, model: DMat4, mesh: &GpuMesh) -> View {
-    let to_stored = (model
-        * DMat4::from_translation(mesh.placement.origin.into())
-        * DMat4::from_scale(DVec3::splat(mesh.placement.scale)))
-    .inverse();
-    let world_from_view = cam.view.inverse();
+    let to_model = model.inverse();
+    let p = mesh.placement;
     if cam.orthographic {
-        let dir = world_from_view.transform_vector3(DVec3::NEG_Z);
-        View::Direction(to_stored.transform_vector3(dir).to_array())
+        let d = to_model.transform_vector3(cam.forward);
+        View::Direction(super::scene::camera::direction_of(d).to_array())
     } else {
-        View::Eye(to_stored.transform_point3(world_from_view.transform_point3(DVec3::ZERO)).to_array())
+        let e = (to_model.transform_point3(cam.eye) - DVec3::from_array(p.origin)) / p.scale;
+        View::Eye(e.to_array())
     }
 }

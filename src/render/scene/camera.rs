@@ -67,6 +67,9 @@ pub struct ResolvedCamera {
     pub near: f64,
     pub far: f64,
     pub orthographic: bool,
+    /// The eye and the unit direction it looks in, in world coordinates.
+    pub eye: DVec3,
+    pub forward: DVec3,
     /// The projection's own parameters: vertical field of view (radians) or view height, and
     /// the aspect ratio (width / height).
     pub fov_or_height: f64,
@@ -93,6 +96,27 @@ impl ResolvedCamera {
         } else {
             perspective(self.fov_or_height, self.aspect, n, f)
         }
+    }
+}
+
+/// `v` scaled to unit length without squaring its components, so that vectors anywhere in
+/// float64's range (1e-300 or 1e300 long) keep their direction. NaN for a zero vector.
+pub fn direction_of(v: DVec3) -> DVec3 {
+    let m = v.abs().max_element();
+    if !(m > 0.0 && m.is_finite()) {
+        return DVec3::NAN;
+    }
+    let w = v / m;
+    w / w.length()
+}
+
+/// The length of `v` without overflow or underflow.
+pub fn length_of(v: DVec3) -> f64 {
+    let m = v.abs().max_element();
+    if m > 0.0 && m.is_finite() {
+        m * (v / m).length()
+    } else {
+        m
     }
 }
 
@@ -126,11 +150,10 @@ fn vec3(arg: &str, v: [f64; 3]) -> Result<DVec3> {
 
 fn unit(arg: &str, v: [f64; 3]) -> Result<DVec3> {
     let v = vec3(arg, v)?;
-    let l = v.length();
-    if !(l > 1e-300) {
+    if v == DVec3::ZERO {
         return Err(Error::invalid(arg, "must not be the zero vector"));
     }
-    Ok(v / l)
+    Ok(direction_of(v))
 }
 
 impl Camera {
@@ -163,11 +186,14 @@ impl Camera {
             Placement::LookAt { eye, target, up } => {
                 let (e, t) = (vec3("camera.eye", eye)?, vec3("camera.target", target)?);
                 let forward = t - e;
-                if !(forward.length() > 0.0) {
+                if forward == DVec3::ZERO {
                     return Err(Error::invalid("camera.target", "must differ from camera.eye"));
                 }
+                if !forward.is_finite() {
+                    return Err(Error::invalid("camera.target", "is too far from camera.eye for float64"));
+                }
                 let u = unit("camera.up", up)?;
-                if forward.normalize().cross(u).length() < 1e-9 {
+                if direction_of(forward).cross(u).length() < 1e-9 {
                     return Err(Error::invalid("camera.up", "must not be parallel to the viewing direction"));
                 }
             }
@@ -215,7 +241,7 @@ impl Camera {
                 (DVec3::from_array(eye), DVec3::from_array(target), DVec3::from_array(up), self.projection)
             }
             Placement::Fit { direction, up, margin } => {
-                let dir = DVec3::from_array(direction).normalize();
+                let dir = direction_of(DVec3::from_array(direction));
                 let r = scene.radius * margin;
                 match self.projection {
                     Projection::Perspective { fov_y_deg } => {
@@ -235,7 +261,7 @@ impl Camera {
         };
         let view = look_at(eye, target, up);
         // clip distances that enclose the scene's sphere
-        let forward = (target - eye).normalize();
+        let forward = direction_of(target - eye);
         let d = (scene.center - eye).dot(forward);
         let r = scene.radius.max(1e-300);
         let orthographic = matches!(projection, Projection::Orthographic { .. });
@@ -262,7 +288,7 @@ impl Camera {
             return Err(Error::invalid("camera", "the camera gives a non-finite view or projection matrix"));
         }
         let scale = power_of_two_above(scene.radius);
-        Ok(ResolvedCamera { view, proj, near, far, orthographic, fov_or_height, aspect, scale })
+        Ok(ResolvedCamera { view, proj, near, far, orthographic, eye, forward, fov_or_height, aspect, scale })
     }
 }
 
@@ -272,8 +298,8 @@ fn from_rows(r: [[f64; 4]; 4]) -> DMat4 {
 
 /// World -> view: the eye at the origin looking down -z, `up` projected to +y.
 pub fn look_at(eye: DVec3, target: DVec3, up: DVec3) -> DMat4 {
-    let f = (target - eye).normalize();
-    let s = f.cross(up).normalize();
+    let f = direction_of(target - eye);
+    let s = direction_of(f.cross(direction_of(up)));
     let u = s.cross(f);
     from_rows([
         [s.x, s.y, s.z, -s.dot(eye)],

@@ -256,7 +256,7 @@ impl Scene {
             // frame; any larger scene keeps its own size, however small
             Some(s) if s.center.is_finite() && s.radius.is_finite() => Sphere {
                 center: s.center,
-                radius: s.radius.max(4.0 * f64::EPSILON * s.center.length()).max(f64::MIN_POSITIVE),
+                radius: s.radius.max(4.0 * f64::EPSILON * camera::length_of(s.center)).max(f64::MIN_POSITIVE),
             },
             _ => Sphere { center: DVec3::ZERO, radius: 1.0 },
         })
@@ -282,7 +282,7 @@ fn largest_stretch(m: DMat3) -> f64 {
 
 /// The smallest sphere containing two spheres.
 fn merge(a: Sphere, b: Sphere) -> Sphere {
-    let d = (b.center - a.center).length();
+    let d = camera::length_of(b.center - a.center);
     if d + b.radius <= a.radius {
         return a;
     }
