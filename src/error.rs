@@ -30,6 +30,11 @@ pub enum Error {
     #[error("{0}")]
     Gpu(String),
 
+    /// The caller asked the work to stop (Ctrl-C) and it stopped between two steps.
+    /// Becomes the pending `KeyboardInterrupt` (or whatever the signal handler raised).
+    #[error("interrupted")]
+    Interrupted,
+
     /// A bug in toonmesh (for example a caught panic). Becomes `RuntimeError`.
     #[error("internal error: {0}")]
     Internal(String),

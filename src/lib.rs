@@ -3,6 +3,7 @@
 //! Everything except `py` is a pure-Rust core that knows nothing of Python; `py` is the PyO3
 //! glue, and this file only registers it.
 
+pub mod cancel;
 pub mod edges;
 pub mod error;
 pub mod huge_pages;

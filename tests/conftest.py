@@ -38,3 +38,24 @@ def diagonal(V: np.ndarray) -> float:
 def rel_err(a: np.ndarray, b: np.ndarray, V: np.ndarray) -> float:
     """Largest coordinate difference relative to the bounding-box diagonal of V."""
     return float(np.abs(np.asarray(a, np.float64) - np.asarray(b, np.float64)).max() / diagonal(V))
+
+
+def long_tests() -> bool:
+    """TOONMESH_LONG_TESTS=1 asks for the long soak and many property examples; CI runs a
+    bounded, deterministic number."""
+    return os.environ.get("TOONMESH_LONG_TESTS", "") == "1"
+
+
+try:
+    from hypothesis import HealthCheck, settings
+
+    # "ci" (the default): few examples, derandomized, so every run checks the same cases.
+    settings.register_profile(
+        "ci", max_examples=30, derandomize=True, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+    )
+    settings.register_profile(
+        "long", max_examples=1000, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+    )
+    settings.load_profile("long" if long_tests() else "ci")
+except ImportError:  # the property tests say so themselves (and fail in CI)
+    pass

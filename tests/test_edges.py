@@ -90,7 +90,7 @@ def test_inputs_not_modified_and_any_memory_order():
 
 
 def test_bad_input_names_the_argument():
-    V, F = tm._core.icosphere(1)
+    V, F = tm.shapes.icosphere(1)
     with pytest.raises(ValueError, match="crease_angle"):
         te.feature_edges(V, F, crease_angle=200)
     with pytest.raises(IndexError, match="faces"):
@@ -193,7 +193,7 @@ def test_chains_cover_every_edge_once():
 
 
 def test_segments_shape_and_dtype():
-    V, F = tm._core.icosphere(2)
+    V, F = tm.shapes.icosphere(2)
     e = te.silhouette(V, F, direction=(0, 0, 1))
     seg = te.segments(V, e)
     assert seg.shape == (len(e), 2, 3) and seg.dtype == np.float64

@@ -33,14 +33,14 @@ def test_crease_angle_precise_near_0_and_180(fold):
 
 
 def test_coplanar_faces_are_never_creases():
-    V, F = tm._core.grid(20)
+    V, F = tm.shapes.grid(20)
     for angle in (0.0, 1e-9, 30.0):
         assert len(te.feature_edges(V, F, crease_angle=angle).crease) == 0
 
 
 def test_zero_area_faces_never_create_or_hide_creases_at_random():
     trimesh = need("trimesh")
-    V, F = tm._core.grid(6)
+    V, F = tm.shapes.grid(6)
     V = V.copy()
     # add a zero-area face on the grid edge 0-1 (three collinear points) and a repeated index
     n = len(V)
@@ -100,7 +100,7 @@ def test_uv_seam_duplicates_show_as_boundaries_and_weld_removes_them():
 
 
 def test_split_sphere_seam():
-    V, F = tm._core.icosphere(3)
+    V, F = tm.shapes.icosphere(3)
     # duplicate the vertices with x > 0, y ~ 0 and let faces on one side use the copies
     seam = np.flatnonzero((np.abs(V[:, 1]) < 1e-9) & (V[:, 0] > 0))
     copy = {v: len(V) + k for k, v in enumerate(seam)}
@@ -115,7 +115,7 @@ def test_split_sphere_seam():
 
 
 def test_grazing_view_of_a_flat_grid():
-    V, F = tm._core.grid(30)
+    V, F = tm.shapes.grid(30)
     # in the plane: every face edge-on, so every face is back-facing and there is no silhouette
     assert len(te.silhouette(V, F, eye=(0.5, -3.0, 0.0))) == 0
     assert len(te.silhouette(V, F, direction=(0.0, 1.0, 0.0))) == 0

@@ -25,6 +25,8 @@ def mesh_arrays(vertices: Any, faces: Optional[Any]) -> Tuple[np.ndarray, np.nda
 def _as_array(name: str, value: Any) -> np.ndarray:
     if isinstance(value, np.ndarray):
         return value
+    if value is None or isinstance(value, (str, bytes)):
+        raise TypeError(f"{name}: expected an array, got {type(value).__name__} {value!r:.40}")
     if hasattr(value, "vertices") and hasattr(value, "faces"):
         raise TypeError(f"{name}: pass a trimesh.Trimesh alone, as the first argument")
     try:

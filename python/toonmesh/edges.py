@@ -19,7 +19,13 @@ Rules shared by every mesh-space function:
   is never a crease and never a silhouette; it still counts for boundary and non-manifold edges.
   Degenerate faces are listed in ``FeatureEdges.degenerate_faces``. (trimesh gives such faces a
   zero normal and a 90 degree angle to every neighbour, which creates creases at random.)
-- Face normals follow the right-hand rule, (b - a) x (c - a), and are computed in float64.
+- Face normals follow the right-hand rule, (b - a) x (c - a), and are computed in float64, from
+  rescaled edges where the face is too large or too small for the direct formula, so every
+  rule holds for coordinates from subnormal up to about 1e307.
+- Arguments: arrays in any memory order and either byte order; ``crease_angle`` and the
+  thresholds are numbers (not bools, not strings), ``weld`` is True or False, ``eye`` and
+  ``direction`` are three numbers. Anything else raises TypeError, ValueError or IndexError
+  whose message starts with the argument's name.
 """
 
 from __future__ import annotations
@@ -31,7 +37,7 @@ from typing import Any, List, NamedTuple, Optional, Tuple
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._input import mesh_arrays
+from toonmesh._input import _as_array, mesh_arrays
 
 __all__ = [
     "EdgeDetection",
@@ -137,9 +143,9 @@ def feature_edges(vertices: Any, faces: Any = None, crease_angle: float = 30.0, 
         faces: (M, 3) int32, int64, uint32 or uint64 vertex indices.
         crease_angle: threshold in degrees, in [0, 180]; an edge is a crease when the angle
             between its two face normals is strictly greater. Default 30.
-        weld: merge vertices at exactly the same position first (UV seams and split normals
-            store one point twice, which otherwise shows up as boundary edges). Edges then refer
-            to the smallest index of each group of coincident vertices.
+        weld: True to merge vertices at exactly the same position first (UV seams and split
+            normals store one point twice, which otherwise shows up as boundary edges). Edges
+            then refer to the smallest index of each group of coincident vertices.
 
     Returns:
         :class:`FeatureEdges`. See the module docstring for the rules on order, face counts and
@@ -149,21 +155,7 @@ def feature_edges(vertices: Any, faces: Any = None, crease_angle: float = 30.0, 
         TypeError, ValueError, IndexError: bad input, naming the argument.
     """
     V, F = mesh_arrays(vertices, faces)
-    return _features(_core._feature_edges(V, F, float(crease_angle), bool(weld)), crease_angle)
-
-
-def _view(eye: Any, direction: Any) -> Tuple[Optional[Tuple[float, float, float]], Optional[Tuple[float, float, float]]]:
-    if (eye is None) == (direction is None):
-        raise ValueError("eye: give exactly one of eye= (perspective) or direction= (orthographic)")
-    name, value = ("eye", eye) if eye is not None else ("direction", direction)
-    try:
-        arr = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name}: expected 3 numbers ({exc})") from None
-    if arr.shape != (3,):
-        raise ValueError(f"{name}: expected 3 numbers, got shape {arr.shape}")
-    point = (float(arr[0]), float(arr[1]), float(arr[2]))
-    return (point, None) if eye is not None else (None, point)
+    return _features(_core._feature_edges(V, F, crease_angle, weld), crease_angle)
 
 
 def silhouette(
@@ -193,8 +185,7 @@ def silhouette(
         weld: as in :func:`feature_edges`.
     """
     V, F = mesh_arrays(vertices, faces)
-    e, d = _view(eye, direction)
-    return _core._silhouette(V, F, e, d, bool(weld))
+    return _core._silhouette(V, F, eye, direction, weld)
 
 
 class EdgeIndex:
@@ -221,7 +212,7 @@ class EdgeIndex:
 
     def __init__(self, vertices: Any, faces: Any = None, *, crease_angle: float = 30.0, weld: bool = False) -> None:
         V, F = mesh_arrays(vertices, faces)
-        self._index = _core._EdgeIndex(V, F, bool(weld))
+        self._index = _core._EdgeIndex(V, F, weld)
         self.features = self.feature_edges(crease_angle)
 
     @cached_property
@@ -265,21 +256,19 @@ class EdgeIndex:
 
     def feature_edges(self, crease_angle: float = 30.0) -> FeatureEdges:
         """:class:`FeatureEdges` at another threshold, without rebuilding anything."""
-        return _features(self._index.feature_edges(float(crease_angle)), crease_angle)
+        return _features(self._index.feature_edges(crease_angle), crease_angle)
 
     def silhouette(self, *, eye: Any = None, direction: Any = None) -> np.ndarray:
         """Silhouette edges for one view, (K, 2) int64; rules as in :func:`silhouette`."""
-        e, d = _view(eye, direction)
-        return self._index.silhouette(e, d)
+        return self._index.silhouette(eye, direction)
 
     def outlines(self, *, eye: Any = None, direction: Any = None, kinds: bool = False) -> Any:
         """Silhouettes of this view plus boundary, crease and non-manifold edges, (K, 2) int64,
         sorted, each edge once: everything a mesh-space outline pass draws (the renderer's own
         outline set). With ``kinds=True``, also each edge's kind as (K,) str: the first of
         "silhouette", "boundary", "nonmanifold", "ridge", "valley" that it is."""
-        e, d = _view(eye, direction)
-        edges, codes = self._index.outlines(float(self.features.crease_angle), e, d)
-        if kinds:
+        edges, codes = self._index.outlines(self.features.crease_angle, eye, direction, kinds)
+        if codes is not None:
             return edges, np.asarray(_LINE_KINDS)[codes]
         return edges
 
@@ -292,13 +281,13 @@ class EdgeIndex:
 
 
 def _edge_array(edges: Any) -> np.ndarray:
-    arr = np.asarray(edges)
+    arr = _as_array("edges", edges)
     if arr.size == 0:
         return np.zeros((0, 2), dtype=np.int64)
-    if arr.ndim != 2 or arr.shape[1] != 2:
-        raise ValueError(f"edges: expected shape (K, 2), got {arr.shape}")
     if arr.dtype.kind not in "iu":
         raise TypeError(f"edges: expected integer vertex indices, got dtype {arr.dtype}")
+    if arr.ndim != 2 or arr.shape[1] != 2:
+        raise ValueError(f"edges: expected shape (K, 2), got {arr.shape}")
     if arr.dtype.kind == "u" and arr.size and arr.max() > np.iinfo(np.int64).max:
         raise IndexError("edges: vertex index too large")
     return np.ascontiguousarray(arr, dtype=np.int64)
@@ -326,31 +315,25 @@ def segments(vertices: Any, edges: Any) -> np.ndarray:
     ready for ``matplotlib``'s ``Line3DCollection`` or for export.
 
     Args:
-        vertices: (N, 3) positions, or a ``trimesh.Trimesh``.
+        vertices: (N, 3) float32 or float64 positions, finite, as everywhere else; or a
+            ``trimesh.Trimesh``.
         edges: (K, 2) integer vertex pairs.
+
+    Raises:
+        TypeError, ValueError, IndexError: bad input, naming the argument.
     """
     if hasattr(vertices, "vertices") and hasattr(vertices, "faces"):
         vertices = vertices.vertices
-    V = np.asarray(vertices)
-    if V.ndim != 2 or V.shape[1] != 3:
-        raise ValueError(f"vertices: expected shape (N, 3), got {V.shape}")
-    E = _edge_array(edges)
-    if E.size and (E.min() < 0 or E.max() >= len(V)):
-        raise IndexError(f"edges: vertex indices must be in [0, {len(V)})")
-    return V[E]
+    return _core._segments(_as_array("vertices", vertices), _edge_array(edges))  # type: ignore[no-any-return]
 
 
 # ---------------------------------------------------------------------------------------------
 # Sobel
 
-_CONVENTIONS = ("skimage", "opencv")
-
-
-def _float_image(image: Any, convention: str) -> np.ndarray:
-    """The float image the filter runs on, following the convention's dtype rules."""
-    if convention not in _CONVENTIONS:
-        raise ValueError(f"convention: must be 'skimage' or 'opencv', got {convention!r}")
-    arr = np.asarray(image)
+def _float_image(image: Any, convention: Any) -> np.ndarray:
+    """The float image the filter runs on, following the convention's dtype rules (the core
+    checks ``convention`` itself)."""
+    arr = _as_array("image", image)
     if arr.ndim not in (2, 3):
         raise ValueError(f"image: expected a 2-D (H, W) or 3-D (H, W, C) image, got shape {arr.shape}")
     if arr.size == 0:
@@ -365,7 +348,7 @@ def _float_image(image: Any, convention: str) -> np.ndarray:
     if kind == "b":
         return arr.astype(np.float64)
     if kind in "iu":
-        if convention == "opencv":
+        if isinstance(convention, str) and convention == "opencv":
             return arr.astype(np.float64)
         # skimage's img_as_float: integers scaled to [0, 1] (signed: [-1, 1]) in float64
         scaled = np.multiply(arr, 1.0 / np.iinfo(arr.dtype).max, dtype=np.float64)
@@ -374,7 +357,9 @@ def _float_image(image: Any, convention: str) -> np.ndarray:
 
 
 def _erode(mask: Any, shape: Tuple[int, ...]) -> np.ndarray:
-    m = np.asarray(mask)
+    m = _as_array("mask", mask)
+    if m.dtype.kind not in "biuf":
+        raise TypeError(f"mask: expected a boolean (or numeric) array, got dtype {m.dtype}")
     if m.shape != shape[:2]:
         raise ValueError(f"mask: expected shape {shape[:2]}, got {m.shape}")
     m = m.astype(bool)
@@ -469,7 +454,7 @@ class EdgeDetection(NamedTuple):
 
 
 def _buffer(name: str, value: Any, channels_axis: bool) -> np.ndarray:
-    arr = np.asarray(value)
+    arr = _as_array(name, value)
     if arr.dtype.kind not in "fiub":
         raise TypeError(f"{name}: unsupported dtype {arr.dtype}")
     if arr.dtype not in (np.float32, np.float64):
@@ -515,32 +500,26 @@ def detect_edges(
             None to use depth alone.
         depth: (H, W) depth buffer, or None to use normals alone.
         normal_threshold: threshold for the normal buffer (unit normals; default 1.0, about a
-            15 degree turn between neighbouring pixels).
+            15 degree turn between neighbouring pixels). A finite number >= 0.
         depth_threshold: threshold for the depth buffer, in depth units times 4 (default 0.1,
-            meant for a linear depth of order 1: scale it with your scene).
+            meant for a linear depth of order 1: scale it with your scene). A finite number >= 0.
 
     Returns:
         :class:`EdgeDetection` ``(mask, normal_gradient, depth_gradient)``; gradients are
         float32 when the buffer is float32, float64 otherwise.
     """
     if normal is None and depth is None:
-        raise ValueError("normal: give a normal buffer, a depth buffer, or both")
+        raise ValueError("normal, depth: give a normal buffer, a depth buffer, or both")
     gn = gd = None
-    shape = None
+    mask = None
     if normal is not None:
         nb = _buffer("normal", normal, channels_axis=True)
-        gn = _core._paper_gradient(nb)
-        shape = nb.shape[:2]
+        gn, mask = _core._paper_edges("normal", nb, normal_threshold)
     if depth is not None:
         db = _buffer("depth", depth, channels_axis=False)
-        if shape is not None and db.shape[:2] != shape:
-            raise ValueError(f"depth: shape {db.shape[:2]} does not match the normal buffer's {shape}")
-        gd = _core._paper_gradient(db)
-        shape = db.shape[:2]
-    assert shape is not None
-    mask = np.zeros(shape, dtype=bool)
-    if gn is not None:
-        mask |= gn > float(normal_threshold)
-    if gd is not None:
-        mask |= gd > float(depth_threshold)
+        if mask is not None and db.shape[:2] != mask.shape:
+            raise ValueError(f"depth: shape {db.shape[:2]} does not match the normal buffer's {mask.shape}")
+        gd, depth_mask = _core._paper_edges("depth", db, depth_threshold)
+        mask = depth_mask if mask is None else mask | depth_mask
+    assert mask is not None
     return EdgeDetection(mask, gn, gd)

@@ -30,6 +30,11 @@ def icosphere(subdivisions: int = 3, noise: float = 0.0, seed: int = 0) -> Mesh:
     Returns
     -------
     (V, F): (N, 3) float64 positions and (M, 3) int64 faces, outward-oriented, closed.
+
+    Raises
+    ------
+    TypeError for a non-integer ``subdivisions`` or ``seed`` or a non-number ``noise`` (bools
+    and strings are refused); ValueError for values out of range (a seed is in [0, 2**64)).
     """
     return _core.icosphere(subdivisions, noise, seed)
 
@@ -48,5 +53,9 @@ def grid(n: int = 32, noise: float = 0.0, seed: int = 0) -> Mesh:
     Returns
     -------
     (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+
+    Raises
+    ------
+    TypeError, ValueError: as :func:`icosphere`.
     """
     return _core.grid(n, noise, seed)

@@ -29,6 +29,12 @@ Degenerate input stays finite. Cotangent weights use ``cot = cos / max(sin, 1e-4
 (``|cot| <= 1e4``), a corner with a zero-length side adds nothing, an edge's weight is clamped at
 zero, and a vertex whose weights sum to zero falls back to uniform weights: every step is then a
 convex combination of neighbours and no vertex leaves the input's bounding box.
+
+Any scale works: a mesh whose largest coordinate is beyond 2^200 (about 1.6e60) or below
+2^-200 is scaled by a power of two (exactly) for the computation and back, so cotangents,
+volumes and sums neither overflow nor underflow, from subnormal coordinates up to float64's
+largest value. Precision is relative to the coordinates' magnitude, as always in floating point:
+a mesh of size 1 placed at 1e10 is smoothed to about 1e-6.
 """
 
 from __future__ import annotations
@@ -51,7 +57,7 @@ _COMMON = """
     faces : (M, 3) int32, int64, uint32 or uint64 array
         Triangles as vertex indices. Degenerate, duplicate, flipped and non-manifold faces are
         allowed; vertices no face uses stay where they are (except under ``preset="trimesh"``).
-    pinned : 1-D integer array of vertex indices, or (N,) bool mask, optional
+    pinned : 1-D array of vertex indices (any integer dtype), or (N,) bool mask, optional
         Vertices that must not move (a list or tuple works too; an empty one pins nothing).
     preset : None, "trimesh", "pymeshlab" or "paper"
         Reproduce another library's filter (see the module docs). Default None.
@@ -63,54 +69,26 @@ _COMMON = """
     Raises
     ------
     TypeError
-        A wrong dtype (positions must be float32/float64, faces int32/int64/uint32/uint64).
+        A wrong dtype (positions must be float32/float64, faces int32/int64/uint32/uint64, in
+        either byte order), or an option of the wrong Python type: integers take ints (or NumPy
+        integers), numbers take ints or floats (or NumPy numbers), never bools or strings;
+        ``volume_constraint`` takes True or False (or a NumPy bool) only.
     ValueError
-        A wrong shape, NaN or inf, an empty mesh, an unknown option or one the preset lacks.
+        A wrong shape, NaN or inf, an empty mesh, an unknown option or one the preset lacks, a
+        value out of range (NaN never is in range; an int beyond 64 bits is refused), or a
+        result that would overflow the dtype.
     IndexError
         A face or pinned index outside ``[0, N)``.
+    KeyboardInterrupt
+        Ctrl-C (or any signal whose handler raises) stops the work between two steps, or two
+        iterations of the implicit solve, within a few milliseconds.
 """
 
 
-_INTEGER_OPTIONS = ("iterations", "max_iter")
-_NUMBER_OPTIONS = ("lamb", "mu", "alpha", "beta", "step", "tol")
-_NAME_OPTIONS = ("weights", "boundary", "preset")
-
-
-def _option(name: str, value: Any) -> Any:
-    """Checks an option's Python type, so that a wrong one is named in the error (values are
-    checked in the core)."""
-    if value is None:
-        return None
-    is_bool = isinstance(value, (bool, np.bool_))
-    if name in _INTEGER_OPTIONS:
-        if is_bool or not isinstance(value, (int, np.integer)):
-            raise TypeError(f"{name}: expected an integer, got {type(value).__name__} {value!r}")
-        return int(value)
-    if name in _NUMBER_OPTIONS:
-        if is_bool or not isinstance(value, (int, float, np.integer, np.floating)):
-            raise TypeError(f"{name}: expected a number, got {type(value).__name__} {value!r}")
-        return float(value)
-    if name == "volume_constraint":
-        if not is_bool:
-            raise TypeError(f"volume_constraint: expected True or False, got {type(value).__name__} {value!r}")
-        return bool(value)
-    if name in _NAME_OPTIONS and not isinstance(value, str):
-        raise TypeError(f"{name}: expected a string, got {type(value).__name__} {value!r}")
-    if name == "pinned":
-        if not isinstance(value, np.ndarray):  # lists and tuples of indices or booleans
-            arr = np.asarray(value)
-            if arr.ndim != 1:
-                raise TypeError(f"pinned: expected vertex indices or an (N,) bool mask, got {type(value).__name__} {value!r}")
-            value = arr
-        # An empty one pins nothing, whatever dtype NumPy gave it.
-        return np.zeros(0, dtype=np.int64) if value.shape == (0,) else value
-    return value
-
-
 def _call(method: str, vertices: Any, faces: Any, **kwargs: Any) -> npt.NDArray[np.floating[Any]]:
+    # Every option's type and value is checked in the core, which names it in the error.
     V, F = mesh_arrays(vertices, faces)
-    options = {k: _option(k, v) for k, v in kwargs.items()}
-    return _core._smooth(method, V, F, **options)  # type: ignore[no-any-return]
+    return _core._smooth(method, V, F, **kwargs)  # type: ignore[no-any-return]
 
 
 def laplacian(

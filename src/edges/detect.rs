@@ -20,6 +20,15 @@ pub const DEFAULT_DEPTH_THRESHOLD: f64 = 0.1;
 use crate::error::{Error, Result};
 use crate::real::Real;
 
+/// An edge mask: where the gradient exceeds `threshold`, which must be a finite number >= 0
+/// (NaN would mark nothing and a negative threshold every pixel). `arg` names it in errors.
+pub fn threshold_mask<T: Real>(arg: &str, gradient: &[T], threshold: f64) -> Result<Vec<bool>> {
+    if !(threshold.is_finite() && threshold >= 0.0) {
+        return Err(Error::invalid(arg, format!("must be a finite number >= 0, got {threshold}")));
+    }
+    Ok(gradient.par_iter().map(|&g| Real::to_f64(g) > threshold).collect())
+}
+
 /// max over channels of max(|Gx|, |Gy|) for an `height` x `width` x `channels` row-major buffer.
 pub fn paper_gradient<T: Real>(buffer: &[T], height: usize, width: usize, channels: usize) -> Result<Vec<T>> {
     if height == 0 || width == 0 || channels == 0 {
@@ -91,5 +100,9 @@ mod tests {
         assert_eq!(&g[0..4], &[0.0, 4.0, f64::INFINITY, f64::INFINITY]);
         let all_bg = [f64::NAN; 4];
         assert_eq!(paper_gradient(&all_bg, 2, 2, 1).unwrap(), vec![0.0; 4]);
+        assert_eq!(threshold_mask("t", &g[0..4], 2.0).unwrap(), vec![false, true, true, true]);
+        for bad in [f64::NAN, -1.0, f64::INFINITY] {
+            assert!(threshold_mask("t", &g, bad).is_err());
+        }
     }
 }

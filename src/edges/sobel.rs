@@ -11,6 +11,12 @@
 //! vertical smoothing and difference of three input rows go into two row buffers, and the
 //! horizontal pass reads them: one read of the image, one write of the result, loops the
 //! compiler vectorises, and row bands in parallel.
+//!
+//! Range: h and v are finite whenever the image's values are below a quarter of the dtype's
+//! largest value (beyond that the [1, 2, 1] sums overflow). The magnitude's squares overflow
+//! for gradients above about 1e154 (float64) or 1.8e19 (float32) and lose digits below about
+//! 1e-154 or 1e-19; a row where that happens is recomputed with a scaled hypot, so the
+//! magnitude is finite and accurate wherever h and v are (scikit-image returns inf there).
 
 use rayon::prelude::*;
 
@@ -144,12 +150,21 @@ impl<T: Real> Kernel<T> {
         let (scale, mag_div) = (self.scale, self.mag_div);
         match self.output {
             Output::Magnitude => {
+                let (tiny, huge) = (T::min_positive_value() / T::epsilon(), T::max_value());
+                let mut out_of_range = false;
                 for ((o, (&s0, &s2)), ((&d0, &d1), &d2)) in
                     out.iter_mut().zip(s0.iter().zip(s2)).zip(d0.iter().zip(d1).zip(d2))
                 {
                     let v = (s2 - s0) * scale;
                     let h = (d0 + (d1 + d1) + d2) * scale;
-                    *o = (h * h + v * v).sqrt() / mag_div;
+                    let m2 = h * h + v * v;
+                    // Squares that overflowed (from finite h and v) or lost digits to underflow.
+                    out_of_range |= (m2 > huge) & (h.abs() <= huge) & (v.abs() <= huge)
+                        | (m2 < tiny) & ((h != T::zero()) | (v != T::zero()));
+                    *o = m2.sqrt() / mag_div;
+                }
+                if out_of_range {
+                    self.scaled_magnitudes(s0, s2, d0, d1, d2, out);
                 }
             }
             Output::AlongRows => {
@@ -161,6 +176,23 @@ impl<T: Real> Kernel<T> {
                 for (o, (&s0, &s2)) in out.iter_mut().zip(s0.iter().zip(s2)) {
                     *o = (s2 - s0) * scale;
                 }
+            }
+        }
+    }
+}
+
+impl<T: Real> Kernel<T> {
+    /// The magnitudes of one row as hypot(h, v) / mag_div with h and v scaled by their larger
+    /// absolute value first, so that no square overflows or underflows. Rarely needed.
+    #[cold]
+    fn scaled_magnitudes(&self, s0: &[T], s2: &[T], d0: &[T], d1: &[T], d2: &[T], out: &mut [T]) {
+        for (k, o) in out.iter_mut().enumerate() {
+            let v = (s2[k] - s0[k]) * self.scale;
+            let h = (d0[k] + (d1[k] + d1[k]) + d2[k]) * self.scale;
+            let m = h.abs().max(v.abs());
+            if m > T::zero() && m.is_finite() {
+                let (h, v) = (h / m, v / m);
+                *o = m * (h * h + v * v).sqrt() / self.mag_div;
             }
         }
     }
@@ -183,6 +215,21 @@ mod tests {
         assert_eq!(&out[0..4], &[0.0, 4.0, 4.0, 0.0]);
         sobel(&img, 4, 4, &mut out, Output::AlongRows, Convention::OpenCv).unwrap();
         assert!(out.iter().all(|&x| x == 0.0));
+    }
+
+    #[test]
+    fn magnitude_stays_finite_and_accurate_where_squares_would_not() {
+        let step = |s: f64| -> Vec<f64> { (0..16).map(|i| if i % 4 >= 2 { s } else { 0.0 }).collect() };
+        for s in [1e-300, 1e-160, 1.0, 1e160, 1e300] {
+            let mut out = vec![0.0; 16];
+            sobel(&step(s), 4, 4, &mut out, Output::Magnitude, Convention::Skimage).unwrap();
+            let want = 0.5f64.sqrt() * s;
+            assert!((out[1] - want).abs() <= 4.0 * f64::EPSILON * want, "{s}: {} vs {want}", out[1]);
+        }
+        let img: Vec<f32> = (0..16).map(|i| if i % 4 >= 2 { 1e30 } else { 0.0 }).collect();
+        let mut out = vec![0.0f32; 16];
+        sobel(&img, 4, 4, &mut out, Output::Magnitude, Convention::OpenCv).unwrap();
+        assert_eq!(out[1], 4e30);
     }
 
     #[test]

@@ -8,6 +8,12 @@
 //! A face is *degenerate* (no defined normal) when it repeats a vertex index or when
 //! |(b - a) x (c - a)| <= DEGENERATE_RELATIVE_AREA * L^2, with L its longest edge: zero-area and
 //! collinear faces, scale-invariant. Degenerate faces get the zero vector.
+//!
+//! |n|^2 grows as the fourth power of the face's size, so in f64 it overflows for faces larger
+//! than about 1e77 and underflows below about 1e-77. A face whose longest edge squared is
+//! outside [2^-400, 2^400] (or not finite, when corners near f64::MAX have opposite signs) is
+//! recomputed from its edges scaled by a power of two, so the rule and the normal are the same
+//! at every scale from the smallest subnormal to f64::MAX.
 
 use rayon::prelude::*;
 
@@ -33,16 +39,54 @@ pub fn face_normal<T: Real>(positions: &[Vec3<T>], face: [u32; 3]) -> Option<[f6
     let e1 = [pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]];
     let e2 = [pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]];
     let e3 = [pc[0] - pb[0], pc[1] - pb[1], pc[2] - pb[2]];
-    let n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
-    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
     let sq = |e: [f64; 3]| e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
     let longest = sq(e1).max(sq(e2)).max(sq(e3));
-    // Written negated so that a NaN (from overflow) also counts as degenerate.
+    if (SAFE_LOW..=SAFE_HIGH).contains(&longest) {
+        unit_normal_of_edges(e1, e2, longest)
+    } else {
+        rescaled_normal(pa, pb, pc)
+    }
+}
+
+/// Squared edge lengths inside which |n|^2 (the fourth power) fits in f64.
+const SAFE_LOW: f64 = 1.0 / SAFE_HIGH;
+const SAFE_HIGH: f64 = 2.5822498780869086e120; // 2^400
+
+/// The unit normal from two edges and the longest edge squared, or None when degenerate.
+#[inline]
+fn unit_normal_of_edges(e1: [f64; 3], e2: [f64; 3], longest: f64) -> Option<[f64; 3]> {
+    let n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    // Written negated so that a NaN also counts as degenerate.
     #[allow(clippy::neg_cmp_op_on_partial_ord)]
     if !(len > DEGENERATE_RELATIVE_AREA * longest) {
         return None;
     }
     Some([n[0] / len, n[1] / len, n[2] / len])
+}
+
+/// `face_normal` for a face too large or too small for the direct formula: the edges are taken
+/// from halved corners (so they cannot overflow) and scaled by a power of two so that their
+/// largest component is in [1, 2). Both scalings are exact unless a component underflows, and
+/// such a component is below 2^-1000 of the face's size.
+#[cold]
+fn rescaled_normal(pa: [f64; 3], pb: [f64; 3], pc: [f64; 3]) -> Option<[f64; 3]> {
+    let h = |p: [f64; 3]| p.map(|c| c * 0.5);
+    let (pa, pb, pc) = (h(pa), h(pb), h(pc));
+    let e1 = [pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]];
+    let e2 = [pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]];
+    let e3 = [pc[0] - pb[0], pc[1] - pb[1], pc[2] - pb[2]];
+    let largest = e1.iter().chain(&e2).chain(&e3).fold(0.0f64, |m, c| m.max(c.abs()));
+    if largest == 0.0 {
+        return None;
+    }
+    // 2^-e for largest = f 2^e, applied in two steps so that subnormal faces work too.
+    let e = largest.log2().floor() as i32;
+    let (s1, s2) = (2f64.powi(-e / 2), 2f64.powi(-e - (-e / 2)));
+    let s = |v: [f64; 3]| v.map(|c| c * s1 * s2);
+    let (e1, e2, e3) = (s(e1), s(e2), s(e3));
+    let sq = |e: [f64; 3]| e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    unit_normal_of_edges(e1, e2, sq(e1).max(sq(e2)).max(sq(e3)))
 }
 
 /// Unit normals of all faces (zero for degenerate faces), in f64, computed in parallel.
@@ -121,6 +165,27 @@ mod tests {
         for s in [1e-30, 1.0, 1e30] {
             let v = vec![[0.0, 0.0, 0.0], [s, 0.0, 0.0], [0.0, s * 1e-9, 0.0]];
             assert!(face_normal(&v, [0, 1, 2]).is_some(), "thin but valid at scale {s}");
+        }
+    }
+
+    #[test]
+    fn the_same_normal_from_the_smallest_subnormal_to_the_largest_float() {
+        let tri = [[0.3, -0.2, 0.1], [1.0, 0.1, -0.4], [-0.2, 0.9, 0.5]];
+        let reference = face_normal(&tri, [0, 1, 2]).unwrap();
+        for s in [1e-320, 1e-300, 1e-160, 1e-100, 1e100, 1e160, 1e300, 1e307] {
+            let v: Vec<[f64; 3]> = tri.iter().map(|p| p.map(|c| c * s)).collect();
+            let n = face_normal(&v, [0, 1, 2]).unwrap_or_else(|| panic!("degenerate at {s}"));
+            let tol = if s < 1e-300 { 1e-2 } else { 1e-15 }; // subnormal corners keep about 10 bits
+            assert!((0..3).all(|k| (n[k] - reference[k]).abs() < tol), "{s}: {n:?}");
+        }
+        // corners near f64::MAX with opposite signs: their differences overflow unless halved
+        let m = f64::MAX / 2.0;
+        let v = vec![[-m, -m, 0.0], [m, -m, 0.0], [-m, m, 0.0]];
+        assert_eq!(face_normal(&v, [0, 1, 2]), Some([0.0, 0.0, 1.0]));
+        // a needle stays degenerate at every scale
+        for s in [1e-300, 1.0, 1e300] {
+            let v = vec![[0.0, 0.0, 0.0], [s, 0.0, 0.0], [2.0 * s, s * 1e-14, 0.0]];
+            assert!(face_normal(&v, [0, 1, 2]).is_none(), "{s}");
         }
     }
 

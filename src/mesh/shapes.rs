@@ -29,9 +29,9 @@ pub type Shape = (Vec<[f64; 3]>, Vec<[u32; 3]>);
 /// A unit icosphere: `subdivisions` rounds of 1-to-4 splitting of an icosahedron, giving
 /// 10 * 4^s + 2 vertices. Each vertex is then moved along its radius by `noise` times a seeded
 /// uniform number in [-1, 1).
-pub fn icosphere(subdivisions: u32, noise: f64, seed: u64) -> Result<Shape> {
-    if subdivisions > 10 {
-        return Err(Error::invalid("subdivisions", format!("{subdivisions} is too many (at most 10)")));
+pub fn icosphere(subdivisions: i64, noise: f64, seed: u64) -> Result<Shape> {
+    if !(0..=10).contains(&subdivisions) {
+        return Err(Error::invalid("subdivisions", format!("must be in [0, 10], got {subdivisions}")));
     }
     if !noise.is_finite() || noise < 0.0 {
         return Err(Error::invalid("noise", format!("must be finite and >= 0, got {noise}")));
@@ -109,10 +109,11 @@ pub fn icosphere(subdivisions: u32, noise: f64, seed: u64) -> Result<Shape> {
 
 /// An open, flat `n` x `n` grid of vertices on [0, 1]^2 (z = 0), two triangles per cell,
 /// with seeded noise of amplitude `noise` added to z.
-pub fn grid(n: u32, noise: f64, seed: u64) -> Result<Shape> {
+pub fn grid(n: i64, noise: f64, seed: u64) -> Result<Shape> {
     if !(2..=4096).contains(&n) {
         return Err(Error::invalid("n", format!("must be in [2, 4096], got {n}")));
     }
+    let n = n as u32;
     if !noise.is_finite() || noise < 0.0 {
         return Err(Error::invalid("noise", format!("must be finite and >= 0, got {noise}")));
     }

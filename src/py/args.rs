@@ -1,6 +1,8 @@
 //! Strict conversion of Python arguments, each error naming the argument: booleans take bools
 //! (and NumPy bools), numbers take numbers (not bools, not strings), integers take integers (not
-//! floats), colours take '#rrggbb' or three numbers in [0, 1].
+//! floats), colours take '#rrggbb' or three numbers in [0, 1]. A wrong type is a TypeError; an
+//! integer beyond 64 bits, or one too large for a float, a ValueError. Ranges (and NaN, which no
+//! range admits) are checked by the core, where each rule lives.
 
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt, PyString};
@@ -57,12 +59,35 @@ pub fn opt_number(name: &str, obj: Option<&Bound<'_, PyAny>>) -> Result<Option<f
 
 /// An integer (int or NumPy integer; not a bool or a float), within i64.
 pub fn integer(name: &str, obj: &Bound<'_, PyAny>) -> Result<i64> {
+    integer_type(name, obj)?;
+    obj.extract::<i64>().map_err(|_| Error::invalid(name, format!("{obj} is out of range")))
+}
+
+/// A non-negative integer below 2^64 (a seed).
+pub fn unsigned(name: &str, obj: &Bound<'_, PyAny>) -> Result<u64> {
+    integer_type(name, obj)?;
+    obj.extract::<u64>().map_err(|_| Error::invalid(name, format!("must be in [0, 2**64), got {obj}")))
+}
+
+fn integer_type(name: &str, obj: &Bound<'_, PyAny>) -> Result<()> {
     let integral = obj.is_instance_of::<PyInt>()
         || (numpy_kind(obj).is_some() && obj.hasattr("__index__").unwrap_or(false));
     if is_bool(obj) || !integral || obj.is_instance_of::<PyFloat>() {
         return Err(Error::wrong_type(name, format!("expected an integer, got {}", type_name(obj))));
     }
-    obj.extract::<i64>().map_err(|_| Error::invalid(name, format!("{obj} is out of range")))
+    Ok(())
+}
+
+/// `None` (or absent: use the default) or a value read by `read`.
+pub fn optional<T>(
+    name: &str,
+    obj: Option<&Bound<'_, PyAny>>,
+    read: impl FnOnce(&str, &Bound<'_, PyAny>) -> Result<T>,
+) -> Result<Option<T>> {
+    match obj {
+        Some(o) if !o.is_none() => read(name, o).map(Some),
+        _ => Ok(None),
+    }
 }
 
 /// A text argument.

@@ -3,7 +3,8 @@
 
 use numpy::ndarray::{Array1, Array2};
 use numpy::{
-    IntoPyArray, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods,
+    IntoPyArray, PyArray2, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
+    PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
 
@@ -24,6 +25,21 @@ impl Positions {
             Positions::F64(v) => v.len(),
         }
     }
+}
+
+/// The array in native byte order: `obj` itself when it already is (or is no array), else one
+/// converted copy, so that big-endian input ('>f8', '>i4') is read like any other.
+pub fn native_order<'py>(obj: &Bound<'py, PyAny>) -> Result<Bound<'py, PyAny>> {
+    if let Ok(a) = obj.cast::<PyUntypedArray>() {
+        if a.dtype().is_native_byteorder() == Some(false) {
+            return a
+                .dtype()
+                .call_method1("newbyteorder", ("=",))
+                .and_then(|native| obj.call_method1("astype", (native,)))
+                .map_err(|e| Error::Internal(format!("byte-order conversion failed: {e}")));
+        }
+    }
+    Ok(obj.clone())
 }
 
 fn untyped<'a, 'py>(arg: &str, obj: &'a Bound<'py, PyAny>) -> Result<&'a Bound<'py, PyUntypedArray>> {
@@ -56,9 +72,17 @@ fn rows3<T: numpy::Element + Copy>(a: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
     }
 }
 
-/// Reads (N, 3) float32 or float64 positions, checking shape and finiteness.
+/// Reads (N, 3) float32 or float64 positions (either byte order), checking shape and
+/// finiteness.
 pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
+    let obj = &native_order(obj)?;
     let a = untyped(arg, obj)?;
+    if a.dtype().kind() != b'f' {
+        return Err(Error::wrong_type(
+            arg,
+            format!("dtype must be float32 or float64, got {}", dtype_name(a)),
+        ));
+    }
     check_rows3(arg, a, "N")?;
     let p = if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, f32>>() {
         Positions::F32(rows3(&x))
@@ -77,9 +101,17 @@ pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
     Ok(p)
 }
 
-/// Reads (M, 3) int32, int64, uint32 or uint64 faces, checking every index against `n_vertices`.
+/// Reads (M, 3) int32, int64, uint32 or uint64 faces (either byte order), checking every index
+/// against `n_vertices`.
 pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Faces> {
+    let obj = &native_order(obj)?;
     let a = untyped(arg, obj)?;
+    let wrong_dtype = || {
+        Error::wrong_type(arg, format!("dtype must be int32, int64, uint32 or uint64, got {}", dtype_name(a)))
+    };
+    if !matches!(a.dtype().kind(), b'i' | b'u') {
+        return Err(wrong_dtype());
+    }
     check_rows3(arg, a, "M")?;
     if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, i32>>() {
         check_faces(arg, rows3(&x).into_iter(), n_vertices)
@@ -90,15 +122,12 @@ pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Fac
     } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, u64>>() {
         check_faces(arg, rows3(&x).into_iter(), n_vertices)
     } else {
-        Err(Error::wrong_type(
-            arg,
-            format!("dtype must be int32, int64, uint32 or uint64, got {}", dtype_name(a)),
-        ))
+        Err(wrong_dtype())
     }
 }
 
-/// Reads an optional 1-D array of vertex indices (any integer dtype) or a boolean mask of
-/// length `n_vertices`, returning a per-vertex flag.
+/// Reads an optional 1-D array of vertex indices (any integer dtype, either byte order) or a
+/// boolean mask of length `n_vertices`, returning a per-vertex flag.
 pub fn vertex_mask(
     arg: &str,
     obj: Option<&Bound<'_, PyAny>>,
@@ -108,41 +137,73 @@ pub fn vertex_mask(
     if obj.is_none() {
         return Ok(None);
     }
+    let expected = "expected vertex indices or an (N,) boolean mask";
+    let obj = &if obj.cast::<PyUntypedArray>().is_ok() {
+        native_order(obj)?
+    } else {
+        // A list or tuple of indices or booleans.
+        let arr = obj
+            .py()
+            .import("numpy")
+            .and_then(|np| np.call_method1("asarray", (obj,)))
+            .map_err(|_| Error::wrong_type(arg, format!("{expected}, got {}", type_name(obj))))?;
+        if arr.cast::<PyUntypedArray>().map_or(true, |a| a.ndim() != 1) {
+            return Err(Error::wrong_type(arg, format!("{expected}, got {}", type_name(obj))));
+        }
+        arr
+    };
     let a = untyped(arg, obj)?;
     if a.ndim() != 1 {
-        return Err(Error::invalid(arg, format!("expected a 1-D array, got shape {:?}", a.shape())));
+        return Err(Error::invalid(arg, format!("{expected}: a 1-D array, got shape {:?}", a.shape())));
     }
-    if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, bool>>() {
-        let v = x.as_array();
-        if v.len() != n_vertices {
-            return Err(Error::invalid(
+    if a.len() == 0 {
+        return Ok(None); // an empty list pins nothing, whatever dtype NumPy gave it
+    }
+    let out_of_range = |i: &dyn std::fmt::Display| {
+        Error::out_of_range(arg, format!("vertex index {i} is outside [0, {n_vertices})"))
+    };
+    let dtype = a.dtype();
+    let idx: Vec<i64> = match (dtype.kind(), dtype.itemsize()) {
+        (b'b', _) => {
+            let x =
+                obj.extract::<PyReadonlyArray1<'_, bool>>().map_err(|e| Error::Internal(e.to_string()))?;
+            let v = x.as_array();
+            if v.len() != n_vertices {
+                return Err(Error::invalid(
+                    arg,
+                    format!("a boolean mask needs {n_vertices} entries, got {}", v.len()),
+                ));
+            }
+            return Ok(Some(v.iter().copied().collect()));
+        }
+        (b'u', 8) => {
+            let x = obj.extract::<PyReadonlyArray1<'_, u64>>().map_err(|e| Error::Internal(e.to_string()))?;
+            if let Some(&big) = x.as_array().iter().find(|&&i| i >= n_vertices as u64) {
+                return Err(out_of_range(&big));
+            }
+            x.as_array().iter().map(|&i| i as i64).collect()
+        }
+        (b'i' | b'u', _) => {
+            // Every other integer dtype fits in int64.
+            let wide = obj.call_method1("astype", ("int64",)).map_err(|e| Error::Internal(e.to_string()))?;
+            let x =
+                wide.extract::<PyReadonlyArray1<'_, i64>>().map_err(|e| Error::Internal(e.to_string()))?;
+            x.as_array().iter().copied().collect()
+        }
+        _ => {
+            return Err(Error::wrong_type(
                 arg,
-                format!("a boolean mask needs {n_vertices} entries, got {}", v.len()),
-            ));
+                format!(
+                    "expected vertex indices of an integer dtype or an (N,) boolean mask, got dtype {}",
+                    dtype_name(a)
+                ),
+            ))
         }
-        return Ok(Some(v.iter().copied().collect()));
-    }
-    let idx: Vec<i64> = if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, i64>>() {
-        x.as_array().iter().copied().collect()
-    } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, i32>>() {
-        x.as_array().iter().map(|&i| i as i64).collect()
-    } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, u32>>() {
-        x.as_array().iter().map(|&i| i as i64).collect()
-    } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, u64>>() {
-        if let Some(&big) = x.as_array().iter().find(|&&i| i >= n_vertices as u64) {
-            return Err(Error::out_of_range(arg, format!("vertex index {big} is outside [0, {n_vertices})")));
-        }
-        x.as_array().iter().map(|&i| i as i64).collect()
-    } else {
-        return Err(Error::wrong_type(
-            arg,
-            format!("expected integer indices or a boolean mask, got dtype {}", dtype_name(a)),
-        ));
     };
     let mut mask = vec![false; n_vertices];
     for i in idx {
         if i < 0 || i as u64 >= n_vertices as u64 {
-            return Err(Error::out_of_range(arg, format!("vertex index {i} is outside [0, {n_vertices})")));
+            return Err(out_of_range(&i));
         }
         mask[i as usize] = true;
     }

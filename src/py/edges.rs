@@ -8,12 +8,13 @@ use numpy::{
 };
 use pyo3::prelude::*;
 
-use super::convert::vec_to_numpy;
+use super::args;
+use super::convert::{native_order, positions, vec_to_numpy, Positions};
 use super::errors::to_py;
 use super::mesh_input::{on_positions, MeshInput};
 use super::runtime::detached;
 use crate::edges::chains::chain_edges;
-use crate::edges::detect::paper_gradient;
+use crate::edges::detect::{paper_gradient, threshold_mask};
 use crate::edges::feature::FeatureEdges;
 use crate::edges::outlines::Outline;
 use crate::edges::sobel::{sobel, Convention, Output};
@@ -49,45 +50,58 @@ fn feature_to_numpy(py: Python<'_>, fe: FeatureEdges, degenerate: Vec<u32>) -> F
     )
 }
 
-fn view_of(eye: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> Result<View> {
+/// The view from `eye=` or `direction=` (None or absent: not given).
+fn view_of(eye: Option<&Bound<'_, PyAny>>, direction: Option<&Bound<'_, PyAny>>) -> Result<View> {
+    let eye = args::optional("eye", eye, args::triple)?;
+    let direction = args::optional("direction", direction, args::triple)?;
     match (eye, direction) {
         (Some(e), None) => View::Eye(e).check(),
         (None, Some(d)) => View::Direction(d).check(),
-        _ => {
-            Err(Error::invalid("eye", "give exactly one of eye= (perspective) or direction= (orthographic)"))
-        }
+        _ => Err(Error::invalid(
+            "eye, direction",
+            "give exactly one of eye= (perspective) or direction= (orthographic)",
+        )),
     }
 }
 
+/// A crease threshold in degrees, read and checked.
+fn crease_angle_of(obj: &Bound<'_, PyAny>) -> Result<f64> {
+    let angle = args::number("crease_angle", obj)?;
+    crate::edges::feature::check_crease_angle(angle)?;
+    Ok(angle)
+}
+
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, crease_angle = 30.0, weld = false))]
 fn _feature_edges<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
-    crease_angle: f64,
-    weld: bool,
+    crease_angle: &Bound<'py, PyAny>,
+    weld: &Bound<'py, PyAny>,
 ) -> PyResult<FeatureOut<'py>> {
+    let crease_angle = crease_angle_of(crease_angle).map_err(to_py)?;
+    let weld = args::flag("weld", weld).map_err(to_py)?;
     let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
     let (fe, degenerate) =
-        mesh.run(py, faces, |p, f| on_positions!(p, v => find_feature_edges(v, f, crease_angle, weld)))?;
+        mesh.run(py, faces, |p, f, _| on_positions!(p, v => find_feature_edges(v, f, crease_angle, weld)))?;
     Ok(feature_to_numpy(py, fe, degenerate))
 }
 
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, eye = None, direction = None, weld = false))]
+#[pyo3(signature = (vertices, faces, eye, direction, weld))]
 fn _silhouette<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
-    eye: Option<[f64; 3]>,
-    direction: Option<[f64; 3]>,
-    weld: bool,
+    eye: Option<&Bound<'py, PyAny>>,
+    direction: Option<&Bound<'py, PyAny>>,
+    weld: &Bound<'py, PyAny>,
 ) -> PyResult<Pairs<'py>> {
     let view = view_of(eye, direction).map_err(to_py)?;
+    let weld = args::flag("weld", weld).map_err(to_py)?;
     let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
     let s =
-        mesh.run(py, faces, |p, f| on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)))?;
+        mesh.run(py, faces, |p, f, _| on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)))?;
     Ok(pairs_to_numpy(py, s))
 }
 
@@ -102,24 +116,24 @@ struct PyEdgeIndex {
 #[pymethods]
 impl PyEdgeIndex {
     #[new]
-    #[pyo3(signature = (vertices, faces, weld = false))]
     fn new(
         py: Python<'_>,
         vertices: &Bound<'_, PyAny>,
         faces: &Bound<'_, PyAny>,
-        weld: bool,
+        weld: &Bound<'_, PyAny>,
     ) -> PyResult<Self> {
+        let weld = args::flag("weld", weld).map_err(to_py)?;
         let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
-        let inner = mesh.run(py, faces, |p, f| on_positions!(p, v => EdgeIndex::build(v, f, weld)))?;
+        let inner = mesh.run(py, faces, |p, f, _| on_positions!(p, v => EdgeIndex::build(v, f, weld)))?;
         Ok(PyEdgeIndex { inner, statics: Default::default() })
     }
 
-    #[pyo3(signature = (eye = None, direction = None))]
+    #[pyo3(signature = (eye, direction))]
     fn silhouette<'py>(
         &self,
         py: Python<'py>,
-        eye: Option<[f64; 3]>,
-        direction: Option<[f64; 3]>,
+        eye: Option<&Bound<'py, PyAny>>,
+        direction: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Pairs<'py>> {
         let view = view_of(eye, direction).map_err(to_py)?;
         let inner = &self.inner;
@@ -128,16 +142,20 @@ impl PyEdgeIndex {
     }
 
     /// The outline set of one view: silhouettes, boundaries, creases and non-manifold edges,
-    /// each edge once with its kind (`edges::outlines::LineKind` as an int8).
-    #[pyo3(signature = (crease_angle, eye = None, direction = None))]
+    /// each edge once, and with `kinds` each edge's kind (`edges::outlines::LineKind` as an
+    /// int8; None without).
+    #[pyo3(signature = (crease_angle, eye, direction, kinds))]
     fn outlines<'py>(
         &self,
         py: Python<'py>,
-        crease_angle: f64,
-        eye: Option<[f64; 3]>,
-        direction: Option<[f64; 3]>,
-    ) -> PyResult<(Pairs<'py>, Bound<'py, PyArray1<i8>>)> {
+        crease_angle: &Bound<'py, PyAny>,
+        eye: Option<&Bound<'py, PyAny>>,
+        direction: Option<&Bound<'py, PyAny>>,
+        kinds: &Bound<'py, PyAny>,
+    ) -> PyResult<(Pairs<'py>, Option<Bound<'py, PyArray1<i8>>>)> {
+        let crease_angle = crease_angle_of(crease_angle).map_err(to_py)?;
         let view = view_of(eye, direction).map_err(to_py)?;
+        let with_kinds = args::flag("kinds", kinds).map_err(to_py)?;
         let key = crease_angle.to_bits();
         let cached =
             self.statics.lock().unwrap_or_else(|e| e.into_inner()).clone().filter(|(k, _)| *k == key);
@@ -150,12 +168,16 @@ impl PyEdgeIndex {
             Ok((statics.with_silhouettes(&inner.silhouette(view)?), statics))
         })?;
         *self.statics.lock().unwrap_or_else(|e| e.into_inner()) = Some((key, statics));
-        let kinds = all.kinds.iter().map(|&k| k as i8).collect();
-        Ok((pairs_to_numpy(py, all.edges), vec_to_numpy(py, kinds)))
+        let kinds = with_kinds.then(|| vec_to_numpy(py, all.kinds.iter().map(|&k| k as i8).collect()));
+        Ok((pairs_to_numpy(py, all.edges), kinds))
     }
 
-    #[pyo3(signature = (crease_angle = 30.0))]
-    fn feature_edges<'py>(&self, py: Python<'py>, crease_angle: f64) -> PyResult<FeatureOut<'py>> {
+    fn feature_edges<'py>(
+        &self,
+        py: Python<'py>,
+        crease_angle: &Bound<'py, PyAny>,
+    ) -> PyResult<FeatureOut<'py>> {
+        let crease_angle = crease_angle_of(crease_angle).map_err(to_py)?;
         let inner = &self.inner;
         let (fe, degenerate) =
             detached(py, || Ok((inner.feature_edges(crease_angle)?, inner.degenerate_faces())))?;
@@ -228,6 +250,36 @@ fn _chains<'py>(
     ))
 }
 
+/// End points of edges, (K, 2, 3) in the vertices' dtype; `edges` is (K, 2) int64.
+#[pyfunction]
+fn _segments<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    edges: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let v = positions("vertices", vertices).map_err(to_py)?;
+    let e = read_pairs("edges", edges).map_err(to_py)?;
+    let n = v.len();
+    if let Some(k) = e.iter().position(|p| p[0] as usize >= n || p[1] as usize >= n) {
+        return Err(to_py(Error::out_of_range(
+            "edges",
+            format!("edge {k} ({}, {}) refers to a vertex outside [0, {n})", e[k][0], e[k][1]),
+        )));
+    }
+    fn ends<'py, T: Real + numpy::Element>(
+        py: Python<'py>,
+        v: &[[T; 3]],
+        e: &[[u32; 2]],
+    ) -> Bound<'py, PyAny> {
+        let flat: Vec<T> = e.iter().flat_map(|p| p.iter().flat_map(|&i| v[i as usize])).collect();
+        numpy::ndarray::Array3::from_shape_vec((e.len(), 2, 3), flat).expect("6k").into_pyarray(py).into_any()
+    }
+    Ok(match &v {
+        Positions::F32(v) => ends(py, v, &e),
+        Positions::F64(v) => ends(py, v, &e),
+    })
+}
+
 fn parse_output(name: &str) -> Result<Output> {
     match name {
         "magnitude" => Ok(Output::Magnitude),
@@ -274,15 +326,16 @@ fn sobel_typed<'py, T: Real + numpy::Element>(
 
 /// Sobel of a C-contiguous 2-D float32 or float64 image; the Python wrapper does dtype rules.
 #[pyfunction]
-#[pyo3(signature = (image, output = "magnitude", convention = "skimage"))]
 fn _sobel<'py>(
     py: Python<'py>,
     image: &Bound<'py, PyAny>,
     output: &str,
-    convention: &str,
+    convention: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let output = parse_output(output).map_err(to_py)?;
-    let convention = parse_convention(convention).map_err(to_py)?;
+    let convention =
+        args::text("convention", convention).and_then(|c| parse_convention(&c)).map_err(to_py)?;
+    let image = &native_order(image).map_err(to_py)?;
     if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f32>>() {
         Ok(sobel_typed(py, x, output, convention)?.into_any())
     } else if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f64>>() {
@@ -292,28 +345,49 @@ fn _sobel<'py>(
     }
 }
 
-fn gradient_typed<'py, T: Real + numpy::Element>(
+type Edges<'py> = (Bound<'py, PyAny>, Bound<'py, PyArray2<bool>>);
+
+fn edges_typed<'py, T: Real + numpy::Element>(
     py: Python<'py>,
+    name: &str,
     buffer: PyReadonlyArray3<'py, T>,
-) -> PyResult<Bound<'py, PyArray2<T>>> {
+    threshold: f64,
+) -> PyResult<Edges<'py>> {
     let (h, w, c) = buffer.as_array().dim();
     if !buffer.is_c_contiguous() {
-        return Err(to_py(Error::invalid("buffer", "must be C-contiguous (the Python wrapper makes it so)")));
+        return Err(to_py(Error::invalid(name, "must be C-contiguous (the Python wrapper makes it so)")));
     }
-    let data = buffer.as_slice().map_err(|_| to_py(Error::Internal("buffer is not C-contiguous".into())))?;
-    let out = detached(py, || paper_gradient(data, h, w, c))?;
-    Ok(Array2::from_shape_vec((h, w), out).expect("h*w").into_pyarray(py))
+    let data =
+        buffer.as_slice().map_err(|_| to_py(Error::Internal(format!("{name} is not C-contiguous"))))?;
+    let arg = format!("{name}_threshold");
+    let (gradient, mask) = detached(py, || {
+        let g = paper_gradient(data, h, w, c)?;
+        let m = threshold_mask(&arg, &g, threshold)?;
+        Ok((g, m))
+    })?;
+    Ok((
+        Array2::from_shape_vec((h, w), gradient).expect("h*w").into_pyarray(py).into_any(),
+        Array2::from_shape_vec((h, w), mask).expect("h*w").into_pyarray(py),
+    ))
 }
 
-/// max over channels of max(|Gx|, |Gy|) for a C-contiguous (H, W, C) float buffer.
+/// The paper's gradient max over channels of max(|Gx|, |Gy|) of a C-contiguous (H, W, C) float
+/// buffer, and the mask where it exceeds the threshold. `name` ("normal" or "depth") names the
+/// buffer and its threshold (`<name>_threshold`) in errors.
 #[pyfunction]
-fn _paper_gradient<'py>(py: Python<'py>, buffer: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+fn _paper_edges<'py>(
+    py: Python<'py>,
+    name: &str,
+    buffer: &Bound<'py, PyAny>,
+    threshold: &Bound<'py, PyAny>,
+) -> PyResult<Edges<'py>> {
+    let threshold = args::number(&format!("{name}_threshold"), threshold).map_err(to_py)?;
     if let Ok(x) = buffer.extract::<PyReadonlyArray3<'py, f32>>() {
-        Ok(gradient_typed(py, x)?.into_any())
+        edges_typed(py, name, x, threshold)
     } else if let Ok(x) = buffer.extract::<PyReadonlyArray3<'py, f64>>() {
-        Ok(gradient_typed(py, x)?.into_any())
+        edges_typed(py, name, x, threshold)
     } else {
-        Err(to_py(Error::wrong_type("buffer", "expected a 3-D float32 or float64 array")))
+        Err(to_py(Error::wrong_type(name, "expected a 3-D float32 or float64 array")))
     }
 }
 
@@ -322,7 +396,8 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_silhouette, m)?)?;
     m.add_function(wrap_pyfunction!(_chains, m)?)?;
     m.add_function(wrap_pyfunction!(_sobel, m)?)?;
-    m.add_function(wrap_pyfunction!(_paper_gradient, m)?)?;
+    m.add_function(wrap_pyfunction!(_paper_edges, m)?)?;
+    m.add_function(wrap_pyfunction!(_segments, m)?)?;
     m.add_class::<PyEdgeIndex>()?;
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! The one place where core errors become Python exceptions.
 
-use pyo3::exceptions::{PyIndexError, PyRuntimeError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyIndexError, PyKeyboardInterrupt, PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
 use crate::error::Error;
@@ -28,6 +28,7 @@ pub fn to_py(e: Error) -> PyErr {
         Error::NotConverged(_) => ConvergenceError::new_err(msg),
         Error::NoAdapter(_) => GpuUnavailableError::new_err(msg),
         Error::Gpu(_) => GpuError::new_err(msg),
+        Error::Interrupted => PyKeyboardInterrupt::new_err(msg),
         Error::Internal(_) => PyRuntimeError::new_err(msg),
     }
 }

@@ -1,15 +1,17 @@
 //! Mesh input read straight from NumPy's buffers when they are C-contiguous (the usual case),
 //! so a million-face mesh is not copied and checked serially before the parallel work starts.
 //! Anything else, and every error message, goes through the general readers in `convert`.
+//! Arrays in the other byte order are converted once, on entry.
 
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
-use super::convert::{faces, positions, Positions};
+use super::convert::{faces, native_order, positions, Positions};
 use super::errors::to_py;
-use super::runtime::detached;
+use super::runtime::detached_cancellable;
+use crate::cancel::Cancel;
 use crate::error::{Error, Result};
-use crate::real::Real;
+use crate::smooth::range::largest_if_finite;
 
 /// Vertices and faces as read from Python: borrowed when possible, owned otherwise.
 pub struct MeshInput<'py> {
@@ -20,6 +22,8 @@ pub struct MeshInput<'py> {
     faces32: Option<PyReadonlyArray2<'py, i32>>,
     owned_faces: Option<Vec<[u32; 3]>>,
     n_vertices: usize,
+    /// The largest absolute coordinate, when the fast path computed it.
+    largest: Option<f64>,
 }
 
 #[derive(Clone, Copy)]
@@ -47,12 +51,9 @@ fn contiguous_rows3<'py, T: numpy::Element>(obj: &Bound<'py, PyAny>) -> Option<P
     (shape[1] == 3 && shape[0] > 0 && x.is_c_contiguous()).then_some(x)
 }
 
-fn all_finite<T: Real>(flat: &[T]) -> bool {
-    flat.iter().fold(true, |ok, x| ok & x.is_finite())
-}
-
 impl<'py> MeshInput<'py> {
     pub fn read(vertices: &Bound<'py, PyAny>, faces_obj: &Bound<'py, PyAny>) -> Result<Self> {
+        let (vertices, faces_obj) = (&native_order(vertices)?, &native_order(faces_obj)?);
         let mut me = MeshInput {
             v32: contiguous_rows3::<f32>(vertices),
             v64: None,
@@ -61,16 +62,18 @@ impl<'py> MeshInput<'py> {
             faces32: None,
             owned_faces: None,
             n_vertices: 0,
+            largest: None,
         };
         if me.v32.is_none() {
             me.v64 = contiguous_rows3::<f64>(vertices);
         }
-        let finite = match (&me.v32, &me.v64) {
-            (Some(x), _) => all_finite(x.as_slice().unwrap_or(&[f32::NAN])),
-            (_, Some(x)) => all_finite(x.as_slice().unwrap_or(&[f64::NAN])),
-            _ => false,
+        // One pass checks finiteness and finds the scale (which smoothing needs).
+        me.largest = match (&me.v32, &me.v64) {
+            (Some(x), _) => largest_if_finite(x.as_slice().unwrap_or(&[f32::NAN])),
+            (_, Some(x)) => largest_if_finite(x.as_slice().unwrap_or(&[f64::NAN])),
+            _ => None,
         };
-        if finite {
+        if me.largest.is_some() {
             me.n_vertices =
                 me.v32.as_ref().map(|x| x.shape()[0]).or(me.v64.as_ref().map(|x| x.shape()[0])).unwrap_or(0);
         } else {
@@ -92,6 +95,11 @@ impl<'py> MeshInput<'py> {
 
     pub fn n_vertices(&self) -> usize {
         self.n_vertices
+    }
+
+    /// The largest absolute coordinate, if reading found it.
+    pub fn largest_coordinate(&self) -> Option<f64> {
+        self.largest
     }
 
     pub fn positions(&self) -> PositionsRef<'_> {
@@ -117,23 +125,24 @@ impl<'py> MeshInput<'py> {
         FacesRef::Checked(self.owned_faces.as_deref().expect("one of the three is set"))
     }
 
-    /// Runs `work` on the mesh with the GIL released. Faces are converted to u32 inside, in
+    /// Runs `work` on the mesh with the GIL released, stopping on Ctrl-C when `work` checks its
+    /// `Cancel` (see `runtime::detached_cancellable`). Faces are converted to u32 inside, in
     /// parallel; if any index is bad, the general reader produces the error message.
     pub fn run<R: Send>(
         &self,
         py: Python<'_>,
         faces_obj: &Bound<'_, PyAny>,
-        work: impl Fn(PositionsRef<'_>, &[[u32; 3]]) -> Result<R> + Send + Sync,
+        work: impl Fn(PositionsRef<'_>, &[[u32; 3]], &Cancel) -> Result<R> + Send + Sync,
     ) -> PyResult<R> {
         let (positions, faces_ref, n) = (self.positions(), self.faces(), self.n_vertices);
-        let outcome = detached(py, || {
+        let outcome = detached_cancellable(py, |cancel| {
             let converted = match faces_ref {
-                FacesRef::Checked(f) => return work(positions, f).map(Some),
+                FacesRef::Checked(f) => return work(positions, f, cancel).map(Some),
                 FacesRef::I64(flat) => faces_to_u32(flat, n),
                 FacesRef::I32(flat) => faces_to_u32(flat, n),
             };
             match converted {
-                Some(f) => work(positions, &f).map(Some),
+                Some(f) => work(positions, &f, cancel).map(Some),
                 None => Ok(None),
             }
         })?;

@@ -1,16 +1,85 @@
 //! Running core work from Python: outside the GIL, inside the thread pool, with panics caught
-//! so that none reaches Python.
+//! so that none reaches Python, and (for long work) stopped by Ctrl-C.
+
+use std::sync::mpsc;
+use std::time::Duration;
 
 use pyo3::prelude::*;
 
+use super::args;
 use super::errors::to_py;
+use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::parallel;
+
+/// How often the calling thread looks for a pending signal while work runs: often enough that
+/// Ctrl-C stops the work within a fraction of a second, rarely enough to cost nothing.
+const SIGNAL_POLL: Duration = Duration::from_millis(5);
 
 /// Runs compute work with the GIL released, inside the thread pool, and maps its error (or a
 /// panic) to a Python exception.
 pub fn detached<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
     py.detach(|| catching_panics(|| parallel::install(work))).map_err(to_py)
+}
+
+/// Runs long compute work as `detached` does, and stops it on Ctrl-C.
+///
+/// Python runs signal handlers only on its main thread, so the work is handed to the pool and
+/// the calling thread, if it is the main thread, waits for it in short slices; after each
+/// slice it re-attaches to the interpreter and runs `check_signals`. When that raises (a
+/// KeyboardInterrupt, or whatever the handler raised), `cancel` is set, the work stops at its
+/// next check, and that exception is what the call raises. On any other thread signals cannot
+/// be handled, and the work simply runs.
+pub fn detached_cancellable<T: Send>(
+    py: Python<'_>,
+    work: impl FnOnce(&Cancel) -> Result<T> + Send,
+) -> PyResult<T> {
+    if !on_main_thread(py) {
+        return detached(py, || work(Cancel::never()));
+    }
+    let cancel = Cancel::new();
+    let mut raised: Option<PyErr> = None;
+    let outcome = py.detach(|| {
+        let (done, finished) = mpsc::channel();
+        let (cancel, raised) = (&cancel, &mut raised);
+        parallel::pool().in_place_scope(|scope| {
+            scope.spawn(move |_| {
+                let _ = done.send(catching_panics(|| work(cancel)));
+            });
+            loop {
+                match finished.recv_timeout(SIGNAL_POLL) {
+                    Ok(result) => return result,
+                    Err(mpsc::RecvTimeoutError::Timeout) if raised.is_none() => {
+                        if let Err(e) = Python::attach(|py| py.check_signals()) {
+                            *raised = Some(e);
+                            cancel.request();
+                        }
+                    }
+                    Err(mpsc::RecvTimeoutError::Timeout) => {}
+                    Err(mpsc::RecvTimeoutError::Disconnected) => {
+                        return Err(Error::Internal("the worker stopped without a result".into()))
+                    }
+                }
+            }
+        })
+    });
+    // A signal that was taken must be raised, whatever the work returned meanwhile.
+    match raised {
+        Some(e) => Err(e),
+        None => outcome.map_err(to_py),
+    }
+}
+
+/// Whether this is the thread Python runs signal handlers on.
+fn on_main_thread(py: Python<'_>) -> bool {
+    let main = py
+        .import("threading")
+        .and_then(|t| t.call_method0("main_thread"))
+        .and_then(|t| t.getattr("ident"))
+        .and_then(|i| i.extract::<u64>());
+    // SAFETY: PyThread_get_thread_ident only reads the calling thread's id.
+    let me = unsafe { pyo3::ffi::PyThread_get_thread_ident() } as u64;
+    main.is_ok_and(|m| m == me)
 }
 
 /// Runs `work`, turning a panic into `Error::Internal` so that none reaches Python.
@@ -31,9 +100,11 @@ pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
 ///
 /// n: a count from 1 to 1024, or 0 to restore the default (the ``TOONMESH_NUM_THREADS``
 /// environment variable if set, else the number of cores). Results are the same bits for any
-/// count. Raises ValueError below 0 or above 1024.
+/// count. Raises TypeError for anything but an int (or NumPy integer; bools are refused) and
+/// ValueError below 0 or above 1024.
 #[pyfunction]
-fn set_num_threads(n: i64) -> PyResult<()> {
+fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
+    let n = args::integer("n", n).map_err(to_py)?;
     let n = usize::try_from(n)
         .map_err(|_| Error::invalid("n", format!("must be >= 0 (0 restores the default), got {n}")))
         .map_err(to_py)?;

@@ -1,24 +1,41 @@
-//! Procedural meshes, exposed for examples, tests and benchmarks.
+//! Procedural meshes, exposed for examples, tests and benchmarks. The defaults live in the
+//! Python wrappers (`toonmesh/shapes.py`), which pass every argument.
 
 use numpy::PyArray2;
 use pyo3::prelude::*;
 
+use super::args;
 use super::convert::{faces_to_numpy, rows3_to_numpy};
+use super::errors::to_py;
 use super::runtime::detached;
 use crate::mesh::shapes;
 
 type MeshOut<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>);
 
 #[pyfunction]
-#[pyo3(signature = (subdivisions = 3, noise = 0.0, seed = 0))]
-fn icosphere(py: Python<'_>, subdivisions: u32, noise: f64, seed: u64) -> PyResult<MeshOut<'_>> {
+fn icosphere<'py>(
+    py: Python<'py>,
+    subdivisions: &Bound<'py, PyAny>,
+    noise: &Bound<'py, PyAny>,
+    seed: &Bound<'py, PyAny>,
+) -> PyResult<MeshOut<'py>> {
+    let subdivisions = args::integer("subdivisions", subdivisions).map_err(to_py)?;
+    let noise = args::number("noise", noise).map_err(to_py)?;
+    let seed = args::unsigned("seed", seed).map_err(to_py)?;
     let (v, f) = detached(py, || shapes::icosphere(subdivisions, noise, seed))?;
     Ok((rows3_to_numpy(py, v), faces_to_numpy(py, f)))
 }
 
 #[pyfunction]
-#[pyo3(signature = (n = 32, noise = 0.0, seed = 0))]
-fn grid(py: Python<'_>, n: u32, noise: f64, seed: u64) -> PyResult<MeshOut<'_>> {
+fn grid<'py>(
+    py: Python<'py>,
+    n: &Bound<'py, PyAny>,
+    noise: &Bound<'py, PyAny>,
+    seed: &Bound<'py, PyAny>,
+) -> PyResult<MeshOut<'py>> {
+    let n = args::integer("n", n).map_err(to_py)?;
+    let noise = args::number("noise", noise).map_err(to_py)?;
+    let seed = args::unsigned("seed", seed).map_err(to_py)?;
     let (v, f) = detached(py, || shapes::grid(n, noise, seed))?;
     Ok((rows3_to_numpy(py, v), faces_to_numpy(py, f)))
 }

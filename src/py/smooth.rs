@@ -3,6 +3,7 @@
 
 use pyo3::prelude::*;
 
+use super::args;
 use super::convert::{rows3_to_numpy, vertex_mask};
 use super::errors::to_py;
 use super::mesh_input::{MeshInput, PositionsRef};
@@ -31,43 +32,51 @@ fn _smooth<'py>(
     method_name: &str,
     vertices: &Bound<'py, PyAny>,
     faces_arr: &Bound<'py, PyAny>,
-    iterations: Option<i64>,
-    lamb: Option<f64>,
-    mu: Option<f64>,
-    alpha: Option<f64>,
-    beta: Option<f64>,
-    step: Option<f64>,
-    tol: Option<f64>,
-    max_iter: Option<i64>,
-    weights: Option<String>,
-    boundary: Option<String>,
+    iterations: Option<&Bound<'py, PyAny>>,
+    lamb: Option<&Bound<'py, PyAny>>,
+    mu: Option<&Bound<'py, PyAny>>,
+    alpha: Option<&Bound<'py, PyAny>>,
+    beta: Option<&Bound<'py, PyAny>>,
+    step: Option<&Bound<'py, PyAny>>,
+    tol: Option<&Bound<'py, PyAny>>,
+    max_iter: Option<&Bound<'py, PyAny>>,
+    weights: Option<&Bound<'py, PyAny>>,
+    boundary: Option<&Bound<'py, PyAny>>,
     pinned: Option<&Bound<'py, PyAny>>,
-    volume_constraint: Option<bool>,
-    preset: Option<String>,
+    volume_constraint: Option<&Bound<'py, PyAny>>,
+    preset: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let m = method(method_name).map_err(to_py)?;
-    let args = Args {
-        iterations,
-        lamb,
-        mu,
-        alpha,
-        beta,
-        step,
-        tol,
-        max_iter,
-        weights,
-        boundary,
-        volume_constraint,
-        preset,
-    };
+    // None means "the preset's default" for every option.
+    let args = (|| -> Result<Args, Error> {
+        Ok(Args {
+            iterations: args::optional("iterations", iterations, args::integer)?,
+            lamb: args::optional("lamb", lamb, args::number)?,
+            mu: args::optional("mu", mu, args::number)?,
+            alpha: args::optional("alpha", alpha, args::number)?,
+            beta: args::optional("beta", beta, args::number)?,
+            step: args::optional("step", step, args::number)?,
+            tol: args::optional("tol", tol, args::number)?,
+            max_iter: args::optional("max_iter", max_iter, args::integer)?,
+            weights: args::optional("weights", weights, args::text)?,
+            boundary: args::optional("boundary", boundary, args::text)?,
+            volume_constraint: args::optional("volume_constraint", volume_constraint, args::flag)?,
+            preset: args::optional("preset", preset, args::text)?,
+        })
+    })()
+    .map_err(to_py)?;
     let plan = smooth::resolve(m, &args).map_err(to_py)?;
     let mesh = MeshInput::read(vertices, faces_arr).map_err(to_py)?;
     let pin = vertex_mask("pinned", pinned, mesh.n_vertices()).map_err(to_py)?;
-    let pin = pin.as_deref();
-    let out = mesh.run(py, faces_arr, |p, f| {
+    let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
+    let out = mesh.run(py, faces_arr, |p, f, cancel| {
         Ok(match p {
-            PositionsRef::F32(v) => Smoothed::F32(smooth::smooth(v, f, &plan, pin)?),
-            PositionsRef::F64(v) => Smoothed::F64(smooth::smooth(v, f, &plan, pin)?),
+            PositionsRef::F32(v) => {
+                Smoothed::F32(smooth::smooth_cancellable(v, f, &plan, pin, cancel, largest)?)
+            }
+            PositionsRef::F64(v) => {
+                Smoothed::F64(smooth::smooth_cancellable(v, f, &plan, pin, cancel, largest)?)
+            }
         })
     })?;
     Ok(match out {

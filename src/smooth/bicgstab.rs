@@ -8,6 +8,7 @@
 
 use rayon::prelude::*;
 
+use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::parallel::REDUCE_CHUNK;
 
@@ -43,7 +44,8 @@ fn norms(a: &[Col3]) -> Col3 {
 }
 
 /// Solves M x = b (three columns) to a relative residual of `tol` per column, starting from
-/// `x`. Returns the number of iterations.
+/// `x`. Returns the number of iterations. Stops with `Error::Interrupted` at the first
+/// iteration after `cancel` is raised.
 pub fn solve(
     matvec: impl Fn(&[Col3], &mut [Col3]) + Sync,
     inv_diag: &[f64],
@@ -51,6 +53,7 @@ pub fn solve(
     x: &mut [Col3],
     tol: f64,
     max_iter: u32,
+    cancel: &Cancel,
 ) -> Result<u32> {
     let n = b.len();
     let goal = norms(b).map(|v| tol * v);
@@ -79,6 +82,7 @@ pub fn solve(
     let live =
         |done: &[bool; 3], c: Col3| -> Col3 { std::array::from_fn(|k| if done[k] { 0.0 } else { c[k] }) };
     for it in 1..=max_iter {
+        cancel.check()?;
         let rho_new = dot3(&r_hat, &r);
         let mut beta = [0.0; 3];
         for k in 0..3 {
@@ -153,11 +157,20 @@ mod tests {
         };
         let b = [[1.0, 0.0, -4.0], [2.0, 0.0, 7.0]];
         let mut x = vec![[0.0; 3]; 2];
-        solve(m, &[1.0 / 3.0, 0.5], &b, &mut x, 1e-14, 100).unwrap();
+        solve(m, &[1.0 / 3.0, 0.5], &b, &mut x, 1e-14, 100, Cancel::never()).unwrap();
         for k in 0..3 {
             assert!((3.0 * x[0][k] + x[1][k] - b[0][k]).abs() < 1e-12);
             assert!((0.5 * x[0][k] + 2.0 * x[1][k] - b[1][k]).abs() < 1e-12);
         }
         assert_eq!(x[0][1], 0.0);
+    }
+
+    #[test]
+    fn stops_when_cancelled() {
+        let m = |v: &[Col3], out: &mut [Col3]| out.copy_from_slice(v);
+        let cancel = Cancel::new();
+        cancel.request();
+        let mut x = vec![[0.0; 3]; 1];
+        assert_eq!(solve(m, &[1.0], &[[1.0; 3]], &mut x, 1e-14, 100, &cancel), Err(Error::Interrupted));
     }
 }

@@ -11,12 +11,14 @@ pub mod clean;
 pub mod meshlab;
 pub mod operator;
 pub mod options;
+pub mod range;
 pub mod trimesh;
 pub mod volume;
 
 use rayon::prelude::*;
 
-use crate::error::Result;
+use crate::cancel::Cancel;
+use crate::error::{Error, Result};
 use crate::huge_pages;
 use crate::mesh::reorder::{self, Reordering};
 use crate::mesh::Adjacency;
@@ -89,15 +91,91 @@ pub fn smooth<T: Real>(
     plan: &Plan,
     pinned: Option<&[bool]>,
 ) -> Result<Vec<Vec3<T>>> {
+    smooth_cancellable(x0, faces, plan, pinned, Cancel::never(), None)
+}
+
+/// `smooth`, stopping with `Error::Interrupted` at the next step (or solver iteration) after
+/// `cancel` is raised. Meshes of any scale are handled (see `range`); a result that is not
+/// finite in the input's dtype is refused rather than returned. `largest` is the largest
+/// absolute coordinate of `x0` if the caller already has it (it saves a pass over `x0`).
+pub fn smooth_cancellable<T: Real>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    plan: &Plan,
+    pinned: Option<&[bool]>,
+    cancel: &Cancel,
+    largest: Option<f64>,
+) -> Result<Vec<Vec3<T>>> {
     if plan.iterations == 0 {
         return Ok(x0.to_vec());
     }
+    let out = match range::Pow2::to_fit(x0, largest) {
+        None => smooth_any_order(x0, faces, plan, pinned, cancel, None)?,
+        Some(s) => {
+            let scaled = s.scale(x0);
+            let mut out = smooth_any_order(&scaled, faces, plan, pinned, cancel, Some(s))?;
+            s.restore(x0, &scaled, &mut out);
+            out
+        }
+    };
+    if may_grow(plan) && !range::all_finite(&out) {
+        return Err(overflow_error::<T>(x0, plan));
+    }
+    Ok(out)
+}
+
+/// Whether a result can leave the input's bounding box (and so, in principle, the dtype's
+/// range). The clean and paper Laplacians cannot: each step is a convex combination of
+/// neighbours (see `clean`), so they skip the final check.
+fn may_grow(plan: &Plan) -> bool {
+    !(plan.method == Method::Laplacian
+        && matches!(plan.preset, Preset::Clean | Preset::Paper)
+        && !plan.volume_constraint)
+}
+
+/// The error for a result that overflowed the dtype: the input was too close to its largest
+/// value, or (Taubin, HC, implicit with a volume constraint) very many iterations let it grow.
+fn overflow_error<T: Real>(x0: &[Vec3<T>], plan: &Plan) -> Error {
+    let largest = T::max_value().to_f64();
+    let dtype = if largest > f32::MAX as f64 { "float64" } else { "float32" };
+    if range::largest_coordinate(x0) > largest / 16.0 {
+        Error::invalid(
+            "vertices",
+            format!(
+                "the smoothed positions overflow {dtype}: coordinates must stay below about \
+                 {:.0e} (1/16 of the largest {dtype})",
+                largest / 16.0
+            ),
+        )
+    } else {
+        Error::invalid(
+            "iterations",
+            format!(
+                "the smoothed positions grew past the largest {dtype} after {} iterations \
+                 (Taubin and HC amplify the lowest frequencies slightly at every step): use \
+                 fewer iterations",
+                plan.iterations
+            ),
+        )
+    }
+}
+
+/// `x0` smoothed in the vertex order that suits it best. `scale` is the power of two `x0` was
+/// scaled by, if any, for the one rule stated in absolute units (trimesh's distance floor).
+fn smooth_any_order<T: Real>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    plan: &Plan,
+    pinned: Option<&[bool]>,
+    cancel: &Cancel,
+    scale: Option<range::Pow2>,
+) -> Result<Vec<Vec3<T>>> {
     if x0.len() < reorder::MIN_VERTICES || !reorder::is_scattered(faces) {
-        return smooth_in_order(x0, faces, plan, pinned);
+        return smooth_in_order(x0, faces, plan, pinned, cancel, scale);
     }
     let r = Reordering::spatial(x0);
     let pinned = pinned.map(|p| r.mask(p));
-    let out = smooth_in_order(&r.positions(x0), &r.faces(faces), plan, pinned.as_deref())?;
+    let out = smooth_in_order(&r.positions(x0), &r.faces(faces), plan, pinned.as_deref(), cancel, scale)?;
     Ok(r.restore(out))
 }
 
@@ -106,6 +184,8 @@ fn smooth_in_order<T: Real>(
     faces: &[[u32; 3]],
     plan: &Plan,
     pinned: Option<&[bool]>,
+    cancel: &Cancel,
+    scale: Option<range::Pow2>,
 ) -> Result<Vec<Vec3<T>>> {
     let mut adj = Adjacency::build(x0.len(), faces)?;
     if plan.weights == Weights::Cotangent {
@@ -126,7 +206,10 @@ fn smooth_in_order<T: Real>(
             }
         }
         Preset::Trimesh => Source::Fixed(match plan.weights {
-            Weights::Distance => trimesh::distance(&adj, x0, pinned),
+            Weights::Distance => {
+                let floor = scale.map_or(trimesh::DISTANCE_FLOOR, |s| s.length(trimesh::DISTANCE_FLOOR));
+                trimesh::distance(&adj, x0, pinned, floor)
+            }
             _ => trimesh::uniform(&adj, faces, pinned),
         }),
         Preset::Pymeshlab => {
@@ -149,12 +232,14 @@ fn smooth_in_order<T: Real>(
             }
         }
     };
-    let volume = if plan.volume_constraint { VolumeConstraint::new(x0, faces) } else { None };
+    let rule = if plan.preset == Preset::Trimesh { volume::Rule::Trimesh } else { volume::Rule::Enclosed };
+    let volume = if plan.volume_constraint { VolumeConstraint::new(x0, faces, rule) } else { None };
     let mut x = Steps::new(x0);
     let mut scratch = clean::Scratch::default();
     let mut slot: Option<Operator> = None;
     let mut hc_buf = HcBuffers::default();
     for it in 0..plan.iterations {
+        cancel.check()?;
         match plan.method {
             Method::Laplacian => {
                 x.step(|src, out| {
@@ -163,6 +248,7 @@ fn smooth_in_order<T: Real>(
             }
             Method::Taubin => {
                 for f in taubin_factors(plan, it) {
+                    cancel.check()?;
                     x.step(|src, out| {
                         source.explicit_step(&adj, src, out, f, faces, &mut scratch, &mut slot)
                     });
@@ -178,7 +264,7 @@ fn smooth_in_order<T: Real>(
             }
             Method::Implicit => {
                 let op = source.at(&adj, x.current(), faces, &mut scratch, &mut slot);
-                implicit_step(&adj, op, x.owned(), plan.step, plan.tol, plan.max_iter)?;
+                implicit_step(&adj, op, x.owned(), plan.step, plan.tol, plan.max_iter, cancel)?;
             }
         }
         if let Some(vc) = &volume {
@@ -339,6 +425,7 @@ fn implicit_step<T: Real>(
     s: f64,
     tol: f64,
     max_iter: u32,
+    cancel: &Cancel,
 ) -> Result<()> {
     let n = x.len();
     let inv_diag: Vec<f64> =
@@ -359,7 +446,7 @@ fn implicit_step<T: Real>(
         });
     };
     let mut d = vec![[0.0f64; 3]; n];
-    bicgstab::solve(matvec, &inv_diag, &rhs, &mut d, tol, max_iter)?;
+    bicgstab::solve(matvec, &inv_diag, &rhs, &mut d, tol, max_iter, cancel)?;
     // A vertex that never moves has the equation d_i = 0 exactly; the iterative solution
     // only approximates it, so such rows are left untouched.
     x.par_iter_mut().zip(d.par_iter()).enumerate().for_each(|(i, (p, di))| {

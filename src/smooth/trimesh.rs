@@ -48,11 +48,15 @@ pub fn uniform(adj: &Adjacency, faces: &[[u32; 3]], pinned: Option<&[bool]>) -> 
     })
 }
 
-pub fn distance<T: Real>(adj: &Adjacency, x: &[Vec3<T>], pinned: Option<&[bool]>) -> Operator {
+/// trimesh's floor on an edge length for inverse-distance weights, in the mesh's units.
+pub const DISTANCE_FLOOR: f64 = 1e-6;
+
+/// Inverse-distance rows; `floor` is `DISTANCE_FLOOR` at the scale `x` is given in.
+pub fn distance<T: Real>(adj: &Adjacency, x: &[Vec3<T>], pinned: Option<&[bool]>, floor: f64) -> Operator {
     Operator::from_rows(adj, pinned, |i, row| {
         let xi = real::to_f64(x[i]);
         for (r, &j) in row.iter_mut().zip(adj.neighbours(i)) {
-            *r = 1.0 / real::norm(real::sub(xi, real::to_f64(x[j as usize]))).max(1e-6);
+            *r = 1.0 / real::norm(real::sub(xi, real::to_f64(x[j as usize]))).max(floor);
         }
         let total: f64 = row.iter().sum();
         row.iter_mut().for_each(|r| *r /= total);

@@ -10,14 +10,29 @@ import numpy as np
 _HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def load_obj(path: str) -> Tuple[np.ndarray, np.ndarray]:
+def load_obj(path: "str | os.PathLike[str]") -> Tuple[np.ndarray, np.ndarray]:
     """Reads the vertices and faces of a Wavefront OBJ file.
 
     Returns (V, F): (N, 3) float64 positions and (M, 3) int64 triangles (polygons are split
     into fans; texture and normal indices are ignored; negative indices count from the end).
+
+    Raises:
+        TypeError: ``path`` is not a str, bytes or ``os.PathLike``.
+        OSError: the file cannot be read (``FileNotFoundError`` when it does not exist).
+        ValueError: the file is not an OBJ this reader understands, naming ``path``.
     """
+    if not isinstance(path, (str, bytes, os.PathLike)):
+        raise TypeError(f"path: expected a file path (str or os.PathLike), got {type(path).__name__} {path!r}")
     with open(path, "rb") as f:
-        lines = f.read().split(b"\n")
+        data = f.read()
+    try:
+        return _parse_obj(data)
+    except (ValueError, IndexError) as exc:
+        raise ValueError(f"path: {os.fsdecode(path)!r} is not an OBJ mesh this reader understands ({exc})") from None
+
+
+def _parse_obj(data: bytes) -> Tuple[np.ndarray, np.ndarray]:
+    lines = data.split(b"\n")
     v = b" ".join(line[2:] for line in lines if line.startswith(b"v "))
     V = np.array(v.split(), dtype=np.float64).reshape(-1, 3)
     tris: List[List[int]] = []

@@ -1,0 +1,764 @@
+"""Every public function and class parameter against bad values, from one table.
+
+For each parameter the table says what kind of value it takes (a flag, a number in a range, an
+integer in a range, a name from a list, an array of some shape and dtype); the probes for that
+kind (wrong type, NaN, inf, negative, zero, huge, empty, wrong shape, wrong dtype, big-endian)
+are generated from it, each with the outcome the documented rules promise:
+
+- a legal value gives a result with finite floats (a non-finite probe may give non-finite
+  floats only where a filter passes them through, as Sobel does);
+- anything else raises TypeError, ValueError or IndexError whose message starts with the
+  parameter's name ("name: ...", or "a, b: ..." for arguments that only make sense together);
+  a legal value may also raise a documented domain exception such as ConvergenceError;
+- nothing crashes or hangs, and the next valid call gives the same result as before.
+
+To cover another function (the renderer's, say), add a `Case` to `CASES`.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import time
+from dataclasses import dataclass, field
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+import pytest
+
+import toonmesh as tm
+from toonmesh import edges as te
+from toonmesh.data import load_obj
+
+# ------------------------------------------------------------------------------------------------
+# What a parameter takes
+
+
+OK = "ok"  # the outcome of a legal value
+
+
+@dataclass(frozen=True)
+class Flag:
+    """True/False or a NumPy bool."""
+
+
+@dataclass(frozen=True)
+class Number:
+    """An int or float (or NumPy number) in [lo, hi] (open ends where asked); never NaN."""
+
+    lo: float
+    hi: float
+    open_lo: bool = False
+    open_hi: bool = False
+    # Probing values above this would take long (they are legal, so they would run).
+    slow_above: float = math.inf
+
+    def legal(self, v: float) -> bool:
+        if math.isnan(v):
+            return False
+        above = v > self.lo if self.open_lo else v >= self.lo
+        below = v < self.hi if self.open_hi else v <= self.hi
+        return above and below
+
+
+@dataclass(frozen=True)
+class Integer:
+    """An int (or NumPy integer) in [lo, hi]; an int beyond 64 bits is refused with ValueError."""
+
+    lo: int
+    hi: int
+    slow_above: float = math.inf
+
+    def legal(self, v: int) -> bool:
+        return self.lo <= v <= self.hi
+
+    def representable(self, v: int) -> bool:
+        # an unsigned 64-bit parameter (a seed) takes [0, 2**64), a signed one [-2**63, 2**63)
+        return 0 <= v < 2**64 if self.lo >= 0 and self.hi >= 2**63 else -(2**63) <= v < 2**63
+
+
+@dataclass(frozen=True)
+class Name:
+    """A str from `valid` (case-insensitively where `any_case`)."""
+
+    valid: Tuple[str, ...]
+    invalid: Tuple[str, ...] = ()  # names that exist elsewhere but not for this function
+    any_case: bool = False
+
+
+@dataclass(frozen=True)
+class Array:
+    """An array argument; `probes` lists (label, value, expected outcome)."""
+
+    probes: Tuple[Tuple[str, Any, Any], ...]
+
+
+@dataclass
+class Param:
+    name: str
+    kind: Any
+    none: Any = TypeError  # what None gives: OK (the default) or an exception
+    # Extra legal outcomes for legal values (e.g. ConvergenceError for a tiny max_iter).
+    also: Tuple[type, ...] = ()
+
+
+@dataclass
+class Case:
+    """One public function or method: `call(**kwargs)` with `base` kwargs being a valid call."""
+
+    name: str
+    call: Callable[..., Any]
+    base: Dict[str, Any]
+    params: List[Param]
+    # Exceptions a legal probe may raise besides none (documented domain errors).
+    also: Tuple[type, ...] = ()
+
+
+# ------------------------------------------------------------------------------------------------
+# Probes per kind
+
+
+def number_probes(p: Param) -> List[Tuple[str, Any, Any]]:
+    k: Number = p.kind
+    finite_lo = k.lo if math.isfinite(k.lo) else -1e3
+    finite_hi = k.hi if math.isfinite(k.hi) else 1e3
+    mid = 0.5 * (finite_lo + finite_hi)
+    values: List[Tuple[str, Any]] = [
+        ("nan", float("nan")),
+        ("inf", float("inf")),
+        ("-inf", float("-inf")),
+        ("negative", -1.0),
+        ("zero", 0.0),
+        ("int zero", 0),
+        ("lo", k.lo),
+        ("hi", k.hi),
+        ("mid", mid),
+        ("huge float", 1e308),
+        ("huge int", 2**63),
+        ("int beyond float", 10**400),
+        ("numpy float32", np.float32(mid)),
+        ("numpy int", np.int64(round(mid))),
+        ("numpy nan", np.float64("nan")),
+    ]
+    out: List[Tuple[str, Any, Any]] = []
+    for label, v in values:
+        fv = float("inf") if isinstance(v, int) and abs(v) > 1e308 else float(v)
+        if not math.isfinite(fv) and not math.isnan(fv) and isinstance(v, int):
+            out.append((label, v, ValueError))  # an int too large for a float
+            continue
+        legal = k.legal(fv)
+        if legal and fv > k.slow_above:
+            continue
+        out.append((label, v, OK if legal else ValueError))
+    out += [
+        ("bool", True, TypeError),
+        ("numpy bool", np.True_, TypeError),
+        ("string", "1", TypeError),
+        ("list", [mid], TypeError),
+        ("complex", 1 + 0j, TypeError),
+        ("none", None, p.none),
+    ]
+    return out
+
+
+def integer_probes(p: Param) -> List[Tuple[str, Any, Any]]:
+    k: Integer = p.kind
+    out: List[Tuple[str, Any, Any]] = []
+    for label, v in [
+        ("zero", 0),
+        ("negative", -1),
+        ("lo", k.lo),
+        ("hi", k.hi),
+        ("above hi", k.hi + 1),
+        ("below lo", k.lo - 1),
+        ("2**63", 2**63),
+        ("-2**63-1", -(2**63) - 1),
+        ("2**64", 2**64),
+        ("numpy int8", np.int8(min(max(k.lo, 0), 100))),
+        ("numpy uint64 max", np.uint64(2**64 - 1)),
+    ]:
+        iv = int(v)
+        if not k.representable(iv):
+            out.append((label, v, ValueError))
+            continue
+        legal = k.legal(iv)
+        if legal and iv > k.slow_above:
+            continue
+        out.append((label, v, OK if legal else ValueError))
+    out += [
+        ("float", 2.5, TypeError),
+        ("integral float", 2.0, TypeError),
+        ("nan", float("nan"), TypeError),
+        ("bool", True, TypeError),
+        ("numpy bool", np.False_, TypeError),
+        ("string", "3", TypeError),
+        ("none", None, p.none),
+    ]
+    return out
+
+
+def flag_probes(p: Param) -> List[Tuple[str, Any, Any]]:
+    return [
+        ("True", True, OK),
+        ("False", False, OK),
+        ("numpy True", np.True_, OK),
+        ("numpy False", np.bool_(False), OK),
+        ("one", 1, TypeError),
+        ("zero", 0, TypeError),
+        ("string no", "no", TypeError),
+        ("empty string", "", TypeError),
+        ("list", [True], TypeError),
+        ("0-d array", np.array(True), TypeError),
+        ("none", None, p.none),
+    ]
+
+
+def name_probes(p: Param) -> List[Tuple[str, Any, Any]]:
+    k: Name = p.kind
+    out: List[Tuple[str, Any, Any]] = [(v, v, OK) for v in k.valid]
+    out += [(f"{v} (not here)", v, ValueError) for v in k.invalid]
+    out += [
+        ("upper case", k.valid[0].upper(), OK if k.any_case else ValueError),
+        ("unknown", "bogus", ValueError),
+        ("empty", "", ValueError),
+        ("int", 3, TypeError),
+        ("bytes", k.valid[0].encode(), TypeError),
+        ("list", [k.valid[0]], TypeError),
+        ("none", None, p.none),
+    ]
+    return out
+
+
+def probes(p: Param) -> List[Tuple[str, Any, Any]]:
+    kind = p.kind
+    if isinstance(kind, Number):
+        return number_probes(p)
+    if isinstance(kind, Integer):
+        return integer_probes(p)
+    if isinstance(kind, Flag):
+        return flag_probes(p)
+    if isinstance(kind, Name):
+        return name_probes(p)
+    return list(kind.probes) + [("none", None, p.none)]
+
+
+# ------------------------------------------------------------------------------------------------
+# Array probes
+
+
+V, F = tm.shapes.icosphere(1, noise=0.05, seed=2)  # 42 vertices, 80 faces
+N = len(V)
+
+
+def _with(a: np.ndarray, where: Tuple[int, int], value: float) -> np.ndarray:
+    b = a.copy()
+    b[where] = value
+    return b
+
+
+VERTICES = Array(
+    (
+        ("float64", V, OK),
+        ("float32", V.astype(np.float32), OK),
+        ("big-endian float64", V.astype(">f8"), OK),
+        ("big-endian float32", V.astype(">f4"), OK),
+        ("fortran order", np.asfortranarray(V), OK),
+        ("strided view", np.repeat(V, 2, axis=1)[:, ::2], OK),
+        ("nested list", V.tolist(), OK),
+        ("huge but finite", V * 1e307, OK),
+        ("tiny", V * 1e-310, OK),
+        ("int64", V.astype(np.int64), TypeError),
+        ("float16", V.astype(np.float16), TypeError),
+        ("complex", V.astype(complex), TypeError),
+        ("bool", V > 0, TypeError),
+        ("strings", V.astype(str), TypeError),
+        ("object", V.astype(object), TypeError),
+        ("a string", "vertices", TypeError),
+        ("nan", _with(V, (3, 1), np.nan), ValueError),
+        ("inf", _with(V, (3, 1), np.inf), ValueError),
+        ("-inf", _with(V, (0, 0), -np.inf), ValueError),
+        ("shape (N, 2)", V[:, :2].copy(), ValueError),
+        ("shape (N, 4)", np.hstack([V, V[:, :1]]), ValueError),
+        ("shape (N, 3, 1)", V[:, :, None].copy(), ValueError),
+        ("flat", V.ravel().copy(), ValueError),
+        ("empty", np.zeros((0, 3)), ValueError),
+        ("scalar", np.float64(1.0), ValueError),
+        ("ragged list", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
+    )
+)
+
+FACES = Array(
+    (
+        ("int64", F, OK),
+        ("int32", F.astype(np.int32), OK),
+        ("uint32", F.astype(np.uint32), OK),
+        ("uint64", F.astype(np.uint64), OK),
+        ("big-endian int32", F.astype(">i4"), OK),
+        ("big-endian uint64", F.astype(">u8"), OK),
+        ("fortran order", np.asfortranarray(F), OK),
+        ("nested list", F.tolist(), OK),
+        ("one face", F[:1].copy(), OK),
+        ("repeated index", np.vstack([F, [[0, 0, 1]]]), OK),
+        ("int8", F.astype(np.int8), TypeError),
+        ("float", F.astype(float), TypeError),
+        ("bool", F > 0, TypeError),
+        ("strings", F.astype(str), TypeError),
+        ("negative index", _with(F, (5, 2), -1), IndexError),
+        ("index N", _with(F, (5, 2), N), IndexError),
+        ("index 2**40", _with(F, (5, 2), 2**40), IndexError),
+        ("uint64 2**63", _with(F.astype(np.uint64), (0, 0), 2**63), IndexError),
+        ("shape (M, 4)", np.hstack([F, F[:, :1]]), ValueError),
+        ("shape (M, 2)", F[:, :2].copy(), ValueError),
+        ("flat", F.ravel().copy(), ValueError),
+        ("empty", np.zeros((0, 3), np.int64), ValueError),
+        ("a string", "faces", TypeError),
+    )
+)
+
+PINNED = Array(
+    (
+        ("indices", np.array([0, 5]), OK),
+        ("list", [0, 5], OK),
+        ("tuple of bools", tuple(i < 3 for i in range(N)), OK),
+        ("bool mask", np.arange(N) < 3, OK),
+        ("int8", np.array([1], np.int8), OK),
+        ("uint16", np.array([1], np.uint16), OK),
+        ("big-endian int32", np.array([1, 2], ">i4"), OK),
+        ("uint64", np.array([1], np.uint64), OK),
+        ("empty list", [], OK),
+        ("empty float array", np.array([]), OK),
+        ("all", np.arange(N), OK),
+        ("negative", np.array([-1]), IndexError),
+        ("index N", np.array([N]), IndexError),
+        ("uint64 max", np.array([2**64 - 1], np.uint64), IndexError),
+        ("float", np.array([1.0]), TypeError),
+        ("strings", np.array(["1"]), TypeError),
+        ("mask too short", np.ones(N - 1, bool), ValueError),
+        ("2-D array", np.array([[0, 1]]), ValueError),
+        ("2-D list", [[0, 1]], TypeError),
+        ("scalar", 3, TypeError),
+    )
+)
+
+
+def vec3(name: str, zero: Any) -> Array:
+    return Array(
+        (
+            ("tuple", (0.3, 0.2, 5.0), OK),
+            ("ints", (0, 0, 5), OK),
+            ("array", np.array([0.3, 0.2, 5.0]), OK),
+            ("float32 array", np.array([0.3, 0.2, 5.0], np.float32), OK),
+            ("big-endian array", np.array([0.3, 0.2, 5.0], ">f8"), OK),
+            ("numpy scalars", (np.float32(0.3), np.int64(0), np.float64(5)), OK),
+            ("huge", (1e300, 0.0, 5.0), OK),
+            ("zero", (0, 0, 0), zero),
+            ("nan", (0.0, float("nan"), 5.0), ValueError),
+            ("inf", (0.0, 0.0, float("inf")), ValueError),
+            ("two numbers", (0.0, 5.0), ValueError),
+            ("four numbers", (0.0, 0.0, 5.0, 1.0), ValueError),
+            ("shape (1, 3)", np.array([[0.0, 0.0, 5.0]]), (TypeError, ValueError)),
+            ("bools", (True, False, True), TypeError),
+            ("strings", ("0", "0", "5"), TypeError),
+            ("a string", "abc", TypeError),
+            ("bool array", np.array([True, False, True]), TypeError),
+            ("scalar", 5.0, TypeError),
+        )
+    )
+
+
+EDGE_PAIRS = np.array([[0, 1], [1, 2], [2, 0], [3, 4]])
+
+EDGES = Array(
+    (
+        ("int64", EDGE_PAIRS, OK),
+        ("int32", EDGE_PAIRS.astype(np.int32), OK),
+        ("uint8", EDGE_PAIRS.astype(np.uint8), OK),
+        ("big-endian", EDGE_PAIRS.astype(">i8"), OK),
+        ("list", EDGE_PAIRS.tolist(), OK),
+        ("empty", np.zeros((0, 2), np.int64), OK),
+        ("empty list", [], OK),
+        ("float", EDGE_PAIRS.astype(float), TypeError),
+        ("bool", EDGE_PAIRS > 1, TypeError),
+        ("negative", np.array([[0, -1]]), IndexError),
+        ("huge", np.array([[0, 2**40]]), IndexError),
+        ("shape (K, 3)", np.array([[0, 1, 2]]), ValueError),
+        ("flat", np.array([0, 1]), ValueError),
+        ("a string", "edges", TypeError),
+    )
+)
+
+# segments: an index past the vertices is out of range too
+SEGMENT_EDGES = Array(EDGES.probes + (("index N", np.array([[0, N]]), IndexError),))
+
+IMG = np.random.default_rng(3).random((9, 11))
+
+IMAGES = Array(
+    (
+        ("float64", IMG, OK),
+        ("float32", IMG.astype(np.float32), OK),
+        ("float16", IMG.astype(np.float16), OK),
+        ("big-endian", IMG.astype(">f8"), OK),
+        ("uint8", (IMG * 255).astype(np.uint8), OK),
+        ("int16", (IMG * 1000).astype(np.int16), OK),
+        ("bool", IMG > 0.5, OK),
+        ("channels", np.dstack([IMG, IMG, IMG]), OK),
+        ("fortran order", np.asfortranarray(IMG), OK),
+        ("list", IMG.tolist(), OK),
+        ("one pixel", IMG[:1, :1].copy(), OK),
+        ("huge values", IMG * 1e300, OK),
+        ("tiny values", IMG * 1e-300, OK),
+        ("nan pixel", _with(IMG, (2, 2), np.nan), "nonfinite ok"),
+        ("inf pixel", _with(IMG, (2, 2), np.inf), "nonfinite ok"),
+        ("complex", IMG.astype(complex), TypeError),
+        ("strings", IMG.astype(str), TypeError),
+        ("object", IMG.astype(object), TypeError),
+        ("1-D", IMG[0].copy(), ValueError),
+        ("4-D", IMG[None, :, :, None].copy(), ValueError),
+        ("empty", np.zeros((0, 4)), ValueError),
+        ("a string", "image", TypeError),
+    )
+)
+
+MASKS = Array(
+    (
+        ("bool", IMG > 0.3, OK),
+        ("uint8", (IMG > 0.3).astype(np.uint8), OK),
+        ("wrong shape", np.ones((3, 3), bool), ValueError),
+        ("strings", (IMG > 0.3).astype(str), TypeError),
+        ("a string", "mask", TypeError),
+    )
+)
+
+NORMAL_BUF = np.dstack([IMG, 1 - IMG, np.ones_like(IMG)]).astype(np.float32)
+DEPTH_BUF = 1.0 + IMG
+
+
+def buffers(name: str, good: np.ndarray) -> Array:
+    bg = good.copy()
+    bg[0, 0] = np.inf
+    # A depth buffer of another size than the normal buffer is refused naming depth.
+    mismatch = (("wrong size", good[:4], ValueError),) if name == "depth" else ()
+    return Array(
+        mismatch
+        + (
+            ("float64", good.astype(np.float64), OK),
+            ("float32", good.astype(np.float32), OK),
+            ("big-endian", good.astype(">f8"), OK),
+            ("int", (good * 10).astype(np.int32), OK),
+            ("inf background", bg, "nonfinite ok"),
+            ("complex", good.astype(complex), TypeError),
+            ("strings", good.astype(str), TypeError),
+            ("empty", good[:0], ValueError),
+            ("1-D", good.ravel()[:5].copy(), ValueError),
+            ("a string", name, TypeError),
+        )
+    )
+
+
+def _obj_file(tmp: str, text: str) -> str:
+    path = os.path.join(tmp, f"mesh{abs(hash(text))}.obj")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+# ------------------------------------------------------------------------------------------------
+# The table
+
+
+def _mesh(**kw: Any) -> Dict[str, Any]:
+    return dict(vertices=V, faces=F, **kw)
+
+
+SMOOTH_COMMON = [
+    Param("vertices", VERTICES),
+    Param("faces", FACES, none=TypeError),
+    Param("weights", Name(("uniform", "cotangent", "distance"), any_case=True), none=OK),
+    Param("boundary", Name(("fixed", "free", "slide"), any_case=True), none=OK),
+    Param("pinned", PINNED, none=OK),
+    Param("preset", Name(("trimesh", "pymeshlab"), any_case=True), none=OK),
+]
+ITERATIONS = Param("iterations", Integer(0, 10**6, slow_above=1000), none=OK)
+UNIT = Number(0.0, 1.0)
+
+EDGE_INDEX = te.EdgeIndex(V, F)
+
+CASES: List[Case] = [
+    Case(
+        "smooth.laplacian",
+        tm.smooth.laplacian,
+        _mesh(),
+        SMOOTH_COMMON
+        + [ITERATIONS, Param("lamb", UNIT, none=OK), Param("volume_constraint", Flag(), none=OK)],
+    ),
+    Case(
+        "smooth.taubin",
+        tm.smooth.taubin,
+        _mesh(),
+        SMOOTH_COMMON + [ITERATIONS, Param("lamb", UNIT, none=OK), Param("mu", Number(-1.0, 0.0), none=OK)],
+    ),
+    Case(
+        "smooth.hc",
+        tm.smooth.hc,
+        _mesh(),
+        SMOOTH_COMMON
+        + [ITERATIONS, Param("alpha", UNIT, none=OK), Param("beta", UNIT, none=OK)],
+    ),
+    Case(
+        "smooth.implicit",
+        tm.smooth.implicit,
+        _mesh(),
+        [
+            Param("vertices", VERTICES),
+            Param("faces", FACES, none=TypeError),
+            Param("weights", Name(("uniform", "cotangent", "distance"), any_case=True), none=OK),
+            Param("boundary", Name(("fixed", "free"), invalid=("slide",), any_case=True), none=OK),
+            Param("pinned", PINNED, none=OK),
+            Param("preset", Name(("trimesh",), invalid=("pymeshlab", "paper"), any_case=True), none=OK),
+            Param("iterations", Integer(0, 10**6, slow_above=20), none=OK),
+            Param("step", Number(0.0, 1e12), none=OK),
+            Param("tol", Number(0.0, 1.0, open_lo=True, open_hi=True), none=OK),
+            Param("max_iter", Integer(1, 10**7), none=OK),
+            Param("volume_constraint", Flag(), none=OK),
+        ],
+        also=(tm.ConvergenceError,),
+    ),
+    Case(
+        "edges.feature_edges",
+        te.feature_edges,
+        _mesh(crease_angle=20.0, weld=False),
+        [
+            Param("vertices", VERTICES),
+            Param("faces", FACES),
+            Param("crease_angle", Number(0.0, 180.0)),
+            Param("weld", Flag()),
+        ],
+    ),
+    Case(
+        "edges.silhouette",
+        te.silhouette,
+        _mesh(eye=(0.3, 0.2, 5.0), weld=False),
+        [
+            Param("vertices", VERTICES),
+            Param("faces", FACES),
+            Param("eye", vec3("eye", OK), none=ValueError),
+            Param("weld", Flag()),
+        ],
+    ),
+    Case(
+        "edges.silhouette(direction=)",
+        te.silhouette,
+        _mesh(direction=(0.3, 0.2, -1.0)),
+        [Param("direction", vec3("direction", ValueError), none=ValueError)],
+    ),
+    Case(
+        "edges.EdgeIndex",
+        te.EdgeIndex,
+        _mesh(crease_angle=20.0, weld=False),
+        [
+            Param("vertices", VERTICES),
+            Param("faces", FACES),
+            Param("crease_angle", Number(0.0, 180.0)),
+            Param("weld", Flag()),
+        ],
+    ),
+    Case(
+        "edges.EdgeIndex.feature_edges",
+        EDGE_INDEX.feature_edges,
+        dict(crease_angle=20.0),
+        [Param("crease_angle", Number(0.0, 180.0))],
+    ),
+    Case(
+        "edges.EdgeIndex.silhouette",
+        EDGE_INDEX.silhouette,
+        dict(eye=(0.3, 0.2, 5.0)),
+        [Param("eye", vec3("eye", OK), none=ValueError)],
+    ),
+    Case(
+        "edges.EdgeIndex.outlines",
+        EDGE_INDEX.outlines,
+        dict(direction=(0.3, 0.2, -1.0), kinds=False),
+        [Param("direction", vec3("direction", ValueError), none=ValueError), Param("kinds", Flag())],
+    ),
+    Case(
+        "edges.EdgeIndex.segments",
+        EDGE_INDEX.segments,
+        dict(edges=EDGE_PAIRS),
+        [Param("edges", SEGMENT_EDGES)],
+    ),
+    Case("edges.chains", te.chains, dict(edges=EDGE_PAIRS), [Param("edges", EDGES)]),
+    Case(
+        "edges.segments",
+        te.segments,
+        dict(vertices=V, edges=EDGE_PAIRS),
+        [Param("vertices", VERTICES), Param("edges", SEGMENT_EDGES)],
+    ),
+    *[
+        Case(
+            f"edges.{f.__name__}",
+            f,
+            dict(image=IMG, mask=None, convention="skimage"),
+            [
+                Param("image", IMAGES),
+                Param("mask", MASKS, none=OK),
+                Param("convention", Name(("skimage", "opencv"))),
+            ],
+        )
+        for f in (te.sobel, te.sobel_h, te.sobel_v)
+    ],
+    Case(
+        "edges.detect_edges",
+        te.detect_edges,
+        dict(normal=NORMAL_BUF, depth=DEPTH_BUF, normal_threshold=1.0, depth_threshold=0.1),
+        [
+            Param("normal", buffers("normal", NORMAL_BUF), none=OK),
+            Param("depth", buffers("depth", DEPTH_BUF), none=OK),
+            Param("normal_threshold", Number(0.0, math.inf, open_hi=True)),
+            Param("depth_threshold", Number(0.0, math.inf, open_hi=True)),
+        ],
+    ),
+    Case(
+        "shapes.icosphere",
+        tm.shapes.icosphere,
+        dict(subdivisions=1, noise=0.1, seed=0),
+        [
+            Param("subdivisions", Integer(0, 10, slow_above=4)),
+            Param("noise", Number(0.0, math.inf, open_hi=True)),
+            Param("seed", Integer(0, 2**64 - 1)),
+        ],
+    ),
+    Case(
+        "shapes.grid",
+        tm.shapes.grid,
+        dict(n=5, noise=0.1, seed=0),
+        [
+            Param("n", Integer(2, 4096, slow_above=64)),
+            Param("noise", Number(0.0, math.inf, open_hi=True)),
+            Param("seed", Integer(0, 2**64 - 1)),
+        ],
+    ),
+    Case(
+        "set_num_threads",
+        tm.set_num_threads,
+        dict(n=0),
+        [Param("n", Integer(0, 1024, slow_above=8))],
+    ),
+]
+
+
+# ------------------------------------------------------------------------------------------------
+# Running the probes
+
+
+def _finite_floats(result: Any) -> bool:
+    """Every float array inside `result` (tuples, lists, dataclasses, an EdgeIndex) is finite."""
+    if isinstance(result, te.EdgeIndex):
+        return _finite_floats(result.features) and _finite_floats(result.face_normals)
+    if isinstance(result, np.ndarray):
+        return result.dtype.kind != "f" or bool(np.isfinite(result).all())
+    if isinstance(result, (tuple, list)):
+        return all(_finite_floats(r) for r in result)
+    if hasattr(result, "__dataclass_fields__"):
+        return all(_finite_floats(getattr(result, k)) for k in result.__dataclass_fields__)
+    return True
+
+
+def _same(a: Any, b: Any) -> bool:
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and np.array_equal(a, b, equal_nan=True)
+    if isinstance(a, (tuple, list)):
+        return type(a) is type(b) and len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b))
+    if hasattr(a, "__dataclass_fields__"):
+        return all(_same(getattr(a, k), getattr(b, k)) for k in a.__dataclass_fields__)
+    if isinstance(a, te.EdgeIndex):
+        return _same(a.features, b.features)
+    return bool(a == b) if a is not None else b is None
+
+
+ALL_PROBES = [
+    pytest.param(case, p, label, value, expected, id=f"{case.name}:{p.name}={label}")
+    for case in CASES
+    for p in case.params
+    for label, value, expected in probes(p)
+]
+
+_REFERENCE: Dict[str, Any] = {}
+
+
+def _reference(case: Case) -> Any:
+    if case.name not in _REFERENCE:
+        _REFERENCE[case.name] = case.call(**case.base)
+    return _REFERENCE[case.name]
+
+
+@pytest.mark.parametrize("case, param, label, value, expected", ALL_PROBES)
+def test_bad_argument(case: Case, param: Param, label: str, value: Any, expected: Any) -> None:
+    reference = _reference(case)
+    kwargs = dict(case.base, **{param.name: value})
+    legal_errors = tuple(param.also) + tuple(case.also)
+    t0 = time.perf_counter()
+    try:
+        try:
+            result = case.call(**kwargs)
+        except legal_errors if expected in (OK, "nonfinite ok") else () as exc:  # type: ignore[misc]
+            result = exc  # a documented domain error for a legal value
+        except (TypeError, ValueError, IndexError) as exc:
+            assert expected not in (OK, "nonfinite ok"), f"refused a legal value: {type(exc).__name__}: {exc}"
+            assert isinstance(exc, expected), f"expected {expected}, got {type(exc).__name__}: {exc}"
+            # "name: ...", "name[i]: ..." for an element, or "a, b: ..." for arguments that go
+            # together
+            named = [n.split("[")[0] for n in str(exc).split(":")[0].split(", ")]
+            assert param.name in named, f"the message does not start with the name: {exc}"
+            result = exc
+        else:
+            assert expected in (OK, "nonfinite ok"), f"accepted a bad value, expected {expected}"
+            if expected == OK:
+                assert _finite_floats(result), "a legal value gave non-finite floats"
+    finally:
+        if case.name == "set_num_threads":
+            tm.set_num_threads(0)
+    assert time.perf_counter() - t0 < 30.0, "took suspiciously long"
+    # The next valid call still works, and gives the same result as before.
+    assert _same(case.call(**case.base), reference)
+
+
+def test_every_public_callable_is_in_the_table() -> None:
+    """A new public function or class must get its row in CASES (or be listed here as taking no
+    arguments worth probing)."""
+    covered = {c.name.split("(")[0] for c in CASES} | {"data.load_obj"}  # load_obj: see below
+    no_arguments = {"get_num_threads", "data.bunny", "edges.FeatureEdges", "edges.EdgeDetection"}
+    public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
+    public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny"}
+    public |= {"edges.EdgeIndex.feature_edges", "edges.EdgeIndex.silhouette", "edges.EdgeIndex.outlines",
+               "edges.EdgeIndex.segments", "data.load_obj"}
+    missing = public - covered - no_arguments
+    assert missing == set(), f"no bad-argument rows for {sorted(missing)}"
+
+
+# load_obj reads files, so it gets its own probes.
+
+
+@pytest.mark.parametrize(
+    "label, path, expected",
+    [
+        ("int", 3, TypeError),
+        ("none", None, TypeError),
+        ("list", ["a.obj"], TypeError),
+        ("missing file", "no/such/file.obj", FileNotFoundError),
+        ("not an obj", "BAD", ValueError),
+        ("short vertex line", "v 1 2\nf 1 2 3\n", ValueError),
+        ("a good obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", OK),
+    ],
+)
+def test_load_obj_arguments(tmp_path: Any, label: str, path: Any, expected: Any) -> None:
+    if isinstance(path, str) and path.startswith(("v ", "BAD")):
+        path = _obj_file(str(tmp_path), path.replace("BAD", "this is not an obj file\nf a b c\n"))
+    if expected == OK:
+        V2, F2 = load_obj(path)
+        assert V2.shape == (3, 3) and F2.tolist() == [[0, 1, 2]]
+        return
+    with pytest.raises(expected) as info:
+        load_obj(path)
+    if expected is not FileNotFoundError:
+        assert str(info.value).startswith("path:")
+    assert load_obj.__module__ == "toonmesh.data"
