@@ -107,10 +107,11 @@ fn smooth_in_order<T: Real>(
     plan: &Plan,
     pinned: Option<&[bool]>,
 ) -> Result<Vec<Vec3<T>>> {
-    let mut adj = Adjacency::build(x0.len(), faces)?;
-    if plan.weights == Weights::Cotangent {
-        adj = adj.with_corners(faces);
-    }
+    let adj = if plan.weights == Weights::Cotangent {
+        Adjacency::build_with_corners(x0.len(), faces)?
+    } else {
+        Adjacency::build(x0.len(), faces)?
+    };
     // Which vertices the volume constraint may rescale (None: all, as trimesh does).
     let mut rescale_mask: Option<Vec<bool>> = None;
     let source = match plan.preset {
