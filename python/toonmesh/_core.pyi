@@ -54,6 +54,7 @@ def _smooth(
     pinned: Optional[Any] = None,
     volume_constraint: Optional[bool] = None,
     preset: Optional[str] = None,
+    weld: bool = False,
 ) -> npt.NDArray[np.floating[Any]]: ...
 
 # --- rendering (src/py/render.rs); the public API is toonmesh._render ---

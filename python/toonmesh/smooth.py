@@ -23,7 +23,14 @@ included:
     (``laplacian`` only; ``lamb=1``, boundaries free).
 
 An argument a preset does not have (say ``boundary`` with ``preset="trimesh"``) raises
-``ValueError`` instead of being ignored.
+``ValueError`` instead of being ignored. ``weld=True`` works with every preset: the preset's
+algorithm then runs on the welded mesh, as the peer's filter would after merging the duplicate
+vertices.
+
+Seams. A textured or flat-shaded mesh stores a point once per UV island or normal, and those
+copies share no edge: smoothed as they are, the two sides of a seam move apart (cracks) and
+both count as boundaries. ``weld=True`` smooths the welded mesh instead (vertices at exactly
+the same position are one) and gives every copy its position's result.
 
 Degenerate input stays finite. Cotangent weights use ``cot = cos / max(sin, 1e-4)`` per corner
 (``|cot| <= 1e4``), a corner with a zero-length side adds nothing, an edge's weight is clamped at
@@ -55,6 +62,12 @@ _COMMON = """
         Vertices that must not move (a list or tuple works too; an empty one pins nothing).
     preset : None, "trimesh", "pymeshlab" or "paper"
         Reproduce another library's filter (see the module docs). Default None.
+    weld : bool, default False
+        Smooth the welded mesh: vertices at exactly the same position (UV seams, split
+        normals, an STL's per-face copies) are one vertex, so seams neither open into cracks
+        nor count as boundaries, and every copy gets the same result, its position's. A
+        position is pinned when any of its copies is. The result keeps the input's rows (each
+        copy its own). With a preset, the preset's algorithm runs on the welded mesh.
 
     Returns
     -------
@@ -79,6 +92,10 @@ _NAME_OPTIONS = ("weights", "boundary", "preset")
 def _option(name: str, value: Any) -> Any:
     """Checks an option's Python type, so that a wrong one is named in the error (values are
     checked in the core)."""
+    if name == "weld":  # no preset default to fall back on: True or False only
+        if not isinstance(value, (bool, np.bool_)):
+            raise TypeError(f"weld: expected True or False, got {type(value).__name__} {value!r}")
+        return bool(value)
     if value is None:
         return None
     is_bool = isinstance(value, (bool, np.bool_))
@@ -124,6 +141,7 @@ def laplacian(
     pinned: Optional[Any] = None,
     volume_constraint: Optional[bool] = None,
     preset: Optional[str] = None,
+    weld: bool = False,
 ) -> npt.NDArray[np.floating[Any]]:
     """Explicit Laplacian smoothing: ``x <- x + lamb * (A x - x)``, repeated.
 
@@ -150,7 +168,7 @@ def laplacian(
     """
     return _call(
         "laplacian", vertices, faces, iterations=iterations, lamb=lamb, weights=weights,
-        boundary=boundary, pinned=pinned, volume_constraint=volume_constraint, preset=preset,
+        boundary=boundary, pinned=pinned, volume_constraint=volume_constraint, preset=preset, weld=weld,
     )
 
 
@@ -165,6 +183,7 @@ def taubin(
     boundary: Optional[str] = None,
     pinned: Optional[Any] = None,
     preset: Optional[str] = None,
+    weld: bool = False,
 ) -> npt.NDArray[np.floating[Any]]:
     """Taubin (lambda/mu) smoothing, which removes noise without shrinking the mesh.
 
@@ -184,7 +203,7 @@ def taubin(
     """
     return _call(
         "taubin", vertices, faces, iterations=iterations, lamb=lamb, mu=mu, weights=weights,
-        boundary=boundary, pinned=pinned, preset=preset,
+        boundary=boundary, pinned=pinned, preset=preset, weld=weld,
     )
 
 
@@ -199,6 +218,7 @@ def hc(
     boundary: Optional[str] = None,
     pinned: Optional[Any] = None,
     preset: Optional[str] = None,
+    weld: bool = False,
 ) -> npt.NDArray[np.floating[Any]]:
     """HC smoothing (Vollmer, Mencl and Mueller 1999): Laplacian smoothing that pushes each
     vertex back toward its original and previous positions, so the mesh does not shrink.
@@ -225,7 +245,7 @@ def hc(
     """
     return _call(
         "hc", vertices, faces, iterations=iterations, alpha=alpha, beta=beta, weights=weights,
-        boundary=boundary, pinned=pinned, preset=preset,
+        boundary=boundary, pinned=pinned, preset=preset, weld=weld,
     )
 
 
@@ -242,6 +262,7 @@ def implicit(
     pinned: Optional[Any] = None,
     volume_constraint: Optional[bool] = None,
     preset: Optional[str] = None,
+    weld: bool = False,
 ) -> npt.NDArray[np.floating[Any]]:
     """Implicit (backward Euler) Laplacian smoothing: solves ``((1 + step) I - step A) x' = x``.
 
@@ -266,7 +287,7 @@ def implicit(
     return _call(
         "implicit", vertices, faces, step=step, iterations=iterations, tol=tol, max_iter=max_iter,
         weights=weights, boundary=boundary, pinned=pinned, volume_constraint=volume_constraint,
-        preset=preset,
+        preset=preset, weld=weld,
     )
 
 

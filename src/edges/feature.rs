@@ -171,7 +171,7 @@ pub fn feature_edges_from_corners<T: Real>(
     let rule = Classifier::new(positions, normals, crease_angle)?;
     let parts = sweep(
         corners,
-        FeatureEdges::default,
+        |_| FeatureEdges::default(),
         |face| prefetch(normals, face as usize),
         |out, edge, keys| rule.classify(out, edge, keys.iter().map(|&k| FaceUse::unpack(k as u32))),
     );

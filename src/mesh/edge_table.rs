@@ -38,14 +38,15 @@ const CHUNK: usize = 8192;
 const PREFETCH_VERTICES: usize = 4;
 
 /// Sweeps the edges of the mesh whose corner table is `table`: calls `visit(state, [a, b],
-/// keys)` for each edge in lexicographic order, where `keys` are its face-edges as
+/// keys)` for each edge in lexicographic order, with a state per chunk from `init(corners in
+/// the chunk)`, where `keys` are its face-edges as
 /// b << 32 | face << 1 | reversed, ascending (so by face, then direction), within fixed chunks
 /// of vertices that run in parallel; returns each chunk's state, in order. Before a vertex is
 /// swept, `prefetch(face)` sees the faces at a vertex a few ahead, to start loading what the
 /// visitor will need.
 pub fn sweep<S: Send>(
     table: &CornerTable<RingCorner>,
-    init: impl Fn() -> S + Sync,
+    init: impl Fn(usize) -> S + Sync,
     prefetch: impl Fn(u32) + Sync,
     visit: impl Fn(&mut S, [u32; 2], &[u64]) + Sync,
 ) -> Vec<S> {
@@ -54,7 +55,7 @@ pub fn sweep<S: Send>(
         .into_par_iter()
         .map(|c| {
             let (v0, v1) = (c * CHUNK, ((c + 1) * CHUNK).min(n));
-            let mut state = init();
+            let mut state = init((table.start[v1] - table.start[v0]) as usize);
             let mut keys: Vec<u64> = Vec::with_capacity(32);
             for a in v0..v1 {
                 for e in table.at((a + PREFETCH_VERTICES).min(v1 - 1)) {
@@ -98,7 +99,6 @@ pub struct EdgeTable {
 }
 
 /// One sweep chunk's edges, their face-edge tags and how many tags each has.
-#[derive(Default)]
 struct Part {
     edges: Vec<[u32; 2]>,
     tags: Vec<u32>,
@@ -112,9 +112,16 @@ impl EdgeTable {
     }
 
     pub fn from_corners(table: &CornerTable<RingCorner>) -> EdgeTable {
+        // A chunk holds about one face-edge per corner and an edge per two (exactly so on a
+        // closed manifold mesh): room for that, so the parts rarely grow.
+        let room = |corners: usize| Part {
+            edges: Vec::with_capacity(corners / 2 + 64),
+            tags: Vec::with_capacity(corners + 64),
+            counts: Vec::with_capacity(corners / 2 + 64),
+        };
         let parts = sweep(
             table,
-            Part::default,
+            room,
             |_| {},
             |p: &mut Part, edge, keys| {
                 p.edges.push(edge);

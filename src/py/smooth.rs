@@ -23,7 +23,7 @@ fn method(name: &str) -> Result<Method, Error> {
 #[pyo3(signature = (
     method_name, vertices, faces_arr, *, iterations=None, lamb=None, mu=None, alpha=None, beta=None,
     step=None, tol=None, max_iter=None, weights=None, boundary=None, pinned=None,
-    volume_constraint=None, preset=None
+    volume_constraint=None, preset=None, weld=false
 ))]
 #[allow(clippy::too_many_arguments)]
 fn _smooth<'py>(
@@ -44,6 +44,7 @@ fn _smooth<'py>(
     pinned: Option<&Bound<'py, PyAny>>,
     volume_constraint: Option<bool>,
     preset: Option<String>,
+    weld: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
     let m = method(method_name).map_err(to_py)?;
     let args = Args {
@@ -59,6 +60,7 @@ fn _smooth<'py>(
         boundary,
         volume_constraint,
         preset,
+        weld: Some(weld),
     };
     let plan = smooth::resolve(m, &args).map_err(to_py)?;
     let mesh = MeshInput::read(vertices, faces_arr).map_err(to_py)?;

@@ -19,6 +19,7 @@ use rayon::prelude::*;
 use crate::error::Result;
 use crate::huge_pages;
 use crate::mesh::reorder::{self, Reordering};
+use crate::mesh::weld::Merged;
 use crate::mesh::Adjacency;
 use crate::real::{self, Real, Vec3};
 use operator::{from_f64, par_rows_gathering, Operator};
@@ -83,6 +84,10 @@ impl Source {
 }
 
 /// Smooths `x0` as `plan` says. `pinned` marks vertices that must not move.
+///
+/// With `plan.weld`, the mesh smoothed is the welded one (`mesh::weld::Merged`): vertices at
+/// equal positions are one vertex, so seams are neither boundaries nor cracks, a position is
+/// pinned when any of its copies is, and every copy gets its position's result.
 pub fn smooth<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
@@ -92,6 +97,24 @@ pub fn smooth<T: Real>(
     if plan.iterations == 0 {
         return Ok(x0.to_vec());
     }
+    if plan.weld {
+        let merged = Merged::of(x0);
+        if merged.has_copies() {
+            let pinned = pinned.map(|p| merged.any(p));
+            let out = smooth_as_given(&merged.gather(x0), &merged.faces(faces), plan, pinned.as_deref())?;
+            return Ok(merged.scatter(&out));
+        }
+    }
+    smooth_as_given(x0, faces, plan, pinned)
+}
+
+/// Smooths the mesh as given: its vertices are its vertices, welded or not.
+fn smooth_as_given<T: Real>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    plan: &Plan,
+    pinned: Option<&[bool]>,
+) -> Result<Vec<Vec3<T>>> {
     if x0.len() < reorder::MIN_VERTICES || !reorder::is_scattered(faces) {
         return smooth_in_order(x0, faces, plan, pinned);
     }
