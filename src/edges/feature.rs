@@ -15,9 +15,9 @@
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
-use crate::mesh::corners::{CornerTable, RingCorner};
-use crate::mesh::edge_table::{prefetch, sweep, EdgeTable, FaceUse};
+use crate::mesh::edge_table::{prefetch, EdgeTable, FaceUse};
 use crate::mesh::normals::is_defined;
+use crate::mesh::Buckets;
 use crate::real::{Real, Vec3};
 
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -73,7 +73,7 @@ const CHUNK: usize = 16384;
 /// How many edges ahead to prefetch face normals: enough to cover a memory latency.
 pub const PREFETCH_AHEAD: usize = 16;
 
-/// The per-edge rule, shared by the table and sweep paths.
+/// The per-edge rule, shared by the table and bucket paths.
 struct Classifier<'a, T> {
     positions: &'a [Vec3<T>],
     normals: &'a [[f64; 3]],
@@ -160,20 +160,23 @@ pub fn feature_edges<T: Real>(
     Ok(concatenate(parts))
 }
 
-/// Feature edges straight from the corner table, classifying each edge as the sweep meets it:
-/// a one-off query never builds the full edge table.
-pub fn feature_edges_from_corners<T: Real>(
+/// Feature edges straight from the face-edge buckets, classifying each edge as its bucket is
+/// sorted: a one-off query never builds the full edge table.
+pub fn feature_edges_from_buckets<T: Real>(
     positions: &[Vec3<T>],
-    corners: &CornerTable<RingCorner>,
+    buckets: &mut Buckets<u64>,
     normals: &[[f64; 3]],
     crease_angle: f64,
 ) -> Result<FeatureEdges> {
     let rule = Classifier::new(positions, normals, crease_angle)?;
-    let parts = sweep(
-        corners,
+    let parts = buckets.visit_edges(
         |_| FeatureEdges::default(),
-        |face| prefetch(normals, face as usize),
-        |out, edge, keys| rule.classify(out, edge, keys.iter().map(|&k| FaceUse::unpack(k as u32))),
+        |ahead| {
+            for &entry in ahead {
+                prefetch(normals, FaceUse::unpack(entry as u32).face as usize);
+            }
+        },
+        |out, edge, uses| rule.classify(out, edge, uses.iter().map(|&x| FaceUse::unpack(x as u32))),
     );
     Ok(concatenate(parts))
 }
@@ -219,14 +222,14 @@ mod tests {
     }
 
     #[test]
-    fn table_and_sweep_paths_agree() {
+    fn table_and_bucket_paths_agree() {
         let (v, f) = crate::mesh::shapes::icosphere(4, 0.02, 3).unwrap();
         let normals = face_normals(&v, &f);
         let table = EdgeTable::build(v.len(), &f).unwrap();
-        let corners = CornerTable::with_ids(v.len(), &f).unwrap();
+        let mut buckets = Buckets::face_edges(v.len(), &f).unwrap();
         for angle in [0.0, 5.0, 30.0] {
             let a = feature_edges(&v, &table, &normals, angle).unwrap();
-            let b = feature_edges_from_corners(&v, &corners, &normals, angle).unwrap();
+            let b = feature_edges_from_buckets(&v, &mut buckets, &normals, angle).unwrap();
             assert_eq!(a, b);
             assert!(!a.crease.is_empty());
         }

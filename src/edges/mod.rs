@@ -13,7 +13,7 @@ pub use index::EdgeIndex;
 pub use silhouette::View;
 
 use crate::error::Result;
-use crate::mesh::{weld, CornerTable};
+use crate::mesh::{weld, Buckets};
 use crate::real::{Real, Vec3};
 
 /// Face normals as `mesh::normals::face_normals` computes them, in a huge-page buffer.
@@ -39,9 +39,9 @@ pub fn find_feature_edges<T: Real>(
     } else {
         faces
     };
-    let (corners, normals) =
-        rayon::join(|| CornerTable::with_ids(positions.len(), faces), || face_normals(positions, faces));
-    let fe = feature::feature_edges_from_corners(positions, &corners?, &normals, crease_angle)?;
+    let (buckets, normals) =
+        rayon::join(|| Buckets::face_edges(positions.len(), faces), || face_normals(positions, faces));
+    let fe = feature::feature_edges_from_buckets(positions, &mut buckets?, &normals, crease_angle)?;
     let degenerate = (0..normals.len() as u32).filter(|&i| normals[i as usize] == [0.0; 3]).collect();
     Ok((fe, degenerate))
 }

@@ -1,5 +1,5 @@
-//! One-ring adjacency in compressed sparse row form, derived from the corner table
-//! (`mesh::corners`) once per mesh.
+//! One-ring adjacency in compressed sparse row form, derived from the corner buckets
+//! (`mesh::buckets`) once per mesh.
 //!
 //! For vertex `i`, `nbrs[offsets[i]..offsets[i+1]]` are its distinct neighbours in ascending order
 //! (never `i` itself). Each such slot `s` also records how many face-edges join the pair
@@ -11,8 +11,8 @@
 
 use rayon::prelude::*;
 
-use super::corners::{
-    across_next, across_prev, prefix_sum, sort8, split_by, vertex_chunks, Corner, CornerTable, RingCorner,
+use super::buckets::{
+    across_next, across_prev, prefix_sum, sort8, split_by, vertex_chunks, Buckets, Corner, RingCorner,
     NOT_A_VERTEX,
 };
 use crate::error::Result;
@@ -61,37 +61,37 @@ impl Corners {
 impl Adjacency {
     /// Builds the one-rings (neighbours and edge face counts).
     pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Adjacency> {
-        let mut table = CornerTable::rings(n_vertices, faces)?;
-        Ok(parallel::install(|| Adjacency::from_corners(&mut table)))
+        let mut corners = Buckets::corners(n_vertices, faces)?;
+        Ok(parallel::install(|| Adjacency::from_corners(&mut corners)))
     }
 
     /// Builds the one-rings and the opposite corners of every face-edge (for cotangent
-    /// weights), from one corner table that carries each corner's id.
+    /// weights), from one filing of the corners that carries each corner's id.
     pub fn build_with_corners(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Adjacency> {
-        let mut table = CornerTable::with_ids(n_vertices, faces)?;
+        let mut corners = Buckets::corners_with_ids(n_vertices, faces)?;
         Ok(parallel::install(|| {
-            let mut adj = Adjacency::from_corners(&mut table);
-            let corners = if adj.all_fans_closed {
-                adj.closed_fan_corners(&table.entries, faces)
+            let mut adj = Adjacency::from_corners(&mut corners);
+            let opposite = if adj.all_fans_closed {
+                adj.closed_fan_corners(&corners.entries, faces)
             } else {
-                adj.general_corners(&table, faces)
+                adj.general_corners(&corners, faces)
             };
-            adj.corners = Some(corners);
+            adj.corners = Some(opposite);
             adj
         }))
     }
 
-    /// The one-rings from the corner table. Each corner at v contributes the vertex after v and
+    /// The one-rings from the corner buckets. Each corner at v contributes the vertex after v and
     /// the vertex before it (the two face-edges at v); v's distinct neighbours are the union of
     /// those, and the number of face-edges joining v to a neighbour is how often it occurs. Most
     /// vertices of a real mesh have a closed fan: the vertices after v are distinct and are the
     /// vertices before v in another order (a closed, consistently oriented fan), so their
     /// neighbours are just the vertices after v, each on two faces, and no general sort and
-    /// merge is needed. When every fan is closed the table's `start` becomes `offsets` (taken,
+    /// merge is needed. When every fan is closed the buckets' `start` becomes `offsets` (taken,
     /// not copied).
-    fn from_corners<E: Corner>(table: &mut CornerTable<E>) -> Adjacency {
-        let n_vertices = table.n_vertices();
-        let (start, corners) = (&table.start, &table.entries);
+    fn from_corners<E: Corner>(buckets: &mut Buckets<E>) -> Adjacency {
+        let n_vertices = buckets.n_vertices();
+        let (start, corners) = (&buckets.start, &buckets.entries);
         let ring = |i: usize| &corners[start[i] as usize..start[i + 1] as usize];
         let ranges = vertex_chunks(n_vertices);
         // Pass 1: classify every fan and count its self-edges. A closed fan has one
@@ -120,7 +120,7 @@ impl Adjacency {
             let longest = (0..n_vertices).into_par_iter().map(|i| ring(i).len()).max().unwrap_or(0);
             let edge_faces = vec![2; longest];
             return Adjacency {
-                offsets: std::mem::take(&mut table.start),
+                offsets: std::mem::take(&mut buckets.start),
                 nbrs,
                 edge_faces,
                 self_edges,
@@ -244,7 +244,7 @@ impl Adjacency {
 
     /// Corners in general: each vertex's face-edges sorted by (neighbour, corner) are its
     /// slots' runs, each of `edge_faces` entries, in slot order. Self-edges (v, v) have no slot.
-    fn general_corners(&self, table: &CornerTable<RingCorner>, faces: &[[u32; 3]]) -> Corners {
+    fn general_corners(&self, buckets: &Buckets<RingCorner>, faces: &[[u32; 3]]) -> Corners {
         let n = self.n_vertices();
         {
             let mut offsets = Vec::with_capacity(self.nbrs.len() + 1);
@@ -264,7 +264,7 @@ impl Adjacency {
                     let base = corner_at(r.start);
                     for i in r.clone() {
                         sorted.clear();
-                        for &[next, prev, id] in table.at(i) {
+                        for &[next, prev, id] in buckets.at(i) {
                             sorted.push((next as u64) << 32 | across_next(id) as u64);
                             sorted.push((prev as u64) << 32 | across_prev(id) as u64);
                         }
@@ -282,7 +282,7 @@ impl Adjacency {
     /// Corners when every fan is closed: each slot (v, u) has exactly two, one from the corner
     /// at v whose next vertex is u and one from the corner at v whose previous vertex is u. Both
     /// lists are sorted by that vertex, so their k-th entries belong to slot k.
-    /// `entries` is the corner table's, whose `start` is then `offsets`.
+    /// `entries` are the corner buckets', whose `start` is then `offsets`.
     fn closed_fan_corners(&self, entries: &[RingCorner], faces: &[[u32; 3]]) -> Corners {
         let n = self.n_vertices();
         let start = &self.offsets;
@@ -452,7 +452,7 @@ mod tests {
         let n = 162;
         let fast = Adjacency::build_with_corners(n, &faces).unwrap();
         assert!(fast.all_fans_closed);
-        let general = fast.general_corners(&CornerTable::with_ids(n, &faces).unwrap(), &faces);
+        let general = fast.general_corners(&Buckets::corners_with_ids(n, &faces).unwrap(), &faces);
         let range = |c: &Corners, s: usize| c.offsets[s] as usize..c.offsets[s + 1] as usize;
         for s in 0..fast.nbrs.len() {
             assert_eq!(fast.corners_of(s), &general.corner[range(&general, s)], "slot {s}");

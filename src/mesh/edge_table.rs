@@ -1,17 +1,17 @@
-//! Every undirected edge of a mesh once, with the faces that use it, derived from the corner
-//! table (`mesh::corners`).
+//! Every undirected edge of a mesh once, with the faces that use it, derived from the
+//! face-edge buckets (`mesh::buckets`).
 //!
 //! Edges are stored smaller index first and sorted lexicographically, (a, b) before (a, c) when
 //! b < c: the order every edge list of `crate::edges` inherits. An edge's face-edges are the
 //! (face, direction) pairs whose face walks along it; a face that repeats an index, like
-//! (a, a, b), uses a-b twice and never has a self-edge a-a. The face-edges whose smaller end is
-//! a are found among the corners at a (v -> next and prev -> v lead to larger vertices), so a
-//! sweep over vertices sorts each vertex's few of them and meets every edge once, in order, at
-//! a cost of O(faces) that depends neither on face order nor on the thread count.
+//! (a, a, b), uses a-b twice and never has a self-edge a-a. Each vertex's bucket holds the
+//! face-edges whose smaller end it is, so sorting the buckets one by one meets every edge once,
+//! in order, at a cost of O(faces) that depends neither on face order within a bucket nor on
+//! the thread count.
 
 use rayon::prelude::*;
 
-use super::corners::{CornerTable, RingCorner};
+use super::buckets::Buckets;
 use crate::error::Result;
 use crate::huge_pages::with_capacity;
 
@@ -24,67 +24,64 @@ pub struct FaceUse {
 }
 
 impl FaceUse {
-    /// Decodes a face-edge tag, face << 1 | reversed (the low 32 bits of a sweep's sort key).
+    /// Decodes a face-edge tag, face << 1 | reversed (the low 32 bits of a bucket entry).
     #[inline]
     pub fn unpack(tag: u32) -> FaceUse {
         FaceUse { face: tag >> 1, reversed: tag & 1 == 1 }
     }
 }
 
-/// Vertices per parallel task in the sweep (fixed, so results never depend on the thread
-/// count).
+/// Vertices per parallel task when visiting buckets (fixed, so results never depend on the
+/// thread count).
 const CHUNK: usize = 8192;
-/// How many vertices ahead the sweep hands the faces at a vertex to its prefetch hook.
-const PREFETCH_VERTICES: usize = 4;
+/// How many buckets ahead `visit_edges` hands to its prefetch hook.
+const PREFETCH_BUCKETS: usize = 4;
 
-/// Sweeps the edges of the mesh whose corner table is `table`: calls `visit(state, [a, b],
-/// keys)` for each edge in lexicographic order, with a state per chunk from `init(corners in
-/// the chunk)`, where `keys` are its face-edges as
-/// b << 32 | face << 1 | reversed, ascending (so by face, then direction), within fixed chunks
-/// of vertices that run in parallel; returns each chunk's state, in order. Before a vertex is
-/// swept, `prefetch(face)` sees the faces at a vertex a few ahead, to start loading what the
-/// visitor will need.
-pub fn sweep<S: Send>(
-    table: &CornerTable<RingCorner>,
-    init: impl Fn(usize) -> S + Sync,
-    prefetch: impl Fn(u32) + Sync,
-    visit: impl Fn(&mut S, [u32; 2], &[u64]) + Sync,
-) -> Vec<S> {
-    let n = table.n_vertices();
-    (0..n.div_ceil(CHUNK))
-        .into_par_iter()
-        .map(|c| {
-            let (v0, v1) = (c * CHUNK, ((c + 1) * CHUNK).min(n));
-            let mut state = init((table.start[v1] - table.start[v0]) as usize);
-            let mut keys: Vec<u64> = Vec::with_capacity(32);
-            for a in v0..v1 {
-                for e in table.at((a + PREFETCH_VERTICES).min(v1 - 1)) {
-                    prefetch(e[2] / 3);
-                }
-                upper_face_edges(a as u32, table.at(a), &mut keys);
-                keys.sort_unstable();
-                for run in keys.chunk_by(|x, y| x >> 32 == y >> 32) {
-                    visit(&mut state, [a as u32, (run[0] >> 32) as u32], run);
-                }
-            }
-            state
-        })
-        .collect()
-}
-
-/// The face-edges at a's corners that lead to a larger vertex, as sort keys
-/// other << 32 | face << 1 | reversed: a -> next walks up from a, prev -> a walks down to it.
-#[inline(always)]
-fn upper_face_edges(a: u32, corners: &[RingCorner], keys: &mut Vec<u64>) {
-    keys.clear();
-    for &[next, prev, id] in corners {
-        let tag = (id / 3) << 1;
-        if next > a {
-            keys.push((next as u64) << 32 | tag as u64);
+impl Buckets<u64> {
+    /// Sorts every face-edge bucket and calls `visit(state, [a, b], entries)` for each distinct
+    /// edge, in lexicographic order, with its entries ascending (by face, then direction),
+    /// within fixed chunks of vertices that run in parallel; returns each chunk's state, in
+    /// order (`init` is told how many face-edges its chunk has). Before a bucket is visited,
+    /// `prefetch` sees the (unsorted) entries of a bucket a few vertices ahead, to start
+    /// loading what the visitor will need.
+    pub fn visit_edges<S: Send>(
+        &mut self,
+        init: impl Fn(usize) -> S + Sync,
+        prefetch: impl Fn(&[u64]) + Sync,
+        visit: impl Fn(&mut S, [u32; 2], &[u64]) + Sync,
+    ) -> Vec<S> {
+        let n_vertices = self.n_vertices();
+        let start = &self.start;
+        let n_chunks = n_vertices.div_ceil(CHUNK);
+        let mut pieces: Vec<&mut [u64]> = Vec::with_capacity(n_chunks);
+        let mut rest: &mut [u64] = &mut self.entries;
+        for c in 0..n_chunks {
+            let hi = ((c + 1) * CHUNK).min(n_vertices);
+            let len = (start[hi] - start[c * CHUNK]) as usize;
+            let (head, tail) = rest.split_at_mut(len);
+            pieces.push(head);
+            rest = tail;
         }
-        if prev > a {
-            keys.push((prev as u64) << 32 | (tag | 1) as u64);
-        }
+        pieces
+            .into_par_iter()
+            .enumerate()
+            .map(|(c, piece)| {
+                let v0 = c * CHUNK;
+                let v1 = ((c + 1) * CHUNK).min(n_vertices);
+                let base = start[v0] as usize;
+                let mut state = init(piece.len());
+                for a in v0..v1 {
+                    let ahead = (a + PREFETCH_BUCKETS).min(v1 - 1);
+                    prefetch(&piece[start[ahead] as usize - base..start[ahead + 1] as usize - base]);
+                    let bucket = &mut piece[start[a] as usize - base..start[a + 1] as usize - base];
+                    bucket.sort_unstable();
+                    for run in bucket.chunk_by(|x, y| x >> 32 == y >> 32) {
+                        visit(&mut state, [a as u32, (run[0] >> 32) as u32], run);
+                    }
+                }
+                state
+            })
+            .collect()
     }
 }
 
@@ -92,53 +89,43 @@ fn upper_face_edges(a: u32, corners: &[RingCorner], keys: &mut Vec<u64>) {
 pub struct EdgeTable {
     /// Unique edges (a, b), a < b, in lexicographic order.
     pub edges: Vec<[u32; 2]>,
-    /// `uses[use_offsets[e]..use_offsets[e + 1]]` are edge e's face-edge tags (see `FaceUse`),
-    /// ascending by face.
+    /// `uses[use_offsets[e]..use_offsets[e + 1]]` are edge e's bucket entries (see
+    /// `Buckets::face_edges`), ascending by face.
     pub use_offsets: Vec<u32>,
-    uses: Vec<u32>,
-}
-
-/// One sweep chunk's edges, their face-edge tags and how many tags each has.
-struct Part {
-    edges: Vec<[u32; 2]>,
-    tags: Vec<u32>,
-    counts: Vec<u32>,
+    uses: Vec<u64>,
 }
 
 impl EdgeTable {
     pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<EdgeTable> {
-        let table = CornerTable::with_ids(n_vertices, faces)?;
-        Ok(crate::parallel::install(|| EdgeTable::from_corners(&table)))
+        let mut buckets = Buckets::face_edges(n_vertices, faces)?;
+        Ok(crate::parallel::install(|| EdgeTable::from_buckets(&mut buckets)))
     }
 
-    pub fn from_corners(table: &CornerTable<RingCorner>) -> EdgeTable {
-        // A chunk holds about one face-edge per corner and an edge per two (exactly so on a
-        // closed manifold mesh): room for that, so the parts rarely grow.
-        let room = |corners: usize| Part {
-            edges: Vec::with_capacity(corners / 2 + 64),
-            tags: Vec::with_capacity(corners + 64),
-            counts: Vec::with_capacity(corners / 2 + 64),
-        };
-        let parts = sweep(
-            table,
-            room,
+    /// The table from face-edge buckets, whose sorted entries become its face uses.
+    pub fn from_buckets(buckets: &mut Buckets<u64>) -> EdgeTable {
+        // About two face-edges per edge (exactly so on a closed manifold mesh): room for that,
+        // so the parts rarely grow.
+        let per_chunk = buckets.visit_edges(
+            |face_edges| (Vec::with_capacity(face_edges / 2 + 64), Vec::with_capacity(face_edges / 2 + 64)),
             |_| {},
-            |p: &mut Part, edge, keys| {
-                p.edges.push(edge);
-                p.tags.extend(keys.iter().map(|&k| k as u32));
-                p.counts.push(keys.len() as u32);
+            |(edges, counts): &mut (Vec<[u32; 2]>, Vec<u32>), edge, uses| {
+                edges.push(edge);
+                counts.push(uses.len() as u32);
             },
         );
-        let mut use_offsets = with_capacity(parts.iter().map(|p| p.counts.len()).sum::<usize>() + 1);
+        let n_edges: usize = per_chunk.iter().map(|(e, _)| e.len()).sum();
+        let mut edges = with_capacity(n_edges);
+        let mut use_offsets = with_capacity(n_edges + 1);
         use_offsets.push(0u32);
         let mut acc = 0u32;
-        for c in parts.iter().flat_map(|p| &p.counts) {
-            acc += c;
-            use_offsets.push(acc);
+        for (e, counts) in per_chunk {
+            edges.extend_from_slice(&e);
+            for c in counts {
+                acc += c;
+                use_offsets.push(acc);
+            }
         }
-        let edges = concatenate(parts.iter().map(|p| &p.edges[..]).collect());
-        let uses = concatenate(parts.iter().map(|p| &p.tags[..]).collect());
-        EdgeTable { edges, use_offsets, uses }
+        EdgeTable { edges, use_offsets, uses: std::mem::take(&mut buckets.entries) }
     }
 
     pub fn len(&self) -> usize {
@@ -172,29 +159,8 @@ impl EdgeTable {
     pub fn uses(&self, e: usize) -> impl ExactSizeIterator<Item = FaceUse> + '_ {
         self.uses[self.use_offsets[e] as usize..self.use_offsets[e + 1] as usize]
             .iter()
-            .map(|&t| FaceUse::unpack(t))
+            .map(|&t| FaceUse::unpack(t as u32))
     }
-}
-
-/// The pieces one after another, copied by every thread into a huge-page buffer.
-fn concatenate<T: Copy + Send + Sync>(pieces: Vec<&[T]>) -> Vec<T> {
-    let total = pieces.iter().map(|p| p.len()).sum();
-    let mut out: Vec<T> = with_capacity(total);
-    let mut rest = &mut out.spare_capacity_mut()[..total];
-    let mut targets = Vec::with_capacity(pieces.len());
-    for p in &pieces {
-        let (head, tail) = rest.split_at_mut(p.len());
-        targets.push(head);
-        rest = tail;
-    }
-    targets.into_par_iter().zip(pieces).for_each(|(dst, src)| {
-        for (d, &s) in dst.iter_mut().zip(src) {
-            d.write(s);
-        }
-    });
-    // SAFETY: the pieces fill 0..total exactly, and each was written above.
-    unsafe { out.set_len(total) };
-    out
 }
 
 /// Asks the CPU to start loading `data[i]` (any `i`: a prefetch is only a hint and never faults).

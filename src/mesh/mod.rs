@@ -1,9 +1,10 @@
-//! Triangle meshes: checked input, connectivity (the corner table and what is derived from it:
-//! one-rings and the edge table), welding, bounding boxes and procedural shapes.
+//! Triangle meshes: checked input, connectivity (face items bucketed by vertex, and what is
+//! derived from them: one-rings and the edge table), welding, bounding boxes and procedural
+//! shapes.
 
 pub mod adjacency;
 pub mod bounds;
-pub mod corners;
+pub mod buckets;
 pub mod edge_table;
 pub mod input;
 pub mod normals;
@@ -13,6 +14,6 @@ pub mod weld;
 
 pub use adjacency::Adjacency;
 pub use bounds::Bounds;
-pub use corners::CornerTable;
+pub use buckets::Buckets;
 pub use edge_table::EdgeTable;
 pub use input::{check_faces, check_positions, Faces};
