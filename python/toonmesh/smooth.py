@@ -24,13 +24,13 @@ included:
 
 An argument a preset does not have (say ``boundary`` with ``preset="trimesh"``) raises
 ``ValueError`` instead of being ignored. ``weld=True`` works with every preset: the preset's
-algorithm then runs on the welded mesh, as the peer's filter would after merging the duplicate
-vertices.
+algorithm then runs on the welded mesh, as the peer's filter would on that mesh.
 
-Seams. A textured or flat-shaded mesh stores a point once per UV island or normal, and those
-copies share no edge: smoothed as they are, the two sides of a seam move apart (cracks) and
-both count as boundaries. ``weld=True`` smooths the welded mesh instead (vertices at exactly
-the same position are one) and gives every copy its position's result.
+Seams. A textured or flat-shaded mesh stores a point once per UV island or normal (an STL
+once per face), and those copies share no edge: smoothed as they are, a seam is a boundary on
+both sides, so its two sides move apart (cracks) or, with ``boundary="fixed"``, stay
+unsmoothed. ``weld=True`` smooths the welded mesh instead (vertices at exactly the same
+position are one vertex) and gives every copy its position's result.
 
 Degenerate input stays finite. Cotangent weights use ``cot = cos / max(sin, 1e-4)`` per corner
 (``|cot| <= 1e4``), a corner with a zero-length side adds nothing, an edge's weight is clamped at

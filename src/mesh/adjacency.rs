@@ -246,37 +246,35 @@ impl Adjacency {
     /// slots' runs, each of `edge_faces` entries, in slot order. Self-edges (v, v) have no slot.
     fn general_corners(&self, buckets: &Buckets<RingCorner>, faces: &[[u32; 3]]) -> Corners {
         let n = self.n_vertices();
-        {
-            let mut offsets = Vec::with_capacity(self.nbrs.len() + 1);
-            let mut acc = 0u32;
-            for &e in (0..n).flat_map(|i| self.edge_faces(i)) {
-                offsets.push(acc);
-                acc += e;
-            }
+        let mut offsets = Vec::with_capacity(self.nbrs.len() + 1);
+        let mut acc = 0u32;
+        for &e in (0..n).flat_map(|i| self.edge_faces(i)) {
             offsets.push(acc);
-            let mut corner: Vec<u32> = huge_pages::filled_vec(acc as usize, 0);
-            let ranges = vertex_chunks(n);
-            let corner_at = |i: usize| offsets[self.offsets[i] as usize] as usize;
-            split_by(&mut corner, &ranges, |r| corner_at(r.start))
-                .into_par_iter()
-                .zip(ranges.par_iter())
-                .for_each_init(Vec::<u64>::new, |sorted, (out, r)| {
-                    let base = corner_at(r.start);
-                    for i in r.clone() {
-                        sorted.clear();
-                        for &[next, prev, id] in buckets.at(i) {
-                            sorted.push((next as u64) << 32 | across_next(id) as u64);
-                            sorted.push((prev as u64) << 32 | across_prev(id) as u64);
-                        }
-                        sorted.retain(|&e| (e >> 32) as usize != i);
-                        sorted.sort_unstable();
-                        for (o, e) in out[corner_at(i) - base..].iter_mut().zip(sorted.iter()) {
-                            *o = *e as u32;
-                        }
-                    }
-                });
-            Corners::with_opposites(offsets, corner, faces)
+            acc += e;
         }
+        offsets.push(acc);
+        let mut corner: Vec<u32> = huge_pages::filled_vec(acc as usize, 0);
+        let ranges = vertex_chunks(n);
+        let corner_at = |i: usize| offsets[self.offsets[i] as usize] as usize;
+        split_by(&mut corner, &ranges, |r| corner_at(r.start))
+            .into_par_iter()
+            .zip(ranges.par_iter())
+            .for_each_init(Vec::<u64>::new, |sorted, (out, r)| {
+                let base = corner_at(r.start);
+                for i in r.clone() {
+                    sorted.clear();
+                    for &[next, prev, id] in buckets.at(i) {
+                        sorted.push((next as u64) << 32 | across_next(id) as u64);
+                        sorted.push((prev as u64) << 32 | across_prev(id) as u64);
+                    }
+                    sorted.retain(|&e| (e >> 32) as usize != i);
+                    sorted.sort_unstable();
+                    for (o, e) in out[corner_at(i) - base..].iter_mut().zip(sorted.iter()) {
+                        *o = *e as u32;
+                    }
+                }
+            });
+        Corners::with_opposites(offsets, corner, faces)
     }
 
     /// Corners when every fan is closed: each slot (v, u) has exactly two, one from the corner
@@ -286,44 +284,42 @@ impl Adjacency {
     fn closed_fan_corners(&self, entries: &[RingCorner], faces: &[[u32; 3]]) -> Corners {
         let n = self.n_vertices();
         let start = &self.offsets;
-        {
-            let slots = self.nbrs.len();
-            let mut corner: Vec<u32> = huge_pages::filled_vec(2 * slots, 0);
-            let ranges = vertex_chunks(n);
-            split_by(&mut corner, &ranges, |r| 2 * self.offsets[r.start] as usize)
-                .into_par_iter()
-                .zip(ranges.par_iter())
-                .for_each(|(out, r)| {
-                    let base = 2 * self.offsets[r.start] as usize;
-                    let (mut after, mut before) = (Vec::new(), Vec::new());
-                    for i in r.clone() {
-                        let ring = &entries[start[i] as usize..start[i + 1] as usize];
-                        let at = 2 * self.offsets[i] as usize - base;
-                        let out = &mut out[at..at + 2 * ring.len()];
-                        if ring.len() <= 8 {
-                            // Padding sorts last and is never written out.
-                            let mut a = [u64::MAX; 8];
-                            let mut b = [u64::MAX; 8];
-                            for (k, e) in ring.iter().enumerate() {
-                                (a[k], b[k]) = across(e);
-                            }
-                            sort8(&mut a);
-                            sort8(&mut b);
-                            pair_corners(&a, &b, out);
-                        } else {
-                            after.clear();
-                            before.clear();
-                            after.extend(ring.iter().map(|e| across(e).0));
-                            before.extend(ring.iter().map(|e| across(e).1));
-                            after.sort_unstable();
-                            before.sort_unstable();
-                            pair_corners(&after, &before, out);
+        let slots = self.nbrs.len();
+        let mut corner: Vec<u32> = huge_pages::filled_vec(2 * slots, 0);
+        let ranges = vertex_chunks(n);
+        split_by(&mut corner, &ranges, |r| 2 * self.offsets[r.start] as usize)
+            .into_par_iter()
+            .zip(ranges.par_iter())
+            .for_each(|(out, r)| {
+                let base = 2 * self.offsets[r.start] as usize;
+                let (mut after, mut before) = (Vec::new(), Vec::new());
+                for i in r.clone() {
+                    let ring = &entries[start[i] as usize..start[i + 1] as usize];
+                    let at = 2 * self.offsets[i] as usize - base;
+                    let out = &mut out[at..at + 2 * ring.len()];
+                    if ring.len() <= 8 {
+                        // Padding sorts last and is never written out.
+                        let mut a = [u64::MAX; 8];
+                        let mut b = [u64::MAX; 8];
+                        for (k, e) in ring.iter().enumerate() {
+                            (a[k], b[k]) = across(e);
                         }
+                        sort8(&mut a);
+                        sort8(&mut b);
+                        pair_corners(&a, &b, out);
+                    } else {
+                        after.clear();
+                        before.clear();
+                        after.extend(ring.iter().map(|e| across(e).0));
+                        before.extend(ring.iter().map(|e| across(e).1));
+                        after.sort_unstable();
+                        before.sort_unstable();
+                        pair_corners(&after, &before, out);
                     }
-                });
-            let offsets: Vec<u32> = (0..=slots as u32).into_par_iter().map(|s| 2 * s).collect();
-            Corners::with_opposites(offsets, corner, faces)
-        }
+                }
+            });
+        let offsets: Vec<u32> = (0..=slots as u32).into_par_iter().map(|s| 2 * s).collect();
+        Corners::with_opposites(offsets, corner, faces)
     }
 
     /// Per vertex: does it lie on an edge with exactly one face?

@@ -97,12 +97,12 @@ pub struct EdgeTable {
 
 impl EdgeTable {
     pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<EdgeTable> {
-        let mut buckets = Buckets::face_edges(n_vertices, faces)?;
-        Ok(crate::parallel::install(|| EdgeTable::from_buckets(&mut buckets)))
+        let buckets = Buckets::face_edges(n_vertices, faces)?;
+        Ok(crate::parallel::install(|| EdgeTable::from_buckets(buckets)))
     }
 
     /// The table from face-edge buckets, whose sorted entries become its face uses.
-    pub fn from_buckets(buckets: &mut Buckets<u64>) -> EdgeTable {
+    pub fn from_buckets(mut buckets: Buckets<u64>) -> EdgeTable {
         // About two face-edges per edge (exactly so on a closed manifold mesh): room for that,
         // so the parts rarely grow.
         let per_chunk = buckets.visit_edges(
@@ -125,7 +125,7 @@ impl EdgeTable {
                 use_offsets.push(acc);
             }
         }
-        EdgeTable { edges, use_offsets, uses: std::mem::take(&mut buckets.entries) }
+        EdgeTable { edges, use_offsets, uses: buckets.entries }
     }
 
     pub fn len(&self) -> usize {
