@@ -63,6 +63,7 @@ def _smooth(
     pinned: Optional[Any] = None,
     volume_constraint: Optional[bool] = None,
     preset: Optional[str] = None,
+    weld: bool,
 ) -> npt.NDArray[np.floating[Any]]: ...
 
 # --- rendering (src/py/scene.rs, src/py/render.rs); the public API is toonmesh._render ---

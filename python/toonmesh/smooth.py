@@ -23,7 +23,14 @@ included:
     (``laplacian`` only; ``lamb=1``, boundaries free).
 
 An argument a preset does not have (say ``boundary`` with ``preset="trimesh"``) raises
-``ValueError`` instead of being ignored.
+``ValueError`` instead of being ignored. ``weld=True`` works with every preset: the preset's
+algorithm then runs on the welded mesh, as the peer's filter would on that mesh.
+
+Seams. A textured or flat-shaded mesh stores a point once per UV island or normal (an STL
+once per face), and those copies share no edge: smoothed as they are, a seam is a boundary on
+both sides, so its two sides move apart (cracks) or, with ``boundary="fixed"``, stay
+unsmoothed. ``weld=True`` smooths the welded mesh instead (vertices at exactly the same
+position are one vertex) and gives every copy its position's result.
 
 Degenerate input stays finite. Cotangent weights use ``cot = cos / max(sin, 1e-4)`` per corner
 (``|cot| <= 1e4``), a corner with a zero-length side adds nothing, an edge's weight is clamped at
@@ -61,6 +68,12 @@ _COMMON = """
         Vertices that must not move (a list or tuple works too; an empty one pins nothing).
     preset : None, "trimesh", "pymeshlab" or "paper"
         Reproduce another library's filter (see the module docs). Default None.
+    weld : bool, default False
+        Smooth the welded mesh: vertices at exactly the same position (UV seams, split
+        normals, an STL's per-face copies) are one vertex, so seams neither open into cracks
+        nor count as boundaries, and every copy gets the same result, its position's. A
+        position is pinned when any of its copies is. The result keeps the input's rows (each
+        copy its own). With a preset, the preset's algorithm runs on the welded mesh.
 
     Returns
     -------
@@ -102,6 +115,7 @@ def laplacian(
     pinned: Optional[Any] = None,
     volume_constraint: Optional[bool] = None,
     preset: Optional[str] = None,
+    weld: bool = False,
 ) -> npt.NDArray[np.floating[Any]]:
     """Explicit Laplacian smoothing: ``x <- x + lamb * (A x - x)``, repeated.
 
@@ -128,7 +142,7 @@ def laplacian(
     """
     return _call(
         "laplacian", vertices, faces, iterations=iterations, lamb=lamb, weights=weights,
-        boundary=boundary, pinned=pinned, volume_constraint=volume_constraint, preset=preset,
+        boundary=boundary, pinned=pinned, volume_constraint=volume_constraint, preset=preset, weld=weld,
     )
 
 
@@ -143,6 +157,7 @@ def taubin(
     boundary: Optional[str] = None,
     pinned: Optional[Any] = None,
     preset: Optional[str] = None,
+    weld: bool = False,
 ) -> npt.NDArray[np.floating[Any]]:
     """Taubin (lambda/mu) smoothing, which removes noise without shrinking the mesh.
 
@@ -162,7 +177,7 @@ def taubin(
     """
     return _call(
         "taubin", vertices, faces, iterations=iterations, lamb=lamb, mu=mu, weights=weights,
-        boundary=boundary, pinned=pinned, preset=preset,
+        boundary=boundary, pinned=pinned, preset=preset, weld=weld,
     )
 
 
@@ -177,6 +192,7 @@ def hc(
     boundary: Optional[str] = None,
     pinned: Optional[Any] = None,
     preset: Optional[str] = None,
+    weld: bool = False,
 ) -> npt.NDArray[np.floating[Any]]:
     """HC smoothing (Vollmer, Mencl and Mueller 1999): Laplacian smoothing that pushes each
     vertex back toward its original and previous positions, so the mesh does not shrink.
@@ -203,7 +219,7 @@ def hc(
     """
     return _call(
         "hc", vertices, faces, iterations=iterations, alpha=alpha, beta=beta, weights=weights,
-        boundary=boundary, pinned=pinned, preset=preset,
+        boundary=boundary, pinned=pinned, preset=preset, weld=weld,
     )
 
 
@@ -220,6 +236,7 @@ def implicit(
     pinned: Optional[Any] = None,
     volume_constraint: Optional[bool] = None,
     preset: Optional[str] = None,
+    weld: bool = False,
 ) -> npt.NDArray[np.floating[Any]]:
     """Implicit (backward Euler) Laplacian smoothing: solves ``((1 + step) I - step A) x' = x``.
 
@@ -244,7 +261,7 @@ def implicit(
     return _call(
         "implicit", vertices, faces, step=step, iterations=iterations, tol=tol, max_iter=max_iter,
         weights=weights, boundary=boundary, pinned=pinned, volume_constraint=volume_constraint,
-        preset=preset,
+        preset=preset, weld=weld,
     )
 
 

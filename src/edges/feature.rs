@@ -14,9 +14,10 @@
 
 use rayon::prelude::*;
 
-use super::edge_table::{prefetch, Buckets, EdgeTable, FaceUse};
 use crate::error::{Error, Result};
+use crate::mesh::edge_table::{prefetch, EdgeTable, FaceUse};
 use crate::mesh::normals::is_defined;
+use crate::mesh::Buckets;
 use crate::real::{Real, Vec3};
 
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -163,19 +164,19 @@ pub fn feature_edges<T: Real>(
 /// sorted: a one-off query never builds the full edge table.
 pub fn feature_edges_from_buckets<T: Real>(
     positions: &[Vec3<T>],
-    buckets: &mut Buckets,
+    buckets: &mut Buckets<u64>,
     normals: &[[f64; 3]],
     crease_angle: f64,
 ) -> Result<FeatureEdges> {
     let rule = Classifier::new(positions, normals, crease_angle)?;
-    let parts = buckets.visit(
-        FeatureEdges::default,
+    let parts = buckets.visit_edges(
+        |_| FeatureEdges::default(),
         |ahead| {
             for &entry in ahead {
-                prefetch(normals, FaceUse::unpack(entry).face as usize);
+                prefetch(normals, FaceUse::unpack(entry as u32).face as usize);
             }
         },
-        |out, edge, uses| rule.classify(out, edge, uses.iter().map(|&x| FaceUse::unpack(x))),
+        |out, edge, uses| rule.classify(out, edge, uses.iter().map(|&x| FaceUse::unpack(x as u32))),
     );
     Ok(concatenate(parts))
 }
@@ -225,7 +226,7 @@ mod tests {
         let (v, f) = crate::mesh::shapes::icosphere(4, 0.02, 3).unwrap();
         let normals = face_normals(&v, &f);
         let table = EdgeTable::build(v.len(), &f).unwrap();
-        let mut buckets = Buckets::build(v.len(), &f).unwrap();
+        let mut buckets = Buckets::face_edges(v.len(), &f).unwrap();
         for angle in [0.0, 5.0, 30.0] {
             let a = feature_edges(&v, &table, &normals, angle).unwrap();
             let b = feature_edges_from_buckets(&v, &mut buckets, &normals, angle).unwrap();

@@ -4,12 +4,12 @@
 
 use rayon::prelude::*;
 
-use super::edge_table::EdgeTable;
 use super::face_normals;
 use super::feature::{crease_pair, feature_edges, FeatureEdges, PREFETCH_AHEAD};
 use super::silhouette::{facing, View, BACK, FRONT};
-use super::weld::{weld_faces, weld_map};
 use crate::error::Result;
+use crate::mesh::weld::{weld_faces, weld_map};
+use crate::mesh::EdgeTable;
 use crate::real::{Real, Vec3};
 
 #[derive(Debug, Clone)]

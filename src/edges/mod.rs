@@ -3,20 +3,18 @@
 
 pub mod chains;
 pub mod detect;
-pub mod edge_table;
 pub mod feature;
 pub mod index;
 pub mod outlines;
 pub mod silhouette;
 pub mod sobel;
-pub mod weld;
 
-pub use edge_table::EdgeTable;
 pub use feature::FeatureEdges;
 pub use index::EdgeIndex;
 pub use silhouette::View;
 
 use crate::error::Result;
+use crate::mesh::{weld, Buckets};
 
 /// Dihedral angle in degrees above which an edge is a crease, when none is given.
 pub const DEFAULT_CREASE_ANGLE: f64 = 30.0;
@@ -30,7 +28,7 @@ pub fn face_normals<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<[
 }
 
 /// Feature edges of a mesh in one call, and the indices of its degenerate faces. With `weld`,
-/// vertices at identical positions are merged first (see `weld`).
+/// vertices at identical positions are merged first (see `mesh::weld`).
 pub fn find_feature_edges<T: Real>(
     positions: &[Vec3<T>],
     faces: &[[u32; 3]],
@@ -46,7 +44,7 @@ pub fn find_feature_edges<T: Real>(
         faces
     };
     let (buckets, normals) =
-        rayon::join(|| edge_table::Buckets::build(positions.len(), faces), || face_normals(positions, faces));
+        rayon::join(|| Buckets::face_edges(positions.len(), faces), || face_normals(positions, faces));
     let fe = feature::feature_edges_from_buckets(positions, &mut buckets?, &normals, crease_angle)?;
     let degenerate = (0..normals.len() as u32).filter(|&i| normals[i as usize] == [0.0; 3]).collect();
     Ok((fe, degenerate))

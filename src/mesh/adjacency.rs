@@ -1,15 +1,21 @@
-//! One-ring adjacency in compressed sparse row form, built once per mesh.
+//! One-ring adjacency in compressed sparse row form, derived from the corner buckets
+//! (`mesh::buckets`) once per mesh.
 //!
 //! For vertex `i`, `nbrs[offsets[i]..offsets[i+1]]` are its distinct neighbours in ascending order
 //! (never `i` itself). Each such slot `s` also records how many face-edges join the pair
 //! (`edge_faces_at(s)`: 1 on a boundary, 2 on a manifold interior edge, 3+ on a non-manifold edge)
-//! and, built on first use, the third vertex of each of those faces (`opposite_of(s)`), which
-//! is what cotangent weights need. Faces with a repeated index contribute only their
-//! non-degenerate edges; their self-edges (a, a) are only counted, in `self_edges`.
+//! and, when built with `build_with_corners`, the third vertex of each of those faces
+//! (`opposite_of(s)`), which is what cotangent weights need. Faces with a repeated index
+//! contribute only their non-degenerate edges; their self-edges (a, a) are only counted, in
+//! `self_edges`.
 
 use rayon::prelude::*;
 
-use crate::error::{Error, Result};
+use super::buckets::{
+    across_next, across_prev, prefix_sum, sort8, split_by, vertex_chunks, Buckets, Corner, RingCorner,
+    NOT_A_VERTEX,
+};
+use crate::error::Result;
 use crate::huge_pages;
 use crate::parallel;
 
@@ -53,114 +59,122 @@ impl Corners {
 }
 
 impl Adjacency {
-    /// Builds the one-rings (neighbours and edge face counts). Opposite corners are added by
-    /// `with_corners`, since only cotangent weights need them.
-    ///
-    /// Each face corner at v contributes the vertex after v and the vertex before it (the two
-    /// face-edges at v); v's distinct neighbours are the union of those, and the number of
-    /// face-edges joining v to a neighbour is how often it occurs. Most vertices of a real mesh
-    /// have a closed fan: the vertices after v are distinct and are the vertices before v in another
-    /// order (a closed, consistently oriented fan), so their neighbours are just the vertices
-    /// after v, each on two faces, and no general sort and merge is needed.
+    /// Builds the one-rings (neighbours and edge face counts).
     pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Adjacency> {
-        if faces.len() > (u32::MAX as usize) / 6 {
-            return Err(Error::invalid(
-                "faces",
-                format!("{} faces is more than toonmesh supports", faces.len()),
-            ));
+        let mut corners = Buckets::corners(n_vertices, faces)?;
+        Ok(parallel::install(|| Adjacency::from_corners(&mut corners)))
+    }
+
+    /// Builds the one-rings and the opposite corners of every face-edge (for cotangent
+    /// weights), from one filing of the corners that carries each corner's id.
+    pub fn build_with_corners(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Adjacency> {
+        let mut corners = Buckets::corners_with_ids(n_vertices, faces)?;
+        Ok(parallel::install(|| {
+            let mut adj = Adjacency::from_corners(&mut corners);
+            let opposite = if adj.all_fans_closed {
+                adj.closed_fan_corners(&corners.entries, faces)
+            } else {
+                adj.general_corners(&corners, faces)
+            };
+            adj.corners = Some(opposite);
+            adj
+        }))
+    }
+
+    /// The one-rings from the corner buckets. Each corner at v contributes the vertex after v and
+    /// the vertex before it (the two face-edges at v); v's distinct neighbours are the union of
+    /// those, and the number of face-edges joining v to a neighbour is how often it occurs. Most
+    /// vertices of a real mesh have a closed fan: the vertices after v are distinct and are the
+    /// vertices before v in another order (a closed, consistently oriented fan), so their
+    /// neighbours are just the vertices after v, each on two faces, and no general sort and
+    /// merge is needed. When every fan is closed the buckets' `start` becomes `offsets` (taken,
+    /// not copied).
+    fn from_corners<E: Corner>(buckets: &mut Buckets<E>) -> Adjacency {
+        let n_vertices = buckets.n_vertices();
+        let (start, corners) = (&buckets.start, &buckets.entries);
+        let ring = |i: usize| &corners[start[i] as usize..start[i + 1] as usize];
+        let ranges = vertex_chunks(n_vertices);
+        // Pass 1: classify every fan and count its self-edges. A closed fan has one
+        // neighbour per corner, so its sorted neighbours go straight to their final place
+        // if every fan turns out closed: the corner lists' offsets.
+        let mut self_edges: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
+        let mut closed: Vec<bool> = huge_pages::filled_vec(n_vertices, false);
+        let mut nbrs: Vec<u32> = huge_pages::filled_vec(corners.len(), 0);
+        let corner_start = |r: &std::ops::Range<usize>| start[r.start] as usize;
+        split_by(&mut self_edges, &ranges, |r| r.start)
+            .into_par_iter()
+            .zip(split_by(&mut closed, &ranges, |r| r.start))
+            .zip(split_by(&mut nbrs, &ranges, corner_start))
+            .zip(ranges.par_iter())
+            .for_each(|(((selfe, closed), nb), r)| {
+                let base = start[r.start] as usize;
+                for (k, i) in r.clone().enumerate() {
+                    let c = ring(i);
+                    selfe[k] = c.iter().filter(|e| e.next() == i as u32).count() as u32;
+                    let nb = &mut nb[start[i] as usize - base..start[i + 1] as usize - base];
+                    closed[k] = closed_fan(i as u32, c, nb);
+                }
+            });
+        let all_fans_closed = closed.par_iter().all(|&s| s);
+        if all_fans_closed {
+            let longest = (0..n_vertices).into_par_iter().map(|i| ring(i).len()).max().unwrap_or(0);
+            let edge_faces = vec![2; longest];
+            return Adjacency {
+                offsets: std::mem::take(&mut buckets.start),
+                nbrs,
+                edge_faces,
+                self_edges,
+                all_fans_closed,
+                corners: None,
+            };
         }
-        if n_vertices >= NOT_A_VERTEX as usize {
-            return Err(Error::invalid(
-                "vertices",
-                format!("{n_vertices} vertices is more than toonmesh supports"),
-            ));
-        }
-        parallel::install(|| {
-            let (start, corners) = corner_lists(n_vertices, faces);
-            let ring = |i: usize| &corners[start[i] as usize..start[i + 1] as usize];
-            let ranges = vertex_chunks(n_vertices);
-            // Pass 1: classify every fan and count its self-edges. A closed fan has one
-            // neighbour per corner, so its sorted neighbours go straight to their final place
-            // if every fan turns out closed: the corner lists' offsets.
-            let mut self_edges: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
-            let mut closed: Vec<bool> = huge_pages::filled_vec(n_vertices, false);
-            let mut nbrs: Vec<u32> = huge_pages::filled_vec(corners.len(), 0);
-            let corner_start = |r: &std::ops::Range<usize>| start[r.start] as usize;
-            split_by(&mut self_edges, &ranges, |r| r.start)
-                .into_par_iter()
-                .zip(split_by(&mut closed, &ranges, |r| r.start))
-                .zip(split_by(&mut nbrs, &ranges, corner_start))
-                .zip(ranges.par_iter())
-                .for_each(|(((selfe, closed), nb), r)| {
-                    let base = start[r.start] as usize;
-                    for (k, i) in r.clone().enumerate() {
-                        let c = ring(i);
-                        selfe[k] = c.iter().filter(|e| e[0] == i as u32).count() as u32;
-                        let nb = &mut nb[start[i] as usize - base..start[i + 1] as usize - base];
-                        closed[k] = closed_fan(i as u32, c, nb);
-                    }
-                });
-            let all_fans_closed = closed.par_iter().all(|&s| s);
-            if all_fans_closed {
-                let longest = (0..n_vertices).into_par_iter().map(|i| ring(i).len()).max().unwrap_or(0);
-                let edge_faces = vec![2; longest];
-                return Ok(Adjacency {
-                    offsets: start,
-                    nbrs,
-                    edge_faces,
-                    self_edges,
-                    all_fans_closed,
-                    corners: None,
-                });
-            }
-            drop(nbrs);
-            // Otherwise, pass 2: how many distinct neighbours per vertex; pass 3: the sorted
-            // neighbours and their face-edge counts.
-            let mut distinct: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
-            split_by(&mut distinct, &ranges, |r| r.start)
-                .into_par_iter()
-                .zip(ranges.par_iter())
-                .for_each_init(Vec::new, |scratch, (dist, r)| {
-                    for (k, i) in r.clone().enumerate() {
-                        let c = ring(i);
-                        dist[k] = if closed[i] {
-                            c.len() as u32
-                        } else {
-                            general_ring(i as u32, c, scratch);
-                            runs(scratch).count() as u32
-                        };
-                    }
-                });
-            let offsets = prefix_sum(&distinct);
-            drop(distinct);
-            let slots = offsets[n_vertices] as usize;
-            let mut nbrs: Vec<u32> = huge_pages::filled_vec(slots, 0);
-            let mut edge_faces: Vec<u32> = huge_pages::filled_vec(slots, 0);
-            let slot_start = |r: &std::ops::Range<usize>| offsets[r.start] as usize;
-            split_by(&mut nbrs, &ranges, slot_start)
-                .into_par_iter()
-                .zip(split_by(&mut edge_faces, &ranges, slot_start))
-                .zip(ranges.par_iter())
-                .for_each_init(Vec::new, |scratch, ((nb, ef), r)| {
-                    let base = offsets[r.start] as usize;
-                    for i in r.clone() {
-                        let c = ring(i);
-                        let at = offsets[i] as usize - base..offsets[i + 1] as usize - base;
-                        let (nb, ef) = (&mut nb[at.clone()], &mut ef[at]);
-                        if closed[i] {
-                            closed_fan(i as u32, c, nb);
-                            ef.fill(2);
-                        } else {
-                            general_ring(i as u32, c, scratch);
-                            for (k, (v, count)) in runs(scratch).enumerate() {
-                                nb[k] = v;
-                                ef[k] = count;
-                            }
+        drop(nbrs);
+        // Otherwise, pass 2: how many distinct neighbours per vertex; pass 3: the sorted
+        // neighbours and their face-edge counts.
+        let mut distinct: Vec<u32> = huge_pages::filled_vec(n_vertices, 0);
+        split_by(&mut distinct, &ranges, |r| r.start).into_par_iter().zip(ranges.par_iter()).for_each_init(
+            Vec::new,
+            |scratch, (dist, r)| {
+                for (k, i) in r.clone().enumerate() {
+                    let c = ring(i);
+                    dist[k] = if closed[i] {
+                        c.len() as u32
+                    } else {
+                        general_ring(i as u32, c, scratch);
+                        runs(scratch).count() as u32
+                    };
+                }
+            },
+        );
+        let offsets = prefix_sum(&distinct);
+        drop(distinct);
+        let slots = offsets[n_vertices] as usize;
+        let mut nbrs: Vec<u32> = huge_pages::filled_vec(slots, 0);
+        let mut edge_faces: Vec<u32> = huge_pages::filled_vec(slots, 0);
+        let slot_start = |r: &std::ops::Range<usize>| offsets[r.start] as usize;
+        split_by(&mut nbrs, &ranges, slot_start)
+            .into_par_iter()
+            .zip(split_by(&mut edge_faces, &ranges, slot_start))
+            .zip(ranges.par_iter())
+            .for_each_init(Vec::new, |scratch, ((nb, ef), r)| {
+                let base = offsets[r.start] as usize;
+                for i in r.clone() {
+                    let c = ring(i);
+                    let at = offsets[i] as usize - base..offsets[i + 1] as usize - base;
+                    let (nb, ef) = (&mut nb[at.clone()], &mut ef[at]);
+                    if closed[i] {
+                        closed_fan(i as u32, c, nb);
+                        ef.fill(2);
+                    } else {
+                        general_ring(i as u32, c, scratch);
+                        for (k, (v, count)) in runs(scratch).enumerate() {
+                            nb[k] = v;
+                            ef[k] = count;
                         }
                     }
-                });
-            Ok(Adjacency { offsets, nbrs, edge_faces, self_edges, all_fans_closed, corners: None })
-        })
+                }
+            });
+        Adjacency { offsets, nbrs, edge_faces, self_edges, all_fans_closed, corners: None }
     }
 
     pub fn n_vertices(&self) -> usize {
@@ -199,7 +213,7 @@ impl Adjacency {
     }
 
     /// The third vertex of each face on the edge of `slot`, one per face-edge, in face order.
-    /// Needs `with_corners` first (an empty slice otherwise).
+    /// Needs `build_with_corners` (an empty slice otherwise).
     #[inline]
     pub fn opposite_of(&self, slot: usize) -> &[u32] {
         match &self.corners {
@@ -219,7 +233,7 @@ impl Adjacency {
 
     /// The opposite corners of a run of consecutive slots, all together: slot s's own come
     /// next, `edge_faces[s]` of them, so a pass over slots in order walks this without looking
-    /// up each slot's offsets. Needs `with_corners` first (an empty slice otherwise).
+    /// up each slot's offsets. Needs `build_with_corners` (an empty slice otherwise).
     #[inline]
     pub fn corners_of_run(&self, slots: std::ops::Range<usize>) -> &[u32] {
         match &self.corners {
@@ -228,102 +242,84 @@ impl Adjacency {
         }
     }
 
-    /// Adds the opposite corners of every face-edge (for cotangent weights).
-    pub fn with_corners(mut self, faces: &[[u32; 3]]) -> Self {
-        if self.corners.is_none() {
-            self.corners = Some(self.build_corners(faces));
-        }
-        self
-    }
-
-    fn build_corners(&self, faces: &[[u32; 3]]) -> Corners {
-        if self.all_fans_closed {
-            return self.closed_fan_corners(faces);
-        }
-        self.general_corners(faces)
-    }
-
-    fn general_corners(&self, faces: &[[u32; 3]]) -> Corners {
+    /// Corners in general: each vertex's face-edges sorted by (neighbour, corner) are its
+    /// slots' runs, each of `edge_faces` entries, in slot order. Self-edges (v, v) have no slot.
+    fn general_corners(&self, buckets: &Buckets<RingCorner>, faces: &[[u32; 3]]) -> Corners {
         let n = self.n_vertices();
-        parallel::install(|| {
-            let (start, entries) = opposite_corner_entries(n, faces);
-            let mut offsets = Vec::with_capacity(self.nbrs.len() + 1);
-            let mut acc = 0u32;
-            for &e in (0..n).flat_map(|i| self.edge_faces(i)) {
-                offsets.push(acc);
-                acc += e;
-            }
+        let mut offsets = Vec::with_capacity(self.nbrs.len() + 1);
+        let mut acc = 0u32;
+        for &e in (0..n).flat_map(|i| self.edge_faces(i)) {
             offsets.push(acc);
-            // Each vertex's face-edges sorted by (neighbour, corner): its slots' runs, each of
-            // `edge_faces` entries, in slot order. Self-edges (v, v) have no slot.
-            let mut corner: Vec<u32> = huge_pages::filled_vec(acc as usize, 0);
-            let ranges = vertex_chunks(n);
-            let corner_at = |i: usize| offsets[self.offsets[i] as usize] as usize;
-            split_by(&mut corner, &ranges, |r| corner_at(r.start))
-                .into_par_iter()
-                .zip(ranges.par_iter())
-                .for_each_init(Vec::<u64>::new, |sorted, (out, r)| {
-                    let base = corner_at(r.start);
-                    for i in r.clone() {
-                        let ring = &entries[start[i] as usize..start[i + 1] as usize];
-                        sorted.clear();
-                        sorted.extend(ring.iter().flatten().copied().filter(|&e| (e >> 32) as usize != i));
-                        sorted.sort_unstable();
-                        for (o, e) in out[corner_at(i) - base..].iter_mut().zip(sorted.iter()) {
-                            *o = *e as u32;
-                        }
+            acc += e;
+        }
+        offsets.push(acc);
+        let mut corner: Vec<u32> = huge_pages::filled_vec(acc as usize, 0);
+        let ranges = vertex_chunks(n);
+        let corner_at = |i: usize| offsets[self.offsets[i] as usize] as usize;
+        split_by(&mut corner, &ranges, |r| corner_at(r.start))
+            .into_par_iter()
+            .zip(ranges.par_iter())
+            .for_each_init(Vec::<u64>::new, |sorted, (out, r)| {
+                let base = corner_at(r.start);
+                for i in r.clone() {
+                    sorted.clear();
+                    for &[next, prev, id] in buckets.at(i) {
+                        sorted.push((next as u64) << 32 | across_next(id) as u64);
+                        sorted.push((prev as u64) << 32 | across_prev(id) as u64);
                     }
-                });
-            Corners::with_opposites(offsets, corner, faces)
-        })
+                    sorted.retain(|&e| (e >> 32) as usize != i);
+                    sorted.sort_unstable();
+                    for (o, e) in out[corner_at(i) - base..].iter_mut().zip(sorted.iter()) {
+                        *o = *e as u32;
+                    }
+                }
+            });
+        Corners::with_opposites(offsets, corner, faces)
     }
 
     /// Corners when every fan is closed: each slot (v, u) has exactly two, one from the corner
     /// at v whose next vertex is u and one from the corner at v whose previous vertex is u. Both
     /// lists are sorted by that vertex, so their k-th entries belong to slot k.
-    fn closed_fan_corners(&self, faces: &[[u32; 3]]) -> Corners {
+    /// `entries` are the corner buckets', whose `start` is then `offsets`.
+    fn closed_fan_corners(&self, entries: &[RingCorner], faces: &[[u32; 3]]) -> Corners {
         let n = self.n_vertices();
-        parallel::install(|| {
-            let (start, entries) = opposite_corner_entries(n, faces);
-            let slots = self.nbrs.len();
-            let mut corner: Vec<u32> = huge_pages::filled_vec(2 * slots, 0);
-            let ranges = vertex_chunks(n);
-            split_by(&mut corner, &ranges, |r| 2 * self.offsets[r.start] as usize)
-                .into_par_iter()
-                .zip(ranges.par_iter())
-                .for_each(|(out, r)| {
-                    let base = 2 * self.offsets[r.start] as usize;
-                    let (mut after, mut before) = (Vec::new(), Vec::new());
-                    for i in r.clone() {
-                        let ring = &entries[start[i] as usize..start[i + 1] as usize];
-                        let at = 2 * self.offsets[i] as usize - base;
-                        let out = &mut out[at..at + 2 * ring.len()];
-                        if ring.len() <= 8 {
-                            // Padding sorts last and is never written out.
-                            let mut a = [u64::MAX; 8];
-                            let mut b = [u64::MAX; 8];
-                            for (k, e) in ring.iter().enumerate() {
-                                a[k] = e[0];
-                                b[k] = e[1];
-                            }
-                            sort8(&mut a);
-                            sort8(&mut b);
-                            pair_corners(&a, &b, out);
-                        } else {
-                            after.clear();
-                            before.clear();
-                            after.extend(ring.iter().map(|e| e[0]));
-                            before.extend(ring.iter().map(|e| e[1]));
-                            after.sort_unstable();
-                            before.sort_unstable();
-                            pair_corners(&after, &before, out);
+        let start = &self.offsets;
+        let slots = self.nbrs.len();
+        let mut corner: Vec<u32> = huge_pages::filled_vec(2 * slots, 0);
+        let ranges = vertex_chunks(n);
+        split_by(&mut corner, &ranges, |r| 2 * self.offsets[r.start] as usize)
+            .into_par_iter()
+            .zip(ranges.par_iter())
+            .for_each(|(out, r)| {
+                let base = 2 * self.offsets[r.start] as usize;
+                let (mut after, mut before) = (Vec::new(), Vec::new());
+                for i in r.clone() {
+                    let ring = &entries[start[i] as usize..start[i + 1] as usize];
+                    let at = 2 * self.offsets[i] as usize - base;
+                    let out = &mut out[at..at + 2 * ring.len()];
+                    if ring.len() <= 8 {
+                        // Padding sorts last and is never written out.
+                        let mut a = [u64::MAX; 8];
+                        let mut b = [u64::MAX; 8];
+                        for (k, e) in ring.iter().enumerate() {
+                            (a[k], b[k]) = across(e);
                         }
+                        sort8(&mut a);
+                        sort8(&mut b);
+                        pair_corners(&a, &b, out);
+                    } else {
+                        after.clear();
+                        before.clear();
+                        after.extend(ring.iter().map(|e| across(e).0));
+                        before.extend(ring.iter().map(|e| across(e).1));
+                        after.sort_unstable();
+                        before.sort_unstable();
+                        pair_corners(&after, &before, out);
                     }
-                });
-            drop(entries);
-            let offsets: Vec<u32> = (0..=slots as u32).into_par_iter().map(|s| 2 * s).collect();
-            Corners::with_opposites(offsets, corner, faces)
-        })
+                }
+            });
+        let offsets: Vec<u32> = (0..=slots as u32).into_par_iter().map(|s| 2 * s).collect();
+        Corners::with_opposites(offsets, corner, faces)
     }
 
     /// Per vertex: does it lie on an edge with exactly one face?
@@ -345,104 +341,12 @@ fn pair_corners(after: &[u64], before: &[u64], out: &mut [u32]) {
     }
 }
 
-/// Larger than any vertex index (`build` refuses meshes that reach it): pads small rings.
-const NOT_A_VERTEX: u32 = u32::MAX - 1;
-
-/// For every face corner, (the vertex after it, the vertex before it) in its face, grouped by
-/// the corner's vertex in face order: returns (group starts, pairs).
-fn corner_lists(n: usize, faces: &[[u32; 3]]) -> (Vec<u32>, Vec<[u32; 2]>) {
-    corner_entries(n, faces, |f, j, _| [f[(j + 1) % 3], f[(j + 2) % 3]])
-}
-
-/// Per corner at v: (next << 32 | opposite corner of the face-edge v-next, prev << 32 |
-/// opposite corner of prev-v), corners written as face * 3 + position; grouped by vertex.
-fn opposite_corner_entries(n: usize, faces: &[[u32; 3]]) -> (Vec<u32>, Vec<[u64; 2]>) {
-    corner_entries(n, faces, |f, j, face| {
-        let (next, prev) = (f[(j + 1) % 3] as u64, f[(j + 2) % 3] as u64);
-        let corner = |k: usize| (face * 3 + (k % 3) as u32) as u64;
-        [next << 32 | corner(j + 2), prev << 32 | corner(j + 1)]
-    })
-}
-
-/// `entry(face, k, face index)` for every face corner, grouped by the corner's vertex in face
-/// order: returns (group starts, entries).
-fn corner_entries<E: Copy + Send + Sync>(
-    n: usize,
-    faces: &[[u32; 3]],
-    entry: impl Fn(&[u32; 3], usize, u32) -> E + Sync,
-) -> (Vec<u32>, Vec<E>) {
-    let parts = rayon::current_num_threads().clamp(1, 8);
-    let per = faces.len().div_ceil(parts).max(1);
-    let chunks: Vec<&[[u32; 3]]> = faces.chunks(per).collect();
-    let mut cursors: Vec<Vec<u32>> = chunks
-        .par_iter()
-        .map(|ch| {
-            let mut c = huge_pages::filled_vec(n, 0u32);
-            for f in ch.iter() {
-                for &v in f {
-                    c[v as usize] += 1;
-                }
-            }
-            c
-        })
-        .collect();
-    // start[v], and (in place of the counts) where each part writes its first corner of v:
-    // parts in face order. A two-level prefix sum: totals per vertex range, then each range.
-    let ranges = vertex_chunks(n);
-    let range_totals: Vec<u32> =
-        ranges.par_iter().map(|r| cursors.iter().map(|c| c[r.clone()].iter().sum::<u32>()).sum()).collect();
-    let mut range_start = Vec::with_capacity(ranges.len());
-    let mut acc = 0u32;
-    for t in &range_totals {
-        range_start.push(acc);
-        acc += t;
-    }
-    let mut start: Vec<u32> = huge_pages::filled_vec(n + 1, 0);
-    start[n] = acc;
-    {
-        let mut per_part: Vec<Vec<&mut [u32]>> =
-            cursors.iter_mut().map(|c| split_by(c, &ranges, |r| r.start)).collect();
-        let mut by_range: Vec<Vec<&mut [u32]>> = (0..ranges.len()).map(|_| Vec::new()).collect();
-        for part in per_part.iter_mut() {
-            for (k, piece) in part.drain(..).enumerate() {
-                by_range[k].push(piece);
-            }
-        }
-        split_by(&mut start[..n], &ranges, |r| r.start)
-            .into_par_iter()
-            .zip(by_range.into_par_iter())
-            .zip(range_start.par_iter())
-            .for_each(|((st, mut parts), &base)| {
-                let mut acc = base;
-                for (k, s) in st.iter_mut().enumerate() {
-                    *s = acc;
-                    for c in parts.iter_mut() {
-                        let count = c[k];
-                        c[k] = acc;
-                        acc += count;
-                    }
-                }
-            });
-    }
-    let mut pairs: Vec<E> = huge_pages::with_capacity(acc as usize);
-    let out = SharedSlice(pairs.as_mut_ptr());
-    chunks.par_iter().zip(cursors.par_iter_mut()).enumerate().for_each(|(p, (ch, cur))| {
-        let out = &out;
-        for (local, f) in ch.iter().enumerate() {
-            let face = (p * per + local) as u32;
-            for j in 0..3 {
-                let v = f[j] as usize;
-                // SAFETY: each part writes only inside the index ranges its own cursors
-                // cover, which are disjoint from every other part's, and together they cover
-                // 0..acc exactly once.
-                unsafe { out.write(cur[v] as usize, entry(f, j, face)) };
-                cur[v] += 1;
-            }
-        }
-    });
-    // SAFETY: every index in 0..acc was written above.
-    unsafe { pairs.set_len(acc as usize) };
-    (start, pairs)
+/// A corner's two face-edges as sort keys: (next << 32 | the corner across v -> next,
+/// prev << 32 | the corner across prev -> v).
+#[inline(always)]
+fn across(e: &RingCorner) -> (u64, u64) {
+    let [next, prev, id] = *e;
+    ((next as u64) << 32 | across_next(id) as u64, (prev as u64) << 32 | across_prev(id) as u64)
 }
 
 /// If v's fan is closed and consistently oriented (the vertices after v distinct and none of
@@ -450,14 +354,14 @@ fn corner_entries<E: Copy + Send + Sync>(
 /// each on two faces) sorted into `out` and returns true. Branch-free for up to 8 corners:
 /// two sorting networks and a comparison, since which vertices fail is unpredictable.
 #[inline]
-fn closed_fan(v: u32, ring: &[[u32; 2]], out: &mut [u32]) -> bool {
+fn closed_fan<E: Corner>(v: u32, ring: &[E], out: &mut [u32]) -> bool {
     if ring.len() > 8 {
-        let sorted = |k: usize| {
-            let mut s: Vec<u32> = ring.iter().map(|e| e[k]).collect();
+        let sorted = |end: fn(&E) -> u32| {
+            let mut s: Vec<u32> = ring.iter().map(end).collect();
             s.sort_unstable();
             s
         };
-        let (after, before) = (sorted(0), sorted(1));
+        let (after, before) = (sorted(E::next), sorted(E::prev));
         let closed = after == before && after.windows(2).all(|w| w[0] != w[1]) && !after.contains(&v);
         if closed {
             out.copy_from_slice(&after);
@@ -467,8 +371,8 @@ fn closed_fan(v: u32, ring: &[[u32; 2]], out: &mut [u32]) -> bool {
     let mut after = [NOT_A_VERTEX; 8];
     let mut before = [NOT_A_VERTEX; 8];
     for (k, c) in ring.iter().enumerate() {
-        after[k] = c[0];
-        before[k] = c[1];
+        after[k] = c.next();
+        before[k] = c.prev();
     }
     sort8(&mut after);
     sort8(&mut before);
@@ -490,10 +394,10 @@ fn closed_fan(v: u32, ring: &[[u32; 2]], out: &mut [u32]) -> bool {
 }
 
 /// The face-edge ends of v's corners, v itself left out, sorted into `out`.
-fn general_ring(v: u32, ring: &[[u32; 2]], out: &mut Vec<u32>) {
+fn general_ring<E: Corner>(v: u32, ring: &[E], out: &mut Vec<u32>) {
     out.clear();
     for e in ring {
-        out.extend(e.iter().copied().filter(|&u| u != v));
+        out.extend([e.next(), e.prev()].into_iter().filter(|&u| u != v));
     }
     out.sort_unstable();
 }
@@ -503,80 +407,9 @@ fn runs(sorted: &[u32]) -> impl Iterator<Item = (u32, u32)> + '_ {
     sorted.chunk_by(|a, b| a == b).map(|r| (r[0], r.len() as u32))
 }
 
-/// Sorts 8 values with a fixed network (19 comparators; checked on every 0-1 input by a
-/// test), unrolled so that they stay in registers.
-#[inline(always)]
-fn sort8<T: Ord + Copy>(a: &mut [T; 8]) {
-    macro_rules! exchange {
-        ($($i:literal $j:literal),*) => {$(
-            let (x, y) = (a[$i], a[$j]);
-            a[$i] = x.min(y);
-            a[$j] = x.max(y);
-        )*};
-    }
-    exchange!(0 2, 1 3, 4 6, 5 7, 0 4, 1 5, 2 6, 3 7, 0 1, 2 3, 4 5, 6 7, 2 4, 3 5, 1 4, 3 6, 1 2, 3 4,
-        5 6);
-}
-
-struct SharedSlice<E>(*mut E);
-unsafe impl<E: Send> Sync for SharedSlice<E> {}
-impl<E> SharedSlice<E> {
-    /// # Safety
-    /// `i` is in bounds and no other thread writes index `i`.
-    unsafe fn write(&self, i: usize, v: E) {
-        *self.0.add(i) = v;
-    }
-}
-
-fn prefix_sum(counts: &[u32]) -> Vec<u32> {
-    let mut out = Vec::with_capacity(counts.len() + 1);
-    let mut acc = 0u32;
-    out.push(0);
-    for c in counts {
-        acc += c;
-        out.push(acc);
-    }
-    out
-}
-
-/// Vertices per parallel task.
-const VERTEX_CHUNK: usize = 4096;
-
-fn vertex_chunks(n: usize) -> Vec<std::ops::Range<usize>> {
-    (0..n.div_ceil(VERTEX_CHUNK)).map(|c| c * VERTEX_CHUNK..((c + 1) * VERTEX_CHUNK).min(n)).collect()
-}
-
-/// Splits `data` into consecutive pieces, one per vertex range, each starting at `at(range)`.
-fn split_by<'a, T>(
-    data: &'a mut [T],
-    ranges: &[std::ops::Range<usize>],
-    at: impl Fn(&std::ops::Range<usize>) -> usize,
-) -> Vec<&'a mut [T]> {
-    let mut out = Vec::with_capacity(ranges.len());
-    let mut rest = data;
-    let mut pos = ranges.first().map(&at).unwrap_or(0);
-    for k in 0..ranges.len() {
-        let end = ranges.get(k + 1).map(&at).unwrap_or(pos + rest.len());
-        let (head, tail) = rest.split_at_mut(end - pos);
-        out.push(head);
-        rest = tail;
-        pos = end;
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_sorting_network_sorts_every_zero_one_input() {
-        for bits in 0u32..256 {
-            let mut a: [u32; 8] = std::array::from_fn(|i| (bits >> i) & 1);
-            sort8(&mut a);
-            assert!(a.windows(2).all(|w| w[0] <= w[1]), "{bits:b}");
-        }
-    }
 
     #[test]
     fn only_closed_consistent_fans_take_the_shortcut() {
@@ -613,10 +446,9 @@ mod tests {
     fn closed_fan_corners_match_the_general_ones() {
         let (_, faces) = crate::mesh::shapes::icosphere(2, 0.0, 0).unwrap();
         let n = 162;
-        let fast = Adjacency::build(n, &faces).unwrap();
+        let fast = Adjacency::build_with_corners(n, &faces).unwrap();
         assert!(fast.all_fans_closed);
-        let general = fast.general_corners(&faces);
-        let fast = fast.with_corners(&faces);
+        let general = fast.general_corners(&Buckets::corners_with_ids(n, &faces).unwrap(), &faces);
         let range = |c: &Corners, s: usize| c.offsets[s] as usize..c.offsets[s + 1] as usize;
         for s in 0..fast.nbrs.len() {
             assert_eq!(fast.corners_of(s), &general.corner[range(&general, s)], "slot {s}");
@@ -627,7 +459,7 @@ mod tests {
     #[test]
     fn square_of_two_triangles() {
         let faces = [[0, 1, 2], [0, 2, 3]];
-        let a = Adjacency::build(5, &faces).unwrap().with_corners(&faces);
+        let a = Adjacency::build_with_corners(5, &faces).unwrap();
         assert_eq!(a.neighbours(0), &[1, 2, 3]);
         assert_eq!(a.neighbours(2), &[0, 1, 3]);
         assert_eq!(a.neighbours(4), &[] as &[u32]);
@@ -654,7 +486,9 @@ mod tests {
         let n = 50;
         let faces: Vec<[u32; 3]> =
             (0..400).map(|_| [0, 1, 2].map(|_| (rng.next_u64() % n as u64) as u32)).collect();
-        let a = Adjacency::build(n, &faces).unwrap().with_corners(&faces);
+        let a = Adjacency::build_with_corners(n, &faces).unwrap();
+        let plain = Adjacency::build(n, &faces).unwrap();
+        assert_eq!((&a.offsets, &a.nbrs, &a.self_edges), (&plain.offsets, &plain.nbrs, &plain.self_edges));
         let mut expect: BTreeMap<(u32, u32), Vec<u32>> = BTreeMap::new();
         for f in &faces {
             for j in 0..3 {

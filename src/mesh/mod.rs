@@ -1,12 +1,19 @@
-//! Triangle meshes: checked input, one-ring adjacency, bounding boxes and procedural shapes.
+//! Triangle meshes: checked input, connectivity (face items bucketed by vertex, and what is
+//! derived from them: one-rings and the edge table), welding, bounding boxes and procedural
+//! shapes.
 
 pub mod adjacency;
 pub mod bounds;
+pub mod buckets;
+pub mod edge_table;
 pub mod input;
 pub mod normals;
 pub mod reorder;
 pub mod shapes;
+pub mod weld;
 
 pub use adjacency::Adjacency;
 pub use bounds::Bounds;
+pub use buckets::Buckets;
+pub use edge_table::EdgeTable;
 pub use input::{check_faces, check_positions, Faces};

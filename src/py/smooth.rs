@@ -24,7 +24,7 @@ fn method(name: &str) -> Result<Method, Error> {
 #[pyo3(signature = (
     method_name, vertices, faces_arr, *, iterations=None, lamb=None, mu=None, alpha=None, beta=None,
     step=None, tol=None, max_iter=None, weights=None, boundary=None, pinned=None,
-    volume_constraint=None, preset=None
+    volume_constraint=None, preset=None, weld
 ))]
 #[allow(clippy::too_many_arguments)]
 fn _smooth<'py>(
@@ -45,6 +45,7 @@ fn _smooth<'py>(
     pinned: Option<&Bound<'py, PyAny>>,
     volume_constraint: Option<&Bound<'py, PyAny>>,
     preset: Option<&Bound<'py, PyAny>>,
+    weld: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let m = method(method_name).map_err(to_py)?;
     // None means "the preset's default" for every option.
@@ -62,6 +63,7 @@ fn _smooth<'py>(
             boundary: args::optional("boundary", boundary, args::text)?,
             volume_constraint: args::optional("volume_constraint", volume_constraint, args::flag)?,
             preset: args::optional("preset", preset, args::text)?,
+            weld: Some(args::flag("weld", weld)?),
         })
     })()
     .map_err(to_py)?;

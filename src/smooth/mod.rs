@@ -21,6 +21,7 @@ use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::huge_pages;
 use crate::mesh::reorder::{self, Reordering};
+use crate::mesh::weld::Merged;
 use crate::mesh::Adjacency;
 use crate::real::{self, Real, Vec3};
 use operator::{from_f64, par_rows_gathering, Operator};
@@ -85,6 +86,10 @@ impl Source {
 }
 
 /// Smooths `x0` as `plan` says. `pinned` marks vertices that must not move.
+///
+/// With `plan.weld`, the mesh smoothed is the welded one (`mesh::weld::Merged`): vertices at
+/// equal positions are one vertex, so seams are neither boundaries nor cracks, a position is
+/// pinned when any of its copies is, and every copy gets its position's result.
 pub fn smooth<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
@@ -110,10 +115,10 @@ pub fn smooth_cancellable<T: Real>(
         return Ok(x0.to_vec());
     }
     let out = match range::Pow2::to_fit(x0, largest) {
-        None => smooth_any_order(x0, faces, plan, pinned, cancel, None)?,
+        None => smooth_welded_or_not(x0, faces, plan, pinned, cancel, None)?,
         Some(s) => {
             let scaled = s.scale(x0);
-            let mut out = smooth_any_order(&scaled, faces, plan, pinned, cancel, Some(s))?;
+            let mut out = smooth_welded_or_not(&scaled, faces, plan, pinned, cancel, Some(s))?;
             s.restore(x0, &scaled, &mut out);
             out
         }
@@ -160,8 +165,31 @@ fn overflow_error<T: Real>(x0: &[Vec3<T>], plan: &Plan) -> Error {
     }
 }
 
-/// `x0` smoothed in the vertex order that suits it best. `scale` is the power of two `x0` was
-/// scaled by, if any, for the one rule stated in absolute units (trimesh's distance floor).
+/// `x0` smoothed, welded first if the plan says so. `scale` is the power of two `x0` was scaled
+/// by, if any, for the one rule stated in absolute units (trimesh's distance floor).
+fn smooth_welded_or_not<T: Real>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    plan: &Plan,
+    pinned: Option<&[bool]>,
+    cancel: &Cancel,
+    scale: Option<range::Pow2>,
+) -> Result<Vec<Vec3<T>>> {
+    if plan.weld {
+        let merged = Merged::of(x0);
+        if merged.has_copies() {
+            let pinned = pinned.map(|p| merged.any(p));
+            let welded = merged.gather(x0);
+            let out =
+                smooth_any_order(&welded, &merged.faces(faces), plan, pinned.as_deref(), cancel, scale)?;
+            return Ok(merged.scatter(&out));
+        }
+    }
+    smooth_any_order(x0, faces, plan, pinned, cancel, scale)
+}
+
+/// `x0` smoothed in the vertex order that suits it best: its vertices are its vertices, welded
+/// or not.
 fn smooth_any_order<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
@@ -187,10 +215,11 @@ fn smooth_in_order<T: Real>(
     cancel: &Cancel,
     scale: Option<range::Pow2>,
 ) -> Result<Vec<Vec3<T>>> {
-    let mut adj = Adjacency::build(x0.len(), faces)?;
-    if plan.weights == Weights::Cotangent {
-        adj = adj.with_corners(faces);
-    }
+    let adj = if plan.weights == Weights::Cotangent {
+        Adjacency::build_with_corners(x0.len(), faces)?
+    } else {
+        Adjacency::build(x0.len(), faces)?
+    };
     // Which vertices the volume constraint may rescale (None: all, as trimesh does).
     let mut rescale_mask: Option<Vec<bool>> = None;
     let source = match plan.preset {

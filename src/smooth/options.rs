@@ -57,6 +57,7 @@ pub struct Args {
     pub boundary: Option<String>,
     pub volume_constraint: Option<bool>,
     pub preset: Option<String>,
+    pub weld: Option<bool>,
 }
 
 /// Fully resolved options.
@@ -75,6 +76,10 @@ pub struct Plan {
     pub weights: Weights,
     pub boundary: Boundary,
     pub volume_constraint: bool,
+    /// Smooth the welded mesh (vertices at equal positions merged) and give every copy its
+    /// position's result. Any preset allows it: the preset's algorithm then runs on the welded
+    /// mesh.
+    pub weld: bool,
 }
 
 fn parse<T: Copy>(arg: &str, value: &str, table: &[(&str, T)]) -> Result<T> {
@@ -279,6 +284,7 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
         weights,
         boundary,
         volume_constraint,
+        weld: a.weld.unwrap_or(false),
     })
 }
 

@@ -1,16 +1,19 @@
-//! Every undirected edge of a mesh once, with the faces that use it.
+//! Every undirected edge of a mesh once, with the faces that use it, derived from the
+//! face-edge buckets (`mesh::buckets`).
 //!
 //! Edges are stored smaller index first and sorted lexicographically, (a, b) before (a, c) when
 //! b < c: the order every edge list of `crate::edges` inherits. An edge's face-edges are the
 //! (face, direction) pairs whose face walks along it; a face that repeats an index, like
-//! (a, a, b), uses a-b twice and never has a self-edge a-a. Built with a counting sort on the
-//! smaller vertex, so it costs O(faces) and does not depend on face order within a bucket or on
+//! (a, a, b), uses a-b twice and never has a self-edge a-a. Each vertex's bucket holds the
+//! face-edges whose smaller end it is, so sorting the buckets one by one meets every edge once,
+//! in order, at a cost of O(faces) that depends neither on face order within a bucket nor on
 //! the thread count.
 
 use rayon::prelude::*;
 
-use crate::error::{Error, Result};
-use crate::huge_pages::{filled_vec, with_capacity};
+use super::buckets::Buckets;
+use crate::error::Result;
+use crate::huge_pages::with_capacity;
 
 /// One face walking along an edge: `face` and whether it walks from the larger index to the
 /// smaller (`reversed`).
@@ -21,76 +24,33 @@ pub struct FaceUse {
 }
 
 impl FaceUse {
-    /// Decodes the low 32 bits of a bucket entry (face << 1 | reversed).
+    /// Decodes a face-edge tag, face << 1 | reversed (the low 32 bits of a bucket entry).
     #[inline]
-    pub fn unpack(entry: u64) -> FaceUse {
-        let tag = entry as u32;
+    pub fn unpack(tag: u32) -> FaceUse {
         FaceUse { face: tag >> 1, reversed: tag & 1 == 1 }
     }
-}
-
-/// Face-edges bucketed by their smaller vertex with a counting sort; each entry is
-/// larger vertex << 32 | face << 1 | reversed, so sorting a bucket sorts by the other end, then
-/// face, then direction.
-pub struct Buckets {
-    start: Vec<u32>,
-    entries: Vec<u64>,
 }
 
 /// Vertices per parallel task when visiting buckets (fixed, so results never depend on the
 /// thread count).
 const CHUNK: usize = 8192;
-/// How many buckets ahead `visit` hands to its prefetch hook.
+/// How many buckets ahead `visit_edges` hands to its prefetch hook.
 const PREFETCH_BUCKETS: usize = 4;
 
-impl Buckets {
-    pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Buckets> {
-        if faces.len() >= (1usize << 31) / 3 {
-            return Err(Error::invalid(
-                "faces",
-                format!("{} faces is more than toonmesh supports", faces.len()),
-            ));
-        }
-        let mut start = vec![0u32; n_vertices + 1];
-        for f in faces {
-            for j in 0..3 {
-                let (a, b) = (f[j], f[(j + 1) % 3]);
-                if a != b {
-                    start[a.min(b) as usize + 1] += 1;
-                }
-            }
-        }
-        for i in 0..n_vertices {
-            start[i + 1] += start[i];
-        }
-        let total = start[n_vertices] as usize;
-        let mut entries = filled_vec(total, 0u64);
-        let mut cursor = start.clone();
-        for (fi, f) in faces.iter().enumerate() {
-            for j in 0..3 {
-                let (a, b) = (f[j], f[(j + 1) % 3]);
-                if a != b {
-                    let (lo, hi, rev) = if a < b { (a, b, 0) } else { (b, a, 1) };
-                    let slot = &mut cursor[lo as usize];
-                    entries[*slot as usize] = (hi as u64) << 32 | ((fi as u64) << 1 | rev);
-                    *slot += 1;
-                }
-            }
-        }
-        Ok(Buckets { start, entries })
-    }
-
-    /// Sorts every bucket and calls `visit(state, [a, b], entries)` for each distinct edge, in
-    /// lexicographic order within fixed chunks of vertices that run in parallel; returns each
-    /// chunk's state, in order. Before a bucket is visited, `prefetch` sees the (unsorted)
-    /// entries of a bucket a few vertices ahead, to start loading what the visitor will need.
-    pub fn visit<S: Send>(
+impl Buckets<u64> {
+    /// Sorts every face-edge bucket and calls `visit(state, [a, b], entries)` for each distinct
+    /// edge, in lexicographic order, with its entries ascending (by face, then direction),
+    /// within fixed chunks of vertices that run in parallel; returns each chunk's state, in
+    /// order (`init` is told how many face-edges its chunk has). Before a bucket is visited,
+    /// `prefetch` sees the (unsorted) entries of a bucket a few vertices ahead, to start
+    /// loading what the visitor will need.
+    pub fn visit_edges<S: Send>(
         &mut self,
-        init: impl Fn() -> S + Sync,
+        init: impl Fn(usize) -> S + Sync,
         prefetch: impl Fn(&[u64]) + Sync,
         visit: impl Fn(&mut S, [u32; 2], &[u64]) + Sync,
     ) -> Vec<S> {
-        let n_vertices = self.start.len() - 1;
+        let n_vertices = self.n_vertices();
         let start = &self.start;
         let n_chunks = n_vertices.div_ceil(CHUNK);
         let mut pieces: Vec<&mut [u64]> = Vec::with_capacity(n_chunks);
@@ -109,21 +69,14 @@ impl Buckets {
                 let v0 = c * CHUNK;
                 let v1 = ((c + 1) * CHUNK).min(n_vertices);
                 let base = start[v0] as usize;
-                let mut state = init();
+                let mut state = init(piece.len());
                 for a in v0..v1 {
                     let ahead = (a + PREFETCH_BUCKETS).min(v1 - 1);
                     prefetch(&piece[start[ahead] as usize - base..start[ahead + 1] as usize - base]);
                     let bucket = &mut piece[start[a] as usize - base..start[a + 1] as usize - base];
                     bucket.sort_unstable();
-                    let mut k = 0;
-                    while k < bucket.len() {
-                        let b = (bucket[k] >> 32) as u32;
-                        let mut e = k + 1;
-                        while e < bucket.len() && (bucket[e] >> 32) as u32 == b {
-                            e += 1;
-                        }
-                        visit(&mut state, [a as u32, b], &bucket[k..e]);
-                        k = e;
+                    for run in bucket.chunk_by(|x, y| x >> 32 == y >> 32) {
+                        visit(&mut state, [a as u32, (run[0] >> 32) as u32], run);
                     }
                 }
                 state
@@ -136,17 +89,24 @@ impl Buckets {
 pub struct EdgeTable {
     /// Unique edges (a, b), a < b, in lexicographic order.
     pub edges: Vec<[u32; 2]>,
-    /// `uses[use_offsets[e]..use_offsets[e + 1]]` are edge e's bucket entries (see `Buckets`),
-    /// ascending by face.
+    /// `uses[use_offsets[e]..use_offsets[e + 1]]` are edge e's bucket entries (see
+    /// `Buckets::face_edges`), ascending by face.
     pub use_offsets: Vec<u32>,
     uses: Vec<u64>,
 }
 
 impl EdgeTable {
     pub fn build(n_vertices: usize, faces: &[[u32; 3]]) -> Result<EdgeTable> {
-        let mut buckets = Buckets::build(n_vertices, faces)?;
-        let per_chunk = buckets.visit(
-            || (Vec::new(), Vec::new()),
+        let buckets = Buckets::face_edges(n_vertices, faces)?;
+        Ok(crate::parallel::install(|| EdgeTable::from_buckets(buckets)))
+    }
+
+    /// The table from face-edge buckets, whose sorted entries become its face uses.
+    pub fn from_buckets(mut buckets: Buckets<u64>) -> EdgeTable {
+        // About two face-edges per edge (exactly so on a closed manifold mesh): room for that,
+        // so the parts rarely grow.
+        let per_chunk = buckets.visit_edges(
+            |face_edges| (Vec::with_capacity(face_edges / 2 + 64), Vec::with_capacity(face_edges / 2 + 64)),
             |_| {},
             |(edges, counts): &mut (Vec<[u32; 2]>, Vec<u32>), edge, uses| {
                 edges.push(edge);
@@ -165,7 +125,7 @@ impl EdgeTable {
                 use_offsets.push(acc);
             }
         }
-        Ok(EdgeTable { edges, use_offsets, uses: buckets.entries })
+        EdgeTable { edges, use_offsets, uses: buckets.entries }
     }
 
     pub fn len(&self) -> usize {
@@ -199,8 +159,24 @@ impl EdgeTable {
     pub fn uses(&self, e: usize) -> impl ExactSizeIterator<Item = FaceUse> + '_ {
         self.uses[self.use_offsets[e] as usize..self.use_offsets[e + 1] as usize]
             .iter()
-            .map(|&t| FaceUse::unpack(t))
+            .map(|&t| FaceUse::unpack(t as u32))
     }
+}
+
+/// Asks the CPU to start loading `data[i]` (any `i`: a prefetch is only a hint and never faults).
+#[inline(always)]
+pub fn prefetch<T>(data: &[T], i: usize) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        let p = data.as_ptr().wrapping_add(i);
+        // SAFETY: prefetching never faults, whatever the address.
+        #[allow(unused_unsafe)]
+        unsafe {
+            std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(p as *const i8)
+        };
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (data, i);
 }
 
 #[cfg(test)]
@@ -229,21 +205,34 @@ mod tests {
         let t = EdgeTable::build(2, &[[0, 0, 1]]).unwrap();
         assert_eq!(t.edges, vec![[0, 1]]);
         assert_eq!(t.face_count(0), 2);
+        let u: Vec<FaceUse> = t.uses(0).collect();
+        assert_eq!(u, vec![FaceUse { face: 0, reversed: false }, FaceUse { face: 0, reversed: true }]);
     }
-}
 
-/// Asks the CPU to start loading `data[i]` (any `i`: a prefetch is only a hint and never faults).
-#[inline(always)]
-pub fn prefetch<T>(data: &[T], i: usize) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        let p = data.as_ptr().wrapping_add(i);
-        // SAFETY: prefetching never faults, whatever the address.
-        #[allow(unused_unsafe)]
-        unsafe {
-            std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(p as *const i8)
-        };
+    #[test]
+    fn matches_a_brute_force_table_on_a_messy_mesh() {
+        use std::collections::BTreeMap;
+        let mut rng = crate::mesh::shapes::SplitMix64::new(5);
+        let n = 40;
+        let faces: Vec<[u32; 3]> =
+            (0..300).map(|_| [0, 1, 2].map(|_| (rng.next_u64() % n as u64) as u32)).collect();
+        let mut expect: BTreeMap<[u32; 2], Vec<FaceUse>> = BTreeMap::new();
+        for (fi, f) in faces.iter().enumerate() {
+            for j in 0..3 {
+                let (a, b) = (f[j], f[(j + 1) % 3]);
+                if a != b {
+                    let u = FaceUse { face: fi as u32, reversed: a > b };
+                    expect.entry([a.min(b), a.max(b)]).or_default().push(u);
+                }
+            }
+        }
+        for uses in expect.values_mut() {
+            uses.sort_by_key(|u| (u.face, u.reversed));
+        }
+        let t = EdgeTable::build(n, &faces).unwrap();
+        let got: BTreeMap<[u32; 2], Vec<FaceUse>> =
+            (0..t.len()).map(|e| (t.edges[e], t.uses(e).collect())).collect();
+        assert_eq!(got, expect);
+        assert!(t.edges.windows(2).all(|w| w[0] < w[1]));
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = (data, i);
 }
