@@ -10,7 +10,7 @@ use pyo3::types::{PyBytes, PyDict, PyString};
 use super::args::{integer, rgb, rgba, text, type_name};
 use super::convert::{faces, positions, Positions};
 use super::errors::to_py;
-use super::runtime::catching_panics;
+use super::runtime::{catching_panics, detached_cancellable};
 use super::scene::{PyCamera, PyLight, PyMaterial, PyOutlines};
 use crate::error::{Error, Result};
 use crate::render::gpu_mesh::NormalMode;
@@ -509,7 +509,9 @@ impl PyRenderer {
         let stacks = Stacks::allocate(py, &frame, cams.len());
         let buffers = stacks.buffers(cams.len());
         let inner = &self.inner;
-        let reports = without_gil(py, || inner.render_views(&scene, &cams, &frame, buffers, || Ok(())))?;
+        // a long stream of views stops on Ctrl-C between frames
+        let reports =
+            detached_cancellable(py, |cancel| inner.render_views(&scene, &cams, &frame, buffers, cancel))?;
         let images = PyDict::new(py);
         images.set_item("color", stacks.color)?;
         images.set_item("normal", stacks.normal)?;

@@ -10,6 +10,7 @@ use std::time::Instant;
 
 use glam::{DMat4, DVec3};
 
+use crate::cancel::Cancel;
 use crate::edges::chains::chain_edges;
 use crate::edges::outlines::Outline;
 use crate::edges::View;
@@ -250,15 +251,16 @@ impl Renderer {
 
     /// Renders `scene` once from each of `cameras` into `outs` (one set of buffers a view),
     /// keeping `IN_FLIGHT` frames submitted at once so that the GPU draws one while the host
-    /// reads the last back. Gives the same bits as rendering each view alone. `interrupted`
-    /// is asked between frames and stops the work with its error.
+    /// reads the last back. Gives the same bits as rendering each view alone. `cancel` is
+    /// checked between frames: once raised, the frames in flight are waited for and dropped and
+    /// the call returns `Error::Interrupted`.
     pub fn render_views(
         &self,
         scene: &Scene,
         cameras: &[Camera],
         frame: &FrameSpec,
         outs: Vec<OutputBuffers<'_>>,
-        interrupted: impl Fn() -> Result<()>,
+        cancel: &Cancel,
     ) -> Result<Vec<FrameReport>> {
         if outs.len() != cameras.len() {
             return Err(Error::Internal("render_views: one set of output buffers a camera".into()));
@@ -268,7 +270,7 @@ impl Renderer {
         let mut reports = Vec::with_capacity(cameras.len());
         let mut run = || -> Result<()> {
             for camera in cameras {
-                interrupted()?;
+                cancel.check()?;
                 let view = Scene { camera: *camera, ..scene.clone() };
                 in_flight.push_back(self.submit(view, *frame)?);
                 if in_flight.len() >= IN_FLIGHT {
