@@ -1,5 +1,5 @@
 # Type stubs for the compiled core (checked against it with `python -m mypy.stubtest toonmesh._core`).
-from typing import Any, Dict, List, Optional, Tuple, final
+from typing import Any, Dict, List, Optional, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -14,6 +14,7 @@ __all__ = [
     "Material",
     "Outlines",
     "Renderer",
+    "Shadows",
     "_EdgeIndex",
     "__version__",
     "_chains",
@@ -24,6 +25,7 @@ __all__ = [
     "_restore_material",
     "_restore_outlines",
     "_segments",
+    "_shadow_truth",
     "_silhouette",
     "_smooth",
     "_sobel",
@@ -133,10 +135,33 @@ class Material:
     def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
 
 @final
+class Shadows:
+    """Shadow settings of a directional light: the shadow map's side in texels (a power of two
+    from 64 to 8192, default 2048), the depth bias in texels per unit of receiver slope (>= 0,
+    default 1.0) and the filter, "pcf" (default) or "none"."""
+
+    def __new__(
+        cls, size: Optional[int] = ..., bias: Optional[float] = ..., filter: Optional[str] = ...
+    ) -> Shadows: ...
+    @property
+    def size(self) -> int: ...
+    @property
+    def bias(self) -> float: ...
+    @property
+    def filter(self) -> str: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[int, float, str]]: ...
+
+@final
 class Light:
     @staticmethod
     def directional(
-        direction: Any, *, color: Optional[_Color] = ..., intensity: Optional[float] = ..., space: Optional[str] = ...
+        direction: Any,
+        *,
+        color: Optional[_Color] = ...,
+        intensity: Optional[float] = ...,
+        space: Optional[str] = ...,
+        shadows: Union[None, bool, Shadows] = ...,
     ) -> Light: ...
     @staticmethod
     def point(
@@ -156,6 +181,8 @@ class Light:
     def intensity(self) -> float: ...
     @property
     def space(self) -> str: ...
+    @property
+    def shadows(self) -> Optional[Shadows]: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
 
@@ -315,6 +342,9 @@ class Renderer:
 
 def gpu_info(backend: Optional[str] = ...) -> Dict[str, Any]: ...
 def encode_png_rgba(color: Any) -> bytes: ...
+def _shadow_truth(
+    vertices: Any, faces_arr: Any, view_proj: npt.NDArray[np.float64], width: int, height: int, toward_light: Any
+) -> npt.NDArray[np.float32]: ...
 
 
 # --- edges (toonmesh.edges wraps these) ---

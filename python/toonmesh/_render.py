@@ -17,7 +17,7 @@ from typing import Any, Dict, Iterator, List, Optional, Sequence
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._core import Camera, Light, LineStyle, Material, Outlines, kang_table
+from toonmesh._core import Camera, Light, LineStyle, Material, Outlines, Shadows, kang_table
 from toonmesh._input import mesh_arrays
 
 _NORMAL_MODES = ("smooth", "flat")
@@ -82,6 +82,8 @@ class RenderResult:
     - ``normal``: (H, W, 3) float32, unit view-space normals (x right, y up, z toward the
       camera), turned toward the camera; (0, 0, 0) where no mesh is;
     - ``outline``: (H, W) float32 ink coverage of the outlines in [0, 1] (the line drawing);
+    - ``shadow``: (H, W) float32 visibility of the shadow-casting light in [0, 1]: 1 lit,
+      0 in shadow or facing away from the light, fractions at filtered edges, 1 where no mesh is;
     - ``lines``: the visible mesh-space lines, a list of (K, 2) float64 arrays of pixel
       coordinates (x right, y down, origin at the image's top-left corner), with
       ``line_kinds`` naming each one's kind ("silhouette", "boundary", ...);
@@ -96,6 +98,7 @@ class RenderResult:
         self.normal: Optional[np.ndarray] = raw["normal"]
         self.depth: Optional[np.ndarray] = raw["depth"]
         self.outline: Optional[np.ndarray] = raw["outline"]
+        self.shadow: Optional[np.ndarray] = raw["shadow"]
         self.lines: Optional[List[np.ndarray]] = raw["lines"]
         self.line_kinds: Optional[List[str]] = raw["line_kinds"]
         self.passes: List[str] = list(raw["passes"])
@@ -172,7 +175,7 @@ class RenderResult:
         return None if self.color is None else self.png_bytes()
 
     def __repr__(self) -> str:
-        outs = [n for n in ("color", "normal", "depth", "outline", "lines") if getattr(self, n) is not None]
+        outs = [n for n in ("color", "normal", "depth", "outline", "shadow", "lines") if getattr(self, n) is not None]
         return f"RenderResult({self.width}x{self.height}, outputs={outs}, passes={self.passes}, {self.total_time * 1e3:.1f} ms, {self.backend})"
 
 
@@ -267,8 +270,8 @@ class Renderer:
         :class:`Light` or a list of up to 8) to ``[Light.key()]``. ``ambient`` is the ambient
         light colour (default white). ``background`` is sRGB(A) (default opaque white).
         ``width``/``height`` in pixels (1 to the device's limit, default 512). ``outputs``: any of
-        ``"color"``, ``"normal"``, ``"depth"``, ``"outline"``, ``"lines"``; only those are
-        computed and read back. ``msaa`` (1 or 4) and ``supersample`` (1 to 4, renders
+        ``"color"``, ``"normal"``, ``"depth"``, ``"outline"``, ``"lines"``, ``"shadow"`` (needs a
+        light with ``shadows=True``); only those are computed and read back. ``msaa`` (1 or 4) and ``supersample`` (1 to 4, renders
         ``supersample`` times larger and averages) trade time for smoother edges. ``outlines``:
         None, ``"mesh"``, ``"image"``, ``"both"`` or an :class:`Outlines` (ink lines).
         """
@@ -330,7 +333,7 @@ class Renderer:
         kept = _outlines_of(outlines)
         results = []
         for i, raw in enumerate(reports):
-            raw.update({k: None if images[k] is None else images[k][i] for k in ("color", "normal", "depth", "outline")})
+            raw.update({k: None if images[k] is None else images[k][i] for k in ("color", "normal", "depth", "outline", "shadow")})
             results.append(RenderResult(raw, self.backend, kept))
         return RenderStack(images, results)
 
@@ -364,14 +367,15 @@ class Renderer:
 class RenderStack(Sequence[RenderResult]):
     """The views of :meth:`Renderer.render_many`: a sequence of :class:`RenderResult`, one a
     camera, whose images are slices of the stacked arrays ``color`` (K, H, W, 4) uint8,
-    ``normal`` (K, H, W, 3) float32, ``depth`` (K, H, W) float32 and ``outline`` (K, H, W)
-    float32 (None for outputs not asked for)."""
+    ``normal`` (K, H, W, 3) float32, ``depth`` (K, H, W) float32, ``outline`` (K, H, W)
+    float32 and ``shadow`` (K, H, W) float32 (None for outputs not asked for)."""
 
     def __init__(self, images: Dict[str, Any], results: List[RenderResult]):
         self.color: Optional[np.ndarray] = images["color"]
         self.normal: Optional[np.ndarray] = images["normal"]
         self.depth: Optional[np.ndarray] = images["depth"]
         self.outline: Optional[np.ndarray] = images["outline"]
+        self.shadow: Optional[np.ndarray] = images["shadow"]
         self._results = results
 
     def __len__(self) -> int:
@@ -496,6 +500,7 @@ __all__ = [
     "RenderResult",
     "RenderStack",
     "Renderer",
+    "Shadows",
     "gpu_info",
     "kang_table",
     "render",

@@ -3,7 +3,10 @@
 //! PNG encoding. Every argument is converted with a check that names it.
 
 use numpy::ndarray::Array2;
-use numpy::{IntoPyArray, PyArray2, PyArray3, PyArrayMethods, PyReadonlyArray3, PyUntypedArrayMethods};
+use numpy::{
+    IntoPyArray, PyArray2, PyArray3, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3,
+    PyUntypedArrayMethods,
+};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyString};
 
@@ -159,6 +162,7 @@ struct Images<'py> {
     normal: Option<Bound<'py, PyArray3<f32>>>,
     depth: Option<Bound<'py, PyArray2<f32>>>,
     outline: Option<Bound<'py, PyArray2<f32>>>,
+    shadow: Option<Bound<'py, PyArray2<f32>>>,
 }
 
 impl<'py> Images<'py> {
@@ -171,6 +175,7 @@ impl<'py> Images<'py> {
             normal: o.normal.then(|| unsafe { PyArray3::<f32>::new(py, [h, w, 3], false) }),
             depth: o.depth.then(|| unsafe { PyArray2::<f32>::new(py, [h, w], false) }),
             outline: o.outline.then(|| unsafe { PyArray2::<f32>::new(py, [h, w], false) }),
+            shadow: o.shadow.then(|| unsafe { PyArray2::<f32>::new(py, [h, w], false) }),
         }
     }
 
@@ -182,6 +187,7 @@ impl<'py> Images<'py> {
                 normal: self.normal.as_ref().map(|a| a.as_slice_mut().expect("contiguous")),
                 depth: self.depth.as_ref().map(|a| a.as_slice_mut().expect("contiguous")),
                 outline: self.outline.as_ref().map(|a| a.as_slice_mut().expect("contiguous")),
+                shadow: self.shadow.as_ref().map(|a| a.as_slice_mut().expect("contiguous")),
             }
         }
     }
@@ -199,6 +205,7 @@ impl<'py> Images<'py> {
         d.set_item("normal", self.normal)?;
         d.set_item("depth", self.depth)?;
         d.set_item("outline", self.outline)?;
+        d.set_item("shadow", self.shadow)?;
         match report.lines {
             Some(lines) => {
                 let names = kind_names();
@@ -237,6 +244,7 @@ struct Stacks<'py> {
     normal: Option<Bound<'py, numpy::PyArray4<f32>>>,
     depth: Option<Bound<'py, PyArray3<f32>>>,
     outline: Option<Bound<'py, PyArray3<f32>>>,
+    shadow: Option<Bound<'py, PyArray3<f32>>>,
 }
 
 impl<'py> Stacks<'py> {
@@ -249,6 +257,7 @@ impl<'py> Stacks<'py> {
             normal: o.normal.then(|| unsafe { numpy::PyArray4::<f32>::new(py, [k, h, w, 3], false) }),
             depth: o.depth.then(|| unsafe { PyArray3::<f32>::new(py, [k, h, w], false) }),
             outline: o.outline.then(|| unsafe { PyArray3::<f32>::new(py, [k, h, w], false) }),
+            shadow: o.shadow.then(|| unsafe { PyArray3::<f32>::new(py, [k, h, w], false) }),
         }
     }
 
@@ -264,19 +273,27 @@ impl<'py> Stacks<'py> {
             }
         }
         // SAFETY: the arrays were just made here, are C-contiguous and shared with no one.
-        let (c, n, d, o) = unsafe {
+        let (c, n, d, o, sh) = unsafe {
             (
                 split(self.color.as_ref().map(|a| a.as_slice_mut().expect("contiguous")), k),
                 split(self.normal.as_ref().map(|a| a.as_slice_mut().expect("contiguous")), k),
                 split(self.depth.as_ref().map(|a| a.as_slice_mut().expect("contiguous")), k),
                 split(self.outline.as_ref().map(|a| a.as_slice_mut().expect("contiguous")), k),
+                split(self.shadow.as_ref().map(|a| a.as_slice_mut().expect("contiguous")), k),
             )
         };
         c.into_iter()
             .zip(n)
             .zip(d)
             .zip(o)
-            .map(|(((color, normal), depth), outline)| OutputBuffers { color, normal, depth, outline })
+            .zip(sh)
+            .map(|((((color, normal), depth), outline), shadow)| OutputBuffers {
+                color,
+                normal,
+                depth,
+                outline,
+                shadow,
+            })
             .collect()
     }
 }
@@ -517,10 +534,12 @@ impl PyRenderer {
         images.set_item("normal", stacks.normal)?;
         images.set_item("depth", stacks.depth)?;
         images.set_item("outline", stacks.outline)?;
+        images.set_item("shadow", stacks.shadow)?;
         let reports = reports
             .into_iter()
             .map(|r| {
-                Images { color: None, normal: None, depth: None, outline: None }.into_dict(py, &frame, r)
+                Images { color: None, normal: None, depth: None, outline: None, shadow: None }
+                    .into_dict(py, &frame, r)
             })
             .collect::<PyResult<_>>()?;
         Ok((images, reports))
@@ -552,7 +571,49 @@ fn encode_png_rgba<'py>(py: Python<'py>, color: &Bound<'py, PyAny>) -> PyResult<
     Ok(PyBytes::new(py, &png))
 }
 
+/// _shadow_truth(vertices, faces, view_proj, width, height, toward_light) -> (H, W) float32
+///
+/// The ray-cast truth of the shadow output (`render::passes::shadow::raycast`): for a mesh in
+/// world space seen through `view_proj` ((4, 4) world -> clip, as `projection @ view_matrix`),
+/// 1 where the pixel's surface sees the light along `toward_light` (or no surface), else 0.
+#[pyfunction]
+fn _shadow_truth<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces_arr: &Bound<'py, PyAny>,
+    view_proj: PyReadonlyArray2<'py, f64>,
+    width: &Bound<'py, PyAny>,
+    height: &Bound<'py, PyAny>,
+    toward_light: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyArray2<f32>>> {
+    use crate::render::passes::shadow::raycast::{shadow_truth, Triangles};
+    use glam::{DMat4, DVec3};
+    let (w, h) = (pixels("width", width).map_err(to_py)?, pixels("height", height).map_err(to_py)?);
+    let toward =
+        DVec3::from_array(super::args::triple("toward_light", toward_light).map_err(to_py)?).normalize();
+    let m = view_proj.as_array();
+    if m.shape() != [4, 4] {
+        return Err(to_py(Error::invalid(
+            "view_proj",
+            format!("expected shape (4, 4), got {:?}", m.shape()),
+        )));
+    }
+    let rows: Vec<f64> = m.iter().copied().collect();
+    let vp = DMat4::from_cols_slice(&rows).transpose();
+    let p: Vec<DVec3> = match positions("vertices", vertices).map_err(to_py)? {
+        Positions::F32(v) => v.iter().map(|q| DVec3::new(q[0] as f64, q[1] as f64, q[2] as f64)).collect(),
+        Positions::F64(v) => v.iter().map(|q| DVec3::from_array(*q)).collect(),
+    };
+    let f = faces("faces", faces_arr, p.len()).map_err(to_py)?;
+    let tris = Triangles::new(f.iter().map(|t| t.map(|i| p[i as usize])).collect());
+    let vis = without_gil(py, || {
+        Ok(crate::parallel::install(|| shadow_truth(&tris, vp, w as usize, h as usize, toward)))
+    })?;
+    Ok(Array2::from_shape_vec((h as usize, w as usize), vis).expect("one value a pixel").into_pyarray(py))
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(_shadow_truth, m)?)?;
     m.add_class::<PyRenderer>()?;
     m.add_function(wrap_pyfunction!(gpu_info, m)?)?;
     m.add_function(wrap_pyfunction!(encode_png_rgba, m)?)?;

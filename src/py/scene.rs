@@ -8,7 +8,9 @@ use std::hash::{Hash, Hasher};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 
-use super::args::{flag, flag_or, number, numbers, opt_number, opt_rgb, rgb, text, triple, type_name};
+use super::args::{
+    flag, flag_or, number, numbers, opt_number, opt_rgb, optional, rgb, text, triple, type_name, unsigned,
+};
 use super::errors::to_py;
 use crate::edges::outlines::LineKind;
 use crate::error::{Error, Result};
@@ -17,6 +19,7 @@ use crate::render::scene::camera::{self, Camera, Placement, Projection};
 use crate::render::scene::light::{Light, LightKind, Space};
 use crate::render::scene::material::{self, Highlight, Material, Model, MAX_LUT};
 use crate::render::scene::outlines::{kind_names, LineStyle, Outlines, IMAGE_KIND, INK_KINDS};
+use crate::render::scene::shadows::{ShadowFilter, Shadows};
 
 type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
 
@@ -327,11 +330,101 @@ pub struct PyLight {
     pub inner: Light,
 }
 
+/// Shadow settings of a directional light: the shadow map's side in texels (a power of two
+/// from 64 to 8192, default 2048), the depth bias in texels per unit of receiver slope (>= 0,
+/// default 1.0; more removes shadow acne on lit surfaces, less keeps contact shadows tight) and
+/// the filter: "pcf" (default; percentage-closer filtering, soft edges a few texels wide) or
+/// "none" (one nearest test). The map is fitted to the scene's bounding sphere.
+#[pyclass(name = "Shadows", module = "toonmesh._core", frozen, eq)]
+#[derive(Clone, PartialEq)]
+pub struct PyShadows {
+    pub inner: Shadows,
+}
+
+#[pymethods]
+impl PyShadows {
+    #[new]
+    #[pyo3(signature = (size = None, bias = None, filter = None))]
+    fn new(size: Obj<'_, '_>, bias: Obj<'_, '_>, filter: Obj<'_, '_>) -> PyResult<Self> {
+        (|| {
+            let d = Shadows::default();
+            let size = match optional("size", size, unsigned)? {
+                None => d.size,
+                Some(v) => u32::try_from(v).map_err(|_| {
+                    Error::invalid("size", format!("must be a power of two from 64 to 8192, got {v}"))
+                })?,
+            };
+            let s = Shadows {
+                size,
+                bias: opt_number("bias", bias)?.unwrap_or(d.bias),
+                filter: match optional("filter", filter, text)? {
+                    None => d.filter,
+                    Some(f) => ShadowFilter::parse("filter", &f)?,
+                },
+            };
+            s.validate("")?;
+            Ok(PyShadows { inner: s })
+        })()
+        .map_err(to_py)
+    }
+
+    #[getter]
+    fn size(&self) -> u32 {
+        self.inner.size
+    }
+
+    #[getter]
+    fn bias(&self) -> f64 {
+        self.inner.bias
+    }
+
+    #[getter]
+    fn filter(&self) -> &'static str {
+        self.inner.filter.name()
+    }
+
+    fn __hash__(&self) -> u64 {
+        hash_of(&self.inner)
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Shadows(size={}, bias={}, filter={:?})",
+            self.inner.size,
+            self.inner.bias,
+            self.inner.filter.name()
+        )
+    }
+
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (u32, f64, &'static str))> {
+        Ok((
+            py.get_type::<PyShadows>().into_any(),
+            (self.inner.size, self.inner.bias, self.inner.filter.name()),
+        ))
+    }
+}
+
+/// The `shadows=` argument: None or False (none), True (the default settings) or a Shadows.
+fn shadows_arg(obj: Obj<'_, '_>) -> Result<Option<Shadows>> {
+    let Some(o) = obj else { return Ok(None) };
+    if let Ok(s) = o.cast::<PyShadows>() {
+        return Ok(Some(s.get().inner));
+    }
+    match flag("shadows", o) {
+        Ok(on) => Ok(on.then(Shadows::default)),
+        Err(_) => Err(Error::wrong_type(
+            "shadows",
+            format!("expected True, False or a toonmesh.Shadows, got {}", type_name(o)),
+        )),
+    }
+}
+
 fn light(
     kind: LightKind,
     color: Obj<'_, '_>,
     intensity: Obj<'_, '_>,
     space: Obj<'_, '_>,
+    shadows: Option<Shadows>,
 ) -> PyResult<PyLight> {
     (|| {
         let space = match space {
@@ -340,7 +433,7 @@ fn light(
         };
         let color = opt_rgb("color", color)?.unwrap_or([1.0; 3]);
         let intensity = opt_number("intensity", intensity)?.unwrap_or(1.0);
-        let l = Light { kind, space, color, intensity };
+        let l = Light { kind, space, color, intensity, shadows };
         l.validate("light").map_err(|e| match e {
             Error::InvalidValue { arg, reason } => Error::invalid(arg.trim_start_matches("light."), reason),
             other => other,
@@ -353,17 +446,20 @@ fn light(
 #[pymethods]
 impl PyLight {
     /// Parallel light travelling along ``direction`` (3 numbers, from the light toward the
-    /// scene; any length > 0).
+    /// scene; any length > 0). ``shadows``: True (default settings), a :class:`Shadows`, or
+    /// False/None (default): the light casts shadows from a shadow map (one light a scene).
     #[staticmethod]
-    #[pyo3(signature = (direction, *, color = None, intensity = None, space = None))]
+    #[pyo3(signature = (direction, *, color = None, intensity = None, space = None, shadows = None))]
     fn directional(
         direction: &Bound<'_, PyAny>,
         color: Obj<'_, '_>,
         intensity: Obj<'_, '_>,
         space: Obj<'_, '_>,
+        shadows: Obj<'_, '_>,
     ) -> PyResult<Self> {
         let direction = triple("direction", direction).map_err(to_py)?;
-        light(LightKind::Directional { direction }, color, intensity, space)
+        let shadows = shadows_arg(shadows).map_err(to_py)?;
+        light(LightKind::Directional { direction }, color, intensity, space, shadows)
     }
 
     /// Light radiating from ``position`` (3 numbers; no falloff with distance).
@@ -376,7 +472,7 @@ impl PyLight {
         space: Obj<'_, '_>,
     ) -> PyResult<Self> {
         let position = triple("position", position).map_err(to_py)?;
-        light(LightKind::Point { position }, color, intensity, space)
+        light(LightKind::Point { position }, color, intensity, space, None)
     }
 
     /// The default light: from the upper left, behind the viewer, fixed to the camera.
@@ -425,6 +521,12 @@ impl PyLight {
         self.inner.space_name()
     }
 
+    /// The shadow settings, or None when the light casts no shadows.
+    #[getter]
+    fn shadows(&self) -> Option<PyShadows> {
+        self.inner.shadows.map(|inner| PyShadows { inner })
+    }
+
     fn __hash__(&self) -> u64 {
         hash_of(&self.inner)
     }
@@ -434,8 +536,14 @@ impl PyLight {
             LightKind::Directional { direction } => format!("directional({direction:?}"),
             LightKind::Point { position } => format!("point({position:?}"),
         };
+        let shadows = match self.inner.shadows {
+            Some(s) => {
+                format!(", shadows=Shadows(size={}, bias={}, filter={:?})", s.size, s.bias, s.filter.name())
+            }
+            None => String::new(),
+        };
         format!(
-            "Light.{where_}, color={:?}, intensity={}, space={:?})",
+            "Light.{where_}, color={:?}, intensity={}, space={:?}{shadows})",
             self.inner.color,
             self.inner.intensity,
             self.inner.space_name()
@@ -1012,7 +1120,11 @@ pub mod state {
                 LightKind::Directional { direction } => ("directional", direction),
                 LightKind::Point { position } => ("point", position),
             };
-            format!("{kind};{};{};{};{}", v3(v), self.space_name(), v3(self.color), self.intensity)
+            let shadows = match self.shadows {
+                Some(s) => format!("{};{};{}", s.size, s.bias, s.filter.name()),
+                None => "-;-;-".into(),
+            };
+            format!("{kind};{};{};{};{};{shadows}", v3(v), self.space_name(), v3(self.color), self.intensity)
         }
 
         fn load(s: &str) -> Result<Self> {
@@ -1024,7 +1136,16 @@ pub mod state {
                 _ => LightKind::Point { position: v },
             };
             let space = Space::parse("state", r.next()?)?;
-            let l = Light { kind, space, color: r.v3()?, intensity: r.f64()? };
+            let (color, intensity) = (r.v3()?, r.f64()?);
+            let shadows = match r.opt()? {
+                None => None,
+                Some(size) => Some(Shadows {
+                    size: size as u32,
+                    bias: r.f64()?,
+                    filter: ShadowFilter::parse("state", r.next()?)?,
+                }),
+            };
+            let l = Light { kind, space, color, intensity, shadows };
             l.validate("state")?;
             Ok(l)
         }
@@ -1134,6 +1255,7 @@ fn kang_table(py: Python<'_>) -> Bound<'_, numpy::PyArray1<f64>> {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyMaterial>()?;
     m.add_class::<PyLight>()?;
+    m.add_class::<PyShadows>()?;
     m.add_class::<PyCamera>()?;
     m.add_class::<PyLineStyle>()?;
     m.add_class::<PyOutlines>()?;

@@ -26,6 +26,7 @@ fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene 
                 space: super::scene::light::Space::World,
                 color: [0.6, 0.5, 0.35],
                 intensity: 0.5,
+                shadows: None,
             },
         ],
         ..Default::default()

@@ -5,6 +5,8 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
+use crate::render::scene::shadows::ShadowFilter;
+
 /// A pipeline's name in the cache: the pass that builds it and the bits of its variant.
 pub type PipelineKey = (&'static str, u64);
 
@@ -18,6 +20,52 @@ pub struct Layouts {
     pub uint_texture: wgpu::BindGroupLayout,
     /// One float texture, read with textureLoad.
     pub float_texture: wgpu::BindGroupLayout,
+    /// The shadow map (a depth texture) and its comparison sampler.
+    pub shadow: wgpu::BindGroupLayout,
+}
+
+fn shadow_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    // the vertex stage reads it too: Gouraud shading shades the vertices
+    let visibility = wgpu::ShaderStages::VERTEX_FRAGMENT;
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("shadow map"),
+        entries: &[
+            wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility,
+                ty: wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Depth,
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+                count: None,
+            },
+            wgpu::BindGroupLayoutEntry {
+                binding: 1,
+                visibility,
+                ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
+                count: None,
+            },
+        ],
+    })
+}
+
+/// The comparison sampler of a shadow filter: one nearest test, or bilinear comparisons (PCF).
+fn shadow_sampler(device: &wgpu::Device, filter: ShadowFilter) -> wgpu::Sampler {
+    let mode = match filter {
+        ShadowFilter::Nearest => wgpu::FilterMode::Nearest,
+        ShadowFilter::Pcf => wgpu::FilterMode::Linear,
+    };
+    device.create_sampler(&wgpu::SamplerDescriptor {
+        label: Some("shadow map"),
+        address_mode_u: wgpu::AddressMode::ClampToEdge,
+        address_mode_v: wgpu::AddressMode::ClampToEdge,
+        mag_filter: mode,
+        min_filter: mode,
+        // lit where the receiver's depth is at most the map's
+        compare: Some(wgpu::CompareFunction::LessEqual),
+        ..Default::default()
+    })
 }
 
 fn uniform_layout(device: &wgpu::Device, label: &str, dynamic: bool) -> wgpu::BindGroupLayout {
@@ -58,6 +106,8 @@ fn texture_layout(
 
 pub struct PipelineCache {
     pub layouts: Layouts,
+    /// The shadow samplers, by filter (`ShadowFilter::Nearest`, then `Pcf`).
+    pub shadow_samplers: [wgpu::Sampler; 2],
     modules: Mutex<HashMap<&'static str, wgpu::ShaderModule>>,
     pipelines: Mutex<HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>>,
 }
@@ -74,7 +124,12 @@ impl PipelineCache {
                     "float texture",
                     wgpu::TextureSampleType::Float { filterable: false },
                 ),
+                shadow: shadow_layout(device),
             },
+            shadow_samplers: [
+                shadow_sampler(device, ShadowFilter::Nearest),
+                shadow_sampler(device, ShadowFilter::Pcf),
+            ],
             modules: Mutex::new(HashMap::new()),
             pipelines: Mutex::new(HashMap::new()),
         }

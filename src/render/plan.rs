@@ -2,12 +2,15 @@
 //! (outputs, MSAA, supersampling) to the passes that must run, and nothing else. The plan is
 //! data: `names()` is what `RenderResult.passes` reports and what the tests hold.
 //!
+//! - `shadow_map` (depth from the shadow-casting light) runs when a light casts shadows and
+//!   colour or the shadow output is asked for;
 //! - `shade` runs when colour is asked for; at the output size with one sample per pixel it
 //!   also writes the geometry target when the frame needs it;
 //! - `gbuffer` writes the geometry target (normal and/or linear depth) when the frame needs it
 //!   and `shade` cannot: the normal output or image-space edges need normals; the depth output,
 //!   mesh-space lines and the visible-line polylines need depth;
 //! - `downsample` averages supersampled colour;
+//! - `shadow` (the light's visibility at each pixel) runs when the shadow output is asked for;
 //! - `edges` (image-space outlines) and `lines` (mesh-space outlines) run when the scene asks
 //!   for outlines and there is something to draw them into (colour or the outline output);
 //! - one readback per target whose contents are asked for;
@@ -23,6 +26,9 @@ use crate::render::passes::geometry::Geometry;
 use crate::render::passes::lines::Lines;
 use crate::render::passes::readback::{Readback, Region};
 use crate::render::passes::shade::Shade;
+use crate::render::passes::shadow::ShadowMask;
+use crate::render::passes::shadow_map::ShadowMap;
+use crate::render::scene::light::shadow_caster;
 use crate::render::scene::{FrameSpec, Scene};
 
 /// The scene's effects the plan depends on.
@@ -30,11 +36,18 @@ use crate::render::scene::{FrameSpec, Scene};
 pub struct Features {
     pub mesh_lines: bool,
     pub image_edges: bool,
+    /// The shadow map's side, when a light casts shadows onto something.
+    pub shadow_size: Option<u32>,
 }
 
 impl Features {
     pub fn of(scene: &Scene) -> Self {
-        Features { mesh_lines: scene.mesh_lines(), image_edges: scene.image_edges() }
+        let caster = shadow_caster(&scene.lights).filter(|_| !scene.items.is_empty());
+        Features {
+            mesh_lines: scene.mesh_lines(),
+            image_edges: scene.image_edges(),
+            shadow_size: caster.map(|(_, _, s)| s.size),
+        }
     }
 }
 
@@ -51,6 +64,7 @@ pub struct Plan {
     pub color: Option<Region>,
     pub geometry: Option<Region>,
     pub outline: Option<Region>,
+    pub shadow: Option<Region>,
     /// Bytes of the readbacks (timestamps go after them).
     pub readback_bytes: u64,
     pub silhouettes: bool,
@@ -64,7 +78,9 @@ pub fn plan(features: Features, frame: &FrameSpec) -> Plan {
     let image = features.image_edges && ink;
     let lines = features.mesh_lines && ink;
     let visible_lines = features.mesh_lines && o.lines;
-    let geometry = if o.normal || image {
+    let shadow_size = features.shadow_size.filter(|_| o.color || o.shadow);
+    let shadow_output = o.shadow && shadow_size.is_some();
+    let geometry = if o.normal || image || shadow_output {
         Some(GeometryLayout::NormalDepth)
     } else if o.depth || lines || visible_lines {
         Some(GeometryLayout::Depth)
@@ -79,13 +95,18 @@ pub fn plan(features: Features, frame: &FrameSpec) -> Plan {
         msaa: frame.msaa,
         supersample: frame.supersample,
         geometry,
+        shadow_size,
     };
     let mut passes: Vec<Box<dyn Pass>> = Vec::new();
+    if shadow_size.is_some() {
+        passes.push(Box::new(ShadowMap));
+    }
     if o.color {
         passes.push(Box::new(Shade {
             samples: frame.msaa,
             supersampled: frame.supersample > 1,
             geometry: geometry.filter(|_| in_shade),
+            shadowed: shadow_size.is_some(),
         }));
     }
     if let Some(layout) = geometry.filter(|_| !in_shade) {
@@ -93,6 +114,9 @@ pub fn plan(features: Features, frame: &FrameSpec) -> Plan {
     }
     if o.color && frame.supersample > 1 {
         passes.push(Box::new(Downsample { factor: frame.supersample }));
+    }
+    if shadow_output {
+        passes.push(Box::new(ShadowMask));
     }
     let mut clear_outline = o.outline;
     if image {
@@ -128,12 +152,14 @@ pub fn plan(features: Features, frame: &FrameSpec) -> Plan {
         _ => None,
     };
     let outline = if o.outline { readback("readback_outline", Target::Outline, region(1)) } else { None };
+    let shadow = if shadow_output { readback("readback_shadow", Target::Shadow, region(4)) } else { None };
     Plan {
         passes,
         shape,
         color,
         geometry: geometry_region,
         outline,
+        shadow,
         readback_bytes: end,
         silhouettes: features.mesh_lines && (lines || visible_lines),
         visible_lines,
@@ -191,7 +217,7 @@ mod tests {
         plan(features, f).names()
     }
 
-    const NONE: Features = Features { mesh_lines: false, image_edges: false };
+    const NONE: Features = Features { mesh_lines: false, image_edges: false, shadow_size: None };
 
     #[test]
     fn minimal_scene_runs_one_pass_and_one_readback() {
@@ -218,11 +244,11 @@ mod tests {
 
     #[test]
     fn outlines_run_only_when_asked_for_and_drawable() {
-        let both = Features { mesh_lines: true, image_edges: true };
+        let both = Features { mesh_lines: true, image_edges: true, shadow_size: None };
         let f = FrameSpec::default();
         assert_eq!(names(both, &f), ["silhouettes", "shade", "edges", "lines", "readback_color"]);
         // image edges need normals, produced but not read back
-        let p = plan(Features { mesh_lines: false, image_edges: true }, &f);
+        let p = plan(Features { mesh_lines: false, image_edges: true, shadow_size: None }, &f);
         assert_eq!(p.shape.geometry, Some(GeometryLayout::NormalDepth));
         assert!(p.geometry.is_none());
         // nothing to draw ink into: no ink pass
@@ -234,15 +260,35 @@ mod tests {
         // vector lines read depth back without returning it
         let lines = FrameSpec { outputs: Outputs { color: true, lines: true, ..Default::default() }, ..f };
         assert_eq!(
-            names(Features { mesh_lines: true, image_edges: false }, &lines),
+            names(Features { mesh_lines: true, image_edges: false, shadow_size: None }, &lines),
             ["silhouettes", "shade", "lines", "readback_color", "readback_depth", "visible_lines"]
         );
     }
 
     #[test]
+    fn shadows_run_only_when_a_light_casts_them_and_something_uses_them() {
+        let lit = Features { shadow_size: Some(1024), ..NONE };
+        let f = FrameSpec::default();
+        assert_eq!(names(lit, &f), ["shadow_map", "shade", "readback_color"]);
+        // the shadow output alone: no shading, the visibility from the normals and depths
+        let mask = FrameSpec { outputs: Outputs { shadow: true, ..Default::default() }, ..f };
+        assert_eq!(names(lit, &mask), ["shadow_map", "gbuffer", "shadow", "readback_shadow"]);
+        assert_eq!(plan(lit, &mask).shape.geometry, Some(GeometryLayout::NormalDepth));
+        let both = FrameSpec { outputs: Outputs { color: true, shadow: true, ..Default::default() }, ..f };
+        assert_eq!(names(lit, &both), ["shadow_map", "shade", "shadow", "readback_color", "readback_shadow"]);
+        // nothing lit is asked for: no shadow map
+        let depth = FrameSpec { outputs: Outputs { depth: true, ..Default::default() }, ..f };
+        assert_eq!(names(lit, &depth), ["gbuffer", "readback_depth"]);
+        let key = plan(lit, &f).resource_key(false);
+        let map = key.textures.iter().find(|x| x.0 == Target::ShadowMap).expect("a shadow map");
+        assert_eq!(map.1.size, (1024, 1024));
+    }
+
+    #[test]
     fn targets_get_the_usages_their_passes_declare() {
         let f = FrameSpec { supersample: 2, ..Default::default() };
-        let key = plan(Features { mesh_lines: true, image_edges: false }, &f).resource_key(true);
+        let key =
+            plan(Features { mesh_lines: true, image_edges: false, shadow_size: None }, &f).resource_key(true);
         let usage = |t| key.textures.iter().find(|x| x.0 == t).map(|x| x.2);
         use wgpu::TextureUsages as U;
         assert_eq!(usage(Target::ColorHi), Some(U::RENDER_ATTACHMENT | U::TEXTURE_BINDING));

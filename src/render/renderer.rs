@@ -27,7 +27,8 @@ use super::mesh_lines::MeshLines;
 use super::passes::lines::visibility::{visible_runs, DepthImage, Projector, Visibility};
 use super::plan::{plan, Features, Plan, SILHOUETTES, VISIBLE_LINES};
 use super::scene::camera::Camera;
-use super::scene::camera::ResolvedCamera;
+use super::scene::camera::{ResolvedCamera, Sphere};
+use super::scene::light::shadow_caster;
 use super::scene::outlines::Outlines;
 use super::scene::{FrameSpec, MeshId, Scene, SceneItem};
 use super::uniforms::{draw_block, footprint, frame_block, model_view, LineInstance};
@@ -47,6 +48,7 @@ pub struct OutputBuffers<'a> {
     pub normal: Option<&'a mut [f32]>,
     pub depth: Option<&'a mut [f32]>,
     pub outline: Option<&'a mut [f32]>,
+    pub shadow: Option<&'a mut [f32]>,
 }
 
 /// One visible mesh-space polyline in pixel coordinates, and its kind.
@@ -85,6 +87,7 @@ pub struct RenderOutput {
     pub normal: Option<Vec<f32>>,
     pub depth: Option<Vec<f32>>,
     pub outline: Option<Vec<f32>>,
+    pub shadow: Option<Vec<f32>>,
     pub report: FrameReport,
 }
 
@@ -164,6 +167,7 @@ impl Renderer {
         let mut normal = o.normal.then(|| vec![0f32; 3 * n]);
         let mut depth = o.depth.then(|| vec![0f32; n]);
         let mut outline = o.outline.then(|| vec![0f32; n]);
+        let mut shadow = o.shadow.then(|| vec![0f32; n]);
         let report = self.render_into(
             scene,
             frame,
@@ -172,9 +176,19 @@ impl Renderer {
                 normal: normal.as_deref_mut(),
                 depth: depth.as_deref_mut(),
                 outline: outline.as_deref_mut(),
+                shadow: shadow.as_deref_mut(),
             },
         )?;
-        Ok(RenderOutput { width: frame.width, height: frame.height, color, normal, depth, outline, report })
+        Ok(RenderOutput {
+            width: frame.width,
+            height: frame.height,
+            color,
+            normal,
+            depth,
+            outline,
+            shadow,
+            report,
+        })
     }
 
     /// Checks a scene and frame before any work: everything a render would refuse.
@@ -193,6 +207,12 @@ impl Renderer {
             return Err(Error::invalid(
                 "outputs",
                 "'lines' needs mesh-space outlines (outlines='mesh' or 'both', with some kind of line drawn)",
+            ));
+        }
+        if o.shadow && shadow_caster(&scene.lights).is_none() {
+            return Err(Error::invalid(
+                "outputs",
+                "'shadow' needs a light that casts shadows (Light.directional(..., shadows=True))",
             ));
         }
         for id in scene.items.iter().map(|i| i.mesh) {
@@ -235,7 +255,15 @@ impl Renderer {
         } else {
             vec![None; records.len()]
         };
-        Ok(Prepared { records, cam, plan, views, outlines, silhouette_seconds: t.elapsed().as_secs_f64() })
+        Ok(Prepared {
+            records,
+            cam,
+            sphere,
+            plan,
+            views,
+            outlines,
+            silhouette_seconds: t.elapsed().as_secs_f64(),
+        })
     }
 
     /// Renders `scene` as `frame` asks, running only the passes its plan lists, into `out`.
@@ -388,7 +416,7 @@ impl Renderer {
             .zip(records)
             .map(|(item, rec)| draw_block(item, &rec.gpu.placement, cam))
             .collect();
-        res.write_uniforms(ctx, &frame_block(scene, cam, frame), &blocks);
+        res.write_uniforms(ctx, &frame_block(scene, cam, frame, p.sphere), &blocks);
         let mut instances = Vec::new();
         let mut line_draws = Vec::new();
         for (i, (view, rec)) in views.iter().zip(records).enumerate() {
@@ -433,6 +461,7 @@ impl Renderer {
                 b: srgb_to_linear(bg[2] as f64),
                 a: bg[3] as f64,
             },
+            shadow_filter: shadow_caster(&scene.lights).map(|(_, _, s)| s.filter),
         };
         let mut encoder =
             ctx.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
@@ -507,6 +536,9 @@ impl Renderer {
             }
             if let (Some(r), Some(o)) = (plan.outline, out.outline) {
                 r.copy_unorm8(&mapped, o);
+            }
+            if let (Some(r), Some(o)) = (plan.shadow, out.shadow) {
+                r.copy_words(&mapped, 0, 1, 1.0, o);
             }
         });
         if !timed.is_empty() {
@@ -583,6 +615,8 @@ struct InFlight {
 pub(crate) struct Prepared {
     pub records: Vec<Arc<MeshRecord>>,
     pub cam: ResolvedCamera,
+    /// What the scene's meshes fill (world space).
+    pub sphere: Sphere,
     pub plan: Plan,
     /// Each mesh's lines for this view (when the plan draws or returns them).
     pub views: Vec<Option<Outline>>,

@@ -4,13 +4,14 @@
 //! `scale` (a power of two near the scene's size), so that float32 keeps its precision for
 //! scenes of any size and distance (see `ResolvedCamera::scale`).
 
-use glam::{DMat3, DMat4};
+use glam::{DMat3, DMat4, DVec3};
 
 use super::gpu_mesh::Placement;
-use super::scene::camera::ResolvedCamera;
-use super::scene::light::{ViewLight, MAX_LIGHTS};
+use super::scene::camera::{ResolvedCamera, Sphere};
+use super::scene::light::{shadow_caster, Light, ViewLight, MAX_LIGHTS};
 use super::scene::material::{Highlight, Material, Model, MAX_LUT};
 use super::scene::outlines::{Outlines, INK_KINDS};
+use super::scene::shadows::MAX_BIAS_SLOPE;
 use super::scene::{FrameSpec, Scene, SceneItem};
 
 #[repr(C)]
@@ -30,6 +31,10 @@ pub struct FrameBlock {
     pub outline: [f32; 4],
     pub ink: [[f32; 4]; INK_KINDS],
     pub lights: [LightBlock; MAX_LIGHTS],
+    /// Normalised view space -> the shadow-casting light's clip space (the first light's).
+    pub shadow: [[f32; 4]; 4],
+    /// x: depth tolerance per unit of receiver slope, y: the largest slope biased.
+    pub shadow_bias: [f32; 4],
 }
 
 #[repr(C)]
@@ -76,9 +81,37 @@ pub fn footprint(cam: &ResolvedCamera, height: u32) -> (f64, f64) {
     }
 }
 
-pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec) -> FrameBlock {
+/// The lights in the order the shader sees them: the shadow-casting light first.
+pub fn shader_lights(lights: &[Light]) -> Vec<&Light> {
+    let caster = shadow_caster(lights).map(|(i, _, _)| i);
+    let first = caster.map(|i| &lights[i]);
+    first
+        .into_iter()
+        .chain(lights.iter().enumerate().filter(|(i, _)| Some(*i) != caster).map(|(_, l)| l))
+        .collect()
+}
+
+/// Normalised view space -> the clip space of an orthographic view along the unit vector
+/// `toward` the light that just holds the sphere `c`, `r` (normalised view space): x and y in
+/// [-1, 1] across it, depth 0 on the side nearest the light and 1 on the far side.
+pub fn shadow_matrix(toward: DVec3, c: DVec3, r: f64) -> DMat4 {
+    let w = toward;
+    let helper = if w.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
+    let u = w.cross(helper).normalize();
+    let v = w.cross(u);
+    let rows = [
+        [u.x / r, u.y / r, u.z / r, -u.dot(c) / r],
+        [v.x / r, v.y / r, v.z / r, -v.dot(c) / r],
+        [-w.x / (2.0 * r), -w.y / (2.0 * r), -w.z / (2.0 * r), (w.dot(c) + r) / (2.0 * r)],
+        [0.0, 0.0, 0.0, 1.0],
+    ];
+    DMat4::from_cols_array_2d(&rows).transpose()
+}
+
+/// The frame's uniforms; `sphere` holds the scene (world space), for fitting the shadow map.
+pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec, sphere: Sphere) -> FrameBlock {
     let mut lights = [LightBlock { position: [0.0; 4], color: [0.0; 4] }; MAX_LIGHTS];
-    for (slot, light) in lights.iter_mut().zip(&scene.lights) {
+    for (slot, light) in lights.iter_mut().zip(shader_lights(&scene.lights)) {
         let position = match light.to_view(&cam.view) {
             ViewLight::Toward(l) => [l.x as f32, l.y as f32, l.z as f32, 0.0],
             ViewLight::At(p) => {
@@ -87,6 +120,15 @@ pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec) -> Fr
             }
         };
         *slot = LightBlock { position, color: rgb0(light.radiance()) };
+    }
+    let mut shadow = [[0.0f32; 4]; 4];
+    let mut shadow_bias = [0.0f32; 4];
+    if let Some((_, light, settings)) = shadow_caster(&scene.lights) {
+        if let ViewLight::Toward(l) = light.to_view(&cam.view) {
+            let c = cam.normalized_view().transform_point3(sphere.center);
+            shadow = f32_cols(shadow_matrix(l, c, sphere.radius / cam.scale));
+            shadow_bias = [settings.tolerance() as f32, MAX_BIAS_SLOPE as f32, 0.0, 0.0];
+        }
     }
     let (a, b) = footprint(cam, frame.height);
     let outlines = scene.outlines.clone().unwrap_or_else(|| Outlines::new(false, false));
@@ -110,6 +152,8 @@ pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec) -> Fr
         ],
         ink,
         lights,
+        shadow,
+        shadow_bias,
     }
 }
 

@@ -9,6 +9,8 @@ use super::scene::material::{Model, MAX_LUT};
 use super::scene::outlines::{IMAGE_KIND, INK_KINDS};
 
 const COMMON: &str = include_str!("shaders/common.wgsl");
+/// `light_visibility` where no light casts shadows.
+const UNSHADOWED: &str = include_str!("shaders/unshadowed.wgsl");
 
 /// The constants the shaders share with Rust.
 pub fn prelude() -> String {
@@ -26,17 +28,24 @@ pub fn prelude() -> String {
     s
 }
 
-/// The full source of a pass's shader module.
+/// The full source of a pass's shader module, where no light casts shadows.
 pub fn source(pass: &str) -> String {
-    format!("{}\n{COMMON}\n{pass}", prelude())
+    format!("{}\n{COMMON}\n{UNSHADOWED}\n{pass}", prelude())
+}
+
+/// The full source of a pass's shader module that tests the shadow map.
+pub fn source_shadowed(pass: &str) -> String {
+    let test = crate::render::passes::shadow::SHADOW_TEST;
+    format!("{}\n{COMMON}\n{test}\n{pass}", prelude())
 }
 
 #[cfg(test)]
 mod tests {
     #[test]
     fn every_pass_shader_parses_and_validates() {
-        for pass in crate::render::passes::SHADERS {
-            let src = super::source(pass);
+        let passes = crate::render::passes::SHADERS.iter().map(|p| super::source(p));
+        let shadowed = crate::render::passes::SHADOWED_SHADERS.iter().map(|p| super::source_shadowed(p));
+        for src in passes.chain(shadowed) {
             let module =
                 naga::front::wgsl::parse_str(&src).unwrap_or_else(|e| panic!("{}", e.emit_to_string(&src)));
             naga::valid::Validator::new(

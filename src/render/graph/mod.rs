@@ -61,6 +61,8 @@ pub struct FrameCtx<'a> {
     pub lines: &'a [LineDraw],
     /// Linear-light background colour and alpha.
     pub background: wgpu::Color,
+    /// How the shadow map is read, when a light casts shadows.
+    pub shadow_filter: Option<crate::render::scene::shadows::ShadowFilter>,
 }
 
 impl FrameCtx<'_> {

@@ -8,6 +8,8 @@ use crate::render::device::COLOR_FORMAT;
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// Ink coverage of the outlines.
 pub const OUTLINE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R8Unorm;
+/// The light's visibility: f32 bits in an integer texel (GL cannot render to float formats).
+pub const SHADOW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
 
 /// What the geometry target holds, as f32 bit patterns in 32-bit integer texels (GL cannot
 /// render to 32-bit float formats; it can to integer ones, which keeps the values exact).
@@ -56,6 +58,10 @@ pub enum Target {
     Geometry,
     /// Ink coverage at the output size.
     Outline,
+    /// Depth from the shadow-casting light (`Shape::shadow_size` square).
+    ShadowMap,
+    /// The light's visibility at the output size, as f32 bits (like the geometry target).
+    Shadow,
 }
 
 /// Everything the frame's textures depend on.
@@ -66,6 +72,8 @@ pub struct Shape {
     pub msaa: u32,
     pub supersample: u32,
     pub geometry: Option<GeometryLayout>,
+    /// Side of the shadow map, when a light casts shadows.
+    pub shadow_size: Option<u32>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -89,6 +97,11 @@ impl Target {
                 (out, 1, s.geometry.expect("a frame with a geometry target has a layout").format())
             }
             Target::Outline => (out, 1, OUTLINE_FORMAT),
+            Target::ShadowMap => {
+                let side = s.shadow_size.expect("a frame with a shadow map has its size");
+                ((side, side), 1, DEPTH_FORMAT)
+            }
+            Target::Shadow => (out, 1, SHADOW_FORMAT),
         };
         TextureDesc { size, samples, format }
     }

@@ -7,15 +7,22 @@ pub mod geometry;
 pub mod lines;
 pub mod readback;
 pub mod shade;
+pub mod shadow;
+pub mod shadow_map;
 
 use crate::render::gpu_mesh::GpuMesh;
 use crate::render::graph::target::DEPTH_FORMAT;
 use crate::render::graph::FrameCtx;
 
 /// Every pass's own WGSL, for the shader validation test.
-pub const SHADERS: [&str; 5] = [shade::WGSL, geometry::WGSL, downsample::WGSL, edges::WGSL, lines::WGSL];
+pub const SHADERS: [&str; 6] =
+    [shade::WGSL, geometry::WGSL, downsample::WGSL, edges::WGSL, lines::WGSL, shadow_map::WGSL];
+/// The passes' WGSL that tests the shadow map.
+pub const SHADOWED_SHADERS: [&str; 2] = [shade::WGSL, shadow::WGSL];
 
-/// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms) with depth testing.
+/// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`) with
+/// depth testing.
+#[allow(clippy::too_many_arguments)]
 pub fn mesh_pipeline(
     f: &FrameCtx<'_>,
     label: &'static str,
@@ -24,10 +31,13 @@ pub fn mesh_pipeline(
     targets: &[Option<wgpu::ColorTargetState>],
     samples: u32,
     constants: &[(&str, f64)],
+    more: &[&wgpu::BindGroupLayout],
 ) -> wgpu::RenderPipeline {
     let device = &f.dev.device;
     let layouts = &f.pipelines.layouts;
-    let layout = f.pipelines.layout(device, label, &[&layouts.frame, &layouts.draw]);
+    let mut groups = vec![&layouts.frame, &layouts.draw];
+    groups.extend_from_slice(more);
+    let layout = f.pipelines.layout(device, label, &groups);
     let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),

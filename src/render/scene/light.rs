@@ -5,6 +5,8 @@ use glam::{DMat4, DVec3};
 use crate::error::{Error, Result};
 use crate::render::color::{check_unit, to_linear, Srgb};
 
+use super::shadows::Shadows;
+
 /// Most lights one scene may have (the shader's fixed-size array).
 pub const MAX_LIGHTS: usize = 8;
 
@@ -40,6 +42,8 @@ pub struct Light {
     /// sRGB colour; d_l = S_l of the papers is its linear light times `intensity`.
     pub color: Srgb,
     pub intensity: f64,
+    /// Whether (and how) the light casts shadows: directional lights only.
+    pub shadows: Option<Shadows>,
 }
 
 impl Default for Light {
@@ -50,6 +54,7 @@ impl Default for Light {
             space: Space::Camera,
             color: [1.0, 1.0, 1.0],
             intensity: 1.0,
+            shadows: None,
         }
     }
 }
@@ -65,7 +70,7 @@ pub enum ViewLight {
 impl Light {
     /// A checked light; `arg` names it in errors.
     pub fn new(kind: LightKind, space: Space, color: Srgb, intensity: f64) -> Result<Self> {
-        let l = Light { kind, space, color, intensity };
+        let l = Light { kind, space, color, intensity, shadows: None };
         l.validate("light")?;
         Ok(l)
     }
@@ -99,6 +104,12 @@ impl Light {
                 format!("{arg}.intensity"),
                 format!("must be finite and >= 0, got {}", self.intensity),
             ));
+        }
+        if let Some(s) = &self.shadows {
+            if !matches!(self.kind, LightKind::Directional { .. }) {
+                return Err(Error::invalid(format!("{arg}.shadows"), "only directional lights cast shadows"));
+            }
+            s.validate(&format!("{arg}.shadows."))?;
         }
         Ok(())
     }
@@ -136,5 +147,18 @@ pub fn validate_lights(lights: &[Light]) -> Result<()> {
     for (i, l) in lights.iter().enumerate() {
         l.validate(&format!("lights[{i}]"))?;
     }
+    let casting: Vec<usize> =
+        lights.iter().enumerate().filter(|(_, l)| l.shadows.is_some()).map(|(i, _)| i).collect();
+    if casting.len() > 1 {
+        return Err(Error::invalid(
+            "lights",
+            format!("one light may cast shadows, but lights {casting:?} do"),
+        ));
+    }
     Ok(())
+}
+
+/// The light that casts shadows, if any, and its index.
+pub fn shadow_caster(lights: &[Light]) -> Option<(usize, &Light, Shadows)> {
+    lights.iter().enumerate().find_map(|(i, l)| l.shadows.map(|s| (i, l, s)))
 }

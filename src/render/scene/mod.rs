@@ -6,6 +6,7 @@ pub mod camera;
 pub mod light;
 pub mod material;
 pub mod outlines;
+pub mod shadows;
 
 use glam::{DMat3, DMat4, DVec3};
 
@@ -29,14 +30,17 @@ pub struct Outputs {
     pub outline: bool,
     /// The visible mesh-space lines as polylines in pixel coordinates.
     pub lines: bool,
+    /// (H, W) visibility of the shadow-casting light in [0, 1]: 1 lit, 0 shadowed (or facing
+    /// away from the light), 1 where no mesh is.
+    pub shadow: bool,
 }
 
 impl Outputs {
     /// The names `outputs=` accepts, in the order they are read back.
-    pub const NAMES: [&'static str; 5] = ["color", "normal", "depth", "outline", "lines"];
+    pub const NAMES: [&'static str; 6] = ["color", "normal", "depth", "outline", "lines", "shadow"];
 
     pub fn any(&self) -> bool {
-        self.color || self.normal || self.depth || self.outline || self.lines
+        self.color || self.normal || self.depth || self.outline || self.lines || self.shadow
     }
 
     /// Sets the output called `name`.
@@ -47,6 +51,7 @@ impl Outputs {
             "depth" => &mut self.depth,
             "outline" => &mut self.outline,
             "lines" => &mut self.lines,
+            "shadow" => &mut self.shadow,
             other => {
                 return Err(Error::invalid(
                     arg,

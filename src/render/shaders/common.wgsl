@@ -15,7 +15,9 @@ struct Frame {
     viewport: vec4<f32>,   // xy: output size in pixels; a pixel's footprint at depth d is d * z + w
     outline: vec4<f32>,    // x: hidden-line offset (footprints), y: normal threshold, z: depth threshold, w: near plane
     ink: array<vec4<f32>, INK_KINDS>,  // per ink kind: linear rgb, width in pixels (0: not drawn)
-    lights: array<Light, MAX_LIGHTS>,
+    lights: array<Light, MAX_LIGHTS>,   // the shadow-casting light, if any, first
+    shadow: mat4x4<f32>,   // normalised view space -> the shadow-casting light's clip space
+    shadow_bias: vec4<f32>,  // x: depth tolerance per unit of receiver slope, y: the largest slope biased
 };
 
 struct Draw {
@@ -86,6 +88,51 @@ fn table_value(d: f32) -> vec3<f32> {
     return draw.table[i].rgb;
 }
 
+// The diffuse factor of the material's model at d = N . L.
+fn diffuse_term(d: f32) -> vec3<f32> {
+    switch draw.model.x {
+        case MODEL_LAMBERT, MODEL_PHONG: {
+            return vec3<f32>(max(d, 0.0));
+        }
+        case MODEL_THRESHOLDED_PHONG: {
+            return vec3<f32>(thresh(d, draw.params.y));
+        }
+        case MODEL_BANDS: {
+            return vec3<f32>(band_value(d));
+        }
+        default: {
+            return table_value(d);
+        }
+    }
+}
+
+// The specular factor of the material's model.
+fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
+    switch draw.model.x {
+        case MODEL_PHONG: {
+            let r = 2.0 * d * n - l;
+            if (d > 0.0) {
+                return pow(max(dot(r, v), 0.0), draw.params.x);
+            }
+            return 0.0;
+        }
+        case MODEL_THRESHOLDED_PHONG: {
+            var hl = dot(l, v);
+            if (draw.model.y == 1u) {
+                let h = l + v;
+                hl = -1.0;
+                if (dot(h, h) > 1e-12) {
+                    hl = dot(n, normalize(h));
+                }
+            }
+            return thresh(hl, draw.params.z);
+        }
+        default: {
+            return 0.0;
+        }
+    }
+}
+
 // Linear colour of a point with unit view-space normal n at view-space position p.
 fn shade(n: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
     let v = view_dir(p);
@@ -97,37 +144,14 @@ fn shade(n: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
             l = normalize(light.position.xyz - p);
         }
         let d = dot(n, l);
-        var f = vec3<f32>(0.0);
-        var s = 0.0;
-        switch draw.model.x {
-            case MODEL_LAMBERT: {
-                f = vec3<f32>(max(d, 0.0));
-            }
-            case MODEL_PHONG: {
-                f = vec3<f32>(max(d, 0.0));
-                let r = 2.0 * d * n - l;
-                if (d > 0.0) {
-                    s = pow(max(dot(r, v), 0.0), draw.params.x);
-                }
-            }
-            case MODEL_THRESHOLDED_PHONG: {
-                f = vec3<f32>(thresh(d, draw.params.y));
-                var hl = dot(l, v);
-                if (draw.model.y == 1u) {
-                    let h = l + v;
-                    hl = -1.0;
-                    if (dot(h, h) > 1e-12) {
-                        hl = dot(n, normalize(h));
-                    }
-                }
-                s = thresh(hl, draw.params.z);
-            }
-            case MODEL_BANDS: {
-                f = vec3<f32>(band_value(d));
-            }
-            default: {
-                f = table_value(d);
-            }
+        var f = diffuse_term(d);
+        var s = specular_term(n, l, v, d);
+        let lit = light_visibility(k, n, p, d);
+        if (lit < 1.0) {
+            // in shadow the light's contribution goes, as on a surface facing away from it
+            // (Kang et al.: the lowest tone of the table)
+            f = mix(diffuse_term(-1.0), f, lit);
+            s *= lit;
         }
         c += f * light.color.rgb * draw.diffuse.rgb + s * light.color.rgb * draw.specular.rgb;
     }

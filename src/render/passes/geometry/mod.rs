@@ -36,7 +36,7 @@ impl Pass for Geometry {
                 GeometryLayout::NormalDepth => "fs_normal_depth",
                 GeometryLayout::Depth => "fs_depth",
             };
-            super::mesh_pipeline(f, "gbuffer", &module, entry, &[target(layout.format())], 1, &[])
+            super::mesh_pipeline(f, "gbuffer", &module, entry, &[target(layout.format())], 1, &[], &[])
         });
         let attachments = [cleared(f.res.view(Target::Geometry), geometry_clear(layout))];
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {

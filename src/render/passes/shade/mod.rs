@@ -9,6 +9,7 @@ use crate::render::device::COLOR_FORMAT;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
 use crate::render::graph::{cleared, depth_buffer, geometry_clear, FrameCtx, Pass};
 use crate::render::pipelines::target;
+use crate::render::scene::shadows::ShadowFilter;
 
 pub const WGSL: &str = include_str!("shade.wgsl");
 
@@ -19,6 +20,8 @@ pub struct Shade {
     pub supersampled: bool,
     /// Also writes the geometry target, in this layout.
     pub geometry: Option<GeometryLayout>,
+    /// Tests the shadow map (`shadow_map` ran before).
+    pub shadowed: bool,
 }
 
 impl Shade {
@@ -31,11 +34,23 @@ impl Shade {
         }
     }
 
-    fn pipeline(&self, f: &FrameCtx<'_>, per_vertex: bool) -> Arc<wgpu::RenderPipeline> {
-        let variant =
-            self.samples as u64 | (per_vertex as u64) << 8 | (self.geometry.map_or(0, |g| 1 + g as u64)) << 9;
+    fn pipeline(
+        &self,
+        f: &FrameCtx<'_>,
+        per_vertex: bool,
+        shadows: Option<ShadowFilter>,
+    ) -> Arc<wgpu::RenderPipeline> {
+        let variant = self.samples as u64
+            | (per_vertex as u64) << 8
+            | (self.geometry.map_or(0, |g| 1 + g as u64)) << 9
+            | (shadows.map_or(0, |s| 1 + s as u64)) << 12;
         f.pipelines.get(("shade", variant), || {
-            let module = f.pipelines.module(&f.dev.device, "shade", || crate::render::wgsl::source(WGSL));
+            let module = match shadows {
+                None => f.pipelines.module(&f.dev.device, "shade", || crate::render::wgsl::source(WGSL)),
+                Some(_) => f
+                    .pipelines
+                    .module(&f.dev.device, "shade, shadowed", || crate::render::wgsl::source_shadowed(WGSL)),
+            };
             let mut targets = vec![target(COLOR_FORMAT)];
             let entry = match self.geometry {
                 None => "fs_color",
@@ -47,8 +62,13 @@ impl Shade {
                     }
                 }
             };
-            let constants = [("PER_VERTEX", if per_vertex { 1.0 } else { 0.0 })];
-            super::mesh_pipeline(f, "shade", &module, entry, &targets, self.samples, &constants)
+            let mut constants = vec![("PER_VERTEX", if per_vertex { 1.0 } else { 0.0 })];
+            let mut more = vec![];
+            if let Some(filter) = shadows {
+                constants.extend(super::shadow::filter_constants(filter));
+                more.push(&f.pipelines.layouts.shadow);
+            }
+            super::mesh_pipeline(f, "shade", &module, entry, &targets, self.samples, &constants, &more)
         })
     }
 }
@@ -65,6 +85,9 @@ impl Pass for Shade {
         }
         if self.geometry.is_some() {
             u.push(Use(Target::Geometry, Access::Attach));
+        }
+        if self.shadowed {
+            u.push(Use(Target::ShadowMap, Access::Sample));
         }
         u
     }
@@ -102,7 +125,11 @@ impl Pass for Shade {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        f.draw_meshes(&mut pass, |d| self.pipeline(f, d.per_vertex));
+        let shadows = f.shadow_filter.filter(|_| self.shadowed);
+        if let Some(filter) = shadows {
+            pass.set_bind_group(2, &super::shadow::shadow_group(f, filter), &[]);
+        }
+        f.draw_meshes(&mut pass, |d| self.pipeline(f, d.per_vertex, shadows));
         Ok(())
     }
 }

@@ -1,0 +1,36 @@
+// The shadow test (Kang, Kim and Yoon's shadow z-buffer): a point is lit by the shadow-casting
+// light (always light 0, see `shader_lights`) when its depth from the light is at most the
+// shadow map's, less a tolerance that grows with the receiver's slope to the light (so that a
+// lit surface does not shadow itself). A surface facing away from the light is in its own
+// shadow. `raycast.rs` holds the truth this is measured against.
+
+// Percentage-closer filtering: 3x3 bilinear comparisons; otherwise one nearest test.
+override PCF: bool = true;
+
+@group(2) @binding(0) var shadow_map: texture_depth_2d;
+@group(2) @binding(1) var shadow_sampler: sampler_comparison;
+
+// Visibility in [0, 1] of light k at view-space point p with unit normal n, where d = N . L.
+fn light_visibility(k: u32, n: vec3<f32>, p: vec3<f32>, d: f32) -> f32 {
+    if (k != 0u) {
+        return 1.0;
+    }
+    if (d <= 0.0) {
+        return 0.0;
+    }
+    let q = frame.shadow * vec4<f32>(p, 1.0);
+    let uv = vec2<f32>(q.x * 0.5 + 0.5, 0.5 - q.y * 0.5);
+    let slope = min(sqrt(max(1.0 - d * d, 0.0)) / d, frame.shadow_bias.y);
+    let z = q.z - frame.shadow_bias.x * (1.0 + slope);
+    if (!PCF) {
+        return textureSampleCompareLevel(shadow_map, shadow_sampler, uv, z);
+    }
+    let texel = 1.0 / vec2<f32>(textureDimensions(shadow_map));
+    var sum = 0.0;
+    for (var j = -1; j <= 1; j++) {
+        for (var i = -1; i <= 1; i++) {
+            sum += textureSampleCompareLevel(shadow_map, shadow_sampler, uv + vec2<f32>(f32(i), f32(j)) * texel, z);
+        }
+    }
+    return sum / 9.0;
+}

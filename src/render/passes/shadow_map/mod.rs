@@ -1,0 +1,76 @@
+//! The shadow map pass: every mesh's depth from the shadow-casting light (Kang, Kim and Yoon's
+//! shadow z-buffer), read by the shading and shadow passes.
+
+use crate::error::Result;
+use crate::render::gpu_mesh::GpuMesh;
+use crate::render::graph::target::{Access, Target, Use, DEPTH_FORMAT};
+use crate::render::graph::{FrameCtx, Pass};
+
+pub const WGSL: &str = include_str!("shadow_map.wgsl");
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShadowMap;
+
+impl Pass for ShadowMap {
+    fn name(&self) -> &'static str {
+        "shadow_map"
+    }
+
+    fn uses(&self) -> Vec<Use> {
+        vec![Use(Target::ShadowMap, Access::Attach)]
+    }
+
+    fn encode(
+        &self,
+        f: &FrameCtx<'_>,
+        encoder: &mut wgpu::CommandEncoder,
+        timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
+    ) -> Result<()> {
+        let pipeline = f.pipelines.get(("shadow_map", 0), || {
+            let device = &f.dev.device;
+            let layouts = &f.pipelines.layouts;
+            let module = f.pipelines.module(device, "shadow_map", || crate::render::wgsl::source(WGSL));
+            let layout = f.pipelines.layout(device, "shadow_map", &[&layouts.frame, &layouts.draw]);
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("shadow_map"),
+                layout: Some(&layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_shadow"),
+                    compilation_options: Default::default(),
+                    buffers: &[Some(GpuMesh::vertex_layout())],
+                },
+                // both sides cast: open surfaces and planes too
+                primitive: wgpu::PrimitiveState { cull_mode: None, ..Default::default() },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(wgpu::CompareFunction::Less),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: Default::default(),
+                fragment: None,
+                multiview_mask: None,
+                cache: None,
+            })
+        });
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("shadow_map"),
+            color_attachments: &[],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: f.res.view(Target::ShadowMap),
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: timing,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        f.draw_meshes(&mut pass, |_| pipeline.clone());
+        Ok(())
+    }
+}

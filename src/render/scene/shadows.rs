@@ -1,0 +1,96 @@
+//! Shadow settings of a light (Kang, Kim and Yoon's shadow z-buffer): the shadow map's size,
+//! the depth bias that keeps lit surfaces from shadowing themselves, and the filter.
+
+use crate::error::{Error, Result};
+
+/// The shadow map's side when none is given, in texels.
+pub const DEFAULT_SHADOW_SIZE: u32 = 2048;
+/// The depth bias when none is given, in shadow-map texels per unit of receiver slope.
+pub const DEFAULT_SHADOW_BIAS: f64 = 1.0;
+/// Sides a shadow map may have.
+pub const SHADOW_SIZES: std::ops::RangeInclusive<u32> = 64..=8192;
+/// Receiver slopes (tangent of the angle to the light) beyond this get this slope's bias:
+/// surfaces that graze the light would otherwise get a bias without bound.
+pub const MAX_BIAS_SLOPE: f64 = 8.0;
+
+/// How the shadow map is read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[repr(u8)]
+pub enum ShadowFilter {
+    /// One test against the nearest texel: hard, aliased edges.
+    Nearest = 0,
+    /// Percentage-closer filtering: 3x3 bilinear comparisons (a 4x4-texel footprint), soft
+    /// edges a few texels wide.
+    Pcf = 1,
+}
+
+impl ShadowFilter {
+    pub const NAMES: [&'static str; 2] = ["none", "pcf"];
+
+    pub fn parse(arg: &str, s: &str) -> Result<Self> {
+        match s {
+            "none" => Ok(Self::Nearest),
+            "pcf" => Ok(Self::Pcf),
+            other => Err(Error::invalid(arg, format!("must be 'none' or 'pcf', got {other:?}"))),
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Nearest => "none",
+            Self::Pcf => "pcf",
+        }
+    }
+
+    /// How far from its centre a lookup reads, in texels (the bias must cover that distance).
+    pub fn reach(self) -> f64 {
+        match self {
+            Self::Nearest => 1.0,
+            Self::Pcf => 2.5,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shadows {
+    /// Side of the square shadow map in texels: a power of two in `SHADOW_SIZES`.
+    pub size: u32,
+    /// Depth bias in texels per unit of receiver slope (>= 0).
+    pub bias: f64,
+    pub filter: ShadowFilter,
+}
+
+impl Default for Shadows {
+    fn default() -> Self {
+        Shadows { size: DEFAULT_SHADOW_SIZE, bias: DEFAULT_SHADOW_BIAS, filter: ShadowFilter::Pcf }
+    }
+}
+
+impl Shadows {
+    pub fn validate(&self, arg: &str) -> Result<()> {
+        if !(SHADOW_SIZES.contains(&self.size) && self.size.is_power_of_two()) {
+            return Err(Error::invalid(
+                format!("{arg}size"),
+                format!(
+                    "must be a power of two from {} to {}, got {}",
+                    SHADOW_SIZES.start(),
+                    SHADOW_SIZES.end(),
+                    self.size
+                ),
+            ));
+        }
+        if !(self.bias.is_finite() && self.bias >= 0.0) {
+            return Err(Error::invalid(
+                format!("{arg}bias"),
+                format!("must be finite and >= 0, got {}", self.bias),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The depth tolerance per unit of receiver slope, in the light's depth units (the scene's
+    /// bounding diameter is 1, as is the map's side).
+    pub fn tolerance(&self) -> f64 {
+        self.bias * self.filter.reach() / self.size as f64
+    }
+}

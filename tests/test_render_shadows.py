@@ -1,0 +1,200 @@
+"""Shadows (Kang, Kim and Yoon's shadow z-buffer): the shadow output held against a CPU ray cast
+of the same scene (a box on a plane, a torus over a plane, a sphere shadowing itself), no
+acne on lit surfaces, tight contact shadows, shadowed pixels in the lowest band, the plan, and
+the settings' checks."""
+
+from __future__ import annotations
+
+import pickle
+
+import numpy as np
+import pytest
+from scipy import ndimage
+
+import toonmesh as tm
+from toonmesh import _core
+
+BACKENDS = ["vulkan", "gl"]
+
+
+def box(center, half):
+    V = np.array([[x, y, z] for x in (-1.0, 1.0) for y in (-1.0, 1.0) for z in (-1.0, 1.0)]) * half + center
+    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+    return V, F
+
+
+def plane(half, y=0.0):
+    V = np.array([[-half, y, -half], [half, y, -half], [half, y, half], [-half, y, half]])
+    return V, np.array([[0, 2, 1], [0, 3, 2]])
+
+
+def torus(R, r, n=48, m=24, center=(0.0, 0.0, 0.0)):
+    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, n, endpoint=False), np.linspace(0, 2 * np.pi, m, endpoint=False), indexing="ij")
+    V = np.stack([(R + r * np.cos(v)) * np.cos(u), r * np.sin(v), (R + r * np.cos(v)) * np.sin(u)], -1).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(n), np.arange(m), indexing="ij")
+    a, b = i * m + j, ((i + 1) % n) * m + j
+    c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
+    F = np.concatenate([np.stack([a, d, c], -1).reshape(-1, 3), np.stack([a, c, b], -1).reshape(-1, 3)])
+    return V + np.asarray(center), F
+
+
+def join(*parts):
+    Vs, Fs, n = [], [], 0
+    for V, F in parts:
+        Vs.append(V)
+        Fs.append(F + n)
+        n += len(V)
+    return np.vstack(Vs), np.vstack(Fs)
+
+
+SCENES = {
+    "box on a plane": (join(box((0.0, 0.5, 0.0), 0.5), plane(3.0)), (1.0, -2.0, 0.6), (0.2, 1.2, 1.5)),
+    "torus over a plane": (join(torus(1.0, 0.35, center=(0.0, 0.8, 0.0)), plane(3.0)), (0.5, -2.0, 0.3), (0.3, 1.5, 1.2)),
+    "sphere on itself": (tm.shapes.icosphere(3), (1.0, -0.4, -0.8), (0.4, 0.3, 1.0)),
+}
+
+
+def shadow_and_truth(name, size, backend="vulkan", shadows=True, width=192, normals="flat"):
+    (V, F), direction, eye = SCENES[name]
+    r = tm.Renderer(backend=backend)
+    res = r.render(
+        tm.Mesh(V, F, normals=normals),
+        lights=[tm.Light.directional(direction, shadows=shadows)],
+        camera=tm.Camera.fit(eye),
+        width=size,
+        height=size,
+        outputs=("color", "shadow"),
+    )
+    toward = -np.asarray(direction, float) / np.linalg.norm(direction)
+    truth = _core._shadow_truth(V, F, res.projection @ res.view_matrix, size, size, toward)
+    return res, truth
+
+
+def iou(a, b):
+    return (a & b).sum() / max((a | b).sum(), 1)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("name", list(SCENES))
+def test_shadowed_pixels_match_a_ray_cast(name, backend):
+    res, truth = shadow_and_truth(name, 192, backend)
+    assert res.passes[:2] == ["shadow_map", "shade"] and "shadow" in res.passes
+    shadowed, true = res.shadow < 0.5, truth < 0.5
+    assert true.sum() > 500, "the scene should have shadows"
+    assert iou(shadowed, true) >= 0.97, f"IoU {iou(shadowed, true):.4f}"
+
+
+@pytest.mark.parametrize("flt", ["none", "pcf"])
+def test_both_filters_hold_at_the_default_size(flt):
+    res, truth = shadow_and_truth("box on a plane", 192, shadows=tm.Shadows(filter=flt))
+    assert iou(res.shadow < 0.5, truth < 0.5) >= 0.97
+    soft = ((res.shadow > 0.02) & (res.shadow < 0.98)).sum()
+    # PCF gives fractions along shadow edges; one nearest test gives none
+    assert (soft > 0) == (flt == "pcf")
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_no_acne_on_lit_surfaces(backend):
+    r = tm.Renderer(backend=backend)
+    for direction in [(0.0, -1.0, 0.0), (0.3, -1.0, 0.2), (1.0, -0.35, 0.0)]:  # up to 70 degrees
+        res = r.render(
+            tm.Mesh(*plane(2.0)),
+            lights=[tm.Light.directional(direction, shadows=True)],
+            camera=tm.Camera.fit((0.3, 1.0, 0.6)),
+            width=256, height=256, outputs=("shadow",),
+        )
+        assert res.shadow.min() == 1.0, f"{(res.shadow < 1).sum()} shadowed pixels on a lit plane, light {direction}"
+
+
+def test_contact_shadows_have_no_gap_at_1024():
+    res, truth = shadow_and_truth("box on a plane", 1024)
+    shadowed, true = res.shadow < 0.5, truth < 0.5
+    # every pixel where the two disagree lies within 2 pixels of both answers' shadow edges:
+    # no lit gap between the box and its shadow wider than that
+    to_shadow = ndimage.distance_transform_edt(~shadowed)
+    to_true = ndimage.distance_transform_edt(~true)
+    assert to_shadow[true].max() <= 2.0, f"a truly shadowed pixel {to_shadow[true].max():.1f} px from any shadow"
+    assert to_true[shadowed].max() <= 2.0
+
+
+def test_shadowed_pixels_take_the_lowest_band():
+    (V, F), direction, eye = SCENES["box on a plane"]
+    light = tm.Light.directional(direction, shadows=tm.Shadows(filter="none"))
+    res = tm.render(V, F, lights=[light], camera=tm.Camera.fit(eye), width=160, height=160,
+                    outputs=("color", "shadow"), material=tm.Material.bands(), ambient=(0.1, 0.1, 0.1))
+    in_shadow = res.color[res.shadow == 0][:, :3]
+    colours, counts = np.unique(in_shadow, axis=0, return_counts=True)
+    lowest = colours[counts.argmax()]
+    # the plane's shadow and the box's faces turned from the light share the lowest band
+    assert counts.max() >= 0.97 * len(in_shadow), f"{len(colours)} colours in shadow"
+    lit = res.color[res.shadow == 1][:, :3]
+    assert (lit != lowest).any(axis=1).mean() > 0.5
+    # without shadows the same pixels of the plane are lit
+    plain = tm.render(V, F, lights=[tm.Light.directional(direction)], camera=tm.Camera.fit(eye),
+                      width=160, height=160, material=tm.Material.bands(), ambient=(0.1, 0.1, 0.1))
+    assert (plain.color[res.shadow == 0][:, :3] != lowest).any(axis=1).mean() > 0.3
+
+
+def test_the_plan_runs_shadow_passes_only_when_asked():
+    V, F = tm.shapes.icosphere(1)
+    r = tm.Renderer()
+    mesh = r.add_mesh(V, F)
+    casting = [tm.Light.directional((0, -1, 0), shadows=True)]
+    assert r.render(mesh, width=32, height=32).passes == ["shade", "readback_color"]
+    assert r.render(mesh, lights=casting, width=32, height=32).passes == ["shadow_map", "shade", "readback_color"]
+    assert r.render(mesh, lights=casting, width=32, height=32, outputs=("depth",)).passes == ["gbuffer", "readback_depth"]
+    assert r.render(mesh, lights=casting, width=32, height=32, outputs=("shadow",)).passes == [
+        "shadow_map", "gbuffer", "shadow", "readback_shadow"]
+    # an empty scene casts nothing
+    assert r.render([], lights=casting, width=8, height=8).passes == ["shade", "readback_color"]
+
+
+def test_views_in_flight_give_the_same_shadows():
+    (V, F), direction, _ = SCENES["torus over a plane"]
+    r = tm.Renderer()
+    mesh = r.add_mesh(V, F)
+    lights = [tm.Light.directional(direction, shadows=True)]
+    cams = [tm.Camera.fit((np.cos(a), 1.0, np.sin(a))) for a in np.linspace(0, 3, 4)]
+    stack = r.render_many(mesh, cams, lights=lights, width=64, height=64, outputs=("color", "shadow"))
+    for i, cam in enumerate(cams):
+        alone = r.render(mesh, camera=cam, lights=lights, width=64, height=64, outputs=("color", "shadow"))
+        assert np.array_equal(stack.shadow[i], alone.shadow) and np.array_equal(stack.color[i], alone.color)
+
+
+@pytest.mark.parametrize(
+    "make, exc, match",
+    [
+        (lambda: tm.Shadows(size=1000), ValueError, "^size: must be a power of two"),
+        (lambda: tm.Shadows(size=32), ValueError, "^size"),
+        (lambda: tm.Shadows(size=2.0**11), TypeError, "^size"),
+        (lambda: tm.Shadows(bias=-1.0), ValueError, "^bias: must be finite and >= 0"),
+        (lambda: tm.Shadows(bias=float("nan")), ValueError, "^bias"),
+        (lambda: tm.Shadows(filter="soft"), ValueError, "^filter: must be 'none' or 'pcf'"),
+        (lambda: tm.Light.directional((0, -1, 0), shadows="yes"), TypeError, "^shadows: expected True, False or a toonmesh.Shadows"),
+        (lambda: tm.Light.directional((0, -1, 0), shadows=1), TypeError, "^shadows"),
+    ],
+)
+def test_bad_settings_name_the_argument(make, exc, match):
+    with pytest.raises(exc, match=match):
+        make()
+
+
+def test_scene_level_errors():
+    V, F = tm.shapes.icosphere(1)
+    two = [tm.Light.directional((0, -1, 0), shadows=True), tm.Light.directional((1, -1, 0), shadows=True)]
+    with pytest.raises(ValueError, match="^lights: one light may cast shadows"):
+        tm.render(V, F, lights=two, width=8, height=8)
+    with pytest.raises(ValueError, match="^outputs: 'shadow' needs a light that casts shadows"):
+        tm.render(V, F, width=8, height=8, outputs=("shadow",))
+
+
+def test_settings_pickle_and_print():
+    s = tm.Shadows(size=1024, bias=0.5, filter="none")
+    light = tm.Light.directional((1, -2, 0.5), shadows=s)
+    assert light.shadows == s and (s.size, s.bias, s.filter) == (1024, 0.5, "none")
+    assert pickle.loads(pickle.dumps(light)) == light and pickle.loads(pickle.dumps(s)) == s
+    assert "Shadows(size=1024" in repr(light)
+    assert tm.Light.directional((1, -2, 0.5), shadows=True).shadows == tm.Shadows()
+    assert tm.Light.directional((1, -2, 0.5)).shadows is None
+    assert hash(light) == hash(pickle.loads(pickle.dumps(light)))
