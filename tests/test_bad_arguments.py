@@ -8,20 +8,26 @@ are generated from it, each with the outcome the documented rules promise:
 - a legal value gives a result with finite floats (a non-finite probe may give non-finite
   floats only where a filter passes them through, as Sobel does);
 - anything else raises TypeError, ValueError or IndexError whose message starts with the
-  parameter's name ("name: ...", or "a, b: ..." for arguments that only make sense together);
-  a legal value may also raise a documented domain exception such as ConvergenceError;
+  parameter's name ("name: ...", "name[i]: ..." for an element, "a, b: ..." for arguments that
+  only make sense together, or "owner.name: ..." for a field of a compound argument, such as
+  "meshes[0].transform"); some refusals must also give a hint (colours above 1: "divide by
+  255"); a legal value may also raise a documented domain exception such as ConvergenceError;
 - nothing crashes or hangs, and the next valid call gives the same result as before.
 
-To cover another function (the renderer's, say), add a `Case` to `CASES`.
+The renderer's probes render 16x16 images with one shared Renderer; a scene setting (Material,
+Light, Camera, LineStyle, Outlines) that its constructor accepts must also render.
+
+To cover another function, add a `Case` to `CASES`.
 """
 
 from __future__ import annotations
 
 import math
 import os
+import re
 import time
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, List, Optional, Sequence, Set, Tuple
 
 import numpy as np
 import pytest
@@ -63,14 +69,16 @@ class Number:
 
 @dataclass(frozen=True)
 class Integer:
-    """An int (or NumPy integer) in [lo, hi]; an int beyond 64 bits is refused with ValueError."""
+    """An int (or NumPy integer) in [lo, hi] (and in `only` where given); an int beyond 64 bits
+    is refused with ValueError."""
 
     lo: int
     hi: int
     slow_above: float = math.inf
+    only: Optional[Tuple[int, ...]] = None
 
     def legal(self, v: int) -> bool:
-        return self.lo <= v <= self.hi
+        return self.lo <= v <= self.hi and (self.only is None or v in self.only)
 
     def representable(self, v: int) -> bool:
         # an unsigned 64-bit parameter (a seed) takes [0, 2**64), a signed one [-2**63, 2**63)
@@ -84,6 +92,9 @@ class Name:
     valid: Tuple[str, ...]
     invalid: Tuple[str, ...] = ()  # names that exist elsewhere but not for this function
     any_case: bool = False
+    empty: Any = ValueError  # what "" gives
+    # (label, value, outcome) probes of other forms the parameter takes (an Outlines object)
+    more: Tuple[Tuple[str, Any, Any], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -91,6 +102,14 @@ class Array:
     """An array argument; `probes` lists (label, value, expected outcome)."""
 
     probes: Tuple[Tuple[str, Any, Any], ...]
+
+
+@dataclass(frozen=True)
+class Refused:
+    """A refusal whose message must also contain `hint`."""
+
+    exc: Any
+    hint: str
 
 
 @dataclass
@@ -137,7 +156,7 @@ def number_probes(p: Param) -> List[Tuple[str, Any, Any]]:
         ("huge int", 2**63),
         ("int beyond float", 10**400),
         ("numpy float32", np.float32(mid)),
-        ("numpy int", np.int64(round(mid))),
+        ("numpy int", np.int64(round(max(min(mid, 1e18), -1e18)))),
         ("numpy nan", np.float64("nan")),
     ]
     out: List[Tuple[str, Any, Any]] = []
@@ -176,6 +195,7 @@ def integer_probes(p: Param) -> List[Tuple[str, Any, Any]]:
         ("2**64", 2**64),
         ("numpy int8", np.int8(min(max(k.lo, 0), 100))),
         ("numpy uint64 max", np.uint64(2**64 - 1)),
+        *([(str(v), v) for v in range(k.lo + 1, k.hi)] if k.hi - k.lo <= 8 else []),
     ]:
         iv = int(v)
         if not k.representable(iv):
@@ -217,10 +237,11 @@ def name_probes(p: Param) -> List[Tuple[str, Any, Any]]:
     k: Name = p.kind
     out: List[Tuple[str, Any, Any]] = [(v, v, OK) for v in k.valid]
     out += [(f"{v} (not here)", v, ValueError) for v in k.invalid]
+    out += list(k.more)
     out += [
         ("upper case", k.valid[0].upper(), OK if k.any_case else ValueError),
         ("unknown", "bogus", ValueError),
-        ("empty", "", ValueError),
+        ("empty", "", k.empty),
         ("int", 3, TypeError),
         ("bytes", k.valid[0].encode(), TypeError),
         ("list", [k.valid[0]], TypeError),
@@ -342,8 +363,9 @@ PINNED = Array(
 
 
 def vec3(name: str, zero: Any) -> Array:
+    """Three numbers; `zero` is what (0, 0, 0) gives (None: not probed here)."""
     return Array(
-        (
+        tuple(p for p in (
             ("tuple", (0.3, 0.2, 5.0), OK),
             ("ints", (0, 0, 5), OK),
             ("array", np.array([0.3, 0.2, 5.0]), OK),
@@ -362,7 +384,7 @@ def vec3(name: str, zero: Any) -> Array:
             ("a string", "abc", TypeError),
             ("bool array", np.array([True, False, True]), TypeError),
             ("scalar", 5.0, TypeError),
-        )
+        ) if p[2] is not None)
     )
 
 
@@ -647,15 +669,618 @@ CASES: List[Case] = [
 
 
 # ------------------------------------------------------------------------------------------------
+# The renderer's table: 16x16 images, one shared Renderer
+
+
+GPU = tm.gpu_info()
+RENDERER = tm.Renderer()
+HANDLE = RENDERER.add_mesh(V, F)
+OTHER_HANDLE = tm.Renderer().add_mesh(V, F)  # a mesh of another renderer
+REMOVED_HANDLE = RENDERER.add_mesh(V, F)
+RENDERER.remove_mesh(REMOVED_HANDLE)
+SMALL = dict(width=16, height=16)
+
+
+def colours(alpha: bool) -> Array:
+    """An sRGB colour ('#rrggbb' or 3 numbers in [0, 1]; with alpha, '#rrggbbaa' or 4 numbers too)."""
+    four = OK if alpha else ValueError
+    above_one = Refused(ValueError, "divide by 255")  # 0-255 codes get a hint
+    return Array(
+        (
+            ("hex", "#ff8040", OK),
+            ("hex without #", "ff8040", OK),
+            ("hex upper case", "#FF8040", OK),
+            ("hex with alpha", "#ff804080", four),
+            ("tuple", (1.0, 0.5, 0.25), OK),
+            ("ints", (1, 0, 0), OK),
+            ("black", (0, 0, 0), OK),
+            ("list", [0.2, 0.4, 0.6], OK),
+            ("array", np.array([1.0, 0.5, 0.25]), OK),
+            ("float32 array", np.array([1.0, 0.5, 0.25], np.float32), OK),
+            ("big-endian array", np.array([1.0, 0.5, 0.25], ">f8"), OK),
+            ("numpy scalars", (np.float32(1.0), np.int64(0), np.float64(0.5)), OK),
+            ("four numbers", (1.0, 0.5, 0.25, 0.5), four),
+            ("0-255 codes", (255, 128, 0), above_one),
+            ("uint8 codes", np.array([255, 128, 0], np.uint8), above_one),
+            ("just above 1", (1.0001, 0.0, 0.0), above_one),
+            ("huge", (1e300, 0.0, 0.0), above_one),
+            ("negative", (-0.1, 0.0, 0.0), ValueError),
+            ("nan", (float("nan"), 0.0, 0.0), ValueError),
+            ("inf", (0.0, float("inf"), 0.0), ValueError),
+            ("int beyond float", (10**400, 0, 0), ValueError),
+            ("two numbers", (1.0, 0.0), ValueError),
+            ("five numbers", (1.0, 0.0, 0.0, 1.0, 0.0), ValueError),
+            ("empty tuple", (), ValueError),
+            ("short hex", "#fff", ValueError),
+            ("bad hex", "#gg0000", ValueError),
+            ("colour name", "white", ValueError),
+            ("empty string", "", ValueError),
+            ("bools", (True, False, True), TypeError),
+            ("strings", ("1", "0", "0"), TypeError),
+            ("nested", [[1.0, 0.0, 0.0]], TypeError),
+            ("complex", (1j, 0.0, 0.0), TypeError),
+            ("scalar", 0.5, TypeError),
+        )
+    )
+
+
+COLOUR = colours(alpha=False)
+COLOUR_ALPHA = colours(alpha=True)
+
+# A mesh's 4x4 affine model -> world matrix.
+_TURN = np.array([[0.0, -1.0, 0.0, 0.5], [1.0, 0.0, 0.0, -2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
+TRANSFORMS = Array(
+    (
+        ("identity", np.eye(4), OK),
+        ("nested list", np.eye(4).tolist(), OK),
+        ("float32", np.eye(4, dtype=np.float32), OK),
+        ("int", np.eye(4, dtype=np.int64), OK),
+        ("big-endian", np.eye(4).astype(">f8"), OK),
+        ("fortran order", np.asfortranarray(_TURN), OK),
+        ("turn, move and scale", np.diag([1e3, 1e3, 1e3, 1.0]) @ _TURN, OK),
+        ("tiny scale", np.diag([1e-3, 1e-3, 1e-3, 1.0]), OK),
+        ("mirror", np.diag([-1.0, 1.0, 1.0, 1.0]), OK),
+        ("singular", np.zeros((4, 4)), ValueError),
+        ("flattening", np.diag([1.0, 1.0, 0.0, 1.0]), ValueError),
+        ("projective", _with(np.eye(4), (3, 2), 0.5), ValueError),
+        ("nan", _with(np.eye(4), (0, 3), np.nan), ValueError),
+        ("inf", _with(np.eye(4), (1, 1), np.inf), ValueError),
+        ("3x3", np.eye(3), ValueError),
+        ("4x3", np.eye(4)[:, :3].copy(), ValueError),
+        ("flat", np.eye(4).ravel(), (TypeError, ValueError)),
+        ("bool", np.eye(4) > 0, TypeError),
+        ("complex", np.eye(4) * (1 + 1j), TypeError),
+        ("strings", np.eye(4).astype(str), TypeError),
+        ("object", np.eye(4).astype(object), TypeError),
+        ("ragged", [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], TypeError),
+        ("a string", "identity", TypeError),
+    )
+)
+
+# Outputs with outlines drawn ("outline" and "lines" need them).
+OUTPUTS = Array(
+    (
+        ("color", ("color",), OK),
+        ("a name", "depth", OK),
+        ("list", ["color", "normal"], OK),
+        ("every output", ("color", "normal", "depth", "outline", "lines"), OK),
+        ("set", {"normal"}, OK),
+        ("numpy strings", np.array(["color", "depth"]), OK),
+        ("repeated", ("color", "color"), OK),
+        ("outline", ("outline",), OK),
+        ("lines", ("lines",), OK),
+        ("empty", (), ValueError),
+        ("unknown", ("colour",), ValueError),
+        ("upper case", ("COLOR",), ValueError),
+        ("empty name", ("",), ValueError),
+        ("int", 5, TypeError),
+        ("int in list", ("color", 3), TypeError),
+        ("bytes", b"color", TypeError),
+        ("nested", [["color"]], TypeError),
+    )
+)
+
+# Outputs of a render without outlines.
+OUTPUTS_WITHOUT_OUTLINES = Array(
+    (
+        ("color", ("color",), OK),
+        ("normal and depth", ("normal", "depth"), OK),
+        ("outline", ("outline",), ValueError),
+        ("lines", ("color", "lines"), ValueError),
+    )
+)
+
+OUTLINES = Name(
+    ("mesh", "image", "both"),
+    more=(
+        ("Outlines()", tm.Outlines(), OK),
+        ("Outlines('image')", tm.Outlines("image", color="#204080", width=3.0), OK),
+        ("True", True, TypeError),
+        ("a LineStyle", tm.LineStyle(), TypeError),
+    ),
+)
+
+MATERIALS = Array(
+    (
+        ("bands", tm.Material.bands(), OK),
+        ("lambert", tm.Material.lambert("#80c0ff"), OK),
+        ("phong", tm.Material.phong(shininess=8), OK),
+        ("thresholded phong", tm.Material.thresholded_phong(per_vertex=True), OK),
+        ("lut", tm.Material.lut(), OK),
+        ("a name", "bands", TypeError),
+        ("the class", tm.Material, TypeError),
+        ("a light", tm.Light.key(), TypeError),
+        ("a dict", {"model": "bands"}, TypeError),
+    )
+)
+
+CAMERAS_ONE = Array(
+    (
+        ("fit", tm.Camera.fit(), OK),
+        ("fit orthographic", tm.Camera.fit((0.0, 1.0, 0.0), up=(0.0, 0.0, 1.0), orthographic=True), OK),
+        ("look_at", tm.Camera.look_at((0.3, 0.2, 5.0), fov_y=20.0), OK),
+        ("orthographic", tm.Camera.orthographic((0.3, 0.2, 5.0), height=3.0), OK),
+        ("a name", "front", TypeError),
+        ("a list", [tm.Camera.fit()], TypeError),
+        ("a light", tm.Light.key(), TypeError),
+        ("an int", 1, TypeError),
+    )
+)
+
+CAMERAS = Array(
+    (
+        ("two", [tm.Camera.fit(), tm.Camera.look_at((0.3, 0.2, 5.0))], OK),
+        ("tuple", (tm.Camera.fit((1.0, 0.0, 0.0)),), OK),
+        ("none", [], OK),
+        ("a camera", tm.Camera.fit(), TypeError),
+        ("a string in the list", [tm.Camera.fit(), "front"], TypeError),
+        ("a string", "front", TypeError),
+        ("an int", 2, TypeError),
+    )
+)
+
+_LIGHTS = [tm.Light.key(), tm.Light.directional((1.0, -1.0, -1.0)), tm.Light.point((2.0, 2.0, 2.0), space="camera")]
+LIGHTS = Array(
+    (
+        ("a light", tm.Light.key(), OK),
+        ("a list", _LIGHTS, OK),
+        ("a tuple", tuple(_LIGHTS), OK),
+        ("none", [], OK),
+        ("eight", [tm.Light.key()] * 8, OK),
+        ("nine", [tm.Light.key()] * 9, ValueError),
+        ("a string", "sun", TypeError),
+        ("a string in the list", [tm.Light.key(), "sun"], TypeError),
+        ("None in the list", [None], TypeError),
+        ("an int", 1, TypeError),
+        ("a material", tm.Material.bands(), TypeError),
+    )
+)
+
+_MESH = tm.Mesh(V, F, material=tm.Material.lambert(), transform=_TURN, normals="flat")
+MESHES = Array(
+    (
+        ("a handle", HANDLE, OK),
+        ("a list", [HANDLE, HANDLE], OK),
+        ("a tuple", (HANDLE,), OK),
+        ("a Mesh", tm.Mesh(V, F), OK),
+        ("a Mesh of a handle", tm.Mesh(HANDLE, transform=_TURN), OK),
+        ("a Mesh with its own settings", _MESH, OK),
+        ("handles and Meshes", [HANDLE, _MESH], OK),
+        ("empty", [], OK),
+        ("a handle of another renderer", OTHER_HANDLE, ValueError),
+        ("arrays", V, TypeError),
+        ("a (V, F) pair", (V, F), TypeError),
+        ("a string", "bunny", TypeError),
+        ("None in the list", [HANDLE, None], TypeError),
+        ("a mesh id", HANDLE.id, TypeError),
+    )
+)
+
+BACKEND = Name(
+    ("auto", "vulkan", "gl", "vk", "opengl", "gles", "egl", " vulkan "), any_case=True, empty=OK
+)
+NORMALS = Name(("smooth", "flat"))
+PIXELS = Integer(1, GPU["max_texture_size"])
+MSAA = Integer(1, 4, only=tuple(n for n in (1, 4) if n in GPU["msaa_samples"]))
+SUPERSAMPLE = Integer(1, 4)
+
+# The arguments that render, Renderer.render and Renderer.render_many share.
+FRAME = [
+    Param("material", MATERIALS, none=OK),
+    Param("transform", TRANSFORMS, none=OK),
+    Param("lights", LIGHTS, none=OK),
+    Param("ambient", COLOUR, none=OK),
+    Param("background", COLOUR_ALPHA, none=OK),
+    Param("width", PIXELS),
+    Param("height", PIXELS),
+    Param("outputs", OUTPUTS, none=OK),
+    Param("msaa", MSAA),
+    Param("supersample", SUPERSAMPLE),
+    Param("outlines", OUTLINES, none=OK),
+]
+
+
+def _frame(**kw: Any) -> Dict[str, Any]:
+    return dict(SMALL, outputs=("color", "normal", "depth"), outlines="mesh", msaa=1, supersample=1, **kw)
+
+
+def _rendered(make: Callable[..., Any], use: Callable[[Any], Dict[str, Any]]) -> Callable[..., Any]:
+    """`make(**kw)`, and a render that uses what it made: what a constructor accepts must render.
+
+    A camera is checked for itself when made, and for the scene when used: settings that give
+    it non-finite matrices for this scene (a margin of 1e308, say) are refused then, naming it.
+    """
+
+    def call(**kw: Any) -> Any:
+        made = make(**kw)
+        try:
+            return made, RENDERER.render(HANDLE, **SMALL, outputs=("color", "normal"), **use(made))
+        except ValueError as exc:
+            if isinstance(made, tm.Camera) and str(exc).startswith("camera: ") and "non-finite" in str(exc):
+                return made, str(exc)
+            raise
+
+    return call
+
+
+# Huge or tiny meshes render, but their depths leave float32: no "depth" in these renders.
+
+
+def _added(**kw: Any) -> Any:
+    """Renderer.add_mesh, then a render of the mesh (which is removed after it)."""
+    handle = RENDERER.add_mesh(**kw)
+    try:
+        return handle, RENDERER.render(handle, **SMALL, outputs=("color", "normal"))
+    finally:
+        RENDERER.remove_mesh(handle)
+
+
+def _mesh_rendered(**kw: Any) -> Any:
+    return RENDERER.render(tm.Mesh(**kw), **SMALL, outputs=("color", "normal"))
+
+
+def _removed(mesh: Any) -> None:
+    """Renderer.remove_mesh on a freshly added mesh, or on `mesh` when it is not a handle of it."""
+    RENDERER.remove_mesh(RENDERER.add_mesh(V, F) if mesh is HANDLE else mesh)
+
+
+COLOUR_OR_NONE = Param("color", COLOUR, none=OK)
+PER_VERTEX = Param("per_vertex", Flag(), none=OK)
+T = Number(-1.0, 1.0)
+# float32 fields: a finite float64 beyond float32's range is refused
+F32_MAX = float(np.finfo(np.float32).max)
+
+STYLE = Array(
+    (
+        ("True", True, OK),
+        ("False", False, OK),
+        ("numpy True", np.True_, OK),
+        ("a LineStyle", tm.LineStyle("#ff0000", 3.0), OK),
+        ("a colour", "#00ff00", OK),
+        ("colour numbers", (0.0, 0.0, 1.0), OK),
+        ("0-255 codes", (0, 0, 255), Refused(ValueError, "divide by 255")),
+        ("a word", "thick", ValueError),
+        ("an int", 3, TypeError),
+        ("a list of a bool", [True], TypeError),
+        ("an Outlines", tm.Outlines(), TypeError),
+    )
+)
+
+UP = Array(
+    (
+        ("y", (0.0, 1.0, 0.0), OK),
+        ("ints", (1, 1, 0), OK),
+        ("array", np.array([0.2, 1.0, 0.1]), OK),
+        ("float32 array", np.array([0.0, 1.0, 0.0], np.float32), OK),
+        ("long", (0.0, 1e300, 0.0), OK),
+        ("short", (0.0, 1e-300, 0.0), OK),
+        ("along the view", (0.3, 0.2, 5.0), ValueError),
+        ("against the view", (-0.6, -0.4, -10.0), ValueError),
+        ("zero", (0, 0, 0), ValueError),
+        ("nan", (0.0, float("nan"), 0.0), ValueError),
+        ("inf", (0.0, float("inf"), 0.0), ValueError),
+        ("two numbers", (0.0, 1.0), ValueError),
+        ("bools", (False, True, False), TypeError),
+        ("a string", "up", TypeError),
+    )
+)
+
+LUT = Array(
+    (
+        ("kang_table", tm.kang_table(), OK),
+        ("list", [0.2, 0.6, 1.0], OK),
+        ("one entry", [1.0], OK),
+        ("rgb rows", np.array([[0.2, 0.1, 0.0], [1.0, 0.9, 0.8]]), OK),
+        ("float32", np.linspace(0, 1, 8, dtype=np.float32), OK),
+        ("256 entries", np.ones(256), OK),
+        ("factors above 1", [0.5, 2.0], OK),
+        ("257 entries", np.ones(257), ValueError),
+        ("empty", [], ValueError),
+        ("negative", [0.5, -0.1], ValueError),
+        ("nan", [0.5, float("nan")], ValueError),
+        ("inf", [float("inf")], ValueError),
+        ("beyond float32", [1e39], ValueError),
+        ("rows of 2", [[1.0, 0.5]], ValueError),
+        ("rows of 4", np.ones((2, 4)), ValueError),
+        ("bools", [True, False], TypeError),
+        ("strings", ["0.5"], TypeError),
+        ("a string", "ramp", TypeError),
+        ("a number", 0.5, TypeError),
+    )
+)
+
+THRESHOLDS = Array(
+    (
+        ("paper's", (0.2, 0.5, 0.7, 0.9), OK),
+        ("array", np.array([-0.5, 0.0, 0.5, 0.99]), OK),
+        ("float32", np.array([0.1, 0.2, 0.3, 0.4], np.float32), OK),
+        ("beyond [-1, 1]", (-5.0, 0.0, 1.0, 5.0), OK),
+        ("decreasing", (0.9, 0.7, 0.5, 0.2), ValueError),
+        ("repeated", (0.2, 0.5, 0.5, 0.9), ValueError),
+        ("nan", (0.2, float("nan"), 0.7, 0.9), ValueError),
+        ("inf", (0.2, 0.5, 0.7, float("inf")), ValueError),
+        ("strings", ("0.2", "0.5", "0.7", "0.9"), TypeError),
+        ("a string", "0.5", TypeError),
+        ("a number", 0.5, TypeError),
+    )
+)
+
+VALUES = Array(
+    (
+        ("paper's", (0.0, 0.2, 0.7, 0.9, 1.0), OK),
+        ("above 1", (0.0, 0.5, 1.0, 2.0, 4.0), OK),
+        ("array", np.linspace(0, 1, 5), OK),
+        ("negative", (-0.1, 0.2, 0.7, 0.9, 1.0), ValueError),
+        ("nan", (0.0, 0.2, float("nan"), 0.9, 1.0), ValueError),
+        ("beyond float32", (0.0, 0.2, 0.7, 0.9, 1e39), ValueError),
+        ("two", (0.0, 1.0), ValueError),
+        ("bools", (False, True, True, True, True), TypeError),
+        ("a number", 1.0, TypeError),
+    )
+)
+
+RENDER_CASES: List[Case] = [
+    Case(
+        "render",
+        tm.render,
+        dict(vertices=V, faces=F, **dict(_frame(), outputs=("color", "normal"))),
+        [
+            Param("vertices", VERTICES, none=OK),  # no "depth": see _added
+            Param("faces", FACES),
+            Param("normals", NORMALS),
+            Param("smooth_iterations", Integer(0, 10**6, slow_above=3)),
+            Param("camera", CAMERAS_ONE, none=OK),
+            Param("backend", BACKEND, none=OK, also=(tm.GpuUnavailableError,)),
+            *FRAME,
+        ],
+    ),
+    Case(
+        "render(no outlines)",
+        tm.render,
+        dict(vertices=V, faces=F, **dict(_frame(), outlines=None)),
+        [Param("outputs", OUTPUTS_WITHOUT_OUTLINES, none=OK)],
+    ),
+    Case(
+        "Renderer",
+        tm.Renderer,
+        dict(backend=None),
+        [Param("backend", BACKEND, none=OK, also=(tm.GpuUnavailableError,))],
+    ),
+    Case(
+        "gpu_info",
+        tm.gpu_info,
+        dict(backend=None),
+        [Param("backend", BACKEND, none=OK, also=(tm.GpuUnavailableError,))],
+    ),
+    Case(
+        "Renderer.render",
+        RENDERER.render,
+        dict(meshes=HANDLE, **_frame()),
+        [Param("meshes", MESHES, none=OK), Param("camera", CAMERAS_ONE, none=OK), *FRAME],
+    ),
+    Case(
+        "Renderer.render_many",
+        RENDERER.render_many,
+        dict(meshes=HANDLE, cameras=[tm.Camera.fit(), tm.Camera.fit((1.0, 0.0, 0.0))], **_frame()),
+        [Param("meshes", MESHES, none=OK), Param("cameras", CAMERAS), *FRAME],
+    ),
+    Case(
+        "Renderer.add_mesh",
+        _added,
+        dict(vertices=V, faces=F, normals="smooth", smooth_iterations=0),
+        [
+            Param("vertices", VERTICES),
+            Param("faces", FACES),
+            Param("normals", NORMALS),
+            Param("smooth_iterations", Integer(0, 10**6, slow_above=3)),
+        ],
+    ),
+    Case(
+        "Renderer.remove_mesh",
+        _removed,
+        dict(mesh=HANDLE),
+        [
+            Param(
+                "mesh",
+                Array(
+                    (
+                        ("a handle", HANDLE, OK),
+                        ("a removed handle", REMOVED_HANDLE, OK),
+                        ("a handle of another renderer", OTHER_HANDLE, ValueError),
+                        ("a mesh id", HANDLE.id, TypeError),
+                        ("a Mesh", tm.Mesh(V, F), TypeError),
+                    )
+                ),
+            )
+        ],
+    ),
+    Case(
+        "Mesh",
+        _mesh_rendered,
+        dict(vertices=V, faces=F, material=None, transform=None, normals="smooth"),
+        [
+            Param("vertices", VERTICES),
+            Param("faces", FACES),
+            Param("material", MATERIALS, none=OK),
+            Param("transform", TRANSFORMS, none=OK),
+            Param("normals", NORMALS),
+        ],
+    ),
+    Case(
+        "Material.lambert",
+        _rendered(tm.Material.lambert, lambda m: dict(material=m)),
+        dict(color=(0.9, 0.5, 0.2)),
+        [COLOUR_OR_NONE, Param("ambient", COLOUR, none=OK), PER_VERTEX],
+    ),
+    Case(
+        "Material.phong",
+        _rendered(tm.Material.phong, lambda m: dict(material=m)),
+        dict(color=(0.9, 0.5, 0.2)),
+        [
+            COLOUR_OR_NONE,
+            Param("specular", COLOUR, none=OK),
+            Param("shininess", Number(0.0, F32_MAX, open_lo=True), none=OK),
+            Param("ambient", COLOUR, none=OK),
+            PER_VERTEX,
+        ],
+    ),
+    Case(
+        "Material.thresholded_phong",
+        _rendered(tm.Material.thresholded_phong, lambda m: dict(material=m)),
+        dict(color=(0.9, 0.5, 0.2)),
+        [
+            COLOUR_OR_NONE,
+            Param("t_h", T, none=OK),
+            Param("t_s", T, none=OK),
+            Param("highlight", Name(("blinn", "paper")), none=OK),
+            Param("ambient", COLOUR, none=OK),
+            Param("specular", COLOUR, none=OK),
+            PER_VERTEX,
+        ],
+    ),
+    Case(
+        "Material.bands",
+        _rendered(tm.Material.bands, lambda m: dict(material=m)),
+        dict(color=(0.9, 0.5, 0.2)),
+        [COLOUR_OR_NONE, Param("thresholds", THRESHOLDS, none=OK), Param("values", VALUES, none=OK), PER_VERTEX],
+    ),
+    Case(
+        "Material.lut",
+        _rendered(tm.Material.lut, lambda m: dict(material=m)),
+        dict(table=None, color=(0.9, 0.5, 0.2)),
+        [Param("table", LUT, none=OK), COLOUR_OR_NONE, PER_VERTEX],
+    ),
+    *[
+        Case(
+            f"Light.{kind}",
+            _rendered(make, lambda light: dict(lights=light)),
+            {where: (1.0, -1.0, -2.0)},
+            [
+                Param(where, vec3(where, ValueError if kind == "directional" else OK)),
+                Param("color", COLOUR, none=OK),
+                Param("intensity", Number(0.0, math.inf, open_hi=True), none=OK),
+                Param("space", Name(("world", "camera")), none=OK),
+            ],
+        )
+        for kind, make, where in (
+            ("directional", tm.Light.directional, "direction"),
+            ("point", tm.Light.point, "position"),
+        )
+    ],
+    Case(
+        "Camera.fit",
+        _rendered(tm.Camera.fit, lambda c: dict(camera=c)),
+        dict(direction=(0.3, 0.2, 5.0)),
+        [
+            Param("direction", vec3("direction", ValueError), none=OK),
+            Param("up", UP, none=OK),  # the view runs along (0.3, 0.2, 5), as UP's probes expect
+            Param("fov_y", Number(0.0, 180.0, open_lo=True, open_hi=True), none=OK),
+            Param("margin", Number(0.0, math.inf, open_lo=True, open_hi=True), none=OK),
+            Param("orthographic", Flag(), none=OK),
+        ],
+    ),
+    *[
+        Case(
+            f"Camera.{name}",
+            _rendered(make, lambda c: dict(camera=c)),
+            dict(eye=(0.6, 0.4, 10.0)),  # the view runs along (0.3, 0.2, 5), as UP's probes expect
+            [
+                Param("eye", vec3("eye", None)),  # an eye on the target: test_render_errors.py
+                Param("target", vec3("target", OK), none=OK),
+                Param("up", UP, none=OK),
+                size,
+                Param("near", Number(0.0 if name == "look_at" else -math.inf, math.inf, open_lo=True, open_hi=True), none=OK),
+                Param("far", Number(0.0 if name == "look_at" else -math.inf, math.inf, open_lo=True, open_hi=True), none=OK),
+            ],
+        )
+        for name, make, size in (
+            ("look_at", tm.Camera.look_at, Param("fov_y", Number(0.0, 180.0, open_lo=True, open_hi=True), none=OK)),
+            ("orthographic", tm.Camera.orthographic, Param("height", Number(0.0, math.inf, open_lo=True, open_hi=True), none=OK)),
+        )
+    ],
+    Case(
+        "LineStyle",
+        _rendered(tm.LineStyle, lambda s: dict(outlines=tm.Outlines("mesh", silhouette=s))),
+        dict(color=None, width=None),
+        [Param("color", COLOUR, none=OK), Param("width", Number(0.0, 64.0, open_lo=True), none=OK)],
+    ),
+    Case(
+        "Outlines",
+        _rendered(tm.Outlines, lambda o: dict(outlines=o)),
+        dict(kind=None),
+        [
+            Param("kind", Name(("mesh", "image", "both")), none=OK),
+            Param("color", COLOUR, none=OK),
+            Param("width", Number(0.0, 64.0, open_lo=True), none=OK),
+            *[
+                Param(k, STYLE, none=OK)
+                for k in ("silhouette", "boundary", "crease", "ridge", "valley", "nonmanifold", "image")
+            ],
+            Param("crease_angle", Number(0.0, 180.0), none=OK),
+            Param("weld", Flag(), none=OK),
+            Param("normal_threshold", Number(0.0, F32_MAX), none=OK),
+            Param("depth_threshold", Number(0.0, F32_MAX), none=OK),
+            Param("depth_offset", Number(0.0, F32_MAX), none=OK),
+        ],
+    ),
+]
+
+CASES += RENDER_CASES
+
+
+# ------------------------------------------------------------------------------------------------
 # Running the probes
 
 
+SCENE_SETTINGS = (tm.Material, tm.Light, tm.Camera, tm.LineStyle, tm.Outlines)
+
+
+def _fields(x: Any) -> Dict[str, Any]:
+    """A scene setting's read-only fields."""
+    return {k: getattr(x, k) for k in dir(type(x)) if not k.startswith("_") and not callable(getattr(x, k))}
+
+
 def _finite_floats(result: Any) -> bool:
-    """Every float array inside `result` (tuples, lists, dataclasses, an EdgeIndex) is finite."""
+    """Every float inside `result` (tuples, lists, dicts, dataclasses, an EdgeIndex, a render's
+    images and a scene setting's fields) is finite; a render's depth is +inf where no mesh is."""
     if isinstance(result, te.EdgeIndex):
         return _finite_floats(result.features) and _finite_floats(result.face_normals)
+    if isinstance(result, tm.RenderResult):
+        depth = result.depth
+        if depth is not None and not np.all(np.isfinite(depth) | (depth == np.inf)):
+            return False
+        return _finite_floats([result.color, result.normal, result.outline, result.lines or [],
+                               result.view_matrix, result.projection, result.near, result.far])
+    if isinstance(result, tm.RenderStack):
+        return _finite_floats(list(result))
+    if isinstance(result, SCENE_SETTINGS):
+        return _finite_floats(list(_fields(result).values()))
     if isinstance(result, np.ndarray):
         return result.dtype.kind != "f" or bool(np.isfinite(result).all())
+    if isinstance(result, float):
+        return math.isfinite(result)
+    if isinstance(result, dict):
+        return _finite_floats(list(result.values()))
     if isinstance(result, (tuple, list)):
         return all(_finite_floats(r) for r in result)
     if hasattr(result, "__dataclass_fields__"):
@@ -664,6 +1289,15 @@ def _finite_floats(result: Any) -> bool:
 
 
 def _same(a: Any, b: Any) -> bool:
+    if isinstance(a, tm.RenderResult):
+        names = ("color", "normal", "depth", "outline", "lines", "line_kinds", "view_matrix", "projection")
+        return isinstance(b, tm.RenderResult) and all(_same(getattr(a, n), getattr(b, n)) for n in names)
+    if isinstance(a, tm.RenderStack):
+        return isinstance(b, tm.RenderStack) and _same(list(a), list(b))
+    if isinstance(a, tm.MeshHandle):  # a new upload: another id, the same mesh
+        return isinstance(b, tm.MeshHandle) and (a.n_vertices, a.n_faces, a.normals) == (b.n_vertices, b.n_faces, b.normals)
+    if isinstance(a, tm.Renderer):
+        return isinstance(b, tm.Renderer) and a.backend == b.backend
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and np.array_equal(a, b, equal_nan=True)
     if isinstance(a, (tuple, list)):
@@ -691,11 +1325,23 @@ def _reference(case: Case) -> Any:
     return _REFERENCE[case.name]
 
 
+def _named(message: str) -> List[str]:
+    """The arguments a message starts with: "name: ...", "name[i]: ..." for an element, "a, b:
+    ..." for arguments that go together, "owner.name: ..." or "owner[i].name: ..." for a field
+    of a compound argument (both owner and name count)."""
+    names = []
+    for n in message.split(":")[0].split(", "):
+        parts = re.sub(r"\[[^\]]*\]", "", n).split(".")
+        names += [parts[0], parts[-1]]
+    return names
+
+
 @pytest.mark.parametrize("case, param, label, value, expected", ALL_PROBES)
 def test_bad_argument(case: Case, param: Param, label: str, value: Any, expected: Any) -> None:
     reference = _reference(case)
     kwargs = dict(case.base, **{param.name: value})
     legal_errors = tuple(param.also) + tuple(case.also)
+    refused = expected.exc if isinstance(expected, Refused) else expected
     t0 = time.perf_counter()
     try:
         try:
@@ -704,11 +1350,10 @@ def test_bad_argument(case: Case, param: Param, label: str, value: Any, expected
             result = exc  # a documented domain error for a legal value
         except (TypeError, ValueError, IndexError) as exc:
             assert expected not in (OK, "nonfinite ok"), f"refused a legal value: {type(exc).__name__}: {exc}"
-            assert isinstance(exc, expected), f"expected {expected}, got {type(exc).__name__}: {exc}"
-            # "name: ...", "name[i]: ..." for an element, or "a, b: ..." for arguments that go
-            # together
-            named = [n.split("[")[0] for n in str(exc).split(":")[0].split(", ")]
-            assert param.name in named, f"the message does not start with the name: {exc}"
+            assert isinstance(exc, refused), f"expected {refused}, got {type(exc).__name__}: {exc}"
+            assert param.name in _named(str(exc)), f"the message does not start with the name: {exc}"
+            if isinstance(expected, Refused):
+                assert expected.hint in str(exc), f"no hint {expected.hint!r}: {exc}"
             result = exc
         else:
             assert expected in (OK, "nonfinite ok"), f"accepted a bad value, expected {expected}"
@@ -722,15 +1367,35 @@ def test_bad_argument(case: Case, param: Param, label: str, value: Any, expected
     assert _same(case.call(**case.base), reference)
 
 
+def _methods(cls: type) -> Set[str]:
+    """A class's own public methods (static ones too), as "Class.method"."""
+    return {f"{cls.__name__}.{n}" for n in vars(cls) if not n.startswith("_") and callable(getattr(cls, n))}
+
+
 def test_every_public_callable_is_in_the_table() -> None:
-    """A new public function or class must get its row in CASES (or be listed here as taking no
-    arguments worth probing)."""
+    """A new public function, class or method must get its row in CASES (or be listed here as
+    taking no arguments worth probing)."""
     covered = {c.name.split("(")[0] for c in CASES} | {"data.load_obj"}  # load_obj: see below
     no_arguments = {"get_num_threads", "data.bunny", "edges.FeatureEdges", "edges.EdgeDetection"}
+    no_arguments |= {"kang_table", "Light.key", "MeshHandle", "RenderStack"}
+    # Made by their static methods only (which have rows).
+    no_arguments |= {"Camera", "Light", "Material"}
+    # A render's result: its methods write its images out (test_render.py, test_render_outlines.py).
+    no_arguments |= {"RenderResult"} | _methods(tm.RenderResult)
     public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
     public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny"}
     public |= {"edges.EdgeIndex.feature_edges", "edges.EdgeIndex.silhouette", "edges.EdgeIndex.outlines",
                "edges.EdgeIndex.segments", "data.load_obj"}
+    # The renderer: every function and class at the top level, and each class's methods.
+    for name in tm.__all__:
+        obj = getattr(tm, name)
+        if not callable(obj) or (isinstance(obj, type) and issubclass(obj, BaseException)):
+            continue  # modules (above), __version__, exceptions
+        public.add(name)
+        if isinstance(obj, type):
+            public |= _methods(obj)
+    assert {"render", "Renderer.render", "Renderer.render_many", "Renderer.add_mesh", "Material.lut",
+            "Camera.look_at", "Light.point", "Outlines", "LineStyle"} <= public  # the walk finds them
     missing = public - covered - no_arguments
     assert missing == set(), f"no bad-argument rows for {sorted(missing)}"
 

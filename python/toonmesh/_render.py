@@ -67,10 +67,30 @@ class Mesh:
         if material is not None and not isinstance(material, Material):
             raise TypeError(f"material: expected a toonmesh.Material, got {type(material).__name__}")
         self.material = material
-        self.transform = None if transform is None else np.asarray(transform, dtype=np.float64)
-        if normals not in _NORMAL_MODES:
-            raise ValueError(f"normals: must be 'smooth' or 'flat', got {normals!r}")
-        self.normals = normals
+        self.transform = _matrix("transform", transform)
+        self.normals = _normal_mode(normals)
+
+
+def _normal_mode(normals: Any) -> str:
+    if not isinstance(normals, str):
+        raise TypeError(f"normals: expected 'smooth' or 'flat', got {type(normals).__name__}")
+    if normals not in _NORMAL_MODES:
+        raise ValueError(f"normals: must be 'smooth' or 'flat', got {normals!r}")
+    return normals
+
+
+def _matrix(name: str, value: Any) -> Optional[np.ndarray]:
+    """``value`` as a float64 array, refusing what is not numbers (bools, complex, strings)
+    rather than casting it; the core checks the shape and the values."""
+    if value is None:
+        return None
+    try:
+        a = np.asarray(value)
+    except Exception as exc:  # ragged lists and other non-arrays
+        raise TypeError(f"{name}: expected a 4x4 array of numbers ({exc})") from None
+    if a.dtype.kind not in "iuf":
+        raise TypeError(f"{name}: expected a 4x4 array of numbers, got {type(value).__name__} of {a.dtype}")
+    return a.astype(np.float64)
 
 
 class RenderResult:
@@ -185,16 +205,26 @@ def _pil_takes_mode() -> bool:
     return tuple(int(x) for x in PIL.__version__.split(".")[:2]) < (11, 3)
 
 
-def _smoothed(vertices: np.ndarray, faces: np.ndarray, iterations: int) -> np.ndarray:
+def _smoothing_iterations(iterations: Any) -> int:
+    """``smooth_iterations`` checked for its type (0 skips smoothing, so it is checked even then)."""
     if isinstance(iterations, (bool, np.bool_)) or not isinstance(iterations, (int, np.integer)):
         raise TypeError(f"smooth_iterations: expected an int, got {type(iterations).__name__}")
     if iterations < 0:
         raise ValueError(f"smooth_iterations: must be >= 0, got {iterations}")
+    return int(iterations)
+
+
+def _smoothed(vertices: np.ndarray, faces: np.ndarray, iterations: int) -> np.ndarray:
     if iterations == 0:
         return vertices
     from toonmesh import smooth
 
-    return smooth.laplacian(vertices, faces, iterations=int(iterations), preset="paper")
+    try:
+        return smooth.laplacian(vertices, faces, iterations=iterations, preset="paper")
+    except ValueError as exc:  # the core's range of iterations, under this function's name for it
+        if str(exc).startswith("iterations:"):
+            raise ValueError(f"smooth_{exc}") from None
+        raise
 
 
 def _outlines_of(outlines: Any) -> Optional[Outlines]:
@@ -235,13 +265,17 @@ class Renderer:
         ``normals``: ``"smooth"`` or ``"flat"``. ``smooth_iterations``: Laplacian smoothing
         first (each vertex to the mean of its neighbours, n times), as in Al-Rousan et al.
         """
+        iterations = _smoothing_iterations(smooth_iterations)
+        normals = _normal_mode(normals)
         V, F = mesh_arrays(vertices, faces)
-        V = _smoothed(V, F, smooth_iterations) if smooth_iterations else V
+        V = _smoothed(V, F, iterations)
         mesh_id = self._engine.add_mesh(V, F, normals)
         return MeshHandle(self, mesh_id, len(V), len(F), normals)
 
     def remove_mesh(self, mesh: MeshHandle) -> None:
         """Frees a mesh's GPU memory."""
+        if not isinstance(mesh, MeshHandle):
+            raise TypeError(f"mesh: expected a toonmesh.MeshHandle, got {type(mesh).__name__}")
         if mesh.renderer is not self:
             raise ValueError("mesh: belongs to another Renderer")
         self._engine.remove_mesh(mesh.id)
@@ -357,7 +391,7 @@ class Renderer:
                 elif handle.renderer is not self:
                     raise ValueError(f"meshes[{i}]: the MeshHandle belongs to another Renderer")
                 t = item.transform if item.transform is not None else transform
-                specs.append((handle.id, item.material, None if t is None else np.asarray(t, dtype=np.float64)))
+                specs.append((handle.id, item.material, t if item.transform is not None else _matrix("transform", t)))
             yield specs
         finally:
             for h in uploaded:
@@ -404,6 +438,8 @@ if hasattr(os, "register_at_fork"):
 
 
 def _shared_renderer(backend: Optional[str]) -> Renderer:
+    if backend is not None and not isinstance(backend, str):  # it is a key here
+        raise TypeError(f"backend: expected a string or None, got {type(backend).__name__}")
     with _renderers_lock:
         r = _renderers.get(backend)
         if r is None:
@@ -444,6 +480,7 @@ def render(
 
     >>> img = toonmesh.render(V, F, width=640, height=480, outlines="mesh").color   # (480, 640, 4) uint8
     """
+    iterations = _smoothing_iterations(smooth_iterations)
     if isinstance(vertices, (list, tuple)) and faces is None:
         items: List[Any] = list(vertices)
     elif vertices is None:
@@ -453,9 +490,9 @@ def render(
     else:
         V, F = mesh_arrays(vertices, faces)
         items = [Mesh(V, F, normals=normals)]
-    if smooth_iterations:
+    if iterations:
         items = [
-            _with_vertices(m, _smoothed(m.vertices, m.faces, smooth_iterations)) if m.vertices is not None and m.faces is not None else m
+            _with_vertices(m, _smoothed(m.vertices, m.faces, iterations)) if m.vertices is not None and m.faces is not None else m
             for m in (x if isinstance(x, Mesh) else Mesh(x) for x in items)
         ]
     return _shared_renderer(backend).render(
