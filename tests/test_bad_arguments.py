@@ -370,6 +370,7 @@ def vec3(name: str, zero: Any) -> Array:
             ("ints", (0, 0, 5), OK),
             ("array", np.array([0.3, 0.2, 5.0]), OK),
             ("float32 array", np.array([0.3, 0.2, 5.0], np.float32), OK),
+            ("bytes", b"abc", TypeError),
             ("big-endian array", np.array([0.3, 0.2, 5.0], ">f8"), OK),
             ("numpy scalars", (np.float32(0.3), np.int64(0), np.float64(5)), OK),
             ("huge", (1e300, 0.0, 5.0), OK),
@@ -690,6 +691,8 @@ def colours(alpha: bool) -> Array:
             ("hex", "#ff8040", OK),
             ("hex without #", "ff8040", OK),
             ("hex upper case", "#FF8040", OK),
+            ("bytes", b"\x00\x00\x01", TypeError),
+            ("bytearray", bytearray(b"\x00\x00\x01"), TypeError),
             ("hex with alpha", "#ff804080", four),
             ("tuple", (1.0, 0.5, 0.25), OK),
             ("ints", (1, 0, 0), OK),
@@ -868,6 +871,7 @@ MESHES = Array(
         ("handles and Meshes", [HANDLE, _MESH], OK),
         ("empty", [], OK),
         ("a handle of another renderer", OTHER_HANDLE, ValueError),
+        ("a removed handle", REMOVED_HANDLE, ValueError),
         ("arrays", V, TypeError),
         ("a (V, F) pair", (V, F), TypeError),
         ("a string", "bunny", TypeError),
@@ -966,6 +970,19 @@ STYLE = Array(
     )
 )
 
+SHADOWS = Array(
+    (
+        ("True", True, OK),
+        ("False", False, OK),
+        ("numpy True", np.True_, OK),
+        ("a Shadows", tm.Shadows(size=512, filter="none"), OK),
+        ("a word", "yes", TypeError),
+        ("an int", 1, TypeError),
+        ("a list of a bool", [True], TypeError),
+        ("an Outlines", tm.Outlines(), TypeError),
+    )
+)
+
 UP = Array(
     (
         ("y", (0.0, 1.0, 0.0), OK),
@@ -1005,6 +1022,7 @@ LUT = Array(
         ("bools", [True, False], TypeError),
         ("strings", ["0.5"], TypeError),
         ("a string", "ramp", TypeError),
+        ("bytes", b"\x01\x02", TypeError),
         ("a number", 0.5, TypeError),
     )
 )
@@ -1016,6 +1034,8 @@ THRESHOLDS = Array(
         ("float32", np.array([0.1, 0.2, 0.3, 0.4], np.float32), OK),
         ("beyond [-1, 1]", (-5.0, 0.0, 1.0, 5.0), OK),
         ("decreasing", (0.9, 0.7, 0.5, 0.2), ValueError),
+        ("three, for five values", (0.2, 0.5, 0.9), ValueError),
+        ("bytes", b"\x01\x02\x03\x04", TypeError),
         ("repeated", (0.2, 0.5, 0.5, 0.9), ValueError),
         ("nan", (0.2, float("nan"), 0.7, 0.9), ValueError),
         ("inf", (0.2, 0.5, 0.7, float("inf")), ValueError),
@@ -1180,6 +1200,7 @@ RENDER_CASES: List[Case] = [
                 Param("color", COLOUR, none=OK),
                 Param("intensity", Number(0.0, math.inf, open_hi=True), none=OK),
                 Param("space", Name(("world", "camera")), none=OK),
+                *([Param("shadows", SHADOWS, none=OK)] if kind == "directional" else []),
             ],
         )
         for kind, make, where in (
@@ -1187,6 +1208,16 @@ RENDER_CASES: List[Case] = [
             ("point", tm.Light.point, "position"),
         )
     ],
+    Case(
+        "Shadows",
+        _rendered(tm.Shadows, lambda sh: dict(lights=tm.Light.directional((1.0, -1.0, -2.0), shadows=sh))),
+        dict(size=None),
+        [
+            Param("size", Integer(64, 8192, only=tuple(2**k for k in range(6, 14)), slow_above=2048), none=OK),
+            Param("bias", Number(0.0, math.inf, open_hi=True), none=OK),
+            Param("filter", Name(("none", "pcf")), none=OK),
+        ],
+    ),
     Case(
         "Camera.fit",
         _rendered(tm.Camera.fit, lambda c: dict(camera=c)),

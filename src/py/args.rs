@@ -5,7 +5,7 @@
 //! range admits) are checked by the core, where each rule lives.
 
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyFloat, PyInt, PyString};
+use pyo3::types::{PyBool, PyByteArray, PyBytes, PyFloat, PyInt, PyString};
 
 use crate::error::{Error, Result};
 use crate::render::color;
@@ -98,9 +98,7 @@ pub fn text(name: &str, obj: &Bound<'_, PyAny>) -> Result<String> {
 
 /// A sequence of numbers (list, tuple, 1-D array).
 pub fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
-    if obj.is_instance_of::<PyString>() {
-        return Err(Error::wrong_type(name, "expected a sequence of numbers, got str"));
-    }
+    refuse_text(name, obj, "a sequence of numbers")?;
     let items = obj.try_iter().map_err(|_| {
         Error::wrong_type(name, format!("expected a sequence of numbers, got {}", type_name(obj)))
     })?;
@@ -111,6 +109,18 @@ pub fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
             number(&format!("{name}[{i}]"), &item)
         })
         .collect()
+}
+
+/// Refuses str, bytes and bytearray where numbers are expected: text iterates, but as
+/// characters or byte codes, never as numbers.
+pub fn refuse_text(name: &str, obj: &Bound<'_, PyAny>, expected: &str) -> Result<()> {
+    if obj.is_instance_of::<PyString>()
+        || obj.is_instance_of::<PyBytes>()
+        || obj.is_instance_of::<PyByteArray>()
+    {
+        return Err(Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj))));
+    }
+    Ok(())
 }
 
 /// Three finite numbers.

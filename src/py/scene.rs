@@ -44,6 +44,7 @@ fn color_or(name: &str, obj: Obj<'_, '_>) -> Result<Srgb> {
 
 /// A lookup table: (N,) grey factors or (N, 3) RGB factors, 1 <= N <= 256.
 fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 3]>> {
+    super::args::refuse_text(name, obj, "(N,) or (N, 3) numbers")?;
     let rows: Vec<Bound<'_, PyAny>> = obj
         .try_iter()
         .map_err(|_| {

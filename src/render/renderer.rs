@@ -215,8 +215,11 @@ impl Renderer {
                 "'shadow' needs a light that casts shadows (Light.directional(..., shadows=True))",
             ));
         }
-        for id in scene.items.iter().map(|i| i.mesh) {
-            self.mesh(id)?;
+        for (i, item) in scene.items.iter().enumerate() {
+            self.mesh(item.mesh).map_err(|e| match e {
+                Error::InvalidValue { reason, .. } => Error::invalid(format!("meshes[{i}]"), reason),
+                other => other,
+            })?;
         }
         Ok(())
     }

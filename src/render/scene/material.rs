@@ -251,10 +251,10 @@ impl Material {
                 }
                 if values.len() != thresholds.len() + 1 {
                     return Err(Error::invalid(
-                        format!("{arg}.values"),
+                        format!("{arg}.thresholds, {arg}.values"),
                         format!(
-                            "needs one value more than thresholds ({}), got {}",
-                            thresholds.len() + 1,
+                            "needs one value more than thresholds: {} thresholds and {} values",
+                            thresholds.len(),
                             values.len()
                         ),
                     ));
