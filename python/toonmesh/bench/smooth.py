@@ -234,6 +234,11 @@ def accuracy_table(repeat: int, quick: bool) -> str:
                  f"What accuracy costs: noisy unit sphere ({len(V)} vertices, 2% noise)")
 
 
+def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
+    """Only the table of error against time (``--accuracy``)."""
+    print(accuracy_table(1 if quick else repeat, quick))
+
+
 def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
     sizes = ["10k", "164k"] if quick else list(SIZES)
     reps = 1 if quick else repeat
