@@ -216,7 +216,7 @@ def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) ->
     and outlines against the exact ones at several sizes. They use sizes of their own (smaller
     with ``quick``); the options in ``extra`` are checked but set the main table only."""
     _options(quick, extra)
-    knob_size = 256 if quick else 512
+    knob_size = 128 if quick else 512
     print(table(
         ["accuracy knob", "time", "mean abs difference (0-255)", "% pixels off by > 8"],
         [(k, f"{t * 1e3:.1f} ms", d, f"{p:.2f}") for k, t, d, p in _knobs(knob_size, repeat)],
