@@ -250,6 +250,14 @@ def test_bench_json_has_every_table_row_as_a_record(tmp_path):
     assert isinstance(rec["toonmesh"], float) and rec["units"]["toonmesh"] == "ms"
 
 
+def test_bench_accuracy_runs_only_the_tables_of_error_against_time(tmp_path):
+    r = toonmesh("bench", "edges", "--accuracy", "--json", "edges.json", cwd=tmp_path, check=False)
+    assert r.returncode == 0 and r.stdout == ""  # the edges suite has none: nothing is timed
+    assert "[edges] has no accuracy tables" in r.stderr
+    assert json.loads((tmp_path / "edges.json").read_text()) == []
+    # (notebooks/accuracy_vs_time.ipynb runs the smooth and render suites' accuracy tables)
+
+
 def test_bench_json_values():
     from toonmesh.bench._timing import record_value, recording, table
 

@@ -1,4 +1,4 @@
-"""Command line: python -m toonmesh.bench SUITE [--quick] [--repeat N] [--json FILE] [options]."""
+"""Command line: python -m toonmesh.bench SUITE [--quick] [--accuracy] [--repeat N] [--json FILE] [options]."""
 
 from __future__ import annotations
 
@@ -17,6 +17,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     """The benchmark's options, shared with ``toonmesh bench``."""
     parser.add_argument("suite", choices=SUITES + ("all",))
     parser.add_argument("--quick", action="store_true", help="small meshes and few repeats (a smoke run)")
+    parser.add_argument("--accuracy", action="store_true",
+                        help="only the tables of error against time (what accuracy costs), for plotting")
     parser.add_argument("--repeat", type=int, default=3, help="timed runs per case; the median is reported")
     parser.add_argument("--json", default=None, metavar="FILE",
                         help="also write every table's rows to FILE as a JSON list of records")
@@ -39,13 +41,23 @@ def run(args: argparse.Namespace, rest: Sequence[str]) -> int:
                 print(f"[{name}] not available in this version", file=sys.stderr)
                 continue
             raise
+        job = getattr(module, "accuracy", None) if args.accuracy else module.main
+        if job is None:
+            print(f"[{name}] has no accuracy tables", file=sys.stderr)
+            continue
         with _timing.recording(name) as rows:
-            module.main(quick=args.quick, repeat=args.repeat, extra=list(rest) if name == "render" else ())
+            job(quick=args.quick, repeat=args.repeat, extra=list(rest) if name == "render" else ())
         records.extend(rows)
         if args.json:  # after each suite, so a long run that stops keeps what it measured
-            with open(args.json, "w") as f:
-                json.dump(records, f, indent=1)
+            _write_json(args.json, records)
+    if args.json:  # also when no suite had anything to run
+        _write_json(args.json, records)
     return 0
+
+
+def _write_json(path: str, records: List[Dict[str, Any]]) -> None:
+    with open(path, "w") as f:
+        json.dump(records, f, indent=1)
 
 
 def main(argv: "list[str] | None" = None) -> int:

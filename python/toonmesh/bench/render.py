@@ -203,12 +203,36 @@ def _cold_start(size: int) -> Dict[str, float]:
         return {"import to PNG": inside, "process start to exit": total}
 
 
-def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
+def _options(quick: bool, extra: Sequence[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser(prog="python -m toonmesh.bench render")
     parser.add_argument("--size", type=int, default=256 if quick else 1024)
     parser.add_argument("--subdivisions", type=int, default=5 if quick else 8)
     parser.add_argument("--skip-peers", action="store_true")
-    args = parser.parse_args(list(extra))
+    return parser.parse_args(list(extra))
+
+
+def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
+    """The tables of error against time: each accuracy knob (MSAA, supersampling) on the bunny,
+    and outlines against the exact ones at several sizes. They use sizes of their own (smaller
+    with ``quick``); the options in ``extra`` are checked but set the main table only."""
+    _options(quick, extra)
+    knob_size = 128 if quick else 512
+    print(table(
+        ["accuracy knob", "time", "mean abs difference (0-255)", "% pixels off by > 8"],
+        [(k, f"{t * 1e3:.1f} ms", d, f"{p:.2f}") for k, t, d, p in _knobs(knob_size, repeat)],
+        title=f"Accuracy knobs: the bunny at {knob_size}x{knob_size}, toon bands, against 4x supersampling",
+    ))
+    sizes = (128, 256) if quick else (256, 512, 1024, 2048)
+    print(table(
+        ["size", "outlines", "frame", "cost over the same frame without", "precision", "recall"],
+        _outline_accuracy(sizes, repeat),
+        title="Outlines: the bunny's silhouettes and boundaries against the exact ones rasterised at 4x "
+              "(outline pixels, one-pixel tolerance)",
+    ))
+
+
+def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
+    args = _options(quick, extra)
     size, subdiv = args.size, args.subdivisions
     n_v, n_f = 10 * 4**subdiv + 2, 20 * 4**subdiv
     print(f"# Rendering: icosphere({subdiv}) = {n_v:,} vertices / {n_f:,} faces, {size}x{size}, median of {repeat}")
@@ -231,18 +255,6 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
         ratio = f"{base / t:.1f}x" if base and isinstance(t, float) and "upload" not in row[1] else ""
         out_rows.append((row[0], row[1], f"{t * 1e3:.1f} ms" if isinstance(t, float) else t, ratio))
     print(table(["renderer", "frame", "median time", "speed-up vs pyrender EGL colour+depth"], out_rows))
-    knob_size = 256 if quick else 512
-    print(table(
-        ["accuracy knob", "time", "mean abs difference (0-255)", "% pixels off by > 8"],
-        [(k, f"{t * 1e3:.1f} ms", d, f"{p:.2f}") for k, t, d, p in _knobs(knob_size, repeat)],
-        title=f"Accuracy knobs: the bunny at {knob_size}x{knob_size}, toon bands, against 4x supersampling",
-    ))
-    sizes = (128, 256) if quick else (256, 512, 1024, 2048)
-    print(table(
-        ["size", "outlines", "frame", "cost over the same frame without", "precision", "recall"],
-        _outline_accuracy(sizes, repeat),
-        title="Outlines: the bunny's silhouettes and boundaries against the exact ones rasterised at 4x "
-              "(outline pixels, one-pixel tolerance)",
-    ))
+    accuracy(quick, repeat, extra)
     cold = _cold_start(512)
     print(table(["cold start (fresh process, bunny 512x512 to PNG)", "seconds"], [(k, v) for k, v in cold.items()]))
