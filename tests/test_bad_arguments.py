@@ -970,6 +970,20 @@ STYLE = Array(
     )
 )
 
+DITHER = Array(
+    (
+        ("a pattern name", "bayer8", OK),
+        ("blue", "blue", OK),
+        ("a Dither", tm.Dither("bayer2", space="object"), OK),
+        ("an unknown name", "noise", ValueError),
+        ("upper case", "BAYER4", ValueError),
+        ("True", True, TypeError),
+        ("an int", 4, TypeError),
+        ("a list", ["bayer4"], TypeError),
+        ("an Outlines", tm.Outlines(), TypeError),
+    )
+)
+
 SHADOWS = Array(
     (
         ("True", True, OK),
@@ -1176,19 +1190,47 @@ RENDER_CASES: List[Case] = [
             Param("ambient", COLOUR, none=OK),
             Param("specular", COLOUR, none=OK),
             PER_VERTEX,
+            Param("dither", DITHER, none=OK),
         ],
     ),
     Case(
         "Material.bands",
         _rendered(tm.Material.bands, lambda m: dict(material=m)),
         dict(color=(0.9, 0.5, 0.2)),
-        [COLOUR_OR_NONE, Param("thresholds", THRESHOLDS, none=OK), Param("values", VALUES, none=OK), PER_VERTEX],
+        [COLOUR_OR_NONE, Param("thresholds", THRESHOLDS, none=OK), Param("values", VALUES, none=OK), PER_VERTEX,
+         Param("dither", DITHER, none=OK)],
+    ),
+    Case(
+        "Material.hatching",
+        _rendered(tm.Material.hatching, lambda m: dict(material=m)),
+        dict(color=None),
+        [
+            COLOUR_OR_NONE,
+            Param("ink", COLOUR, none=OK),
+            Param("thresholds", THRESHOLDS, none=OK),
+            Param("values", VALUES, none=OK),
+            Param("spacing", Number(2.0, 256.0), none=OK),
+            Param("width", Number(0.0, 6.0, open_lo=True), none=OK),  # up to the spacing
+            PER_VERTEX,
+            Param("dither", DITHER, none=OK),
+        ],
     ),
     Case(
         "Material.lut",
         _rendered(tm.Material.lut, lambda m: dict(material=m)),
         dict(table=None, color=(0.9, 0.5, 0.2)),
-        [Param("table", LUT, none=OK), COLOUR_OR_NONE, PER_VERTEX],
+        [Param("table", LUT, none=OK), COLOUR_OR_NONE, PER_VERTEX, Param("dither", DITHER, none=OK)],
+    ),
+    Case(
+        "Dither",
+        _rendered(tm.Dither, lambda d: dict(material=tm.Material.bands(dither=d))),
+        dict(pattern=None),
+        [
+            Param("pattern", Name(("bayer2", "bayer4", "bayer8", "blue")), none=OK),
+            Param("space", Name(("screen", "object")), none=OK),
+            Param("amount", Number(0.0, 2.0), none=OK),
+            Param("scale", Number(1.0, 64.0), none=OK),
+        ],
     ),
     *[
         Case(

@@ -51,6 +51,10 @@ pub struct DrawBlock {
     pub thresholds: [[f32; 4]; 2],
     pub values: [[f32; 4]; 3],
     pub table: [[f32; 4]; MAX_LUT],
+    /// x: dither amount, y: dither cell in pixels, z: hatch spacing, w: hatch width (pixels).
+    pub style: [f32; 4],
+    /// Linear ink of the hatching.
+    pub ink: [f32; 4],
 }
 
 /// One mesh-space line: its end points in the mesh's stored coordinates and its kind.
@@ -177,6 +181,15 @@ pub fn draw_block(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera)
     b.diffuse = rgb0(m.diffuse_linear());
     b.specular = rgb0(m.specular_linear());
     b.flags = [mirrored as u32, 0, 0, 0];
+    if let Some(d) = &m.dither {
+        b.style[0] = d.amount as f32;
+        b.style[1] = d.scale as f32;
+    }
+    if let Some(h) = &m.hatching {
+        b.style[2] = h.spacing as f32;
+        b.style[3] = h.width as f32;
+        b.ink = rgb0(crate::render::color::to_linear(h.ink));
+    }
     b.model[0] = m.model.id();
     match &m.model {
         Model::Lambert => {}

@@ -32,6 +32,8 @@ struct Draw {
     thresholds: array<vec4<f32>, 2>,
     values: array<vec4<f32>, 3>,
     table: array<vec4<f32>, MAX_LUT>,
+    style: vec4<f32>,      // x: dither amount, y: dither cell (pixels), z: hatch spacing, w: hatch width (pixels)
+    ink: vec4<f32>,        // hatching ink, linear rgb
 };
 
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -51,6 +53,9 @@ struct VsOut {
     @location(1) view_normal: vec3<f32>,
     @location(2) color_front: vec3<f32>,
     @location(3) color_back: vec3<f32>,
+    // the mesh's stored coordinates and normal: what hatching and dithering anchor to
+    @location(4) object_pos: vec3<f32>,
+    @location(5) object_normal: vec3<f32>,
 };
 
 fn unit_or_zero(v: vec3<f32>) -> vec3<f32> {
@@ -133,8 +138,9 @@ fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
     }
 }
 
-// Linear colour of a point with unit view-space normal n at view-space position p.
-fn shade(n: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
+// Linear colour of a point with unit view-space normal n at view-space position p; `jitter`
+// moves L.n before it is banded (dithering).
+fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32) -> vec3<f32> {
     let v = view_dir(p);
     var c = frame.ambient.rgb * draw.ambient.rgb;
     for (var k = 0u; k < frame.info.x; k++) {
@@ -144,7 +150,7 @@ fn shade(n: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
             l = normalize(light.position.xyz - p);
         }
         let d = dot(n, l);
-        var f = diffuse_term(d);
+        var f = diffuse_term(d + jitter);
         var s = specular_term(n, l, v, d);
         let lit = light_visibility(k, n, p, d);
         if (lit < 1.0) {
@@ -176,12 +182,14 @@ fn vs_main(v: VsIn) -> VsOut {
     o.clip = frame.proj * p;
     o.view_pos = p.xyz;
     o.view_normal = (draw.normal_matrix * vec4<f32>(v.normal, 0.0)).xyz;
+    o.object_pos = v.position;
+    o.object_normal = v.normal;
     o.color_front = vec3<f32>(0.0);
     o.color_back = vec3<f32>(0.0);
     if (PER_VERTEX) {
         let n = unit_or_zero(o.view_normal);
-        o.color_front = shade(n, p.xyz);
-        o.color_back = shade(-n, p.xyz);
+        o.color_front = shade(n, p.xyz, 0.0);
+        o.color_back = shade(-n, p.xyz, 0.0);
     }
     return o;
 }
