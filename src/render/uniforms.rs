@@ -33,7 +33,8 @@ pub struct FrameBlock {
     pub lights: [LightBlock; MAX_LIGHTS],
     /// Normalised view space -> the shadow-casting light's clip space (the first light's).
     pub shadow: [[f32; 4]; 4],
-    /// x: depth tolerance per unit of receiver slope, y: the largest slope biased.
+    /// x: depth tolerance per unit of receiver slope, y: the largest slope biased, z: how far
+    /// (normalised view units) a receiver moves along its normal before the test.
     pub shadow_bias: [f32; 4],
 }
 
@@ -130,8 +131,11 @@ pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec, spher
     if let Some((_, light, settings)) = shadow_caster(&scene.lights) {
         if let ViewLight::Toward(l) = light.to_view(&cam.view) {
             let c = cam.normalized_view().transform_point3(sphere.center);
-            shadow = f32_cols(shadow_matrix(l, c, sphere.radius / cam.scale));
-            shadow_bias = [settings.tolerance() as f32, MAX_BIAS_SLOPE as f32, 0.0, 0.0];
+            let r = sphere.radius / cam.scale;
+            shadow = f32_cols(shadow_matrix(l, c, r));
+            // the map's side spans the sphere's diameter
+            let offset = settings.normal_offset() * 2.0 * r;
+            shadow_bias = [settings.tolerance() as f32, MAX_BIAS_SLOPE as f32, offset as f32, 0.0];
         }
     }
     let (a, b) = footprint(cam, frame.height);

@@ -17,7 +17,7 @@ struct Frame {
     ink: array<vec4<f32>, INK_KINDS>,  // per ink kind: linear rgb, width in pixels (0: not drawn)
     lights: array<Light, MAX_LIGHTS>,   // the shadow-casting light, if any, first
     shadow: mat4x4<f32>,   // normalised view space -> the shadow-casting light's clip space
-    shadow_bias: vec4<f32>,  // x: depth tolerance per unit of receiver slope, y: the largest slope biased
+    shadow_bias: vec4<f32>,  // x: depth tolerance per unit of receiver slope, y: the largest slope biased, z: normal offset
 };
 
 struct Draw {
