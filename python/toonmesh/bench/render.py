@@ -250,7 +250,7 @@ def _outline_cost(subdiv: int, size: int, repeat: int) -> None:
                 with_.append(median_time(lambda: r.render(mesh, outlines=outlines, **kw), repeat=1, warmup=0))
                 without.append(median_time(lambda: r.render(mesh, **kw), repeat=1, warmup=0))
             t, t0 = float(np.median(with_)), float(np.median(without))
-            rows.append((f"toonmesh {backend}", f"outlines={outlines!r}", ms(t0), ms(t), f"+{(t - t0) * 1e3:.1f} ms"))
+            rows.append((f"toonmesh {backend}", f"outlines={outlines!r}", ms(t0), ms(t), f"{(t - t0) * 1e3:+.1f} ms"))
         r.remove_mesh(mesh)
     print(table(["renderer", "outlines", "frame without", "frame with", "cost"], rows,
                 title=f"What outlines cost: icosphere({subdiv}) at {size}x{size}, bands colour; median of {repeat}, in turns"))
@@ -402,7 +402,7 @@ def _outline_accuracy(sizes: Sequence[int], repeat: int) -> List[Sequence[Any]]:
             found = r.render(mesh, outputs="outline", outlines=outlines, **kw, **knob).outline > 0.5
             precision = float((found & _near(truth)).sum() / max(found.sum(), 1))
             recall = float((truth & _near(found)).sum() / max(truth.sum(), 1))
-            rows.append((f"{size}x{size}", label, f"{t * 1e3:.1f} ms", f"+{(t - t0) * 1e3:.1f} ms", precision, recall))
+            rows.append((f"{size}x{size}", label, f"{t * 1e3:.1f} ms", f"{(t - t0) * 1e3:+.1f} ms", precision, recall))
     return rows
 
 
