@@ -452,6 +452,31 @@ MASKS = Array(
     )
 )
 
+PROFILES = Array(  # shapes.lathe: (radius, height) points, poles only at the ends
+    (
+        ("list of pairs", [(0, 0), (1, 0.5), (0, 1)], OK),
+        ("open ends", [(1.0, 0.0), (1.0, 1.0)], OK),
+        ("int", np.array([[0, 0], [2, 1], [0, 2]]), OK),
+        ("float32", np.array([[0, 0], [1, 1], [0, 2]], np.float32), OK),
+        ("big-endian", np.array([[0, 0], [1, 1], [0, 2]], ">f8"), OK),
+        ("one point", [(0.0, 0.0)], ValueError),
+        ("empty", np.zeros((0, 2)), ValueError),
+        ("three columns", np.ones((3, 3)), ValueError),
+        ("flat", [0.0, 1.0, 2.0], ValueError),
+        ("nan", [(0, 0), (np.nan, 1), (0, 2)], ValueError),
+        ("inf", [(0, 0), (1, np.inf), (0, 2)], ValueError),
+        ("negative radius", [(0, 0), (-1, 1), (0, 2)], ValueError),
+        ("pole inside", [(1, 0), (0, 1), (1, 2)], ValueError),
+        ("a point twice", [(0, 0), (1, 1), (1, 1), (0, 2)], ValueError),
+        ("two poles", [(0, 0), (0, 1)], ValueError),
+        ("bools", np.array([[False, False], [True, True]]), TypeError),
+        ("complex", np.array([[0, 0], [1j, 1], [0, 2]]), TypeError),
+        ("strings", [("a", "b"), ("c", "d")], TypeError),
+        ("ragged", [(0, 0), (1,), (0, 2)], TypeError),
+        ("a string", "profile", TypeError),
+    )
+)
+
 NORMAL_BUF = np.dstack([IMG, 1 - IMG, np.ones_like(IMG)]).astype(np.float32)
 DEPTH_BUF = 1.0 + IMG
 
@@ -660,6 +685,34 @@ CASES: List[Case] = [
             Param("seed", Integer(0, 2**64 - 1)),
         ],
     ),
+    Case(
+        "shapes.torus",
+        tm.shapes.torus,
+        dict(major=1.0, minor=0.4, segments=5, tube_segments=4),
+        [
+            Param("major", Number(0.4, math.inf, open_lo=True, open_hi=True)),
+            Param("minor", Number(0.0, 1.0, open_lo=True, open_hi=True)),
+            Param("segments", Integer(3, 4096, slow_above=64)),
+            Param("tube_segments", Integer(3, 4096, slow_above=64)),
+        ],
+    ),
+    Case(
+        "shapes.lathe",
+        tm.shapes.lathe,
+        dict(profile=[(0.0, 0.0), (1.0, 0.5), (0.0, 1.0)], segments=5),
+        [
+            Param("profile", PROFILES),
+            Param("segments", Integer(3, 4096, slow_above=64)),
+        ],
+    ),
+    Case("shapes.pawn", tm.shapes.pawn, dict(segments=5), [Param("segments", Integer(3, 4096, slow_above=64))]),
+    Case(
+        "shapes.uv_sphere",
+        tm.shapes.uv_sphere,
+        dict(segments=5, rings=4),
+        [Param("segments", Integer(3, 4096, slow_above=64)), Param("rings", Integer(2, 4096, slow_above=64))],
+    ),
+    Case("shapes.teapot", tm.shapes.teapot, dict(subdivisions=2), [Param("subdivisions", Integer(2, 64, slow_above=8))]),
     Case(
         "set_num_threads",
         tm.set_num_threads,
