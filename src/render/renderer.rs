@@ -464,6 +464,7 @@ impl Renderer {
                 b: srgb_to_linear(bg[2] as f64),
                 a: bg[3] as f64,
             },
+            lights: scene.lights.len() as u32,
             shadow_filter: shadow_caster(&scene.lights).map(|(_, _, s)| s.filter),
         };
         let mut encoder =

@@ -48,6 +48,8 @@ pub struct DrawItem<'a> {
 /// What a material needs compiled into the shading pipeline.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct ShadingVariant {
+    /// The shading model's id (`Model::id`).
+    pub model: u32,
     pub per_vertex: bool,
     pub hatching: bool,
     pub dither:
@@ -57,6 +59,7 @@ pub struct ShadingVariant {
 impl ShadingVariant {
     pub fn of(m: &crate::render::scene::material::Material) -> Self {
         ShadingVariant {
+            model: m.model.id(),
             per_vertex: m.per_vertex,
             hatching: m.hatching.is_some(),
             dither: m.dither.map(|d| (d.pattern, d.space)),
@@ -69,11 +72,15 @@ impl ShadingVariant {
             Some((p, s)) => (p as u64, (s == crate::render::scene::style::DitherSpace::Object) as u64),
             None => (0, 0),
         };
-        self.per_vertex as u64 | (self.hatching as u64) << 1 | pattern << 2 | object << 5
+        self.per_vertex as u64
+            | (self.hatching as u64) << 1
+            | pattern << 2
+            | object << 5
+            | (self.model as u64) << 6
     }
 
     /// The shader's pipeline constants.
-    pub fn constants(&self) -> [(&'static str, f64); 4] {
+    pub fn constants(&self) -> [(&'static str, f64); 5] {
         let (pattern, object) = match self.dither {
             Some((p, s)) => {
                 (p as u32 as f64, (s == crate::render::scene::style::DitherSpace::Object) as u32 as f64)
@@ -85,6 +92,7 @@ impl ShadingVariant {
             ("HATCHING", self.hatching as u32 as f64),
             ("DITHER", pattern),
             ("DITHER_OBJECT", object),
+            ("MODEL", self.model as f64),
         ]
     }
 }
@@ -105,6 +113,8 @@ pub struct FrameCtx<'a> {
     pub lines: &'a [LineDraw],
     /// Linear-light background colour and alpha.
     pub background: wgpu::Color,
+    /// The scene's number of lights.
+    pub lights: u32,
     /// How the shadow map is read, when a light casts shadows.
     pub shadow_filter: Option<crate::render::scene::shadows::ShadowFilter>,
 }

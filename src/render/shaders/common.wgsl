@@ -27,7 +27,7 @@ struct Draw {
     diffuse: vec4<f32>,
     specular: vec4<f32>,
     params: vec4<f32>,     // x: shininess, y: t_h, z: t_s
-    model: vec4<u32>,      // x: model id, y: highlight (0 paper, 1 blinn), z: thresholds, w: table length
+    model: vec4<u32>,      // x: model id (also the MODEL constant), y: highlight (0 paper, 1 blinn), z: thresholds, w: table length
     flags: vec4<u32>,      // x: 1 when the transform mirrors (flips the winding)
     thresholds: array<vec4<f32>, 2>,
     values: array<vec4<f32>, 3>,
@@ -41,6 +41,10 @@ struct Draw {
 
 // Gouraud: shade the vertices and interpolate (chosen per pipeline).
 override PER_VERTEX: bool = false;
+// The material's shading model and the scene's number of lights, fixed per pipeline so that the
+// shading code is specialised for them (as fast as a shader written for one model).
+override MODEL: u32 = 0u;
+override LIGHTS: u32 = 0u;
 
 struct VsIn {
     @location(0) position: vec3<f32>,
@@ -95,7 +99,7 @@ fn table_value(d: f32) -> vec3<f32> {
 
 // The diffuse factor of the material's model at d = N . L.
 fn diffuse_term(d: f32) -> vec3<f32> {
-    switch draw.model.x {
+    switch MODEL {
         case MODEL_LAMBERT, MODEL_PHONG: {
             return vec3<f32>(max(d, 0.0));
         }
@@ -113,7 +117,7 @@ fn diffuse_term(d: f32) -> vec3<f32> {
 
 // The specular factor of the material's model.
 fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
-    switch draw.model.x {
+    switch MODEL {
         case MODEL_PHONG: {
             let r = 2.0 * d * n - l;
             if (d > 0.0) {
@@ -143,7 +147,7 @@ fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
 fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32) -> vec3<f32> {
     let v = view_dir(p);
     var c = frame.ambient.rgb * draw.ambient.rgb;
-    for (var k = 0u; k < frame.info.x; k++) {
+    for (var k = 0u; k < LIGHTS; k++) {
         let light = frame.lights[k];
         var l = light.position.xyz;
         if (light.position.w != 0.0) {

@@ -43,7 +43,8 @@ impl Shade {
         let variant = self.samples as u64
             | shading.bits() << 16
             | (self.geometry.map_or(0, |g| 1 + g as u64)) << 9
-            | (shadows.map_or(0, |s| 1 + s as u64)) << 12;
+            | (shadows.map_or(0, |s| 1 + s as u64)) << 12
+            | (f.lights as u64) << 32;
         f.pipelines.get(("shade", variant), || {
             let module = match shadows {
                 None => f.pipelines.module(&f.dev.device, "shade", || crate::render::wgsl::source(WGSL)),
@@ -63,6 +64,7 @@ impl Shade {
                 }
             };
             let mut constants = shading.constants().to_vec();
+            constants.push(("LIGHTS", f.lights as f64));
             let mut more = vec![];
             if let Some(filter) = shadows {
                 constants.extend(super::shadow::filter_constants(filter));
