@@ -12,7 +12,7 @@ from __future__ import annotations
 import contextlib
 import os
 import threading
-from typing import Any, Dict, Iterator, List, Optional, Sequence
+from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -20,7 +20,8 @@ from toonmesh import _core
 from toonmesh._core import Camera, Light, LineStyle, Material, Outlines, Shadows, kang_table
 from toonmesh._input import mesh_arrays
 
-_NORMAL_MODES = ("smooth", "flat")
+#: A normal mode: ``"smooth"``, ``"flat"``, ``"auto"`` or ``("auto", crease angle in degrees)``.
+Normals = Union[str, Tuple[str, float]]
 
 
 class MeshHandle:
@@ -71,12 +72,9 @@ class Mesh:
         self.normals = _normal_mode(normals)
 
 
-def _normal_mode(normals: Any) -> str:
-    if not isinstance(normals, str):
-        raise TypeError(f"normals: expected 'smooth' or 'flat', got {type(normals).__name__}")
-    if normals not in _NORMAL_MODES:
-        raise ValueError(f"normals: must be 'smooth' or 'flat', got {normals!r}")
-    return normals
+def _normal_mode(normals: Any) -> Normals:
+    """``normals`` checked by the core, in its shortest spelling (``("auto", 30)`` is ``"auto"``)."""
+    return _core._normal_mode(normals)  # type: ignore[no-any-return]
 
 
 def _matrix(name: str, value: Any) -> Optional[np.ndarray]:
