@@ -19,6 +19,7 @@
 use rayon::prelude::*;
 
 use super::buckets::{prefix_sum, split_by, vertex_chunks, Buckets, RingCorner};
+use super::edge_table::prefetch;
 use super::normals::{face_normals, is_defined, unit_or_zero};
 use crate::edges::feature::CreaseTest;
 use crate::error::{Error, Result};
@@ -63,6 +64,10 @@ pub fn crease_normals<T: Real>(
         .for_each_init(FanScratch::default, |scratch, ((fan, fans), r)| {
             let base = corner_at(r);
             for (k, v) in r.clone().enumerate() {
+                // the face normals a few vertices ahead are loaded while this one is grouped
+                for c in ring((v + PREFETCH_AHEAD).min(n - 1)) {
+                    prefetch(&unit, (c[2] / 3) as usize);
+                }
                 let at = buckets.start[v] as usize - base..buckets.start[v + 1] as usize - base;
                 fans[k] = scratch.group(v as u32, ring(v), &unit, &test, &mut fan[at]);
             }
@@ -71,6 +76,7 @@ pub fn crease_normals<T: Real>(
     // Output vertices: vertex v's fans are first[v]..first[v + 1]. An unused vertex keeps one
     // (with a zero normal, as in the smooth normals), so nothing is renumbered where nothing
     // splits.
+    drop(unit);
     let counts: Vec<u32> = fans.par_iter().map(|&c| c.max(1)).collect();
     drop(fans);
     let total: u64 = counts.iter().map(|&c| c as u64).sum();
@@ -92,6 +98,9 @@ pub fn crease_normals<T: Real>(
         .for_each_init(Vec::new, |sums: &mut Vec<[f64; 3]>, ((normals, source), r)| {
             let base = out_at(r);
             for v in r.clone() {
+                for c in ring((v + PREFETCH_AHEAD).min(n - 1)) {
+                    prefetch(&area, (c[2] / 3) as usize);
+                }
                 let out = first[v] as usize - base..first[v + 1] as usize - base;
                 source[out.clone()].fill(v as u32);
                 let corners = ring(v);
@@ -100,22 +109,29 @@ pub fn crease_normals<T: Real>(
             }
         });
 
-    // Pass 3: every corner's output vertex. A vertex's bucket lists its corners by id, so each
-    // corner finds its fan by a binary search there.
-    let split_faces: Vec<[u32; 3]> = faces
-        .par_iter()
-        .enumerate()
-        .map(|(f, face)| {
-            std::array::from_fn(|j| {
-                let v = face[j] as usize;
-                let id = (f * 3 + j) as u32;
-                let k = ring(v)
-                    .binary_search_by_key(&id, |c| c[2])
-                    .expect("every corner is in its vertex's bucket");
-                first[v] + fan[buckets.start[v] as usize + k]
+    // Pass 3: every corner's output vertex: first[v] where v did not split; otherwise its fan,
+    // found by a binary search in v's bucket, which lists v's corners by id.
+    let split_faces: Vec<[u32; 3]> = if n_out == n {
+        faces.to_vec()
+    } else {
+        faces
+            .par_iter()
+            .enumerate()
+            .map(|(f, face)| {
+                std::array::from_fn(|j| {
+                    let v = face[j] as usize;
+                    if first[v + 1] - first[v] == 1 {
+                        return first[v];
+                    }
+                    let id = (f * 3 + j) as u32;
+                    let k = ring(v)
+                        .binary_search_by_key(&id, |c| c[2])
+                        .expect("every corner is in its vertex's bucket");
+                    first[v] + fan[buckets.start[v] as usize + k]
+                })
             })
-        })
-        .collect();
+            .collect()
+    };
     Ok(SplitNormals { source, normals, faces: split_faces })
 }
 
@@ -131,6 +147,9 @@ fn area_vectors<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<[f64;
     });
     out
 }
+
+/// How many vertices ahead to start loading face data: enough to cover a memory latency.
+const PREFETCH_AHEAD: usize = 4;
 
 /// Per-thread room for grouping one vertex's corners.
 #[derive(Default)]
