@@ -18,7 +18,7 @@
 
 use rayon::prelude::*;
 
-use super::buckets::{prefix_sum, split_by, vertex_chunks, Buckets, RingCorner};
+use super::buckets::{prefix_sum, sort8, split_by, vertex_chunks, Buckets, RingCorner};
 use super::edge_table::prefetch;
 use super::normals::{face_normals, is_defined, unit_or_zero};
 use crate::edges::feature::CreaseTest;
@@ -173,6 +173,22 @@ impl FanScratch {
         test: &CreaseTest,
         fan: &mut [u32],
     ) -> u32 {
+        match group_closed_fan(v, corners, unit, test, fan) {
+            Some(count) => count,
+            None => self.group_any(v, corners, unit, test, fan),
+        }
+    }
+
+    /// `group` for any fan: the face-edges at v sorted by their other end, so that each edge's
+    /// face-edges are a run.
+    fn group_any(
+        &mut self,
+        v: u32,
+        corners: &[RingCorner],
+        unit: &[[f64; 3]],
+        test: &CreaseTest,
+        fan: &mut [u32],
+    ) -> u32 {
         let r = corners.len();
         self.parent.clear();
         self.parent.extend(0..r as u32);
@@ -187,29 +203,94 @@ impl FanScratch {
         self.ends.sort_unstable();
         // Runs of one neighbour u are the face-edges on the edge (v, u).
         for run in self.ends.chunk_by(|a, b| a >> 32 == b >> 32) {
-            let &[a, b] = run else { continue };
-            let (ka, kb) = (((a as u32) >> 1) as usize, ((b as u32) >> 1) as usize);
-            let (fa, fb) = (corners[ka][2] / 3, corners[kb][2] / 3);
-            let (na, nb) = (unit[fa as usize], unit[fb as usize]);
-            if fa != fb && is_defined(na) && is_defined(nb) && !test.is_crease(na, nb) {
-                let (ra, rb) = (find(&mut self.parent, ka), find(&mut self.parent, kb));
-                // the smaller root wins, so roots are each fan's first corner
-                self.parent[ra.max(rb) as usize] = ra.min(rb);
+            if let &[a, b] = run {
+                let (ka, kb) = (((a as u32) >> 1) as usize, ((b as u32) >> 1) as usize);
+                join_if_smooth(&mut self.parent, corners, ka, kb, unit, test);
             }
         }
         self.label.clear();
         self.label.resize(r, NO_FAN);
-        let mut count = 0;
-        for k in 0..r {
-            let root = find(&mut self.parent, k) as usize;
-            if self.label[root] == NO_FAN {
-                self.label[root] = count;
-                count += 1;
-            }
-            fan[k] = self.label[root];
-        }
-        count
+        number_fans(&mut self.parent, &mut self.label, fan)
     }
+}
+
+/// `FanScratch::group` for a closed, consistently oriented fan of up to 8 corners (most
+/// vertices of most meshes): each edge (v, u) then has exactly two face-edges, v -> u from the
+/// corner whose next vertex is u and u -> v from the one whose previous vertex is u, so the
+/// corners sorted by next and by previous vertex pair up edge by edge (as `Adjacency` finds
+/// closed fans, with two sorting networks). None for any other fan.
+#[inline]
+fn group_closed_fan(
+    v: u32,
+    corners: &[RingCorner],
+    unit: &[[f64; 3]],
+    test: &CreaseTest,
+    fan: &mut [u32],
+) -> Option<u32> {
+    let r = corners.len();
+    if r == 0 || r > 8 {
+        return None;
+    }
+    // (vertex << 32 | corner); padding sorts last
+    let mut after = [u64::MAX; 8];
+    let mut before = [u64::MAX; 8];
+    for (k, c) in corners.iter().enumerate() {
+        after[k] = (c[0] as u64) << 32 | k as u64;
+        before[k] = (c[1] as u64) << 32 | k as u64;
+    }
+    sort8(&mut after);
+    sort8(&mut before);
+    let mut closed = true;
+    for k in 0..r {
+        closed &= after[k] >> 32 == before[k] >> 32 && after[k] >> 32 != v as u64;
+        if k > 0 {
+            closed &= after[k - 1] >> 32 != after[k] >> 32;
+        }
+    }
+    if !closed {
+        return None;
+    }
+    let mut parent: [u32; 8] = std::array::from_fn(|k| k as u32);
+    for (a, b) in after[..r].iter().zip(&before[..r]) {
+        join_if_smooth(&mut parent, corners, *a as u32 as usize, *b as u32 as usize, unit, test);
+    }
+    Some(number_fans(&mut parent[..r], &mut [NO_FAN; 8][..r], fan))
+}
+
+/// Joins corners `ka` and `kb` (the two face-edges of one edge at v) when their faces are
+/// different, both have normals and do not meet at a crease.
+#[inline]
+fn join_if_smooth(
+    parent: &mut [u32],
+    corners: &[RingCorner],
+    ka: usize,
+    kb: usize,
+    unit: &[[f64; 3]],
+    test: &CreaseTest,
+) {
+    let (fa, fb) = (corners[ka][2] / 3, corners[kb][2] / 3);
+    let (na, nb) = (unit[fa as usize], unit[fb as usize]);
+    if fa != fb && is_defined(na) && is_defined(nb) && !test.is_crease(na, nb) {
+        let (ra, rb) = (find(parent, ka), find(parent, kb));
+        // the smaller root wins, so roots are each fan's first corner
+        parent[ra.max(rb) as usize] = ra.min(rb);
+    }
+}
+
+/// Numbers the groups of `parent` by their first corner into `fan` (with `label`, all
+/// `NO_FAN`, as room) and returns how many there are.
+#[inline]
+fn number_fans(parent: &mut [u32], label: &mut [u32], fan: &mut [u32]) -> u32 {
+    let mut count = 0;
+    for (k, f) in fan[..parent.len()].iter_mut().enumerate() {
+        let root = find(parent, k) as usize;
+        if label[root] == NO_FAN {
+            label[root] = count;
+            count += 1;
+        }
+        *f = label[root];
+    }
+    count
 }
 
 /// The root of `k`, halving the path on the way.
@@ -372,6 +453,38 @@ mod tests {
                 assert!((0..3).all(|k| (m[k] - n[k]).abs() < 1e-12), "{m:?} {n:?}");
             }
         }
+    }
+
+    #[test]
+    fn closed_fans_group_as_any_fan_does() {
+        let (v, f) = icosphere(3, 0.05, 2).unwrap();
+        let buckets = Buckets::corners_with_ids(v.len(), &f).unwrap();
+        let unit = face_normals(&v, &f);
+        let mut scratch = FanScratch::default();
+        let mut closed_seen = 0;
+        for angle in [0.0, 5.0, 10.0, 30.0] {
+            let test = CreaseTest::new(angle).unwrap();
+            for i in 0..v.len() {
+                let ring = buckets.at(i);
+                let (mut a, mut b) = (vec![0; ring.len()], vec![0; ring.len()]);
+                if let Some(count) = group_closed_fan(i as u32, ring, &unit, &test, &mut a) {
+                    assert_eq!(count, scratch.group_any(i as u32, ring, &unit, &test, &mut b));
+                    assert_eq!(a, b);
+                    closed_seen += 1;
+                }
+            }
+        }
+        assert!(closed_seen > 4 * 600, "almost every fan of a sphere is closed");
+        // an open fan is not taken for a closed one
+        let ring = [[1, 2, 0], [2, 3, 3]];
+        assert!(group_closed_fan(
+            0,
+            &ring,
+            &[[0.0, 0.0, 1.0]; 2],
+            &CreaseTest::new(30.0).unwrap(),
+            &mut [0; 2]
+        )
+        .is_none());
     }
 
     #[test]
