@@ -59,3 +59,48 @@ try:
     settings.load_profile("long" if long_tests() else "ci")
 except ImportError:  # the property tests say so themselves (and fail in CI)
     pass
+
+
+# ------------------------------------------------------------------------------------------------
+# Render backends: each test parametrized with `backend` runs on each backend this machine has.
+# One that cannot open a device is skipped, with the reason, on a user's machine, and fails the
+# run in CI, where both must work. The summary at the end says which ran and which did not.
+
+RENDER_BACKENDS = ("vulkan", "gl")
+_BACKEND_STATE: dict = {}
+
+
+def backend_problem(backend: str) -> "str | None":
+    """Why `backend` cannot render here (None when it can), probed once."""
+    if backend not in _BACKEND_STATE:
+        import toonmesh as tm
+
+        try:
+            info = tm.gpu_info(backend)
+            _BACKEND_STATE[backend] = (None, f"{info['name']} ({info['driver']} {info['driver_info']})".strip())
+        except tm.GpuUnavailableError as exc:
+            _BACKEND_STATE[backend] = (str(exc).split(". ")[0], None)
+    return _BACKEND_STATE[backend][0]
+
+
+@pytest.fixture(autouse=True)
+def _render_backend_available(request: Any) -> None:
+    backend = getattr(getattr(request.node, "callspec", None), "params", {}).get("backend")
+    if backend not in RENDER_BACKENDS:
+        return
+    problem = backend_problem(backend)
+    if problem is None:
+        return
+    if os.environ.get("CI", "").lower() == "true":
+        pytest.fail(f"the {backend} backend must work in CI: {problem}")
+    pytest.skip(f"the {backend} backend is not available here: {problem}")
+
+
+def pytest_terminal_summary(terminalreporter: Any) -> None:
+    if not _BACKEND_STATE:
+        return
+    terminalreporter.section("render backends")
+    for backend in RENDER_BACKENDS:
+        if backend in _BACKEND_STATE:
+            problem, adapter = _BACKEND_STATE[backend]
+            terminalreporter.write_line(f"{backend}: " + (f"ran on {adapter}" if problem is None else f"SKIPPED: {problem}"))

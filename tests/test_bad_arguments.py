@@ -452,6 +452,31 @@ MASKS = Array(
     )
 )
 
+PROFILES = Array(  # shapes.lathe: (radius, height) points, poles only at the ends
+    (
+        ("list of pairs", [(0, 0), (1, 0.5), (0, 1)], OK),
+        ("open ends", [(1.0, 0.0), (1.0, 1.0)], OK),
+        ("int", np.array([[0, 0], [2, 1], [0, 2]]), OK),
+        ("float32", np.array([[0, 0], [1, 1], [0, 2]], np.float32), OK),
+        ("big-endian", np.array([[0, 0], [1, 1], [0, 2]], ">f8"), OK),
+        ("one point", [(0.0, 0.0)], ValueError),
+        ("empty", np.zeros((0, 2)), ValueError),
+        ("three columns", np.ones((3, 3)), ValueError),
+        ("flat", [0.0, 1.0, 2.0], ValueError),
+        ("nan", [(0, 0), (np.nan, 1), (0, 2)], ValueError),
+        ("inf", [(0, 0), (1, np.inf), (0, 2)], ValueError),
+        ("negative radius", [(0, 0), (-1, 1), (0, 2)], ValueError),
+        ("pole inside", [(1, 0), (0, 1), (1, 2)], ValueError),
+        ("a point twice", [(0, 0), (1, 1), (1, 1), (0, 2)], ValueError),
+        ("two poles", [(0, 0), (0, 1)], ValueError),
+        ("bools", np.array([[False, False], [True, True]]), TypeError),
+        ("complex", np.array([[0, 0], [1j, 1], [0, 2]]), TypeError),
+        ("strings", [("a", "b"), ("c", "d")], TypeError),
+        ("ragged", [(0, 0), (1,), (0, 2)], TypeError),
+        ("a string", "profile", TypeError),
+    )
+)
+
 NORMAL_BUF = np.dstack([IMG, 1 - IMG, np.ones_like(IMG)]).astype(np.float32)
 DEPTH_BUF = 1.0 + IMG
 
@@ -660,6 +685,34 @@ CASES: List[Case] = [
             Param("seed", Integer(0, 2**64 - 1)),
         ],
     ),
+    Case(
+        "shapes.torus",
+        tm.shapes.torus,
+        dict(major=1.0, minor=0.4, segments=5, tube_segments=4),
+        [
+            Param("major", Number(0.4, math.inf, open_lo=True, open_hi=True)),
+            Param("minor", Number(0.0, 1.0, open_lo=True, open_hi=True)),
+            Param("segments", Integer(3, 4096, slow_above=64)),
+            Param("tube_segments", Integer(3, 4096, slow_above=64)),
+        ],
+    ),
+    Case(
+        "shapes.lathe",
+        tm.shapes.lathe,
+        dict(profile=[(0.0, 0.0), (1.0, 0.5), (0.0, 1.0)], segments=5),
+        [
+            Param("profile", PROFILES),
+            Param("segments", Integer(3, 4096, slow_above=64)),
+        ],
+    ),
+    Case("shapes.pawn", tm.shapes.pawn, dict(segments=5), [Param("segments", Integer(3, 4096, slow_above=64))]),
+    Case(
+        "shapes.uv_sphere",
+        tm.shapes.uv_sphere,
+        dict(segments=5, rings=4),
+        [Param("segments", Integer(3, 4096, slow_above=64)), Param("rings", Integer(2, 4096, slow_above=64))],
+    ),
+    Case("shapes.teapot", tm.shapes.teapot, dict(subdivisions=2), [Param("subdivisions", Integer(2, 64, slow_above=8))]),
     Case(
         "set_num_threads",
         tm.set_num_threads,
@@ -990,6 +1043,20 @@ STYLE = Array(
     )
 )
 
+DITHER = Array(
+    (
+        ("a pattern name", "bayer8", OK),
+        ("blue", "blue", OK),
+        ("a Dither", tm.Dither("bayer2", space="object"), OK),
+        ("an unknown name", "noise", ValueError),
+        ("upper case", "BAYER4", ValueError),
+        ("True", True, TypeError),
+        ("an int", 4, TypeError),
+        ("a list", ["bayer4"], TypeError),
+        ("an Outlines", tm.Outlines(), TypeError),
+    )
+)
+
 SHADOWS = Array(
     (
         ("True", True, OK),
@@ -1196,19 +1263,47 @@ RENDER_CASES: List[Case] = [
             Param("ambient", COLOUR, none=OK),
             Param("specular", COLOUR, none=OK),
             PER_VERTEX,
+            Param("dither", DITHER, none=OK),
         ],
     ),
     Case(
         "Material.bands",
         _rendered(tm.Material.bands, lambda m: dict(material=m)),
         dict(color=(0.9, 0.5, 0.2)),
-        [COLOUR_OR_NONE, Param("thresholds", THRESHOLDS, none=OK), Param("values", VALUES, none=OK), PER_VERTEX],
+        [COLOUR_OR_NONE, Param("thresholds", THRESHOLDS, none=OK), Param("values", VALUES, none=OK), PER_VERTEX,
+         Param("dither", DITHER, none=OK)],
+    ),
+    Case(
+        "Material.hatching",
+        _rendered(tm.Material.hatching, lambda m: dict(material=m)),
+        dict(color=None),
+        [
+            COLOUR_OR_NONE,
+            Param("ink", COLOUR, none=OK),
+            Param("thresholds", THRESHOLDS, none=OK),
+            Param("values", VALUES, none=OK),
+            Param("spacing", Number(2.0, 256.0), none=OK),
+            Param("width", Number(0.0, 6.0, open_lo=True), none=OK),  # up to the spacing
+            PER_VERTEX,
+            Param("dither", DITHER, none=OK),
+        ],
     ),
     Case(
         "Material.lut",
         _rendered(tm.Material.lut, lambda m: dict(material=m)),
         dict(table=None, color=(0.9, 0.5, 0.2)),
-        [Param("table", LUT, none=OK), COLOUR_OR_NONE, PER_VERTEX],
+        [Param("table", LUT, none=OK), COLOUR_OR_NONE, PER_VERTEX, Param("dither", DITHER, none=OK)],
+    ),
+    Case(
+        "Dither",
+        _rendered(tm.Dither, lambda d: dict(material=tm.Material.bands(dither=d))),
+        dict(pattern=None),
+        [
+            Param("pattern", Name(("bayer2", "bayer4", "bayer8", "blue")), none=OK),
+            Param("space", Name(("screen", "object")), none=OK),
+            Param("amount", Number(0.0, 2.0), none=OK),
+            Param("scale", Number(1.0, 64.0), none=OK),
+        ],
     ),
     *[
         Case(

@@ -1,4 +1,4 @@
-"""Ink outlines in the render: the plan for every combination, mesh-space lines on a cube (what
+"""Ink outlines in the render: the plan for every combination (shadows included), mesh-space lines on a cube (what
 is visible, hidden, and how wide), image-space edges against ``edges.detect_edges``, vector lines
 and their SVG, and the settings' objects."""
 
@@ -29,24 +29,29 @@ CUBE_F = np.array(
 CORNER = tm.Camera.orthographic((3.0, 2.5, 2.0), height=4.0)
 
 
-def _expected_passes(outlines, outputs, msaa, supersample):
+def _expected_passes(outlines, outputs, msaa, supersample, casting=False):
     """The plan rules (src/render/plan.rs), restated."""
     mesh = outlines in ("mesh", "both")
     image = outlines in ("image", "both")
-    color, normal, depth, outline, lines = (n in outputs for n in ("color", "normal", "depth", "outline", "lines"))
+    color, normal, depth, outline, lines, shadow = (
+        n in outputs for n in ("color", "normal", "depth", "outline", "lines", "shadow"))
     ink = color or outline
     draw_image, draw_lines, vector = image and ink, mesh and ink, mesh and lines
-    geometry = "nd" if (normal or draw_image) else ("d" if (depth or draw_lines or vector) else None)
+    geometry = "nd" if (normal or draw_image or shadow) else ("d" if (depth or draw_lines or vector) else None)
     single = msaa == 1 and supersample == 1
     passes = []
     if mesh and (draw_lines or vector):
         passes.append("silhouettes")
+    if casting and (color or shadow):
+        passes.append("shadow_map")
     if color:
         passes.append("shade")
     if geometry and not (color and single):
         passes.append("gbuffer")
     if color and supersample > 1:
         passes.append("downsample")
+    if shadow:
+        passes.append("shadow")
     if draw_image:
         passes.append("edges")
     if draw_lines:
@@ -62,6 +67,8 @@ def _expected_passes(outlines, outputs, msaa, supersample):
         passes.append("readback_depth")
     if outline:
         passes.append("readback_outline")
+    if shadow:
+        passes.append("readback_shadow")
     if vector:
         passes.append("visible_lines")
     return passes
@@ -70,8 +77,9 @@ def _expected_passes(outlines, outputs, msaa, supersample):
 OUTPUT_SETS = [
     s
     for n in range(1, 4)
-    for s in itertools.combinations(("color", "normal", "depth", "outline", "lines"), n)
+    for s in itertools.combinations(("color", "normal", "depth", "outline", "lines", "shadow"), n)
 ]
+CASTING = [tm.Light.directional((0.3, -1.0, -0.6), shadows=True)]
 
 
 @pytest.fixture(scope="module")
@@ -80,20 +88,24 @@ def cube_renderer():
     return r, r.add_mesh(CUBE_V, CUBE_F, normals="flat")
 
 
+@pytest.mark.parametrize("casting", [False, True], ids=["no shadows", "shadows"])
 @pytest.mark.parametrize("outlines", [None, "mesh", "image", "both"])
-def test_the_plan_holds_for_every_combination(cube_renderer, outlines):
+def test_the_plan_holds_for_every_combination(cube_renderer, outlines, casting):
     r, cube = cube_renderer
+    lights = CASTING if casting else None
     checked = 0
     for outputs, (msaa, ss) in itertools.product(OUTPUT_SETS, [(1, 1), (4, 1), (1, 2), (4, 2)]):
         needs_outlines = "outline" in outputs and outlines is None
         needs_lines = "lines" in outputs and outlines not in ("mesh", "both")
-        if needs_outlines or needs_lines:
+        needs_shadows = "shadow" in outputs and not casting
+        kw = dict(outputs=outputs, outlines=outlines, msaa=msaa, supersample=ss, width=16, height=12, lights=lights)
+        if needs_outlines or needs_lines or needs_shadows:
             with pytest.raises(ValueError, match="outputs"):
-                r.render(cube, outputs=outputs, outlines=outlines, msaa=msaa, supersample=ss, width=16, height=12)
+                r.render(cube, **kw)
             continue
-        res = r.render(cube, outputs=outputs, outlines=outlines, msaa=msaa, supersample=ss, width=16, height=12)
-        assert res.passes == _expected_passes(outlines, outputs, msaa, ss), (outputs, msaa, ss)
-        for name in ("color", "normal", "depth", "outline"):
+        res = r.render(cube, **kw)
+        assert res.passes == _expected_passes(outlines, outputs, msaa, ss, casting), (outputs, msaa, ss)
+        for name in ("color", "normal", "depth", "outline", "shadow"):
             assert (getattr(res, name) is not None) == (name in outputs)
         assert (res.lines is not None) == ("lines" in outputs)
         checked += 1

@@ -12,67 +12,16 @@ import pytest
 from scipy import ndimage
 
 import toonmesh as tm
-from toonmesh import _core
+from toonmesh.bench.effects import SHADOW_SCENES, iou, plane, shadow_against_truth
 
 BACKENDS = ["vulkan", "gl"]
 
 
-def box(center, half):
-    V = np.array([[x, y, z] for x in (-1.0, 1.0) for y in (-1.0, 1.0) for z in (-1.0, 1.0)]) * half + center
-    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
-                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
-    return V, F
+SCENES = SHADOW_SCENES
 
 
-def plane(half, y=0.0):
-    V = np.array([[-half, y, -half], [half, y, -half], [half, y, half], [-half, y, half]])
-    return V, np.array([[0, 2, 1], [0, 3, 2]])
-
-
-def torus(R, r, n=48, m=24, center=(0.0, 0.0, 0.0)):
-    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, n, endpoint=False), np.linspace(0, 2 * np.pi, m, endpoint=False), indexing="ij")
-    V = np.stack([(R + r * np.cos(v)) * np.cos(u), r * np.sin(v), (R + r * np.cos(v)) * np.sin(u)], -1).reshape(-1, 3)
-    i, j = np.meshgrid(np.arange(n), np.arange(m), indexing="ij")
-    a, b = i * m + j, ((i + 1) % n) * m + j
-    c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
-    F = np.concatenate([np.stack([a, d, c], -1).reshape(-1, 3), np.stack([a, c, b], -1).reshape(-1, 3)])
-    return V + np.asarray(center), F
-
-
-def join(*parts):
-    Vs, Fs, n = [], [], 0
-    for V, F in parts:
-        Vs.append(V)
-        Fs.append(F + n)
-        n += len(V)
-    return np.vstack(Vs), np.vstack(Fs)
-
-
-SCENES = {
-    "box on a plane": (join(box((0.0, 0.5, 0.0), 0.5), plane(3.0)), (1.0, -2.0, 0.6), (0.2, 1.2, 1.5)),
-    "torus over a plane": (join(torus(1.0, 0.35, center=(0.0, 0.8, 0.0)), plane(3.0)), (0.5, -2.0, 0.3), (0.3, 1.5, 1.2)),
-    "sphere on itself": (tm.shapes.icosphere(3), (1.0, -0.4, -0.8), (0.4, 0.3, 1.0)),
-}
-
-
-def shadow_and_truth(name, size, backend="vulkan", shadows=True, width=192, normals="flat"):
-    (V, F), direction, eye = SCENES[name]
-    r = tm.Renderer(backend=backend)
-    res = r.render(
-        tm.Mesh(V, F, normals=normals),
-        lights=[tm.Light.directional(direction, shadows=shadows)],
-        camera=tm.Camera.fit(eye),
-        width=size,
-        height=size,
-        outputs=("color", "shadow"),
-    )
-    toward = -np.asarray(direction, float) / np.linalg.norm(direction)
-    truth = _core._shadow_truth(V, F, res.projection @ res.view_matrix, size, size, toward)
-    return res, truth
-
-
-def iou(a, b):
-    return (a & b).sum() / max((a | b).sum(), 1)
+def shadow_and_truth(name, size, backend="vulkan", shadows=True):
+    return shadow_against_truth(name, size, shadows, backend)
 
 
 @pytest.mark.parametrize("backend", BACKENDS)

@@ -56,7 +56,8 @@ def test_threads_give_the_same_images_as_one_after_another(backend):
 
 
 def test_a_thousand_renders_keep_memory_flat():
-    # every kind of frame: outputs, outlines, vector lines, antialiasing, a stream of views
+    # every kind of frame: outputs, outlines, vector lines, antialiasing, shadows, hatching and
+    # dithering, a stream of views
     V, F = _core.icosphere(2, 0.03, 0)
     r = tm.Renderer()
     mesh = r.add_mesh(V, F)
@@ -65,11 +66,13 @@ def test_a_thousand_renders_keep_memory_flat():
         dict(outputs=("color", "normal", "depth")),
         dict(outlines="both", outputs=("color", "outline", "lines")),
         dict(msaa=4, supersample=2, outlines="mesh"),
+        dict(lights=[tm.Light.directional((0.3, -1.0, -0.5), shadows=True)], outputs=("color", "shadow"),
+             material=tm.Material.hatching(dither="bayer4")),
     ]
 
     def frames(n):
         for i in range(n):
-            r.render(mesh, width=64, height=64, camera=tm.Camera.fit((1.0, 0.1 * (i % 7), 1.0)), **kinds[i % 4])
+            r.render(mesh, width=64, height=64, camera=tm.Camera.fit((1.0, 0.1 * (i % 7), 1.0)), **kinds[i % len(kinds)])
             if i % 100 == 0:
                 r.render_many(mesh, [tm.Camera.fit((1.0, 0.1 * k, 1.0)) for k in range(4)], width=32, height=32)
 

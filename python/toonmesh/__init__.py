@@ -15,6 +15,7 @@ from toonmesh._core import (
 )
 from toonmesh._render import (
     Camera,
+    Dither,
     Light,
     LineStyle,
     Material,
@@ -32,6 +33,7 @@ from toonmesh._render import (
 
 __all__ = [
     "Camera",
+    "Dither",
     "shapes",
     "smooth",
     "ConvergenceError",

@@ -7,6 +7,7 @@ import numpy.typing as npt
 __all__ = [
     "Camera",
     "ConvergenceError",
+    "Dither",
     "GpuError",
     "GpuUnavailableError",
     "Light",
@@ -22,6 +23,7 @@ __all__ = [
     "_normal_mode",
     "_paper_edges",
     "_restore_camera",
+    "_restore_dither",
     "_restore_light",
     "_restore_material",
     "_restore_outlines",
@@ -75,6 +77,33 @@ _Color = Any  # '#rrggbb' or 3 numbers in [0, 1]
 _Vec3 = Tuple[float, float, float]
 
 @final
+class Dither:
+    """Dithering between neighbouring bands: pattern "bayer2", "bayer4" (default), "bayer8" or
+    "blue"; space "screen" (default) or "object"; amount in L.n, 0 to 2 (default 0.15); scale:
+    pixels a cell covers, 1 to 64 (default 1)."""
+
+    def __new__(
+        cls,
+        pattern: Optional[str] = ...,
+        *,
+        space: Optional[str] = ...,
+        amount: Optional[float] = ...,
+        scale: Optional[float] = ...,
+    ) -> Dither: ...
+    @property
+    def pattern(self) -> str: ...
+    @property
+    def space(self) -> str: ...
+    @property
+    def amount(self) -> float: ...
+    @property
+    def scale(self) -> float: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str, float, float], None]: ...
+
+_DitherArg = Union[None, str, Dither]
+
+@final
 class Material:
     @staticmethod
     def lambert(color: Optional[_Color] = ..., *, ambient: Optional[_Color] = ..., per_vertex: Optional[bool] = ...) -> Material: ...
@@ -97,6 +126,7 @@ class Material:
         ambient: Optional[_Color] = ...,
         specular: Optional[_Color] = ...,
         per_vertex: Optional[bool] = ...,
+        dither: _DitherArg = ...,
     ) -> Material: ...
     @staticmethod
     def bands(
@@ -105,11 +135,30 @@ class Material:
         thresholds: Optional[Any] = ...,
         values: Optional[Any] = ...,
         per_vertex: Optional[bool] = ...,
+        dither: _DitherArg = ...,
     ) -> Material: ...
     @staticmethod
-    def lut(table: Optional[Any] = ..., color: Optional[_Color] = ..., *, per_vertex: Optional[bool] = ...) -> Material: ...
+    def hatching(
+        color: Optional[_Color] = ...,
+        *,
+        ink: Optional[_Color] = ...,
+        thresholds: Optional[Any] = ...,
+        values: Optional[Any] = ...,
+        spacing: Optional[float] = ...,
+        width: Optional[float] = ...,
+        per_vertex: Optional[bool] = ...,
+        dither: _DitherArg = ...,
+    ) -> Material: ...
+    @staticmethod
+    def lut(
+        table: Optional[Any] = ..., color: Optional[_Color] = ..., *, per_vertex: Optional[bool] = ..., dither: _DitherArg = ...
+    ) -> Material: ...
     @property
     def model(self) -> str: ...
+    @property
+    def hatch_style(self) -> Optional[Dict[str, Any]]: ...
+    @property
+    def dither(self) -> Optional[Dither]: ...
     @property
     def diffuse(self) -> _Vec3: ...
     @property
@@ -344,6 +393,7 @@ class Renderer:
 def gpu_info(backend: Optional[str] = ...) -> Dict[str, Any]: ...
 def encode_png_rgba(color: Any) -> bytes: ...
 def _normal_mode(normals: Any) -> Union[str, Tuple[str, float]]: ...
+def _restore_dither(pattern: str, space: str, amount: float, scale: float) -> Dither: ...
 def _shadow_truth(
     vertices: Any, faces_arr: Any, view_proj: npt.NDArray[np.float64], width: int, height: int, toward_light: Any
 ) -> npt.NDArray[np.float32]: ...

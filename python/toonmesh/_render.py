@@ -17,7 +17,7 @@ from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._core import Camera, Light, LineStyle, Material, Outlines, Shadows, kang_table
+from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Shadows, kang_table
 from toonmesh._input import mesh_arrays
 
 #: A normal mode: ``"smooth"``, ``"flat"``, ``"auto"`` or ``("auto", crease angle in degrees)``.
@@ -541,6 +541,7 @@ def gpu_info(backend: Optional[str] = None) -> Dict[str, Any]:
 
 __all__ = [
     "Camera",
+    "Dither",
     "Light",
     "LineStyle",
     "Material",

@@ -1,4 +1,11 @@
-"""Procedural test meshes, made in code so nothing large has to be stored."""
+"""Procedural test meshes, made in code so nothing large has to be stored.
+
+Besides the icosphere and the grid, the test models of Kang, Kim and Yoon (2001), with their
+face counts: :func:`torus` (the donut, 450 faces), :func:`pawn` (the chess piece, 480),
+:func:`teapot` (Newell's teapot, 992 of its 1024 triangles; the rest are points) and
+:func:`uv_sphere` (264), and :func:`lathe`, which turns any profile into a surface of revolution.
+Every model is closed and outward-oriented unless its docstring says otherwise, with y up.
+"""
 
 from __future__ import annotations
 
@@ -8,8 +15,10 @@ import numpy as np
 import numpy.typing as npt
 
 from toonmesh import _core
+from toonmesh._checks import integer, number
+from toonmesh._teapot import teapot_mesh
 
-__all__ = ["icosphere", "grid"]
+__all__ = ["icosphere", "grid", "torus", "lathe", "pawn", "uv_sphere", "teapot"]
 
 Mesh = Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]
 
@@ -59,3 +68,182 @@ def grid(n: int = 32, noise: float = 0.0, seed: int = 0) -> Mesh:
     TypeError, ValueError: as :func:`icosphere`.
     """
     return _core.grid(n, noise, seed)
+
+
+def torus(major: float = 1.0, minor: float = 0.4, segments: int = 15, tube_segments: int = 15) -> Mesh:
+    """A torus (a donut) about the y axis, centred on the origin: closed, outward-oriented.
+
+    Parameters
+    ----------
+    major : float > 0, default 1.0
+        Distance from the axis to the centre of the tube.
+    minor : float in (0, major), default 0.4
+        Radius of the tube.
+    segments, tube_segments : int in [3, 4096], default 15 and 15
+        Steps around the axis and around the tube: ``segments * tube_segments`` vertices and
+        ``2 * segments * tube_segments`` faces (the defaults give Kang et al.'s donut: 450).
+
+    Returns
+    -------
+    (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+
+    Raises
+    ------
+    TypeError for a non-number radius or a non-integer count; ValueError for values out of range.
+    """
+    R = number("major", major, 0.0, open_lo=True)
+    r = number("minor", minor, 0.0, open_lo=True)
+    if r >= R:
+        raise ValueError(f"major, minor: the tube's radius (minor, {r:g}) must be smaller than major ({R:g})")
+    n = integer("segments", segments, 3, 4096)
+    m = integer("tube_segments", tube_segments, 3, 4096)
+    u = np.linspace(0.0, 2 * np.pi, n, endpoint=False)[:, None]
+    v = np.linspace(0.0, 2 * np.pi, m, endpoint=False)[None, :]
+    ring = R + r * np.cos(v)
+    V = np.stack(np.broadcast_arrays(ring * np.cos(u), r * np.sin(v), -ring * np.sin(u)), axis=-1).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(n), np.arange(m), indexing="ij")
+    a, b = i * m + j, (i + 1) % n * m + j  # b: the next step around the axis
+    c, d = (i + 1) % n * m + (j + 1) % m, i * m + (j + 1) % m
+    F = np.concatenate([np.stack([a, b, c], -1).reshape(-1, 3), np.stack([a, c, d], -1).reshape(-1, 3)])
+    return V, F.astype(np.int64)
+
+
+def lathe(profile: npt.ArrayLike, segments: int = 24) -> Mesh:
+    """A surface of revolution: ``profile`` turned about the y axis.
+
+    Parameters
+    ----------
+    profile : (K, 2) array-like of float, K >= 2
+        (radius, height) points, in order along the surface. A point at radius 0 is a pole
+        (one vertex), allowed only at either end, where it closes the surface; an end at a
+        radius above 0 is left open (a boundary). Run the profile upward along the outside
+        (from the bottom pole to the top one, say) for outward-facing triangles; the reverse
+        order gives inward-facing ones.
+    segments : int in [3, 4096], default 24
+        Steps around the axis.
+
+    Returns
+    -------
+    (V, F): (N, 3) float64 positions and (M, 3) int64 faces: ``segments`` vertices per point
+    of the profile (one at a pole); ``2 * segments`` faces per step of the profile, ``segments``
+    for a step that ends at a pole. Closed when both ends are poles.
+
+    Raises
+    ------
+    TypeError when ``profile`` is not numbers or ``segments`` not an int; ValueError for a
+    profile of the wrong shape, with non-finite or negative radii, a pole inside it, or two
+    equal points in a row, and for ``segments`` out of range.
+    """
+    try:
+        P = np.asarray(profile)
+    except Exception as exc:  # ragged lists and other non-arrays
+        raise TypeError(f"profile: expected a (K, 2) array of numbers ({exc})") from None
+    if P.dtype.kind not in "iuf":
+        raise TypeError(f"profile: expected a (K, 2) array of numbers, got dtype {P.dtype}")
+    P = P.astype(np.float64)
+    if P.ndim != 2 or P.shape[1] != 2 or len(P) < 2:
+        raise ValueError(f"profile: expected a (K, 2) array of (radius, height) with K >= 2, got shape {P.shape}")
+    if not np.isfinite(P).all():
+        raise ValueError("profile: must be finite numbers")
+    if (P[:, 0] < 0).any():
+        raise ValueError("profile: radii must be >= 0")
+    if (P[1:-1, 0] == 0).any():
+        raise ValueError("profile: only the first and last points may be at radius 0 (poles)")
+    if (np.diff(P, axis=0) == 0).all(axis=1).any():
+        raise ValueError("profile: two points in a row are equal")
+    if len(P) == 2 and (P[:, 0] == 0).all():
+        raise ValueError("profile: a profile of two poles is a line, not a surface")
+    n = integer("segments", segments, 3, 4096)
+    angle = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+    cos, sin = np.cos(angle), np.sin(angle)
+    pole = P[:, 0] == 0
+    # vertex indices of each profile point: one at a pole, n on a ring
+    start = np.concatenate([[0], np.cumsum(np.where(pole, 1, n))])
+    V = np.concatenate(
+        [[(0.0, h, 0.0)] if p else np.stack([r * cos, np.full(n, h), -r * sin], axis=-1) for (r, h), p in zip(P, pole)]
+    )
+    k = np.arange(n)
+    faces = []
+    for i in range(len(P) - 1):
+        lo = start[i] if pole[i] else start[i] + k  # this ring, and the next one up the profile
+        lo_next = start[i] if pole[i] else start[i] + (k + 1) % n
+        hi = start[i + 1] if pole[i + 1] else start[i + 1] + k
+        hi_next = start[i + 1] if pole[i + 1] else start[i + 1] + (k + 1) % n
+        if not pole[i]:
+            faces.append(np.stack(np.broadcast_arrays(lo, lo_next, hi_next), axis=-1))
+        if not pole[i + 1]:
+            faces.append(np.stack(np.broadcast_arrays(lo, hi_next, hi), axis=-1))
+    return V, np.concatenate(faces).astype(np.int64)
+
+
+# Kang et al.'s chess piece: (radius, height) from the base's centre to the top of the head.
+_PAWN_PROFILE = [(0.0, 0.0), (0.5, 0.0), (0.5, 0.08), (0.38, 0.14), (0.22, 0.3), (0.15, 0.55), (0.28, 0.62),
+                 (0.15, 0.68), (0.2, 0.8), (0.22, 0.92), (0.12, 1.04), (0.0, 1.08)]
+
+
+def pawn(segments: int = 24) -> Mesh:
+    """A chess pawn (base, collar and head) made with :func:`lathe`: closed, outward-oriented,
+    standing on y = 0, 1.08 high, base radius 0.5.
+
+    Parameters
+    ----------
+    segments : int in [3, 4096], default 24
+        Steps around the axis: ``20 * segments`` faces (the default gives Kang et al.'s chess
+        piece: 480) and ``10 * segments + 2`` vertices.
+
+    Returns
+    -------
+    (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+    """
+    return lathe(_PAWN_PROFILE, integer("segments", segments, 3, 4096))
+
+
+def uv_sphere(segments: int = 12, rings: int = 12) -> Mesh:
+    """A unit sphere of latitude and longitude lines (poles on the y axis): closed,
+    outward-oriented. The icosphere (:func:`icosphere`) has more even triangles; this is the
+    sphere of many older papers.
+
+    Parameters
+    ----------
+    segments : int in [3, 4096], default 12
+        Steps of longitude.
+    rings : int in [2, 4096], default 12
+        Bands of latitude from pole to pole: ``2 * segments * (rings - 1)`` faces (the defaults
+        give Kang et al.'s sphere: 264) and ``segments * (rings - 1) + 2`` vertices.
+
+    Returns
+    -------
+    (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+    """
+    n = integer("segments", segments, 3, 4096)
+    rings = integer("rings", rings, 2, 4096)
+    t = np.linspace(-np.pi / 2, np.pi / 2, rings + 1)
+    profile = np.stack([np.cos(t), np.sin(t)], axis=-1)
+    profile[[0, -1], 0] = 0.0  # exact poles
+    return lathe(profile, n)
+
+
+def teapot(subdivisions: int = 4) -> Mesh:
+    """The Utah teapot, from Martin Newell's 32 bicubic Bezier patches (public domain).
+
+    Each patch is cut into ``subdivisions`` x ``subdivisions`` quads of two triangles, the
+    points the patches share are welded, and the triangles that collapse to a point at the
+    lid's knob and the bottom's centre are left out: ``64 n**2 - 8 n`` faces (n = 4, the
+    default: 992 of the 1024 triangles of Kang et al.'s teapot). y is up, the base on y = 0,
+    the lid's knob at y = 3.15, the spout toward +x.
+
+    As in Newell's data the surface is not closed: the lid and the rim it rests on are open
+    circles, the spout is open at both ends, and the handle and spout pass into the body
+    without being joined to it. Each part is consistently oriented, facing outward; no edge
+    has more than two faces.
+
+    Parameters
+    ----------
+    subdivisions : int in [2, 64], default 4
+        (At 1 the handle and spout would fold onto themselves.)
+
+    Returns
+    -------
+    (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+    """
+    return teapot_mesh(integer("subdivisions", subdivisions, 2, 64))

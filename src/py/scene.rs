@@ -20,6 +20,7 @@ use crate::render::scene::light::{Light, LightKind, Space};
 use crate::render::scene::material::{self, Highlight, Material, Model, MAX_LUT};
 use crate::render::scene::outlines::{kind_names, LineStyle, Outlines, IMAGE_KIND, INK_KINDS};
 use crate::render::scene::shadows::{ShadowFilter, Shadows};
+use crate::render::scene::style::{Dither, DitherPattern, DitherSpace, Hatching};
 
 type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
 
@@ -66,6 +67,127 @@ fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 3]>> {
             }
         })
         .collect()
+}
+
+/// Dithering between neighbouring bands (Borquez and Yepez): L.n + (t - 1/2) amount is banded,
+/// t the pattern's threshold at the pixel. pattern: "bayer2", "bayer4" (default), "bayer8"
+/// (ordered dithering) or "blue" (the R2 sequence, a blue-noise-like pattern). space: "screen"
+/// (default, as in the paper: the pattern stays put while the object moves) or "object"
+/// (anchored to the surface, so a turntable does not shimmer). amount: in L.n, 0 to 2 (default
+/// 0.15). scale: pixels a pattern cell covers, 1 to 64 (default 1).
+#[pyclass(name = "Dither", module = "toonmesh._core", frozen, eq)]
+#[derive(Clone, PartialEq)]
+pub struct PyDither {
+    pub inner: Dither,
+}
+
+#[pymethods]
+impl PyDither {
+    #[new]
+    #[pyo3(signature = (pattern = None, *, space = None, amount = None, scale = None))]
+    fn new(
+        pattern: Obj<'_, '_>,
+        space: Obj<'_, '_>,
+        amount: Obj<'_, '_>,
+        scale: Obj<'_, '_>,
+    ) -> PyResult<Self> {
+        (|| {
+            let mut d = Dither::new(match optional("pattern", pattern, text)? {
+                None => DitherPattern::Bayer4,
+                Some(p) => DitherPattern::parse("pattern", &p)?,
+            });
+            if let Some(s) = optional("space", space, text)? {
+                d.space = DitherSpace::parse("space", &s)?;
+            }
+            d.amount = opt_number("amount", amount)?.unwrap_or(d.amount);
+            d.scale = opt_number("scale", scale)?.unwrap_or(d.scale);
+            d.validate("")?;
+            Ok(PyDither { inner: d })
+        })()
+        .map_err(to_py)
+    }
+
+    #[getter]
+    fn pattern(&self) -> &'static str {
+        self.inner.pattern.name()
+    }
+
+    #[getter]
+    fn space(&self) -> &'static str {
+        self.inner.space.name()
+    }
+
+    #[getter]
+    fn amount(&self) -> f64 {
+        self.inner.amount
+    }
+
+    #[getter]
+    fn scale(&self) -> f64 {
+        self.inner.scale
+    }
+
+    fn __hash__(&self) -> u64 {
+        hash_of(&self.inner)
+    }
+
+    fn __repr__(&self) -> String {
+        dither_repr(&self.inner)
+    }
+
+    #[allow(clippy::type_complexity)]
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, (&'static str, &'static str, f64, f64), Bound<'py, PyAny>)> {
+        // keyword-only arguments: rebuilt by `_restore_dither`
+        let d = &self.inner;
+        Ok((
+            py.import("toonmesh._core")?.getattr("_restore_dither")?,
+            (d.pattern.name(), d.space.name(), d.amount, d.scale),
+            py.None().into_bound(py),
+        ))
+    }
+}
+
+fn dither_repr(d: &Dither) -> String {
+    format!(
+        "Dither({:?}, space={:?}, amount={}, scale={})",
+        d.pattern.name(),
+        d.space.name(),
+        d.amount,
+        d.scale
+    )
+}
+
+#[pyfunction]
+fn _restore_dither(pattern: &str, space: &str, amount: f64, scale: f64) -> PyResult<PyDither> {
+    (|| {
+        let d = Dither {
+            pattern: DitherPattern::parse("pattern", pattern)?,
+            space: DitherSpace::parse("space", space)?,
+            amount,
+            scale,
+        };
+        d.validate("")?;
+        Ok(PyDither { inner: d })
+    })()
+    .map_err(to_py)
+}
+
+/// The `dither=` argument: None (none), a pattern name (its defaults) or a Dither.
+fn dither_arg(obj: Obj<'_, '_>) -> Result<Option<Dither>> {
+    let Some(o) = obj else { return Ok(None) };
+    if let Ok(d) = o.cast::<PyDither>() {
+        return Ok(Some(d.get().inner));
+    }
+    if o.is_instance_of::<PyString>() {
+        return Ok(Some(Dither::new(DitherPattern::parse("dither", &text("dither", o)?)?)));
+    }
+    Err(Error::wrong_type(
+        "dither",
+        format!("expected a pattern name or a toonmesh.Dither, got {}", type_name(o)),
+    ))
 }
 
 /// A shading model with its coefficients; build one with the static methods. Colours are sRGB:
@@ -140,7 +262,7 @@ impl PyMaterial {
     /// ``per_vertex=True`` for that.
     #[staticmethod]
     #[pyo3(signature = (color = None, *, t_h = None, t_s = None, highlight = None, ambient = None,
-                        specular = None, per_vertex = None))]
+                        specular = None, per_vertex = None, dither = None))]
     #[allow(clippy::too_many_arguments)]
     fn thresholded_phong(
         color: Obj<'_, '_>,
@@ -150,6 +272,7 @@ impl PyMaterial {
         ambient: Obj<'_, '_>,
         specular: Obj<'_, '_>,
         per_vertex: Obj<'_, '_>,
+        dither: Obj<'_, '_>,
     ) -> PyResult<Self> {
         Self::made((|| {
             let highlight =
@@ -162,7 +285,8 @@ impl PyMaterial {
                 opt_rgb("ambient", ambient)?,
                 opt_rgb("specular", specular)?,
                 flag_or("per_vertex", per_vertex, false)?,
-            )
+            )?
+            .with_dither(dither_arg(dither)?)
         })())
     }
 
@@ -171,13 +295,16 @@ impl PyMaterial {
     /// Defaults are the paper's: thresholds (0.2, 0.5, 0.7, 0.9) and values (0, 0.2, 0.7, 0.9,
     /// 1), so L.n >= 0.9 -> 1.0, 0.7-0.9 -> 0.9, 0.5-0.7 -> 0.7, 0.2-0.5 -> 0.2, below -> 0,
     /// times ``color``. 1 to 8 strictly increasing thresholds, and one value more (each >= 0).
+    /// dither (here and on the other toon models): None (default), a pattern name or a
+    /// :class:`Dither`; needs per-pixel shading.
     #[staticmethod]
-    #[pyo3(signature = (color = None, *, thresholds = None, values = None, per_vertex = None))]
+    #[pyo3(signature = (color = None, *, thresholds = None, values = None, per_vertex = None, dither = None))]
     fn bands(
         color: Obj<'_, '_>,
         thresholds: Obj<'_, '_>,
         values: Obj<'_, '_>,
         per_vertex: Obj<'_, '_>,
+        dither: Obj<'_, '_>,
     ) -> PyResult<Self> {
         Self::made((|| {
             Material::bands(
@@ -185,7 +312,51 @@ impl PyMaterial {
                 thresholds.map(|t| numbers("thresholds", t).map(f32s)).transpose()?,
                 values.map(|v| numbers("values", v).map(f32s)).transpose()?,
                 flag_or("per_vertex", per_vertex, false)?,
-            )
+            )?
+            .with_dither(dither_arg(dither)?)
+        })())
+    }
+
+    /// Borquez and Yepez's cross-hatching: the bands' tone (their value times the light, as
+    /// :meth:`bands` computes it) picks how many layers of ink strokes cover the paper: none
+    /// where the tone is above 0.8, then strokes at 45 degrees, then -45 (cross-hatching), 0
+    /// and 90 degrees below 0.6, 0.4 and 0.2. The strokes are mapped on the object without UVs
+    /// (triplanar, in the mesh's own coordinates), keep about ``spacing`` pixels between them
+    /// (default 6, 2 to 256) and ``width`` pixels of width (default 1.25, up to ``spacing``) at
+    /// any distance, and give the same bits for the same scene.
+    ///
+    /// color: the paper (default white); ink: the strokes (default (0.1, 0.1, 0.1));
+    /// thresholds, values, dither and per_vertex as in :meth:`bands`.
+    #[staticmethod]
+    #[pyo3(signature = (color = None, *, ink = None, thresholds = None, values = None, spacing = None,
+                        width = None, per_vertex = None, dither = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn hatching(
+        color: Obj<'_, '_>,
+        ink: Obj<'_, '_>,
+        thresholds: Obj<'_, '_>,
+        values: Obj<'_, '_>,
+        spacing: Obj<'_, '_>,
+        width: Obj<'_, '_>,
+        per_vertex: Obj<'_, '_>,
+        dither: Obj<'_, '_>,
+    ) -> PyResult<Self> {
+        Self::made((|| {
+            let d = Hatching::default();
+            let h = Hatching {
+                ink: opt_rgb("ink", ink)?.unwrap_or(d.ink),
+                spacing: opt_number("spacing", spacing)?.unwrap_or(d.spacing),
+                width: opt_number("width", width)?.unwrap_or(d.width),
+            };
+            h.validate("")?;
+            Material::hatching(
+                opt_rgb("color", color)?.unwrap_or([1.0; 3]),
+                thresholds.map(|t| numbers("thresholds", t).map(f32s)).transpose()?,
+                values.map(|v| numbers("values", v).map(f32s)).transpose()?,
+                h,
+                flag_or("per_vertex", per_vertex, false)?,
+            )?
+            .with_dither(dither_arg(dither)?)
         })())
     }
 
@@ -194,21 +365,45 @@ impl PyMaterial {
     /// table: (N,) grey factors or (N, 3) RGB factors (linear, >= 0, 1 <= N <= 256) applied to
     /// ``color``; the default is :func:`kang_table`, Kang et al.'s 256-to-3-level mapping.
     #[staticmethod]
-    #[pyo3(signature = (table = None, color = None, *, per_vertex = None))]
-    fn lut(table: Obj<'_, '_>, color: Obj<'_, '_>, per_vertex: Obj<'_, '_>) -> PyResult<Self> {
+    #[pyo3(signature = (table = None, color = None, *, per_vertex = None, dither = None))]
+    fn lut(
+        table: Obj<'_, '_>,
+        color: Obj<'_, '_>,
+        per_vertex: Obj<'_, '_>,
+        dither: Obj<'_, '_>,
+    ) -> PyResult<Self> {
         Self::made((|| {
             Material::lut(
                 table.map(|t| self::table("table", t)).transpose()?,
                 color_or("color", color)?,
                 flag_or("per_vertex", per_vertex, false)?,
-            )
+            )?
+            .with_dither(dither_arg(dither)?)
         })())
     }
 
-    /// The shading model: "lambert", "phong", "thresholded_phong", "bands" or "lut".
+    /// The shading model: "lambert", "phong", "thresholded_phong", "bands" or "lut" (a
+    /// hatching material is "bands" with :attr:`hatch_style` set).
     #[getter]
     fn model(&self) -> &'static str {
         self.inner.model.name()
+    }
+
+    /// A hatching material's ink (sRGB), spacing and width in pixels as a dict; None for others.
+    #[getter]
+    fn hatch_style<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(h) = &self.inner.hatching else { return Ok(None) };
+        let d = PyDict::new(py);
+        d.set_item("ink", tup(h.ink))?;
+        d.set_item("spacing", h.spacing)?;
+        d.set_item("width", h.width)?;
+        Ok(Some(d))
+    }
+
+    /// The dithering, or None.
+    #[getter]
+    fn dither(&self) -> Option<PyDither> {
+        self.inner.dither.map(|inner| PyDither { inner })
     }
 
     /// sRGB coefficients (tuples of 3 floats).
@@ -307,6 +502,13 @@ impl PyMaterial {
             Model::Bands { thresholds, values } => format!(", thresholds={thresholds:?}, values={values:?}"),
             Model::Lut { table } => format!(", table=<{} entries>", table.len()),
         };
+        let mut params = params;
+        if let Some(h) = &m.hatching {
+            params += &format!(", hatching=(ink={:?}, spacing={}, width={})", h.ink, h.spacing, h.width);
+        }
+        if let Some(d) = &m.dither {
+            params += &format!(", dither={}", dither_repr(d));
+        }
         format!(
             "Material.{}(diffuse={:?}, ambient={:?}, specular={:?}{params}, per_vertex={})",
             m.model.name(),
@@ -1038,6 +1240,12 @@ pub mod state {
         fn v3(&mut self) -> Result<[f64; 3]> {
             Ok([self.f64()?, self.f64()?, self.f64()?])
         }
+        fn skip(&mut self, n: usize) -> Result<()> {
+            for _ in 0..n {
+                self.next()?;
+            }
+            Ok(())
+        }
         fn opt(&mut self) -> Result<Option<f64>> {
             match self.next()? {
                 "-" => Ok(None),
@@ -1080,8 +1288,16 @@ pub mod state {
                 Model::Bands { thresholds, values } => format!("{};{}", list(thresholds), list(values)),
                 Model::Lut { table } => list(&table.iter().flatten().copied().collect::<Vec<_>>()),
             };
+            let hatching = match &self.hatching {
+                Some(h) => format!("{};{};{}", v3(h.ink), h.spacing, h.width),
+                None => "-;-;-;-;-".into(),
+            };
+            let dither = match &self.dither {
+                Some(d) => format!("{};{};{};{}", d.pattern.name(), d.space.name(), d.amount, d.scale),
+                None => "-;-;-;-".into(),
+            };
             format!(
-                "{};{};{};{};{};{params}",
+                "{};{};{};{};{};{hatching};{dither};{params}",
                 self.model.name(),
                 v3(self.diffuse),
                 v3(self.ambient),
@@ -1095,6 +1311,27 @@ pub mod state {
             let name = r.next()?;
             let (diffuse, ambient, specular) = (r.v3()?, r.v3()?, r.v3()?);
             let per_vertex = r.next()? == "true";
+            let hatching = match r.opt()? {
+                None => {
+                    r.skip(4)?;
+                    None
+                }
+                Some(x) => {
+                    Some(Hatching { ink: [x, r.f64()?, r.f64()?], spacing: r.f64()?, width: r.f64()? })
+                }
+            };
+            let dither = match r.next()? {
+                "-" => {
+                    r.skip(3)?;
+                    None
+                }
+                pattern => Some(Dither {
+                    pattern: DitherPattern::parse("state", pattern)?,
+                    space: DitherSpace::parse("state", r.next()?)?,
+                    amount: r.f64()?,
+                    scale: r.f64()?,
+                }),
+            };
             let model = match name {
                 "lambert" => Model::Lambert,
                 "phong" => Model::Phong { shininess: r.f32()? },
@@ -1109,7 +1346,7 @@ pub mod state {
                 }
                 other => return Err(Error::invalid("state", format!("unknown model {other:?}"))),
             };
-            let m = Material { model, ambient, diffuse, specular, per_vertex };
+            let m = Material { model, ambient, diffuse, specular, per_vertex, hatching, dither };
             m.validate("state")?;
             Ok(m)
         }
@@ -1257,6 +1494,8 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyMaterial>()?;
     m.add_class::<PyLight>()?;
     m.add_class::<PyShadows>()?;
+    m.add_class::<PyDither>()?;
+    m.add_function(wrap_pyfunction!(_restore_dither, m)?)?;
     m.add_class::<PyCamera>()?;
     m.add_class::<PyLineStyle>()?;
     m.add_class::<PyOutlines>()?;

@@ -117,6 +117,8 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
                 diffuse: [0.8, 0.5, 0.3],
                 specular: [0.5, 0.5, 0.5],
                 per_vertex: false,
+                hatching: None,
+                dither: None,
             };
             let scene = sphere_scene(&r, material, NormalMode::Smooth);
             let out = r.render(&scene, &all_outputs(161, 97)).unwrap();

@@ -22,7 +22,7 @@ use super::context::{context, GpuContext};
 use super::device::{BackendChoice, GpuInfo};
 use super::gpu_mesh::{GpuMesh, NormalMode};
 use super::graph::resources::FrameResources;
-use super::graph::{DrawItem, FrameCtx, LineDraw};
+use super::graph::{DrawItem, FrameCtx, LineDraw, ShadingVariant};
 use super::mesh_lines::MeshLines;
 use super::passes::lines::visibility::{visible_runs, DepthImage, Projector, Visibility};
 use super::plan::{plan, Features, Plan, SILHOUETTES, VISIBLE_LINES};
@@ -447,7 +447,7 @@ impl Renderer {
             .map(|(i, (item, rec))| DrawItem {
                 mesh: &rec.gpu,
                 uniform_offset: i as u32 * stride,
-                per_vertex: item.material.per_vertex,
+                variant: ShadingVariant::of(&item.material),
             })
             .collect();
         let bg = frame.background;
@@ -464,6 +464,7 @@ impl Renderer {
                 b: srgb_to_linear(bg[2] as f64),
                 a: bg[3] as f64,
             },
+            lights: scene.lights.len() as u32,
             shadow_filter: shadow_caster(&scene.lights).map(|(_, _, s)| s.filter),
         };
         let mut encoder =

@@ -33,7 +33,8 @@ pub struct FrameBlock {
     pub lights: [LightBlock; MAX_LIGHTS],
     /// Normalised view space -> the shadow-casting light's clip space (the first light's).
     pub shadow: [[f32; 4]; 4],
-    /// x: depth tolerance per unit of receiver slope, y: the largest slope biased.
+    /// x: depth tolerance per unit of receiver slope, y: the largest slope biased, z: how far
+    /// (normalised view units) a receiver moves along its normal before the test.
     pub shadow_bias: [f32; 4],
 }
 
@@ -51,6 +52,10 @@ pub struct DrawBlock {
     pub thresholds: [[f32; 4]; 2],
     pub values: [[f32; 4]; 3],
     pub table: [[f32; 4]; MAX_LUT],
+    /// x: dither amount, y: dither cell in pixels, z: hatch spacing, w: hatch width (pixels).
+    pub style: [f32; 4],
+    /// Linear ink of the hatching.
+    pub ink: [f32; 4],
 }
 
 /// One mesh-space line: its end points in the mesh's stored coordinates and its kind.
@@ -126,8 +131,11 @@ pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec, spher
     if let Some((_, light, settings)) = shadow_caster(&scene.lights) {
         if let ViewLight::Toward(l) = light.to_view(&cam.view) {
             let c = cam.normalized_view().transform_point3(sphere.center);
-            shadow = f32_cols(shadow_matrix(l, c, sphere.radius / cam.scale));
-            shadow_bias = [settings.tolerance() as f32, MAX_BIAS_SLOPE as f32, 0.0, 0.0];
+            let r = sphere.radius / cam.scale;
+            shadow = f32_cols(shadow_matrix(l, c, r));
+            // the map's side spans the sphere's diameter
+            let offset = settings.normal_offset() * 2.0 * r;
+            shadow_bias = [settings.tolerance() as f32, MAX_BIAS_SLOPE as f32, offset as f32, 0.0];
         }
     }
     let (a, b) = footprint(cam, frame.height);
@@ -177,6 +185,15 @@ pub fn draw_block(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera)
     b.diffuse = rgb0(m.diffuse_linear());
     b.specular = rgb0(m.specular_linear());
     b.flags = [mirrored as u32, 0, 0, 0];
+    if let Some(d) = &m.dither {
+        b.style[0] = d.amount as f32;
+        b.style[1] = d.scale as f32;
+    }
+    if let Some(h) = &m.hatching {
+        b.style[2] = h.spacing as f32;
+        b.style[3] = h.width as f32;
+        b.ink = rgb0(crate::render::color::to_linear(h.ink));
+    }
     b.model[0] = m.model.id();
     match &m.model {
         Model::Lambert => {}

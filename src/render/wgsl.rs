@@ -7,6 +7,7 @@ use crate::edges::outlines::LineKind;
 use super::scene::light::MAX_LIGHTS;
 use super::scene::material::{Model, MAX_LUT};
 use super::scene::outlines::{IMAGE_KIND, INK_KINDS};
+use super::scene::style::{DitherPattern, HATCH_LAYERS};
 
 const COMMON: &str = include_str!("shaders/common.wgsl");
 /// `light_visibility` where no light casts shadows.
@@ -22,6 +23,8 @@ pub fn prelude() -> String {
     constant("IMAGE_KIND", IMAGE_KIND);
     constant("LINE_SILHOUETTE", LineKind::Silhouette as usize);
     constant("LINE_BOUNDARY", LineKind::Boundary as usize);
+    constant("HATCH_LAYERS", HATCH_LAYERS);
+    constant("DITHER_BLUE", DitherPattern::Blue as usize);
     for (id, name) in Model::NAMES.iter().enumerate() {
         constant(&format!("MODEL_{}", name.to_ascii_uppercase()), id);
     }

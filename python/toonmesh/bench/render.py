@@ -1,131 +1,369 @@
-"""Rendering benchmark: toonmesh against pyrender (EGL, OSMesa) and PyVista, side by side.
+"""Rendering benchmark: toonmesh against moderngl, pyrender (OSMesa, EGL) and PyVista on the
+same frame, side by side, and what toonmesh's own options cost.
 
-Same mesh (``toonmesh._core.icosphere(8, 0.02, 1)``: 655,362 vertices, 1,310,720 faces), same
-camera, same size (1024 x 1024), steady state (mesh on the device, one warm-up frame, median of
-``repeat``). Each peer runs in its own process (a GL platform is chosen at import), so one run
-of ``python -m toonmesh.bench render`` fills the whole table. Also: the cost of each accuracy
-knob (MSAA, supersampling), outlines against exact silhouettes at several sizes (what accuracy
-costs), and a fresh process from import to the first PNG of the bunny.
+The main table: the same mesh (``shapes.icosphere(8)``: 655,362 vertices, 1,310,720 faces),
+camera (eye (0, 0, 3.2), 40 degrees vertical field of view) and frames (colour at 1024x1024 and
+1920x1080; colour + depth at 1024x1024), the mesh uploaded once. toonmesh renders in this
+process (thresholded Phong and Lambert, Vulkan and GL); each peer in a process of its own
+(:mod:`toonmesh.bench._peers`). All renderers take turns frame by frame, so that a change in the
+machine's load falls on each alike; each figure is the median of ``repeat`` frames after a
+warm-up frame. A peer that is not installed, or cannot start here, is reported as such.
 
-Options after the suite name: ``--size N``, ``--subdivisions S``, ``--skip-peers``.
+Then: one-shot ``tm.render`` (upload included) against a frame of a mesh already uploaded; the
+upload of each normal mode (``"auto"`` splits vertices at creases); ``render_many`` of a turntable against as many ``render`` calls; what outlines add to a frame;
+Kang, Kim and Yoon's scenes (their four small models with outlines, toon shading and shadows at
+640x480, next to the paper's frames per second); the accuracy knobs and outline accuracy
+(:func:`accuracy`); and a fresh process from import to the first PNG.
+
+Options after the suite name: ``--size N`` (the square frame), ``--wide WxH``,
+``--subdivisions S``, ``--skip-peers``, ``--only TABLE,...`` (frames, oneshot, normals, stream,
+outlines, kang, accuracy, cold).
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
 import time
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from toonmesh.bench._timing import median_time, table
+from toonmesh.bench import _peers
+from toonmesh.bench._timing import median_time, ms, table
 
-EYE = (0.0, 0.0, 3.2)
-FOV_Y = 40.0
+EYE = _peers.EYE
+FOV_Y = _peers.FOV_Y
+TABLES = ("frames", "oneshot", "normals", "stream", "outlines", "kang", "accuracy", "cold")
 
-_PEER_SETUP = """
-import json, os, sys, time, statistics
-import numpy as np
-from toonmesh import _core
-size, subdiv, repeat = int(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3])
-V, F = _core.icosphere(subdiv, 0.02, 1)
-def median(fn):
-    fn()
-    ts = []
-    for _ in range(max(1, repeat)):
-        t = time.perf_counter(); fn(); ts.append(time.perf_counter() - t)
-    return statistics.median(ts)
-"""
-
-_PYRENDER = _PEER_SETUP + """
-import trimesh, pyrender
-mesh = pyrender.Mesh.from_trimesh(trimesh.Trimesh(V, F, process=False), smooth=True)
-scene = pyrender.Scene(ambient_light=[0.1, 0.1, 0.1])
-scene.add(mesh)
-pose = np.eye(4); pose[:3, 3] = %(eye)r
-scene.add(pyrender.PerspectiveCamera(yfov=np.radians(%(fov)r), aspectRatio=1.0), pose=pose)
-scene.add(pyrender.DirectionalLight(intensity=3.0), pose=pose)
-r = pyrender.OffscreenRenderer(size, size)
-color_depth = median(lambda: r.render(scene))
-print(json.dumps({"color+depth": color_depth}))
-""" % {"eye": EYE, "fov": FOV_Y}
-
-_PYVISTA = _PEER_SETUP + """
-import pyvista as pv
-faces = np.hstack([np.full((len(F), 1), 3), F]).ravel()
-pl = pv.Plotter(off_screen=True, window_size=(size, size))
-pl.add_mesh(pv.PolyData(V, faces), smooth_shading=True, color="orange")
-pl.camera.position = %(eye)r; pl.camera.focal_point = (0, 0, 0); pl.camera.up = (0, 1, 0)
-pl.camera.view_angle = %(fov)r
-def color():
-    pl.render(); pl.screenshot(return_img=True)
-def color_depth():
-    pl.render(); pl.screenshot(return_img=True); pl.get_image_depth()
-print(json.dumps({"color": median(color), "color+depth": median(color_depth)}))
-""" % {"eye": EYE, "fov": FOV_Y}
+# A frame kind: (label, outputs, width, height)
+Frame = Tuple[str, str, int, int]
 
 
-def _peer(name: str, code: str, env_extra: Dict[str, str], size: int, subdiv: int, repeat: int) -> Dict[str, Any]:
-    env = dict(os.environ, **env_extra)
-    try:
-        out = subprocess.run(
-            [sys.executable, "-c", code, str(size), str(subdiv), str(repeat)],
-            env=env, capture_output=True, text=True, timeout=1800,
-        )
-    except subprocess.TimeoutExpired:
-        return {"error": "timed out"}
-    lines = [line for line in out.stdout.splitlines() if line.startswith("{")]
-    if out.returncode != 0 or not lines:
-        last = (out.stderr.strip().splitlines() or ["failed"])[-1]
-        return {"error": last[:70]}
-    return json.loads(lines[-1])
+def _frames(size: int, wide: Tuple[int, int]) -> List[Frame]:
+    w, h = wide
+    return [
+        (f"colour {size}x{size}", "color", size, size),
+        (f"colour {w}x{h}", "color", w, h),
+        (f"colour + depth {size}x{size}", "color+depth", size, size),
+    ]
 
 
-def _toonmesh_times(size: int, subdiv: int, repeat: int) -> List[Sequence[Any]]:
+def _outputs(kind: str) -> Tuple[str, ...]:
+    return ("color", "depth") if kind == "color+depth" else ("color",)
+
+
+class _Toonmesh:
+    """toonmesh as a contestant: one backend and material, the mesh uploaded once."""
+
+    def __init__(self, renderer: Any, mesh: Any, material: Any, shading: str):
+        import toonmesh as tm
+
+        self.name = f"toonmesh {renderer.backend}"
+        self.shading = shading
+        self.msaa = "none (msaa=1)"
+        self.info: Dict[str, Any] = {"renderer": renderer.info["name"].split(" (")[0]}
+        self._render = renderer.render
+        self._mesh = mesh
+        self._material = material
+        self._camera = tm.Camera.look_at(EYE, fov_y=FOV_Y)
+
+    def frame(self, kind: str, width: int, height: int) -> float:
+        t0 = time.perf_counter()
+        self._render(self._mesh, camera=self._camera, material=self._material, width=width, height=height,
+                     outputs=_outputs(kind))
+        return time.perf_counter() - t0
+
+
+class _Peer:
+    """A peer as a contestant (its worker process), or its reason for not taking part."""
+
+    SHADING = {"moderngl": "plain Lambert", "pyrender OSMesa": "pyrender default (PBR)",
+               "pyrender EGL": "pyrender default (PBR)", "PyVista": "VTK default (Phong)"}
+
+    def __init__(self, name: str, subdivisions: int):
+        self.name = name
+        self.shading = self.SHADING[name]
+        self._proc: Optional[_peers.PeerProcess] = None
+        if not _peers.installed(name):
+            self.info: Dict[str, Any] = {"error": "not installed"}
+        else:
+            self._proc = _peers.PeerProcess(name, subdivisions)
+            self.info = self._proc.info
+        self.msaa = self.info.get("msaa", "")
+
+    def frame(self, kind: str, width: int, height: int) -> float:
+        return self._proc.frame(kind, width, height) if self._proc is not None else float("nan")
+
+    def close(self) -> None:
+        if self._proc is not None:
+            self._proc.close()
+
+
+def _side_by_side(contestants: Sequence[Any], frames: Sequence[Frame], repeat: int) -> Dict[Tuple[str, str, str], float]:
+    """Median seconds per (name, shading, frame label): the contestants take turns frame by
+    frame (after one warm-up frame each, per frame kind, which also sizes their targets)."""
+    times: Dict[Tuple[str, str, str], List[float]] = {}
+    for label, kind, w, h in frames:
+        for c in contestants:
+            c.frame(kind, w, h)
+        for _ in range(max(1, repeat)):
+            for c in contestants:
+                times.setdefault((c.name, c.shading, label), []).append(c.frame(kind, w, h))
+    return {k: float(np.median(v)) for k, v in times.items()}
+
+
+def _frame_tables(subdiv: int, frames: Sequence[Frame], repeat: int, skip_peers: bool) -> None:
     import toonmesh as tm
-    from toonmesh import _core
 
-    V, F = _core.icosphere(subdiv, 0.02, 1)
-    rows = []
-    cam = tm.Camera.look_at(EYE, fov_y=FOV_Y)
+    V, F = tm.shapes.icosphere(subdiv)
+    ours: List[_Toonmesh] = []
+    missing: List[Tuple[str, str]] = []
     for backend in ("vulkan", "gl"):
         try:
             r = tm.Renderer(backend)
         except tm.GpuUnavailableError as e:
-            rows.append((f"toonmesh {backend}", "unavailable", str(e)[:60]))
+            missing.append((f"toonmesh {backend}", str(e).splitlines()[0][:80]))
             continue
-        t0 = time.perf_counter()
         mesh = r.add_mesh(V, F)
-        upload = time.perf_counter() - t0
-        name = f"toonmesh {backend} ({r.info['name'].split(' (')[0]})"
-        for label, outputs in (("bands colour", ("color",)), ("bands colour+depth", ("color", "depth"))):
-            t = median_time(lambda: r.render(mesh, camera=cam, width=size, height=size, outputs=outputs), repeat=repeat)
-            rows.append((name, label, t))
-        # Outlines on the same sphere without noise: its lines are the rim. (On the noisy
-        # sphere nearly every edge is a crease at 30 degrees, so mesh-space lines draw about two
-        # million strips: see the README.)
-        smooth = r.add_mesh(*_core.icosphere(subdiv, 0.0, 1))
-        for label, outlines in (("smooth sphere: bands colour", None), ("  + mesh outlines", "mesh"),
-                                ("  + image outlines", "image"), ("  + both outlines", "both")):
-            t = median_time(lambda: r.render(smooth, camera=cam, width=size, height=size, outlines=outlines), repeat=repeat)
-            rows.append((name, label, t))
-        r.remove_mesh(smooth)
-        rows.append((f"toonmesh {backend}", "upload (once)", upload))
-        # What each normal mode costs to upload: "auto" on the smooth sphere splits nothing, on
-        # the noisy one (nearly every edge a crease at 30 degrees) nearly every vertex.
-        for label, mesh_args, normals in (("smooth", (subdiv, 0.0, 1), "smooth"), ("flat", (subdiv, 0.0, 1), "flat"),
-                                          ("auto, smooth sphere", (subdiv, 0.0, 1), "auto"),
-                                          ("auto, noisy sphere", (subdiv, 0.02, 1), "auto")):
-            V2, F2 = _core.icosphere(*mesh_args)
-            t = median_time(lambda: r.remove_mesh(r.add_mesh(V2, F2, normals=normals)), repeat=repeat)
-            rows.append((f"toonmesh {backend}", f"upload, normals={label}", t))
+        ours.append(_Toonmesh(r, mesh, tm.Material.thresholded_phong(), "thresholded Phong"))
+        ours.append(_Toonmesh(r, mesh, tm.Material.lambert(), "Lambert"))
+    peers = [] if skip_peers else [_Peer(name, subdiv) for name in _peers.PEERS]
+    try:
+        running = [p for p in peers if "error" not in p.info]
+        medians = _side_by_side(ours + running, frames, repeat)
+    finally:
+        for p in peers:
+            p.close()
+    labels = [f[0] for f in frames]
+    rows: List[Sequence[Any]] = []
+    for c in ours + peers:
+        cells = [ms(medians[c.name, c.shading, lab]) if (c.name, c.shading, lab) in medians and
+                 np.isfinite(medians[c.name, c.shading, lab]) else c.info.get("error", "failed") for lab in labels]
+        rows.append((c.name, c.info.get("renderer", ""), c.shading, c.msaa, *cells))
+    rows += [(name, "", "", "", *[why] * len(labels)) for name, why in missing]
+    n_v, n_f = len(V), len(F)
+    print(table(["renderer", "device", "shading", "anti-aliasing", *labels], rows,
+                title=f"Frames: icosphere({subdiv}) = {n_v:,} vertices / {n_f:,} faces, uploaded once; "
+                      f"median of {repeat}, renderers in turns"))
+    # toonmesh's speed against each peer's: the peer's median over toonmesh's, per frame kind
+    ratio_rows = []
+    for p in peers:
+        for o in ours:
+            cells = []
+            for lab in labels:
+                peer = medians.get((p.name, p.shading, lab), float("nan"))
+                cells.append(f"{peer / medians[o.name, o.shading, lab]:.2f}x" if np.isfinite(peer) else p.info.get("error", "failed"))
+            ratio_rows.append((p.name, f"{o.name}, {o.shading}", *cells))
+    if ratio_rows:
+        print(table(["peer", "toonmesh", *labels], ratio_rows,
+                    title="toonmesh's speed-up over each peer (peer's median time / toonmesh's; above 1x toonmesh is faster)"))
+
+
+def _oneshot(subdiv: int, size: int, repeat: int) -> None:
+    """``tm.render(V, F)`` (upload, render, read back) against a frame of the mesh uploaded once,
+    taken in turns."""
+    import toonmesh as tm
+
+    V, F = tm.shapes.icosphere(subdiv)
+    cam = tm.Camera.look_at(EYE, fov_y=FOV_Y)
+    mat = tm.Material.thresholded_phong()
+    rows = []
+    for backend in ("vulkan", "gl"):
+        try:
+            r = tm.Renderer(backend)
+        except tm.GpuUnavailableError:
+            continue
+        kw = dict(camera=cam, material=mat, width=size, height=size)
+        uploads, oneshots, steady = [], [], []
+        tm.render(V, F, backend=backend, **kw)  # warm-up
+        for _ in range(max(1, repeat)):
+            t0 = time.perf_counter()
+            mesh = r.add_mesh(V, F)
+            uploads.append(time.perf_counter() - t0)
+            t0 = time.perf_counter()
+            r.render(mesh, **kw)
+            steady.append(time.perf_counter() - t0)
+            r.remove_mesh(mesh)
+            t0 = time.perf_counter()
+            tm.render(V, F, backend=backend, **kw)
+            oneshots.append(time.perf_counter() - t0)
+        o, s, u = (float(np.median(x)) for x in (oneshots, steady, uploads))
+        rows.append((f"toonmesh {backend}", ms(u), ms(s), ms(o), f"{o / s:.2f}x"))
+    print(table(["renderer", "upload (add_mesh)", "frame, mesh uploaded", "one-shot tm.render", "one-shot / frame"], rows,
+                title=f"One-shot render of icosphere({subdiv}) ({20 * 4**subdiv:,} faces) at {size}x{size}, "
+                      f"thresholded Phong, upload included; median of {repeat}"))
+
+
+def _normal_uploads(subdiv: int, repeat: int) -> None:
+    """``Renderer.add_mesh`` with each normal mode, taken in turns: ``"auto"`` on the smooth
+    sphere splits no vertex, on the noisy one (nearly every edge a crease at 30 degrees) nearly
+    every one."""
+    import toonmesh as tm
+
+    meshes = {"smooth": tm.shapes.icosphere(subdiv), "noisy": tm.shapes.icosphere(subdiv, noise=0.02, seed=1)}
+    kinds = [("smooth", "smooth", "smooth"), ("flat", "smooth", "flat"), ("auto, nothing splits", "smooth", "auto"),
+             ("auto, nearly all split", "noisy", "auto")]
+    rows = []
+    for backend in ("vulkan", "gl"):
+        try:
+            r = tm.Renderer(backend)
+        except tm.GpuUnavailableError:
+            continue
+        times: Dict[str, List[float]] = {label: [] for label, _, _ in kinds}
+        for k in range(max(1, repeat) + 1):  # the first round warms up
+            for label, mesh, normals in kinds:
+                t0 = time.perf_counter()
+                r.remove_mesh(r.add_mesh(*meshes[mesh], normals=normals))
+                if k:
+                    times[label].append(time.perf_counter() - t0)
+        rows.append((f"toonmesh {backend}", *(ms(float(np.median(times[label]))) for label, _, _ in kinds)))
+    print(table(["renderer", *(f"normals={label}" for label, _, _ in kinds)], rows,
+                title=f"Uploads of icosphere({subdiv}) ({20 * 4**subdiv:,} faces) by normal mode; median of {repeat}"))
+
+
+def _stream(views: int, size: int, repeat: int) -> None:
+    """``render_many`` of a turntable against as many ``render`` calls, in turns."""
+    import toonmesh as tm
+    from toonmesh.data import bunny
+
+    V, F = bunny()
+    cams = [tm.Camera.fit((np.sin(a), 0.3, np.cos(a))) for a in np.linspace(0, 2 * np.pi, views, endpoint=False)]
+    rows = []
+    for backend in ("vulkan", "gl"):
+        try:
+            r = tm.Renderer(backend)
+        except tm.GpuUnavailableError:
+            continue
+        mesh = r.add_mesh(V, F)
+        kw = dict(width=size, height=size)
+        one = lambda: [r.render(mesh, camera=c, **kw) for c in cams]  # noqa: E731
+        many = lambda: r.render_many(mesh, cams, **kw)  # noqa: E731
+        one()
+        many()
+        t_one, t_many = [], []
+        for _ in range(max(1, repeat)):
+            t_one.append(median_time(one, repeat=1, warmup=0))
+            t_many.append(median_time(many, repeat=1, warmup=0))
+        a, b = float(np.median(t_one)), float(np.median(t_many))
+        rows.append((f"toonmesh {backend}", f"{views / a:.1f}", f"{views / b:.1f}", f"{a / b:.2f}x"))
         r.remove_mesh(mesh)
-    return rows
+    print(table(["renderer", f"{views} render calls (frames/s)", f"render_many of {views} views (frames/s)", "throughput ratio"],
+                rows, title=f"Streams of views: the bunny ({len(F):,} faces) at {size}x{size}, a turntable; median of {repeat}"))
+
+
+def _outline_cost(subdiv: int, size: int, repeat: int) -> None:
+    """Outlines on the sphere (its lines are the rim), each variant in turns with the plain frame."""
+    import toonmesh as tm
+
+    V, F = tm.shapes.icosphere(subdiv)
+    cam = tm.Camera.look_at(EYE, fov_y=FOV_Y)
+    rows = []
+    for backend in ("vulkan", "gl"):
+        try:
+            r = tm.Renderer(backend)
+        except tm.GpuUnavailableError:
+            continue
+        mesh = r.add_mesh(V, F)
+        kw = dict(camera=cam, width=size, height=size)
+        for outlines in ("mesh", "image", "both"):
+            with_, without = [], []
+            r.render(mesh, outlines=outlines, **kw)
+            for _ in range(max(1, repeat)):
+                with_.append(median_time(lambda: r.render(mesh, outlines=outlines, **kw), repeat=1, warmup=0))
+                without.append(median_time(lambda: r.render(mesh, **kw), repeat=1, warmup=0))
+            t, t0 = float(np.median(with_)), float(np.median(without))
+            rows.append((f"toonmesh {backend}", f"outlines={outlines!r}", ms(t0), ms(t), f"{(t - t0) * 1e3:+.1f} ms"))
+        r.remove_mesh(mesh)
+    print(table(["renderer", "outlines", "frame without", "frame with", "cost"], rows,
+                title=f"What outlines cost: icosphere({subdiv}) at {size}x{size}, bands colour; median of {repeat}, in turns"))
+
+
+# Kang, Kim and Yoon (2001): frames per second of their software renderer on a Pentium III, as
+# ranges over their models: outlines only, outlines + toon shading, + shadows.
+KANG_PAPER_FPS = ("about 80", "60-69", "45-50")
+
+
+def _kang_models() -> List[Tuple[str, Any, int, float]]:
+    """(name, (V, F), the paper's face count, crease angle in degrees)."""
+    from toonmesh import shapes
+
+    return [
+        ("donut", shapes.torus(), 450, 40.0),
+        ("chess piece", shapes.pawn(), 480, 50.0),
+        ("teapot", shapes.teapot(), 1024, 60.0),
+        ("sphere", shapes.uv_sphere(), 264, 40.0),
+    ]
+
+
+def kang_scene(V: np.ndarray, F: np.ndarray) -> Tuple[Tuple[np.ndarray, np.ndarray], np.ndarray, float]:
+    """A model on a floor: the floor quad (V, F) under the model, and the model's bounding
+    sphere (centre, radius), for cameras that frame the model."""
+    lo, hi = V.min(axis=0), V.max(axis=0)
+    centre = (lo + hi) / 2
+    radius = float(np.linalg.norm(hi - lo) / 2)
+    half = 2.5 * radius
+    floor_v = np.array([[-half, 0, -half], [half, 0, -half], [half, 0, half], [-half, 0, half]]) + [centre[0], lo[1], centre[2]]
+    floor_f = np.array([[0, 2, 1], [0, 3, 2]])
+    return (floor_v, floor_f), centre, radius
+
+
+KANG_LIGHT = (1.0, -1.2, -0.3)  # the direction the light travels: the shadow falls beside the model
+KANG_SMALL_MAP = 512  # a shadow map nearer the paper's frame than the default 2048 x 2048
+
+
+def _kang(width: int, height: int, views: int, repeat: int) -> None:
+    """Each model with a floor, in three stages like the paper's table, as frames per second
+    over a turntable of ``views`` (``render_many``), median of ``repeat`` turns."""
+    import toonmesh as tm
+
+    rows = []
+    for backend in ("vulkan", "gl"):
+        try:
+            r = tm.Renderer(backend)
+        except tm.GpuUnavailableError:
+            continue
+        for name, (V, F), paper_faces, crease in _kang_models():
+            (floor_v, floor_f), centre, radius = kang_scene(V, F)
+            scene = [tm.Mesh(r.add_mesh(V, F), material=tm.Material.lut(tm.kang_table(), "#4a90d9")),
+                     tm.Mesh(r.add_mesh(floor_v, floor_f), material=tm.Material.lut(tm.kang_table(), "#d8d0c0"))]
+            distance = radius / np.sin(np.radians(20.0)) * 1.1
+            cams = [tm.Camera.look_at(centre + distance * np.array([np.sin(a), 0.6, np.cos(a)]) / np.sqrt(1.36),
+                                      target=centre, fov_y=40.0) for a in np.linspace(0, 2 * np.pi, views, endpoint=False)]
+            ink = tm.Outlines("mesh", crease_angle=crease)
+            plain = tm.Light.directional(KANG_LIGHT)
+            shadowed = tm.Light.directional(KANG_LIGHT, shadows=True)
+            small_map = tm.Light.directional(KANG_LIGHT, shadows=tm.Shadows(size=KANG_SMALL_MAP))
+            stages = [
+                dict(outputs="outline", outlines=ink, lights=[plain]),
+                dict(outputs="color", outlines=ink, lights=[plain]),
+                dict(outputs="color", outlines=ink, lights=[shadowed]),
+                dict(outputs="color", outlines=ink, lights=[small_map]),
+            ]
+            fps: List[List[float]] = [[] for _ in stages]
+            for kw in stages:
+                r.render_many(scene, cams[:2], width=width, height=height, **kw)  # warm-up
+            for _ in range(max(1, repeat)):
+                for k, kw in enumerate(stages):
+                    t0 = time.perf_counter()
+                    r.render_many(scene, cams, width=width, height=height, **kw)
+                    fps[k].append(views / (time.perf_counter() - t0))
+            for item in scene:
+                r.remove_mesh(item.handle)
+            rows.append((name, f"{len(F):,} ({paper_faces:,})", f"toonmesh {backend}",
+                         *[f"{statistics.median(f):.0f} fps" for f in fps]))
+    rows.append(("the paper's four models", "264-1,024", "Kang et al. 2001, Pentium III",
+                 *[f"{x} fps" for x in KANG_PAPER_FPS], f"{KANG_PAPER_FPS[-1]} fps"))
+    map_size = tm.Shadows().size
+    print(table(["model", "faces (paper)", "renderer", "outlines only", "+ toon (lookup table)",
+                 f"+ shadows ({map_size}x{map_size} map, the default)", f"+ shadows ({KANG_SMALL_MAP}x{KANG_SMALL_MAP} map)"], rows,
+                title=f"Kang, Kim and Yoon's scenes at {width}x{height}: each model on a floor, mesh outlines, "
+                      f"toon shading through the paper's table, shadow map; a turntable of {views} views "
+                      f"(render_many), median of {repeat}"))
 
 
 def _knobs(size: int, repeat: int) -> List[Sequence[Any]]:
@@ -191,7 +429,7 @@ def _outline_accuracy(sizes: Sequence[int], repeat: int) -> List[Sequence[Any]]:
             found = r.render(mesh, outputs="outline", outlines=outlines, **kw, **knob).outline > 0.5
             precision = float((found & _near(truth)).sum() / max(found.sum(), 1))
             recall = float((truth & _near(found)).sum() / max(truth.sum(), 1))
-            rows.append((f"{size}x{size}", label, f"{t * 1e3:.1f} ms", f"+{(t - t0) * 1e3:.1f} ms", precision, recall))
+            rows.append((f"{size}x{size}", label, f"{t * 1e3:.1f} ms", f"{(t - t0) * 1e3:+.1f} ms", precision, recall))
     return rows
 
 
@@ -213,10 +451,32 @@ def _cold_start(size: int) -> Dict[str, float]:
 
 def _options(quick: bool, extra: Sequence[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser(prog="python -m toonmesh.bench render")
-    parser.add_argument("--size", type=int, default=256 if quick else 1024)
+    parser.add_argument("--size", type=int, default=256 if quick else 1024, help="the square frame's side")
+    parser.add_argument("--wide", type=_size, default=(320, 180) if quick else (1920, 1080), metavar="WxH",
+                        help="the wide frame")
     parser.add_argument("--subdivisions", type=int, default=5 if quick else 8)
     parser.add_argument("--skip-peers", action="store_true")
+    parser.add_argument("--only", type=_tables, default=TABLES, metavar="TABLE,...",
+                        help=f"run only these tables: {', '.join(TABLES)}")
     return parser.parse_args(list(extra))
+
+
+def _size(text: str) -> Tuple[int, int]:
+    try:
+        w, h = (int(x) for x in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected WxH, got {text!r}") from None
+    if w < 1 or h < 1:
+        raise argparse.ArgumentTypeError(f"expected WxH of at least 1x1, got {text!r}")
+    return w, h
+
+
+def _tables(text: str) -> Tuple[str, ...]:
+    names = tuple(t.strip() for t in text.split(",") if t.strip())
+    unknown = [n for n in names if n not in TABLES]
+    if unknown or not names:
+        raise argparse.ArgumentTypeError(f"expected some of {', '.join(TABLES)}, got {text!r}")
+    return names
 
 
 def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
@@ -241,28 +501,21 @@ def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) ->
 
 def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
     args = _options(quick, extra)
-    size, subdiv = args.size, args.subdivisions
-    n_v, n_f = 10 * 4**subdiv + 2, 20 * 4**subdiv
-    print(f"# Rendering: icosphere({subdiv}) = {n_v:,} vertices / {n_f:,} faces, {size}x{size}, median of {repeat}")
-    rows: List[Sequence[Any]] = list(_toonmesh_times(size, subdiv, repeat))
-    peers: Dict[str, Dict[str, Any]] = {}
-    if not args.skip_peers:
-        peers["pyrender EGL"] = _peer("pyrender EGL", _PYRENDER, {"PYOPENGL_PLATFORM": "egl"}, size, subdiv, repeat)
-        peers["pyrender OSMesa"] = _peer("pyrender OSMesa", _PYRENDER, {"PYOPENGL_PLATFORM": "osmesa"}, size, subdiv, repeat)
-        peers["PyVista"] = _peer("PyVista", _PYVISTA, {}, size, subdiv, repeat)
-    for name, res in peers.items():
-        if "error" in res:
-            rows.append((name, "unavailable", res["error"]))
-        else:
-            for what, t in res.items():
-                rows.append((name, f"plain {what}", t))
-    base = next((p["color+depth"] for k, p in peers.items() if k == "pyrender EGL" and "color+depth" in p), None)
-    out_rows = []
-    for row in rows:
-        t = row[2]
-        ratio = f"{base / t:.1f}x" if base and isinstance(t, float) and "upload" not in row[1] else ""
-        out_rows.append((row[0], row[1], f"{t * 1e3:.1f} ms" if isinstance(t, float) else t, ratio))
-    print(table(["renderer", "frame", "median time", "speed-up vs pyrender EGL colour+depth"], out_rows))
-    accuracy(quick, repeat, extra)
-    cold = _cold_start(512)
-    print(table(["cold start (fresh process, bunny 512x512 to PNG)", "seconds"], [(k, v) for k, v in cold.items()]))
+    size, subdiv, only = args.size, args.subdivisions, args.only
+    if "frames" in only:
+        _frame_tables(subdiv, _frames(size, args.wide), repeat, args.skip_peers)
+    if "oneshot" in only:
+        _oneshot(subdiv, size, repeat)
+    if "normals" in only:
+        _normal_uploads(subdiv, repeat)
+    if "stream" in only:
+        _stream(10 if quick else 100, 128 if quick else 512, repeat)
+    if "outlines" in only:
+        _outline_cost(subdiv, size, repeat)
+    if "kang" in only:
+        _kang(320 if quick else 640, 240 if quick else 480, 6 if quick else 30, repeat)
+    if "accuracy" in only:
+        accuracy(quick, repeat, extra)
+    if "cold" in only:
+        cold = _cold_start(512)
+        print(table(["cold start (fresh process, bunny 512x512 to PNG)", "seconds"], [(k, v) for k, v in cold.items()]))

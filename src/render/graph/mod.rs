@@ -42,7 +42,59 @@ pub trait Pass: std::fmt::Debug + Send + Sync {
 pub struct DrawItem<'a> {
     pub mesh: &'a GpuMesh,
     pub uniform_offset: u32,
+    pub variant: ShadingVariant,
+}
+
+/// What a material needs compiled into the shading pipeline.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct ShadingVariant {
+    /// The shading model's id (`Model::id`).
+    pub model: u32,
     pub per_vertex: bool,
+    pub hatching: bool,
+    pub dither:
+        Option<(crate::render::scene::style::DitherPattern, crate::render::scene::style::DitherSpace)>,
+}
+
+impl ShadingVariant {
+    pub fn of(m: &crate::render::scene::material::Material) -> Self {
+        ShadingVariant {
+            model: m.model.id(),
+            per_vertex: m.per_vertex,
+            hatching: m.hatching.is_some(),
+            dither: m.dither.map(|d| (d.pattern, d.space)),
+        }
+    }
+
+    /// The variant as bits of a pipeline key.
+    pub fn bits(&self) -> u64 {
+        let (pattern, object) = match self.dither {
+            Some((p, s)) => (p as u64, (s == crate::render::scene::style::DitherSpace::Object) as u64),
+            None => (0, 0),
+        };
+        self.per_vertex as u64
+            | (self.hatching as u64) << 1
+            | pattern << 2
+            | object << 5
+            | (self.model as u64) << 6
+    }
+
+    /// The shader's pipeline constants.
+    pub fn constants(&self) -> [(&'static str, f64); 5] {
+        let (pattern, object) = match self.dither {
+            Some((p, s)) => {
+                (p as u32 as f64, (s == crate::render::scene::style::DitherSpace::Object) as u32 as f64)
+            }
+            None => (0.0, 0.0),
+        };
+        [
+            ("PER_VERTEX", self.per_vertex as u32 as f64),
+            ("HATCHING", self.hatching as u32 as f64),
+            ("DITHER", pattern),
+            ("DITHER_OBJECT", object),
+            ("MODEL", self.model as f64),
+        ]
+    }
 }
 
 /// The mesh-space lines of one mesh: a range of the frame's line instances.
@@ -61,6 +113,8 @@ pub struct FrameCtx<'a> {
     pub lines: &'a [LineDraw],
     /// Linear-light background colour and alpha.
     pub background: wgpu::Color,
+    /// The scene's number of lights.
+    pub lights: u32,
     /// How the shadow map is read, when a light casts shadows.
     pub shadow_filter: Option<crate::render::scene::shadows::ShadowFilter>,
 }

@@ -9,6 +9,8 @@
 use crate::error::{Error, Result};
 use crate::render::color::{scaled, to_linear, Srgb};
 
+use super::style::{Dither, Hatching};
+
 /// Largest lookup table (one uniform array on the GPU).
 pub const MAX_LUT: usize = 256;
 /// Most band thresholds.
@@ -101,6 +103,11 @@ pub struct Material {
     /// Shade the vertices and interpolate the colours (Gouraud, as the paper colours vertices)
     /// instead of shading every pixel.
     pub per_vertex: bool,
+    /// Cross-hatching: strokes of ink on the diffuse colour (paper), denser where the band is
+    /// darker. Bands only.
+    pub hatching: Option<Hatching>,
+    /// Dithering between neighbouring bands. Toon models only, shaded per pixel.
+    pub dither: Option<Dither>,
 }
 
 /// A 256-entry table with three levels, as Kang et al. map 256 intensities to 3 tones
@@ -129,6 +136,8 @@ impl Material {
             diffuse: scaled(color, SHADED_DIFFUSE),
             specular: [0.0; 3],
             per_vertex,
+            hatching: None,
+            dither: None,
         })
     }
 
@@ -145,6 +154,8 @@ impl Material {
             diffuse: scaled(color, SHADED_DIFFUSE),
             specular: specular.unwrap_or(PHONG_SPECULAR),
             per_vertex,
+            hatching: None,
+            dither: None,
         })
     }
 
@@ -168,6 +179,8 @@ impl Material {
             diffuse: scaled(color, TOON_DIFFUSE),
             specular: specular.unwrap_or(TOON_SPECULAR),
             per_vertex,
+            hatching: None,
+            dither: None,
         })
     }
 
@@ -187,6 +200,8 @@ impl Material {
             diffuse: color,
             specular: [0.0; 3],
             per_vertex,
+            hatching: None,
+            dither: None,
         })
     }
 
@@ -198,7 +213,29 @@ impl Material {
             diffuse: color,
             specular: [0.0; 3],
             per_vertex,
+            hatching: None,
+            dither: None,
         })
+    }
+
+    /// Borquez and Yepez's cross-hatching: the bands' tone picks how many stroke layers of
+    /// `hatching.ink` cover the paper colour `paper`.
+    pub fn hatching(
+        paper: Srgb,
+        thresholds: Option<Vec<f32>>,
+        values: Option<Vec<f32>>,
+        hatching: Hatching,
+        per_vertex: bool,
+    ) -> Result<Self> {
+        let mut m = Self::bands(paper, thresholds, values, per_vertex)?;
+        m.hatching = Some(hatching);
+        m.checked()
+    }
+
+    /// This material, dithered.
+    pub fn with_dither(mut self, dither: Option<Dither>) -> Result<Self> {
+        self.dither = dither;
+        self.checked()
     }
 
     fn checked(self) -> Result<Self> {
@@ -222,6 +259,28 @@ impl Material {
         check_color(&format!("{arg}.ambient"), self.ambient)?;
         check_color(&format!("{arg}.diffuse"), self.diffuse)?;
         check_color(&format!("{arg}.specular"), self.specular)?;
+        if let Some(h) = &self.hatching {
+            if !matches!(self.model, Model::Bands { .. }) {
+                return Err(Error::invalid(format!("{arg}.hatching"), "hatches only toon bands"));
+            }
+            h.validate(&format!("{arg}."))?;
+        }
+        if let Some(d) = &self.dither {
+            if !matches!(self.model, Model::Bands { .. } | Model::Lut { .. } | Model::ThresholdedPhong { .. })
+            {
+                return Err(Error::invalid(
+                    "dither",
+                    format!(
+                        "dithers toon bands only (bands, lut, thresholded_phong, hatching), not {}",
+                        self.model.name()
+                    ),
+                ));
+            }
+            if self.per_vertex {
+                return Err(Error::invalid("dither", "needs per-pixel shading (per_vertex=False)"));
+            }
+            d.validate("dither.")?;
+        }
         match &self.model {
             Model::Lambert => {}
             Model::Phong { shininess } => {

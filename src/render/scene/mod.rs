@@ -7,6 +7,7 @@ pub mod light;
 pub mod material;
 pub mod outlines;
 pub mod shadows;
+pub mod style;
 
 use glam::{DMat3, DMat4, DVec3};
 

@@ -93,4 +93,10 @@ impl Shadows {
     pub fn tolerance(&self) -> f64 {
         self.bias * self.filter.reach() / self.size as f64
     }
+
+    /// How far a receiver moves along its normal before the test, in the same units: half the
+    /// tolerance, which keeps surfaces the light grazes from shadowing themselves.
+    pub fn normal_offset(&self) -> f64 {
+        0.5 * self.tolerance()
+    }
 }

@@ -17,7 +17,7 @@ struct Frame {
     ink: array<vec4<f32>, INK_KINDS>,  // per ink kind: linear rgb, width in pixels (0: not drawn)
     lights: array<Light, MAX_LIGHTS>,   // the shadow-casting light, if any, first
     shadow: mat4x4<f32>,   // normalised view space -> the shadow-casting light's clip space
-    shadow_bias: vec4<f32>,  // x: depth tolerance per unit of receiver slope, y: the largest slope biased
+    shadow_bias: vec4<f32>,  // x: depth tolerance per unit of receiver slope, y: the largest slope biased, z: normal offset
 };
 
 struct Draw {
@@ -27,11 +27,13 @@ struct Draw {
     diffuse: vec4<f32>,
     specular: vec4<f32>,
     params: vec4<f32>,     // x: shininess, y: t_h, z: t_s
-    model: vec4<u32>,      // x: model id, y: highlight (0 paper, 1 blinn), z: thresholds, w: table length
+    model: vec4<u32>,      // x: model id (also the MODEL constant), y: highlight (0 paper, 1 blinn), z: thresholds, w: table length
     flags: vec4<u32>,      // x: 1 when the transform mirrors (flips the winding)
     thresholds: array<vec4<f32>, 2>,
     values: array<vec4<f32>, 3>,
     table: array<vec4<f32>, MAX_LUT>,
+    style: vec4<f32>,      // x: dither amount, y: dither cell (pixels), z: hatch spacing, w: hatch width (pixels)
+    ink: vec4<f32>,        // hatching ink, linear rgb
 };
 
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -39,6 +41,10 @@ struct Draw {
 
 // Gouraud: shade the vertices and interpolate (chosen per pipeline).
 override PER_VERTEX: bool = false;
+// The material's shading model and the scene's number of lights, fixed per pipeline so that the
+// shading code is specialised for them (as fast as a shader written for one model).
+override MODEL: u32 = 0u;
+override LIGHTS: u32 = 0u;
 
 struct VsIn {
     @location(0) position: vec3<f32>,
@@ -51,6 +57,9 @@ struct VsOut {
     @location(1) view_normal: vec3<f32>,
     @location(2) color_front: vec3<f32>,
     @location(3) color_back: vec3<f32>,
+    // the mesh's stored coordinates and normal: what hatching and dithering anchor to
+    @location(4) object_pos: vec3<f32>,
+    @location(5) object_normal: vec3<f32>,
 };
 
 fn unit_or_zero(v: vec3<f32>) -> vec3<f32> {
@@ -90,7 +99,7 @@ fn table_value(d: f32) -> vec3<f32> {
 
 // The diffuse factor of the material's model at d = N . L.
 fn diffuse_term(d: f32) -> vec3<f32> {
-    switch draw.model.x {
+    switch MODEL {
         case MODEL_LAMBERT, MODEL_PHONG: {
             return vec3<f32>(max(d, 0.0));
         }
@@ -108,7 +117,7 @@ fn diffuse_term(d: f32) -> vec3<f32> {
 
 // The specular factor of the material's model.
 fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
-    switch draw.model.x {
+    switch MODEL {
         case MODEL_PHONG: {
             let r = 2.0 * d * n - l;
             if (d > 0.0) {
@@ -133,18 +142,19 @@ fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
     }
 }
 
-// Linear colour of a point with unit view-space normal n at view-space position p.
-fn shade(n: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
+// Linear colour of a point with unit view-space normal n at view-space position p; `jitter`
+// moves L.n before it is banded (dithering).
+fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32) -> vec3<f32> {
     let v = view_dir(p);
     var c = frame.ambient.rgb * draw.ambient.rgb;
-    for (var k = 0u; k < frame.info.x; k++) {
+    for (var k = 0u; k < LIGHTS; k++) {
         let light = frame.lights[k];
         var l = light.position.xyz;
         if (light.position.w != 0.0) {
             l = normalize(light.position.xyz - p);
         }
         let d = dot(n, l);
-        var f = diffuse_term(d);
+        var f = diffuse_term(d + jitter);
         var s = specular_term(n, l, v, d);
         let lit = light_visibility(k, n, p, d);
         if (lit < 1.0) {
@@ -176,12 +186,14 @@ fn vs_main(v: VsIn) -> VsOut {
     o.clip = frame.proj * p;
     o.view_pos = p.xyz;
     o.view_normal = (draw.normal_matrix * vec4<f32>(v.normal, 0.0)).xyz;
+    o.object_pos = v.position;
+    o.object_normal = v.normal;
     o.color_front = vec3<f32>(0.0);
     o.color_back = vec3<f32>(0.0);
     if (PER_VERTEX) {
         let n = unit_or_zero(o.view_normal);
-        o.color_front = shade(n, p.xyz);
-        o.color_back = shade(-n, p.xyz);
+        o.color_front = shade(n, p.xyz, 0.0);
+        o.color_back = shade(-n, p.xyz, 0.0);
     }
     return o;
 }

@@ -7,7 +7,7 @@ use std::sync::Arc;
 use crate::error::Result;
 use crate::render::device::COLOR_FORMAT;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
-use crate::render::graph::{cleared, depth_buffer, geometry_clear, FrameCtx, Pass};
+use crate::render::graph::{cleared, depth_buffer, geometry_clear, FrameCtx, Pass, ShadingVariant};
 use crate::render::pipelines::target;
 use crate::render::scene::shadows::ShadowFilter;
 
@@ -37,13 +37,14 @@ impl Shade {
     fn pipeline(
         &self,
         f: &FrameCtx<'_>,
-        per_vertex: bool,
+        shading: ShadingVariant,
         shadows: Option<ShadowFilter>,
     ) -> Arc<wgpu::RenderPipeline> {
         let variant = self.samples as u64
-            | (per_vertex as u64) << 8
+            | shading.bits() << 16
             | (self.geometry.map_or(0, |g| 1 + g as u64)) << 9
-            | (shadows.map_or(0, |s| 1 + s as u64)) << 12;
+            | (shadows.map_or(0, |s| 1 + s as u64)) << 12
+            | (f.lights as u64) << 32;
         f.pipelines.get(("shade", variant), || {
             let module = match shadows {
                 None => f.pipelines.module(&f.dev.device, "shade", || crate::render::wgsl::source(WGSL)),
@@ -62,7 +63,8 @@ impl Shade {
                     }
                 }
             };
-            let mut constants = vec![("PER_VERTEX", if per_vertex { 1.0 } else { 0.0 })];
+            let mut constants = shading.constants().to_vec();
+            constants.push(("LIGHTS", f.lights as f64));
             let mut more = vec![];
             if let Some(filter) = shadows {
                 constants.extend(super::shadow::filter_constants(filter));
@@ -129,7 +131,7 @@ impl Pass for Shade {
         if let Some(filter) = shadows {
             pass.set_bind_group(2, &super::shadow::shadow_group(f, filter), &[]);
         }
-        f.draw_meshes(&mut pass, |d| self.pipeline(f, d.per_vertex, shadows));
+        f.draw_meshes(&mut pass, |d| self.pipeline(f, d.variant, shadows));
         Ok(())
     }
 }

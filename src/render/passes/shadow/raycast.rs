@@ -120,8 +120,8 @@ mod tests {
         corners.extend(sq(1.0, 0.5));
         let tris = Triangles::new(corners);
         // looking straight down from z = 5 with an orthographic box of half-size 2
-        let view = DMat4::look_at_rh(DVec3::new(0.0, 0.0, 5.0), DVec3::ZERO, DVec3::Y);
-        let proj = DMat4::orthographic_rh(-2.0, 2.0, -2.0, 2.0, 0.1, 10.0);
+        let view = DMat4::from_translation(DVec3::new(0.0, 0.0, -5.0));
+        let proj = crate::render::scene::camera::orthographic(2.0, 2.0, 0.1, 10.0);
         let vis = shadow_truth(&tris, proj * view, 8, 8, DVec3::Z);
         // the top square (lit) covers the centre 2x2 pixels; everything else is floor, lit
         assert!(vis.iter().all(|&v| v == 1.0));

@@ -1,7 +1,8 @@
 // The shadow test (Kang, Kim and Yoon's shadow z-buffer): a point is lit by the shadow-casting
 // light (always light 0, see `shader_lights`) when its depth from the light is at most the
-// shadow map's, less a tolerance that grows with the receiver's slope to the light (so that a
-// lit surface does not shadow itself). A surface facing away from the light is in its own
+// shadow map's, less a tolerance that grows with the receiver's slope to the light, the point
+// first moved off the surface along its normal (so that a lit surface does not shadow itself,
+// even where the light grazes it). A surface facing away from the light is in its own
 // shadow. `raycast.rs` holds the truth this is measured against.
 
 // Percentage-closer filtering: 3x3 bilinear comparisons; otherwise one nearest test.
@@ -18,7 +19,7 @@ fn light_visibility(k: u32, n: vec3<f32>, p: vec3<f32>, d: f32) -> f32 {
     if (d <= 0.0) {
         return 0.0;
     }
-    let q = frame.shadow * vec4<f32>(p, 1.0);
+    let q = frame.shadow * vec4<f32>(p + n * frame.shadow_bias.z, 1.0);
     let uv = vec2<f32>(q.x * 0.5 + 0.5, 0.5 - q.y * 0.5);
     let slope = min(sqrt(max(1.0 - d * d, 0.0)) / d, frame.shadow_bias.y);
     let z = q.z - frame.shadow_bias.x * (1.0 + slope);
