@@ -1,5 +1,5 @@
 """Draws docs/normals.png: the three normal modes (rows: ``"smooth"``, ``"flat"``, ``"auto"``) on
-a box, a chess pawn turned on a lathe, the fandisk CAD part and the bunny, with toon bands.
+a box, a chess pawn (``shapes.pawn``), the fandisk CAD part and the bunny, with toon bands.
 Smooth shading bends the bands across the box's edges and the pawn's rims, flat shading facets
 the curved parts, and auto keeps both right; on the bunny auto is close to smooth. Needs trimesh
 to read the OBJ file. Run from the repository root: ``python docs/normals_figure.py``.
@@ -23,31 +23,11 @@ def box():
     return V, np.array([t for q in quads for t in ([q[0], q[1], q[2]], [q[0], q[2], q[3]])])
 
 
-def pawn(segments=48):
-    """A chess pawn: (radius, height) points revolved about y, closed at both ends."""
-    profile = [(0.50, 0.00), (0.50, 0.10), (0.42, 0.16), (0.30, 0.22), (0.20, 0.35), (0.16, 0.55),
-               (0.15, 0.62), (0.28, 0.64), (0.28, 0.68), (0.14, 0.70)]
-    profile += [(max(0.2 * np.cos(t), 1e-3), 0.88 + 0.2 * np.sin(t)) for t in np.arcsin(np.linspace(-0.85, 1.0, 14))]
-    prof = np.array(profile)
-    a = np.linspace(0.0, 2 * np.pi, segments, endpoint=False)
-    V = [[r * np.cos(t), y, -r * np.sin(t)] for r, y in prof for t in a]
-    F = []
-    for k in range(len(prof) - 1):
-        for s in range(segments):
-            p, q = k * segments + s, k * segments + (s + 1) % segments
-            F += [[p, q, q + segments], [p, q + segments, p + segments]]
-    bottom, top, last = len(V), len(V) + 1, (len(prof) - 1) * segments
-    V += [[0.0, prof[0, 1], 0.0], [0.0, prof[-1, 1], 0.0]]
-    for s in range(segments):
-        F += [[bottom, (s + 1) % segments, s], [top, last + s, last + (s + 1) % segments]]
-    return np.array(V), np.array(F)
-
-
 def main() -> None:
     fandisk = trimesh.load(ROOT / "tests/data/meshes/fandisk.obj", process=False)
     models = [
         (box(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
-        (pawn(), tm.Camera.fit((0.0, 0.35, 1.0)), "#e8c07a"),
+        (tm.shapes.pawn(48), tm.Camera.fit((0.0, 0.35, 1.0)), "#e8c07a"),
         ((np.asarray(fandisk.vertices), np.asarray(fandisk.faces)), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (bunny(), tm.Camera.fit((0.35, 0.3, 1.0)), "#f08a3c"),
     ]

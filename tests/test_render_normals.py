@@ -24,37 +24,10 @@ def box() -> Tuple[np.ndarray, np.ndarray]:
     return V, np.array([t for q in quads for t in ([q[0], q[1], q[2]], [q[0], q[2], q[3]])])
 
 
-def lathe(profile: Any, segments: int) -> Tuple[np.ndarray, np.ndarray]:
-    """A solid of revolution about y from (radius, height) points, bottom to top, closed by a
-    fan at each end: a cylinder, a chess piece."""
-    prof = np.asarray(profile, float)
-    a = np.linspace(0.0, 2 * np.pi, segments, endpoint=False)
-    V = [[r * np.cos(t), y, -r * np.sin(t)] for r, y in prof for t in a]
-    F = []
-    for k in range(len(prof) - 1):
-        for s in range(segments):
-            p, q = k * segments + s, k * segments + (s + 1) % segments
-            F += [[p, q, q + segments], [p, q + segments, p + segments]]
-    bottom, top, last = len(V), len(V) + 1, (len(prof) - 1) * segments
-    V += [[0.0, prof[0, 1], 0.0], [0.0, prof[-1, 1], 0.0]]
-    for s in range(segments):
-        F += [[bottom, (s + 1) % segments, s], [top, last + s, last + (s + 1) % segments]]
-    return np.array(V), np.array(F)
-
-
 def cylinder(segments: int = 48, rows: int = 4) -> Tuple[np.ndarray, np.ndarray]:
-    return lathe([(0.5, y) for y in np.linspace(-0.5, 0.5, rows + 1)], segments)
-
-
-def torus(n: int = 64, m: int = 32) -> Tuple[np.ndarray, np.ndarray]:
-    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, n, endpoint=False), np.linspace(0, 2 * np.pi, m, endpoint=False),
-                       indexing="ij")
-    V = np.stack([(1 + 0.35 * np.cos(v)) * np.cos(u), 0.35 * np.sin(v), (1 + 0.35 * np.cos(v)) * np.sin(u)], -1)
-    i, j = np.meshgrid(np.arange(n), np.arange(m), indexing="ij")
-    a, b = i * m + j, ((i + 1) % n) * m + j
-    c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
-    F = np.concatenate([np.stack([a, d, c], -1).reshape(-1, 3), np.stack([a, c, b], -1).reshape(-1, 3)])
-    return V.reshape(-1, 3), F
+    """A closed cylinder: a side of `rows` rows between two flat caps (fans from the poles)."""
+    side = [(0.5, y) for y in np.linspace(-0.5, 0.5, rows + 1)]
+    return tm.shapes.lathe([(0.0, -0.5), *side, (0.0, 0.5)], segments=segments)
 
 
 def shade(V: np.ndarray, F: np.ndarray, normals: Any, camera: tm.Camera = CAMERA) -> tm.RenderResult:
@@ -102,7 +75,8 @@ def test_a_cube_shades_one_band_a_face_with_auto_and_not_with_smooth():
 
 
 def test_a_smooth_sphere_and_torus_shade_as_smooth_bit_for_bit():
-    for V, F in (tm.shapes.icosphere(3), tm.shapes.icosphere(2, noise=0.005, seed=4), torus()):
+    for V, F in (tm.shapes.icosphere(3), tm.shapes.icosphere(2, noise=0.005, seed=4),
+                 tm.shapes.torus(segments=64, tube_segments=32)):
         smooth, auto = shade(V, F, "smooth"), shade(V, F, "auto")
         assert np.array_equal(smooth.color, auto.color)
         assert np.array_equal(smooth.normal, auto.normal)
