@@ -936,7 +936,27 @@ MESHES = Array(
 BACKEND = Name(
     ("auto", "vulkan", "gl", "vk", "opengl", "gles", "egl", " vulkan "), any_case=True, empty=OK
 )
-NORMALS = Name(("smooth", "flat"))
+NORMALS = Name(
+    ("smooth", "flat", "auto"),
+    more=(
+        ("auto 45", ("auto", 45), OK),
+        ("auto 0", ("auto", 0), OK),
+        ("auto 180", ("auto", 180.0), OK),
+        ("auto numpy", ("auto", np.float32(20)), OK),
+        ("auto -1", ("auto", -1), ValueError),
+        ("auto 181", ("auto", 181), ValueError),
+        ("auto nan", ("auto", float("nan")), ValueError),
+        ("auto inf", ("auto", float("inf")), ValueError),
+        ("auto huge int", ("auto", 10**400), ValueError),
+        ("smooth with an angle", ("smooth", 30), ValueError),
+        ("auto string angle", ("auto", "45"), TypeError),
+        ("auto bool angle", ("auto", True), TypeError),
+        ("auto none angle", ("auto", None), TypeError),
+        ("auto alone", ("auto",), TypeError),
+        ("auto three", ("auto", 30, 1), TypeError),
+        ("auto list", ["auto", 45], TypeError),
+    ),
+)
 PIXELS = Integer(1, GPU["max_texture_size"])
 MSAA = Integer(1, 4, only=tuple(n for n in (1, 4) if n in GPU["msaa_samples"]))
 SUPERSAMPLE = Integer(1, 4)

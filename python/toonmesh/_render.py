@@ -12,7 +12,7 @@ from __future__ import annotations
 import contextlib
 import os
 import threading
-from typing import Any, Dict, Iterator, List, Optional, Sequence
+from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -20,13 +20,14 @@ from toonmesh import _core
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Shadows, kang_table
 from toonmesh._input import mesh_arrays
 
-_NORMAL_MODES = ("smooth", "flat")
+#: A normal mode: ``"smooth"``, ``"flat"``, ``"auto"`` or ``("auto", crease angle in degrees)``.
+Normals = Union[str, Tuple[str, float]]
 
 
 class MeshHandle:
     """A mesh uploaded to a :class:`Renderer` (see :meth:`Renderer.add_mesh`)."""
 
-    def __init__(self, renderer: "Renderer", mesh_id: int, n_vertices: int, n_faces: int, normals: str):
+    def __init__(self, renderer: "Renderer", mesh_id: int, n_vertices: int, n_faces: int, normals: Normals):
         self.renderer = renderer
         self.id = mesh_id
         self.n_vertices = n_vertices
@@ -43,8 +44,20 @@ class Mesh:
     ``vertices`` is an (N, 3) float32/float64 array with ``faces`` (M, 3) int32/int64/uint32, a
     ``trimesh.Trimesh`` (faces None), or a :class:`MeshHandle` already on a renderer's device.
     ``material``: a :class:`Material` (default: the render's ``material``). ``transform`` is a
-    4x4 affine model -> world matrix (row-major, applied to column vectors); ``normals`` is
-    ``"smooth"`` (area-weighted vertex normals, default) or ``"flat"`` (one per face).
+    4x4 affine model -> world matrix (row-major, applied to column vectors).
+
+    ``normals`` says how the surface is shaded between vertices:
+
+    - ``"smooth"`` (default): area-weighted vertex normals, interpolated across faces. Curved
+      surfaces look curved, and so do a box's edges (bands bend across its corners).
+    - ``"flat"``: one normal per face; curved surfaces show their facets.
+    - ``"auto"``: smooth, but with vertices split where faces meet at more than 30 degrees (the
+      crease angle of :class:`Outlines`, so shading breaks where crease lines are drawn) and at
+      boundary and non-manifold edges, as Blender's auto smooth does: boxes, chess pieces and
+      CAD parts get hard edges and smooth curved parts. ``("auto", degrees)`` sets the angle
+      (0 to 180). On a finely tessellated smooth mesh it gives the smooth normals bit for bit;
+      on a noisy scan (the bunny) it sharpens the few folds sharper than the angle, which is why
+      it is not the default.
     """
 
     def __init__(
@@ -54,7 +67,7 @@ class Mesh:
         *,
         material: Optional[Material] = None,
         transform: Optional[Any] = None,
-        normals: str = "smooth",
+        normals: Normals = "smooth",
     ):
         self.handle: Optional[MeshHandle] = vertices if isinstance(vertices, MeshHandle) else None
         if self.handle is not None:
@@ -68,15 +81,12 @@ class Mesh:
             raise TypeError(f"material: expected a toonmesh.Material, got {type(material).__name__}")
         self.material = material
         self.transform = _matrix("transform", transform)
-        self.normals = _normal_mode(normals)
+        self.normals: Normals = _normal_mode(normals)
 
 
-def _normal_mode(normals: Any) -> str:
-    if not isinstance(normals, str):
-        raise TypeError(f"normals: expected 'smooth' or 'flat', got {type(normals).__name__}")
-    if normals not in _NORMAL_MODES:
-        raise ValueError(f"normals: must be 'smooth' or 'flat', got {normals!r}")
-    return normals
+def _normal_mode(normals: Any) -> Normals:
+    """``normals`` checked by the core, in its shortest spelling (``("auto", 30)`` is ``"auto"``)."""
+    return _core._normal_mode(normals)  # type: ignore[no-any-return]
 
 
 def _matrix(name: str, value: Any) -> Optional[np.ndarray]:
@@ -259,10 +269,11 @@ class Renderer:
         """``"vulkan"`` or ``"gl"``."""
         return str(self.info["backend"])
 
-    def add_mesh(self, vertices: Any, faces: Any = None, *, normals: str = "smooth", smooth_iterations: int = 0) -> MeshHandle:
+    def add_mesh(self, vertices: Any, faces: Any = None, *, normals: Normals = "smooth", smooth_iterations: int = 0) -> MeshHandle:
         """Uploads a mesh ((N, 3) float32/float64 and (M, 3) int faces, or a trimesh.Trimesh).
 
-        ``normals``: ``"smooth"`` or ``"flat"``. ``smooth_iterations``: Laplacian smoothing
+        ``normals``: ``"smooth"`` (default), ``"flat"``, ``"auto"`` (split at edges sharper than
+        30 degrees) or ``("auto", degrees)``; see :class:`Mesh`. ``smooth_iterations``: Laplacian smoothing
         first (each vertex to the mean of its neighbours, n times), as in Al-Rousan et al.
         """
         iterations = _smoothing_iterations(smooth_iterations)
@@ -453,7 +464,7 @@ def render(
     *,
     material: Optional[Material] = None,
     transform: Optional[Any] = None,
-    normals: str = "smooth",
+    normals: Normals = "smooth",
     smooth_iterations: int = 0,
     camera: Optional[Camera] = None,
     lights: Any = None,
@@ -473,7 +484,9 @@ def render(
     ``trimesh.Trimesh``; or a :class:`Mesh` or list of them (each with its own material and
     transform); None for an empty scene. Inputs are never modified.
     ``material`` defaults to :meth:`Material.bands` (Borquez and Yepez's bands).
-    ``normals``: ``"smooth"`` or ``"flat"``. ``smooth_iterations``: Laplacian smoothing first
+    ``normals``: ``"smooth"`` (default), ``"flat"``, ``"auto"`` (split at edges sharper than 30
+    degrees: hard edges for boxes and CAD parts) or ``("auto", degrees)``; see :class:`Mesh`.
+    ``smooth_iterations``: Laplacian smoothing first
     (Al-Rousan et al.'s pipeline). ``outlines``: None, ``"mesh"``, ``"image"``, ``"both"`` or an
     :class:`Outlines`. Other arguments as in :meth:`Renderer.render`; ``backend`` as in
     :class:`Renderer`.

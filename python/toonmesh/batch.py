@@ -25,6 +25,7 @@ from typing import Any, Dict, List, Optional, Sequence
 import numpy as np
 
 from toonmesh._files import check_distinct_names, image_suffix, read_mesh, save_result, view_paths
+from toonmesh._render import Normals
 from toonmesh._views import check_views, turntable
 
 __all__ = ["render_file", "render_files"]
@@ -61,7 +62,7 @@ def render_views(
     backend: Optional[str] = None,
     smooth_iterations: int = 0,
     smooth_method: str = "paper",
-    normals: str = "smooth",
+    normals: Normals = "smooth",
     **render_options: Any,
 ) -> List[Dict[str, Any]]:
     """Renders one mesh file into ``files``, one view each (a turntable about ``up`` when there
@@ -115,7 +116,7 @@ def render_files(
     backend: Optional[str] = None,
     smooth_iterations: int = 0,
     smooth_method: str = "paper",
-    normals: str = "smooth",
+    normals: Normals = "smooth",
     **render_options: Any,
 ) -> List[Dict[str, Any]]:
     """Renders every mesh file in ``paths`` from ``views`` views on a Dask cluster.
@@ -136,7 +137,7 @@ def render_files(
             the renderer's own (each vertex to its neighbours' mean, as in
             :func:`toonmesh.render`), or ``"laplacian"``, ``"taubin"``, ``"hc"``, ``"implicit"``
             with that many iterations and their defaults.
-        normals: "smooth" or "flat".
+        normals: "smooth", "flat", "auto" or ("auto", degrees), as in :class:`toonmesh.Mesh`.
         **render_options: passed to :meth:`toonmesh.Renderer.render` for every view (``width``,
             ``height``, ``material``, ``lights``, ``outputs``, ``msaa``, ``supersample``,
             ``background``, ...; ``camera`` only with one view). Materials, cameras and lights

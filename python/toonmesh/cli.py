@@ -1,6 +1,6 @@
 """The command line: ``toonmesh`` (console script) and ``python -m toonmesh``.
 
-    toonmesh render MESH... -o OUT [--size WxH] [--style S] [--views N] [--up x|y|z] ...
+    toonmesh render MESH... -o OUT [--size WxH] [--style S] [--normals MODE] [--views N] [--up x|y|z] ...
     toonmesh smooth IN OUT [--method M] [--iterations N] [--preset P] [--weld]
     toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG]
     toonmesh bench smooth|edges|render|all [--quick] [--json FILE]
@@ -85,6 +85,19 @@ def _count(text: str) -> int:
     return n
 
 
+def _normals(text: str) -> Any:
+    """--normals: smooth, flat, auto, or auto:DEGREES (the angle is checked by the renderer)."""
+    name, sep, angle = text.partition(":")
+    if name in ("smooth", "flat", "auto") and not sep:
+        return name
+    if name == "auto" and sep:
+        try:
+            return ("auto", float(angle))
+        except ValueError:
+            pass
+    raise argparse.ArgumentTypeError(f"expected smooth, flat, auto or auto:DEGREES (e.g. auto:45), got {text!r}")
+
+
 def _outputs(text: str) -> List[str]:
     names = [n.strip() for n in text.split(",") if n.strip()]
     bad = [n for n in names if n not in ("color", "normal", "depth")]
@@ -161,7 +174,7 @@ def cmd_render(args: argparse.Namespace) -> int:
         for mesh, files in zip(args.meshes, targets):
             done = render_views(
                 mesh, files, up=args.up, backend=args.backend, smooth_iterations=args.smooth,
-                smooth_method=args.smooth_method, **options,
+                smooth_method=args.smooth_method, normals=args.normals, **options,
             )
             rows.extend(done)
             if bar is not None:
@@ -317,6 +330,9 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("--smooth", type=_count, default=0, metavar="N", help="smoothing iterations before rendering")
     p.add_argument("--smooth-method", choices=("paper",) + SMOOTH_METHODS, default="paper",
                    help="paper: each vertex to its neighbours' mean (the renderer's own); or a toonmesh.smooth method")
+    p.add_argument("--normals", type=_normals, default="smooth", metavar="MODE",
+                   help="smooth (default), flat (facets), or auto: hard edges where faces meet at more than "
+                        "30 degrees, for boxes and CAD parts (auto:DEG for another angle)")
     p.add_argument("--outputs", type=_outputs, default=["color"], metavar="LIST",
                    help="comma-separated: color, normal, depth (anything but color alone writes .npz)")
     # ranges are the renderer's to check (it knows the device)

@@ -39,6 +39,49 @@ pub fn check_crease_angle(degrees: f64) -> Result<()> {
     Ok(())
 }
 
+/// The crease rule on the unit normals of an edge's two faces: their dihedral angle exceeds
+/// the threshold (strictly). Shared by the crease outlines and the shading normals that split
+/// at creases (`mesh::crease_normals`), so both see the same edges.
+#[derive(Debug, Clone, Copy)]
+pub struct CreaseTest {
+    crease_angle: f64,
+    /// Cheap pre-test on n1 . n2 alone: a pair whose cosine is clearly above the threshold's
+    /// cannot be a crease (rounding in the dot product is ~1e-16, far below the slack), so
+    /// only the few survivors pay for the cross product and the exact atan2.
+    skip_above: f64,
+}
+
+impl CreaseTest {
+    /// The test for a threshold in degrees (checked as `crease_angle`).
+    pub fn new(crease_angle: f64) -> Result<Self> {
+        check_crease_angle(crease_angle)?;
+        Ok(CreaseTest { crease_angle, skip_above: crease_angle.to_radians().cos() + 1e-9 })
+    }
+
+    /// The dihedral angle in degrees and the convexity (see `dihedral`) when the faces meet at
+    /// a crease; `along()` (the direction the first face walks the edge) is only asked for then.
+    #[inline]
+    pub fn crease(
+        &self,
+        n1: [f64; 3],
+        n2: [f64; 3],
+        along: impl FnOnce() -> [f64; 3],
+    ) -> Option<(f64, bool)> {
+        let cos = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
+        if cos >= self.skip_above {
+            return None;
+        }
+        let (angle, convex) = dihedral(n1, n2, along());
+        (angle > self.crease_angle).then_some((angle, convex))
+    }
+
+    /// Whether the faces meet at a crease.
+    #[inline]
+    pub fn is_crease(&self, n1: [f64; 3], n2: [f64; 3]) -> bool {
+        self.crease(n1, n2, || [0.0; 3]).is_some()
+    }
+}
+
 /// The angle between two unit normals in degrees and whether the fold is convex, given the
 /// direction `along` in which the first face walks the edge.
 #[inline]
@@ -77,18 +120,12 @@ pub const PREFETCH_AHEAD: usize = 16;
 struct Classifier<'a, T> {
     positions: &'a [Vec3<T>],
     normals: &'a [[f64; 3]],
-    crease_angle: f64,
-    /// Cheap pre-test on n1 . n2 alone: a pair whose cosine is clearly above the threshold's
-    /// cannot be a crease (rounding in the dot product is ~1e-16, far below the slack), so
-    /// only the few survivors pay for the cross product and the exact atan2.
-    skip_above: f64,
+    test: CreaseTest,
 }
 
 impl<'a, T: Real> Classifier<'a, T> {
     fn new(positions: &'a [Vec3<T>], normals: &'a [[f64; 3]], crease_angle: f64) -> Result<Self> {
-        check_crease_angle(crease_angle)?;
-        let skip_above = crease_angle.to_radians().cos() + 1e-9;
-        Ok(Classifier { positions, normals, crease_angle, skip_above })
+        Ok(Classifier { positions, normals, test: CreaseTest::new(crease_angle)? })
     }
 
     #[inline]
@@ -100,21 +137,20 @@ impl<'a, T: Real> Classifier<'a, T> {
                 let Some((f1, f2, reversed)) = pair_with_normals(uses, normals) else {
                     return;
                 };
-                let (n1, n2) = (normals[f1 as usize], normals[f2 as usize]);
-                let cos = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
-                if cos >= self.skip_above {
-                    return;
-                }
-                let (pa, pb) = (self.positions[edge[0] as usize], self.positions[edge[1] as usize]);
-                let mut along = [0.0; 3];
-                for k in 0..3 {
-                    along[k] = pb[k].to_f64() - pa[k].to_f64();
-                    if reversed {
-                        along[k] = -along[k];
+                let along = || {
+                    let (pa, pb) = (self.positions[edge[0] as usize], self.positions[edge[1] as usize]);
+                    let mut along = [0.0; 3];
+                    for k in 0..3 {
+                        along[k] = pb[k].to_f64() - pa[k].to_f64();
+                        if reversed {
+                            along[k] = -along[k];
+                        }
                     }
-                }
-                let (angle, convex) = dihedral(n1, n2, along);
-                if angle > self.crease_angle {
+                    along
+                };
+                if let Some((angle, convex)) =
+                    self.test.crease(normals[f1 as usize], normals[f2 as usize], along)
+                {
                     out.crease.push(edge);
                     out.crease_angle.push(angle);
                     out.crease_convex.push(convex);

@@ -5,6 +5,7 @@
 pub mod adjacency;
 pub mod bounds;
 pub mod buckets;
+pub mod crease_normals;
 pub mod edge_table;
 pub mod input;
 pub mod normals;

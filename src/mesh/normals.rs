@@ -137,7 +137,8 @@ pub fn triangle_unit_normal<T: Real>(a: Vec3<T>, b: Vec3<T>, c: Vec3<T>) -> [f64
     unit_or_zero(cross(sub(b, a), sub(c, a)))
 }
 
-fn unit_or_zero(n: [f64; 3]) -> [f64; 3] {
+/// `n` normalised, or `[0, 0, 0]` when it has no length (or an infinite one).
+pub fn unit_or_zero(n: [f64; 3]) -> [f64; 3] {
     let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
     if l > 0.0 && l.is_finite() {
         [n[0] / l, n[1] / l, n[2] / l]

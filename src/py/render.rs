@@ -8,13 +8,14 @@ use numpy::{
     PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
-use pyo3::types::{PyBytes, PyDict, PyString};
+use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 
-use super::args::{integer, rgb, rgba, text, type_name};
+use super::args::{integer, number, rgb, rgba, text, type_name};
 use super::convert::{faces, positions, Positions};
 use super::errors::to_py;
 use super::runtime::{catching_panics, detached_cancellable};
 use super::scene::{PyCamera, PyLight, PyMaterial, PyOutlines};
+use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
 use crate::render::gpu_mesh::NormalMode;
 use crate::render::image_out::encode_png;
@@ -49,6 +50,45 @@ fn matrix<'py>(py: Python<'py>, m: [[f64; 4]; 4]) -> Bound<'py, PyAny> {
         .expect("16 values")
         .into_pyarray(py)
         .into_any()
+}
+
+/// `normals`: "smooth", "flat", "auto" (split at `DEFAULT_CREASE_ANGLE`) or ("auto", crease
+/// angle in degrees).
+fn normal_mode(obj: &Bound<'_, PyAny>) -> Result<NormalMode> {
+    if obj.is_instance_of::<PyString>() {
+        return NormalMode::parse("normals", &text("normals", obj)?);
+    }
+    if let Ok(pair) = obj.cast::<PyTuple>() {
+        if let (2, Ok(name)) = (pair.len(), pair.get_item(0).and_then(|n| n.extract::<String>())) {
+            if name != "auto" {
+                return Err(Error::invalid(
+                    "normals",
+                    format!("only 'auto' takes a crease angle, got ({name:?}, ...)"),
+                ));
+            }
+            let angle = pair.get_item(1).map_err(|e| Error::invalid("normals", e.to_string()))?;
+            return NormalMode::auto("normals", number("normals", &angle)?);
+        }
+    }
+    Err(Error::wrong_type(
+        "normals",
+        format!(
+            "expected 'smooth', 'flat', 'auto' or ('auto', crease angle in degrees), got {}",
+            type_name(obj)
+        ),
+    ))
+}
+
+/// _normal_mode(normals) -> str | (str, float): `normals` checked, in its shortest spelling
+/// ("auto" for ('auto', the default angle)).
+#[pyfunction]
+fn _normal_mode<'py>(py: Python<'py>, normals: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    Ok(match normal_mode(normals).map_err(to_py)? {
+        NormalMode::Auto { crease_angle } if crease_angle != DEFAULT_CREASE_ANGLE => {
+            ("auto", crease_angle).into_pyobject(py)?.into_any()
+        }
+        mode => PyString::new(py, mode.name()).into_any(),
+    })
 }
 
 /// A size in pixels, at least 1.
@@ -404,10 +444,7 @@ impl PyRenderer {
         normals: Obj<'_, '_>,
     ) -> PyResult<u64> {
         let (mode, p, f) = (|| {
-            let mode = match normals {
-                None => NormalMode::Smooth,
-                Some(n) => NormalMode::parse("normals", &text("normals", n)?)?,
-            };
+            let mode = normals.map_or(Ok(NormalMode::DEFAULT), normal_mode)?;
             let p = positions("vertices", vertices)?;
             let f = self::faces("faces", faces, p.len())?;
             Ok((mode, p, f))
@@ -614,6 +651,7 @@ fn _shadow_truth<'py>(
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_shadow_truth, m)?)?;
+    m.add_function(wrap_pyfunction!(_normal_mode, m)?)?;
     m.add_class::<PyRenderer>()?;
     m.add_function(wrap_pyfunction!(gpu_info, m)?)?;
     m.add_function(wrap_pyfunction!(encode_png_rgba, m)?)?;

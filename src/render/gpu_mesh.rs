@@ -9,34 +9,55 @@
 use rayon::prelude::*;
 use wgpu::util::DeviceExt;
 
+use crate::edges::feature::check_crease_angle;
+use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
+use crate::mesh::crease_normals::crease_normals;
 use crate::mesh::normals::{triangle_unit_normal, vertex_normals};
 use crate::mesh::Bounds;
 use crate::real::{Real, Vec3};
 
 use super::device::Device;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum NormalMode {
     /// Area-weighted vertex normals, interpolated across faces.
     Smooth,
     /// One normal per face (vertices are split so that faces do not share them).
     Flat,
+    /// Smooth, except across edges sharper than `crease_angle` degrees (and boundary and
+    /// non-manifold edges), where vertices are split (`mesh::crease_normals`): hard edges
+    /// shade hard, curved parts smooth.
+    Auto { crease_angle: f64 },
 }
 
 impl NormalMode {
+    /// The normals of a mesh given no mode.
+    pub const DEFAULT: NormalMode = NormalMode::Smooth;
+
+    /// A mode by name, as the argument `arg`; "auto" splits at `DEFAULT_CREASE_ANGLE`.
     pub fn parse(arg: &str, s: &str) -> Result<Self> {
         match s {
             "smooth" => Ok(Self::Smooth),
             "flat" => Ok(Self::Flat),
-            other => Err(Error::invalid(arg, format!("must be 'smooth' or 'flat', got {other:?}"))),
+            "auto" => Ok(Self::Auto { crease_angle: DEFAULT_CREASE_ANGLE }),
+            other => Err(Error::invalid(arg, format!("must be 'smooth', 'flat' or 'auto', got {other:?}"))),
         }
+    }
+
+    /// "auto" with a crease angle in degrees, checked as the argument `arg`.
+    pub fn auto(arg: &str, crease_angle: f64) -> Result<Self> {
+        check_crease_angle(crease_angle).map_err(|_| {
+            Error::invalid(arg, format!("the crease angle must be in [0, 180] degrees, got {crease_angle}"))
+        })?;
+        Ok(Self::Auto { crease_angle })
     }
 
     pub fn name(self) -> &'static str {
         match self {
             Self::Smooth => "smooth",
             Self::Flat => "flat",
+            Self::Auto { .. } => "auto",
         }
     }
 }
@@ -143,27 +164,46 @@ impl GpuMesh {
             .sqrt()
             * placement.scale;
         let f32s = |p: &[f64; 3]| p.map(|x| x as f32);
-        let vertices: Vec<Vertex> = match normals {
+        // The vertices, and the indices when vertices are shared (None: drawn as a list).
+        let (vertices, indices): (Vec<Vertex>, Option<Vec<[u32; 3]>>) = match normals {
             NormalMode::Smooth => {
                 let n = vertex_normals(&stored, &faces);
-                stored
+                let v = stored
                     .par_iter()
                     .zip(&n)
                     .map(|(p, n)| Vertex { position: f32s(p), normal: f32s(n) })
-                    .collect()
+                    .collect();
+                (v, None)
             }
-            NormalMode::Flat => faces
-                .par_iter()
-                .flat_map_iter(|f| {
-                    let [a, b, c] = f.map(|i| stored[i as usize]);
-                    let n = f32s(&triangle_unit_normal(a, b, c));
-                    [a, b, c].map(|p| Vertex { position: f32s(&p), normal: n })
-                })
-                .collect(),
+            NormalMode::Auto { crease_angle } => {
+                let split = crease_normals(&stored, &faces, crease_angle)?;
+                let v = split
+                    .source
+                    .par_iter()
+                    .zip(&split.normals)
+                    .map(|(&i, n)| Vertex { position: f32s(&stored[i as usize]), normal: f32s(n) })
+                    .collect();
+                (v, Some(split.faces))
+            }
+            NormalMode::Flat => {
+                let v = faces
+                    .par_iter()
+                    .flat_map_iter(|f| {
+                        let [a, b, c] = f.map(|i| stored[i as usize]);
+                        let n = f32s(&triangle_unit_normal(a, b, c));
+                        [a, b, c].map(|p| Vertex { position: f32s(&p), normal: n })
+                    })
+                    .collect();
+                (v, None)
+            }
         };
-        let indexed = normals == NormalMode::Smooth;
+        let indexed = !matches!(normals, NormalMode::Flat);
         let vertex_bytes: &[u8] = bytemuck::cast_slice(&vertices);
-        let index_bytes: &[u8] = if indexed { bytemuck::cast_slice(&faces) } else { &[] };
+        let index_bytes: &[u8] = match (&indices, indexed) {
+            (Some(split), _) => bytemuck::cast_slice(split),
+            (None, true) => bytemuck::cast_slice(&faces),
+            (None, false) => &[],
+        };
         let max = dev.limits.max_buffer_size;
         if vertex_bytes.len() as u64 > max || index_bytes.len() as u64 > max {
             return Err(Error::invalid(

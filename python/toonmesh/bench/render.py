@@ -9,15 +9,15 @@ process (thresholded Phong and Lambert, Vulkan and GL); each peer in a process o
 machine's load falls on each alike; each figure is the median of ``repeat`` frames after a
 warm-up frame. A peer that is not installed, or cannot start here, is reported as such.
 
-Then: one-shot ``tm.render`` (upload included) against a frame of a mesh already uploaded;
-``render_many`` of a turntable against as many ``render`` calls; what outlines add to a frame;
+Then: one-shot ``tm.render`` (upload included) against a frame of a mesh already uploaded; the
+upload of each normal mode (``"auto"`` splits vertices at creases); ``render_many`` of a turntable against as many ``render`` calls; what outlines add to a frame;
 Kang, Kim and Yoon's scenes (their four small models with outlines, toon shading and shadows at
 640x480, next to the paper's frames per second); the accuracy knobs and outline accuracy
 (:func:`accuracy`); and a fresh process from import to the first PNG.
 
 Options after the suite name: ``--size N`` (the square frame), ``--wide WxH``,
-``--subdivisions S``, ``--skip-peers``, ``--only TABLE,...`` (frames, oneshot, stream, outlines,
-kang, accuracy, cold).
+``--subdivisions S``, ``--skip-peers``, ``--only TABLE,...`` (frames, oneshot, normals, stream,
+outlines, kang, accuracy, cold).
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from toonmesh.bench._timing import median_time, ms, table
 
 EYE = _peers.EYE
 FOV_Y = _peers.FOV_Y
-TABLES = ("frames", "oneshot", "stream", "outlines", "kang", "accuracy", "cold")
+TABLES = ("frames", "oneshot", "normals", "stream", "outlines", "kang", "accuracy", "cold")
 
 # A frame kind: (label, outputs, width, height)
 Frame = Tuple[str, str, int, int]
@@ -197,6 +197,33 @@ def _oneshot(subdiv: int, size: int, repeat: int) -> None:
     print(table(["renderer", "upload (add_mesh)", "frame, mesh uploaded", "one-shot tm.render", "one-shot / frame"], rows,
                 title=f"One-shot render of icosphere({subdiv}) ({20 * 4**subdiv:,} faces) at {size}x{size}, "
                       f"thresholded Phong, upload included; median of {repeat}"))
+
+
+def _normal_uploads(subdiv: int, repeat: int) -> None:
+    """``Renderer.add_mesh`` with each normal mode, taken in turns: ``"auto"`` on the smooth
+    sphere splits no vertex, on the noisy one (nearly every edge a crease at 30 degrees) nearly
+    every one."""
+    import toonmesh as tm
+
+    meshes = {"smooth": tm.shapes.icosphere(subdiv), "noisy": tm.shapes.icosphere(subdiv, noise=0.02, seed=1)}
+    kinds = [("smooth", "smooth", "smooth"), ("flat", "smooth", "flat"), ("auto, nothing splits", "smooth", "auto"),
+             ("auto, nearly all split", "noisy", "auto")]
+    rows = []
+    for backend in ("vulkan", "gl"):
+        try:
+            r = tm.Renderer(backend)
+        except tm.GpuUnavailableError:
+            continue
+        times: Dict[str, List[float]] = {label: [] for label, _, _ in kinds}
+        for k in range(max(1, repeat) + 1):  # the first round warms up
+            for label, mesh, normals in kinds:
+                t0 = time.perf_counter()
+                r.remove_mesh(r.add_mesh(*meshes[mesh], normals=normals))
+                if k:
+                    times[label].append(time.perf_counter() - t0)
+        rows.append((f"toonmesh {backend}", *(ms(float(np.median(times[label]))) for label, _, _ in kinds)))
+    print(table(["renderer", *(f"normals={label}" for label, _, _ in kinds)], rows,
+                title=f"Uploads of icosphere({subdiv}) ({20 * 4**subdiv:,} faces) by normal mode; median of {repeat}"))
 
 
 def _stream(views: int, size: int, repeat: int) -> None:
@@ -479,6 +506,8 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
         _frame_tables(subdiv, _frames(size, args.wide), repeat, args.skip_peers)
     if "oneshot" in only:
         _oneshot(subdiv, size, repeat)
+    if "normals" in only:
+        _normal_uploads(subdiv, repeat)
     if "stream" in only:
         _stream(10 if quick else 100, 128 if quick else 512, repeat)
     if "outlines" in only:
