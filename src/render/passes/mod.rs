@@ -109,6 +109,31 @@ pub fn fullscreen_pipeline(
     })
 }
 
+/// Opens a render pass over `attachments` and draws the one triangle that covers the output,
+/// with `pipeline` and `groups` bound in order (group 0 first).
+pub fn draw_fullscreen(
+    encoder: &mut wgpu::CommandEncoder,
+    label: &'static str,
+    attachments: &[Option<wgpu::RenderPassColorAttachment<'_>>],
+    timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
+    pipeline: &wgpu::RenderPipeline,
+    groups: &[&wgpu::BindGroup],
+) {
+    let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some(label),
+        color_attachments: attachments,
+        depth_stencil_attachment: None,
+        timestamp_writes: timing,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    });
+    pass.set_pipeline(pipeline);
+    for (i, g) in groups.iter().enumerate() {
+        pass.set_bind_group(i as u32, *g, &[]);
+    }
+    pass.draw(0..3, 0..1);
+}
+
 /// A bind group of one texture view.
 pub fn texture_group(
     f: &FrameCtx<'_>,

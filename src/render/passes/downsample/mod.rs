@@ -47,18 +47,14 @@ impl Pass for Downsample {
             super::texture_group(f, &layouts.float_texture, f.res.view(Target::ColorHi))
         });
         let attachments = [cleared(f.res.view(Target::Color), wgpu::Color::TRANSPARENT)];
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("downsample"),
-            color_attachments: &attachments,
-            depth_stencil_attachment: None,
-            timestamp_writes: timing,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &f.res.uniforms.frame_group, &[]);
-        pass.set_bind_group(1, &source, &[]);
-        pass.draw(0..3, 0..1);
+        super::draw_fullscreen(
+            encoder,
+            "downsample",
+            &attachments,
+            timing,
+            &pipeline,
+            &[&f.res.uniforms.frame_group, &source],
+        );
         Ok(())
     }
 }

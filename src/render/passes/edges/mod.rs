@@ -124,18 +124,14 @@ impl Pass for Edges {
             super::texture_group(f, &layouts.uint_texture, f.res.view(Target::Geometry))
         });
         let attachments = ink_attachments(f, self.color, self.outline, self.clear_outline);
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("edges"),
-            color_attachments: &attachments,
-            depth_stencil_attachment: None,
-            timestamp_writes: timing,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &f.res.uniforms.frame_group, &[]);
-        pass.set_bind_group(1, &geometry, &[]);
-        pass.draw(0..3, 0..1);
+        super::draw_fullscreen(
+            encoder,
+            "edges",
+            &attachments,
+            timing,
+            &pipeline,
+            &[&f.res.uniforms.frame_group, &geometry],
+        );
         Ok(())
     }
 }

@@ -89,19 +89,14 @@ impl Pass for ShadowMask {
             f.res.view(Target::Shadow),
             wgpu::Color { r: one, g: 0.0, b: 0.0, a: 0.0 },
         )];
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("shadow"),
-            color_attachments: &attachments,
-            depth_stencil_attachment: None,
-            timestamp_writes: timing,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &f.res.uniforms.frame_group, &[]);
-        pass.set_bind_group(1, &geometry, &[]);
-        pass.set_bind_group(2, &shadow, &[]);
-        pass.draw(0..3, 0..1);
+        super::draw_fullscreen(
+            encoder,
+            "shadow",
+            &attachments,
+            timing,
+            &pipeline,
+            &[&f.res.uniforms.frame_group, &geometry, &shadow],
+        );
         Ok(())
     }
 }
