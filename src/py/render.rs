@@ -170,21 +170,29 @@ fn lights_arg(obj: Obj<'_, '_>) -> Result<Vec<Light>> {
     if let Ok(l) = obj.cast::<PyLight>() {
         return Ok(vec![l.get().inner]);
     }
-    let items = obj.try_iter().map_err(|_| {
-        Error::wrong_type(
-            "lights",
-            format!("expected a toonmesh.Light or a list of them, got {}", type_name(obj)),
-        )
-    })?;
+    each(obj, "lights", "a toonmesh.Light or a list of them", "a toonmesh.Light", |l| {
+        l.cast::<PyLight>().ok().map(|l| l.get().inner)
+    })
+}
+
+/// The items of the sequence `obj` (argument `name`), each read by `read` (None: the item is
+/// not `item`, a TypeError naming `name[i]`); `expected` describes the whole.
+fn each<T>(
+    obj: &Bound<'_, PyAny>,
+    name: &str,
+    expected: &str,
+    item: &str,
+    read: impl Fn(&Bound<'_, PyAny>) -> Option<T>,
+) -> Result<Vec<T>> {
+    let items = obj
+        .try_iter()
+        .map_err(|_| Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj))))?;
     items
         .enumerate()
-        .map(|(i, l)| {
-            let l = l.map_err(|e| Error::invalid("lights", e.to_string()))?;
-            l.cast::<PyLight>().map(|l| l.get().inner).map_err(|_| {
-                Error::wrong_type(
-                    format!("lights[{i}]"),
-                    format!("expected a toonmesh.Light, got {}", type_name(&l)),
-                )
+        .map(|(i, x)| {
+            let x = x.map_err(|e| Error::invalid(name, e.to_string()))?;
+            read(&x).ok_or_else(|| {
+                Error::wrong_type(format!("{name}[{i}]"), format!("expected {item}, got {}", type_name(&x)))
             })
         })
         .collect()
@@ -524,25 +532,9 @@ impl PyRenderer {
         outputs: Obj<'_, 'py>,
         outlines: Obj<'_, 'py>,
     ) -> PyResult<(Bound<'py, PyDict>, Vec<Bound<'py, PyDict>>)> {
-        let cams = (|| -> Result<Vec<crate::render::scene::camera::Camera>> {
-            let list = cameras.try_iter().map_err(|_| {
-                Error::wrong_type(
-                    "cameras",
-                    format!("expected a list of toonmesh.Camera, got {}", type_name(cameras)),
-                )
-            })?;
-            list.enumerate()
-                .map(|(i, c)| {
-                    let c = c.map_err(|e| Error::invalid("cameras", e.to_string()))?;
-                    c.cast::<PyCamera>().map(|c| c.get().inner).map_err(|_| {
-                        Error::wrong_type(
-                            format!("cameras[{i}]"),
-                            format!("expected a toonmesh.Camera, got {}", type_name(&c)),
-                        )
-                    })
-                })
-                .collect()
-        })()
+        let cams = each(cameras, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", |c| {
+            c.cast::<PyCamera>().ok().map(|c| c.get().inner)
+        })
         .map_err(to_py)?;
         let (scene, frame) = self
             .scene_and_frame(

@@ -786,6 +786,15 @@ fn camera(
     .map_err(to_py)
 }
 
+/// A camera at `eye` looking at `target` (default the origin) with `up` (default y).
+fn look_at_placement(eye: &Bound<'_, PyAny>, target: Obj<'_, '_>, up: Obj<'_, '_>) -> Result<Placement> {
+    Ok(Placement::LookAt {
+        eye: triple("eye", eye)?,
+        target: opt_triple("target", target, [0.0; 3])?,
+        up: opt_triple("up", up, camera::DEFAULT_UP)?,
+    })
+}
+
 fn opt_triple(name: &str, obj: Obj<'_, '_>, default: [f64; 3]) -> Result<[f64; 3]> {
     obj.map_or(Ok(default), |o| triple(name, o))
 }
@@ -838,11 +847,7 @@ impl PyCamera {
         far: Obj<'_, '_>,
     ) -> PyResult<Self> {
         let (placement, projection) = (|| {
-            let placement = Placement::LookAt {
-                eye: triple("eye", eye)?,
-                target: opt_triple("target", target, [0.0; 3])?,
-                up: opt_triple("up", up, camera::DEFAULT_UP)?,
-            };
+            let placement = look_at_placement(eye, target, up)?;
             Ok((
                 placement,
                 Projection::Perspective {
@@ -867,11 +872,7 @@ impl PyCamera {
         far: Obj<'_, '_>,
     ) -> PyResult<Self> {
         let (placement, projection) = (|| {
-            let placement = Placement::LookAt {
-                eye: triple("eye", eye)?,
-                target: opt_triple("target", target, [0.0; 3])?,
-                up: opt_triple("up", up, camera::DEFAULT_UP)?,
-            };
+            let placement = look_at_placement(eye, target, up)?;
             Ok((
                 placement,
                 Projection::Orthographic {
