@@ -120,7 +120,10 @@ class RenderResult:
     - ``passes``: every step that ran, in order; ``timings``: seconds per step, with ``frame``
       the whole render; GPU passes are timed on the GPU when ``timing_source`` is ``"gpu"``,
       otherwise only the frame as a whole (``"wall"``);
-    - ``view_matrix``, ``projection`` (4x4 float64), ``near``, ``far``: the camera used.
+    - ``view_matrix``, ``projection`` (4x4 float64), ``near``, ``far``: the camera used;
+    - ``culled``: per scene mesh, in order, whether its inner sides were skipped. That happens
+      only where they cannot show (a closed, consistently wound mesh whose bounding sphere lies
+      wholly beyond the near plane), so the image is the same, drawn in about half the time.
     """
 
     def __init__(self, raw: Dict[str, Any], backend: str, outlines: Optional[Outlines] = None):
@@ -134,6 +137,7 @@ class RenderResult:
         self.passes: List[str] = list(raw["passes"])
         self.timings: Dict[str, float] = dict(raw["timings"])
         self.timing_source: str = "gpu" if raw["gpu_timed"] else "wall"
+        self.culled: List[bool] = list(raw["culled"])
         self.view_matrix: np.ndarray = raw["view"]
         self.projection: np.ndarray = raw["proj"]
         self.near: float = raw["near"]

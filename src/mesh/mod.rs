@@ -7,6 +7,7 @@ pub mod bounds;
 pub mod buckets;
 pub mod crease_normals;
 pub mod edge_table;
+pub mod enclosure;
 pub mod input;
 pub mod normals;
 pub mod reorder;

@@ -278,6 +278,7 @@ impl<'py> Images<'py> {
         d.set_item("passes", report.passes)?;
         d.set_item("timings", report.timings)?;
         d.set_item("gpu_timed", report.gpu_timed)?;
+        d.set_item("culled", report.culled)?;
         d.set_item("view", matrix(py, report.view))?;
         d.set_item("proj", matrix(py, report.proj))?;
         d.set_item("near", report.near)?;

@@ -13,6 +13,7 @@ use crate::edges::feature::check_crease_angle;
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
 use crate::mesh::crease_normals::crease_normals;
+use crate::mesh::enclosure::{enclosure, Enclosure};
 use crate::mesh::normals::{triangle_unit_normal, vertex_normals};
 use crate::mesh::Bounds;
 use crate::real::{Real, Vec3};
@@ -105,9 +106,9 @@ fn used_bounds<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Bounds {
             let mut b = empty();
             for &i in chunk.iter().flatten() {
                 let p = positions[i as usize];
-                for k in 0..3 {
-                    b.min[k] = b.min[k].min(p[k].to_f64());
-                    b.max[k] = b.max[k].max(p[k].to_f64());
+                for (k, &x) in p.iter().enumerate() {
+                    b.min[k] = b.min[k].min(Real::to_f64(x));
+                    b.max[k] = b.max[k].max(Real::to_f64(x));
                 }
             }
             b
@@ -116,6 +117,45 @@ fn used_bounds<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Bounds {
             min: std::array::from_fn(|k| a.min[k].min(b.min[k])),
             max: std::array::from_fn(|k| a.max[k].max(b.max[k])),
         })
+}
+
+/// The vertices to upload, and the indices when vertices are shared (None: drawn as a list).
+type Built = (Vec<Vertex>, Option<Vec<[u32; 3]>>);
+
+fn build_vertices(stored: &[[f64; 3]], faces: &[[u32; 3]], normals: NormalMode) -> Result<Built> {
+    let f32s = |p: &[f64; 3]| p.map(|x| x as f32);
+    Ok(match normals {
+        NormalMode::Smooth => {
+            let n = vertex_normals(stored, faces);
+            let v = stored
+                .par_iter()
+                .zip(&n)
+                .map(|(p, n)| Vertex { position: f32s(p), normal: f32s(n) })
+                .collect();
+            (v, None)
+        }
+        NormalMode::Auto { crease_angle } => {
+            let split = crease_normals(stored, faces, crease_angle)?;
+            let v = split
+                .source
+                .par_iter()
+                .zip(&split.normals)
+                .map(|(&i, n)| Vertex { position: f32s(&stored[i as usize]), normal: f32s(n) })
+                .collect();
+            (v, Some(split.faces))
+        }
+        NormalMode::Flat => {
+            let v = faces
+                .par_iter()
+                .flat_map_iter(|f| {
+                    let [a, b, c] = f.map(|i| stored[i as usize]);
+                    let n = f32s(&triangle_unit_normal(a, b, c));
+                    [a, b, c].map(|p| Vertex { position: f32s(&p), normal: n })
+                })
+                .collect();
+            (v, None)
+        }
+    })
 }
 
 /// A mesh's geometry in stored coordinates, kept on the host for the outline analysis.
@@ -138,6 +178,8 @@ pub struct GpuMesh {
     pub n_vertices: usize,
     pub n_faces: usize,
     pub normals: NormalMode,
+    /// How the faces enclose solids, if they do (what allows back-face culling).
+    pub enclosure: Option<Enclosure>,
 }
 
 impl GpuMesh {
@@ -163,40 +205,10 @@ impl GpuMesh {
             .reduce(|| 0.0, f64::max)
             .sqrt()
             * placement.scale;
-        let f32s = |p: &[f64; 3]| p.map(|x| x as f32);
-        // The vertices, and the indices when vertices are shared (None: drawn as a list).
-        let (vertices, indices): (Vec<Vertex>, Option<Vec<[u32; 3]>>) = match normals {
-            NormalMode::Smooth => {
-                let n = vertex_normals(&stored, &faces);
-                let v = stored
-                    .par_iter()
-                    .zip(&n)
-                    .map(|(p, n)| Vertex { position: f32s(p), normal: f32s(n) })
-                    .collect();
-                (v, None)
-            }
-            NormalMode::Auto { crease_angle } => {
-                let split = crease_normals(&stored, &faces, crease_angle)?;
-                let v = split
-                    .source
-                    .par_iter()
-                    .zip(&split.normals)
-                    .map(|(&i, n)| Vertex { position: f32s(&stored[i as usize]), normal: f32s(n) })
-                    .collect();
-                (v, Some(split.faces))
-            }
-            NormalMode::Flat => {
-                let v = faces
-                    .par_iter()
-                    .flat_map_iter(|f| {
-                        let [a, b, c] = f.map(|i| stored[i as usize]);
-                        let n = f32s(&triangle_unit_normal(a, b, c));
-                        [a, b, c].map(|p| Vertex { position: f32s(&p), normal: n })
-                    })
-                    .collect();
-                (v, None)
-            }
-        };
+        // whether the faces enclose solids, found while the vertices are built
+        let (encloses, built) =
+            rayon::join(|| enclosure(&stored, &faces), || build_vertices(&stored, &faces, normals));
+        let (vertices, indices) = built?;
         let indexed = !matches!(normals, NormalMode::Flat);
         let vertex_bytes: &[u8] = bytemuck::cast_slice(&vertices);
         let index_bytes: &[u8] = match (&indices, indexed) {
@@ -237,6 +249,7 @@ impl GpuMesh {
             n_vertices: positions.len(),
             n_faces: faces.len(),
             normals,
+            enclosure: encloses,
         };
         Ok((mesh, HostMesh { positions: stored, faces }))
     }

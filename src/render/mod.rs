@@ -3,11 +3,12 @@
 //! on a process-wide device (`context`) and read back straight into the caller's arrays.
 //!
 //! Layers, each using only those above it: `color`, `scene` (plain data) and `device`; then
-//! `gpu_mesh`, `pipelines`, `uniforms` and `wgsl`; then `graph` (targets, resources, the pass
+//! `gpu_mesh`, `culling`, `pipelines`, `uniforms` and `wgsl`; then `graph` (targets, resources, the pass
 //! trait) and `context`; then `passes`; then `plan`; then `mesh_lines` and `renderer`.
 
 pub mod color;
 pub mod context;
+pub mod culling;
 pub mod device;
 pub mod gpu_mesh;
 pub mod graph;

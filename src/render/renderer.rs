@@ -19,6 +19,7 @@ use crate::real::{Real, Vec3};
 
 use super::color::srgb_to_linear;
 use super::context::{context, GpuContext};
+use super::culling::culls;
 use super::device::{BackendChoice, GpuInfo};
 use super::gpu_mesh::{GpuMesh, NormalMode};
 use super::graph::resources::FrameResources;
@@ -76,6 +77,8 @@ pub struct FrameReport {
     pub far: f64,
     /// The visible mesh-space lines, when asked for.
     pub lines: Option<Vec<Polyline>>,
+    /// Per mesh, whether the camera's passes skipped its inner sides (`render::culling`).
+    pub culled: Vec<bool>,
 }
 
 /// A render's images in vectors (see `Renderer::render`).
@@ -243,6 +246,15 @@ impl Renderer {
             ));
         }
         let plan = plan(Features::of(scene), frame);
+        let culls = scene
+            .items
+            .iter()
+            .zip(&records)
+            .map(|(item, rec)| {
+                let g = &rec.gpu;
+                culls(item, g.enclosure, g.placement.origin.into(), g.radius, &cam)
+            })
+            .collect();
         let outlines = scene.outlines.clone().unwrap_or_else(|| Outlines::new(false, false));
         let t = Instant::now();
         let views: Vec<Option<Outline>> = if plan.silhouettes {
@@ -260,6 +272,7 @@ impl Renderer {
         };
         Ok(Prepared {
             records,
+            culls,
             cam,
             sphere,
             plan,
@@ -336,6 +349,7 @@ impl Renderer {
             proj: rows(p.cam.proj),
             near: p.cam.near,
             far: p.cam.far,
+            culled: p.culls.iter().map(|c| c.0.is_some()).collect(),
             ..Default::default()
         };
         if p.plan.silhouettes {
@@ -443,11 +457,14 @@ impl Renderer {
             .items
             .iter()
             .zip(records)
+            .zip(&p.culls)
             .enumerate()
-            .map(|(i, (item, rec))| DrawItem {
+            .map(|(i, ((item, rec), &(cull, light_cull)))| DrawItem {
                 mesh: &rec.gpu,
                 uniform_offset: i as u32 * stride,
                 variant: ShadingVariant::of(&item.material),
+                cull,
+                light_cull,
             })
             .collect();
         let bg = frame.background;
@@ -618,6 +635,8 @@ struct InFlight {
 /// A frame's host-side preparation.
 pub(crate) struct Prepared {
     pub records: Vec<Arc<MeshRecord>>,
+    /// Per mesh, the faces the camera's passes and the shadow map skip (`render::culling`).
+    pub culls: Vec<(Option<wgpu::Face>, Option<wgpu::Face>)>,
     pub cam: ResolvedCamera,
     /// What the scene's meshes fill (world space).
     pub sphere: Sphere,

@@ -176,7 +176,7 @@ pub fn model_view(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera)
 pub fn draw_block(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera) -> DrawBlock {
     let mv = model_view(item, placement, cam);
     let normal_matrix = DMat4::from_mat3(DMat3::from_mat4(mv).inverse().transpose());
-    let mirrored = DMat3::from_mat4(item.model_matrix()).determinant() < 0.0;
+    let mirrored = item.mirrors();
     let m: &Material = &item.material;
     let mut b: DrawBlock = bytemuck::Zeroable::zeroed();
     b.model_view = f32_cols(mv);

@@ -34,6 +34,7 @@ BASE = (0.94, 0.54, 0.24)
 # name: (the module it needs, environment, what it is)
 PEERS: Dict[str, Tuple[str, Dict[str, str]]] = {
     "moderngl": ("moderngl", {}),
+    "moderngl, culled": ("moderngl", {}),
     "pyrender OSMesa": ("pyrender", {"PYOPENGL_PLATFORM": "osmesa"}),
     "pyrender EGL": ("pyrender", {"PYOPENGL_PLATFORM": "egl"}),
     "PyVista": ("pyvista", {}),
@@ -123,9 +124,11 @@ def _vertex_normals(V: np.ndarray, F: np.ndarray) -> np.ndarray:
     return n / np.linalg.norm(n, axis=1, keepdims=True)
 
 
-def _moderngl(V: np.ndarray, F: np.ndarray) -> Tuple[Dict[str, Any], Callable[[str, int, int], None]]:
+def _moderngl(V: np.ndarray, F: np.ndarray, cull: bool = False) -> Tuple[Dict[str, Any], Callable[[str, int, int], None]]:
     """A plain Lambert shader (one directional light, per pixel) in an EGL standalone context;
-    the frame read back with ``fbo.read_into`` into NumPy buffers, depth made linear in NumPy."""
+    the frame read back with ``fbo.read_into`` into NumPy buffers, depth made linear in NumPy.
+    With ``cull``, back faces are culled (right for this closed sphere seen from outside, which
+    toonmesh decides for itself)."""
     import moderngl
 
     ctx = moderngl.create_standalone_context(backend="egl")
@@ -149,7 +152,7 @@ def _moderngl(V: np.ndarray, F: np.ndarray) -> Tuple[Dict[str, Any], Callable[[s
     vao = ctx.vertex_array(prog, [(vbo, "3f 3f", "in_position", "in_normal")], index_buffer=ibo, index_element_size=4)
     prog["light"].value = LIGHT
     prog["base"].value = BASE
-    ctx.enable(moderngl.DEPTH_TEST)
+    ctx.enable(moderngl.DEPTH_TEST | moderngl.CULL_FACE if cull else moderngl.DEPTH_TEST)
     view = np.eye(4)
     view[:3, 3] = -np.asarray(EYE)
     targets: Dict[Tuple[int, int], Any] = {}
@@ -239,7 +242,7 @@ def _pyvista(V: np.ndarray, F: np.ndarray) -> Tuple[Dict[str, Any], Callable[[st
     return info, frame
 
 
-_SETUP = {"moderngl": _moderngl, "pyrender OSMesa": _pyrender, "pyrender EGL": _pyrender, "PyVista": _pyvista}
+_SETUP = {"moderngl": _moderngl, "moderngl, culled": lambda V, F: _moderngl(V, F, cull=True), "pyrender OSMesa": _pyrender, "pyrender EGL": _pyrender, "PyVista": _pyvista}
 
 
 def _say(obj: Dict[str, Any]) -> None:

@@ -82,7 +82,7 @@ class _Toonmesh:
 class _Peer:
     """A peer as a contestant (its worker process), or its reason for not taking part."""
 
-    SHADING = {"moderngl": "plain Lambert", "pyrender OSMesa": "pyrender default (PBR)",
+    SHADING = {"moderngl": "plain Lambert", "moderngl, culled": "plain Lambert, back faces culled", "pyrender OSMesa": "pyrender default (PBR)",
                "pyrender EGL": "pyrender default (PBR)", "PyVista": "VTK default (Phong)"}
 
     def __init__(self, name: str, subdivisions: int):

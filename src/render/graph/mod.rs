@@ -43,6 +43,9 @@ pub struct DrawItem<'a> {
     pub mesh: &'a GpuMesh,
     pub uniform_offset: u32,
     pub variant: ShadingVariant,
+    /// The faces the camera's passes may skip, and those the shadow map may (`render::culling`).
+    pub cull: Option<wgpu::Face>,
+    pub light_cull: Option<wgpu::Face>,
 }
 
 /// What a material needs compiled into the shading pipeline.
@@ -64,6 +67,15 @@ impl ShadingVariant {
             hatching: m.hatching.is_some(),
             dither: m.dither.map(|d| (d.pattern, d.space)),
         }
+    }
+
+    /// Whether the fragment stage reads the vertex stage's anchors (object coordinates and
+    /// per-vertex colours; `Anchors` in common.wgsl): hatching, object-space dithering and
+    /// per-vertex shading do.
+    pub fn anchored(&self) -> bool {
+        let object_dither =
+            matches!(self.dither, Some((_, crate::render::scene::style::DitherSpace::Object)));
+        self.per_vertex || self.hatching || object_dither
     }
 
     /// The variant as bits of a pipeline key.

@@ -14,6 +14,15 @@ use crate::render::gpu_mesh::GpuMesh;
 use crate::render::graph::target::DEPTH_FORMAT;
 use crate::render::graph::FrameCtx;
 
+/// A pipeline-cache key's bits for a cull mode.
+pub fn cull_bits(cull: Option<wgpu::Face>) -> u64 {
+    match cull {
+        None => 0,
+        Some(wgpu::Face::Back) => 1,
+        Some(wgpu::Face::Front) => 2,
+    }
+}
+
 /// Every pass's own WGSL, for the shader validation test.
 pub const SHADERS: [&str; 6] =
     [shade::WGSL, geometry::WGSL, downsample::WGSL, edges::WGSL, lines::WGSL, shadow_map::WGSL];
@@ -21,7 +30,7 @@ pub const SHADERS: [&str; 6] =
 pub const SHADOWED_SHADERS: [&str; 2] = [shade::WGSL, shadow::WGSL];
 
 /// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`) with
-/// depth testing.
+/// depth testing, skipping the faces of `cull` (`render::culling`).
 #[allow(clippy::too_many_arguments)]
 pub fn mesh_pipeline(
     f: &FrameCtx<'_>,
@@ -32,6 +41,7 @@ pub fn mesh_pipeline(
     samples: u32,
     constants: &[(&str, f64)],
     more: &[&wgpu::BindGroupLayout],
+    cull: Option<wgpu::Face>,
 ) -> wgpu::RenderPipeline {
     let device = &f.dev.device;
     let layouts = &f.pipelines.layouts;
@@ -48,9 +58,10 @@ pub fn mesh_pipeline(
             compilation_options: options.clone(),
             buffers: &[Some(GpuMesh::vertex_layout())],
         },
-        // Both sides are drawn: a camera inside a mesh, or an open surface, shows back faces.
+        // Both sides are drawn unless one cannot show: a camera inside a mesh, or an open
+        // surface, shows back faces.
         primitive: wgpu::PrimitiveState {
-            cull_mode: None,
+            cull_mode: cull,
             front_face: wgpu::FrontFace::Ccw,
             ..Default::default()
         },

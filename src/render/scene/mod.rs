@@ -174,6 +174,11 @@ impl SceneItem {
         DMat4::from_cols_array_2d(&self.transform).transpose()
     }
 
+    /// Whether the transform mirrors the mesh (turning its winding around).
+    pub fn mirrors(&self) -> bool {
+        DMat3::from_mat4(self.model_matrix()).determinant() < 0.0
+    }
+
     pub fn validate(&self, arg: &str) -> Result<()> {
         let t = &self.transform;
         if !t.iter().flatten().all(|v| v.is_finite()) {

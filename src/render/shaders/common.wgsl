@@ -51,13 +51,30 @@ struct VsIn {
     @location(1) normal: vec3<f32>,
 };
 
+// What the vertex stage passes on. A fragment stage reads `Varyings` always and `Anchors` only
+// when its material needs them (`ShadingVariant::anchored`): a CPU rasteriser sets up every
+// input a fragment stage reads for every triangle, which on small triangles costs as much as
+// the shading. `VsOut` is the two together (the locations must match).
+struct Varyings {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) view_pos: vec3<f32>,
+    @location(1) view_normal: vec3<f32>,
+};
+
+struct Anchors {
+    @location(2) color_front: vec3<f32>,
+    @location(3) color_back: vec3<f32>,
+    // the mesh's stored coordinates and normal: what hatching and dithering anchor to
+    @location(4) object_pos: vec3<f32>,
+    @location(5) object_normal: vec3<f32>,
+};
+
 struct VsOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) view_pos: vec3<f32>,
     @location(1) view_normal: vec3<f32>,
     @location(2) color_front: vec3<f32>,
     @location(3) color_back: vec3<f32>,
-    // the mesh's stored coordinates and normal: what hatching and dithering anchor to
     @location(4) object_pos: vec3<f32>,
     @location(5) object_normal: vec3<f32>,
 };
@@ -200,11 +217,11 @@ fn vs_main(v: VsIn) -> VsOut {
 
 // The geometry target's texels: f32 bit patterns of the facing unit normal and the linear depth
 // (distance from the camera plane, in normalised view units).
-fn depth_bits(i: VsOut) -> u32 {
+fn depth_bits(i: Varyings) -> u32 {
     return bitcast<u32>(-i.view_pos.z);
 }
 
-fn normal_depth_bits(i: VsOut, front_facing: bool) -> vec4<u32> {
+fn normal_depth_bits(i: Varyings, front_facing: bool) -> vec4<u32> {
     return vec4<u32>(bitcast<vec3<u32>>(facing_normal(i.view_normal, front_facing)), depth_bits(i));
 }
 

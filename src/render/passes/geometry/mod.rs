@@ -30,14 +30,27 @@ impl Pass for Geometry {
         timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
     ) -> Result<()> {
         let layout = self.layout;
-        let pipeline = f.pipelines.get(("gbuffer", layout as u64), || {
-            let module = f.pipelines.module(&f.dev.device, "gbuffer", || crate::render::wgsl::source(WGSL));
-            let entry = match layout {
-                GeometryLayout::NormalDepth => "fs_normal_depth",
-                GeometryLayout::Depth => "fs_depth",
-            };
-            super::mesh_pipeline(f, "gbuffer", &module, entry, &[target(layout.format())], 1, &[], &[])
-        });
+        let pipeline = |cull: Option<wgpu::Face>| {
+            f.pipelines.get(("gbuffer", layout as u64 | super::cull_bits(cull) << 8), || {
+                let module =
+                    f.pipelines.module(&f.dev.device, "gbuffer", || crate::render::wgsl::source(WGSL));
+                let entry = match layout {
+                    GeometryLayout::NormalDepth => "fs_normal_depth",
+                    GeometryLayout::Depth => "fs_depth",
+                };
+                super::mesh_pipeline(
+                    f,
+                    "gbuffer",
+                    &module,
+                    entry,
+                    &[target(layout.format())],
+                    1,
+                    &[],
+                    &[],
+                    cull,
+                )
+            })
+        };
         let attachments = [cleared(f.res.view(Target::Geometry), geometry_clear(layout))];
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("gbuffer"),
@@ -47,7 +60,7 @@ impl Pass for Geometry {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        f.draw_meshes(&mut pass, |_| pipeline.clone());
+        f.draw_meshes(&mut pass, |d| pipeline(d.cull));
         Ok(())
     }
 }

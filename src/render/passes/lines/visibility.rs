@@ -195,10 +195,8 @@ pub fn visible_runs(
             let (p, z) = l.at(s as f64 / n as f64, orthographic);
             let inside = (0.0..=w).contains(&p[0]) && (0.0..=h).contains(&p[1]);
             if inside && z > 0.0 && rule.visible(img, p, z, l.kind) {
-                if current.is_empty() || s == n {
-                    if current.last() != Some(&p) {
-                        current.push(p);
-                    }
+                if (current.is_empty() || s == n) && current.last() != Some(&p) {
+                    current.push(p);
                 }
                 last_visible = Some(p);
             } else {

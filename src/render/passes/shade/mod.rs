@@ -39,8 +39,10 @@ impl Shade {
         f: &FrameCtx<'_>,
         shading: ShadingVariant,
         shadows: Option<ShadowFilter>,
+        cull: Option<wgpu::Face>,
     ) -> Arc<wgpu::RenderPipeline> {
         let variant = self.samples as u64
+            | super::cull_bits(cull) << 14
             | shading.bits() << 16
             | (self.geometry.map_or(0, |g| 1 + g as u64)) << 9
             | (shadows.map_or(0, |s| 1 + s as u64)) << 12
@@ -53,13 +55,16 @@ impl Shade {
                     .module(&f.dev.device, "shade, shadowed", || crate::render::wgsl::source_shadowed(WGSL)),
             };
             let mut targets = vec![target(COLOR_FORMAT)];
-            let entry = match self.geometry {
-                None => "fs_color",
-                Some(g) => {
+            let entry = match (self.geometry, shading.anchored()) {
+                (None, false) => "fs_color",
+                (None, true) => "fs_color_anchored",
+                (Some(g), anchored) => {
                     targets.push(target(g.format()));
-                    match g {
-                        GeometryLayout::NormalDepth => "fs_color_normal_depth",
-                        GeometryLayout::Depth => "fs_color_depth",
+                    match (g, anchored) {
+                        (GeometryLayout::NormalDepth, false) => "fs_color_normal_depth",
+                        (GeometryLayout::NormalDepth, true) => "fs_color_normal_depth_anchored",
+                        (GeometryLayout::Depth, false) => "fs_color_depth",
+                        (GeometryLayout::Depth, true) => "fs_color_depth_anchored",
                     }
                 }
             };
@@ -70,7 +75,7 @@ impl Shade {
                 constants.extend(super::shadow::filter_constants(filter));
                 more.push(&f.pipelines.layouts.shadow);
             }
-            super::mesh_pipeline(f, "shade", &module, entry, &targets, self.samples, &constants, &more)
+            super::mesh_pipeline(f, "shade", &module, entry, &targets, self.samples, &constants, &more, cull)
         })
     }
 }
@@ -131,7 +136,7 @@ impl Pass for Shade {
         if let Some(filter) = shadows {
             pass.set_bind_group(2, &super::shadow::shadow_group(f, filter), &[]);
         }
-        f.draw_meshes(&mut pass, |d| self.pipeline(f, d.variant, shadows));
+        f.draw_meshes(&mut pass, |d| self.pipeline(f, d.variant, shadows, d.cull));
         Ok(())
     }
 }

@@ -31,7 +31,7 @@ fn planar(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
 }
 
 // How far this pixel moves L.n before banding: (t - 1/2) amount.
-fn dither_jitter(i: VsOut) -> f32 {
+fn dither_jitter(i: Varyings, a: Anchors) -> f32 {
     if (DITHER == 0u) {
         return 0.0;
     }
@@ -39,7 +39,7 @@ fn dither_jitter(i: VsOut) -> f32 {
     var cell: vec2<f32>;
     if (DITHER_OBJECT) {
         // the octave of the surface pattern whose cells are about `scale` pixels
-        let q = planar(i.object_pos, i.object_normal);
+        let q = planar(a.object_pos, a.object_normal);
         let w = max(fwidth(q.x), fwidth(q.y));
         let f = exp2(floor(log2(1.0 / max(scale * w, 1e-30))));
         cell = floor(q * f);
@@ -71,9 +71,9 @@ fn stroke(x: f32, px: f32) -> f32 {
 
 // Each stroke layer's coverage (45, -45, 0, 90 degrees), blended over the three axis planes
 // by the object normal (a triplanar mapping: no UVs needed).
-fn hatch_layers(i: VsOut) -> vec4<f32> {
-    let p = i.object_pos;
-    let w4 = pow(abs(unit_or_zero(i.object_normal)), vec3<f32>(4.0));
+fn hatch_layers(a: Anchors) -> vec4<f32> {
+    let p = a.object_pos;
+    let w4 = pow(abs(unit_or_zero(a.object_normal)), vec3<f32>(4.0));
     let w = w4 / max(w4.x + w4.y + w4.z, 1e-12);
     let planes = array<vec2<f32>, 3>(p.yz, p.zx, p.xy);
     let s = 0.70710678;
@@ -99,16 +99,16 @@ fn hatched(c: vec3<f32>, layers: vec4<f32>) -> vec3<f32> {
     return mix(paper, draw.ink.rgb, ink);
 }
 
-fn shaded_color(i: VsOut, front_facing: bool) -> vec4<f32> {
+fn shaded_color(i: Varyings, a: Anchors, front_facing: bool) -> vec4<f32> {
     // derivatives first, while every pixel of the quad still runs the same code
-    let jitter = dither_jitter(i);
+    let jitter = dither_jitter(i, a);
     var layers = vec4<f32>(0.0);
     if (HATCHING) {
-        layers = hatch_layers(i);
+        layers = hatch_layers(a);
     }
     var c: vec3<f32>;
     if (PER_VERTEX) {
-        c = select(i.color_back, i.color_front, outer_side(front_facing));
+        c = select(a.color_back, a.color_front, outer_side(front_facing));
     } else {
         c = shade(facing_normal(i.view_normal, front_facing), i.view_pos, jitter);
     }
@@ -118,9 +118,20 @@ fn shaded_color(i: VsOut, front_facing: bool) -> vec4<f32> {
     return vec4<f32>(clamp(c, vec3<f32>(0.0), vec3<f32>(1.0)), 1.0);
 }
 
+// What a material that needs no anchors sees of them (`fs_*` below; `fs_*_anchored` read them).
+fn no_anchors() -> Anchors {
+    let o = vec3<f32>(0.0);
+    return Anchors(o, o, o, o);
+}
+
 @fragment
-fn fs_color(i: VsOut, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
-    return shaded_color(i, front_facing);
+fn fs_color(i: Varyings, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    return shaded_color(i, no_anchors(), front_facing);
+}
+
+@fragment
+fn fs_color_anchored(i: Varyings, a: Anchors, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    return shaded_color(i, a, front_facing);
 }
 
 struct ColorNormalDepth {
@@ -129,8 +140,13 @@ struct ColorNormalDepth {
 };
 
 @fragment
-fn fs_color_normal_depth(i: VsOut, @builtin(front_facing) front_facing: bool) -> ColorNormalDepth {
-    return ColorNormalDepth(shaded_color(i, front_facing), normal_depth_bits(i, front_facing));
+fn fs_color_normal_depth(i: Varyings, @builtin(front_facing) front_facing: bool) -> ColorNormalDepth {
+    return ColorNormalDepth(shaded_color(i, no_anchors(), front_facing), normal_depth_bits(i, front_facing));
+}
+
+@fragment
+fn fs_color_normal_depth_anchored(i: Varyings, a: Anchors, @builtin(front_facing) front_facing: bool) -> ColorNormalDepth {
+    return ColorNormalDepth(shaded_color(i, a, front_facing), normal_depth_bits(i, front_facing));
 }
 
 struct ColorDepth {
@@ -139,6 +155,11 @@ struct ColorDepth {
 };
 
 @fragment
-fn fs_color_depth(i: VsOut, @builtin(front_facing) front_facing: bool) -> ColorDepth {
-    return ColorDepth(shaded_color(i, front_facing), depth_bits(i));
+fn fs_color_depth(i: Varyings, @builtin(front_facing) front_facing: bool) -> ColorDepth {
+    return ColorDepth(shaded_color(i, no_anchors(), front_facing), depth_bits(i));
+}
+
+@fragment
+fn fs_color_depth_anchored(i: Varyings, a: Anchors, @builtin(front_facing) front_facing: bool) -> ColorDepth {
+    return ColorDepth(shaded_color(i, a, front_facing), depth_bits(i));
 }

@@ -26,35 +26,38 @@ impl Pass for ShadowMap {
         encoder: &mut wgpu::CommandEncoder,
         timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
     ) -> Result<()> {
-        let pipeline = f.pipelines.get(("shadow_map", 0), || {
-            let device = &f.dev.device;
-            let layouts = &f.pipelines.layouts;
-            let module = f.pipelines.module(device, "shadow_map", || crate::render::wgsl::source(WGSL));
-            let layout = f.pipelines.layout(device, "shadow_map", &[&layouts.frame, &layouts.draw]);
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some("shadow_map"),
-                layout: Some(&layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some("vs_shadow"),
-                    compilation_options: Default::default(),
-                    buffers: &[Some(GpuMesh::vertex_layout())],
-                },
-                // both sides cast: open surfaces and planes too
-                primitive: wgpu::PrimitiveState { cull_mode: None, ..Default::default() },
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(true),
-                    depth_compare: Some(wgpu::CompareFunction::Less),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
-                multisample: Default::default(),
-                fragment: None,
-                multiview_mask: None,
-                cache: None,
+        let pipeline = |cull: Option<wgpu::Face>| {
+            f.pipelines.get(("shadow_map", super::cull_bits(cull)), || {
+                let device = &f.dev.device;
+                let layouts = &f.pipelines.layouts;
+                let module = f.pipelines.module(device, "shadow_map", || crate::render::wgsl::source(WGSL));
+                let layout = f.pipelines.layout(device, "shadow_map", &[&layouts.frame, &layouts.draw]);
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some("shadow_map"),
+                    layout: Some(&layout),
+                    vertex: wgpu::VertexState {
+                        module: &module,
+                        entry_point: Some("vs_shadow"),
+                        compilation_options: Default::default(),
+                        buffers: &[Some(GpuMesh::vertex_layout())],
+                    },
+                    // both sides cast (open surfaces and planes too), but the inner sides of a
+                    // closed mesh never show to the light
+                    primitive: wgpu::PrimitiveState { cull_mode: cull, ..Default::default() },
+                    depth_stencil: Some(wgpu::DepthStencilState {
+                        format: DEPTH_FORMAT,
+                        depth_write_enabled: Some(true),
+                        depth_compare: Some(wgpu::CompareFunction::Less),
+                        stencil: Default::default(),
+                        bias: Default::default(),
+                    }),
+                    multisample: Default::default(),
+                    fragment: None,
+                    multiview_mask: None,
+                    cache: None,
+                })
             })
-        });
+        };
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shadow_map"),
             color_attachments: &[],
@@ -70,7 +73,7 @@ impl Pass for ShadowMap {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        f.draw_meshes(&mut pass, |_| pipeline.clone());
+        f.draw_meshes(&mut pass, |d| pipeline(d.light_cull));
         Ok(())
     }
 }
