@@ -32,7 +32,7 @@ use super::scene::camera::{ResolvedCamera, Sphere};
 use super::scene::light::shadow_caster;
 use super::scene::outlines::Outlines;
 use super::scene::{FrameSpec, MeshId, Scene, SceneItem};
-use super::uniforms::{draw_block, footprint, frame_block, model_view, LineInstance};
+use super::uniforms::{draw_block, footprint, frame_block, model_view, point_light_bits, LineInstance};
 
 /// A mesh the renderer holds.
 pub struct MeshRecord {
@@ -482,6 +482,7 @@ impl Renderer {
                 a: bg[3] as f64,
             },
             lights: scene.lights.len() as u32,
+            point_lights: point_light_bits(&scene.lights),
             shadow_filter: shadow_caster(&scene.lights).map(|(_, _, s)| s.filter),
         };
         let mut encoder =

@@ -8,7 +8,7 @@ use glam::{DMat3, DMat4, DVec3};
 
 use super::gpu_mesh::Placement;
 use super::scene::camera::{ResolvedCamera, Sphere};
-use super::scene::light::{shadow_caster, Light, ViewLight, MAX_LIGHTS};
+use super::scene::light::{shadow_caster, Light, LightKind, ViewLight, MAX_LIGHTS};
 use super::scene::material::{Highlight, Material, Model, MAX_LUT};
 use super::scene::outlines::{Outlines, INK_KINDS};
 use super::scene::shadows::MAX_BIAS_SLOPE;
@@ -94,6 +94,15 @@ pub fn shader_lights(lights: &[Light]) -> Vec<&Light> {
         .into_iter()
         .chain(lights.iter().enumerate().filter(|(i, _)| Some(*i) != caster).map(|(_, l)| l))
         .collect()
+}
+
+/// Bit k set when the shader's light k (in `shader_lights` order) is a point light.
+pub fn point_light_bits(lights: &[Light]) -> u32 {
+    shader_lights(lights)
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| matches!(l.kind, LightKind::Point { .. }))
+        .fold(0, |bits, (k, _)| bits | 1 << k)
 }
 
 /// Normalised view space -> the clip space of an orthographic view along the unit vector

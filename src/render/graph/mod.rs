@@ -127,6 +127,9 @@ pub struct FrameCtx<'a> {
     pub background: wgpu::Color,
     /// The scene's number of lights.
     pub lights: u32,
+    /// Bit k set when the shader's light k is a point light (`uniforms::shader_lights` order):
+    /// only those need a direction per pixel.
+    pub point_lights: u32,
     /// How the shadow map is read, when a light casts shadows.
     pub shadow_filter: Option<crate::render::scene::shadows::ShadowFilter>,
 }

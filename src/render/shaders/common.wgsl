@@ -45,6 +45,9 @@ override PER_VERTEX: bool = false;
 // shading code is specialised for them (as fast as a shader written for one model).
 override MODEL: u32 = 0u;
 override LIGHTS: u32 = 0u;
+// Bit k set when light k is a point light: only those need a direction per pixel (and the
+// pixel's position).
+override POINT_LIGHTS: u32 = 0u;
 
 struct VsIn {
     @location(0) position: vec3<f32>,
@@ -81,10 +84,7 @@ struct VsOut {
 
 fn unit_or_zero(v: vec3<f32>) -> vec3<f32> {
     let l2 = dot(v, v);
-    if (l2 > 0.0) {
-        return v * inverseSqrt(l2);
-    }
-    return vec3<f32>(0.0);
+    return v * select(0.0, inverseSqrt(l2), l2 > 0.0);
 }
 
 fn view_dir(p: vec3<f32>) -> vec3<f32> {
@@ -167,7 +167,7 @@ fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32) -> vec3<f32> {
     for (var k = 0u; k < LIGHTS; k++) {
         let light = frame.lights[k];
         var l = light.position.xyz;
-        if (light.position.w != 0.0) {
+        if (((POINT_LIGHTS >> k) & 1u) == 1u) {
             l = normalize(light.position.xyz - p);
         }
         let d = dot(n, l);

@@ -46,7 +46,8 @@ impl Shade {
             | shading.bits() << 16
             | (self.geometry.map_or(0, |g| 1 + g as u64)) << 9
             | (shadows.map_or(0, |s| 1 + s as u64)) << 12
-            | (f.lights as u64) << 32;
+            | (f.lights as u64) << 32
+            | (f.point_lights as u64) << 40;
         f.pipelines.get(("shade", variant), || {
             let module = match shadows {
                 None => f.pipelines.module(&f.dev.device, "shade", || crate::render::wgsl::source(WGSL)),
@@ -70,6 +71,7 @@ impl Shade {
             };
             let mut constants = shading.constants().to_vec();
             constants.push(("LIGHTS", f.lights as f64));
+            constants.push(("POINT_LIGHTS", f.point_lights as f64));
             let mut more = vec![];
             if let Some(filter) = shadows {
                 constants.extend(super::shadow::filter_constants(filter));
