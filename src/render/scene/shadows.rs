@@ -42,11 +42,12 @@ impl ShadowFilter {
         }
     }
 
-    /// How far from its centre a lookup reads, in texels (the bias must cover that distance).
+    /// How far from its centre a lookup reads, in texels (the bias must cover that distance):
+    /// PCF's four bilinear taps sit half a texel off centre (shadow_test.wgsl).
     pub fn reach(self) -> f64 {
         match self {
             Self::Nearest => 1.0,
-            Self::Pcf => 2.5,
+            Self::Pcf => 2.0,
         }
     }
 }
