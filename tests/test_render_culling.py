@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
+from conftest import load_mesh
 
 BACKENDS = ["vulkan", "gl"]
 OUTPUTS = ("color", "depth", "normal")
@@ -47,6 +48,14 @@ MESHES = {
     "one shell inside out": (*two_shells(True), None, False),
     "open grid": (*tm.shapes.grid(16), LOWERED, False),
 }
+
+# Files: spot is split along its texture seams (closed only once positions are merged), fandisk
+# is a CAD part, the bunny has holes. Centred on the origin with a diagonal of 2, as the
+# cameras expect.
+for _name, _culled in [("spot", True), ("fandisk", True), ("stanford-bunny", False)]:
+    _V, _F = load_mesh(_name)
+    _V = (_V - (_V.min(0) + _V.max(0)) / 2) / (np.linalg.norm(_V.max(0) - _V.min(0)) / 2)
+    MESHES[_name] = (_V, _F, None, _culled)
 
 CAMERAS = {
     "outside": tm.Camera.look_at((0.4, 1.2, 4.0), fov_y=40),

@@ -7,9 +7,12 @@
 //! volumes of its connected shells all have the same, clear sign. Seen from outside every
 //! shell, the first surface along any ray then shows its outer side: entering a solid crosses a
 //! face from the side its normal points to. A two-sided sheet (each face twice, once each way)
-//! is closed but encloses nothing (its volume cancels), so it does not count.
+//! is closed but encloses nothing (its volume cancels), so it does not count. A mesh split
+//! along UV or normal seams (the same point stored twice) is judged once those copies are
+//! merged (`enclosure_welded`).
 
 use super::buckets::Buckets;
+use super::weld::{weld_faces, weld_map};
 
 /// Which way a mesh's counter-clockwise normals point, relative to the solids it encloses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -23,6 +26,17 @@ pub enum Enclosure {
 /// A shell whose signed volume is below this share of the sum of its tetrahedra's absolute
 /// volumes encloses nothing measurable (a sheet, or a sum lost to rounding).
 const CLEAR_VOLUME: f64 = 1e-9;
+
+/// How `faces` over `positions` enclose solids, or, failing that, how they do once vertices at
+/// the same position are merged (a mesh split along UV or normal seams is closed as a surface
+/// even though its indices leave it open); None when neither does.
+pub fn enclosure_welded(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> Option<Enclosure> {
+    enclosure(positions, faces).or_else(|| {
+        let map = weld_map(positions);
+        let copies = map.iter().enumerate().any(|(i, &rep)| rep as usize != i);
+        copies.then(|| enclosure(positions, &weld_faces(faces, &map))).flatten()
+    })
+}
 
 /// How `faces` over `positions` enclose solids, or None when they do not (see the module).
 /// `positions` are best centred near the origin (the volume sums are then well conditioned).
@@ -155,6 +169,18 @@ mod tests {
         doubled.extend(flipped(&f));
         assert_eq!(enclosure(&p, &doubled), None, "every edge used four times");
         assert_eq!(enclosure(&p, &[]), None);
+    }
+
+    #[test]
+    fn a_mesh_split_along_a_seam_encloses_once_welded() {
+        let (p, f) = tetra();
+        let mut p = centred(&p);
+        // vertex 3 copied: faces 1 and 3 use the copy, so edges 0-3 and 1-3 look open
+        p.push(p[3]);
+        let split = vec![f[0], [0, 1, 4], f[2], [1, 2, 4]];
+        assert_eq!(enclosure(&p, &split), None);
+        assert_eq!(enclosure_welded(&p, &split), Some(Enclosure::Outward));
+        assert_eq!(enclosure_welded(&p, &split[..3]), None, "still open once welded");
     }
 
     #[test]

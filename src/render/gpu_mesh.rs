@@ -13,7 +13,7 @@ use crate::edges::feature::check_crease_angle;
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
 use crate::mesh::crease_normals::crease_normals;
-use crate::mesh::enclosure::{enclosure, Enclosure};
+use crate::mesh::enclosure::{enclosure_welded, Enclosure};
 use crate::mesh::normals::{triangle_unit_normal, vertex_normals};
 use crate::mesh::Bounds;
 use crate::real::{Real, Vec3};
@@ -207,7 +207,7 @@ impl GpuMesh {
             * placement.scale;
         // whether the faces enclose solids, found while the vertices are built
         let (encloses, built) =
-            rayon::join(|| enclosure(&stored, &faces), || build_vertices(&stored, &faces, normals));
+            rayon::join(|| enclosure_welded(&stored, &faces), || build_vertices(&stored, &faces, normals));
         let (vertices, indices) = built?;
         let indexed = !matches!(normals, NormalMode::Flat);
         let vertex_bytes: &[u8] = bytemuck::cast_slice(&vertices);
