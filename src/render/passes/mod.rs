@@ -14,6 +14,18 @@ use crate::render::gpu_mesh::GpuMesh;
 use crate::render::graph::target::DEPTH_FORMAT;
 use crate::render::graph::FrameCtx;
 
+/// The depth test of every mesh draw (camera and shadow map): the nearest surface wins and is
+/// written.
+pub fn nearest_wins() -> Option<wgpu::DepthStencilState> {
+    Some(wgpu::DepthStencilState {
+        format: DEPTH_FORMAT,
+        depth_write_enabled: Some(true),
+        depth_compare: Some(wgpu::CompareFunction::Less),
+        stencil: Default::default(),
+        bias: Default::default(),
+    })
+}
+
 /// A pipeline-cache key's bits for a cull mode.
 pub fn cull_bits(cull: Option<wgpu::Face>) -> u64 {
     match cull {
@@ -65,13 +77,7 @@ pub fn mesh_pipeline(
             front_face: wgpu::FrontFace::Ccw,
             ..Default::default()
         },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
+        depth_stencil: nearest_wins(),
         multisample: wgpu::MultisampleState { count: samples, mask: !0, alpha_to_coverage_enabled: false },
         fragment: Some(wgpu::FragmentState {
             module,

@@ -3,7 +3,7 @@
 
 use crate::error::Result;
 use crate::render::gpu_mesh::GpuMesh;
-use crate::render::graph::target::{Access, Target, Use, DEPTH_FORMAT};
+use crate::render::graph::target::{Access, Target, Use};
 use crate::render::graph::{FrameCtx, Pass};
 
 pub const WGSL: &str = include_str!("shadow_map.wgsl");
@@ -44,13 +44,7 @@ impl Pass for ShadowMap {
                     // both sides cast (open surfaces and planes too), but the inner sides of a
                     // closed mesh never show to the light
                     primitive: wgpu::PrimitiveState { cull_mode: cull, ..Default::default() },
-                    depth_stencil: Some(wgpu::DepthStencilState {
-                        format: DEPTH_FORMAT,
-                        depth_write_enabled: Some(true),
-                        depth_compare: Some(wgpu::CompareFunction::Less),
-                        stencil: Default::default(),
-                        bias: Default::default(),
-                    }),
+                    depth_stencil: super::nearest_wins(),
                     multisample: Default::default(),
                     fragment: None,
                     multiview_mask: None,
