@@ -27,9 +27,7 @@ demo: build
 	$(BIN)/python -m toonmesh demo
 
 test: build-test
-	# `--profile release`, not `--release` (the bench profile): the core's tests then reuse the
-	# dependencies maturin just built instead of building them all again.
-	cargo test --profile release --no-default-features
+	cargo test --release --no-default-features
 	$(BIN)/python -m pytest -q
 
 bench: build-test
