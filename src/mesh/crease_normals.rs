@@ -21,6 +21,7 @@ use rayon::prelude::*;
 use super::buckets::{prefix_sum, sort8, split_by, vertex_chunks, Buckets, RingCorner};
 use super::edge_table::prefetch;
 use super::normals::{face_normals, is_defined, unit_or_zero};
+use super::union_find::{find, join};
 use crate::edges::feature::CreaseTest;
 use crate::error::{Error, Result};
 use crate::huge_pages;
@@ -271,9 +272,8 @@ fn join_if_smooth(
     let (fa, fb) = (corners[ka][2] / 3, corners[kb][2] / 3);
     let (na, nb) = (unit[fa as usize], unit[fb as usize]);
     if fa != fb && is_defined(na) && is_defined(nb) && !test.is_crease(na, nb) {
-        let (ra, rb) = (find(parent, ka), find(parent, kb));
-        // the smaller root wins, so roots are each fan's first corner
-        parent[ra.max(rb) as usize] = ra.min(rb);
+        // roots are each fan's first corner
+        join(parent, ka, kb);
     }
 }
 
@@ -291,17 +291,6 @@ fn number_fans(parent: &mut [u32], label: &mut [u32], fan: &mut [u32]) -> u32 {
         *f = label[root];
     }
     count
-}
-
-/// The root of `k`, halving the path on the way.
-#[inline]
-fn find(parent: &mut [u32], mut k: usize) -> u32 {
-    while parent[k] as usize != k {
-        let up = parent[parent[k] as usize];
-        parent[k] = up;
-        k = up as usize;
-    }
-    k as u32
 }
 
 /// The unit normal of each of a vertex's fans into `out` (one per fan; one zero normal for an

@@ -12,6 +12,7 @@
 //! merged (`enclosure_welded`).
 
 use super::buckets::Buckets;
+use super::union_find::{find, join};
 use super::weld::{weld_faces, weld_map};
 
 /// Which way a mesh's counter-clockwise normals point, relative to the solids it encloses.
@@ -55,7 +56,7 @@ pub fn enclosure(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> Option<Enclosure
     if !paired.into_iter().all(|ok| ok) {
         return None;
     }
-    let shells = Shells::of(positions.len(), faces);
+    let shell = shells(positions.len(), faces);
     let mut signed = vec![0.0f64; positions.len()];
     let mut absolute = vec![0.0f64; positions.len()];
     let mut is_shell = vec![false; positions.len()];
@@ -63,7 +64,7 @@ pub fn enclosure(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> Option<Enclosure
         let [a, b, c] = f.map(|i| positions[i as usize]);
         let det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
             + a[2] * (b[0] * c[1] - b[1] * c[0]);
-        let s = shells.root(f[0]) as usize;
+        let s = shell[f[0] as usize] as usize;
         signed[s] += det;
         absolute[s] += det.abs();
         is_shell[s] = true;
@@ -82,47 +83,17 @@ pub fn enclosure(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> Option<Enclosure
     sign
 }
 
-/// The connected shells of a mesh: vertices joined by faces (union-find).
-struct Shells {
-    parent: Vec<u32>,
-}
-
-impl Shells {
-    fn of(n_vertices: usize, faces: &[[u32; 3]]) -> Shells {
-        let mut s = Shells { parent: (0..n_vertices as u32).collect() };
-        for &[a, b, c] in faces {
-            s.join(a, b);
-            s.join(a, c);
-        }
-        // every vertex straight under its root, so that `root` is one step
-        for v in 0..n_vertices as u32 {
-            let r = s.find(v);
-            s.parent[v as usize] = r;
-        }
-        s
+/// Each vertex's shell: the smallest vertex index it is joined to by faces.
+fn shells(n_vertices: usize, faces: &[[u32; 3]]) -> Vec<u32> {
+    let mut parent: Vec<u32> = (0..n_vertices as u32).collect();
+    for &[a, b, c] in faces {
+        join(&mut parent, a as usize, b as usize);
+        join(&mut parent, a as usize, c as usize);
     }
-
-    fn find(&mut self, mut v: u32) -> u32 {
-        while self.parent[v as usize] != v {
-            let up = self.parent[self.parent[v as usize] as usize];
-            self.parent[v as usize] = up;
-            v = up;
-        }
-        v
+    for v in 0..n_vertices {
+        parent[v] = find(&mut parent, v);
     }
-
-    fn join(&mut self, a: u32, b: u32) {
-        let (ra, rb) = (self.find(a), self.find(b));
-        if ra != rb {
-            // the smaller root wins: the result does not depend on face order
-            let (lo, hi) = (ra.min(rb), ra.max(rb));
-            self.parent[hi as usize] = lo;
-        }
-    }
-
-    fn root(&self, v: u32) -> u32 {
-        self.parent[v as usize]
-    }
+    parent
 }
 
 #[cfg(test)]

@@ -12,6 +12,7 @@ pub mod input;
 pub mod normals;
 pub mod reorder;
 pub mod shapes;
+pub mod union_find;
 pub mod weld;
 
 pub use adjacency::Adjacency;

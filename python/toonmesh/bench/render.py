@@ -29,7 +29,7 @@ import subprocess
 import sys
 import tempfile
 import time
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, Iterator, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -164,6 +164,17 @@ def _frame_tables(subdiv: int, frames: Sequence[Frame], repeat: int, skip_peers:
                     title="toonmesh's speed-up over each peer (peer's median time / toonmesh's; above 1x toonmesh is faster)"))
 
 
+def _renderers() -> Iterator[Tuple[str, Any]]:
+    """(backend, Renderer) for each backend that opens on this machine."""
+    import toonmesh as tm
+
+    for backend in ("vulkan", "gl"):
+        try:
+            yield backend, tm.Renderer(backend)
+        except tm.GpuUnavailableError:
+            continue
+
+
 def _oneshot(subdiv: int, size: int, repeat: int) -> None:
     """``tm.render(V, F)`` (upload, render, read back) against a frame of the mesh uploaded once,
     taken in turns."""
@@ -173,11 +184,7 @@ def _oneshot(subdiv: int, size: int, repeat: int) -> None:
     cam = tm.Camera.look_at(EYE, fov_y=FOV_Y)
     mat = tm.Material.thresholded_phong()
     rows = []
-    for backend in ("vulkan", "gl"):
-        try:
-            r = tm.Renderer(backend)
-        except tm.GpuUnavailableError:
-            continue
+    for backend, r in _renderers():
         kw = dict(camera=cam, material=mat, width=size, height=size)
         uploads, oneshots, steady = [], [], []
         tm.render(V, F, backend=backend, **kw)  # warm-up
@@ -209,11 +216,7 @@ def _normal_uploads(subdiv: int, repeat: int) -> None:
     kinds = [("smooth", "smooth", "smooth"), ("flat", "smooth", "flat"), ("auto, nothing splits", "smooth", "auto"),
              ("auto, nearly all split", "noisy", "auto")]
     rows = []
-    for backend in ("vulkan", "gl"):
-        try:
-            r = tm.Renderer(backend)
-        except tm.GpuUnavailableError:
-            continue
+    for backend, r in _renderers():
         times: Dict[str, List[float]] = {label: [] for label, _, _ in kinds}
         for k in range(max(1, repeat) + 1):  # the first round warms up
             for label, mesh, normals in kinds:
@@ -234,11 +237,7 @@ def _stream(views: int, size: int, repeat: int) -> None:
     V, F = bunny()
     cams = [tm.Camera.fit((np.sin(a), 0.3, np.cos(a))) for a in np.linspace(0, 2 * np.pi, views, endpoint=False)]
     rows = []
-    for backend in ("vulkan", "gl"):
-        try:
-            r = tm.Renderer(backend)
-        except tm.GpuUnavailableError:
-            continue
+    for backend, r in _renderers():
         mesh = r.add_mesh(V, F)
         kw = dict(width=size, height=size)
         one = lambda: [r.render(mesh, camera=c, **kw) for c in cams]  # noqa: E731
@@ -263,11 +262,7 @@ def _outline_cost(subdiv: int, size: int, repeat: int) -> None:
     V, F = tm.shapes.icosphere(subdiv)
     cam = tm.Camera.look_at(EYE, fov_y=FOV_Y)
     rows = []
-    for backend in ("vulkan", "gl"):
-        try:
-            r = tm.Renderer(backend)
-        except tm.GpuUnavailableError:
-            continue
+    for backend, r in _renderers():
         mesh = r.add_mesh(V, F)
         kw = dict(camera=cam, width=size, height=size)
         for outlines in ("mesh", "image", "both"):
@@ -322,11 +317,7 @@ def _kang(width: int, height: int, views: int, repeat: int) -> None:
     import toonmesh as tm
 
     rows = []
-    for backend in ("vulkan", "gl"):
-        try:
-            r = tm.Renderer(backend)
-        except tm.GpuUnavailableError:
-            continue
+    for backend, r in _renderers():
         for name, (V, F), paper_faces, crease in _kang_models():
             (floor_v, floor_f), centre, radius = kang_scene(V, F)
             scene = [tm.Mesh(r.add_mesh(V, F), material=tm.Material.lut(tm.kang_table(), "#4a90d9")),
