@@ -5,13 +5,15 @@ use glam::{DMat4, DVec3, DVec4, Vec3};
 
 use super::color::{linear_to_srgb8, to_linear};
 use super::device::BackendChoice;
+use super::effects::outlines::settings::Outlines;
 use super::gpu_mesh::NormalMode;
 use super::reference::{shade, RefLight};
 use super::renderer::{RenderOutput, Renderer};
 use super::scene::camera::{Camera, Placement, Projection};
 use super::scene::light::{Light, ViewLight};
-use super::scene::material::{kang_table, Highlight, Material, Model};
-use super::scene::{FrameSpec, Outputs, Scene, SceneItem, IDENTITY};
+use super::scene::material::Material;
+use super::scene::model::{kang_table, Highlight, Model};
+use super::scene::{FrameSpec, Output, Outputs, Scene, SceneItem, IDENTITY};
 use crate::mesh::shapes::icosphere;
 
 fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene {
@@ -37,7 +39,7 @@ fn all_outputs(w: u32, h: u32) -> FrameSpec {
     FrameSpec {
         width: w,
         height: h,
-        outputs: Outputs { color: true, normal: true, depth: true, ..Default::default() },
+        outputs: Outputs::of(&[Output::Color, Output::Normal, Output::Depth]),
         ..Default::default()
     }
 }
@@ -55,8 +57,11 @@ fn agreement(scene: &Scene, out: &RenderOutput) -> (f64, usize) {
             ViewLight::At(p) => RefLight::At(p.as_vec3(), Vec3::from(l.radiance())),
         })
         .collect();
-    let (color, normal, depth) =
-        (out.color.as_ref().unwrap(), out.normal.as_ref().unwrap(), out.depth.as_ref().unwrap());
+    let (color, normal, depth) = (
+        out.bytes(Output::Color).unwrap(),
+        out.floats(Output::Normal).unwrap(),
+        out.floats(Output::Depth).unwrap(),
+    );
     let inv = proj.inverse();
     let (mut good, mut covered) = (0usize, 0usize);
     for y in 0..h {
@@ -117,8 +122,7 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
                 diffuse: [0.8, 0.5, 0.3],
                 specular: [0.5, 0.5, 0.5],
                 per_vertex: false,
-                hatching: None,
-                dither: None,
+                effects: Default::default(),
             };
             let scene = sphere_scene(&r, material, NormalMode::Smooth);
             let out = r.render(&scene, &all_outputs(161, 97)).unwrap();
@@ -138,9 +142,9 @@ fn odd_and_tiny_sizes_read_back_whole_rows() {
         let scene = sphere_scene(&r, Material::default(), NormalMode::Flat);
         for (w, h) in [(301, 199), (1, 1), (3, 2)] {
             let out = r.render(&scene, &all_outputs(w, h)).unwrap();
-            assert_eq!(out.color.unwrap().len(), (w * h * 4) as usize);
-            assert_eq!(out.normal.unwrap().len(), (w * h * 3) as usize);
-            assert_eq!(out.depth.unwrap().len(), (w * h) as usize);
+            assert_eq!(out.bytes(Output::Color).unwrap().len(), (w * h * 4) as usize);
+            assert_eq!(out.floats(Output::Normal).unwrap().len(), (w * h * 3) as usize);
+            assert_eq!(out.floats(Output::Depth).unwrap().len(), (w * h) as usize);
         }
     }
 }
@@ -151,10 +155,10 @@ fn empty_scene_is_background() {
     let scene = Scene { lights: vec![], ambient: [0.0; 3], ..Default::default() };
     let frame = FrameSpec { background: [0.2, 0.4, 0.6, 1.0], ..all_outputs(5, 4) };
     let out = r.render(&scene, &frame).unwrap();
-    let c = out.color.unwrap();
+    let c = out.bytes(Output::Color).unwrap();
     assert_eq!(&c[..4], &[51, 102, 153, 255]);
-    assert!(out.depth.unwrap().iter().all(|d| *d == f32::INFINITY));
-    assert!(out.normal.unwrap().iter().all(|n| *n == 0.0));
+    assert!(out.floats(Output::Depth).unwrap().iter().all(|d| *d == f32::INFINITY));
+    assert!(out.floats(Output::Normal).unwrap().iter().all(|n| *n == 0.0));
     let _ = Camera {
         placement: Placement::LookAt { eye: [0.0; 3], target: [0.0, 0.0, -1.0], up: [0.0, 1.0, 0.0] },
         projection: Projection::Perspective { fov_y_deg: 40.0 },
@@ -164,7 +168,7 @@ fn empty_scene_is_background() {
 }
 
 /// A bumpy sphere and a smaller one in front of it, so that some lines are hidden.
-fn two_spheres(r: &Renderer, outlines: super::scene::outlines::Outlines) -> Scene {
+fn two_spheres(r: &Renderer, outlines: Outlines) -> Scene {
     let (v, f) = icosphere(3, 0.04, 3).unwrap();
     let id = r.add_mesh(&v, f, NormalMode::Smooth).unwrap();
     let front = [[0.5, 0.0, 0.0, 0.4], [0.0, 0.5, 0.0, 0.2], [0.0, 0.0, 0.5, 1.2], [0.0, 0.0, 0.0, 1.0]];
@@ -184,10 +188,40 @@ fn two_spheres(r: &Renderer, outlines: super::scene::outlines::Outlines) -> Scen
     }
 }
 
+/// The screen lines a frame of `scene` draws, as the `silhouettes` step finds them, projected
+/// as the lines pass projects them, and the camera of the frame.
+fn screen_lines(
+    r: &Renderer,
+    scene: &Scene,
+    frame: &FrameSpec,
+) -> (Vec<super::effects::outlines::visibility::ScreenLine>, super::scene::camera::ResolvedCamera) {
+    use super::effects::outlines::mesh_lines::{stored_view, MeshLines};
+    use super::effects::outlines::visibility::Projector;
+    let checked = r.check(scene.clone(), *frame).unwrap();
+    let mut report = Default::default();
+    let p = r.prepare(checked, &mut report).unwrap();
+    let outlines = scene.outlines.as_ref().unwrap();
+    let mut lines = Vec::new();
+    for (item, rec) in scene.items.iter().zip(&p.records) {
+        let view = stored_view(&p.cam, item.model_matrix(), &rec.gpu);
+        let outline = MeshLines::of(rec).outline(&rec.host, view, outlines).unwrap();
+        let projector = Projector::of(item, &rec.gpu.placement, &p.cam, frame.width, frame.height);
+        let pos = &rec.host.positions;
+        lines.extend(
+            outline
+                .edges
+                .iter()
+                .zip(&outline.kinds)
+                .filter_map(|(e, k)| projector.project(pos[e[0] as usize], pos[e[1] as usize], *k as usize)),
+        );
+    }
+    (lines, p.cam)
+}
+
 #[test]
 fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
-    use super::passes::lines::visibility::{coverage_image, DepthImage};
-    use super::scene::outlines::{Outlines, INK_KINDS};
+    use super::effects::outlines::settings::INK_KINDS;
+    use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
     let outlines = Outlines { crease_angle: 25.0, ..Outlines::new(true, false) };
     for backend in backends() {
         let r = Renderer::new(backend).unwrap();
@@ -195,27 +229,18 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
         let frame = FrameSpec {
             width: 240,
             height: 180,
-            outputs: Outputs { outline: true, depth: true, ..Default::default() },
+            outputs: Outputs::of(&[Output::Outline, Output::Depth]),
             ..Default::default()
         };
         let out = r.render(&scene, &frame).unwrap();
-        let p = r.prepare(&scene, &frame).unwrap();
-        let depth: Vec<f32> = out.depth.as_ref().unwrap().iter().map(|d| d / p.cam.scale as f32).collect();
+        let (lines, cam) = screen_lines(&r, &scene, &frame);
+        let depth: Vec<f32> =
+            out.floats(Output::Depth).unwrap().iter().map(|d| d / cam.scale as f32).collect();
         let img = DepthImage { depth: &depth, width: 240, height: 180 };
-        let mut lines = Vec::new();
-        for ((item, rec), view) in scene.items.iter().zip(&p.records).zip(&p.views) {
-            let projector = p.projector(item, rec, &frame);
-            let pos = rec.lines.positions();
-            let view = view.as_ref().expect("mesh lines are drawn");
-            lines.extend(
-                view.edges.iter().zip(&view.kinds).filter_map(|(e, k)| {
-                    projector.project(pos[e[0] as usize], pos[e[1] as usize], *k as usize)
-                }),
-            );
-        }
+        let rule = Visibility::of(outlines.depth_offset, &cam, frame.height);
         let widths: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.width)).collect();
-        let want = coverage_image(&lines, &widths, false, &img, p.visibility(&frame));
-        let got = out.outline.unwrap();
+        let want = coverage_image(&lines, &widths, false, &img, rule);
+        let got = out.floats(Output::Outline).unwrap();
         let n = got.len() as f64;
         let mean = got.iter().zip(&want).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / n;
         let off = got.iter().zip(&want).filter(|(a, b)| (*a - *b).abs() > 0.25).count() as f64 / n;
@@ -226,13 +251,7 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
             "{backend:?}: mean difference {mean}, {off} of pixels off by > 0.25"
         );
         // the rule hides something here: with an infinite offset every line would show
-        let all = coverage_image(
-            &lines,
-            &widths,
-            false,
-            &img,
-            super::passes::lines::visibility::Visibility { offset: 1e30, ..p.visibility(&frame) },
-        );
+        let all = coverage_image(&lines, &widths, false, &img, Visibility { offset: 1e30, ..rule });
         let shown = all.iter().filter(|&&c| c > 0.0).count();
         assert!(shown > inked + 200, "{backend:?}: hidden-line removal hid only {} pixels", shown - inked);
     }
@@ -240,8 +259,7 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
 
 #[test]
 fn image_edges_match_the_cpu_rule_on_the_same_buffers_on_both_backends() {
-    use super::passes::edges::reference::edge_mask;
-    use super::scene::outlines::Outlines;
+    use super::effects::outlines::edges_reference::edge_mask;
     let outlines = Outlines { depth_threshold: 0.05, ..Outlines::new(false, true) };
     for backend in backends() {
         let r = Renderer::new(backend).unwrap();
@@ -249,21 +267,21 @@ fn image_edges_match_the_cpu_rule_on_the_same_buffers_on_both_backends() {
         let frame = FrameSpec {
             width: 199,
             height: 151,
-            outputs: Outputs { outline: true, normal: true, depth: true, color: true, ..Default::default() },
+            outputs: Outputs::of(&[Output::Outline, Output::Normal, Output::Depth, Output::Color]),
             ..Default::default()
         };
         let out = r.render(&scene, &frame).unwrap();
-        let (normal, depth) = (out.normal.unwrap(), out.depth.unwrap());
+        let (normal, depth) = (out.floats(Output::Normal).unwrap(), out.floats(Output::Depth).unwrap());
         let want =
-            edge_mask(&normal, &depth, 151, 199, (outlines.normal_threshold, outlines.depth_threshold))
+            edge_mask(normal, depth, 151, 199, (outlines.normal_threshold, outlines.depth_threshold))
                 .unwrap();
-        let got: Vec<bool> = out.outline.unwrap().iter().map(|&c| c > 0.5).collect();
+        let got: Vec<bool> = out.floats(Output::Outline).unwrap().iter().map(|&c| c > 0.5).collect();
         let agree = got.iter().zip(&want).filter(|(a, b)| a == b).count() as f64 / got.len() as f64;
         let edges = want.iter().filter(|&&e| e).count();
         assert!(edges > 300, "{backend:?}: {edges} edge pixels");
         assert!(agree >= 0.999, "{backend:?}: the GPU mask agrees on {agree} of pixels");
         // edge pixels are painted in the image ink (black) over the colour
-        let color = out.color.unwrap();
+        let color = out.bytes(Output::Color).unwrap();
         assert!(want.iter().zip(color.chunks(4)).filter(|(e, _)| **e).all(|(_, c)| c[..3] == [0, 0, 0]));
     }
 }

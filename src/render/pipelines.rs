@@ -5,10 +5,28 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use crate::render::scene::shadows::ShadowFilter;
+use crate::render::effects::shadows::settings::ShadowFilter;
 
-/// A pipeline's name in the cache: the pass that builds it and the bits of its variant.
-pub type PipelineKey = (&'static str, u64);
+/// A pipeline's name in the cache: the pass that builds it, the bits of its variant, and the
+/// pipeline constants that vary with the material.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct PipelineKey {
+    pub pass: &'static str,
+    pub bits: u64,
+    pub constants: Vec<(&'static str, u64)>,
+}
+
+impl PipelineKey {
+    pub fn new(pass: &'static str, bits: u64) -> Self {
+        PipelineKey { pass, bits, constants: Vec::new() }
+    }
+
+    /// This key with pipeline constants (their values' bits) in it.
+    pub fn with(mut self, constants: &[(&'static str, f64)]) -> Self {
+        self.constants = constants.iter().map(|&(n, v)| (n, v.to_bits())).collect();
+        self
+    }
+}
 
 /// Bind group layouts shared by passes.
 pub struct Layouts {
@@ -108,7 +126,7 @@ pub struct PipelineCache {
     pub layouts: Layouts,
     /// The shadow samplers, by filter (`ShadowFilter::Nearest`, then `Pcf`).
     pub shadow_samplers: [wgpu::Sampler; 2],
-    modules: Mutex<HashMap<&'static str, wgpu::ShaderModule>>,
+    modules: Mutex<HashMap<String, wgpu::ShaderModule>>,
     pipelines: Mutex<HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>>,
 }
 
@@ -136,16 +154,11 @@ impl PipelineCache {
     }
 
     /// The shader module called `name`, compiled from `source()` on first use.
-    pub fn module(
-        &self,
-        device: &wgpu::Device,
-        name: &'static str,
-        source: impl FnOnce() -> String,
-    ) -> wgpu::ShaderModule {
+    pub fn module(&self, device: &wgpu::Device, name: String, source: impl FnOnce() -> String) -> wgpu::ShaderModule {
         let mut modules = self.modules.lock().unwrap_or_else(|e| e.into_inner());
         modules
             .entry(name)
-            .or_insert_with(|| {
+            .or_insert_with_key(|name| {
                 device.create_shader_module(wgpu::ShaderModuleDescriptor {
                     label: Some(name),
                     source: wgpu::ShaderSource::Wgsl(source().into()),

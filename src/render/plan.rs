@@ -1,183 +1,192 @@
-//! The render plan: from what a scene has (outline requests) and what the frame asks for
-//! (outputs, MSAA, supersampling) to the passes that must run, and nothing else. The plan is
+//! The render plan: from what a checked scene has and what its frame asks for (outputs, MSAA,
+//! supersampling) to the passes and host steps that must run, and nothing else. The plan is
 //! data: `names()` is what `RenderResult.passes` reports and what the tests hold.
 //!
-//! - `shadow_map` (depth from the shadow-casting light) runs when a light casts shadows and
-//!   colour or the shadow output is asked for;
+//! The core's part:
 //! - `shade` runs when colour is asked for; at the output size with one sample per pixel it
 //!   also writes the geometry target when the frame needs it;
 //! - `gbuffer` writes the geometry target (normal and/or linear depth) when the frame needs it
-//!   and `shade` cannot: the normal output or image-space edges need normals; the depth output,
-//!   mesh-space lines and the visible-line polylines need depth;
+//!   and `shade` cannot: the normal and depth outputs need it, and so may frame effects;
 //! - `downsample` averages supersampled colour;
-//! - `shadow` (the light's visibility at each pixel) runs when the shadow output is asked for;
-//! - `edges` (image-space outlines) and `lines` (mesh-space outlines) run when the scene asks
-//!   for outlines and there is something to draw them into (colour or the outline output);
-//! - one readback per target whose contents are asked for;
-//! - on the host: `silhouettes` (the per-view half of mesh-space outlines) before the frame,
-//!   `visible_lines` (the visible lines as polylines) after it.
+//! - one readback per target whose contents are asked for.
+//!
+//! Each frame effect (`effects::frame::FRAME`) adds its own: passes before shading (a shadow
+//! map), after it (a shadow mask, ink), readbacks, and host steps before the frame
+//! (`silhouettes`) or after it (`visible_lines`).
 
+use crate::render::effects::frame::{frame_members, FRAME};
+use crate::render::graph::effect::{HostStep, PlanInputs, Steps};
 use crate::render::graph::resources::ResourceKey;
 use crate::render::graph::target::{GeometryLayout, Shape, Target};
 use crate::render::graph::Pass;
 use crate::render::passes::downsample::Downsample;
-use crate::render::passes::edges::Edges;
 use crate::render::passes::geometry::Geometry;
-use crate::render::passes::lines::Lines;
 use crate::render::passes::readback::{Readback, Region};
 use crate::render::passes::shade::Shade;
-use crate::render::passes::shadow::ShadowMask;
-use crate::render::passes::shadow_map::ShadowMap;
-use crate::render::scene::light::shadow_caster;
-use crate::render::scene::{FrameSpec, Scene};
+use crate::render::scene::checked::CheckedScene;
+use crate::render::scene::Output;
+use crate::render::uniforms::draw_members;
 
-/// The scene's effects the plan depends on.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Features {
-    pub mesh_lines: bool,
-    pub image_edges: bool,
-    /// The shadow map's side, when a light casts shadows onto something.
-    pub shadow_size: Option<u32>,
+/// How a read-back region is copied out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Copy {
+    /// Bytes as they are (colour).
+    Bytes,
+    /// f32 words `first..first + keep` of each pixel; depths scaled to world units when `world`.
+    Words { first: usize, keep: usize, world: bool },
+    /// Unsigned normalised bytes to f32 in [0, 1] (coverage).
+    Unorm8,
 }
 
-impl Features {
-    pub fn of(scene: &Scene) -> Self {
-        let caster = shadow_caster(&scene.lights).filter(|_| !scene.items.is_empty());
-        Features {
-            mesh_lines: scene.mesh_lines(),
-            image_edges: scene.image_edges(),
-            shadow_size: caster.map(|(_, _, s)| s.size),
-        }
-    }
+/// Where a copy goes: an output, or the depth the host steps after the frame read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dest {
+    Output(Output),
+    HostDepth,
 }
 
-/// The host step that finds each view's silhouettes.
-pub const SILHOUETTES: &str = "silhouettes";
-/// The host step that turns visible mesh-space lines into polylines.
-pub const VISIBLE_LINES: &str = "visible_lines";
+/// A region of the staging buffer and what is copied out of it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReadPlan {
+    pub region: Region,
+    pub copies: Vec<(Dest, Copy)>,
+}
 
 #[derive(Debug)]
 pub struct Plan {
     pub passes: Vec<Box<dyn Pass>>,
     pub shape: Shape,
-    /// Where each read-back target lies in the staging buffer.
-    pub color: Option<Region>,
-    pub geometry: Option<Region>,
-    pub outline: Option<Region>,
-    pub shadow: Option<Region>,
+    pub reads: Vec<ReadPlan>,
     /// Bytes of the readbacks (timestamps go after them).
     pub readback_bytes: u64,
-    pub silhouettes: bool,
-    pub visible_lines: bool,
+    pub host_before: Vec<Box<dyn HostStep>>,
+    pub host_after: Vec<Box<dyn HostStep>>,
 }
 
-/// The passes for `frame` of a scene with `features`, in the order they run.
-pub fn plan(features: Features, frame: &FrameSpec) -> Plan {
+/// The wider of two geometry layouts (normal and depth holds depth too).
+fn wider(a: Option<GeometryLayout>, b: Option<GeometryLayout>) -> Option<GeometryLayout> {
+    match (a, b) {
+        (Some(GeometryLayout::NormalDepth), _) | (_, Some(GeometryLayout::NormalDepth)) => {
+            Some(GeometryLayout::NormalDepth)
+        }
+        (x, y) => x.or(y),
+    }
+}
+
+/// How a target an effect reads back is laid out and copied.
+fn copy_of(target: Target) -> (u32, Copy) {
+    match target {
+        Target::Outline => (1, Copy::Unorm8),
+        Target::Shadow => (4, Copy::Words { first: 0, keep: 1, world: false }),
+        _ => (4, Copy::Bytes),
+    }
+}
+
+/// The passes and steps for `scene`'s frame, in the order they run.
+pub fn plan(scene: &CheckedScene) -> Plan {
+    let frame = &scene.frame;
     let o = frame.outputs;
-    let ink = o.color || o.outline;
-    let image = features.image_edges && ink;
-    let lines = features.mesh_lines && ink;
-    let visible_lines = features.mesh_lines && o.lines;
-    let shadow_size = features.shadow_size.filter(|_| o.color || o.shadow);
-    let shadow_output = o.shadow && shadow_size.is_some();
-    let geometry = if o.normal || image || shadow_output {
+    let mut geometry = if o.has(Output::Normal) {
         Some(GeometryLayout::NormalDepth)
-    } else if o.depth || lines || visible_lines {
+    } else if o.has(Output::Depth) {
         Some(GeometryLayout::Depth)
     } else {
         None
     };
-    let single = frame.msaa == 1 && frame.supersample == 1;
-    let in_shade = o.color && single && geometry.is_some();
-    let shape = Shape {
-        width: frame.width,
-        height: frame.height,
-        msaa: frame.msaa,
-        supersample: frame.supersample,
-        geometry,
-        shadow_size,
-    };
-    let mut passes: Vec<Box<dyn Pass>> = Vec::new();
-    if shadow_size.is_some() {
-        passes.push(Box::new(ShadowMap));
+    for e in FRAME {
+        geometry = wider(geometry, e.geometry(scene));
     }
-    if o.color {
+    let color = o.has(Output::Color);
+    let single = frame.msaa == 1 && frame.supersample == 1;
+    let in_shade = color && single && geometry.is_some();
+    let mut steps = Steps {
+        shape: Shape {
+            width: frame.width,
+            height: frame.height,
+            msaa: frame.msaa,
+            supersample: frame.supersample,
+            geometry,
+            shadow_size: None,
+        },
+        ..Default::default()
+    };
+    let cx = PlanInputs { scene, geometry };
+    for e in FRAME {
+        e.plan(&cx, &mut steps);
+    }
+    let mut passes = std::mem::take(&mut steps.before);
+    if color {
         passes.push(Box::new(Shade {
             samples: frame.msaa,
             supersampled: frame.supersample > 1,
             geometry: geometry.filter(|_| in_shade),
-            shadowed: shadow_size.is_some(),
+            hook: steps.shade_hook.clone(),
         }));
     }
     if let Some(layout) = geometry.filter(|_| !in_shade) {
         passes.push(Box::new(Geometry { layout }));
     }
-    if o.color && frame.supersample > 1 {
+    if color && frame.supersample > 1 {
         passes.push(Box::new(Downsample { factor: frame.supersample }));
     }
-    if shadow_output {
-        passes.push(Box::new(ShadowMask));
-    }
-    let mut clear_outline = o.outline;
-    if image {
-        passes.push(Box::new(Edges { color: o.color, outline: o.outline, clear_outline }));
-        clear_outline = false;
-    }
-    if lines {
-        let layout = geometry.expect("lines need depth");
-        passes.push(Box::new(Lines { color: o.color, outline: o.outline, clear_outline, layout }));
-    }
+    passes.append(&mut steps.after);
+
+    // readbacks, in the order of the outputs
     let (w, h) = (frame.width, frame.height);
     let mut end = 0u64;
-    let mut region = |bytes_per_pixel: u32| {
-        let r = Region::at(end, w, h, bytes_per_pixel);
-        end = r.end();
-        r
+    let mut reads = Vec::new();
+    let mut read_back = |passes: &mut Vec<Box<dyn Pass>>, name, target, bytes_per_pixel, copies| {
+        let region = Region::at(end, w, h, bytes_per_pixel);
+        end = region.end();
+        passes.push(Box::new(Readback { name, target, region }) as Box<dyn Pass>);
+        reads.push(ReadPlan { region, copies });
     };
-    let mut readback = |name: &'static str, target: Target, r: Region| {
-        passes.push(Box::new(Readback { name, target, region: r }));
-        Some(r)
-    };
-    let color = if o.color { readback("readback_color", Target::Color, region(4)) } else { None };
-    let geometry_name = match (o.normal, o.depth || visible_lines) {
-        (true, true) => Some("readback_normal_depth"),
-        (true, false) => Some("readback_normal"),
-        (false, true) => Some("readback_depth"),
-        (false, false) => None,
-    };
-    let geometry_region = match (geometry_name, geometry) {
-        (Some(name), Some(layout)) => {
-            readback(name, Target::Geometry, region(4 * layout.words_per_pixel() as u32))
+    if color {
+        read_back(&mut passes, "readback_color", Target::Color, 4, vec![(Dest::Output(Output::Color), Copy::Bytes)]);
+    }
+    if let Some(layout) = geometry {
+        let depth = layout.depth_component();
+        let mut copies = Vec::new();
+        if o.has(Output::Normal) {
+            copies.push((Dest::Output(Output::Normal), Copy::Words { first: 0, keep: 3, world: false }));
         }
-        _ => None,
-    };
-    let outline = if o.outline { readback("readback_outline", Target::Outline, region(1)) } else { None };
-    let shadow = if shadow_output { readback("readback_shadow", Target::Shadow, region(4)) } else { None };
+        if o.has(Output::Depth) {
+            copies.push((Dest::Output(Output::Depth), Copy::Words { first: depth, keep: 1, world: true }));
+        }
+        if steps.host_depth {
+            copies.push((Dest::HostDepth, Copy::Words { first: depth, keep: 1, world: false }));
+        }
+        let name = match (o.has(Output::Normal), o.has(Output::Depth) || steps.host_depth) {
+            (true, true) => Some("readback_normal_depth"),
+            (true, false) => Some("readback_normal"),
+            (false, true) => Some("readback_depth"),
+            (false, false) => None,
+        };
+        if let Some(name) = name {
+            read_back(&mut passes, name, Target::Geometry, 4 * layout.words_per_pixel() as u32, copies);
+        }
+    }
+    steps.readbacks.sort_by_key(|r| r.output);
+    for r in &steps.readbacks {
+        let (bytes, copy) = copy_of(r.target);
+        read_back(&mut passes, r.name, r.target, bytes, vec![(Dest::Output(r.output), copy)]);
+    }
     Plan {
         passes,
-        shape,
-        color,
-        geometry: geometry_region,
-        outline,
-        shadow,
+        shape: steps.shape,
+        reads,
         readback_bytes: end,
-        silhouettes: features.mesh_lines && (lines || visible_lines),
-        visible_lines,
+        host_before: steps.host_before,
+        host_after: steps.host_after,
     }
 }
 
 impl Plan {
     /// Every step in order: host steps and passes.
     pub fn names(&self) -> Vec<&'static str> {
-        let mut names = Vec::with_capacity(self.passes.len() + 2);
-        if self.silhouettes {
-            names.push(SILHOUETTES);
-        }
-        names.extend(self.passes.iter().map(|p| p.name()));
-        if self.visible_lines {
-            names.push(VISIBLE_LINES);
-        }
-        names
+        let before = self.host_before.iter().map(|s| s.name());
+        let passes = self.passes.iter().map(|p| p.name());
+        before.chain(passes).chain(self.host_after.iter().map(|s| s.name())).collect()
     }
 
     /// Passes timed on the GPU.
@@ -200,10 +209,12 @@ impl Plan {
         let queries = if timestamps { 2 * self.timed() as u32 } else { 0 };
         let staging_bytes =
             if queries > 0 { self.timestamp_offset() + 8 * queries as u64 } else { self.readback_bytes };
+        let bytes = |members: crate::render::uniforms::Members| members.iter().map(|m| m.1.size as u64).sum();
         ResourceKey {
             textures: usage.into_iter().map(|(t, u)| (t, t.desc(&self.shape), u)).collect(),
             staging_bytes,
             queries,
+            uniform_bytes: (bytes(frame_members()), bytes(draw_members())),
         }
     }
 }
@@ -211,75 +222,103 @@ impl Plan {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::scene::Outputs;
+    use crate::render::effects::outlines::settings::Outlines;
+    use crate::render::effects::shadows::settings::Shadows;
+    use crate::render::scene::checked::DeviceLimits;
+    use crate::render::scene::light::Light;
+    use crate::render::scene::{FrameSpec, Outputs, Scene, SceneItem, IDENTITY};
 
-    fn names(features: Features, f: &FrameSpec) -> Vec<&'static str> {
-        plan(features, f).names()
+    /// A scene of one (unresolved) mesh with the given outlines and a shadow-casting light or not.
+    fn scene(outlines: Option<Outlines>, shadows: bool) -> Scene {
+        let light = Light { shadows: shadows.then(|| Shadows { size: 1024, ..Default::default() }), ..Light::default() };
+        Scene {
+            items: vec![SceneItem { mesh: 1, transform: IDENTITY, material: Default::default() }],
+            lights: vec![if shadows { Light { kind: crate::render::scene::light::LightKind::Directional { direction: [0.0, -1.0, 0.0] }, ..light } } else { light }],
+            outlines,
+            ..Default::default()
+        }
     }
 
-    const NONE: Features = Features { mesh_lines: false, image_edges: false, shadow_size: None };
+    fn checked(scene: Scene, frame: FrameSpec) -> CheckedScene {
+        let limits = DeviceLimits { max_texture_size: 8192, msaa_samples: vec![1, 4] };
+        CheckedScene::check(scene, frame, &limits).unwrap()
+    }
+
+    fn names(scene: Scene, frame: FrameSpec) -> Vec<&'static str> {
+        plan(&checked(scene, frame)).names()
+    }
+
+    fn outputs(o: &[Output]) -> FrameSpec {
+        FrameSpec { outputs: Outputs::of(o), ..Default::default() }
+    }
 
     #[test]
     fn minimal_scene_runs_one_pass_and_one_readback() {
-        assert_eq!(names(NONE, &FrameSpec::default()), ["shade", "readback_color"]);
+        assert_eq!(names(scene(None, false), FrameSpec::default()), ["shade", "readback_color"]);
     }
 
     #[test]
     fn geometry_joins_shading_only_when_sample_counts_match() {
-        let mut f = FrameSpec {
-            outputs: Outputs { color: true, normal: true, depth: true, ..Default::default() },
-            ..Default::default()
-        };
-        assert_eq!(names(NONE, &f), ["shade", "readback_color", "readback_normal_depth"]);
+        let mut f = outputs(&[Output::Color, Output::Normal, Output::Depth]);
+        assert_eq!(names(scene(None, false), f), ["shade", "readback_color", "readback_normal_depth"]);
         f.msaa = 4;
         f.supersample = 2;
         assert_eq!(
-            names(NONE, &f),
+            names(scene(None, false), f),
             ["shade", "gbuffer", "downsample", "readback_color", "readback_normal_depth"]
         );
-        f.outputs = Outputs { depth: true, ..Default::default() };
-        assert_eq!(names(NONE, &f), ["gbuffer", "readback_depth"]);
-        assert_eq!(plan(NONE, &f).shape.geometry, Some(GeometryLayout::Depth));
+        f.outputs = Outputs::of(&[Output::Depth]);
+        assert_eq!(names(scene(None, false), f), ["gbuffer", "readback_depth"]);
+        assert_eq!(plan(&checked(scene(None, false), f)).shape.geometry, Some(GeometryLayout::Depth));
     }
 
     #[test]
     fn outlines_run_only_when_asked_for_and_drawable() {
-        let both = Features { mesh_lines: true, image_edges: true, shadow_size: None };
+        let both = || scene(Some(Outlines::new(true, true)), false);
         let f = FrameSpec::default();
-        assert_eq!(names(both, &f), ["silhouettes", "shade", "edges", "lines", "readback_color"]);
+        assert_eq!(names(both(), f), ["silhouettes", "shade", "edges", "lines", "readback_color"]);
         // image edges need normals, produced but not read back
-        let p = plan(Features { mesh_lines: false, image_edges: true, shadow_size: None }, &f);
+        let p = plan(&checked(scene(Some(Outlines::new(false, true)), false), f));
         assert_eq!(p.shape.geometry, Some(GeometryLayout::NormalDepth));
-        assert!(p.geometry.is_none());
+        assert_eq!(p.reads.len(), 1);
         // nothing to draw ink into: no ink pass
-        let depth_only = FrameSpec { outputs: Outputs { depth: true, ..Default::default() }, ..f };
-        assert_eq!(names(both, &depth_only), ["gbuffer", "readback_depth"]);
+        assert_eq!(names(both(), outputs(&[Output::Depth])), ["gbuffer", "readback_depth"]);
         // the outline output alone
-        let outline = FrameSpec { outputs: Outputs { outline: true, ..Default::default() }, ..f };
-        assert_eq!(names(both, &outline), ["silhouettes", "gbuffer", "edges", "lines", "readback_outline"]);
-        // vector lines read depth back without returning it
-        let lines = FrameSpec { outputs: Outputs { color: true, lines: true, ..Default::default() }, ..f };
         assert_eq!(
-            names(Features { mesh_lines: true, image_edges: false, shadow_size: None }, &lines),
+            names(both(), outputs(&[Output::Outline])),
+            ["silhouettes", "gbuffer", "edges", "lines", "readback_outline"]
+        );
+        // vector lines read depth back without returning it
+        assert_eq!(
+            names(scene(Some(Outlines::new(true, false)), false), outputs(&[Output::Color, Output::Lines])),
             ["silhouettes", "shade", "lines", "readback_color", "readback_depth", "visible_lines"]
         );
+        // outlines that draw nothing still give an empty coverage
+        let mut none = Outlines::new(true, false);
+        none.styles = [None; crate::render::effects::outlines::settings::INK_KINDS];
+        assert_eq!(names(scene(Some(none), false), outputs(&[Output::Outline])), ["clear_outline", "readback_outline"]);
     }
 
     #[test]
     fn shadows_run_only_when_a_light_casts_them_and_something_uses_them() {
-        let lit = Features { shadow_size: Some(1024), ..NONE };
+        let lit = || scene(None, true);
         let f = FrameSpec::default();
-        assert_eq!(names(lit, &f), ["shadow_map", "shade", "readback_color"]);
+        assert_eq!(names(lit(), f), ["shadow_map", "shade", "readback_color"]);
         // the shadow output alone: no shading, the visibility from the normals and depths
-        let mask = FrameSpec { outputs: Outputs { shadow: true, ..Default::default() }, ..f };
-        assert_eq!(names(lit, &mask), ["shadow_map", "gbuffer", "shadow", "readback_shadow"]);
-        assert_eq!(plan(lit, &mask).shape.geometry, Some(GeometryLayout::NormalDepth));
-        let both = FrameSpec { outputs: Outputs { color: true, shadow: true, ..Default::default() }, ..f };
-        assert_eq!(names(lit, &both), ["shadow_map", "shade", "shadow", "readback_color", "readback_shadow"]);
+        let mask = outputs(&[Output::Shadow]);
+        assert_eq!(names(lit(), mask), ["shadow_map", "gbuffer", "shadow", "readback_shadow"]);
+        assert_eq!(plan(&checked(lit(), mask)).shape.geometry, Some(GeometryLayout::NormalDepth));
+        assert_eq!(
+            names(lit(), outputs(&[Output::Color, Output::Shadow])),
+            ["shadow_map", "shade", "shadow", "readback_color", "readback_shadow"]
+        );
         // nothing lit is asked for: no shadow map
-        let depth = FrameSpec { outputs: Outputs { depth: true, ..Default::default() }, ..f };
-        assert_eq!(names(lit, &depth), ["gbuffer", "readback_depth"]);
-        let key = plan(lit, &f).resource_key(false);
+        assert_eq!(names(lit(), outputs(&[Output::Depth])), ["gbuffer", "readback_depth"]);
+        // an empty scene: nothing to shade with shadows, but the shadow output is all lit
+        let empty = Scene { items: vec![], ..lit() };
+        assert_eq!(names(empty.clone(), f), ["shade", "readback_color"]);
+        assert_eq!(names(empty, mask), ["shadow_map", "gbuffer", "shadow", "readback_shadow"]);
+        let key = plan(&checked(lit(), f)).resource_key(false);
         let map = key.textures.iter().find(|x| x.0 == Target::ShadowMap).expect("a shadow map");
         assert_eq!(map.1.size, (1024, 1024));
     }
@@ -287,8 +326,7 @@ mod tests {
     #[test]
     fn targets_get_the_usages_their_passes_declare() {
         let f = FrameSpec { supersample: 2, ..Default::default() };
-        let key =
-            plan(Features { mesh_lines: true, image_edges: false, shadow_size: None }, &f).resource_key(true);
+        let key = plan(&checked(scene(Some(Outlines::new(true, false)), false), f)).resource_key(true);
         let usage = |t| key.textures.iter().find(|x| x.0 == t).map(|x| x.2);
         use wgpu::TextureUsages as U;
         assert_eq!(usage(Target::ColorHi), Some(U::RENDER_ATTACHMENT | U::TEXTURE_BINDING));

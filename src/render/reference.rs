@@ -1,9 +1,10 @@
-//! CPU reference of the shading formulas in `shaders/common.wgsl` (see `material.rs`), used by
+//! CPU reference of the shading formulas in `shaders/common.wgsl` (see `scene/model.rs`), used by
 //! tests to hold the GPU's pixels against. f32 like the shader; linear light in, linear out.
 
 use glam::Vec3;
 
-use super::scene::material::{Highlight, Material, Model};
+use super::scene::material::Material;
+use super::scene::model::{Highlight, Model};
 
 /// A light in view space, as the shader receives it.
 #[derive(Clone, Copy, Debug)]

@@ -1,79 +1,93 @@
-//! The uniform blocks and instance data of `shaders/common.wgsl`, laid out byte for byte.
+//! The core's uniform blocks (`shaders/common.wgsl`): the camera and image, the lights, where a
+//! mesh is, and its material; and how the frame's and the draws' uniform structs gather the core
+//! blocks with every effect's (`Frame`, `Draw`), one block after another.
 //!
 //! Everything the GPU sees is in normalised view space: view space divided by the camera's
 //! `scale` (a power of two near the scene's size), so that float32 keeps its precision for
 //! scenes of any size and distance (see `ResolvedCamera::scale`).
 
-use glam::{DMat3, DMat4, DVec3};
+use glam::{DMat3, DMat4};
 
+use super::block::{vec4, Block, BlockLayout};
+use super::color::to_linear;
+use super::effects::surface::{Surface, SURFACE};
 use super::gpu_mesh::Placement;
-use super::scene::camera::{ResolvedCamera, Sphere};
-use super::scene::light::{shadow_caster, Light, LightKind, ViewLight, MAX_LIGHTS};
-use super::scene::material::{Highlight, Material, Model, MAX_LUT};
-use super::scene::outlines::{Outlines, INK_KINDS};
-use super::scene::shadows::MAX_BIAS_SLOPE;
-use super::scene::{FrameSpec, Scene, SceneItem};
+use super::scene::camera::ResolvedCamera;
+use super::scene::checked::CheckedScene;
+use super::scene::light::{ViewLight, MAX_LIGHTS};
+use super::scene::material::Material;
+use super::scene::model::{Highlight, Model, MAX_LUT};
+use super::scene::SceneItem;
+
+crate::uniform_block! {
+    /// `frame.view`: the camera and the image.
+    pub struct ViewBlock as "ViewBlock" {
+        pub proj: [[f32; 4]; 4],
+        /// Output size in pixels.
+        pub size: [f32; 2],
+        /// A pixel's world size at normalised depth z is `z * footprint[0] + footprint[1]`.
+        pub footprint: [f32; 2],
+        /// The near plane, in normalised view units.
+        pub near: f32,
+        pub orthographic: u32,
+        pub _pad0: f32,
+        pub _pad1: f32,
+    }
+}
 
 #[repr(C)]
-#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
-pub struct LightBlock {
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct LightSlot {
+    /// w = 0: xyz is the unit vector toward the light; w = 1: a point.
     pub position: [f32; 4],
+    /// Linear rgb, intensity included.
     pub color: [f32; 4],
 }
 
-#[repr(C)]
-#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
-pub struct FrameBlock {
-    pub proj: [[f32; 4]; 4],
-    pub ambient: [f32; 4],
-    pub info: [u32; 4],
-    pub viewport: [f32; 4],
-    pub outline: [f32; 4],
-    pub ink: [[f32; 4]; INK_KINDS],
-    pub lights: [LightBlock; MAX_LIGHTS],
-    /// Normalised view space -> the shadow-casting light's clip space (the first light's).
-    pub shadow: [[f32; 4]; 4],
-    /// x: depth tolerance per unit of receiver slope, y: the largest slope biased, z: how far
-    /// (normalised view units) a receiver moves along its normal before the test.
-    pub shadow_bias: [f32; 4],
+crate::uniform_block! {
+    /// `frame.lighting`: the scene's lights, the shadow-casting one first.
+    pub struct LightingBlock as "LightingBlock" {
+        pub ambient: [f32; 4],
+        pub lights: [LightSlot; MAX_LIGHTS],
+    }
 }
 
-#[repr(C)]
-#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
-pub struct DrawBlock {
-    pub model_view: [[f32; 4]; 4],
-    pub normal_matrix: [[f32; 4]; 4],
-    pub ambient: [f32; 4],
-    pub diffuse: [f32; 4],
-    pub specular: [f32; 4],
-    pub params: [f32; 4],
-    pub model: [u32; 4],
-    pub flags: [u32; 4],
-    pub thresholds: [[f32; 4]; 2],
-    pub values: [[f32; 4]; 3],
-    pub table: [[f32; 4]; MAX_LUT],
-    /// x: dither amount, y: dither cell in pixels, z: hatch spacing, w: hatch width (pixels).
-    pub style: [f32; 4],
-    /// Linear ink of the hatching.
-    pub ink: [f32; 4],
+crate::uniform_block! {
+    /// `draw.mesh`: where one mesh is.
+    pub struct MeshBlock as "MeshBlock" {
+        pub model_view: [[f32; 4]; 4],
+        pub normal_matrix: [[f32; 4]; 4],
+        /// 1 when the transform mirrors (flips the winding).
+        pub mirrored: u32,
+        pub _pad0: u32,
+        pub _pad1: u32,
+        pub _pad2: u32,
+    }
 }
 
-/// One mesh-space line: its end points in the mesh's stored coordinates and its kind.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
-pub struct LineInstance {
-    pub a: [f32; 3],
-    pub kind: u32,
-    pub b: [f32; 3],
-    pub pad: u32,
+crate::uniform_block! {
+    /// `draw.material`: its material's coefficients and its model's parameters.
+    pub struct MaterialBlock as "MaterialBlock" {
+        pub ambient: [f32; 4],
+        pub diffuse: [f32; 4],
+        pub specular: [f32; 4],
+        pub shininess: f32,
+        pub t_h: f32,
+        pub t_s: f32,
+        /// The highlight: 1 Blinn's (n.h), 0 the paper's (L.v).
+        pub blinn: u32,
+        pub band_count: u32,
+        pub table_size: u32,
+        pub _pad0: u32,
+        pub _pad1: u32,
+        pub thresholds: [[f32; 4]; 2],
+        pub values: [[f32; 4]; 3],
+        pub table: [[f32; 4]; MAX_LUT],
+    }
 }
 
 fn f32_cols(m: DMat4) -> [[f32; 4]; 4] {
     m.as_mat4().to_cols_array_2d()
-}
-
-fn rgb0(c: [f32; 3]) -> [f32; 4] {
-    [c[0], c[1], c[2], 0.0]
 }
 
 /// The world size of one output pixel at normalised depth z is `a z + b` (in normalised units).
@@ -86,46 +100,22 @@ pub fn footprint(cam: &ResolvedCamera, height: u32) -> (f64, f64) {
     }
 }
 
-/// The lights in the order the shader sees them: the shadow-casting light first.
-pub fn shader_lights(lights: &[Light]) -> Vec<&Light> {
-    let caster = shadow_caster(lights).map(|(i, _, _)| i);
-    let first = caster.map(|i| &lights[i]);
-    first
-        .into_iter()
-        .chain(lights.iter().enumerate().filter(|(i, _)| Some(*i) != caster).map(|(_, l)| l))
-        .collect()
+pub fn view_block(cam: &ResolvedCamera, width: u32, height: u32) -> ViewBlock {
+    let (a, b) = footprint(cam, height);
+    ViewBlock {
+        proj: f32_cols(cam.normalized_proj()),
+        size: [width as f32, height as f32],
+        footprint: [a as f32, b as f32],
+        near: (cam.near / cam.scale) as f32,
+        orthographic: cam.orthographic as u32,
+        ..bytemuck::Zeroable::zeroed()
+    }
 }
 
-/// Bit k set when the shader's light k (in `shader_lights` order) is a point light.
-pub fn point_light_bits(lights: &[Light]) -> u32 {
-    shader_lights(lights)
-        .iter()
-        .enumerate()
-        .filter(|(_, l)| matches!(l.kind, LightKind::Point { .. }))
-        .fold(0, |bits, (k, _)| bits | 1 << k)
-}
-
-/// Normalised view space -> the clip space of an orthographic view along the unit vector
-/// `toward` the light that just holds the sphere `c`, `r` (normalised view space): x and y in
-/// [-1, 1] across it, depth 0 on the side nearest the light and 1 on the far side.
-pub fn shadow_matrix(toward: DVec3, c: DVec3, r: f64) -> DMat4 {
-    let w = toward;
-    let helper = if w.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
-    let u = w.cross(helper).normalize();
-    let v = w.cross(u);
-    let rows = [
-        [u.x / r, u.y / r, u.z / r, -u.dot(c) / r],
-        [v.x / r, v.y / r, v.z / r, -v.dot(c) / r],
-        [-w.x / (2.0 * r), -w.y / (2.0 * r), -w.z / (2.0 * r), (w.dot(c) + r) / (2.0 * r)],
-        [0.0, 0.0, 0.0, 1.0],
-    ];
-    DMat4::from_cols_array_2d(&rows).transpose()
-}
-
-/// The frame's uniforms; `sphere` holds the scene (world space), for fitting the shadow map.
-pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec, sphere: Sphere) -> FrameBlock {
-    let mut lights = [LightBlock { position: [0.0; 4], color: [0.0; 4] }; MAX_LIGHTS];
-    for (slot, light) in lights.iter_mut().zip(shader_lights(&scene.lights)) {
+pub fn lighting_block(scene: &CheckedScene, cam: &ResolvedCamera) -> LightingBlock {
+    let mut b: LightingBlock = bytemuck::Zeroable::zeroed();
+    b.ambient = vec4(to_linear(scene.scene.ambient));
+    for (slot, light) in b.lights.iter_mut().zip(&scene.shader_lights) {
         let position = match light.to_view(&cam.view) {
             ViewLight::Toward(l) => [l.x as f32, l.y as f32, l.z as f32, 0.0],
             ViewLight::At(p) => {
@@ -133,45 +123,9 @@ pub fn frame_block(scene: &Scene, cam: &ResolvedCamera, frame: &FrameSpec, spher
                 [p.x as f32, p.y as f32, p.z as f32, 1.0]
             }
         };
-        *slot = LightBlock { position, color: rgb0(light.radiance()) };
+        *slot = LightSlot { position, color: vec4(light.radiance()) };
     }
-    let mut shadow = [[0.0f32; 4]; 4];
-    let mut shadow_bias = [0.0f32; 4];
-    if let Some((_, light, settings)) = shadow_caster(&scene.lights) {
-        if let ViewLight::Toward(l) = light.to_view(&cam.view) {
-            let c = cam.normalized_view().transform_point3(sphere.center);
-            let r = sphere.radius / cam.scale;
-            shadow = f32_cols(shadow_matrix(l, c, r));
-            // the map's side spans the sphere's diameter
-            let offset = settings.normal_offset() * 2.0 * r;
-            shadow_bias = [settings.tolerance() as f32, MAX_BIAS_SLOPE as f32, offset as f32, 0.0];
-        }
-    }
-    let (a, b) = footprint(cam, frame.height);
-    let outlines = scene.outlines.clone().unwrap_or_else(|| Outlines::new(false, false));
-    let mut ink = [[0.0f32; 4]; INK_KINDS];
-    for (slot, style) in ink.iter_mut().zip(&outlines.styles) {
-        if let Some(s) = style {
-            let c = crate::render::color::to_linear(s.color);
-            *slot = [c[0], c[1], c[2], s.width];
-        }
-    }
-    FrameBlock {
-        proj: f32_cols(cam.normalized_proj()),
-        ambient: rgb0(crate::render::color::to_linear(scene.ambient)),
-        info: [scene.lights.len() as u32, cam.orthographic as u32, 0, 0],
-        viewport: [frame.width as f32, frame.height as f32, a as f32, b as f32],
-        outline: [
-            outlines.depth_offset,
-            outlines.normal_threshold,
-            (outlines.depth_threshold as f64 / cam.scale) as f32,
-            (cam.near / cam.scale) as f32,
-        ],
-        ink,
-        lights,
-        shadow,
-        shadow_bias,
-    }
+    b
 }
 
 /// Model -> normalised view for an item, including the mesh's storage placement.
@@ -182,38 +136,31 @@ pub fn model_view(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera)
         * DMat4::from_scale(glam::DVec3::splat(placement.scale))
 }
 
-pub fn draw_block(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera) -> DrawBlock {
+pub fn mesh_block(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera) -> MeshBlock {
     let mv = model_view(item, placement, cam);
-    let normal_matrix = DMat4::from_mat3(DMat3::from_mat4(mv).inverse().transpose());
-    let mirrored = item.mirrors();
-    let m: &Material = &item.material;
-    let mut b: DrawBlock = bytemuck::Zeroable::zeroed();
-    b.model_view = f32_cols(mv);
-    b.normal_matrix = f32_cols(normal_matrix);
-    b.ambient = rgb0(m.ambient_linear());
-    b.diffuse = rgb0(m.diffuse_linear());
-    b.specular = rgb0(m.specular_linear());
-    b.flags = [mirrored as u32, 0, 0, 0];
-    if let Some(d) = &m.dither {
-        b.style[0] = d.amount as f32;
-        b.style[1] = d.scale as f32;
+    MeshBlock {
+        model_view: f32_cols(mv),
+        normal_matrix: f32_cols(DMat4::from_mat3(DMat3::from_mat4(mv).inverse().transpose())),
+        mirrored: item.mirrors() as u32,
+        ..bytemuck::Zeroable::zeroed()
     }
-    if let Some(h) = &m.hatching {
-        b.style[2] = h.spacing as f32;
-        b.style[3] = h.width as f32;
-        b.ink = rgb0(crate::render::color::to_linear(h.ink));
-    }
-    b.model[0] = m.model.id();
+}
+
+pub fn material_block(m: &Material) -> MaterialBlock {
+    let mut b: MaterialBlock = bytemuck::Zeroable::zeroed();
+    b.ambient = vec4(m.ambient_linear());
+    b.diffuse = vec4(m.diffuse_linear());
+    b.specular = vec4(m.specular_linear());
     match &m.model {
         Model::Lambert => {}
-        Model::Phong { shininess } => b.params[0] = *shininess,
+        Model::Phong { shininess } => b.shininess = *shininess,
         Model::ThresholdedPhong { t_h, t_s, highlight } => {
-            b.params[1] = *t_h;
-            b.params[2] = *t_s;
-            b.model[1] = (*highlight == Highlight::Blinn) as u32;
+            b.t_h = *t_h;
+            b.t_s = *t_s;
+            b.blinn = (*highlight == Highlight::Blinn) as u32;
         }
         Model::Bands { thresholds, values } => {
-            b.model[2] = thresholds.len() as u32;
+            b.band_count = thresholds.len() as u32;
             for (i, t) in thresholds.iter().enumerate() {
                 b.thresholds[i / 4][i % 4] = *t;
             }
@@ -222,11 +169,40 @@ pub fn draw_block(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera)
             }
         }
         Model::Lut { table } => {
-            b.model[3] = table.len() as u32;
+            b.table_size = table.len() as u32;
             for (slot, c) in b.table.iter_mut().zip(table) {
-                *slot = rgb0(*c);
+                *slot = vec4(*c);
             }
         }
     }
     b
+}
+
+/// A uniform struct that gathers blocks one after another (`Frame`, `Draw`): each member's
+/// name and block.
+pub type Members = Vec<(&'static str, BlockLayout)>;
+
+/// The WGSL of a struct of `members`.
+pub fn struct_wgsl(name: &str, members: &Members) -> String {
+    let fields: String = members.iter().map(|(n, b)| format!("    {n}: {},\n", b.wgsl)).collect();
+    format!("struct {name} {{\n{fields}}};\n")
+}
+
+/// The members of `Draw`: the mesh's and material's blocks, then every per-pixel effect's.
+pub fn draw_members() -> Members {
+    let mut m = vec![("mesh", MeshBlock::layout()), ("material", MaterialBlock::layout())];
+    m.extend(SURFACE.iter().map(|e| (e.name(), e.block())));
+    m
+}
+
+/// One draw's uniforms: `Draw` for `item`, as bytes.
+pub fn draw_bytes(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera) -> Vec<u8> {
+    let m = &item.material;
+    let mut bytes = mesh_block(item, placement, cam).bytes();
+    bytes.extend(material_block(m).bytes());
+    let s = Surface { model: &m.model, per_vertex: m.per_vertex, effects: &m.effects };
+    for e in SURFACE {
+        bytes.extend(e.block_bytes(&s));
+    }
+    bytes
 }

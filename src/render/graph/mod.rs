@@ -1,11 +1,14 @@
 //! The frame graph. A frame is a list of passes (see `render::plan`); each pass declares the
 //! targets it writes and reads, the frame's textures are allocated from those declarations
 //! (`resources`), and the whole frame is recorded into one command encoder and submitted once.
+//! Frame effects (`effect`) add their passes and host steps to the list.
 
+pub mod build;
+pub mod effect;
+pub mod report;
 pub mod resources;
 pub mod target;
 
-use std::ops::Range;
 use std::sync::Arc;
 
 use crate::error::Result;
@@ -13,6 +16,8 @@ use crate::error::Result;
 use super::device::Device;
 use super::gpu_mesh::GpuMesh;
 use super::pipelines::PipelineCache;
+use super::wgsl;
+use effect::ShadeHook;
 use resources::FrameResources;
 use target::{Shape, Use};
 
@@ -29,90 +34,60 @@ pub trait Pass: std::fmt::Debug + Send + Sync {
         true
     }
 
-    /// Records the pass. `timing` is passed on to the render pass it opens.
-    fn encode(
-        &self,
-        f: &FrameCtx<'_>,
-        encoder: &mut wgpu::CommandEncoder,
-        timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
-    ) -> Result<()>;
+    /// Records the pass.
+    fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()>;
+}
+
+/// The frame's command encoder, and the timestamps of the pass being recorded.
+pub struct Recorder<'a> {
+    pub encoder: &'a mut wgpu::CommandEncoder,
+    pub timing: Option<wgpu::RenderPassTimestampWrites<'a>>,
+}
+
+impl Recorder<'_> {
+    /// Opens the pass's render pass over `color` (and `depth`), timed where timestamps exist.
+    pub fn begin<'p>(
+        &'p mut self,
+        label: &'static str,
+        color: &[Option<wgpu::RenderPassColorAttachment<'_>>],
+        depth: Option<wgpu::RenderPassDepthStencilAttachment<'_>>,
+    ) -> wgpu::RenderPass<'p> {
+        self.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(label),
+            color_attachments: color,
+            depth_stencil_attachment: depth,
+            timestamp_writes: self.timing.take(),
+            occlusion_query_set: None,
+            multiview_mask: None,
+        })
+    }
+
+    /// Opens a render pass over `color` and draws the one triangle that covers the output,
+    /// with `pipeline` and `groups` bound in order (group 0 first).
+    pub fn fullscreen(
+        &mut self,
+        label: &'static str,
+        color: &[Option<wgpu::RenderPassColorAttachment<'_>>],
+        pipeline: &wgpu::RenderPipeline,
+        groups: &[&wgpu::BindGroup],
+    ) {
+        let mut pass = self.begin(label, color, None);
+        pass.set_pipeline(pipeline);
+        for (i, g) in groups.iter().enumerate() {
+            pass.set_bind_group(i as u32, *g, &[]);
+        }
+        pass.draw(0..3, 0..1);
+    }
 }
 
 /// One mesh to draw, with the offset of its uniforms in the frame's draw buffer.
 pub struct DrawItem<'a> {
     pub mesh: &'a GpuMesh,
     pub uniform_offset: u32,
-    pub variant: ShadingVariant,
+    pub material: &'a crate::render::scene::material::Material,
     /// The faces the camera's passes may skip, and those the shadow map may (`render::culling`).
     pub cull: Option<wgpu::Face>,
     pub light_cull: Option<wgpu::Face>,
-}
-
-/// What a material needs compiled into the shading pipeline.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct ShadingVariant {
-    /// The shading model's id (`Model::id`).
-    pub model: u32,
-    pub per_vertex: bool,
-    pub hatching: bool,
-    pub dither:
-        Option<(crate::render::scene::style::DitherPattern, crate::render::scene::style::DitherSpace)>,
-}
-
-impl ShadingVariant {
-    pub fn of(m: &crate::render::scene::material::Material) -> Self {
-        ShadingVariant {
-            model: m.model.id(),
-            per_vertex: m.per_vertex,
-            hatching: m.hatching.is_some(),
-            dither: m.dither.map(|d| (d.pattern, d.space)),
-        }
-    }
-
-    /// Whether the fragment stage reads the vertex stage's anchors (object coordinates and
-    /// per-vertex colours; `Anchors` in common.wgsl): hatching, object-space dithering and
-    /// per-vertex shading do.
-    pub fn anchored(&self) -> bool {
-        let object_dither =
-            matches!(self.dither, Some((_, crate::render::scene::style::DitherSpace::Object)));
-        self.per_vertex || self.hatching || object_dither
-    }
-
-    /// The variant as bits of a pipeline key.
-    pub fn bits(&self) -> u64 {
-        let (pattern, object) = match self.dither {
-            Some((p, s)) => (p as u64, (s == crate::render::scene::style::DitherSpace::Object) as u64),
-            None => (0, 0),
-        };
-        self.per_vertex as u64
-            | (self.hatching as u64) << 1
-            | pattern << 2
-            | object << 5
-            | (self.model as u64) << 6
-    }
-
-    /// The shader's pipeline constants.
-    pub fn constants(&self) -> [(&'static str, f64); 5] {
-        let (pattern, object) = match self.dither {
-            Some((p, s)) => {
-                (p as u32 as f64, (s == crate::render::scene::style::DitherSpace::Object) as u32 as f64)
-            }
-            None => (0.0, 0.0),
-        };
-        [
-            ("PER_VERTEX", self.per_vertex as u32 as f64),
-            ("HATCHING", self.hatching as u32 as f64),
-            ("DITHER", pattern),
-            ("DITHER_OBJECT", object),
-            ("MODEL", self.model as f64),
-        ]
-    }
-}
-
-/// The mesh-space lines of one mesh: a range of the frame's line instances.
-pub struct LineDraw {
-    pub uniform_offset: u32,
-    pub instances: Range<u32>,
 }
 
 /// What every pass of a frame may use while it records.
@@ -122,19 +97,30 @@ pub struct FrameCtx<'a> {
     pub res: &'a FrameResources,
     pub shape: Shape,
     pub draws: &'a [DrawItem<'a>],
-    pub lines: &'a [LineDraw],
+    /// The WGSL every shader module starts with (`render::shader`).
+    pub preamble: &'a str,
     /// Linear-light background colour and alpha.
     pub background: wgpu::Color,
     /// The scene's number of lights.
     pub lights: u32,
-    /// Bit k set when the shader's light k is a point light (`uniforms::shader_lights` order):
+    /// Bit k set when the shader's light k is a point light (the shadow-casting light first):
     /// only those need a direction per pixel.
     pub point_lights: u32,
-    /// How the shadow map is read, when a light casts shadows.
-    pub shadow_filter: Option<crate::render::scene::shadows::ShadowFilter>,
 }
 
 impl FrameCtx<'_> {
+    /// The shader module `name` of a pass's WGSL, with the shading hooks of `hook` (the
+    /// defaults where None), compiled on first use.
+    pub fn module(&self, name: &'static str, pass: &str, hook: Option<&dyn ShadeHook>) -> wgpu::ShaderModule {
+        let key = match hook {
+            Some(h) => format!("{name}+{}", h.name()),
+            None => name.to_string(),
+        };
+        self.pipelines.module(&self.dev.device, key, || {
+            wgsl::compose(self.preamble, hook.map_or(wgsl::DEFAULT_HOOKS, |h| h.wgsl()), pass)
+        })
+    }
+
     /// Draws every mesh, switching pipelines only when the variant changes.
     pub fn draw_meshes(
         &self,
@@ -182,20 +168,27 @@ pub fn loaded(view: &wgpu::TextureView) -> Option<wgpu::RenderPassColorAttachmen
     })
 }
 
-/// A depth buffer cleared to the far plane; its contents are not needed after the pass.
-pub fn depth_buffer(view: &wgpu::TextureView) -> Option<wgpu::RenderPassDepthStencilAttachment<'_>> {
+/// A depth buffer cleared to the far plane and stored only when `keep` (a shadow map).
+pub fn depth_buffer(view: &wgpu::TextureView, keep: bool) -> Option<wgpu::RenderPassDepthStencilAttachment<'_>> {
+    let store = if keep { wgpu::StoreOp::Store } else { wgpu::StoreOp::Discard };
     Some(wgpu::RenderPassDepthStencilAttachment {
         view,
-        depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+        depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store }),
         stencil_ops: None,
     })
 }
 
+/// A cleared colour target whose texels hold f32 bit patterns (`bits` per channel).
+pub fn bits_clear(bits: [f32; 4]) -> wgpu::Color {
+    let [r, g, b, a] = bits.map(|x| x.to_bits() as f64);
+    wgpu::Color { r, g, b, a }
+}
+
 /// Clear value of the geometry target: normal (0, 0, 0) and depth +inf, as f32 bits.
 pub fn geometry_clear(layout: target::GeometryLayout) -> wgpu::Color {
-    let inf = f32::INFINITY.to_bits() as f64;
+    let inf = f32::INFINITY;
     match layout {
-        target::GeometryLayout::NormalDepth => wgpu::Color { r: 0.0, g: 0.0, b: 0.0, a: inf },
-        target::GeometryLayout::Depth => wgpu::Color { r: inf, g: 0.0, b: 0.0, a: 0.0 },
+        target::GeometryLayout::NormalDepth => bits_clear([0.0, 0.0, 0.0, inf]),
+        target::GeometryLayout::Depth => bits_clear([inf, 0.0, 0.0, 0.0]),
     }
 }

@@ -9,9 +9,10 @@ use std::sync::Mutex;
 
 use crate::render::device::Device;
 use crate::render::pipelines::Layouts;
-use crate::render::uniforms::{DrawBlock, FrameBlock, LineInstance};
 
+use super::build::texture_group;
 use super::target::{Target, TextureDesc};
+use super::FrameCtx;
 
 /// Everything a set of frame resources depends on.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -22,10 +23,12 @@ pub struct ResourceKey {
     pub staging_bytes: u64,
     /// Timestamp queries (two per timed pass), 0 without timestamps.
     pub queries: u32,
+    /// Bytes of the frame's uniform struct and of one draw's.
+    pub uniform_bytes: (u64, u64),
 }
 
-/// The frame's uniform buffers: one frame block, and one draw block per mesh at 256-byte
-/// aligned offsets (bound with a dynamic offset).
+/// The frame's uniform buffers: the frame's struct, and one draw's struct per mesh at aligned
+/// offsets (bound with a dynamic offset).
 pub struct Uniforms {
     pub frame: wgpu::Buffer,
     pub frame_group: wgpu::BindGroup,
@@ -41,15 +44,17 @@ pub struct FrameResources {
     pub staging: Option<wgpu::Buffer>,
     pub queries: Option<(wgpu::QuerySet, wgpu::Buffer)>,
     pub uniforms: Uniforms,
-    pub lines: Option<(wgpu::Buffer, usize)>,
+    /// Vertex buffers the passes fill each frame (line instances), by name, with their sizes.
+    vertex_buffers: Mutex<HashMap<&'static str, (wgpu::Buffer, u64)>>,
     /// Bind groups over this set's textures, made once by the pass that names them.
     bind_groups: Mutex<HashMap<&'static str, wgpu::BindGroup>>,
 }
 
-fn uniforms(dev: &Device, layouts: &Layouts, draw_capacity: usize) -> Uniforms {
+fn uniforms(dev: &Device, layouts: &Layouts, sizes: (u64, u64), draw_capacity: usize) -> Uniforms {
     let device = &dev.device;
+    let (frame_bytes, draw_bytes) = sizes;
     let align = dev.limits.min_uniform_buffer_offset_alignment.max(16) as u64;
-    let draw_stride = (std::mem::size_of::<DrawBlock>() as u64).div_ceil(align) * align;
+    let draw_stride = draw_bytes.div_ceil(align) * align;
     let buffer = |label: &str, size: u64| {
         device.create_buffer(&wgpu::BufferDescriptor {
             label: Some(label),
@@ -58,7 +63,7 @@ fn uniforms(dev: &Device, layouts: &Layouts, draw_capacity: usize) -> Uniforms {
             mapped_at_creation: false,
         })
     };
-    let frame = buffer("frame uniforms", std::mem::size_of::<FrameBlock>() as u64);
+    let frame = buffer("frame uniforms", frame_bytes);
     let draws = buffer("draw uniforms", draw_stride * draw_capacity.max(1) as u64);
     let group = |label: &str, layout: &wgpu::BindGroupLayout, buffer: &wgpu::Buffer, size: Option<u64>| {
         device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -80,7 +85,7 @@ fn uniforms(dev: &Device, layouts: &Layouts, draw_capacity: usize) -> Uniforms {
             "draw uniforms",
             &layouts.draw,
             &draws,
-            Some(std::mem::size_of::<DrawBlock>() as u64),
+            Some(draw_bytes),
         ),
         frame,
         draws,
@@ -137,12 +142,12 @@ impl FrameResources {
             (set, resolve)
         });
         FrameResources {
-            key,
+            key: key.clone(),
             textures,
             staging,
             queries,
-            uniforms: uniforms(dev, layouts, 1),
-            lines: None,
+            uniforms: uniforms(dev, layouts, key.uniform_bytes, 1),
+            vertex_buffers: Mutex::new(HashMap::new()),
             bind_groups: Mutex::new(HashMap::new()),
         }
     }
@@ -164,44 +169,59 @@ impl FrameResources {
         self.bind_groups.lock().unwrap_or_else(|e| e.into_inner()).entry(name).or_insert_with(make).clone()
     }
 
-    /// Makes room for `n` draw blocks.
+    /// The geometry target's bind group (`uint_texture` layout), for the passes that read it.
+    pub fn geometry_group(&self, f: &FrameCtx<'_>) -> wgpu::BindGroup {
+        self.bind_group("geometry", || {
+            texture_group(&f.dev.device, &f.pipelines.layouts.uint_texture, self.view(Target::Geometry))
+        })
+    }
+
+    /// Makes room for `n` draws.
     pub fn reserve_draws(&mut self, dev: &Device, layouts: &Layouts, n: usize) {
         if n > self.uniforms.draw_capacity {
-            self.uniforms = uniforms(dev, layouts, n.next_power_of_two());
+            self.uniforms = uniforms(dev, layouts, self.key.uniform_bytes, n.next_power_of_two());
         }
     }
 
-    /// Uploads the frame's uniforms; draw block `i` goes to offset `i * draw_stride`.
-    pub fn write_uniforms(&self, dev: &Device, frame: &FrameBlock, draws: &[DrawBlock]) {
-        dev.queue.write_buffer(&self.uniforms.frame, 0, bytemuck::bytes_of(frame));
+    /// The dynamic offset of draw `i`'s uniforms.
+    pub fn draw_offset(&self, i: usize) -> u32 {
+        (i as u64 * self.uniforms.draw_stride) as u32
+    }
+
+    /// Uploads the frame's uniforms and each draw's (draw `i` at `draw_offset(i)`).
+    pub fn write_uniforms(&self, dev: &Device, frame: &[u8], draws: &[Vec<u8>]) {
+        dev.queue.write_buffer(&self.uniforms.frame, 0, frame);
         if draws.is_empty() {
             return;
         }
         let stride = self.uniforms.draw_stride as usize;
         let mut bytes = vec![0u8; stride * draws.len()];
         for (chunk, d) in bytes.chunks_mut(stride).zip(draws) {
-            chunk[..std::mem::size_of::<DrawBlock>()].copy_from_slice(bytemuck::bytes_of(d));
+            chunk[..d.len()].copy_from_slice(d);
         }
         dev.queue.write_buffer(&self.uniforms.draws, 0, &bytes);
     }
 
-    /// Uploads line instances into the line buffer, growing it when needed.
-    pub fn write_lines(&mut self, dev: &Device, lines: &[LineInstance]) {
-        if lines.is_empty() {
-            return;
+    /// The vertex buffer `name` holding `bytes` (grown when needed); None when `bytes` is empty.
+    pub fn vertices(&self, dev: &Device, name: &'static str, bytes: &[u8]) -> Option<wgpu::Buffer> {
+        if bytes.is_empty() {
+            return None;
         }
-        if self.lines.as_ref().is_none_or(|(_, cap)| *cap < lines.len()) {
-            let cap = lines.len().next_power_of_two();
+        let mut buffers = self.vertex_buffers.lock().unwrap_or_else(|e| e.into_inner());
+        let need = bytes.len() as u64;
+        if buffers.get(name).is_none_or(|(_, cap)| *cap < need) {
+            let cap = need.next_power_of_two();
             let buffer = dev.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("line instances"),
-                size: (cap * std::mem::size_of::<LineInstance>()) as u64,
+                label: Some(name),
+                size: cap,
                 usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
-            self.lines = Some((buffer, cap));
+            buffers.insert(name, (buffer, cap));
         }
-        let (buffer, _) = self.lines.as_ref().expect("made above");
-        dev.queue.write_buffer(buffer, 0, bytemuck::cast_slice(lines));
+        let (buffer, _) = &buffers[name];
+        dev.queue.write_buffer(buffer, 0, bytes);
+        Some(buffer.clone())
     }
 }
 

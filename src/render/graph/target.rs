@@ -65,7 +65,7 @@ pub enum Target {
 }
 
 /// Everything the frame's textures depend on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Shape {
     pub width: u32,
     pub height: u32,

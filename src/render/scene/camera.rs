@@ -5,10 +5,14 @@
 //! are written out in f64 for that convention.
 
 use glam::{DMat4, DVec3};
+use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+use super::field;
+
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Projection {
     /// Vertical field of view in degrees, in (0, 180).
     Perspective { fov_y_deg: f64 },
@@ -16,7 +20,8 @@ pub enum Projection {
     Orthographic { height: f64 },
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Placement {
     /// An explicit eye, target and up vector.
     LookAt { eye: [f64; 3], target: [f64; 3], up: [f64; 3] },
@@ -25,7 +30,7 @@ pub enum Placement {
     Fit { direction: [f64; 3], up: [f64; 3], margin: f64 },
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Camera {
     pub placement: Placement,
     pub projection: Projection,
@@ -165,53 +170,55 @@ impl Camera {
         far: Option<f64>,
     ) -> Result<Self> {
         let c = Camera { placement, projection, near, far };
-        c.validate()?;
+        c.validate("")?;
         Ok(c)
     }
 
-    pub fn validate(&self) -> Result<()> {
+    /// Checks the camera; `prefix` names it in errors ("" when it is being made).
+    pub fn validate(&self, prefix: &str) -> Result<()> {
+        let f = |name| field(prefix, name);
         match self.projection {
             Projection::Perspective { fov_y_deg } if !(fov_y_deg > 0.0 && fov_y_deg < 180.0) => {
                 return Err(Error::invalid(
-                    "camera.fov_y",
+                    f("fov_y"),
                     format!("must be in (0, 180) degrees, got {fov_y_deg}"),
                 ))
             }
             Projection::Orthographic { height } if !(height > 0.0 && height.is_finite()) => {
-                return Err(Error::invalid("camera.height", format!("must be finite and > 0, got {height}")))
+                return Err(Error::invalid(f("height"), format!("must be finite and > 0, got {height}")))
             }
             _ => {}
         }
         match self.placement {
             Placement::LookAt { eye, target, up } => {
-                let (e, t) = (vec3("camera.eye", eye)?, vec3("camera.target", target)?);
+                let (e, t) = (vec3(&f("eye"), eye)?, vec3(&f("target"), target)?);
                 let forward = t - e;
                 if forward == DVec3::ZERO {
-                    return Err(Error::invalid("camera.target", "must differ from camera.eye"));
+                    return Err(Error::invalid(f("target"), format!("must differ from {}", f("eye"))));
                 }
                 if !forward.is_finite() {
-                    return Err(Error::invalid("camera.target", "is too far from camera.eye for float64"));
+                    return Err(Error::invalid(f("target"), "is too far from camera.eye for float64"));
                 }
-                let u = unit("camera.up", up)?;
+                let u = unit(&f("up"), up)?;
                 if direction_of(forward).cross(u).length() < 1e-9 {
-                    return Err(Error::invalid("camera.up", "must not be parallel to the viewing direction"));
+                    return Err(Error::invalid(f("up"), "must not be parallel to the viewing direction"));
                 }
             }
             Placement::Fit { direction, up, margin } => {
-                let d = unit("camera.direction", direction)?;
-                let u = unit("camera.up", up)?;
+                let d = unit(&f("direction"), direction)?;
+                let u = unit(&f("up"), up)?;
                 if d.cross(u).length() < 1e-9 {
-                    return Err(Error::invalid("camera.up", "must not be parallel to camera.direction"));
+                    return Err(Error::invalid(f("up"), format!("must not be parallel to {}", f("direction"))));
                 }
                 if !(margin > 0.0 && margin.is_finite()) {
                     return Err(Error::invalid(
-                        "camera.margin",
+                        f("margin"),
                         format!("must be finite and > 0, got {margin}"),
                     ));
                 }
             }
         }
-        for (arg, v) in [("camera.near", self.near), ("camera.far", self.far)] {
+        for (arg, v) in [(f("near"), self.near), (f("far"), self.far)] {
             if let Some(x) = v {
                 if !(x.is_finite() && (x > 0.0 || matches!(self.projection, Projection::Orthographic { .. })))
                 {
@@ -222,11 +229,11 @@ impl Camera {
                 }
             }
         }
-        if let (Some(n), Some(f)) = (self.near, self.far) {
-            if !(f > n) {
+        if let (Some(near), Some(far)) = (self.near, self.far) {
+            if !(far > near) {
                 return Err(Error::invalid(
-                    "camera.far",
-                    format!("must be greater than camera.near ({n}), got {f}"),
+                    f("far"),
+                    format!("must be greater than {} ({near}), got {far}", f("near")),
                 ));
             }
         }
@@ -235,7 +242,6 @@ impl Camera {
 
     /// Matrices for an image of the given aspect ratio (width / height) showing `scene`.
     pub fn resolve(&self, scene: Sphere, aspect: f64) -> Result<ResolvedCamera> {
-        self.validate()?;
         let (eye, target, up, projection) = match self.placement {
             Placement::LookAt { eye, target, up } => {
                 (DVec3::from_array(eye), DVec3::from_array(target), DVec3::from_array(up), self.projection)
@@ -285,7 +291,7 @@ impl Camera {
             perspective(fov_or_height, aspect, near, far)
         };
         if !view.is_finite() || !proj.is_finite() {
-            return Err(Error::invalid("camera", "the camera gives a non-finite view or projection matrix"));
+            return Err(Error::invalid("camera", "gives a non-finite view or projection matrix"));
         }
         let scale = power_of_two_above(scene.radius);
         Ok(ResolvedCamera { view, proj, near, far, orthographic, eye, forward, fov_or_height, aspect, scale })

@@ -1,16 +1,19 @@
 //! Lights: directional (sun-like) or point lights, fixed in the world or to the camera.
 
 use glam::{DMat4, DVec3};
+use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 use crate::render::color::{check_unit, to_linear, Srgb};
+use crate::render::effects::shadows::settings::Shadows;
 
-use super::shadows::Shadows;
+use super::field;
 
 /// Most lights one scene may have (the shader's fixed-size array).
 pub const MAX_LIGHTS: usize = 8;
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum LightKind {
     /// Parallel light travelling along `direction` (from the light toward the scene).
     Directional { direction: [f64; 3] },
@@ -18,7 +21,8 @@ pub enum LightKind {
     Point { position: [f64; 3] },
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Space {
     World,
     /// Fixed to the camera: x right, y up, -z forward (a light that moves with the view).
@@ -35,7 +39,7 @@ impl Space {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Light {
     pub kind: LightKind,
     pub space: Space,
@@ -68,48 +72,43 @@ pub enum ViewLight {
 }
 
 impl Light {
-    /// A checked light; `arg` names it in errors.
-    pub fn new(kind: LightKind, space: Space, color: Srgb, intensity: f64) -> Result<Self> {
-        let l = Light { kind, space, color, intensity, shadows: None };
-        l.validate("light")?;
-        Ok(l)
-    }
-
-    pub fn validate(&self, arg: &str) -> Result<()> {
+    /// Checks the light; `prefix` names it in errors ("" while it is being made).
+    pub fn validate(&self, prefix: &str) -> Result<()> {
+        let arg = |name| field(prefix, name);
         match self.kind {
             LightKind::Directional { direction } => {
                 let d = DVec3::from_array(direction);
                 if !d.is_finite() {
                     return Err(Error::invalid(
-                        format!("{arg}.direction"),
+                        arg("direction"),
                         format!("must be finite, got {direction:?}"),
                     ));
                 }
                 if !(d.length() > 1e-300) {
-                    return Err(Error::invalid(format!("{arg}.direction"), "must not be the zero vector"));
+                    return Err(Error::invalid(arg("direction"), "must not be the zero vector"));
                 }
             }
             LightKind::Point { position } => {
                 if !DVec3::from_array(position).is_finite() {
                     return Err(Error::invalid(
-                        format!("{arg}.position"),
+                        arg("position"),
                         format!("must be finite, got {position:?}"),
                     ));
                 }
             }
         }
-        check_unit(&format!("{arg}.color"), &self.color)?;
+        check_unit(&arg("color"), &self.color)?;
         if !(self.intensity.is_finite() && self.intensity >= 0.0) {
             return Err(Error::invalid(
-                format!("{arg}.intensity"),
+                arg("intensity"),
                 format!("must be finite and >= 0, got {}", self.intensity),
             ));
         }
         if let Some(s) = &self.shadows {
             if !matches!(self.kind, LightKind::Directional { .. }) {
-                return Err(Error::invalid(format!("{arg}.shadows"), "only directional lights cast shadows"));
+                return Err(Error::invalid(arg("shadows"), "only directional lights cast shadows"));
             }
-            s.validate(&format!("{arg}.shadows."))?;
+            s.validate(&arg("shadows"))?;
         }
         Ok(())
     }
@@ -140,12 +139,10 @@ impl Light {
     }
 }
 
+/// Checks a scene's lights together: how many, and that at most one casts shadows.
 pub fn validate_lights(lights: &[Light]) -> Result<()> {
     if lights.len() > MAX_LIGHTS {
         return Err(Error::invalid("lights", format!("at most {MAX_LIGHTS} lights, got {}", lights.len())));
-    }
-    for (i, l) in lights.iter().enumerate() {
-        l.validate(&format!("lights[{i}]"))?;
     }
     let casting: Vec<usize> =
         lights.iter().enumerate().filter(|(_, l)| l.shadows.is_some()).map(|(i, _)| i).collect();

@@ -1,75 +1,42 @@
 //! What to render (meshes placed in the world, camera, lights, materials, outlines) and how
 //! (size, outputs, accuracy). All of it is plain data: a scene can be built, checked and sent
 //! to another process without a device; meshes are named by the id their renderer gave them.
+//!
+//! Errors name what is wrong as a path: a setting's own field while it is being made
+//! (`"shininess"`), its place in the scene when a scene is checked (`"meshes[0].transform"`);
+//! `field` joins the two.
 
 pub mod camera;
+pub mod checked;
 pub mod light;
 pub mod material;
-pub mod outlines;
-pub mod shadows;
-pub mod style;
+pub mod model;
+pub mod options;
+pub mod outputs;
 
 use glam::{DMat3, DMat4, DVec3};
+use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 
 use camera::{Camera, Sphere};
-use light::{validate_lights, Light};
+use light::Light;
 use material::Material;
-use outlines::Outlines;
 
-/// What a render can return.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct Outputs {
-    /// (H, W, 4) sRGB colour.
-    pub color: bool,
-    /// (H, W, 3) view-space unit normals.
-    pub normal: bool,
-    /// (H, W) linear view depth.
-    pub depth: bool,
-    /// (H, W) ink coverage of the outlines in [0, 1].
-    pub outline: bool,
-    /// The visible mesh-space lines as polylines in pixel coordinates.
-    pub lines: bool,
-    /// (H, W) visibility of the shadow-casting light in [0, 1]: 1 lit, 0 shadowed (or facing
-    /// away from the light), 1 where no mesh is.
-    pub shadow: bool,
-}
+pub use crate::render::effects::outlines::settings::Outlines;
+pub use outputs::{Output, Outputs};
 
-impl Outputs {
-    /// The names `outputs=` accepts, in the order they are read back.
-    pub const NAMES: [&'static str; 6] = ["color", "normal", "depth", "outline", "lines", "shadow"];
-
-    pub fn any(&self) -> bool {
-        self.color || self.normal || self.depth || self.outline || self.lines || self.shadow
-    }
-
-    /// Sets the output called `name`.
-    pub fn add(&mut self, arg: &str, name: &str) -> Result<()> {
-        let flag = match name {
-            "color" => &mut self.color,
-            "normal" => &mut self.normal,
-            "depth" => &mut self.depth,
-            "outline" => &mut self.outline,
-            "lines" => &mut self.lines,
-            "shadow" => &mut self.shadow,
-            other => {
-                return Err(Error::invalid(
-                    arg,
-                    format!(
-                        "unknown output {other:?}; use {}",
-                        Self::NAMES.map(|n| format!("'{n}'")).join(", ")
-                    ),
-                ))
-            }
-        };
-        *flag = true;
-        Ok(())
+/// The name of field `name` of the setting called `prefix` ("" while it is being made).
+pub fn field(prefix: &str, name: &str) -> String {
+    if prefix.is_empty() {
+        name.to_string()
+    } else {
+        format!("{prefix}.{name}")
     }
 }
 
 /// Image size, outputs and accuracy knobs.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct FrameSpec {
     pub width: u32,
     pub height: u32,
@@ -87,7 +54,7 @@ impl Default for FrameSpec {
         FrameSpec {
             width: 512,
             height: 512,
-            outputs: Outputs { color: true, ..Default::default() },
+            outputs: Outputs::of(&[Output::Color]),
             msaa: 1,
             supersample: 1,
             background: [1.0, 1.0, 1.0, 1.0],
@@ -113,12 +80,7 @@ impl FrameSpec {
                 ));
             }
         }
-        if !self.outputs.any() {
-            return Err(Error::invalid(
-                "outputs",
-                "ask for at least one output ('color', 'normal', 'depth', ...)",
-            ));
-        }
+        self.outputs.validate()?;
         if !(self.msaa == 1 || self.msaa == 4) {
             return Err(Error::invalid("msaa", format!("must be 1 or 4, got {}", self.msaa)));
         }
@@ -135,7 +97,7 @@ impl FrameSpec {
             ));
         }
         let big = self.width.max(self.height) as u64 * self.supersample as u64;
-        if self.outputs.color && big > max_size as u64 {
+        if self.outputs.has(Output::Color) && big > max_size as u64 {
             return Err(Error::invalid(
                 "supersample",
                 format!(
@@ -144,13 +106,7 @@ impl FrameSpec {
                 ),
             ));
         }
-        if !self.background.iter().all(|c| c.is_finite() && (0.0..=1.0).contains(c)) {
-            return Err(Error::invalid(
-                "background",
-                format!("channels must be in [0, 1], got {:?}", self.background),
-            ));
-        }
-        Ok(())
+        crate::render::color::check_unit("background", &self.background.map(|c| c as f64))
     }
 }
 
@@ -169,6 +125,21 @@ pub struct SceneItem {
 pub const IDENTITY: [[f64; 4]; 4] =
     [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
 
+/// Checks a row-major 4x4 model -> world transform: finite, affine and not flattening.
+pub fn check_transform(arg: &str, t: &[[f64; 4]; 4]) -> Result<()> {
+    if !t.iter().flatten().all(|v| v.is_finite()) {
+        return Err(Error::invalid(arg, "must be finite"));
+    }
+    if t[3] != [0.0, 0.0, 0.0, 1.0] {
+        return Err(Error::invalid(arg, format!("must be affine (last row 0, 0, 0, 1), got {:?}", t[3])));
+    }
+    let det = DMat3::from_mat4(DMat4::from_cols_array_2d(t).transpose()).determinant();
+    if !(det.abs() > 1e-300) || !det.is_finite() {
+        return Err(Error::invalid(arg, "is singular (it flattens the mesh)"));
+    }
+    Ok(())
+}
+
 impl SceneItem {
     pub fn model_matrix(&self) -> DMat4 {
         DMat4::from_cols_array_2d(&self.transform).transpose()
@@ -177,24 +148,6 @@ impl SceneItem {
     /// Whether the transform mirrors the mesh (turning its winding around).
     pub fn mirrors(&self) -> bool {
         DMat3::from_mat4(self.model_matrix()).determinant() < 0.0
-    }
-
-    pub fn validate(&self, arg: &str) -> Result<()> {
-        let t = &self.transform;
-        if !t.iter().flatten().all(|v| v.is_finite()) {
-            return Err(Error::invalid(format!("{arg}.transform"), "must be finite"));
-        }
-        if t[3] != [0.0, 0.0, 0.0, 1.0] {
-            return Err(Error::invalid(
-                format!("{arg}.transform"),
-                format!("must be affine (last row 0, 0, 0, 1), got {:?}", t[3]),
-            ));
-        }
-        let det = DMat3::from_mat4(self.model_matrix()).determinant();
-        if !(det.abs() > 1e-300) || !det.is_finite() {
-            return Err(Error::invalid(format!("{arg}.transform"), "is singular (it flattens the mesh)"));
-        }
-        self.material.validate(&format!("{arg}.material"))
     }
 }
 
@@ -223,29 +176,6 @@ impl Default for Scene {
 }
 
 impl Scene {
-    pub fn validate(&self) -> Result<()> {
-        for (i, item) in self.items.iter().enumerate() {
-            item.validate(&format!("meshes[{i}]"))?;
-        }
-        self.camera.validate()?;
-        validate_lights(&self.lights)?;
-        crate::render::color::check_unit("ambient", &self.ambient)?;
-        if let Some(o) = &self.outlines {
-            o.validate("outlines")?;
-        }
-        Ok(())
-    }
-
-    /// Mesh-space lines are drawn.
-    pub fn mesh_lines(&self) -> bool {
-        self.outlines.as_ref().is_some_and(|o| o.draws_mesh_lines())
-    }
-
-    /// Image-space edges are drawn.
-    pub fn image_edges(&self) -> bool {
-        self.outlines.as_ref().is_some_and(|o| o.draws_image_edges())
-    }
-
     /// A sphere around every mesh as placed (a unit sphere at the origin for an empty scene),
     /// given each mesh's own bounding sphere.
     pub fn bounding_sphere(&self, mesh_sphere: impl Fn(MeshId) -> Result<Sphere>) -> Result<Sphere> {

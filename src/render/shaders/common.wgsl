@@ -1,39 +1,57 @@
-// Shared by every pass: the uniforms, the mesh vertex stage and the shading models. The
-// constants (array sizes, model ids, ink kinds) come from the Rust side (src/render/wgsl.rs),
-// which prepends them. The formulas mirror src/render/reference.rs (see scene/material.rs).
+// Shared by every pass: the core uniform blocks, the mesh vertex stage and the shading models.
+// The constants (array sizes, model ids) come from the Rust side (src/render/wgsl.rs), and the
+// `Frame` and `Draw` structs, which gather the core blocks and every effect's, are written from
+// the effect registries (src/render/shader.rs). The formulas mirror src/render/reference.rs.
 // Positions are in normalised view space: view space divided by the camera's scale.
+
+// `frame.view`: the camera and the image (src/render/uniforms.rs).
+struct ViewBlock {
+    proj: mat4x4<f32>,
+    size: vec2<f32>,        // output size in pixels
+    footprint: vec2<f32>,   // a pixel's world size at normalised depth z: z * x + y
+    near: f32,              // the near plane, normalised view units
+    orthographic: u32,      // 1 for an orthographic camera
+    _pad0: f32,
+    _pad1: f32,
+};
 
 struct Light {
     position: vec4<f32>,   // w = 0: xyz is the unit vector toward the light; w = 1: a point
     color: vec4<f32>,      // linear rgb, intensity included
 };
 
-struct Frame {
-    proj: mat4x4<f32>,
+// `frame.lighting`: the scene's lights, the shadow-casting one first.
+struct LightingBlock {
     ambient: vec4<f32>,    // ambient light a_l, linear rgb
-    info: vec4<u32>,       // x: light count, y: 1 for an orthographic camera
-    viewport: vec4<f32>,   // xy: output size in pixels; a pixel's footprint at depth d is d * z + w
-    outline: vec4<f32>,    // x: hidden-line offset (footprints), y: normal threshold, z: depth threshold, w: near plane
-    ink: array<vec4<f32>, INK_KINDS>,  // per ink kind: linear rgb, width in pixels (0: not drawn)
-    lights: array<Light, MAX_LIGHTS>,   // the shadow-casting light, if any, first
-    shadow: mat4x4<f32>,   // normalised view space -> the shadow-casting light's clip space
-    shadow_bias: vec4<f32>,  // x: depth tolerance per unit of receiver slope, y: the largest slope biased, z: normal offset
+    lights: array<Light, MAX_LIGHTS>,
 };
 
-struct Draw {
+// `draw.mesh`: where one mesh is.
+struct MeshBlock {
     model_view: mat4x4<f32>,
     normal_matrix: mat4x4<f32>,
+    mirrored: u32,         // 1 when the transform mirrors (flips the winding)
+    _pad0: u32,
+    _pad1: u32,
+    _pad2: u32,
+};
+
+// `draw.material`: its material's coefficients and its model's parameters.
+struct MaterialBlock {
     ambient: vec4<f32>,
     diffuse: vec4<f32>,
     specular: vec4<f32>,
-    params: vec4<f32>,     // x: shininess, y: t_h, z: t_s
-    model: vec4<u32>,      // x: model id (also the MODEL constant), y: highlight (0 paper, 1 blinn), z: thresholds, w: table length
-    flags: vec4<u32>,      // x: 1 when the transform mirrors (flips the winding)
+    shininess: f32,
+    t_h: f32,
+    t_s: f32,
+    blinn: u32,            // the highlight: 1 blinn (n.h), 0 the paper's (L.v)
+    band_count: u32,       // thresholds of the bands
+    table_size: u32,       // entries of the lookup table
+    _pad0: u32,
+    _pad1: u32,
     thresholds: array<vec4<f32>, 2>,
     values: array<vec4<f32>, 3>,
     table: array<vec4<f32>, MAX_LUT>,
-    style: vec4<f32>,      // x: dither amount, y: dither cell (pixels), z: hatch spacing, w: hatch width (pixels)
-    ink: vec4<f32>,        // hatching ink, linear rgb
 };
 
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -82,13 +100,22 @@ struct VsOut {
     @location(5) object_normal: vec3<f32>,
 };
 
+// What a per-pixel effect's hooks see of the pixel (src/render/effects/surface.rs).
+struct Fragment {
+    clip: vec4<f32>,           // the pixel centre in xy (framebuffer pixels)
+    view_pos: vec3<f32>,       // normalised view space
+    normal: vec3<f32>,         // the unit shading normal, turned toward the viewer
+    object_pos: vec3<f32>,     // the mesh's stored coordinates (zero unless the material is anchored)
+    object_normal: vec3<f32>,
+};
+
 fn unit_or_zero(v: vec3<f32>) -> vec3<f32> {
     let l2 = dot(v, v);
     return v * select(0.0, inverseSqrt(l2), l2 > 0.0);
 }
 
 fn view_dir(p: vec3<f32>) -> vec3<f32> {
-    if (frame.info.y == 1u) {
+    if (frame.view.orthographic == 1u) {
         return vec3<f32>(0.0, 0.0, 1.0);
     }
     return normalize(-p);
@@ -100,18 +127,18 @@ fn thresh(a: f32, b: f32) -> f32 {
 
 fn band_value(d: f32) -> f32 {
     var k = 0u;
-    for (var i = 0u; i < draw.model.z; i++) {
-        if (d >= draw.thresholds[i / 4u][i % 4u]) {
+    for (var i = 0u; i < draw.material.band_count; i++) {
+        if (d >= draw.material.thresholds[i / 4u][i % 4u]) {
             k = i + 1u;
         }
     }
-    return draw.values[k / 4u][k % 4u];
+    return draw.material.values[k / 4u][k % 4u];
 }
 
 fn table_value(d: f32) -> vec3<f32> {
-    let n = draw.model.w;
+    let n = draw.material.table_size;
     let i = min(u32(floor(clamp(d, 0.0, 1.0) * f32(n))), n - 1u);
-    return draw.table[i].rgb;
+    return draw.material.table[i].rgb;
 }
 
 // The diffuse factor of the material's model at d = N . L.
@@ -121,7 +148,7 @@ fn diffuse_term(d: f32) -> vec3<f32> {
             return vec3<f32>(max(d, 0.0));
         }
         case MODEL_THRESHOLDED_PHONG: {
-            return vec3<f32>(thresh(d, draw.params.y));
+            return vec3<f32>(thresh(d, draw.material.t_h));
         }
         case MODEL_BANDS: {
             return vec3<f32>(band_value(d));
@@ -138,20 +165,20 @@ fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
         case MODEL_PHONG: {
             let r = 2.0 * d * n - l;
             if (d > 0.0) {
-                return pow(max(dot(r, v), 0.0), draw.params.x);
+                return pow(max(dot(r, v), 0.0), draw.material.shininess);
             }
             return 0.0;
         }
         case MODEL_THRESHOLDED_PHONG: {
             var hl = dot(l, v);
-            if (draw.model.y == 1u) {
+            if (draw.material.blinn == 1u) {
                 let h = l + v;
                 hl = -1.0;
                 if (dot(h, h) > 1e-12) {
                     hl = dot(n, normalize(h));
                 }
             }
-            return thresh(hl, draw.params.z);
+            return thresh(hl, draw.material.t_s);
         }
         default: {
             return 0.0;
@@ -163,9 +190,9 @@ fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
 // moves L.n before it is banded (dithering).
 fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32) -> vec3<f32> {
     let v = view_dir(p);
-    var c = frame.ambient.rgb * draw.ambient.rgb;
+    var c = frame.lighting.ambient.rgb * draw.material.ambient.rgb;
     for (var k = 0u; k < LIGHTS; k++) {
-        let light = frame.lights[k];
+        let light = frame.lighting.lights[k];
         var l = light.position.xyz;
         if (((POINT_LIGHTS >> k) & 1u) == 1u) {
             l = normalize(light.position.xyz - p);
@@ -180,14 +207,14 @@ fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32) -> vec3<f32> {
             f = mix(diffuse_term(-1.0), f, lit);
             s *= lit;
         }
-        c += f * light.color.rgb * draw.diffuse.rgb + s * light.color.rgb * draw.specular.rgb;
+        c += f * light.color.rgb * draw.material.diffuse.rgb + s * light.color.rgb * draw.material.specular.rgb;
     }
     return c;
 }
 
 // True when the fragment sees the side the normals point out of.
 fn outer_side(front_facing: bool) -> bool {
-    return front_facing != (draw.flags.x == 1u);
+    return front_facing != (draw.mesh.mirrored == 1u);
 }
 
 // The shading normal: unit, and turned toward the viewer on the inner side of a surface.
@@ -199,10 +226,10 @@ fn facing_normal(n: vec3<f32>, front_facing: bool) -> vec3<f32> {
 @vertex
 fn vs_main(v: VsIn) -> VsOut {
     var o: VsOut;
-    let p = draw.model_view * vec4<f32>(v.position, 1.0);
-    o.clip = frame.proj * p;
+    let p = draw.mesh.model_view * vec4<f32>(v.position, 1.0);
+    o.clip = frame.view.proj * p;
     o.view_pos = p.xyz;
-    o.view_normal = (draw.normal_matrix * vec4<f32>(v.normal, 0.0)).xyz;
+    o.view_normal = (draw.mesh.normal_matrix * vec4<f32>(v.normal, 0.0)).xyz;
     o.object_pos = v.position;
     o.object_normal = v.normal;
     o.color_front = vec3<f32>(0.0);

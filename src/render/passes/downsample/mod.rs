@@ -3,9 +3,10 @@
 
 use crate::error::Result;
 use crate::render::device::COLOR_FORMAT;
+use crate::render::graph::build::{fullscreen_pipeline, texture_group};
 use crate::render::graph::target::{Access, Target, Use};
-use crate::render::graph::{cleared, FrameCtx, Pass};
-use crate::render::pipelines::target;
+use crate::render::graph::{cleared, FrameCtx, Pass, Recorder};
+use crate::render::pipelines::{target, PipelineKey};
 
 pub const WGSL: &str = include_str!("downsample.wgsl");
 
@@ -23,17 +24,11 @@ impl Pass for Downsample {
         vec![Use(Target::ColorHi, Access::Sample), Use(Target::Color, Access::Attach)]
     }
 
-    fn encode(
-        &self,
-        f: &FrameCtx<'_>,
-        encoder: &mut wgpu::CommandEncoder,
-        timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
-    ) -> Result<()> {
+    fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layouts = &f.pipelines.layouts;
-        let pipeline = f.pipelines.get(("downsample", self.factor as u64), || {
-            let module =
-                f.pipelines.module(&f.dev.device, "downsample", || crate::render::wgsl::source(WGSL));
-            super::fullscreen_pipeline(
+        let pipeline = f.pipelines.get(PipelineKey::new("downsample", self.factor as u64), || {
+            let module = f.module("downsample", WGSL, None);
+            fullscreen_pipeline(
                 f,
                 "downsample",
                 &module,
@@ -44,17 +39,10 @@ impl Pass for Downsample {
             )
         });
         let source = f.res.bind_group("downsample source", || {
-            super::texture_group(f, &layouts.float_texture, f.res.view(Target::ColorHi))
+            texture_group(&f.dev.device, &layouts.float_texture, f.res.view(Target::ColorHi))
         });
         let attachments = [cleared(f.res.view(Target::Color), wgpu::Color::TRANSPARENT)];
-        super::draw_fullscreen(
-            encoder,
-            "downsample",
-            &attachments,
-            timing,
-            &pipeline,
-            &[&f.res.uniforms.frame_group, &source],
-        );
+        rec.fullscreen("downsample", &attachments, &pipeline, &[&f.res.uniforms.frame_group, &source]);
         Ok(())
     }
 }

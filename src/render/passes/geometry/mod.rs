@@ -3,9 +3,10 @@
 //! colour asked for).
 
 use crate::error::Result;
+use crate::render::graph::build::{cull_bits, mesh_pipeline, MeshDraw};
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
-use crate::render::graph::{cleared, depth_buffer, geometry_clear, FrameCtx, Pass};
-use crate::render::pipelines::target;
+use crate::render::graph::{cleared, depth_buffer, geometry_clear, FrameCtx, Pass, Recorder};
+use crate::render::pipelines::{target, PipelineKey};
 
 pub const WGSL: &str = include_str!("geometry.wgsl");
 
@@ -23,43 +24,25 @@ impl Pass for Geometry {
         vec![Use(Target::Geometry, Access::Attach), Use(Target::GeometryDepth, Access::Attach)]
     }
 
-    fn encode(
-        &self,
-        f: &FrameCtx<'_>,
-        encoder: &mut wgpu::CommandEncoder,
-        timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
-    ) -> Result<()> {
+    fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layout = self.layout;
         let pipeline = |cull: Option<wgpu::Face>| {
-            f.pipelines.get(("gbuffer", layout as u64 | super::cull_bits(cull) << 8), || {
-                let module =
-                    f.pipelines.module(&f.dev.device, "gbuffer", || crate::render::wgsl::source(WGSL));
+            f.pipelines.get(PipelineKey::new("gbuffer", layout as u64 | cull_bits(cull) << 8), || {
+                let module = f.module("gbuffer", WGSL, None);
                 let entry = match layout {
                     GeometryLayout::NormalDepth => "fs_normal_depth",
                     GeometryLayout::Depth => "fs_depth",
                 };
-                super::mesh_pipeline(
+                let targets = [target(layout.format())];
+                mesh_pipeline(
                     f,
-                    "gbuffer",
                     &module,
-                    entry,
-                    &[target(layout.format())],
-                    1,
-                    &[],
-                    &[],
-                    cull,
+                    MeshDraw { label: "gbuffer", entry, targets: &targets, samples: 1, constants: &[], more: &[], cull },
                 )
             })
         };
         let attachments = [cleared(f.res.view(Target::Geometry), geometry_clear(layout))];
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("gbuffer"),
-            color_attachments: &attachments,
-            depth_stencil_attachment: depth_buffer(f.res.view(Target::GeometryDepth)),
-            timestamp_writes: timing,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let mut pass = rec.begin("gbuffer", &attachments, depth_buffer(f.res.view(Target::GeometryDepth), false));
         f.draw_meshes(&mut pass, |d| pipeline(d.cull));
         Ok(())
     }

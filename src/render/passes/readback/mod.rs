@@ -6,7 +6,7 @@ use rayon::prelude::*;
 
 use crate::error::Result;
 use crate::render::graph::target::{Access, Target, Use};
-use crate::render::graph::{FrameCtx, Pass};
+use crate::render::graph::{FrameCtx, Pass, Recorder};
 
 pub fn padded_bytes_per_row(unpadded: u32) -> u32 {
     unpadded.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT
@@ -100,14 +100,9 @@ impl Pass for Readback {
         false
     }
 
-    fn encode(
-        &self,
-        f: &FrameCtx<'_>,
-        encoder: &mut wgpu::CommandEncoder,
-        _timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
-    ) -> Result<()> {
+    fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let r = self.region;
-        encoder.copy_texture_to_buffer(
+        rec.encoder.copy_texture_to_buffer(
             wgpu::TexelCopyTextureInfo {
                 texture: f.res.texture(self.target),
                 mip_level: 0,

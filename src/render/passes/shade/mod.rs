@@ -1,27 +1,33 @@
 //! The shading pass: meshes with their materials into the colour target, resolving MSAA on the
 //! way. When it runs at the output size with one sample per pixel and the frame needs the
-//! geometry target, it writes that too (one draw instead of two).
+//! geometry target, it writes that too (one draw instead of two). A frame effect may swap in
+//! shading hooks (`graph::effect::ShadeHook`: the shadow test).
+
+pub mod variant;
 
 use std::sync::Arc;
 
 use crate::error::Result;
 use crate::render::device::COLOR_FORMAT;
+use crate::render::graph::build::{cull_bits, mesh_pipeline, MeshDraw};
+use crate::render::graph::effect::ShadeHook;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
-use crate::render::graph::{cleared, depth_buffer, geometry_clear, FrameCtx, Pass, ShadingVariant};
-use crate::render::pipelines::target;
-use crate::render::scene::shadows::ShadowFilter;
+use crate::render::graph::{cleared, depth_buffer, geometry_clear, DrawItem, FrameCtx, Pass, Recorder};
+use crate::render::pipelines::{target, PipelineKey};
+
+use variant::ShadingVariant;
 
 pub const WGSL: &str = include_str!("shade.wgsl");
 
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Shade {
     pub samples: u32,
     /// Renders into the supersampled colour target, which `downsample` then averages.
     pub supersampled: bool,
     /// Also writes the geometry target, in this layout.
     pub geometry: Option<GeometryLayout>,
-    /// Tests the shadow map (`shadow_map` ran before).
-    pub shadowed: bool,
+    /// What a frame effect swaps into the shading.
+    pub hook: Option<Arc<dyn ShadeHook>>,
 }
 
 impl Shade {
@@ -34,29 +40,20 @@ impl Shade {
         }
     }
 
-    fn pipeline(
-        &self,
-        f: &FrameCtx<'_>,
-        shading: ShadingVariant,
-        shadows: Option<ShadowFilter>,
-        cull: Option<wgpu::Face>,
-    ) -> Arc<wgpu::RenderPipeline> {
-        let variant = self.samples as u64
-            | super::cull_bits(cull) << 14
-            | shading.bits() << 16
-            | (self.geometry.map_or(0, |g| 1 + g as u64)) << 9
-            | (shadows.map_or(0, |s| 1 + s as u64)) << 12
+    fn pipeline(&self, f: &FrameCtx<'_>, d: &DrawItem<'_>) -> Arc<wgpu::RenderPipeline> {
+        let shading = ShadingVariant::of(d.material);
+        let hook = self.hook.as_deref();
+        let bits = self.samples as u64
+            | (self.geometry.map_or(0, |g| 1 + g as u64)) << 8
+            | hook.map_or(0, |h| h.key()) << 12
+            | cull_bits(d.cull) << 20
             | (f.lights as u64) << 32
-            | (f.point_lights as u64) << 40;
-        f.pipelines.get(("shade", variant), || {
-            let module = match shadows {
-                None => f.pipelines.module(&f.dev.device, "shade", || crate::render::wgsl::source(WGSL)),
-                Some(_) => f
-                    .pipelines
-                    .module(&f.dev.device, "shade, shadowed", || crate::render::wgsl::source_shadowed(WGSL)),
-            };
+            | (f.point_lights as u64) << 40
+            | (shading.anchored as u64) << 48;
+        f.pipelines.get(PipelineKey::new("shade", bits).with(&shading.constants), || {
+            let module = f.module("shade", WGSL, hook);
             let mut targets = vec![target(COLOR_FORMAT)];
-            let entry = match (self.geometry, shading.anchored()) {
+            let entry = match (self.geometry, shading.anchored) {
                 (None, false) => "fs_color",
                 (None, true) => "fs_color_anchored",
                 (Some(g), anchored) => {
@@ -69,15 +66,27 @@ impl Shade {
                     }
                 }
             };
-            let mut constants = shading.constants().to_vec();
+            let mut constants = shading.constants.clone();
             constants.push(("LIGHTS", f.lights as f64));
             constants.push(("POINT_LIGHTS", f.point_lights as f64));
             let mut more = vec![];
-            if let Some(filter) = shadows {
-                constants.extend(super::shadow::filter_constants(filter));
-                more.push(&f.pipelines.layouts.shadow);
+            if let Some(h) = hook {
+                constants.extend(h.constants());
+                more.push(h.layout(&f.pipelines.layouts));
             }
-            super::mesh_pipeline(f, "shade", &module, entry, &targets, self.samples, &constants, &more, cull)
+            mesh_pipeline(
+                f,
+                &module,
+                MeshDraw {
+                    label: "shade",
+                    entry,
+                    targets: &targets,
+                    samples: self.samples,
+                    constants: &constants,
+                    more: &more,
+                    cull: d.cull,
+                },
+            )
         })
     }
 }
@@ -95,18 +104,13 @@ impl Pass for Shade {
         if self.geometry.is_some() {
             u.push(Use(Target::Geometry, Access::Attach));
         }
-        if self.shadowed {
-            u.push(Use(Target::ShadowMap, Access::Sample));
+        if let Some(h) = &self.hook {
+            u.extend(h.uses());
         }
         u
     }
 
-    fn encode(
-        &self,
-        f: &FrameCtx<'_>,
-        encoder: &mut wgpu::CommandEncoder,
-        timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
-    ) -> Result<()> {
+    fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let single = f.res.view(self.single());
         let color = if self.samples > 1 {
             Some(wgpu::RenderPassColorAttachment {
@@ -114,10 +118,7 @@ impl Pass for Shade {
                 depth_slice: None,
                 resolve_target: Some(single),
                 // the samples are needed only until they are resolved
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(f.background),
-                    store: wgpu::StoreOp::Discard,
-                },
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(f.background), store: wgpu::StoreOp::Discard },
             })
         } else {
             cleared(single, f.background)
@@ -126,19 +127,11 @@ impl Pass for Shade {
         if let Some(g) = self.geometry {
             attachments.push(cleared(f.res.view(Target::Geometry), geometry_clear(g)));
         }
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("shade"),
-            color_attachments: &attachments,
-            depth_stencil_attachment: depth_buffer(f.res.view(Target::ShadeDepth)),
-            timestamp_writes: timing,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        let shadows = f.shadow_filter.filter(|_| self.shadowed);
-        if let Some(filter) = shadows {
-            pass.set_bind_group(2, &super::shadow::shadow_group(f, filter), &[]);
+        let mut pass = rec.begin("shade", &attachments, depth_buffer(f.res.view(Target::ShadeDepth), false));
+        if let Some(h) = &self.hook {
+            pass.set_bind_group(2, &h.bind_group(f), &[]);
         }
-        f.draw_meshes(&mut pass, |d| self.pipeline(f, d.variant, shadows, d.cull));
+        f.draw_meshes(&mut pass, |d| self.pipeline(f, d));
         Ok(())
     }
 }

@@ -1,5 +1,5 @@
 // The shadow test (Kang, Kim and Yoon's shadow z-buffer): a point is lit by the shadow-casting
-// light (always light 0, see `shader_lights`) when its depth from the light is at most the
+// light (always light 0, see `CheckedScene::shader_lights`) when its depth from the light is at most the
 // shadow map's, less a tolerance that grows with the receiver's slope to the light, the point
 // first moved off the surface along its normal (so that a lit surface does not shadow itself,
 // even where the light grazes it). A surface facing away from the light is in its own
@@ -20,10 +20,10 @@ fn light_visibility(k: u32, n: vec3<f32>, p: vec3<f32>, d: f32) -> f32 {
     if (d <= 0.0) {
         return 0.0;
     }
-    let q = frame.shadow * vec4<f32>(p + n * frame.shadow_bias.z, 1.0);
+    let q = frame.shadows.to_light * vec4<f32>(p + n * frame.shadows.normal_offset, 1.0);
     let uv = vec2<f32>(q.x * 0.5 + 0.5, 0.5 - q.y * 0.5);
-    let slope = min(sqrt(max(1.0 - d * d, 0.0)) / d, frame.shadow_bias.y);
-    let z = q.z - frame.shadow_bias.x * (1.0 + slope);
+    let slope = min(sqrt(max(1.0 - d * d, 0.0)) / d, frame.shadows.max_slope);
+    let z = q.z - frame.shadows.tolerance * (1.0 + slope);
     if (!PCF) {
         return textureSampleCompareLevel(shadow_map, shadow_sampler, uv, z);
     }

@@ -1,64 +1,24 @@
-//! Effects a toon material can add on top of its bands (Borquez and Yepez): cross-hatching,
-//! whose stroke density follows the band's tone, and dithering, which blends neighbouring bands
-//! with a threshold pattern. Both are shading variants: no extra pass.
+//! Dithering between neighbouring bands (Borquez and Yepez): L.n + (t - 1/2) amount is banded,
+//! t a threshold pattern's value at the pixel, so pixels near a band's edge alternate between
+//! the two bands. A per-pixel surface effect: `dither.wgsl` moves L.n through the `jitter` hook;
+//! `DitherPattern::threshold` is its CPU reference.
+
+use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-use crate::render::color::Srgb;
+use crate::render::block::Block;
+use crate::render::effects::surface::{Hook, Surface, SurfaceEffect, Variant};
+use crate::render::scene::field;
+use crate::render::wgsl;
 
-/// Stroke layers of the hatching, added one by one as the tone darkens: at 45, -45, 0 and 90
-/// degrees (cross-hatching). Layer k (1-based) shows where the tone is below 1 - k / (LAYERS + 1).
-pub const HATCH_LAYERS: usize = 4;
-/// Ink of the strokes when none is given (sRGB).
-pub const DEFAULT_INK: Srgb = [0.1, 0.1, 0.1];
-/// Pixels between strokes of one layer, and their width, when none are given.
-pub const DEFAULT_HATCH_SPACING: f64 = 6.0;
-pub const DEFAULT_HATCH_WIDTH: f64 = 1.25;
 /// How far (in L.n) dithering moves a pixel toward the neighbouring band, when none is given.
 pub const DEFAULT_DITHER_AMOUNT: f64 = 0.15;
-
-/// The number of stroke layers drawn at tone `tone` (CPU reference of the shader's rule).
-pub fn hatch_layers(tone: f64) -> usize {
-    (1..=HATCH_LAYERS).filter(|&k| tone < 1.0 - k as f64 / (HATCH_LAYERS + 1) as f64).count()
-}
-
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hatching {
-    /// sRGB ink colour.
-    pub ink: Srgb,
-    /// Pixels between the strokes of one layer (the pattern keeps about this spacing on screen
-    /// at any distance, switching between octaves of an object-space pattern).
-    pub spacing: f64,
-    /// Stroke width in pixels.
-    pub width: f64,
-}
-
-impl Default for Hatching {
-    fn default() -> Self {
-        Hatching { ink: DEFAULT_INK, spacing: DEFAULT_HATCH_SPACING, width: DEFAULT_HATCH_WIDTH }
-    }
-}
-
-impl Hatching {
-    pub fn validate(&self, arg: &str) -> Result<()> {
-        crate::render::color::check_unit(&format!("{arg}ink"), &self.ink)?;
-        if !(self.spacing.is_finite() && (2.0..=256.0).contains(&self.spacing)) {
-            return Err(Error::invalid(
-                format!("{arg}spacing"),
-                format!("must be in [2, 256] pixels, got {}", self.spacing),
-            ));
-        }
-        if !(self.width.is_finite() && self.width > 0.0 && self.width <= self.spacing) {
-            return Err(Error::invalid(
-                format!("{arg}width"),
-                format!("must be in (0, spacing] pixels, got {}", self.width),
-            ));
-        }
-        Ok(())
-    }
-}
+/// The R2 sequence's steps along x and y (Roberts): 1/g and 1/g^2, g the plastic number.
+pub const R2_STEPS: [f64; 2] = [0.754_877_666_246_692_7, 0.569_840_290_998_053_2];
 
 /// The threshold pattern of dithering.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
 pub enum DitherPattern {
     /// Ordered dithering with a 2x2, 4x4 or 8x8 Bayer matrix.
     Bayer2 = 1,
@@ -90,14 +50,14 @@ impl DitherPattern {
     }
 
     /// The threshold in (0, 1) at cell (x, y): the CPU reference of `dither_threshold` in
-    /// shade.wgsl.
+    /// dither.wgsl.
     pub fn threshold(self, x: u32, y: u32) -> f64 {
         let bits = match self {
             Self::Bayer2 => 1,
             Self::Bayer4 => 2,
             Self::Bayer8 => 3,
             Self::Blue => {
-                let v = 0.754_877_666_246_692_7 * x as f64 + 0.569_840_290_998_053_2 * y as f64;
+                let v = R2_STEPS[0] * x as f64 + R2_STEPS[1] * y as f64;
                 return v - v.floor();
             }
         };
@@ -111,7 +71,8 @@ impl DitherPattern {
 }
 
 /// Where the pattern is anchored.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
 pub enum DitherSpace {
     /// Pixels, as in the paper: the pattern stays still while the object moves under it.
     Screen,
@@ -121,6 +82,8 @@ pub enum DitherSpace {
 }
 
 impl DitherSpace {
+    pub const NAMES: [&'static str; 2] = ["screen", "object"];
+
     pub fn parse(arg: &str, s: &str) -> Result<Self> {
         match s {
             "screen" => Ok(Self::Screen),
@@ -130,14 +93,11 @@ impl DitherSpace {
     }
 
     pub fn name(self) -> &'static str {
-        match self {
-            Self::Screen => "screen",
-            Self::Object => "object",
-        }
+        Self::NAMES[self as usize]
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Dither {
     pub pattern: DitherPattern,
     pub space: DitherSpace,
@@ -148,25 +108,108 @@ pub struct Dither {
     pub scale: f64,
 }
 
+impl Default for Dither {
+    fn default() -> Self {
+        Dither::new(DitherPattern::Bayer4)
+    }
+}
+
 impl Dither {
     pub fn new(pattern: DitherPattern) -> Self {
         Dither { pattern, space: DitherSpace::Screen, amount: DEFAULT_DITHER_AMOUNT, scale: 1.0 }
     }
 
-    pub fn validate(&self, arg: &str) -> Result<()> {
+    /// Checks the settings; `prefix` names them in errors ("" while they are being made).
+    pub fn validate(&self, prefix: &str) -> Result<()> {
         if !(self.amount.is_finite() && (0.0..=2.0).contains(&self.amount)) {
             return Err(Error::invalid(
-                format!("{arg}amount"),
+                field(prefix, "amount"),
                 format!("must be in [0, 2], got {}", self.amount),
             ));
         }
         if !(self.scale.is_finite() && (1.0..=64.0).contains(&self.scale)) {
             return Err(Error::invalid(
-                format!("{arg}scale"),
+                field(prefix, "scale"),
                 format!("must be in [1, 64] pixels, got {}", self.scale),
             ));
         }
         Ok(())
+    }
+}
+
+crate::uniform_block! {
+    /// `draw.dither`: the dithering of one mesh's material.
+    pub struct DitherBlock as "DitherBlock" {
+        /// In L.n (0 where the material does not dither).
+        pub amount: f32,
+        /// Pixels a pattern cell covers.
+        pub cell: f32,
+        pub _pad0: f32,
+        pub _pad1: f32,
+    }
+}
+
+pub struct DitherEffect;
+
+pub static EFFECT: DitherEffect = DitherEffect;
+
+impl SurfaceEffect for DitherEffect {
+    fn name(&self) -> &'static str {
+        "dither"
+    }
+
+    fn wgsl(&self) -> String {
+        let mut s = wgsl::constant_u32("DITHER_BLUE", DitherPattern::Blue as u32);
+        s += &wgsl::constant_f32("R2_STEP_X", R2_STEPS[0]);
+        s += &wgsl::constant_f32("R2_STEP_Y", R2_STEPS[1]);
+        s + include_str!("dither.wgsl")
+    }
+
+    fn block(&self) -> crate::render::block::BlockLayout {
+        DitherBlock::layout()
+    }
+
+    fn hooks(&self) -> &'static [Hook] {
+        &[Hook::Jitter]
+    }
+
+    fn validate(&self, s: &Surface<'_>, prefix: &str) -> Result<()> {
+        let Some(d) = &s.effects.dither else { return Ok(()) };
+        if !s.model.is_toon() {
+            return Err(Error::invalid(
+                "dither",
+                format!(
+                    "dithers toon bands only (bands, lut, thresholded_phong, hatching), not {}",
+                    s.model.name()
+                ),
+            ));
+        }
+        if s.per_vertex {
+            return Err(Error::invalid("dither", "needs per-pixel shading (per_vertex=False)"));
+        }
+        d.validate(&field(prefix, "dither"))
+    }
+
+    fn block_bytes(&self, s: &Surface<'_>) -> Vec<u8> {
+        let d = s.effects.dither.as_ref();
+        DitherBlock {
+            amount: d.map_or(0.0, |d| d.amount as f32),
+            cell: d.map_or(1.0, |d| d.scale as f32),
+            ..bytemuck::Zeroable::zeroed()
+        }
+        .bytes()
+    }
+
+    fn variant(&self, s: &Surface<'_>) -> Variant {
+        let d = s.effects.dither.as_ref();
+        let object = d.is_some_and(|d| d.space == DitherSpace::Object);
+        Variant {
+            constants: vec![
+                ("DITHER", d.map_or(0, |d| d.pattern as u32) as f64),
+                ("DITHER_OBJECT", object as u32 as f64),
+            ],
+            anchored: object,
+        }
     }
 }
 
@@ -184,10 +227,5 @@ mod tests {
         let mut b8 = m(DitherPattern::Bayer8, 8);
         b8.sort_unstable();
         assert_eq!(b8, (0..64).collect::<Vec<_>>());
-    }
-
-    #[test]
-    fn layers_darken_step_by_step() {
-        assert_eq!([1.0, 0.85, 0.7, 0.5, 0.3, 0.1, 0.0].map(hatch_layers), [0, 0, 1, 2, 3, 4, 4]);
     }
 }

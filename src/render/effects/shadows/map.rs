@@ -4,9 +4,11 @@
 use crate::error::Result;
 use crate::render::gpu_mesh::GpuMesh;
 use crate::render::graph::target::{Access, Target, Use};
-use crate::render::graph::{FrameCtx, Pass};
+use crate::render::graph::{depth_buffer, FrameCtx, Pass, Recorder};
+use crate::render::graph::build::{cull_bits, nearest_wins};
+use crate::render::pipelines::PipelineKey;
 
-pub const WGSL: &str = include_str!("shadow_map.wgsl");
+pub const WGSL: &str = include_str!("map.wgsl");
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShadowMap;
@@ -20,17 +22,12 @@ impl Pass for ShadowMap {
         vec![Use(Target::ShadowMap, Access::Attach)]
     }
 
-    fn encode(
-        &self,
-        f: &FrameCtx<'_>,
-        encoder: &mut wgpu::CommandEncoder,
-        timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
-    ) -> Result<()> {
+    fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let pipeline = |cull: Option<wgpu::Face>| {
-            f.pipelines.get(("shadow_map", super::cull_bits(cull)), || {
+            f.pipelines.get(PipelineKey::new("shadow_map", cull_bits(cull)), || {
                 let device = &f.dev.device;
                 let layouts = &f.pipelines.layouts;
-                let module = f.pipelines.module(device, "shadow_map", || crate::render::wgsl::source(WGSL));
+                let module = f.module("shadow_map", WGSL, None);
                 let layout = f.pipelines.layout(device, "shadow_map", &[&layouts.frame, &layouts.draw]);
                 device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                     label: Some("shadow_map"),
@@ -44,7 +41,7 @@ impl Pass for ShadowMap {
                     // both sides cast (open surfaces and planes too), but the inner sides of a
                     // closed mesh never show to the light
                     primitive: wgpu::PrimitiveState { cull_mode: cull, ..Default::default() },
-                    depth_stencil: super::nearest_wins(),
+                    depth_stencil: nearest_wins(),
                     multisample: Default::default(),
                     fragment: None,
                     multiview_mask: None,
@@ -52,21 +49,7 @@ impl Pass for ShadowMap {
                 })
             })
         };
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("shadow_map"),
-            color_attachments: &[],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: f.res.view(Target::ShadowMap),
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Store,
-                }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: timing,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let mut pass = rec.begin("shadow_map", &[], depth_buffer(f.res.view(Target::ShadowMap), true));
         f.draw_meshes(&mut pass, |d| pipeline(d.light_cull));
         Ok(())
     }

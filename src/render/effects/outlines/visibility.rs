@@ -5,7 +5,17 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
+use crate::edges::chains::chain_edges;
 use crate::edges::outlines::LineKind;
+use crate::error::{Error, Result};
+use crate::render::gpu_mesh::Placement;
+use crate::render::graph::effect::{HostInputs, HostStep};
+use crate::render::graph::report::{FrameReport, Polyline};
+use crate::render::scene::camera::ResolvedCamera;
+use crate::render::scene::SceneItem;
+use crate::render::uniforms::{footprint, model_view};
+
+use super::mesh_lines::ViewSlot;
 
 /// The relative depth tolerance of the visibility test (float rounding of the line's own depth).
 pub const DEPTH_EPSILON: f64 = 1e-5;
@@ -49,6 +59,19 @@ pub struct Projector {
 }
 
 impl Projector {
+    /// Projects the lines of `item` (a mesh stored with `placement`) into an image of
+    /// `width` x `height` pixels, in normalised view units (like the GPU).
+    pub fn of(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera, width: u32, height: u32) -> Self {
+        Projector {
+            model_view: model_view(item, placement, cam),
+            proj: cam.normalized_proj(),
+            width: width as f64,
+            height: height as f64,
+            orthographic: cam.orthographic,
+            near: cam.near / cam.scale,
+        }
+    }
+
     fn pixels(&self, v: DVec3) -> [f64; 2] {
         let c = self.proj * DVec4::new(v.x, v.y, v.z, 1.0);
         let (x, y) = (c.x / c.w, c.y / c.w);
@@ -91,6 +114,11 @@ pub struct Visibility {
 }
 
 impl Visibility {
+    /// The rule of a frame seen by `cam`, `height` pixels high (depths in normalised view units).
+    pub fn of(depth_offset: f32, cam: &ResolvedCamera, height: u32) -> Self {
+        Visibility { offset: depth_offset as f64, footprint: footprint(cam, height) }
+    }
+
     /// Whether the point at pixel position `c`, depth `z`, of a line of kind `kind` is visible:
     /// its depth is at most the largest surface depth in the 3x3 pixels around it plus `offset`
     /// footprints (plus `DEPTH_EPSILON` of itself). A silhouette or boundary with background
@@ -210,6 +238,56 @@ pub fn visible_runs(
     }
     close(&mut current);
     runs
+}
+
+/// The `visible_lines` step: the view's lines, chained per kind and mesh, cut to their visible
+/// runs against the frame's depth (`RenderResult.lines`).
+#[derive(Debug)]
+pub struct VisibleLines {
+    pub depth_offset: f32,
+    pub view: ViewSlot,
+}
+
+impl HostStep for VisibleLines {
+    fn name(&self) -> &'static str {
+        "visible_lines"
+    }
+
+    fn run(&self, cx: &HostInputs<'_>, report: &mut FrameReport) -> Result<()> {
+        let frame = &cx.scene.frame;
+        let depth = cx.depth.ok_or_else(|| Error::Internal("visible lines without the frame's depth".into()))?;
+        let view = self.view.get().ok_or_else(|| Error::Internal("visible lines without the view's lines".into()))?;
+        let rule = Visibility::of(self.depth_offset, cx.cam, frame.height);
+        let img = DepthImage { depth, width: frame.width as usize, height: frame.height as usize };
+        let mut out = Vec::new();
+        for ((item, rec), outline) in cx.scene.scene.items.iter().zip(cx.records).zip(&view.outlines) {
+            let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
+            let positions = &rec.host.positions;
+            let mut kinds: Vec<LineKind> = outline.kinds.clone();
+            kinds.sort_unstable();
+            kinds.dedup();
+            for kind in kinds {
+                let edges: Vec<[u32; 2]> =
+                    outline.edges.iter().zip(&outline.kinds).filter(|(_, k)| **k == kind).map(|(e, _)| *e).collect();
+                let (flat, starts) = chain_edges(&edges);
+                for w in starts.windows(2) {
+                    let screen: Vec<_> = flat[w[0] as usize..w[1] as usize]
+                        .windows(2)
+                        .filter_map(|s| {
+                            projector.project(positions[s[0] as usize], positions[s[1] as usize], kind as usize)
+                        })
+                        .collect();
+                    out.extend(
+                        visible_runs(&screen, cx.cam.orthographic, &img, rule)
+                            .into_iter()
+                            .map(|points| Polyline { kind: kind as usize, points }),
+                    );
+                }
+            }
+        }
+        report.lines = Some(out);
+        Ok(())
+    }
 }
 
 #[cfg(test)]

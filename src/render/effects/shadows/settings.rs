@@ -1,7 +1,10 @@
 //! Shadow settings of a light (Kang, Kim and Yoon's shadow z-buffer): the shadow map's size,
 //! the depth bias that keeps lit surfaces from shadowing themselves, and the filter.
 
+use serde::{Deserialize, Serialize};
+
 use crate::error::{Error, Result};
+use crate::render::scene::field;
 
 /// The shadow map's side when none is given, in texels.
 pub const DEFAULT_SHADOW_SIZE: u32 = 2048;
@@ -14,13 +17,15 @@ pub const SHADOW_SIZES: std::ops::RangeInclusive<u32> = 64..=8192;
 pub const MAX_BIAS_SLOPE: f64 = 8.0;
 
 /// How the shadow map is read.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[repr(u8)]
 pub enum ShadowFilter {
     /// One test against the nearest texel: hard, aliased edges.
+    #[serde(rename = "none")]
     Nearest = 0,
-    /// Percentage-closer filtering: 3x3 bilinear comparisons (a 4x4-texel footprint), soft
+    /// Percentage-closer filtering: four bilinear comparisons (a tent over 3x3 texels), soft
     /// edges a few texels wide.
+    #[serde(rename = "pcf")]
     Pcf = 1,
 }
 
@@ -36,10 +41,7 @@ impl ShadowFilter {
     }
 
     pub fn name(self) -> &'static str {
-        match self {
-            Self::Nearest => "none",
-            Self::Pcf => "pcf",
-        }
+        Self::NAMES[self as usize]
     }
 
     /// How far from its centre a lookup reads, in texels (the bias must cover that distance):
@@ -52,7 +54,7 @@ impl ShadowFilter {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Shadows {
     /// Side of the square shadow map in texels: a power of two in `SHADOW_SIZES`.
     pub size: u32,
@@ -68,10 +70,11 @@ impl Default for Shadows {
 }
 
 impl Shadows {
-    pub fn validate(&self, arg: &str) -> Result<()> {
+    /// Checks the settings; `prefix` names them in errors ("" while they are being made).
+    pub fn validate(&self, prefix: &str) -> Result<()> {
         if !(SHADOW_SIZES.contains(&self.size) && self.size.is_power_of_two()) {
             return Err(Error::invalid(
-                format!("{arg}size"),
+                field(prefix, "size"),
                 format!(
                     "must be a power of two from {} to {}, got {}",
                     SHADOW_SIZES.start(),
@@ -82,7 +85,7 @@ impl Shadows {
         }
         if !(self.bias.is_finite() && self.bias >= 0.0) {
             return Err(Error::invalid(
-                format!("{arg}bias"),
+                field(prefix, "bias"),
                 format!("must be finite and >= 0, got {}", self.bias),
             ));
         }

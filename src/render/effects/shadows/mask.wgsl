@@ -12,10 +12,10 @@ fn fs_shadow(@builtin(position) pos: vec4<f32>) -> @location(0) u32 {
     }
     let n = bitcast<vec3<f32>>(texel.xyz);
     // the pixel centre back in normalised view space (the projection is symmetric)
-    let ndc = vec2<f32>(pos.x / frame.viewport.x * 2.0 - 1.0, 1.0 - pos.y / frame.viewport.y * 2.0);
-    let scale = vec2<f32>(frame.proj[0][0], frame.proj[1][1]);
-    let xy = select(ndc * z / scale, (ndc - vec2<f32>(frame.proj[3][0], frame.proj[3][1])) / scale, frame.info.y == 1u);
+    let ndc = vec2<f32>(pos.x / frame.view.size.x * 2.0 - 1.0, 1.0 - pos.y / frame.view.size.y * 2.0);
+    let scale = vec2<f32>(frame.view.proj[0][0], frame.view.proj[1][1]);
+    let xy = select(ndc * z / scale, (ndc - vec2<f32>(frame.view.proj[3][0], frame.view.proj[3][1])) / scale, frame.view.orthographic == 1u);
     let p = vec3<f32>(xy, -z);
-    let d = dot(n, frame.lights[0].position.xyz);
+    let d = dot(n, frame.lighting.lights[0].position.xyz);
     return bitcast<u32>(light_visibility(0u, n, p, d));
 }

@@ -40,7 +40,7 @@ fn is_edge(pos: vec4<f32>) -> bool {
         }
         gn = max(gn, sobel(w));
     }
-    if (gn > frame.outline.y) {
+    if (gn > frame.outlines.normal_threshold) {
         return true;
     }
     if (background == 9u) {
@@ -55,11 +55,11 @@ fn is_edge(pos: vec4<f32>) -> bool {
             d[r][k] = bitcast<f32>(texels[r][k].w);
         }
     }
-    return sobel(d) > frame.outline.z;
+    return sobel(d) > frame.outlines.depth_threshold;
 }
 
 fn ink() -> vec4<f32> {
-    return vec4<f32>(frame.ink[IMAGE_KIND].rgb, 1.0);
+    return vec4<f32>(frame.outlines.ink[IMAGE_KIND].rgb, 1.0);
 }
 
 @fragment

@@ -3,11 +3,11 @@
 // ends so that the lines of a polyline join without gaps. Coverage is the distance of the pixel
 // centre to the segment. Hidden lines are removed against the geometry target's depth: a point
 // of the line is visible when its depth is at most the largest surface depth in the 3x3 pixels
-// around it plus `depth offset` pixel footprints (src/render/scene/outlines.rs), decided at the
+// around it plus `depth offset` pixel footprints (settings.rs), decided at the
 // nearest point of the centre line, so that the whole width of a line shows or hides together.
 // A silhouette or boundary with background among those pixels is on the rim and shows; other
 // lines are tested against the surface pixels only (a crease behind the rim stays hidden).
-// `reference.rs` holds the same rule on the CPU.
+// `visibility.rs` holds the same rule on the CPU.
 
 @group(2) @binding(0) var geometry: texture_2d<u32>;
 
@@ -30,9 +30,9 @@ struct LineOut {
 };
 
 fn to_pixels(v: vec3<f32>) -> vec2<f32> {
-    let c = frame.proj * vec4<f32>(v, 1.0);
+    let c = frame.view.proj * vec4<f32>(v, 1.0);
     let ndc = c.xy / c.w;
-    return vec2<f32>((ndc.x * 0.5 + 0.5) * frame.viewport.x, (0.5 - ndc.y * 0.5) * frame.viewport.y);
+    return vec2<f32>((ndc.x * 0.5 + 0.5) * frame.view.size.x, (0.5 - ndc.y * 0.5) * frame.view.size.y);
 }
 
 @vertex
@@ -40,13 +40,13 @@ fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
     var o: LineOut;
     let kind = l.kind;
     o.kind = kind;
-    var pa = (draw.model_view * vec4<f32>(l.a, 1.0)).xyz;
-    var pb = (draw.model_view * vec4<f32>(l.b, 1.0)).xyz;
+    var pa = (draw.mesh.model_view * vec4<f32>(l.a, 1.0)).xyz;
+    var pb = (draw.mesh.model_view * vec4<f32>(l.b, 1.0)).xyz;
     // Keep the part in front of the near plane (perspective only). No branch tests uniforms
     // alone: for such branches lavapipe (Mesa 22) compiles a shader variant at every draw and
     // never frees it.
-    let clips = frame.info.y == 0u;
-    let near = frame.outline.w;
+    let clips = frame.view.orthographic == 0u;
+    let near = frame.view.near;
     let za = -pa.z;
     let zb = -pb.z;
     let cut_a = clips && za < near;
@@ -55,7 +55,7 @@ fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
     pb = select(pb, mix(pb, pa, (near - zb) / (za - zb)), cut_b && !cut_a);
     let sa = to_pixels(pa);
     let sb = to_pixels(pb);
-    let half = frame.ink[kind].w * 0.5 + 1.0;
+    let half = frame.outlines.ink[kind].w * 0.5 + 1.0;
     let ab = sb - sa;
     let len = length(ab);
     var dir = vec2<f32>(1.0, 0.0);
@@ -67,7 +67,7 @@ fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
     let along = select(-half, len + half, (vi & 1u) == 1u);
     let across = select(-half, half, vi >= 2u);
     let s = sa + dir * along + side * across;
-    o.clip = vec4<f32>(s.x / frame.viewport.x * 2.0 - 1.0, 1.0 - s.y / frame.viewport.y * 2.0, 0.0, 1.0);
+    o.clip = vec4<f32>(s.x / frame.view.size.x * 2.0 - 1.0, 1.0 - s.y / frame.view.size.y * 2.0, 0.0, 1.0);
     o.sa = sa;
     o.sb = sb;
     o.depths = vec2<f32>(-pa.z, -pb.z);
@@ -85,7 +85,7 @@ fn visible(c: vec2<f32>, z: f32, kind: u32) -> bool {
     let size = vec2<i32>(textureDimensions(geometry));
     let q = vec2<i32>(floor(c));
     let rim = kind == LINE_SILHOUETTE || kind == LINE_BOUNDARY;
-    let tolerance = frame.outline.x * (z * frame.viewport.z + frame.viewport.w) + z * 1e-5;
+    let tolerance = frame.outlines.depth_offset * (z * frame.view.footprint.x + frame.view.footprint.y) + z * DEPTH_EPSILON;
     // the pixel itself usually decides: in front of (or on) its surface, the largest depth
     // around can only agree
     let own = surface_depth(clamp(q, vec2<i32>(0), size - 1));
@@ -121,7 +121,7 @@ fn coverage(o: LineOut) -> f32 {
         t = clamp(dot(pos.xy - o.sa, ab) / l2, 0.0, 1.0);
     }
     let c = o.sa + ab * t;
-    let cov = clamp(frame.ink[o.kind].w * 0.5 + 0.5 - length(pos.xy - c), 0.0, 1.0);
+    let cov = clamp(frame.outlines.ink[o.kind].w * 0.5 + 0.5 - length(pos.xy - c), 0.0, 1.0);
     if (cov <= 0.0) {
         return 0.0;
     }
@@ -129,13 +129,13 @@ fn coverage(o: LineOut) -> f32 {
     let z = select(
         mix(o.depths.x, o.depths.y, t),
         1.0 / mix(1.0 / o.depths.x, 1.0 / o.depths.y, t),
-        frame.info.y == 0u,
+        frame.view.orthographic == 0u,
     );
     return select(0.0, cov, visible(c, z, o.kind));
 }
 
 fn ink(kind: u32, cov: f32) -> vec4<f32> {
-    return vec4<f32>(frame.ink[kind].rgb * cov, cov);
+    return vec4<f32>(frame.outlines.ink[kind].rgb * cov, cov);
 }
 
 @fragment

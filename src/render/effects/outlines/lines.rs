@@ -3,24 +3,43 @@
 //! colour and/or into the outline coverage, with hidden lines removed against the geometry
 //! target's depth. `visibility.rs` holds the same rules on the CPU.
 
-pub mod visibility;
+use std::ops::Range;
 
 use crate::error::Result;
-use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
-use crate::render::graph::{FrameCtx, Pass};
-use crate::render::uniforms::LineInstance;
+use crate::render::graph::target::{GeometryLayout, Use};
+use crate::render::graph::{FrameCtx, Pass, Recorder};
+use crate::render::pipelines::PipelineKey;
 
-use super::edges::{ink_attachments, ink_entry, ink_targets, ink_uses};
+use super::ink::Ink;
+use super::mesh_lines::ViewSlot;
 
 pub const WGSL: &str = include_str!("lines.wgsl");
 
-#[derive(Debug, Clone, PartialEq)]
+/// One mesh-space line: its end points in the mesh's stored coordinates and its kind (the
+/// instance data of the lines pass).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct LineInstance {
+    pub a: [f32; 3],
+    pub kind: u32,
+    pub b: [f32; 3],
+    pub pad: u32,
+}
+
+/// The lines of one scene item: a range of the frame's line instances.
+#[derive(Clone, Debug)]
+pub struct LineDraw {
+    pub item: usize,
+    pub instances: Range<u32>,
+}
+
+#[derive(Debug, Clone)]
 pub struct Lines {
-    pub color: bool,
-    pub outline: bool,
-    pub clear_outline: bool,
+    pub ink: Ink,
     /// Where the depth the lines are tested against is.
     pub layout: GeometryLayout,
+    /// The view's lines, found by the `silhouettes` step before the frame is recorded.
+    pub view: ViewSlot,
 }
 
 fn instance_layout() -> wgpu::VertexBufferLayout<'static> {
@@ -39,22 +58,15 @@ impl Pass for Lines {
     }
 
     fn uses(&self) -> Vec<Use> {
-        let mut u = vec![Use(Target::Geometry, Access::Sample)];
-        u.extend(ink_uses(self.color, self.outline));
-        u
+        self.ink.uses()
     }
 
-    fn encode(
-        &self,
-        f: &FrameCtx<'_>,
-        encoder: &mut wgpu::CommandEncoder,
-        timing: Option<wgpu::RenderPassTimestampWrites<'_>>,
-    ) -> Result<()> {
+    fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layouts = &f.pipelines.layouts;
-        let variant = self.color as u64 | (self.outline as u64) << 1 | (self.layout as u64) << 2;
-        let pipeline = f.pipelines.get(("lines", variant), || {
+        let variant = self.ink.bits() | (self.layout as u64) << 2;
+        let pipeline = f.pipelines.get(PipelineKey::new("lines", variant), || {
             let device = &f.dev.device;
-            let module = f.pipelines.module(device, "lines", || crate::render::wgsl::source(WGSL));
+            let module = f.module("lines", WGSL, None);
             let layout =
                 f.pipelines.layout(device, "lines", &[&layouts.frame, &layouts.draw, &layouts.uint_texture]);
             let constants = [("DEPTH_COMPONENT", self.layout.depth_component() as f64)];
@@ -77,33 +89,26 @@ impl Pass for Lines {
                 multisample: Default::default(),
                 fragment: Some(wgpu::FragmentState {
                     module: &module,
-                    entry_point: Some(ink_entry(self.color, self.outline)),
+                    entry_point: Some(self.ink.entry()),
                     compilation_options: options,
-                    targets: &ink_targets(self.color, self.outline),
+                    targets: &self.ink.targets(),
                 }),
                 multiview_mask: None,
                 cache: None,
             })
         });
-        let geometry = f.res.bind_group("geometry", || {
-            super::texture_group(f, &layouts.uint_texture, f.res.view(Target::Geometry))
-        });
-        let attachments = ink_attachments(f, self.color, self.outline, self.clear_outline);
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("lines"),
-            color_attachments: &attachments,
-            depth_stencil_attachment: None,
-            timestamp_writes: timing,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        if let Some((buffer, _)) = &f.res.lines {
+        let geometry = f.res.geometry_group(f);
+        let view = self.view.get().expect("the silhouettes step ran before the frame was recorded");
+        let buffer = f.res.vertices(f.dev, "line instances", bytemuck::cast_slice(&view.instances));
+        let attachments = self.ink.attachments(f);
+        let mut pass = rec.begin("lines", &attachments, None);
+        if let Some(buffer) = buffer {
             pass.set_pipeline(&pipeline);
             pass.set_bind_group(0, &f.res.uniforms.frame_group, &[]);
             pass.set_bind_group(2, &geometry, &[]);
             pass.set_vertex_buffer(0, buffer.slice(..));
-            for d in f.lines.iter().filter(|d| !d.instances.is_empty()) {
-                pass.set_bind_group(1, &f.res.uniforms.draw_group, &[d.uniform_offset]);
+            for d in view.draws.iter().filter(|d| !d.instances.is_empty()) {
+                pass.set_bind_group(1, &f.res.uniforms.draw_group, &[f.res.draw_offset(d.item)]);
                 pass.draw(0..4, d.instances.clone());
             }
         }

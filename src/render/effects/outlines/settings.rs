@@ -3,11 +3,14 @@
 //! hidden lines removed, and image-space edges (Borquez and Yepez: Sobel on the normal and depth
 //! buffers, with the rule and defaults of `edges::detect`).
 
+use serde::{Deserialize, Serialize};
+
 use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
 use crate::edges::outlines::LineKind;
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
 use crate::render::color::{check_unit, Srgb};
+use crate::render::scene::field;
 
 /// Width of lines in output pixels when none is given.
 pub const DEFAULT_WIDTH: f32 = 1.5;
@@ -23,7 +26,7 @@ pub const IMAGE_KIND: usize = LineKind::COUNT;
 pub const INK_KINDS: usize = LineKind::COUNT + 1;
 
 /// How one kind of line is drawn.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct LineStyle {
     pub color: Srgb,
     /// Full width in output pixels (the same at every resolution and supersampling factor).
@@ -38,11 +41,12 @@ impl Default for LineStyle {
 }
 
 impl LineStyle {
-    pub fn validate(&self, arg: &str) -> Result<()> {
-        check_unit(&format!("{arg}.color"), &self.color)?;
+    /// Checks the style; `prefix` names it in errors ("" while it is being made).
+    pub fn validate(&self, prefix: &str) -> Result<()> {
+        check_unit(&field(prefix, "color"), &self.color)?;
         if !(self.width > 0.0 && self.width <= MAX_WIDTH) {
             return Err(Error::invalid(
-                format!("{arg}.width"),
+                field(prefix, "width"),
                 format!("must be in (0, {MAX_WIDTH}] pixels, got {}", self.width),
             ));
         }
@@ -59,7 +63,7 @@ pub fn kind_names() -> [&'static str; INK_KINDS] {
     names
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Outlines {
     /// Draw mesh-space lines.
     pub mesh: bool,
@@ -104,6 +108,9 @@ impl Outlines {
         }
     }
 
+    /// The names `Outlines(kind)` takes.
+    pub const KINDS: [&'static str; 3] = ["mesh", "image", "both"];
+
     /// `"mesh"`, `"image"` or `"both"`.
     pub fn parse_kind(arg: &str, s: &str) -> Result<(bool, bool)> {
         match s {
@@ -131,18 +138,19 @@ impl Outlines {
         self.image && self.styles[IMAGE_KIND].is_some()
     }
 
-    pub fn validate(&self, arg: &str) -> Result<()> {
+    /// Checks the settings; `prefix` names them in errors ("" while they are being made).
+    pub fn validate(&self, prefix: &str) -> Result<()> {
         if !self.mesh && !self.image {
-            return Err(Error::invalid(format!("{arg}.kind"), "must draw mesh lines, image edges or both"));
+            return Err(Error::invalid(field(prefix, "kind"), "must draw mesh lines, image edges or both"));
         }
         for (style, name) in self.styles.iter().zip(kind_names()) {
             if let Some(s) = style {
-                s.validate(&format!("{arg}.{name}"))?;
+                s.validate(&field(prefix, name))?;
             }
         }
         crate::edges::feature::check_crease_angle(self.crease_angle).map_err(|_| {
             Error::invalid(
-                format!("{arg}.crease_angle"),
+                field(prefix, "crease_angle"),
                 format!("must be in [0, 180] degrees, got {}", self.crease_angle),
             )
         })?;
@@ -151,14 +159,14 @@ impl Outlines {
         {
             if !(t.is_finite() && t >= 0.0) {
                 return Err(Error::invalid(
-                    format!("{arg}.{name}"),
+                    field(prefix, name),
                     format!("must be finite and >= 0, got {t}"),
                 ));
             }
         }
         if !(self.depth_offset.is_finite() && self.depth_offset >= 0.0) {
             return Err(Error::invalid(
-                format!("{arg}.depth_offset"),
+                field(prefix, "depth_offset"),
                 format!("must be finite and >= 0 pixels, got {}", self.depth_offset),
             ));
         }

@@ -1,0 +1,8 @@
+// `frame.outlines` (src/render/effects/outlines/mod.rs): how each kind of ink is drawn.
+struct OutlinesBlock {
+    ink: array<vec4<f32>, INK_KINDS>,  // per ink kind: linear rgb, width in pixels (0: not drawn)
+    depth_offset: f32,                 // hidden-line tolerance in pixel footprints
+    normal_threshold: f32,             // image-space rule (edges::detect)
+    depth_threshold: f32,              // the same, in normalised view units
+    _pad0: f32,
+};

@@ -1,0 +1,158 @@
+//! Ink outlines: mesh-space lines (Kang, Kim and Yoon: silhouettes per view, boundaries,
+//! creases and non-manifold edges per mesh; `lines` with its host steps in `mesh_lines` and
+//! `visibility`) and image-space edges (Borquez and Yepez: Sobel on the normal and depth
+//! buffers; `edges`), drawn over the colour and/or into the outline coverage (`ink`).
+
+pub mod edges;
+pub mod edges_reference;
+pub mod ink;
+pub mod lines;
+pub mod mesh_lines;
+pub mod settings;
+pub mod visibility;
+
+use std::sync::Arc;
+
+use crate::edges::outlines::LineKind;
+use crate::error::{Error, Result};
+use crate::render::block::{Block, BlockLayout};
+use crate::render::color::to_linear;
+use crate::render::graph::effect::{FrameEffect, FrameInputs, PlanInputs, ReadbackRequest, Steps};
+use crate::render::graph::target::{GeometryLayout, Target};
+use crate::render::scene::checked::CheckedScene;
+use crate::render::scene::Output;
+use crate::render::wgsl;
+
+use ink::Ink;
+use settings::{IMAGE_KIND, INK_KINDS};
+
+crate::uniform_block! {
+    /// `frame.outlines`: how each kind of ink is drawn and the rules of both ink passes.
+    pub struct OutlinesBlock as "OutlinesBlock" {
+        /// Per ink kind: linear rgb, and the width in output pixels (0: not drawn).
+        pub ink: [[f32; 4]; INK_KINDS],
+        /// Hidden-line tolerance in pixel footprints (`Outlines::depth_offset`).
+        pub depth_offset: f32,
+        /// The image-space rule's thresholds (`edges::detect`), the depth one in normalised units.
+        pub normal_threshold: f32,
+        pub depth_threshold: f32,
+        pub _pad0: f32,
+    }
+}
+
+pub struct OutlinesEffect;
+
+pub static EFFECT: OutlinesEffect = OutlinesEffect;
+
+/// What the scene's outlines draw: mesh-space lines, image-space edges.
+fn draws(scene: &CheckedScene) -> (bool, bool) {
+    scene.scene.outlines.as_ref().map_or((false, false), |o| (o.draws_mesh_lines(), o.draws_image_edges()))
+}
+
+impl FrameEffect for OutlinesEffect {
+    fn name(&self) -> &'static str {
+        "outlines"
+    }
+
+    fn block_wgsl(&self) -> String {
+        let mut s = wgsl::constant_u32("INK_KINDS", INK_KINDS as u32);
+        s += &wgsl::constant_u32("IMAGE_KIND", IMAGE_KIND as u32);
+        s += &wgsl::constant_u32("LINE_SILHOUETTE", LineKind::Silhouette as u32);
+        s += &wgsl::constant_u32("LINE_BOUNDARY", LineKind::Boundary as u32);
+        s += &wgsl::constant_f32("DEPTH_EPSILON", visibility::DEPTH_EPSILON);
+        s + include_str!("block.wgsl")
+    }
+
+    fn block(&self) -> BlockLayout {
+        OutlinesBlock::layout()
+    }
+
+    fn frame_block(&self, cx: &FrameInputs<'_>) -> Vec<u8> {
+        let mut b: OutlinesBlock = bytemuck::Zeroable::zeroed();
+        if let Some(o) = &cx.scene.scene.outlines {
+            for (slot, style) in b.ink.iter_mut().zip(&o.styles) {
+                if let Some(s) = style {
+                    let c = to_linear(s.color);
+                    *slot = [c[0], c[1], c[2], s.width];
+                }
+            }
+            b.depth_offset = o.depth_offset;
+            b.normal_threshold = o.normal_threshold;
+            b.depth_threshold = (o.depth_threshold as f64 / cx.cam.scale) as f32;
+        }
+        b.bytes()
+    }
+
+    fn check(&self, scene: &CheckedScene) -> Result<()> {
+        let o = scene.frame.outputs;
+        if o.has(Output::Outline) && scene.scene.outlines.is_none() {
+            return Err(Error::invalid(
+                "outputs",
+                "'outline' needs outlines (outlines='mesh', 'image' or 'both')",
+            ));
+        }
+        if o.has(Output::Lines) && !draws(scene).0 {
+            return Err(Error::invalid(
+                "outputs",
+                "'lines' needs mesh-space outlines (outlines='mesh' or 'both', with some kind of line drawn)",
+            ));
+        }
+        Ok(())
+    }
+
+    fn geometry(&self, scene: &CheckedScene) -> Option<GeometryLayout> {
+        let o = scene.frame.outputs;
+        let ink = o.has(Output::Color) || o.has(Output::Outline);
+        let (mesh, image) = draws(scene);
+        if image && ink {
+            Some(GeometryLayout::NormalDepth)
+        } else if mesh && (ink || o.has(Output::Lines)) {
+            Some(GeometryLayout::Depth)
+        } else {
+            None
+        }
+    }
+
+    fn plan(&self, cx: &PlanInputs<'_>, steps: &mut Steps) {
+        let Some(outlines) = &cx.scene.scene.outlines else { return };
+        let o = cx.scene.frame.outputs;
+        let (color, outline) = (o.has(Output::Color), o.has(Output::Outline));
+        let (mesh, image) = draws(cx.scene);
+        let ink = |steps: &mut Steps| {
+            let clear_outline = outline && !steps.outline_written;
+            steps.outline_written |= outline;
+            Ink { color, outline, clear_outline }
+        };
+        if image && (color || outline) {
+            let ink = ink(steps);
+            steps.after.push(Box::new(edges::Edges { ink }));
+        }
+        let lines = mesh && (color || outline);
+        let visible = mesh && o.has(Output::Lines);
+        if lines || visible {
+            let view = Arc::default();
+            steps.host_before.push(Box::new(mesh_lines::Silhouettes { outlines: outlines.clone(), view: Arc::clone(&view) }));
+            if lines {
+                let layout = cx.geometry.expect("mesh-space lines are tested against the frame's depth");
+                let ink = ink(steps);
+                steps.after.push(Box::new(lines::Lines { ink, layout, view: Arc::clone(&view) }));
+            }
+            if visible {
+                steps.host_depth = true;
+                steps.host_after.push(Box::new(visibility::VisibleLines { depth_offset: outlines.depth_offset, view }));
+            }
+        }
+        if outline {
+            if !steps.outline_written {
+                // outlines that draw nothing here: the coverage is empty
+                steps.after.push(Box::new(crate::render::passes::clear::Clear {
+                    name: "clear_outline",
+                    target: Target::Outline,
+                    value: wgpu::Color::TRANSPARENT,
+                }));
+                steps.outline_written = true;
+            }
+            steps.readbacks.push(ReadbackRequest { name: "readback_outline", target: Target::Outline, output: Output::Outline });
+        }
+    }
+}

@@ -1,0 +1,114 @@
+//! The two kinds of pipeline passes build: mesh draws (the camera's passes and the shadow map)
+//! and full-screen triangles (image passes), and the states they share.
+
+use crate::render::gpu_mesh::GpuMesh;
+
+use super::target::DEPTH_FORMAT;
+use super::FrameCtx;
+
+/// The depth test of every mesh draw (camera and shadow map): the nearest surface wins and is
+/// written.
+pub fn nearest_wins() -> Option<wgpu::DepthStencilState> {
+    Some(wgpu::DepthStencilState {
+        format: DEPTH_FORMAT,
+        depth_write_enabled: Some(true),
+        depth_compare: Some(wgpu::CompareFunction::Less),
+        stencil: Default::default(),
+        bias: Default::default(),
+    })
+}
+
+/// A pipeline-cache key's bits for a cull mode.
+pub fn cull_bits(cull: Option<wgpu::Face>) -> u64 {
+    match cull {
+        None => 0,
+        Some(wgpu::Face::Back) => 1,
+        Some(wgpu::Face::Front) => 2,
+    }
+}
+
+/// How a mesh pipeline draws: its fragment entry point and targets, sample count, pipeline
+/// constants, the bind groups after the frame's and the draw's, and the faces it skips.
+pub struct MeshDraw<'a> {
+    pub label: &'static str,
+    pub entry: &'a str,
+    pub targets: &'a [Option<wgpu::ColorTargetState>],
+    pub samples: u32,
+    pub constants: &'a [(&'a str, f64)],
+    pub more: &'a [&'a wgpu::BindGroupLayout],
+    pub cull: Option<wgpu::Face>,
+}
+
+/// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`) with
+/// depth testing.
+pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<'_>) -> wgpu::RenderPipeline {
+    let device = &f.dev.device;
+    let layouts = &f.pipelines.layouts;
+    let mut groups = vec![&layouts.frame, &layouts.draw];
+    groups.extend_from_slice(d.more);
+    let layout = f.pipelines.layout(device, d.label, &groups);
+    let options = wgpu::PipelineCompilationOptions { constants: d.constants, ..Default::default() };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(d.label),
+        layout: Some(&layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some("vs_main"),
+            compilation_options: options.clone(),
+            buffers: &[Some(GpuMesh::vertex_layout())],
+        },
+        // Both sides are drawn unless one cannot show: a camera inside a mesh, or an open
+        // surface, shows back faces.
+        primitive: wgpu::PrimitiveState { cull_mode: d.cull, front_face: wgpu::FrontFace::Ccw, ..Default::default() },
+        depth_stencil: nearest_wins(),
+        multisample: wgpu::MultisampleState { count: d.samples, mask: !0, alpha_to_coverage_enabled: false },
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(d.entry),
+            compilation_options: options,
+            targets: d.targets,
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+/// A pipeline that covers the output with one triangle (`vs_fullscreen` in common.wgsl).
+pub fn fullscreen_pipeline(
+    f: &FrameCtx<'_>,
+    label: &'static str,
+    module: &wgpu::ShaderModule,
+    entry: &str,
+    groups: &[&wgpu::BindGroupLayout],
+    targets: &[Option<wgpu::ColorTargetState>],
+    constants: &[(&str, f64)],
+) -> wgpu::RenderPipeline {
+    let device = &f.dev.device;
+    let layout = f.pipelines.layout(device, label, groups);
+    let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(label),
+        layout: Some(&layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some("vs_fullscreen"),
+            compilation_options: options.clone(),
+            buffers: &[],
+        },
+        primitive: Default::default(),
+        depth_stencil: None,
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState { module, entry_point: Some(entry), compilation_options: options, targets }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+/// A bind group of one texture view.
+pub fn texture_group(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, view: &wgpu::TextureView) -> wgpu::BindGroup {
+    device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout,
+        entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(view) }],
+    })
+}

@@ -1,0 +1,29 @@
+//! What a render reports besides its images.
+
+/// One visible mesh-space polyline in pixel coordinates, and its kind.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Polyline {
+    pub kind: usize,
+    pub points: Vec<[f64; 2]>,
+}
+
+#[derive(Clone, Debug, Default)]
+pub struct FrameReport {
+    /// Every step that ran, in order (host steps included).
+    pub passes: Vec<&'static str>,
+    /// Seconds per step: GPU passes from timestamps where the device has them, host steps and
+    /// `readback` (waiting for the frame and copying it out) by the wall clock, and `frame`,
+    /// the whole render's wall time.
+    pub timings: Vec<(&'static str, f64)>,
+    /// Whether the GPU passes were timed on the GPU.
+    pub gpu_timed: bool,
+    /// The camera used: row-major world -> view and view -> clip matrices, clip distances.
+    pub view: [[f64; 4]; 4],
+    pub proj: [[f64; 4]; 4],
+    pub near: f64,
+    pub far: f64,
+    /// The visible mesh-space lines, when asked for.
+    pub lines: Option<Vec<Polyline>>,
+    /// Per mesh, whether the camera's passes skipped its inner sides (`render::culling`).
+    pub culled: Vec<bool>,
+}

@@ -1,0 +1,82 @@
+//! A scene and frame checked together, once per render, with what every later step would
+//! otherwise look up again resolved: the shadow-casting light, the lights in the order the
+//! shaders see them, and which of them are point lights.
+
+use crate::error::Result;
+
+use super::camera::Camera;
+use super::light::{shadow_caster, validate_lights, Light, LightKind};
+use super::{check_transform, FrameSpec, Scene};
+use crate::render::effects::shadows::settings::Shadows;
+
+/// The light that casts shadows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Caster {
+    /// Its index in the scene's lights.
+    pub index: usize,
+    pub light: Light,
+    pub settings: Shadows,
+}
+
+/// What a device allows a frame.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DeviceLimits {
+    pub max_texture_size: u32,
+    pub msaa_samples: Vec<u32>,
+}
+
+#[derive(Clone, Debug)]
+pub struct CheckedScene {
+    pub scene: Scene,
+    pub frame: FrameSpec,
+    pub caster: Option<Caster>,
+    /// The lights in the order the shaders see them: the shadow-casting light first.
+    pub shader_lights: Vec<Light>,
+    /// Bit k set when `shader_lights[k]` is a point light.
+    pub point_lights: u32,
+}
+
+impl CheckedScene {
+    /// Checks every setting of `scene` and `frame` (each error names its place in the scene)
+    /// and resolves what the frame's steps share. Meshes are checked by their renderer.
+    pub fn check(scene: Scene, frame: FrameSpec, limits: &DeviceLimits) -> Result<Self> {
+        frame.validate(limits.max_texture_size, &limits.msaa_samples)?;
+        for (i, item) in scene.items.iter().enumerate() {
+            check_transform(&format!("meshes[{i}].transform"), &item.transform)?;
+            item.material.validate(&format!("meshes[{i}].material"))?;
+        }
+        scene.camera.validate("camera")?;
+        validate_lights(&scene.lights)?;
+        for (i, l) in scene.lights.iter().enumerate() {
+            l.validate(&format!("lights[{i}]"))?;
+        }
+        crate::render::color::check_unit("ambient", &scene.ambient)?;
+        if let Some(o) = &scene.outlines {
+            o.validate("outlines")?;
+        }
+        let caster = shadow_caster(&scene.lights).map(|(index, light, settings)| Caster { index, light: *light, settings });
+        let shader_lights: Vec<Light> = caster
+            .map(|c| c.light)
+            .into_iter()
+            .chain(scene.lights.iter().enumerate().filter(|(i, _)| Some(*i) != caster.map(|c| c.index)).map(|(_, l)| *l))
+            .collect();
+        let point_lights = shader_lights
+            .iter()
+            .enumerate()
+            .filter(|(_, l)| matches!(l.kind, LightKind::Point { .. }))
+            .fold(0, |bits, (k, _)| bits | 1 << k);
+        Ok(CheckedScene { scene, frame, caster, shader_lights, point_lights })
+    }
+
+    /// The same scene and frame seen through another camera (checked when it was made).
+    pub fn with_camera(&self, camera: Camera) -> Self {
+        let mut c = self.clone();
+        c.scene.camera = camera;
+        c
+    }
+
+    /// The shadow caster, when the scene has something to cast shadows onto.
+    pub fn casting(&self) -> Option<&Caster> {
+        self.caster.as_ref().filter(|_| !self.scene.items.is_empty())
+    }
+}

@@ -1,0 +1,157 @@
+//! Shading models: the diffuse factor f(L.n) and the highlight factor s of each, with the
+//! defaults of the paper it comes from. `reference.rs` and `shaders/common.wgsl` evaluate the
+//! same formulas; the model ids the shader switches on come from `Model::id` through the WGSL
+//! prelude (`wgsl.rs`).
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::{Error, Result};
+
+use super::field;
+
+/// Largest lookup table (one uniform array on the GPU).
+pub const MAX_LUT: usize = 256;
+/// Most band thresholds.
+pub const MAX_BANDS: usize = 8;
+
+/// Borquez and Yepez's bands: L.n thresholds and the value of each band.
+pub const PAPER_BAND_THRESHOLDS: [f32; 4] = [0.2, 0.5, 0.7, 0.9];
+pub const PAPER_BAND_VALUES: [f32; 5] = [0.0, 0.2, 0.7, 0.9, 1.0];
+/// Al-Rousan et al.'s thresholds: diffuse at L.n >= 0, a small highlight.
+pub const DEFAULT_T_H: f32 = 0.0;
+pub const DEFAULT_T_S: f32 = 0.95;
+pub const DEFAULT_SHININESS: f32 = 32.0;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Highlight {
+    /// thresh(L.v, t_s), as Al-Rousan et al. write it.
+    Paper,
+    /// thresh(n.h, t_s) with h = normalize(L + v): the usual Blinn-Phong highlight.
+    Blinn,
+}
+
+impl Highlight {
+    pub const NAMES: [&'static str; 2] = ["paper", "blinn"];
+
+    pub fn parse(arg: &str, s: &str) -> Result<Self> {
+        match s {
+            "paper" => Ok(Self::Paper),
+            "blinn" => Ok(Self::Blinn),
+            other => Err(Error::invalid(arg, format!("must be 'paper' or 'blinn', got {other:?}"))),
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        Self::NAMES[self as usize]
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "model", rename_all = "snake_case")]
+pub enum Model {
+    /// f = max(L.n, 0), s = 0.
+    Lambert,
+    /// f = max(L.n, 0), s = max(R.v, 0)^shininess where L.n > 0 (R = reflect(-L, n)).
+    Phong { shininess: f32 },
+    /// Al-Rousan et al.: f = thresh(L.n, t_h), s = thresh(L.v or n.h, t_s); thresh(a, b) = a >= b.
+    ThresholdedPhong { t_h: f32, t_s: f32, highlight: Highlight },
+    /// Borquez and Yepez: f = values[number of thresholds t with L.n >= t].
+    Bands { thresholds: Vec<f32>, values: Vec<f32> },
+    /// Kang et al.: f = table[min(floor(clamp(L.n, 0, 1) N), N - 1)], an RGB gradient map.
+    Lut { table: Vec<[f32; 3]> },
+}
+
+/// A 256-entry table with three levels, as Kang et al. map 256 intensities to 3 tones
+/// (the paper gives no numbers: these split the range in thirds).
+pub fn kang_table() -> Vec<[f32; 3]> {
+    (0..256).map(|i| [[0.3f32, 0.65, 1.0][i * 3 / 256]; 3]).collect()
+}
+
+impl Model {
+    /// Every model, in id order (the WGSL prelude names them).
+    pub const NAMES: [&'static str; 5] = ["lambert", "phong", "thresholded_phong", "bands", "lut"];
+
+    pub fn id(&self) -> u32 {
+        match self {
+            Model::Lambert => 0,
+            Model::Phong { .. } => 1,
+            Model::ThresholdedPhong { .. } => 2,
+            Model::Bands { .. } => 3,
+            Model::Lut { .. } => 4,
+        }
+    }
+
+    pub fn name(&self) -> &'static str {
+        Self::NAMES[self.id() as usize]
+    }
+
+    /// Whether the model bands the light into tones (what dithering moves between).
+    pub fn is_toon(&self) -> bool {
+        matches!(self, Model::Bands { .. } | Model::Lut { .. } | Model::ThresholdedPhong { .. })
+    }
+
+    /// Checks the model's parameters; `prefix` names the material in errors.
+    pub fn validate(&self, prefix: &str) -> Result<()> {
+        match self {
+            Model::Lambert => {}
+            Model::Phong { shininess } => {
+                if !(shininess.is_finite() && *shininess > 0.0) {
+                    return Err(Error::invalid(
+                        field(prefix, "shininess"),
+                        format!("must be finite and > 0, got {shininess}"),
+                    ));
+                }
+            }
+            Model::ThresholdedPhong { t_h, t_s, .. } => {
+                for (name, t) in [("t_h", t_h), ("t_s", t_s)] {
+                    if !(t.is_finite() && (-1.0..=1.0).contains(t)) {
+                        return Err(Error::invalid(field(prefix, name), format!("must be in [-1, 1], got {t}")));
+                    }
+                }
+            }
+            Model::Bands { thresholds, values } => {
+                if thresholds.is_empty() || thresholds.len() > MAX_BANDS {
+                    return Err(Error::invalid(
+                        field(prefix, "thresholds"),
+                        format!("needs 1 to {MAX_BANDS} thresholds, got {}", thresholds.len()),
+                    ));
+                }
+                if values.len() != thresholds.len() + 1 {
+                    return Err(Error::invalid(
+                        format!("{}, {}", field(prefix, "thresholds"), field(prefix, "values")),
+                        format!(
+                            "needs one value more than thresholds: {} thresholds and {} values",
+                            thresholds.len(),
+                            values.len()
+                        ),
+                    ));
+                }
+                if !thresholds.iter().all(|t| t.is_finite()) || thresholds.windows(2).any(|w| w[1] <= w[0]) {
+                    return Err(Error::invalid(
+                        field(prefix, "thresholds"),
+                        format!("must be finite and strictly increasing, got {thresholds:?}"),
+                    ));
+                }
+                if !values.iter().all(|v| v.is_finite() && *v >= 0.0) {
+                    return Err(Error::invalid(
+                        field(prefix, "values"),
+                        format!("must be finite and >= 0, got {values:?}"),
+                    ));
+                }
+            }
+            Model::Lut { table } => {
+                if table.is_empty() || table.len() > MAX_LUT {
+                    return Err(Error::invalid(
+                        field(prefix, "table"),
+                        format!("needs 1 to {MAX_LUT} entries, got {}", table.len()),
+                    ));
+                }
+                if !table.iter().flatten().all(|v| v.is_finite() && *v >= 0.0) {
+                    return Err(Error::invalid(field(prefix, "table"), "entries must be finite and >= 0"));
+                }
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,68 @@
+//! Everything a render takes besides its meshes, with every default in one place: the one
+//! object that `render`, `Renderer.render`, `Renderer.render_many`, the command line and batch
+//! rendering hand to the core.
+
+use serde::{Deserialize, Serialize};
+
+use crate::render::color::Srgb;
+
+use super::camera::Camera;
+use super::light::Light;
+use super::material::Material;
+use super::{FrameSpec, MeshId, Outlines, Scene, SceneItem, IDENTITY};
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct RenderOptions {
+    /// The material of meshes that name none.
+    pub material: Material,
+    /// The row-major model -> world transform of meshes that give none.
+    pub transform: [[f64; 4]; 4],
+    pub camera: Camera,
+    pub lights: Vec<Light>,
+    /// Ambient light (sRGB).
+    pub ambient: Srgb,
+    /// Ink lines, if any.
+    pub outlines: Option<Outlines>,
+    /// Size, outputs, accuracy knobs and background.
+    #[serde(flatten)]
+    pub frame: FrameSpec,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        let scene = Scene::default();
+        RenderOptions {
+            material: Material::default(),
+            transform: IDENTITY,
+            camera: scene.camera,
+            lights: scene.lights,
+            ambient: scene.ambient,
+            outlines: scene.outlines,
+            frame: FrameSpec::default(),
+        }
+    }
+}
+
+/// A mesh of a render, with its own material and transform where it has them.
+pub type MeshSpec = (MeshId, Option<Material>, Option<[[f64; 4]; 4]>);
+
+impl RenderOptions {
+    /// The scene of `meshes` with these options.
+    pub fn scene(&self, meshes: &[MeshSpec]) -> Scene {
+        Scene {
+            items: meshes
+                .iter()
+                .map(|(mesh, material, transform)| SceneItem {
+                    mesh: *mesh,
+                    material: material.clone().unwrap_or_else(|| self.material.clone()),
+                    transform: transform.unwrap_or(self.transform),
+                })
+                .collect(),
+            camera: self.camera,
+            lights: self.lights.clone(),
+            ambient: self.ambient,
+            outlines: self.outlines.clone(),
+        }
+    }
+}
