@@ -24,12 +24,22 @@ LAYERS: List[List[str]] = [
     ["error", "real", "cancel", "parallel", "huge_pages"],
     ["mesh", "mesh::*"],
     ["edges", "edges::*", "smooth", "smooth::*"],
-    ["render::color", "render::scene", "render::scene::*", "render::effects::*::settings"],
-    ["render::device", "render::gpu_mesh", "render::culling", "render::reference", "render::image_out"],
-    ["render::uniforms", "render::uniforms::*", "render::wgsl", "render::pipelines", "render::graph", "render::graph::*", "render::context"],
-    ["render::passes", "render::passes::*", "render::effects::*"],
-    ["render::effects", "render::plan"],
-    ["render::renderer", "render::mesh_lines", "render"],
+    # plain data: settings, uniform blocks, WGSL text, and the per-pixel effects (no device)
+    [
+        "render::color", "render::block", "render::wgsl", "render::scene", "render::scene::*",
+        "render::effects::surface", "render::effects::surface_effect", "render::effects::hatching",
+        "render::effects::dither", "render::effects::*::settings",
+    ],
+    # the device and the meshes on it
+    ["render::device", "render::gpu_mesh", "render::mesh_record", "render::culling", "render::reference",
+     "render::image_out"],
+    ["render::uniforms", "render::pipelines", "render::graph", "render::graph::*", "render::context"],
+    # passes, and the frame effects with theirs
+    ["render::passes", "render::passes::*", "render::effects::shadows", "render::effects::shadows::*",
+     "render::effects::outlines", "render::effects::outlines::*"],
+    # the registries that list the frame effects, and what is built from them
+    ["render::effects", "render::effects::frame", "render::plan", "render::shader"],
+    ["render::renderer", "render"],
     ["py", "py::*", "lib"],
 ]
 

@@ -55,3 +55,14 @@ impl Error {
 }
 
 pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// The name of field `name` of the argument called `prefix` in errors: `"prefix.name"`, or
+/// `"name"` alone for a setting that is being made (`prefix` empty), whose fields are its
+/// constructor's arguments. Scene checks name the place: `"meshes[0].material.shininess"`.
+pub fn field(prefix: &str, name: &str) -> String {
+    if prefix.is_empty() {
+        name.to_string()
+    } else {
+        format!("{prefix}.{name}")
+    }
+}

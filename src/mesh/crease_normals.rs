@@ -4,7 +4,7 @@
 //! The faces around each vertex v fall into *fans*: two of v's corners are in the same fan when
 //! a chain of smooth edges at v joins them. An edge (v, u) is smooth when it has exactly two
 //! face-edges, from two different faces that both have a normal (`mesh::normals`), and those
-//! normals meet at a dihedral angle no larger than the threshold (`edges::feature::CreaseTest`,
+//! normals meet at a dihedral angle no larger than the threshold (`mesh::dihedral::CreaseTest`,
 //! the rule of the crease outlines, so shading splits exactly where crease lines are drawn).
 //! Boundary, non-manifold and crease edges therefore separate fans, and so do the edges of a
 //! degenerate face, which has no angle to its neighbours: it becomes a fan of its own.
@@ -22,7 +22,7 @@ use super::buckets::{prefix_sum, sort8, split_by, vertex_chunks, Buckets, RingCo
 use super::edge_table::prefetch;
 use super::normals::{face_normals, is_defined, unit_or_zero};
 use super::union_find::{find, join};
-use crate::edges::feature::CreaseTest;
+use super::dihedral::CreaseTest;
 use crate::error::{Error, Result};
 use crate::huge_pages;
 use crate::real::{cross, sub, to_f64, Real, Vec3};

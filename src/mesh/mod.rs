@@ -6,6 +6,7 @@ pub mod adjacency;
 pub mod bounds;
 pub mod buckets;
 pub mod crease_normals;
+pub mod dihedral;
 pub mod edge_table;
 pub mod enclosure;
 pub mod input;

@@ -6,7 +6,7 @@ use crate::render::block::{Block, BlockLayout};
 use crate::render::effects::frame::{frame_members, FRAME};
 use crate::render::effects::outlines::{edges, lines};
 use crate::render::effects::shadows::{map, mask, ShadowTest};
-use crate::render::effects::surface::SURFACE;
+use crate::render::effects::surface;
 use crate::render::graph::effect::ShadeHook;
 use crate::render::passes::{downsample, geometry, shade};
 use crate::render::shader::preamble;
@@ -83,7 +83,7 @@ fn check_members(module: &naga::Module, name: &str, members: &Members) {
 fn every_uniform_block_is_laid_out_as_its_wgsl_struct() {
     let module = parse(&compose(preamble(), DEFAULT_HOOKS, ""));
     let mut blocks = vec![ViewBlock::layout(), LightingBlock::layout(), MeshBlock::layout(), MaterialBlock::layout()];
-    blocks.extend(SURFACE.iter().map(|e| e.block()));
+    blocks.extend(surface::blocks().into_iter().map(|b| b.1));
     blocks.extend(FRAME.iter().map(|e| e.block()));
     for b in &blocks {
         check_block(&module, b);

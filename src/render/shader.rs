@@ -5,7 +5,7 @@
 use std::sync::OnceLock;
 
 use super::effects::frame::{frame_members, FRAME};
-use super::effects::surface::{dispatch_wgsl, SURFACE};
+use super::effects::surface;
 use super::uniforms::{draw_members, struct_wgsl};
 use super::wgsl;
 
@@ -14,14 +14,12 @@ pub fn preamble() -> &'static str {
     static PREAMBLE: OnceLock<String> = OnceLock::new();
     PREAMBLE.get_or_init(|| {
         let mut s = wgsl::core();
-        for e in SURFACE {
-            s += &e.wgsl();
-        }
+        s += &surface::wgsl();
         for e in FRAME {
             s += &e.block_wgsl();
         }
         s += &struct_wgsl("Frame", &frame_members());
         s += &struct_wgsl("Draw", &draw_members());
-        s + &dispatch_wgsl()
+        s + &surface::dispatch_wgsl()
     })
 }

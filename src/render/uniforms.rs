@@ -10,7 +10,7 @@ use glam::{DMat3, DMat4};
 
 use super::block::{vec4, Block, BlockLayout};
 use super::color::to_linear;
-use super::effects::surface::{Surface, SURFACE};
+use super::effects::surface;
 use super::gpu_mesh::Placement;
 use super::scene::camera::ResolvedCamera;
 use super::scene::checked::CheckedScene;
@@ -191,7 +191,7 @@ pub fn struct_wgsl(name: &str, members: &Members) -> String {
 /// The members of `Draw`: the mesh's and material's blocks, then every per-pixel effect's.
 pub fn draw_members() -> Members {
     let mut m = vec![("mesh", MeshBlock::layout()), ("material", MaterialBlock::layout())];
-    m.extend(SURFACE.iter().map(|e| (e.name(), e.block())));
+    m.extend(surface::blocks());
     m
 }
 
@@ -200,9 +200,6 @@ pub fn draw_bytes(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera)
     let m = &item.material;
     let mut bytes = mesh_block(item, placement, cam).bytes();
     bytes.extend(material_block(m).bytes());
-    let s = Surface { model: &m.model, per_vertex: m.per_vertex, effects: &m.effects };
-    for e in SURFACE {
-        bytes.extend(e.block_bytes(&s));
-    }
+    bytes.extend(m.effects.block_bytes());
     bytes
 }

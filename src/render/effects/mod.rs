@@ -12,3 +12,4 @@ pub mod hatching;
 pub mod outlines;
 pub mod shadows;
 pub mod surface;
+pub mod surface_effect;

@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::effects::shadows::settings::Shadows;
 
-use super::field;
+use crate::error::field;
 
 /// Most lights one scene may have (the shader's fixed-size array).
 pub const MAX_LIGHTS: usize = 8;

@@ -10,8 +10,9 @@ use serde::{Deserialize, Serialize};
 use crate::error::Result;
 use crate::render::color::{check_unit, scaled, to_linear, Srgb};
 use crate::render::effects::surface::SurfaceSettings;
+use crate::render::effects::surface_effect::Surface;
 
-use super::field;
+use crate::error::field;
 use super::model::{Highlight, Model, DEFAULT_SHININESS, DEFAULT_T_H, DEFAULT_T_S, PAPER_BAND_THRESHOLDS, PAPER_BAND_VALUES};
 
 pub use super::model::kang_table;
@@ -151,7 +152,7 @@ impl Material {
         check_unit(&field(prefix, "diffuse"), &self.diffuse)?;
         check_unit(&field(prefix, "specular"), &self.specular)?;
         self.model.validate(prefix)?;
-        self.effects.validate(&self.model, self.per_vertex, prefix)
+        self.effects.validate(&Surface { model: &self.model, per_vertex: self.per_vertex }, prefix)
     }
 }
 

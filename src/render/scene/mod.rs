@@ -4,7 +4,7 @@
 //!
 //! Errors name what is wrong as a path: a setting's own field while it is being made
 //! (`"shininess"`), its place in the scene when a scene is checked (`"meshes[0].transform"`);
-//! `field` joins the two.
+//! `error::field` joins the two.
 
 pub mod camera;
 pub mod checked;
@@ -23,17 +23,9 @@ use camera::{Camera, Sphere};
 use light::Light;
 use material::Material;
 
-pub use crate::render::effects::outlines::settings::Outlines;
 pub use outputs::{Output, Outputs};
 
-/// The name of field `name` of the setting called `prefix` ("" while it is being made).
-pub fn field(prefix: &str, name: &str) -> String {
-    if prefix.is_empty() {
-        name.to_string()
-    } else {
-        format!("{prefix}.{name}")
-    }
-}
+use crate::render::effects::outlines::settings::Outlines;
 
 /// Image size, outputs and accuracy knobs.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 
-use super::field;
+use crate::error::field;
 
 /// Largest lookup table (one uniform array on the GPU).
 pub const MAX_LUT: usize = 256;

@@ -9,7 +9,8 @@ use crate::render::color::Srgb;
 use super::camera::Camera;
 use super::light::Light;
 use super::material::Material;
-use super::{FrameSpec, MeshId, Outlines, Scene, SceneItem, IDENTITY};
+use super::{FrameSpec, MeshId, Scene, SceneItem, IDENTITY};
+use crate::render::effects::outlines::settings::Outlines;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]

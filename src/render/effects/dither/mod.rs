@@ -7,8 +7,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 use crate::render::block::Block;
-use crate::render::effects::surface::{Hook, Surface, SurfaceEffect, Variant};
-use crate::render::scene::field;
+use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
+use crate::error::field;
 use crate::render::wgsl;
 
 /// How far (in L.n) dithering moves a pixel toward the neighbouring band, when none is given.
@@ -154,9 +154,7 @@ pub struct DitherEffect;
 pub static EFFECT: DitherEffect = DitherEffect;
 
 impl SurfaceEffect for DitherEffect {
-    fn name(&self) -> &'static str {
-        "dither"
-    }
+    type Settings = Dither;
 
     fn wgsl(&self) -> String {
         let mut s = wgsl::constant_u32("DITHER_BLUE", DitherPattern::Blue as u32);
@@ -173,8 +171,8 @@ impl SurfaceEffect for DitherEffect {
         &[Hook::Jitter]
     }
 
-    fn validate(&self, s: &Surface<'_>, prefix: &str) -> Result<()> {
-        let Some(d) = &s.effects.dither else { return Ok(()) };
+    fn validate(&self, dither: Option<&Dither>, s: &Surface<'_>, prefix: &str) -> Result<()> {
+        let Some(d) = dither else { return Ok(()) };
         if !s.model.is_toon() {
             return Err(Error::invalid(
                 "dither",
@@ -190,22 +188,20 @@ impl SurfaceEffect for DitherEffect {
         d.validate(&field(prefix, "dither"))
     }
 
-    fn block_bytes(&self, s: &Surface<'_>) -> Vec<u8> {
-        let d = s.effects.dither.as_ref();
+    fn block_bytes(&self, dither: Option<&Dither>) -> Vec<u8> {
         DitherBlock {
-            amount: d.map_or(0.0, |d| d.amount as f32),
-            cell: d.map_or(1.0, |d| d.scale as f32),
+            amount: dither.map_or(0.0, |d| d.amount as f32),
+            cell: dither.map_or(1.0, |d| d.scale as f32),
             ..bytemuck::Zeroable::zeroed()
         }
         .bytes()
     }
 
-    fn variant(&self, s: &Surface<'_>) -> Variant {
-        let d = s.effects.dither.as_ref();
-        let object = d.is_some_and(|d| d.space == DitherSpace::Object);
+    fn variant(&self, dither: Option<&Dither>) -> Variant {
+        let object = dither.is_some_and(|d| d.space == DitherSpace::Object);
         Variant {
             constants: vec![
-                ("DITHER", d.map_or(0, |d| d.pattern as u32) as f64),
+                ("DITHER", dither.map_or(0, |d| d.pattern as u32) as f64),
                 ("DITHER_OBJECT", object as u32 as f64),
             ],
             anchored: object,

@@ -7,8 +7,8 @@ use serde::{Deserialize, Serialize};
 use crate::error::{Error, Result};
 use crate::render::block::{vec4, Block};
 use crate::render::color::{check_unit, to_linear, Srgb};
-use crate::render::effects::surface::{Hook, Surface, SurfaceEffect, Variant};
-use crate::render::scene::field;
+use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
+use crate::error::field;
 use crate::render::scene::model::Model;
 use crate::render::wgsl;
 
@@ -83,9 +83,7 @@ pub struct HatchingEffect;
 pub static EFFECT: HatchingEffect = HatchingEffect;
 
 impl SurfaceEffect for HatchingEffect {
-    fn name(&self) -> &'static str {
-        "hatching"
-    }
+    type Settings = Hatching;
 
     fn wgsl(&self) -> String {
         let mut s = wgsl::constant_u32("HATCH_LAYERS", HATCH_LAYERS as u32);
@@ -101,17 +99,17 @@ impl SurfaceEffect for HatchingEffect {
         &[Hook::Finish]
     }
 
-    fn validate(&self, s: &Surface<'_>, prefix: &str) -> Result<()> {
-        let Some(h) = &s.effects.hatching else { return Ok(()) };
+    fn validate(&self, hatching: Option<&Hatching>, s: &Surface<'_>, prefix: &str) -> Result<()> {
+        let Some(h) = hatching else { return Ok(()) };
         if !matches!(s.model, Model::Bands { .. }) {
             return Err(Error::invalid(field(prefix, "hatching"), "hatches only toon bands"));
         }
         h.validate(prefix)
     }
 
-    fn block_bytes(&self, s: &Surface<'_>) -> Vec<u8> {
+    fn block_bytes(&self, hatching: Option<&Hatching>) -> Vec<u8> {
         let mut b: HatchingBlock = bytemuck::Zeroable::zeroed();
-        if let Some(h) = &s.effects.hatching {
+        if let Some(h) = hatching {
             b.ink = vec4(to_linear(h.ink));
             b.spacing = h.spacing as f32;
             b.width = h.width as f32;
@@ -119,8 +117,8 @@ impl SurfaceEffect for HatchingEffect {
         b.bytes()
     }
 
-    fn variant(&self, s: &Surface<'_>) -> Variant {
-        let on = s.effects.hatching.is_some();
+    fn variant(&self, hatching: Option<&Hatching>) -> Variant {
+        let on = hatching.is_some();
         Variant { constants: vec![("HATCHING", on as u32 as f64)], anchored: on }
     }
 }

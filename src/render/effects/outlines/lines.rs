@@ -3,35 +3,15 @@
 //! colour and/or into the outline coverage, with hidden lines removed against the geometry
 //! target's depth. `visibility.rs` holds the same rules on the CPU.
 
-use std::ops::Range;
-
 use crate::error::Result;
 use crate::render::graph::target::{GeometryLayout, Use};
 use crate::render::graph::{FrameCtx, Pass, Recorder};
 use crate::render::pipelines::PipelineKey;
 
 use super::ink::Ink;
-use super::mesh_lines::ViewSlot;
+use super::mesh_lines::{LineInstance, ViewSlot};
 
 pub const WGSL: &str = include_str!("lines.wgsl");
-
-/// One mesh-space line: its end points in the mesh's stored coordinates and its kind (the
-/// instance data of the lines pass).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
-pub struct LineInstance {
-    pub a: [f32; 3],
-    pub kind: u32,
-    pub b: [f32; 3],
-    pub pad: u32,
-}
-
-/// The lines of one scene item: a range of the frame's line instances.
-#[derive(Clone, Debug)]
-pub struct LineDraw {
-    pub item: usize,
-    pub instances: Range<u32>,
-}
 
 #[derive(Debug, Clone)]
 pub struct Lines {

@@ -5,6 +5,7 @@
 //! test.
 
 use std::collections::HashMap;
+use std::ops::Range;
 use std::sync::{Arc, Mutex, OnceLock};
 
 use glam::{DMat4, DVec3};
@@ -18,7 +19,6 @@ use crate::render::graph::report::FrameReport;
 use crate::render::mesh_record::MeshRecord;
 use crate::render::scene::camera::{direction_of, ResolvedCamera};
 
-use super::lines::{LineDraw, LineInstance};
 use super::settings::Outlines;
 
 /// A mesh's outline analysis, kept with it.
@@ -81,6 +81,24 @@ pub fn stored_view(cam: &ResolvedCamera, model: DMat4, mesh: &GpuMesh) -> View {
         let e = (to_model.transform_point3(cam.eye) - DVec3::from_array(p.origin)) / p.scale;
         View::Eye(e.to_array())
     }
+}
+
+/// One mesh-space line: its end points in the mesh's stored coordinates and its kind (the
+/// instance data of the lines pass).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct LineInstance {
+    pub a: [f32; 3],
+    pub kind: u32,
+    pub b: [f32; 3],
+    pub pad: u32,
+}
+
+/// The lines of one scene item: a range of the frame's line instances.
+#[derive(Clone, Debug)]
+pub struct LineDraw {
+    pub item: usize,
+    pub instances: Range<u32>,
 }
 
 /// The lines of one view: each scene item's outline set, as the lines pass draws it (instances

@@ -10,7 +10,7 @@ use crate::edges::outlines::LineKind;
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
 use crate::render::color::{check_unit, Srgb};
-use crate::render::scene::field;
+use crate::error::field;
 
 /// Width of lines in output pixels when none is given.
 pub const DEFAULT_WIDTH: f32 = 1.5;

@@ -4,7 +4,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-use crate::render::scene::field;
+use crate::error::field;
 
 /// The shadow map's side when none is given, in texels.
 pub const DEFAULT_SHADOW_SIZE: u32 = 2048;

@@ -1,7 +1,6 @@
 //! What a material compiles into the shading pipeline: its model, Gouraud or per-pixel
 //! shading, and each per-pixel effect's pipeline constants (`effects::surface`).
 
-use crate::render::effects::surface::{Surface, SURFACE};
 use crate::render::scene::material::Material;
 
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -15,13 +14,11 @@ pub struct ShadingVariant {
 
 impl ShadingVariant {
     pub fn of(m: &Material) -> Self {
-        let s = Surface { model: &m.model, per_vertex: m.per_vertex, effects: &m.effects };
         let mut v = ShadingVariant {
             constants: vec![("PER_VERTEX", m.per_vertex as u32 as f64), ("MODEL", m.model.id() as f64)],
             anchored: m.per_vertex,
         };
-        for e in SURFACE {
-            let part = e.variant(&s);
+        for part in m.effects.variants() {
             v.constants.extend(part.constants);
             v.anchored |= part.anchored;
         }

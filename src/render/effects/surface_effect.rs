@@ -1,0 +1,49 @@
+//! The interface of a per-pixel effect (`effects::surface` lists them): its WGSL with its
+//! block and hooks, its per-draw block, its part of a material's pipeline, and its checks.
+//! Each method gets the effect's own settings (None where the material does not use it).
+
+use crate::error::Result;
+use crate::render::block::BlockLayout;
+use crate::render::scene::model::Model;
+
+/// What a per-pixel effect sees of the rest of a material.
+pub struct Surface<'a> {
+    pub model: &'a Model,
+    pub per_vertex: bool,
+}
+
+/// Where a per-pixel effect's WGSL joins the shading of a pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Hook {
+    /// `fn <name>_jitter(f: Fragment) -> f32`: added to L.n before the model bands it.
+    Jitter,
+    /// `fn <name>_finish(f: Fragment, c: vec3<f32>) -> vec3<f32>`: the shaded linear colour,
+    /// changed.
+    Finish,
+}
+
+/// What an effect compiles into a material's shading pipeline.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Variant {
+    /// Pipeline constants (override declarations of its WGSL), the same names for every material.
+    pub constants: Vec<(&'static str, f64)>,
+    /// Whether its fragment code reads the anchors (`Fragment.object_pos`, `object_normal`).
+    pub anchored: bool,
+}
+
+pub trait SurfaceEffect: Sync {
+    /// Its settings, as a material carries them.
+    type Settings;
+    /// Its WGSL: the block struct, its pipeline constants and its hooks.
+    fn wgsl(&self) -> String;
+    /// Its per-draw uniform block.
+    fn block(&self) -> BlockLayout;
+    /// The hooks its WGSL implements.
+    fn hooks(&self) -> &'static [Hook];
+    /// Checks its settings against the rest of the material; `prefix` names the material.
+    fn validate(&self, settings: Option<&Self::Settings>, s: &Surface<'_>, prefix: &str) -> Result<()>;
+    /// Its block for a material (zeros where the material does not use it).
+    fn block_bytes(&self, settings: Option<&Self::Settings>) -> Vec<u8>;
+    /// Its part of a material's shading pipeline.
+    fn variant(&self, settings: Option<&Self::Settings>) -> Variant;
+}
