@@ -981,6 +981,14 @@ def _frame(**kw: Any) -> Dict[str, Any]:
     return dict(SMALL, outputs=("color", "normal", "depth"), outlines="mesh", msaa=1, supersample=1, **kw)
 
 
+def _options_of(o: Any) -> Dict[str, Any]:
+    """The keywords that make `o` again, read from its fields (a RenderOptions made from
+    keywords renders as those keywords do)."""
+    keys = ("material", "transform", "camera", "lights", "ambient", "background", "width", "height",
+            "outputs", "msaa", "supersample", "outlines")
+    return {k: getattr(o, k) for k in keys}
+
+
 def _rendered(make: Callable[..., Any], use: Callable[[Any], Dict[str, Any]]) -> Callable[..., Any]:
     """`make(**kw)`, and a render that uses what it made: what a constructor accepts must render.
 
@@ -1190,6 +1198,18 @@ RENDER_CASES: List[Case] = [
         RENDERER.render_many,
         dict(meshes=HANDLE, cameras=[tm.Camera.fit(), tm.Camera.fit((1.0, 0.0, 0.0))], **_frame()),
         [Param("meshes", MESHES, none=OK), Param("cameras", CAMERAS), *FRAME],
+    ),
+    Case(
+        "RenderOptions",
+        lambda **kw: RENDERER.render(HANDLE, **_options_of(tm.RenderOptions(**kw))),
+        dict(**_frame()),
+        [Param("camera", CAMERAS_ONE, none=OK), *FRAME],
+    ),
+    Case(
+        "RenderOptions.replace",
+        lambda **kw: RENDERER.render(HANDLE, **_options_of(tm.RenderOptions(width=8).replace(**kw))),
+        dict(**_frame()),
+        [Param("camera", CAMERAS_ONE, none=OK), *FRAME],
     ),
     Case(
         "Renderer.add_mesh",
@@ -1524,6 +1544,8 @@ def test_every_public_callable_is_in_the_table() -> None:
     covered = {c.name.split("(")[0] for c in CASES} | {"data.load_obj"}  # load_obj: see below
     no_arguments = {"get_num_threads", "data.bunny", "edges.FeatureEdges", "edges.EdgeDetection"}
     no_arguments |= {"kang_table", "Light.key", "MeshHandle", "RenderStack"}
+    # a TypedDict of the render keywords, for type checkers (RenderOptions takes them)
+    no_arguments |= {"RenderKeywords"}
     # Made by their static methods only (which have rows).
     no_arguments |= {"Camera", "Light", "Material"}
     # A render's result: its methods write its images out (test_render.py, test_render_outlines.py).

@@ -128,14 +128,17 @@ def test_render_float_outputs_write_npz(tmp_path, capsys, monkeypatch):
         assert z["view_matrix"].shape == (4, 4)
 
 
-def test_outlines_flag_passes_through_or_says_it_is_not_there_yet(tmp_path, capsys, monkeypatch):
+def test_outlines_flag_draws_ink(tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)
     need("trimesh")
-    r = in_process(capsys, "render", SPOT, "-o", "o.png", "--size", "32x24", "--outlines", "mesh", check=False)
-    if "outlines" in inspect.signature(tm.Renderer.render).parameters:
+    PIL = need("PIL.Image")
+    dark = {}
+    for kind in ("none", "mesh"):
+        r = in_process(capsys, "render", SPOT, "-o", f"{kind}.png", "--size", "96x72", "--outlines", kind, check=False)
         assert r.returncode == 0, r.stderr
-    else:
-        one_line_error(r, "--outlines", "not available")
+        rgb = np.asarray(PIL.open(tmp_path / f"{kind}.png"))[..., :3]
+        dark[kind] = int((rgb.max(axis=2) < 40).sum())
+    assert dark["mesh"] > dark["none"] + 50, dark
 
 
 def test_smooth_command_matches_the_api(tmp_path):

@@ -54,18 +54,26 @@ def test_near_and_far_are_checked_together():
 
 def test_the_core_refuses_bad_items_given_directly():
     r = _core.Renderer()
-    mesh = r.add_mesh(V, F)
-    frame = dict(width=4, height=4, msaa=1, supersample=1)
+    mesh, normals = r.add_mesh(V, F, "smooth")
+    assert normals == "smooth"
+    frame = tm.RenderOptions(width=4, height=4)
     with pytest.raises(TypeError, match="meshes\\[0\\].material"):
-        r.render([(mesh, {"model": "cel"}, None)], **frame)
+        r.render([(mesh, {"model": "cel"}, None)], frame)
     with pytest.raises(TypeError, match="meshes\\[0\\]"):
-        r.render([mesh], **frame)
+        r.render([mesh], frame)
     with pytest.raises(ValueError, match="mesh"):
-        r.render([(mesh + 99, None, None)], **frame)
+        r.render([(mesh + 99, None, None)], frame)
     with pytest.raises(ValueError, match="normals"):
         r.add_mesh(V, F, "wobbly")
     # the next call works
-    assert r.render([(mesh, None, None)], **frame)["color"].shape == (4, 4, 4)
+    assert r.render([(mesh, None, None)], frame)["color"].shape == (4, 4, 4)
+
+
+def test_a_misspelt_option_is_refused_naming_it_with_a_hint():
+    with pytest.raises(TypeError, match="widht: not a render option; did you mean 'width'"):
+        render(widht=3)
+    with pytest.raises(TypeError, match="colour: not a render option"):
+        tm.Renderer().render(None, colour="#ffffff")
 
 
 def test_missing_gpu_raises_gpu_unavailable_with_instructions():

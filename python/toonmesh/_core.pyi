@@ -1,10 +1,24 @@
 # Type stubs for the compiled core (checked against it with `python -m mypy.stubtest toonmesh._core`).
 from typing import Any, Dict, List, Optional, Tuple, Union, final
 
+from typing_extensions import Unpack
+
+from toonmesh._render import RenderKeywords
+
 import numpy as np
 import numpy.typing as npt
 
 __all__ = [
+    "DITHER_PATTERNS",
+    "DITHER_SPACES",
+    "HIGHLIGHTS",
+    "IMAGE_OUTPUTS",
+    "INK_KINDS",
+    "LINE_KINDS",
+    "MODELS",
+    "OUTLINE_KINDS",
+    "OUTPUTS",
+    "SHADOW_FILTERS",
     "Camera",
     "ConvergenceError",
     "Dither",
@@ -14,6 +28,7 @@ __all__ = [
     "LineStyle",
     "Material",
     "Outlines",
+    "RenderOptions",
     "Renderer",
     "Shadows",
     "_EdgeIndex",
@@ -22,13 +37,10 @@ __all__ = [
     "_feature_edges",
     "_normal_mode",
     "_paper_edges",
-    "_restore_camera",
-    "_restore_dither",
-    "_restore_light",
-    "_restore_material",
-    "_restore_outlines",
+    "_restore",
     "_segments",
     "_shadow_truth",
+    "_transform",
     "_silhouette",
     "_smooth",
     "_sobel",
@@ -41,6 +53,18 @@ __all__ = [
     "set_num_threads",
 ]
 __version__: str
+
+# The names the core accepts (src/py/settings/mod.rs)
+OUTPUTS: Tuple[str, ...]
+IMAGE_OUTPUTS: Tuple[str, ...]
+LINE_KINDS: Tuple[str, ...]
+INK_KINDS: Tuple[str, ...]
+OUTLINE_KINDS: Tuple[str, ...]
+MODELS: Tuple[str, ...]
+HIGHLIGHTS: Tuple[str, ...]
+DITHER_PATTERNS: Tuple[str, ...]
+DITHER_SPACES: Tuple[str, ...]
+SHADOW_FILTERS: Tuple[str, ...]
 
 class ConvergenceError(RuntimeError): ...
 class GpuUnavailableError(RuntimeError): ...
@@ -99,7 +123,7 @@ class Dither:
     @property
     def scale(self) -> float: ...
     def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str, float, float], None]: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 _DitherArg = Union[None, str, Dither]
 
@@ -182,7 +206,7 @@ class Material:
     @property
     def table(self) -> Optional[List[_Vec3]]: ...
     def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class Shadows:
@@ -200,7 +224,7 @@ class Shadows:
     @property
     def filter(self) -> str: ...
     def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[int, float, str]]: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class Light:
@@ -234,7 +258,7 @@ class Light:
     @property
     def shadows(self) -> Optional[Shadows]: ...
     def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class Camera:
@@ -290,7 +314,7 @@ class Camera:
     @property
     def far(self) -> Optional[float]: ...
     def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class LineStyle:
@@ -300,7 +324,7 @@ class LineStyle:
     @property
     def width(self) -> float: ...
     def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[Optional[_Vec3], Optional[float]]]: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 _Style = Any  # None, True, False, a LineStyle or a colour
 
@@ -340,13 +364,44 @@ class Outlines:
     @property
     def depth_offset(self) -> float: ...
     def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str]]: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
-def _restore_material(state: str) -> Material: ...
-def _restore_light(state: str) -> Light: ...
-def _restore_camera(state: str) -> Camera: ...
-def _restore_outlines(state: str) -> Outlines: ...
+def _restore(cls: str, state: str) -> Any: ...
 def kang_table() -> npt.NDArray[np.float64]: ...
+
+@final
+class RenderOptions:
+    """Every render setting besides the meshes (the keywords of RenderKeywords), checked,
+    with the core's defaults."""
+
+    def __new__(cls, **options: Unpack[RenderKeywords]) -> RenderOptions: ...
+    def replace(self, **options: Unpack[RenderKeywords]) -> RenderOptions: ...
+    @property
+    def material(self) -> Material: ...
+    @property
+    def transform(self) -> List[List[float]]: ...
+    @property
+    def camera(self) -> Camera: ...
+    @property
+    def lights(self) -> List[Light]: ...
+    @property
+    def ambient(self) -> _Vec3: ...
+    @property
+    def background(self) -> Tuple[float, float, float, float]: ...
+    @property
+    def width(self) -> int: ...
+    @property
+    def height(self) -> int: ...
+    @property
+    def outputs(self) -> List[str]: ...
+    @property
+    def msaa(self) -> int: ...
+    @property
+    def supersample(self) -> int: ...
+    @property
+    def outlines(self) -> Optional[Outlines]: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class Renderer:
@@ -355,45 +410,19 @@ class Renderer:
     def info(self) -> Dict[str, Any]: ...
     @property
     def mesh_count(self) -> int: ...
-    def add_mesh(self, vertices: Any, faces: Any, normals: Union[str, Tuple[str, float], None] = ...) -> int: ...
+    def add_mesh(
+        self, vertices: Any, faces: Any, normals: Union[str, Tuple[str, float]]
+    ) -> Tuple[int, Union[str, Tuple[str, float]]]: ...
     def remove_mesh(self, mesh: int) -> bool: ...
-    def render(
-        self,
-        items: Any,
-        *,
-        width: int,
-        height: int,
-        msaa: int,
-        supersample: int,
-        material: Optional[Material] = ...,
-        camera: Optional[Camera] = ...,
-        lights: Optional[Any] = ...,
-        ambient: Optional[_Color] = ...,
-        background: Optional[_Color] = ...,
-        outputs: Optional[Any] = ...,
-        outlines: Optional[Any] = ...,
-    ) -> Dict[str, Any]: ...
+    def render(self, items: Any, options: RenderOptions) -> Dict[str, Any]: ...
     def render_views(
-        self,
-        items: Any,
-        cameras: Any,
-        *,
-        width: int,
-        height: int,
-        msaa: int,
-        supersample: int,
-        material: Optional[Material] = ...,
-        lights: Optional[Any] = ...,
-        ambient: Optional[_Color] = ...,
-        background: Optional[_Color] = ...,
-        outputs: Optional[Any] = ...,
-        outlines: Optional[Any] = ...,
+        self, items: Any, cameras: Any, options: RenderOptions
     ) -> Tuple[Dict[str, Any], List[Dict[str, Any]]]: ...
 
 def gpu_info(backend: Optional[str] = ...) -> Dict[str, Any]: ...
 def encode_png_rgba(color: Any) -> bytes: ...
 def _normal_mode(normals: Any) -> Union[str, Tuple[str, float]]: ...
-def _restore_dither(pattern: str, space: str, amount: float, scale: float) -> Dither: ...
+def _transform(transform: Any) -> npt.NDArray[np.float64]: ...
 def _shadow_truth(
     vertices: Any, faces_arr: Any, view_proj: npt.NDArray[np.float64], width: int, height: int, toward_light: Any
 ) -> npt.NDArray[np.float32]: ...

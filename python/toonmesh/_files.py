@@ -12,6 +12,8 @@ from typing import Any, Dict, List, Sequence, Tuple
 
 import numpy as np
 
+from toonmesh import _core
+
 #: Suffixes written for a render: the colour image alone, or every output array.
 IMAGE_SUFFIXES = (".png", ".npz")
 
@@ -85,7 +87,7 @@ def save_result(result: Any, path: str) -> None:
     if suffix == ".png":
         result.save(path)
     elif suffix == ".npz":
-        arrays = {n: getattr(result, n) for n in ("color", "normal", "depth") if getattr(result, n) is not None}
+        arrays = {n: getattr(result, n) for n in _core.IMAGE_OUTPUTS if getattr(result, n) is not None}
         np.savez_compressed(
             path, **arrays, view_matrix=result.view_matrix, projection=result.projection,
             near=np.float64(result.near), far=np.float64(result.far),

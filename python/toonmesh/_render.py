@@ -12,13 +12,52 @@ from __future__ import annotations
 import contextlib
 import os
 import threading
-from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Any, Dict, Iterator, List, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Shadows, kang_table
+from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, RenderOptions, Shadows, kang_table
 from toonmesh._input import mesh_arrays
+
+if TYPE_CHECKING:
+    from typing_extensions import Unpack
+
+
+class RenderKeywords(TypedDict, total=False):
+    """The keywords of :class:`RenderOptions`, and so of :func:`render`,
+    :meth:`Renderer.render` and :meth:`Renderer.render_many`. Each has its default in the core;
+    a keyword given as None takes it.
+
+    - ``material``: a :class:`Material` for meshes that name none (default
+      ``Material.bands()``, Borquez and Yepez's bands);
+    - ``transform``: a 4x4 affine model -> world matrix (row-major, applied to column vectors)
+      for meshes that give none (default identity);
+    - ``camera``: a :class:`Camera` (default ``Camera.fit()``: the scene framed from the front);
+    - ``lights``: a :class:`Light` or a list of up to 8 (default ``[Light.key()]``);
+    - ``ambient``: the ambient light's sRGB colour (default white);
+    - ``background``: sRGB or sRGBA where no mesh is (default opaque white);
+    - ``width``, ``height``: the image's size in pixels, 1 to the device's limit (default 512);
+    - ``outputs``: any of "color", "normal", "depth", "outline", "lines", "shadow" (default
+      ("color",)); only those are computed and read back ("outline" and "lines" need outlines,
+      "shadow" a light with ``shadows=True``);
+    - ``msaa``: samples per pixel, 1 or 4 (default 1); ``supersample``: render 1 to 4 times
+      larger in each direction and average down (default 1);
+    - ``outlines``: None (default), "mesh", "image", "both" or an :class:`Outlines`.
+    """
+
+    material: Optional[Material]
+    transform: Optional[Any]
+    camera: Optional[Camera]
+    lights: Union[None, Light, Sequence[Light]]
+    ambient: Optional[Any]
+    background: Optional[Any]
+    width: int
+    height: int
+    outputs: Union[None, str, Sequence[str]]
+    msaa: int
+    supersample: int
+    outlines: Union[None, str, Outlines]
 
 #: A normal mode: ``"smooth"``, ``"flat"``, ``"auto"`` or ``("auto", crease angle in degrees)``.
 Normals = Union[str, Tuple[str, float]]
@@ -80,27 +119,13 @@ class Mesh:
         if material is not None and not isinstance(material, Material):
             raise TypeError(f"material: expected a toonmesh.Material, got {type(material).__name__}")
         self.material = material
-        self.transform = _matrix("transform", transform)
+        self.transform: Optional[np.ndarray] = None if transform is None else _core._transform(transform)
         self.normals: Normals = _normal_mode(normals)
 
 
 def _normal_mode(normals: Any) -> Normals:
     """``normals`` checked by the core, in its shortest spelling (``("auto", 30)`` is ``"auto"``)."""
     return _core._normal_mode(normals)  # type: ignore[no-any-return]
-
-
-def _matrix(name: str, value: Any) -> Optional[np.ndarray]:
-    """``value`` as a float64 array, refusing what is not numbers (bools, complex, strings)
-    rather than casting it; the core checks the shape and the values."""
-    if value is None:
-        return None
-    try:
-        a = np.asarray(value)
-    except Exception as exc:  # ragged lists and other non-arrays
-        raise TypeError(f"{name}: expected a 4x4 array of numbers ({exc})") from None
-    if a.dtype.kind not in "iuf":
-        raise TypeError(f"{name}: expected a 4x4 array of numbers, got {type(value).__name__} of {a.dtype}")
-    return a.astype(np.float64)
 
 
 class RenderResult:
@@ -209,7 +234,7 @@ class RenderResult:
         return None if self.color is None else self.png_bytes()
 
     def __repr__(self) -> str:
-        outs = [n for n in ("color", "normal", "depth", "outline", "shadow", "lines") if getattr(self, n) is not None]
+        outs = [n for n in _core.OUTPUTS if getattr(self, n) is not None]
         return f"RenderResult({self.width}x{self.height}, outputs={outs}, passes={self.passes}, {self.total_time * 1e3:.1f} ms, {self.backend})"
 
 
@@ -239,15 +264,6 @@ def _smoothed(vertices: np.ndarray, faces: np.ndarray, iterations: int) -> np.nd
         if str(exc).startswith("iterations:"):
             raise ValueError(f"smooth_{exc}") from None
         raise
-
-
-def _outlines_of(outlines: Any) -> Optional[Outlines]:
-    """The Outlines a render draws (for the SVG's styles); the core checks the argument."""
-    if isinstance(outlines, Outlines):
-        return outlines
-    if isinstance(outlines, str) and outlines in ("mesh", "image", "both"):
-        return Outlines(outlines)
-    return None
 
 
 class Renderer:
@@ -281,10 +297,9 @@ class Renderer:
         first (each vertex to the mean of its neighbours, n times), as in Al-Rousan et al.
         """
         iterations = _smoothing_iterations(smooth_iterations)
-        normals = _normal_mode(normals)
         V, F = mesh_arrays(vertices, faces)
         V = _smoothed(V, F, iterations)
-        mesh_id = self._engine.add_mesh(V, F, normals)
+        mesh_id, normals = self._engine.add_mesh(V, F, normals)
         return MeshHandle(self, mesh_id, len(V), len(F), normals)
 
     def remove_mesh(self, mesh: MeshHandle) -> None:
@@ -295,99 +310,39 @@ class Renderer:
             raise ValueError("mesh: belongs to another Renderer")
         self._engine.remove_mesh(mesh.id)
 
-    def render(
-        self,
-        meshes: Any = None,
-        *,
-        material: Optional[Material] = None,
-        transform: Optional[Any] = None,
-        camera: Optional[Camera] = None,
-        lights: Any = None,
-        ambient: Any = None,
-        background: Any = None,
-        width: int = 512,
-        height: int = 512,
-        outputs: Any = ("color",),
-        msaa: int = 1,
-        supersample: int = 1,
-        outlines: Any = None,
-    ) -> RenderResult:
-        """Renders ``meshes`` (a MeshHandle, a :class:`Mesh`, or a list of them; None or [] for an empty scene).
-
-        ``material``/``transform`` apply to meshes that do not set their own (default
-        :meth:`Material.bands`). ``camera`` defaults to :meth:`Camera.fit`, ``lights`` (a
-        :class:`Light` or a list of up to 8) to ``[Light.key()]``. ``ambient`` is the ambient
-        light colour (default white). ``background`` is sRGB(A) (default opaque white).
-        ``width``/``height`` in pixels (1 to the device's limit, default 512). ``outputs``: any of
-        ``"color"``, ``"normal"``, ``"depth"``, ``"outline"``, ``"lines"``, ``"shadow"`` (needs a
-        light with ``shadows=True``); only those are computed and read back. ``msaa`` (1 or 4) and ``supersample`` (1 to 4, renders
-        ``supersample`` times larger and averages) trade time for smoother edges. ``outlines``:
-        None, ``"mesh"``, ``"image"``, ``"both"`` or an :class:`Outlines` (ink lines).
+    def render(self, meshes: Any = None, **options: "Unpack[RenderKeywords]") -> RenderResult:
+        """Renders ``meshes`` (a MeshHandle, a :class:`Mesh`, or a list of them; None or [] for an
+        empty scene) with ``options``: the keywords of :class:`RenderOptions` (``width``,
+        ``height``, ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...), each
+        defaulting as that class says. Only the outputs asked for are computed and read back.
         """
-        with self._scene(meshes, transform) as specs:
-            raw = self._engine.render(
-                specs,
-                material=material,
-                camera=camera,
-                lights=lights,
-                ambient=ambient,
-                background=background,
-                width=width,
-                height=height,
-                outputs=outputs,
-                msaa=msaa,
-                supersample=supersample,
-                outlines=outlines,
-            )
-        return RenderResult(raw, self.backend, _outlines_of(outlines))
+        return self._render(meshes, RenderOptions(**options))
 
-    def render_many(
-        self,
-        meshes: Any,
-        cameras: Sequence[Camera],
-        *,
-        material: Optional[Material] = None,
-        transform: Optional[Any] = None,
-        lights: Any = None,
-        ambient: Any = None,
-        background: Any = None,
-        width: int = 512,
-        height: int = 512,
-        outputs: Any = ("color",),
-        msaa: int = 1,
-        supersample: int = 1,
-        outlines: Any = None,
-    ) -> "RenderStack":
+    def _render(self, meshes: Any, options: RenderOptions) -> RenderResult:
+        with self._scene(meshes) as specs:
+            raw = self._engine.render(specs, options)
+        return RenderResult(raw, self.backend, options.outlines)
+
+    def render_many(self, meshes: Any, cameras: Sequence[Camera], **options: "Unpack[RenderKeywords]") -> "RenderStack":
         """Renders the same scene from each of ``cameras`` (a turntable, a dataset sweep),
         keeping a few frames in flight so that the GPU draws one view while the last is read
         back. Returns a :class:`RenderStack`: the views' images stacked, (K, H, W, 4) colour and
         so on, and one :class:`RenderResult` a view (the same bits as rendering each view alone).
-        Other arguments as in :meth:`render`.
+        ``options`` as in :meth:`render` (``camera`` is not one of them here).
         """
-        with self._scene(meshes, transform) as specs:
-            images, reports = self._engine.render_views(
-                specs,
-                cameras,
-                material=material,
-                lights=lights,
-                ambient=ambient,
-                background=background,
-                width=width,
-                height=height,
-                outputs=outputs,
-                msaa=msaa,
-                supersample=supersample,
-                outlines=outlines,
-            )
-        kept = _outlines_of(outlines)
+        if "camera" in options:
+            raise TypeError("camera: render_many takes cameras=, a list of them")
+        opts = RenderOptions(**options)
+        with self._scene(meshes) as specs:
+            images, reports = self._engine.render_views(specs, cameras, opts)
         results = []
         for i, raw in enumerate(reports):
-            raw.update({k: None if images[k] is None else images[k][i] for k in ("color", "normal", "depth", "outline", "shadow")})
-            results.append(RenderResult(raw, self.backend, kept))
+            raw.update({k: None if v is None else v[i] for k, v in images.items()})
+            results.append(RenderResult(raw, self.backend, opts.outlines))
         return RenderStack(images, results)
 
     @contextlib.contextmanager
-    def _scene(self, meshes: Any, transform: Optional[Any]) -> Iterator[List[Any]]:
+    def _scene(self, meshes: Any) -> Iterator[List[Any]]:
         """The scene's items as the core takes them: meshes not yet on the device are uploaded
         for the render and removed after it."""
         items = [] if meshes is None else (list(meshes) if isinstance(meshes, (list, tuple)) else [meshes])
@@ -405,8 +360,7 @@ class Renderer:
                     uploaded.append(handle)
                 elif handle.renderer is not self:
                     raise ValueError(f"meshes[{i}]: the MeshHandle belongs to another Renderer")
-                t = item.transform if item.transform is not None else transform
-                specs.append((handle.id, item.material, t if item.transform is not None else _matrix("transform", t)))
+                specs.append((handle.id, item.material, item.transform))
             yield specs
         finally:
             for h in uploaded:
@@ -452,7 +406,10 @@ if hasattr(os, "register_at_fork"):
     os.register_at_fork(after_in_child=_forget_renderers)
 
 
-def _shared_renderer(backend: Optional[str]) -> Renderer:
+def shared_renderer(backend: Optional[str] = None) -> Renderer:
+    """This process's :class:`Renderer` for ``backend``, made on first use and kept (so that
+    :func:`render` and every batch task of a worker share one GPU context and its cached
+    pipelines); a forked child starts afresh."""
     if backend is not None and not isinstance(backend, str):  # it is a key here
         raise TypeError(f"backend: expected a string or None, got {type(backend).__name__}")
     with _renderers_lock:
@@ -466,38 +423,27 @@ def render(
     vertices: Any = None,
     faces: Any = None,
     *,
-    material: Optional[Material] = None,
-    transform: Optional[Any] = None,
     normals: Normals = "smooth",
     smooth_iterations: int = 0,
-    camera: Optional[Camera] = None,
-    lights: Any = None,
-    ambient: Any = None,
-    background: Any = None,
-    width: int = 512,
-    height: int = 512,
-    outputs: Any = ("color",),
-    msaa: int = 1,
-    supersample: int = 1,
-    outlines: Any = None,
     backend: Optional[str] = None,
+    **options: "Unpack[RenderKeywords]",
 ) -> RenderResult:
     """Renders a mesh (or several) to a toon-shaded image, headless, and returns NumPy arrays.
 
     ``vertices``: (N, 3) float32/float64 with ``faces`` (M, 3) int32/int64/uint32; or a
     ``trimesh.Trimesh``; or a :class:`Mesh` or list of them (each with its own material and
     transform); None for an empty scene. Inputs are never modified.
-    ``material`` defaults to :meth:`Material.bands` (Borquez and Yepez's bands).
     ``normals``: ``"smooth"`` (default), ``"flat"``, ``"auto"`` (split at edges sharper than 30
     degrees: hard edges for boxes and CAD parts) or ``("auto", degrees)``; see :class:`Mesh`.
-    ``smooth_iterations``: Laplacian smoothing first
-    (Al-Rousan et al.'s pipeline). ``outlines``: None, ``"mesh"``, ``"image"``, ``"both"`` or an
-    :class:`Outlines`. Other arguments as in :meth:`Renderer.render`; ``backend`` as in
-    :class:`Renderer`.
+    ``smooth_iterations``: Laplacian smoothing first (Al-Rousan et al.'s pipeline).
+    ``backend`` as in :class:`Renderer`. ``options``: the keywords of :class:`RenderOptions`
+    (``width``, ``height``, ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...),
+    each defaulting as that class says.
 
     >>> img = toonmesh.render(V, F, width=640, height=480, outlines="mesh").color   # (480, 640, 4) uint8
     """
     iterations = _smoothing_iterations(smooth_iterations)
+    opts = RenderOptions(**options)  # checked before any upload
     if isinstance(vertices, (list, tuple)) and faces is None:
         items: List[Any] = list(vertices)
     elif vertices is None:
@@ -512,21 +458,7 @@ def render(
             _with_vertices(m, _smoothed(m.vertices, m.faces, iterations)) if m.vertices is not None and m.faces is not None else m
             for m in (x if isinstance(x, Mesh) else Mesh(x) for x in items)
         ]
-    return _shared_renderer(backend).render(
-        items,
-        material=material,
-        transform=transform,
-        camera=camera,
-        lights=lights,
-        ambient=ambient,
-        background=background,
-        width=width,
-        height=height,
-        outputs=outputs,
-        msaa=msaa,
-        supersample=supersample,
-        outlines=outlines,
-    )
+    return shared_renderer(backend)._render(items, opts)
 
 
 def _with_vertices(m: Mesh, vertices: np.ndarray) -> Mesh:
@@ -544,6 +476,8 @@ def gpu_info(backend: Optional[str] = None) -> Dict[str, Any]:
 
 
 __all__ = [
+    "RenderKeywords",
+    "RenderOptions",
     "Camera",
     "Dither",
     "Light",

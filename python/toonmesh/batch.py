@@ -18,32 +18,16 @@ from __future__ import annotations
 
 import os
 import socket
-import threading
 import time
 from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
 from toonmesh._files import check_distinct_names, image_suffix, read_mesh, save_result, view_paths
-from toonmesh._render import Normals
+from toonmesh._render import Normals, RenderOptions, shared_renderer
 from toonmesh._views import check_views, turntable
 
 __all__ = ["render_file", "render_files"]
-
-_renderers: Dict[Optional[str], Any] = {}
-_renderers_lock = threading.Lock()
-
-
-def worker_renderer(backend: Optional[str] = None) -> Any:
-    """This process's :class:`toonmesh.Renderer` for ``backend``, made on first use and kept,
-    so that every task a worker runs shares one GPU context and its cached pipelines."""
-    import toonmesh as tm
-
-    with _renderers_lock:
-        r = _renderers.get(backend)
-        if r is None:
-            r = _renderers[backend] = tm.Renderer(backend)
-        return r
 
 
 def _smoothed(V: np.ndarray, F: np.ndarray, method: str, iterations: int) -> np.ndarray:
@@ -69,22 +53,23 @@ def render_views(
     are several files, unless ``camera`` is given with one file). Returns one dict per file:
     see :func:`render_files`."""
     t0 = time.perf_counter()
-    V, F = read_mesh(mesh_path)
-    if smooth_iterations and smooth_method != "paper":
-        V, smooth_iterations = _smoothed(V, F, smooth_method, smooth_iterations), 0
-    renderer = worker_renderer(backend)
-    # "paper": the renderer's own pre-smoothing, each vertex to its neighbours' mean
-    handle = renderer.add_mesh(V, F, normals=normals, smooth_iterations=smooth_iterations)
-    load_s = time.perf_counter() - t0
     if "camera" in render_options and len(files) != 1:
         raise ValueError("camera: give either a camera or several views, not both")
     cameras = [render_options.pop("camera")] if "camera" in render_options else turntable(len(files), up)
+    options = RenderOptions(**render_options)  # checked once, before the mesh is read
+    V, F = read_mesh(mesh_path)
+    if smooth_iterations and smooth_method != "paper":
+        V, smooth_iterations = _smoothed(V, F, smooth_method, smooth_iterations), 0
+    renderer = shared_renderer(backend)
+    # "paper": the renderer's own pre-smoothing, each vertex to its neighbours' mean
+    handle = renderer.add_mesh(V, F, normals=normals, smooth_iterations=smooth_iterations)
+    load_s = time.perf_counter() - t0
     worker = f"{socket.gethostname()}:{os.getpid()}"
     rows = []
     try:
         for k, (camera, path) in enumerate(zip(cameras, files)):
             t1 = time.perf_counter()
-            result = renderer.render(handle, camera=camera, **render_options)
+            result = renderer._render(handle, options.replace(camera=camera))
             t2 = time.perf_counter()
             save_result(result, path)
             rows.append({

@@ -22,19 +22,15 @@ import time
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import toonmesh as tm
+from toonmesh import _core
 from toonmesh._files import IMAGE_SUFFIXES, check_distinct_names, image_suffix, read_mesh, view_paths, write_mesh
 from toonmesh._views import UP_AXES, up_vector, view_direction
 
 __all__ = ["main"]
 
-STYLES: Dict[str, Callable[..., Any]] = {
-    "bands": tm.Material.bands,
-    "thresholded-phong": tm.Material.thresholded_phong,
-    "lut": tm.Material.lut,
-    "lambert": tm.Material.lambert,
-    "phong": tm.Material.phong,
-}
-OUTLINES = ("none", "mesh", "image", "both")
+# the shading models and outline kinds the core has
+STYLES: Dict[str, Callable[..., Any]] = {m.replace("_", "-"): getattr(tm.Material, m) for m in _core.MODELS}
+OUTLINES = ("none",) + _core.OUTLINE_KINDS
 SMOOTH_METHODS = ("laplacian", "taubin", "hc", "implicit")
 BACKENDS = ("auto", "vulkan", "gl")
 
@@ -100,9 +96,10 @@ def _normals(text: str) -> Any:
 
 def _outputs(text: str) -> List[str]:
     names = [n.strip() for n in text.split(",") if n.strip()]
-    bad = [n for n in names if n not in ("color", "normal", "depth")]
+    bad = [n for n in names if n not in _core.IMAGE_OUTPUTS]
     if bad or not names:
-        raise argparse.ArgumentTypeError(f"expected a comma-separated list of color, normal, depth, got {text!r}")
+        raise argparse.ArgumentTypeError(
+            f"expected a comma-separated list of {', '.join(_core.IMAGE_OUTPUTS)}, got {text!r}")
     return names
 
 
@@ -165,7 +162,7 @@ def cmd_render(args: argparse.Namespace) -> int:
         msaa=args.msaa, supersample=args.supersample,
     )
     if args.outlines is not None and args.outlines != "none":
-        options.update(pass_through(tm.Renderer.render, "outlines", args.outlines, "--outlines"))
+        options["outlines"] = args.outlines
     targets = _render_targets(args.meshes, args.out, args.views, args.outputs)
     t0 = time.perf_counter()
     bar = _progress(len(args.meshes) * args.views)
@@ -334,7 +331,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                    help="smooth (default), flat (facets), or auto: hard edges where faces meet at more than "
                         "30 degrees, for boxes and CAD parts (auto:DEG for another angle)")
     p.add_argument("--outputs", type=_outputs, default=["color"], metavar="LIST",
-                   help="comma-separated: color, normal, depth (anything but color alone writes .npz)")
+                   help=f"comma-separated: {', '.join(_core.IMAGE_OUTPUTS)} (anything but color alone writes .npz)")
     # ranges are the renderer's to check (it knows the device)
     p.add_argument("--msaa", type=_positive, default=1, metavar="N", help="samples per pixel (1 or 4; default 1)")
     p.add_argument("--supersample", type=_positive, default=1, metavar="N",

@@ -104,7 +104,7 @@ def _features(raw: Tuple[Any, ...], crease_angle: float) -> FeatureEdges:
 
 
 #: Kinds of outline lines, by their code in the core (``edges::outlines::LineKind``).
-_LINE_KINDS = ("silhouette", "boundary", "nonmanifold", "ridge", "valley")
+_LINE_KINDS = _core.LINE_KINDS
 
 
 def _edge_keys(edges: np.ndarray, n: int) -> np.ndarray:

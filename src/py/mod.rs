@@ -7,7 +7,7 @@ mod errors;
 mod mesh_input;
 mod render;
 mod runtime;
-mod scene;
+mod settings;
 mod shapes;
 mod smooth;
 
@@ -19,7 +19,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     runtime::register(m)?;
     shapes::register(m)?;
     smooth::register(m)?;
-    scene::register(m)?;
+    settings::register(m)?;
     render::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

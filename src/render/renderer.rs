@@ -188,8 +188,12 @@ impl Renderer {
 
     /// Renders `scene` as `frame` asks, running only the steps its plan lists, into `out`.
     pub fn render_into(&self, scene: &Scene, frame: &FrameSpec, out: OutputBuffers<'_>) -> Result<FrameReport> {
-        let checked = self.check(scene.clone(), *frame)?;
-        let f = self.submit(checked)?;
+        self.render_checked(self.check(scene.clone(), *frame)?, out)
+    }
+
+    /// Renders a scene `check` passed into `out`.
+    pub fn render_checked(&self, scene: CheckedScene, out: OutputBuffers<'_>) -> Result<FrameReport> {
+        let f = self.submit(scene)?;
         self.finish(f, out)
     }
 

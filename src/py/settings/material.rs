@@ -1,0 +1,407 @@
+//! `Material`: a shading model with its colour coefficients and per-pixel effects.
+
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+
+use super::dither::{dither_arg, repr as dither_repr, PyDither};
+use super::{settings_class, tup};
+use crate::error::{Error, Result};
+use crate::py::args::{flag_or, number, numbers, opt_number, opt_rgb, text, triple, type_name};
+use crate::py::errors::to_py;
+use crate::render::color::Srgb;
+use crate::render::effects::hatching::Hatching;
+use crate::render::effects::surface::SurfaceSettings;
+use crate::render::scene::material::{Material, DEFAULT_COLOR};
+use crate::render::scene::model::{self, Highlight, Model, MAX_LUT};
+
+type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
+
+fn f32s(v: Vec<f64>) -> Vec<f32> {
+    v.into_iter().map(|x| x as f32).collect()
+}
+
+fn color_or(name: &str, obj: Obj<'_, '_>) -> Result<Srgb> {
+    Ok(opt_rgb(name, obj)?.unwrap_or(DEFAULT_COLOR))
+}
+
+/// A lookup table: (N,) grey factors or (N, 3) RGB factors, 1 <= N <= 256.
+fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 3]>> {
+    crate::py::args::refuse_text(name, obj, "(N,) or (N, 3) numbers")?;
+    let rows: Vec<Bound<'_, PyAny>> = obj
+        .try_iter()
+        .map_err(|_| Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj))))?
+        .collect::<PyResult<_>>()
+        .map_err(|e| Error::invalid(name, e.to_string()))?;
+    if rows.is_empty() || rows.len() > MAX_LUT {
+        return Err(Error::invalid(name, format!("needs 1 to {MAX_LUT} entries, got {}", rows.len())));
+    }
+    rows.iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let arg = format!("{name}[{i}]");
+            if r.try_iter().is_ok() && !r.is_instance_of::<PyString>() {
+                Ok(triple(&arg, r)?.map(|x| x as f32))
+            } else {
+                Ok([number(&arg, r)? as f32; 3])
+            }
+        })
+        .collect()
+}
+
+/// Band thresholds and values, as given.
+fn bands_args(thresholds: Obj<'_, '_>, values: Obj<'_, '_>) -> Result<(Option<Vec<f32>>, Option<Vec<f32>>)> {
+    Ok((
+        thresholds.map(|t| numbers("thresholds", t).map(f32s)).transpose()?,
+        values.map(|v| numbers("values", v).map(f32s)).transpose()?,
+    ))
+}
+
+/// A toon material with the dithering `dither=` asks for.
+fn dithered(m: Result<Material>, dither: Obj<'_, '_>) -> PyResult<PyMaterial> {
+    (|| {
+        let m = m?;
+        let effects = SurfaceSettings { dither: dither_arg(dither)?, ..m.effects.clone() };
+        m.with_effects(effects)
+    })()
+    .map(|inner| PyMaterial { inner })
+    .map_err(to_py)
+}
+
+/// A shading model with its coefficients; build one with the static methods. Colours are sRGB:
+/// ``'#rrggbb'`` or three numbers in [0, 1].
+///
+/// Every model computes, in linear light, ``C = a_l * ambient + sum over lights of
+/// (f(L.n) * d_l * diffuse + s * S_l * specular)``, where ``a_l`` is the scene's ambient light,
+/// ``d_l = S_l`` a light's colour times its intensity, ``L`` the unit vector toward the light and
+/// ``n`` the unit normal; the models differ in ``f`` and ``s``. With ``per_vertex=True`` the
+/// vertices are shaded and the colours interpolated (Gouraud, as Al-Rousan et al. colour
+/// vertices); otherwise every pixel is shaded.
+#[pyclass(name = "Material", module = "toonmesh._core", frozen, eq)]
+#[derive(Clone, PartialEq)]
+pub struct PyMaterial {
+    pub inner: Material,
+}
+
+settings_class!(PyMaterial, Material, "Material", |m| m.validate(""));
+
+#[pymethods]
+impl PyMaterial {
+    /// Plain Lambert: f = max(L.n, 0), no highlight.
+    ///
+    /// color: base colour (default (0.95, 0.55, 0.25)); the diffuse coefficient is 90% of it and
+    /// ambient (default) 10%, in linear light. per_vertex: bool, default False.
+    #[staticmethod]
+    #[pyo3(signature = (color = None, *, ambient = None, per_vertex = None))]
+    fn lambert(color: Obj<'_, '_>, ambient: Obj<'_, '_>, per_vertex: Obj<'_, '_>) -> PyResult<Self> {
+        dithered(
+            (|| {
+                Material::lambert(
+                    color_or("color", color)?,
+                    opt_rgb("ambient", ambient)?,
+                    flag_or("per_vertex", per_vertex, false)?,
+                )
+            })(),
+            None,
+        )
+    }
+
+    /// Plain Phong: f = max(L.n, 0), s = max(R.v, 0)^shininess on lit points (R: L reflected).
+    ///
+    /// color as in :meth:`lambert`; specular: highlight colour (default (0.5, 0.5, 0.5));
+    /// shininess: exponent > 0 (default 32).
+    #[staticmethod]
+    #[pyo3(signature = (color = None, *, specular = None, shininess = None, ambient = None, per_vertex = None))]
+    fn phong(
+        color: Obj<'_, '_>,
+        specular: Obj<'_, '_>,
+        shininess: Obj<'_, '_>,
+        ambient: Obj<'_, '_>,
+        per_vertex: Obj<'_, '_>,
+    ) -> PyResult<Self> {
+        dithered(
+            (|| {
+                Material::phong(
+                    color_or("color", color)?,
+                    opt_rgb("specular", specular)?,
+                    opt_number("shininess", shininess)?.map(|x| x as f32),
+                    opt_rgb("ambient", ambient)?,
+                    flag_or("per_vertex", per_vertex, false)?,
+                )
+            })(),
+            None,
+        )
+    }
+
+    /// Al-Rousan et al.'s toon model: C = a_l a_m + thresh(L.n, t_h) d_l d_m + thresh(h, t_s) S_l S_m.
+    ///
+    /// thresh(a, b) is 1 where a >= b, else 0; t_h (default 0.0) and t_s (default 0.95) lie in
+    /// [-1, 1]. highlight: "blinn" (default, h = n . normalize(L + v)) or "paper" (h = L.v, as the
+    /// paper writes it). By default the shadow side keeps 35% of ``color`` (ambient) and the lit
+    /// side reaches it; specular defaults to (0.6, 0.6, 0.6). The paper shades vertices: pass
+    /// ``per_vertex=True`` for that.
+    #[staticmethod]
+    #[pyo3(signature = (color = None, *, t_h = None, t_s = None, highlight = None, ambient = None,
+                        specular = None, per_vertex = None, dither = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn thresholded_phong(
+        color: Obj<'_, '_>,
+        t_h: Obj<'_, '_>,
+        t_s: Obj<'_, '_>,
+        highlight: Obj<'_, '_>,
+        ambient: Obj<'_, '_>,
+        specular: Obj<'_, '_>,
+        per_vertex: Obj<'_, '_>,
+        dither: Obj<'_, '_>,
+    ) -> PyResult<Self> {
+        dithered(
+            (|| {
+                let highlight = highlight.map(|h| Highlight::parse("highlight", &text("highlight", h)?)).transpose()?;
+                Material::thresholded_phong(
+                    color_or("color", color)?,
+                    opt_number("t_h", t_h)?.map(|x| x as f32),
+                    opt_number("t_s", t_s)?.map(|x| x as f32),
+                    highlight,
+                    opt_rgb("ambient", ambient)?,
+                    opt_rgb("specular", specular)?,
+                    flag_or("per_vertex", per_vertex, false)?,
+                )
+            })(),
+            dither,
+        )
+    }
+
+    /// Borquez and Yepez's toon bands: f = values[k], k = number of thresholds t with L.n >= t.
+    ///
+    /// Defaults are the paper's: thresholds (0.2, 0.5, 0.7, 0.9) and values (0, 0.2, 0.7, 0.9,
+    /// 1), so L.n >= 0.9 -> 1.0, 0.7-0.9 -> 0.9, 0.5-0.7 -> 0.7, 0.2-0.5 -> 0.2, below -> 0,
+    /// times ``color``. 1 to 8 strictly increasing thresholds, and one value more (each >= 0).
+    /// dither (here and on the other toon models): None (default), a pattern name or a
+    /// :class:`Dither`; needs per-pixel shading.
+    #[staticmethod]
+    #[pyo3(signature = (color = None, *, thresholds = None, values = None, per_vertex = None, dither = None))]
+    fn bands(
+        color: Obj<'_, '_>,
+        thresholds: Obj<'_, '_>,
+        values: Obj<'_, '_>,
+        per_vertex: Obj<'_, '_>,
+        dither: Obj<'_, '_>,
+    ) -> PyResult<Self> {
+        dithered(
+            (|| {
+                let (t, v) = bands_args(thresholds, values)?;
+                Material::bands(color_or("color", color)?, t, v, flag_or("per_vertex", per_vertex, false)?)
+            })(),
+            dither,
+        )
+    }
+
+    /// Borquez and Yepez's cross-hatching: the bands' tone (their value times the light, as
+    /// :meth:`bands` computes it) picks how many layers of ink strokes cover the paper: none
+    /// where the tone is above 0.8, then strokes at 45 degrees, then -45 (cross-hatching), 0
+    /// and 90 degrees below 0.6, 0.4 and 0.2. The strokes are mapped on the object without UVs
+    /// (triplanar, in the mesh's own coordinates), keep about ``spacing`` pixels between them
+    /// (default 6, 2 to 256) and ``width`` pixels of width (default 1.25, up to ``spacing``) at
+    /// any distance, and give the same bits for the same scene.
+    ///
+    /// color: the paper (default white); ink: the strokes (default (0.1, 0.1, 0.1));
+    /// thresholds, values, dither and per_vertex as in :meth:`bands`.
+    #[staticmethod]
+    #[pyo3(signature = (color = None, *, ink = None, thresholds = None, values = None, spacing = None,
+                        width = None, per_vertex = None, dither = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn hatching(
+        color: Obj<'_, '_>,
+        ink: Obj<'_, '_>,
+        thresholds: Obj<'_, '_>,
+        values: Obj<'_, '_>,
+        spacing: Obj<'_, '_>,
+        width: Obj<'_, '_>,
+        per_vertex: Obj<'_, '_>,
+        dither: Obj<'_, '_>,
+    ) -> PyResult<Self> {
+        dithered(
+            (|| {
+                let d = Hatching::default();
+                let h = Hatching {
+                    ink: opt_rgb("ink", ink)?.unwrap_or(d.ink),
+                    spacing: opt_number("spacing", spacing)?.unwrap_or(d.spacing),
+                    width: opt_number("width", width)?.unwrap_or(d.width),
+                };
+                h.validate("")?;
+                let (t, v) = bands_args(thresholds, values)?;
+                let m = Material::bands(opt_rgb("color", color)?.unwrap_or([1.0; 3]), t, v, flag_or("per_vertex", per_vertex, false)?)?;
+                m.with_effects(SurfaceSettings { hatching: Some(h), ..Default::default() })
+            })(),
+            dither,
+        )
+    }
+
+    /// A lookup table (gradient map): f = table[min(floor(clamp(L.n, 0, 1) N), N - 1)].
+    ///
+    /// table: (N,) grey factors or (N, 3) RGB factors (linear, >= 0, 1 <= N <= 256) applied to
+    /// ``color``; the default is :func:`kang_table`, Kang et al.'s 256-to-3-level mapping.
+    #[staticmethod]
+    #[pyo3(signature = (table = None, color = None, *, per_vertex = None, dither = None))]
+    fn lut(table: Obj<'_, '_>, color: Obj<'_, '_>, per_vertex: Obj<'_, '_>, dither: Obj<'_, '_>) -> PyResult<Self> {
+        dithered(
+            (|| {
+                Material::lut(
+                    table.map(|t| self::table("table", t)).transpose()?,
+                    color_or("color", color)?,
+                    flag_or("per_vertex", per_vertex, false)?,
+                )
+            })(),
+            dither,
+        )
+    }
+
+    /// The shading model: "lambert", "phong", "thresholded_phong", "bands" or "lut" (a
+    /// hatching material is "bands" with :attr:`hatch_style` set).
+    #[getter]
+    fn model(&self) -> &'static str {
+        self.inner.model.name()
+    }
+
+    /// A hatching material's ink (sRGB), spacing and width in pixels as a dict; None for others.
+    #[getter]
+    fn hatch_style<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(h) = &self.inner.effects.hatching else { return Ok(None) };
+        let d = PyDict::new(py);
+        d.set_item("ink", tup(h.ink))?;
+        d.set_item("spacing", h.spacing)?;
+        d.set_item("width", h.width)?;
+        Ok(Some(d))
+    }
+
+    /// The dithering, or None.
+    #[getter]
+    fn dither(&self) -> Option<PyDither> {
+        self.inner.effects.dither.map(|inner| PyDither { inner })
+    }
+
+    /// sRGB coefficients (tuples of 3 floats).
+    #[getter]
+    fn diffuse(&self) -> (f64, f64, f64) {
+        tup(self.inner.diffuse)
+    }
+
+    #[getter]
+    fn ambient(&self) -> (f64, f64, f64) {
+        tup(self.inner.ambient)
+    }
+
+    #[getter]
+    fn specular(&self) -> (f64, f64, f64) {
+        tup(self.inner.specular)
+    }
+
+    #[getter]
+    fn per_vertex(&self) -> bool {
+        self.inner.per_vertex
+    }
+
+    /// Phong's exponent (None for other models).
+    #[getter]
+    fn shininess(&self) -> Option<f32> {
+        match self.inner.model {
+            Model::Phong { shininess } => Some(shininess),
+            _ => None,
+        }
+    }
+
+    /// The thresholded Phong model's t_h, t_s and highlight (None for other models).
+    #[getter]
+    fn t_h(&self) -> Option<f32> {
+        match self.inner.model {
+            Model::ThresholdedPhong { t_h, .. } => Some(t_h),
+            _ => None,
+        }
+    }
+
+    #[getter]
+    fn t_s(&self) -> Option<f32> {
+        match self.inner.model {
+            Model::ThresholdedPhong { t_s, .. } => Some(t_s),
+            _ => None,
+        }
+    }
+
+    #[getter]
+    fn highlight(&self) -> Option<&'static str> {
+        match self.inner.model {
+            Model::ThresholdedPhong { highlight, .. } => Some(highlight.name()),
+            _ => None,
+        }
+    }
+
+    /// The bands' thresholds and values (None for other models).
+    #[getter]
+    fn thresholds(&self) -> Option<Vec<f64>> {
+        match &self.inner.model {
+            Model::Bands { thresholds, .. } => Some(thresholds.iter().map(|&x| x as f64).collect()),
+            _ => None,
+        }
+    }
+
+    #[getter]
+    fn values(&self) -> Option<Vec<f64>> {
+        match &self.inner.model {
+            Model::Bands { values, .. } => Some(values.iter().map(|&x| x as f64).collect()),
+            _ => None,
+        }
+    }
+
+    /// The lookup table's (N, 3) rows (None for other models).
+    #[getter]
+    fn table(&self) -> Option<Vec<(f64, f64, f64)>> {
+        match &self.inner.model {
+            Model::Lut { table } => Some(table.iter().map(|c| tup(c.map(|x| x as f64))).collect()),
+            _ => None,
+        }
+    }
+
+    fn __repr__(&self) -> String {
+        let m = &self.inner;
+        let mut params = match &m.model {
+            Model::Lambert => String::new(),
+            Model::Phong { shininess } => format!(", shininess={shininess}"),
+            Model::ThresholdedPhong { t_h, t_s, highlight } => {
+                format!(", t_h={t_h}, t_s={t_s}, highlight={:?}", highlight.name())
+            }
+            Model::Bands { thresholds, values } => format!(", thresholds={thresholds:?}, values={values:?}"),
+            Model::Lut { table } => format!(", table=<{} entries>", table.len()),
+        };
+        if let Some(h) = &m.effects.hatching {
+            params += &format!(", hatching=(ink={:?}, spacing={}, width={})", h.ink, h.spacing, h.width);
+        }
+        if let Some(d) = &m.effects.dither {
+            params += &format!(", dither={}", dither_repr(d));
+        }
+        let per_vertex = if m.per_vertex { "True" } else { "False" };
+        format!(
+            "Material.{}(diffuse={:?}, ambient={:?}, specular={:?}{params}, per_vertex={per_vertex})",
+            m.model.name(),
+            m.diffuse,
+            m.ambient,
+            m.specular
+        )
+    }
+}
+
+/// kang_table() -> ndarray
+///
+/// Kang et al.'s 256-to-3-level lookup table as (256,) float64: 0.3, 0.65 and 1.0 in thirds.
+/// The paper maps 256 Phong intensities to three tones without giving numbers; these split the
+/// range in thirds.
+#[pyfunction]
+pub fn kang_table(py: Python<'_>) -> Bound<'_, numpy::PyArray1<f64>> {
+    use numpy::IntoPyArray;
+    model::kang_table().into_iter().map(|c| c[0] as f64).collect::<Vec<_>>().into_pyarray(py)
+}
+
+/// The `material=` argument (`name` in errors): a Material.
+pub fn material_arg(name: &str, obj: &Bound<'_, PyAny>) -> Result<Material> {
+    obj.cast::<PyMaterial>()
+        .map(|m| m.get().inner.clone())
+        .map_err(|_| Error::wrong_type(name, format!("expected a toonmesh.Material, got {}", type_name(obj))))
+}

@@ -1,0 +1,218 @@
+//! `Outlines` and the `LineStyle` of each kind of ink.
+
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+
+use super::{settings_class, tup};
+use crate::edges::outlines::LineKind;
+use crate::error::{Error, Result};
+use crate::py::args::{flag, flag_or, opt_number, opt_rgb, rgb, text, type_name};
+use crate::py::errors::to_py;
+use crate::render::effects::outlines::settings::{kind_names, LineStyle, Outlines, IMAGE_KIND};
+
+type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
+
+/// How one kind of ink line is drawn: ``color`` (sRGB, default black) and ``width`` in output
+/// pixels (default 1.5; the same at every resolution and supersampling factor).
+#[pyclass(name = "LineStyle", module = "toonmesh._core", frozen, eq)]
+#[derive(Clone, PartialEq)]
+pub struct PyLineStyle {
+    pub inner: LineStyle,
+}
+
+settings_class!(PyLineStyle, LineStyle, "LineStyle", |s| s.validate(""));
+
+/// The style of every kind from `color` and `width`.
+fn common(color: Obj<'_, '_>, width: Obj<'_, '_>) -> Result<LineStyle> {
+    let d = LineStyle::default();
+    Ok(LineStyle {
+        color: opt_rgb("color", color)?.unwrap_or(d.color),
+        width: opt_number("width", width)?.map_or(d.width, |w| w as f32),
+    })
+}
+
+#[pymethods]
+impl PyLineStyle {
+    #[new]
+    #[pyo3(signature = (color = None, width = None))]
+    fn new(color: Obj<'_, '_>, width: Obj<'_, '_>) -> PyResult<Self> {
+        (|| {
+            let s = common(color, width)?;
+            s.validate("")?;
+            Ok(PyLineStyle { inner: s })
+        })()
+        .map_err(to_py)
+    }
+
+    #[getter]
+    fn color(&self) -> (f64, f64, f64) {
+        tup(self.inner.color)
+    }
+
+    #[getter]
+    fn width(&self) -> f32 {
+        self.inner.width
+    }
+
+    fn __repr__(&self) -> String {
+        format!("LineStyle(color={:?}, width={})", self.inner.color, self.inner.width)
+    }
+}
+
+/// The style of one ink kind from its keyword: None or True (the common style), False (not
+/// drawn), a :class:`LineStyle`, or a colour (the common width).
+fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option<LineStyle>> {
+    if let Ok(s) = obj.cast::<PyLineStyle>() {
+        return Ok(Some(s.get().inner));
+    }
+    if let Ok(on) = flag(name, obj) {
+        return Ok(on.then_some(common));
+    }
+    rgb(name, obj).map(|color| Some(LineStyle { color, ..common })).map_err(|e| match e {
+        Error::WrongType { .. } => {
+            Error::wrong_type(name, format!("expected True, False, a LineStyle or a colour, got {}", type_name(obj)))
+        }
+        other => other,
+    })
+}
+
+/// Ink outlines for a render.
+///
+/// kind: "mesh" (lines found on the mesh: Kang, Kim and Yoon), "image" (Sobel edges of the
+/// normal and depth buffers: Borquez and Yepez) or "both" (default). color and width: the common
+/// style of every kind (default black, 1.5 output pixels). Each kind can be styled on its own
+/// with a keyword: silhouette, boundary, crease (both ridge and valley), ridge, valley,
+/// nonmanifold, image; each takes None or True (the common style), False (not drawn), a
+/// :class:`LineStyle`, or a colour. Image edges are one pixel wide whatever the width.
+///
+/// crease_angle: dihedral angle in degrees above which an edge is a crease (default 30, as in
+/// :func:`toonmesh.edges.feature_edges`). weld: merge vertices at equal positions first, so
+/// UV or normal seams are not drawn as boundaries (default True). normal_threshold (default
+/// 1.0) and depth_threshold (default 0.1, in world depth units times 4): the rule of
+/// :func:`toonmesh.edges.detect_edges`. depth_offset: hidden-line removal keeps a point of a
+/// line when its depth is at most the largest surface depth in the 3x3 pixels around it plus
+/// this many pixel footprints (the world size of one pixel at that depth; default 1.0); a
+/// silhouette or boundary with background among those pixels is on the rim and always shows.
+#[pyclass(name = "Outlines", module = "toonmesh._core", frozen, eq)]
+#[derive(Clone, PartialEq)]
+pub struct PyOutlines {
+    pub inner: Outlines,
+}
+
+settings_class!(PyOutlines, Outlines, "Outlines", |o| o.validate(""));
+
+#[pymethods]
+impl PyOutlines {
+    #[new]
+    #[pyo3(signature = (kind = None, *, color = None, width = None, silhouette = None, boundary = None,
+                        crease = None, ridge = None, valley = None, nonmanifold = None, image = None,
+                        crease_angle = None, weld = None, normal_threshold = None, depth_threshold = None,
+                        depth_offset = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        kind: Obj<'_, '_>,
+        color: Obj<'_, '_>,
+        width: Obj<'_, '_>,
+        silhouette: Obj<'_, '_>,
+        boundary: Obj<'_, '_>,
+        crease: Obj<'_, '_>,
+        ridge: Obj<'_, '_>,
+        valley: Obj<'_, '_>,
+        nonmanifold: Obj<'_, '_>,
+        image: Obj<'_, '_>,
+        crease_angle: Obj<'_, '_>,
+        weld: Obj<'_, '_>,
+        normal_threshold: Obj<'_, '_>,
+        depth_threshold: Obj<'_, '_>,
+        depth_offset: Obj<'_, '_>,
+    ) -> PyResult<Self> {
+        (|| {
+            let (mesh, img) = match kind {
+                None => (true, true),
+                Some(k) => Outlines::parse_kind("kind", &text("kind", k)?)?,
+            };
+            let mut o = Outlines::new(mesh, img);
+            let common = common(color, width)?;
+            let crease = crease.map_or(Ok(Some(common)), |c| style("crease", c, common))?;
+            let kinds = [
+                (LineKind::Silhouette as usize, "silhouette", silhouette, Some(common)),
+                (LineKind::Boundary as usize, "boundary", boundary, Some(common)),
+                (LineKind::NonManifold as usize, "nonmanifold", nonmanifold, Some(common)),
+                (LineKind::Ridge as usize, "ridge", ridge, crease),
+                (LineKind::Valley as usize, "valley", valley, crease),
+                (IMAGE_KIND, "image", image, Some(common)),
+            ];
+            for (k, name, obj, fallback) in kinds {
+                o.styles[k] = obj.map_or(Ok(fallback), |s| style(name, s, common))?;
+            }
+            o.crease_angle = opt_number("crease_angle", crease_angle)?.unwrap_or(o.crease_angle);
+            o.weld = flag_or("weld", weld, o.weld)?;
+            o.normal_threshold = opt_number("normal_threshold", normal_threshold)?.map_or(o.normal_threshold, |t| t as f32);
+            o.depth_threshold = opt_number("depth_threshold", depth_threshold)?.map_or(o.depth_threshold, |t| t as f32);
+            o.depth_offset = opt_number("depth_offset", depth_offset)?.map_or(o.depth_offset, |t| t as f32);
+            o.validate("")?;
+            Ok(PyOutlines { inner: o })
+        })()
+        .map_err(to_py)
+    }
+
+    /// "mesh", "image" or "both".
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.inner.kind_name()
+    }
+
+    /// Each ink kind's :class:`LineStyle`, or None where it is not drawn.
+    #[getter]
+    fn styles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (name, s) in kind_names().iter().zip(&self.inner.styles) {
+            d.set_item(name, s.map(|inner| PyLineStyle { inner }))?;
+        }
+        Ok(d)
+    }
+
+    #[getter]
+    fn crease_angle(&self) -> f64 {
+        self.inner.crease_angle
+    }
+
+    #[getter]
+    fn weld(&self) -> bool {
+        self.inner.weld
+    }
+
+    #[getter]
+    fn normal_threshold(&self) -> f32 {
+        self.inner.normal_threshold
+    }
+
+    #[getter]
+    fn depth_threshold(&self) -> f32 {
+        self.inner.depth_threshold
+    }
+
+    #[getter]
+    fn depth_offset(&self) -> f32 {
+        self.inner.depth_offset
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Outlines({:?}, crease_angle={}, ...)", self.inner.kind_name(), self.inner.crease_angle)
+    }
+}
+
+/// The `outlines=` argument: None, "mesh", "image", "both" or an Outlines.
+pub fn outlines_arg(obj: &Bound<'_, PyAny>) -> Result<Outlines> {
+    if let Ok(o) = obj.cast::<PyOutlines>() {
+        return Ok(o.get().inner.clone());
+    }
+    if obj.is_instance_of::<PyString>() {
+        let (mesh, image) = Outlines::parse_kind("outlines", &text("outlines", obj)?)?;
+        return Ok(Outlines::new(mesh, image));
+    }
+    Err(Error::wrong_type(
+        "outlines",
+        format!("expected None, 'mesh', 'image', 'both' or a toonmesh.Outlines, got {}", type_name(obj)),
+    ))
+}
