@@ -66,3 +66,22 @@ pub fn field(prefix: &str, name: &str) -> String {
         format!("{prefix}.{name}")
     }
 }
+
+/// The name among `names` closest to a misspelt `name` (within two edits), for a hint.
+pub fn closest<'a>(name: &str, names: &[&'a str]) -> Option<&'a str> {
+    let distance = |a: &str| {
+        let b: Vec<char> = name.chars().collect();
+        let mut row: Vec<usize> = (0..=b.len()).collect();
+        for (i, ca) in a.chars().enumerate() {
+            let mut diagonal = row[0];
+            row[0] = i + 1;
+            for (j, &cb) in b.iter().enumerate() {
+                let above = row[j + 1];
+                row[j + 1] = (diagonal + (ca != cb) as usize).min(row[j] + 1).min(above + 1);
+                diagonal = above;
+            }
+        }
+        row[b.len()]
+    };
+    names.iter().map(|&n| (distance(n), n)).filter(|(d, _)| *d <= 2).min().map(|(_, n)| n)
+}

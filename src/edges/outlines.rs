@@ -3,7 +3,11 @@
 //! found once per mesh; each view adds its silhouettes. Every edge appears once, with one kind:
 //! a silhouette first, then what it is on the mesh.
 
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
+
 use super::feature::FeatureEdges;
+use crate::error::Result;
 
 /// Kinds of mesh-space lines, in priority order (an edge that is several is drawn as the first).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -72,6 +76,24 @@ impl Outline {
         let sil =
             Outline { edges: silhouettes.to_vec(), kinds: vec![LineKind::Silhouette; silhouettes.len()] };
         merge(&sil, self)
+    }
+}
+
+/// A mesh's view-independent lines per crease angle, found once each and kept, so that each
+/// view of the mesh only finds its silhouettes.
+#[derive(Debug, Default)]
+pub struct Statics(Mutex<HashMap<u64, Arc<Outline>>>);
+
+impl Statics {
+    /// The lines at `crease_angle`, from `find` (the mesh's feature edges) the first time.
+    pub fn at(&self, crease_angle: f64, find: impl FnOnce() -> Result<FeatureEdges>) -> Result<Arc<Outline>> {
+        let key = crease_angle.to_bits();
+        if let Some(s) = self.0.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+            return Ok(s.clone());
+        }
+        let s = Arc::new(Outline::statics(&find()?));
+        self.0.lock().unwrap_or_else(|e| e.into_inner()).insert(key, s.clone());
+        Ok(s)
     }
 }
 

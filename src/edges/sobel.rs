@@ -29,6 +29,16 @@ pub enum Convention {
     OpenCv,
 }
 
+impl Convention {
+    pub fn parse(name: &str) -> Result<Self> {
+        match name {
+            "skimage" => Ok(Convention::Skimage),
+            "opencv" => Ok(Convention::OpenCv),
+            _ => Err(Error::invalid("convention", format!("must be 'skimage' or 'opencv', got {name:?}"))),
+        }
+    }
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Output {
     /// Gradient magnitude.
@@ -37,6 +47,18 @@ pub enum Output {
     AlongRows,
     /// Derivative along axis 1 (`sobel_v`).
     AlongColumns,
+}
+
+impl Output {
+    /// "magnitude", "h" (`sobel_h`) or "v" (`sobel_v`).
+    pub fn parse(name: &str) -> Result<Self> {
+        match name {
+            "magnitude" => Ok(Output::Magnitude),
+            "h" => Ok(Output::AlongRows),
+            "v" => Ok(Output::AlongColumns),
+            _ => Err(Error::invalid("output", format!("unknown output {name:?}"))),
+        }
+    }
 }
 
 impl Convention {

@@ -19,10 +19,10 @@
 use rayon::prelude::*;
 
 use super::buckets::{prefix_sum, sort8, split_by, vertex_chunks, Buckets, RingCorner};
+use super::dihedral::CreaseTest;
 use super::edge_table::prefetch;
 use super::normals::{face_normals, is_defined, unit_or_zero};
 use super::union_find::{find, join};
-use super::dihedral::CreaseTest;
 use crate::error::{Error, Result};
 use crate::huge_pages;
 use crate::real::{cross, sub, to_f64, Real, Vec3};

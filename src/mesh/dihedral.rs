@@ -65,4 +65,3 @@ pub fn dihedral(n1: [f64; 3], n2: [f64; 3], along: [f64; 3]) -> (f64, bool) {
     let convex = c[0] * along[0] + c[1] * along[1] + c[2] * along[2] >= 0.0;
     (sin.atan2(cos).to_degrees(), convex)
 }
-

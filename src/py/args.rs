@@ -10,6 +10,9 @@ use pyo3::types::{PyBool, PyByteArray, PyBytes, PyFloat, PyInt, PyString};
 use crate::error::{Error, Result};
 use crate::render::color;
 
+/// An optional argument: absent or None is `None`.
+pub type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
+
 pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
     obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "an unknown type".into())
 }

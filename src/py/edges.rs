@@ -16,7 +16,7 @@ use super::runtime::detached;
 use crate::edges::chains::chain_edges;
 use crate::edges::detect::{paper_gradient, threshold_mask};
 use crate::edges::feature::FeatureEdges;
-use crate::edges::outlines::Outline;
+use crate::edges::outlines::Statics;
 use crate::edges::sobel::{sobel, Convention, Output};
 use crate::edges::{find_feature_edges, EdgeIndex, View};
 use crate::error::{Error, Result};
@@ -109,8 +109,7 @@ fn _silhouette<'py>(
 #[pyclass(frozen, name = "_EdgeIndex", module = "toonmesh._core")]
 struct PyEdgeIndex {
     inner: EdgeIndex,
-    /// The view-independent outline lines at the last crease angle asked for.
-    statics: std::sync::Mutex<Option<(u64, std::sync::Arc<Outline>)>>,
+    statics: Statics,
 }
 
 #[pymethods]
@@ -156,18 +155,11 @@ impl PyEdgeIndex {
         let crease_angle = crease_angle_of(crease_angle).map_err(to_py)?;
         let view = view_of(eye, direction).map_err(to_py)?;
         let with_kinds = args::flag("kinds", kinds).map_err(to_py)?;
-        let key = crease_angle.to_bits();
-        let cached =
-            self.statics.lock().unwrap_or_else(|e| e.into_inner()).clone().filter(|(k, _)| *k == key);
-        let inner = &self.inner;
-        let (all, statics) = detached(py, || {
-            let statics = match cached {
-                Some((_, s)) => s,
-                None => std::sync::Arc::new(Outline::statics(&inner.feature_edges(crease_angle)?)),
-            };
-            Ok((statics.with_silhouettes(&inner.silhouette(view)?), statics))
+        let (inner, statics) = (&self.inner, &self.statics);
+        let all = detached(py, || {
+            let s = statics.at(crease_angle, || inner.feature_edges(crease_angle))?;
+            Ok(s.with_silhouettes(&inner.silhouette(view)?))
         })?;
-        *self.statics.lock().unwrap_or_else(|e| e.into_inner()) = Some((key, statics));
         let kinds = with_kinds.then(|| vec_to_numpy(py, all.kinds.iter().map(|&k| k as i8).collect()));
         Ok((pairs_to_numpy(py, all.edges), kinds))
     }
@@ -280,23 +272,6 @@ fn _segments<'py>(
     })
 }
 
-fn parse_output(name: &str) -> Result<Output> {
-    match name {
-        "magnitude" => Ok(Output::Magnitude),
-        "h" => Ok(Output::AlongRows),
-        "v" => Ok(Output::AlongColumns),
-        _ => Err(Error::invalid("output", format!("unknown output {name:?}"))),
-    }
-}
-
-fn parse_convention(name: &str) -> Result<Convention> {
-    match name {
-        "skimage" => Ok(Convention::Skimage),
-        "opencv" => Ok(Convention::OpenCv),
-        _ => Err(Error::invalid("convention", format!("must be 'skimage' or 'opencv', got {name:?}"))),
-    }
-}
-
 fn sobel_typed<'py, T: Real + numpy::Element>(
     py: Python<'py>,
     image: PyReadonlyArray2<'py, T>,
@@ -332,9 +307,9 @@ fn _sobel<'py>(
     output: &str,
     convention: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let output = parse_output(output).map_err(to_py)?;
+    let output = Output::parse(output).map_err(to_py)?;
     let convention =
-        args::text("convention", convention).and_then(|c| parse_convention(&c)).map_err(to_py)?;
+        args::text("convention", convention).and_then(|c| Convention::parse(&c)).map_err(to_py)?;
     let image = &native_order(image).map_err(to_py)?;
     if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f32>>() {
         Ok(sobel_typed(py, x, output, convention)?.into_any())

@@ -3,7 +3,10 @@
 //! PNG encoding. Every argument is converted with a check that names it.
 
 use numpy::ndarray::{Array2, IxDyn};
-use numpy::{IntoPyArray, PyArray2, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods};
+use numpy::{
+    IntoPyArray, PyArray2, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3,
+    PyUntypedArrayMethods,
+};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 
@@ -43,7 +46,10 @@ fn info_dict<'py>(py: Python<'py>, info: &GpuInfo) -> PyResult<Bound<'py, PyDict
 }
 
 fn matrix(py: Python<'_>, m: [[f64; 4]; 4]) -> Bound<'_, PyAny> {
-    Array2::from_shape_vec((4, 4), m.iter().flatten().copied().collect()).expect("16 values").into_pyarray(py).into_any()
+    Array2::from_shape_vec((4, 4), m.iter().flatten().copied().collect())
+        .expect("16 values")
+        .into_pyarray(py)
+        .into_any()
 }
 
 /// `normals`: "smooth", "flat", "auto" (split at `DEFAULT_CREASE_ANGLE`) or ("auto", crease
@@ -55,7 +61,10 @@ fn normal_mode(obj: &Bound<'_, PyAny>) -> Result<NormalMode> {
     if let Ok(pair) = obj.cast::<PyTuple>() {
         if let (2, Ok(name)) = (pair.len(), pair.get_item(0).and_then(|n| n.extract::<String>())) {
             if name != "auto" {
-                return Err(Error::invalid("normals", format!("only 'auto' takes a crease angle, got ({name:?}, ...)")));
+                return Err(Error::invalid(
+                    "normals",
+                    format!("only 'auto' takes a crease angle, got ({name:?}, ...)"),
+                ));
             }
             let angle = pair.get_item(1).map_err(|e| Error::invalid("normals", e.to_string()))?;
             return NormalMode::auto("normals", number("normals", &angle)?);
@@ -63,7 +72,10 @@ fn normal_mode(obj: &Bound<'_, PyAny>) -> Result<NormalMode> {
     }
     Err(Error::wrong_type(
         "normals",
-        format!("expected 'smooth', 'flat', 'auto' or ('auto', crease angle in degrees), got {}", type_name(obj)),
+        format!(
+            "expected 'smooth', 'flat', 'auto' or ('auto', crease angle in degrees), got {}",
+            type_name(obj)
+        ),
     ))
 }
 
@@ -98,8 +110,9 @@ fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
         .map(|(i, item)| {
             let arg = format!("meshes[{i}]");
             let item = item.map_err(|e| Error::invalid(&arg, e.to_string()))?;
-            let (id, mat, tf): (u64, Bound<'_, PyAny>, Bound<'_, PyAny>) =
-                item.extract().map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform)"))?;
+            let (id, mat, tf): (u64, Bound<'_, PyAny>, Bound<'_, PyAny>) = item
+                .extract()
+                .map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform)"))?;
             let material = match mat.cast::<PyMaterial>() {
                 Ok(m) => Some(m.get().inner.clone()),
                 Err(_) if mat.is_none() => None,
@@ -108,7 +121,8 @@ fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
                     return Err(Error::wrong_type(format!("{arg}.material"), why));
                 }
             };
-            let transform = (!tf.is_none()).then(|| transform(&format!("{arg}.transform"), &tf)).transpose()?;
+            let transform =
+                (!tf.is_none()).then(|| transform(&format!("{arg}.transform"), &tf)).transpose()?;
             Ok((id, material, transform))
         })
         .collect()
@@ -154,10 +168,16 @@ impl<'py> Images<'py> {
             // SAFETY: the arrays were just made here, are C-contiguous and shared with no one.
             let views: Vec<ImageMut<'_>> = unsafe {
                 match array.cast::<PyArrayDyn<u8>>() {
-                    Ok(a) => split(a.as_slice_mut().expect("contiguous"), k).into_iter().map(ImageMut::Bytes).collect(),
+                    Ok(a) => split(a.as_slice_mut().expect("contiguous"), k)
+                        .into_iter()
+                        .map(ImageMut::Bytes)
+                        .collect(),
                     Err(_) => {
                         let a = array.cast::<PyArrayDyn<f32>>().expect("f32 or u8");
-                        split(a.as_slice_mut().expect("contiguous"), k).into_iter().map(ImageMut::Floats).collect()
+                        split(a.as_slice_mut().expect("contiguous"), k)
+                            .into_iter()
+                            .map(ImageMut::Floats)
+                            .collect()
                     }
                 }
             };
@@ -183,7 +203,12 @@ fn split<T>(s: &mut [T], k: usize) -> Vec<&mut [T]> {
 }
 
 /// A render's report as the dict `toonmesh.RenderResult` reads (its images added to `d`).
-fn report_dict<'py>(py: Python<'py>, d: Bound<'py, PyDict>, frame: &FrameSpec, report: FrameReport) -> PyResult<Bound<'py, PyDict>> {
+fn report_dict<'py>(
+    py: Python<'py>,
+    d: Bound<'py, PyDict>,
+    frame: &FrameSpec,
+    report: FrameReport,
+) -> PyResult<Bound<'py, PyDict>> {
     d.set_item("width", frame.width)?;
     d.set_item("height", frame.height)?;
     let (lines, kinds) = match report.lines {
@@ -271,7 +296,12 @@ impl PyRenderer {
     }
 
     /// items: [(mesh id, Material or None, 4x4 transform or None)].
-    fn render<'py>(&self, py: Python<'py>, items: &Bound<'py, PyAny>, options: &PyRenderOptions) -> PyResult<Bound<'py, PyDict>> {
+    fn render<'py>(
+        &self,
+        py: Python<'py>,
+        items: &Bound<'py, PyAny>,
+        options: &PyRenderOptions,
+    ) -> PyResult<Bound<'py, PyDict>> {
         let o = &options.inner;
         let scene = o.scene(&mesh_specs(items).map_err(to_py)?);
         let checked = self.inner.check(scene, o.frame).map_err(to_py)?;
@@ -292,7 +322,9 @@ impl PyRenderer {
     ) -> PyResult<(Bound<'py, PyDict>, Vec<Bound<'py, PyDict>>)> {
         let o = &options.inner;
         let (cams, scene) = (|| {
-            let cams = each(cameras, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", |c| camera_arg("", c).ok())?;
+            let cams = each(cameras, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", |c| {
+                camera_arg("", c).ok()
+            })?;
             let scene = o.scene(&mesh_specs(items)?);
             Ok((cams, self.inner.check(scene, o.frame)?))
         })()
@@ -323,8 +355,9 @@ fn gpu_info<'py>(py: Python<'py>, backend: Option<&Bound<'py, PyAny>>) -> PyResu
 /// encode_png(color: uint8 (H, W, 4)) -> bytes
 #[pyfunction]
 fn encode_png_rgba<'py>(py: Python<'py>, color: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyBytes>> {
-    let a: PyReadonlyArray3<'py, u8> =
-        color.extract().map_err(|_| to_py(Error::wrong_type("color", "expected a uint8 array of shape (H, W, 4)")))?;
+    let a: PyReadonlyArray3<'py, u8> = color
+        .extract()
+        .map_err(|_| to_py(Error::wrong_type("color", "expected a uint8 array of shape (H, W, 4)")))?;
     let shape = a.shape().to_vec();
     if shape[2] != 4 {
         return Err(to_py(Error::invalid("color", format!("expected shape (H, W, 4), got {shape:?}"))));
@@ -351,10 +384,14 @@ fn _shadow_truth<'py>(
 ) -> PyResult<Bound<'py, PyArray2<f32>>> {
     use crate::render::effects::shadows::raycast::{shadow_truth, Triangles};
     use glam::{DMat4, DVec3};
-    let toward = DVec3::from_array(super::args::triple("toward_light", toward_light).map_err(to_py)?).normalize();
+    let toward =
+        DVec3::from_array(super::args::triple("toward_light", toward_light).map_err(to_py)?).normalize();
     let m = view_proj.as_array();
     if m.shape() != [4, 4] {
-        return Err(to_py(Error::invalid("view_proj", format!("expected shape (4, 4), got {:?}", m.shape()))));
+        return Err(to_py(Error::invalid(
+            "view_proj",
+            format!("expected shape (4, 4), got {:?}", m.shape()),
+        )));
     }
     let rows: Vec<f64> = m.iter().copied().collect();
     let vp = DMat4::from_cols_slice(&rows).transpose();

@@ -272,9 +272,8 @@ fn image_edges_match_the_cpu_rule_on_the_same_buffers_on_both_backends() {
         };
         let out = r.render(&scene, &frame).unwrap();
         let (normal, depth) = (out.floats(Output::Normal).unwrap(), out.floats(Output::Depth).unwrap());
-        let want =
-            edge_mask(normal, depth, 151, 199, (outlines.normal_threshold, outlines.depth_threshold))
-                .unwrap();
+        let want = edge_mask(normal, depth, 151, 199, (outlines.normal_threshold, outlines.depth_threshold))
+            .unwrap();
         let got: Vec<bool> = out.floats(Output::Outline).unwrap().iter().map(|&c| c > 0.5).collect();
         let agree = got.iter().zip(&want).filter(|(a, b)| a == b).count() as f64 / got.len() as f64;
         let edges = want.iter().filter(|&&e| e).count();

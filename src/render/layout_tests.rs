@@ -10,7 +10,7 @@ use crate::render::effects::surface;
 use crate::render::graph::effect::ShadeHook;
 use crate::render::passes::{downsample, geometry, shade};
 use crate::render::shader::preamble;
-use crate::render::uniforms::{draw_members, LightingBlock, MaterialBlock, MeshBlock, Members, ViewBlock};
+use crate::render::uniforms::{draw_members, LightingBlock, MaterialBlock, Members, MeshBlock, ViewBlock};
 use crate::render::wgsl::{compose, DEFAULT_HOOKS};
 
 fn parse(src: &str) -> naga::Module {
@@ -21,10 +21,11 @@ fn parse(src: &str) -> naga::Module {
 fn modules() -> Vec<String> {
     let shadowed = ShadowTest { filter: crate::render::effects::shadows::settings::ShadowFilter::Pcf };
     let p = preamble();
-    let mut all: Vec<String> = [shade::WGSL, geometry::WGSL, downsample::WGSL, edges::WGSL, lines::WGSL, map::WGSL]
-        .iter()
-        .map(|w| compose(p, DEFAULT_HOOKS, w))
-        .collect();
+    let mut all: Vec<String> =
+        [shade::WGSL, geometry::WGSL, downsample::WGSL, edges::WGSL, lines::WGSL, map::WGSL]
+            .iter()
+            .map(|w| compose(p, DEFAULT_HOOKS, w))
+            .collect();
     all.extend([shade::WGSL, mask::WGSL].iter().map(|w| compose(p, shadowed.wgsl(), w)));
     all
 }
@@ -82,7 +83,8 @@ fn check_members(module: &naga::Module, name: &str, members: &Members) {
 #[test]
 fn every_uniform_block_is_laid_out_as_its_wgsl_struct() {
     let module = parse(&compose(preamble(), DEFAULT_HOOKS, ""));
-    let mut blocks = vec![ViewBlock::layout(), LightingBlock::layout(), MeshBlock::layout(), MaterialBlock::layout()];
+    let mut blocks =
+        vec![ViewBlock::layout(), LightingBlock::layout(), MeshBlock::layout(), MaterialBlock::layout()];
     blocks.extend(surface::blocks().into_iter().map(|b| b.1));
     blocks.extend(FRAME.iter().map(|e| e.block()));
     for b in &blocks {

@@ -154,7 +154,12 @@ impl PipelineCache {
     }
 
     /// The shader module called `name`, compiled from `source()` on first use.
-    pub fn module(&self, device: &wgpu::Device, name: String, source: impl FnOnce() -> String) -> wgpu::ShaderModule {
+    pub fn module(
+        &self,
+        device: &wgpu::Device,
+        name: String,
+        source: impl FnOnce() -> String,
+    ) -> wgpu::ShaderModule {
         let mut modules = self.modules.lock().unwrap_or_else(|e| e.into_inner());
         modules
             .entry(name)

@@ -142,7 +142,13 @@ pub fn plan(scene: &CheckedScene) -> Plan {
         reads.push(ReadPlan { region, copies });
     };
     if color {
-        read_back(&mut passes, "readback_color", Target::Color, 4, vec![(Dest::Output(Output::Color), Copy::Bytes)]);
+        read_back(
+            &mut passes,
+            "readback_color",
+            Target::Color,
+            4,
+            vec![(Dest::Output(Output::Color), Copy::Bytes)],
+        );
     }
     if let Some(layout) = geometry {
         let depth = layout.depth_component();
@@ -230,10 +236,20 @@ mod tests {
 
     /// A scene of one (unresolved) mesh with the given outlines and a shadow-casting light or not.
     fn scene(outlines: Option<Outlines>, shadows: bool) -> Scene {
-        let light = Light { shadows: shadows.then(|| Shadows { size: 1024, ..Default::default() }), ..Light::default() };
+        let light = Light {
+            shadows: shadows.then(|| Shadows { size: 1024, ..Default::default() }),
+            ..Light::default()
+        };
         Scene {
             items: vec![SceneItem { mesh: 1, transform: IDENTITY, material: Default::default() }],
-            lights: vec![if shadows { Light { kind: crate::render::scene::light::LightKind::Directional { direction: [0.0, -1.0, 0.0] }, ..light } } else { light }],
+            lights: vec![if shadows {
+                Light {
+                    kind: crate::render::scene::light::LightKind::Directional { direction: [0.0, -1.0, 0.0] },
+                    ..light
+                }
+            } else {
+                light
+            }],
             outlines,
             ..Default::default()
         }
@@ -296,7 +312,10 @@ mod tests {
         // outlines that draw nothing still give an empty coverage
         let mut none = Outlines::new(true, false);
         none.styles = [None; crate::render::effects::outlines::settings::INK_KINDS];
-        assert_eq!(names(scene(Some(none), false), outputs(&[Output::Outline])), ["clear_outline", "readback_outline"]);
+        assert_eq!(
+            names(scene(Some(none), false), outputs(&[Output::Outline])),
+            ["clear_outline", "readback_outline"]
+        );
     }
 
     #[test]

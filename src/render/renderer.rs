@@ -118,7 +118,11 @@ const DEPTH_SCALE_RANGE: std::ops::RangeInclusive<f64> = 1.0e-30..=1.0e30;
 impl Renderer {
     /// A renderer on the process-wide context of `backend` (created on first use).
     pub fn new(backend: BackendChoice) -> Result<Self> {
-        Ok(Renderer { ctx: context(backend)?, meshes: Mutex::new(HashMap::new()), next_id: AtomicU64::new(1) })
+        Ok(Renderer {
+            ctx: context(backend)?,
+            meshes: Mutex::new(HashMap::new()),
+            next_id: AtomicU64::new(1),
+        })
     }
 
     pub fn info(&self) -> &GpuInfo {
@@ -130,15 +134,26 @@ impl Renderer {
     }
 
     /// Uploads a mesh (faces already checked against `positions`) and returns its id.
-    pub fn add_mesh<T: Real>(&self, positions: &[Vec3<T>], faces: Vec<[u32; 3]>, normals: NormalMode) -> Result<MeshId> {
+    pub fn add_mesh<T: Real>(
+        &self,
+        positions: &[Vec3<T>],
+        faces: Vec<[u32; 3]>,
+        normals: NormalMode,
+    ) -> Result<MeshId> {
         self.ctx.check_process()?;
         crate::mesh::check_positions("vertices", positions)?;
         if let Some(bad) = faces.iter().flatten().find(|&&i| i as usize >= positions.len()) {
-            return Err(Error::out_of_range("faces", format!("vertex index {bad} is outside [0, {})", positions.len())));
+            return Err(Error::out_of_range(
+                "faces",
+                format!("vertex index {bad} is outside [0, {})", positions.len()),
+            ));
         }
         let (gpu, host) = crate::parallel::install(|| GpuMesh::upload(&self.ctx, positions, faces, normals))?;
         let id = self.next_id.fetch_add(1, Ordering::Relaxed);
-        self.meshes.lock().unwrap_or_else(|e| e.into_inner()).insert(id, Arc::new(MeshRecord::new(gpu, host)));
+        self.meshes
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .insert(id, Arc::new(MeshRecord::new(gpu, host)));
         Ok(id)
     }
 
@@ -161,7 +176,8 @@ impl Renderer {
     pub fn check(&self, scene: Scene, frame: FrameSpec) -> Result<CheckedScene> {
         self.ctx.check_process()?;
         let info = &self.ctx.info;
-        let limits = DeviceLimits { max_texture_size: info.max_texture_size, msaa_samples: info.msaa_samples.clone() };
+        let limits =
+            DeviceLimits { max_texture_size: info.max_texture_size, msaa_samples: info.msaa_samples.clone() };
         let checked = CheckedScene::check(scene, frame, &limits)?;
         check_effects(&checked)?;
         for (i, item) in checked.scene.items.iter().enumerate() {
@@ -187,7 +203,12 @@ impl Renderer {
     }
 
     /// Renders `scene` as `frame` asks, running only the steps its plan lists, into `out`.
-    pub fn render_into(&self, scene: &Scene, frame: &FrameSpec, out: OutputBuffers<'_>) -> Result<FrameReport> {
+    pub fn render_into(
+        &self,
+        scene: &Scene,
+        frame: &FrameSpec,
+        out: OutputBuffers<'_>,
+    ) -> Result<FrameReport> {
         self.render_checked(self.check(scene.clone(), *frame)?, out)
     }
 
@@ -244,7 +265,8 @@ impl Renderer {
     /// Everything a frame needs before the GPU: the meshes, the camera, the plan, and its host
     /// steps before the frame (timed into `report`).
     pub(crate) fn prepare(&self, scene: CheckedScene, report: &mut FrameReport) -> Result<Prepared> {
-        let records: Vec<Arc<MeshRecord>> = scene.scene.items.iter().map(|i| self.mesh(i.mesh)).collect::<Result<_>>()?;
+        let records: Vec<Arc<MeshRecord>> =
+            scene.scene.items.iter().map(|i| self.mesh(i.mesh)).collect::<Result<_>>()?;
         let sphere = scene.scene.bounding_sphere(|id| Ok(self.mesh(id)?.gpu.sphere()))?;
         let frame = &scene.frame;
         let cam = scene.scene.camera.resolve(sphere, frame.width as f64 / frame.height as f64)?;
@@ -384,7 +406,8 @@ impl Renderer {
             lights: scene.shader_lights.len() as u32,
             point_lights: scene.point_lights,
         };
-        let mut encoder = ctx.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
+        let mut encoder =
+            ctx.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
         let mut timed = Vec::new();
         for pass in &plan.passes {
             let timing = match (&f.res.queries, pass.timed()) {
@@ -431,7 +454,8 @@ impl Renderer {
         rx.recv()
             .map_err(|_| Error::Gpu("the readback was dropped".into()))?
             .map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
-        let mapped = staging.get_mapped_range(..).map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
+        let mapped =
+            staging.get_mapped_range(..).map_err(|e| Error::Gpu(format!("reading the frame back: {e}")))?;
         let scale = p.cam.scale as f32;
         let n = p.scene.frame.width as usize * p.scene.frame.height as usize;
         crate::parallel::install(|| {
@@ -473,7 +497,13 @@ fn reborrow<'a>(image: &'a mut ImageMut<'_>) -> ImageMut<'a> {
 
 /// Copies one region of the mapped readback into an image, as `copy` says (`scale` takes
 /// normalised depths to world units).
-fn copy_region(region: &crate::render::passes::readback::Region, mapped: &[u8], copy: Copy, scale: f32, image: ImageMut<'_>) {
+fn copy_region(
+    region: &crate::render::passes::readback::Region,
+    mapped: &[u8],
+    copy: Copy,
+    scale: f32,
+    image: ImageMut<'_>,
+) {
     match (copy, image) {
         (Copy::Bytes, ImageMut::Bytes(o)) => region.copy_bytes(mapped, o),
         (Copy::Words { first, keep, world }, ImageMut::Floats(o)) => {
@@ -514,7 +544,12 @@ pub(crate) struct Prepared {
 
 impl Prepared {
     /// Runs host steps in order, each timed under its name.
-    fn run_host(&self, steps: &[Box<dyn HostStep>], depth: Option<&[f32]>, report: &mut FrameReport) -> Result<()> {
+    fn run_host(
+        &self,
+        steps: &[Box<dyn HostStep>],
+        depth: Option<&[f32]>,
+        report: &mut FrameReport,
+    ) -> Result<()> {
         let cx = HostInputs { scene: &self.scene, cam: &self.cam, records: &self.records, depth };
         for step in steps {
             let t = Instant::now();

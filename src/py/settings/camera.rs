@@ -2,13 +2,11 @@
 
 use pyo3::prelude::*;
 
-use super::{settings_class, tup};
+use super::{getters, settings_class, tup};
 use crate::error::Result;
-use crate::py::args::{flag_or, opt_number, triple};
+use crate::py::args::{flag_or, opt_number, triple, Obj};
 use crate::py::errors::to_py;
 use crate::render::scene::camera::{self, Camera, Placement, Projection};
-
-type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
 
 /// A camera; build one with :meth:`fit` (the default), :meth:`look_at` or :meth:`orthographic`.
 ///
@@ -27,7 +25,11 @@ fn opt_triple(name: &str, obj: Obj<'_, '_>, default: [f64; 3]) -> Result<[f64; 3
 }
 
 /// A camera from its arguments, checked.
-fn camera(make: impl FnOnce() -> Result<(Placement, Projection)>, near: Obj<'_, '_>, far: Obj<'_, '_>) -> PyResult<PyCamera> {
+fn camera(
+    make: impl FnOnce() -> Result<(Placement, Projection)>,
+    near: Obj<'_, '_>,
+    far: Obj<'_, '_>,
+) -> PyResult<PyCamera> {
     (|| {
         let (placement, projection) = make()?;
         Camera::new(placement, projection, opt_number("near", near)?, opt_number("far", far)?)
@@ -70,7 +72,9 @@ impl PyCamera {
             let projection = if flag_or("orthographic", orthographic, false)? {
                 Projection::Orthographic { height: camera::DEFAULT_HEIGHT }
             } else {
-                Projection::Perspective { fov_y_deg: opt_number("fov_y", fov_y)?.unwrap_or(camera::DEFAULT_FOV_Y) }
+                Projection::Perspective {
+                    fov_y_deg: opt_number("fov_y", fov_y)?.unwrap_or(camera::DEFAULT_FOV_Y),
+                }
             };
             Ok((placement, projection))
         };
@@ -115,91 +119,50 @@ impl PyCamera {
         camera(make, near, far)
     }
 
-    /// "fit" or "look_at".
-    #[getter]
-    fn kind(&self) -> &'static str {
-        match self.inner.placement {
-            Placement::Fit { .. } => "fit",
-            Placement::LookAt { .. } => "look_at",
-        }
-    }
-
-    /// "perspective" or "orthographic".
-    #[getter]
-    fn projection(&self) -> &'static str {
-        match self.inner.projection {
-            Projection::Perspective { .. } => "perspective",
-            Projection::Orthographic { .. } => "orthographic",
-        }
-    }
-
-    #[getter]
-    fn eye(&self) -> Option<(f64, f64, f64)> {
-        match self.inner.placement {
-            Placement::LookAt { eye, .. } => Some(tup(eye)),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn target(&self) -> Option<(f64, f64, f64)> {
-        match self.inner.placement {
-            Placement::LookAt { target, .. } => Some(tup(target)),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn up(&self) -> (f64, f64, f64) {
-        match self.inner.placement {
-            Placement::LookAt { up, .. } | Placement::Fit { up, .. } => tup(up),
-        }
-    }
-
-    #[getter]
-    fn direction(&self) -> Option<(f64, f64, f64)> {
-        match self.inner.placement {
-            Placement::Fit { direction, .. } => Some(tup(direction)),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn margin(&self) -> Option<f64> {
-        match self.inner.placement {
-            Placement::Fit { margin, .. } => Some(margin),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn fov_y(&self) -> Option<f64> {
-        match self.inner.projection {
-            Projection::Perspective { fov_y_deg } => Some(fov_y_deg),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn height(&self) -> Option<f64> {
-        match (self.inner.projection, self.inner.placement) {
-            (Projection::Orthographic { height }, Placement::LookAt { .. }) => Some(height),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn near(&self) -> Option<f64> {
-        self.inner.near
-    }
-
-    #[getter]
-    fn far(&self) -> Option<f64> {
-        self.inner.far
-    }
-
     fn __repr__(&self) -> String {
         let c = &self.inner;
         format!("Camera({:?}, {:?}, near={:?}, far={:?})", c.placement, c.projection, c.near, c.far)
     }
 }
+
+getters!(PyCamera {
+    /// "fit" or "look_at".
+    kind -> &'static str = |c| match c.placement {
+        Placement::Fit { .. } => "fit",
+        Placement::LookAt { .. } => "look_at",
+    };
+    /// "perspective" or "orthographic".
+    projection -> &'static str = |c| match c.projection {
+        Projection::Perspective { .. } => "perspective",
+        Projection::Orthographic { .. } => "orthographic",
+    };
+    eye -> Option<(f64, f64, f64)> = |c| match c.placement {
+        Placement::LookAt { eye, .. } => Some(tup(eye)),
+        _ => None,
+    };
+    target -> Option<(f64, f64, f64)> = |c| match c.placement {
+        Placement::LookAt { target, .. } => Some(tup(target)),
+        _ => None,
+    };
+    up -> (f64, f64, f64) = |c| match c.placement {
+        Placement::LookAt { up, .. } | Placement::Fit { up, .. } => tup(up),
+    };
+    direction -> Option<(f64, f64, f64)> = |c| match c.placement {
+        Placement::Fit { direction, .. } => Some(tup(direction)),
+        _ => None,
+    };
+    margin -> Option<f64> = |c| match c.placement {
+        Placement::Fit { margin, .. } => Some(margin),
+        _ => None,
+    };
+    fov_y -> Option<f64> = |c| match c.projection {
+        Projection::Perspective { fov_y_deg } => Some(fov_y_deg),
+        _ => None,
+    };
+    height -> Option<f64> = |c| match (c.projection, c.placement) {
+        (Projection::Orthographic { height }, Placement::LookAt { .. }) => Some(height),
+        _ => None,
+    };
+    near -> Option<f64> = |c| c.near;
+    far -> Option<f64> = |c| c.far;
+});

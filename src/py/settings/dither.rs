@@ -3,13 +3,11 @@
 use pyo3::prelude::*;
 use pyo3::types::PyString;
 
-use super::settings_class;
+use super::{getters, settings_class};
 use crate::error::{Error, Result};
-use crate::py::args::{opt_number, optional, text, type_name};
+use crate::py::args::{opt_number, optional, text, type_name, Obj};
 use crate::py::errors::to_py;
 use crate::render::effects::dither::{Dither, DitherPattern, DitherSpace};
-
-type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
 
 /// Dithering between neighbouring bands (Borquez and Yepez): L.n + (t - 1/2) amount is banded,
 /// t the pattern's threshold at the pixel. pattern: "bayer2", "bayer4" (default), "bayer8"
@@ -29,7 +27,12 @@ settings_class!(PyDither, Dither, "Dither", |d| d.validate(""));
 impl PyDither {
     #[new]
     #[pyo3(signature = (pattern = None, *, space = None, amount = None, scale = None))]
-    fn new(pattern: Obj<'_, '_>, space: Obj<'_, '_>, amount: Obj<'_, '_>, scale: Obj<'_, '_>) -> PyResult<Self> {
+    fn new(
+        pattern: Obj<'_, '_>,
+        space: Obj<'_, '_>,
+        amount: Obj<'_, '_>,
+        scale: Obj<'_, '_>,
+    ) -> PyResult<Self> {
         (|| {
             let mut d = Dither::new(match optional("pattern", pattern, text)? {
                 None => DitherPattern::Bayer4,
@@ -46,33 +49,26 @@ impl PyDither {
         .map_err(to_py)
     }
 
-    #[getter]
-    fn pattern(&self) -> &'static str {
-        self.inner.pattern.name()
-    }
-
-    #[getter]
-    fn space(&self) -> &'static str {
-        self.inner.space.name()
-    }
-
-    #[getter]
-    fn amount(&self) -> f64 {
-        self.inner.amount
-    }
-
-    #[getter]
-    fn scale(&self) -> f64 {
-        self.inner.scale
-    }
-
     fn __repr__(&self) -> String {
         repr(&self.inner)
     }
 }
 
+getters!(PyDither {
+    pattern -> &'static str = |d| d.pattern.name();
+    space -> &'static str = |d| d.space.name();
+    amount -> f64 = |d| d.amount;
+    scale -> f64 = |d| d.scale;
+});
+
 pub fn repr(d: &Dither) -> String {
-    format!("Dither({:?}, space={:?}, amount={}, scale={})", d.pattern.name(), d.space.name(), d.amount, d.scale)
+    format!(
+        "Dither({:?}, space={:?}, amount={}, scale={})",
+        d.pattern.name(),
+        d.space.name(),
+        d.amount,
+        d.scale
+    )
 }
 
 /// The `dither=` argument: None (none), a pattern name (its defaults) or a Dither.
@@ -84,5 +80,8 @@ pub fn dither_arg(obj: Obj<'_, '_>) -> Result<Option<Dither>> {
     if o.is_instance_of::<PyString>() {
         return Ok(Some(Dither::new(DitherPattern::parse("dither", &text("dither", o)?)?)));
     }
-    Err(Error::wrong_type("dither", format!("expected a pattern name or a toonmesh.Dither, got {}", type_name(o))))
+    Err(Error::wrong_type(
+        "dither",
+        format!("expected a pattern name or a toonmesh.Dither, got {}", type_name(o)),
+    ))
 }

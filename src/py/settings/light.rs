@@ -2,14 +2,12 @@
 
 use pyo3::prelude::*;
 
-use super::{settings_class, tup};
+use super::{getters, settings_class, tup};
 use crate::error::{Error, Result};
-use crate::py::args::{flag, opt_number, opt_rgb, optional, text, triple, type_name, unsigned};
+use crate::py::args::{flag, opt_number, opt_rgb, optional, text, triple, type_name, unsigned, Obj};
 use crate::py::errors::to_py;
 use crate::render::effects::shadows::settings::{ShadowFilter, Shadows};
 use crate::render::scene::light::{Light, LightKind, Space};
-
-type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
 
 /// A directional or point light; build one with the static methods. ``color`` is sRGB (default
 /// white) and ``intensity`` (>= 0, default 1) scales its light. ``space``: "world" (default) or
@@ -44,8 +42,9 @@ impl PyShadows {
             let d = Shadows::default();
             let size = match optional("size", size, unsigned)? {
                 None => d.size,
-                Some(v) => u32::try_from(v)
-                    .map_err(|_| Error::invalid("size", format!("must be a power of two from 64 to 8192, got {v}")))?,
+                Some(v) => u32::try_from(v).map_err(|_| {
+                    Error::invalid("size", format!("must be a power of two from 64 to 8192, got {v}"))
+                })?,
             };
             let s = Shadows {
                 size,
@@ -61,25 +60,37 @@ impl PyShadows {
         .map_err(to_py)
     }
 
-    #[getter]
-    fn size(&self) -> u32 {
-        self.inner.size
-    }
-
-    #[getter]
-    fn bias(&self) -> f64 {
-        self.inner.bias
-    }
-
-    #[getter]
-    fn filter(&self) -> &'static str {
-        self.inner.filter.name()
-    }
-
     fn __repr__(&self) -> String {
         shadows_repr(&self.inner)
     }
 }
+
+getters!(PyShadows {
+    size -> u32 = |s| s.size;
+    bias -> f64 = |s| s.bias;
+    filter -> &'static str = |s| s.filter.name();
+});
+
+getters!(PyLight {
+    /// "directional" or "point".
+    kind -> &'static str = |l| match l.kind {
+        LightKind::Directional { .. } => "directional",
+        LightKind::Point { .. } => "point",
+    };
+    direction -> Option<(f64, f64, f64)> = |l| match l.kind {
+        LightKind::Directional { direction } => Some(tup(direction)),
+        _ => None,
+    };
+    position -> Option<(f64, f64, f64)> = |l| match l.kind {
+        LightKind::Point { position } => Some(tup(position)),
+        _ => None,
+    };
+    color -> (f64, f64, f64) = |l| tup(l.color);
+    intensity -> f64 = |l| l.intensity;
+    space -> &'static str = |l| l.space_name();
+    /// The shadow settings, or None when the light casts no shadows.
+    shadows -> Option<PyShadows> = |l| l.shadows.map(|inner| PyShadows { inner });
+});
 
 fn shadows_repr(s: &Shadows) -> String {
     format!("Shadows(size={}, bias={}, filter={:?})", s.size, s.bias, s.filter.name())
@@ -146,7 +157,12 @@ impl PyLight {
     /// Light radiating from ``position`` (3 numbers; no falloff with distance).
     #[staticmethod]
     #[pyo3(signature = (position, *, color = None, intensity = None, space = None))]
-    fn point(position: &Bound<'_, PyAny>, color: Obj<'_, '_>, intensity: Obj<'_, '_>, space: Obj<'_, '_>) -> PyResult<Self> {
+    fn point(
+        position: &Bound<'_, PyAny>,
+        color: Obj<'_, '_>,
+        intensity: Obj<'_, '_>,
+        space: Obj<'_, '_>,
+    ) -> PyResult<Self> {
         let position = triple("position", position).map_err(to_py)?;
         light(LightKind::Point { position }, color, intensity, space, None)
     }
@@ -155,52 +171,6 @@ impl PyLight {
     #[staticmethod]
     fn key() -> Self {
         PyLight { inner: Light::default() }
-    }
-
-    /// "directional" or "point".
-    #[getter]
-    fn kind(&self) -> &'static str {
-        match self.inner.kind {
-            LightKind::Directional { .. } => "directional",
-            LightKind::Point { .. } => "point",
-        }
-    }
-
-    #[getter]
-    fn direction(&self) -> Option<(f64, f64, f64)> {
-        match self.inner.kind {
-            LightKind::Directional { direction } => Some(tup(direction)),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn position(&self) -> Option<(f64, f64, f64)> {
-        match self.inner.kind {
-            LightKind::Point { position } => Some(tup(position)),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn color(&self) -> (f64, f64, f64) {
-        tup(self.inner.color)
-    }
-
-    #[getter]
-    fn intensity(&self) -> f64 {
-        self.inner.intensity
-    }
-
-    #[getter]
-    fn space(&self) -> &'static str {
-        self.inner.space_name()
-    }
-
-    /// The shadow settings, or None when the light casts no shadows.
-    #[getter]
-    fn shadows(&self) -> Option<PyShadows> {
-        self.inner.shadows.map(|inner| PyShadows { inner })
     }
 
     fn __repr__(&self) -> String {

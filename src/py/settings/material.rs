@@ -4,17 +4,15 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 
 use super::dither::{dither_arg, repr as dither_repr, PyDither};
-use super::{settings_class, tup};
+use super::{getters, settings_class, tup};
 use crate::error::{Error, Result};
-use crate::py::args::{flag_or, number, numbers, opt_number, opt_rgb, text, triple, type_name};
+use crate::py::args::{flag_or, number, numbers, opt_number, opt_rgb, text, triple, type_name, Obj};
 use crate::py::errors::to_py;
 use crate::render::color::Srgb;
 use crate::render::effects::hatching::Hatching;
 use crate::render::effects::surface::SurfaceSettings;
 use crate::render::scene::material::{Material, DEFAULT_COLOR};
 use crate::render::scene::model::{self, Highlight, Model, MAX_LUT};
-
-type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
 
 fn f32s(v: Vec<f64>) -> Vec<f32> {
     v.into_iter().map(|x| x as f32).collect()
@@ -29,7 +27,9 @@ fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 3]>> {
     crate::py::args::refuse_text(name, obj, "(N,) or (N, 3) numbers")?;
     let rows: Vec<Bound<'_, PyAny>> = obj
         .try_iter()
-        .map_err(|_| Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj))))?
+        .map_err(|_| {
+            Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj)))
+        })?
         .collect::<PyResult<_>>()
         .map_err(|e| Error::invalid(name, e.to_string()))?;
     if rows.is_empty() || rows.len() > MAX_LUT {
@@ -155,7 +155,8 @@ impl PyMaterial {
     ) -> PyResult<Self> {
         dithered(
             (|| {
-                let highlight = highlight.map(|h| Highlight::parse("highlight", &text("highlight", h)?)).transpose()?;
+                let highlight =
+                    highlight.map(|h| Highlight::parse("highlight", &text("highlight", h)?)).transpose()?;
                 Material::thresholded_phong(
                     color_or("color", color)?,
                     opt_number("t_h", t_h)?.map(|x| x as f32),
@@ -229,7 +230,12 @@ impl PyMaterial {
                 };
                 h.validate("")?;
                 let (t, v) = bands_args(thresholds, values)?;
-                let m = Material::bands(opt_rgb("color", color)?.unwrap_or([1.0; 3]), t, v, flag_or("per_vertex", per_vertex, false)?)?;
+                let m = Material::bands(
+                    opt_rgb("color", color)?.unwrap_or([1.0; 3]),
+                    t,
+                    v,
+                    flag_or("per_vertex", per_vertex, false)?,
+                )?;
                 m.with_effects(SurfaceSettings { hatching: Some(h), ..Default::default() })
             })(),
             dither,
@@ -242,7 +248,12 @@ impl PyMaterial {
     /// ``color``; the default is :func:`kang_table`, Kang et al.'s 256-to-3-level mapping.
     #[staticmethod]
     #[pyo3(signature = (table = None, color = None, *, per_vertex = None, dither = None))]
-    fn lut(table: Obj<'_, '_>, color: Obj<'_, '_>, per_vertex: Obj<'_, '_>, dither: Obj<'_, '_>) -> PyResult<Self> {
+    fn lut(
+        table: Obj<'_, '_>,
+        color: Obj<'_, '_>,
+        per_vertex: Obj<'_, '_>,
+        dither: Obj<'_, '_>,
+    ) -> PyResult<Self> {
         dithered(
             (|| {
                 Material::lut(
@@ -255,13 +266,6 @@ impl PyMaterial {
         )
     }
 
-    /// The shading model: "lambert", "phong", "thresholded_phong", "bands" or "lut" (a
-    /// hatching material is "bands" with :attr:`hatch_style` set).
-    #[getter]
-    fn model(&self) -> &'static str {
-        self.inner.model.name()
-    }
-
     /// A hatching material's ink (sRGB), spacing and width in pixels as a dict; None for others.
     #[getter]
     fn hatch_style<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
@@ -271,93 +275,6 @@ impl PyMaterial {
         d.set_item("spacing", h.spacing)?;
         d.set_item("width", h.width)?;
         Ok(Some(d))
-    }
-
-    /// The dithering, or None.
-    #[getter]
-    fn dither(&self) -> Option<PyDither> {
-        self.inner.effects.dither.map(|inner| PyDither { inner })
-    }
-
-    /// sRGB coefficients (tuples of 3 floats).
-    #[getter]
-    fn diffuse(&self) -> (f64, f64, f64) {
-        tup(self.inner.diffuse)
-    }
-
-    #[getter]
-    fn ambient(&self) -> (f64, f64, f64) {
-        tup(self.inner.ambient)
-    }
-
-    #[getter]
-    fn specular(&self) -> (f64, f64, f64) {
-        tup(self.inner.specular)
-    }
-
-    #[getter]
-    fn per_vertex(&self) -> bool {
-        self.inner.per_vertex
-    }
-
-    /// Phong's exponent (None for other models).
-    #[getter]
-    fn shininess(&self) -> Option<f32> {
-        match self.inner.model {
-            Model::Phong { shininess } => Some(shininess),
-            _ => None,
-        }
-    }
-
-    /// The thresholded Phong model's t_h, t_s and highlight (None for other models).
-    #[getter]
-    fn t_h(&self) -> Option<f32> {
-        match self.inner.model {
-            Model::ThresholdedPhong { t_h, .. } => Some(t_h),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn t_s(&self) -> Option<f32> {
-        match self.inner.model {
-            Model::ThresholdedPhong { t_s, .. } => Some(t_s),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn highlight(&self) -> Option<&'static str> {
-        match self.inner.model {
-            Model::ThresholdedPhong { highlight, .. } => Some(highlight.name()),
-            _ => None,
-        }
-    }
-
-    /// The bands' thresholds and values (None for other models).
-    #[getter]
-    fn thresholds(&self) -> Option<Vec<f64>> {
-        match &self.inner.model {
-            Model::Bands { thresholds, .. } => Some(thresholds.iter().map(|&x| x as f64).collect()),
-            _ => None,
-        }
-    }
-
-    #[getter]
-    fn values(&self) -> Option<Vec<f64>> {
-        match &self.inner.model {
-            Model::Bands { values, .. } => Some(values.iter().map(|&x| x as f64).collect()),
-            _ => None,
-        }
-    }
-
-    /// The lookup table's (N, 3) rows (None for other models).
-    #[getter]
-    fn table(&self) -> Option<Vec<(f64, f64, f64)>> {
-        match &self.inner.model {
-            Model::Lut { table } => Some(table.iter().map(|c| tup(c.map(|x| x as f64))).collect()),
-            _ => None,
-        }
     }
 
     fn __repr__(&self) -> String {
@@ -387,6 +304,51 @@ impl PyMaterial {
         )
     }
 }
+
+getters!(PyMaterial {
+    /// The shading model: "lambert", "phong", "thresholded_phong", "bands" or "lut" (a
+    /// hatching material is "bands" with :attr:`hatch_style` set).
+    model -> &'static str = |m| m.model.name();
+    /// The dithering, or None.
+    dither -> Option<PyDither> = |m| m.effects.dither.map(|inner| PyDither { inner });
+    /// sRGB coefficients (tuples of 3 floats).
+    diffuse -> (f64, f64, f64) = |m| tup(m.diffuse);
+    ambient -> (f64, f64, f64) = |m| tup(m.ambient);
+    specular -> (f64, f64, f64) = |m| tup(m.specular);
+    per_vertex -> bool = |m| m.per_vertex;
+    /// Phong's exponent (None for other models).
+    shininess -> Option<f32> = |m| match m.model {
+        Model::Phong { shininess } => Some(shininess),
+        _ => None,
+    };
+    /// The thresholded Phong model's t_h, t_s and highlight (None for other models).
+    t_h -> Option<f32> = |m| match m.model {
+        Model::ThresholdedPhong { t_h, .. } => Some(t_h),
+        _ => None,
+    };
+    t_s -> Option<f32> = |m| match m.model {
+        Model::ThresholdedPhong { t_s, .. } => Some(t_s),
+        _ => None,
+    };
+    highlight -> Option<&'static str> = |m| match m.model {
+        Model::ThresholdedPhong { highlight, .. } => Some(highlight.name()),
+        _ => None,
+    };
+    /// The bands' thresholds and values (None for other models).
+    thresholds -> Option<Vec<f64>> = |m| match &m.model {
+        Model::Bands { thresholds, .. } => Some(thresholds.iter().map(|&x| x as f64).collect()),
+        _ => None,
+    };
+    values -> Option<Vec<f64>> = |m| match &m.model {
+        Model::Bands { values, .. } => Some(values.iter().map(|&x| x as f64).collect()),
+        _ => None,
+    };
+    /// The lookup table's (N, 3) rows (None for other models).
+    table -> Option<Vec<(f64, f64, f64)>> = |m| match &m.model {
+        Model::Lut { table } => Some(table.iter().map(|c| tup(c.map(|x| x as f64))).collect()),
+        _ => None,
+    };
+});
 
 /// kang_table() -> ndarray
 ///

@@ -71,6 +71,25 @@ macro_rules! settings_class {
 }
 pub(crate) use settings_class;
 
+/// Read-only properties of a settings class, each computed from its core value: `name -> type
+/// = |value| expression;`, doc comments allowed.
+macro_rules! getters {
+    ($py:ident { $($(#[$doc:meta])* $name:ident -> $ty:ty = |$v:ident| $body:expr;)* }) => {
+        #[pyo3::pymethods]
+        impl $py {
+            $(
+                $(#[$doc])*
+                #[getter]
+                fn $name(&self) -> $ty {
+                    let $v = &self.inner;
+                    $body
+                }
+            )*
+        }
+    };
+}
+pub(crate) use getters;
+
 fn state<T: Serialize>(x: &T) -> String {
     serde_json::to_string(x).expect("settings serialise")
 }
@@ -81,7 +100,10 @@ pub fn hash_of<T: Serialize>(x: &T) -> u64 {
     h.finish()
 }
 
-pub fn reduce<'py, W: Wraps>(py: Python<'py>, inner: &W::Core) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
+pub fn reduce<'py, W: Wraps>(
+    py: Python<'py>,
+    inner: &W::Core,
+) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
     Ok((py.import("toonmesh._core")?.getattr("_restore")?, (W::CLASS, state(inner))))
 }
 

@@ -10,29 +10,21 @@ use super::camera::PyCamera;
 use super::light::PyLight;
 use super::material::{material_arg, PyMaterial};
 use super::outlines::{outlines_arg, PyOutlines};
-use super::settings_class;
-use crate::error::{Error, Result};
+use super::{getters, settings_class};
+use crate::error::{closest, Error, Result};
 use crate::py::args::{integer, numbers, refuse_text, rgb, rgba, text, type_name};
 use crate::py::errors::to_py;
 use crate::render::scene::light::Light;
 use crate::render::scene::options::RenderOptions;
 use crate::render::scene::{Output, Outputs};
 
-/// The keywords, in the order the docs list them.
-pub const KEYWORDS: [&str; 12] = [
-    "material",
-    "transform",
-    "camera",
-    "lights",
-    "ambient",
-    "background",
-    "width",
-    "height",
-    "outputs",
-    "msaa",
-    "supersample",
-    "outlines",
-];
+/// The keywords: the fields of the core's `RenderOptions`.
+fn keywords() -> Vec<String> {
+    match serde_json::to_value(RenderOptions::default()) {
+        Ok(serde_json::Value::Object(fields)) => fields.keys().cloned().collect(),
+        _ => Vec::new(),
+    }
+}
 
 /// Every render setting besides the meshes, checked, with the core's defaults: made from the
 /// keywords of :class:`RenderKeywords` (``RenderOptions(width=640, outlines="mesh")``), which
@@ -71,7 +63,8 @@ pub fn transform(arg: &str, obj: &Bound<'_, PyAny>) -> Result<[[f64; 4]; 4]> {
             return Err(wrong());
         }
     }
-    let rows: Vec<Bound<'_, PyAny>> = obj.try_iter().map_err(|_| wrong())?.collect::<PyResult<_>>().map_err(|_| wrong())?;
+    let rows: Vec<Bound<'_, PyAny>> =
+        obj.try_iter().map_err(|_| wrong())?.collect::<PyResult<_>>().map_err(|_| wrong())?;
     let rows: Vec<Vec<f64>> = rows.iter().map(|r| numbers(arg, r)).collect::<Result<_>>()?;
     if rows.iter().any(|r| r.len() != rows[0].len()) {
         return Err(wrong());
@@ -89,7 +82,10 @@ fn outputs(obj: &Bound<'_, PyAny>) -> Result<Outputs> {
     } else {
         obj.try_iter()
             .map_err(|_| {
-                Error::wrong_type("outputs", format!("expected a name or a sequence of names, got {}", type_name(obj)))
+                Error::wrong_type(
+                    "outputs",
+                    format!("expected a name or a sequence of names, got {}", type_name(obj)),
+                )
             })?
             .collect::<PyResult<_>>()
             .map_err(|e| Error::invalid("outputs", e.to_string()))?
@@ -111,13 +107,16 @@ pub fn each<T>(
     item: &str,
     read: impl Fn(&Bound<'_, PyAny>) -> Option<T>,
 ) -> Result<Vec<T>> {
-    let items =
-        obj.try_iter().map_err(|_| Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj))))?;
+    let items = obj
+        .try_iter()
+        .map_err(|_| Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj))))?;
     items
         .enumerate()
         .map(|(i, x)| {
             let x = x.map_err(|e| Error::invalid(name, e.to_string()))?;
-            read(&x).ok_or_else(|| Error::wrong_type(format!("{name}[{i}]"), format!("expected {item}, got {}", type_name(&x))))
+            read(&x).ok_or_else(|| {
+                Error::wrong_type(format!("{name}[{i}]"), format!("expected {item}, got {}", type_name(&x)))
+            })
         })
         .collect()
 }
@@ -145,16 +144,20 @@ impl PyRenderOptions {
         let d = RenderOptions::default();
         let Some(kwargs) = kwargs else { return Ok(o) };
         for (key, value) in kwargs.iter() {
-            let key: String = key.extract().map_err(|_| Error::wrong_type("options", "keywords must be strings"))?;
+            let key: String =
+                key.extract().map_err(|_| Error::wrong_type("options", "keywords must be strings"))?;
             let none = value.is_none();
             match key.as_str() {
-                "material" => o.material = if none { d.material.clone() } else { material_arg("material", &value)? },
+                "material" => {
+                    o.material = if none { d.material.clone() } else { material_arg("material", &value)? }
+                }
                 "transform" => o.transform = if none { d.transform } else { transform("transform", &value)? },
                 "camera" => o.camera = if none { d.camera } else { camera_arg("camera", &value)? },
                 "lights" => o.lights = if none { d.lights.clone() } else { lights(&value)? },
                 "ambient" => o.ambient = if none { d.ambient } else { rgb("ambient", &value)? },
                 "background" => {
-                    o.frame.background = if none { d.frame.background } else { rgba("background", &value)?.map(|c| c as f32) }
+                    o.frame.background =
+                        if none { d.frame.background } else { rgba("background", &value)?.map(|c| c as f32) }
                 }
                 "outputs" => o.frame.outputs = if none { d.frame.outputs } else { outputs(&value)? },
                 "outlines" => o.outlines = if none { None } else { Some(outlines_arg(&value)?) },
@@ -163,30 +166,17 @@ impl PyRenderOptions {
                 "msaa" => o.frame.msaa = small("msaa", &value)?,
                 "supersample" => o.frame.supersample = small("supersample", &value)?,
                 other => {
-                    let close = KEYWORDS.iter().find(|k| strsim(k, other) <= 2);
-                    let hint = close.map_or(String::new(), |k| format!("; did you mean '{k}'?"));
-                    return Err(Error::wrong_type(other, format!("not a render option{hint} (they are: {})", KEYWORDS.join(", "))));
+                    let known = keywords();
+                    let names: Vec<&str> = known.iter().map(String::as_str).collect();
+                    let hint =
+                        closest(other, &names).map_or(String::new(), |k| format!("; did you mean '{k}'?"));
+                    let why = format!("not a render option{hint} (they are: {})", names.join(", "));
+                    return Err(Error::wrong_type(other, why));
                 }
             }
         }
         Ok(o)
     }
-}
-
-/// The edit distance between two short names (for "did you mean").
-fn strsim(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + (ca != cb) as usize).min(row[j] + 1).min(cur + 1);
-            prev = cur;
-        }
-    }
-    row[b.len()]
 }
 
 #[pymethods]
@@ -203,92 +193,36 @@ impl PyRenderOptions {
         Self::with(&self.inner, options).map(|inner| PyRenderOptions { inner }).map_err(to_py)
     }
 
-    #[getter]
-    fn material(&self) -> PyMaterial {
-        PyMaterial { inner: self.inner.material.clone() }
-    }
-
-    #[getter]
-    fn transform(&self) -> [[f64; 4]; 4] {
-        self.inner.transform
-    }
-
-    #[getter]
-    fn camera(&self) -> PyCamera {
-        PyCamera { inner: self.inner.camera }
-    }
-
-    #[getter]
-    fn lights(&self) -> Vec<PyLight> {
-        self.inner.lights.iter().map(|&inner| PyLight { inner }).collect()
-    }
-
-    #[getter]
-    fn ambient(&self) -> (f64, f64, f64) {
-        super::tup(self.inner.ambient)
-    }
-
-    #[getter]
-    fn background(&self) -> (f32, f32, f32, f32) {
-        let b = self.inner.frame.background;
-        (b[0], b[1], b[2], b[3])
-    }
-
-    #[getter]
-    fn width(&self) -> u32 {
-        self.inner.frame.width
-    }
-
-    #[getter]
-    fn height(&self) -> u32 {
-        self.inner.frame.height
-    }
-
-    #[getter]
-    fn outputs(&self) -> Vec<&'static str> {
-        self.inner.frame.outputs.iter().map(|o| o.name()).collect()
-    }
-
-    #[getter]
-    fn msaa(&self) -> u32 {
-        self.inner.frame.msaa
-    }
-
-    #[getter]
-    fn supersample(&self) -> u32 {
-        self.inner.frame.supersample
-    }
-
-    #[getter]
-    fn outlines(&self) -> Option<PyOutlines> {
-        self.inner.outlines.clone().map(|inner| PyOutlines { inner })
-    }
-
+    /// The keywords that differ from the defaults (their values elided).
     fn __repr__(&self) -> String {
-        let d = RenderOptions::default();
-        let (o, f, df) = (&self.inner, &self.inner.frame, &d.frame);
-        let mut parts = Vec::new();
-        if f.width != df.width || f.height != df.height {
-            parts.push(format!("width={}, height={}", f.width, f.height));
-        }
-        if f.outputs != df.outputs {
-            parts.push(format!("outputs={:?}", self.outputs()));
-        }
-        for (name, v, dv) in [("msaa", f.msaa, df.msaa), ("supersample", f.supersample, df.supersample)] {
-            if v != dv {
-                parts.push(format!("{name}={v}"));
-            }
-        }
-        let changed = [
-            ("material", o.material != d.material),
-            ("transform", o.transform != d.transform),
-            ("camera", o.camera != d.camera),
-            ("lights", o.lights != d.lights),
-            ("ambient", o.ambient != d.ambient),
-            ("background", f.background != df.background),
-            ("outlines", o.outlines != d.outlines),
-        ];
-        parts.extend(changed.iter().filter(|c| c.1).map(|c| format!("{}=...", c.0)));
-        format!("RenderOptions({})", parts.join(", "))
+        let fields = |o: &RenderOptions| match serde_json::to_value(o) {
+            Ok(serde_json::Value::Object(m)) => m,
+            _ => Default::default(),
+        };
+        let (now, default) = (fields(&self.inner), fields(&RenderOptions::default()));
+        let changed: Vec<String> = keywords()
+            .iter()
+            .filter(|k| now.get(*k) != default.get(*k))
+            .map(|k| match &now[k] {
+                serde_json::Value::Number(n) => format!("{k}={n}"),
+                _ => format!("{k}=..."),
+            })
+            .collect();
+        format!("RenderOptions({})", changed.join(", "))
     }
 }
+
+getters!(PyRenderOptions {
+    material -> PyMaterial = |o| PyMaterial { inner: o.material.clone() };
+    transform -> [[f64; 4]; 4] = |o| o.transform;
+    camera -> PyCamera = |o| PyCamera { inner: o.camera };
+    lights -> Vec<PyLight> = |o| o.lights.iter().map(|&inner| PyLight { inner }).collect();
+    ambient -> (f64, f64, f64) = |o| super::tup(o.ambient);
+    background -> (f32, f32, f32, f32) = |o| o.frame.background.into();
+    width -> u32 = |o| o.frame.width;
+    height -> u32 = |o| o.frame.height;
+    outputs -> Vec<&'static str> = |o| o.frame.outputs.iter().map(|o| o.name()).collect();
+    msaa -> u32 = |o| o.frame.msaa;
+    supersample -> u32 = |o| o.frame.supersample;
+    outlines -> Option<PyOutlines> = |o| o.outlines.clone().map(|inner| PyOutlines { inner });
+});

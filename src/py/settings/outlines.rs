@@ -3,14 +3,12 @@
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 
-use super::{settings_class, tup};
+use super::{getters, settings_class, tup};
 use crate::edges::outlines::LineKind;
 use crate::error::{Error, Result};
-use crate::py::args::{flag, flag_or, opt_number, opt_rgb, rgb, text, type_name};
+use crate::py::args::{flag, flag_or, opt_number, opt_rgb, rgb, text, type_name, Obj};
 use crate::py::errors::to_py;
 use crate::render::effects::outlines::settings::{kind_names, LineStyle, Outlines, IMAGE_KIND};
-
-type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
 
 /// How one kind of ink line is drawn: ``color`` (sRGB, default black) and ``width`` in output
 /// pixels (default 1.5; the same at every resolution and supersampling factor).
@@ -44,16 +42,6 @@ impl PyLineStyle {
         .map_err(to_py)
     }
 
-    #[getter]
-    fn color(&self) -> (f64, f64, f64) {
-        tup(self.inner.color)
-    }
-
-    #[getter]
-    fn width(&self) -> f32 {
-        self.inner.width
-    }
-
     fn __repr__(&self) -> String {
         format!("LineStyle(color={:?}, width={})", self.inner.color, self.inner.width)
     }
@@ -69,9 +57,10 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
         return Ok(on.then_some(common));
     }
     rgb(name, obj).map(|color| Some(LineStyle { color, ..common })).map_err(|e| match e {
-        Error::WrongType { .. } => {
-            Error::wrong_type(name, format!("expected True, False, a LineStyle or a colour, got {}", type_name(obj)))
-        }
+        Error::WrongType { .. } => Error::wrong_type(
+            name,
+            format!("expected True, False, a LineStyle or a colour, got {}", type_name(obj)),
+        ),
         other => other,
     })
 }
@@ -147,19 +136,15 @@ impl PyOutlines {
             }
             o.crease_angle = opt_number("crease_angle", crease_angle)?.unwrap_or(o.crease_angle);
             o.weld = flag_or("weld", weld, o.weld)?;
-            o.normal_threshold = opt_number("normal_threshold", normal_threshold)?.map_or(o.normal_threshold, |t| t as f32);
-            o.depth_threshold = opt_number("depth_threshold", depth_threshold)?.map_or(o.depth_threshold, |t| t as f32);
+            o.normal_threshold =
+                opt_number("normal_threshold", normal_threshold)?.map_or(o.normal_threshold, |t| t as f32);
+            o.depth_threshold =
+                opt_number("depth_threshold", depth_threshold)?.map_or(o.depth_threshold, |t| t as f32);
             o.depth_offset = opt_number("depth_offset", depth_offset)?.map_or(o.depth_offset, |t| t as f32);
             o.validate("")?;
             Ok(PyOutlines { inner: o })
         })()
         .map_err(to_py)
-    }
-
-    /// "mesh", "image" or "both".
-    #[getter]
-    fn kind(&self) -> &'static str {
-        self.inner.kind_name()
     }
 
     /// Each ink kind's :class:`LineStyle`, or None where it is not drawn.
@@ -172,35 +157,25 @@ impl PyOutlines {
         Ok(d)
     }
 
-    #[getter]
-    fn crease_angle(&self) -> f64 {
-        self.inner.crease_angle
-    }
-
-    #[getter]
-    fn weld(&self) -> bool {
-        self.inner.weld
-    }
-
-    #[getter]
-    fn normal_threshold(&self) -> f32 {
-        self.inner.normal_threshold
-    }
-
-    #[getter]
-    fn depth_threshold(&self) -> f32 {
-        self.inner.depth_threshold
-    }
-
-    #[getter]
-    fn depth_offset(&self) -> f32 {
-        self.inner.depth_offset
-    }
-
     fn __repr__(&self) -> String {
         format!("Outlines({:?}, crease_angle={}, ...)", self.inner.kind_name(), self.inner.crease_angle)
     }
 }
+
+getters!(PyLineStyle {
+    color -> (f64, f64, f64) = |s| tup(s.color);
+    width -> f32 = |s| s.width;
+});
+
+getters!(PyOutlines {
+    /// "mesh", "image" or "both".
+    kind -> &'static str = |o| o.kind_name();
+    crease_angle -> f64 = |o| o.crease_angle;
+    weld -> bool = |o| o.weld;
+    normal_threshold -> f32 = |o| o.normal_threshold;
+    depth_threshold -> f32 = |o| o.depth_threshold;
+    depth_offset -> f32 = |o| o.depth_offset;
+});
 
 /// The `outlines=` argument: None, "mesh", "image", "both" or an Outlines.
 pub fn outlines_arg(obj: &Bound<'_, PyAny>) -> Result<Outlines> {

@@ -59,7 +59,11 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
         },
         // Both sides are drawn unless one cannot show: a camera inside a mesh, or an open
         // surface, shows back faces.
-        primitive: wgpu::PrimitiveState { cull_mode: d.cull, front_face: wgpu::FrontFace::Ccw, ..Default::default() },
+        primitive: wgpu::PrimitiveState {
+            cull_mode: d.cull,
+            front_face: wgpu::FrontFace::Ccw,
+            ..Default::default()
+        },
         depth_stencil: nearest_wins(),
         multisample: wgpu::MultisampleState { count: d.samples, mask: !0, alpha_to_coverage_enabled: false },
         fragment: Some(wgpu::FragmentState {
@@ -98,14 +102,23 @@ pub fn fullscreen_pipeline(
         primitive: Default::default(),
         depth_stencil: None,
         multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState { module, entry_point: Some(entry), compilation_options: options, targets }),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(entry),
+            compilation_options: options,
+            targets,
+        }),
         multiview_mask: None,
         cache: None,
     })
 }
 
 /// A bind group of one texture view.
-pub fn texture_group(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, view: &wgpu::TextureView) -> wgpu::BindGroup {
+pub fn texture_group(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    view: &wgpu::TextureView,
+) -> wgpu::BindGroup {
     device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: None,
         layout,

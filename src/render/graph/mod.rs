@@ -169,7 +169,10 @@ pub fn loaded(view: &wgpu::TextureView) -> Option<wgpu::RenderPassColorAttachmen
 }
 
 /// A depth buffer cleared to the far plane and stored only when `keep` (a shadow map).
-pub fn depth_buffer(view: &wgpu::TextureView, keep: bool) -> Option<wgpu::RenderPassDepthStencilAttachment<'_>> {
+pub fn depth_buffer(
+    view: &wgpu::TextureView,
+    keep: bool,
+) -> Option<wgpu::RenderPassDepthStencilAttachment<'_>> {
     let store = if keep { wgpu::StoreOp::Store } else { wgpu::StoreOp::Discard };
     Some(wgpu::RenderPassDepthStencilAttachment {
         view,

@@ -81,12 +81,7 @@ fn uniforms(dev: &Device, layouts: &Layouts, sizes: (u64, u64), draw_capacity: u
     };
     Uniforms {
         frame_group: group("frame uniforms", &layouts.frame, &frame, None),
-        draw_group: group(
-            "draw uniforms",
-            &layouts.draw,
-            &draws,
-            Some(draw_bytes),
-        ),
+        draw_group: group("draw uniforms", &layouts.draw, &draws, Some(draw_bytes)),
         frame,
         draws,
         draw_capacity: draw_capacity.max(1),

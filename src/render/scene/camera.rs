@@ -208,13 +208,13 @@ impl Camera {
                 let d = unit(&f("direction"), direction)?;
                 let u = unit(&f("up"), up)?;
                 if d.cross(u).length() < 1e-9 {
-                    return Err(Error::invalid(f("up"), format!("must not be parallel to {}", f("direction"))));
+                    return Err(Error::invalid(
+                        f("up"),
+                        format!("must not be parallel to {}", f("direction")),
+                    ));
                 }
                 if !(margin > 0.0 && margin.is_finite()) {
-                    return Err(Error::invalid(
-                        f("margin"),
-                        format!("must be finite and > 0, got {margin}"),
-                    ));
+                    return Err(Error::invalid(f("margin"), format!("must be finite and > 0, got {margin}")));
                 }
             }
         }

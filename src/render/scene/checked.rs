@@ -54,11 +54,22 @@ impl CheckedScene {
         if let Some(o) = &scene.outlines {
             o.validate("outlines")?;
         }
-        let caster = shadow_caster(&scene.lights).map(|(index, light, settings)| Caster { index, light: *light, settings });
+        let caster = shadow_caster(&scene.lights).map(|(index, light, settings)| Caster {
+            index,
+            light: *light,
+            settings,
+        });
         let shader_lights: Vec<Light> = caster
             .map(|c| c.light)
             .into_iter()
-            .chain(scene.lights.iter().enumerate().filter(|(i, _)| Some(*i) != caster.map(|c| c.index)).map(|(_, l)| *l))
+            .chain(
+                scene
+                    .lights
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| Some(*i) != caster.map(|c| c.index))
+                    .map(|(_, l)| *l),
+            )
             .collect();
         let point_lights = shader_lights
             .iter()

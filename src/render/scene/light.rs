@@ -90,10 +90,7 @@ impl Light {
             }
             LightKind::Point { position } => {
                 if !DVec3::from_array(position).is_finite() {
-                    return Err(Error::invalid(
-                        arg("position"),
-                        format!("must be finite, got {position:?}"),
-                    ));
+                    return Err(Error::invalid(arg("position"), format!("must be finite, got {position:?}")));
                 }
             }
         }

@@ -12,8 +12,10 @@ use crate::render::color::{check_unit, scaled, to_linear, Srgb};
 use crate::render::effects::surface::SurfaceSettings;
 use crate::render::effects::surface_effect::Surface;
 
+use super::model::{
+    Highlight, Model, DEFAULT_SHININESS, DEFAULT_T_H, DEFAULT_T_S, PAPER_BAND_THRESHOLDS, PAPER_BAND_VALUES,
+};
 use crate::error::field;
-use super::model::{Highlight, Model, DEFAULT_SHININESS, DEFAULT_T_H, DEFAULT_T_S, PAPER_BAND_THRESHOLDS, PAPER_BAND_VALUES};
 
 pub use super::model::kang_table;
 
@@ -52,8 +54,15 @@ impl Default for Material {
 }
 
 impl Material {
-    fn with_model(model: Model, ambient: Srgb, diffuse: Srgb, specular: Srgb, per_vertex: bool) -> Result<Self> {
-        let m = Material { model, ambient, diffuse, specular, per_vertex, effects: SurfaceSettings::default() };
+    fn with_model(
+        model: Model,
+        ambient: Srgb,
+        diffuse: Srgb,
+        specular: Srgb,
+        per_vertex: bool,
+    ) -> Result<Self> {
+        let m =
+            Material { model, ambient, diffuse, specular, per_vertex, effects: SurfaceSettings::default() };
         m.validate("")?;
         Ok(m)
     }
@@ -124,7 +133,13 @@ impl Material {
 
     /// A lookup table of linear RGB factors applied to `color` (Kang et al.'s by default).
     pub fn lut(table: Option<Vec<[f32; 3]>>, color: Srgb, per_vertex: bool) -> Result<Self> {
-        Self::with_model(Model::Lut { table: table.unwrap_or_else(kang_table) }, [0.0; 3], color, [0.0; 3], per_vertex)
+        Self::with_model(
+            Model::Lut { table: table.unwrap_or_else(kang_table) },
+            [0.0; 3],
+            color,
+            [0.0; 3],
+            per_vertex,
+        )
     }
 
     /// This material with other per-pixel effects, checked against it.
@@ -178,8 +193,16 @@ mod tests {
 
     #[test]
     fn a_material_survives_its_text_form() {
-        let m = Material::thresholded_phong(DEFAULT_COLOR, Some(0.1), None, Some(Highlight::Paper), None, None, true)
-            .unwrap();
+        let m = Material::thresholded_phong(
+            DEFAULT_COLOR,
+            Some(0.1),
+            None,
+            Some(Highlight::Paper),
+            None,
+            None,
+            true,
+        )
+        .unwrap();
         let back: Material = serde_json::from_str(&serde_json::to_string(&m).unwrap()).unwrap();
         assert_eq!(back, m);
     }

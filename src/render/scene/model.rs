@@ -106,7 +106,10 @@ impl Model {
             Model::ThresholdedPhong { t_h, t_s, .. } => {
                 for (name, t) in [("t_h", t_h), ("t_s", t_s)] {
                     if !(t.is_finite() && (-1.0..=1.0).contains(t)) {
-                        return Err(Error::invalid(field(prefix, name), format!("must be in [-1, 1], got {t}")));
+                        return Err(Error::invalid(
+                            field(prefix, name),
+                            format!("must be in [-1, 1], got {t}"),
+                        ));
                     }
                 }
             }

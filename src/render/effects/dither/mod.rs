@@ -5,10 +5,10 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::error::field;
 use crate::error::{Error, Result};
 use crate::render::block::Block;
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
-use crate::error::field;
 use crate::render::wgsl;
 
 /// How far (in L.n) dithering moves a pixel toward the neighbouring band, when none is given.

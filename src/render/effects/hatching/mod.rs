@@ -4,11 +4,11 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::error::field;
 use crate::error::{Error, Result};
 use crate::render::block::{vec4, Block};
 use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
-use crate::error::field;
 use crate::render::scene::model::Model;
 use crate::render::wgsl;
 

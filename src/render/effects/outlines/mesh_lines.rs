@@ -4,13 +4,12 @@
 //! view-independent lines for each crease angle, so that each view only runs the silhouette
 //! test.
 
-use std::collections::HashMap;
 use std::ops::Range;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::{Arc, OnceLock};
 
 use glam::{DMat4, DVec3};
 
-use crate::edges::outlines::{LineKind, Outline};
+use crate::edges::outlines::{LineKind, Outline, Statics};
 use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
 use crate::render::gpu_mesh::{GpuMesh, HostMesh};
@@ -24,9 +23,9 @@ use super::settings::Outlines;
 /// A mesh's outline analysis, kept with it.
 #[derive(Default)]
 pub struct MeshLines {
-    /// Without and with welding.
+    /// Without and with welding, and the view-independent lines of each.
     indices: [OnceLock<Result<EdgeIndex>>; 2],
-    statics: Mutex<HashMap<(bool, u64), Arc<Outline>>>,
+    statics: [Statics; 2],
 }
 
 impl MeshLines {
@@ -46,17 +45,9 @@ impl MeshLines {
     /// cached view-independent lines, keeping the kinds `outlines` draws.
     pub fn outline(&self, host: &HostMesh, view: View, outlines: &Outlines) -> Result<Outline> {
         let index = self.index(host, outlines.weld)?;
-        let key = (outlines.weld, outlines.crease_angle.to_bits());
-        let cached = self.statics.lock().unwrap_or_else(|e| e.into_inner()).get(&key).cloned();
-        let statics = match cached {
-            Some(s) => s,
-            None => {
-                let fe = crate::parallel::install(|| index.feature_edges(outlines.crease_angle))?;
-                let s = Arc::new(Outline::statics(&fe));
-                self.statics.lock().unwrap_or_else(|e| e.into_inner()).insert(key, s.clone());
-                s
-            }
-        };
+        let statics = self.statics[outlines.weld as usize].at(outlines.crease_angle, || {
+            crate::parallel::install(|| index.feature_edges(outlines.crease_angle))
+        })?;
         let all = if outlines.styles[LineKind::Silhouette as usize].is_some() {
             let sil = crate::parallel::install(|| index.silhouette(view))?;
             statics.with_silhouettes(&sil)

@@ -131,7 +131,10 @@ impl FrameEffect for OutlinesEffect {
         let visible = mesh && o.has(Output::Lines);
         if lines || visible {
             let view = Arc::default();
-            steps.host_before.push(Box::new(mesh_lines::Silhouettes { outlines: outlines.clone(), view: Arc::clone(&view) }));
+            steps.host_before.push(Box::new(mesh_lines::Silhouettes {
+                outlines: outlines.clone(),
+                view: Arc::clone(&view),
+            }));
             if lines {
                 let layout = cx.geometry.expect("mesh-space lines are tested against the frame's depth");
                 let ink = ink(steps);
@@ -139,7 +142,9 @@ impl FrameEffect for OutlinesEffect {
             }
             if visible {
                 steps.host_depth = true;
-                steps.host_after.push(Box::new(visibility::VisibleLines { depth_offset: outlines.depth_offset, view }));
+                steps
+                    .host_after
+                    .push(Box::new(visibility::VisibleLines { depth_offset: outlines.depth_offset, view }));
             }
         }
         if outline {
@@ -152,7 +157,11 @@ impl FrameEffect for OutlinesEffect {
                 }));
                 steps.outline_written = true;
             }
-            steps.readbacks.push(ReadbackRequest { name: "readback_outline", target: Target::Outline, output: Output::Outline });
+            steps.readbacks.push(ReadbackRequest {
+                name: "readback_outline",
+                target: Target::Outline,
+                output: Output::Outline,
+            });
         }
     }
 }

@@ -8,9 +8,9 @@ use serde::{Deserialize, Serialize};
 use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
 use crate::edges::outlines::LineKind;
 use crate::edges::DEFAULT_CREASE_ANGLE;
+use crate::error::field;
 use crate::error::{Error, Result};
 use crate::render::color::{check_unit, Srgb};
-use crate::error::field;
 
 /// Width of lines in output pixels when none is given.
 pub const DEFAULT_WIDTH: f32 = 1.5;
@@ -158,10 +158,7 @@ impl Outlines {
             [("normal_threshold", self.normal_threshold), ("depth_threshold", self.depth_threshold)]
         {
             if !(t.is_finite() && t >= 0.0) {
-                return Err(Error::invalid(
-                    field(prefix, name),
-                    format!("must be finite and >= 0, got {t}"),
-                ));
+                return Err(Error::invalid(field(prefix, name), format!("must be finite and >= 0, got {t}")));
             }
         }
         if !(self.depth_offset.is_finite() && self.depth_offset >= 0.0) {

@@ -61,7 +61,13 @@ pub struct Projector {
 impl Projector {
     /// Projects the lines of `item` (a mesh stored with `placement`) into an image of
     /// `width` x `height` pixels, in normalised view units (like the GPU).
-    pub fn of(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera, width: u32, height: u32) -> Self {
+    pub fn of(
+        item: &SceneItem,
+        placement: &Placement,
+        cam: &ResolvedCamera,
+        width: u32,
+        height: u32,
+    ) -> Self {
         Projector {
             model_view: model_view(item, placement, cam),
             proj: cam.normalized_proj(),
@@ -255,8 +261,12 @@ impl HostStep for VisibleLines {
 
     fn run(&self, cx: &HostInputs<'_>, report: &mut FrameReport) -> Result<()> {
         let frame = &cx.scene.frame;
-        let depth = cx.depth.ok_or_else(|| Error::Internal("visible lines without the frame's depth".into()))?;
-        let view = self.view.get().ok_or_else(|| Error::Internal("visible lines without the view's lines".into()))?;
+        let depth =
+            cx.depth.ok_or_else(|| Error::Internal("visible lines without the frame's depth".into()))?;
+        let view = self
+            .view
+            .get()
+            .ok_or_else(|| Error::Internal("visible lines without the view's lines".into()))?;
         let rule = Visibility::of(self.depth_offset, cx.cam, frame.height);
         let img = DepthImage { depth, width: frame.width as usize, height: frame.height as usize };
         let mut out = Vec::new();
@@ -267,14 +277,23 @@ impl HostStep for VisibleLines {
             kinds.sort_unstable();
             kinds.dedup();
             for kind in kinds {
-                let edges: Vec<[u32; 2]> =
-                    outline.edges.iter().zip(&outline.kinds).filter(|(_, k)| **k == kind).map(|(e, _)| *e).collect();
+                let edges: Vec<[u32; 2]> = outline
+                    .edges
+                    .iter()
+                    .zip(&outline.kinds)
+                    .filter(|(_, k)| **k == kind)
+                    .map(|(e, _)| *e)
+                    .collect();
                 let (flat, starts) = chain_edges(&edges);
                 for w in starts.windows(2) {
                     let screen: Vec<_> = flat[w[0] as usize..w[1] as usize]
                         .windows(2)
                         .filter_map(|s| {
-                            projector.project(positions[s[0] as usize], positions[s[1] as usize], kind as usize)
+                            projector.project(
+                                positions[s[0] as usize],
+                                positions[s[1] as usize],
+                                kind as usize,
+                            )
                         })
                         .collect();
                     out.extend(

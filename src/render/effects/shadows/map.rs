@@ -3,9 +3,9 @@
 
 use crate::error::Result;
 use crate::render::gpu_mesh::GpuMesh;
+use crate::render::graph::build::{cull_bits, nearest_wins};
 use crate::render::graph::target::{Access, Target, Use};
 use crate::render::graph::{depth_buffer, FrameCtx, Pass, Recorder};
-use crate::render::graph::build::{cull_bits, nearest_wins};
 use crate::render::pipelines::PipelineKey;
 
 pub const WGSL: &str = include_str!("map.wgsl");

@@ -4,10 +4,10 @@
 use std::sync::Arc;
 
 use crate::error::Result;
+use crate::render::graph::build::fullscreen_pipeline;
 use crate::render::graph::effect::ShadeHook;
 use crate::render::graph::target::{Access, Target, Use, SHADOW_FORMAT};
 use crate::render::graph::{bits_clear, cleared, FrameCtx, Pass, Recorder};
-use crate::render::graph::build::fullscreen_pipeline;
 use crate::render::pipelines::{target, PipelineKey};
 
 use super::ShadowTest;

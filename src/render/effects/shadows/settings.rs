@@ -3,8 +3,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::{Error, Result};
 use crate::error::field;
+use crate::error::{Error, Result};
 
 /// The shadow map's side when none is given, in texels.
 pub const DEFAULT_SHADOW_SIZE: u32 = 2048;

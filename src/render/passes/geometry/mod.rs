@@ -37,12 +37,21 @@ impl Pass for Geometry {
                 mesh_pipeline(
                     f,
                     &module,
-                    MeshDraw { label: "gbuffer", entry, targets: &targets, samples: 1, constants: &[], more: &[], cull },
+                    MeshDraw {
+                        label: "gbuffer",
+                        entry,
+                        targets: &targets,
+                        samples: 1,
+                        constants: &[],
+                        more: &[],
+                        cull,
+                    },
                 )
             })
         };
         let attachments = [cleared(f.res.view(Target::Geometry), geometry_clear(layout))];
-        let mut pass = rec.begin("gbuffer", &attachments, depth_buffer(f.res.view(Target::GeometryDepth), false));
+        let mut pass =
+            rec.begin("gbuffer", &attachments, depth_buffer(f.res.view(Target::GeometryDepth), false));
         f.draw_meshes(&mut pass, |d| pipeline(d.cull));
         Ok(())
     }

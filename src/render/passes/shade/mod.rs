@@ -118,7 +118,10 @@ impl Pass for Shade {
                 depth_slice: None,
                 resolve_target: Some(single),
                 // the samples are needed only until they are resolved
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(f.background), store: wgpu::StoreOp::Discard },
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(f.background),
+                    store: wgpu::StoreOp::Discard,
+                },
             })
         } else {
             cleared(single, f.background)
