@@ -8,6 +8,7 @@ pub mod edges;
 pub mod error;
 pub mod huge_pages;
 pub mod mesh;
+pub mod names;
 pub mod parallel;
 pub mod real;
 pub mod render;

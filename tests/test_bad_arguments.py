@@ -531,6 +531,12 @@ UNIT = Number(0.0, 1.0)
 
 EDGE_INDEX = te.EdgeIndex(V, F)
 
+# A mesh's arrays, and a crease threshold in degrees.
+MESH_PARAMS = [Param("vertices", VERTICES), Param("faces", FACES)]
+CREASE = Param("crease_angle", Number(0.0, 180.0))
+# A generated shape's noise (relative to its size) and seed.
+NOISE_AND_SEED = [Param("noise", Number(0.0, math.inf, open_hi=True)), Param("seed", Integer(0, 2**64 - 1))]
+
 CASES: List[Case] = [
     Case(
         "smooth.laplacian",
@@ -571,17 +577,10 @@ CASES: List[Case] = [
         ],
         also=(tm.ConvergenceError,),
     ),
-    Case(
-        "edges.feature_edges",
-        te.feature_edges,
-        _mesh(crease_angle=20.0, weld=False),
-        [
-            Param("vertices", VERTICES),
-            Param("faces", FACES),
-            Param("crease_angle", Number(0.0, 180.0)),
-            Param("weld", Flag()),
-        ],
-    ),
+    *[
+        Case(name, call, _mesh(crease_angle=20.0, weld=False), [*MESH_PARAMS, CREASE, Param("weld", Flag())])
+        for name, call in (("edges.feature_edges", te.feature_edges), ("edges.EdgeIndex", te.EdgeIndex))
+    ],
     Case(
         "edges.silhouette",
         te.silhouette,
@@ -599,17 +598,7 @@ CASES: List[Case] = [
         _mesh(direction=(0.3, 0.2, -1.0)),
         [Param("direction", vec3("direction", ValueError), none=ValueError)],
     ),
-    Case(
-        "edges.EdgeIndex",
-        te.EdgeIndex,
-        _mesh(crease_angle=20.0, weld=False),
-        [
-            Param("vertices", VERTICES),
-            Param("faces", FACES),
-            Param("crease_angle", Number(0.0, 180.0)),
-            Param("weld", Flag()),
-        ],
-    ),
+
     Case(
         "edges.EdgeIndex.feature_edges",
         EDGE_INDEX.feature_edges,
@@ -669,21 +658,13 @@ CASES: List[Case] = [
         "shapes.icosphere",
         tm.shapes.icosphere,
         dict(subdivisions=1, noise=0.1, seed=0),
-        [
-            Param("subdivisions", Integer(0, 10, slow_above=4)),
-            Param("noise", Number(0.0, math.inf, open_hi=True)),
-            Param("seed", Integer(0, 2**64 - 1)),
-        ],
+        [Param("subdivisions", Integer(0, 10, slow_above=4)), *NOISE_AND_SEED],
     ),
     Case(
         "shapes.grid",
         tm.shapes.grid,
         dict(n=5, noise=0.1, seed=0),
-        [
-            Param("n", Integer(2, 4096, slow_above=64)),
-            Param("noise", Number(0.0, math.inf, open_hi=True)),
-            Param("seed", Integer(0, 2**64 - 1)),
-        ],
+        [Param("n", Integer(2, 4096, slow_above=64)), *NOISE_AND_SEED],
     ),
     Case(
         "shapes.torus",

@@ -61,11 +61,16 @@ SCRIPT = textwrap.dedent(
 )
 
 
+def run_script(script: str) -> dict:
+    """Runs `script` in a process of its own (it interrupts itself) and reads the JSON it prints last."""
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
 @pytest.mark.skipif(sys.platform == "win32", reason="sends SIGINT to itself")
 def test_ctrl_c_stops_long_smoothing_quickly():
-    done = subprocess.run([sys.executable, "-c", SCRIPT], capture_output=True, text=True, timeout=300)
-    assert done.returncode == 0, done.stderr
-    out = json.loads(done.stdout.strip().splitlines()[-1])
+    out = run_script(SCRIPT)
     for name in ("laplacian", "taubin", "hc", "cotangent", "implicit"):
         assert "latency" in out[name], f"{name} ran to the end: {out[name]}"
         # Checked every 5 ms; a generous bound for a loaded 2-core machine.
@@ -106,9 +111,7 @@ RENDER_SCRIPT = textwrap.dedent(
 
 @pytest.mark.skipif(sys.platform == "win32", reason="sends SIGINT to itself")
 def test_ctrl_c_stops_a_stream_of_views_between_frames():
-    done = subprocess.run([sys.executable, "-c", RENDER_SCRIPT], capture_output=True, text=True, timeout=300)
-    assert done.returncode == 0, done.stderr
-    out = json.loads(done.stdout.strip().splitlines()[-1])
+    out = run_script(RENDER_SCRIPT)
     # 2000 views take many seconds here; a frame or three in flight take milliseconds
     assert "latency" in out, f"render_many ran to the end: {out}"
     assert out["latency"] < 1.0, f"render_many took {out['latency']:.3f} s to stop"

@@ -20,6 +20,19 @@ V, F = _core.icosphere(3, 0.0, 0)
 
 def image(backend=None):
     return tm.render(V, F, width=24, height=24, backend=backend).color
+
+# runs `work` in a forked child (which always exits), then prints its exit status
+def in_child(work):
+    pid = os.fork()
+    if pid == 0:
+        code = 1
+        try:
+            work()
+            code = 0
+        finally:
+            os._exit(code)
+    _, status = os.waitpid(pid, 0)
+    print("status", status)
 """
 
 
@@ -34,22 +47,17 @@ def test_a_forked_child_renders_with_a_fresh_context():
         parent = image("vulkan")
         r = tm.Renderer("vulkan")
         mesh = r.add_mesh(V, F)
-        pid = os.fork()
-        if pid == 0:
-            code = 1
+
+        def child():
+            same = np.array_equal(image("vulkan"), parent)
             try:
-                same = np.array_equal(image("vulkan"), parent)
-                try:
-                    r.render(mesh)
-                    old = "rendered"
-                except tm.GpuError as e:
-                    old = "refused: " + str(e)
-                print("child", same, old, flush=True)
-                code = 0
-            finally:
-                os._exit(code)
-        _, status = os.waitpid(pid, 0)
-        print("status", status)
+                r.render(mesh)
+                old = "rendered"
+            except tm.GpuError as e:
+                old = "refused: " + str(e)
+            print("child", same, old, flush=True)
+
+        in_child(child)
     """)
     assert "child True refused: this renderer was made before the process forked" in out
     assert "status 0" in out
@@ -58,22 +66,17 @@ def test_a_forked_child_renders_with_a_fresh_context():
 def test_gl_in_a_forked_child_refuses_at_once_and_auto_uses_vulkan():
     out = run("""
         parent = image("gl")
-        pid = os.fork()
-        if pid == 0:
-            code = 1
+
+        def child():
+            t = time.perf_counter()
             try:
-                t = time.perf_counter()
-                try:
-                    image("gl")
-                    print("gl rendered")
-                except tm.GpuError as e:
-                    print("gl refused", "spawn" in str(e), time.perf_counter() - t < 5.0)
-                print("auto", tm.gpu_info()["backend"], image().shape, flush=True)
-                code = 0
-            finally:
-                os._exit(code)
-        _, status = os.waitpid(pid, 0)
-        print("status", status)
+                image("gl")
+                print("gl rendered")
+            except tm.GpuError as e:
+                print("gl refused", "spawn" in str(e), time.perf_counter() - t < 5.0)
+            print("auto", tm.gpu_info()["backend"], image().shape, flush=True)
+
+        in_child(child)
     """)
     assert "gl refused True True" in out
     assert "auto vulkan (24, 24, 4)" in out and "status 0" in out

@@ -33,31 +33,17 @@ from toonmesh._render import (
     render,
 )
 
+from toonmesh._render import __all__ as _rendering
+
 __all__ = [
-    "Camera",
-    "Dither",
-    "shapes",
-    "smooth",
+    *_rendering,
     "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",
-    "Light",
-    "LineStyle",
-    "Material",
-    "Mesh",
-    "MeshHandle",
-    "Outlines",
-    "RenderKeywords",
-    "RenderOptions",
-    "RenderResult",
-    "RenderStack",
-    "Renderer",
-    "Shadows",
     "__version__",
     "edges",
     "get_num_threads",
-    "gpu_info",
-    "kang_table",
-    "render",
     "set_num_threads",
+    "shapes",
+    "smooth",
 ]

@@ -50,8 +50,9 @@ def render_views(
     **render_options: Any,
 ) -> List[Dict[str, Any]]:
     """Renders one mesh file into ``files``, one view each (a turntable about ``up`` when there
-    are several files, unless ``camera`` is given with one file). Returns one dict per file:
-    see :func:`render_files`."""
+    are several files, unless ``camera`` is given with one file). ``render_options``: the
+    keywords of :class:`toonmesh.RenderOptions`. Returns one dict per file: see
+    :func:`render_files`."""
     t0 = time.perf_counter()
     if "camera" in render_options and len(files) != 1:
         raise ValueError("camera: give either a camera or several views, not both")
@@ -92,17 +93,7 @@ def render_file(mesh_path: str, out_dir: str, *, views: int = 1, **options: Any)
 
 
 def render_files(
-    paths: Sequence[str],
-    out_dir: str,
-    *,
-    views: int = 1,
-    client: Any = None,
-    up: str = "y",
-    backend: Optional[str] = None,
-    smooth_iterations: int = 0,
-    smooth_method: str = "paper",
-    normals: Normals = "smooth",
-    **render_options: Any,
+    paths: Sequence[str], out_dir: str, *, views: int = 1, client: Any = None, **options: Any
 ) -> List[Dict[str, Any]]:
     """Renders every mesh file in ``paths`` from ``views`` views on a Dask cluster.
 
@@ -116,17 +107,15 @@ def render_files(
             view slightly from above (see ``toonmesh render --up``).
         client: a ``dask.distributed.Client``; None starts a local cluster (one worker process
             per core, one thread each) for this call and closes it afterwards.
-        up: the meshes' up axis, "x", "y" (default) or "z".
-        backend: as in :class:`toonmesh.Renderer`.
-        smooth_iterations, smooth_method: smoothing before rendering: ``"paper"`` (default) is
-            the renderer's own (each vertex to its neighbours' mean, as in
-            :func:`toonmesh.render`), or ``"laplacian"``, ``"taubin"``, ``"hc"``, ``"implicit"``
-            with that many iterations and their defaults.
-        normals: "smooth", "flat", "auto" or ("auto", degrees), as in :class:`toonmesh.Mesh`.
-        **render_options: passed to :meth:`toonmesh.Renderer.render` for every view (``width``,
-            ``height``, ``material``, ``lights``, ``outputs``, ``msaa``, ``supersample``,
-            ``background``, ...; ``camera`` only with one view). Materials, cameras and lights
-            pickle, so they travel to the workers.
+        **options: for every mesh, as :func:`render_views` takes them: ``up``, the meshes' up
+            axis, "x", "y" (default) or "z"; ``backend`` as in :class:`toonmesh.Renderer`;
+            ``smooth_iterations`` and ``smooth_method``, smoothing before rendering (``"paper"``,
+            the default, is the renderer's own, each vertex to its neighbours' mean, as in
+            :func:`toonmesh.render`; or ``"laplacian"``, ``"taubin"``, ``"hc"``, ``"implicit"``
+            with that many iterations and their defaults); ``normals``, as in
+            :class:`toonmesh.Mesh`; and the keywords of :class:`toonmesh.RenderOptions` for every
+            view (``width``, ``height``, ``material``, ``lights``, ``outputs``, ...; ``camera``
+            only with one view), which pickle, so they travel to the workers.
 
     Returns:
         A list of dicts, one per image, in the order of ``paths`` and then views: ``mesh``,
@@ -146,8 +135,6 @@ def render_files(
     paths = [os.fspath(p) for p in paths]
     check_distinct_names(paths)
     n_views = check_views(views)
-    options = dict(render_options, up=up, backend=backend, smooth_iterations=smooth_iterations,
-                   smooth_method=smooth_method, normals=normals)
     os.makedirs(out_dir, exist_ok=True)
     own = None
     if client is None:

@@ -5,7 +5,12 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
+use wgpu::TextureSampleType;
+
 use crate::render::effects::shadows::settings::ShadowFilter;
+
+const FRAGMENT: wgpu::ShaderStages = wgpu::ShaderStages::FRAGMENT;
+const VERTEX_FRAGMENT: wgpu::ShaderStages = wgpu::ShaderStages::VERTEX_FRAGMENT;
 
 /// A pipeline's name in the cache: the pass that builds it, the bits of its variant, and the
 /// pipeline constants that vary with the material.
@@ -42,30 +47,36 @@ pub struct Layouts {
     pub shadow: wgpu::BindGroupLayout,
 }
 
-fn shadow_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
-    // the vertex stage reads it too: Gouraud shading shades the vertices
-    let visibility = wgpu::ShaderStages::VERTEX_FRAGMENT;
-    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some("shadow map"),
-        entries: &[
-            wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Depth,
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            },
-            wgpu::BindGroupLayoutEntry {
-                binding: 1,
-                visibility,
-                ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
-                count: None,
-            },
-        ],
-    })
+/// A bind group layout of `entries` (binding 0, 1, ...), each seen by `visibility`.
+fn layout(
+    device: &wgpu::Device,
+    label: &str,
+    visibility: wgpu::ShaderStages,
+    entries: &[wgpu::BindingType],
+) -> wgpu::BindGroupLayout {
+    let entries: Vec<wgpu::BindGroupLayoutEntry> = entries
+        .iter()
+        .enumerate()
+        .map(|(i, &ty)| wgpu::BindGroupLayoutEntry { binding: i as u32, visibility, ty, count: None })
+        .collect();
+    device
+        .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(label), entries: &entries })
+}
+
+fn texture(sample_type: wgpu::TextureSampleType) -> wgpu::BindingType {
+    wgpu::BindingType::Texture {
+        sample_type,
+        view_dimension: wgpu::TextureViewDimension::D2,
+        multisampled: false,
+    }
+}
+
+fn uniform(dynamic: bool) -> wgpu::BindingType {
+    wgpu::BindingType::Buffer {
+        ty: wgpu::BufferBindingType::Uniform,
+        has_dynamic_offset: dynamic,
+        min_binding_size: None,
+    }
 }
 
 /// The comparison sampler of a shadow filter: one nearest test, or bilinear comparisons (PCF).
@@ -86,42 +97,6 @@ fn shadow_sampler(device: &wgpu::Device, filter: ShadowFilter) -> wgpu::Sampler 
     })
 }
 
-fn uniform_layout(device: &wgpu::Device, label: &str, dynamic: bool) -> wgpu::BindGroupLayout {
-    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some(label),
-        entries: &[wgpu::BindGroupLayoutEntry {
-            binding: 0,
-            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Uniform,
-                has_dynamic_offset: dynamic,
-                min_binding_size: None,
-            },
-            count: None,
-        }],
-    })
-}
-
-fn texture_layout(
-    device: &wgpu::Device,
-    label: &str,
-    sample_type: wgpu::TextureSampleType,
-) -> wgpu::BindGroupLayout {
-    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some(label),
-        entries: &[wgpu::BindGroupLayoutEntry {
-            binding: 0,
-            visibility: wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Texture {
-                sample_type,
-                view_dimension: wgpu::TextureViewDimension::D2,
-                multisampled: false,
-            },
-            count: None,
-        }],
-    })
-}
-
 pub struct PipelineCache {
     pub layouts: Layouts,
     /// The shadow samplers, by filter (`ShadowFilter::Nearest`, then `Pcf`).
@@ -134,15 +109,25 @@ impl PipelineCache {
     pub fn new(device: &wgpu::Device) -> Self {
         PipelineCache {
             layouts: Layouts {
-                frame: uniform_layout(device, "frame uniforms", false),
-                draw: uniform_layout(device, "draw uniforms", true),
-                uint_texture: texture_layout(device, "uint texture", wgpu::TextureSampleType::Uint),
-                float_texture: texture_layout(
+                frame: layout(device, "frame uniforms", VERTEX_FRAGMENT, &[uniform(false)]),
+                draw: layout(device, "draw uniforms", VERTEX_FRAGMENT, &[uniform(true)]),
+                uint_texture: layout(device, "uint texture", FRAGMENT, &[texture(TextureSampleType::Uint)]),
+                float_texture: layout(
                     device,
                     "float texture",
-                    wgpu::TextureSampleType::Float { filterable: false },
+                    FRAGMENT,
+                    &[texture(TextureSampleType::Float { filterable: false })],
                 ),
-                shadow: shadow_layout(device),
+                // the vertex stage reads it too: Gouraud shading shades the vertices
+                shadow: layout(
+                    device,
+                    "shadow map",
+                    VERTEX_FRAGMENT,
+                    &[
+                        texture(TextureSampleType::Depth),
+                        wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
+                    ],
+                ),
             },
             shadow_samplers: [
                 shadow_sampler(device, ShadowFilter::Nearest),

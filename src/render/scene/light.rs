@@ -21,21 +21,12 @@ pub enum LightKind {
     Point { position: [f64; 3] },
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Space {
-    World,
-    /// Fixed to the camera: x right, y up, -z forward (a light that moves with the view).
-    Camera,
-}
-
-impl Space {
-    pub fn parse(arg: &str, s: &str) -> Result<Self> {
-        match s {
-            "world" => Ok(Self::World),
-            "camera" => Ok(Self::Camera),
-            other => Err(Error::invalid(arg, format!("must be 'world' or 'camera', got {other:?}"))),
-        }
+crate::named_enum! {
+    /// What a light's direction or position is given in.
+    pub enum Space {
+        World = "world",
+        /// Fixed to the camera: x right, y up, -z forward (a light that moves with the view).
+        Camera = "camera",
     }
 }
 
@@ -116,10 +107,7 @@ impl Light {
     }
 
     pub fn space_name(&self) -> &'static str {
-        match self.space {
-            Space::World => "world",
-            Space::Camera => "camera",
-        }
+        self.space.name()
     }
 
     pub fn to_view(&self, view: &DMat4) -> ViewLight {

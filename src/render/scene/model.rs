@@ -22,28 +22,12 @@ pub const DEFAULT_T_H: f32 = 0.0;
 pub const DEFAULT_T_S: f32 = 0.95;
 pub const DEFAULT_SHININESS: f32 = 32.0;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Highlight {
-    /// thresh(L.v, t_s), as Al-Rousan et al. write it.
-    Paper,
-    /// thresh(n.h, t_s) with h = normalize(L + v): the usual Blinn-Phong highlight.
-    Blinn,
-}
-
-impl Highlight {
-    pub const NAMES: [&'static str; 2] = ["paper", "blinn"];
-
-    pub fn parse(arg: &str, s: &str) -> Result<Self> {
-        match s {
-            "paper" => Ok(Self::Paper),
-            "blinn" => Ok(Self::Blinn),
-            other => Err(Error::invalid(arg, format!("must be 'paper' or 'blinn', got {other:?}"))),
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        Self::NAMES[self as usize]
+crate::named_enum! {
+    pub enum Highlight {
+        /// thresh(L.v, t_s), as Al-Rousan et al. write it.
+        Paper = "paper",
+        /// thresh(n.h, t_s) with h = normalize(L + v): the usual Blinn-Phong highlight.
+        Blinn = "blinn",
     }
 }
 

@@ -72,17 +72,14 @@ struct VsIn {
     @location(1) normal: vec3<f32>,
 };
 
-// What the vertex stage passes on. A fragment stage reads `Varyings` always and `Anchors` only
-// when its material needs them (`ShadingVariant::anchored`): a CPU rasteriser sets up every
-// input a fragment stage reads for every triangle, which on small triangles costs as much as
-// the shading. `VsOut` is the two together (the locations must match).
-struct Varyings {
+// What the vertex stage passes on (`VsOut`). A fragment stage reads `Varyings`, its first
+// three, unless its material needs the anchors (`ShadingVariant::anchored`): a CPU rasteriser
+// sets up every input a fragment stage reads for every triangle, which on small triangles
+// costs as much as the shading.
+struct VsOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) view_pos: vec3<f32>,
     @location(1) view_normal: vec3<f32>,
-};
-
-struct Anchors {
     @location(2) color_front: vec3<f32>,
     @location(3) color_back: vec3<f32>,
     // the mesh's stored coordinates and normal: what hatching and dithering anchor to
@@ -90,15 +87,27 @@ struct Anchors {
     @location(5) object_normal: vec3<f32>,
 };
 
-struct VsOut {
+struct Varyings {
     @builtin(position) clip: vec4<f32>,
     @location(0) view_pos: vec3<f32>,
     @location(1) view_normal: vec3<f32>,
-    @location(2) color_front: vec3<f32>,
-    @location(3) color_back: vec3<f32>,
-    @location(4) object_pos: vec3<f32>,
-    @location(5) object_normal: vec3<f32>,
 };
+
+// The rest of `VsOut`: Gouraud colours and the anchors.
+struct Anchors {
+    color_front: vec3<f32>,
+    color_back: vec3<f32>,
+    object_pos: vec3<f32>,
+    object_normal: vec3<f32>,
+};
+
+fn varyings(v: VsOut) -> Varyings {
+    return Varyings(v.clip, v.view_pos, v.view_normal);
+}
+
+fn anchors(v: VsOut) -> Anchors {
+    return Anchors(v.color_front, v.color_back, v.object_pos, v.object_normal);
+}
 
 // What a per-pixel effect's hooks see of the pixel (src/render/effects/surface.rs).
 struct Fragment {

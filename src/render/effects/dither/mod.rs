@@ -16,37 +16,23 @@ pub const DEFAULT_DITHER_AMOUNT: f64 = 0.15;
 /// The R2 sequence's steps along x and y (Roberts): 1/g and 1/g^2, g the plastic number.
 pub const R2_STEPS: [f64; 2] = [0.754_877_666_246_692_7, 0.569_840_290_998_053_2];
 
-/// The threshold pattern of dithering.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum DitherPattern {
-    /// Ordered dithering with a 2x2, 4x4 or 8x8 Bayer matrix.
-    Bayer2 = 1,
-    Bayer4 = 2,
-    Bayer8 = 3,
-    /// The R2 low-discrepancy sequence (Roberts): a pattern without the Bayer matrix's grid,
-    /// whose spectrum is close to blue noise.
-    Blue = 4,
+crate::named_enum! {
+    /// The threshold pattern of dithering.
+    pub enum DitherPattern {
+        /// Ordered dithering with a 2x2, 4x4 or 8x8 Bayer matrix.
+        Bayer2 = "bayer2",
+        Bayer4 = "bayer4",
+        Bayer8 = "bayer8",
+        /// The R2 low-discrepancy sequence (Roberts): a pattern without the Bayer matrix's grid,
+        /// whose spectrum is close to blue noise.
+        Blue = "blue",
+    }
 }
 
 impl DitherPattern {
-    pub const NAMES: [&'static str; 4] = ["bayer2", "bayer4", "bayer8", "blue"];
-
-    pub fn parse(arg: &str, s: &str) -> Result<Self> {
-        match s {
-            "bayer2" => Ok(Self::Bayer2),
-            "bayer4" => Ok(Self::Bayer4),
-            "bayer8" => Ok(Self::Bayer8),
-            "blue" => Ok(Self::Blue),
-            other => Err(Error::invalid(
-                arg,
-                format!("must be 'bayer2', 'bayer4', 'bayer8' or 'blue', got {other:?}"),
-            )),
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        Self::NAMES[self as usize - 1]
+    /// The pattern's id in the shader (`DITHER`; 0 is none).
+    pub fn id(self) -> u32 {
+        self as u32 + 1
     }
 
     /// The threshold in (0, 1) at cell (x, y): the CPU reference of `dither_threshold` in
@@ -70,30 +56,14 @@ impl DitherPattern {
     }
 }
 
-/// Where the pattern is anchored.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum DitherSpace {
-    /// Pixels, as in the paper: the pattern stays still while the object moves under it.
-    Screen,
-    /// The object's surface (a planar projection on the axis the normal is closest to, at the
-    /// octave whose cells are about `scale` pixels): it moves with the object.
-    Object,
-}
-
-impl DitherSpace {
-    pub const NAMES: [&'static str; 2] = ["screen", "object"];
-
-    pub fn parse(arg: &str, s: &str) -> Result<Self> {
-        match s {
-            "screen" => Ok(Self::Screen),
-            "object" => Ok(Self::Object),
-            other => Err(Error::invalid(arg, format!("must be 'screen' or 'object', got {other:?}"))),
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        Self::NAMES[self as usize]
+crate::named_enum! {
+    /// Where the pattern is anchored.
+    pub enum DitherSpace {
+        /// Pixels, as in the paper: the pattern stays still while the object moves under it.
+        Screen = "screen",
+        /// The object's surface (a planar projection on the axis the normal is closest to, at
+        /// the octave whose cells are about `scale` pixels): it moves with the object.
+        Object = "object",
     }
 }
 
@@ -157,7 +127,7 @@ impl SurfaceEffect for DitherEffect {
     type Settings = Dither;
 
     fn wgsl(&self) -> String {
-        let mut s = wgsl::constant_u32("DITHER_BLUE", DitherPattern::Blue as u32);
+        let mut s = wgsl::constant_u32("DITHER_BLUE", DitherPattern::Blue.id());
         s += &wgsl::constant_f32("R2_STEP_X", R2_STEPS[0]);
         s += &wgsl::constant_f32("R2_STEP_Y", R2_STEPS[1]);
         s + include_str!("dither.wgsl")
@@ -201,7 +171,7 @@ impl SurfaceEffect for DitherEffect {
         let object = dither.is_some_and(|d| d.space == DitherSpace::Object);
         Variant {
             constants: vec![
-                ("DITHER", dither.map_or(0, |d| d.pattern as u32) as f64),
+                ("DITHER", dither.map_or(0, |d| d.pattern.id()) as f64),
                 ("DITHER_OBJECT", object as u32 as f64),
             ],
             anchored: object,

@@ -16,34 +16,18 @@ pub const SHADOW_SIZES: std::ops::RangeInclusive<u32> = 64..=8192;
 /// surfaces that graze the light would otherwise get a bias without bound.
 pub const MAX_BIAS_SLOPE: f64 = 8.0;
 
-/// How the shadow map is read.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[repr(u8)]
-pub enum ShadowFilter {
-    /// One test against the nearest texel: hard, aliased edges.
-    #[serde(rename = "none")]
-    Nearest = 0,
-    /// Percentage-closer filtering: four bilinear comparisons (a tent over 3x3 texels), soft
-    /// edges a few texels wide.
-    #[serde(rename = "pcf")]
-    Pcf = 1,
+crate::named_enum! {
+    /// How the shadow map is read.
+    pub enum ShadowFilter {
+        /// One test against the nearest texel: hard, aliased edges.
+        Nearest = "none",
+        /// Percentage-closer filtering: four bilinear comparisons (a tent over 3x3 texels), soft
+        /// edges a few texels wide.
+        Pcf = "pcf",
+    }
 }
 
 impl ShadowFilter {
-    pub const NAMES: [&'static str; 2] = ["none", "pcf"];
-
-    pub fn parse(arg: &str, s: &str) -> Result<Self> {
-        match s {
-            "none" => Ok(Self::Nearest),
-            "pcf" => Ok(Self::Pcf),
-            other => Err(Error::invalid(arg, format!("must be 'none' or 'pcf', got {other:?}"))),
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        Self::NAMES[self as usize]
-    }
-
     /// How far from its centre a lookup reads, in texels (the bias must cover that distance):
     /// PCF's four bilinear taps sit half a texel off centre (shadow_test.wgsl).
     pub fn reach(self) -> f64 {

@@ -29,8 +29,8 @@ fn fs_color(i: Varyings, @builtin(front_facing) front_facing: bool) -> @location
 }
 
 @fragment
-fn fs_color_anchored(i: Varyings, a: Anchors, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
-    return shaded_color(i, a, front_facing);
+fn fs_color_anchored(v: VsOut, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    return shaded_color(varyings(v), anchors(v), front_facing);
 }
 
 struct ColorNormalDepth {
@@ -44,8 +44,9 @@ fn fs_color_normal_depth(i: Varyings, @builtin(front_facing) front_facing: bool)
 }
 
 @fragment
-fn fs_color_normal_depth_anchored(i: Varyings, a: Anchors, @builtin(front_facing) front_facing: bool) -> ColorNormalDepth {
-    return ColorNormalDepth(shaded_color(i, a, front_facing), normal_depth_bits(i, front_facing));
+fn fs_color_normal_depth_anchored(v: VsOut, @builtin(front_facing) front_facing: bool) -> ColorNormalDepth {
+    let i = varyings(v);
+    return ColorNormalDepth(shaded_color(i, anchors(v), front_facing), normal_depth_bits(i, front_facing));
 }
 
 struct ColorDepth {
@@ -59,6 +60,7 @@ fn fs_color_depth(i: Varyings, @builtin(front_facing) front_facing: bool) -> Col
 }
 
 @fragment
-fn fs_color_depth_anchored(i: Varyings, a: Anchors, @builtin(front_facing) front_facing: bool) -> ColorDepth {
-    return ColorDepth(shaded_color(i, a, front_facing), depth_bits(i));
+fn fs_color_depth_anchored(v: VsOut, @builtin(front_facing) front_facing: bool) -> ColorDepth {
+    let i = varyings(v);
+    return ColorDepth(shaded_color(i, anchors(v), front_facing), depth_bits(i));
 }
