@@ -18,7 +18,7 @@ $(BIN)/maturin:
 
 # the io extra: trimesh (mesh files) and tqdm (progress bars) for the toonmesh command
 build: sysdeps $(BIN)/maturin
-	$(BIN)/maturin develop --release -q -E io
+	$(BIN)/maturin develop --release -E io
 
 build-test: sysdeps $(BIN)/maturin
 	$(BIN)/maturin develop --release -q -E test

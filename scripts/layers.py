@@ -21,7 +21,7 @@ SRC = Path(__file__).resolve().parent.parent / "src"
 
 # Lowest first. A module belongs to the first pattern that matches its path.
 LAYERS: List[List[str]] = [
-    ["error", "real", "cancel", "parallel", "huge_pages"],
+    ["error", "real", "cancel", "parallel", "huge_pages", "names"],
     ["mesh", "mesh::*"],
     ["edges", "edges::*", "smooth", "smooth::*"],
     # plain data: settings, uniform blocks, WGSL text, and the per-pixel effects (no device)

@@ -32,18 +32,8 @@ pub type Ring = [u32; 2];
 /// A corner with the vertices after and before it and its id, `[next, prev, face * 3 + k]`.
 pub type RingCorner = [u32; 3];
 
-impl Corner for Ring {
-    #[inline(always)]
-    fn next(&self) -> u32 {
-        self[0]
-    }
-    #[inline(always)]
-    fn prev(&self) -> u32 {
-        self[1]
-    }
-}
-
-impl Corner for RingCorner {
+/// `Ring` and `RingCorner`: the next and previous vertices come first.
+impl<const N: usize> Corner for [u32; N] {
     #[inline(always)]
     fn next(&self) -> u32 {
         self[0]

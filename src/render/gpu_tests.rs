@@ -16,6 +16,29 @@ use super::scene::model::{kang_table, Highlight, Model};
 use super::scene::{FrameSpec, Output, Outputs, Scene, SceneItem, IDENTITY};
 use crate::mesh::shapes::icosphere;
 
+/// Opens a renderer as the package does: with a private runtime directory where the environment
+/// has none, so that Mesa's Wayland probe does not print "XDG_RUNTIME_DIR is invalid" into the
+/// test log (the Python package does the same at import, in `_runtime_dir.py`).
+fn open(backend: BackendChoice) -> crate::error::Result<Renderer> {
+    static RUNTIME_DIR: std::sync::Once = std::sync::Once::new();
+    RUNTIME_DIR.call_once(|| {
+        let usable = std::env::var_os("XDG_RUNTIME_DIR")
+            .map(std::path::PathBuf::from)
+            .is_some_and(|p| p.is_absolute() && p.is_dir());
+        if !usable {
+            // One fixed directory, reused by every test run, so that runs leave nothing behind.
+            let dir = std::env::temp_dir().join("toonmesh-test-runtime");
+            if std::fs::create_dir_all(&dir).is_ok() {
+                use std::os::unix::fs::PermissionsExt;
+                let _ = std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700));
+                // Set before any device opens (tests that open one come through here first).
+                std::env::set_var("XDG_RUNTIME_DIR", &dir);
+            }
+        }
+    });
+    Renderer::new(backend)
+}
+
 fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene {
     let (v, f) = icosphere(4, 0.0, 0).unwrap();
     let id = r.add_mesh(&v, f, normals).unwrap();
@@ -114,7 +137,7 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
         Model::Lut { table: kang_table() },
     ];
     for backend in backends() {
-        let r = Renderer::new(backend).expect("a GPU adapter (install Mesa's lavapipe/llvmpipe)");
+        let r = open(backend).expect("a GPU adapter (install Mesa's lavapipe/llvmpipe)");
         for model in &models {
             let material = Material {
                 model: model.clone(),
@@ -138,7 +161,7 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
 #[test]
 fn odd_and_tiny_sizes_read_back_whole_rows() {
     for backend in backends() {
-        let r = Renderer::new(backend).unwrap();
+        let r = open(backend).unwrap();
         let scene = sphere_scene(&r, Material::default(), NormalMode::Flat);
         for (w, h) in [(301, 199), (1, 1), (3, 2)] {
             let out = r.render(&scene, &all_outputs(w, h)).unwrap();
@@ -151,7 +174,7 @@ fn odd_and_tiny_sizes_read_back_whole_rows() {
 
 #[test]
 fn empty_scene_is_background() {
-    let r = Renderer::new(BackendChoice::Auto).unwrap();
+    let r = open(BackendChoice::Auto).unwrap();
     let scene = Scene { lights: vec![], ambient: [0.0; 3], ..Default::default() };
     let frame = FrameSpec { background: [0.2, 0.4, 0.6, 1.0], ..all_outputs(5, 4) };
     let out = r.render(&scene, &frame).unwrap();
@@ -224,7 +247,7 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
     use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
     let outlines = Outlines { crease_angle: 25.0, ..Outlines::new(true, false) };
     for backend in backends() {
-        let r = Renderer::new(backend).unwrap();
+        let r = open(backend).unwrap();
         let scene = two_spheres(&r, outlines.clone());
         let frame = FrameSpec {
             width: 240,
@@ -262,7 +285,7 @@ fn image_edges_match_the_cpu_rule_on_the_same_buffers_on_both_backends() {
     use super::effects::outlines::edges_reference::edge_mask;
     let outlines = Outlines { depth_threshold: 0.05, ..Outlines::new(false, true) };
     for backend in backends() {
-        let r = Renderer::new(backend).unwrap();
+        let r = open(backend).unwrap();
         let scene = two_spheres(&r, outlines.clone());
         let frame = FrameSpec {
             width: 199,

@@ -7,7 +7,7 @@
 //! An effect's WGSL defines its block struct (`draw.<name>` in every shader) and implements
 //! hooks the shading pass calls for every pixel (`surface_effect::Hook`), named
 //! `<name>_<hook>`; the dispatch functions that call every effect's hooks in order are written
-//! from this list. Adding one is a folder and a line in the `surface_effects!` list.
+//! from this list. Adding one is a folder and a line in the `registry!` list below.
 
 use serde::{Deserialize, Serialize};
 
