@@ -1,11 +1,12 @@
 //! Triangle meshes: checked input, connectivity (face items bucketed by vertex, and what is
-//! derived from them: one-rings and the edge table), welding, bounding boxes and procedural
-//! shapes.
+//! derived from them: one-rings and the edge table), welding, bounding boxes, curvature and
+//! procedural shapes.
 
 pub mod adjacency;
 pub mod bounds;
 pub mod buckets;
 pub mod crease_normals;
+pub mod curvature;
 pub mod dihedral;
 pub mod edge_table;
 pub mod enclosure;

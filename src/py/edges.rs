@@ -20,6 +20,7 @@ use crate::edges::outlines::Statics;
 use crate::edges::sobel::{sobel, Convention, Output};
 use crate::edges::{find_feature_edges, EdgeIndex, View};
 use crate::error::{Error, Result};
+use crate::mesh::curvature::curvature;
 use crate::real::Real;
 
 type Pairs<'py> = Bound<'py, PyArray2<i64>>;
@@ -103,6 +104,39 @@ fn _silhouette<'py>(
     let s =
         mesh.run(py, faces, |p, f, _| on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)))?;
     Ok(pairs_to_numpy(py, s))
+}
+
+/// k1, k2 (N,), d1, d2, normals (N, 3), derivatives (N, 4), all float64
+type CurvatureOut<'py> = (
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f64>>,
+);
+
+fn rows_to_numpy<const K: usize>(py: Python<'_>, rows: Vec<[f64; K]>) -> Bound<'_, PyArray2<f64>> {
+    let n = rows.len();
+    Array2::from_shape_vec((n, K), rows.into_iter().flatten().collect()).expect("n * K").into_pyarray(py)
+}
+
+#[pyfunction]
+fn _curvature<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+) -> PyResult<CurvatureOut<'py>> {
+    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let c = mesh.run(py, faces, |p, f, cancel| on_positions!(p, v => curvature(v, f, cancel)))?;
+    Ok((
+        vec_to_numpy(py, c.k1),
+        vec_to_numpy(py, c.k2),
+        rows_to_numpy(py, c.d1),
+        rows_to_numpy(py, c.d2),
+        rows_to_numpy(py, c.normals),
+        rows_to_numpy(py, c.derivatives),
+    ))
 }
 
 /// The once-per-mesh part of outline finding; immutable, so one index serves many threads.
@@ -369,6 +403,7 @@ fn _paper_edges<'py>(
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_feature_edges, m)?)?;
     m.add_function(wrap_pyfunction!(_silhouette, m)?)?;
+    m.add_function(wrap_pyfunction!(_curvature, m)?)?;
     m.add_function(wrap_pyfunction!(_chains, m)?)?;
     m.add_function(wrap_pyfunction!(_sobel, m)?)?;
     m.add_function(wrap_pyfunction!(_paper_edges, m)?)?;

@@ -131,6 +131,50 @@ def sobel_rows(size: int, repeat: int) -> List[Sequence[Any]]:
     return rows
 
 
+def _ellipsoid(subdivisions: int) -> Any:
+    """An ellipsoid (1, 0.7, 0.5) from an icosphere, with its exact mean curvature per vertex."""
+    V, F = _core.icosphere(subdivisions, 0.0, 0)
+    a, b, c = 1.0, 0.7, 0.5
+    V = V * [a, b, c]
+    x, y, z = V.T
+    q = x**2 / a**4 + y**2 / b**4 + z**2 / c**4
+    mean = -(x**2 + y**2 + z**2 - a**2 - b**2 - c**2) / (2 * (a * b * c) ** 2 * q**1.5)
+    return V, F, mean
+
+
+def curvature_rows(subdivisions: int, repeat: int) -> List[Sequence[Any]]:
+    """Principal curvature on an ellipsoid: time and median relative error of the mean
+    curvature against its closed form, beside libigl's and pymeshlab's estimators."""
+    V, F, exact = _ellipsoid(subdivisions)
+    label = f"ellipsoid: {len(V):,} v / {len(F):,} f"
+
+    def err(mean: np.ndarray) -> str:
+        return f"{np.median(np.abs(mean - exact) / np.abs(exact)):.3%}"
+
+    ours = median_time(lambda: te.curvature(V, F), repeat)
+    rows: List[Sequence[Any]] = [[label, "toonmesh curvature (per-face fit, Rusinkiewicz)", ms(ours), err(te.curvature(V, F).mean), "1.0x"]]
+    igl = _optional("igl")
+    if igl is not None:
+        def igl_mean() -> np.ndarray:
+            _, _, k1, k2, _ = igl.principal_curvature(V, F, radius=2)
+            return 0.5 * (k1 + k2)
+
+        t = median_time(igl_mean, repeat)
+        rows.append([label, "libigl principal_curvature (radius 2)", ms(t), err(igl_mean()), _ratio(t, ours)])
+    pymeshlab = _optional("pymeshlab")
+    if pymeshlab is not None:
+        for method, name in [(0, "Taubin"), (3, "pseudo-inverse quadric fit")]:
+            def meshlab_mean() -> np.ndarray:
+                ms_ = pymeshlab.MeshSet()
+                ms_.add_mesh(pymeshlab.Mesh(V, F))
+                ms_.compute_curvature_principal_directions_per_vertex(method=method, curvcolormethod=0)
+                return ms_.current_mesh().vertex_scalar_array()
+
+            t = median_time(meshlab_mean, repeat)
+            rows.append([label, f"pymeshlab principal directions ({name})", ms(t), err(meshlab_mean()), _ratio(t, ours)])
+    return rows
+
+
 def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
     """Prints the outline benchmark tables (Markdown). ``quick`` uses a small mesh and image."""
     subdivisions = 5 if quick else 8
@@ -141,3 +185,5 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
     rows = mesh_rows(subdivisions, 0.0002, repeat) + mesh_rows(subdivisions, 0.002, repeat, with_index=False)
     print(table(["case", "call", "toonmesh", "peer", "speed-up"], rows, title="Mesh-space outlines"))
     print(table(["case", "call", "toonmesh", "peer", "speed-up"], sobel_rows(size, repeat), title="Sobel"))
+    curv = curvature_rows(4 if quick else 8, repeat)
+    print(table(["mesh", "estimator", "time", "mean curvature error (median)", "toonmesh's speed-up"], curv, title="Principal curvature"))
