@@ -34,6 +34,7 @@ __all__ = [
     "_EdgeIndex",
     "__version__",
     "_chains",
+    "_contours",
     "_curvature",
     "_feature_edges",
     "_normal_mode",
@@ -379,6 +380,9 @@ _Point = Optional[Any]  # three numbers, or None
 def _feature_edges(vertices: Any, faces: Any, crease_angle: float, weld: bool) -> _FeatureTuple: ...
 def _silhouette(vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool) -> _Pairs: ...
 def _chains(edges: Any) -> Tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
+def _contours(
+    vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool, threshold: Optional[float] = None
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
 def _curvature(vertices: Any, faces: Any) -> Tuple[
     npt.NDArray[np.float64],
     npt.NDArray[np.float64],

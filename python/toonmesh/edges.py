@@ -45,6 +45,7 @@ __all__ = [
     "EdgeIndex",
     "FeatureEdges",
     "chains",
+    "contours",
     "curvature",
     "detect_edges",
     "feature_edges",
@@ -53,6 +54,7 @@ __all__ = [
     "sobel",
     "sobel_h",
     "sobel_v",
+    "suggestive_contours",
 ]
 
 
@@ -240,6 +242,65 @@ def curvature(vertices: Any, faces: Any = None) -> Curvature:
     """
     V, F = mesh_arrays(vertices, faces)
     return Curvature(*_core._curvature(V, F))
+
+
+def _polylines(points: np.ndarray, starts: np.ndarray) -> List[np.ndarray]:
+    return [points[a:b] for a, b in zip(starts[:-1], starts[1:])]
+
+
+def contours(
+    vertices: Any, faces: Any = None, *, eye: Any = None, direction: Any = None, weld: bool = False
+) -> List[np.ndarray]:
+    """Smooth contours of one view (Hertzmann and Zorin 2000): the curve where n . v = 0, with n
+    interpolated linearly from the area-weighted vertex normals (the normals smooth shading
+    uses) and v the unit vector toward the eye, traced through the faces and chained across
+    them. Unlike :func:`silhouette` (face edges between front- and back-facing faces), it does
+    not follow the triangulation, so it does not zigzag on scanned or noisy surfaces.
+
+    Give exactly one of ``eye`` (3,) (perspective) or ``direction`` (3,) (orthographic), as
+    in :func:`silhouette`. Hidden parts are not removed (a rendered frame removes them).
+
+    Args:
+        vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        weld: merge vertices at equal positions first, so that normal or UV seams neither split
+            the normals nor cut the lines. Default False.
+
+    Returns:
+        A list of (K, 3) float64 polylines in the mesh's coordinates; a closed one repeats its
+        first point at the end. Points lie on mesh edges.
+    """
+    V, F = mesh_arrays(vertices, faces)
+    return _polylines(*_core._contours(V, F, eye, direction, weld))
+
+
+def suggestive_contours(
+    vertices: Any,
+    faces: Any = None,
+    *,
+    eye: Any = None,
+    direction: Any = None,
+    threshold: float = 0.01,
+    weld: bool = False,
+) -> List[np.ndarray]:
+    """Suggestive contours of one view (DeCarlo et al. 2003): where the radial curvature (see
+    :meth:`Curvature.radial`) is zero, its derivative along the projected view direction is
+    positive, and the surface faces the viewer. They continue contours into the surface and
+    draw the inner shape lines artists draw (a neck, a haunch, the inside of a bowl); a convex
+    shape has none.
+
+    Args:
+        vertices, faces, eye, direction, weld: as in :func:`contours`.
+        threshold: the derivative test, D_w kr / |w| > threshold / s^2, with s the mesh's
+            feature size (1% of the reciprocal of the 10th percentile of |k|, at most 5% of half
+            the bounding box's diagonal, as in the authors' implementation), so it does not
+            depend on units; larger keeps only the strongest lines. Default 0.01.
+
+    Returns:
+        A list of (K, 3) float64 polylines, as :func:`contours` returns them; points where a
+        line is cut by the derivative test lie inside faces.
+    """
+    V, F = mesh_arrays(vertices, faces)
+    return _polylines(*_core._contours(V, F, eye, direction, weld, threshold))
 
 
 def silhouette(

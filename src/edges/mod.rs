@@ -2,12 +2,14 @@
 //! (Kang, Kim and Yoon), and Sobel edges found in images (Borquez and Yepez).
 
 pub mod chains;
+pub mod contours;
 pub mod detect;
 pub mod feature;
 pub mod index;
 pub mod outlines;
 pub mod silhouette;
 pub mod sobel;
+pub mod zero_set;
 
 pub use feature::FeatureEdges;
 pub use index::EdgeIndex;

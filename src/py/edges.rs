@@ -14,6 +14,8 @@ use super::errors::to_py;
 use super::mesh_input::{on_positions, MeshInput};
 use super::runtime::detached;
 use crate::edges::chains::chain_edges;
+use crate::edges::contours::ContourMesh;
+use crate::edges::zero_set::Polylines;
 use crate::edges::detect::{paper_gradient, threshold_mask};
 use crate::edges::feature::FeatureEdges;
 use crate::edges::outlines::Statics;
@@ -137,6 +139,47 @@ fn _curvature<'py>(
         rows_to_numpy(py, c.normals),
         rows_to_numpy(py, c.derivatives),
     ))
+}
+
+type PolylinesOut<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<i64>>);
+
+fn polylines_to_numpy(py: Python<'_>, lines: Polylines) -> PolylinesOut<'_> {
+    (rows_to_numpy(py, lines.points), vec_to_numpy(py, lines.starts.into_iter().map(i64::from).collect()))
+}
+
+/// Smooth contours (`threshold` None) or suggestive contours of one view, as flat points and
+/// line starts.
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, eye, direction, weld, threshold = None))]
+fn _contours<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    eye: Option<&Bound<'py, PyAny>>,
+    direction: Option<&Bound<'py, PyAny>>,
+    weld: &Bound<'py, PyAny>,
+    threshold: Option<&Bound<'py, PyAny>>,
+) -> PyResult<PolylinesOut<'py>> {
+    let view = view_of(eye, direction).map_err(to_py)?;
+    let weld = args::flag("weld", weld).map_err(to_py)?;
+    let threshold = args::optional("threshold", threshold, |a, o| {
+        let t = args::number(a, o)?;
+        if t.is_finite() && t >= 0.0 {
+            Ok(t)
+        } else {
+            Err(Error::invalid(a, format!("must be a finite number >= 0, got {t}")))
+        }
+    })
+    .map_err(to_py)?;
+    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let lines = mesh.run(py, faces, |p, f, cancel| {
+        let m = on_positions!(p, v => Ok(ContourMesh::build(v, f, weld)))?;
+        match threshold {
+            None => Ok(m.smooth(view)),
+            Some(t) => m.suggestive(view, t, cancel),
+        }
+    })?;
+    Ok(polylines_to_numpy(py, lines))
 }
 
 /// The once-per-mesh part of outline finding; immutable, so one index serves many threads.
@@ -404,6 +447,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_feature_edges, m)?)?;
     m.add_function(wrap_pyfunction!(_silhouette, m)?)?;
     m.add_function(wrap_pyfunction!(_curvature, m)?)?;
+    m.add_function(wrap_pyfunction!(_contours, m)?)?;
     m.add_function(wrap_pyfunction!(_chains, m)?)?;
     m.add_function(wrap_pyfunction!(_sobel, m)?)?;
     m.add_function(wrap_pyfunction!(_paper_edges, m)?)?;

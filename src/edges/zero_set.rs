@@ -1,0 +1,159 @@
+//! The zero set of a field given at the vertices, traced through the faces as polylines: the
+//! curve where a linearly interpolated value changes sign, cut to where other interpolated
+//! fields (the conditions) are positive, and chained across faces. Smooth and suggestive
+//! contours are both zero sets.
+//!
+//! Rules: a vertex value counts as positive when it is > 0 (exact zeros count as negative, so
+//! a face has either no crossing or a crossing on exactly two of its edges). The crossing on
+//! an edge is interpolated from its smaller-index end, so the two faces of an edge find the
+//! same point bit for bit and the pieces chain. Where a condition cuts a piece inside a face,
+//! the cut end is a stroke end.
+
+use std::collections::HashMap;
+
+use rayon::prelude::*;
+
+use super::chains::chain_edges;
+
+/// Polylines as one flat point list and the offsets where each starts (CSR): line i is
+/// `points[starts[i]..starts[i + 1]]`; a closed line repeats its first point at the end.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Polylines {
+    pub points: Vec<[f64; 3]>,
+    pub starts: Vec<u32>,
+}
+
+impl Polylines {
+    pub fn len(&self) -> usize {
+        self.starts.len().saturating_sub(1)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Line i's points.
+    pub fn line(&self, i: usize) -> &[[f64; 3]] {
+        &self.points[self.starts[i] as usize..self.starts[i + 1] as usize]
+    }
+}
+
+/// A piece's end: on a mesh edge (key `lo << 32 | hi`), or inside a face (cut by a condition).
+#[derive(Clone, Copy)]
+struct End {
+    key: Option<u64>,
+    p: [f64; 3],
+}
+
+fn lerp(a: [f64; 3], b: [f64; 3], t: f64) -> [f64; 3] {
+    [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])]
+}
+
+/// The zero set of `value` over the faces, kept where every field of `conditions` is > 0.
+pub fn zero_set(
+    positions: &[[f64; 3]],
+    faces: &[[u32; 3]],
+    value: &[f64],
+    conditions: &[&[f64]],
+) -> Polylines {
+    let pieces: Vec<[End; 2]> = faces.par_iter().filter_map(|f| face_piece(positions, f, value, conditions)).collect();
+    chain_pieces(&pieces)
+}
+
+/// The piece of the zero set in one face, if any.
+fn face_piece(positions: &[[f64; 3]], f: &[u32; 3], value: &[f64], conditions: &[&[f64]]) -> Option<[End; 2]> {
+    let positive = f.map(|v| value[v as usize] > 0.0);
+    if positive[0] == positive[1] && positive[1] == positive[2] {
+        return None;
+    }
+    // the two edges whose ends differ in sign, each from its smaller index
+    let mut ends = [(0u32, 0u32, 0.0f64); 2];
+    let mut n = 0;
+    for j in 0..3 {
+        let (a, b) = (f[j], f[(j + 1) % 3]);
+        if positive[j] != positive[(j + 1) % 3] {
+            let (lo, hi) = (a.min(b), a.max(b));
+            let (vl, vh) = (value[lo as usize], value[hi as usize]);
+            let t = vl / (vl - vh);
+            ends[n] = (lo, hi, if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.5 });
+            n += 1;
+        }
+    }
+    debug_assert_eq!(n, 2);
+    let at = |(lo, hi, t): (u32, u32, f64), field: &[f64]| field[lo as usize] + t * (field[hi as usize] - field[lo as usize]);
+    // the part of the piece (u in [0, 1] from end 0 to end 1) where every condition is > 0
+    let (mut u0, mut u1) = (0.0f64, 1.0f64);
+    for c in conditions {
+        let (c0, c1) = (at(ends[0], c), at(ends[1], c));
+        match (c0 > 0.0, c1 > 0.0) {
+            (true, true) => {}
+            (false, false) => return None,
+            (true, false) => u1 = u1.min(c0 / (c0 - c1)),
+            (false, true) => u0 = u0.max(c0 / (c0 - c1)),
+        }
+    }
+    if !(u1 > u0) {
+        return None;
+    }
+    let point = |(lo, hi, t): (u32, u32, f64)| lerp(positions[lo as usize], positions[hi as usize], t);
+    let (p0, p1) = (point(ends[0]), point(ends[1]));
+    let key = |(lo, hi, _): (u32, u32, f64)| (lo as u64) << 32 | hi as u64;
+    let a = if u0 > 0.0 { End { key: None, p: lerp(p0, p1, u0) } } else { End { key: Some(key(ends[0])), p: p0 } };
+    let b = if u1 < 1.0 { End { key: None, p: lerp(p0, p1, u1) } } else { End { key: Some(key(ends[1])), p: p1 } };
+    Some([a, b])
+}
+
+/// Chains pieces that share an edge point into polylines (`chains::chain_edges`' rules).
+fn chain_pieces(pieces: &[[End; 2]]) -> Polylines {
+    let mut ids: HashMap<u64, u32> = HashMap::with_capacity(pieces.len());
+    let mut points: Vec<[f64; 3]> = Vec::with_capacity(pieces.len() + 1);
+    let mut id_of = |e: &End, points: &mut Vec<[f64; 3]>| -> u32 {
+        match e.key {
+            Some(k) => *ids.entry(k).or_insert_with(|| {
+                points.push(e.p);
+                points.len() as u32 - 1
+            }),
+            None => {
+                points.push(e.p);
+                points.len() as u32 - 1
+            }
+        }
+    };
+    let pairs: Vec<[u32; 2]> = pieces.iter().map(|[a, b]| [id_of(a, &mut points), id_of(b, &mut points)]).collect();
+    let (flat, starts) = chain_edges(&pairs);
+    Polylines { points: flat.iter().map(|&i| points[i as usize]).collect(), starts }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_plane_cut_is_one_line_through_shared_points() {
+        // a 3x3 grid of squares, value = x - 1.5: a vertical line at x = 1.5
+        let mut positions = Vec::new();
+        for y in 0..4 {
+            for x in 0..4 {
+                positions.push([x as f64, y as f64, 0.0]);
+            }
+        }
+        let mut faces = Vec::new();
+        for y in 0..3u32 {
+            for x in 0..3u32 {
+                let a = y * 4 + x;
+                faces.push([a, a + 1, a + 5]);
+                faces.push([a, a + 5, a + 4]);
+            }
+        }
+        let value: Vec<f64> = positions.iter().map(|p| p[0] - 1.5).collect();
+        let lines = zero_set(&positions, &faces, &value, &[]);
+        assert_eq!(lines.len(), 1);
+        assert!(lines.points.iter().all(|p| (p[0] - 1.5).abs() < 1e-12));
+        // cut to y > 1.2 by a condition
+        let cond: Vec<f64> = positions.iter().map(|p| p[1] - 1.2).collect();
+        let cut = zero_set(&positions, &faces, &value, &[&cond]);
+        assert_eq!(cut.len(), 1);
+        assert!(cut.points.iter().all(|p| p[1] >= 1.2 - 1e-12));
+        assert!(cut.points.iter().any(|p| (p[1] - 1.2).abs() < 1e-12));
+    }
+}
