@@ -98,16 +98,18 @@ class _View:
         return 2.0 * distance * math.tan(math.radians(self.fov_y) / 2.0) / pixels_high
 
     def orbit(self, dx: float, dy: float, pixels_high: int) -> None:
-        """Turntable orbit about the target: ``dx`` turns about ``up``, ``dy`` tilts."""
+        """Turntable orbit about the target: ``dx`` turns about ``up`` (dragging right turns the
+        scene right), ``dy`` tilts (dragging down shows more of the top), short of the poles."""
         per_pixel = _ORBIT_PER_HEIGHT / pixels_high
-        offset = self.eye - self.target
-        offset = _rotate(offset, self.up, -dx * per_pixel)
-        polar = math.acos(float(np.clip(np.dot(_unit(offset), self.up), -1.0, 1.0)))
-        tilt = float(np.clip(-dy * per_pixel, _POLE_MARGIN - polar, math.pi - _POLE_MARGIN - polar))
-        axis = _unit(np.cross(self.up, offset))
-        if np.linalg.norm(axis) > 0:
-            offset = _rotate(offset, axis, -tilt)
-        self.eye = self.target + offset
+        offset = _rotate(self.eye - self.target, self.up, -dx * per_pixel)
+        radius = float(np.linalg.norm(offset))
+        along = float(np.dot(offset, self.up))
+        level = offset - along * self.up
+        if np.linalg.norm(level) == 0:  # looking straight along up: any side will do
+            level = np.cross(self.up, (1.0, 0.0, 0.0) if abs(self.up[0]) < 0.9 else (0.0, 0.0, 1.0))
+        polar = math.acos(float(np.clip(along / radius, -1.0, 1.0)))
+        polar = float(np.clip(polar - dy * per_pixel, _POLE_MARGIN, math.pi - _POLE_MARGIN))
+        self.eye = self.target + radius * (math.cos(polar) * self.up + math.sin(polar) * _unit(level))
 
     def pan(self, dx: float, dy: float, pixels_high: int) -> None:
         """Moves eye and target so that the scene follows the pointer."""
