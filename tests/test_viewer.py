@@ -205,3 +205,15 @@ def test_bad_arguments_are_named(viewer, mesh):
         tm.Viewer(*mesh, outputs=("depth",))
     with pytest.raises(ValueError, match="width"):
         viewer.width = 0
+
+
+def test_the_viewer_benchmark_reports_frame_times(capsys):
+    need("anywidget")
+    from toonmesh.bench import viewer as bench
+
+    bench.main(quick=True)
+    rows = [line for line in capsys.readouterr().out.splitlines() if line.startswith("| orbit") or line.startswith("| frame while")]
+    assert len(rows) == 3
+    for row in rows:
+        fps = float(row.strip(" |").split("|")[-1])
+        assert fps > 0
