@@ -233,7 +233,7 @@ class Viewer:
         self._frame_direction: Optional[np.ndarray] = None
         self._set_camera(options.get("camera"), show=False)
         self._show(draft=False)
-        if controls:
+        if controls and self._widget is not None:  # without the notebook extra: the still frame
             from toonmesh._viewer_controls import control_panel
 
             self._controls = control_panel(self)
