@@ -217,3 +217,22 @@ def test_the_viewer_benchmark_reports_frame_times(capsys):
     for row in rows:
         fps = float(row.strip(" |").split("|")[-1])
         assert fps > 0
+
+
+def test_a_scene_of_several_meshes_and_its_code(mesh):
+    need("anywidget")
+    V, F = mesh
+    left = tm.Mesh(V, F, material=tm.Material.bands("#d05050"), transform=np.eye(4))
+    shifted = np.eye(4)
+    shifted[0, 3] = 0.2
+    right = tm.Mesh(V, F, material=tm.Material.lambert("#50a050"), transform=shifted)
+    v = tm.Viewer([left, right], width=96, height=64)
+    v.orbit(10, 5)
+    code = v.code()
+    assert "tm.render(meshes" in code
+    scope = {"meshes": [left, right]}
+    exec(code, scope)
+    np.testing.assert_array_equal(scope["r"].color, v.frame)
+    target = np.array(v.camera.target)
+    assert target[0] == pytest.approx((V[:, 0].min() + V[:, 0].max() + 0.2) / 2)  # the scene's centre
+    v.close()

@@ -27,7 +27,7 @@ def _direction(azimuth: float, elevation: float) -> "tuple[float, float, float]"
 
 def control_panel(viewer: "Viewer") -> Any:
     """The viewer's widget with a column of controls beside it (an ``ipywidgets.HBox``)."""
-    import ipywidgets as w
+    import ipywidgets as w  # type: ignore[import-untyped]
 
     rows: List[Any] = []
     style = {"description_width": "110px"}

@@ -17,7 +17,7 @@ from __future__ import annotations
 import io
 import math
 import threading
-from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Sequence, Tuple
+from typing import TYPE_CHECKING, Any, Dict, Generic, List, Optional, Tuple, TypeVar, overload
 
 import numpy as np
 
@@ -41,10 +41,6 @@ if TYPE_CHECKING:
     from typing_extensions import Unpack
 
     from toonmesh._render import RenderKeywords
-
-#: The render settings a viewer holds as attributes (each re-renders when set); ``camera`` has
-#: its own property and ``outputs`` is always the colour image.
-SETTINGS = ("material", "transform", "lights", "ambient", "background", "width", "height", "msaa", "supersample", "outlines")
 
 NOTEBOOK_EXTRA = "pip install 'toonmesh[notebook]'"
 
@@ -157,6 +153,28 @@ def _encode(color: np.ndarray, image_format: str, quality: int = 85) -> Tuple[by
     return _core.encode_png_rgba(color), "png"
 
 
+T = TypeVar("T")
+
+
+class _Setting(Generic[T]):
+    """A render setting as a viewer attribute: reads the viewer's :class:`RenderOptions` (so it
+    reads back as the core holds it: ``v.outlines = "mesh"`` reads an :class:`Outlines`);
+    setting it (to anything ``RenderOptions`` takes) re-renders."""
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self.name = name
+
+    @overload
+    def __get__(self, viewer: None, owner: type) -> "_Setting[T]": ...
+    @overload
+    def __get__(self, viewer: "Viewer", owner: type) -> T: ...
+    def __get__(self, viewer: Optional["Viewer"], owner: type) -> Any:
+        return self if viewer is None else getattr(viewer._options, self.name)
+
+    def __set__(self, viewer: "Viewer", value: Any) -> None:
+        viewer.set(**{self.name: value})
+
+
 class ViewerCode(str):
     """Python source, shown as itself (not quoted) in a notebook."""
 
@@ -189,6 +207,19 @@ class Viewer:
     :meth:`snapshot` renders the current view at full quality (any size, any outputs);
     :meth:`code` gives the ``tm.render(...)`` call that reproduces the view.
     """
+
+    # The render settings, each re-rendering when set (see toonmesh.RenderOptions for what each
+    # takes and its default); ``camera`` is a property of its own, ``outputs`` always "color".
+    material: _Setting[Material] = _Setting()
+    transform: _Setting[List[List[float]]] = _Setting()
+    lights: _Setting[List[Light]] = _Setting()
+    ambient: _Setting[Tuple[float, float, float]] = _Setting()
+    background: _Setting[Tuple[float, float, float, float]] = _Setting()
+    width: _Setting[int] = _Setting()
+    height: _Setting[int] = _Setting()
+    msaa: _Setting[int] = _Setting()
+    supersample: _Setting[int] = _Setting()
+    outlines: _Setting[Optional[Outlines]] = _Setting()
 
     def __init__(
         self,
@@ -466,7 +497,7 @@ class Viewer:
                     self._wake.wait()
                 if self._closed:
                     return
-                draft, self._wanted = self._wanted, None
+                draft, self._wanted = bool(self._wanted), None
                 self._busy = True
             try:
                 self._show(draft=draft)
@@ -516,19 +547,8 @@ class Viewer:
         return f"toonmesh.Viewer({size}): interactive where Jupyter widgets run (JupyterLab, Notebook 7, VS Code)"
 
 
-def _add_setting(name: str) -> None:
-    def get(self: Viewer) -> Any:
-        return getattr(self._options, name)
-
-    def put(self: Viewer, value: Any) -> None:
-        self.set(**{name: value})
-
-    get.__doc__ = f"The render setting ``{name}`` (see :class:`toonmesh.RenderOptions`); setting it re-renders."
-    setattr(Viewer, name, property(get, put))
-
-
-for _name in SETTINGS:
-    _add_setting(_name)
+#: The render settings a viewer holds as attributes, in the order code() writes them.
+SETTINGS = tuple(name for name, value in vars(Viewer).items() if isinstance(value, _Setting))
 
 
 def _number(name: str, value: Any) -> float:

@@ -41,7 +41,7 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
     count = 5 if quick else max(20, repeat)
     V, F = bunny()
     info = tm.gpu_info()
-    rows = []
+    rows: List[Sequence[Any]] = []
     for label, image_format, draft in (
         ("orbit() full size", "png", False),
         ("orbit() full size", "jpeg", False),
@@ -50,6 +50,7 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
         viewer = tm.Viewer(V, F, outlines="mesh", width=SIZE, height=SIZE, image_format=image_format)
         try:
             frame, render = _frames(viewer, draft, count)
+            assert viewer.frame is not None
             size = f"{viewer.frame.shape[1]}x{viewer.frame.shape[0]}"
         finally:
             viewer.close()
