@@ -122,7 +122,7 @@ def test_code_reproduces_the_frame(viewer, mesh):
     viewer.material = tm.Material.bands("#4f8fd8", thresholds=[0.25, 0.6], values=[0.3, 0.7, 1.0])
     viewer.background = "#eeeeee"
     code = viewer.code()
-    assert "tm.render(V, F" in code and "tm._core" not in code
+    assert "tm.render(\n    V, F,\n" in code and "tm._core" not in code
     scope = {"V": V, "F": F}
     exec(code, scope)
     np.testing.assert_array_equal(scope["r"].color, viewer.frame)
@@ -229,7 +229,7 @@ def test_a_scene_of_several_meshes_and_its_code(mesh):
     v = tm.Viewer([left, right], width=96, height=64)
     v.orbit(10, 5)
     code = v.code()
-    assert "tm.render(meshes" in code
+    assert "tm.render(\n    meshes,\n" in code
     scope = {"meshes": [left, right]}
     exec(code, scope)
     np.testing.assert_array_equal(scope["r"].color, v.frame)

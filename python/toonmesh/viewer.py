@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 import threading
 from typing import TYPE_CHECKING, Any, Dict, Generic, List, Optional, Tuple, TypeVar, overload
 
@@ -272,7 +273,7 @@ class Viewer:
     # -- the scene ----------------------------------------------------------------------------
 
     def _upload(self, vertices: Any, faces: Any, normals: Normals, smooth_iterations: int) -> Tuple[List[Mesh], str, np.ndarray]:
-        """The scene's meshes on the renderer (uploaded once), how code() names them, and the
+        """The scene's meshes on the renderer (uploaded once), how code() passes them, and the
         centre of their bounding box in world space."""
         single = not isinstance(vertices, (Mesh, list, tuple))
         items = [Mesh(vertices, faces, normals=normals)] if single else ([vertices] if isinstance(vertices, Mesh) else list(vertices))
@@ -298,9 +299,9 @@ class Viewer:
             highs.append(V.max(axis=0))
         center = (np.min(lows, axis=0) + np.max(highs, axis=0)) / 2 if lows else np.zeros(3)
         if single:
-            source = "tm.render(mesh" if faces is None else "tm.render(V, F"
+            source = "mesh" if faces is None else "V, F"
         else:
-            source = "tm.render(meshes"
+            source = "meshes"
         return meshes, source, center
 
     def _options_transform(self) -> np.ndarray:
@@ -452,7 +453,7 @@ class Viewer:
         notebook; ``print(v.code())`` elsewhere). Settings without a constructor spelling are
         written in their pickled form."""
         parts = [self._mesh_source]
-        if self._normals != "smooth" and self._mesh_source != "tm.render(meshes":
+        if self._normals != "smooth" and self._mesh_source != "meshes":
             parts.append(f"normals={self._normals!r}")
         if self._smooth_iterations:
             parts.append(f"smooth_iterations={self._smooth_iterations!r}")
@@ -461,7 +462,8 @@ class Viewer:
         for name in SETTINGS:
             if name in self._given:
                 parts.append(f"{name}={_source(self._given[name])}")
-        return ViewerCode("import toonmesh as tm\n\nr = " + ", ".join(parts) + ")\n")
+        arguments = "".join(f"    {p},\n" for p in parts)
+        return ViewerCode(f"import toonmesh as tm\n\nr = tm.render(\n{arguments})\n")
 
     # -- the front end's events and flow control ----------------------------------------------
 
@@ -585,13 +587,21 @@ def _source(value: Any) -> str:
         inner = ", ".join(_source(v) for v in value)
         return f"[{inner}]" if isinstance(value, list) else f"({inner}{',' if len(value) == 1 else ''})"
     for candidate in _spellings(value):
-        try:
-            if eval(candidate, {"tm": _toonmesh()}) == value:
-                return candidate
-        except Exception:
-            continue
+        if _gives(candidate, value):
+            short = _FLOAT.sub(lambda m: repr(float(f"{float(m.group()):.7g}")), candidate)  # float32 noise off
+            return short if _gives(short, value) else candidate
     restore, (cls, state) = value.__reduce__()
     return f"tm._core._restore({cls!r}, {state!r})"
+
+
+_FLOAT = re.compile(r"(?<![\w.])-?\d+\.\d+(?:e[-+]?\d+)?")
+
+
+def _gives(source: str, value: Any) -> bool:
+    try:
+        return bool(eval(source, {"tm": _toonmesh()}) == value)
+    except Exception:
+        return False
 
 
 def _toonmesh() -> Any:
