@@ -4,7 +4,8 @@
 The test opens a notebook that shows a viewer of the bunny, runs it, drags across the frame
 and checks that the picture changed, that the kernel sent new frames (the frame numbers come
 from the kernel), that the frames drawn while dragging were smaller than the last one, which is
-full size, and that the kernel's viewer agrees (a cell run afterwards reads its render count).
+full size, and that the kernel's viewer agrees (a cell run afterwards reads its render count);
+then turns the wheel and checks that the bunny grew.
 With TOONMESH_SCREENSHOT=1 it also writes the screenshot the README shows (docs/viewer.png).
 """
 
@@ -160,6 +161,19 @@ def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
             last_frame = int(viewer.get_attribute("data-frame"))
             after = _pixels(img.screenshot())
             sizes = page.evaluate("window.__sizes")
+            if os.environ.get("TOONMESH_SCREENSHOT") == "1":  # the README's picture: after the drag
+                cells.first.screenshot(path=str(SCREENSHOT))
+
+            # the wheel turned away from the user zooms in: the bunny covers more of the frame
+            page.mouse.move(x, y)
+            page.mouse.wheel(0, -200)
+            page.wait_for_function(
+                "(n) => { const r = document.querySelector('.toonmesh-viewer');"
+                " return +r.dataset.frame > n && window.__sizes.at(-1) === 480; }",
+                arg=last_frame, timeout=20_000,
+            )
+            page.wait_for_timeout(300)
+            zoomed = _pixels(img.screenshot())
 
             # the kernel's own count, read by the notebook's second cell (run after the drag)
             cell = cells.nth(1)
@@ -168,9 +182,6 @@ def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
             printed = cell.locator(".jp-OutputArea-output", has_text="renders")
             printed.wait_for(timeout=20_000)
             kernel_renders = int(printed.inner_text().split()[1])
-
-            if os.environ.get("TOONMESH_SCREENSHOT") == "1":
-                page.locator(".jp-Notebook .jp-Cell").first.screenshot(path=str(SCREENSHOT))
         except Exception:
             page.screenshot(path=str(tmp_path / "failure.png"))
             raise
@@ -183,3 +194,8 @@ def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
     assert last_frame >= first_frame + 2, (first_frame, last_frame)
     assert sizes and max(sizes) == 480 and min(sizes) < 480, sizes  # drafts while dragging, then full size
     assert kernel_renders >= last_frame
+
+    def covered(picture):  # pixels that are not the white background
+        return float((picture.min(axis=2) < 200).mean())
+
+    assert covered(zoomed) > 1.2 * covered(after), (covered(after), covered(zoomed))
