@@ -236,3 +236,14 @@ def test_a_scene_of_several_meshes_and_its_code(mesh):
     target = np.array(v.camera.target)
     assert target[0] == pytest.approx((V[:, 0].min() + V[:, 0].max() + 0.2) / 2)  # the scene's centre
     v.close()
+
+
+def test_close_frees_only_the_meshes_the_viewer_uploaded(mesh):
+    need("anywidget")
+    renderer = tm.Renderer()
+    mine = renderer.add_mesh(*mesh)
+    v = tm.Viewer([tm.Mesh(mine), tm.Mesh(*mesh)], renderer=renderer, width=48, height=48)
+    assert renderer._engine.mesh_count == 2
+    v.close()
+    assert renderer._engine.mesh_count == 1
+    assert renderer.render(mine, width=16, height=16).color.shape == (16, 16, 4)

@@ -249,6 +249,7 @@ class Viewer:
         self.drag_scale = _drag_scale(drag_scale)
         self._normals = normals
         self._smooth_iterations = smooth_iterations
+        self._uploaded: List[Any] = []  # the MeshHandles this viewer made (close() frees them)
         self._meshes, self._mesh_source, self._center = self._upload(vertices, faces, normals, smooth_iterations)
         self.render_count = 0
         self.frame: Optional[np.ndarray] = None
@@ -262,7 +263,6 @@ class Viewer:
         self._closed = False
         self._widget: Any = _make_widget(self)
         self._controls: Any = None
-        self._frame_direction: Optional[np.ndarray] = None
         self._set_camera(options.get("camera"), show=False)
         self._show(draft=False)
         if controls and self._widget is not None:  # without the notebook extra: the still frame
@@ -280,7 +280,22 @@ class Viewer:
         if not items:
             raise ValueError("vertices: the scene has no mesh")
         meshes: List[Mesh] = []
-        lows, highs = [], []
+        lows: List[np.ndarray] = []
+        highs: List[np.ndarray] = []
+        try:
+            self._add_meshes(items, normals, smooth_iterations, meshes, lows, highs)
+        except BaseException:
+            self._free_meshes()
+            raise
+        center = (np.min(lows, axis=0) + np.max(highs, axis=0)) / 2 if lows else np.zeros(3)
+        if single:
+            source = "mesh" if faces is None else "V, F"
+        else:
+            source = "meshes"
+        return meshes, source, center
+
+    def _add_meshes(self, items: List[Any], normals: Normals, smooth_iterations: int, meshes: List[Mesh],
+                    lows: List[np.ndarray], highs: List[np.ndarray]) -> None:
         for i, item in enumerate(items):
             if not isinstance(item, Mesh):
                 item = Mesh(item, normals=normals)  # a Trimesh or a MeshHandle in a list
@@ -291,33 +306,33 @@ class Viewer:
                 continue
             assert item.vertices is not None and item.faces is not None
             handle = self._renderer.add_mesh(item.vertices, item.faces, normals=item.normals, smooth_iterations=smooth_iterations)
+            self._uploaded.append(handle)
             meshes.append(Mesh(handle, material=item.material, transform=item.transform))
             V = item.vertices
             transform = item.transform if item.transform is not None else self._options_transform()
             V = V @ transform[:3, :3].T + transform[:3, 3]
             lows.append(V.min(axis=0))
             highs.append(V.max(axis=0))
-        center = (np.min(lows, axis=0) + np.max(highs, axis=0)) / 2 if lows else np.zeros(3)
-        if single:
-            source = "mesh" if faces is None else "V, F"
-        else:
-            source = "meshes"
-        return meshes, source, center
+
+    def _free_meshes(self) -> None:
+        for handle in self._uploaded:
+            self._renderer.remove_mesh(handle)
+        self._uploaded = []
 
     def _options_transform(self) -> np.ndarray:
         return np.asarray(self._options.transform, np.float64)
 
     def close(self) -> None:
-        """Frees the meshes this viewer uploaded and closes its widget."""
+        """Frees the meshes this viewer uploaded (not MeshHandles it was given) and closes its
+        widget; the viewer cannot render after this."""
         with self._state_lock:
             self._closed = True
             self._wake.notify_all()
         if self._widget is not None:
             self._widget.close()
-        for m in self._meshes:
-            if m.handle is not None and m.handle.renderer is self._renderer:
-                self._renderer.remove_mesh(m.handle)
-        self._meshes = []
+        with self._render_lock:
+            self._free_meshes()
+            self._meshes = []
 
     # -- the camera ---------------------------------------------------------------------------
 
