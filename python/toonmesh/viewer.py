@@ -50,6 +50,10 @@ NOTEBOOK_EXTRA = "pip install 'toonmesh[notebook]'"
 _ORBIT_PER_HEIGHT = math.pi
 # Zoom factor per unit of wheel delta (a browser's wheel notch is about 100 units: ~14%).
 _WHEEL_ZOOM = 0.0015
+# The largest moves one call takes (pixels of drag, zoom factor): beyond them the view leaves
+# float precision, and no pointer gets there.
+_MAX_DRAG = 1e6
+_MAX_ZOOM = 1e3
 # How close the view may come to looking straight along ``up`` (radians), so it never flips.
 _POLE_MARGIN = math.radians(1.0)
 
@@ -240,13 +244,13 @@ class Viewer:
             raise TypeError("outputs: a Viewer shows the colour image; use snapshot(outputs=...) for others")
         if renderer is not None and not isinstance(renderer, Renderer):
             raise TypeError(f"renderer: expected a toonmesh.Renderer, got {type(renderer).__name__}")
-        if not isinstance(controls, bool):
+        if not isinstance(controls, (bool, np.bool_)):
             raise TypeError(f"controls: expected True or False, got {type(controls).__name__}")
         self._renderer = renderer if renderer is not None else shared_renderer(backend)
         self._options = RenderOptions(**options)  # checked before any upload
         self._given: Dict[str, Any] = {k: v for k, v in options.items() if k != "camera" and v is not None}
         self.image_format = _format(image_format)
-        self.drag_scale = _drag_scale(drag_scale)
+        self.drag_scale = _number("drag_scale", drag_scale, 0.05, 1.0)
         self._normals = normals
         self._smooth_iterations = smooth_iterations
         self._uploaded: List[Any] = []  # the MeshHandles this viewer made (close() frees them)
@@ -275,7 +279,7 @@ class Viewer:
     def _upload(self, vertices: Any, faces: Any, normals: Normals, smooth_iterations: int) -> Tuple[List[Mesh], str, np.ndarray]:
         """The scene's meshes on the renderer (uploaded once), how code() passes them, and the
         centre of their bounding box in world space."""
-        single = not isinstance(vertices, (Mesh, list, tuple))
+        single = faces is not None or not isinstance(vertices, (Mesh, list, tuple))  # as tm.render reads it
         items = [Mesh(vertices, faces, normals=normals)] if single else ([vertices] if isinstance(vertices, Mesh) else list(vertices))
         if not items:
             raise ValueError("vertices: the scene has no mesh")
@@ -362,22 +366,21 @@ class Viewer:
 
     def orbit(self, dx: float, dy: float) -> None:
         """Orbits about the target as a drag of ``dx``, ``dy`` pixels would (x right, y down; a
-        drag over the frame's height turns half way round), then renders the full-size frame."""
-        self._move("orbit", _number("dx", dx), _number("dy", dy))
+        drag over the frame's height turns half way round; each at most 1e6 either way), then
+        renders the full-size frame."""
+        self._move("orbit", _pixels("dx", dx), _pixels("dy", dy))
         self._show(draft=False)
 
     def pan(self, dx: float, dy: float) -> None:
         """Moves the view as a shift-drag of ``dx``, ``dy`` pixels would (the scene follows the
-        pointer), then renders the full-size frame."""
-        self._move("pan", _number("dx", dx), _number("dy", dy))
+        pointer; each at most 1e6 either way), then renders the full-size frame."""
+        self._move("pan", _pixels("dx", dx), _pixels("dy", dy))
         self._show(draft=False)
 
     def zoom(self, factor: float) -> None:
-        """Zooms in by ``factor`` (> 0; 2 halves the distance to the target, 0.5 doubles it),
-        then renders the full-size frame."""
-        factor = _number("factor", factor)
-        if not factor > 0:
-            raise ValueError(f"factor: must be > 0, got {factor}")
+        """Zooms in by ``factor`` (0.001 to 1000; 2 halves the distance to the target or the
+        orthographic view's height, 0.5 doubles it), then renders the full-size frame."""
+        factor = _number("factor", factor, 1.0 / _MAX_ZOOM, _MAX_ZOOM)
         self._move("zoom", factor, 0.0)
         self._show(draft=False)
 
@@ -568,25 +571,29 @@ class Viewer:
 SETTINGS = tuple(name for name, value in vars(Viewer).items() if isinstance(value, _Setting))
 
 
-def _number(name: str, value: Any) -> float:
+def _number(name: str, value: Any, lo: float, hi: float) -> float:
+    """``value`` as a float in [lo, hi]: TypeError for a non-number (a bool too), ValueError
+    outside the range (NaN always is)."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
         raise TypeError(f"{name}: expected a number, got {type(value).__name__}")
-    if not math.isfinite(float(value)):
-        raise ValueError(f"{name}: must be finite, got {value}")
-    return float(value)
+    big = isinstance(value, int) and abs(value) >= 2**1023  # beyond a float: out of any range here
+    number = (math.inf if value > 0 else -math.inf) if big else float(value)
+    if not lo <= number <= hi:
+        raise ValueError(f"{name}: must be in [{lo:g}, {hi:g}], got {value}")
+    return number
+
+
+def _pixels(name: str, value: Any) -> float:
+    """A drag's length in pixels (finite; at most a million either way)."""
+    return _number(name, value, -_MAX_DRAG, _MAX_DRAG)
 
 
 def _format(image_format: Any) -> str:
+    if not isinstance(image_format, str):
+        raise TypeError(f"image_format: expected 'png' or 'jpeg', got {type(image_format).__name__}")
     if image_format not in ("png", "jpeg"):
         raise ValueError(f"image_format: expected 'png' or 'jpeg', got {image_format!r}")
-    return str(image_format)
-
-
-def _drag_scale(scale: Any) -> float:
-    scale = _number("drag_scale", scale)
-    if not 0.05 <= scale <= 1:
-        raise ValueError(f"drag_scale: must be in [0.05, 1], got {scale}")
-    return scale
+    return image_format
 
 
 # -- code() ---------------------------------------------------------------------------------------
