@@ -5,8 +5,8 @@ widget), and the frames per second that gives.
     python -m toonmesh.bench viewer [--quick] [--repeat N] [--json FILE]
 
 Rows: ``orbit()`` from Python (the full-size frame, as PNG and as JPEG), and a frame drawn while
-dragging (``drag_scale`` 0.5 of the size, JPEG). Each figure is the median over the frames (at
-least 20, or 5 with ``--quick``) after a warm-up frame, on the adapter ``tm.gpu_info()`` names
+dragging (``drag_scale`` 0.5 of the size, JPEG), taking turns frame by frame. Each figure is the
+median over the frames (at least 20, or 5 with ``--quick``) after a warm-up round, on the adapter ``tm.gpu_info()`` names
 (Mesa's lavapipe/llvmpipe where there is no GPU; ``TOONMESH_BACKEND`` picks the backend).
 """
 
@@ -23,39 +23,44 @@ from toonmesh.data import bunny
 SIZE = 512
 
 
-def _frames(viewer: Any, draft: bool, count: int) -> Tuple[float, float]:
-    """Median seconds of a whole orbit frame and of its render alone."""
-    walls: List[float] = []
-    renders: List[float] = []
-    for i in range(count + 1):
-        viewer._move("orbit", 6.0, 0.0)
-        t0 = time.perf_counter()
-        result = viewer._show(draft=draft)
-        if i:  # the first is a warm-up
-            walls.append(time.perf_counter() - t0)
-            renders.append(result.total_time)
-    return statistics.median(walls), statistics.median(renders)
+KINDS = (
+    ("orbit() full size", "png", False),
+    ("orbit() full size", "jpeg", False),
+    ("frame while dragging", "jpeg", True),
+)
+
+
+def _frame(viewer: Any, draft: bool) -> Tuple[float, float]:
+    """Seconds of one orbit frame through the viewer's path, and of its render alone."""
+    viewer._move("orbit", 6.0, 0.0)
+    t0 = time.perf_counter()
+    result = viewer._show(draft=draft)
+    return time.perf_counter() - t0, result.total_time
 
 
 def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
     count = 5 if quick else max(20, repeat)
     V, F = bunny()
     info = tm.gpu_info()
-    rows: List[Sequence[Any]] = []
-    for label, image_format, draft in (
-        ("orbit() full size", "png", False),
-        ("orbit() full size", "jpeg", False),
-        ("frame while dragging", "jpeg", True),
-    ):
-        viewer = tm.Viewer(V, F, outlines="mesh", width=SIZE, height=SIZE, image_format=image_format)
-        try:
-            frame, render = _frames(viewer, draft, count)
+    viewers = [tm.Viewer(V, F, outlines="mesh", width=SIZE, height=SIZE, image_format=fmt) for _, fmt, _ in KINDS]
+    times: List[List[Tuple[float, float]]] = [[] for _ in KINDS]
+    try:
+        for i in range(count + 1):  # the kinds take turns frame by frame, so load falls on each alike
+            for k, (viewer, (_, _, draft)) in enumerate(zip(viewers, KINDS)):
+                t = _frame(viewer, draft)
+                if i:  # the first round warms up
+                    times[k].append(t)
+        rows: List[Sequence[Any]] = []
+        for (label, fmt, draft), viewer, kind_times in zip(KINDS, viewers, times):
+            frame = statistics.median(t[0] for t in kind_times)
+            render = statistics.median(t[1] for t in kind_times)
             assert viewer.frame is not None
             size = f"{viewer.frame.shape[1]}x{viewer.frame.shape[0]}"
-        finally:
+            rows.append((label, size, "jpeg" if draft else fmt, f"{render * 1e3:.1f} ms",
+                         f"{(frame - render) * 1e3:.1f} ms", f"{frame * 1e3:.1f} ms", round(1.0 / frame, 1)))
+    finally:
+        for viewer in viewers:
             viewer.close()
-        rows.append((label, size, "jpeg" if draft else image_format, f"{render * 1e3:.1f} ms",
-                     f"{(frame - render) * 1e3:.1f} ms", f"{frame * 1e3:.1f} ms", round(1.0 / frame, 1)))
     title = (f"Viewer frames: the bunny ({len(F):,} faces) with mesh outlines, on {info['name']} "
              f"({info['backend']}, {info['device_type']}); median of {count}")
     print(table(("frame", "size", "format", "render", "encode + send", "frame", "fps"), rows, title))
