@@ -5,7 +5,8 @@ The test opens a notebook that shows a viewer of the bunny, runs it, drags acros
 and checks that the picture changed, that the kernel sent new frames (the frame numbers come
 from the kernel), that the frames drawn while dragging were smaller than the last one, which is
 full size, and that the kernel's viewer agrees (a cell run afterwards reads its render count);
-then turns the wheel and checks that the bunny grew.
+then turns the wheel and checks that the bunny grew, and switches the outlines off with the
+on-screen controls and checks that the ink went.
 With TOONMESH_SCREENSHOT=1 it also writes the screenshot the README shows (docs/viewer.png).
 """
 
@@ -36,7 +37,7 @@ CELLS = [
     "\n"
     "V, F = bunny()\n"
     "blue = tm.Material.bands('#4f8fd8')\n"
-    "v = tm.Viewer(V, F, material=blue, outlines='mesh', width=480, height=360)\n"
+    "v = tm.Viewer(V, F, material=blue, outlines='mesh', width=480, height=360, controls=True)\n"
     "v",
     "print('renders', v.render_count, 'camera eye', v.camera.eye)",
 ]
@@ -122,7 +123,7 @@ def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
     with sync_api.sync_playwright() as p:
         browser = p.chromium.launch(executable_path=chromium, args=["--no-sandbox"])
         try:
-            page = browser.new_page(viewport={"width": 1100, "height": 800})
+            page = browser.new_page(viewport={"width": 1500, "height": 900})
             page.goto(f"{jupyter_lab}/lab/tree/viewer.ipynb")
             page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=30_000)
             # the kernel connected and idle (the status bar says "Python 3 (ipykernel) | Idle")
@@ -175,6 +176,14 @@ def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
             page.wait_for_timeout(300)
             zoomed = _pixels(img.screenshot())
 
+            # a control: outlines off re-renders (the frame has fewer dark pixels)
+            before_switch = int(viewer.get_attribute("data-frame"))
+            page.locator(".widget-dropdown select").select_option("none")
+            page.wait_for_function(
+                "(n) => +document.querySelector('.toonmesh-viewer').dataset.frame > n", arg=before_switch, timeout=20_000)
+            page.wait_for_timeout(300)
+            no_outlines = _pixels(img.screenshot())
+
             # the kernel's own count, read by the notebook's second cell (run after the drag)
             cell = cells.nth(1)
             cell.locator(".jp-InputPrompt").click()
@@ -199,3 +208,8 @@ def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
         return float((picture.min(axis=2) < 200).mean())
 
     assert covered(zoomed) > 1.2 * covered(after), (covered(after), covered(zoomed))
+
+    def inked(picture):  # near-black pixels: outlines and the darkest band
+        return float((picture.max(axis=2) < 40).mean())
+
+    assert inked(no_outlines) < 0.9 * inked(zoomed), (inked(zoomed), inked(no_outlines))

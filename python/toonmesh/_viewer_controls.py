@@ -14,7 +14,8 @@ if TYPE_CHECKING:
 
 
 def _angles(direction: Any) -> "tuple[float, float]":
-    """Azimuth (about y, from +z toward +x) and elevation (toward +y) of a direction, in degrees."""
+    """Azimuth (about y, from +z toward +x) and elevation (toward +y) of a direction, in degrees.
+    The sliders show where the light comes from: the opposite of its direction of travel."""
     x, y, z = direction
     n = math.sqrt(x * x + y * y + z * z) or 1.0
     return math.degrees(math.atan2(x, z)), math.degrees(math.asin(max(-1.0, min(1.0, y / n))))
@@ -45,15 +46,16 @@ def control_panel(viewer: "Viewer") -> Any:
                 viewer.widget.show_error(f"{type(exc).__name__}: {exc}")
 
     light: Optional[Light] = viewer.lights[0] if viewer.lights else None
-    if light is not None and light.kind == "directional":
-        az, el = _angles(light.direction)
+    if light is not None and light.direction is not None:  # a directional light
+        az, el = _angles(tuple(-x for x in light.direction))
         azimuth = slider("light azimuth", az, -180, 180, 1)
         elevation = slider("light elevation", el, -89, 89, 1)
         shadows = w.Checkbox(value=light.shadows is not None, description="shadows", style=style)
 
         def relight(_: Any = None) -> None:
             first = viewer.lights[0]
-            lit = Light.directional(_direction(azimuth.value, elevation.value), color=first.color,
+            toward = _direction(azimuth.value, elevation.value)
+            lit = Light.directional(tuple(-x for x in toward), color=first.color,
                                     intensity=first.intensity, space=first.space,
                                     shadows=(first.shadows or True) if shadows.value else None)
             guarded(lambda: setattr(viewer, "lights", [lit, *viewer.lights[1:]]))
