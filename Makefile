@@ -1,15 +1,20 @@
 # Two entry points on a fresh machine:
 #   make demo   builds toonmesh into .venv and runs the main job
 #   make test   builds it with the peer libraries and runs every test (Rust and Python)
+#   make notebook  builds it with the notebook extra and opens the quickstart in JupyterLab
 # and: make docs (the API reference from the docstrings, into docs/api/)
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 
-.PHONY: demo test bench docs sysdeps build build-test clean
+.PHONY: demo test bench docs notebook sysdeps sysdeps-test build build-test clean
 
 sysdeps:
 	@bash scripts/system-deps.sh
+
+# and Chromium, for the viewer's browser test
+sysdeps-test:
+	@bash scripts/system-deps.sh --test
 
 $(BIN)/maturin:
 	$(PYTHON) -m venv $(VENV)
@@ -20,8 +25,13 @@ $(BIN)/maturin:
 build: sysdeps $(BIN)/maturin
 	$(BIN)/maturin develop --release -E io
 
-build-test: sysdeps $(BIN)/maturin
+build-test: sysdeps-test $(BIN)/maturin
 	$(BIN)/maturin develop --release -q -E test
+
+# the notebook extra: JupyterLab and the viewer's widget (anywidget, ipywidgets)
+notebook: sysdeps $(BIN)/maturin
+	$(BIN)/maturin develop --release -q -E notebook
+	$(BIN)/jupyter lab notebooks/quickstart.ipynb
 
 demo: build
 	$(BIN)/python -m toonmesh demo

@@ -1396,6 +1396,56 @@ CASES += RENDER_CASES
 
 
 # ------------------------------------------------------------------------------------------------
+# The viewer (toonmesh.Viewer): each call on a fresh 16x16 viewer of the shared handle; the result
+# is its frame (or the snapshot).
+
+
+def _viewer(**kw: Any) -> Any:
+    v = tm.Viewer(renderer=RENDERER, **kw)
+    try:
+        return v.frame
+    finally:
+        v.close()
+
+
+def _viewer_call(method: str) -> Callable[..., Any]:
+    def call(**kw: Any) -> Any:
+        v = tm.Viewer(HANDLE, renderer=RENDERER, **SMALL)
+        try:
+            result = getattr(v, method)(**kw)
+            return v.frame if result is None else result
+        finally:
+            v.close()
+
+    return call
+
+
+DRAG = Number(-1e6, 1e6)
+VIEWER_SETTINGS = [p for p in FRAME if p.name != "outputs"]  # a viewer shows the colour image
+
+CASES += [
+    Case(
+        "Viewer",
+        _viewer,
+        dict(vertices=V, faces=F, normals="smooth", image_format="png", drag_scale=0.5, controls=False, **SMALL),
+        [
+            Param("vertices", VERTICES),
+            Param("faces", FACES),
+            Param("normals", NORMALS),
+            Param("image_format", Name(("png", "jpeg"))),
+            Param("drag_scale", Number(0.05, 1.0)),
+            Param("controls", Flag()),
+        ],
+    ),
+    Case("Viewer.orbit", _viewer_call("orbit"), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)]),
+    Case("Viewer.pan", _viewer_call("pan"), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)]),
+    Case("Viewer.zoom", _viewer_call("zoom"), dict(factor=1.5), [Param("factor", Number(1e-3, 1e3))]),
+    Case("Viewer.set", _viewer_call("set"), dict(SMALL, outlines="mesh", msaa=1, supersample=1), VIEWER_SETTINGS),
+    Case("Viewer.snapshot", _viewer_call("snapshot"), _frame(), FRAME),
+]
+
+
+# ------------------------------------------------------------------------------------------------
 # Running the probes
 
 
@@ -1531,6 +1581,8 @@ def test_every_public_callable_is_in_the_table() -> None:
     no_arguments |= {"Camera", "Light", "Material"}
     # A render's result: its methods write its images out (test_render.py, test_render_outlines.py).
     no_arguments |= {"RenderResult"} | _methods(tm.RenderResult)
+    # The viewer's methods without arguments: tests/test_viewer.py.
+    no_arguments |= {"Viewer.close", "Viewer.code", "Viewer.reframe"}
     public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
     public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny"}
     public |= {"edges.EdgeIndex.feature_edges", "edges.EdgeIndex.silhouette", "edges.EdgeIndex.outlines",

@@ -27,7 +27,7 @@ def test_api_reference_builds_with_every_public_function_documented(tmp_path):
                  "toonmesh/cli.html"):
         assert page in names, sorted(names)
     top = (tmp_path / "toonmesh.html").read_text()
-    for name in ("render", "Renderer", "Material", "Camera", "Light", "RenderResult"):
+    for name in ("render", "Renderer", "Material", "Camera", "Light", "RenderResult", "Viewer"):
         assert f'id="{name}"' in top, name  # the rendering API is documented on the package page
     assert "laplacian" in (tmp_path / "toonmesh" / "smooth.html").read_text()
     # pdoc cannot evaluate some postponed annotations (a NamedTuple's, under `from __future__ import

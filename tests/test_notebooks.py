@@ -8,6 +8,7 @@ to stderr (a warning) or leaves files behind in the working directory.
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import os
 from pathlib import Path
@@ -34,6 +35,11 @@ NEEDS = {
     "cross_validation.ipynb": ["trimesh", "pymeshlab", "skimage"],
     "smoothing.ipynb": ["matplotlib"],
 }
+
+
+# Notebooks that open a toonmesh.Viewer: with anywidget installed (always in CI) they show a
+# live widget besides the still frame.
+VIEWERS = {"quickstart.ipynb"}
 
 
 def code_cells(path: Path) -> list:
@@ -79,4 +85,6 @@ def test_notebook_runs_in_a_jupyter_kernel_from_any_folder(path, tmp_path, monke
     assert any(o.output_type == "stream" for o in outputs) or shown, "the notebook shows nothing"
     if SHOWS.get(path.name):
         assert SHOWS[path.name] in shown, f"{path.name} shows no {SHOWS[path.name]}"
+    if path.name in VIEWERS and (importlib.util.find_spec("anywidget") or os.environ.get("CI", "").lower() == "true"):
+        assert "application/vnd.jupyter.widget-view+json" in shown, f"{path.name} shows no viewer widget"
     assert sorted(p.name for p in tmp_path.iterdir()) == [], "the notebook left files in the working directory"

@@ -34,12 +34,14 @@ from toonmesh._render import (
 )
 
 from toonmesh._render import __all__ as _rendering
+from toonmesh.viewer import Viewer
 
 __all__ = [
     *_rendering,
     "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",
+    "Viewer",
     "__version__",
     "edges",
     "get_num_threads",

@@ -3,7 +3,7 @@
     toonmesh render MESH... -o OUT [--size WxH] [--style S] [--normals MODE] [--views N] [--up x|y|z] ...
     toonmesh smooth IN OUT [--method M] [--iterations N] [--preset P] [--weld]
     toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG]
-    toonmesh bench smooth|edges|render|all [--quick] [--json FILE]
+    toonmesh bench smooth|edges|render|effects|viewer|all [--quick] [--json FILE]
     toonmesh demo
     toonmesh --version
 

@@ -1,0 +1,685 @@
+"""An interactive toon render in Jupyter: ``toonmesh.Viewer(V, F, **render keywords)``.
+
+The kernel renders every frame with toonmesh itself (toon bands, outlines, hatching, shadows) and
+sends it to the browser as a JPEG or PNG; the browser sends back pointer events. The mesh is
+uploaded to the GPU once. The widget needs the ``notebook`` extra (``pip install
+'toonmesh[notebook]'``: anywidget, ipywidgets, JupyterLab); without it, or where no widget front
+end runs (nbconvert, GitHub, a terminal), the viewer shows its current frame as a still PNG.
+
+Flow control: pointer events only move the camera (no render each); one thread renders the
+latest view when it is free, so a slow frame never queues a backlog. While the pointer moves,
+frames are drawn at ``drag_scale`` of the size and sent as JPEG; when it stops (or is released)
+the full-size frame follows in ``image_format``.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import re
+import threading
+from typing import TYPE_CHECKING, Any, Dict, Generic, List, Optional, Tuple, TypeVar, overload
+
+import numpy as np
+
+from toonmesh import _core
+from toonmesh._render import (
+    Camera,
+    Dither,
+    Light,
+    Material,
+    Mesh,
+    Normals,
+    Outlines,
+    RenderOptions,
+    RenderResult,
+    Renderer,
+    Shadows,
+    shared_renderer,
+)
+
+if TYPE_CHECKING:
+    from typing_extensions import Unpack
+
+    from toonmesh._render import RenderKeywords
+
+NOTEBOOK_EXTRA = "pip install 'toonmesh[notebook]'"
+
+# Radians of orbit per pixel of drag, as a fraction of the frame's height: a drag across the
+# whole height turns the view half way round.
+_ORBIT_PER_HEIGHT = math.pi
+# Zoom factor per unit of wheel delta (a browser's wheel notch is about 100 units: ~14%).
+_WHEEL_ZOOM = 0.0015
+# The largest moves one call takes (pixels of drag, zoom factor): beyond them the view leaves
+# float precision, and no pointer gets there.
+_MAX_DRAG = 1e6
+_MAX_ZOOM = 1e3
+# How close the view may come to looking straight along ``up`` (radians), so it never flips.
+_POLE_MARGIN = math.radians(1.0)
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    n = float(np.linalg.norm(v))
+    return v / n if n > 0 else v
+
+
+class _View:
+    """The camera as the viewer moves it: eye, target, world up, and the projection's size
+    (vertical field of view in degrees, or the orthographic view's height in world units)."""
+
+    def __init__(self, eye: Any, target: Any, up: Any, orthographic: bool, fov_y: float, height: float):
+        self.eye = np.asarray(eye, np.float64)
+        self.target = np.asarray(target, np.float64)
+        self.up = _unit(np.asarray(up, np.float64))
+        self.orthographic = orthographic
+        self.fov_y = fov_y
+        self.height = height
+
+    def camera(self) -> Camera:
+        eye, target, up = (tuple(float(x) for x in v) for v in (self.eye, self.target, self.up))
+        if self.orthographic:
+            return Camera.orthographic(eye, target, up=up, height=self.height)
+        return Camera.look_at(eye, target, up=up, fov_y=self.fov_y)
+
+    def source(self) -> str:
+        eye, target, up = (repr(tuple(float(x) for x in v)) for v in (self.eye, self.target, self.up))
+        if self.orthographic:
+            return f"tm.Camera.orthographic({eye}, {target}, up={up}, height={self.height!r})"
+        return f"tm.Camera.look_at({eye}, {target}, up={up}, fov_y={self.fov_y!r})"
+
+    def _basis(self) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+        forward = _unit(self.target - self.eye)
+        right = _unit(np.cross(forward, self.up))
+        return forward, right, np.cross(right, forward)
+
+    def world_per_pixel(self, pixels_high: int) -> float:
+        if self.orthographic:
+            return self.height / pixels_high
+        distance = float(np.linalg.norm(self.target - self.eye))
+        return 2.0 * distance * math.tan(math.radians(self.fov_y) / 2.0) / pixels_high
+
+    def orbit(self, dx: float, dy: float, pixels_high: int) -> None:
+        """Turntable orbit about the target: ``dx`` turns about ``up`` (dragging right turns the
+        scene right), ``dy`` tilts (dragging down shows more of the top), short of the poles."""
+        per_pixel = _ORBIT_PER_HEIGHT / pixels_high
+        offset = _rotate(self.eye - self.target, self.up, -dx * per_pixel)
+        radius = float(np.linalg.norm(offset))
+        along = float(np.dot(offset, self.up))
+        level = offset - along * self.up
+        if np.linalg.norm(level) == 0:  # looking straight along up: any side will do
+            level = np.cross(self.up, (1.0, 0.0, 0.0) if abs(self.up[0]) < 0.9 else (0.0, 0.0, 1.0))
+        polar = math.acos(float(np.clip(along / radius, -1.0, 1.0)))
+        polar = float(np.clip(polar - dy * per_pixel, _POLE_MARGIN, math.pi - _POLE_MARGIN))
+        self.eye = self.target + radius * (math.cos(polar) * self.up + math.sin(polar) * _unit(level))
+
+    def pan(self, dx: float, dy: float, pixels_high: int) -> None:
+        """Moves eye and target so that the scene follows the pointer."""
+        _, right, up = self._basis()
+        step = (-dx * right + dy * up) * self.world_per_pixel(pixels_high)
+        self.eye = self.eye + step
+        self.target = self.target + step
+
+    def zoom(self, factor: float) -> None:
+        if self.orthographic:
+            self.height /= factor
+        else:
+            self.eye = self.target + (self.eye - self.target) / factor
+
+
+def _rotate(v: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
+    """``v`` turned by ``angle`` radians about the unit ``axis`` (Rodrigues)."""
+    c, s = math.cos(angle), math.sin(angle)
+    return v * c + np.cross(axis, v) * s + axis * float(np.dot(axis, v)) * (1.0 - c)
+
+
+def _view_of(result: RenderResult, camera: Camera, center: np.ndarray) -> _View:
+    """The eye, target and projection a render used (for a fitted camera, whose eye the core
+    chose): the target is the point on the view axis nearest ``center``."""
+    rotation, translation = result.view_matrix[:3, :3], result.view_matrix[:3, 3]
+    eye = -rotation.T @ translation
+    forward = -rotation[2]
+    target = eye + forward * max(float(np.dot(center - eye, forward)), 1e-6)
+    orthographic = camera.projection == "orthographic"
+    height = camera.height if camera.height is not None else 2.0 / float(result.projection[1, 1])
+    fov_y = camera.fov_y if camera.fov_y is not None else 35.0
+    return _View(eye, target, camera.up, orthographic, float(fov_y), float(height))
+
+
+def _encode(color: np.ndarray, image_format: str, quality: int = 85) -> Tuple[bytes, str]:
+    """The frame as file bytes: PNG by the core, JPEG by Pillow (PNG when it is missing)."""
+    if image_format == "jpeg":
+        try:
+            from PIL import Image
+        except ImportError:
+            return _core.encode_png_rgba(color), "png"
+        out = io.BytesIO()
+        Image.fromarray(np.ascontiguousarray(color[..., :3])).save(out, format="JPEG", quality=quality)
+        return out.getvalue(), "jpeg"
+    return _core.encode_png_rgba(color), "png"
+
+
+T = TypeVar("T")
+
+
+class _Setting(Generic[T]):
+    """A render setting as a viewer attribute: reads the viewer's :class:`RenderOptions` (so it
+    reads back as the core holds it: ``v.outlines = "mesh"`` reads an :class:`Outlines`);
+    setting it (to anything ``RenderOptions`` takes) re-renders."""
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self.name = name
+
+    @overload
+    def __get__(self, viewer: None, owner: type) -> "_Setting[T]": ...
+    @overload
+    def __get__(self, viewer: "Viewer", owner: type) -> T: ...
+    def __get__(self, viewer: Optional["Viewer"], owner: type) -> Any:
+        return self if viewer is None else getattr(viewer._options, self.name)
+
+    def __set__(self, viewer: "Viewer", value: Any) -> None:
+        viewer.set(**{self.name: value})
+
+
+class ViewerCode(str):
+    """Python source, shown as itself (not quoted) in a notebook."""
+
+    def __repr__(self) -> str:
+        return str(self)
+
+
+class Viewer:
+    """An interactive toon render of a mesh in Jupyter, rendered by toonmesh in the kernel.
+
+    ``Viewer(V, F, **render keywords)``: ``vertices`` (N, 3) float32/float64 with ``faces``
+    (M, 3) int32/int64/uint32, a ``trimesh.Trimesh``, a :class:`toonmesh.Mesh` or a list of
+    them; ``normals`` and ``smooth_iterations`` as in :func:`toonmesh.render`; any keyword of
+    :class:`toonmesh.RenderOptions` (``width``, ``height`` in pixels, default 512; ``material``,
+    ``lights``, ``outlines``, ``camera``, ...). The meshes are uploaded once, to ``renderer``
+    (default: the process's shared renderer for ``backend``).
+
+    In the browser: drag to orbit, wheel to zoom, shift-drag or right-drag to pan, double-click
+    to frame the scene again. From Python: :meth:`orbit`, :meth:`zoom`, :meth:`pan` (each renders
+    the full-size frame before it returns), ``camera`` (read or set), and every render setting
+    as an attribute that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
+
+    Viewer options: ``controls=True`` shows ipywidgets sliders beside the frame (light
+    direction, band thresholds, crease angle, outline width, outlines and shadows switches);
+    ``image_format`` of the full-size frames, ``"png"`` (default) or ``"jpeg"``; ``drag_scale``,
+    the size of the frames drawn while the pointer moves, as a fraction of the full size
+    (0.05 to 1, default 0.5; they are sent as JPEG).
+
+    ``frame`` is the last frame shown, (H, W, 4) uint8; ``render_count`` counts the renders;
+    :meth:`snapshot` renders the current view at full quality (any size, any outputs);
+    :meth:`code` gives the ``tm.render(...)`` call that reproduces the view.
+    """
+
+    # The render settings, each re-rendering when set (see toonmesh.RenderOptions for what each
+    # takes and its default); ``camera`` is a property of its own, ``outputs`` always "color".
+    material: _Setting[Material] = _Setting()
+    transform: _Setting[List[List[float]]] = _Setting()
+    lights: _Setting[List[Light]] = _Setting()
+    ambient: _Setting[Tuple[float, float, float]] = _Setting()
+    background: _Setting[Tuple[float, float, float, float]] = _Setting()
+    width: _Setting[int] = _Setting()
+    height: _Setting[int] = _Setting()
+    msaa: _Setting[int] = _Setting()
+    supersample: _Setting[int] = _Setting()
+    outlines: _Setting[Optional[Outlines]] = _Setting()
+
+    def __init__(
+        self,
+        vertices: Any,
+        faces: Any = None,
+        *,
+        normals: Normals = "smooth",
+        smooth_iterations: int = 0,
+        backend: Optional[str] = None,
+        renderer: Optional[Renderer] = None,
+        controls: bool = False,
+        image_format: str = "png",
+        drag_scale: float = 0.5,
+        **options: "Unpack[RenderKeywords]",
+    ):
+        if "outputs" in options:
+            raise TypeError("outputs: a Viewer shows the colour image; use snapshot(outputs=...) for others")
+        if renderer is not None and not isinstance(renderer, Renderer):
+            raise TypeError(f"renderer: expected a toonmesh.Renderer, got {type(renderer).__name__}")
+        if not isinstance(controls, (bool, np.bool_)):
+            raise TypeError(f"controls: expected True or False, got {type(controls).__name__}")
+        self._renderer = renderer if renderer is not None else shared_renderer(backend)
+        self._options = RenderOptions(**options)  # checked before any upload
+        self._given: Dict[str, Any] = {k: v for k, v in options.items() if k != "camera" and v is not None}
+        self.image_format = _format(image_format)
+        self.drag_scale = _number("drag_scale", drag_scale, 0.05, 1.0)
+        self._normals = normals
+        self._smooth_iterations = smooth_iterations
+        self._uploaded: List[Any] = []  # the MeshHandles this viewer made (close() frees them)
+        self._meshes, self._mesh_source, self._center = self._upload(vertices, faces, normals, smooth_iterations)
+        self.render_count = 0
+        self.frame: Optional[np.ndarray] = None
+        self._frame_id = 0
+        self._render_lock = threading.RLock()
+        self._state_lock = threading.Lock()
+        self._wanted: Optional[bool] = None  # the draft flag of the latest frame asked for
+        self._busy = False
+        self._wake = threading.Condition(self._state_lock)
+        self._worker: Optional[threading.Thread] = None
+        self._closed = False
+        self._widget: Any = _make_widget(self)
+        self._controls: Any = None
+        self._set_camera(options.get("camera"), show=False)
+        self._show(draft=False)
+        if controls and self._widget is not None:  # without the notebook extra: the still frame
+            from toonmesh._viewer_controls import control_panel
+
+            self._controls = control_panel(self)
+
+    # -- the scene ----------------------------------------------------------------------------
+
+    def _upload(self, vertices: Any, faces: Any, normals: Normals, smooth_iterations: int) -> Tuple[List[Mesh], str, np.ndarray]:
+        """The scene's meshes on the renderer (uploaded once), how code() passes them, and the
+        centre of their bounding box in world space."""
+        single = faces is not None or not isinstance(vertices, (Mesh, list, tuple))  # as tm.render reads it
+        items = [Mesh(vertices, faces, normals=normals)] if single else ([vertices] if isinstance(vertices, Mesh) else list(vertices))
+        if not items:
+            raise ValueError("vertices: the scene has no mesh")
+        meshes: List[Mesh] = []
+        lows: List[np.ndarray] = []
+        highs: List[np.ndarray] = []
+        try:
+            self._add_meshes(items, normals, smooth_iterations, meshes, lows, highs)
+        except BaseException:
+            self._free_meshes()
+            raise
+        center = (np.min(lows, axis=0) + np.max(highs, axis=0)) / 2 if lows else np.zeros(3)
+        if single:
+            source = "mesh" if faces is None else "V, F"
+        else:
+            source = "meshes"
+        return meshes, source, center
+
+    def _add_meshes(self, items: List[Any], normals: Normals, smooth_iterations: int, meshes: List[Mesh],
+                    lows: List[np.ndarray], highs: List[np.ndarray]) -> None:
+        for i, item in enumerate(items):
+            if not isinstance(item, Mesh):
+                item = Mesh(item, normals=normals)  # a Trimesh or a MeshHandle in a list
+            if item.handle is not None:
+                if item.handle.renderer is not self._renderer:
+                    raise ValueError(f"vertices[{i}]: the MeshHandle belongs to another Renderer")
+                meshes.append(item)
+                continue
+            assert item.vertices is not None and item.faces is not None
+            handle = self._renderer.add_mesh(item.vertices, item.faces, normals=item.normals, smooth_iterations=smooth_iterations)
+            self._uploaded.append(handle)
+            meshes.append(Mesh(handle, material=item.material, transform=item.transform))
+            V = item.vertices
+            transform = item.transform if item.transform is not None else self._options_transform()
+            V = V @ transform[:3, :3].T + transform[:3, 3]
+            lows.append(V.min(axis=0))
+            highs.append(V.max(axis=0))
+
+    def _free_meshes(self) -> None:
+        for handle in self._uploaded:
+            self._renderer.remove_mesh(handle)
+        self._uploaded = []
+
+    def _options_transform(self) -> np.ndarray:
+        return np.asarray(self._options.transform, np.float64)
+
+    def close(self) -> None:
+        """Frees the meshes this viewer uploaded (not MeshHandles it was given) and closes its
+        widget; the viewer cannot render after this."""
+        with self._state_lock:
+            self._closed = True
+            self._wake.notify_all()
+        if self._widget is not None:
+            self._widget.close()
+        with self._render_lock:
+            self._free_meshes()
+            self._meshes = []
+
+    # -- the camera ---------------------------------------------------------------------------
+
+    @property
+    def camera(self) -> Camera:
+        """The current view as a :class:`toonmesh.Camera` (a ``look_at`` or ``orthographic``
+        one); setting a camera (a fitted one too) re-renders."""
+        with self._state_lock:
+            return self._view.camera()
+
+    @camera.setter
+    def camera(self, camera: Camera) -> None:
+        self._set_camera(camera, show=True)
+
+    def _set_camera(self, camera: Optional[Camera], show: bool) -> None:
+        camera = self._options.replace(camera=camera).camera  # checked, with the core's default
+        if camera.kind == "fit":
+            result = self._render(camera, self._options.width, self._options.height)
+            view = _view_of(result, camera, self._center)
+        else:
+            view = _View(camera.eye, camera.target, camera.up, camera.projection == "orthographic",
+                         float(camera.fov_y or 35.0), float(camera.height or 1.0))
+        with self._state_lock:
+            self._view = view
+        if show:
+            self._show(draft=False)
+
+    def orbit(self, dx: float, dy: float) -> None:
+        """Orbits about the target as a drag of ``dx``, ``dy`` pixels would (x right, y down; a
+        drag over the frame's height turns half way round; each at most 1e6 either way), then
+        renders the full-size frame."""
+        self._move("orbit", _pixels("dx", dx), _pixels("dy", dy))
+        self._show(draft=False)
+
+    def pan(self, dx: float, dy: float) -> None:
+        """Moves the view as a shift-drag of ``dx``, ``dy`` pixels would (the scene follows the
+        pointer; each at most 1e6 either way), then renders the full-size frame."""
+        self._move("pan", _pixels("dx", dx), _pixels("dy", dy))
+        self._show(draft=False)
+
+    def zoom(self, factor: float) -> None:
+        """Zooms in by ``factor`` (0.001 to 1000; 2 halves the distance to the target or the
+        orthographic view's height, 0.5 doubles it), then renders the full-size frame."""
+        factor = _number("factor", factor, 1.0 / _MAX_ZOOM, _MAX_ZOOM)
+        self._move("zoom", factor, 0.0)
+        self._show(draft=False)
+
+    def reframe(self) -> None:
+        """Frames the scene again from the current direction (what a double-click does)."""
+        self._reframe()
+        self._show(draft=False)
+
+    def _reframe(self) -> None:
+        with self._state_lock:
+            view = self._view
+        direction = tuple(float(x) for x in view.eye - view.target)
+        up = tuple(float(x) for x in view.up)
+        camera = Camera.fit(direction, up=up, orthographic=view.orthographic, fov_y=None if view.orthographic else view.fov_y)
+        self._set_camera(camera, show=False)
+
+    def _move(self, kind: str, a: float, b: float) -> None:
+        with self._state_lock:
+            if kind == "orbit":
+                self._view.orbit(a, b, self._options.height)
+            elif kind == "pan":
+                self._view.pan(a, b, self._options.height)
+            else:
+                self._view.zoom(a)
+
+    # -- render settings ----------------------------------------------------------------------
+
+    @property
+    def options(self) -> RenderOptions:
+        """The render settings of the current view (:class:`toonmesh.RenderOptions`)."""
+        return self._options.replace(camera=self.camera)
+
+    def set(self, **options: "Unpack[RenderKeywords]") -> None:
+        """Changes several render settings at once, then renders once."""
+        if "outputs" in options:
+            raise TypeError("outputs: a Viewer shows the colour image; use snapshot(outputs=...) for others")
+        camera = options.pop("camera", None)
+        self._options = self._options.replace(**options)  # type: ignore[misc]
+        for k, v in options.items():
+            if v is None:
+                self._given.pop(k, None)
+            else:
+                self._given[k] = v
+        if camera is not None:
+            self._set_camera(camera, show=False)
+        self._show(draft=False)
+
+    # -- rendering ----------------------------------------------------------------------------
+
+    def _render(self, camera: Camera, width: int, height: int) -> RenderResult:
+        with self._render_lock:
+            options = self._options.replace(camera=camera, width=width, height=height, outputs=("color",))
+            result = self._renderer._render(self._meshes, options)
+            self.render_count += 1
+            return result
+
+    def _show(self, draft: bool) -> RenderResult:
+        """Renders the current view (at ``drag_scale`` of the size when ``draft``) and sends it
+        to the front end."""
+        with self._render_lock:
+            with self._state_lock:
+                camera = self._view.camera()
+            width, height = self._options.width, self._options.height
+            if draft:
+                width = max(1, round(width * self.drag_scale))
+                height = max(1, round(height * self.drag_scale))
+            result = self._render(camera, width, height)
+            assert result.color is not None
+            data, fmt = _encode(result.color, "jpeg" if draft else self.image_format)
+            self.frame = result.color
+            self._frame_id += 1
+            if self._widget is not None:
+                self._widget.show_frame(data, fmt, self._frame_id, self._options.width, self._options.height)
+            return result
+
+    def snapshot(self, **options: "Unpack[RenderKeywords]") -> RenderResult:
+        """The current view rendered at full quality as a :class:`toonmesh.RenderResult`;
+        ``options`` override the viewer's settings for this render only (``width``, ``height``,
+        ``supersample``, ``outputs``, ...)."""
+        with self._render_lock:
+            opts = self.options.replace(**options)
+            result = self._renderer._render(self._meshes, opts)
+            self.render_count += 1
+            return result
+
+    def code(self) -> ViewerCode:
+        """The ``tm.render(...)`` call that reproduces the current frame (shown unquoted in a
+        notebook; ``print(v.code())`` elsewhere). Settings without a constructor spelling are
+        written in their pickled form."""
+        parts = [self._mesh_source]
+        if self._normals != "smooth" and self._mesh_source != "meshes":
+            parts.append(f"normals={self._normals!r}")
+        if self._smooth_iterations:
+            parts.append(f"smooth_iterations={self._smooth_iterations!r}")
+        with self._state_lock:
+            parts.append(f"camera={self._view.source()}")
+        for name in SETTINGS:
+            if name in self._given:
+                parts.append(f"{name}={_source(self._given[name])}")
+        arguments = "".join(f"    {p},\n" for p in parts)
+        return ViewerCode(f"import toonmesh as tm\n\nr = tm.render(\n{arguments})\n")
+
+    # -- the front end's events and flow control ----------------------------------------------
+
+    def _on_event(self, content: Dict[str, Any]) -> None:
+        """An event from the front end: the camera moves at once; a frame is asked for."""
+        event = content.get("event")
+        if event in ("orbit", "pan"):
+            self._move(event, float(content.get("dx", 0)), float(content.get("dy", 0)))
+            self._ask(draft=True)
+        elif event == "zoom":
+            self._move("zoom", math.exp(-_WHEEL_ZOOM * float(content.get("dy", 0))), 0.0)
+            self._ask(draft=True)
+        elif event == "settle":
+            self._ask(draft=False)
+        elif event == "frame":
+            self._reframe()
+            self._ask(draft=False)
+
+    def _ask(self, draft: bool) -> None:
+        """Asks the render thread for a frame of the current view; only the latest request is
+        kept (a full-size one is not downgraded by a later draft of the same view)."""
+        with self._state_lock:
+            self._wanted = draft
+            if self._worker is None:
+                self._worker = threading.Thread(target=self._serve, name="toonmesh-viewer", daemon=True)
+                self._worker.start()
+            self._wake.notify()
+
+    def _serve(self) -> None:
+        while True:
+            with self._state_lock:
+                while self._wanted is None and not self._closed:
+                    self._wake.wait()
+                if self._closed:
+                    return
+                draft, self._wanted = bool(self._wanted), None
+                self._busy = True
+            try:
+                self._show(draft=draft)
+            except Exception as exc:  # shown in the widget, not lost in a thread
+                if self._widget is not None:
+                    self._widget.show_error(f"{type(exc).__name__}: {exc}")
+            finally:
+                with self._state_lock:
+                    self._busy = False
+                    self._wake.notify_all()
+
+    def _wait(self, timeout: float = 30.0) -> bool:
+        """Waits until every frame asked for is sent (for tests and scripts); False on timeout."""
+        with self._state_lock:
+            return self._wake.wait_for(lambda: self._wanted is None and not self._busy, timeout)
+
+    # -- display ------------------------------------------------------------------------------
+
+    @property
+    def widget(self) -> Any:
+        """The Jupyter widget (an ``anywidget.AnyWidget``), or None without the notebook extra."""
+        return self._widget
+
+    def _repr_png_(self) -> Optional[bytes]:
+        return None if self.frame is None else _core.encode_png_rgba(self.frame)
+
+    def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> Dict[str, Any]:
+        """The widget where a front end shows widgets, and always the current frame as PNG (what
+        nbconvert, GitHub and an untrusted notebook show) with a line of text."""
+        bundle: Dict[str, Any] = {}
+        shown = self._controls if self._controls is not None else self._widget
+        if shown is not None:
+            widget_bundle = shown._repr_mimebundle_(include=include, exclude=exclude)
+            if isinstance(widget_bundle, tuple):
+                widget_bundle = widget_bundle[0]
+            bundle.update(widget_bundle or {})
+        png = self._repr_png_()
+        if png is not None:
+            bundle["image/png"] = png
+        bundle["text/plain"] = repr(self)
+        return bundle
+
+    def __repr__(self) -> str:
+        size = f"{self._options.width}x{self._options.height}"
+        if self._widget is None:
+            return f"toonmesh.Viewer({size}): a still frame; for the interactive view, {NOTEBOOK_EXTRA}"
+        return f"toonmesh.Viewer({size}): interactive where Jupyter widgets run (JupyterLab, Notebook 7, VS Code)"
+
+
+#: The render settings a viewer holds as attributes, in the order code() writes them.
+SETTINGS = tuple(name for name, value in vars(Viewer).items() if isinstance(value, _Setting))
+
+
+def _number(name: str, value: Any, lo: float, hi: float) -> float:
+    """``value`` as a float in [lo, hi]: TypeError for a non-number (a bool too), ValueError
+    outside the range (NaN always is)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name}: expected a number, got {type(value).__name__}")
+    big = isinstance(value, int) and abs(value) >= 2**1023  # beyond a float: out of any range here
+    number = (math.inf if value > 0 else -math.inf) if big else float(value)
+    if not lo <= number <= hi:
+        raise ValueError(f"{name}: must be in [{lo:g}, {hi:g}], got {value}")
+    return number
+
+
+def _pixels(name: str, value: Any) -> float:
+    """A drag's length in pixels (finite; at most a million either way)."""
+    return _number(name, value, -_MAX_DRAG, _MAX_DRAG)
+
+
+def _format(image_format: Any) -> str:
+    if not isinstance(image_format, str):
+        raise TypeError(f"image_format: expected 'png' or 'jpeg', got {type(image_format).__name__}")
+    if image_format not in ("png", "jpeg"):
+        raise ValueError(f"image_format: expected 'png' or 'jpeg', got {image_format!r}")
+    return image_format
+
+
+# -- code() ---------------------------------------------------------------------------------------
+
+
+def _source(value: Any) -> str:
+    """Python source for a setting's value, checked to give the value back."""
+    if value is None or isinstance(value, (bool, int, float, str)):
+        return repr(value)
+    if isinstance(value, np.ndarray):
+        return repr(value.tolist())
+    if isinstance(value, (list, tuple)):
+        inner = ", ".join(_source(v) for v in value)
+        return f"[{inner}]" if isinstance(value, list) else f"({inner}{',' if len(value) == 1 else ''})"
+    for candidate in _spellings(value):
+        if _gives(candidate, value):
+            short = _FLOAT.sub(lambda m: repr(float(f"{float(m.group()):.7g}")), candidate)  # float32 noise off
+            return short if _gives(short, value) else candidate
+    restore, (cls, state) = value.__reduce__()
+    return f"tm._core._restore({cls!r}, {state!r})"
+
+
+_FLOAT = re.compile(r"(?<![\w.])-?\d+\.\d+(?:e[-+]?\d+)?")
+
+
+def _gives(source: str, value: Any) -> bool:
+    try:
+        return bool(eval(source, {"tm": _toonmesh()}) == value)
+    except Exception:
+        return False
+
+
+def _toonmesh() -> Any:
+    import toonmesh
+
+    return toonmesh
+
+
+def _spellings(value: Any) -> List[str]:
+    """Constructor calls that may give ``value`` back (each is checked)."""
+    out: List[str] = []
+    if isinstance(value, Outlines):
+        style = next((s for s in value.styles.values() if s is not None), None)
+        out.append(repr(value.kind))
+        if style is not None:
+            out.append(
+                f"tm.Outlines({value.kind!r}, color={_source(style.color)}, width={style.width!r}, "
+                f"crease_angle={value.crease_angle!r}, weld={value.weld!r}, normal_threshold={value.normal_threshold!r}, "
+                f"depth_threshold={value.depth_threshold!r}, depth_offset={value.depth_offset!r})"
+            )
+    elif isinstance(value, Light):
+        out.append("tm.Light.key()")
+        shadows = "None" if value.shadows is None else _source(value.shadows)
+        common = f"color={_source(value.color)}, intensity={value.intensity!r}, space={value.space!r}"
+        if value.kind == "directional":
+            out.append(f"tm.Light.directional({_source(value.direction)}, {common}, shadows={shadows})")
+        else:
+            out.append(f"tm.Light.point({_source(value.position)}, {common})")
+    elif isinstance(value, Shadows):
+        out.append(f"tm.Shadows({value.size!r}, {value.bias!r}, {value.filter!r})")
+    elif isinstance(value, Dither):
+        out.append(f"tm.Dither({value.pattern!r}, space={value.space!r}, amount={value.amount!r}, scale={value.scale!r})")
+    elif isinstance(value, Material):
+        dither = "None" if value.dither is None else _source(value.dither)
+        for factory in ("bands", "thresholded_phong", "lambert", "phong", "hatching", "lut"):
+            out.append(f"tm.Material.{factory}()")
+        if value.model == "bands" and value.hatch_style is None:
+            out.append(
+                f"tm.Material.bands({_source(value.diffuse)}, thresholds={_source(value.thresholds)}, "
+                f"values={_source(value.values)}, per_vertex={value.per_vertex!r}, dither={dither})"
+            )
+    return out
+
+
+# -- the widget -----------------------------------------------------------------------------------
+
+
+def _make_widget(viewer: Viewer) -> Any:
+    """The anywidget front end, or None where anywidget is not installed."""
+    try:
+        from toonmesh._viewer_widget import ViewerWidget
+    except ImportError:
+        return None
+    widget = ViewerWidget()
+    widget.attach(viewer._on_event)
+    return widget
+
+
+__all__ = ["Viewer", "ViewerCode"]

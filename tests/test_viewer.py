@@ -1,0 +1,249 @@
+"""toonmesh.Viewer's kernel side: camera moves, flow control, settings, code() and display.
+
+The front end's events are fed to the viewer as the widget would hand them over
+(``Viewer._on_event``); the browser itself is tested in test_viewer_browser.py.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from conftest import need
+
+import toonmesh as tm
+from toonmesh.data import bunny
+
+SIZE = 160
+
+
+@pytest.fixture(scope="module")
+def mesh():
+    return bunny()
+
+
+@pytest.fixture
+def viewer(mesh):
+    need("anywidget")
+    v = tm.Viewer(*mesh, outlines="mesh", width=SIZE, height=SIZE)
+    yield v
+    v.close()
+
+
+def _distance(v):
+    c = v.camera
+    return float(np.linalg.norm(np.subtract(c.eye, c.target)))
+
+
+def test_a_hundred_quick_drag_events_render_a_few_frames_and_end_on_the_final_view(viewer, mesh):
+    before = viewer.render_count
+    for _ in range(100):
+        viewer._on_event({"event": "orbit", "dx": 2, "dy": 0.5})
+    assert viewer._wait()
+    drafts = viewer.render_count - before
+    assert 1 <= drafts <= 5, f"{drafts} renders for 100 events"
+    assert viewer.frame.shape == (SIZE // 2, SIZE // 2, 4)  # drawn at drag_scale while dragging
+
+    viewer._on_event({"event": "settle"})  # the pointer stopped
+    assert viewer._wait()
+    assert viewer.frame.shape == (SIZE, SIZE, 4)
+
+    same = tm.Viewer(*mesh, outlines="mesh", width=SIZE, height=SIZE)
+    same.orbit(200, 50)  # the whole drag at once
+    np.testing.assert_allclose(viewer.camera.eye, same.camera.eye, rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(viewer.frame, same.frame)
+    same.close()
+
+
+def test_orbit_turns_about_the_target_and_half_a_turn_per_frame_height(viewer):
+    c0 = viewer.camera
+    frame0 = viewer.frame.copy()
+    count = viewer.render_count
+    viewer.orbit(SIZE, 0)  # a drag across the frame's height: half way round about up
+    c1 = viewer.camera
+    assert viewer.render_count == count + 1 and viewer.frame.shape == (SIZE, SIZE, 4)
+    assert not np.array_equal(frame0, viewer.frame)
+    np.testing.assert_allclose(c1.target, c0.target)
+    offset0, offset1 = np.subtract(c0.eye, c0.target), np.subtract(c1.eye, c1.target)
+    np.testing.assert_allclose(offset1[[0, 2]], -offset0[[0, 2]], atol=1e-12)  # mirrored about the up axis
+    assert offset1[1] == pytest.approx(offset0[1])
+
+    viewer.orbit(0, 10 * SIZE)  # dragging down shows the top; tilting stops short of the pole instead of flipping over
+    offset2 = np.subtract(viewer.camera.eye, viewer.camera.target)
+    cos_to_up = offset2[1] / np.linalg.norm(offset2)
+    assert 0.999 < cos_to_up < 1.0
+    assert np.linalg.norm(offset2) == pytest.approx(np.linalg.norm(offset0))
+
+
+def test_zoom_and_pan(viewer):
+    d0 = _distance(viewer)
+    viewer.zoom(2)
+    assert _distance(viewer) == pytest.approx(d0 / 2)
+    c0 = viewer.camera
+    viewer.pan(30, -10)
+    c1 = viewer.camera
+    step = np.subtract(c1.eye, c0.eye)
+    np.testing.assert_allclose(np.subtract(c1.target, c0.target), step, atol=1e-12)
+    assert np.linalg.norm(step) > 0
+    assert abs(np.dot(step, np.subtract(c0.target, c0.eye))) < 1e-9 * np.linalg.norm(step) * d0  # across the view
+
+    viewer._on_event({"event": "frame"})  # double-click: framed again from the same side
+    assert viewer._wait()
+    assert _distance(viewer) == pytest.approx(d0, rel=1e-6)
+
+
+def test_wheel_events_zoom(viewer):
+    d0 = _distance(viewer)
+    viewer._on_event({"event": "zoom", "dx": 0, "dy": -300})  # wheel turned away from the user
+    assert viewer._wait()
+    assert _distance(viewer) < 0.8 * d0
+
+
+def test_setting_a_render_setting_re_renders(viewer):
+    count, frame = viewer.render_count, viewer.frame.copy()
+    viewer.outlines = "both"
+    assert viewer.render_count == count + 1
+    assert viewer.outlines.kind == "both"
+    viewer.outlines = None
+    assert viewer.render_count == count + 2 and not np.array_equal(frame, viewer.frame)
+    viewer.width = 96
+    assert viewer.frame.shape == (SIZE, 96, 4)
+    viewer.material = tm.Material.bands("#3060c0", thresholds=[0.3, 0.6], values=[0.2, 0.6, 1.0])
+    assert viewer.material.thresholds == pytest.approx([0.3, 0.6])
+    with pytest.raises(ValueError, match="thresholds"):
+        viewer.material = tm.Material.bands(thresholds=[0.5], values=[1.0])
+
+
+def test_code_reproduces_the_frame(viewer, mesh):
+    V, F = mesh
+    viewer.orbit(25, -12)
+    viewer.zoom(1.3)
+    viewer.lights = [tm.Light.directional((1, -1, -1), shadows=True)]
+    viewer.material = tm.Material.bands("#4f8fd8", thresholds=[0.25, 0.6], values=[0.3, 0.7, 1.0])
+    viewer.background = "#eeeeee"
+    code = viewer.code()
+    assert "tm.render(\n    V, F,\n" in code and "tm._core" not in code
+    scope = {"V": V, "F": F}
+    exec(code, scope)
+    np.testing.assert_array_equal(scope["r"].color, viewer.frame)
+
+
+def test_camera_can_be_read_and_set(viewer):
+    viewer.camera = tm.Camera.look_at((0.0, 0.3, 0.5), (0.0, 0.1, 0.0), fov_y=40)
+    c = viewer.camera
+    assert c.eye == pytest.approx((0.0, 0.3, 0.5)) and c.fov_y == 40
+    viewer.camera = tm.Camera.fit((1, 0, 0))  # fitted by the core, then held as eye and target
+    eye = np.subtract(viewer.camera.eye, viewer.camera.target)
+    assert eye[0] > 0 and abs(eye[1]) < 1e-9 * abs(eye[0]) and abs(eye[2]) < 1e-9 * abs(eye[0])
+
+
+def test_orthographic_views_zoom_by_their_height(mesh):
+    need("anywidget")
+    v = tm.Viewer(*mesh, camera=tm.Camera.fit(orthographic=True), width=64, height=64)
+    h0 = v.camera.height
+    v.zoom(2)
+    assert v.camera.projection == "orthographic" and v.camera.height == pytest.approx(h0 / 2)
+    v.close()
+
+
+def test_snapshot_renders_the_view_at_any_size_and_outputs(viewer):
+    r = viewer.snapshot(width=80, height=60, outputs=("color", "depth"))
+    assert r.color.shape == (60, 80, 4) and r.depth.shape == (60, 80)
+    full = viewer.snapshot()
+    np.testing.assert_array_equal(full.color, viewer.frame)
+
+
+def test_the_saved_notebook_keeps_a_still_frame(viewer):
+    bundle = viewer._repr_mimebundle_()
+    assert bundle["image/png"].startswith(b"\x89PNG")
+    assert "application/vnd.jupyter.widget-view+json" in bundle
+    assert viewer.widget._frame_id >= 1 and len(viewer.widget._frame) > 0
+
+
+def test_without_a_widget_front_end_the_viewer_says_how_to_get_one(mesh, monkeypatch):
+    import toonmesh.viewer as tv
+
+    monkeypatch.setattr(tv, "_make_widget", lambda viewer: None)  # as without anywidget
+    v = tm.Viewer(*mesh, width=64, height=64)
+    bundle = v._repr_mimebundle_()
+    assert set(bundle) == {"image/png", "text/plain"}
+    assert "toonmesh[notebook]" in bundle["text/plain"]
+    v.orbit(10, 0)  # still works from Python
+    assert v.frame.shape == (64, 64, 4)
+    v.close()
+
+
+def test_controls_change_the_render_settings(mesh):
+    need("ipywidgets")
+    need("anywidget")
+    v = tm.Viewer(*mesh, outlines="mesh", width=64, height=64, controls=True)
+    sliders = {c.description: c for c in v._controls.children[1].children}
+    count = v.render_count
+    sliders["outline width"].value = 3.0
+    assert v.outlines.styles["silhouette"].width == 3.0 and v.render_count == count + 1
+    sliders["crease angle"].value = 60
+    assert v.outlines.crease_angle == 60
+    sliders["band 1"].value = 0.1
+    assert v.material.thresholds[0] == pytest.approx(0.1)
+    sliders["shadows"].value = True
+    assert v.lights[0].shadows is not None
+    sliders["outlines"].value = "none"
+    assert v.outlines is None
+    v.close()
+
+
+def test_bad_arguments_are_named(viewer, mesh):
+    with pytest.raises(TypeError, match="dx"):
+        viewer.orbit("a", 0)
+    with pytest.raises(ValueError, match="factor"):
+        viewer.zoom(0)
+    with pytest.raises(ValueError, match="image_format"):
+        tm.Viewer(*mesh, image_format="gif")
+    with pytest.raises(ValueError, match="drag_scale"):
+        tm.Viewer(*mesh, drag_scale=2)
+    with pytest.raises(TypeError, match="outputs"):
+        tm.Viewer(*mesh, outputs=("depth",))
+    with pytest.raises(ValueError, match="width"):
+        viewer.width = 0
+
+
+def test_the_viewer_benchmark_reports_frame_times(capsys):
+    need("anywidget")
+    from toonmesh.bench import viewer as bench
+
+    bench.main(quick=True)
+    rows = [line for line in capsys.readouterr().out.splitlines() if line.startswith("| orbit") or line.startswith("| frame while")]
+    assert len(rows) == 3
+    for row in rows:
+        fps = float(row.strip(" |").split("|")[-1])
+        assert fps > 0
+
+
+def test_a_scene_of_several_meshes_and_its_code(mesh):
+    need("anywidget")
+    V, F = mesh
+    left = tm.Mesh(V, F, material=tm.Material.bands("#d05050"), transform=np.eye(4))
+    shifted = np.eye(4)
+    shifted[0, 3] = 0.2
+    right = tm.Mesh(V, F, material=tm.Material.lambert("#50a050"), transform=shifted)
+    v = tm.Viewer([left, right], width=96, height=64)
+    v.orbit(10, 5)
+    code = v.code()
+    assert "tm.render(\n    meshes,\n" in code
+    scope = {"meshes": [left, right]}
+    exec(code, scope)
+    np.testing.assert_array_equal(scope["r"].color, v.frame)
+    target = np.array(v.camera.target)
+    assert target[0] == pytest.approx((V[:, 0].min() + V[:, 0].max() + 0.2) / 2)  # the scene's centre
+    v.close()
+
+
+def test_close_frees_only_the_meshes_the_viewer_uploaded(mesh):
+    need("anywidget")
+    renderer = tm.Renderer()
+    mine = renderer.add_mesh(*mesh)
+    v = tm.Viewer([tm.Mesh(mine), tm.Mesh(*mesh)], renderer=renderer, width=48, height=48)
+    assert renderer._engine.mesh_count == 2
+    v.close()
+    assert renderer._engine.mesh_count == 1
+    assert renderer.render(mine, width=16, height=16).color.shape == (16, 16, 4)
