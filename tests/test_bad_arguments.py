@@ -531,6 +531,9 @@ UNIT = Number(0.0, 1.0)
 
 EDGE_INDEX = te.EdgeIndex(V, F)
 
+# Vertices for the curvature: a mesh 1e-310 across has curvature beyond float64's range, refused.
+CURVED_VERTICES = Array(tuple((n, v, ValueError if n == "tiny" else e) for n, v, e in VERTICES.probes))
+
 # A mesh's arrays, and a crease threshold in degrees.
 MESH_PARAMS = [Param("vertices", VERTICES), Param("faces", FACES)]
 CREASE = Param("crease_angle", Number(0.0, 180.0))
@@ -622,6 +625,25 @@ CASES: List[Case] = [
         EDGE_INDEX.segments,
         dict(edges=EDGE_PAIRS),
         [Param("edges", SEGMENT_EDGES)],
+    ),
+    Case("edges.curvature", te.curvature, _mesh(), [Param("vertices", CURVED_VERTICES), Param("faces", FACES)]),
+    Case(
+        "edges.contours",
+        te.contours,
+        _mesh(eye=(0.3, 0.2, 5.0), weld=False),
+        [*MESH_PARAMS, Param("eye", vec3("eye", OK), none=ValueError), Param("weld", Flag())],
+    ),
+    Case(
+        "edges.suggestive_contours",
+        te.suggestive_contours,
+        _mesh(direction=(0.3, 0.2, -1.0), threshold=0.01, weld=True),
+        [
+            Param("vertices", CURVED_VERTICES),
+            Param("faces", FACES),
+            Param("direction", vec3("direction", ValueError), none=ValueError),
+            Param("threshold", Number(0.0, math.inf, open_hi=True)),
+            Param("weld", Flag()),
+        ],
     ),
     Case("edges.chains", te.chains, dict(edges=EDGE_PAIRS), [Param("edges", EDGES)]),
     Case(
@@ -1574,6 +1596,7 @@ def test_every_public_callable_is_in_the_table() -> None:
     taking no arguments worth probing)."""
     covered = {c.name.split("(")[0] for c in CASES} | {"data.load_obj"}  # load_obj: see below
     no_arguments = {"get_num_threads", "data.bunny", "edges.FeatureEdges", "edges.EdgeDetection"}
+    no_arguments |= {"edges.Curvature"}  # what curvature() returns
     no_arguments |= {"kang_table", "Light.key", "MeshHandle", "RenderStack"}
     # a TypedDict of the render keywords, for type checkers (RenderOptions takes them)
     no_arguments |= {"RenderKeywords"}

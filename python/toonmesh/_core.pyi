@@ -42,6 +42,7 @@ __all__ = [
     "_restore",
     "_segments",
     "_shadow_truth",
+    "_suggestive_contours",
     "_transform",
     "_silhouette",
     "_smooth",
@@ -381,7 +382,10 @@ def _feature_edges(vertices: Any, faces: Any, crease_angle: float, weld: bool) -
 def _silhouette(vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool) -> _Pairs: ...
 def _chains(edges: Any) -> Tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
 def _contours(
-    vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool, threshold: Optional[float] = None
+    vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
+def _suggestive_contours(
+    vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool, threshold: float
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
 def _curvature(vertices: Any, faces: Any) -> Tuple[
     npt.NDArray[np.float64],

@@ -195,29 +195,6 @@ class Curvature:
         """(N,) float64 Gaussian curvature, k1 * k2."""
         return self.k1 * self.k2
 
-    def radial(self, vertices: Any, *, eye: Any = None, direction: Any = None) -> np.ndarray:
-        """(N,) float64 radial curvature for one view: the normal curvature along the view
-        vector projected into each tangent plane, k1 cos^2(phi) + k2 sin^2(phi) (DeCarlo et al.
-        2003). Where the view is along the normal (no tangent direction), the mean curvature.
-
-        Args:
-            vertices: (N, 3) positions (the mesh the curvature was computed on).
-            eye: (3,) camera position (perspective), or
-            direction: (3,) viewing direction (orthographic); exactly one.
-        """
-        V = np.asarray(vertices, dtype=np.float64)
-        if V.shape != self.d1.shape:
-            raise ValueError(f"vertices: expected shape {self.d1.shape}, got {V.shape}")
-        if (eye is None) == (direction is None):
-            raise ValueError("eye, direction: give exactly one of eye= (perspective) or direction= (orthographic)")
-        to_eye = np.asarray(eye, np.float64) - V if eye is not None else -np.broadcast_to(np.asarray(direction, np.float64), V.shape)
-        u = np.einsum("ij,ij->i", to_eye, self.d1)
-        v = np.einsum("ij,ij->i", to_eye, self.d2)
-        w2 = u * u + v * v
-        with np.errstate(invalid="ignore", divide="ignore"):
-            kr = (self.k1 * u * u + self.k2 * v * v) / w2
-        return np.where(w2 > 0, kr, self.mean)
-
 
 def curvature(vertices: Any, faces: Any = None) -> Curvature:
     """Principal curvatures, directions and their derivatives at every vertex (Rusinkiewicz
@@ -300,7 +277,7 @@ def suggestive_contours(
         line is cut by the derivative test lie inside faces.
     """
     V, F = mesh_arrays(vertices, faces)
-    return _polylines(*_core._contours(V, F, eye, direction, weld, threshold))
+    return _polylines(*_core._suggestive_contours(V, F, eye, direction, weld, threshold))
 
 
 def silhouette(

@@ -17,7 +17,7 @@ use rayon::prelude::*;
 use super::silhouette::View;
 use super::zero_set::{zero_set, Polylines};
 use crate::cancel::Cancel;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::mesh::curvature::{curvature, Curvature};
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::weld::{weld_faces, weld_map};
@@ -66,6 +66,15 @@ impl ContourMesh {
 /// The derivative threshold of suggestive contours, relative to the feature size squared, when
 /// none is given (DeCarlo et al.'s implementation uses the same).
 pub const DEFAULT_SUGGESTIVE_THRESHOLD: f64 = 0.01;
+
+/// Checks a suggestive-contour threshold: a finite number >= 0.
+pub fn check_threshold(arg: &str, t: f64) -> Result<f64> {
+    if t.is_finite() && t >= 0.0 {
+        Ok(t)
+    } else {
+        Err(Error::invalid(arg, format!("must be a finite number >= 0, got {t}")))
+    }
+}
 
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]

@@ -21,7 +21,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::cancel::Cancel;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::mesh::buckets::{Buckets, RingCorner};
 use crate::mesh::normals::DEGENERATE_RELATIVE_AREA;
 use crate::real::{Real, Vec3};
@@ -292,6 +292,18 @@ pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Ca
         })
         .collect();
 
+    // in the normalised coordinates every value is finite; only the scale can push them out of
+    // range (a mesh below about 1e-154 units across, whose derivatives exceed f64)
+    let k_max = principal.iter().map(|p| p.0.abs().max(p.1.abs())).fold(0.0, f64::max);
+    if !(k_max / scale).is_finite() || derivatives.iter().flatten().any(|x| !x.is_finite()) {
+        return Err(Error::invalid(
+            "vertices",
+            format!(
+                "the mesh is {scale:e} units across: its curvature (about 1/size) or the curvature's \
+                 derivatives (1/size^2) are beyond float64's range; scale it up first"
+            ),
+        ));
+    }
     let arr = |d: DVec3| d.to_array();
     Ok(Curvature {
         k1: principal.iter().map(|p| p.0 / scale).collect(),

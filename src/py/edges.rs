@@ -147,10 +147,26 @@ fn polylines_to_numpy(py: Python<'_>, lines: Polylines) -> PolylinesOut<'_> {
     (rows_to_numpy(py, lines.points), vec_to_numpy(py, lines.starts.into_iter().map(i64::from).collect()))
 }
 
-/// Smooth contours (`threshold` None) or suggestive contours of one view, as flat points and
-/// line starts.
+/// Lines of one view traced on a `ContourMesh` by `trace`, as flat points and line starts.
+fn view_lines<'py>(
+    py: Python<'py>,
+    (vertices, faces): (&Bound<'py, PyAny>, &Bound<'py, PyAny>),
+    (eye, direction): (Option<&Bound<'py, PyAny>>, Option<&Bound<'py, PyAny>>),
+    weld: &Bound<'py, PyAny>,
+    trace: impl Fn(&ContourMesh, View, &crate::cancel::Cancel) -> Result<Polylines> + Send + Sync,
+) -> PyResult<PolylinesOut<'py>> {
+    let view = view_of(eye, direction).map_err(to_py)?;
+    let weld = args::flag("weld", weld).map_err(to_py)?;
+    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let lines = mesh.run(py, faces, |p, f, cancel| {
+        let m = on_positions!(p, v => ContourMesh::build(v, f, weld));
+        trace(&m, view, cancel)
+    })?;
+    Ok(polylines_to_numpy(py, lines))
+}
+
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, eye, direction, weld, threshold = None))]
+#[pyo3(signature = (vertices, faces, eye, direction, weld))]
 fn _contours<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
@@ -158,28 +174,25 @@ fn _contours<'py>(
     eye: Option<&Bound<'py, PyAny>>,
     direction: Option<&Bound<'py, PyAny>>,
     weld: &Bound<'py, PyAny>,
-    threshold: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<PolylinesOut<'py>> {
-    let view = view_of(eye, direction).map_err(to_py)?;
-    let weld = args::flag("weld", weld).map_err(to_py)?;
-    let threshold = args::optional("threshold", threshold, |a, o| {
-        let t = args::number(a, o)?;
-        if t.is_finite() && t >= 0.0 {
-            Ok(t)
-        } else {
-            Err(Error::invalid(a, format!("must be a finite number >= 0, got {t}")))
-        }
-    })
-    .map_err(to_py)?;
-    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
-    let lines = mesh.run(py, faces, |p, f, cancel| {
-        let m = on_positions!(p, v => Ok(ContourMesh::build(v, f, weld)))?;
-        match threshold {
-            None => Ok(m.smooth(view)),
-            Some(t) => m.suggestive(view, t, cancel),
-        }
-    })?;
-    Ok(polylines_to_numpy(py, lines))
+    view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, _| Ok(m.smooth(view)))
+}
+
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, eye, direction, weld, threshold))]
+fn _suggestive_contours<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    eye: Option<&Bound<'py, PyAny>>,
+    direction: Option<&Bound<'py, PyAny>>,
+    weld: &Bound<'py, PyAny>,
+    threshold: &Bound<'py, PyAny>,
+) -> PyResult<PolylinesOut<'py>> {
+    let threshold = args::number("threshold", threshold)
+        .and_then(|t| crate::edges::contours::check_threshold("threshold", t))
+        .map_err(to_py)?;
+    view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, cancel| m.suggestive(view, threshold, cancel))
 }
 
 /// The once-per-mesh part of outline finding; immutable, so one index serves many threads.
@@ -448,6 +461,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_silhouette, m)?)?;
     m.add_function(wrap_pyfunction!(_curvature, m)?)?;
     m.add_function(wrap_pyfunction!(_contours, m)?)?;
+    m.add_function(wrap_pyfunction!(_suggestive_contours, m)?)?;
     m.add_function(wrap_pyfunction!(_chains, m)?)?;
     m.add_function(wrap_pyfunction!(_sobel, m)?)?;
     m.add_function(wrap_pyfunction!(_paper_edges, m)?)?;

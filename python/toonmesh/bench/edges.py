@@ -186,4 +186,4 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
     print(table(["case", "call", "toonmesh", "peer", "speed-up"], rows, title="Mesh-space outlines"))
     print(table(["case", "call", "toonmesh", "peer", "speed-up"], sobel_rows(size, repeat), title="Sobel"))
     curv = curvature_rows(4 if quick else 8, repeat)
-    print(table(["mesh", "estimator", "time", "mean curvature error (median)", "toonmesh's speed-up"], curv, title="Principal curvature"))
+    print(table(["case", "estimator", "time", "mean curvature error (median)", "toonmesh's speed-up"], curv, title="Principal curvature"))
