@@ -1403,8 +1403,10 @@ RENDER_CASES: List[Case] = [
             Param("width", Number(0.0, 64.0, open_lo=True), none=OK),
             *[
                 Param(k, STYLE, none=OK)
-                for k in ("silhouette", "boundary", "crease", "ridge", "valley", "nonmanifold", "image")
+                for k in ("silhouette", "boundary", "crease", "ridge", "valley", "nonmanifold", "suggestive", "image")
             ],
+            Param("contours", Name(("faces", "smooth")), none=OK),
+            Param("suggestive_threshold", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("crease_angle", Number(0.0, 180.0), none=OK),
             Param("weld", Flag(), none=OK),
             Param("normal_threshold", Number(0.0, F32_MAX), none=OK),

@@ -304,12 +304,15 @@ class Outlines:
         ridge: _Style = ...,
         valley: _Style = ...,
         nonmanifold: _Style = ...,
+        suggestive: _Style = ...,
         image: _Style = ...,
         crease_angle: Optional[float] = ...,
         weld: Optional[bool] = ...,
         normal_threshold: Optional[float] = ...,
         depth_threshold: Optional[float] = ...,
         depth_offset: Optional[float] = ...,
+        contours: Optional[str] = ...,
+        suggestive_threshold: Optional[float] = ...,
     ) -> Outlines: ...
     kind: Final[str]
     styles: Final[Dict[str, Optional[LineStyle]]]
@@ -318,6 +321,8 @@ class Outlines:
     normal_threshold: Final[float]
     depth_threshold: Final[float]
     depth_offset: Final[float]
+    contours: Final[str]
+    suggestive_threshold: Final[float]
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 

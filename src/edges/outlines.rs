@@ -20,12 +20,20 @@ pub enum LineKind {
     Ridge = 3,
     /// A concave crease.
     Valley = 4,
+    /// A suggestive contour (`edges::contours`): found through the faces, never an edge.
+    Suggestive = 5,
 }
 
 impl LineKind {
-    pub const COUNT: usize = 5;
-    pub const ALL: [LineKind; LineKind::COUNT] =
-        [LineKind::Silhouette, LineKind::Boundary, LineKind::NonManifold, LineKind::Ridge, LineKind::Valley];
+    pub const COUNT: usize = 6;
+    pub const ALL: [LineKind; LineKind::COUNT] = [
+        LineKind::Silhouette,
+        LineKind::Boundary,
+        LineKind::NonManifold,
+        LineKind::Ridge,
+        LineKind::Valley,
+        LineKind::Suggestive,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -34,6 +42,7 @@ impl LineKind {
             LineKind::NonManifold => "nonmanifold",
             LineKind::Ridge => "ridge",
             LineKind::Valley => "valley",
+            LineKind::Suggestive => "suggestive",
         }
     }
 }

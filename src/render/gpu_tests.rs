@@ -233,10 +233,16 @@ fn screen_lines(
         lines.extend(
             outline
                 .edges
+                .edges
                 .iter()
-                .zip(&outline.kinds)
+                .zip(&outline.edges.kinds)
                 .filter_map(|(e, k)| projector.project(pos[e[0] as usize], pos[e[1] as usize], *k as usize)),
         );
+        for (kind, curves) in &outline.curves {
+            for i in 0..curves.len() {
+                lines.extend(curves.line(i).windows(2).filter_map(|s| projector.project(s[0], s[1], *kind as usize)));
+            }
+        }
     }
     (lines, p.cam)
 }
@@ -245,8 +251,11 @@ fn screen_lines(
 fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
     use super::effects::outlines::settings::INK_KINDS;
     use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
-    let outlines = Outlines { crease_angle: 25.0, ..Outlines::new(true, false) };
-    for backend in backends() {
+    use super::effects::outlines::settings::ContourRule;
+    let faces = Outlines { crease_angle: 25.0, ..Outlines::new(true, false) };
+    // smooth contours: lines through the faces, drawn by the same pass
+    let smooth = Outlines { contours: ContourRule::Smooth, ..faces.clone() };
+    for (backend, outlines) in backends().into_iter().flat_map(|b| [(b, faces.clone()), (b, smooth.clone())]) {
         let r = open(backend).unwrap();
         let scene = two_spheres(&r, outlines.clone());
         let frame = FrameSpec {

@@ -8,7 +8,7 @@ use crate::edges::outlines::LineKind;
 use crate::error::{Error, Result};
 use crate::py::args::{flag, flag_or, opt_number, opt_rgb, rgb, text, type_name, Obj};
 use crate::py::errors::to_py;
-use crate::render::effects::outlines::settings::{kind_names, LineStyle, Outlines, IMAGE_KIND};
+use crate::render::effects::outlines::settings::{kind_names, ContourRule, LineStyle, Outlines, IMAGE_KIND};
 
 /// How one kind of ink line is drawn: ``color`` (sRGB, default black) and ``width`` in output
 /// pixels (default 1.5; the same at every resolution and supersampling factor).
@@ -71,8 +71,17 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// normal and depth buffers: Borquez and Yepez) or "both" (default). color and width: the common
 /// style of every kind (default black, 1.5 output pixels). Each kind can be styled on its own
 /// with a keyword: silhouette, boundary, crease (both ridge and valley), ridge, valley,
-/// nonmanifold, image; each takes None or True (the common style), False (not drawn), a
-/// :class:`LineStyle`, or a colour. Image edges are one pixel wide whatever the width.
+/// nonmanifold, suggestive, image; each takes None or True (the common style), False (not
+/// drawn), a :class:`LineStyle`, or a colour. Image edges are one pixel wide whatever the
+/// width. Suggestive contours (DeCarlo et al., see
+/// :func:`toonmesh.edges.suggestive_contours`) are drawn only when asked for (suggestive=True,
+/// a style or a colour; default None: not drawn).
+///
+/// contours: how silhouettes are found: "faces" (default: face edges between front- and
+/// back-facing faces, Kang et al.'s rule, exact for flat shading) or "smooth" (the smooth
+/// contour n . v = 0 traced through the faces, see :func:`toonmesh.edges.contours`: long clean
+/// lines on scans). suggestive_threshold: the derivative test of suggestive contours, relative
+/// to the mesh's feature size (default 0.01).
 ///
 /// crease_angle: dihedral angle in degrees above which an edge is a crease (default 30, as in
 /// :func:`toonmesh.edges.feature_edges`). weld: merge vertices at equal positions first, so
@@ -94,9 +103,10 @@ settings_class!(PyOutlines, Outlines, "Outlines", |o| o.validate(""));
 impl PyOutlines {
     #[new]
     #[pyo3(signature = (kind = None, *, color = None, width = None, silhouette = None, boundary = None,
-                        crease = None, ridge = None, valley = None, nonmanifold = None, image = None,
-                        crease_angle = None, weld = None, normal_threshold = None, depth_threshold = None,
-                        depth_offset = None))]
+                        crease = None, ridge = None, valley = None, nonmanifold = None, suggestive = None,
+                        image = None, crease_angle = None, weld = None, normal_threshold = None,
+                        depth_threshold = None, depth_offset = None, contours = None,
+                        suggestive_threshold = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         kind: Obj<'_, '_>,
@@ -108,12 +118,15 @@ impl PyOutlines {
         ridge: Obj<'_, '_>,
         valley: Obj<'_, '_>,
         nonmanifold: Obj<'_, '_>,
+        suggestive: Obj<'_, '_>,
         image: Obj<'_, '_>,
         crease_angle: Obj<'_, '_>,
         weld: Obj<'_, '_>,
         normal_threshold: Obj<'_, '_>,
         depth_threshold: Obj<'_, '_>,
         depth_offset: Obj<'_, '_>,
+        contours: Obj<'_, '_>,
+        suggestive_threshold: Obj<'_, '_>,
     ) -> PyResult<Self> {
         (|| {
             let (mesh, img) = match kind {
@@ -129,6 +142,7 @@ impl PyOutlines {
                 (LineKind::NonManifold as usize, "nonmanifold", nonmanifold, Some(common)),
                 (LineKind::Ridge as usize, "ridge", ridge, crease),
                 (LineKind::Valley as usize, "valley", valley, crease),
+                (LineKind::Suggestive as usize, "suggestive", suggestive, None),
                 (IMAGE_KIND, "image", image, Some(common)),
             ];
             for (k, name, obj, fallback) in kinds {
@@ -141,6 +155,11 @@ impl PyOutlines {
             o.depth_threshold =
                 opt_number("depth_threshold", depth_threshold)?.map_or(o.depth_threshold, |t| t as f32);
             o.depth_offset = opt_number("depth_offset", depth_offset)?.map_or(o.depth_offset, |t| t as f32);
+            if let Some(c) = contours {
+                o.contours = ContourRule::parse("contours", &text("contours", c)?)?;
+            }
+            o.suggestive_threshold =
+                opt_number("suggestive_threshold", suggestive_threshold)?.unwrap_or(o.suggestive_threshold);
             o.validate("")?;
             Ok(PyOutlines { inner: o })
         })()
@@ -175,6 +194,9 @@ getters!(PyOutlines {
     normal_threshold -> f32 = |o| o.normal_threshold;
     depth_threshold -> f32 = |o| o.depth_threshold;
     depth_offset -> f32 = |o| o.depth_offset;
+    /// "faces" or "smooth".
+    contours -> &'static str = |o| o.contours.name();
+    suggestive_threshold -> f64 = |o| o.suggestive_threshold;
 });
 
 /// The `outlines=` argument: None, "mesh", "image", "both" or an Outlines.

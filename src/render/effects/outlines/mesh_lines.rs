@@ -9,7 +9,10 @@ use std::sync::{Arc, OnceLock};
 
 use glam::{DMat4, DVec3};
 
+use crate::cancel::Cancel;
+use crate::edges::contours::ContourMesh;
 use crate::edges::outlines::{LineKind, Outline, Statics};
+use crate::edges::zero_set::Polylines;
 use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
 use crate::render::gpu_mesh::{GpuMesh, HostMesh};
@@ -18,7 +21,7 @@ use crate::render::graph::report::FrameReport;
 use crate::render::mesh_record::MeshRecord;
 use crate::render::scene::camera::{direction_of, ResolvedCamera};
 
-use super::settings::Outlines;
+use super::settings::{ContourRule, Outlines};
 
 /// A mesh's outline analysis, kept with it.
 #[derive(Default)]
@@ -26,6 +29,16 @@ pub struct MeshLines {
     /// Without and with welding, and the view-independent lines of each.
     indices: [OnceLock<Result<EdgeIndex>>; 2],
     statics: [Statics; 2],
+    /// Without and with welding: the normals and curvature the contours are traced on.
+    contours: [OnceLock<ContourMesh>; 2],
+}
+
+/// One view's lines of a mesh: edges with their kinds, and the lines traced through faces
+/// (smooth and suggestive contours) with theirs.
+#[derive(Debug, Default)]
+pub struct MeshOutline {
+    pub edges: Outline,
+    pub curves: Vec<(LineKind, Polylines)>,
 }
 
 impl MeshLines {
@@ -41,22 +54,39 @@ impl MeshLines {
             .map_err(Clone::clone)
     }
 
-    /// The lines of one view (`view` in the mesh's stored coordinates): silhouettes, then the
-    /// cached view-independent lines, keeping the kinds `outlines` draws.
-    pub fn outline(&self, host: &HostMesh, view: View, outlines: &Outlines) -> Result<Outline> {
+    fn contour_mesh(&self, host: &HostMesh, weld: bool) -> &ContourMesh {
+        self.contours[weld as usize]
+            .get_or_init(|| crate::parallel::install(|| ContourMesh::build(&host.positions, &host.faces, weld)))
+    }
+
+    /// The lines of one view (`view` in the mesh's stored coordinates): silhouettes (face edges
+    /// or smooth contours, as `outlines.contours` says), then the cached view-independent lines,
+    /// and suggestive contours, keeping the kinds `outlines` draws.
+    pub fn outline(&self, host: &HostMesh, view: View, outlines: &Outlines) -> Result<MeshOutline> {
+        let draws = |k: LineKind| outlines.styles[k as usize].is_some();
         let index = self.index(host, outlines.weld)?;
         let statics = self.statics[outlines.weld as usize].at(outlines.crease_angle, || {
             crate::parallel::install(|| index.feature_edges(outlines.crease_angle))
         })?;
-        let all = if outlines.styles[LineKind::Silhouette as usize].is_some() {
+        let mut curves = Vec::new();
+        let all = if draws(LineKind::Silhouette) && outlines.contours == ContourRule::Faces {
             let sil = crate::parallel::install(|| index.silhouette(view))?;
             statics.with_silhouettes(&sil)
         } else {
+            if draws(LineKind::Silhouette) {
+                let m = self.contour_mesh(host, outlines.weld);
+                curves.push((LineKind::Silhouette, crate::parallel::install(|| m.smooth(view))));
+            }
             (*statics).clone()
         };
-        let (edges, kinds) =
-            all.edges.iter().zip(&all.kinds).filter(|(_, k)| outlines.styles[**k as usize].is_some()).unzip();
-        Ok(Outline { edges, kinds })
+        if draws(LineKind::Suggestive) {
+            let m = self.contour_mesh(host, outlines.weld);
+            let threshold = outlines.suggestive_threshold;
+            let lines = crate::parallel::install(|| m.suggestive(view, threshold, Cancel::never()))?;
+            curves.push((LineKind::Suggestive, lines));
+        }
+        let (edges, kinds) = all.edges.iter().zip(&all.kinds).filter(|(_, k)| draws(**k)).unzip();
+        Ok(MeshOutline { edges: Outline { edges, kinds }, curves })
     }
 }
 
@@ -96,7 +126,7 @@ pub struct LineDraw {
 /// and their ranges) and the visible-lines step chains it.
 #[derive(Debug, Default)]
 pub struct ViewLines {
-    pub outlines: Vec<Outline>,
+    pub outlines: Vec<MeshOutline>,
     pub instances: Vec<LineInstance>,
     pub draws: Vec<LineDraw>,
 }
@@ -123,12 +153,21 @@ impl HostStep for Silhouettes {
             let outline = MeshLines::of(rec).outline(&rec.host, view, &self.outlines)?;
             let first = lines.instances.len() as u32;
             let p = &rec.host.positions;
-            lines.instances.extend(outline.edges.iter().zip(&outline.kinds).map(|(e, k)| LineInstance {
-                a: p[e[0] as usize].map(|x| x as f32),
-                kind: *k as u32,
-                b: p[e[1] as usize].map(|x| x as f32),
+            let instance = |a: [f64; 3], b: [f64; 3], kind: LineKind| LineInstance {
+                a: a.map(|x| x as f32),
+                kind: kind as u32,
+                b: b.map(|x| x as f32),
                 pad: 0,
-            }));
+            };
+            let edges = &outline.edges;
+            lines.instances.extend(
+                edges.edges.iter().zip(&edges.kinds).map(|(e, k)| instance(p[e[0] as usize], p[e[1] as usize], *k)),
+            );
+            for (kind, curves) in &outline.curves {
+                for i in 0..curves.len() {
+                    lines.instances.extend(curves.line(i).windows(2).map(|s| instance(s[0], s[1], *kind)));
+                }
+            }
             lines.draws.push(LineDraw { item: i, instances: first..lines.instances.len() as u32 });
             lines.outlines.push(outline);
         }

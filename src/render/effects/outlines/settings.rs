@@ -6,6 +6,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
+use crate::edges::contours::{check_threshold, DEFAULT_SUGGESTIVE_THRESHOLD};
 use crate::edges::outlines::LineKind;
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::field;
@@ -20,6 +21,18 @@ pub const DEFAULT_INK: Srgb = [0.0, 0.0, 0.0];
 pub const MAX_WIDTH: f32 = 64.0;
 /// Hidden-line offset in pixel footprints (see `Outlines::depth_offset`).
 pub const DEFAULT_DEPTH_OFFSET: f32 = 1.0;
+
+crate::named_enum! {
+    /// Where the silhouette of a mesh is drawn.
+    pub enum ContourRule {
+        /// Face edges between front- and back-facing faces (Kang, Kim and Yoon): exact for
+        /// flat-shaded meshes; on scans they follow the triangulation in staircases.
+        Faces = "faces",
+        /// The smooth contour (Hertzmann and Zorin): where n . v = 0 for the interpolated vertex
+        /// normals, traced through the faces.
+        Smooth = "smooth",
+    }
+}
 
 /// The kinds of ink: the mesh-space kinds of `edges::outlines::LineKind`, then image-space edges.
 pub const IMAGE_KIND: usize = LineKind::COUNT;
@@ -80,6 +93,11 @@ pub struct Outlines {
     /// Image-space thresholds, as in `edges::detect`.
     pub normal_threshold: f32,
     pub depth_threshold: f32,
+    /// The rule silhouettes are found by.
+    pub contours: ContourRule,
+    /// The derivative threshold of suggestive contours, relative to the mesh's feature size
+    /// squared (`edges::contours`).
+    pub suggestive_threshold: f64,
     /// Hidden-line removal: a line point is visible when its depth is at most the largest
     /// surface depth in the 3x3 output pixels around it plus this many pixel footprints (the
     /// world size of one pixel at that depth); a silhouette or boundary with background among
@@ -94,12 +112,16 @@ impl Default for Outlines {
 }
 
 impl Outlines {
-    /// Every kind in the default style.
+    /// Every kind in the default style, except suggestive contours (drawn when asked for).
     pub fn new(mesh: bool, image: bool) -> Self {
+        let mut styles = [Some(LineStyle::default()); INK_KINDS];
+        styles[LineKind::Suggestive as usize] = None;
         Outlines {
             mesh,
             image,
-            styles: [Some(LineStyle::default()); INK_KINDS],
+            styles,
+            contours: ContourRule::Faces,
+            suggestive_threshold: DEFAULT_SUGGESTIVE_THRESHOLD,
             crease_angle: DEFAULT_CREASE_ANGLE,
             weld: true,
             normal_threshold: DEFAULT_NORMAL_THRESHOLD as f32,
@@ -161,6 +183,7 @@ impl Outlines {
                 return Err(Error::invalid(field(prefix, name), format!("must be finite and >= 0, got {t}")));
             }
         }
+        check_threshold(&field(prefix, "suggestive_threshold"), self.suggestive_threshold)?;
         if !(self.depth_offset.is_finite() && self.depth_offset >= 0.0) {
             return Err(Error::invalid(
                 field(prefix, "depth_offset"),

@@ -273,34 +273,31 @@ impl HostStep for VisibleLines {
         for ((item, rec), outline) in cx.scene.scene.items.iter().zip(cx.records).zip(&view.outlines) {
             let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
             let positions = &rec.host.positions;
-            let mut kinds: Vec<LineKind> = outline.kinds.clone();
+            let visible = |points: &[[f64; 3]], kind: usize, out: &mut Vec<Polyline>| {
+                let screen: Vec<_> = points.windows(2).filter_map(|s| projector.project(s[0], s[1], kind)).collect();
+                out.extend(
+                    visible_runs(&screen, cx.cam.orthographic, &img, rule)
+                        .into_iter()
+                        .map(|points| Polyline { kind, points }),
+                );
+            };
+            let edges = &outline.edges;
+            let mut kinds: Vec<LineKind> = edges.kinds.clone();
             kinds.sort_unstable();
             kinds.dedup();
             for kind in kinds {
-                let edges: Vec<[u32; 2]> = outline
-                    .edges
-                    .iter()
-                    .zip(&outline.kinds)
-                    .filter(|(_, k)| **k == kind)
-                    .map(|(e, _)| *e)
-                    .collect();
-                let (flat, starts) = chain_edges(&edges);
+                let of_kind: Vec<[u32; 2]> =
+                    edges.edges.iter().zip(&edges.kinds).filter(|(_, k)| **k == kind).map(|(e, _)| *e).collect();
+                let (flat, starts) = chain_edges(&of_kind);
                 for w in starts.windows(2) {
-                    let screen: Vec<_> = flat[w[0] as usize..w[1] as usize]
-                        .windows(2)
-                        .filter_map(|s| {
-                            projector.project(
-                                positions[s[0] as usize],
-                                positions[s[1] as usize],
-                                kind as usize,
-                            )
-                        })
-                        .collect();
-                    out.extend(
-                        visible_runs(&screen, cx.cam.orthographic, &img, rule)
-                            .into_iter()
-                            .map(|points| Polyline { kind: kind as usize, points }),
-                    );
+                    let points: Vec<[f64; 3]> =
+                        flat[w[0] as usize..w[1] as usize].iter().map(|&v| positions[v as usize]).collect();
+                    visible(&points, kind as usize, &mut out);
+                }
+            }
+            for (kind, curves) in &outline.curves {
+                for i in 0..curves.len() {
+                    visible(curves.line(i), *kind as usize, &mut out);
                 }
             }
         }

@@ -1,0 +1,92 @@
+"""Mesh outlines drawn with smooth contours (Outlines(contours="smooth")) and suggestive contours
+(Outlines(suggestive=...)) in a render, on both backends: the lines the per-view functions of
+toonmesh.edges find, with hidden parts removed, in the line drawing, the ink and the SVG."""
+
+from __future__ import annotations
+
+import pickle
+
+import numpy as np
+import pytest
+
+import toonmesh as tm
+from test_curvature import _torus
+
+BACKENDS = ["vulkan", "gl"]
+SIZE = 400
+
+
+def _pieces(res, kind):
+    lens = [np.linalg.norm(np.diff(l, axis=0), axis=1).sum() for l, k in zip(res.lines, res.line_kinds) if k == kind]
+    return np.array(lens)
+
+
+def test_defaults_and_pickling():
+    o = tm.Outlines()
+    assert o.contours == "faces" and o.suggestive_threshold == 0.01
+    assert o.styles["suggestive"] is None  # drawn only when asked for
+    assert "suggestive" in tm._core.LINE_KINDS
+    s = tm.Outlines("mesh", contours="smooth", suggestive="#3050a0", suggestive_threshold=0.2)
+    assert s.contours == "smooth" and s.suggestive_threshold == 0.2
+    assert s.styles["suggestive"].color == pytest.approx((0x30 / 255, 0x50 / 255, 0xA0 / 255))
+    assert pickle.loads(pickle.dumps(s)) == s and hash(pickle.loads(pickle.dumps(s))) == hash(s)
+    with pytest.raises(ValueError, match="contours"):
+        tm.Outlines(contours="zigzag")
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_smooth_contours_of_a_noisy_sphere_are_few_long_strokes(backend):
+    V, F = tm.shapes.icosphere(5, noise=0.003, seed=0)
+    kw = dict(outputs=("color", "lines"), width=SIZE, height=SIZE, backend=backend)
+    faces = tm.render(V, F, outlines=tm.Outlines("mesh", contours="faces"), **kw)
+    smooth = tm.render(V, F, outlines=tm.Outlines("mesh", contours="smooth"), **kw)
+    f, s = _pieces(faces, "silhouette"), _pieces(smooth, "silhouette")
+    # the rim of the sphere as drawn: a circle; measure its radius from the smooth lines' points
+    points = np.concatenate([l for l, k in zip(smooth.lines, smooth.line_kinds) if k == "silhouette"])
+    centre = np.array([SIZE / 2, SIZE / 2])  # the default camera frames the sphere in the middle
+    radius = np.linalg.norm(points - centre, axis=1)
+    r0 = np.median(radius)
+    assert np.percentile(np.abs(radius - r0), 90) < 0.02 * r0  # on one circle, no staircase
+    rim = 2 * np.pi * r0
+    assert len(s) <= 40 < len(f)
+    assert s.sum() < 1.3 * rim < f.sum()
+    # the picture keeps its silhouette ink where the face-edge rule had it
+    ink = lambda r: np.count_nonzero(r.color[..., :3].max(axis=2) < 40)  # noqa: E731
+    assert ink(smooth) > 0.3 * ink(faces)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_suggestive_contours_are_drawn_only_where_there_are_some(backend):
+    red = tm.Outlines("mesh", suggestive=(1.0, 0.0, 0.0), suggestive_threshold=0.0, width=2.0)
+    kw = dict(outputs=("color", "lines"), width=SIZE, height=SIZE, backend=backend, outlines=red)
+    V, F, _, _ = _torus()
+    camera = tm.Camera.look_at(eye=(0.0, -4.0, 2.5), target=(0, 0, 0), up=(0, 0, 1))
+    torus = tm.render(V, F, camera=camera, **kw)
+    assert "suggestive" in torus.line_kinds
+    c = torus.color.astype(int)
+    reddish = (c[..., 0] > 150) & (c[..., 1] < 60) & (c[..., 2] < 60)
+    assert np.count_nonzero(reddish) > 50
+    # the visible lines are the per-view function's, minus hidden parts
+    found = tm.edges.suggestive_contours(V, F, eye=(0.0, -4.0, 2.5), threshold=0.0, weld=True)
+    P = torus.projection @ torus.view_matrix
+    pts = np.concatenate(found)
+    h = np.c_[pts, np.ones(len(pts))] @ P.T
+    px = np.c_[(h[:, 0] / h[:, 3] * 0.5 + 0.5) * SIZE, (0.5 - h[:, 1] / h[:, 3] * 0.5) * SIZE]
+    drawn = np.concatenate([l for l, k in zip(torus.lines, torus.line_kinds) if k == "suggestive"])
+    gaps = np.min(np.linalg.norm(drawn[:, None, :] - px[None, ::4, :], axis=2), axis=1)
+    assert np.median(gaps) < 1.0
+    # a convex shape has none
+    Vs, Fs = tm.shapes.icosphere(4)
+    sphere = tm.render(Vs * [1.5, 1.0, 0.7], Fs, **kw)
+    assert "suggestive" not in sphere.line_kinds
+    c = sphere.color.astype(int)
+    assert np.count_nonzero((c[..., 0] > 150) & (c[..., 1] < 60) & (c[..., 2] < 60)) == 0
+
+
+def test_svg_has_a_suggestive_group():
+    V, F, _, _ = _torus(n_u=120, n_v=40)
+    camera = tm.Camera.look_at(eye=(0.0, -4.0, 2.5), target=(0, 0, 0), up=(0, 0, 1))
+    res = tm.render(V, F, camera=camera, outputs=("lines",), width=200, height=200,
+                    outlines=tm.Outlines("mesh", contours="smooth", suggestive=True, suggestive_threshold=0.0))
+    svg = res.svg()
+    assert 'id="suggestive"' in svg and 'id="silhouette"' in svg
