@@ -224,20 +224,8 @@ pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Ca
             let n = normals[v];
             let u0 = any_tangent(n);
             let v0 = n.cross(u0);
-            let (mut k, mut w) = ([0.0; 3], 0.0);
-            for &[_, _, id] in ring.at(v) {
-                let (face, corner) = (id as usize / 3, id as usize % 3);
-                let fr = &frames[face];
-                let a = fr.corner_area[corner];
-                if a > 0.0 {
-                    let kk = project_tensor(fr.t, fr.b, face_ii[face], u0, v0);
-                    k = [k[0] + a * kk[0], k[1] + a * kk[1], k[2] + a * kk[2]];
-                    w += a;
-                }
-            }
-            if w > 0.0 {
-                k = k.map(|x| x / w);
-            }
+            let k = corner_mean(ring.at(v), &frames, |face, fr| project_tensor(fr.t, fr.b, face_ii[face], u0, v0))
+                .unwrap_or([0.0; 3]);
             diagonalize(u0, v0, k)
         })
         .collect();
@@ -272,23 +260,9 @@ pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Ca
         .into_par_iter()
         .map(|v| {
             let (_, _, d1, d2) = principal[v];
-            let (mut c, mut w) = ([0.0; 4], 0.0);
-            for &[_, _, id] in ring.at(v) {
-                let (face, corner) = (id as usize / 3, id as usize % 3);
-                let fr = &frames[face];
-                let a = fr.corner_area[corner];
-                if a > 0.0 {
-                    let cc = project_derivative(fr.t, fr.b, face_dii[face], d1, d2);
-                    (0..4).for_each(|i| c[i] += a * cc[i]);
-                    w += a;
-                }
-            }
             let s = scale * scale;
-            if w > 0.0 {
-                c.map(|x| x / w / s)
-            } else {
-                [0.0; 4]
-            }
+            corner_mean(ring.at(v), &frames, |face, fr| project_derivative(fr.t, fr.b, face_dii[face], d1, d2))
+                .map_or([0.0; 4], |c| c.map(|x| x / s))
         })
         .collect();
 
@@ -313,6 +287,26 @@ pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Ca
         normals: normals.iter().copied().map(arr).collect(),
         derivatives,
     })
+}
+
+/// The mean of `of(face, frame)` over a vertex's corners, weighted by their Voronoi areas; None
+/// when no corner has area.
+fn corner_mean<const K: usize>(
+    corners: &[RingCorner],
+    frames: &[FaceFrame],
+    of: impl Fn(usize, &FaceFrame) -> [f64; K],
+) -> Option<[f64; K]> {
+    let (mut sum, mut weight) = ([0.0; K], 0.0);
+    for &[_, _, id] in corners {
+        let (face, corner) = (id as usize / 3, id as usize % 3);
+        let a = frames[face].corner_area[corner];
+        if a > 0.0 {
+            let x = of(face, &frames[face]);
+            (0..K).for_each(|i| sum[i] += a * x[i]);
+            weight += a;
+        }
+    }
+    (weight > 0.0).then(|| sum.map(|x| x / weight))
 }
 
 /// Positions in f64, centred on the bounding box and divided by its largest extent, and that
