@@ -309,3 +309,21 @@ def test_demo_still_renders_the_bunny(tmp_path):
     assert "wrote demo.png (80x60)" in r.stdout
     img = read_png(tmp_path / "demo.png")
     assert img.shape == (60, 80, 4) and len(np.unique(img.reshape(-1, 4), axis=0)) > 3
+
+
+def test_edges_and_render_take_the_contour_rule_and_suggestive_contours(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    bunny = str(Path(tm.__file__).parent / "data" / "bunny.obj")
+    in_process(capsys, "edges", bunny, "-o", "faces.svg", "--size", "300x300")
+    in_process(capsys, "edges", bunny, "-o", "smooth.svg", "--size", "300x300", "--contours", "smooth", "--suggestive")
+    faces, smooth = (tmp_path / "faces.svg").read_text(), (tmp_path / "smooth.svg").read_text()
+
+    def silhouettes(svg: str) -> int:
+        group = svg.split('<g id="silhouette"')[1].split("</g>")[0]
+        return group.count("<polyline")
+
+    assert silhouettes(smooth) < silhouettes(faces) / 3  # long strokes instead of staircases
+    assert '<g id="suggestive"' in smooth and '<g id="suggestive"' not in faces
+    in_process(capsys, "render", bunny, "-o", "b.png", "--size", "64x64", "--outlines", "mesh", "--contours", "smooth")
+    assert (tmp_path / "b.png").stat().st_size > 0
+    one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--contours", "zigzag", check=False), "--contours")

@@ -17,6 +17,7 @@ __all__ = [
     "LINE_KINDS",
     "MODELS",
     "OUTLINE_KINDS",
+    "CONTOUR_RULES",
     "OUTPUTS",
     "SHADOW_FILTERS",
     "Camera",
@@ -63,6 +64,7 @@ IMAGE_OUTPUTS: Tuple[str, ...]
 LINE_KINDS: Tuple[str, ...]
 INK_KINDS: Tuple[str, ...]
 OUTLINE_KINDS: Tuple[str, ...]
+CONTOUR_RULES: Tuple[str, ...]
 MODELS: Tuple[str, ...]
 HIGHLIGHTS: Tuple[str, ...]
 DITHER_PATTERNS: Tuple[str, ...]

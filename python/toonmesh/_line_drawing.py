@@ -30,15 +30,19 @@ def view_lines(
     stroke_width: float = 1.5,
     hidden: bool = False,
     backend: Optional[str] = None,
+    contours: str = "faces",
+    suggestive: bool = False,
 ) -> Dict[str, Any]:
     """The visible (and, with ``hidden``, every) outline polyline of one view, and the mesh's
-    feature edges; see :func:`write_npz` for the arrays."""
-    outlines = tm.Outlines("mesh", crease_angle=crease_angle, weld=weld, width=stroke_width)
+    feature edges; see :func:`write_npz` for the arrays. ``contours`` and ``suggestive`` as in
+    :class:`toonmesh.Outlines`."""
+    rule = dict(crease_angle=crease_angle, weld=weld, contours=contours, suggestive=suggestive or None)
+    outlines = tm.Outlines("mesh", width=stroke_width, **rule)
     kw = dict(camera=camera, width=width, height=height, outputs=("lines",), backend=backend)
     seen = tm.render(vertices, faces, outlines=outlines, **kw)
     everything = None
     if hidden:
-        all_lines = tm.Outlines("mesh", crease_angle=crease_angle, weld=weld, depth_offset=_SHOW_ALL)
+        all_lines = tm.Outlines("mesh", depth_offset=_SHOW_ALL, **rule)
         everything = tm.render(vertices, faces, outlines=all_lines, **kw)
     features = tm.edges.feature_edges(vertices, faces, crease_angle, weld=weld)
     return {"seen": seen, "everything": everything, "features": features}

@@ -162,7 +162,7 @@ def cmd_render(args: argparse.Namespace) -> int:
         msaa=args.msaa, supersample=args.supersample,
     )
     if args.outlines is not None and args.outlines != "none":
-        options["outlines"] = args.outlines
+        options["outlines"] = tm.Outlines(args.outlines, contours=args.contours, suggestive=args.suggestive or None)
     targets = _render_targets(args.meshes, args.out, args.views, args.outputs)
     t0 = time.perf_counter()
     bar = _progress(len(args.meshes) * args.views)
@@ -222,6 +222,13 @@ def cmd_smooth(args: argparse.Namespace) -> int:
 # edges
 
 
+def _add_contour_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--contours", choices=tuple(_core.CONTOUR_RULES), default="faces",
+                   help="silhouettes on face edges (Kang et al.) or the smooth contour through the faces "
+                        "(clean on scans); default: faces")
+    p.add_argument("--suggestive", action="store_true", help="add suggestive contours (DeCarlo et al.)")
+
+
 def cmd_edges(args: argparse.Namespace) -> int:
     """toonmesh edges: outline edges of a mesh file as SVG line art or NPZ arrays."""
     from toonmesh import _line_drawing
@@ -237,7 +244,7 @@ def cmd_edges(args: argparse.Namespace) -> int:
     w, h = args.size
     lines = _line_drawing.view_lines(V, F, camera, width=w, height=h, crease_angle=args.crease_angle,
                                      weld=args.weld, stroke_width=args.stroke_width, hidden=args.hidden,
-                                     backend=args.backend)
+                                     backend=args.backend, contours=args.contours, suggestive=args.suggestive)
     if suffix == ".svg":
         _line_drawing.write_svg(args.out, lines)
     else:
@@ -322,6 +329,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("--style", choices=tuple(STYLES), default="bands", help="shading model (default: bands)")
     p.add_argument("--color", default=None, metavar="#RRGGBB", help="base colour of the material")
     p.add_argument("--outlines", choices=OUTLINES, default=None, help="ink lines: on the mesh, from the image, or both")
+    _add_contour_arguments(p)
     p.add_argument("--views", type=_positive, default=1, metavar="N", help="a turntable of N views about the up axis")
     p.add_argument("--up", **up)  # type: ignore[arg-type]
     p.add_argument("--smooth", type=_count, default=0, metavar="N", help="smoothing iterations before rendering")
@@ -365,6 +373,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                    help="keep vertices at the same position apart (seams then show as boundaries)")
     p.add_argument("--size", type=_size, default=(800, 600), metavar="WxH", help="drawing size (default 800x600)")
     p.add_argument("--hidden", action="store_true", help="draw hidden lines too (dashed)")
+    _add_contour_arguments(p)
     p.add_argument("--stroke-width", type=float, default=1.5, metavar="PX")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_edges)
