@@ -90,3 +90,44 @@ def test_svg_has_a_suggestive_group():
                     outlines=tm.Outlines("mesh", contours="smooth", suggestive=True, suggestive_threshold=0.0))
     svg = res.svg()
     assert 'id="suggestive"' in svg and 'id="silhouette"' in svg
+
+
+def _svg_lines(svg, kind):
+    group = svg.split(f'<g id="{kind}"')[1].split("</g>")[0]
+    return [np.array([[float(v) for v in p.split(",")] for p in pts.split()])
+            for pts in (chunk.split('"')[1] for chunk in group.split("<polyline points=")[1:])]
+
+
+def _segment_distance(p, a, b):
+    ab, ap = b - a, p - a
+    t = np.clip(ap @ ab / max(ab @ ab, 1e-300), 0, 1)
+    return np.hypot(*(ap - t * ab))
+
+
+def test_svg_for_a_pen_plotter():
+    from toonmesh import _strokes
+
+    V, F = tm.shapes.icosphere(4, noise=0.01, seed=3)
+    res = tm.render(V, F, outputs=("lines",), width=300, height=300,
+                    outlines=tm.Outlines("mesh", contours="smooth", crease_angle=20.0))
+    drawing = _svg_lines(res.svg(), "ridge")
+    plotter = _svg_lines(res.svg(order="plotter"), "ridge")
+    assert len(drawing) == len(plotter) > 20
+    # the same strokes, some drawn the other way round, in an order with much less pen travel
+    key = lambda l: tuple(np.round(l if tuple(l[0]) <= tuple(l[-1]) else l[::-1], 2).ravel())  # noqa: E731
+    assert sorted(map(key, drawing)) == sorted(map(key, plotter))
+    assert _strokes.pen_travel(plotter) < 0.5 * _strokes.pen_travel(drawing)
+    # simplified: fewer points, the ends kept, every dropped point within the tolerance
+    for tol in (0.25, 1.0):
+        simple = _svg_lines(res.svg(simplify=tol), "ridge")
+        assert sum(map(len, simple)) < sum(map(len, drawing))
+        for full, s in zip(drawing, simple):
+            assert np.allclose(full[[0, -1]], s[[0, -1]])
+            far = max(min(_segment_distance(p, s[i], s[i + 1]) for i in range(len(s) - 1)) for p in full)
+            assert far <= tol + 0.01  # + the SVG's rounding to 0.01 px
+    with pytest.raises(ValueError, match="order"):
+        res.svg(order="random")
+    with pytest.raises(ValueError, match="simplify"):
+        res.svg(simplify=-1)
+    with pytest.raises(TypeError, match="simplify"):
+        res.svg(simplify="0.5")

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any, Dict, Iterator, List, Optional, Sequence,
 
 import numpy as np
 
-from toonmesh import _core
+from toonmesh import _core, _strokes
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, RenderOptions, Shadows, kang_table
 from toonmesh._input import mesh_arrays
 
@@ -192,9 +192,21 @@ class RenderResult:
         with open(path, "wb") as f:
             f.write(data)
 
-    def svg(self) -> str:
+    def svg(self, *, order: str = "drawing", simplify: float = 0.0) -> str:
         """The visible mesh-space lines as an SVG document of the image's size (pixel units),
-        one ``<polyline>`` per line, stroked in its kind's colour and width."""
+        one group per kind, one ``<polyline>`` per stroke, stroked in its kind's colour and
+        width.
+
+        Args:
+            order: "drawing" (default: the order the renderer found them) or "plotter": within
+                each group, each next stroke is the one whose nearer end is closest to where the
+                pen stopped, drawn from that end (greedy nearest neighbour, as vpype's
+                ``linesort``), so a pen plotter travels little with the pen up.
+            simplify: drop points within this many pixels of the stroke (Douglas-Peucker;
+                default 0, every point kept); 0.25 keeps the drawing the same to the eye with a
+                fraction of the points.
+        """
+        _strokes.check(order, simplify)
         if self.lines is None or self.line_kinds is None:
             raise ValueError("lines: this render did not ask for the 'lines' output (outputs=(..., 'lines'))")
         styles = self.outlines.styles if self.outlines is not None else {}
@@ -210,17 +222,19 @@ class RenderResult:
                 f'<g id="{kind}" fill="none" stroke="{color}" stroke-width="{style.width:g}" '
                 'stroke-linecap="round" stroke-linejoin="round">'
             )
-            for line, k in zip(self.lines, self.line_kinds):
-                if k == kind:
-                    points = " ".join(f"{x:.2f},{y:.2f}" for x, y in line)
-                    out.append(f'<polyline points="{points}"/>')
+            lines = [_strokes.simplified(l, simplify) for l, k in zip(self.lines, self.line_kinds) if k == kind]
+            if order == "plotter":
+                lines = [lines[i][::-1] if flip else lines[i] for i, flip in _strokes.plotter_order(lines)]
+            for line in lines:
+                points = " ".join(f"{x:.2f},{y:.2f}" for x, y in line)
+                out.append(f'<polyline points="{points}"/>')
             out.append("</g>")
         out.append("</svg>")
         return "\n".join(out) + "\n"
 
-    def save_svg(self, path: Any) -> None:
-        """Writes :meth:`svg` to ``path``."""
-        text = self.svg()
+    def save_svg(self, path: Any, *, order: str = "drawing", simplify: float = 0.0) -> None:
+        """Writes :meth:`svg` (with its ``order`` and ``simplify``) to ``path``."""
+        text = self.svg(order=order, simplify=simplify)
         with open(path, "w", encoding="utf-8") as f:
             f.write(text)
 
