@@ -11,7 +11,7 @@ use pyo3::prelude::*;
 use super::args;
 use super::convert::{native_order, positions, vec_to_numpy, Positions};
 use super::errors::to_py;
-use super::mesh_input::{on_positions, MeshInput};
+use super::mesh_input::{on_positions, MeshInput, PositionsRef};
 use super::runtime::detached;
 use crate::edges::chains::chain_edges;
 use crate::edges::contours::ContourMesh;
@@ -100,11 +100,9 @@ fn _silhouette<'py>(
     direction: Option<&Bound<'py, PyAny>>,
     weld: &Bound<'py, PyAny>,
 ) -> PyResult<Pairs<'py>> {
-    let view = view_of(eye, direction).map_err(to_py)?;
-    let weld = args::flag("weld", weld).map_err(to_py)?;
-    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
-    let s =
-        mesh.run(py, faces, |p, f, _| on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)))?;
+    let s = on_view(py, (vertices, faces), (eye, direction), weld, |p, f, view, weld, _| {
+        on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view))
+    })?;
     Ok(pairs_to_numpy(py, s))
 }
 
@@ -147,18 +145,29 @@ fn polylines_to_numpy(py: Python<'_>, lines: Polylines) -> PolylinesOut<'_> {
     (rows_to_numpy(py, lines.points), vec_to_numpy(py, lines.starts.into_iter().map(i64::from).collect()))
 }
 
-/// Lines of one view traced on a `ContourMesh` by `trace`, as flat points and line starts.
-fn view_lines<'py>(
-    py: Python<'py>,
-    (vertices, faces): (&Bound<'py, PyAny>, &Bound<'py, PyAny>),
-    (eye, direction): (Option<&Bound<'py, PyAny>>, Option<&Bound<'py, PyAny>>),
-    weld: &Bound<'py, PyAny>,
-    trace: impl Fn(&ContourMesh, View, &crate::cancel::Cancel) -> Result<Polylines> + Send + Sync,
-) -> PyResult<PolylinesOut<'py>> {
+/// `work` on a mesh and a view read from the arguments (the GIL released, Ctrl-C honoured).
+fn on_view<R: Send>(
+    py: Python<'_>,
+    (vertices, faces): (&Bound<'_, PyAny>, &Bound<'_, PyAny>),
+    (eye, direction): (Option<&Bound<'_, PyAny>>, Option<&Bound<'_, PyAny>>),
+    weld: &Bound<'_, PyAny>,
+    work: impl Fn(PositionsRef<'_>, &[[u32; 3]], View, bool, &crate::cancel::Cancel) -> Result<R> + Send + Sync,
+) -> PyResult<R> {
     let view = view_of(eye, direction).map_err(to_py)?;
     let weld = args::flag("weld", weld).map_err(to_py)?;
     let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
-    let lines = mesh.run(py, faces, |p, f, cancel| {
+    mesh.run(py, faces, |p, f, cancel| work(p, f, view, weld, cancel))
+}
+
+/// Lines of one view traced on a `ContourMesh` by `trace`, as flat points and line starts.
+fn view_lines<'py>(
+    py: Python<'py>,
+    mesh: (&Bound<'py, PyAny>, &Bound<'py, PyAny>),
+    view: (Option<&Bound<'py, PyAny>>, Option<&Bound<'py, PyAny>>),
+    weld: &Bound<'py, PyAny>,
+    trace: impl Fn(&ContourMesh, View, &crate::cancel::Cancel) -> Result<Polylines> + Send + Sync,
+) -> PyResult<PolylinesOut<'py>> {
+    let lines = on_view(py, mesh, view, weld, |p, f, view, weld, cancel| {
         let m = on_positions!(p, v => ContourMesh::build(v, f, weld));
         trace(&m, view, cancel)
     })?;
