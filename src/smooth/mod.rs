@@ -1,5 +1,6 @@
 //! Mesh smoothing: Laplacian (uniform, cotangent, inverse distance), Taubin, HC (Vollmer et al.
-//! 1999) and implicit (backward Euler), with presets that reproduce trimesh and pymeshlab.
+//! 1999) and implicit (backward Euler), with presets that reproduce trimesh and pymeshlab; and
+//! feature-preserving smoothing by normal filtering (`denoise`: bilateral and guided).
 //!
 //! Every method is a Jacobi iteration over an averaging operator A (see `operator`): all
 //! vertices of step t+1 are computed from step t, in parallel, each row in a fixed order, so the
@@ -8,6 +9,7 @@
 
 pub mod bicgstab;
 pub mod clean;
+pub mod denoise;
 pub mod meshlab;
 pub mod operator;
 pub mod options;
