@@ -112,11 +112,11 @@ fn denoise_mesh<T: Real>(
         Filter::Guided => vec![[0.0; 3]; faces.len()],
         Filter::Bilateral => Vec::new(),
     };
-    let mut patches = Vec::new();
+    let mut scratch = guidance::Scratch::default();
     for _ in 0..opts.iterations {
         cancel.check()?;
         if opts.filter == Filter::Guided {
-            guidance::guidance(&rings, &data, &normals, &mut patches, &mut guide);
+            guidance::guidance(&rings, faces, &data, &normals, &mut scratch, &mut guide);
         }
         let g = (opts.filter == Filter::Guided).then_some(guide.as_slice());
         bilateral::filter(&rings, &data, &normals, g, kernels, &mut filtered);

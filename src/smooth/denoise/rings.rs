@@ -16,6 +16,16 @@ impl Csr {
         &self.items[self.offsets[i] as usize..self.offsets[i + 1] as usize]
     }
 
+    /// Where row i's items sit in the flat list, for arrays aligned with it.
+    pub fn span(&self, i: usize) -> std::ops::Range<usize> {
+        self.offsets[i] as usize..self.offsets[i + 1] as usize
+    }
+
+    /// The total number of items.
+    pub fn n_items(&self) -> usize {
+        self.items.len()
+    }
+
     pub fn len(&self) -> usize {
         self.offsets.len() - 1
     }
