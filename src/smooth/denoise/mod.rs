@@ -74,17 +74,22 @@ fn welded_or_not<T: Real>(
     denoise_mesh(x0, faces, opts, pinned, cancel)
 }
 
-/// The mean length of the faces' edges (each face counts its three).
+/// The mean length of the faces' edges (each face counts its three). Summed in fixed chunks, in
+/// order, so that the result does not depend on how the work was split between threads.
 fn mean_edge_length(x: &[[f64; 3]], faces: &[[u32; 3]]) -> f64 {
-    let total: f64 = faces
-        .par_iter()
-        .with_min_len(4096)
-        .map(|f| {
-            let [a, b, c] = f.map(|i| x[i as usize]);
-            (faces::dist2(a, b).sqrt() + faces::dist2(b, c).sqrt() + faces::dist2(c, a).sqrt()) / 3.0
+    let partial: Vec<f64> = faces
+        .par_chunks(4096)
+        .map(|chunk| {
+            chunk
+                .iter()
+                .map(|f| {
+                    let [a, b, c] = f.map(|i| x[i as usize]);
+                    (faces::dist2(a, b).sqrt() + faces::dist2(b, c).sqrt() + faces::dist2(c, a).sqrt()) / 3.0
+                })
+                .sum::<f64>()
         })
-        .sum();
-    total / faces.len().max(1) as f64
+        .collect();
+    partial.iter().sum::<f64>() / faces.len().max(1) as f64
 }
 
 fn denoise_mesh<T: Real>(

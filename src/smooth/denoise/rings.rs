@@ -34,27 +34,34 @@ impl Csr {
         self.len() == 0
     }
 
-    /// Rows built in parallel, each by `f`, then packed.
+    /// Rows built in parallel by `f`, a chunk of rows at a time (no allocation per row), then
+    /// packed in order.
     fn from_rows(n: usize, f: impl Fn(usize, &mut Vec<u32>) + Sync) -> Csr {
-        let rows: Vec<Vec<u32>> = (0..n)
+        const CHUNK: usize = 4096;
+        let chunks: Vec<(Vec<u32>, Vec<u32>)> = (0..n.div_ceil(CHUNK))
             .into_par_iter()
-            .with_min_len(1024)
-            .map_init(Vec::new, |buf, i| {
-                buf.clear();
-                f(i, buf);
-                buf.clone()
+            .map(|c| {
+                let (mut lens, mut items) = (Vec::with_capacity(CHUNK), Vec::with_capacity(CHUNK * 16));
+                for i in c * CHUNK..((c + 1) * CHUNK).min(n) {
+                    let before = items.len();
+                    f(i, &mut items);
+                    lens.push((items.len() - before) as u32);
+                }
+                (lens, items)
             })
             .collect();
         let mut offsets = Vec::with_capacity(n + 1);
         offsets.push(0u32);
         let mut total = 0u32;
-        for r in &rows {
-            total += r.len() as u32;
-            offsets.push(total);
+        for (lens, _) in &chunks {
+            for l in lens {
+                total += l;
+                offsets.push(total);
+            }
         }
         let mut items = Vec::with_capacity(total as usize);
-        for r in rows {
-            items.extend_from_slice(&r);
+        for (_, c) in chunks {
+            items.extend_from_slice(&c);
         }
         Csr { offsets, items }
     }
@@ -94,11 +101,19 @@ impl FaceRings {
         }
         let vertex_faces = Csr { offsets: count, items };
         let ring = Csr::from_rows(faces.len(), |fi, out| {
+            let start = out.len();
             for &v in &faces[fi] {
                 out.extend(vertex_faces.row(v as usize).iter().filter(|&&g| g as usize != fi));
             }
-            out.sort_unstable();
-            out.dedup();
+            out[start..].sort_unstable();
+            let mut kept = start;
+            for k in start..out.len() {
+                if kept == start || out[k] != out[kept - 1] {
+                    out[kept] = out[k];
+                    kept += 1;
+                }
+            }
+            out.truncate(kept);
         });
         let edge_ring = Csr::from_rows(faces.len(), |fi, out| {
             let f = faces[fi];
