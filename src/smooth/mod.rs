@@ -79,6 +79,17 @@ impl Source {
             Source::Clean(rules) => {
                 clean::map_averages(adj, x, faces, rules, scratch, out, |i, a| relax(x[i], a, f))
             }
+            Source::MeshlabCotangent { pinned, .. } => {
+                let op = self.at(adj, x, faces, scratch, slot);
+                explicit_step(adj, op, x, out, f);
+                // VCG's x' = (x + S) / (C + 1) exactly where collinear faces make it depend
+                // on the order of the sums (the preset has no step size: f is 1).
+                for (v, p) in
+                    meshlab::exact_at_collinear_faces(adj, x, faces, &scratch.face_cot, pinned.as_deref())
+                {
+                    out[v as usize] = from_f64(p);
+                }
+            }
             _ => {
                 let op = self.at(adj, x, faces, scratch, slot);
                 explicit_step(adj, op, x, out, f)
