@@ -4,7 +4,8 @@
 //! x_i += (1/|F_i|) sum_j n_j (n_j . (c_j - x_i)).
 //!
 //! Guard against flipped faces: a face whose normal turns against its target normal in a step
-//! (while it agreed before) has its vertices' moves undone for that step.
+//! (while it agreed before) has its vertices' moves undone for that step. A face that had no
+//! normal before the step (zero area) is not guarded.
 
 use rayon::prelude::*;
 
@@ -59,8 +60,13 @@ pub fn fit(
             .into_par_iter()
             .with_min_len(4096)
             .filter(|&j| {
-                let (f, n) = (faces[j as usize], target[j as usize]);
-                n != [0.0; 3] && dot(raw_normal(next, f), n) < 0.0 && dot(raw_normal(x, f), n) >= 0.0
+                let (f, n, before) = (faces[j as usize], target[j as usize], data[j as usize].normal);
+                // A face without a normal before the step (degenerate by the shared rule) has no
+                // side to keep: its sign would be rounding.
+                n != [0.0; 3]
+                    && before != [0.0; 3]
+                    && dot(before, n) >= 0.0
+                    && dot(raw_normal(next, f), n) < 0.0
             })
             .collect();
         if flipped.is_empty() {
