@@ -104,7 +104,7 @@ fn denoise_mesh<T: Real>(
     let mut data = Vec::new();
     faces::face_data(&x, faces, &mut data);
     let edge = mean_edge_length(&x, faces);
-    if !(edge > 0.0) {
+    if edge.is_nan() || edge <= 0.0 {
         return Ok(x0.to_vec());
     }
     let mut normals: Vec<[f64; 3]> = data.iter().map(|d| d.normal).collect();
