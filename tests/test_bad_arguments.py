@@ -581,6 +581,24 @@ CASES: List[Case] = [
         also=(tm.ConvergenceError,),
     ),
     *[
+        Case(
+            f"smooth.{name}",
+            getattr(tm.smooth, name),
+            _mesh(),
+            [
+                Param("vertices", VERTICES),
+                Param("faces", FACES, none=TypeError),
+                Param("pinned", PINNED, none=OK),
+                Param("iterations", Integer(0, 10**6, slow_above=1000), none=OK),
+                Param("vertex_iterations", Integer(0, 10**6, slow_above=1000), none=OK),
+                Param("sigma_s", Number(0.0, math.inf, open_lo=True, open_hi=True), none=OK),
+                Param("sigma_r", Number(0.0, math.inf, open_lo=True, open_hi=True), none=OK),
+                Param("weld", Flag()),
+            ],
+        )
+        for name in ("bilateral", "guided")
+    ],
+    *[
         Case(name, call, _mesh(crease_angle=20.0, weld=False), [*MESH_PARAMS, CREASE, Param("weld", Flag())])
         for name, call in (("edges.feature_edges", te.feature_edges), ("edges.EdgeIndex", te.EdgeIndex))
     ],

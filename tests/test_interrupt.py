@@ -32,6 +32,9 @@ SCRIPT = textwrap.dedent(
         # one solve of thousands of BiCGSTAB iterations
         "implicit": lambda: tm.smooth.implicit(Vb, Fb, step=1e12, tol=1e-15, max_iter=10**7,
                                                weights="cotangent"),
+        # many normal-filtering passes
+        "bilateral": lambda: tm.smooth.bilateral(Vb, Fb, iterations=10**6),
+        "guided": lambda: tm.smooth.guided(Vb, Fb, iterations=10**6),
     }
     DELAY = 0.3
     out = {}
@@ -71,7 +74,7 @@ def run_script(script: str) -> dict:
 @pytest.mark.skipif(sys.platform == "win32", reason="sends SIGINT to itself")
 def test_ctrl_c_stops_long_smoothing_quickly():
     out = run_script(SCRIPT)
-    for name in ("laplacian", "taubin", "hc", "cotangent", "implicit"):
+    for name in ("laplacian", "taubin", "hc", "cotangent", "implicit", "bilateral", "guided"):
         assert "latency" in out[name], f"{name} ran to the end: {out[name]}"
         # Checked every 5 ms; a generous bound for a loaded 2-core machine.
         assert out[name]["latency"] < 1.0, f"{name} took {out[name]['latency']:.3f} s to stop"

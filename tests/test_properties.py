@@ -430,3 +430,26 @@ def test_render_agrees_with_its_scene_moved_with_the_camera(scene, motion, via_t
     ink_a, ink_b = float(a.outline.mean()), float(b.outline.mean())
     assert ink_a > 0, "the outlines are drawn"
     assert abs(ink_a - ink_b) <= MAX_OUTLINE_CHANGE * ink_a, f"outline coverage {ink_a:.4f} != {ink_b:.4f}"
+
+
+# ------------------------------------------------------------------------------------------------
+# Feature-preserving smoothing (normal filtering)
+
+
+@st.composite
+def normal_filter_options(draw):
+    kw = dict(iterations=draw(st.integers(0, 6)), vertex_iterations=draw(st.integers(1, 6)))
+    if draw(st.booleans()):
+        kw["sigma_r"] = draw(st.floats(0.05, 1.0))
+    if draw(st.booleans()):
+        kw["pinned"] = [0]
+    return draw(st.sampled_from(["bilateral", "guided"])), kw
+
+
+@given(meshes(), normal_filter_options(), st.sampled_from([np.float64, np.float32]))
+def test_normal_filtering_finite_input_gives_finite_output(mesh, options, dtype):
+    V, F = mesh
+    method, kw = options
+    out = getattr(tm.smooth, method)(V.astype(dtype), F, **kw)
+    assert out.dtype == dtype and out.shape == V.shape
+    assert np.isfinite(out).all()

@@ -37,6 +37,7 @@ __all__ = [
     "_chains",
     "_contours",
     "_curvature",
+    "_denoise",
     "_feature_edges",
     "_normal_mode",
     "_paper_edges",
@@ -97,6 +98,18 @@ def _smooth(
     pinned: Optional[Any] = None,
     volume_constraint: Optional[bool] = None,
     preset: Optional[str] = None,
+    weld: bool,
+) -> npt.NDArray[np.floating[Any]]: ...
+def _denoise(
+    method_name: str,
+    vertices: Any,
+    faces_arr: Any,
+    *,
+    iterations: Optional[int] = None,
+    vertex_iterations: Optional[int] = None,
+    sigma_s: Optional[float] = None,
+    sigma_r: Optional[float] = None,
+    pinned: Optional[Any] = None,
     weld: bool,
 ) -> npt.NDArray[np.floating[Any]]: ...
 

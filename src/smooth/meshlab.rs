@@ -171,3 +171,74 @@ pub fn hc_average(adj: &Adjacency, pinned: Option<&[bool]>) -> Operator {
         }
     })
 }
+
+/// A corner weight at least this large comes from a corner of 0 or 180 degrees (an exactly
+/// collinear face: VCG's tan(pi/2 - angle) is then about 1.6e16). Ordinary weights, even of
+/// needles, stay far below it.
+const HUGE_WEIGHT: f64 = 1e12;
+
+/// VCG's result, operation for operation, at the interior vertices that a collinear face's
+/// huge weights reach: their sums S and C add terms of +-1.6e16 that cancel, so the result
+/// depends on the order of the additions, and only VCG's own order (faces in index order, each
+/// face's edges in order, x' = (x + S) / (C + 1)) reproduces pymeshlab there. Elsewhere the
+/// operator's rows agree with VCG to rounding. Returns (vertex, position) for those vertices.
+pub fn exact_at_collinear_faces<T: Real>(
+    adj: &Adjacency,
+    x: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    corner_w: &[f64],
+    pinned: Option<&[bool]>,
+) -> Vec<(u32, [f64; 3])> {
+    let n = x.len();
+    let mut slot = vec![u32::MAX; 0];
+    let mut rows: Vec<u32> = Vec::new();
+    for (c, &w) in corner_w.iter().enumerate() {
+        if w.abs() < HUGE_WEIGHT {
+            continue;
+        }
+        let f = faces[c / 3];
+        for v in [f[(c + 1) % 3], f[(c + 2) % 3]] {
+            let i = v as usize;
+            // Vertices on a border keep VCG's border rule (uniform weights): nothing huge.
+            let border = adj.self_edges[i] == 1 || adj.edge_faces(i).contains(&1);
+            if border || pinned.is_some_and(|p| p[i]) {
+                continue;
+            }
+            if slot.is_empty() {
+                slot = vec![u32::MAX; n];
+            }
+            if slot[i] == u32::MAX {
+                slot[i] = rows.len() as u32;
+                rows.push(v);
+            }
+        }
+    }
+    if rows.is_empty() {
+        return Vec::new();
+    }
+    let mut sum = vec![([0.0f64; 3], 0.0f64); rows.len()];
+    for (fi, f) in faces.iter().enumerate() {
+        for j in 0..3 {
+            let (a, b) = (f[j] as usize, f[(j + 1) % 3] as usize);
+            let w = corner_w[fi * 3 + (j + 2) % 3];
+            for (to, from) in [(a, b), (b, a)] {
+                if slot[to] != u32::MAX {
+                    let (s, c) = &mut sum[slot[to] as usize];
+                    let p = real::to_f64(x[from]);
+                    for k in 0..3 {
+                        s[k] += p[k] * w;
+                    }
+                    *c += w;
+                }
+            }
+        }
+    }
+    rows.iter()
+        .zip(sum)
+        .filter(|(_, (_, c))| *c > 0.0)
+        .map(|(&v, (s, c))| {
+            let p = real::to_f64(x[v as usize]);
+            (v, std::array::from_fn(|k| (p[k] + s[k]) / (c + 1.0)))
+        })
+        .collect()
+}

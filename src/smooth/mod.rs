@@ -1,5 +1,6 @@
 //! Mesh smoothing: Laplacian (uniform, cotangent, inverse distance), Taubin, HC (Vollmer et al.
-//! 1999) and implicit (backward Euler), with presets that reproduce trimesh and pymeshlab.
+//! 1999) and implicit (backward Euler), with presets that reproduce trimesh and pymeshlab; and
+//! feature-preserving smoothing by normal filtering (`denoise`: bilateral and guided).
 //!
 //! Every method is a Jacobi iteration over an averaging operator A (see `operator`): all
 //! vertices of step t+1 are computed from step t, in parallel, each row in a fixed order, so the
@@ -8,6 +9,7 @@
 
 pub mod bicgstab;
 pub mod clean;
+pub mod denoise;
 pub mod meshlab;
 pub mod operator;
 pub mod options;
@@ -76,6 +78,17 @@ impl Source {
         match self {
             Source::Clean(rules) => {
                 clean::map_averages(adj, x, faces, rules, scratch, out, |i, a| relax(x[i], a, f))
+            }
+            Source::MeshlabCotangent { pinned, .. } => {
+                let op = self.at(adj, x, faces, scratch, slot);
+                explicit_step(adj, op, x, out, f);
+                // VCG's x' = (x + S) / (C + 1) exactly where collinear faces make it depend
+                // on the order of the sums (the preset has no step size: f is 1).
+                for (v, p) in
+                    meshlab::exact_at_collinear_faces(adj, x, faces, &scratch.face_cot, pinned.as_deref())
+                {
+                    out[v as usize] = from_f64(p);
+                }
             }
             _ => {
                 let op = self.at(adj, x, faces, scratch, slot);

@@ -1,0 +1,47 @@
+//! One pass of (joint) bilateral filtering of face normals (Zheng et al. 2011; with a guide,
+//! Zhang et al. 2015): each face's normal becomes the normalised sum over its vertex ring
+//! (itself included) of area x spatial weight x range weight x normal. The range weight
+//! compares the normals themselves, or, in the joint filter, the guidance normals.
+
+use rayon::prelude::*;
+
+use super::faces::{dist2, unit_or_zero, FaceData};
+use super::rings::FaceRings;
+
+/// The Gaussian kernels' widths: `sigma_s` a length (between face centroids), `sigma_r` a
+/// distance between unit normals (|n_i - n_j| = 2 sin(angle / 2)).
+#[derive(Debug, Clone, Copy)]
+pub struct Kernels {
+    pub sigma_s: f64,
+    pub sigma_r: f64,
+}
+
+/// `out[i]`: face i's filtered normal from `normals`, with range weights from `guide` (the
+/// normals themselves when None). A face whose weights all vanish (degenerate faces only) keeps
+/// its normal.
+pub fn filter(
+    rings: &FaceRings,
+    data: &[FaceData],
+    normals: &[[f64; 3]],
+    guide: Option<&[[f64; 3]]>,
+    k: Kernels,
+    out: &mut [[f64; 3]],
+) {
+    let g = guide.unwrap_or(normals);
+    let (is, ir) = (-0.5 / (k.sigma_s * k.sigma_s), -0.5 / (k.sigma_r * k.sigma_r));
+    out.par_iter_mut().with_min_len(1024).enumerate().for_each(|(i, o)| {
+        let (ci, gi) = (data[i].centroid, g[i]);
+        let term = |j: usize| data[j].area * (is * dist2(ci, data[j].centroid) + ir * dist2(gi, g[j])).exp();
+        let w = term(i);
+        let mut sum = normals[i].map(|c| w * c);
+        for &j in rings.ring.row(i) {
+            let j = j as usize;
+            let w = term(j);
+            for (s, n) in sum.iter_mut().zip(normals[j]) {
+                *s += w * n;
+            }
+        }
+        let n = unit_or_zero(sum);
+        *o = if n == [0.0; 3] { normals[i] } else { n };
+    });
+}

@@ -1,0 +1,140 @@
+//! Feature-preserving smoothing by normal filtering: bilateral (Zheng et al. 2011) and guided
+//! (Zhang et al. 2015). Face normals are filtered first, with weights that fall off across
+//! creases, then the vertices are moved to fit the filtered normals (`vertex_fit`), so flat
+//! sides are flattened and the creases between them stay sharp.
+//!
+//! Positions are computed in f64 and returned in the caller's precision; pinned vertices (and
+//! vertices no face uses) come back bit for bit. Every pass is parallel over faces or vertices,
+//! each item computed in a fixed order, so the result does not depend on the thread count.
+
+pub mod bilateral;
+pub mod faces;
+pub mod guidance;
+pub mod noise;
+pub mod options;
+pub mod rings;
+pub mod vertex_fit;
+
+use rayon::prelude::*;
+
+use crate::cancel::Cancel;
+use crate::error::{Error, Result};
+use crate::mesh::weld::Merged;
+use crate::real::{Real, Vec3};
+use crate::smooth::range;
+pub use options::{resolve, Args, Filter, Options};
+
+/// `x0` smoothed as `opts` says, stopping with `Error::Interrupted` at the next pass after
+/// `cancel` is raised. `largest` is the largest absolute coordinate of `x0` if the caller has it.
+pub fn denoise<T: Real>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    opts: &Options,
+    pinned: Option<&[bool]>,
+    cancel: &Cancel,
+    largest: Option<f64>,
+) -> Result<Vec<Vec3<T>>> {
+    if opts.vertex_iterations == 0 {
+        return Ok(x0.to_vec());
+    }
+    let out = match range::Pow2::to_fit(x0, largest) {
+        None => welded_or_not(x0, faces, opts, pinned, cancel)?,
+        Some(s) => {
+            let scaled = s.scale(x0);
+            let mut out = welded_or_not(&scaled, faces, opts, pinned, cancel)?;
+            s.restore(x0, &scaled, &mut out);
+            out
+        }
+    };
+    if !range::all_finite(&out) {
+        return Err(Error::invalid(
+            "vertices",
+            "the smoothed positions overflow the dtype: coordinates must stay well below its largest value",
+        ));
+    }
+    Ok(out)
+}
+
+fn welded_or_not<T: Real>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    opts: &Options,
+    pinned: Option<&[bool]>,
+    cancel: &Cancel,
+) -> Result<Vec<Vec3<T>>> {
+    if opts.weld {
+        let merged = Merged::of(x0);
+        if merged.has_copies() {
+            let pinned = pinned.map(|p| merged.any(p));
+            let out =
+                denoise_mesh(&merged.gather(x0), &merged.faces(faces), opts, pinned.as_deref(), cancel)?;
+            return Ok(merged.scatter(&out));
+        }
+    }
+    denoise_mesh(x0, faces, opts, pinned, cancel)
+}
+
+/// The mean length of the faces' edges (each face counts its three). Summed in fixed chunks, in
+/// order, so that the result does not depend on how the work was split between threads.
+fn mean_edge_length(x: &[[f64; 3]], faces: &[[u32; 3]]) -> f64 {
+    let partial: Vec<f64> = faces
+        .par_chunks(4096)
+        .map(|chunk| {
+            chunk
+                .iter()
+                .map(|f| {
+                    let [a, b, c] = f.map(|i| x[i as usize]);
+                    (faces::dist2(a, b).sqrt() + faces::dist2(b, c).sqrt() + faces::dist2(c, a).sqrt()) / 3.0
+                })
+                .sum::<f64>()
+        })
+        .collect();
+    partial.iter().sum::<f64>() / faces.len().max(1) as f64
+}
+
+fn denoise_mesh<T: Real>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    opts: &Options,
+    pinned: Option<&[bool]>,
+    cancel: &Cancel,
+) -> Result<Vec<Vec3<T>>> {
+    let rings = rings::FaceRings::new(x0.len(), faces);
+    let mut x: Vec<[f64; 3]> = x0.par_iter().map(|p| p.map(|c| c.to_f64())).collect();
+    let mut data = Vec::new();
+    faces::face_data(&x, faces, &mut data);
+    let edge = mean_edge_length(&x, faces);
+    if edge.is_nan() || edge <= 0.0 {
+        return Ok(x0.to_vec());
+    }
+    let mut normals: Vec<[f64; 3]> = data.iter().map(|d| d.normal).collect();
+    let kernels = bilateral::Kernels {
+        sigma_s: opts.sigma_s * edge,
+        sigma_r: opts.sigma_r_for(noise::normal_noise(&rings, &normals)),
+    };
+    let mut filtered = vec![[0.0; 3]; faces.len()];
+    let mut guide = match opts.filter {
+        Filter::Guided => vec![[0.0; 3]; faces.len()],
+        Filter::Bilateral => Vec::new(),
+    };
+    let mut scratch = guidance::Scratch::default();
+    for _ in 0..opts.iterations {
+        cancel.check()?;
+        if opts.filter == Filter::Guided {
+            guidance::guidance(&rings, faces, &data, &normals, &mut scratch, &mut guide);
+        }
+        let g = (opts.filter == Filter::Guided).then_some(guide.as_slice());
+        bilateral::filter(&rings, &data, &normals, g, kernels, &mut filtered);
+        std::mem::swap(&mut normals, &mut filtered);
+    }
+    let mut next = Vec::new();
+    for _ in 0..opts.vertex_iterations {
+        cancel.check()?;
+        vertex_fit::fit(&rings, faces, &normals, pinned, &mut data, &mut x, &mut next);
+    }
+    // Vertices that did not move come back exactly as given.
+    Ok(x.par_iter()
+        .zip(x0.par_iter())
+        .map(|(p, q)| if *p == q.map(|c| c.to_f64()) { *q } else { p.map(T::from_f64) })
+        .collect())
+}

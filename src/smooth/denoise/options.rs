@@ -1,0 +1,85 @@
+//! Options of the feature-preserving smoothers: what the caller passes, and the defaults.
+//!
+//! Every length is relative to the mesh's mean edge length, and the range width follows the
+//! measured noise (`noise`), so the defaults need no tuning across scales and noise levels.
+
+use crate::error::{Error, Result};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Filter {
+    /// Zheng et al. 2011: range weights from the normals themselves.
+    Bilateral,
+    /// Zhang et al. 2015: range weights from guidance normals (the most consistent patch).
+    Guided,
+}
+
+/// What the caller passed (None: the default).
+#[derive(Debug, Clone, Default)]
+pub struct Args {
+    pub iterations: Option<i64>,
+    pub vertex_iterations: Option<i64>,
+    pub sigma_s: Option<f64>,
+    pub sigma_r: Option<f64>,
+    pub weld: bool,
+}
+
+/// Resolved options; `sigma_r` None means "from the noise estimate".
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    pub filter: Filter,
+    /// Passes of normal filtering.
+    pub iterations: u32,
+    /// Steps of vertex fitting after the normals are filtered.
+    pub vertex_iterations: u32,
+    /// Spatial kernel width, in mean edge lengths.
+    pub sigma_s: f64,
+    pub sigma_r: Option<f64>,
+    pub weld: bool,
+}
+
+pub const DEFAULT_ITERATIONS: u32 = 20;
+pub const DEFAULT_VERTEX_ITERATIONS: u32 = 20;
+pub const DEFAULT_SIGMA_S: f64 = 1.0;
+/// The range width is this many times the measured normal noise (`noise`: the 90th percentile
+/// of |n_i - n_j| over neighbouring faces), within [SIGMA_R_MIN, SIGMA_R_MAX].
+pub const SIGMA_R_PER_NOISE: f64 = 0.35;
+pub const SIGMA_R_MIN: f64 = 0.05;
+pub const SIGMA_R_MAX: f64 = 0.6;
+
+/// The most passes or steps accepted: far beyond any useful count, low enough to refuse typos.
+const MAX_ITERATIONS: i64 = 1_000_000;
+
+fn count(name: &str, v: Option<i64>, default: u32) -> Result<u32> {
+    match v {
+        None => Ok(default),
+        Some(n) if (0..=MAX_ITERATIONS).contains(&n) => Ok(n as u32),
+        Some(n) => Err(Error::invalid(name, format!("must be in [0, {MAX_ITERATIONS}], got {n}"))),
+    }
+}
+
+fn positive(name: &str, v: Option<f64>) -> Result<Option<f64>> {
+    match v {
+        Some(x) if !(x > 0.0 && x.is_finite()) => {
+            Err(Error::invalid(name, format!("must be a finite number > 0, got {x}")))
+        }
+        _ => Ok(v),
+    }
+}
+
+pub fn resolve(filter: Filter, a: &Args) -> Result<Options> {
+    Ok(Options {
+        filter,
+        iterations: count("iterations", a.iterations, DEFAULT_ITERATIONS)?,
+        vertex_iterations: count("vertex_iterations", a.vertex_iterations, DEFAULT_VERTEX_ITERATIONS)?,
+        sigma_s: positive("sigma_s", a.sigma_s)?.unwrap_or(DEFAULT_SIGMA_S),
+        sigma_r: positive("sigma_r", a.sigma_r)?,
+        weld: a.weld,
+    })
+}
+
+impl Options {
+    /// The range width for a mesh whose measured normal noise is `noise`.
+    pub fn sigma_r_for(&self, noise: f64) -> f64 {
+        self.sigma_r.unwrap_or_else(|| (SIGMA_R_PER_NOISE * noise).clamp(SIGMA_R_MIN, SIGMA_R_MAX))
+    }
+}
