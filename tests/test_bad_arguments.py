@@ -639,6 +639,21 @@ CASES: List[Case] = [
         [Param("direction", vec3("direction", ValueError), none=ValueError), Param("kinds", Flag())],
     ),
     Case(
+        "edges.EdgeIndex.contours",
+        EDGE_INDEX.contours,
+        dict(eye=(0.3, 0.2, 5.0)),
+        [Param("eye", vec3("eye", OK), none=ValueError)],
+    ),
+    Case(
+        "edges.EdgeIndex.suggestive_contours",
+        EDGE_INDEX.suggestive_contours,
+        dict(direction=(0.3, 0.2, -1.0), threshold=0.01),
+        [
+            Param("direction", vec3("direction", ValueError), none=ValueError),
+            Param("threshold", Number(0.0, math.inf, open_hi=True)),
+        ],
+    ),
+    Case(
         "edges.EdgeIndex.segments",
         EDGE_INDEX.segments,
         dict(edges=EDGE_PAIRS),
@@ -1629,7 +1644,8 @@ def test_every_public_callable_is_in_the_table() -> None:
     public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
     public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny"}
     public |= {"edges.EdgeIndex.feature_edges", "edges.EdgeIndex.silhouette", "edges.EdgeIndex.outlines",
-               "edges.EdgeIndex.segments", "data.load_obj"}
+               "edges.EdgeIndex.segments", "edges.EdgeIndex.contours", "edges.EdgeIndex.suggestive_contours",
+               "data.load_obj"}
     # The renderer: every function and class at the top level, and each class's methods.
     for name in tm.__all__:
         obj = getattr(tm, name)

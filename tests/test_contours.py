@@ -131,3 +131,17 @@ def test_arguments_are_checked():
         tm.edges.contours(V, F, eye=(0, 0, 3), weld="yes")
     with pytest.raises(IndexError, match="faces"):
         tm.edges.contours(V, F + 100, eye=(0, 0, 3))
+
+
+def test_an_edge_index_gives_the_same_lines_for_many_views():
+    V, F, _, _ = _torus(n_u=120, n_v=40)
+    index = tm.edges.EdgeIndex(V, F, weld=True)
+    for eye in [(0.0, -4.0, 2.5), (2.5, -2.5, 1.5), (0.5, -3.0, 4.0)]:
+        for mine, theirs in [
+            (index.contours(eye=eye), tm.edges.contours(V, F, eye=eye, weld=True)),
+            (index.suggestive_contours(eye=eye, threshold=0.0),
+             tm.edges.suggestive_contours(V, F, eye=eye, threshold=0.0, weld=True)),
+        ]:
+            assert len(mine) == len(theirs) > 0
+            for a, b in zip(mine, theirs):
+                np.testing.assert_array_equal(a, b)

@@ -398,6 +398,16 @@ class EdgeIndex:
         """Edge end points of this mesh, (K, 2, 3) float64; see :func:`segments`."""
         return segments(self.vertices, edges)
 
+    def contours(self, *, eye: Any = None, direction: Any = None) -> List[np.ndarray]:
+        """Smooth contours of one view, as :func:`contours` finds them (the index's ``weld``),
+        without redoing the per-mesh work: a list of (K, 3) float64 polylines."""
+        return _polylines(*self._index.contours(eye, direction))
+
+    def suggestive_contours(self, *, eye: Any = None, direction: Any = None, threshold: float = 0.01) -> List[np.ndarray]:
+        """Suggestive contours of one view, as :func:`suggestive_contours` finds them; the
+        mesh's curvature is computed on the first call and kept for the next views."""
+        return _polylines(*self._index.suggestive_contours(eye, direction, threshold))
+
     def __repr__(self) -> str:
         return f"EdgeIndex({self.n_vertices} vertices, {self.n_faces} faces, {self.n_edges} edges)"
 

@@ -12,7 +12,7 @@ use super::args;
 use super::convert::{native_order, positions, vec_to_numpy, Positions};
 use super::errors::to_py;
 use super::mesh_input::{on_positions, MeshInput, PositionsRef};
-use super::runtime::detached;
+use super::runtime::{detached, detached_cancellable};
 use crate::edges::chains::chain_edges;
 use crate::edges::contours::ContourMesh;
 use crate::edges::zero_set::Polylines;
@@ -187,6 +187,11 @@ fn _contours<'py>(
     view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, _| Ok(m.smooth(view)))
 }
 
+/// A suggestive-contour threshold argument.
+fn read_threshold(obj: &Bound<'_, PyAny>) -> Result<f64> {
+    args::number("threshold", obj).and_then(|t| crate::edges::contours::check_threshold("threshold", t))
+}
+
 #[pyfunction]
 #[pyo3(signature = (vertices, faces, eye, direction, weld, threshold))]
 fn _suggestive_contours<'py>(
@@ -198,9 +203,7 @@ fn _suggestive_contours<'py>(
     weld: &Bound<'py, PyAny>,
     threshold: &Bound<'py, PyAny>,
 ) -> PyResult<PolylinesOut<'py>> {
-    let threshold = args::number("threshold", threshold)
-        .and_then(|t| crate::edges::contours::check_threshold("threshold", t))
-        .map_err(to_py)?;
+    let threshold = read_threshold(threshold).map_err(to_py)?;
     view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, cancel| m.suggestive(view, threshold, cancel))
 }
 
@@ -209,6 +212,8 @@ fn _suggestive_contours<'py>(
 struct PyEdgeIndex {
     inner: EdgeIndex,
     statics: Statics,
+    /// What contours are traced on (normals; the curvature once suggestive contours are asked).
+    contours: ContourMesh,
 }
 
 #[pymethods]
@@ -222,8 +227,40 @@ impl PyEdgeIndex {
     ) -> PyResult<Self> {
         let weld = args::flag("weld", weld).map_err(to_py)?;
         let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
-        let inner = mesh.run(py, faces, |p, f, _| on_positions!(p, v => EdgeIndex::build(v, f, weld)))?;
-        Ok(PyEdgeIndex { inner, statics: Default::default() })
+        let (inner, contours) = mesh.run(py, faces, |p, f, _| {
+            on_positions!(p, v => Ok((EdgeIndex::build(v, f, weld)?, ContourMesh::build(v, f, weld))))
+        })?;
+        Ok(PyEdgeIndex { inner, statics: Default::default(), contours })
+    }
+
+    /// Smooth contours of one view, as flat points and line starts.
+    #[pyo3(signature = (eye, direction))]
+    fn contours<'py>(
+        &self,
+        py: Python<'py>,
+        eye: Option<&Bound<'py, PyAny>>,
+        direction: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<PolylinesOut<'py>> {
+        let view = view_of(eye, direction).map_err(to_py)?;
+        let m = &self.contours;
+        let lines = detached(py, || Ok(m.smooth(view)))?;
+        Ok(polylines_to_numpy(py, lines))
+    }
+
+    /// Suggestive contours of one view (the curvature is computed on the first call and kept).
+    #[pyo3(signature = (eye, direction, threshold))]
+    fn suggestive_contours<'py>(
+        &self,
+        py: Python<'py>,
+        eye: Option<&Bound<'py, PyAny>>,
+        direction: Option<&Bound<'py, PyAny>>,
+        threshold: &Bound<'py, PyAny>,
+    ) -> PyResult<PolylinesOut<'py>> {
+        let view = view_of(eye, direction).map_err(to_py)?;
+        let threshold = read_threshold(threshold).map_err(to_py)?;
+        let m = &self.contours;
+        let lines = detached_cancellable(py, |cancel| m.suggestive(view, threshold, cancel))?;
+        Ok(polylines_to_numpy(py, lines))
     }
 
     #[pyo3(signature = (eye, direction))]

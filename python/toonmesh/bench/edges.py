@@ -90,6 +90,13 @@ def mesh_rows(subdivisions: int, noise: float, repeat: int, with_index: bool = T
     )
     ortho = median_time(lambda: index.silhouette(direction=(0.3, -1.0, 0.2)), repeat)
     rows.append([label, "EdgeIndex.silhouette per view (orthographic)", ms(ortho), "-", "-"])
+    # the lines through the faces, against the face-edge silhouette of the same views
+    contours = median_time(lambda: [index.contours(eye=e) for e in eyes], repeat) / len(eyes)
+    rows.append([label, "EdgeIndex.contours per view, vs its silhouette", ms(contours), ms(per_view), _ratio(per_view, contours)])
+    index.suggestive_contours(eye=eyes[0])  # the curvature, once per mesh
+    suggestive = median_time(lambda: [index.suggestive_contours(eye=e) for e in eyes], repeat) / len(eyes)
+    rows.append([label, "EdgeIndex.suggestive_contours per view, vs its silhouette", ms(suggestive), ms(per_view),
+                 _ratio(per_view, suggestive)])
     return rows
 
 
