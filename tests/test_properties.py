@@ -247,6 +247,22 @@ def test_outlines_finite_input_gives_finite_output(mesh, angle, weld):
         assert sum(len(c) - 1 for c in te.chains(lines)) == len(lines)
 
 
+@given(meshes(), st.booleans(), st.sampled_from([np.float64, np.float32]))
+def test_curvature_and_contours_finite_input_gives_finite_output(mesh, weld, dtype):
+    V, F = mesh
+    V = V.astype(dtype)
+    c = te.curvature(V, F)
+    for a in (c.k1, c.k2, c.d1, c.d2, c.normals, c.derivatives):
+        assert a.dtype == np.float64 and np.isfinite(a).all()
+    assert np.all(c.k1 >= c.k2)
+    np.testing.assert_allclose(np.linalg.norm(c.d1, axis=1), 1.0, rtol=1e-9)
+    index = te.EdgeIndex(V, F, weld=weld)
+    for view in (dict(eye=(0.3, 2.0, 4.0)), dict(direction=(0.0, -1.0, 0.2))):
+        for lines in (index.contours(**view), index.suggestive_contours(threshold=0.0, **view)):
+            assert all(l.ndim == 2 and l.shape[1] == 3 and len(l) >= 2 and np.isfinite(l).all() for l in lines)
+        assert [len(l) for l in index.contours(**view)] == [len(l) for l in te.contours(V, F, weld=weld, **view)]
+
+
 @given(meshes(), motions(), st.floats(1, 179))
 def test_feature_edges_invariant_under_rigid_motion_and_scale(mesh, motion, angle):
     V, F = mesh
