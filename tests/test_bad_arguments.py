@@ -1440,6 +1440,7 @@ RENDER_CASES: List[Case] = [
             ],
             Param("contours", Name(("faces", "smooth")), none=OK),
             Param("suggestive_threshold", Number(0.0, math.inf, open_hi=True), none=OK),
+            Param("min_crease_length", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("crease_angle", Number(0.0, 180.0), none=OK),
             Param("weld", Flag(), none=OK),
             Param("normal_threshold", Number(0.0, F32_MAX), none=OK),

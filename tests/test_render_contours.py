@@ -131,3 +131,25 @@ def test_svg_for_a_pen_plotter():
         res.svg(simplify=-1)
     with pytest.raises(TypeError, match="simplify"):
         res.svg(simplify="0.5")
+
+
+def test_short_crease_pieces_are_dropped_on_a_scan_and_kept_on_a_cad_part():
+    from conftest import load_mesh
+    from toonmesh.data import bunny
+
+    def creases(V, F, **kw):
+        res = tm.render(V, F, outputs=("lines",), width=400, height=400,
+                        outlines=tm.Outlines("mesh", silhouette=False, **kw))
+        return [l for l, k in zip(res.lines, res.line_kinds) if k in ("ridge", "valley")]
+
+    assert tm.Outlines().min_crease_length == 0.02
+    V, F = bunny()
+    every, default = creases(V, F, min_crease_length=0.0), creases(V, F)
+    assert len(default) < 0.8 * len(every)
+    V, F = load_mesh("fandisk")
+    cad_every, cad_default = creases(V, F, min_crease_length=0.0), creases(V, F)
+    assert len(cad_default) == len(cad_every) > 0
+    for a, b in zip(cad_default, cad_every):
+        np.testing.assert_array_equal(a, b)
+    # far too long a piece asked for: no crease at all
+    assert creases(V, F, min_crease_length=100.0) == []

@@ -328,6 +328,7 @@ class Outlines:
         depth_offset: Optional[float] = ...,
         contours: Optional[str] = ...,
         suggestive_threshold: Optional[float] = ...,
+        min_crease_length: Optional[float] = ...,
     ) -> Outlines: ...
     kind: Final[str]
     styles: Final[Dict[str, Optional[LineStyle]]]
@@ -338,6 +339,7 @@ class Outlines:
     depth_offset: Final[float]
     contours: Final[str]
     suggestive_threshold: Final[float]
+    min_crease_length: Final[float]
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 

@@ -7,6 +7,7 @@ pub mod detect;
 pub mod feature;
 pub mod index;
 pub mod outlines;
+pub mod short_creases;
 pub mod silhouette;
 pub mod sobel;
 pub mod zero_set;

@@ -81,7 +81,10 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// back-facing faces, Kang et al.'s rule, exact for flat shading) or "smooth" (the smooth
 /// contour n . v = 0 traced through the faces, see :func:`toonmesh.edges.contours`: long clean
 /// lines on scans). suggestive_threshold: the derivative test of suggestive contours, relative
-/// to the mesh's feature size (default 0.01).
+/// to the mesh's feature size (default 0.01). min_crease_length: crease pieces (creases joined
+/// at their vertices, ridges and valleys together) shorter than this fraction of the mesh's
+/// bounding-box diagonal are not drawn, so that a scan's noise does not scatter crease dashes
+/// while a CAD part's creases stay (default 0.02; 0 draws every crease).
 ///
 /// crease_angle: dihedral angle in degrees above which an edge is a crease (default 30, as in
 /// :func:`toonmesh.edges.feature_edges`). weld: merge vertices at equal positions first, so
@@ -106,7 +109,7 @@ impl PyOutlines {
                         crease = None, ridge = None, valley = None, nonmanifold = None, suggestive = None,
                         image = None, crease_angle = None, weld = None, normal_threshold = None,
                         depth_threshold = None, depth_offset = None, contours = None,
-                        suggestive_threshold = None))]
+                        suggestive_threshold = None, min_crease_length = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         kind: Obj<'_, '_>,
@@ -127,6 +130,7 @@ impl PyOutlines {
         depth_offset: Obj<'_, '_>,
         contours: Obj<'_, '_>,
         suggestive_threshold: Obj<'_, '_>,
+        min_crease_length: Obj<'_, '_>,
     ) -> PyResult<Self> {
         (|| {
             let (mesh, img) = match kind {
@@ -160,6 +164,7 @@ impl PyOutlines {
             }
             o.suggestive_threshold =
                 opt_number("suggestive_threshold", suggestive_threshold)?.unwrap_or(o.suggestive_threshold);
+            o.min_crease_length = opt_number("min_crease_length", min_crease_length)?.unwrap_or(o.min_crease_length);
             o.validate("")?;
             Ok(PyOutlines { inner: o })
         })()
@@ -197,6 +202,7 @@ getters!(PyOutlines {
     /// "faces" or "smooth".
     contours -> &'static str = |o| o.contours.name();
     suggestive_threshold -> f64 = |o| o.suggestive_threshold;
+    min_crease_length -> f64 = |o| o.min_crease_length;
 });
 
 /// The `outlines=` argument: None, "mesh", "image", "both" or an Outlines.

@@ -12,6 +12,8 @@ use glam::{DMat4, DVec3};
 use crate::cancel::Cancel;
 use crate::edges::contours::ContourMesh;
 use crate::edges::outlines::{LineKind, Outline, Statics};
+use crate::edges::short_creases::drop_short_creases;
+use crate::mesh::Bounds;
 use crate::edges::zero_set::Polylines;
 use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
@@ -65,8 +67,12 @@ impl MeshLines {
     pub fn outline(&self, host: &HostMesh, view: View, outlines: &Outlines) -> Result<MeshOutline> {
         let draws = |k: LineKind| outlines.styles[k as usize].is_some();
         let index = self.index(host, outlines.weld)?;
-        let statics = self.statics[outlines.weld as usize].at(outlines.crease_angle, || {
-            crate::parallel::install(|| index.feature_edges(outlines.crease_angle))
+        let min_crease = outlines.min_crease_length;
+        let statics = self.statics[outlines.weld as usize].at(outlines.crease_angle, min_crease, || {
+            let mut fe = crate::parallel::install(|| index.feature_edges(outlines.crease_angle))?;
+            let diagonal = Bounds::of(index.positions()).diagonal();
+            drop_short_creases(&mut fe, index.positions(), min_crease * diagonal);
+            Ok(fe)
         })?;
         let mut curves = Vec::new();
         let all = if draws(LineKind::Silhouette) && outlines.contours == ContourRule::Faces {

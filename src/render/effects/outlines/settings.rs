@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
 use crate::edges::contours::{check_threshold, DEFAULT_SUGGESTIVE_THRESHOLD};
 use crate::edges::outlines::LineKind;
+use crate::edges::short_creases::DEFAULT_MIN_CREASE_LENGTH;
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::field;
 use crate::error::{Error, Result};
@@ -87,6 +88,9 @@ pub struct Outlines {
     pub styles: [Option<LineStyle>; INK_KINDS],
     /// Dihedral angle in degrees above which an edge is a crease.
     pub crease_angle: f64,
+    /// Crease pieces (creases joined at their vertices) shorter than this fraction of the
+    /// mesh's bounding-box diagonal are not drawn (`edges::short_creases`).
+    pub min_crease_length: f64,
     /// Merge vertices at equal positions before finding mesh-space lines, so that UV or normal
     /// seams are not taken for boundaries.
     pub weld: bool,
@@ -123,6 +127,7 @@ impl Outlines {
             contours: ContourRule::Faces,
             suggestive_threshold: DEFAULT_SUGGESTIVE_THRESHOLD,
             crease_angle: DEFAULT_CREASE_ANGLE,
+            min_crease_length: DEFAULT_MIN_CREASE_LENGTH,
             weld: true,
             normal_threshold: DEFAULT_NORMAL_THRESHOLD as f32,
             depth_threshold: DEFAULT_DEPTH_THRESHOLD as f32,
@@ -184,6 +189,12 @@ impl Outlines {
             }
         }
         check_threshold(&field(prefix, "suggestive_threshold"), self.suggestive_threshold)?;
+        if !(self.min_crease_length.is_finite() && self.min_crease_length >= 0.0) {
+            return Err(Error::invalid(
+                field(prefix, "min_crease_length"),
+                format!("must be a finite fraction of the diagonal >= 0, got {}", self.min_crease_length),
+            ));
+        }
         if !(self.depth_offset.is_finite() && self.depth_offset >= 0.0) {
             return Err(Error::invalid(
                 field(prefix, "depth_offset"),
