@@ -1,6 +1,7 @@
 """Draws docs/outlines.png: ink outlines in the render. Top row: the fandisk CAD part with
 mesh-space lines (silhouettes, boundaries, creases as ridges and valleys: Kang, Kim and Yoon),
-with image-space edges (Sobel on the normal and depth buffers: Borquez and Yepez), and the
+with image-space lines (between pixels whose normals turn or whose depths jump, the default
+rule; no threshold to scale with the model), and the
 line drawing alone (the ``outline`` output). Bottom row: the same for the smoothed bunny.
 Needs trimesh to read the OBJ file. Run from the repository root: ``python docs/outlines_figure.py``.
 """
@@ -18,14 +19,12 @@ SIZE = 360
 
 
 def panels(V, F, material, camera, crease_angle):
-    # depth edges are found in world units: a threshold of 2% of the model's size
-    depth_threshold = 0.02 * float(np.linalg.norm(V.max(0) - V.min(0)))
     mesh = tm.Outlines("mesh", crease_angle=crease_angle, ridge="#202060", valley="#a02020", width=1.8)
-    image = tm.Outlines("image", depth_threshold=depth_threshold)
+    image = tm.Outlines("image", width=1.8)
     kw = dict(material=material, camera=camera, width=SIZE, height=SIZE, supersample=2)
     a = tm.render(V, F, outlines=mesh, **kw).color
     b = tm.render(V, F, outlines=image, **kw).color
-    ink = tm.render(V, F, outlines=tm.Outlines("both", crease_angle=crease_angle, depth_threshold=depth_threshold),
+    ink = tm.render(V, F, outlines=tm.Outlines("both", crease_angle=crease_angle, width=1.8),
                     outputs="outline", **kw).outline
     c = np.dstack([np.repeat(((1 - ink) * 255).astype(np.uint8)[..., None], 3, axis=2), np.full(ink.shape, 255, np.uint8)])
     return np.concatenate([a, b, c], axis=1)

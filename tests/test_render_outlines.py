@@ -53,7 +53,7 @@ def _expected_passes(outlines, outputs, msaa, supersample, casting=False):
     if shadow:
         passes.append("shadow")
     if draw_image:
-        passes.append("edges")
+        passes += ["edge_bits", "edges"]  # the default image rule, "discontinuity"
     if draw_lines:
         passes.append("lines")
     if color:
@@ -178,7 +178,7 @@ def test_image_edges_agree_with_detect_edges_on_the_same_buffers(backend):
     V, F = _core.icosphere(4, 0.04, 5)
     V2 = V * 0.5 + (0.6, 0.1, 1.2)
     scene = [tm.Mesh(V, F), tm.Mesh(V2, F)]
-    outlines = tm.Outlines("image", depth_threshold=0.05)
+    outlines = tm.Outlines("image", depth_threshold=0.05, image_rule="paper")
     res = tm.render(scene, camera=tm.Camera.look_at((0.3, 0.4, 5.0), fov_y=40), width=257, height=193, backend=backend,
                     outlines=outlines, outputs=("color", "normal", "depth", "outline"))
     cpu = tm.edges.detect_edges(res.normal, res.depth, normal_threshold=outlines.normal_threshold,
@@ -262,3 +262,32 @@ def test_edge_index_gives_the_renderers_outline_set():
     assert (kinds == "silhouette").sum() == 6 and (kinds == "ridge").sum() == 6
     sil = idx.silhouette(eye=(3.0, 2.5, 2.0))
     assert {tuple(e) for e in edges[kinds == "silhouette"]} == {tuple(e) for e in sil}
+
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("scale", [0.01, 1.0, 658.0])
+def test_image_lines_honour_width_and_scale(backend, scale):
+    """The default image rule: ink across a silhouette is `width` pixels (within 0.5 + 0.25
+    width), centred within 1.5 px of it, at any model scale; and a large model is not inked
+    solid (the paper rule's depth threshold is in world units)."""
+    V, F = _core.icosphere(4, 0.0, 0)
+    for width in (1.0, 2.0, 4.0):
+        res = tm.render(V * scale, F, width=300, height=300, backend=backend, outputs=("outline", "depth"),
+                        camera=tm.Camera.look_at((0.0, 0.0, 5.0 * scale), (0, 0, 0), fov_y=40),
+                        outlines=tm.Outlines("image", width=width))
+        for row in (120, 150, 180):
+            surface = np.flatnonzero(np.isfinite(res.depth[row]))
+            for rim, side in ((surface[0], -1), (surface[-1] + 1, 1)):  # the boundary's x
+                xs = np.arange(rim - 12, rim + 12)
+                ink = res.outline[row, xs]
+                total = float(ink.sum())
+                centre = float((xs + 0.5) @ ink / total)
+                assert abs(total - width) <= 0.5 + 0.25 * width, (width, row, total)
+                assert abs(centre - rim) <= 1.5, (width, row, centre, rim)
+        inside = np.isfinite(res.depth)
+        assert (res.outline[inside] > 0.5).mean() < 0.1
+    if scale == 658.0:
+        paper = tm.render(V * scale, F, width=300, height=300, backend=backend, outputs=("outline", "depth"),
+                          outlines=tm.Outlines("image", image_rule="paper"))
+        assert (paper.outline[np.isfinite(paper.depth)] > 0.5).mean() > 0.9  # why the default changed

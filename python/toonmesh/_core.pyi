@@ -329,6 +329,9 @@ class Outlines:
         contours: Optional[str] = ...,
         suggestive_threshold: Optional[float] = ...,
         min_crease_length: Optional[float] = ...,
+        image_rule: Optional[str] = ...,
+        normal_angle: Optional[float] = ...,
+        depth_jump: Optional[float] = ...,
     ) -> Outlines: ...
     kind: Final[str]
     styles: Final[Dict[str, Optional[LineStyle]]]
@@ -340,6 +343,9 @@ class Outlines:
     contours: Final[str]
     suggestive_threshold: Final[float]
     min_crease_length: Final[float]
+    image_rule: Final[str]
+    normal_angle: Final[float]
+    depth_jump: Final[float]
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 

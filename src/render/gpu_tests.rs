@@ -292,7 +292,8 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
 #[test]
 fn image_edges_match_the_cpu_rule_on_the_same_buffers_on_both_backends() {
     use super::effects::outlines::edges_reference::edge_mask;
-    let outlines = Outlines { depth_threshold: 0.05, ..Outlines::new(false, true) };
+    use super::effects::outlines::settings::ImageRule;
+    let outlines = Outlines { depth_threshold: 0.05, image_rule: ImageRule::Paper, ..Outlines::new(false, true) };
     for backend in backends() {
         let r = open(backend).unwrap();
         let scene = two_spheres(&r, outlines.clone());
@@ -314,5 +315,56 @@ fn image_edges_match_the_cpu_rule_on_the_same_buffers_on_both_backends() {
         // edge pixels are painted in the image ink (black) over the colour
         let color = out.bytes(Output::Color).unwrap();
         assert!(want.iter().zip(color.chunks(4)).filter(|(e, _)| **e).all(|(_, c)| c[..3] == [0, 0, 0]));
+    }
+}
+
+#[test]
+fn image_lines_match_the_cpu_discontinuity_rule_on_both_backends() {
+    use super::effects::outlines::edges_reference::{Buffers, Discontinuity};
+    use super::effects::outlines::settings::IMAGE_KIND;
+    use super::uniforms::footprint;
+    for (width, flat) in [(1.5f32, false), (4.0, true)] {
+        let mut outlines = Outlines::new(false, true);
+        outlines.styles[IMAGE_KIND] = Some(super::effects::outlines::settings::LineStyle { color: [0.0; 3], width });
+        for backend in backends() {
+            let r = open(backend).unwrap();
+            let mut scene = two_spheres(&r, outlines.clone());
+            if flat {
+                // faceted: normal turns between pixels on every face edge
+                let (v, f) = icosphere(1, 0.0, 0).unwrap();
+                scene.items[0].mesh = r.add_mesh(&v, f, NormalMode::Flat).unwrap();
+            }
+            let frame = FrameSpec {
+                width: 181,
+                height: 137,
+                outputs: Outputs::of(&[Output::Outline, Output::Normal, Output::Depth]),
+                ..Default::default()
+            };
+            let out = r.render(&scene, &frame).unwrap();
+            let (_, cam) = screen_lines(&r, &scene, &frame);
+            let (a, b) = footprint(&cam, frame.height);
+            let rule = Discontinuity {
+                normal_cos: (outlines.normal_angle as f64).to_radians().cos() as f32,
+                depth_jump: outlines.depth_jump,
+                // the read-back depth is in world units
+                footprint: [a as f32, (b * cam.scale) as f32],
+                orthographic: cam.orthographic,
+                width,
+            };
+            let buf = Buffers {
+                normal: out.floats(Output::Normal).unwrap(),
+                depth: out.floats(Output::Depth).unwrap(),
+                width: 181,
+                height: 137,
+            };
+            let want = rule.coverage_image(&buf);
+            let got = out.floats(Output::Outline).unwrap();
+            let n = got.len() as f64;
+            let mean = got.iter().zip(&want).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / n;
+            let off = got.iter().zip(&want).filter(|(a, b)| (*a - *b).abs() > 0.25).count() as f64 / n;
+            let inked = want.iter().filter(|&&c| c > 0.5).count();
+            assert!(inked > 300, "{backend:?}: the reference inks {inked} pixels");
+            assert!(mean < 0.01 && off < 0.005, "{backend:?} width {width}: mean difference {mean}, {off} of pixels off by > 0.25");
+        }
     }
 }

@@ -292,7 +292,7 @@ mod tests {
     fn outlines_run_only_when_asked_for_and_drawable() {
         let both = || scene(Some(Outlines::new(true, true)), false);
         let f = FrameSpec::default();
-        assert_eq!(names(both(), f), ["silhouettes", "shade", "edges", "lines", "readback_color"]);
+        assert_eq!(names(both(), f), ["silhouettes", "shade", "edge_bits", "edges", "lines", "readback_color"]);
         // image edges need normals, produced but not read back
         let p = plan(&checked(scene(Some(Outlines::new(false, true)), false), f));
         assert_eq!(p.shape.geometry, Some(GeometryLayout::NormalDepth));
@@ -302,7 +302,7 @@ mod tests {
         // the outline output alone
         assert_eq!(
             names(both(), outputs(&[Output::Outline])),
-            ["silhouettes", "gbuffer", "edges", "lines", "readback_outline"]
+            ["silhouettes", "gbuffer", "edge_bits", "edges", "lines", "readback_outline"]
         );
         // vector lines read depth back without returning it
         assert_eq!(

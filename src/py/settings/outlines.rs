@@ -8,7 +8,9 @@ use crate::edges::outlines::LineKind;
 use crate::error::{Error, Result};
 use crate::py::args::{flag, flag_or, opt_number, opt_rgb, rgb, text, type_name, Obj};
 use crate::py::errors::to_py;
-use crate::render::effects::outlines::settings::{kind_names, ContourRule, LineStyle, Outlines, IMAGE_KIND};
+use crate::render::effects::outlines::settings::{
+    kind_names, ContourRule, ImageRule, LineStyle, Outlines, IMAGE_KIND,
+};
 
 /// How one kind of ink line is drawn: ``color`` (sRGB, default black) and ``width`` in output
 /// pixels (default 1.5; the same at every resolution and supersampling factor).
@@ -72,8 +74,8 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// style of every kind (default black, 1.5 output pixels). Each kind can be styled on its own
 /// with a keyword: silhouette, boundary, crease (both ridge and valley), ridge, valley,
 /// nonmanifold, suggestive, image; each takes None or True (the common style), False (not
-/// drawn), a :class:`LineStyle`, or a colour. Image edges are one pixel wide whatever the
-/// width. Suggestive contours (DeCarlo et al., see
+/// drawn), a :class:`LineStyle`, or a colour (image edges take the width under the
+/// discontinuity rule; under the paper rule they are whole pixels). Suggestive contours (DeCarlo et al., see
 /// :func:`toonmesh.edges.suggestive_contours`) are drawn only when asked for (suggestive=True,
 /// a style or a colour; default None: not drawn).
 ///
@@ -88,9 +90,16 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 ///
 /// crease_angle: dihedral angle in degrees above which an edge is a crease (default 30, as in
 /// :func:`toonmesh.edges.feature_edges`). weld: merge vertices at equal positions first, so
-/// UV or normal seams are not drawn as boundaries (default True). normal_threshold (default
-/// 1.0) and depth_threshold (default 0.1, in world depth units times 4): the rule of
-/// :func:`toonmesh.edges.detect_edges`. depth_offset: hidden-line removal keeps a point of a
+/// UV or normal seams are not drawn as boundaries (default True).
+///
+/// image_rule: how image-space edges are found. "discontinuity" (default): between neighbouring
+/// pixels whose normals turn by more than normal_angle degrees (default 25), whose depths jump
+/// by more than depth_jump pixel footprints beyond what the surface's slope predicts (default
+/// 3; a footprint is a pixel's size at that depth, so the rule is the same at any model scale),
+/// or where the surface meets the background; drawn as lines width pixels wide centred on those
+/// boundaries, antialiased. "paper": Borquez and Yepez's thresholded Sobel, whole edge pixels,
+/// with normal_threshold (default 1.0) and depth_threshold (default 0.1, in world depth units
+/// times 4): the rule of :func:`toonmesh.edges.detect_edges`. depth_offset: hidden-line removal keeps a point of a
 /// line when its depth is at most the largest surface depth in the 3x3 pixels around it plus
 /// this many pixel footprints (the world size of one pixel at that depth; default 1.0); a
 /// silhouette or boundary with background among those pixels is on the rim and always shows.
@@ -109,7 +118,8 @@ impl PyOutlines {
                         crease = None, ridge = None, valley = None, nonmanifold = None, suggestive = None,
                         image = None, crease_angle = None, weld = None, normal_threshold = None,
                         depth_threshold = None, depth_offset = None, contours = None,
-                        suggestive_threshold = None, min_crease_length = None))]
+                        suggestive_threshold = None, min_crease_length = None, image_rule = None,
+                        normal_angle = None, depth_jump = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         kind: Obj<'_, '_>,
@@ -131,6 +141,9 @@ impl PyOutlines {
         contours: Obj<'_, '_>,
         suggestive_threshold: Obj<'_, '_>,
         min_crease_length: Obj<'_, '_>,
+        image_rule: Obj<'_, '_>,
+        normal_angle: Obj<'_, '_>,
+        depth_jump: Obj<'_, '_>,
     ) -> PyResult<Self> {
         (|| {
             let (mesh, img) = match kind {
@@ -165,6 +178,11 @@ impl PyOutlines {
             o.suggestive_threshold =
                 opt_number("suggestive_threshold", suggestive_threshold)?.unwrap_or(o.suggestive_threshold);
             o.min_crease_length = opt_number("min_crease_length", min_crease_length)?.unwrap_or(o.min_crease_length);
+            if let Some(r) = image_rule {
+                o.image_rule = ImageRule::parse("image_rule", &text("image_rule", r)?)?;
+            }
+            o.normal_angle = opt_number("normal_angle", normal_angle)?.map_or(o.normal_angle, |t| t as f32);
+            o.depth_jump = opt_number("depth_jump", depth_jump)?.map_or(o.depth_jump, |t| t as f32);
             o.validate("")?;
             Ok(PyOutlines { inner: o })
         })()
@@ -203,6 +221,10 @@ getters!(PyOutlines {
     contours -> &'static str = |o| o.contours.name();
     suggestive_threshold -> f64 = |o| o.suggestive_threshold;
     min_crease_length -> f64 = |o| o.min_crease_length;
+    /// "discontinuity" or "paper".
+    image_rule -> &'static str = |o| o.image_rule.name();
+    normal_angle -> f32 = |o| o.normal_angle;
+    depth_jump -> f32 = |o| o.depth_jump;
 });
 
 /// The `outlines=` argument: None, "mesh", "image", "both" or an Outlines.

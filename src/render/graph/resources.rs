@@ -171,6 +171,13 @@ impl FrameResources {
         })
     }
 
+    /// The edge-bits target's bind group (`uint_texture` layout), for the pass that inks them.
+    pub fn edge_bits_group(&self, f: &FrameCtx<'_>) -> wgpu::BindGroup {
+        self.bind_group("edge_bits", || {
+            texture_group(&f.dev.device, &f.pipelines.layouts.uint_texture, self.view(Target::EdgeBits))
+        })
+    }
+
     /// Makes room for `n` draws.
     pub fn reserve_draws(&mut self, dev: &Device, layouts: &Layouts, n: usize) {
         if n > self.uniforms.draw_capacity {

@@ -10,6 +10,9 @@ pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 pub const OUTLINE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R8Unorm;
 /// The light's visibility: f32 bits in an integer texel (GL cannot render to float formats).
 pub const SHADOW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
+/// Which boundaries of a pixel are image-space edges: bit 0 the one with its right neighbour,
+/// bit 1 the one with the neighbour below.
+pub const EDGE_BITS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R8Uint;
 
 /// What the geometry target holds, as f32 bit patterns in 32-bit integer texels (GL cannot
 /// render to 32-bit float formats; it can to integer ones, which keeps the values exact).
@@ -62,6 +65,8 @@ pub enum Target {
     ShadowMap,
     /// The light's visibility at the output size, as f32 bits (like the geometry target).
     Shadow,
+    /// The image-space edges between pixels at the output size (`EDGE_BITS_FORMAT`).
+    EdgeBits,
 }
 
 /// Everything the frame's textures depend on.
@@ -102,6 +107,7 @@ impl Target {
                 ((side, side), 1, DEPTH_FORMAT)
             }
             Target::Shadow => (out, 1, SHADOW_FORMAT),
+            Target::EdgeBits => (out, 1, EDGE_BITS_FORMAT),
         };
         TextureDesc { size, samples, format }
     }

@@ -1,20 +1,35 @@
-//! Image-space outlines (Borquez and Yepez): Sobel on the normal and depth buffers of the
-//! geometry target, with `edges::detect`'s rule and thresholds, painted in the image ink over the
-//! colour and/or into the outline coverage. `edges_reference.rs` is its CPU reference.
+//! Image-space outlines painted in the image ink over the colour and/or into the outline
+//! coverage: under the discontinuity rule, lines `width` pixels wide around the edge boundaries
+//! that `edge_bits` found; under the paper rule (Borquez and Yepez), Sobel on the normal and
+//! depth buffers of the geometry target with `edges::detect`'s thresholds. `edges_reference.rs`
+//! is the CPU reference of both.
 
 use crate::error::Result;
 use crate::render::graph::build::fullscreen_pipeline;
-use crate::render::graph::target::Use;
+use crate::render::graph::target::{Access, Target, Use};
 use crate::render::graph::{FrameCtx, Pass, Recorder};
 use crate::render::pipelines::PipelineKey;
 
 use super::ink::Ink;
+use super::settings::ImageRule;
 
 pub const WGSL: &str = include_str!("edges.wgsl");
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Edges {
     pub ink: Ink,
+    /// The rule: the paper's reads the geometry target, the discontinuity rule the edge bits
+    /// (`edge_bits`).
+    pub rule: ImageRule,
+}
+
+impl Edges {
+    fn source(&self) -> Target {
+        match self.rule {
+            ImageRule::Paper => Target::Geometry,
+            ImageRule::Discontinuity => Target::EdgeBits,
+        }
+    }
 }
 
 impl Pass for Edges {
@@ -23,7 +38,10 @@ impl Pass for Edges {
     }
 
     fn uses(&self) -> Vec<Use> {
-        self.ink.uses()
+        let mut u = self.ink.uses();
+        u.retain(|x| x.0 != Target::Geometry);
+        u.push(Use(self.source(), Access::Sample));
+        u
     }
 
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
@@ -40,9 +58,12 @@ impl Pass for Edges {
                 &[],
             )
         });
-        let geometry = f.res.geometry_group(f);
+        let source = match self.rule {
+            ImageRule::Paper => f.res.geometry_group(f),
+            ImageRule::Discontinuity => f.res.edge_bits_group(f),
+        };
         let attachments = self.ink.attachments(f);
-        rec.fullscreen("edges", &attachments, &pipeline, &[&f.res.uniforms.frame_group, &geometry]);
+        rec.fullscreen("edges", &attachments, &pipeline, &[&f.res.uniforms.frame_group, &source]);
         Ok(())
     }
 }

@@ -3,6 +3,7 @@
 //! `visibility`) and image-space edges (Borquez and Yepez: Sobel on the normal and depth
 //! buffers; `edges`), drawn over the colour and/or into the outline coverage (`ink`).
 
+pub mod edge_bits;
 pub mod edges;
 pub mod edges_reference;
 pub mod ink;
@@ -33,10 +34,17 @@ crate::uniform_block! {
         pub ink: [[f32; 4]; INK_KINDS],
         /// Hidden-line tolerance in pixel footprints (`Outlines::depth_offset`).
         pub depth_offset: f32,
-        /// The image-space rule's thresholds (`edges::detect`), the depth one in normalised units.
+        /// The paper rule's thresholds (`edges::detect`), the depth one in normalised units.
         pub normal_threshold: f32,
         pub depth_threshold: f32,
+        /// The image-space rule: `ImageRule as u32`.
+        pub image_rule: u32,
+        /// The discontinuity rule's thresholds: cos of the normal angle, the depth jump in
+        /// pixel footprints (`edges_reference::Discontinuity`).
+        pub normal_cos: f32,
+        pub depth_jump: f32,
         pub _pad0: f32,
+        pub _pad1: f32,
     }
 }
 
@@ -60,6 +68,7 @@ impl FrameEffect for OutlinesEffect {
         s += &wgsl::constant_u32("LINE_SILHOUETTE", LineKind::Silhouette as u32);
         s += &wgsl::constant_u32("LINE_BOUNDARY", LineKind::Boundary as u32);
         s += &wgsl::constant_f32("DEPTH_EPSILON", visibility::DEPTH_EPSILON);
+        s += &wgsl::constant_u32("IMAGE_RULE_PAPER", settings::ImageRule::Paper as u32);
         s + include_str!("block.wgsl")
     }
 
@@ -79,6 +88,9 @@ impl FrameEffect for OutlinesEffect {
             b.depth_offset = o.depth_offset;
             b.normal_threshold = o.normal_threshold;
             b.depth_threshold = (o.depth_threshold as f64 / cx.cam.scale) as f32;
+            b.image_rule = o.image_rule as u32;
+            b.normal_cos = (o.normal_angle as f64).to_radians().cos() as f32;
+            b.depth_jump = o.depth_jump;
         }
         b.bytes()
     }
@@ -125,7 +137,10 @@ impl FrameEffect for OutlinesEffect {
         };
         if image && (color || outline) {
             let ink = ink(steps);
-            steps.after.push(Box::new(edges::Edges { ink }));
+            if outlines.image_rule == settings::ImageRule::Discontinuity {
+                steps.after.push(Box::new(edge_bits::EdgeBits));
+            }
+            steps.after.push(Box::new(edges::Edges { ink, rule: outlines.image_rule }));
         }
         let lines = mesh && (color || outline);
         let visible = mesh && o.has(Output::Lines);

@@ -35,6 +35,27 @@ crate::named_enum! {
     }
 }
 
+crate::named_enum! {
+    /// How image-space edges are found and drawn.
+    pub enum ImageRule {
+        /// Between neighbouring pixels whose normals turn by more than `normal_angle`, or whose
+        /// depths jump by more than `depth_jump` pixel footprints beyond what the surface's
+        /// slope predicts, or where the surface meets the background: thin lines centred on
+        /// those boundaries, `width` pixels wide and antialiased, the same at any model scale.
+        Discontinuity = "discontinuity",
+        /// Borquez and Yepez's thresholded Sobel of the normal and depth buffers
+        /// (`edges::detect`, `normal_threshold` and `depth_threshold`): whole edge pixels.
+        Paper = "paper",
+    }
+}
+
+/// The smallest turn of the normal between neighbouring pixels drawn as an image-space edge,
+/// in degrees, when none is given.
+pub const DEFAULT_NORMAL_ANGLE: f32 = 25.0;
+/// The smallest depth jump between neighbouring pixels drawn as an image-space edge, in pixel
+/// footprints beyond the surface's slope, when none is given.
+pub const DEFAULT_DEPTH_JUMP: f32 = 3.0;
+
 /// The kinds of ink: the mesh-space kinds of `edges::outlines::LineKind`, then image-space edges.
 pub const IMAGE_KIND: usize = LineKind::COUNT;
 pub const INK_KINDS: usize = LineKind::COUNT + 1;
@@ -94,7 +115,11 @@ pub struct Outlines {
     /// Merge vertices at equal positions before finding mesh-space lines, so that UV or normal
     /// seams are not taken for boundaries.
     pub weld: bool,
-    /// Image-space thresholds, as in `edges::detect`.
+    /// The image-space rule, and its thresholds.
+    pub image_rule: ImageRule,
+    pub normal_angle: f32,
+    pub depth_jump: f32,
+    /// The paper rule's thresholds, as in `edges::detect`.
     pub normal_threshold: f32,
     pub depth_threshold: f32,
     /// The rule silhouettes are found by.
@@ -129,6 +154,9 @@ impl Outlines {
             crease_angle: DEFAULT_CREASE_ANGLE,
             min_crease_length: DEFAULT_MIN_CREASE_LENGTH,
             weld: true,
+            image_rule: ImageRule::Discontinuity,
+            normal_angle: DEFAULT_NORMAL_ANGLE,
+            depth_jump: DEFAULT_DEPTH_JUMP,
             normal_threshold: DEFAULT_NORMAL_THRESHOLD as f32,
             depth_threshold: DEFAULT_DEPTH_THRESHOLD as f32,
             depth_offset: DEFAULT_DEPTH_OFFSET,
@@ -175,32 +203,27 @@ impl Outlines {
                 s.validate(&field(prefix, name))?;
             }
         }
-        crate::edges::feature::check_crease_angle(self.crease_angle).map_err(|_| {
-            Error::invalid(
-                field(prefix, "crease_angle"),
-                format!("must be in [0, 180] degrees, got {}", self.crease_angle),
-            )
-        })?;
-        for (name, t) in
-            [("normal_threshold", self.normal_threshold), ("depth_threshold", self.depth_threshold)]
-        {
+        // angles between normals, by the crease angle's rule
+        let in_degrees = |name: &str, a: f64| {
+            crate::edges::feature::check_crease_angle(a).map_err(|_| {
+                Error::invalid(field(prefix, name), format!("must be in [0, 180] degrees, got {a}"))
+            })
+        };
+        in_degrees("crease_angle", self.crease_angle)?;
+        in_degrees("normal_angle", self.normal_angle as f64)?;
+        // finite and >= 0, in the unit each is measured in
+        for (name, t, unit) in [
+            ("normal_threshold", self.normal_threshold as f64, ""),
+            ("depth_threshold", self.depth_threshold as f64, ""),
+            ("depth_jump", self.depth_jump as f64, " pixel footprints"),
+            ("min_crease_length", self.min_crease_length, " (a fraction of the diagonal)"),
+            ("depth_offset", self.depth_offset as f64, " pixels"),
+        ] {
             if !(t.is_finite() && t >= 0.0) {
-                return Err(Error::invalid(field(prefix, name), format!("must be finite and >= 0, got {t}")));
+                return Err(Error::invalid(field(prefix, name), format!("must be finite and >= 0{unit}, got {t}")));
             }
         }
         check_threshold(&field(prefix, "suggestive_threshold"), self.suggestive_threshold)?;
-        if !(self.min_crease_length.is_finite() && self.min_crease_length >= 0.0) {
-            return Err(Error::invalid(
-                field(prefix, "min_crease_length"),
-                format!("must be a finite fraction of the diagonal >= 0, got {}", self.min_crease_length),
-            ));
-        }
-        if !(self.depth_offset.is_finite() && self.depth_offset >= 0.0) {
-            return Err(Error::invalid(
-                field(prefix, "depth_offset"),
-                format!("must be finite and >= 0 pixels, got {}", self.depth_offset),
-            ));
-        }
         Ok(())
     }
 }
