@@ -18,6 +18,7 @@ __all__ = [
     "MODELS",
     "OUTLINE_KINDS",
     "CONTOUR_RULES",
+    "IMAGE_RULES",
     "OUTPUTS",
     "SHADOW_FILTERS",
     "Camera",
@@ -66,6 +67,7 @@ LINE_KINDS: Tuple[str, ...]
 INK_KINDS: Tuple[str, ...]
 OUTLINE_KINDS: Tuple[str, ...]
 CONTOUR_RULES: Tuple[str, ...]
+IMAGE_RULES: Tuple[str, ...]
 MODELS: Tuple[str, ...]
 HIGHLIGHTS: Tuple[str, ...]
 DITHER_PATTERNS: Tuple[str, ...]

@@ -162,7 +162,9 @@ def cmd_render(args: argparse.Namespace) -> int:
         msaa=args.msaa, supersample=args.supersample,
     )
     if args.outlines is not None and args.outlines != "none":
-        options["outlines"] = tm.Outlines(args.outlines, contours=args.contours, suggestive=args.suggestive or None)
+        options["outlines"] = tm.Outlines(args.outlines, contours=args.contours, suggestive=args.suggestive or None,
+                                          image_rule=args.image_rule, normal_angle=args.normal_angle,
+                                          depth_jump=args.depth_jump)
     targets = _render_targets(args.meshes, args.out, args.views, args.outputs)
     t0 = time.perf_counter()
     bar = _progress(len(args.meshes) * args.views)
@@ -330,6 +332,15 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("--color", default=None, metavar="#RRGGBB", help="base colour of the material")
     p.add_argument("--outlines", choices=OUTLINES, default=None, help="ink lines: on the mesh, from the image, or both")
     _add_contour_arguments(p)
+    p.add_argument("--image-rule", choices=tuple(_core.IMAGE_RULES), default=tm.Outlines().image_rule,
+                   help="image-space lines: between pixels whose normals turn or depths jump, width pixels wide "
+                        "and the same at any scale (discontinuity), or the paper's thresholded Sobel (paper); "
+                        "default: discontinuity")
+    defaults = tm.Outlines()  # the core's defaults
+    p.add_argument("--normal-angle", type=float, default=defaults.normal_angle, metavar="DEG",
+                   help="image lines where the normal turns by more than this between pixels (default %(default)g)")
+    p.add_argument("--depth-jump", type=float, default=defaults.depth_jump, metavar="PX",
+                   help="image lines where depth jumps by more than this many pixel footprints (default %(default)g)")
     p.add_argument("--views", type=_positive, default=1, metavar="N", help="a turntable of N views about the up axis")
     p.add_argument("--up", **up)  # type: ignore[arg-type]
     p.add_argument("--smooth", type=_count, default=0, metavar="N", help="smoothing iterations before rendering")

@@ -137,7 +137,7 @@ fn tup(v: [f64; 3]) -> (f64, f64, f64) {
 fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
     use crate::edges::outlines::LineKind;
     use crate::render::effects::dither::{DitherPattern, DitherSpace};
-    use crate::render::effects::outlines::settings::{kind_names, ContourRule, Outlines};
+    use crate::render::effects::outlines::settings::{kind_names, ContourRule, ImageRule, Outlines};
     use crate::render::effects::shadows::settings::ShadowFilter;
     use crate::render::scene::model::{Highlight, Model};
     use crate::render::scene::Output;
@@ -151,6 +151,7 @@ fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("INK_KINDS", names(&kind_names())?)?;
     m.add("OUTLINE_KINDS", names(&Outlines::KINDS)?)?;
     m.add("CONTOUR_RULES", names(ContourRule::NAMES)?)?;
+    m.add("IMAGE_RULES", names(ImageRule::NAMES)?)?;
     m.add("MODELS", names(&Model::NAMES)?)?;
     m.add("HIGHLIGHTS", names(&Highlight::NAMES)?)?;
     m.add("DITHER_PATTERNS", names(&DitherPattern::NAMES)?)?;
