@@ -1,4 +1,4 @@
-"""Draws docs/contours.png: line drawings of the raw Stanford bunny and of spot with face-edge
+"""Draws docs/contours.png: line drawings of the raw Stanford bunny, spot and the cow with face-edge
 silhouettes (toonmesh.edges.silhouette), smooth contours (toonmesh.edges.contours) and
 suggestive contours (toonmesh.edges.suggestive_contours), hidden lines removed with the small
 z-buffer of docs/edges_figure.py. Needs matplotlib and trimesh. Run from the repository root:
@@ -63,10 +63,11 @@ def row(axes, name, eye_dir, up=(0.0, 1.0, 0.0), threshold=0.01):
 
 
 def main():
-    fig, axes = plt.subplots(2, 3, figsize=(7.5, 5.2), dpi=100, layout="constrained")
+    fig, axes = plt.subplots(3, 3, figsize=(7.5, 7.8), dpi=100, layout="constrained")
     # the raw scan's curvature is noisy: only the strongest suggestive contours
     row(axes[0], "stanford-bunny.obj", (0.3, 0.1, 1.0), threshold=0.3)
     row(axes[1], "spot.obj", (1.0, 0.35, 0.9))
+    row(axes[2], "cow.obj", (0.9, 0.3, 1.0))
     out = ROOT / "docs" / "contours.png"
     fig.savefig(out, dpi=100)
     print(out.relative_to(ROOT), out.stat().st_size // 1024, "KB")
