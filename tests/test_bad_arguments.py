@@ -1009,6 +1009,7 @@ FRAME = [
     Param("outputs", OUTPUTS, none=OK),
     Param("msaa", MSAA),
     Param("supersample", SUPERSAMPLE),
+    Param("band_antialias", Flag(), none=OK),
     Param("outlines", OUTLINES, none=OK),
 ]
 

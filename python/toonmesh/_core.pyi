@@ -372,6 +372,7 @@ class RenderOptions:
     outputs: Final[List[str]]
     msaa: Final[int]
     supersample: Final[int]
+    band_antialias: Final[bool]
     outlines: Final[Optional[Outlines]]
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...

@@ -42,7 +42,9 @@ class RenderKeywords(TypedDict, total=False):
       ("color",)); only those are computed and read back ("outline" and "lines" need outlines,
       "shadow" a light with ``shadows=True``);
     - ``msaa``: samples per pixel, 1 or 4 (default 1); ``supersample``: render 1 to 4 times
-      larger in each direction and average down (default 1);
+      larger in each direction and average down (default 1); ``band_antialias``: blend across
+      each band border and threshold over about one pixel, from the screen-space change of the
+      shading term (default False): smooth tone borders at no extra samples;
     - ``outlines``: None (default), "mesh", "image", "both" or an :class:`Outlines`.
     """
 
@@ -57,6 +59,7 @@ class RenderKeywords(TypedDict, total=False):
     outputs: Union[None, str, Sequence[str]]
     msaa: int
     supersample: int
+    band_antialias: bool
     outlines: Union[None, str, Outlines]
 
 #: A normal mode: ``"smooth"``, ``"flat"``, ``"auto"`` or ``("auto", crease angle in degrees)``.

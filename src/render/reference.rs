@@ -32,6 +32,27 @@ fn thresh(a: f32, b: f32) -> f32 {
     }
 }
 
+/// `thresh(a, b)` blended over a width `w` of a (0: the hard step), as `step_aa` in the shader.
+fn step_aa(a: f32, b: f32, w: f32) -> f32 {
+    if w > 0.0 {
+        ((a - b) / w + 0.5).clamp(0.0, 1.0)
+    } else {
+        thresh(a, b)
+    }
+}
+
+/// The change of a per-pixel quantity across a pixel in x and y, as the shader's fine
+/// derivatives take it: within each 2x2 quad of pixels (even x and y first), the difference
+/// along its row and along its column. `at(x, y)` is the quantity; None outside the image.
+pub fn quad_derivatives<T: Copy + std::ops::Sub<Output = T>>(
+    at: impl Fn(usize, usize) -> Option<T>,
+    x: usize,
+    y: usize,
+) -> Option<[T; 2]> {
+    let (x0, y0) = (x & !1, y & !1);
+    Some([at(x0 + 1, y)? - at(x0, y)?, at(x, y0 + 1)? - at(x, y0)?])
+}
+
 /// Linear RGB colour of a surface point with unit view-space normal `n` at view-space `p`.
 pub fn shade(
     m: &Material,
@@ -41,6 +62,20 @@ pub fn shade(
     ambient_light: Vec3,
     lights: &[RefLight],
 ) -> Vec3 {
+    shade_blended(m, n, p, orthographic, ambient_light, lights, [Vec3::ZERO; 2])
+}
+
+/// `shade` with band borders blended over a pixel: `dn` the normal's change across the pixel in
+/// x and y (`quad_derivatives`; zero: hard borders).
+pub fn shade_blended(
+    m: &Material,
+    n: Vec3,
+    p: Vec3,
+    orthographic: bool,
+    ambient_light: Vec3,
+    lights: &[RefLight],
+    dn: [Vec3; 2],
+) -> Vec3 {
     let v = view_dir(p, orthographic);
     let mut c = ambient_light * Vec3::from(m.ambient_linear());
     for light in lights {
@@ -49,6 +84,7 @@ pub fn shade(
             RefLight::At(q, c) => ((q - p).normalize(), c),
         };
         let d = n.dot(l);
+        let w = glam::Vec2::new(dn[0].dot(l), dn[1].dot(l)).length();
         let (f, s): (Vec3, f32) = match &m.model {
             Model::Lambert => (Vec3::splat(d.max(0.0)), 0.0),
             Model::Phong { shininess } => {
@@ -57,27 +93,38 @@ pub fn shade(
                 (Vec3::splat(d.max(0.0)), s)
             }
             Model::ThresholdedPhong { t_h, t_s, highlight } => {
-                let hl = match highlight {
-                    Highlight::Paper => l.dot(v),
+                let (hl, ws) = match highlight {
+                    Highlight::Paper => (l.dot(v), 0.0),
                     Highlight::Blinn => {
                         let h = l + v;
                         if h.length_squared() > 1e-12 {
-                            n.dot(h.normalize())
+                            let u = h.normalize();
+                            (n.dot(u), glam::Vec2::new(dn[0].dot(u), dn[1].dot(u)).length())
                         } else {
-                            -1.0
+                            (-1.0, 0.0)
                         }
                     }
                 };
-                (Vec3::splat(thresh(d, *t_h)), thresh(hl, *t_s))
+                (Vec3::splat(step_aa(d, *t_h, w)), step_aa(hl, *t_s, ws))
             }
             Model::Bands { thresholds, values } => {
-                let k = thresholds.iter().filter(|&&t| d >= t).count();
-                (Vec3::splat(values[k]), 0.0)
+                let v = thresholds
+                    .iter()
+                    .enumerate()
+                    .fold(values[0], |v, (i, &t)| v + (values[i + 1] - values[i]) * step_aa(d, t, w));
+                (Vec3::splat(v), 0.0)
             }
             Model::Lut { table } => {
-                let x = d.clamp(0.0, 1.0);
-                let i = ((x * table.len() as f32).floor() as usize).min(table.len() - 1);
-                (Vec3::from(table[i]), 0.0)
+                let n = table.len();
+                let cell = |x: f32| ((x.clamp(0.0, 1.0) * n as f32).floor() as usize).min(n - 1);
+                let (lo, hi) = (cell(d - 0.5 * w), cell(d + 0.5 * w));
+                if w <= 0.0 || lo == hi {
+                    (Vec3::from(table[cell(d)]), 0.0)
+                } else {
+                    let border = (lo + 1) as f32 / n as f32;
+                    let below = ((border - (d - 0.5 * w)) / w).clamp(0.0, 1.0);
+                    (Vec3::from(table[hi]).lerp(Vec3::from(table[lo]), below), 0.0)
+                }
             }
         };
         c += f * color * Vec3::from(m.diffuse_linear()) + s * color * Vec3::from(m.specular_linear());

@@ -6,6 +6,7 @@
 //! `scale` (a power of two near the scene's size), so that float32 keeps its precision for
 //! scenes of any size and distance (see `ResolvedCamera::scale`).
 
+use crate::render::scene::FrameSpec;
 use glam::{DMat3, DMat4};
 
 use super::block::{vec4, Block, BlockLayout};
@@ -30,7 +31,8 @@ crate::uniform_block! {
         /// The near plane, in normalised view units.
         pub near: f32,
         pub orthographic: u32,
-        pub _pad0: f32,
+        /// 1: blend across band borders over about a pixel (`FrameSpec::band_antialias`).
+        pub band_antialias: u32,
         pub _pad1: f32,
     }
 }
@@ -100,9 +102,11 @@ pub fn footprint(cam: &ResolvedCamera, height: u32) -> (f64, f64) {
     }
 }
 
-pub fn view_block(cam: &ResolvedCamera, width: u32, height: u32) -> ViewBlock {
+pub fn view_block(cam: &ResolvedCamera, frame: &FrameSpec) -> ViewBlock {
+    let (width, height) = (frame.width, frame.height);
     let (a, b) = footprint(cam, height);
     ViewBlock {
+        band_antialias: frame.band_antialias as u32,
         proj: f32_cols(cam.normalized_proj()),
         size: [width as f32, height as f32],
         footprint: [a as f32, b as f32],

@@ -12,7 +12,7 @@ use super::material::{material_arg, PyMaterial};
 use super::outlines::{outlines_arg, PyOutlines};
 use super::{getters, settings_class};
 use crate::error::{closest, Error, Result};
-use crate::py::args::{integer, numbers, refuse_text, rgb, rgba, text, type_name};
+use crate::py::args::{flag, integer, numbers, refuse_text, rgb, rgba, text, type_name};
 use crate::py::errors::to_py;
 use crate::render::scene::light::Light;
 use crate::render::scene::options::RenderOptions;
@@ -165,6 +165,10 @@ impl PyRenderOptions {
                 "height" => o.frame.height = pixels("height", &value)?,
                 "msaa" => o.frame.msaa = small("msaa", &value)?,
                 "supersample" => o.frame.supersample = small("supersample", &value)?,
+                "band_antialias" => {
+                    o.frame.band_antialias =
+                        if none { d.frame.band_antialias } else { flag("band_antialias", &value)? }
+                }
                 other => {
                     let known = keywords();
                     let names: Vec<&str> = known.iter().map(String::as_str).collect();
@@ -223,6 +227,7 @@ getters!(PyRenderOptions {
     height -> u32 = |o| o.frame.height;
     outputs -> Vec<&'static str> = |o| o.frame.outputs.iter().map(|o| o.name()).collect();
     msaa -> u32 = |o| o.frame.msaa;
+    band_antialias -> bool = |o| o.frame.band_antialias;
     supersample -> u32 = |o| o.frame.supersample;
     outlines -> Option<PyOutlines> = |o| o.outlines.clone().map(|inner| PyOutlines { inner });
 });

@@ -22,7 +22,7 @@ pub fn frame_members() -> Members {
 /// The frame's uniforms: `Frame`, as bytes.
 pub fn frame_bytes(cx: &FrameInputs<'_>) -> Vec<u8> {
     let f = &cx.scene.frame;
-    let mut bytes = view_block(cx.cam, f.width, f.height).bytes();
+    let mut bytes = view_block(cx.cam, f).bytes();
     bytes.extend(lighting_block(cx.scene, cx.cam).bytes());
     for e in FRAME {
         bytes.extend(e.frame_block(cx));

@@ -37,6 +37,10 @@ pub struct FrameSpec {
     pub msaa: u32,
     /// The shading pass runs at this many times the size in each direction, then is averaged down.
     pub supersample: u32,
+    /// Blend across each band border (and threshold) over about one pixel, from the screen-space
+    /// derivative of the shading term: antialiased tones at no extra samples.
+    #[serde(default)]
+    pub band_antialias: bool,
     /// sRGB colour and alpha of pixels no mesh covers.
     pub background: [f32; 4],
 }
@@ -49,6 +53,7 @@ impl Default for FrameSpec {
             outputs: Outputs::of(&[Output::Color]),
             msaa: 1,
             supersample: 1,
+            band_antialias: false,
             background: [1.0, 1.0, 1.0, 1.0],
         }
     }

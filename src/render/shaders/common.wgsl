@@ -11,7 +11,7 @@ struct ViewBlock {
     footprint: vec2<f32>,   // a pixel's world size at normalised depth z: z * x + y
     near: f32,              // the near plane, normalised view units
     orthographic: u32,      // 1 for an orthographic camera
-    _pad0: f32,
+    band_antialias: u32,    // 1: blend across band borders over about a pixel
     _pad1: f32,
 };
 
@@ -134,42 +134,63 @@ fn thresh(a: f32, b: f32) -> f32 {
     return select(0.0, 1.0, a >= b);
 }
 
-fn band_value(d: f32) -> f32 {
-    var k = 0u;
-    for (var i = 0u; i < draw.material.band_count; i++) {
-        if (d >= draw.material.thresholds[i / 4u][i % 4u]) {
-            k = i + 1u;
-        }
+// thresh(a, b) blended over a width w of a (about one pixel's change of a; 0: the hard step).
+fn step_aa(a: f32, b: f32, w: f32) -> f32 {
+    if (w > 0.0) {
+        return clamp((a - b) / w + 0.5, 0.0, 1.0);
     }
-    return draw.material.values[k / 4u][k % 4u];
+    return thresh(a, b);
 }
 
-fn table_value(d: f32) -> vec3<f32> {
+// The band value at d (thresholds ascending), each border blended over w.
+fn band_value(d: f32, w: f32) -> f32 {
+    var v = draw.material.values[0][0];
+    for (var i = 0u; i < draw.material.band_count; i++) {
+        let k = i + 1u;
+        let step = draw.material.values[k / 4u][k % 4u] - draw.material.values[i / 4u][i % 4u];
+        v += step * step_aa(d, draw.material.thresholds[i / 4u][i % 4u], w);
+    }
+    return v;
+}
+
+fn table_cell(x: f32, n: u32) -> u32 {
+    return min(u32(floor(clamp(x, 0.0, 1.0) * f32(n))), n - 1u);
+}
+
+// The table's value at d, averaged over [d - w/2, d + w/2] where that spans two cells.
+fn table_value(d: f32, w: f32) -> vec3<f32> {
     let n = draw.material.table_size;
-    let i = min(u32(floor(clamp(d, 0.0, 1.0) * f32(n))), n - 1u);
-    return draw.material.table[i].rgb;
+    let lo = table_cell(d - 0.5 * w, n);
+    let hi = table_cell(d + 0.5 * w, n);
+    if (w <= 0.0 || lo == hi) {
+        return draw.material.table[table_cell(d, n)].rgb;
+    }
+    let border = f32(lo + 1u) / f32(n);
+    let below = clamp((border - (d - 0.5 * w)) / w, 0.0, 1.0);
+    return mix(draw.material.table[hi].rgb, draw.material.table[lo].rgb, below);
 }
 
-// The diffuse factor of the material's model at d = N . L.
-fn diffuse_term(d: f32) -> vec3<f32> {
+// The diffuse factor of the material's model at d = N . L, its borders blended over w.
+fn diffuse_term(d: f32, w: f32) -> vec3<f32> {
     switch MODEL {
         case MODEL_LAMBERT, MODEL_PHONG: {
             return vec3<f32>(max(d, 0.0));
         }
         case MODEL_THRESHOLDED_PHONG: {
-            return vec3<f32>(thresh(d, draw.material.t_h));
+            return vec3<f32>(step_aa(d, draw.material.t_h, w));
         }
         case MODEL_BANDS: {
-            return vec3<f32>(band_value(d));
+            return vec3<f32>(band_value(d, w));
         }
         default: {
-            return table_value(d);
+            return table_value(d, w);
         }
     }
 }
 
-// The specular factor of the material's model.
-fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
+// The specular factor of the material's model; dn: the normal's change across one pixel
+// (x, y), for the highlight's border.
+fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32, dn: array<vec3<f32>, 2>) -> f32 {
     switch MODEL {
         case MODEL_PHONG: {
             let r = 2.0 * d * n - l;
@@ -180,14 +201,17 @@ fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
         }
         case MODEL_THRESHOLDED_PHONG: {
             var hl = dot(l, v);
+            var w = 0.0;  // the paper's highlight does not depend on the normal
             if (draw.material.blinn == 1u) {
                 let h = l + v;
                 hl = -1.0;
                 if (dot(h, h) > 1e-12) {
-                    hl = dot(n, normalize(h));
+                    let u = normalize(h);
+                    hl = dot(n, u);
+                    w = length(vec2<f32>(dot(dn[0], u), dot(dn[1], u)));
                 }
             }
-            return thresh(hl, draw.material.t_s);
+            return step_aa(hl, draw.material.t_s, w);
         }
         default: {
             return 0.0;
@@ -196,8 +220,9 @@ fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32) -> f32 {
 }
 
 // Linear colour of a point with unit view-space normal n at view-space position p; `jitter`
-// moves L.n before it is banded (dithering).
-fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32) -> vec3<f32> {
+// moves L.n before it is banded (dithering); dn: the normal's change across one pixel in x and
+// y (zero: hard band borders).
+fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32, dn: array<vec3<f32>, 2>) -> vec3<f32> {
     let v = view_dir(p);
     var c = frame.lighting.ambient.rgb * draw.material.ambient.rgb;
     for (var k = 0u; k < LIGHTS; k++) {
@@ -207,13 +232,15 @@ fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32) -> vec3<f32> {
             l = normalize(light.position.xyz - p);
         }
         let d = dot(n, l);
-        var f = diffuse_term(d + jitter);
-        var s = specular_term(n, l, v, d);
+        // how much d changes across a pixel (the light's direction changes slowly)
+        let w = length(vec2<f32>(dot(dn[0], l), dot(dn[1], l)));
+        var f = diffuse_term(d + jitter, w);
+        var s = specular_term(n, l, v, d, dn);
         let lit = light_visibility(k, n, p, d);
         if (lit < 1.0) {
             // in shadow the light's contribution goes, as on a surface facing away from it
             // (Kang et al.: the lowest tone of the table)
-            f = mix(diffuse_term(-1.0), f, lit);
+            f = mix(diffuse_term(-1.0, 0.0), f, lit);
             s *= lit;
         }
         c += f * light.color.rgb * draw.material.diffuse.rgb + s * light.color.rgb * draw.material.specular.rgb;
@@ -245,8 +272,9 @@ fn vs_main(v: VsIn) -> VsOut {
     o.color_back = vec3<f32>(0.0);
     if (PER_VERTEX) {
         let n = unit_or_zero(o.view_normal);
-        o.color_front = shade(n, p.xyz, 0.0);
-        o.color_back = shade(-n, p.xyz, 0.0);
+        let hard = array<vec3<f32>, 2>(vec3<f32>(0.0), vec3<f32>(0.0));  // no derivatives per vertex
+        o.color_front = shade(n, p.xyz, 0.0, hard);
+        o.color_back = shade(-n, p.xyz, 0.0, hard);
     }
     return o;
 }

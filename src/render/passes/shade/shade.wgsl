@@ -7,11 +7,17 @@
 fn shaded_color(i: Varyings, a: Anchors, front_facing: bool) -> vec4<f32> {
     let f = Fragment(i.clip, i.view_pos, facing_normal(i.view_normal, front_facing), a.object_pos, a.object_normal);
     let jitter = surface_jitter(f);
+    // the normal's change across a pixel, for band borders blended over it (taken here, in
+    // uniform control flow; per 2x2 quad of pixels, as `reference::quad_derivatives` does)
+    var dn = array<vec3<f32>, 2>(dpdxFine(f.normal), dpdyFine(f.normal));
+    if (frame.view.band_antialias == 0u) {
+        dn = array<vec3<f32>, 2>(vec3<f32>(0.0), vec3<f32>(0.0));
+    }
     var c: vec3<f32>;
     if (PER_VERTEX) {
         c = select(a.color_back, a.color_front, outer_side(front_facing));
     } else {
-        c = shade(f.normal, i.view_pos, jitter);
+        c = shade(f.normal, i.view_pos, jitter, dn);
     }
     c = surface_finish(f, c);
     return vec4<f32>(clamp(c, vec3<f32>(0.0), vec3<f32>(1.0)), 1.0);
