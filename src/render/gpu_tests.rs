@@ -7,7 +7,7 @@ use super::color::{linear_to_srgb8, to_linear};
 use super::device::BackendChoice;
 use super::effects::outlines::settings::Outlines;
 use super::gpu_mesh::NormalMode;
-use super::reference::{shade_blended, RefLight};
+use super::reference::{shade, RefLight};
 use super::renderer::{RenderOutput, Renderer};
 use super::scene::camera::{Camera, Placement, Projection};
 use super::scene::light::{Light, ViewLight};
@@ -126,7 +126,7 @@ fn agreement_of(scene: &Scene, out: &RenderOutput, blended: bool) -> (f64, usize
             let q = q.truncate() / q.w;
             let p =
                 if proj.w_axis.w == 1.0 { DVec3::new(q.x, q.y, -(z as f64)) } else { q * (z as f64 / -q.z) };
-            let c = shade_blended(
+            let c = shade(
                 &scene.items[0].material,
                 n,
                 p.as_vec3(),

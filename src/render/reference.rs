@@ -53,21 +53,10 @@ pub fn quad_derivatives<T: Copy + std::ops::Sub<Output = T>>(
     Some([at(x0 + 1, y)? - at(x0, y)?, at(x, y0 + 1)? - at(x, y0)?])
 }
 
-/// Linear RGB colour of a surface point with unit view-space normal `n` at view-space `p`.
+/// Linear RGB colour of a surface point with unit view-space normal `n` at view-space `p`, its
+/// band borders blended over the pixel: `dn` the normal's change across the pixel in x and y
+/// (`quad_derivatives`; zero: hard borders).
 pub fn shade(
-    m: &Material,
-    n: Vec3,
-    p: Vec3,
-    orthographic: bool,
-    ambient_light: Vec3,
-    lights: &[RefLight],
-) -> Vec3 {
-    shade_blended(m, n, p, orthographic, ambient_light, lights, [Vec3::ZERO; 2])
-}
-
-/// `shade` with band borders blended over a pixel: `dn` the normal's change across the pixel in
-/// x and y (`quad_derivatives`; zero: hard borders).
-pub fn shade_blended(
     m: &Material,
     n: Vec3,
     p: Vec3,
