@@ -21,7 +21,8 @@ use crate::error::{Error, Result};
 use crate::mesh::curvature::{curvature, Curvature};
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::weld::{weld_faces, weld_map};
-use crate::real::{Real, Vec3};
+use crate::mesh::Bounds;
+use crate::real::{dot, sub, Real, Vec3};
 
 /// A mesh prepared for contours, once: its positions in f64, its faces (welded when asked, so
 /// that seams do not cut the lines), its shading normals, and its curvature once a view asks
@@ -76,14 +77,6 @@ pub fn check_threshold(arg: &str, t: f64) -> Result<f64> {
     }
 }
 
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
 /// The unit vector from p toward the viewer.
 fn to_viewer(view: View, p: [f64; 3]) -> [f64; 3] {
     let v = match view {
@@ -100,7 +93,12 @@ fn to_viewer(view: View, p: [f64; 3]) -> [f64; 3] {
 
 /// Smooth contours of one view: the zero set of n . v over `faces`, with `normals` the vertex
 /// normals the surface is shaded with.
-pub fn smooth_contours(positions: &[[f64; 3]], faces: &[[u32; 3]], normals: &[[f64; 3]], view: View) -> Polylines {
+pub fn smooth_contours(
+    positions: &[[f64; 3]],
+    faces: &[[u32; 3]],
+    normals: &[[f64; 3]],
+    view: View,
+) -> Polylines {
     let ndotv: Vec<f64> =
         positions.par_iter().zip(normals.par_iter()).map(|(p, n)| dot(*n, to_viewer(view, *p))).collect();
     zero_set(positions, faces, &ndotv, &[])
@@ -110,15 +108,7 @@ pub fn smooth_contours(positions: &[[f64; 3]], faces: &[[u32; 3]], normals: &[[f
 /// percentile of |k| over both principal curvatures, at most 5% of the bounding box's
 /// half-diagonal. A length in the mesh's units.
 pub fn feature_size(positions: &[[f64; 3]], c: &Curvature) -> f64 {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for p in positions {
-        for i in 0..3 {
-            lo[i] = lo[i].min(p[i]);
-            hi[i] = hi[i].max(p[i]);
-        }
-    }
-    let half_diagonal = 0.5 * dot(sub(hi, lo), sub(hi, lo)).sqrt();
+    let half_diagonal = 0.5 * Bounds::of(positions).diagonal();
     let cap = 0.05 * half_diagonal;
     let mut k: Vec<f64> = c.k1.iter().chain(&c.k2).map(|x| x.abs()).filter(|x| x.is_finite()).collect();
     if k.is_empty() {

@@ -5,6 +5,7 @@
 //! length of the part, a scan's noise makes short isolated pieces.
 
 use crate::mesh::union_find::{find, join};
+use crate::real::{norm, sub};
 
 /// The shortest crease piece a rendered outline draws when none is given, as a fraction of the
 /// mesh's bounding-box diagonal: it keeps a CAD part's creases (fandisk's are one piece 2.5
@@ -12,10 +13,6 @@ use crate::mesh::union_find::{find, join};
 pub const DEFAULT_MIN_CREASE_LENGTH: f64 = 0.02;
 
 use super::feature::FeatureEdges;
-
-fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
-    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
-}
 
 /// Drops the creases of `fe` whose connected piece is shorter than `min_length` (in the units
 /// of `positions`). Boundaries and non-manifold edges are kept whatever their length.
@@ -35,7 +32,7 @@ pub fn drop_short_creases(fe: &mut FeatureEdges, positions: &[[f64; 3]], min_len
     let roots: Vec<u32> = fe.crease.iter().map(|e| find(&mut parent, slot(e[0]))).collect();
     let mut length = vec![0.0f64; ids.len()];
     for (e, &r) in fe.crease.iter().zip(&roots) {
-        length[r as usize] += distance(positions[e[0] as usize], positions[e[1] as usize]);
+        length[r as usize] += norm(sub(positions[e[0] as usize], positions[e[1] as usize]));
     }
     let keep: Vec<bool> = roots.iter().map(|&r| length[r as usize] >= min_length).collect();
     let mut k = keep.iter();

@@ -56,12 +56,18 @@ pub fn zero_set(
     value: &[f64],
     conditions: &[&[f64]],
 ) -> Polylines {
-    let pieces: Vec<[End; 2]> = faces.par_iter().filter_map(|f| face_piece(positions, f, value, conditions)).collect();
+    let pieces: Vec<[End; 2]> =
+        faces.par_iter().filter_map(|f| face_piece(positions, f, value, conditions)).collect();
     chain_pieces(&pieces)
 }
 
 /// The piece of the zero set in one face, if any.
-fn face_piece(positions: &[[f64; 3]], f: &[u32; 3], value: &[f64], conditions: &[&[f64]]) -> Option<[End; 2]> {
+fn face_piece(
+    positions: &[[f64; 3]],
+    f: &[u32; 3],
+    value: &[f64],
+    conditions: &[&[f64]],
+) -> Option<[End; 2]> {
     let positive = f.map(|v| value[v as usize] > 0.0);
     if positive[0] == positive[1] && positive[1] == positive[2] {
         return None;
@@ -80,7 +86,9 @@ fn face_piece(positions: &[[f64; 3]], f: &[u32; 3], value: &[f64], conditions: &
         }
     }
     debug_assert_eq!(n, 2);
-    let at = |(lo, hi, t): (u32, u32, f64), field: &[f64]| field[lo as usize] + t * (field[hi as usize] - field[lo as usize]);
+    let at = |(lo, hi, t): (u32, u32, f64), field: &[f64]| {
+        field[lo as usize] + t * (field[hi as usize] - field[lo as usize])
+    };
     // the part of the piece (u in [0, 1] from end 0 to end 1) where every condition is > 0
     let (mut u0, mut u1) = (0.0f64, 1.0f64);
     for c in conditions {
@@ -98,8 +106,16 @@ fn face_piece(positions: &[[f64; 3]], f: &[u32; 3], value: &[f64], conditions: &
     let point = |(lo, hi, t): (u32, u32, f64)| lerp(positions[lo as usize], positions[hi as usize], t);
     let (p0, p1) = (point(ends[0]), point(ends[1]));
     let key = |(lo, hi, _): (u32, u32, f64)| (lo as u64) << 32 | hi as u64;
-    let a = if u0 > 0.0 { End { key: None, p: lerp(p0, p1, u0) } } else { End { key: Some(key(ends[0])), p: p0 } };
-    let b = if u1 < 1.0 { End { key: None, p: lerp(p0, p1, u1) } } else { End { key: Some(key(ends[1])), p: p1 } };
+    let a = if u0 > 0.0 {
+        End { key: None, p: lerp(p0, p1, u0) }
+    } else {
+        End { key: Some(key(ends[0])), p: p0 }
+    };
+    let b = if u1 < 1.0 {
+        End { key: None, p: lerp(p0, p1, u1) }
+    } else {
+        End { key: Some(key(ends[1])), p: p1 }
+    };
     Some([a, b])
 }
 
@@ -119,7 +135,8 @@ fn chain_pieces(pieces: &[[End; 2]]) -> Polylines {
             }
         }
     };
-    let pairs: Vec<[u32; 2]> = pieces.iter().map(|[a, b]| [id_of(a, &mut points), id_of(b, &mut points)]).collect();
+    let pairs: Vec<[u32; 2]> =
+        pieces.iter().map(|[a, b]| [id_of(a, &mut points), id_of(b, &mut points)]).collect();
     let (flat, starts) = chain_edges(&pairs);
     Polylines { points: flat.iter().map(|&i| points[i as usize]).collect(), starts }
 }

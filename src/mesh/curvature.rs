@@ -24,6 +24,7 @@ use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::mesh::buckets::{Buckets, RingCorner};
 use crate::mesh::normals::DEGENERATE_RELATIVE_AREA;
+use crate::mesh::Bounds;
 use crate::real::{Real, Vec3};
 
 /// Per vertex: the principal curvatures (k1 >= k2), their unit directions (d1, d2, with
@@ -126,10 +127,12 @@ fn project_derivative(u: DVec3, v: DVec3, c: [f64; 4], nu: DVec3, nv: DVec3) -> 
     let [a, b, cc, d] = c;
     [
         a * u1 * u1 * u1 + b * 3.0 * u1 * u1 * v1 + cc * 3.0 * u1 * v1 * v1 + d * v1 * v1 * v1,
-        a * u1 * u1 * u2 + b * (u1 * u1 * v2 + 2.0 * u2 * u1 * v1)
+        a * u1 * u1 * u2
+            + b * (u1 * u1 * v2 + 2.0 * u2 * u1 * v1)
             + cc * (u2 * v1 * v1 + 2.0 * u1 * v1 * v2)
             + d * v1 * v1 * v2,
-        a * u1 * u2 * u2 + b * (u2 * u2 * v1 + 2.0 * u1 * u2 * v2)
+        a * u1 * u2 * u2
+            + b * (u2 * u2 * v1 + 2.0 * u1 * u2 * v2)
             + cc * (u1 * v2 * v2 + 2.0 * u2 * v1 * v2)
             + d * v1 * v2 * v2,
         a * u2 * u2 * u2 + b * 3.0 * u2 * u2 * v2 + cc * 3.0 * u2 * v2 * v2 + d * v2 * v2 * v2,
@@ -224,8 +227,10 @@ pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Ca
             let n = normals[v];
             let u0 = any_tangent(n);
             let v0 = n.cross(u0);
-            let k = corner_mean(ring.at(v), &frames, |face, fr| project_tensor(fr.t, fr.b, face_ii[face], u0, v0))
-                .unwrap_or([0.0; 3]);
+            let k = corner_mean(ring.at(v), &frames, |face, fr| {
+                project_tensor(fr.t, fr.b, face_ii[face], u0, v0)
+            })
+            .unwrap_or([0.0; 3]);
             diagonalize(u0, v0, k)
         })
         .collect();
@@ -261,8 +266,10 @@ pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Ca
         .map(|v| {
             let (_, _, d1, d2) = principal[v];
             let s = scale * scale;
-            corner_mean(ring.at(v), &frames, |face, fr| project_derivative(fr.t, fr.b, face_dii[face], d1, d2))
-                .map_or([0.0; 4], |c| c.map(|x| x / s))
+            corner_mean(ring.at(v), &frames, |face, fr| {
+                project_derivative(fr.t, fr.b, face_dii[face], d1, d2)
+            })
+            .map_or([0.0; 4], |c| c.map(|x| x / s))
         })
         .collect();
 
@@ -312,18 +319,14 @@ fn corner_mean<const K: usize>(
 /// Positions in f64, centred on the bounding box and divided by its largest extent, and that
 /// extent (1 for a mesh of one point).
 fn normalized_positions<T: Real>(positions: &[Vec3<T>]) -> (Vec<DVec3>, f64) {
-    let mut lo = DVec3::splat(f64::INFINITY);
-    let mut hi = DVec3::splat(f64::NEG_INFINITY);
-    let p: Vec<DVec3> = positions.iter().map(|q| DVec3::new(q[0].to_f64(), q[1].to_f64(), q[2].to_f64())).collect();
-    for q in &p {
-        lo = lo.min(*q);
-        hi = hi.max(*q);
-    }
+    let b = Bounds::of(positions);
+    let (lo, hi) = (DVec3::from(b.min), DVec3::from(b.max));
+    let p = positions.par_iter().map(|q| DVec3::new(q[0].to_f64(), q[1].to_f64(), q[2].to_f64()));
     // halves first, so that extents near f64::MAX do not overflow
     let centre = lo * 0.5 + hi * 0.5;
     let extent = (hi * 0.5 - lo * 0.5).max_element() * 2.0;
     let scale = if extent > 0.0 && extent.is_finite() { extent } else { 1.0 };
-    (p.into_par_iter().map(|q| (q - centre) / scale).collect(), scale)
+    (p.map(|q| (q - centre) / scale).collect(), scale)
 }
 
 fn p_faces(p: &[DVec3], faces: &[[u32; 3]]) -> Vec<[DVec3; 3]> {
@@ -347,7 +350,11 @@ fn vertex_normals(n: usize, faces: &[[u32; 3]], corners: &[[DVec3; 3]]) -> Vec<D
     acc.into_par_iter()
         .map(|a| {
             let n = a.normalize_or_zero();
-            if n == DVec3::ZERO { DVec3::Z } else { n }
+            if n == DVec3::ZERO {
+                DVec3::Z
+            } else {
+                n
+            }
         })
         .collect()
 }
@@ -393,7 +400,9 @@ mod tests {
             let rel2 = median(c.k2.iter().map(|k| (k * r - 1.0).abs()).collect());
             assert!(rel1 < 0.02 && rel2 < 0.02, "r {r}: {rel1} {rel2}");
             // umbilic: no derivative to speak of
-            let d = median(c.derivatives.iter().map(|d| d.iter().map(|x| x.abs()).fold(0.0, f64::max) * r * r).collect());
+            let d = median(
+                c.derivatives.iter().map(|d| d.iter().map(|x| x.abs()).fold(0.0, f64::max) * r * r).collect(),
+            );
             assert!(d < 0.05, "derivative {d}");
         }
     }

@@ -93,6 +93,27 @@ impl Merged {
     }
 }
 
+/// New positions from `work` on the mesh, run on the welded mesh when `weld` and some vertices
+/// share a position (a merged vertex is pinned when any of its copies is), and given back to
+/// every copy; on the mesh as it is otherwise.
+pub fn on_welded<T: Real, E>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    pinned: Option<&[bool]>,
+    weld: bool,
+    work: impl FnOnce(&[Vec3<T>], &[[u32; 3]], Option<&[bool]>) -> Result<Vec<Vec3<T>>, E>,
+) -> Result<Vec<Vec3<T>>, E> {
+    if weld {
+        let merged = Merged::of(x0);
+        if merged.has_copies() {
+            let pinned = pinned.map(|p| merged.any(p));
+            let out = work(&merged.gather(x0), &merged.faces(faces), pinned.as_deref())?;
+            return Ok(merged.scatter(&out));
+        }
+    }
+    work(x0, faces, pinned)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

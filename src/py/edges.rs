@@ -1,6 +1,8 @@
 //! Python bindings for `crate::edges`. The public API, docstrings and result classes live in
 //! `python/toonmesh/edges.py`; these are the underscored entry points it calls.
 
+use std::sync::OnceLock;
+
 use numpy::ndarray::Array2;
 use numpy::{
     IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArray,
@@ -15,11 +17,11 @@ use super::mesh_input::{on_positions, MeshInput, PositionsRef};
 use super::runtime::{detached, detached_cancellable};
 use crate::edges::chains::chain_edges;
 use crate::edges::contours::ContourMesh;
-use crate::edges::zero_set::Polylines;
 use crate::edges::detect::{paper_gradient, threshold_mask};
 use crate::edges::feature::FeatureEdges;
 use crate::edges::outlines::Statics;
 use crate::edges::sobel::{sobel, Convention, Output};
+use crate::edges::zero_set::Polylines;
 use crate::edges::{find_feature_edges, EdgeIndex, View};
 use crate::error::{Error, Result};
 use crate::mesh::curvature::curvature;
@@ -100,9 +102,13 @@ fn _silhouette<'py>(
     direction: Option<&Bound<'py, PyAny>>,
     weld: &Bound<'py, PyAny>,
 ) -> PyResult<Pairs<'py>> {
-    let s = on_view(py, (vertices, faces), (eye, direction), weld, |p, f, view, weld, _| {
-        on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view))
-    })?;
+    let s = on_view(
+        py,
+        (vertices, faces),
+        (eye, direction),
+        weld,
+        |p, f, view, weld, _| on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)),
+    )?;
     Ok(pairs_to_numpy(py, s))
 }
 
@@ -204,7 +210,9 @@ fn _suggestive_contours<'py>(
     threshold: &Bound<'py, PyAny>,
 ) -> PyResult<PolylinesOut<'py>> {
     let threshold = read_threshold(threshold).map_err(to_py)?;
-    view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, cancel| m.suggestive(view, threshold, cancel))
+    view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, cancel| {
+        m.suggestive(view, threshold, cancel)
+    })
 }
 
 /// The once-per-mesh part of outline finding; immutable, so one index serves many threads.
@@ -212,8 +220,17 @@ fn _suggestive_contours<'py>(
 struct PyEdgeIndex {
     inner: EdgeIndex,
     statics: Statics,
-    /// What contours are traced on (normals; the curvature once suggestive contours are asked).
-    contours: ContourMesh,
+    /// The faces and the weld rule, and what contours are traced on (normals; the curvature once
+    /// suggestive contours are asked), built on the first contour asked for.
+    faces: Vec<[u32; 3]>,
+    weld: bool,
+    contours: OnceLock<ContourMesh>,
+}
+
+impl PyEdgeIndex {
+    fn contour_mesh(&self) -> &ContourMesh {
+        self.contours.get_or_init(|| ContourMesh::build(self.inner.positions(), &self.faces, self.weld))
+    }
 }
 
 #[pymethods]
@@ -227,10 +244,12 @@ impl PyEdgeIndex {
     ) -> PyResult<Self> {
         let weld = args::flag("weld", weld).map_err(to_py)?;
         let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
-        let (inner, contours) = mesh.run(py, faces, |p, f, _| {
-            on_positions!(p, v => Ok((EdgeIndex::build(v, f, weld)?, ContourMesh::build(v, f, weld))))
-        })?;
-        Ok(PyEdgeIndex { inner, statics: Default::default(), contours })
+        let (inner, faces) = mesh.run(
+            py,
+            faces,
+            |p, f, _| on_positions!(p, v => Ok((EdgeIndex::build(v, f, weld)?, f.to_vec()))),
+        )?;
+        Ok(PyEdgeIndex { inner, statics: Default::default(), faces, weld, contours: OnceLock::new() })
     }
 
     /// Smooth contours of one view, as flat points and line starts.
@@ -242,8 +261,7 @@ impl PyEdgeIndex {
         direction: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<PolylinesOut<'py>> {
         let view = view_of(eye, direction).map_err(to_py)?;
-        let m = &self.contours;
-        let lines = detached(py, || Ok(m.smooth(view)))?;
+        let lines = detached(py, || Ok(self.contour_mesh().smooth(view)))?;
         Ok(polylines_to_numpy(py, lines))
     }
 
@@ -258,8 +276,8 @@ impl PyEdgeIndex {
     ) -> PyResult<PolylinesOut<'py>> {
         let view = view_of(eye, direction).map_err(to_py)?;
         let threshold = read_threshold(threshold).map_err(to_py)?;
-        let m = &self.contours;
-        let lines = detached_cancellable(py, |cancel| m.suggestive(view, threshold, cancel))?;
+        let lines =
+            detached_cancellable(py, |cancel| self.contour_mesh().suggestive(view, threshold, cancel))?;
         Ok(polylines_to_numpy(py, lines))
     }
 

@@ -295,7 +295,9 @@ fn screen_lines(
         );
         for (kind, curves) in &outline.curves {
             for i in 0..curves.len() {
-                lines.extend(curves.line(i).windows(2).filter_map(|s| projector.project(s[0], s[1], *kind as usize)));
+                lines.extend(
+                    curves.line(i).windows(2).filter_map(|s| projector.project(s[0], s[1], *kind as usize)),
+                );
             }
         }
     }
@@ -304,13 +306,14 @@ fn screen_lines(
 
 #[test]
 fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
+    use super::effects::outlines::settings::ContourRule;
     use super::effects::outlines::settings::INK_KINDS;
     use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
-    use super::effects::outlines::settings::ContourRule;
     let faces = Outlines { crease_angle: 25.0, ..Outlines::new(true, false) };
     // smooth contours: lines through the faces, drawn by the same pass
     let smooth = Outlines { contours: ContourRule::Smooth, ..faces.clone() };
-    for (backend, outlines) in backends().into_iter().flat_map(|b| [(b, faces.clone()), (b, smooth.clone())]) {
+    for (backend, outlines) in backends().into_iter().flat_map(|b| [(b, faces.clone()), (b, smooth.clone())])
+    {
         let r = open(backend).unwrap();
         let scene = two_spheres(&r, outlines.clone());
         let frame = FrameSpec {
@@ -348,7 +351,8 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
 fn image_edges_match_the_cpu_rule_on_the_same_buffers_on_both_backends() {
     use super::effects::outlines::edges_reference::edge_mask;
     use super::effects::outlines::settings::ImageRule;
-    let outlines = Outlines { depth_threshold: 0.05, image_rule: ImageRule::Paper, ..Outlines::new(false, true) };
+    let outlines =
+        Outlines { depth_threshold: 0.05, image_rule: ImageRule::Paper, ..Outlines::new(false, true) };
     for backend in backends() {
         let r = open(backend).unwrap();
         let scene = two_spheres(&r, outlines.clone());
@@ -380,7 +384,8 @@ fn image_lines_match_the_cpu_discontinuity_rule_on_both_backends() {
     use super::uniforms::footprint;
     for (width, flat) in [(1.5f32, false), (4.0, true)] {
         let mut outlines = Outlines::new(false, true);
-        outlines.styles[IMAGE_KIND] = Some(super::effects::outlines::settings::LineStyle { color: [0.0; 3], width });
+        outlines.styles[IMAGE_KIND] =
+            Some(super::effects::outlines::settings::LineStyle { color: [0.0; 3], width });
         for backend in backends() {
             let r = open(backend).unwrap();
             let mut scene = two_spheres(&r, outlines.clone());
@@ -419,7 +424,10 @@ fn image_lines_match_the_cpu_discontinuity_rule_on_both_backends() {
             let off = got.iter().zip(&want).filter(|(a, b)| (*a - *b).abs() > 0.25).count() as f64 / n;
             let inked = want.iter().filter(|&&c| c > 0.5).count();
             assert!(inked > 300, "{backend:?}: the reference inks {inked} pixels");
-            assert!(mean < 0.01 && off < 0.005, "{backend:?} width {width}: mean difference {mean}, {off} of pixels off by > 0.25");
+            assert!(
+                mean < 0.01 && off < 0.005,
+                "{backend:?} width {width}: mean difference {mean}, {off} of pixels off by > 0.25"
+            );
         }
     }
 }

@@ -292,7 +292,10 @@ mod tests {
     fn outlines_run_only_when_asked_for_and_drawable() {
         let both = || scene(Some(Outlines::new(true, true)), false);
         let f = FrameSpec::default();
-        assert_eq!(names(both(), f), ["silhouettes", "shade", "edge_bits", "edges", "lines", "readback_color"]);
+        assert_eq!(
+            names(both(), f),
+            ["silhouettes", "shade", "edge_bits", "edges", "lines", "readback_color"]
+        );
         // image edges need normals, produced but not read back
         let p = plan(&checked(scene(Some(Outlines::new(false, true)), false), f));
         assert_eq!(p.shape.geometry, Some(GeometryLayout::NormalDepth));

@@ -23,7 +23,7 @@ use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::huge_pages;
 use crate::mesh::reorder::{self, Reordering};
-use crate::mesh::weld::Merged;
+use crate::mesh::weld::on_welded;
 use crate::mesh::Adjacency;
 use crate::real::{self, Real, Vec3};
 use operator::{from_f64, par_rows_gathering, Operator};
@@ -188,17 +188,9 @@ fn smooth_welded_or_not<T: Real>(
     cancel: &Cancel,
     scale: Option<range::Pow2>,
 ) -> Result<Vec<Vec3<T>>> {
-    if plan.weld {
-        let merged = Merged::of(x0);
-        if merged.has_copies() {
-            let pinned = pinned.map(|p| merged.any(p));
-            let welded = merged.gather(x0);
-            let out =
-                smooth_any_order(&welded, &merged.faces(faces), plan, pinned.as_deref(), cancel, scale)?;
-            return Ok(merged.scatter(&out));
-        }
-    }
-    smooth_any_order(x0, faces, plan, pinned, cancel, scale)
+    on_welded(x0, faces, pinned, plan.weld, |x, f, pinned| {
+        smooth_any_order(x, f, plan, pinned, cancel, scale)
+    })
 }
 
 /// `x0` smoothed in the vertex order that suits it best: its vertices are its vertices, welded

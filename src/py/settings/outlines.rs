@@ -177,7 +177,8 @@ impl PyOutlines {
             }
             o.suggestive_threshold =
                 opt_number("suggestive_threshold", suggestive_threshold)?.unwrap_or(o.suggestive_threshold);
-            o.min_crease_length = opt_number("min_crease_length", min_crease_length)?.unwrap_or(o.min_crease_length);
+            o.min_crease_length =
+                opt_number("min_crease_length", min_crease_length)?.unwrap_or(o.min_crease_length);
             if let Some(r) = image_rule {
                 o.image_rule = ImageRule::parse("image_rule", &text("image_rule", r)?)?;
             }

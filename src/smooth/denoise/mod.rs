@@ -19,7 +19,7 @@ use rayon::prelude::*;
 
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
-use crate::mesh::weld::Merged;
+use crate::mesh::weld::on_welded;
 use crate::real::{Real, Vec3};
 use crate::smooth::range;
 pub use options::{resolve, Args, Filter, Options};
@@ -62,16 +62,7 @@ fn welded_or_not<T: Real>(
     pinned: Option<&[bool]>,
     cancel: &Cancel,
 ) -> Result<Vec<Vec3<T>>> {
-    if opts.weld {
-        let merged = Merged::of(x0);
-        if merged.has_copies() {
-            let pinned = pinned.map(|p| merged.any(p));
-            let out =
-                denoise_mesh(&merged.gather(x0), &merged.faces(faces), opts, pinned.as_deref(), cancel)?;
-            return Ok(merged.scatter(&out));
-        }
-    }
-    denoise_mesh(x0, faces, opts, pinned, cancel)
+    on_welded(x0, faces, pinned, opts.weld, |x, f, pinned| denoise_mesh(x, f, opts, pinned, cancel))
 }
 
 /// The mean length of the faces' edges (each face counts its three). Summed in fixed chunks, in

@@ -112,13 +112,15 @@ impl Discontinuity {
             for dx in -r..=r {
                 let q = (p.0 + dx, p.1 + dy);
                 // the boundary with the right neighbour: x = q.x + 1, y in [q.y, q.y + 1]
-                let right = ((c.0 - (q.0 + 1) as f32).abs(), ((c.1 - (q.1 as f32 + 0.5)).abs() - 0.5).max(0.0));
+                let right =
+                    ((c.0 - (q.0 + 1) as f32).abs(), ((c.1 - (q.1 as f32 + 0.5)).abs() - 0.5).max(0.0));
                 let dist = right.0.hypot(right.1);
                 if dist < best && self.is_edge(buf, q, (1, 0)) {
                     best = dist;
                 }
                 // the boundary with the neighbour below: y = q.y + 1, x in [q.x, q.x + 1]
-                let below = (((c.0 - (q.0 as f32 + 0.5)).abs() - 0.5).max(0.0), (c.1 - (q.1 + 1) as f32).abs());
+                let below =
+                    (((c.0 - (q.0 as f32 + 0.5)).abs() - 0.5).max(0.0), (c.1 - (q.1 + 1) as f32).abs());
                 let dist = below.0.hypot(below.1);
                 if dist < best && self.is_edge(buf, q, (0, 1)) {
                     best = dist;
@@ -130,6 +132,9 @@ impl Discontinuity {
 
     /// Every pixel's coverage, row-major.
     pub fn coverage_image(&self, buf: &Buffers<'_>) -> Vec<f32> {
-        (0..buf.height).flat_map(|y| (0..buf.width).map(move |x| (x, y))).map(|p| self.coverage(buf, p)).collect()
+        (0..buf.height)
+            .flat_map(|y| (0..buf.width).map(move |x| (x, y)))
+            .map(|p| self.coverage(buf, p))
+            .collect()
     }
 }

@@ -13,10 +13,10 @@ use crate::cancel::Cancel;
 use crate::edges::contours::ContourMesh;
 use crate::edges::outlines::{LineKind, Outline, Statics};
 use crate::edges::short_creases::drop_short_creases;
-use crate::mesh::Bounds;
 use crate::edges::zero_set::Polylines;
 use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
+use crate::mesh::Bounds;
 use crate::render::gpu_mesh::{GpuMesh, HostMesh};
 use crate::render::graph::effect::{HostInputs, HostStep};
 use crate::render::graph::report::FrameReport;
@@ -57,8 +57,9 @@ impl MeshLines {
     }
 
     fn contour_mesh(&self, host: &HostMesh, weld: bool) -> &ContourMesh {
-        self.contours[weld as usize]
-            .get_or_init(|| crate::parallel::install(|| ContourMesh::build(&host.positions, &host.faces, weld)))
+        self.contours[weld as usize].get_or_init(|| {
+            crate::parallel::install(|| ContourMesh::build(&host.positions, &host.faces, weld))
+        })
     }
 
     /// The lines of one view (`view` in the mesh's stored coordinates): silhouettes (face edges
@@ -167,7 +168,11 @@ impl HostStep for Silhouettes {
             };
             let edges = &outline.edges;
             lines.instances.extend(
-                edges.edges.iter().zip(&edges.kinds).map(|(e, k)| instance(p[e[0] as usize], p[e[1] as usize], *k)),
+                edges
+                    .edges
+                    .iter()
+                    .zip(&edges.kinds)
+                    .map(|(e, k)| instance(p[e[0] as usize], p[e[1] as usize], *k)),
             );
             for (kind, curves) in &outline.curves {
                 for i in 0..curves.len() {

@@ -5,8 +5,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
 use crate::edges::contours::{check_threshold, DEFAULT_SUGGESTIVE_THRESHOLD};
+use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
 use crate::edges::outlines::LineKind;
 use crate::edges::short_creases::DEFAULT_MIN_CREASE_LENGTH;
 use crate::edges::DEFAULT_CREASE_ANGLE;
@@ -220,7 +220,10 @@ impl Outlines {
             ("depth_offset", self.depth_offset as f64, " pixels"),
         ] {
             if !(t.is_finite() && t >= 0.0) {
-                return Err(Error::invalid(field(prefix, name), format!("must be finite and >= 0{unit}, got {t}")));
+                return Err(Error::invalid(
+                    field(prefix, name),
+                    format!("must be finite and >= 0{unit}, got {t}"),
+                ));
             }
         }
         check_threshold(&field(prefix, "suggestive_threshold"), self.suggestive_threshold)?;

@@ -274,7 +274,8 @@ impl HostStep for VisibleLines {
             let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
             let positions = &rec.host.positions;
             let visible = |points: &[[f64; 3]], kind: usize, out: &mut Vec<Polyline>| {
-                let screen: Vec<_> = points.windows(2).filter_map(|s| projector.project(s[0], s[1], kind)).collect();
+                let screen: Vec<_> =
+                    points.windows(2).filter_map(|s| projector.project(s[0], s[1], kind)).collect();
                 out.extend(
                     visible_runs(&screen, cx.cam.orthographic, &img, rule)
                         .into_iter()
@@ -286,8 +287,13 @@ impl HostStep for VisibleLines {
             kinds.sort_unstable();
             kinds.dedup();
             for kind in kinds {
-                let of_kind: Vec<[u32; 2]> =
-                    edges.edges.iter().zip(&edges.kinds).filter(|(_, k)| **k == kind).map(|(e, _)| *e).collect();
+                let of_kind: Vec<[u32; 2]> = edges
+                    .edges
+                    .iter()
+                    .zip(&edges.kinds)
+                    .filter(|(_, k)| **k == kind)
+                    .map(|(e, _)| *e)
+                    .collect();
                 let (flat, starts) = chain_edges(&of_kind);
                 for w in starts.windows(2) {
                     let points: Vec<[f64; 3]> =
