@@ -40,6 +40,32 @@ def rel_err(a: np.ndarray, b: np.ndarray, V: np.ndarray) -> float:
     return float(np.abs(np.asarray(a, np.float64) - np.asarray(b, np.float64)).max() / diagonal(V))
 
 
+def ticks_during(call: Any) -> Tuple[float, int]:
+    """Runs `call` while another Python thread ticks every millisecond: the call's seconds and
+    how many ticks fell inside it (none if the call held the GIL throughout)."""
+    import threading
+    import time
+
+    ticks = []
+    stop = threading.Event()
+
+    def ticker() -> None:
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+
+    t = threading.Thread(target=ticker)
+    t.start()
+    try:
+        t0 = time.perf_counter()
+        call()
+        t1 = time.perf_counter()
+    finally:
+        stop.set()
+        t.join()
+    return t1 - t0, len([x for x in ticks if t0 < x < t1])
+
+
 def long_tests() -> bool:
     """TOONMESH_LONG_TESTS=1 asks for the long soak and many property examples; CI runs a
     bounded, deterministic number."""

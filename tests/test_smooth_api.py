@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import os
 import sys
-import threading
 import time
 
 import numpy as np
@@ -13,7 +12,7 @@ import pytest
 import toonmesh as tm
 from toonmesh import _core
 
-from conftest import need
+from conftest import need, ticks_during
 
 
 @pytest.fixture
@@ -179,26 +178,9 @@ def test_works_in_a_forked_child_after_the_pool_started(mesh):
 
 def test_releases_the_gil():
     V, F = _core.icosphere(6, 0.05, 4)
-    ticks = []
-    stop = threading.Event()
-
-    def ticker():
-        while not stop.is_set():
-            ticks.append(time.perf_counter())
-            time.sleep(0.001)
-
-    t = threading.Thread(target=ticker)
-    t.start()
-    try:
-        t0 = time.perf_counter()
-        tm.smooth.laplacian(V, F, iterations=30, weights="cotangent")
-        t1 = time.perf_counter()
-    finally:
-        stop.set()
-        t.join()
-    during = [x for x in ticks if t0 < x < t1]
+    seconds, during = ticks_during(lambda: tm.smooth.laplacian(V, F, iterations=30, weights="cotangent"))
     # With the GIL held the ticker could not run at all while smoothing.
-    assert t1 - t0 > 0.02 and len(during) >= 3
+    assert seconds > 0.02 and during >= 3
 
 
 @pytest.mark.parametrize(

@@ -4,8 +4,6 @@ errors that name the argument, the same bits for any thread count, the GIL relea
 
 from __future__ import annotations
 
-import threading
-import time
 
 import numpy as np
 import pytest
@@ -14,6 +12,7 @@ import toonmesh as tm
 from toonmesh import _core
 from toonmesh.bench import parts
 
+from conftest import ticks_during
 from test_smooth_hard_cases import HARD
 
 FILTERS = {"bilateral": tm.smooth.bilateral, "guided": tm.smooth.guided}
@@ -167,21 +166,5 @@ def test_same_bits_for_any_thread_count():
 
 def test_releases_the_gil():
     V, F = _core.icosphere(6, 0.05, 4)
-    ticks = []
-    stop = threading.Event()
-
-    def ticker():
-        while not stop.is_set():
-            ticks.append(time.perf_counter())
-            time.sleep(0.001)
-
-    t = threading.Thread(target=ticker)
-    t.start()
-    try:
-        t0 = time.perf_counter()
-        tm.smooth.guided(V, F, iterations=10)
-        t1 = time.perf_counter()
-    finally:
-        stop.set()
-        t.join()
-    assert t1 - t0 > 0.02 and len([x for x in ticks if t0 < x < t1]) >= 3
+    seconds, during = ticks_during(lambda: tm.smooth.guided(V, F, iterations=10))
+    assert seconds > 0.02 and during >= 3
