@@ -291,3 +291,10 @@ def test_image_lines_honour_width_and_scale(backend, scale):
         paper = tm.render(V * scale, F, width=300, height=300, backend=backend, outputs=("outline", "depth"),
                           outlines=tm.Outlines("image", image_rule="paper"))
         assert (paper.outline[np.isfinite(paper.depth)] > 0.5).mean() > 0.9  # why the default changed
+
+
+def test_the_paper_image_rule_runs_sobel_alone():
+    V, F = _core.icosphere(2, 0.0, 0)
+    for rule, passes in (("discontinuity", ["edge_bits", "edges"]), ("paper", ["edges"])):
+        res = tm.render(V, F, width=32, height=32, outlines=tm.Outlines("both", image_rule=rule))
+        assert res.passes == ["silhouettes", "shade", *passes, "lines", "readback_color"]

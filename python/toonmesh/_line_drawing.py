@@ -30,7 +30,7 @@ def view_lines(
     stroke_width: float = 1.5,
     hidden: bool = False,
     backend: Optional[str] = None,
-    contours: str = "faces",
+    contours: Optional[str] = None,
     suggestive: bool = False,
 ) -> Dict[str, Any]:
     """The visible (and, with ``hidden``, every) outline polyline of one view, and the mesh's

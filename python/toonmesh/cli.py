@@ -225,9 +225,9 @@ def cmd_smooth(args: argparse.Namespace) -> int:
 
 
 def _add_contour_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--contours", choices=tuple(_core.CONTOUR_RULES), default="faces",
+    p.add_argument("--contours", choices=tuple(_core.CONTOUR_RULES), default=tm.Outlines().contours,
                    help="silhouettes on face edges (Kang et al.) or the smooth contour through the faces "
-                        "(clean on scans); default: faces")
+                        "(clean on scans); default: %(default)s")
     p.add_argument("--suggestive", action="store_true", help="add suggestive contours (DeCarlo et al.)")
 
 
