@@ -41,6 +41,8 @@ pub use graph::report::{FrameReport, Polyline};
 pub use renderer::{Image, ImageMut, OutputBuffers, RenderOutput, Renderer};
 
 #[cfg(test)]
+mod albedo_gpu_tests;
+#[cfg(test)]
 mod gpu_tests;
 #[cfg(test)]
 mod layout_tests;
