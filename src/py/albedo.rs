@@ -136,7 +136,7 @@ pub fn albedo(
     sampling.check()?;
     let colors = match (given(vertex_colors), given(face_colors)) {
         (Some(_), Some(_)) => {
-            return Err(Error::invalid("face_colors", "give vertex_colors or face_colors, not both"))
+            return Err(Error::invalid("vertex_colors, face_colors", "give one of them, not both"))
         }
         (Some(c), None) => Some(Colors::Vertex(colors("vertex_colors", c, "(N, 3) or (N, 4)")?)),
         (None, Some(c)) => Some(Colors::Face(colors("face_colors", c, "(M, 3) or (M, 4)")?)),
