@@ -45,7 +45,7 @@ impl Pass for Geometry {
                         constants: &[],
                         more: &[],
                         cull,
-                        albedo: false,
+                        albedo: None,
                     },
                 )
             })

@@ -34,8 +34,8 @@ struct VsOutAlbedo {
     @location(13) specular_back: vec3<f32>,
 };
 
-@vertex
-fn vs_albedo(v: VsIn, a: AlbedoIn) -> VsOutAlbedo {
+// The vertex stage of a coloured mesh, everything `VsOut` has.
+fn albedo_vertex(v: VsIn, a: AlbedoIn) -> VsOutAlbedo {
     var specular = VsOut();
     if (PER_VERTEX) {
         albedo = vec3<f32>(0.0);
@@ -48,6 +48,32 @@ fn vs_albedo(v: VsIn, a: AlbedoIn) -> VsOutAlbedo {
         o.color_front - specular.color_front, o.color_back - specular.color_back,
         o.object_pos, o.object_normal, a.color, a.uv, specular.color_front, specular.color_back,
     );
+}
+
+@vertex
+fn vs_albedo_anchored(v: VsIn, a: AlbedoIn) -> VsOutAlbedo {
+    return albedo_vertex(v, a);
+}
+
+// What a material that needs no anchors (`ShadingVariant::anchored`) reads: four varyings
+// instead of ten, since a CPU rasteriser sets up each one for every triangle.
+struct VsOutAlbedoLean {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) view_pos: vec3<f32>,
+    @location(1) view_normal: vec3<f32>,
+    @location(10) color: vec4<f32>,
+    @location(11) uv: vec2<f32>,
+};
+
+@vertex
+fn vs_albedo(v: VsIn, a: AlbedoIn) -> VsOutAlbedoLean {
+    let o = albedo_vertex(v, a);
+    return VsOutAlbedoLean(o.clip, o.view_pos, o.view_normal, o.color, o.uv);
+}
+
+fn unlean(v: VsOutAlbedoLean) -> VsOutAlbedo {
+    let o = vec3<f32>(0.0);
+    return VsOutAlbedo(v.clip, v.view_pos, v.view_normal, o, o, o, o, v.color, v.uv, o, o);
 }
 
 // The shaded colour of a coloured mesh's pixel; alpha: the albedo's, for the cutoff.
@@ -75,18 +101,41 @@ fn albedo_cut(c: vec4<f32>) -> vec4<f32> {
 }
 
 @fragment
-fn fs_color_albedo(v: VsOutAlbedo, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
-    return albedo_cut(albedo_shaded(v, front_facing));
+fn fs_color_albedo(v: VsOutAlbedoLean, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    return albedo_cut(albedo_shaded(unlean(v), front_facing));
 }
 
 @fragment
-fn fs_color_normal_depth_albedo(v: VsOutAlbedo, @builtin(front_facing) front_facing: bool) -> ColorNormalDepth {
+fn fs_color_albedo_anchored(v: VsOutAlbedo, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    return albedo_cut(albedo_shaded(v, front_facing));
+}
+
+fn albedo_normal_depth(v: VsOutAlbedo, front_facing: bool) -> ColorNormalDepth {
     let c = albedo_cut(albedo_shaded(v, front_facing));
     return ColorNormalDepth(c, normal_depth_bits(Varyings(v.clip, v.view_pos, v.view_normal), front_facing));
 }
 
 @fragment
-fn fs_color_depth_albedo(v: VsOutAlbedo, @builtin(front_facing) front_facing: bool) -> ColorDepth {
+fn fs_color_normal_depth_albedo(v: VsOutAlbedoLean, @builtin(front_facing) front_facing: bool) -> ColorNormalDepth {
+    return albedo_normal_depth(unlean(v), front_facing);
+}
+
+@fragment
+fn fs_color_normal_depth_albedo_anchored(v: VsOutAlbedo, @builtin(front_facing) front_facing: bool) -> ColorNormalDepth {
+    return albedo_normal_depth(v, front_facing);
+}
+
+fn albedo_depth(v: VsOutAlbedo, front_facing: bool) -> ColorDepth {
     let c = albedo_cut(albedo_shaded(v, front_facing));
     return ColorDepth(c, depth_bits(Varyings(v.clip, v.view_pos, v.view_normal)));
+}
+
+@fragment
+fn fs_color_depth_albedo(v: VsOutAlbedoLean, @builtin(front_facing) front_facing: bool) -> ColorDepth {
+    return albedo_depth(unlean(v), front_facing);
+}
+
+@fragment
+fn fs_color_depth_albedo_anchored(v: VsOutAlbedo, @builtin(front_facing) front_facing: bool) -> ColorDepth {
+    return albedo_depth(v, front_facing);
 }
