@@ -28,6 +28,7 @@ def main() -> None:
     V, F = tm.shapes.icosphere(5)
     cells = np.indices((16, 32)).sum(0) % 2
     checker = np.where(cells[..., None] == 1, [230, 120, 40], [250, 235, 200]).astype(np.uint8)
+    checker = np.kron(checker, np.ones((16, 16, 1), np.uint8))  # 16 texels a cell: crisp cell borders
     textured = tm.render([tm.Mesh(V, F, uv=sphere_uv(V), texture=checker)], material=tm.Material.hatching(),
                          outlines="mesh", **kw).color
     Vi, Fi = tm.shapes.icosphere(1)
