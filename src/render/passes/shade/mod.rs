@@ -17,7 +17,11 @@ use crate::render::pipelines::{target, PipelineKey};
 
 use variant::ShadingVariant;
 
-pub const WGSL: &str = concat!(include_str!("shade.wgsl"), include_str!("albedo.wgsl"));
+pub const WGSL: &str = concat!(
+    include_str!("shade.wgsl"),
+    include_str!("../../shaders/albedo.wgsl"),
+    include_str!("albedo.wgsl")
+);
 
 #[derive(Debug, Clone)]
 pub struct Shade {
@@ -156,7 +160,7 @@ impl Pass for Shade {
         if let Some(h) = &self.hook {
             pass.set_bind_group(2, &h.bind_group(f), &[]);
         }
-        f.draw_meshes_with(&mut pass, |d| self.pipeline(f, d), true);
+        f.draw_meshes_with(&mut pass, |d| self.pipeline(f, d), |_| true);
         Ok(())
     }
 }
