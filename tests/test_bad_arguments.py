@@ -1544,6 +1544,7 @@ RENDER_CASES: List[Case] = [
             Param("depth_jump", Number(0.0, F32_MAX), none=OK),
             Param("taper", Number(0.0, 4096.0), none=OK),
             Param("width_by_depth", Flag(), none=OK),
+            Param("join_kinds", Flag(), none=OK),
             Param("crease_angle", Number(0.0, 180.0), none=OK),
             Param("weld", Flag(), none=OK),
             Param("normal_threshold", Number(0.0, F32_MAX), none=OK),

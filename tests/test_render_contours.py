@@ -220,3 +220,18 @@ def test_strokes_taper_at_their_ends_and_widen_nearer(backend):
     left, right = slice(0, SIZE // 4), slice(int(SIZE * 0.7), SIZE)  # only the near, only the far sphere
     assert deep[:, left].sum() > 1.2 * flat[:, left].sum()
     assert deep[:, right].sum() < 0.9 * flat[:, right].sum()
+
+
+def test_strokes_of_different_kinds_join_when_asked():
+    from toonmesh.data import bunny
+
+    V, F = bunny()
+    kw = dict(outputs=("lines",), width=SIZE, height=SIZE)
+    apart = tm.render(V, F, outlines=tm.Outlines("mesh"), **kw)
+    joined = tm.render(V, F, outlines=tm.Outlines("mesh", join_kinds=True), **kw)
+    assert tm.Outlines().join_kinds is False and tm.Outlines(join_kinds=True).join_kinds is True
+    length = lambda r: sum(np.linalg.norm(np.diff(l, axis=0), axis=1).sum() for l in r.lines)  # noqa: E731
+    assert len(joined.lines) < 0.85 * len(apart.lines)
+    # the same ink, in fewer strokes: joins add at most a line's width per join
+    assert length(apart) <= length(joined) <= length(apart) + 1.5 * (len(apart.lines) - len(joined.lines))
+    assert set(joined.line_kinds) <= set(apart.line_kinds)

@@ -338,6 +338,7 @@ class Outlines:
         depth_jump: Optional[float] = ...,
         taper: Optional[float] = ...,
         width_by_depth: Optional[bool] = ...,
+        join_kinds: Optional[bool] = ...,
     ) -> Outlines: ...
     kind: Final[str]
     styles: Final[Dict[str, Optional[LineStyle]]]
@@ -354,6 +355,7 @@ class Outlines:
     depth_jump: Final[float]
     taper: Final[float]
     width_by_depth: Final[bool]
+    join_kinds: Final[bool]
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 

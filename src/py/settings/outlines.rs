@@ -90,7 +90,11 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// length on screen, down to a fifth of their width (default 0: no taper; closed loops have no
 /// ends). width_by_depth: scale their width by the depth of the scene's centre over the line's
 /// depth, between 0.25x and 4x (default False). Both shape the ink (the colour and "outline"
-/// outputs); ``RenderResult.lines`` and the SVG keep the centre lines, drawn at the kind's width. suggestive_threshold: the derivative test of suggestive contours, relative
+/// outputs); ``RenderResult.lines`` and the SVG keep the centre lines, drawn at the kind's width.
+/// join_kinds: visible strokes that meet end to end within a line's width are joined into one
+/// stroke even when their kinds differ (a silhouette running on into a crease), taking the kind
+/// of their longest part, in ``RenderResult.lines`` and the SVG (default False: strokes of one
+/// kind only). suggestive_threshold: the derivative test of suggestive contours, relative
 /// to the mesh's feature size (default 0.01). min_crease_length: crease pieces (creases joined
 /// at their vertices, ridges and valleys together) shorter than this fraction of the mesh's
 /// bounding-box diagonal are not drawn, so that a scan's noise does not scatter crease dashes
@@ -127,7 +131,8 @@ impl PyOutlines {
                         image = None, crease_angle = None, weld = None, normal_threshold = None,
                         depth_threshold = None, depth_offset = None, contours = None,
                         suggestive_threshold = None, min_crease_length = None, image_rule = None,
-                        normal_angle = None, depth_jump = None, taper = None, width_by_depth = None))]
+                        normal_angle = None, depth_jump = None, taper = None, width_by_depth = None,
+                        join_kinds = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         kind: Obj<'_, '_>,
@@ -154,6 +159,7 @@ impl PyOutlines {
         depth_jump: Obj<'_, '_>,
         taper: Obj<'_, '_>,
         width_by_depth: Obj<'_, '_>,
+        join_kinds: Obj<'_, '_>,
     ) -> PyResult<Self> {
         (|| {
             let (mesh, img) = match kind {
@@ -196,6 +202,7 @@ impl PyOutlines {
             o.depth_jump = opt_number("depth_jump", depth_jump)?.map_or(o.depth_jump, |t| t as f32);
             o.stroke_width.taper = opt_number("taper", taper)?.unwrap_or(o.stroke_width.taper);
             o.stroke_width.by_depth = flag_or("width_by_depth", width_by_depth, o.stroke_width.by_depth)?;
+            o.join_kinds = flag_or("join_kinds", join_kinds, o.join_kinds)?;
             o.validate("")?;
             Ok(PyOutlines { inner: o })
         })()
@@ -240,6 +247,7 @@ getters!(PyOutlines {
     depth_jump -> f32 = |o| o.depth_jump;
     taper -> f64 = |o| o.stroke_width.taper;
     width_by_depth -> bool = |o| o.stroke_width.by_depth;
+    join_kinds -> bool = |o| o.join_kinds;
 });
 
 /// The `outlines=` argument: None, "mesh", "image", "both" or an Outlines.

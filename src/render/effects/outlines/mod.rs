@@ -162,6 +162,7 @@ impl FrameEffect for OutlinesEffect {
                 steps.host_after.push(Box::new(visibility::VisibleLines {
                     depth_offset: outlines.depth_offset,
                     gaps: strokes::gaps(outlines),
+                    join_kinds: outlines.join_kinds,
                     view,
                 }));
             }

@@ -153,6 +153,10 @@ pub struct Outlines {
     /// Taper and width by depth of mesh-space lines.
     #[serde(default)]
     pub stroke_width: StrokeWidth,
+    /// Join visible strokes of different kinds that meet end to end (a silhouette running on
+    /// into a crease) into one stroke, of the kind of its longest part (`strokes::join_runs`).
+    #[serde(default)]
+    pub join_kinds: bool,
 }
 
 impl Default for Outlines {
@@ -182,6 +186,7 @@ impl Outlines {
             depth_threshold: DEFAULT_DEPTH_THRESHOLD as f32,
             depth_offset: DEFAULT_DEPTH_OFFSET,
             stroke_width: StrokeWidth::default(),
+            join_kinds: false,
         }
     }
 

@@ -271,6 +271,8 @@ pub struct VisibleLines {
     pub depth_offset: f32,
     /// Runs of one kind whose ends are this close (pixels) are joined (`strokes::join_runs`).
     pub gaps: [f64; INK_KINDS],
+    /// Join strokes of different kinds too (`Outlines::join_kinds`).
+    pub join_kinds: bool,
     pub view: ViewSlot,
 }
 
@@ -304,7 +306,8 @@ impl HostStep for VisibleLines {
                 );
             }
             let gap = |k: usize| self.gaps[k];
-            out.extend(drop_covered(join_runs(runs, true, gap), gap));
+            let strokes = drop_covered(join_runs(runs, true, gap), gap);
+            out.extend(if self.join_kinds { join_runs(strokes, false, gap) } else { strokes });
         }
         report.lines = Some(out);
         Ok(())
