@@ -28,7 +28,7 @@ LAYERS: List[List[str]] = [
     [
         "render::color", "render::albedo", "render::albedo::*", "render::block", "render::wgsl", "render::scene", "render::scene::*",
         "render::effects::surface", "render::effects::surface_effect", "render::effects::hatching",
-        "render::effects::dither", "render::effects::*::settings",
+        "render::effects::dither", "render::effects::*::settings", "render::effects::outlines::stroke_width",
     ],
     # the device and the meshes on it
     ["render::device", "render::gpu_albedo", "render::gpu_mesh", "render::mesh_record", "render::culling", "render::reference",

@@ -1534,7 +1534,8 @@ RENDER_CASES: List[Case] = [
             Param("width", Number(0.0, 64.0, open_lo=True), none=OK),
             *[
                 Param(k, STYLE, none=OK)
-                for k in ("silhouette", "boundary", "crease", "ridge", "valley", "nonmanifold", "suggestive", "image")
+                for k in ("silhouette", "boundary", "crease", "ridge", "valley", "nonmanifold", "suggestive", "material",
+                          "image")
             ],
             Param("contours", Name(("auto", "faces", "smooth")), none=OK),
             Param("suggestive_threshold", Number(0.0, math.inf, open_hi=True), none=OK),

@@ -235,3 +235,29 @@ def test_strokes_of_different_kinds_join_when_asked():
     # the same ink, in fewer strokes: joins add at most a line's width per join
     assert length(apart) <= length(joined) <= length(apart) + 1.5 * (len(apart.lines) - len(joined.lines))
     assert set(joined.line_kinds) <= set(apart.line_kinds)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_material_borders_between_scene_items(backend):
+    # a square in two halves, each a mesh with its own material: where they meet is a material
+    # border, the rest of their rim stays boundary
+    V, F = tm.shapes.grid(9)  # 8 x 8 squares: x = 0.5 is a row of edges
+    centres = V[F].mean(axis=1)
+    left, right = F[centres[:, 0] < 0.5], F[centres[:, 0] >= 0.5]
+    kw = dict(outputs=("color", "lines"), width=SIZE, height=SIZE, backend=backend,
+              camera=tm.Camera.look_at(eye=(0.5, 0.5, 2.0), target=(0.5, 0.5, 0.0)))
+    two = [tm.Mesh(V, left, material=tm.Material.bands("#d04040")), tm.Mesh(V, right, material=tm.Material.bands("#4040d0"))]
+    r = tm.render(two, outlines=tm.Outlines("mesh", material="#00ff00", width=3.0), **kw)
+    border = [l for l, k in zip(r.lines, r.line_kinds) if k == "material"]
+    assert len(border) == 1 and "boundary" in r.line_kinds
+    x = border[0][:, 0]
+    assert np.ptp(x) < 1.0 and np.ptp(border[0][:, 1]) > 0.5 * SIZE  # the vertical line at x = 0.5
+    c = r.color.astype(int)
+    green = (c[..., 1] > 200) & (c[..., 0] < 60) & (c[..., 2] < 60)
+    assert green.sum() > 2 * 0.5 * SIZE
+    # one mesh: no borders; borders off: the line is a boundary again
+    one = tm.render(V, F, outlines=tm.Outlines("mesh"), **kw)
+    assert "material" not in one.line_kinds
+    off = tm.render(two, outlines=tm.Outlines("mesh", material=False), **kw)
+    rim = lambda res: _pieces(res, "boundary").sum()  # noqa: E731
+    assert "material" not in off.line_kinds and rim(off) > rim(r) + 0.5 * SIZE

@@ -324,6 +324,7 @@ class Outlines:
         valley: _Style = ...,
         nonmanifold: _Style = ...,
         suggestive: _Style = ...,
+        material: _Style = ...,
         image: _Style = ...,
         crease_angle: Optional[float] = ...,
         weld: Optional[bool] = ...,

@@ -22,10 +22,14 @@ pub enum LineKind {
     Valley = 4,
     /// A suggestive contour (`edges::contours`): found through the faces, never an edge.
     Suggestive = 5,
+    /// A border between two items of a scene (meshes, or the parts of a file with different
+    /// materials): a boundary edge of one that lies on a boundary edge of another, as Blender's
+    /// Line Art draws material borders. Found per scene (`mesh_lines::material_borders`).
+    Material = 6,
 }
 
 impl LineKind {
-    pub const COUNT: usize = 6;
+    pub const COUNT: usize = 7;
     pub const ALL: [LineKind; LineKind::COUNT] = [
         LineKind::Silhouette,
         LineKind::Boundary,
@@ -33,6 +37,7 @@ impl LineKind {
         LineKind::Ridge,
         LineKind::Valley,
         LineKind::Suggestive,
+        LineKind::Material,
     ];
 
     pub fn name(self) -> &'static str {
@@ -43,6 +48,7 @@ impl LineKind {
             LineKind::Ridge => "ridge",
             LineKind::Valley => "valley",
             LineKind::Suggestive => "suggestive",
+            LineKind::Material => "material",
         }
     }
 }
@@ -78,6 +84,12 @@ impl Outline {
             &merge(&of(&fe.boundary, LineKind::Boundary), &of(&fe.nonmanifold, LineKind::NonManifold)),
             &creases,
         )
+    }
+
+    /// These lines without those of `kind`.
+    pub fn without(&self, kind: LineKind) -> Outline {
+        let (edges, kinds) = self.edges.iter().zip(&self.kinds).filter(|(_, k)| **k != kind).unzip();
+        Outline { edges, kinds }
     }
 
     /// These lines and a view's silhouettes (sorted), a silhouette taking precedence.

@@ -274,23 +274,21 @@ fn screen_lines(
     r: &Renderer,
     scene: &Scene,
     frame: &FrameSpec,
-) -> (Vec<super::effects::outlines::visibility::ScreenLine>, super::scene::camera::ResolvedCamera) {
-    use super::effects::outlines::mesh_lines::{chains, instances, reference_depth, stored_view, MeshLines};
-    use super::effects::outlines::visibility::Projector;
+) -> (Vec<super::effects::outlines::projection::ScreenLine>, super::scene::camera::ResolvedCamera) {
+    use super::effects::outlines::mesh_lines::{chains, instances, reference_depth, scene_outlines};
+    use super::effects::outlines::projection::Projector;
     let checked = r.check(scene.clone(), *frame).unwrap();
     let mut report = Default::default();
     let p = r.prepare(checked, &mut report).unwrap();
     let outlines = scene.outlines.as_ref().unwrap();
     let mut lines = Vec::new();
     let reference = reference_depth(&scene.items, &p.records, &p.cam);
-    for (item, rec) in scene.items.iter().zip(&p.records) {
-        let view = stored_view(&p.cam, item.model_matrix(), &rec.gpu);
-        let flat = rec.gpu.normals == super::gpu_mesh::NormalMode::Flat;
-        let outline = MeshLines::of(rec).outline(&rec.host, flat, view, outlines).unwrap();
+    let outlines_of = scene_outlines(&scene.items, &p.records, &p.cam, outlines).unwrap();
+    for ((item, rec), outline) in scene.items.iter().zip(&p.records).zip(&outlines_of) {
         let projector = Projector::of(item, &rec.gpu.placement, &p.cam, frame.width, frame.height);
         let drawn =
             instances(&chains(&outline, &rec.host.positions), &projector, &outlines.stroke_width, reference);
-        lines.extend(drawn.iter().filter_map(|l| projector.instance(l)));
+        lines.extend(drawn.iter().filter_map(|l| l.screen(&projector)));
     }
     (lines, p.cam)
 }

@@ -73,11 +73,13 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// normal and depth buffers: Borquez and Yepez) or "both" (default). color and width: the common
 /// style of every kind (default black, 1.5 output pixels). Each kind can be styled on its own
 /// with a keyword: silhouette, boundary, crease (both ridge and valley), ridge, valley,
-/// nonmanifold, suggestive, image; each takes None or True (the common style), False (not
+/// nonmanifold, suggestive, material, image; each takes None or True (the common style), False (not
 /// drawn), a :class:`LineStyle`, or a colour (image edges take the width under the
 /// discontinuity rule; under the paper rule they are whole pixels). Suggestive contours (DeCarlo et al., see
 /// :func:`toonmesh.edges.suggestive_contours`) are drawn only when asked for (suggestive=True,
-/// a style or a colour; default None: not drawn).
+/// a style or a colour; default None: not drawn). Material borders are drawn where a boundary
+/// edge of one scene item lies on a boundary edge of another (the parts of a file with
+/// different materials, meshes that meet edge to edge), in place of those boundaries.
 ///
 /// contours: how silhouettes are found: "faces" (face edges between front- and back-facing
 /// faces, Kang et al.'s rule, exact for flat shading), "smooth" (the smooth contour n . v = 0
@@ -128,6 +130,7 @@ impl PyOutlines {
     #[new]
     #[pyo3(signature = (kind = None, *, color = None, width = None, silhouette = None, boundary = None,
                         crease = None, ridge = None, valley = None, nonmanifold = None, suggestive = None,
+                        material = None,
                         image = None, crease_angle = None, weld = None, normal_threshold = None,
                         depth_threshold = None, depth_offset = None, contours = None,
                         suggestive_threshold = None, min_crease_length = None, image_rule = None,
@@ -145,6 +148,7 @@ impl PyOutlines {
         valley: Obj<'_, '_>,
         nonmanifold: Obj<'_, '_>,
         suggestive: Obj<'_, '_>,
+        material: Obj<'_, '_>,
         image: Obj<'_, '_>,
         crease_angle: Obj<'_, '_>,
         weld: Obj<'_, '_>,
@@ -176,6 +180,7 @@ impl PyOutlines {
                 (LineKind::Ridge as usize, "ridge", ridge, crease),
                 (LineKind::Valley as usize, "valley", valley, crease),
                 (LineKind::Suggestive as usize, "suggestive", suggestive, None),
+                (LineKind::Material as usize, "material", material, Some(common)),
                 (IMAGE_KIND, "image", image, Some(common)),
             ];
             for (k, name, obj, fallback) in kinds {

@@ -26,9 +26,9 @@ use crate::render::mesh_record::MeshRecord;
 use crate::render::scene::camera::{direction_of, ResolvedCamera};
 use crate::render::scene::SceneItem;
 
+use super::projection::{Projector, ScreenLine};
 use super::settings::{ContourRule, Outlines};
 use super::stroke_width::StrokeWidth;
-use super::visibility::Projector;
 
 /// A mesh's outline analysis, kept with it.
 #[derive(Default)]
@@ -138,7 +138,9 @@ impl MeshLines {
             let lines = crate::parallel::install(|| m.suggestive(view, threshold, Cancel::never()))?;
             curves.push((LineKind::Suggestive, lines));
         }
-        let (edges, kinds) = all.edges.iter().zip(&all.kinds).filter(|(_, k)| draws(**k)).unzip();
+        // boundaries are kept for the material borders found across the scene
+        let keep = |k: LineKind| draws(k) || (k == LineKind::Boundary && draws(LineKind::Material));
+        let (edges, kinds) = all.edges.iter().zip(&all.kinds).filter(|(_, k)| keep(**k)).unzip();
         Ok(MeshOutline { edges: Outline { edges, kinds }, curves })
     }
 }
@@ -185,6 +187,14 @@ pub struct LineInstance {
     pub b: [f32; 3],
     pub pad: u32,
     pub scale: [f32; 2],
+}
+
+impl LineInstance {
+    /// The line as the lines pass draws it (its float32 points and width factors), projected.
+    pub fn screen(&self, projector: &Projector) -> Option<ScreenLine> {
+        let s = projector.project(self.a.map(|x| x as f64), self.b.map(|x| x as f64), self.kind as usize)?;
+        Some(ScreenLine { scale: self.scale.map(|x| x as f64), ..s })
+    }
 }
 
 /// The lines of one scene item: a range of the frame's line instances.
@@ -293,6 +303,101 @@ pub fn reference_depth(items: &[SceneItem], records: &[Arc<MeshRecord>], cam: &R
     -(cam.normalized_view().transform_point3(centre)).z
 }
 
+/// Every item's lines of the view of `cam`, with the material borders between items marked.
+pub fn scene_outlines(
+    items: &[SceneItem],
+    records: &[Arc<MeshRecord>],
+    cam: &ResolvedCamera,
+    o: &Outlines,
+) -> Result<Vec<MeshOutline>> {
+    let mut outlines = Vec::with_capacity(items.len());
+    for (item, rec) in items.iter().zip(records) {
+        let view = stored_view(cam, item.model_matrix(), &rec.gpu);
+        let flat = rec.gpu.normals == NormalMode::Flat;
+        outlines.push(MeshLines::of(rec).outline(&rec.host, flat, view, o)?);
+    }
+    if o.styles[LineKind::Material as usize].is_some() {
+        if items.len() > 1 {
+            material_borders(items, records, &mut outlines);
+        }
+        if o.styles[LineKind::Boundary as usize].is_none() {
+            for out in &mut outlines {
+                out.edges = out.edges.without(LineKind::Boundary);
+            }
+        }
+    }
+    Ok(outlines)
+}
+
+/// Marks as material borders the boundary edges of each item that lie on a boundary edge of
+/// another item (both ends at the same world position, to a millionth of the scene's size).
+pub fn material_borders(items: &[SceneItem], records: &[Arc<MeshRecord>], outlines: &mut [MeshOutline]) {
+    let world = |i: usize, v: u32| {
+        let p = records[i].gpu.placement;
+        let stored = DVec3::from_array(records[i].host.positions[v as usize]);
+        items[i].model_matrix().transform_point3(stored * p.scale + DVec3::from_array(p.origin))
+    };
+    let ends: Vec<Vec<(usize, [DVec3; 2])>> = outlines
+        .iter()
+        .enumerate()
+        .map(|(i, o)| {
+            let e = &o.edges;
+            (0..e.len())
+                .filter(|&k| e.kinds[k] == LineKind::Boundary)
+                .map(|k| (k, e.edges[k].map(|v| world(i, v))))
+                .collect()
+        })
+        .collect();
+    let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+    for p in ends.iter().flatten().flat_map(|(_, e)| e) {
+        lo = lo.min(*p);
+        hi = hi.max(*p);
+    }
+    let cell = ((hi - lo).length() * 1e-6).max(f64::MIN_POSITIVE);
+    let key = |p: DVec3| ((p - lo) / cell).round().as_i64vec3().to_array();
+    let edge_key = |e: &[DVec3; 2]| {
+        let (a, b) = (key(e[0]), key(e[1]));
+        if a <= b {
+            (a, b)
+        } else {
+            (b, a)
+        }
+    };
+    // which items have a boundary edge at each place
+    let mut owners: HashMap<([i64; 3], [i64; 3]), Vec<usize>> = HashMap::new();
+    for (i, list) in ends.iter().enumerate() {
+        for (_, e) in list {
+            let o = owners.entry(edge_key(e)).or_default();
+            if o.last() != Some(&i) {
+                o.push(i);
+            }
+        }
+    }
+    // the first item on a border draws it; the others leave their copy of it out
+    for (i, list) in ends.iter().enumerate() {
+        let mut repeated = vec![false; outlines[i].edges.len()];
+        for (k, e) in list {
+            let Some(o) = owners.get(&edge_key(e)) else { continue };
+            if o.iter().any(|&j| j != i) {
+                outlines[i].edges.kinds[*k] = LineKind::Material;
+                repeated[*k] = o[0] != i;
+            }
+        }
+        if repeated.contains(&true) {
+            let e = &outlines[i].edges;
+            let (edges, kinds) = e
+                .edges
+                .iter()
+                .zip(&e.kinds)
+                .zip(&repeated)
+                .filter(|(_, r)| !**r)
+                .map(|(ek, _)| (*ek.0, *ek.1))
+                .unzip();
+            outlines[i].edges = Outline { edges, kinds };
+        }
+    }
+}
+
 /// The `silhouettes` step: every item's lines for this view.
 #[derive(Debug)]
 pub struct Silhouettes {
@@ -308,13 +413,11 @@ impl HostStep for Silhouettes {
     fn run(&self, cx: &HostInputs<'_>, _report: &mut FrameReport) -> Result<()> {
         let mut lines = ViewLines::default();
         let frame = &cx.scene.frame;
+        let items = &cx.scene.scene.items;
         let by_depth = self.outlines.stroke_width.by_depth;
-        let reference =
-            if by_depth { reference_depth(&cx.scene.scene.items, cx.records, cx.cam) } else { 1.0 };
-        for (i, (item, rec)) in cx.scene.scene.items.iter().zip(cx.records).enumerate() {
-            let view = stored_view(cx.cam, item.model_matrix(), &rec.gpu);
-            let flat = rec.gpu.normals == NormalMode::Flat;
-            let outline = MeshLines::of(rec).outline(&rec.host, flat, view, &self.outlines)?;
+        let reference = if by_depth { reference_depth(items, cx.records, cx.cam) } else { 1.0 };
+        let outlines = scene_outlines(items, cx.records, cx.cam, &self.outlines)?;
+        for (i, ((item, rec), outline)) in items.iter().zip(cx.records).zip(outlines).enumerate() {
             let chains = chains(&outline, &rec.host.positions);
             let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
             let first = lines.instances.len() as u32;
