@@ -28,13 +28,15 @@ def check_obj(path: str) -> Dict[str, Any]:
     """Scans an OBJ's statements: every face has 3+ corners whose position, texture and normal
     indices (1-based, or negative from the end of those listed so far) name existing entries, and
     every ``v`` has 3 finite coordinates. Returns counts: ``vertices``, ``texcoords``, ``faces``
-    ``normals`` and ``materials`` (distinct ``usemtl`` names). Raises :class:`MeshFileError` naming the 1-based
+    ``normals``, ``materials`` (distinct ``usemtl`` names) and ``libraries`` (``mtllib``
+    statements). Raises :class:`MeshFileError` naming the 1-based
     line."""
     with open(path, "rb") as f:
         data = f.read()
     counts = {b"v": 0, b"vt": 0, b"vn": 0}
     faces = 0
     materials = set()  # the names 'usemtl' switches to
+    libraries = 0
     kinds = (b"v", b"vt", b"vn")
     largest = {k: (0, 0) for k in kinds}  # the largest positive index of each kind, and its line
     lines = data.split(b"\n")
@@ -77,12 +79,14 @@ def check_obj(path: str) -> Dict[str, Any]:
             faces += 1
         elif head == b"usemtl":
             materials.add(rest.strip())
+        elif head == b"mtllib":
+            libraries += 1
     for kind, (i, number) in largest.items():
         if i > counts[kind]:
             raise MeshFileError(f"{path}: line {number}: face index {i} points past the {counts[kind]} "
                                 f"{_NAMES[kind]} in the file")
     return {"vertices": counts[b"v"], "texcoords": counts[b"vt"], "normals": counts[b"vn"], "faces": faces,
-            "materials": len(materials)}
+            "materials": len(materials), "libraries": libraries}
 
 
 _NAMES = {b"v": "vertices", b"vt": "texture coordinates", b"vn": "normals"}

@@ -98,12 +98,13 @@ def read_surfaces(path: Any, *, keep_seams: bool = False) -> List[Tuple[Surface,
     vertex one UV and one normal), as the file means them, even without a texture."""
     path = _path(path)
     ignored: List[str] = []
-    scene = _read(path, keep_seams, ignored)
-    placed = _placed(scene, path, ignored)
+    scene, materials = _read(path, keep_seams, ignored)
+    placed = _placed(scene, path, ignored, materials)
     if keep_seams:
         for surface, _ in placed:
             geom = _geometries(scene).get(surface.name)
-            given = None if geom is None else getattr(geom, "_cache", {}).get("vertex_normals")
+            cache = getattr(geom, "_cache", None)  # normals trimesh read from the file, not computed
+            given = cache["vertex_normals"] if cache is not None and "vertex_normals" in cache else None
             if given is not None and len(given) == len(surface.vertices):
                 surface.normals = np.asarray(given, dtype=np.float64)
     if ignored:
@@ -153,11 +154,13 @@ def _path(path: Any) -> str:
     return path
 
 
-def _read(path: str, keep_seams: bool, ignored: List[str]) -> Any:
-    """The file as trimesh reads it (a Trimesh, Scene or PointCloud), after the pre-scans."""
+def _read(path: str, keep_seams: bool, ignored: List[str]) -> Tuple[Any, bool]:
+    """The file as trimesh reads it (a Trimesh, Scene or PointCloud), after the pre-scans, and
+    whether its materials are the file's (an OBJ without an MTL gets trimesh's placeholder)."""
     trimesh = trimesh_module()
     suffix = os.path.splitext(path)[1].lower()
     extra: Dict[str, Any] = {}
+    materials = True
     if suffix == ".obj":
         counts = check_obj(path)
         if counts["materials"] > MAX_MATERIALS:
@@ -165,6 +168,7 @@ def _read(path: str, keep_seams: bool, ignored: List[str]) -> Any:
                                 f"most {MAX_MATERIALS:,} materials a file")
         # positions as listed (not split at texture seams) unless the corners' UVs or normals matter
         extra["maintain_order"] = not (keep_seams and (counts["texcoords"] or counts["normals"]))
+        materials = counts["libraries"] > 0
     elif suffix == ".ply":
         check_ply(path)
     doc = gltf_document(path) if suffix in (".glb", ".gltf") else None
@@ -173,7 +177,7 @@ def _read(path: str, keep_seams: bool, ignored: List[str]) -> Any:
         ignored.extend(gltf_ignored(doc))
     try:
         loaded = trimesh.load(path, process=False, **extra)
-        if suffix == ".obj" and extra.get("maintain_order") and _has_texture(loaded):
+        if suffix == ".obj" and extra.get("maintain_order") and materials and _has_texture(loaded):
             loaded = trimesh.load(path, process=False, maintain_order=False)  # a UV per vertex
     except MeshFileError:
         raise
@@ -181,7 +185,7 @@ def _read(path: str, keep_seams: bool, ignored: List[str]) -> Any:
         raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
     if suffix == ".stl" and hasattr(loaded, "merge_vertices"):
         loaded.merge_vertices()  # an STL stores every corner apart: connect the surface
-    return loaded
+    return loaded, materials
 
 
 def _geometries(loaded: Any) -> Dict[str, Any]:
@@ -203,10 +207,11 @@ def _check_gltf_counts(path: str, doc: Dict[str, Any]) -> None:
         raise MeshFileError(f"{path}: {materials:,} materials; toonmesh reads at most {MAX_MATERIALS:,} a file")
 
 
-def _placed(loaded: Any, source: str, ignored: List[str]) -> List[Tuple[Surface, Optional[np.ndarray]]]:
+def _placed(loaded: Any, source: str, ignored: List[str], materials: bool = True,
+            ) -> List[Tuple[Surface, Optional[np.ndarray]]]:
     """Every drawn geometry with its world transform; one Surface per geometry, shared."""
     if not hasattr(loaded, "graph"):  # a single mesh (or point cloud)
-        surface = _surface(loaded, source, "", ignored)
+        surface = _surface(loaded, source, "", ignored, materials)
         if surface is None:
             raise MeshFileError(f"{source}: no triangles in the file")
         return [(surface, None)]
@@ -222,7 +227,7 @@ def _placed(loaded: Any, source: str, ignored: List[str]) -> List[Tuple[Surface,
     for node in nodes:
         transform, name = loaded.graph[node]
         if name not in surfaces:
-            surfaces[name] = _surface(loaded.geometry[name], source, name, ignored)
+            surfaces[name] = _surface(loaded.geometry[name], source, name, ignored, materials)
         surface = surfaces[name]
         if surface is not None:
             out.append((surface, np.asarray(transform, dtype=np.float64)))
@@ -231,7 +236,7 @@ def _placed(loaded: Any, source: str, ignored: List[str]) -> List[Tuple[Surface,
     return out
 
 
-def _surface(geom: Any, source: str, name: str, ignored: List[str]) -> Optional[Surface]:
+def _surface(geom: Any, source: str, name: str, ignored: List[str], materials: bool) -> Optional[Surface]:
     """A Surface of one trimesh geometry; None (and a note in ``ignored``) for one without faces."""
     faces = getattr(geom, "faces", None)
     colors = None
@@ -260,7 +265,7 @@ def _surface(geom: Any, source: str, name: str, ignored: List[str]) -> Optional[
         surface.vertex_colors = np.asarray(colors, dtype=np.uint8)
     visual = getattr(geom, "visual", None)
     if visual is not None and faces is not None:
-        _visual_into(surface, visual, ignored)
+        _visual_into(surface, visual, ignored, materials)
     return surface
 
 
@@ -276,8 +281,9 @@ def _ply_strips(geom: Any) -> Optional[np.ndarray]:
     return strip_triangles(list(data) if getattr(data, "dtype", None) == object else np.asarray(data))
 
 
-def _visual_into(surface: Surface, visual: Any, ignored: List[str]) -> None:
-    """Colours, UVs, texture and base colour of a trimesh visual."""
+def _visual_into(surface: Surface, visual: Any, ignored: List[str], materials: bool) -> None:
+    """Colours, UVs, texture and base colour of a trimesh visual (UVs only when ``materials``
+    is False: the material is trimesh's placeholder)."""
     kind = getattr(visual, "kind", None)
     if kind == "vertex":
         surface.vertex_colors = np.asarray(visual.vertex_colors, dtype=np.uint8)
@@ -289,6 +295,8 @@ def _visual_into(surface: Surface, visual: Any, ignored: List[str]) -> None:
     uv = getattr(visual, "uv", None)
     if uv is not None and len(uv) == len(surface.vertices):
         surface.uv = np.asarray(uv, dtype=np.float64)
+    if not materials:
+        return
     factor = getattr(material, "baseColorFactor", None)
     if factor is None and hasattr(material, "diffuse"):
         factor = material.diffuse  # an MTL's Kd
