@@ -56,10 +56,17 @@ def write_mesh(path: str, vertices: np.ndarray, faces: np.ndarray, surface: Opti
     if visual is not None:
         mesh.visual = visual
     try:
-        if suffix in ("obj", "glb", "gltf"):  # formats that write files beside them (MTL, texture)
-            mesh.export(path, include_normals=normals is not None) if suffix == "obj" else mesh.export(path)
-            return
-        data = mesh.export(file_type=suffix)
+        if suffix == "obj":  # its MTL and texture go beside it, named after it
+            stem = os.path.splitext(os.path.basename(path))[0]
+            text, beside = trimesh.exchange.obj.export_obj(
+                mesh, include_normals=normals is not None, include_texture=visual is not None,
+                return_texture=True, mtl_name=stem + ".mtl", header=None)
+            for name, data in beside.items():
+                with open(os.path.join(os.path.dirname(os.path.abspath(path)), name), "wb") as f:
+                    f.write(data)
+            data = text
+        else:
+            data = mesh.export(file_type=suffix)
     except Exception as exc:
         raise ValueError(f"{path}: cannot write this format ({_one_line(exc)})") from None
     with open(path, "wb") as f:

@@ -19,6 +19,7 @@ import inspect
 import os
 import sys
 import time
+import warnings
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import toonmesh as tm
@@ -33,6 +34,7 @@ __all__ = ["main"]
 
 # the shading models and outline kinds the core has
 STYLES: Dict[str, Callable[..., Any]] = {m.replace("_", "-"): getattr(tm.Material, m) for m in _core.MODELS}
+STYLES["hatching"] = tm.Material.hatching  # bands drawn as strokes
 OUTLINES = ("none",) + _core.OUTLINE_KINDS
 SMOOTH_METHODS = ("laplacian", "taubin", "hc", "implicit")
 BACKENDS = ("auto", "vulkan", "gl")
@@ -498,9 +500,21 @@ def _one_line(exc: BaseException) -> str:
 def main(argv: Optional[List[str]] = None) -> int:
     """Runs the command line; returns the exit status (0, 1 for a failure, 2 for a bad command
     line, 130 when interrupted)."""
+    parser = build_parser()
+    with warnings.catch_warnings():
+        warnings.simplefilter("default")
+        warnings.showwarning = _one_line_warning  # type: ignore[assignment]
+        return _run(parser, argv)
+
+
+def _one_line_warning(message: Any, category: Any, *args: Any, **kwargs: Any) -> None:
+    """A warning (what a file holds that is not drawn) as one line on stderr."""
+    print(f"toonmesh: warning: {_one_line(message)}", file=sys.stderr)
+
+
+def _run(parser: argparse.ArgumentParser, argv: Optional[List[str]]) -> int:
     from toonmesh.bench.__main__ import takes_extra_options
 
-    parser = build_parser()
     try:
         args, extra = parser.parse_known_args(argv)
         if extra and not (args.command == "bench" and takes_extra_options(args.suite)):
