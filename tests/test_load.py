@@ -281,3 +281,11 @@ def test_load_refuses_what_is_not_a_mesh_file(tmp_path):
     bad.write_bytes(b"not a glb at all, really")
     with pytest.raises(ValueError, match="bad.glb: not a GLB file"):
         tm.load(str(bad))
+
+
+def test_the_scenes_benchmark_uploads_the_instances_once():
+    from toonmesh.bench import scenes
+
+    rows = scenes.rows(count=12, faces=200, size=48, repeat=1)
+    assert rows[0][2] == "1 upload(s)"
+    assert rows[0][6] == f"{12 * len(scenes.instances(12, 200)[0][1]):,}"
