@@ -9,6 +9,7 @@ broken file never renders with holes and exit status 0.
 from __future__ import annotations
 
 import json
+import math
 import os
 import struct
 from typing import Any, Dict, List, Optional, Tuple
@@ -41,44 +42,44 @@ def check_obj(path: str) -> Dict[str, Any]:
     largest = {k: (0, 0) for k in kinds}  # the largest positive index of each kind, and its line
     lines = data.split(b"\n")
     for number, raw in enumerate(lines, start=1):
-        line = raw.split(b"#", 1)[0].strip()
-        if not line:
+        words = (raw.split(b"#", 1)[0] if b"#" in raw else raw).split()
+        if not words:
             continue
-        head, _, rest = line.partition(b" ")
+        head = words[0]
         if head == b"v":
-            xyz = rest.split()[:3]
-            if len(xyz) < 3:
-                raise MeshFileError(_obj_where(path, number, lines, f"a vertex needs 3 coordinates, got {len(xyz)}"))
+            if len(words) < 4:
+                raise MeshFileError(_obj_where(path, number, lines, f"a vertex needs 3 coordinates, got {len(words) - 1}"))
             try:
-                p = [float(x) for x in xyz]
+                x, y, z = float(words[1]), float(words[2]), float(words[3])
             except ValueError:
                 raise MeshFileError(_obj_where(path, number, lines, f"not a number in {raw.strip()[:60]!r}")) from None
             counts[b"v"] += 1
-            if not all(np.isfinite(p)):
-                raise MeshFileError(f"{path}: vertex {counts[b'v']} (line {number}) is not finite: {p}")
-        elif head in (b"vt", b"vn"):
-            counts[head] += 1
+            if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(z)):
+                raise MeshFileError(f"{path}: vertex {counts[b'v']} (line {number}) is not finite: {[x, y, z]}")
         elif head == b"f":
-            corners = rest.split()
-            if len(corners) < 3:
-                raise MeshFileError(_obj_where(path, number, lines, f"a face needs 3 or more corners, got {len(corners)}"))
-            for corner in corners:
-                for kind, text in zip(kinds, corner.split(b"/")):
-                    if not text:
-                        continue
-                    try:
-                        i = int(text)
-                    except ValueError:
-                        raise MeshFileError(_obj_where(path, number, lines, f"not an index: {corner.decode(errors='replace')!r}")) from None
-                    n = counts[kind]
-                    if i == 0 or i < -n:  # negative: counted back from the entries so far
-                        raise MeshFileError(f"{path}: line {number}: face index {i} points past the {n} "
-                                            f"{_NAMES[kind]} listed before it")
-                    if i > largest[kind][0]:
-                        largest[kind] = (i, number)
+            if len(words) < 4:
+                raise MeshFileError(_obj_where(path, number, lines, f"a face needs 3 or more corners, got {len(words) - 1}"))
+            # one list of indices per kind: v, or v/vt, v//vn, v/vt/vn
+            columns = [words[1:]] if b"/" not in raw else list(zip(*(c.split(b"/") for c in words[1:])))
+            for kind, texts in zip(kinds, columns):
+                try:
+                    ints = [int(t) for t in texts if t]
+                except ValueError:
+                    raise MeshFileError(_obj_where(path, number, lines, f"not an index in {raw.strip()[:60]!r}")) from None
+                if not ints:
+                    continue
+                lo, hi, n = min(ints), max(ints), counts[kind]
+                if lo < -n or 0 in ints:  # negative: counted back from the entries so far
+                    i = 0 if 0 in ints else lo
+                    raise MeshFileError(f"{path}: line {number}: face index {i} points past the {n} "
+                                        f"{_NAMES[kind]} listed before it")
+                if hi > largest[kind][0]:
+                    largest[kind] = (hi, number)
             faces += 1
+        elif head == b"vt" or head == b"vn":
+            counts[head] += 1
         elif head == b"usemtl":
-            materials.add(rest.strip())
+            materials.add(b" ".join(words[1:]))
         elif head == b"mtllib":
             libraries += 1
     for kind, (i, number) in largest.items():
