@@ -170,7 +170,7 @@ def check_ply(path: str) -> Dict[str, int]:
     return {name: count for name, count, _ in elements}
 
 
-def strip_triangles(strips: np.ndarray) -> np.ndarray:
+def strip_triangles(strips: Any) -> np.ndarray:
     """Triangles of triangle strips: a flat index sequence where -1 restarts a strip (or a list
     of strips). Triangle k of a strip is (s[k], s[k+1], s[k+2]) for even k and (s[k+1], s[k],
     s[k+2]) for odd k, so that all face the same way; triangles with a repeated corner (the

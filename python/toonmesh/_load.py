@@ -223,7 +223,7 @@ def _placed(loaded: Any, source: str, ignored: List[str], materials: bool = True
         raise MeshFileError(f"{source}: {len(loaded.geometry):,} geometries (one per material); toonmesh reads at "
                             f"most {MAX_MATERIALS:,} a scene")
     surfaces: Dict[str, Optional[Surface]] = {}
-    out = []
+    out: List[Tuple[Surface, Optional[np.ndarray]]] = []
     for node in nodes:
         transform, name = loaded.graph[node]
         if name not in surfaces:

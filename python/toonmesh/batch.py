@@ -75,8 +75,8 @@ def render_views(
         for h in handles.values():
             renderer.remove_mesh(h)
         raise
-    n_vertices = sum(item.handle.n_vertices for item in scene)
-    n_faces = sum(item.handle.n_faces for item in scene)
+    n_vertices = sum(h.n_vertices for h in (item.handle for item in scene) if h is not None)
+    n_faces = sum(h.n_faces for h in (item.handle for item in scene) if h is not None)
     load_s = time.perf_counter() - t0
     worker = f"{socket.gethostname()}:{os.getpid()}"
     rows = []

@@ -42,6 +42,7 @@ BACKENDS = ("auto", "vulkan", "gl")
 
 #: The ink lines of ``toonmesh demo``, and of ``toonmesh render`` unless its flags say otherwise.
 DEMO_OUTLINES = tm.Outlines("mesh", width=2.0, crease_angle=60.0)
+DEMO_LINE_WIDTH = float(getattr(DEMO_OUTLINES.styles["silhouette"], "width"))
 #: The hatching material's defaults (spacing and width of its strokes, in pixels).
 HATCHING: Dict[str, Any] = dict(tm.Material.hatching().hatch_style or {})
 
@@ -403,7 +404,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                    help="shadow depth bias in texels per unit of slope (default %(default)g)")
     p.add_argument("--outlines", choices=OUTLINES, default=DEMO_OUTLINES.kind,
                    help="ink lines: on the mesh, from the image, both, or none (default: %(default)s, as toonmesh demo)")
-    p.add_argument("--outline-width", type=float, default=DEMO_OUTLINES.styles["silhouette"].width, metavar="PX",
+    p.add_argument("--outline-width", type=float, default=DEMO_LINE_WIDTH, metavar="PX",
                    help="line width in pixels (default %(default)g)")
     p.add_argument("--crease-angle", type=float, default=DEMO_OUTLINES.crease_angle, metavar="DEG",
                    help="crease lines where faces meet at more than this (default %(default)g)")

@@ -10,7 +10,7 @@ ratio = instances' time / merged mesh's time (the target is within 1.5x).
 
 from __future__ import annotations
 
-from typing import Any, List, Sequence, Tuple
+from typing import Any, Dict, List, Sequence, Tuple
 
 import numpy as np
 
@@ -44,11 +44,11 @@ def merged(mesh: Tuple[np.ndarray, np.ndarray], transforms: Sequence[np.ndarray]
     return np.concatenate(Vs), np.concatenate([F + k * len(V) for k in range(len(transforms))])
 
 
-def rows(count: int, faces: int, size: int, repeat: int) -> List[List[Any]]:
+def rows(count: int, faces: int, size: int, repeat: int) -> List[Sequence[Any]]:
     mesh, transforms = instances(count, faces)
     whole = merged(mesh, transforms)
     camera = tm.Camera.fit((0.3, 1.0, 0.6))
-    kw = dict(camera=camera, width=size, height=size, outlines=None)
+    kw: Dict[str, Any] = dict(camera=camera, width=size, height=size, outlines=None)
     scene = [tm.Mesh(*mesh, transform=T) for T in transforms]
     uploads: List[int] = []
     renderer = tm._render.shared_renderer(None)
