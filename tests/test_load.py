@@ -289,3 +289,27 @@ def test_the_scenes_benchmark_uploads_the_instances_once():
     rows = scenes.rows(count=12, faces=200, size=48, repeat=1)
     assert rows[0][2] == "1 upload(s)"
     assert rows[0][6] == f"{12 * len(scenes.instances(12, 200)[0][1]):,}"
+
+
+def test_a_glb_cut_short_or_claiming_more_than_it_holds_is_refused(tmp_path):
+    import json
+    import struct
+
+    path = tmp_path / "row.glb"
+    instanced_scene(3).export(str(path))
+    data = path.read_bytes()
+    cut = tmp_path / "cut.glb"
+    cut.write_bytes(data[:-40])
+    with pytest.raises(ValueError, match=r"cut\.glb: the binary buffer claims [\d,]+ bytes but the file holds"):
+        tm.load(str(cut))
+    n = struct.unpack("<I", data[12:16])[0]
+    doc = json.loads(data[20:20 + n])
+    doc["accessors"][0]["count"] = 10**9
+    text = json.dumps(doc).encode()
+    text += b" " * (-len(text) % 4)
+    rest = data[20 + n:]
+    claim = tmp_path / "claim.glb"
+    claim.write_bytes(data[:8] + struct.pack("<I", 20 + len(text) + len(rest)) + struct.pack("<II", len(text), 0x4E4F534A)
+                      + text + rest)
+    with pytest.raises(ValueError, match=r"claim\.glb: accessor 0 claims 1,000,000,000 elements"):
+        tm.load(str(claim))

@@ -221,6 +221,47 @@ def gltf_document(path: str) -> Optional[Dict[str, Any]]:
     return None
 
 
+_COMPONENT_BYTES = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
+_COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
+
+
+def check_gltf_sizes(path: str, doc: Dict[str, Any]) -> None:
+    """Refuses a glTF whose accessors claim more elements than their buffer views hold, or whose
+    buffer views reach past their buffers (and a GLB's binary chunk), before anything is read."""
+    buffers = doc.get("buffers") or []
+    views = doc.get("bufferViews") or []
+    if path.lower().endswith(".glb") and buffers and "uri" not in buffers[0]:
+        size = os.path.getsize(path)
+        with open(path, "rb") as f:
+            f.seek(12)
+            json_length = struct.unpack("<I", f.read(4))[0]
+            f.seek(20 + json_length)
+            head = f.read(8)
+        held = struct.unpack("<I", head[:4])[0] if len(head) == 8 else 0
+        held = min(held, max(size - 28 - json_length, 0))
+        if int(buffers[0].get("byteLength", 0)) > held:
+            raise MeshFileError(f"{path}: the binary buffer claims {int(buffers[0]['byteLength']):,} bytes but the "
+                                f"file holds {held:,}: truncated or corrupt")
+    for i, view in enumerate(views):
+        b = view.get("buffer", 0)
+        end = int(view.get("byteOffset", 0)) + int(view.get("byteLength", 0))
+        if not 0 <= b < len(buffers) or end > int(buffers[b].get("byteLength", 0)):
+            raise MeshFileError(f"{path}: buffer view {i} reaches past its buffer ({end:,} bytes)")
+    for i, acc in enumerate(doc.get("accessors") or []):
+        if "bufferView" not in acc:
+            continue  # zeros, by the spec
+        v = acc["bufferView"]
+        if not 0 <= v < len(views):
+            raise MeshFileError(f"{path}: accessor {i} names buffer view {v}, of {len(views)}")
+        item = _COMPONENT_BYTES.get(acc.get("componentType"), 4) * _COMPONENTS.get(acc.get("type"), 1)
+        stride = int(views[v].get("byteStride", 0)) or item
+        count = int(acc.get("count", 0))
+        need = int(acc.get("byteOffset", 0)) + (stride * (count - 1) + item if count else 0)
+        if need > int(views[v].get("byteLength", 0)):
+            raise MeshFileError(f"{path}: accessor {i} claims {count:,} elements ({need:,} bytes) but its buffer "
+                                f"view holds {int(views[v].get('byteLength', 0)):,} bytes")
+
+
 def gltf_ignored(doc: Dict[str, Any]) -> List[str]:
     """What a glTF document holds that toonmesh does not draw (cameras, lights, animations,
     skins, morph targets, normal/occlusion/emissive/metallic-roughness maps and factors, ...)."""

@@ -17,7 +17,9 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
-from toonmesh._file_checks import MeshFileError, check_obj, check_ply, gltf_document, gltf_ignored, strip_triangles
+from toonmesh._file_checks import (
+    MeshFileError, check_gltf_sizes, check_obj, check_ply, gltf_document, gltf_ignored, strip_triangles,
+)
 
 #: The most mesh instances (scene nodes with geometry) one file or scene may place.
 MAX_INSTANCES = 65_536
@@ -174,6 +176,7 @@ def _read(path: str, keep_seams: bool, ignored: List[str]) -> Tuple[Any, bool]:
     doc = gltf_document(path) if suffix in (".glb", ".gltf") else None
     if doc is not None:
         _check_gltf_counts(path, doc)
+        check_gltf_sizes(path, doc)
         ignored.extend(gltf_ignored(doc))
     try:
         loaded = trimesh.load(path, process=False, **extra)
@@ -202,9 +205,10 @@ def _check_gltf_counts(path: str, doc: Dict[str, Any]) -> None:
     if placing > MAX_INSTANCES:
         raise MeshFileError(f"{path}: {placing:,} nodes place meshes; toonmesh draws at most "
                             f"{MAX_INSTANCES:,} mesh instances a scene")
-    materials = len(doc.get("materials") or [])
-    if materials > MAX_MATERIALS:
-        raise MeshFileError(f"{path}: {materials:,} materials; toonmesh reads at most {MAX_MATERIALS:,} a file")
+    for key in ("materials", "images"):  # a texture per face: refused before trimesh decodes them
+        n = len(doc.get(key) or [])
+        if n > MAX_MATERIALS:
+            raise MeshFileError(f"{path}: {n:,} {key}; toonmesh reads at most {MAX_MATERIALS:,} materials a file")
 
 
 def _placed(loaded: Any, source: str, ignored: List[str], materials: bool = True,
