@@ -116,6 +116,22 @@ def test_several_materials_give_several_meshes(tmp_path):
     assert sum(len(s.faces) for s, _ in placed) == 2
 
 
+def test_a_glb_of_several_materials_gives_a_mesh_per_material(tmp_path):
+    trimesh = need("trimesh")
+    scene = trimesh.Scene()
+    for i, factor in enumerate(([255, 0, 0, 255], [0, 0, 255, 255])):
+        m = box()
+        m.apply_translation([2.0 * i, 0, 0])
+        material = trimesh.visual.material.PBRMaterial(baseColorFactor=factor)
+        m.visual = trimesh.visual.TextureVisuals(uv=np.zeros((len(m.vertices), 2)), material=material)
+        scene.add_geometry(m, geom_name=f"part{i}")
+    path = str(tmp_path / "two.glb")
+    scene.export(path)
+    placed = surfaces(path)
+    assert sorted(tuple(s.base_color) for s, _ in placed) == [(0.0, 0.0, 1.0, 1.0), (1.0, 0.0, 0.0, 1.0)]
+    assert len(tm.load(path)) == 2
+
+
 def test_instances_share_their_arrays_and_compose_node_transforms(tmp_path):
     scene = instanced_scene(6, nested=True)
     path = str(tmp_path / "inst.glb")
