@@ -248,6 +248,26 @@ def test_ply_triangle_strips_are_read_with_alternating_winding(tmp_path):
     assert (r.color[..., :3] < 250).any()
 
 
+def test_binary_ply_strips_with_colours_are_read_and_a_cut_one_refused(tmp_path):
+    header = (b"ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+              b"property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+              b"element tristrips 2\nproperty list uchar int vertex_indices\nend_header\n")
+    rows = np.zeros(4, dtype=[("p", ">f4", 3), ("c", "u1", 3)])
+    rows["p"] = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]
+    rows["c"] = [[255, 0, 0], [0, 255, 0], [0, 0, 255], [9, 9, 9]]
+    strips = bytes([4]) + np.array([0, 1, 2, 3], ">i4").tobytes() + bytes([3]) + np.array([0, 1, 3], ">i4").tobytes()
+    path = tmp_path / "strips.ply"
+    path.write_bytes(header + rows.tobytes() + strips)
+    ((s, _),) = surfaces(str(path))
+    assert s.faces.tolist() == [[0, 1, 2], [2, 1, 3], [0, 1, 3]]
+    np.testing.assert_array_equal(s.vertices, rows["p"])
+    assert np.array_equal(s.vertex_colors[:, :3], rows["c"]) and np.all(s.vertex_colors[:, 3] == 255)
+    cut = tmp_path / "cut.ply"
+    cut.write_bytes(header + rows.tobytes() + strips[:-6])
+    with pytest.raises(ValueError, match="cut.ply: the 'tristrips' elements are cut off"):
+        tm.load(str(cut))
+
+
 def test_a_ply_header_claiming_more_than_the_file_holds_is_refused_before_allocating(tmp_path):
     header = ("ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\nproperty float x\n"
               "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n")

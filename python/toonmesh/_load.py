@@ -17,8 +17,9 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
+from toonmesh import _ply_strips
 from toonmesh._file_checks import (
-    MeshFileError, check_gltf_sizes, check_obj, check_ply, gltf_document, gltf_ignored, strip_triangles,
+    MeshFileError, check_gltf_sizes, check_obj, check_ply, gltf_document, gltf_ignored,
 )
 
 #: The most mesh instances (scene nodes with geometry) one file or scene may place.
@@ -173,6 +174,9 @@ def _read(path: str, keep_seams: bool, ignored: List[str]) -> Tuple[Any, bool]:
         materials = counts["libraries"] > 0
     elif suffix == ".ply":
         check_ply(path)
+        if _ply_strips.has_strips(path):  # trimesh reads strips as points, or not at all
+            V, F, colors = _ply_strips.read(path)
+            return trimesh.Trimesh(V, F, vertex_colors=colors, process=False), materials
     doc = gltf_document(path) if suffix in (".glb", ".gltf") else None
     if doc is not None:
         _check_gltf_counts(path, doc)
@@ -243,15 +247,10 @@ def _placed(loaded: Any, source: str, ignored: List[str], materials: bool = True
 def _surface(geom: Any, source: str, name: str, ignored: List[str], materials: bool) -> Optional[Surface]:
     """A Surface of one trimesh geometry; None (and a note in ``ignored``) for one without faces."""
     faces = getattr(geom, "faces", None)
-    colors = None
     if faces is None:
-        strips = _ply_strips(geom)
-        if strips is None:
-            kind = type(geom).__name__
-            ignored.append({"PointCloud": "points", "Path3D": "lines", "Path2D": "2D paths"}.get(kind, kind))
-            return None
-        faces = strips
-        colors = getattr(geom, "colors", None)
+        kind = type(geom).__name__
+        ignored.append({"PointCloud": "points", "Path3D": "lines", "Path2D": "2D paths"}.get(kind, kind))
+        return None
     faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     vertices = np.asarray(geom.vertices, dtype=np.float64)
     bad = np.flatnonzero(~np.isfinite(vertices).all(axis=1))
@@ -265,24 +264,10 @@ def _surface(geom: Any, source: str, name: str, ignored: List[str], materials: b
         raise MeshFileError(f"{source}: face {i + 1}{where} has an index outside the {len(vertices):,} vertices: "
                             f"{faces[i].tolist()}")
     surface = Surface(vertices, faces, name=name)
-    if colors is not None and len(colors) == len(vertices):
-        surface.vertex_colors = np.asarray(colors, dtype=np.uint8)
     visual = getattr(geom, "visual", None)
     if visual is not None and faces is not None:
         _visual_into(surface, visual, ignored, materials)
     return surface
-
-
-def _ply_strips(geom: Any) -> Optional[np.ndarray]:
-    """Triangles of a PLY's ``tristrips`` element (trimesh reads the file as points)."""
-    raw = (getattr(geom, "metadata", None) or {}).get("_ply_raw") or {}
-    element = raw.get("tristrips")
-    if not element:
-        return None
-    data = element["data"].get("vertex_indices")
-    if data is None:
-        return None
-    return strip_triangles(list(data) if getattr(data, "dtype", None) == object else np.asarray(data))
 
 
 def _visual_into(surface: Surface, visual: Any, ignored: List[str], materials: bool) -> None:
