@@ -299,6 +299,15 @@ def test_very_many_instances_or_materials_are_refused_naming_the_limit(tmp_path,
     path = obj(tmp_path, "\n".join(lines) + "\n")
     with pytest.raises(ValueError, match="10 materials .* at most 4 materials"):
         tm.load(path)
+    trimesh = need("trimesh")
+    scene = trimesh.Scene()
+    for i in range(6):
+        m = box()
+        m.visual = trimesh.visual.TextureVisuals(uv=np.zeros((len(m.vertices), 2)),
+                                                 material=trimesh.visual.material.PBRMaterial(baseColorFactor=[i, 0, 0, 255]))
+        scene.add_geometry(m, geom_name=f"g{i}")
+    with pytest.raises(ValueError, match="scene: 6 materials; toonmesh reads at most 4"):
+        tm.render(scene, width=8, height=8)
 
 
 def test_load_refuses_what_is_not_a_mesh_file(tmp_path):

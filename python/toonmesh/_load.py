@@ -227,9 +227,11 @@ def _placed(loaded: Any, source: str, ignored: List[str], materials: bool = True
     if len(nodes) > MAX_INSTANCES:
         raise MeshFileError(f"{source}: {len(nodes):,} nodes place meshes; toonmesh draws at most "
                             f"{MAX_INSTANCES:,} mesh instances a scene")
-    if len(loaded.geometry) > MAX_MATERIALS:
-        raise MeshFileError(f"{source}: {len(loaded.geometry):,} geometries (one per material); toonmesh reads at "
-                            f"most {MAX_MATERIALS:,} a scene")
+    materials = {id(m) for m in (getattr(getattr(g, "visual", None), "material", None)
+                                 for g in loaded.geometry.values()) if m is not None}
+    if len(materials) > MAX_MATERIALS:
+        raise MeshFileError(f"{source}: {len(materials):,} materials; toonmesh reads at most {MAX_MATERIALS:,} "
+                            "materials a scene")
     surfaces: Dict[str, Optional[Surface]] = {}
     out: List[Tuple[Surface, Optional[np.ndarray]]] = []
     for node in nodes:
