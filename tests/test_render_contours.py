@@ -23,7 +23,7 @@ def _pieces(res, kind):
 
 def test_defaults_and_pickling():
     o = tm.Outlines()
-    assert o.contours == "faces" and o.suggestive_threshold == 0.01
+    assert o.contours == "auto" and o.suggestive_threshold == 0.01
     assert o.styles["suggestive"] is None  # drawn only when asked for
     assert "suggestive" in tm._core.LINE_KINDS
     s = tm.Outlines("mesh", contours="smooth", suggestive="#3050a0", suggestive_threshold=0.2)
@@ -53,6 +53,34 @@ def test_smooth_contours_of_a_noisy_sphere_are_few_long_strokes(backend):
     # the picture keeps its silhouette ink where the face-edge rule had it
     ink = lambda r: np.count_nonzero(r.color[..., :3].max(axis=2) < 40)  # noqa: E731
     assert ink(smooth) > 0.3 * ink(faces)
+
+
+def _silhouette_ink(res):
+    return sorted(np.round(np.concatenate([l for l, k in zip(res.lines, res.line_kinds) if k == "silhouette"]), 3).tolist())
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_the_default_rule_follows_the_shading(backend):
+    from toonmesh.bench.effects import box
+
+    kw = dict(outputs=("color", "lines"), width=SIZE, height=SIZE, backend=backend)
+    at = lambda rule, mesh: tm.render(mesh, outlines=tm.Outlines("mesh", contours=rule), **kw)  # noqa: E731
+    # flat-shaded: the face-edge rule
+    V, F = tm.shapes.icosphere(3, noise=0.01, seed=1)
+    flat = tm.Mesh(V, F, normals="flat")
+    assert _silhouette_ink(at("auto", flat)) == _silhouette_ink(at("faces", flat))
+    # smooth-shaded: smooth contours between creases ...
+    smooth = tm.Mesh(V, F)
+    assert _silhouette_ink(at("auto", smooth)) == _silhouette_ink(at("smooth", smooth))
+    assert _silhouette_ink(at("auto", smooth)) != _silhouette_ink(at("faces", smooth))
+    # ... and face edges on them: a cube drawn with smooth normals keeps its straight outline
+    Vb, Fb = box((0.0, 0.0, 0.0), 0.5)
+    cube = tm.Mesh(Vb, Fb)
+    camera = tm.Camera.look_at(eye=(2.0, 1.5, 3.0), target=(0, 0, 0))
+    a = tm.render(cube, outlines=tm.Outlines("mesh"), camera=camera, **kw)
+    b = tm.render(cube, outlines=tm.Outlines("mesh", contours="faces"), camera=camera, **kw)
+    np.testing.assert_array_equal(a.color, b.color)
+    assert "silhouette" in a.line_kinds
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
@@ -110,8 +138,9 @@ def test_svg_for_a_pen_plotter():
     V, F = tm.shapes.icosphere(4, noise=0.01, seed=3)
     res = tm.render(V, F, outputs=("lines",), width=300, height=300,
                     outlines=tm.Outlines("mesh", contours="smooth", crease_angle=20.0))
-    drawing = _svg_lines(res.svg(), "ridge")
-    plotter = _svg_lines(res.svg(order="plotter"), "ridge")
+    drawing = _svg_lines(res.svg(simplify=0), "ridge")
+    plotter = _svg_lines(res.svg(order="plotter", simplify=0), "ridge")
+    assert res.svg() == res.svg(simplify=0.25) != res.svg(simplify=0)  # the default
     assert len(drawing) == len(plotter) > 20
     # the same strokes, some drawn the other way round, in an order with much less pen travel
     key = lambda l: tuple(np.round(l if tuple(l[0]) <= tuple(l[-1]) else l[::-1], 2).ravel())  # noqa: E731

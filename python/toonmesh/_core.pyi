@@ -1,5 +1,5 @@
 # Type stubs for the compiled core (checked against it with `python -m mypy.stubtest toonmesh._core`).
-from typing import Any, Dict, Final, List, Optional, Tuple, Union, final
+from typing import Any, Dict, Final, Literal, List, Optional, Tuple, Union, final
 
 from typing_extensions import Unpack
 
@@ -174,6 +174,7 @@ class Material:
         *,
         thresholds: Optional[Any] = ...,
         values: Optional[Any] = ...,
+        preset: Optional[Literal["paper"]] = ...,
         per_vertex: Optional[bool] = ...,
         dither: _DitherArg = ...,
     ) -> Material: ...

@@ -44,7 +44,8 @@ class RenderKeywords(TypedDict, total=False):
     - ``msaa``: samples per pixel, 1 or 4 (default 1); ``supersample``: render 1 to 4 times
       larger in each direction and average down (default 1); ``band_antialias``: blend across
       each band border and threshold over about one pixel, from the screen-space change of the
-      shading term (default False): smooth tone borders at no extra samples;
+      shading term (default True): smooth tone borders at no extra samples; False gives the
+      hard borders of the papers' figures;
     - ``outlines``: None (default), "mesh", "image", "both" or an :class:`Outlines`.
     """
 
@@ -195,7 +196,7 @@ class RenderResult:
         with open(path, "wb") as f:
             f.write(data)
 
-    def svg(self, *, order: str = "drawing", simplify: float = 0.0) -> str:
+    def svg(self, *, order: str = "drawing", simplify: float = _strokes.SIMPLIFY) -> str:
         """The visible mesh-space lines as an SVG document of the image's size (pixel units),
         one group per kind, one ``<polyline>`` per stroke, stroked in its kind's colour and
         width.
@@ -206,8 +207,9 @@ class RenderResult:
                 pen stopped, drawn from that end (greedy nearest neighbour, as vpype's
                 ``linesort``), so a pen plotter travels little with the pen up.
             simplify: drop points within this many pixels of the stroke (Douglas-Peucker;
-                default 0, every point kept); 0.25 keeps the drawing the same to the eye with a
-                fraction of the points.
+                default 0.25: the drawing stays the same to the eye, with a fraction of the
+                points and without the sub-pixel wobble of contours traced on scans); 0 keeps
+                every point.
         """
         _strokes.check(order, simplify)
         if self.lines is None or self.line_kinds is None:
@@ -235,7 +237,7 @@ class RenderResult:
         out.append("</svg>")
         return "\n".join(out) + "\n"
 
-    def save_svg(self, path: Any, *, order: str = "drawing", simplify: float = 0.0) -> None:
+    def save_svg(self, path: Any, *, order: str = "drawing", simplify: float = _strokes.SIMPLIFY) -> None:
         """Writes :meth:`svg` (with its ``order`` and ``simplify``) to ``path``."""
         text = self.svg(order=order, simplify=simplify)
         with open(path, "w", encoding="utf-8") as f:

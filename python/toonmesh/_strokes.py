@@ -11,6 +11,10 @@ import numpy as np
 
 ORDERS = ("drawing", "plotter")
 
+#: Default tolerance of the SVG's strokes, in pixels: a quarter pixel keeps the drawing the same
+#: to the eye.
+SIMPLIFY = 0.25
+
 
 def check(order: str, simplify: float) -> None:
     """Refuses an unknown order or a tolerance that is not a finite number >= 0."""

@@ -18,6 +18,7 @@ use super::silhouette::View;
 use super::zero_set::{zero_set, Polylines};
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
+use crate::mesh::crease_normals::{split_normals, ListedEdges};
 use crate::mesh::curvature::{curvature, Curvature};
 use crate::mesh::normals::vertex_normals;
 use crate::mesh::weld::{weld_faces, weld_map};
@@ -40,6 +41,22 @@ impl ContourMesh {
         let normals = vertex_normals(positions, &faces);
         let positions = positions.par_iter().map(|p| p.map(|x| x.to_f64())).collect();
         ContourMesh { positions, faces, normals, curvature: OnceLock::new() }
+    }
+
+    /// A mesh whose smooth contours stop at hard edges: vertices split into their fans at the
+    /// edges of `hard` (sorted, [smaller, larger] index, in the welded numbering when welding)
+    /// and at boundary and non-manifold edges (`mesh::crease_normals`), each fan with its own
+    /// normal.
+    pub fn split_at<T: Real>(
+        positions: &[Vec3<T>],
+        faces: &[[u32; 3]],
+        weld: bool,
+        hard: &[[u32; 2]],
+    ) -> Result<ContourMesh> {
+        let faces = if weld { weld_faces(faces, &weld_map(positions)) } else { faces.to_vec() };
+        let split = split_normals(positions, &faces, &ListedEdges(hard))?;
+        let positions = split.source.par_iter().map(|&s| positions[s as usize].map(|x| x.to_f64())).collect();
+        Ok(ContourMesh { positions, faces: split.faces, normals: split.normals, curvature: OnceLock::new() })
     }
 
     /// Smooth contours of one view.

@@ -36,6 +36,27 @@ pub struct SplitNormals {
     pub faces: Vec<[u32; 3]>,
 }
 
+/// Which edges split the fans (besides boundary, non-manifold and degenerate faces' edges).
+pub trait HardEdges: Sync {
+    /// Whether the edge (v, u) between faces with unit normals `na` and `nb` is hard.
+    fn is_hard(&self, v: u32, u: u32, na: [f64; 3], nb: [f64; 3]) -> bool;
+}
+
+impl HardEdges for CreaseTest {
+    fn is_hard(&self, _: u32, _: u32, na: [f64; 3], nb: [f64; 3]) -> bool {
+        self.is_crease(na, nb)
+    }
+}
+
+/// The edges of a list, each [smaller, larger] index, sorted.
+pub struct ListedEdges<'a>(pub &'a [[u32; 2]]);
+
+impl HardEdges for ListedEdges<'_> {
+    fn is_hard(&self, v: u32, u: u32, _: [f64; 3], _: [f64; 3]) -> bool {
+        self.0.binary_search(&[v.min(u), v.max(u)]).is_ok()
+    }
+}
+
 /// Splits every vertex into its fans at edges sharper than `crease_angle` degrees (and at
 /// boundary, non-manifold and degenerate faces' edges). Faces index `positions` (checked by
 /// the caller).
@@ -44,7 +65,16 @@ pub fn crease_normals<T: Real>(
     faces: &[[u32; 3]],
     crease_angle: f64,
 ) -> Result<SplitNormals> {
-    let test = CreaseTest::new(crease_angle)?;
+    split_normals(positions, faces, &CreaseTest::new(crease_angle)?)
+}
+
+/// Splits every vertex into its fans at the edges `hard` names (and at boundary, non-manifold
+/// and degenerate faces' edges).
+pub fn split_normals<T: Real>(
+    positions: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    test: &impl HardEdges,
+) -> Result<SplitNormals> {
     let n = positions.len();
     let ((buckets, unit), area) = rayon::join(
         || rayon::join(|| Buckets::corners_with_ids(n, faces), || face_normals(positions, faces)),
@@ -70,7 +100,7 @@ pub fn crease_normals<T: Real>(
                     prefetch(&unit, (c[2] / 3) as usize);
                 }
                 let at = buckets.start[v] as usize - base..buckets.start[v + 1] as usize - base;
-                fans[k] = scratch.group(v as u32, ring(v), &unit, &test, &mut fan[at]);
+                fans[k] = scratch.group(v as u32, ring(v), &unit, test, &mut fan[at]);
             }
         });
 
@@ -171,7 +201,7 @@ impl FanScratch {
         v: u32,
         corners: &[RingCorner],
         unit: &[[f64; 3]],
-        test: &CreaseTest,
+        test: &impl HardEdges,
         fan: &mut [u32],
     ) -> u32 {
         match group_closed_fan(v, corners, unit, test, fan) {
@@ -187,7 +217,7 @@ impl FanScratch {
         v: u32,
         corners: &[RingCorner],
         unit: &[[f64; 3]],
-        test: &CreaseTest,
+        test: &impl HardEdges,
         fan: &mut [u32],
     ) -> u32 {
         let r = corners.len();
@@ -206,7 +236,7 @@ impl FanScratch {
         for run in self.ends.chunk_by(|a, b| a >> 32 == b >> 32) {
             if let &[a, b] = run {
                 let (ka, kb) = (((a as u32) >> 1) as usize, ((b as u32) >> 1) as usize);
-                join_if_smooth(&mut self.parent, corners, ka, kb, unit, test);
+                join_if_smooth(&mut self.parent, corners, [v, (a >> 32) as u32], ka, kb, unit, test);
             }
         }
         self.label.clear();
@@ -225,7 +255,7 @@ fn group_closed_fan(
     v: u32,
     corners: &[RingCorner],
     unit: &[[f64; 3]],
-    test: &CreaseTest,
+    test: &impl HardEdges,
     fan: &mut [u32],
 ) -> Option<u32> {
     let r = corners.len();
@@ -253,25 +283,27 @@ fn group_closed_fan(
     }
     let mut parent: [u32; 8] = std::array::from_fn(|k| k as u32);
     for (a, b) in after[..r].iter().zip(&before[..r]) {
-        join_if_smooth(&mut parent, corners, *a as u32 as usize, *b as u32 as usize, unit, test);
+        let edge = [v, (a >> 32) as u32];
+        join_if_smooth(&mut parent, corners, edge, *a as u32 as usize, *b as u32 as usize, unit, test);
     }
     Some(number_fans(&mut parent[..r], &mut [NO_FAN; 8][..r], fan))
 }
 
-/// Joins corners `ka` and `kb` (the two face-edges of one edge at v) when their faces are
-/// different, both have normals and do not meet at a crease.
+/// Joins corners `ka` and `kb` (the two face-edges of `edge`, [v, u]) when their faces are
+/// different, both have normals and the edge is not hard.
 #[inline]
 fn join_if_smooth(
     parent: &mut [u32],
     corners: &[RingCorner],
+    edge: [u32; 2],
     ka: usize,
     kb: usize,
     unit: &[[f64; 3]],
-    test: &CreaseTest,
+    test: &impl HardEdges,
 ) {
     let (fa, fb) = (corners[ka][2] / 3, corners[kb][2] / 3);
     let (na, nb) = (unit[fa as usize], unit[fb as usize]);
-    if fa != fb && is_defined(na) && is_defined(nb) && !test.is_crease(na, nb) {
+    if fa != fb && is_defined(na) && is_defined(nb) && !test.is_hard(edge[0], edge[1], na, nb) {
         // roots are each fan's first corner
         join(parent, ka, kb);
     }

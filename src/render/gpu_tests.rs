@@ -160,7 +160,8 @@ fn band_borders_blended_over_a_pixel_match_the_cpu_reference_on_both_backends() 
         for model in &models {
             let material = Material { model: model.clone(), ..Material::default() };
             let scene = sphere_scene(&r, material, NormalMode::Smooth);
-            let frame = FrameSpec { band_antialias: true, ..all_outputs(161, 97) };
+            let frame = all_outputs(161, 97);
+            assert!(frame.band_antialias, "blended by default");
             let out = r.render(&scene, &frame).unwrap();
             let (ok, covered) = agreement_of(&scene, &out, true);
             assert!(covered > 3000, "{backend:?} model {}: {covered} pixels", model.id());
@@ -169,7 +170,7 @@ fn band_borders_blended_over_a_pixel_match_the_cpu_reference_on_both_backends() 
             // edge: a border pixel there may blend a little differently
             assert!(ok >= 0.98, "{backend:?} model {}: only {ok} of covered pixels match", model.id());
             // and the borders are blended: tones between the bands show
-            let hard = r.render(&scene, &all_outputs(161, 97)).unwrap();
+            let hard = r.render(&scene, &FrameSpec { band_antialias: false, ..frame }).unwrap();
             let distinct = |o: &RenderOutput| {
                 let mut c: Vec<[u8; 3]> =
                     o.bytes(Output::Color).unwrap().chunks(4).map(|p| [p[0], p[1], p[2]]).collect();
@@ -203,7 +204,8 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
                 effects: Default::default(),
             };
             let scene = sphere_scene(&r, material, NormalMode::Smooth);
-            let out = r.render(&scene, &all_outputs(161, 97)).unwrap();
+            let hard = FrameSpec { band_antialias: false, ..all_outputs(161, 97) };
+            let out = r.render(&scene, &hard).unwrap();
             let (ok, covered) = agreement(&scene, &out);
             assert!(covered > 3000, "{backend:?} model {}: the sphere covers {covered} pixels", model.id());
             // band and threshold edges: a pixel whose L.n lies within f16-free f32 rounding of a
@@ -282,7 +284,8 @@ fn screen_lines(
     let mut lines = Vec::new();
     for (item, rec) in scene.items.iter().zip(&p.records) {
         let view = stored_view(&p.cam, item.model_matrix(), &rec.gpu);
-        let outline = MeshLines::of(rec).outline(&rec.host, view, outlines).unwrap();
+        let flat = rec.gpu.normals == super::gpu_mesh::NormalMode::Flat;
+        let outline = MeshLines::of(rec).outline(&rec.host, flat, view, outlines).unwrap();
         let projector = Projector::of(item, &rec.gpu.placement, &p.cam, frame.width, frame.height);
         let pos = &rec.host.positions;
         lines.extend(
@@ -309,7 +312,7 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
     use super::effects::outlines::settings::ContourRule;
     use super::effects::outlines::settings::INK_KINDS;
     use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
-    let faces = Outlines { crease_angle: 25.0, ..Outlines::new(true, false) };
+    let faces = Outlines { crease_angle: 25.0, contours: ContourRule::Faces, ..Outlines::new(true, false) };
     // smooth contours: lines through the faces, drawn by the same pass
     let smooth = Outlines { contours: ContourRule::Smooth, ..faces.clone() };
     for (backend, outlines) in backends().into_iter().flat_map(|b| [(b, faces.clone()), (b, smooth.clone())])

@@ -173,23 +173,38 @@ impl PyMaterial {
 
     /// Borquez and Yepez's toon bands: f = values[k], k = number of thresholds t with L.n >= t.
     ///
-    /// Defaults are the paper's: thresholds (0.2, 0.5, 0.7, 0.9) and values (0, 0.2, 0.7, 0.9,
-    /// 1), so L.n >= 0.9 -> 1.0, 0.7-0.9 -> 0.9, 0.5-0.7 -> 0.7, 0.2-0.5 -> 0.2, below -> 0,
-    /// times ``color``. 1 to 8 strictly increasing thresholds, and one value more (each >= 0).
+    /// Thresholds default to the paper's (0.2, 0.5, 0.7, 0.9). Values default to (0.3, 0.45,
+    /// 0.7, 0.9, 1): L.n >= 0.9 -> 1.0, 0.7-0.9 -> 0.9, 0.5-0.7 -> 0.7, 0.2-0.5 -> 0.45, below
+    /// (and in shadow) -> 0.3, times ``color`` in linear light, so the darkest tone keeps the
+    /// material's hue and black ink shows over it. ``preset="paper"`` takes the paper's values
+    /// (0, 0.2, 0.7, 0.9, 1) instead: a black darkest band, as in its figures. 1 to 8 strictly
+    /// increasing thresholds, and one value more (each >= 0).
     /// dither (here and on the other toon models): None (default), a pattern name or a
     /// :class:`Dither`; needs per-pixel shading.
     #[staticmethod]
-    #[pyo3(signature = (color = None, *, thresholds = None, values = None, per_vertex = None, dither = None))]
+    #[pyo3(signature = (color = None, *, thresholds = None, values = None, preset = None, per_vertex = None,
+                        dither = None))]
     fn bands(
         color: Obj<'_, '_>,
         thresholds: Obj<'_, '_>,
         values: Obj<'_, '_>,
+        preset: Obj<'_, '_>,
         per_vertex: Obj<'_, '_>,
         dither: Obj<'_, '_>,
     ) -> PyResult<Self> {
         dithered(
             (|| {
                 let (t, v) = bands_args(thresholds, values)?;
+                let v = match preset.map(|p| text("preset", p)).transpose()?.as_deref() {
+                    None => v,
+                    Some("paper") => v.or_else(|| Some(model::PAPER_BAND_VALUES.to_vec())),
+                    Some(other) => {
+                        return Err(Error::invalid(
+                            "preset",
+                            format!("must be None or 'paper', got {other:?}"),
+                        ))
+                    }
+                };
                 Material::bands(color_or("color", color)?, t, v, flag_or("per_vertex", per_vertex, false)?)
             })(),
             dither,
@@ -205,7 +220,8 @@ impl PyMaterial {
     /// any distance, and give the same bits for the same scene.
     ///
     /// color: the paper (default white); ink: the strokes (default (0.1, 0.1, 0.1));
-    /// thresholds, values, dither and per_vertex as in :meth:`bands`.
+    /// thresholds, values (default: the paper's, (0, 0.2, 0.7, 0.9, 1), so that the darkest
+    /// tone gets every layer), dither and per_vertex as in :meth:`bands`.
     #[staticmethod]
     #[pyo3(signature = (color = None, *, ink = None, thresholds = None, values = None, spacing = None,
                         width = None, per_vertex = None, dither = None))]
@@ -230,6 +246,8 @@ impl PyMaterial {
                 };
                 h.validate("")?;
                 let (t, v) = bands_args(thresholds, values)?;
+                // the tone picks the number of stroke layers: the paper's values reach all of them
+                let v = v.or_else(|| Some(model::PAPER_BAND_VALUES.to_vec()));
                 let m = Material::bands(
                     opt_rgb("color", color)?.unwrap_or([1.0; 3]),
                     t,

@@ -13,7 +13,7 @@ use crate::render::effects::surface::SurfaceSettings;
 use crate::render::effects::surface_effect::Surface;
 
 use super::model::{
-    Highlight, Model, DEFAULT_SHININESS, DEFAULT_T_H, DEFAULT_T_S, PAPER_BAND_THRESHOLDS, PAPER_BAND_VALUES,
+    Highlight, Model, DEFAULT_BAND_VALUES, DEFAULT_SHININESS, DEFAULT_T_H, DEFAULT_T_S, PAPER_BAND_THRESHOLDS,
 };
 use crate::error::field;
 
@@ -112,7 +112,9 @@ impl Material {
         )
     }
 
-    /// Borquez and Yepez's bands (the paper's thresholds and values by default) times `color`.
+    /// Borquez and Yepez's bands times `color`: the paper's thresholds, and by default values
+    /// whose darkest tone keeps the colour (`DEFAULT_BAND_VALUES`; the paper's own values are
+    /// `PAPER_BAND_VALUES`).
     pub fn bands(
         color: Srgb,
         thresholds: Option<Vec<f32>>,
@@ -122,7 +124,7 @@ impl Material {
         Self::with_model(
             Model::Bands {
                 thresholds: thresholds.unwrap_or_else(|| PAPER_BAND_THRESHOLDS.to_vec()),
-                values: values.unwrap_or_else(|| PAPER_BAND_VALUES.to_vec()),
+                values: values.unwrap_or_else(|| DEFAULT_BAND_VALUES.to_vec()),
             },
             [0.0; 3],
             color,
@@ -180,7 +182,7 @@ mod tests {
         let m = Material::default();
         assert_eq!(
             m.model,
-            Model::Bands { thresholds: PAPER_BAND_THRESHOLDS.to_vec(), values: PAPER_BAND_VALUES.to_vec() }
+            Model::Bands { thresholds: PAPER_BAND_THRESHOLDS.to_vec(), values: DEFAULT_BAND_VALUES.to_vec() }
         );
         assert_eq!(m.diffuse, DEFAULT_COLOR);
         let l = Material::lambert([1.0, 1.0, 1.0], None, false).unwrap();

@@ -38,7 +38,8 @@ pub struct FrameSpec {
     /// The shading pass runs at this many times the size in each direction, then is averaged down.
     pub supersample: u32,
     /// Blend across each band border (and threshold) over about one pixel, from the screen-space
-    /// derivative of the shading term: antialiased tones at no extra samples.
+    /// derivative of the shading term: antialiased tones at no extra samples (on by default;
+    /// off gives the hard borders of the papers' figures).
     #[serde(default)]
     pub band_antialias: bool,
     /// sRGB colour and alpha of pixels no mesh covers.
@@ -53,7 +54,7 @@ impl Default for FrameSpec {
             outputs: Outputs::of(&[Output::Color]),
             msaa: 1,
             supersample: 1,
-            band_antialias: false,
+            band_antialias: true,
             background: [1.0, 1.0, 1.0, 1.0],
         }
     }

@@ -17,6 +17,10 @@ pub const MAX_BANDS: usize = 8;
 /// Borquez and Yepez's bands: L.n thresholds and the value of each band.
 pub const PAPER_BAND_THRESHOLDS: [f32; 4] = [0.2, 0.5, 0.7, 0.9];
 pub const PAPER_BAND_VALUES: [f32; 5] = [0.0, 0.2, 0.7, 0.9, 1.0];
+/// The bands' values when none are given: the paper's thresholds, but the darkest tone keeps
+/// 30% of the colour (Kang et al.'s darkest tone) instead of going black, so the shadow side
+/// keeps the material's hue and black ink stays visible over it.
+pub const DEFAULT_BAND_VALUES: [f32; 5] = [0.3, 0.45, 0.7, 0.9, 1.0];
 /// Al-Rousan et al.'s thresholds: diffuse at L.n >= 0, a small highlight.
 pub const DEFAULT_T_H: f32 = 0.0;
 pub const DEFAULT_T_S: f32 = 0.95;

@@ -4,8 +4,9 @@
 //! view-independent lines for each crease angle, so that each view only runs the silhouette
 //! test.
 
+use std::collections::HashMap;
 use std::ops::Range;
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use glam::{DMat4, DVec3};
 
@@ -17,7 +18,7 @@ use crate::edges::zero_set::Polylines;
 use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
 use crate::mesh::Bounds;
-use crate::render::gpu_mesh::{GpuMesh, HostMesh};
+use crate::render::gpu_mesh::{GpuMesh, HostMesh, NormalMode};
 use crate::render::graph::effect::{HostInputs, HostStep};
 use crate::render::graph::report::FrameReport;
 use crate::render::mesh_record::MeshRecord;
@@ -33,6 +34,15 @@ pub struct MeshLines {
     statics: [Statics; 2],
     /// Without and with welding: the normals and curvature the contours are traced on.
     contours: [OnceLock<ContourMesh>; 2],
+    /// The mesh split at the creases drawn under each (welding, crease angle, shortest crease).
+    split: Mutex<HashMap<(bool, u64, u64), Arc<SplitContours>>>,
+}
+
+/// A mesh split at its drawn creases (smooth contours run between them) and those hard edges,
+/// sorted, with its non-manifold edges: where the face-edge rule draws the silhouette.
+struct SplitContours {
+    mesh: ContourMesh,
+    hard: Vec<[u32; 2]>,
 }
 
 /// One view's lines of a mesh: edges with their kinds, and the lines traced through faces
@@ -62,10 +72,39 @@ impl MeshLines {
         })
     }
 
-    /// The lines of one view (`view` in the mesh's stored coordinates): silhouettes (face edges
-    /// or smooth contours, as `outlines.contours` says), then the cached view-independent lines,
-    /// and suggestive contours, keeping the kinds `outlines` draws.
-    pub fn outline(&self, host: &HostMesh, view: View, outlines: &Outlines) -> Result<MeshOutline> {
+    /// The mesh split at the creases `statics` draws (and non-manifold edges), for the smooth
+    /// rule: where a crease line is drawn, the silhouette follows the face edges.
+    fn split(&self, host: &HostMesh, outlines: &Outlines, statics: &Outline) -> Result<Arc<SplitContours>> {
+        let key = (outlines.weld, outlines.crease_angle.to_bits(), outlines.min_crease_length.to_bits());
+        if let Some(s) = self.split.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+            return Ok(s.clone());
+        }
+        let hard: Vec<[u32; 2]> = statics
+            .edges
+            .iter()
+            .zip(&statics.kinds)
+            .filter(|(_, k)| matches!(k, LineKind::Ridge | LineKind::Valley | LineKind::NonManifold))
+            .map(|(e, _)| *e)
+            .collect();
+        let mesh = crate::parallel::install(|| {
+            ContourMesh::split_at(&host.positions, &host.faces, outlines.weld, &hard)
+        })?;
+        let s = Arc::new(SplitContours { mesh, hard });
+        self.split.lock().unwrap_or_else(|e| e.into_inner()).insert(key, s.clone());
+        Ok(s)
+    }
+
+    /// The lines of one view (`view` in the mesh's stored coordinates): silhouettes (face edges,
+    /// or smooth contours between creases and face edges on them, as `outlines.contours` says
+    /// for a mesh drawn with `flat` normals or not), then the cached view-independent lines, and
+    /// suggestive contours, keeping the kinds `outlines` draws.
+    pub fn outline(
+        &self,
+        host: &HostMesh,
+        flat: bool,
+        view: View,
+        outlines: &Outlines,
+    ) -> Result<MeshOutline> {
         let draws = |k: LineKind| outlines.styles[k as usize].is_some();
         let index = self.index(host, outlines.weld)?;
         let min_crease = outlines.min_crease_length;
@@ -76,15 +115,18 @@ impl MeshLines {
             Ok(fe)
         })?;
         let mut curves = Vec::new();
-        let all = if draws(LineKind::Silhouette) && outlines.contours == ContourRule::Faces {
+        let all = if !draws(LineKind::Silhouette) {
+            (*statics).clone()
+        } else if outlines.contours.resolve(flat) == ContourRule::Faces {
             let sil = crate::parallel::install(|| index.silhouette(view))?;
             statics.with_silhouettes(&sil)
         } else {
-            if draws(LineKind::Silhouette) {
-                let m = self.contour_mesh(host, outlines.weld);
-                curves.push((LineKind::Silhouette, crate::parallel::install(|| m.smooth(view))));
-            }
-            (*statics).clone()
+            let split = self.split(host, outlines, &statics)?;
+            let (smooth, sil) = crate::parallel::install(|| {
+                rayon::join(|| split.mesh.smooth(view), || index.silhouette(view))
+            });
+            curves.push((LineKind::Silhouette, smooth));
+            statics.with_silhouettes(&sorted_intersection(&sil?, &split.hard))
         };
         if draws(LineKind::Suggestive) {
             let m = self.contour_mesh(host, outlines.weld);
@@ -95,6 +137,24 @@ impl MeshLines {
         let (edges, kinds) = all.edges.iter().zip(&all.kinds).filter(|(_, k)| draws(**k)).unzip();
         Ok(MeshOutline { edges: Outline { edges, kinds }, curves })
     }
+}
+
+/// The edges in both sorted lists.
+fn sorted_intersection(a: &[[u32; 2]], b: &[[u32; 2]]) -> Vec<[u32; 2]> {
+    let mut out = Vec::new();
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        match a[i].cmp(&b[j]) {
+            std::cmp::Ordering::Less => i += 1,
+            std::cmp::Ordering::Greater => j += 1,
+            std::cmp::Ordering::Equal => {
+                out.push(a[i]);
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+    out
 }
 
 /// The view of `cam` in a mesh's stored coordinates (for its silhouette test). The mesh's
@@ -157,7 +217,8 @@ impl HostStep for Silhouettes {
         let mut lines = ViewLines::default();
         for (i, (item, rec)) in cx.scene.scene.items.iter().zip(cx.records).enumerate() {
             let view = stored_view(cx.cam, item.model_matrix(), &rec.gpu);
-            let outline = MeshLines::of(rec).outline(&rec.host, view, &self.outlines)?;
+            let flat = rec.gpu.normals == NormalMode::Flat;
+            let outline = MeshLines::of(rec).outline(&rec.host, flat, view, &self.outlines)?;
             let first = lines.instances.len() as u32;
             let p = &rec.host.positions;
             let instance = |a: [f64; 3], b: [f64; 3], kind: LineKind| LineInstance {

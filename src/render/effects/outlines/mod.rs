@@ -10,6 +10,7 @@ pub mod ink;
 pub mod lines;
 pub mod mesh_lines;
 pub mod settings;
+pub mod strokes;
 pub mod visibility;
 
 use std::sync::Arc;
@@ -157,9 +158,11 @@ impl FrameEffect for OutlinesEffect {
             }
             if visible {
                 steps.host_depth = true;
-                steps
-                    .host_after
-                    .push(Box::new(visibility::VisibleLines { depth_offset: outlines.depth_offset, view }));
+                steps.host_after.push(Box::new(visibility::VisibleLines {
+                    depth_offset: outlines.depth_offset,
+                    gaps: strokes::gaps(outlines),
+                    view,
+                }));
             }
         }
         if outline {

@@ -30,8 +30,24 @@ crate::named_enum! {
         /// flat-shaded meshes; on scans they follow the triangulation in staircases.
         Faces = "faces",
         /// The smooth contour (Hertzmann and Zorin): where n . v = 0 for the interpolated vertex
-        /// normals, traced through the faces.
+        /// normals, traced through the faces, with the normals split at creases (edges sharper
+        /// than `crease_angle`, as `normals="auto"` splits them); on a crease edge itself, the
+        /// face-edge rule. A curved scan gets long smooth strokes and a cube its edges.
         Smooth = "smooth",
+        /// `Smooth` for meshes drawn with smooth or auto normals, `Faces` for flat-shaded ones:
+        /// the silhouette the shading shows.
+        Auto = "auto",
+    }
+}
+
+impl ContourRule {
+    /// The rule for a mesh drawn with `flat` normals or not.
+    pub fn resolve(self, flat: bool) -> ContourRule {
+        match self {
+            ContourRule::Auto if flat => ContourRule::Faces,
+            ContourRule::Auto => ContourRule::Smooth,
+            rule => rule,
+        }
     }
 }
 
@@ -149,7 +165,7 @@ impl Outlines {
             mesh,
             image,
             styles,
-            contours: ContourRule::Faces,
+            contours: ContourRule::Auto,
             suggestive_threshold: DEFAULT_SUGGESTIVE_THRESHOLD,
             crease_angle: DEFAULT_CREASE_ANGLE,
             min_crease_length: DEFAULT_MIN_CREASE_LENGTH,

@@ -16,6 +16,8 @@ use crate::render::scene::SceneItem;
 use crate::render::uniforms::{footprint, model_view};
 
 use super::mesh_lines::ViewSlot;
+use super::settings::INK_KINDS;
+use super::strokes::join_runs;
 
 /// The relative depth tolerance of the visibility test (float rounding of the line's own depth).
 pub const DEPTH_EPSILON: f64 = 1e-5;
@@ -247,10 +249,13 @@ pub fn visible_runs(
 }
 
 /// The `visible_lines` step: the view's lines, chained per kind and mesh, cut to their visible
-/// runs against the frame's depth (`RenderResult.lines`).
+/// runs against the frame's depth, and runs of a kind that meet (within `gaps`) joined into
+/// strokes (`RenderResult.lines`).
 #[derive(Debug)]
 pub struct VisibleLines {
     pub depth_offset: f32,
+    /// Runs of one kind whose ends are this close (pixels) are joined (`strokes::join_runs`).
+    pub gaps: [f64; INK_KINDS],
     pub view: ViewSlot,
 }
 
@@ -273,6 +278,7 @@ impl HostStep for VisibleLines {
         for ((item, rec), outline) in cx.scene.scene.items.iter().zip(cx.records).zip(&view.outlines) {
             let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
             let positions = &rec.host.positions;
+            let mut mesh_runs = Vec::new();
             let visible = |points: &[[f64; 3]], kind: usize, out: &mut Vec<Polyline>| {
                 let screen: Vec<_> =
                     points.windows(2).filter_map(|s| projector.project(s[0], s[1], kind)).collect();
@@ -298,14 +304,15 @@ impl HostStep for VisibleLines {
                 for w in starts.windows(2) {
                     let points: Vec<[f64; 3]> =
                         flat[w[0] as usize..w[1] as usize].iter().map(|&v| positions[v as usize]).collect();
-                    visible(&points, kind as usize, &mut out);
+                    visible(&points, kind as usize, &mut mesh_runs);
                 }
             }
             for (kind, curves) in &outline.curves {
                 for i in 0..curves.len() {
-                    visible(curves.line(i), *kind as usize, &mut out);
+                    visible(curves.line(i), *kind as usize, &mut mesh_runs);
                 }
             }
+            out.extend(join_runs(std::mem::take(&mut mesh_runs), true, |k| self.gaps[k]));
         }
         report.lines = Some(out);
         Ok(())

@@ -1,0 +1,186 @@
+//! Visible runs joined into strokes: a line cut into runs by hidden-line removal flickers where a
+//! point of it dips behind the surface for a sample or two, and lines of one kind meet end to end
+//! where chains of edges and curves through faces meet. Ends of runs closer than a gap (in
+//! pixels) are joined, nearest pairs first, so that a contour is drawn as one long stroke, not as
+//! dashes a pixel apart.
+
+use std::collections::HashMap;
+
+use super::settings::{Outlines, INK_KINDS};
+use crate::render::graph::report::Polyline;
+
+/// The widest gap between runs joined into one stroke, in pixels: a line's own width (a gap no
+/// wider than the ink barely shows), at least 1.5 pixels (the half-pixel visibility samples of
+/// `visibility::visible_runs` on both sides of a single hidden sample).
+pub const MIN_JOIN_GAP: f64 = 1.5;
+
+/// The join gap of each ink kind under `outlines`.
+pub fn gaps(outlines: &Outlines) -> [f64; INK_KINDS] {
+    std::array::from_fn(|k| outlines.styles[k].map_or(MIN_JOIN_GAP, |s| (s.width as f64).max(MIN_JOIN_GAP)))
+}
+
+/// Joins the ends of `runs` that lie within `gap(kind)` pixels of each other, nearest first,
+/// each end at most once, keeping runs of different kinds apart when `by_kind`. A run whose own
+/// two ends meet is closed (its first point repeated). The joined runs keep the kind of their
+/// longest part, and come in the order of their first part.
+pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64) -> Vec<Polyline> {
+    let n = runs.len();
+    if n == 0 {
+        return runs;
+    }
+    let cell = (0..n).map(|i| gap(runs[i].kind)).fold(0.0f64, f64::max).max(1e-9);
+    // ends: 2 i (run i's first point) and 2 i + 1 (its last), in a grid of `cell` pixels
+    let end = |e: usize| {
+        let p = &runs[e / 2].points;
+        if e % 2 == 0 {
+            p[0]
+        } else {
+            p[p.len() - 1]
+        }
+    };
+    let key = |p: [f64; 2]| ((p[0] / cell).floor() as i64, (p[1] / cell).floor() as i64);
+    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    for e in 0..2 * n {
+        if is_closed(&runs[e / 2].points) {
+            continue;
+        }
+        grid.entry(key(end(e))).or_default().push(e);
+    }
+    let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
+    for e in 0..2 * n {
+        if is_closed(&runs[e / 2].points) {
+            continue;
+        }
+        let p = end(e);
+        let (cx, cy) = key(p);
+        for dy in -1..=1 {
+            for dx in -1..=1 {
+                for &f in grid.get(&(cx + dx, cy + dy)).into_iter().flatten() {
+                    let (a, b) = (&runs[e / 2], &runs[f / 2]);
+                    if f <= e || (by_kind && a.kind != b.kind) {
+                        continue;
+                    }
+                    // a run's own ends close it only when it is longer than the gap
+                    let q = end(f);
+                    let d = (p[0] - q[0]).hypot(p[1] - q[1]);
+                    let limit = gap(a.kind).min(gap(b.kind));
+                    if d <= limit && (e / 2 != f / 2 || length(&a.points) > 2.0 * limit) {
+                        pairs.push((d, e, f));
+                    }
+                }
+            }
+        }
+    }
+    pairs.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
+    let mut partner = vec![usize::MAX; 2 * n];
+    for (_, e, f) in pairs {
+        if partner[e] == usize::MAX && partner[f] == usize::MAX {
+            // joining would close a chain through other runs: allowed (it becomes a loop)
+            partner[e] = f;
+            partner[f] = e;
+        }
+    }
+    // walk each chain from a free end (or around a loop), concatenating the runs
+    let mut used = vec![false; n];
+    let mut out = Vec::new();
+    let mut order: Vec<usize> = (0..n).collect();
+    // open chains start at a free end; loops anywhere
+    order.sort_by_key(|&i| partner[2 * i] != usize::MAX && partner[2 * i + 1] != usize::MAX);
+    let mut starts: Vec<(usize, Polyline)> = Vec::new();
+    for &i in &order {
+        if used[i] {
+            continue;
+        }
+        // enter run i through its first point when that end is free (or in a loop), else its last
+        let mut entry =
+            if partner[2 * i] == usize::MAX || partner[2 * i + 1] != usize::MAX { 2 * i } else { 2 * i + 1 };
+        let (mut points, mut parts): (Vec<[f64; 2]>, Vec<(f64, usize)>) = (Vec::new(), Vec::new());
+        let mut first = i;
+        loop {
+            let r = entry / 2;
+            if used[r] {
+                // back at the start of a loop: close it
+                if let Some(&p) = points.first() {
+                    points.push(p);
+                }
+                break;
+            }
+            used[r] = true;
+            first = first.min(r);
+            let run = &runs[r].points;
+            let forward = entry % 2 == 0;
+            let it: Box<dyn Iterator<Item = &[f64; 2]>> =
+                if forward { Box::new(run.iter()) } else { Box::new(run.iter().rev()) };
+            for &p in it {
+                if points.last() != Some(&p) {
+                    points.push(p);
+                }
+            }
+            parts.push((length(run), runs[r].kind));
+            let exit = entry ^ 1;
+            match partner[exit] {
+                usize::MAX => break,
+                next if next / 2 == r => {
+                    // the run's own ends meet
+                    points.push(points[0]);
+                    break;
+                }
+                next => entry = next,
+            }
+        }
+        let kind = parts.iter().max_by(|a, b| a.0.total_cmp(&b.0)).map_or(runs[i].kind, |p| p.1);
+        starts.push((first, Polyline { kind, points }));
+    }
+    starts.sort_by_key(|s| s.0);
+    out.extend(starts.into_iter().map(|s| s.1));
+    out
+}
+
+fn is_closed(points: &[[f64; 2]]) -> bool {
+    points.len() > 2 && points[0] == points[points.len() - 1]
+}
+
+/// Length of a polyline in pixels.
+pub fn length(points: &[[f64; 2]]) -> f64 {
+    points.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(kind: usize, points: &[[f64; 2]]) -> Polyline {
+        Polyline { kind, points: points.to_vec() }
+    }
+
+    #[test]
+    fn runs_a_pixel_apart_become_one_stroke_and_far_ones_stay_apart() {
+        let runs = vec![
+            run(0, &[[0.0, 0.0], [10.0, 0.0]]),
+            run(0, &[[21.0, 0.0], [11.0, 0.0]]), // reversed, 1 px after the first
+            run(0, &[[40.0, 0.0], [50.0, 0.0]]), // 19 px away
+            run(1, &[[21.5, 0.0], [30.0, 0.0]]), // another kind, 0.5 px after the second
+        ];
+        let joined = join_runs(runs.clone(), true, |_| 1.5);
+        assert_eq!(joined.len(), 3);
+        assert_eq!(joined[0].points, vec![[0.0, 0.0], [10.0, 0.0], [11.0, 0.0], [21.0, 0.0]]);
+        assert_eq!(joined[0].kind, 0);
+        let across = join_runs(runs, false, |_| 1.5);
+        assert_eq!(across.len(), 2);
+        assert_eq!(across[0].points.last(), Some(&[30.0, 0.0]));
+        assert_eq!(across[0].kind, 0, "the kind of the longest part");
+    }
+
+    #[test]
+    fn a_ring_of_runs_closes_and_a_speck_does_not_close_on_itself() {
+        let runs = vec![
+            run(0, &[[0.0, 0.0], [10.0, 0.0], [10.0, 10.0]]),
+            run(0, &[[10.0, 10.5], [0.0, 10.0], [0.0, 0.5]]),
+            run(0, &[[50.0, 50.0], [50.5, 50.0]]),
+        ];
+        let joined = join_runs(runs, true, |_| 1.0);
+        assert_eq!(joined.len(), 2);
+        assert!(is_closed(&joined[0].points));
+        assert_eq!(joined[1].points.len(), 2);
+    }
+}
