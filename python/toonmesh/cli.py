@@ -395,8 +395,9 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                    help="--style hatching: pixels between strokes (default %(default)g)")
     p.add_argument("--hatch-width", type=float, default=HATCHING["width"], metavar="PX",
                    help="--style hatching: stroke width in pixels (default %(default)g)")
-    p.add_argument("--band-antialias", action="store_true",
-                   help="blend across band borders over about a pixel (default: off)")
+    p.add_argument("--band-antialias", action=argparse.BooleanOptionalAction, default=tm.RenderOptions().band_antialias,
+                   help="blend across band borders over about a pixel; --no-band-antialias for the papers' hard "
+                        "borders (default: %(default)s)")
     p.add_argument("--shadows", action="store_true", help="the key light casts shadows (default: off)")
     p.add_argument("--shadow-size", type=int, default=tm.Shadows().size, metavar="TEXELS",
                    help="the shadow map's side (default %(default)d)")
