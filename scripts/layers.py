@@ -26,12 +26,12 @@ LAYERS: List[List[str]] = [
     ["edges", "edges::*", "smooth", "smooth::*"],
     # plain data: settings, uniform blocks, WGSL text, and the per-pixel effects (no device)
     [
-        "render::color", "render::block", "render::wgsl", "render::scene", "render::scene::*",
+        "render::color", "render::albedo", "render::albedo::*", "render::block", "render::wgsl", "render::scene", "render::scene::*",
         "render::effects::surface", "render::effects::surface_effect", "render::effects::hatching",
         "render::effects::dither", "render::effects::*::settings",
     ],
     # the device and the meshes on it
-    ["render::device", "render::gpu_mesh", "render::mesh_record", "render::culling", "render::reference",
+    ["render::device", "render::gpu_albedo", "render::gpu_mesh", "render::mesh_record", "render::culling", "render::reference",
      "render::image_out"],
     ["render::uniforms", "render::pipelines", "render::graph", "render::graph::*", "render::context"],
     # passes, and the frame effects with theirs

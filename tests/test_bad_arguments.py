@@ -1066,6 +1066,90 @@ def _removed(mesh: Any) -> None:
     RENDERER.remove_mesh(RENDERER.add_mesh(V, F) if mesh is HANDLE else mesh)
 
 
+def mesh_colours(n: int) -> Array:
+    """Colours of n vertices or faces: (n, 3) or (n, 4) sRGB, uint8 codes or floats in [0, 1]."""
+    base = np.linspace(0.0, 1.0, n * 3).reshape(n, 3)
+    return Array(
+        (
+            ("float64 rgb", base, OK),
+            ("float32 rgba", np.concatenate([base, np.ones((n, 1))], 1).astype(np.float32), OK),
+            ("uint8", (base * 255).astype(np.uint8), OK),
+            ("big-endian", base.astype(">f8"), OK),
+            ("fortran order", np.asfortranarray(base), OK),
+            ("nested list", base.tolist(), OK),
+            ("one too few", base[:-1], ValueError),
+            ("two channels", base[:, :2], ValueError),
+            ("five channels", np.ones((n, 5)), ValueError),
+            ("flat", base.ravel(), ValueError),
+            ("empty", np.zeros((0, 3)), ValueError),
+            ("nan", _with(base, (0, 0), np.nan), ValueError),
+            ("inf", _with(base, (0, 1), np.inf), ValueError),
+            ("negative", _with(base, (1, 1), -0.1), ValueError),
+            ("0-255 floats", base * 255, Refused(ValueError, "uint8")),  # codes get a hint
+            ("int64", (base * 255).astype(np.int64), TypeError),
+            ("float16", base.astype(np.float16), TypeError),
+            ("string", "red", TypeError),
+        )
+    )
+
+
+UV = (V[:, :2] + 1.5) / 3.0
+TEXTURE = (np.arange(4 * 4 * 3) * 5).astype(np.uint8).reshape(4, 4, 3)
+UVS = Array(
+    (
+        ("float64", UV, OK),
+        ("float32", UV.astype(np.float32), OK),
+        ("big-endian", UV.astype(">f8"), OK),
+        ("nested list", UV.tolist(), OK),
+        ("beyond [0, 1]", UV * 7 - 3, OK),  # wrapped
+        ("nan", _with(UV, (0, 0), np.nan), ValueError),
+        ("inf", _with(UV, (1, 1), np.inf), ValueError),
+        ("beyond float32", _with(UV, (0, 1), 1e300), ValueError),
+        ("one too few", UV[:-1], ValueError),
+        ("three columns", V, ValueError),
+        ("flat", UV.ravel(), ValueError),
+        ("int64", UV.astype(np.int64), TypeError),
+        ("string", "uv", TypeError),
+    )
+)
+
+
+def _pil(a: np.ndarray) -> Any:
+    from PIL import Image
+
+    return Image.fromarray(a)
+
+
+TEXTURES = Array(
+    (
+        ("uint8 rgb", TEXTURE, OK),
+        ("uint8 rgba", np.concatenate([TEXTURE, np.full((4, 4, 1), 200, np.uint8)], -1), OK),
+        ("float64", TEXTURE / 255.0, OK),
+        ("float32", (TEXTURE / 255.0).astype(np.float32), OK),
+        ("big-endian float", (TEXTURE / 255.0).astype(">f8"), OK),
+        ("fortran order", np.asfortranarray(TEXTURE), OK),
+        ("one pixel", TEXTURE[:1, :1], OK),
+        ("PIL image", _pil(TEXTURE), OK),
+        ("two channels", TEXTURE[..., :2], ValueError),
+        ("grey (H, W)", TEXTURE[..., 0], ValueError),
+        ("empty", np.zeros((0, 4, 3), np.uint8), ValueError),
+        ("nan", _with(TEXTURE / 255.0, (0, 0), np.nan), ValueError),
+        ("0-255 floats", TEXTURE.astype(np.float64) + 1, Refused(ValueError, "uint8")),
+        ("int64", TEXTURE.astype(np.int64), TypeError),
+        ("a file name", "checker.png", TypeError),
+    )
+)
+TEXTURED = dict(uv=UV, texture=TEXTURE, texture_filter=None, texture_wrap=None, alpha_cutoff=None)
+TEXTURE_PARAMS = [
+    Param("uv", UVS, none=ValueError),  # a texture needs uv
+    Param("texture", TEXTURES, none=ValueError),  # and uv a texture
+    Param("texture_filter", Name(("linear", "nearest")), none=OK),
+    Param("texture_wrap", Name(("repeat", "clamp", "mirror")), none=OK),
+    Param("alpha_cutoff", Number(0.0, 1.0), none=OK),
+]
+BOTH_COLOURS = Array((("with vertex colours too", np.zeros((len(F), 3)), ValueError),))
+
+
 COLOUR_OR_NONE = Param("color", COLOUR, none=OK)
 PER_VERTEX = Param("per_vertex", Flag(), none=OK)
 T = Number(-1.0, 1.0)
@@ -1257,8 +1341,11 @@ RENDER_CASES: List[Case] = [
             Param("faces", FACES),
             Param("normals", NORMALS),
             Param("smooth_iterations", Integer(0, 10**6, slow_above=3)),
+            Param("vertex_colors", mesh_colours(N), none=OK),
+            Param("face_colors", mesh_colours(len(F)), none=OK),
         ],
     ),
+    Case("Renderer.add_mesh(textured)", _added, dict(vertices=V, faces=F, **TEXTURED), TEXTURE_PARAMS),
     Case(
         "Renderer.remove_mesh",
         _removed,
@@ -1288,7 +1375,16 @@ RENDER_CASES: List[Case] = [
             Param("material", MATERIALS, none=OK),
             Param("transform", TRANSFORMS, none=OK),
             Param("normals", NORMALS),
+            Param("vertex_colors", mesh_colours(N), none=OK),
+            Param("face_colors", mesh_colours(len(F)), none=OK),
         ],
+    ),
+    Case("Mesh(textured)", _mesh_rendered, dict(vertices=V, faces=F, **TEXTURED), TEXTURE_PARAMS),
+    Case(
+        "Mesh(vertex colours)",
+        _mesh_rendered,
+        dict(vertices=V, faces=F, vertex_colors=np.ones((N, 3))),
+        [Param("face_colors", BOTH_COLOURS, none=OK)],
     ),
     Case(
         "Material.lambert",

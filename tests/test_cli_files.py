@@ -182,3 +182,15 @@ def test_the_readme_commands_run_as_written_in_an_empty_folder(tmp_path, capsys,
         assert set(z.files) == named
         starts, points = z["starts"], z["points"]
         assert starts[0] == 0 and starts[-1] == len(points) and len(z["kinds"]) == len(starts) - 1
+
+
+def test_render_draws_a_glb_in_its_own_colours(tmp_path, capsys):
+    from test_load import coloured_scene, hues
+
+    path = coloured_scene(tmp_path / "coloured.glb")
+    in_process(capsys, "render", path, "-o", str(tmp_path / "c.png"), "--size", "120x60", "--outlines", "none")
+    red, blue = hues(read_png(tmp_path / "c.png"))
+    assert red > 0.4 and blue > 0.2, (red, blue)
+    in_process(capsys, "render", path, "-o", str(tmp_path / "g.png"), "--size", "120x60", "--color", "#00ff00")
+    red, blue = hues(read_png(tmp_path / "g.png"))
+    assert red < 0.05 and blue < 0.05  # --color multiplies them: green light on red and blue

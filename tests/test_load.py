@@ -155,8 +155,8 @@ def test_a_scene_and_a_path_render_like_the_merged_mesh_and_upload_once(tmp_path
     camera = tm.Camera.look_at((3.0, 3.0, 8.0), (3.0, 0.0, 0.0))
     renderer = tm._render.shared_renderer(None)
     uploads = []
-    real = type(renderer).add_mesh
-    monkeypatch.setattr(type(renderer), "add_mesh", lambda self, *a, **k: uploads.append(1) or real(self, *a, **k))
+    real = type(renderer)._add  # every upload goes through it
+    monkeypatch.setattr(type(renderer), "_add", lambda self, *a, **k: uploads.append(1) or real(self, *a, **k))
     from_scene = tm.render(scene, camera=camera, width=96, height=64).color
     assert len(uploads) == 1  # one geometry, five instances
     from_path = tm.render(path, camera=camera, width=96, height=64).color
@@ -358,3 +358,52 @@ def test_a_glb_cut_short_or_claiming_more_than_it_holds_is_refused(tmp_path):
                       + text + rest)
     with pytest.raises(ValueError, match=r"claim\.glb: accessor 0 claims 1,000,000,000 elements"):
         tm.load(str(claim))
+
+
+def coloured_scene(path):
+    """Two instances of a red box and one textured blue box, as a GLB."""
+    trimesh = need("trimesh")
+    red = box(0.8)
+    red.visual.vertex_colors = np.tile([220, 20, 20, 255], (len(red.vertices), 1)).astype(np.uint8)
+    blue = box(0.8)
+    Image = need("PIL.Image")
+    texture = Image.fromarray(np.tile(np.array([20, 40, 230], np.uint8), (4, 4, 1)))
+    blue.visual = trimesh.visual.TextureVisuals(uv=np.full((len(blue.vertices), 2), 0.5),
+                                                material=trimesh.visual.material.PBRMaterial(baseColorTexture=texture))
+    s = trimesh.Scene()
+    s.add_geometry(red, geom_name="red", node_name="r0")
+    s.graph.update(frame_to="r1", frame_from=s.graph.base_frame, geometry="red",
+                   matrix=trimesh.transformations.translation_matrix([1.5, 0, 0]))
+    s.add_geometry(blue, geom_name="blue", node_name="b", transform=trimesh.transformations.translation_matrix([3, 0, 0]))
+    s.export(str(path))
+    return str(path)
+
+
+def hues(color):
+    """Shares of the covered pixels that are red-dominant and blue-dominant."""
+    rgb = color[..., :3].astype(int)
+    covered = (rgb < 245).any(axis=2)
+    red = covered & (rgb[..., 0] > rgb[..., 1] + 40) & (rgb[..., 0] > rgb[..., 2] + 40)
+    blue = covered & (rgb[..., 2] > rgb[..., 0] + 40) & (rgb[..., 2] > rgb[..., 1] + 40)
+    return red.sum() / covered.sum(), blue.sum() / covered.sum()
+
+
+def test_a_file_renders_in_its_own_colours_with_its_instances_uploaded_once(tmp_path, monkeypatch):
+    path = coloured_scene(tmp_path / "coloured.glb")
+    meshes = tm.load(path)
+    assert len(meshes) == 3
+    reds = [m for m in meshes if "vertex_colors" in m.colors]
+    assert len(reds) == 2 and reds[0].colors["vertex_colors"] is reds[1].colors["vertex_colors"]
+    assert sum("texture" in m.colors for m in meshes) == 1
+    renderer = tm._render.shared_renderer(None)
+    uploads = []
+    real = type(renderer)._add
+    monkeypatch.setattr(type(renderer), "_add", lambda self, *a, **k: uploads.append(1) or real(self, *a, **k))
+    camera = tm.Camera.look_at((1.5, 2.0, 6.0), (1.5, 0.0, 0.0))
+    color = tm.render(path, camera=camera, width=120, height=60).color
+    assert len(uploads) == 2  # the red box once for its two nodes, the blue box once
+    red, blue = hues(color)
+    assert red > 0.4 and blue > 0.2, (red, blue)  # the file's colours, not the default orange
+    # a material given is the user's: it multiplies the file's colours
+    dark = tm.render(path, camera=camera, width=120, height=60, material=tm.Material.bands("#404040")).color
+    assert dark[..., :3].astype(int).sum() < color[..., :3].astype(int).sum()

@@ -45,6 +45,7 @@ __all__ = [
     "_restore",
     "_segments",
     "_shadow_truth",
+    "_srgb_from_linear",
     "_suggestive_contours",
     "_transform",
     "_silhouette",
@@ -384,8 +385,18 @@ class Renderer:
     info: Final[Dict[str, Any]]
     mesh_count: Final[int]
     def add_mesh(
-        self, vertices: Any, faces: Any, normals: Union[str, Tuple[str, float]]
-    ) -> Tuple[int, Union[str, Tuple[str, float]]]: ...
+        self,
+        vertices: Any,
+        faces: Any,
+        normals: Union[str, Tuple[str, float]],
+        vertex_colors: Any = ...,
+        face_colors: Any = ...,
+        uv: Any = ...,
+        texture: Any = ...,
+        texture_filter: Optional[str] = ...,
+        texture_wrap: Optional[str] = ...,
+        alpha_cutoff: Optional[float] = ...,
+    ) -> Tuple[int, Union[str, Tuple[str, float]], List[str]]: ...
     def remove_mesh(self, mesh: int) -> bool: ...
     def render(self, items: Any, options: RenderOptions) -> Dict[str, Any]: ...
     def render_views(
@@ -394,6 +405,7 @@ class Renderer:
 
 def gpu_info(backend: Optional[str] = ...) -> Dict[str, Any]: ...
 def encode_png_rgba(color: Any) -> bytes: ...
+def _srgb_from_linear(values: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]: ...
 def _normal_mode(normals: Any) -> Union[str, Tuple[str, float]]: ...
 def _transform(transform: Any) -> npt.NDArray[np.float64]: ...
 def _shadow_truth(

@@ -12,12 +12,12 @@ from __future__ import annotations
 
 import os
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
-from toonmesh import _ply_strips
+from toonmesh import _colors, _ply_strips
 from toonmesh._file_checks import (
     MeshFileError, check_gltf_sizes, check_obj, check_ply, gltf_document, gltf_ignored,
 )
@@ -47,8 +47,12 @@ class Surface:
     ``uv`` (N, 2) float64 texture coordinates (origin bottom-left, as glTF after trimesh and
     OBJ); ``texture`` (H, W, 4) uint8 RGBA image (top row first); ``vertex_colors`` (N, 4) and
     ``face_colors`` (M, 4) uint8 RGBA; ``base_color`` (4,) float64 in [0, 1], the material's
-    colour factor (glTF baseColorFactor, MTL Kd) that multiplies texture and vertex colours.
-    Any of them may be None.
+    colour factor (glTF baseColorFactor, MTL Kd) that multiplies texture and vertex colours;
+    ``normals`` (N, 3) float64, the file's own vertex normals (read for ``keep_seams`` only).
+    Any of them may be None: these are what ``toonmesh smooth`` writes back. ``colors``: the
+    colour keywords of :class:`toonmesh.Mesh` that draw the geometry (its albedo, by the
+    renderer's own rule in :mod:`toonmesh._colors`), made once per geometry so that its
+    instances share them.
     """
 
     vertices: np.ndarray
@@ -60,6 +64,7 @@ class Surface:
     base_color: Optional[np.ndarray] = None
     normals: Optional[np.ndarray] = None
     name: str = ""
+    colors: Dict[str, Any] = field(default_factory=dict)
 
 
 def load(path: "str | os.PathLike[str]") -> List[Any]:
@@ -134,11 +139,29 @@ def is_scene(value: Any) -> bool:
     return hasattr(value, "graph") and hasattr(value, "geometry")
 
 
+#: The colour of the material under a file's own colours (they multiply it): white, so that
+#: they show as the file has them.
+OWN_COLOURS_WHITE = "#ffffff"
+
+
+def carries_colour(mesh: Any) -> bool:
+    """Whether a :class:`toonmesh.Mesh` has colours or a texture of its own."""
+    return any(k in getattr(mesh, "colors", {}) for k in ("vertex_colors", "face_colors", "texture"))
+
+
+def under_own_colours(meshes: List[Any], material: Any) -> List[Any]:
+    """``meshes`` with ``material`` on those that carry their own colours and name no material."""
+    for m in meshes:
+        if m.material is None and carries_colour(m):
+            m.material = material
+    return meshes
+
+
 def _mesh_of(surface: Surface, transform: Optional[np.ndarray]) -> Any:
     """The one place a :class:`Surface` becomes a :class:`toonmesh.Mesh`."""
     from toonmesh._render import Mesh
 
-    return Mesh(surface.vertices, surface.faces, transform=transform)
+    return Mesh(surface.vertices, surface.faces, transform=transform, **surface.colors)
 
 
 # ------------------------------------------------------------------------------------------------
@@ -267,14 +290,24 @@ def _surface(geom: Any, source: str, name: str, ignored: List[str], materials: b
                             f"{faces[i].tolist()}")
     surface = Surface(vertices, faces, name=name)
     visual = getattr(geom, "visual", None)
-    if visual is not None and faces is not None:
+    if visual is not None:
         _visual_into(surface, visual, ignored, materials)
+        if materials or getattr(visual, "kind", None) in ("vertex", "face"):  # not trimesh's placeholder
+            surface.colors = _colors.from_trimesh(geom)
+        ignored.extend(_UNUSED.get(n, n) for n in surface.colors.pop("unused", []))
+        if "texture" in surface.colors:  # one array, shared by the geometry's instances
+            surface.colors["texture"] = _colors.texture_array(surface.colors["texture"])
     return surface
 
 
+# what the renderer's colour rule leaves unused, in the words of the warning
+_UNUSED = {"emissiveTexture": "emissive maps", "normalTexture": "normal maps", "occlusionTexture": "occlusion maps",
+           "metallicRoughnessTexture": "metallic-roughness"}
+
+
 def _visual_into(surface: Surface, visual: Any, ignored: List[str], materials: bool) -> None:
-    """Colours, UVs, texture and base colour of a trimesh visual (UVs only when ``materials``
-    is False: the material is trimesh's placeholder)."""
+    """Colours, UVs, texture and base colour of a trimesh visual as the file holds them, for
+    writing back (UVs only when ``materials`` is False: the material is trimesh's placeholder)."""
     kind = getattr(visual, "kind", None)
     if kind == "vertex":
         surface.vertex_colors = np.asarray(visual.vertex_colors, dtype=np.uint8)
@@ -298,12 +331,6 @@ def _visual_into(surface: Surface, visual: Any, ignored: List[str], materials: b
         image = getattr(material, "image", None)
     if image is not None and surface.uv is not None:
         surface.texture = np.asarray(image.convert("RGBA"))
-    elif image is not None:
-        ignored.append("a texture without texture coordinates")
-    for attr, what in (("normalTexture", "normal maps"), ("emissiveTexture", "emissive maps"),
-                       ("occlusionTexture", "occlusion maps"), ("metallicRoughnessTexture", "metallic-roughness")):
-        if getattr(material, attr, None) is not None:
-            ignored.append(what)
 
 
 def _one_line(exc: BaseException) -> str:

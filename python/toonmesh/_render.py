@@ -10,13 +10,15 @@ README "Rendering" for the conventions of every output.
 from __future__ import annotations
 
 import contextlib
+import copy
 import os
 import threading
+import warnings
 from typing import TYPE_CHECKING, Any, Dict, Iterator, List, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 
-from toonmesh import _core, _load, _strokes
+from toonmesh import _colors, _core, _load, _strokes
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, RenderOptions, Shadows, kang_table
 from toonmesh._input import mesh_arrays
 
@@ -101,6 +103,29 @@ class Mesh:
       (0 to 180). On a finely tessellated smooth mesh it gives the smooth normals bit for bit;
       on a noisy scan (the bunny) it sharpens the few folds sharper than the angle, which is why
       it is not the default.
+
+    Colour (see README "Colour and textures"); the surface's albedo is the product of its
+    colour and its texture sample, decoded from sRGB to linear light, and multiplies the
+    material's colour (its ambient and diffuse, the paper of hatching) in every model:
+
+    - ``vertex_colors``: (N, 3) or (N, 4) sRGB(A), uint8 codes or floats in [0, 1],
+      interpolated across faces; or ``face_colors``: (M, 3) or (M, 4), flat per face (not
+      both). Default None: white.
+    - ``uv``: (N, 2) float texture coordinates, u to the right and v up (v = 0 is the image's
+      bottom row, as in OBJ files and trimesh; trimesh turns glTF's v-down coordinates over
+      when it loads them), with ``texture``: an (H, W, 3) or (H, W, 4) sRGB(A) image, uint8
+      or floats in [0, 1], top row first, or a PIL image. Each needs the other. A texture
+      larger than the device's ``max_texture_size`` is halved until it fits, with a warning.
+    - ``texture_filter``: ``"linear"`` (default: bilinear, trilinear between mip levels made
+      by a 2x2 box filter) or ``"nearest"`` (the nearest texel of the full-size image);
+      ``texture_wrap``: ``"repeat"`` (default), ``"clamp"`` or ``"mirror"`` (glTF's sampler).
+    - ``alpha_cutoff``: in [0, 1]: pixels whose alpha (colour alpha times texture alpha) is
+      below it are not drawn (glTF's alpha mask); default None: alpha is ignored.
+
+    A ``trimesh.Trimesh`` brings its own colour: vertex or face colours, or its texture (uv and
+    the material's image; for a glTF material, its base colour texture, base colour factor and
+    alpha mask). Colour keywords given replace it. Whatever is given or carried but not drawn
+    is named in a ``UserWarning``.
     """
 
     def __init__(
@@ -111,15 +136,31 @@ class Mesh:
         material: Optional[Material] = None,
         transform: Optional[Any] = None,
         normals: Normals = "smooth",
+        vertex_colors: Any = None,
+        face_colors: Any = None,
+        uv: Any = None,
+        texture: Any = None,
+        texture_filter: Optional[str] = None,
+        texture_wrap: Optional[str] = None,
+        alpha_cutoff: Optional[float] = None,
     ):
         self.handle: Optional[MeshHandle] = vertices if isinstance(vertices, MeshHandle) else None
+        given = dict(
+            vertex_colors=vertex_colors, face_colors=face_colors, uv=uv, texture=texture,
+            texture_filter=texture_filter, texture_wrap=texture_wrap, alpha_cutoff=alpha_cutoff,
+        )
         if self.handle is not None:
             if faces is not None:
                 raise TypeError("faces: must be None when vertices is a MeshHandle")
+            named = [k for k, v in given.items() if v is not None]
+            if named:
+                raise TypeError(f"{named[0]}: a MeshHandle has its colour already (give it to Renderer.add_mesh)")
             self.vertices: Optional[np.ndarray] = None
             self.faces: Optional[np.ndarray] = None
+            self.colors: Dict[str, Any] = {}
         else:
             self.vertices, self.faces = mesh_arrays(vertices, faces)
+            self.colors = _colors.gather(vertices, given, "Mesh")
         if material is not None and not isinstance(material, Material):
             raise TypeError(f"material: expected a toonmesh.Material, got {type(material).__name__}")
         self.material = material
@@ -308,17 +349,43 @@ class Renderer:
         """``"vulkan"`` or ``"gl"``."""
         return str(self.info["backend"])
 
-    def add_mesh(self, vertices: Any, faces: Any = None, *, normals: Normals = "smooth", smooth_iterations: int = 0) -> MeshHandle:
+    def add_mesh(
+        self,
+        vertices: Any,
+        faces: Any = None,
+        *,
+        normals: Normals = "smooth",
+        smooth_iterations: int = 0,
+        vertex_colors: Any = None,
+        face_colors: Any = None,
+        uv: Any = None,
+        texture: Any = None,
+        texture_filter: Optional[str] = None,
+        texture_wrap: Optional[str] = None,
+        alpha_cutoff: Optional[float] = None,
+    ) -> MeshHandle:
         """Uploads a mesh ((N, 3) float32/float64 and (M, 3) int faces, or a trimesh.Trimesh).
 
         ``normals``: ``"smooth"`` (default), ``"flat"``, ``"auto"`` (split at edges sharper than
         30 degrees) or ``("auto", degrees)``; see :class:`Mesh`. ``smooth_iterations``: Laplacian smoothing
         first (each vertex to the mean of its neighbours, n times), as in Al-Rousan et al.
+        ``vertex_colors``, ``face_colors``, ``uv``, ``texture``, ``texture_filter``,
+        ``texture_wrap``, ``alpha_cutoff``: the mesh's colour, as :class:`Mesh` describes (a
+        trimesh brings its own).
         """
+        given = dict(
+            vertex_colors=vertex_colors, face_colors=face_colors, uv=uv, texture=texture,
+            texture_filter=texture_filter, texture_wrap=texture_wrap, alpha_cutoff=alpha_cutoff,
+        )
+        return self._add(vertices, faces, normals, smooth_iterations, _colors.gather(vertices, given, "add_mesh"))
+
+    def _add(self, vertices: Any, faces: Any, normals: Normals, smooth_iterations: int, colors: Dict[str, Any]) -> MeshHandle:
         iterations = _smoothing_iterations(smooth_iterations)
         V, F = mesh_arrays(vertices, faces)
         V = _smoothed(V, F, iterations)
-        mesh_id, normals = self._engine.add_mesh(V, F, normals)
+        mesh_id, normals, notes = self._engine.add_mesh(V, F, normals, **colors)
+        for note in notes:
+            warnings.warn(note, UserWarning, stacklevel=3)
         return MeshHandle(self, mesh_id, len(V), len(F), normals)
 
     def remove_mesh(self, mesh: MeshHandle) -> None:
@@ -380,7 +447,7 @@ class Renderer:
                     key = _geometry_key(item)
                     handle = by_arrays.get(key)
                     if handle is None:
-                        handle = by_arrays[key] = self.add_mesh(item.vertices, item.faces, normals=item.normals)
+                        handle = by_arrays[key] = self._add(item.vertices, item.faces, item.normals, 0, item.colors)
                         uploaded.append(handle)
                 elif handle.renderer is not self:
                     raise ValueError(f"meshes[{i}]: the MeshHandle belongs to another Renderer")
@@ -392,9 +459,11 @@ class Renderer:
 
 
 def _geometry_key(mesh: Mesh) -> Tuple[Any, ...]:
-    """What a mesh's upload depends on: its arrays (by identity; they live as long as the
-    scene's Mesh objects do, so ids are not reused meanwhile) and its normal mode."""
-    return (id(mesh.vertices), id(mesh.faces), mesh.normals)
+    """What a mesh's upload depends on: its arrays and colour arrays (by identity; they live as
+    long as the scene's Mesh objects do, so ids are not reused meanwhile), its colour settings
+    and its normal mode."""
+    colors = tuple(sorted((k, id(v) if isinstance(v, np.ndarray) else v) for k, v in mesh.colors.items()))
+    return (id(mesh.vertices), id(mesh.faces), mesh.normals, colors)
 
 
 class RenderStack(Sequence[RenderResult]):
@@ -462,7 +531,9 @@ def render(
 
     ``vertices``: (N, 3) float32/float64 with ``faces`` (M, 3) int32/int64/uint32; or a
     ``trimesh.Trimesh``; or a ``trimesh.Scene`` or a mesh file's path (str or os.PathLike),
-    read as :func:`toonmesh.load` reads them (every node, its transform and materials); or a
+    read as :func:`toonmesh.load` reads them (every node, its transform and colours; with no
+    ``material`` given, meshes that carry colours or a texture are drawn under the default
+    shading model in white, so their colours show as the file has them); or a
     :class:`Mesh` or list of them (each with its own material and transform); None for an
     empty scene. Inputs are never modified. Meshes that share their vertex and face arrays (the
     instances of one geometry) are uploaded once.
@@ -483,13 +554,14 @@ def render(
         items = []
     elif isinstance(vertices, Mesh):
         items = [vertices]
-    elif faces is None and isinstance(vertices, (str, os.PathLike)):
-        items = [_with_normals(m, normals) for m in _load.load(vertices)]
-    elif faces is None and _load.is_scene(vertices):
-        items = [_with_normals(m, normals) for m in _load.scene_meshes(vertices)]
+    elif faces is None and (isinstance(vertices, (str, os.PathLike)) or _load.is_scene(vertices)):
+        loaded = _load.load(vertices) if isinstance(vertices, (str, os.PathLike)) else _load.scene_meshes(vertices)
+        items = [_with_normals(m, normals) for m in loaded]
+        if options.get("material") is None:  # a file's colours as it has them: under a white material
+            white = getattr(Material, opts.material.model)(_load.OWN_COLOURS_WHITE)
+            items = _load.under_own_colours(items, white)
     else:
-        V, F = mesh_arrays(vertices, faces)
-        items = [Mesh(V, F, normals=normals)]
+        items = [Mesh(vertices, faces, normals=normals)]  # a trimesh brings its colour
     if iterations:
         smoothed: Dict[Tuple[int, int], np.ndarray] = {}  # instances of one geometry: smoothed once, shared
         out = []
@@ -505,7 +577,9 @@ def render(
 
 
 def _with_vertices(m: Mesh, vertices: np.ndarray) -> Mesh:
-    return Mesh(vertices, m.faces, material=m.material, transform=m.transform, normals=m.normals)
+    smoothed = copy.copy(m)
+    smoothed.vertices = vertices
+    return smoothed
 
 
 def _with_normals(m: Mesh, normals: Normals) -> Mesh:

@@ -24,8 +24,8 @@ from typing import Any, Dict, List, Optional, Sequence
 import numpy as np
 
 from toonmesh._files import check_distinct_names, image_suffix, save_result, view_paths
-from toonmesh._load import load
-from toonmesh._render import Mesh, Normals, RenderOptions, shared_renderer
+from toonmesh._load import load, under_own_colours
+from toonmesh._render import Mesh, Normals, RenderOptions, _geometry_key, shared_renderer
 from toonmesh._views import check_views, turntable
 
 __all__ = ["render_file", "render_files"]
@@ -48,12 +48,15 @@ def render_views(
     smooth_iterations: int = 0,
     smooth_method: str = "paper",
     normals: Normals = "smooth",
+    own_colors_material: Any = None,
     **render_options: Any,
 ) -> List[Dict[str, Any]]:
     """Renders one mesh file into ``files``, one view each (a turntable about ``up`` when there
     are several files, unless ``camera`` is given with one file). ``render_options``: the
-    keywords of :class:`toonmesh.RenderOptions`. Returns one dict per file: see
-    :func:`render_files`."""
+    keywords of :class:`toonmesh.RenderOptions`. ``own_colors_material``: the material of the
+    meshes that carry their own colours or texture (default: the render's ``material``; the
+    command line gives the style in white, so that a file's colours show as they are). Returns
+    one dict per file: see :func:`render_files`."""
     t0 = time.perf_counter()
     if "camera" in render_options and len(files) != 1:
         raise ValueError("camera: give either a camera or several views, not both")
@@ -61,15 +64,18 @@ def render_views(
     options = RenderOptions(**render_options)  # checked once, before the mesh is read
     renderer = shared_renderer(backend)
     scene, handles = [], {}
+    meshes = load(mesh_path)
+    if own_colors_material is not None:
+        under_own_colours(meshes, own_colors_material)
     try:
-        for m in load(mesh_path):  # instances of one geometry share arrays: uploaded once
-            key = (id(m.vertices), id(m.faces))
+        for m in meshes:  # instances of one geometry share arrays: uploaded once
+            key = _geometry_key(m)
             if key not in handles:
                 V, iterations = m.vertices, smooth_iterations
                 if iterations and smooth_method != "paper":
                     V, iterations = _smoothed(V, m.faces, smooth_method, iterations), 0
                 # "paper": the renderer's own pre-smoothing, each vertex to its neighbours' mean
-                handles[key] = renderer.add_mesh(V, m.faces, normals=normals, smooth_iterations=iterations)
+                handles[key] = renderer.add_mesh(V, m.faces, normals=normals, smooth_iterations=iterations, **m.colors)
             scene.append(Mesh(handles[key], material=m.material, transform=m.transform))
     except BaseException:
         for h in handles.values():

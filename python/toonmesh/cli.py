@@ -27,7 +27,7 @@ from toonmesh import _core
 from toonmesh._files import (
     IMAGE_SUFFIXES, check_distinct_names, image_suffix, read_mesh, seam_normals, view_paths, write_mesh,
 )
-from toonmesh._load import read_surfaces
+from toonmesh._load import OWN_COLOURS_WHITE, read_surfaces
 from toonmesh._views import UP_AXES, up_vector, view_direction
 
 __all__ = ["main"]
@@ -190,6 +190,7 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
             raise CliError(f"--dither: not with --style {args.style} (it has no bands to dither between)")
     options: Dict[str, Any] = dict(
         width=args.size[0], height=args.size[1], material=style(**material_kw), outputs=args.outputs,
+        own_colors_material=None if args.color is not None else style(**material_kw, color=OWN_COLOURS_WHITE),
         msaa=args.msaa, supersample=args.supersample, band_antialias=args.band_antialias,
     )
     if args.shadows:
@@ -385,8 +386,8 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("--size", type=_size, default=(800, 600), metavar="WxH", help="image size in pixels (default 800x600)")
     p.add_argument("--style", choices=tuple(STYLES), default="bands", help="shading model (default: %(default)s)")
     p.add_argument("--color", default=None, metavar="#RRGGBB",
-                   help="base colour of the material (default: the style's; a file's own colours and textures "
-                        "are drawn over it)")
+                   help="base colour of the material, multiplying a file's own colours and textures (default: "
+                        "the style's, and white under a file's own colours, so that they show as they are)")
     p.add_argument("--dither", choices=("none",) + tuple(_core.DITHER_PATTERNS), default="none",
                    help="dither between neighbouring bands with this pattern (default: %(default)s)")
     p.add_argument("--dither-amount", type=float, default=tm.Dither().amount, metavar="X",

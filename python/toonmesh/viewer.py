@@ -309,7 +309,7 @@ class Viewer:
                 meshes.append(item)
                 continue
             assert item.vertices is not None and item.faces is not None
-            handle = self._renderer.add_mesh(item.vertices, item.faces, normals=item.normals, smooth_iterations=smooth_iterations)
+            handle = self._renderer._add(item.vertices, item.faces, item.normals, smooth_iterations, item.colors)
             self._uploaded.append(handle)
             meshes.append(Mesh(handle, material=item.material, transform=item.transform))
             V = item.vertices

@@ -42,7 +42,7 @@ pub fn native_order<'py>(obj: &Bound<'py, PyAny>) -> Result<Bound<'py, PyAny>> {
     Ok(obj.clone())
 }
 
-fn untyped<'a, 'py>(arg: &str, obj: &'a Bound<'py, PyAny>) -> Result<&'a Bound<'py, PyUntypedArray>> {
+pub fn untyped<'a, 'py>(arg: &str, obj: &'a Bound<'py, PyAny>) -> Result<&'a Bound<'py, PyUntypedArray>> {
     obj.cast::<PyUntypedArray>()
         .map_err(|_| Error::wrong_type(arg, format!("expected a NumPy array, got {}", type_name(obj))))
 }
@@ -51,7 +51,7 @@ fn type_name(obj: &Bound<'_, PyAny>) -> String {
     obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "an unknown type".into())
 }
 
-fn dtype_name(a: &Bound<'_, PyUntypedArray>) -> String {
+pub fn dtype_name(a: &Bound<'_, PyUntypedArray>) -> String {
     a.dtype().str().map(|s| s.to_string()).unwrap_or_else(|_| "?".into())
 }
 

@@ -1,5 +1,6 @@
 //! PyO3 glue: NumPy in and out, argument checks, GIL release, error mapping.
 
+mod albedo;
 mod args;
 mod convert;
 mod edges;

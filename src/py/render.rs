@@ -10,6 +10,7 @@ use numpy::{
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 
+use super::albedo::albedo;
 use super::args::{number, text, type_name};
 use super::convert::{faces, positions, Positions};
 use super::errors::to_py;
@@ -268,27 +269,39 @@ impl PyRenderer {
         self.inner.mesh_count()
     }
 
-    /// (mesh id, the normal mode in its shortest spelling).
+    /// (mesh id, the normal mode in its shortest spelling, notes to warn about).
+    #[pyo3(signature = (vertices, faces, normals, vertex_colors = None, face_colors = None, uv = None,
+        texture = None, texture_filter = None, texture_wrap = None, alpha_cutoff = None))]
+    #[allow(clippy::too_many_arguments)]
     fn add_mesh<'py>(
         &self,
         py: Python<'py>,
         vertices: &Bound<'py, PyAny>,
         faces: &Bound<'py, PyAny>,
         normals: &Bound<'py, PyAny>,
-    ) -> PyResult<(u64, Bound<'py, PyAny>)> {
-        let (mode, p, f) = (|| {
+        vertex_colors: Option<&Bound<'py, PyAny>>,
+        face_colors: Option<&Bound<'py, PyAny>>,
+        uv: Option<&Bound<'py, PyAny>>,
+        texture: Option<&Bound<'py, PyAny>>,
+        texture_filter: Option<&Bound<'py, PyAny>>,
+        texture_wrap: Option<&Bound<'py, PyAny>>,
+        alpha_cutoff: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<(u64, Bound<'py, PyAny>, Vec<String>)> {
+        let (mode, p, f, a) = (|| {
             let mode = normal_mode(normals)?;
             let p = positions("vertices", vertices)?;
             let f = self::faces("faces", faces, p.len())?;
-            Ok((mode, p, f))
+            let a =
+                albedo(vertex_colors, face_colors, uv, texture, texture_filter, texture_wrap, alpha_cutoff)?;
+            Ok((mode, p, f, a))
         })()
         .map_err(to_py)?;
         let inner = &self.inner;
-        let id = without_gil(py, || match &p {
-            Positions::F32(v) => inner.add_mesh(v, f, mode),
-            Positions::F64(v) => inner.add_mesh(v, f, mode),
+        let (id, notes) = without_gil(py, || match &p {
+            Positions::F32(v) => inner.add_mesh_with(v, f, mode, a),
+            Positions::F64(v) => inner.add_mesh_with(v, f, mode, a),
         })?;
-        Ok((id, normal_spelling(py, mode)?))
+        Ok((id, normal_spelling(py, mode)?, notes))
     }
 
     fn remove_mesh(&self, mesh: u64) -> bool {
@@ -408,6 +421,7 @@ fn _shadow_truth<'py>(
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_shadow_truth, m)?)?;
+    m.add_function(wrap_pyfunction!(super::albedo::_srgb_from_linear, m)?)?;
     m.add_function(wrap_pyfunction!(_normal_mode, m)?)?;
     m.add_function(wrap_pyfunction!(_transform, m)?)?;
     m.add_class::<PyRenderer>()?;

@@ -18,7 +18,9 @@ use crate::mesh::normals::{triangle_unit_normal, vertex_normals};
 use crate::mesh::Bounds;
 use crate::real::{Real, Vec3};
 
+use super::albedo::{Albedo, Colors};
 use super::device::Device;
+use super::gpu_albedo::GpuAlbedo;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum NormalMode {
@@ -119,8 +121,10 @@ fn used_bounds<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Bounds {
         })
 }
 
-/// The vertices to upload, and the indices when vertices are shared (None: drawn as a list).
-type Built = (Vec<Vertex>, Option<Vec<[u32; 3]>>);
+/// The vertices to upload, the indices when vertices are shared (None: drawn as a list), and
+/// the input vertex of each uploaded one where vertices were split by crease (None: the same
+/// vertices, or for flat normals corner i of face i / 3).
+type Built = (Vec<Vertex>, Option<Vec<[u32; 3]>>, Option<Vec<u32>>);
 
 fn build_vertices(stored: &[[f64; 3]], faces: &[[u32; 3]], normals: NormalMode) -> Result<Built> {
     let f32s = |p: &[f64; 3]| p.map(|x| x as f32);
@@ -132,7 +136,7 @@ fn build_vertices(stored: &[[f64; 3]], faces: &[[u32; 3]], normals: NormalMode) 
                 .zip(&n)
                 .map(|(p, n)| Vertex { position: f32s(p), normal: f32s(n) })
                 .collect();
-            (v, None)
+            (v, None, None)
         }
         NormalMode::Auto { crease_angle } => {
             let split = crease_normals(stored, faces, crease_angle)?;
@@ -142,7 +146,7 @@ fn build_vertices(stored: &[[f64; 3]], faces: &[[u32; 3]], normals: NormalMode) 
                 .zip(&split.normals)
                 .map(|(&i, n)| Vertex { position: f32s(&stored[i as usize]), normal: f32s(n) })
                 .collect();
-            (v, Some(split.faces))
+            (v, Some(split.faces), Some(split.source))
         }
         NormalMode::Flat => {
             let v = faces
@@ -153,7 +157,7 @@ fn build_vertices(stored: &[[f64; 3]], faces: &[[u32; 3]], normals: NormalMode) 
                     [a, b, c].map(|p| Vertex { position: f32s(&p), normal: n })
                 })
                 .collect();
-            (v, None)
+            (v, None, None)
         }
     })
 }
@@ -180,6 +184,8 @@ pub struct GpuMesh {
     pub normals: NormalMode,
     /// How the faces enclose solids, if they do (what allows back-face culling).
     pub enclosure: Option<Enclosure>,
+    /// The mesh's colour and texture, if it has any.
+    pub albedo: Option<GpuAlbedo>,
 }
 
 impl GpuMesh {
@@ -190,6 +196,18 @@ impl GpuMesh {
         positions: &[Vec3<T>],
         faces: Vec<[u32; 3]>,
         normals: NormalMode,
+    ) -> Result<(GpuMesh, HostMesh)> {
+        Self::upload_with(dev, positions, faces, normals, None)
+    }
+
+    /// `upload`, with the mesh's colour and texture (checked by the caller, its texture fitted
+    /// to the device). Per-face colours draw the faces as a list, each corner its own vertex.
+    pub fn upload_with<T: Real>(
+        dev: &Device,
+        positions: &[Vec3<T>],
+        faces: Vec<[u32; 3]>,
+        normals: NormalMode,
+        albedo: Option<&Albedo>,
     ) -> Result<(GpuMesh, HostMesh)> {
         if faces.is_empty() || positions.is_empty() {
             return Err(Error::invalid("faces", "the mesh has no faces"));
@@ -208,8 +226,17 @@ impl GpuMesh {
         // whether the faces enclose solids, found while the vertices are built
         let (encloses, built) =
             rayon::join(|| enclosure_welded(&stored, &faces), || build_vertices(&stored, &faces, normals));
-        let (vertices, indices) = built?;
-        let indexed = !matches!(normals, NormalMode::Flat);
+        let (mut vertices, mut indices, mut source) = built?;
+        let mut indexed = !matches!(normals, NormalMode::Flat);
+        let per_face = matches!(albedo.and_then(|a| a.colors.as_ref()), Some(Colors::Face(_)));
+        if per_face && indexed {
+            // flat colour per face: every corner its own vertex
+            let list: &[[u32; 3]] = indices.as_deref().unwrap_or(&faces);
+            let corners: Vec<u32> = list.iter().flatten().copied().collect();
+            source = Some(corners.iter().map(|&i| source.as_ref().map_or(i, |s| s[i as usize])).collect());
+            vertices = corners.iter().map(|&i| vertices[i as usize]).collect();
+            (indices, indexed) = (None, false);
+        }
         let vertex_bytes: &[u8] = bytemuck::cast_slice(&vertices);
         let index_bytes: &[u8] = match (&indices, indexed) {
             (Some(split), _) => bytemuck::cast_slice(split),
@@ -239,6 +266,14 @@ impl GpuMesh {
                 usage: wgpu::BufferUsages::INDEX,
             })
         });
+        let flat = matches!(normals, NormalMode::Flat);
+        let albedo = albedo.filter(|a| a.is_used()).map(|a| {
+            GpuAlbedo::upload(dev, a, vertices.len(), |i| match &source {
+                Some(s) => s[i] as usize,
+                None if flat => faces[i / 3][i % 3] as usize,
+                None => i,
+            })
+        });
         let mesh = GpuMesh {
             vertices: vertex_buffer,
             indices: index_buffer,
@@ -250,6 +285,7 @@ impl GpuMesh {
             n_faces: faces.len(),
             normals,
             enclosure: encloses,
+            albedo,
         };
         Ok((mesh, HostMesh { positions: stored, faces }))
     }

@@ -19,7 +19,7 @@ use crate::mesh::shapes::icosphere;
 /// Opens a renderer as the package does: with a private runtime directory where the environment
 /// has none, so that Mesa's Wayland probe does not print "XDG_RUNTIME_DIR is invalid" into the
 /// test log (the Python package does the same at import, in `_runtime_dir.py`).
-fn open(backend: BackendChoice) -> crate::error::Result<Renderer> {
+pub(super) fn open(backend: BackendChoice) -> crate::error::Result<Renderer> {
     static RUNTIME_DIR: std::sync::Once = std::sync::Once::new();
     RUNTIME_DIR.call_once(|| {
         let usable = std::env::var_os("XDG_RUNTIME_DIR")
@@ -144,7 +144,7 @@ fn agreement_of(scene: &Scene, out: &RenderOutput, blended: bool) -> (f64, usize
     (good as f64 / covered.max(1) as f64, covered)
 }
 
-fn backends() -> Vec<BackendChoice> {
+pub(super) fn backends() -> Vec<BackendChoice> {
     vec![BackendChoice::Vulkan, BackendChoice::Gl]
 }
 

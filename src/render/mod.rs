@@ -4,9 +4,9 @@
 //! and read back straight into the caller's arrays.
 //!
 //! Layers, each using only those below it (`scripts/layers.py` checks them):
-//! 1. plain data: `color`, `block`, `wgsl`, `scene` (with the settings of every effect) and
+//! 1. plain data: `color`, `albedo`, `block`, `wgsl`, `scene` (with the settings of every effect) and
 //!    the per-pixel effects (`effects::surface`, `effects::hatching`, `effects::dither`);
-//! 2. the device and meshes on it: `device`, `gpu_mesh`, `mesh_record`, `culling`, `reference`,
+//! 2. the device and meshes on it: `device`, `gpu_albedo`, `gpu_mesh`, `mesh_record`, `culling`, `reference`,
 //!    `image_out`;
 //! 3. `uniforms`, `pipelines`, `graph` (targets, resources, the pass and effect traits),
 //!    `context`;
@@ -14,12 +14,14 @@
 //! 5. the registries and the plan: `effects::frame`, `plan`, `shader`;
 //! 6. `renderer`.
 
+pub mod albedo;
 pub mod block;
 pub mod color;
 pub mod context;
 pub mod culling;
 pub mod device;
 pub mod effects;
+pub mod gpu_albedo;
 pub mod gpu_mesh;
 pub mod graph;
 pub mod image_out;
@@ -38,6 +40,8 @@ pub use device::{BackendChoice, GpuInfo};
 pub use graph::report::{FrameReport, Polyline};
 pub use renderer::{Image, ImageMut, OutputBuffers, RenderOutput, Renderer};
 
+#[cfg(test)]
+mod albedo_gpu_tests;
 #[cfg(test)]
 mod gpu_tests;
 #[cfg(test)]

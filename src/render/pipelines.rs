@@ -8,6 +8,7 @@ use std::sync::{Arc, Mutex};
 use wgpu::TextureSampleType;
 
 use crate::render::effects::shadows::settings::ShadowFilter;
+use crate::render::gpu_albedo;
 
 const FRAGMENT: wgpu::ShaderStages = wgpu::ShaderStages::FRAGMENT;
 const VERTEX_FRAGMENT: wgpu::ShaderStages = wgpu::ShaderStages::VERTEX_FRAGMENT;
@@ -45,6 +46,8 @@ pub struct Layouts {
     pub float_texture: wgpu::BindGroupLayout,
     /// The shadow map (a depth texture) and its comparison sampler.
     pub shadow: wgpu::BindGroupLayout,
+    /// A mesh's texture and its sampler (`gpu_albedo`).
+    pub albedo: wgpu::BindGroupLayout,
 }
 
 /// A bind group layout of `entries` (binding 0, 1, ...), each seen by `visibility`.
@@ -128,6 +131,7 @@ impl PipelineCache {
                         wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
                     ],
                 ),
+                albedo: gpu_albedo::bind_group_layout(device),
             },
             shadow_samplers: [
                 shadow_sampler(device, ShadowFilter::Nearest),
@@ -179,9 +183,19 @@ impl PipelineCache {
         groups: &[&wgpu::BindGroupLayout],
     ) -> wgpu::PipelineLayout {
         let groups: Vec<Option<&wgpu::BindGroupLayout>> = groups.iter().map(|g| Some(*g)).collect();
+        self.layout_with_gaps(device, label, &groups)
+    }
+
+    /// `layout`, with groups the pipeline does not use left out (None).
+    pub fn layout_with_gaps(
+        &self,
+        device: &wgpu::Device,
+        label: &str,
+        groups: &[Option<&wgpu::BindGroupLayout>],
+    ) -> wgpu::PipelineLayout {
         device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some(label),
-            bind_group_layouts: &groups,
+            bind_group_layouts: groups,
             immediate_size: 0,
         })
     }

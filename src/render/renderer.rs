@@ -15,6 +15,7 @@ use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::real::{Real, Vec3};
 
+use super::albedo::Albedo;
 use super::color::srgb_to_linear;
 use super::context::{context, GpuContext};
 use super::culling::culls;
@@ -148,13 +149,56 @@ impl Renderer {
                 format!("vertex index {bad} is outside [0, {})", positions.len()),
             ));
         }
-        let (gpu, host) = crate::parallel::install(|| GpuMesh::upload(&self.ctx, positions, faces, normals))?;
+        self.add_mesh_with(positions, faces, normals, None).map(|(id, _)| id)
+    }
+
+    /// `add_mesh` with the mesh's colour and texture. Returns the id and notes for the caller
+    /// (a texture larger than the device holds, downscaled).
+    pub fn add_mesh_with<T: Real>(
+        &self,
+        positions: &[Vec3<T>],
+        faces: Vec<[u32; 3]>,
+        normals: NormalMode,
+        albedo: Option<Albedo>,
+    ) -> Result<(MeshId, Vec<String>)> {
+        self.ctx.check_process()?;
+        crate::mesh::check_positions("vertices", positions)?;
+        if let Some(bad) = faces.iter().flatten().find(|&&i| i as usize >= positions.len()) {
+            return Err(Error::out_of_range(
+                "faces",
+                format!("vertex index {bad} is outside [0, {})", positions.len()),
+            ));
+        }
+        let mut notes = vec![];
+        let albedo = match albedo {
+            Some(mut a) => {
+                a.check(positions.len(), faces.len())?;
+                let max = self.ctx.limits.max_texture_dimension_2d;
+                if let Some(t) = a.texture.take() {
+                    let (w, h) = (t.width, t.height);
+                    let fitted = t.fitted(max);
+                    if (fitted.width, fitted.height) != (w, h) {
+                        notes.push(format!(
+                            "texture: {h} x {w} pixels is larger than this GPU's limit of {max}; \
+                             downscaled to {} x {}",
+                            fitted.height, fitted.width
+                        ));
+                    }
+                    a.texture = Some(fitted);
+                }
+                Some(a)
+            }
+            None => None,
+        };
+        let (gpu, host) = crate::parallel::install(|| {
+            GpuMesh::upload_with(&self.ctx, positions, faces, normals, albedo.as_ref())
+        })?;
         let id = self.next_id.fetch_add(1, Ordering::Relaxed);
         self.meshes
             .lock()
             .unwrap_or_else(|e| e.into_inner())
             .insert(id, Arc::new(MeshRecord::new(gpu, host)));
-        Ok(id)
+        Ok((id, notes))
     }
 
     pub fn mesh(&self, id: MeshId) -> Result<Arc<MeshRecord>> {

@@ -1,6 +1,7 @@
 //! The two kinds of pipeline passes build: mesh draws (the camera's passes and the shadow map)
 //! and full-screen triangles (image passes), and the states they share.
 
+use crate::render::gpu_albedo;
 use crate::render::gpu_mesh::GpuMesh;
 
 use super::target::DEPTH_FORMAT;
@@ -35,27 +36,39 @@ pub struct MeshDraw<'a> {
     pub targets: &'a [Option<wgpu::ColorTargetState>],
     pub samples: u32,
     pub constants: &'a [(&'a str, f64)],
-    pub more: &'a [&'a wgpu::BindGroupLayout],
+    pub more: &'a [Option<&'a wgpu::BindGroupLayout>],
     pub cull: Option<wgpu::Face>,
+    /// Reads the mesh's colour and texture (`gpu_albedo`): its vertex buffer, through
+    /// `vs_albedo`.
+    pub albedo: bool,
 }
 
-/// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`) with
-/// depth testing.
+/// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`, then
+/// the albedo group at `gpu_albedo::GROUP` when it reads it) with depth testing.
 pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<'_>) -> wgpu::RenderPipeline {
     let device = &f.dev.device;
     let layouts = &f.pipelines.layouts;
-    let mut groups = vec![&layouts.frame, &layouts.draw];
-    groups.extend_from_slice(d.more);
-    let layout = f.pipelines.layout(device, d.label, &groups);
+    let mut groups = vec![Some(&layouts.frame), Some(&layouts.draw)];
+    groups.extend(d.more.iter().copied());
+    if d.albedo {
+        groups.resize(gpu_albedo::GROUP as usize, None);
+        groups.push(Some(&layouts.albedo));
+    }
+    let layout = f.pipelines.layout_with_gaps(device, d.label, &groups);
     let options = wgpu::PipelineCompilationOptions { constants: d.constants, ..Default::default() };
+    let mut buffers = vec![Some(GpuMesh::vertex_layout())];
+    if d.albedo {
+        buffers.resize(gpu_albedo::SLOT as usize + 1, None);
+        buffers[gpu_albedo::SLOT as usize] = Some(gpu_albedo::vertex_layout());
+    }
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(d.label),
         layout: Some(&layout),
         vertex: wgpu::VertexState {
             module,
-            entry_point: Some("vs_main"),
+            entry_point: Some(if d.albedo { "vs_albedo" } else { "vs_main" }),
             compilation_options: options.clone(),
-            buffers: &[Some(GpuMesh::vertex_layout())],
+            buffers: &buffers,
         },
         // Both sides are drawn unless one cannot show: a camera inside a mesh, or an open
         // surface, shows back faces.

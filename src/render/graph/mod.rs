@@ -14,6 +14,7 @@ use std::sync::Arc;
 use crate::error::Result;
 
 use super::device::Device;
+use super::gpu_albedo;
 use super::gpu_mesh::GpuMesh;
 use super::pipelines::PipelineCache;
 use super::wgsl;
@@ -127,6 +128,17 @@ impl FrameCtx<'_> {
         pass: &mut wgpu::RenderPass<'_>,
         pipeline_for: impl Fn(&DrawItem<'_>) -> Arc<wgpu::RenderPipeline>,
     ) {
+        self.draw_meshes_with(pass, pipeline_for, false)
+    }
+
+    /// `draw_meshes`, binding each coloured mesh's albedo (vertex buffer and texture) when
+    /// `with_albedo` (the shading pass: its pipelines for those meshes read them).
+    pub fn draw_meshes_with(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        pipeline_for: impl Fn(&DrawItem<'_>) -> Arc<wgpu::RenderPipeline>,
+        with_albedo: bool,
+    ) {
         pass.set_bind_group(0, &self.res.uniforms.frame_group, &[]);
         let mut current: Option<Arc<wgpu::RenderPipeline>> = None;
         for d in self.draws {
@@ -137,6 +149,10 @@ impl FrameCtx<'_> {
             }
             pass.set_bind_group(1, &self.res.uniforms.draw_group, &[d.uniform_offset]);
             pass.set_vertex_buffer(0, d.mesh.vertices.slice(..));
+            if let (true, Some(a)) = (with_albedo, &d.mesh.albedo) {
+                pass.set_vertex_buffer(gpu_albedo::SLOT, a.vertices.slice(..));
+                pass.set_bind_group(gpu_albedo::GROUP, &a.group, &[]);
+            }
             match &d.mesh.indices {
                 Some(ib) => {
                     pass.set_index_buffer(ib.slice(..), wgpu::IndexFormat::Uint32);

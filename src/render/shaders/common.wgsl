@@ -219,12 +219,16 @@ fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32, dn: array<vec
     }
 }
 
+// The surface's colour where it is drawn (linear rgb; `albedo.wgsl` sets it for a coloured
+// mesh): it multiplies the material's ambient and diffuse colours.
+var<private> albedo: vec3<f32> = vec3<f32>(1.0);
+
 // Linear colour of a point with unit view-space normal n at view-space position p; `jitter`
 // moves L.n before it is banded (dithering); dn: the normal's change across one pixel in x and
 // y (zero: hard band borders).
 fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32, dn: array<vec3<f32>, 2>) -> vec3<f32> {
     let v = view_dir(p);
-    var c = frame.lighting.ambient.rgb * draw.material.ambient.rgb;
+    var c = frame.lighting.ambient.rgb * draw.material.ambient.rgb * albedo;
     for (var k = 0u; k < LIGHTS; k++) {
         let light = frame.lighting.lights[k];
         var l = light.position.xyz;
@@ -243,7 +247,7 @@ fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32, dn: array<vec3<f32>, 2>) -> ve
             f = mix(diffuse_term(-1.0, 0.0), f, lit);
             s *= lit;
         }
-        c += f * light.color.rgb * draw.material.diffuse.rgb + s * light.color.rgb * draw.material.specular.rgb;
+        c += f * light.color.rgb * draw.material.diffuse.rgb * albedo + s * light.color.rgb * draw.material.specular.rgb;
     }
     return c;
 }
@@ -261,6 +265,11 @@ fn facing_normal(n: vec3<f32>, front_facing: bool) -> vec3<f32> {
 
 @vertex
 fn vs_main(v: VsIn) -> VsOut {
+    return mesh_vertex(v);
+}
+
+// The vertex stage of every mesh pipeline (also called by `vs_albedo`).
+fn mesh_vertex(v: VsIn) -> VsOut {
     var o: VsOut;
     let p = draw.mesh.model_view * vec4<f32>(v.position, 1.0);
     o.clip = frame.view.proj * p;

@@ -55,7 +55,7 @@ fn hatching_finish(f: Fragment, c: vec3<f32>) -> vec3<f32> {
         return c;
     }
     let layers = hatch_layers(f);
-    let paper = draw.material.diffuse.rgb;
+    let paper = draw.material.diffuse.rgb * albedo;
     let tone = dot(c, LUMA) / max(dot(paper, LUMA), 1e-6);
     var ink = 0.0;
     for (var k = 0u; k < HATCH_LAYERS; k++) {

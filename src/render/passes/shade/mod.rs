@@ -17,7 +17,7 @@ use crate::render::pipelines::{target, PipelineKey};
 
 use variant::ShadingVariant;
 
-pub const WGSL: &str = include_str!("shade.wgsl");
+pub const WGSL: &str = concat!(include_str!("shade.wgsl"), include_str!("albedo.wgsl"));
 
 #[derive(Debug, Clone)]
 pub struct Shade {
@@ -41,7 +41,7 @@ impl Shade {
     }
 
     fn pipeline(&self, f: &FrameCtx<'_>, d: &DrawItem<'_>) -> Arc<wgpu::RenderPipeline> {
-        let shading = ShadingVariant::of(d.material);
+        let shading = ShadingVariant::of(d.material, d.mesh.albedo.as_ref());
         let hook = self.hook.as_deref();
         let bits = self.samples as u64
             | (self.geometry.map_or(0, |g| 1 + g as u64)) << 8
@@ -49,11 +49,12 @@ impl Shade {
             | cull_bits(d.cull) << 20
             | (f.lights as u64) << 32
             | (f.point_lights as u64) << 40
-            | (shading.anchored as u64) << 48;
+            | (shading.anchored as u64) << 48
+            | (shading.albedo as u64) << 56;
         f.pipelines.get(PipelineKey::new("shade", bits).with(&shading.constants), || {
             let module = f.module("shade", WGSL, hook);
             let mut targets = vec![target(COLOR_FORMAT)];
-            let entry = match (self.geometry, shading.anchored) {
+            let mut entry = match (self.geometry, shading.anchored) {
                 (None, false) => "fs_color",
                 (None, true) => "fs_color_anchored",
                 (Some(g), anchored) => {
@@ -66,13 +67,21 @@ impl Shade {
                     }
                 }
             };
+            if shading.albedo {
+                // the coloured mesh's stages read every varying (albedo.wgsl)
+                entry = match self.geometry {
+                    None => "fs_color_albedo",
+                    Some(GeometryLayout::NormalDepth) => "fs_color_normal_depth_albedo",
+                    Some(GeometryLayout::Depth) => "fs_color_depth_albedo",
+                };
+            }
             let mut constants = shading.constants.clone();
             constants.push(("LIGHTS", f.lights as f64));
             constants.push(("POINT_LIGHTS", f.point_lights as f64));
             let mut more = vec![];
             if let Some(h) = hook {
                 constants.extend(h.constants());
-                more.push(h.layout(&f.pipelines.layouts));
+                more.push(Some(h.layout(&f.pipelines.layouts)));
             }
             mesh_pipeline(
                 f,
@@ -85,6 +94,7 @@ impl Shade {
                     constants: &constants,
                     more: &more,
                     cull: d.cull,
+                    albedo: shading.albedo,
                 },
             )
         })
@@ -134,7 +144,7 @@ impl Pass for Shade {
         if let Some(h) = &self.hook {
             pass.set_bind_group(2, &h.bind_group(f), &[]);
         }
-        f.draw_meshes(&mut pass, |d| self.pipeline(f, d));
+        f.draw_meshes_with(&mut pass, |d| self.pipeline(f, d), true);
         Ok(())
     }
 }

@@ -1,6 +1,8 @@
 //! What a material compiles into the shading pipeline: its model, Gouraud or per-pixel
-//! shading, and each per-pixel effect's pipeline constants (`effects::surface`).
+//! shading, and each per-pixel effect's pipeline constants (`effects::surface`); and what the
+//! mesh adds: its colour and texture (`gpu_albedo`), only for meshes that have them.
 
+use crate::render::gpu_albedo::GpuAlbedo;
 use crate::render::scene::material::Material;
 
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -10,14 +12,21 @@ pub struct ShadingVariant {
     /// Whether the fragment stage reads the vertex stage's anchors (object coordinates and
     /// per-vertex colours; `Anchors` in common.wgsl).
     pub anchored: bool,
+    /// Whether the stages read the mesh's colour (and texture): `vs_albedo`, `fs_*_albedo`.
+    pub albedo: bool,
 }
 
 impl ShadingVariant {
-    pub fn of(m: &Material) -> Self {
+    pub fn of(m: &Material, albedo: Option<&GpuAlbedo>) -> Self {
         let mut v = ShadingVariant {
             constants: vec![("PER_VERTEX", m.per_vertex as u32 as f64), ("MODEL", m.model.id() as f64)],
             anchored: m.per_vertex,
+            albedo: albedo.is_some(),
         };
+        if let Some(a) = albedo {
+            v.constants.push(("TEXTURED", a.textured as u32 as f64));
+            v.constants.push(("ALPHA_CUTOFF", a.alpha_cutoff.map_or(-1.0, f64::from)));
+        }
         for part in m.effects.variants() {
             v.constants.extend(part.constants);
             v.anchored |= part.anchored;

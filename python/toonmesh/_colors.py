@@ -1,0 +1,106 @@
+"""Colour on a mesh: the keywords of :class:`toonmesh.Mesh` and :meth:`toonmesh.Renderer.add_mesh`
+about it, and what a ``trimesh.Trimesh`` brings by itself (its vertex or face colours, or its
+texture: uv and the material's image, with a glTF material's base colour factor and alpha mask).
+
+Arrays are checked by the core (shape, dtype, range, NaN: errors name the argument); this module
+only gathers them and warns about whatever is given but not used.
+"""
+
+from __future__ import annotations
+
+import warnings
+from typing import Any, Dict, List, Optional
+
+import numpy as np
+
+from toonmesh import _core
+
+#: The keywords about a mesh's colour, in the order the core takes them.
+KEYS = ("vertex_colors", "face_colors", "uv", "texture", "texture_filter", "texture_wrap", "alpha_cutoff")
+_DATA = KEYS[:4]
+# the textures of a glTF material the renderer does not draw with
+_PBR_UNUSED = ("emissiveTexture", "normalTexture", "occlusionTexture", "metallicRoughnessTexture")
+
+
+def texture_array(texture: Any) -> Any:
+    """A PIL image as an (H, W, 4) uint8 array (top row first); anything else as given."""
+    if hasattr(texture, "convert") and hasattr(texture, "size") and not isinstance(texture, np.ndarray):
+        return np.asarray(texture.convert("RGBA"))
+    return texture
+
+
+def _array(value: Any) -> Any:
+    if value is None or isinstance(value, np.ndarray) or isinstance(value, (str, bytes)):
+        return value
+    try:
+        return np.asarray(value)
+    except Exception:  # ragged lists: the core names the argument
+        return value
+
+
+def from_trimesh(mesh: Any) -> Dict[str, Any]:
+    """The colour keywords a trimesh carries (empty when it has none), and "unused": notes on
+    what it carries that is not drawn."""
+    visual = getattr(mesh, "visual", None)
+    kind = getattr(visual, "kind", None)
+    found: Dict[str, Any] = {}
+    unused: List[str] = []
+    if kind == "vertex":
+        found["vertex_colors"] = np.asarray(visual.vertex_colors)
+    elif kind == "face":
+        found["face_colors"] = np.asarray(visual.face_colors)
+    elif kind == "texture":
+        material = getattr(visual, "material", None)
+        uv = getattr(visual, "uv", None)
+        image, factor = None, None
+        if hasattr(material, "baseColorTexture"):  # a glTF (PBR) material
+            image = material.baseColorTexture
+            if material.baseColorFactor is not None:
+                # glTF's factor is linear light (alpha aside); the colour keywords take sRGB
+                factor = np.asarray(material.baseColorFactor, dtype=np.float64) / 255.0
+                factor[:3] = _core._srgb_from_linear(np.ascontiguousarray(factor[:3]))
+            if getattr(material, "alphaMode", None) == "MASK":
+                cutoff = getattr(material, "alphaCutoff", None)
+                found["alpha_cutoff"] = 0.5 if cutoff is None else float(cutoff)  # glTF's default
+            unused += [n for n in _PBR_UNUSED if getattr(material, n, None) is not None]
+        elif material is not None:  # trimesh's SimpleMaterial (OBJ files): the image, else Kd
+            image = getattr(material, "image", None)
+            if image is None and getattr(material, "diffuse", None) is not None:
+                factor = np.asarray(material.diffuse, dtype=np.float64) / 255.0
+        if image is not None and uv is not None:
+            found["texture"], found["uv"] = image, np.asarray(uv)
+        elif image is not None:
+            unused.append("its material's image (the mesh has no uv)")
+        if factor is not None and not np.all(factor == 1.0):
+            found["vertex_colors"] = np.tile(np.asarray(factor, dtype=np.float64)[:4], (len(mesh.vertices), 1))
+    if unused:
+        found["unused"] = unused
+    return found
+
+
+def gather(source: Any, given: Dict[str, Any], where: str, stacklevel: int = 3) -> Dict[str, Any]:
+    """The colour keywords for a mesh: those `given` (None: not given), else the trimesh's when
+    `source` is one. Warns (from the caller's caller) about what is given but not used."""
+    chosen = {k: v for k, v in given.items() if v is not None}
+    notes: List[str] = []
+    if hasattr(source, "vertices") and hasattr(source, "faces") and hasattr(source, "visual"):
+        carried = from_trimesh(source)
+        notes += [f"{where}: the trimesh's {n} is not drawn" for n in carried.pop("unused", [])]
+        if any(k in chosen for k in _DATA):
+            dropped = [k for k in _DATA if k in carried]
+            if dropped:
+                notes.append(f"{where}: colour keywords given, so the trimesh's own {', '.join(dropped)} are not used")
+        else:
+            for k, v in carried.items():
+                chosen.setdefault(k, v)
+    textured = "texture" in chosen
+    for k in ("texture_filter", "texture_wrap"):
+        if k in chosen and not textured:
+            notes.append(f"{k}: not used, the mesh has no texture")
+    if "alpha_cutoff" in chosen and not any(k in chosen for k in ("vertex_colors", "face_colors", "texture")):
+        notes.append("alpha_cutoff: not used, the mesh has no colours or texture")
+    for n in notes:
+        warnings.warn(n, UserWarning, stacklevel=stacklevel)
+    if "texture" in chosen:
+        chosen["texture"] = texture_array(chosen["texture"])
+    return {k: _array(v) if k in _DATA else v for k, v in chosen.items()}

@@ -1,0 +1,164 @@
+//! A mesh's colour, texture coordinates and texture read from NumPy (`render::albedo`): colours
+//! and texels as uint8 codes or floats in [0, 1], sRGB, decoded to linear light here.
+
+use numpy::{PyArrayDescrMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+
+use super::args::{number, text};
+use super::convert::{dtype_name, native_order, untyped};
+use crate::error::{Error, Result};
+use crate::render::albedo::texture::Texture;
+use crate::render::albedo::{Albedo, Colors, Filter, Sampling, Wrap};
+use crate::render::color::srgb_to_linear;
+
+/// An array's values as floats in [0, 1] (uint8 codes divided by 255) and its shape, checked
+/// as the argument `arg`: `channels` the allowed sizes of its last axis, `rank` its axes.
+fn unit_values(arg: &str, obj: &Bound<'_, PyAny>, rank: usize, what: &str) -> Result<(Vec<f32>, Vec<usize>)> {
+    let obj = &native_order(obj)?;
+    let a = untyped(arg, obj)?;
+    let shape = a.shape().to_vec();
+    if shape.len() != rank || !matches!(shape[rank - 1], 3 | 4) || shape.contains(&0) {
+        return Err(Error::invalid(arg, format!("expected shape {what}, got {shape:?}")));
+    }
+    let values: Vec<f32> = if let Ok(x) = obj.extract::<PyReadonlyArrayDyn<'_, u8>>() {
+        x.as_array().iter().map(|&c| c as f32 / 255.0).collect()
+    } else if a.dtype().kind() == b'f' {
+        let v: Vec<f64> = match obj.extract::<PyReadonlyArrayDyn<'_, f64>>() {
+            Ok(x) => x.as_array().iter().copied().collect(),
+            Err(_) => obj
+                .extract::<PyReadonlyArrayDyn<'_, f32>>()
+                .map_err(|_| {
+                    Error::wrong_type(
+                        arg,
+                        format!("dtype must be uint8, float32 or float64, got {}", dtype_name(a)),
+                    )
+                })?
+                .as_array()
+                .iter()
+                .map(|&x| x as f64)
+                .collect(),
+        };
+        if let Some(bad) = v.iter().find(|x| !(x.is_finite() && (0.0..=1.0).contains(*x))) {
+            let hint = if bad.is_finite() && *bad > 1.0 { " (for 0-255 codes, use uint8)" } else { "" };
+            return Err(Error::invalid(arg, format!("float values must be in [0, 1], got {bad}{hint}")));
+        }
+        v.into_iter().map(|x| x as f32).collect()
+    } else {
+        return Err(Error::wrong_type(
+            arg,
+            format!("dtype must be uint8, float32 or float64, got {}", dtype_name(a)),
+        ));
+    };
+    Ok((values, shape))
+}
+
+/// (K, 3|4) sRGB colours as linear RGBA (alpha 1 when absent).
+fn colors(arg: &str, obj: &Bound<'_, PyAny>, what: &str) -> Result<Vec<[f32; 4]>> {
+    let (v, shape) = unit_values(arg, obj, 2, what)?;
+    let decode = |c: f32| srgb_to_linear(c as f64) as f32;
+    Ok(v.chunks_exact(shape[1])
+        .map(|c| [decode(c[0]), decode(c[1]), decode(c[2]), c.get(3).copied().unwrap_or(1.0)])
+        .collect())
+}
+
+/// (H, W, 3|4) sRGB image, top row first, as 8-bit codes.
+fn texture(obj: &Bound<'_, PyAny>) -> Result<Texture> {
+    let (v, shape) = unit_values("texture", obj, 3, "(H, W, 3) or (H, W, 4)")?;
+    let too_large = || Error::invalid("texture", format!("{shape:?} is too large"));
+    let (h, w) = (
+        u32::try_from(shape[0]).map_err(|_| too_large())?,
+        u32::try_from(shape[1]).map_err(|_| too_large())?,
+    );
+    let code = |x: f32| (x * 255.0).round() as u8;
+    let texels = v
+        .chunks_exact(shape[2])
+        .map(|c| [code(c[0]), code(c[1]), code(c[2]), c.get(3).map_or(255, |&a| code(a))])
+        .collect();
+    Texture::new(w, h, texels)
+}
+
+/// (N, 2) float texture coordinates.
+fn uv(obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 2]>> {
+    let obj = &native_order(obj)?;
+    let a = untyped("uv", obj)?;
+    let shape = a.shape().to_vec();
+    if shape.len() != 2 || shape[1] != 2 {
+        return Err(Error::invalid("uv", format!("expected shape (N, 2), got {shape:?}")));
+    }
+    if a.dtype().kind() != b'f' {
+        return Err(Error::wrong_type(
+            "uv",
+            format!("dtype must be float32 or float64, got {}", dtype_name(a)),
+        ));
+    }
+    let v: Vec<f32> = match obj.extract::<PyReadonlyArrayDyn<'_, f64>>() {
+        Ok(x) => x.as_array().iter().map(|&x| x as f32).collect(),
+        Err(_) => obj
+            .extract::<PyReadonlyArrayDyn<'_, f32>>()
+            .map_err(|_| {
+                Error::wrong_type("uv", format!("dtype must be float32 or float64, got {}", dtype_name(a)))
+            })?
+            .as_array()
+            .iter()
+            .copied()
+            .collect(),
+    };
+    Ok(v.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+}
+
+/// An optional argument: None when absent or given as None.
+fn given<'a, 'py>(o: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'py, PyAny>> {
+    o.filter(|o| !o.is_none())
+}
+
+/// The keywords of `Renderer.add_mesh` about colour, read into an `Albedo` (None: no colour).
+#[allow(clippy::too_many_arguments)]
+pub fn albedo(
+    vertex_colors: Option<&Bound<'_, PyAny>>,
+    face_colors: Option<&Bound<'_, PyAny>>,
+    uv_obj: Option<&Bound<'_, PyAny>>,
+    texture_obj: Option<&Bound<'_, PyAny>>,
+    filter: Option<&Bound<'_, PyAny>>,
+    wrap: Option<&Bound<'_, PyAny>>,
+    alpha_cutoff: Option<&Bound<'_, PyAny>>,
+) -> Result<Option<Albedo>> {
+    let sampling = Sampling {
+        filter: given(filter)
+            .map(|f| Filter::parse("texture_filter", &text("texture_filter", f)?))
+            .transpose()?
+            .unwrap_or_default(),
+        wrap: given(wrap)
+            .map(|w| Wrap::parse("texture_wrap", &text("texture_wrap", w)?))
+            .transpose()?
+            .unwrap_or_default(),
+        alpha_cutoff: given(alpha_cutoff).map(|c| number("alpha_cutoff", c).map(|c| c as f32)).transpose()?,
+    };
+    sampling.check()?;
+    let colors = match (given(vertex_colors), given(face_colors)) {
+        (Some(_), Some(_)) => {
+            return Err(Error::invalid("vertex_colors, face_colors", "give one of them, not both"))
+        }
+        (Some(c), None) => Some(Colors::Vertex(colors("vertex_colors", c, "(N, 3) or (N, 4)")?)),
+        (None, Some(c)) => Some(Colors::Face(colors("face_colors", c, "(M, 3) or (M, 4)")?)),
+        (None, None) => None,
+    };
+    let a = Albedo {
+        colors,
+        uv: given(uv_obj).map(uv).transpose()?,
+        texture: given(texture_obj).map(texture).transpose()?,
+        sampling,
+    };
+    Ok((a.is_used() || a.uv.is_some()).then_some(a))
+}
+
+/// _srgb_from_linear(values) -> float64 array: linear-light colour channels as sRGB (clamped to
+/// [0, 1] first).
+#[pyfunction]
+pub fn _srgb_from_linear<'py>(
+    py: Python<'py>,
+    values: numpy::PyReadonlyArray1<'py, f64>,
+) -> Bound<'py, numpy::PyArray1<f64>> {
+    use numpy::IntoPyArray;
+    let v: Vec<f64> = values.as_array().iter().map(|&c| crate::render::color::linear_to_srgb(c)).collect();
+    v.into_pyarray(py)
+}

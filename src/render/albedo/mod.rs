@@ -1,0 +1,76 @@
+//! Colour on the surface: per-vertex or per-face colours, texture coordinates and a texture,
+//! with glTF's sampling settings. The albedo of a point is the product of its colour and its
+//! texture sample, both decoded from sRGB to linear light; it multiplies the material's ambient
+//! and diffuse colours in every shading model (`shade` in common.wgsl, `reference::shade`).
+//!
+//! Plain data and its CPU twins (`texture`: the mip chain, `sampling`: the sampling rule); the
+//! device side is `render::gpu_albedo`.
+
+pub mod sampling;
+pub mod texture;
+
+use crate::error::{Error, Result};
+
+pub use sampling::{Filter, Sampling, Wrap};
+pub use texture::Texture;
+
+/// Linear-light RGBA colours, one per vertex or one per face.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Colors {
+    Vertex(Vec<[f32; 4]>),
+    Face(Vec<[f32; 4]>),
+}
+
+/// What a mesh carries besides its geometry for its colour (each part optional).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Albedo {
+    pub colors: Option<Colors>,
+    /// Texture coordinates per vertex: u to the right, v up from the image's bottom row (OBJ,
+    /// trimesh); the texture's rows are read top first, so (u, v) reads row (1 - v) * height.
+    pub uv: Option<Vec<[f32; 2]>>,
+    pub texture: Option<Texture>,
+    pub sampling: Sampling,
+}
+
+impl Albedo {
+    /// Whether there is anything to draw with (otherwise the mesh renders as before).
+    pub fn is_used(&self) -> bool {
+        self.colors.is_some() || self.texture.is_some()
+    }
+
+    /// Checks the parts against a mesh of `n_vertices` vertices and `n_faces` faces.
+    pub fn check(&self, n_vertices: usize, n_faces: usize) -> Result<()> {
+        match &self.colors {
+            Some(Colors::Vertex(c)) if c.len() != n_vertices => {
+                return Err(Error::invalid(
+                    "vertex_colors",
+                    format!("expected one colour per vertex ({n_vertices}), got {}", c.len()),
+                ))
+            }
+            Some(Colors::Face(c)) if c.len() != n_faces => {
+                return Err(Error::invalid(
+                    "face_colors",
+                    format!("expected one colour per face ({n_faces}), got {}", c.len()),
+                ))
+            }
+            _ => {}
+        }
+        match (&self.uv, &self.texture) {
+            (Some(uv), Some(_)) => {
+                if uv.len() != n_vertices {
+                    return Err(Error::invalid(
+                        "uv",
+                        format!("expected one (u, v) per vertex ({n_vertices}), got {}", uv.len()),
+                    ));
+                }
+                if let Some(i) = uv.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
+                    return Err(Error::invalid("uv", format!("row {i} is not finite: {:?}", uv[i])));
+                }
+            }
+            (Some(_), None) => return Err(Error::invalid("uv, texture", "uv given without a texture to look up")),
+            (None, Some(_)) => return Err(Error::invalid("uv, texture", "a texture needs uv coordinates")),
+            (None, None) => {}
+        }
+        self.sampling.check()
+    }
+}
