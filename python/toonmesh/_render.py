@@ -462,7 +462,7 @@ def _geometry_key(mesh: Mesh) -> Tuple[Any, ...]:
     """What a mesh's upload depends on: its arrays and colour arrays (by identity; they live as
     long as the scene's Mesh objects do, so ids are not reused meanwhile), its colour settings
     and its normal mode."""
-    colors = tuple(sorted((k, id(v) if isinstance(v, np.ndarray) else v) for k, v in mesh.colors.items()))
+    colors = tuple(sorted((k, id(v)) for k, v in mesh.colors.items()))  # any value, hashable or not
     return (id(mesh.vertices), id(mesh.faces), mesh.normals, colors)
 
 
