@@ -74,8 +74,12 @@ def load(path: "str | os.PathLike[str]") -> List[Any]:
     face colours; faces and triangle strips), STL, OFF, GLB and glTF (node transforms, mesh
     instances, PBR ``baseColorFactor`` and ``baseColorTexture``, vertex colours ``COLOR_0``),
     and whatever else trimesh reads. Each mesh has its world ``transform`` (4x4 float64, the
-    scene's node transforms composed; None for a single mesh). Meshes of one geometry placed by
-    several nodes share their vertex and face arrays, so a renderer uploads them once.
+    scene's node transforms composed; None for a single mesh) and its colour as
+    :class:`toonmesh.Mesh` takes it (``vertex_colors`` or ``face_colors``, or ``uv`` and
+    ``texture``, the base colour factor folded in, ``alpha_cutoff`` for a glTF alpha mask), as a
+    ``trimesh.Trimesh`` brings it; ``material`` is None (the render's). Meshes of one geometry
+    placed by several nodes share their vertex, face and colour arrays, so a renderer uploads
+    them once.
     Vertices are kept as the file lists them (no merging or cleanup), except that an OBJ with a
     texture is split where its texture coordinates change (a vertex gets one UV) and an STL's
     corners are merged by position. What the file holds and toonmesh does not draw (cameras,
