@@ -1423,7 +1423,8 @@ RENDER_CASES: List[Case] = [
         "Material.bands",
         _rendered(tm.Material.bands, lambda m: dict(material=m)),
         dict(color=(0.9, 0.5, 0.2)),
-        [COLOUR_OR_NONE, Param("thresholds", THRESHOLDS, none=OK), Param("values", VALUES, none=OK), PER_VERTEX,
+        [COLOUR_OR_NONE, Param("thresholds", THRESHOLDS, none=OK), Param("values", VALUES, none=OK),
+         Param("preset", Name(("paper",), invalid=("trimesh", "pymeshlab")), none=OK), PER_VERTEX,
          Param("dither", DITHER, none=OK)],
     ),
     Case(
@@ -1535,12 +1536,14 @@ RENDER_CASES: List[Case] = [
                 Param(k, STYLE, none=OK)
                 for k in ("silhouette", "boundary", "crease", "ridge", "valley", "nonmanifold", "suggestive", "image")
             ],
-            Param("contours", Name(("faces", "smooth")), none=OK),
+            Param("contours", Name(("auto", "faces", "smooth")), none=OK),
             Param("suggestive_threshold", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("min_crease_length", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("image_rule", Name(("discontinuity", "paper")), none=OK),
             Param("normal_angle", Number(0.0, 180.0), none=OK),
             Param("depth_jump", Number(0.0, F32_MAX), none=OK),
+            Param("taper", Number(0.0, 4096.0), none=OK),
+            Param("width_by_depth", Flag(), none=OK),
             Param("crease_angle", Number(0.0, 180.0), none=OK),
             Param("weld", Flag(), none=OK),
             Param("normal_threshold", Number(0.0, F32_MAX), none=OK),

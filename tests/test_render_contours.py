@@ -182,3 +182,41 @@ def test_short_crease_pieces_are_dropped_on_a_scan_and_kept_on_a_cad_part():
         np.testing.assert_array_equal(a, b)
     # far too long a piece asked for: no crease at all
     assert creases(V, F, min_crease_length=100.0) == []
+
+
+def _ink_per_pixel_of_line(res, kind):
+    """Ink coverage summed over the picture per pixel of visible line of `kind`: its mean width."""
+    length = _pieces(res, kind).sum()
+    return res.outline.sum() / length
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_strokes_taper_at_their_ends_and_widen_nearer(backend):
+    from toonmesh.bench.effects import box
+
+    kw = dict(outputs=("outline", "lines"), width=SIZE, height=SIZE, backend=backend)
+    camera = tm.Camera.look_at(eye=(2.0, 1.5, 3.0), target=(0, 0, 0))
+    cube = tm.Mesh(*box((0.0, 0.0, 0.0), 0.5), normals="flat")
+    ridges = dict(silhouette=False, width=4.0)
+    plain = tm.render(cube, outlines=tm.Outlines("mesh", **ridges), camera=camera, **kw)
+    tapered = tm.render(cube, outlines=tm.Outlines("mesh", taper=60.0, **ridges), camera=camera, **kw)
+    # the three ridges at the near corner are open strokes: thinner toward their ends
+    assert tapered.lines and [l.tolist() for l in tapered.lines] == [l.tolist() for l in plain.lines]
+    assert _ink_per_pixel_of_line(tapered, "ridge") < 0.8 * _ink_per_pixel_of_line(plain, "ridge")
+    # a closed silhouette has no ends
+    rim = dict(crease=False, width=4.0)
+    loop = tm.render(cube, outlines=tm.Outlines("mesh", **rim), camera=camera, **kw)
+    np.testing.assert_array_equal(tm.render(cube, outlines=tm.Outlines("mesh", taper=60.0, **rim), camera=camera,
+                                            **kw).outline, loop.outline)
+    # width by depth: of two equal spheres, the nearer one's rim is drawn wider
+    V, F = tm.shapes.icosphere(4)
+    shift = np.eye(4)
+    shift[:3, 3] = (1.5, 0.0, -4.0)
+    scene = [tm.Mesh(V, F, transform=np.eye(4)), tm.Mesh(V, F, transform=shift)]
+    cam = tm.Camera.look_at(eye=(0.5, 0.0, 4.0), target=(0.7, 0, -2.0))
+    o = dict(outputs=("outline",), width=SIZE, height=SIZE, backend=backend, camera=cam)
+    flat = tm.render(scene, outlines=tm.Outlines("mesh", width=3.0), **o).outline
+    deep = tm.render(scene, outlines=tm.Outlines("mesh", width=3.0, width_by_depth=True), **o).outline
+    left, right = slice(0, SIZE // 4), slice(int(SIZE * 0.7), SIZE)  # only the near, only the far sphere
+    assert deep[:, left].sum() > 1.2 * flat[:, left].sum()
+    assert deep[:, right].sum() < 0.9 * flat[:, right].sum()

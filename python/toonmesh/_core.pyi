@@ -336,6 +336,8 @@ class Outlines:
         image_rule: Optional[str] = ...,
         normal_angle: Optional[float] = ...,
         depth_jump: Optional[float] = ...,
+        taper: Optional[float] = ...,
+        width_by_depth: Optional[bool] = ...,
     ) -> Outlines: ...
     kind: Final[str]
     styles: Final[Dict[str, Optional[LineStyle]]]
@@ -350,6 +352,8 @@ class Outlines:
     image_rule: Final[str]
     normal_angle: Final[float]
     depth_jump: Final[float]
+    taper: Final[float]
+    width_by_depth: Final[bool]
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 

@@ -275,34 +275,22 @@ fn screen_lines(
     scene: &Scene,
     frame: &FrameSpec,
 ) -> (Vec<super::effects::outlines::visibility::ScreenLine>, super::scene::camera::ResolvedCamera) {
-    use super::effects::outlines::mesh_lines::{stored_view, MeshLines};
+    use super::effects::outlines::mesh_lines::{chains, instances, reference_depth, stored_view, MeshLines};
     use super::effects::outlines::visibility::Projector;
     let checked = r.check(scene.clone(), *frame).unwrap();
     let mut report = Default::default();
     let p = r.prepare(checked, &mut report).unwrap();
     let outlines = scene.outlines.as_ref().unwrap();
     let mut lines = Vec::new();
+    let reference = reference_depth(&scene.items, &p.records, &p.cam);
     for (item, rec) in scene.items.iter().zip(&p.records) {
         let view = stored_view(&p.cam, item.model_matrix(), &rec.gpu);
         let flat = rec.gpu.normals == super::gpu_mesh::NormalMode::Flat;
         let outline = MeshLines::of(rec).outline(&rec.host, flat, view, outlines).unwrap();
         let projector = Projector::of(item, &rec.gpu.placement, &p.cam, frame.width, frame.height);
-        let pos = &rec.host.positions;
-        lines.extend(
-            outline
-                .edges
-                .edges
-                .iter()
-                .zip(&outline.edges.kinds)
-                .filter_map(|(e, k)| projector.project(pos[e[0] as usize], pos[e[1] as usize], *k as usize)),
-        );
-        for (kind, curves) in &outline.curves {
-            for i in 0..curves.len() {
-                lines.extend(
-                    curves.line(i).windows(2).filter_map(|s| projector.project(s[0], s[1], *kind as usize)),
-                );
-            }
-        }
+        let drawn =
+            instances(&chains(&outline, &rec.host.positions), &projector, &outlines.stroke_width, reference);
+        lines.extend(drawn.iter().filter_map(|l| projector.instance(l)));
     }
     (lines, p.cam)
 }
@@ -311,12 +299,15 @@ fn screen_lines(
 fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
     use super::effects::outlines::settings::ContourRule;
     use super::effects::outlines::settings::INK_KINDS;
+    use super::effects::outlines::stroke_width::StrokeWidth;
     use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
     let faces = Outlines { crease_angle: 25.0, contours: ContourRule::Faces, ..Outlines::new(true, false) };
     // smooth contours: lines through the faces, drawn by the same pass
     let smooth = Outlines { contours: ContourRule::Smooth, ..faces.clone() };
-    for (backend, outlines) in backends().into_iter().flat_map(|b| [(b, faces.clone()), (b, smooth.clone())])
-    {
+    // strokes tapered at their ends and wider where nearer
+    let shaped = Outlines { stroke_width: StrokeWidth { taper: 40.0, by_depth: true }, ..faces.clone() };
+    let all = [faces, smooth, shaped];
+    for (backend, outlines) in backends().into_iter().flat_map(|b| all.clone().map(|o| (b, o))) {
         let r = open(backend).unwrap();
         let scene = two_spheres(&r, outlines.clone());
         let frame = FrameSpec {

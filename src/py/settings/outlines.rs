@@ -79,10 +79,18 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// :func:`toonmesh.edges.suggestive_contours`) are drawn only when asked for (suggestive=True,
 /// a style or a colour; default None: not drawn).
 ///
-/// contours: how silhouettes are found: "faces" (default: face edges between front- and
-/// back-facing faces, Kang et al.'s rule, exact for flat shading) or "smooth" (the smooth
-/// contour n . v = 0 traced through the faces, see :func:`toonmesh.edges.contours`: long clean
-/// lines on scans). suggestive_threshold: the derivative test of suggestive contours, relative
+/// contours: how silhouettes are found: "faces" (face edges between front- and back-facing
+/// faces, Kang et al.'s rule, exact for flat shading), "smooth" (the smooth contour n . v = 0
+/// traced through the faces, see :func:`toonmesh.edges.contours`: long clean lines on scans;
+/// the normals are split at the creases drawn, and on those crease edges the face-edge rule
+/// draws the silhouette) or "auto" (default: "smooth" for meshes drawn with smooth or auto
+/// normals, "faces" for flat-shaded ones).
+///
+/// taper: mesh-space lines thin toward the ends of each chain over this many pixels of its
+/// length on screen, down to a fifth of their width (default 0: no taper; closed loops have no
+/// ends). width_by_depth: scale their width by the depth of the scene's centre over the line's
+/// depth, between 0.25x and 4x (default False). Both shape the ink (the colour and "outline"
+/// outputs); ``RenderResult.lines`` and the SVG keep the centre lines, drawn at the kind's width. suggestive_threshold: the derivative test of suggestive contours, relative
 /// to the mesh's feature size (default 0.01). min_crease_length: crease pieces (creases joined
 /// at their vertices, ridges and valleys together) shorter than this fraction of the mesh's
 /// bounding-box diagonal are not drawn, so that a scan's noise does not scatter crease dashes
@@ -119,7 +127,7 @@ impl PyOutlines {
                         image = None, crease_angle = None, weld = None, normal_threshold = None,
                         depth_threshold = None, depth_offset = None, contours = None,
                         suggestive_threshold = None, min_crease_length = None, image_rule = None,
-                        normal_angle = None, depth_jump = None))]
+                        normal_angle = None, depth_jump = None, taper = None, width_by_depth = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         kind: Obj<'_, '_>,
@@ -144,6 +152,8 @@ impl PyOutlines {
         image_rule: Obj<'_, '_>,
         normal_angle: Obj<'_, '_>,
         depth_jump: Obj<'_, '_>,
+        taper: Obj<'_, '_>,
+        width_by_depth: Obj<'_, '_>,
     ) -> PyResult<Self> {
         (|| {
             let (mesh, img) = match kind {
@@ -184,6 +194,8 @@ impl PyOutlines {
             }
             o.normal_angle = opt_number("normal_angle", normal_angle)?.map_or(o.normal_angle, |t| t as f32);
             o.depth_jump = opt_number("depth_jump", depth_jump)?.map_or(o.depth_jump, |t| t as f32);
+            o.stroke_width.taper = opt_number("taper", taper)?.unwrap_or(o.stroke_width.taper);
+            o.stroke_width.by_depth = flag_or("width_by_depth", width_by_depth, o.stroke_width.by_depth)?;
             o.validate("")?;
             Ok(PyOutlines { inner: o })
         })()
@@ -218,7 +230,7 @@ getters!(PyOutlines {
     normal_threshold -> f32 = |o| o.normal_threshold;
     depth_threshold -> f32 = |o| o.depth_threshold;
     depth_offset -> f32 = |o| o.depth_offset;
-    /// "faces" or "smooth".
+    /// "auto", "faces" or "smooth".
     contours -> &'static str = |o| o.contours.name();
     suggestive_threshold -> f64 = |o| o.suggestive_threshold;
     min_crease_length -> f64 = |o| o.min_crease_length;
@@ -226,6 +238,8 @@ getters!(PyOutlines {
     image_rule -> &'static str = |o| o.image_rule.name();
     normal_angle -> f32 = |o| o.normal_angle;
     depth_jump -> f32 = |o| o.depth_jump;
+    taper -> f64 = |o| o.stroke_width.taper;
+    width_by_depth -> bool = |o| o.stroke_width.by_depth;
 });
 
 /// The `outlines=` argument: None, "mesh", "image", "both" or an Outlines.

@@ -23,8 +23,13 @@ pub struct Lines {
 }
 
 fn instance_layout() -> wgpu::VertexBufferLayout<'static> {
-    const ATTRS: [wgpu::VertexAttribute; 3] =
-        wgpu::vertex_attr_array![0 => Float32x3, 1 => Uint32, 2 => Float32x3];
+    const ATTRS: [wgpu::VertexAttribute; 4] = [
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 0, shader_location: 0 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Uint32, offset: 12, shader_location: 1 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 16, shader_location: 2 },
+        // after the padding word: the width factors at both ends
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x2, offset: 32, shader_location: 3 },
+    ];
     wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<LineInstance>() as u64,
         step_mode: wgpu::VertexStepMode::Instance,

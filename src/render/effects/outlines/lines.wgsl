@@ -1,6 +1,7 @@
 // Mesh-space outlines (Kang, Kim and Yoon) as screen-space strips: each line is a quad around
-// its projected segment, `width` output pixels wide plus one pixel of antialiasing, with round
-// ends so that the lines of a polyline join without gaps. Coverage is the distance of the pixel
+// its projected segment, `width` output pixels wide (times its factor, interpolated between its
+// ends: taper and width by depth) plus one pixel of antialiasing, with round ends so that the
+// lines of a polyline join without gaps. Coverage is the distance of the pixel
 // centre to the segment. Hidden lines are removed against the geometry target's depth: a point
 // of the line is visible when its depth is at most the largest surface depth in the 3x3 pixels
 // around it plus `depth offset` pixel footprints (settings.rs), decided at the
@@ -15,6 +16,7 @@ struct LineIn {
     @location(0) a: vec3<f32>,
     @location(1) kind: u32,
     @location(2) b: vec3<f32>,
+    @location(3) scale: vec2<f32>,   // the width's factors at a and b (stroke_width.rs)
 };
 
 
@@ -27,6 +29,7 @@ struct LineOut {
     @location(1) @interpolate(flat) sb: vec2<f32>,
     @location(2) @interpolate(flat) depths: vec2<f32>,
     @location(3) @interpolate(flat) kind: u32,
+    @location(4) @interpolate(flat) scale: vec2<f32>,
 };
 
 fn to_pixels(v: vec3<f32>) -> vec2<f32> {
@@ -55,7 +58,8 @@ fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
     pb = select(pb, mix(pb, pa, (near - zb) / (za - zb)), cut_b && !cut_a);
     let sa = to_pixels(pa);
     let sb = to_pixels(pb);
-    let half = frame.outlines.ink[kind].w * 0.5 + 1.0;
+    o.scale = l.scale;
+    let half = frame.outlines.ink[kind].w * max(l.scale.x, l.scale.y) * 0.5 + 1.0;
     let ab = sb - sa;
     let len = length(ab);
     var dir = vec2<f32>(1.0, 0.0);
@@ -121,7 +125,8 @@ fn coverage(o: LineOut) -> f32 {
         t = clamp(dot(pos.xy - o.sa, ab) / l2, 0.0, 1.0);
     }
     let c = o.sa + ab * t;
-    let cov = clamp(frame.outlines.ink[o.kind].w * 0.5 + 0.5 - length(pos.xy - c), 0.0, 1.0);
+    let width = frame.outlines.ink[o.kind].w * mix(o.scale.x, o.scale.y, t);
+    let cov = clamp(width * 0.5 + 0.5 - length(pos.xy - c), 0.0, 1.0);
     if (cov <= 0.0) {
         return 0.0;
     }

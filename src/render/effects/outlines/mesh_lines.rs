@@ -11,6 +11,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 use glam::{DMat4, DVec3};
 
 use crate::cancel::Cancel;
+use crate::edges::chains::chain_edges;
 use crate::edges::contours::ContourMesh;
 use crate::edges::outlines::{LineKind, Outline, Statics};
 use crate::edges::short_creases::drop_short_creases;
@@ -23,8 +24,11 @@ use crate::render::graph::effect::{HostInputs, HostStep};
 use crate::render::graph::report::FrameReport;
 use crate::render::mesh_record::MeshRecord;
 use crate::render::scene::camera::{direction_of, ResolvedCamera};
+use crate::render::scene::SceneItem;
 
 use super::settings::{ContourRule, Outlines};
+use super::stroke_width::StrokeWidth;
+use super::visibility::Projector;
 
 /// A mesh's outline analysis, kept with it.
 #[derive(Default)]
@@ -171,8 +175,8 @@ pub fn stored_view(cam: &ResolvedCamera, model: DMat4, mesh: &GpuMesh) -> View {
     }
 }
 
-/// One mesh-space line: its end points in the mesh's stored coordinates and its kind (the
-/// instance data of the lines pass).
+/// One mesh-space line: its end points in the mesh's stored coordinates, its kind, and its width
+/// factors at both ends (`stroke_width`): the instance data of the lines pass.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct LineInstance {
@@ -180,6 +184,7 @@ pub struct LineInstance {
     pub kind: u32,
     pub b: [f32; 3],
     pub pad: u32,
+    pub scale: [f32; 2],
 }
 
 /// The lines of one scene item: a range of the frame's line instances.
@@ -189,17 +194,104 @@ pub struct LineDraw {
     pub instances: Range<u32>,
 }
 
-/// The lines of one view: each scene item's outline set, as the lines pass draws it (instances
-/// and their ranges) and the visible-lines step chains it.
+/// One polyline of a view's mesh-space lines: a chain of edges of one kind, or a curve traced
+/// through faces, in the mesh's stored coordinates.
+#[derive(Clone, Debug)]
+pub struct Chain {
+    pub kind: LineKind,
+    pub points: Vec<[f64; 3]>,
+}
+
+/// The lines of one view: each scene item's chains, as the lines pass draws them (instances and
+/// their ranges) and the visible-lines step cuts them.
 #[derive(Debug, Default)]
 pub struct ViewLines {
-    pub outlines: Vec<MeshOutline>,
+    pub chains: Vec<Vec<Chain>>,
     pub instances: Vec<LineInstance>,
     pub draws: Vec<LineDraw>,
 }
 
 /// Where the `silhouettes` step leaves a frame's lines for the passes and steps after it.
 pub type ViewSlot = Arc<OnceLock<ViewLines>>;
+
+/// A mesh's lines of one view as chains: each kind's edges joined into polylines
+/// (`edges::chains`), then the curves traced through faces.
+pub fn chains(outline: &MeshOutline, positions: &[[f64; 3]]) -> Vec<Chain> {
+    let edges = &outline.edges;
+    let mut kinds: Vec<LineKind> = edges.kinds.clone();
+    kinds.sort_unstable();
+    kinds.dedup();
+    let mut out = Vec::new();
+    for kind in kinds {
+        let of_kind: Vec<[u32; 2]> =
+            edges.edges.iter().zip(&edges.kinds).filter(|(_, k)| **k == kind).map(|(e, _)| *e).collect();
+        let (flat, starts) = chain_edges(&of_kind);
+        for w in starts.windows(2) {
+            let points = flat[w[0] as usize..w[1] as usize].iter().map(|&v| positions[v as usize]).collect();
+            out.push(Chain { kind, points });
+        }
+    }
+    for (kind, curves) in &outline.curves {
+        out.extend((0..curves.len()).map(|i| Chain { kind: *kind, points: curves.line(i).to_vec() }));
+    }
+    out
+}
+
+/// The line instances of a mesh's chains, with each end's width factor from `rule`: the
+/// distances along each chain and the depths are those of the chain projected by `projector`;
+/// `reference` is the depth whose lines keep their width.
+pub fn instances(
+    chains: &[Chain],
+    projector: &Projector,
+    rule: &StrokeWidth,
+    reference: f64,
+) -> Vec<LineInstance> {
+    let mut out = Vec::new();
+    for c in chains {
+        let n = c.points.len();
+        let (mut along, mut depths) = (vec![0.0; n], vec![0.0; n]);
+        if !rule.is_constant() {
+            for i in 1..n {
+                let seen = projector.project(c.points[i - 1], c.points[i], 0);
+                let (l, za, zb) = seen.map_or((0.0, 0.0, 0.0), |l| (l.length(), l.za, l.zb));
+                along[i] = along[i - 1] + l;
+                if i == 1 {
+                    depths[0] = za;
+                }
+                depths[i] = zb;
+            }
+        }
+        let closed = n > 2 && c.points[0] == c.points[n - 1];
+        let factors =
+            if rule.is_constant() { vec![1.0; n] } else { rule.factors(&along, &depths, closed, reference) };
+        out.extend((1..n).map(|i| LineInstance {
+            a: c.points[i - 1].map(|x| x as f32),
+            kind: c.kind as u32,
+            b: c.points[i].map(|x| x as f32),
+            pad: 0,
+            scale: [factors[i - 1] as f32, factors[i] as f32],
+        }));
+    }
+    out
+}
+
+/// The depth (normalised view units) of the centre of the box around every item's bounding
+/// sphere: where lines drawn with width by depth keep their width.
+pub fn reference_depth(items: &[SceneItem], records: &[Arc<MeshRecord>], cam: &ResolvedCamera) -> f64 {
+    let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+    for (item, rec) in items.iter().zip(records) {
+        let sphere = rec.gpu.sphere();
+        let m = item.model_matrix();
+        let c = m.transform_point3(sphere.center);
+        // the transform's largest stretch bounds the sphere's radius in the world
+        let stretch =
+            [m.x_axis, m.y_axis, m.z_axis].iter().map(|a| a.truncate().length()).fold(0.0, f64::max);
+        lo = lo.min(c - sphere.radius * stretch);
+        hi = hi.max(c + sphere.radius * stretch);
+    }
+    let centre = (lo + hi) * 0.5;
+    -(cam.normalized_view().transform_point3(centre)).z
+}
 
 /// The `silhouettes` step: every item's lines for this view.
 #[derive(Debug)]
@@ -215,33 +307,20 @@ impl HostStep for Silhouettes {
 
     fn run(&self, cx: &HostInputs<'_>, _report: &mut FrameReport) -> Result<()> {
         let mut lines = ViewLines::default();
+        let frame = &cx.scene.frame;
+        let by_depth = self.outlines.stroke_width.by_depth;
+        let reference =
+            if by_depth { reference_depth(&cx.scene.scene.items, cx.records, cx.cam) } else { 1.0 };
         for (i, (item, rec)) in cx.scene.scene.items.iter().zip(cx.records).enumerate() {
             let view = stored_view(cx.cam, item.model_matrix(), &rec.gpu);
             let flat = rec.gpu.normals == NormalMode::Flat;
             let outline = MeshLines::of(rec).outline(&rec.host, flat, view, &self.outlines)?;
+            let chains = chains(&outline, &rec.host.positions);
+            let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
             let first = lines.instances.len() as u32;
-            let p = &rec.host.positions;
-            let instance = |a: [f64; 3], b: [f64; 3], kind: LineKind| LineInstance {
-                a: a.map(|x| x as f32),
-                kind: kind as u32,
-                b: b.map(|x| x as f32),
-                pad: 0,
-            };
-            let edges = &outline.edges;
-            lines.instances.extend(
-                edges
-                    .edges
-                    .iter()
-                    .zip(&edges.kinds)
-                    .map(|(e, k)| instance(p[e[0] as usize], p[e[1] as usize], *k)),
-            );
-            for (kind, curves) in &outline.curves {
-                for i in 0..curves.len() {
-                    lines.instances.extend(curves.line(i).windows(2).map(|s| instance(s[0], s[1], *kind)));
-                }
-            }
+            lines.instances.extend(instances(&chains, &projector, &self.outlines.stroke_width, reference));
             lines.draws.push(LineDraw { item: i, instances: first..lines.instances.len() as u32 });
-            lines.outlines.push(outline);
+            lines.chains.push(chains);
         }
         // a slot is filled once per frame
         let _ = self.view.set(lines);

@@ -10,6 +10,7 @@ pub mod ink;
 pub mod lines;
 pub mod mesh_lines;
 pub mod settings;
+pub mod stroke_width;
 pub mod strokes;
 pub mod visibility;
 

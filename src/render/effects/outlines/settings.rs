@@ -14,6 +14,8 @@ use crate::error::field;
 use crate::error::{Error, Result};
 use crate::render::color::{check_unit, Srgb};
 
+use super::stroke_width::StrokeWidth;
+
 /// Width of lines in output pixels when none is given.
 pub const DEFAULT_WIDTH: f32 = 1.5;
 /// Ink colour when none is given (sRGB).
@@ -148,6 +150,9 @@ pub struct Outlines {
     /// world size of one pixel at that depth); a silhouette or boundary with background among
     /// those pixels is on the rim and visible (see `passes::lines::visibility`).
     pub depth_offset: f32,
+    /// Taper and width by depth of mesh-space lines.
+    #[serde(default)]
+    pub stroke_width: StrokeWidth,
 }
 
 impl Default for Outlines {
@@ -176,6 +181,7 @@ impl Outlines {
             normal_threshold: DEFAULT_NORMAL_THRESHOLD as f32,
             depth_threshold: DEFAULT_DEPTH_THRESHOLD as f32,
             depth_offset: DEFAULT_DEPTH_OFFSET,
+            stroke_width: StrokeWidth::default(),
         }
     }
 
@@ -243,7 +249,7 @@ impl Outlines {
             }
         }
         check_threshold(&field(prefix, "suggestive_threshold"), self.suggestive_threshold)?;
-        Ok(())
+        self.stroke_width.validate(prefix)
     }
 }
 

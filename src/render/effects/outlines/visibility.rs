@@ -5,7 +5,6 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::edges::chains::chain_edges;
 use crate::edges::outlines::LineKind;
 use crate::error::{Error, Result};
 use crate::render::gpu_mesh::Placement;
@@ -15,7 +14,7 @@ use crate::render::scene::camera::ResolvedCamera;
 use crate::render::scene::SceneItem;
 use crate::render::uniforms::{footprint, model_view};
 
-use super::mesh_lines::ViewSlot;
+use super::mesh_lines::{LineInstance, ViewSlot};
 use super::settings::INK_KINDS;
 use super::strokes::join_runs;
 
@@ -23,7 +22,8 @@ use super::strokes::join_runs;
 pub const DEPTH_EPSILON: f64 = 1e-5;
 
 /// A line projected to the image: end points in pixels (x right, y down, origin at the top-left
-/// corner of the image) and their linear depths.
+/// corner of the image), their linear depths, and the factors of its kind's width at both ends
+/// (`stroke_width`), interpolated along it on screen.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ScreenLine {
     pub a: [f64; 2],
@@ -31,6 +31,7 @@ pub struct ScreenLine {
     pub za: f64,
     pub zb: f64,
     pub kind: usize,
+    pub scale: [f64; 2],
 }
 
 impl ScreenLine {
@@ -101,7 +102,20 @@ impl Projector {
                 pb = pb.lerp(pa, (self.near - zb) / (za - zb));
             }
         }
-        Some(ScreenLine { a: self.pixels(pa), b: self.pixels(pb), za: -pa.z, zb: -pb.z, kind })
+        Some(ScreenLine {
+            a: self.pixels(pa),
+            b: self.pixels(pb),
+            za: -pa.z,
+            zb: -pb.z,
+            kind,
+            scale: [1.0; 2],
+        })
+    }
+
+    /// A line instance as the lines pass draws it (its float32 points and width factors).
+    pub fn instance(&self, l: &LineInstance) -> Option<ScreenLine> {
+        let s = self.project(l.a.map(|x| x as f64), l.b.map(|x| x as f64), l.kind as usize)?;
+        Some(ScreenLine { scale: l.scale.map(|x| x as f64), ..s })
     }
 }
 
@@ -168,7 +182,7 @@ pub fn coverage_image(
     let mut out = vec![0.0f32; w * h];
     for l in lines {
         let width = widths[l.kind] as f64;
-        let reach = width / 2.0 + 1.0;
+        let reach = width * l.scale[0].max(l.scale[1]) / 2.0 + 1.0;
         let x0 = (l.a[0].min(l.b[0]) - reach).floor().max(0.0) as usize;
         let y0 = (l.a[1].min(l.b[1]) - reach).floor().max(0.0) as usize;
         let x1 = ((l.a[0].max(l.b[0]) + reach).ceil().max(0.0) as usize).min(w);
@@ -184,7 +198,8 @@ pub fn coverage_image(
                     0.0
                 };
                 let (c, z) = l.at(t, orthographic);
-                let cov = (width / 2.0 + 0.5 - (p[0] - c[0]).hypot(p[1] - c[1])).clamp(0.0, 1.0);
+                let here = width * (l.scale[0] + (l.scale[1] - l.scale[0]) * t);
+                let cov = (here / 2.0 + 0.5 - (p[0] - c[0]).hypot(p[1] - c[1])).clamp(0.0, 1.0);
                 if cov > 0.0 && rule.visible(img, c, z, l.kind) {
                     let o = &mut out[y * w + x];
                     *o = o.max(cov as f32);
@@ -275,44 +290,20 @@ impl HostStep for VisibleLines {
         let rule = Visibility::of(self.depth_offset, cx.cam, frame.height);
         let img = DepthImage { depth, width: frame.width as usize, height: frame.height as usize };
         let mut out = Vec::new();
-        for ((item, rec), outline) in cx.scene.scene.items.iter().zip(cx.records).zip(&view.outlines) {
+        for ((item, rec), chains) in cx.scene.scene.items.iter().zip(cx.records).zip(&view.chains) {
             let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
-            let positions = &rec.host.positions;
-            let mut mesh_runs = Vec::new();
-            let visible = |points: &[[f64; 3]], kind: usize, out: &mut Vec<Polyline>| {
+            let mut runs = Vec::new();
+            for c in chains {
+                let kind = c.kind as usize;
                 let screen: Vec<_> =
-                    points.windows(2).filter_map(|s| projector.project(s[0], s[1], kind)).collect();
-                out.extend(
+                    c.points.windows(2).filter_map(|s| projector.project(s[0], s[1], kind)).collect();
+                runs.extend(
                     visible_runs(&screen, cx.cam.orthographic, &img, rule)
                         .into_iter()
                         .map(|points| Polyline { kind, points }),
                 );
-            };
-            let edges = &outline.edges;
-            let mut kinds: Vec<LineKind> = edges.kinds.clone();
-            kinds.sort_unstable();
-            kinds.dedup();
-            for kind in kinds {
-                let of_kind: Vec<[u32; 2]> = edges
-                    .edges
-                    .iter()
-                    .zip(&edges.kinds)
-                    .filter(|(_, k)| **k == kind)
-                    .map(|(e, _)| *e)
-                    .collect();
-                let (flat, starts) = chain_edges(&of_kind);
-                for w in starts.windows(2) {
-                    let points: Vec<[f64; 3]> =
-                        flat[w[0] as usize..w[1] as usize].iter().map(|&v| positions[v as usize]).collect();
-                    visible(&points, kind as usize, &mut mesh_runs);
-                }
             }
-            for (kind, curves) in &outline.curves {
-                for i in 0..curves.len() {
-                    visible(curves.line(i), *kind as usize, &mut mesh_runs);
-                }
-            }
-            out.extend(join_runs(std::mem::take(&mut mesh_runs), true, |k| self.gaps[k]));
+            out.extend(join_runs(runs, true, |k| self.gaps[k]));
         }
         report.lines = Some(out);
         Ok(())
@@ -337,7 +328,7 @@ mod tests {
         let rim_img = DepthImage { depth: &rim, width: 16, height: 16 };
         assert!(rule.visible(&rim_img, [8.0, 8.0], 3.0, LineKind::Silhouette as usize));
         assert!(!rule.visible(&rim_img, [8.0, 8.0], 3.0, LineKind::Ridge as usize));
-        let line = ScreenLine { a: [2.0, 8.5], b: [14.0, 8.5], za: 2.0, zb: 2.0, kind: 0 };
+        let line = ScreenLine { a: [2.0, 8.5], b: [14.0, 8.5], za: 2.0, zb: 2.0, kind: 0, scale: [1.0; 2] };
         let cov = coverage_image(&[line], &[1.5], false, &img, rule);
         assert_eq!(cov[8 * 16 + 8], 1.0);
         assert!(cov[7 * 16 + 8] > 0.0 && cov[5 * 16 + 8] == 0.0);
