@@ -201,6 +201,7 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     if args.outlines != "none":
         options["outlines"] = tm.Outlines(
             args.outlines, width=args.outline_width, crease_angle=args.crease_angle, contours=args.contours,
+            taper=args.taper, width_by_depth=args.width_by_depth,
             suggestive=args.suggestive or None, image_rule=args.image_rule, normal_angle=args.normal_angle,
             depth_jump=args.depth_jump, normal_threshold=args.normal_threshold, depth_threshold=args.depth_threshold)
     return options
@@ -410,6 +411,10 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                    help="line width in pixels (default %(default)g)")
     p.add_argument("--crease-angle", type=float, default=DEMO_OUTLINES.crease_angle, metavar="DEG",
                    help="crease lines where faces meet at more than this (default %(default)g)")
+    p.add_argument("--taper", type=float, default=DEMO_OUTLINES.taper, metavar="PX",
+                   help="mesh lines thin to a point over this many pixels at their ends (default %(default)g)")
+    p.add_argument("--width-by-depth", action=argparse.BooleanOptionalAction, default=DEMO_OUTLINES.width_by_depth,
+                   help="mesh lines wider near the camera, thinner far away (default: %(default)s)")
     _add_contour_arguments(p)
     p.add_argument("--image-rule", choices=tuple(_core.IMAGE_RULES), default=DEMO_OUTLINES.image_rule,
                    help="image-space lines: between pixels whose normals turn or depths jump, width pixels wide "
