@@ -73,3 +73,16 @@ def test_render_bench_options_are_checked():
     for bad in (["--only", "kang,bogus"], ["--wide", "64"], ["--wide", "0x5"]):
         with pytest.raises(SystemExit):
             bench._options(True, bad)
+
+
+def test_stroke_stats_count_short_strokes_and_turning():
+    import numpy as np
+
+    from toonmesh.bench.render import stroke_stats
+
+    straight = np.array([[0.0, 0.0], [10.0, 0.0], [20.0, 0.0]])
+    zigzag = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])
+    n, short, median, turn = stroke_stats([straight, zigzag])
+    assert n == 2 and short == 50.0 and median == pytest.approx((20 + 3 * np.sqrt(2)) / 2)
+    assert turn == pytest.approx(100 * 2 * (np.pi / 2) / (20 + 3 * np.sqrt(2)))
+    assert stroke_stats([straight])[3] == 0.0 and stroke_stats([]) == (0, 0.0, 0.0, 0.0)

@@ -161,6 +161,9 @@ def test_alpha_cutoff_cuts_where_alpha_is_below_it(backend):
     assert kept.color[tr][1] > 150 and np.isfinite(kept.depth[tr])
     assert tuple(cut.color[tr][:3]) == (0, 0, 0) and np.isinf(cut.depth[tr])  # background, no surface
     assert np.array_equal(cut.color[tl], kept.color[tl])
+    # where the geometry has a pass of its own (multisampled colour), it is cut there too
+    ms = rendered(backend, mesh(alpha_cutoff=0.5), msaa=4, **kw)
+    assert "gbuffer" in ms.passes and np.isinf(ms.depth[tr]) and np.isfinite(ms.depth[tl])
     # a vertex colour's alpha counts too
     alpha = np.array([[1, 1, 1, 0.2]] * 4)
     gone = rendered(backend, tm.Mesh(SQUARE_V, SQUARE_F, vertex_colors=alpha, alpha_cutoff=0.5), **kw)

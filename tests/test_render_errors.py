@@ -54,7 +54,8 @@ def test_near_and_far_are_checked_together():
 
 def test_the_core_refuses_bad_items_given_directly():
     r = _core.Renderer()
-    mesh, normals = r.add_mesh(V, F, "smooth")
+    mesh, normals, notes = r.add_mesh(V, F, "smooth")
+    assert notes == []  # nothing to warn about
     assert normals == "smooth"
     frame = tm.RenderOptions(width=4, height=4)
     with pytest.raises(TypeError, match="meshes\\[0\\].material"):

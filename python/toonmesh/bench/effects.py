@@ -1,5 +1,6 @@
-"""Shadows, hatching and dithering: what each costs, and what the shadow map's size and filter
-buy in accuracy (intersection over union of the shadowed pixels with a CPU ray cast).
+"""Shadows, hatching, dithering and colour (vertex and face colours, textures): what each costs,
+and what the shadow map's size and filter buy in accuracy (intersection over union of the
+shadowed pixels with a CPU ray cast).
 
     python -m toonmesh.bench effects [--quick] [--accuracy] [--repeat N] [--json FILE]
 """
@@ -159,6 +160,37 @@ def _cost_table(subdivisions: int, size: int, repeat: int) -> List[Sequence[Any]
             for name, t in times.items()]
 
 
+def sphere_uv(V: np.ndarray) -> np.ndarray:
+    """Longitude and latitude of points around the origin, in [0, 1] (an equirectangular map)."""
+    d = V / np.linalg.norm(V, axis=1, keepdims=True)
+    return np.stack([np.arctan2(d[:, 2], d[:, 0]) / (2 * np.pi) + 0.5, np.arcsin(d[:, 1]) / np.pi + 0.5], -1)
+
+
+def _colour_table(subdivisions: int, size: int, texture_size: int, repeat: int) -> List[Sequence[Any]]:
+    """Frame times of a sphere without colour, with vertex or face colours, and textured."""
+    V, F = tm.shapes.icosphere(subdivisions, noise=0.01, seed=1)
+    rng = np.random.default_rng(0)
+    y, x = np.mgrid[0:texture_size, 0:texture_size]
+    texture = np.stack([(x * 7) % 256, (y * 5) % 256, ((x ^ y) * 3) % 256], -1).astype(np.uint8)
+    uv = sphere_uv(V)
+    r = tm.Renderer()
+    cases = [
+        ("untextured (reference)", r.add_mesh(V, F)),
+        ("vertex colours", r.add_mesh(V, F, vertex_colors=rng.integers(0, 256, (len(V), 3)).astype(np.uint8))),
+        ("face colours", r.add_mesh(V, F, face_colors=rng.integers(0, 256, (len(F), 3)).astype(np.uint8))),
+        (f"textured {texture_size}^2, linear", r.add_mesh(V, F, uv=uv, texture=texture)),
+        (f"textured {texture_size}^2, nearest", r.add_mesh(V, F, uv=uv, texture=texture, texture_filter="nearest")),
+    ]
+    times: Dict[str, List[float]] = {}
+    for _ in range(max(1, repeat)):  # in turns, as in _cost_table
+        for name, mesh in cases:
+            t = median_time(lambda: r.render(mesh, width=size, height=size), 1)
+            times.setdefault(name, []).append(t)
+    base = float(np.median(times[cases[0][0]]))
+    return [(name, len(F), f"{size}x{size}", float(np.median(t)) * 1e3, float(np.median(t)) / base)
+            for name, t in times.items()]
+
+
 def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
     size = 128 if quick else 256
     print(table(("shadow map", "filter", "IoU (worst scene)", "IoU (mean)", "frame ms (torus)"),
@@ -175,3 +207,6 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
     sub, size = (4, 256) if quick else (8, 1024)
     print(table(("effect", "faces", "size", "frame ms", "x bands"), _cost_table(sub, size, repeat),
                 "What each effect costs"))
+    print(table(("mesh", "faces", "size", "frame ms", "x untextured"),
+                _colour_table(sub, size, 256 if quick else 1024, repeat),
+                "What colour costs (target: textured within 1.2x of untextured; medians of runs in turns)"))

@@ -378,6 +378,50 @@ def _knobs(size: int, repeat: int) -> List[Sequence[Any]]:
     return rows
 
 
+def stroke_stats(lines: Sequence[np.ndarray]) -> Tuple[int, float, float, float]:
+    """Strokes, the share of them under 5 px (%), their median length (px) and how much they
+    turn per 100 px of line (radians): how clean a line drawing is."""
+    lengths = np.array([np.linalg.norm(np.diff(l, axis=0), axis=1).sum() for l in lines])
+    turn = 0.0
+    for l in lines:
+        d = np.diff(l, axis=0)
+        d = d[np.linalg.norm(d, axis=1) > 1e-9]
+        if len(d) > 1:
+            a = np.diff(np.arctan2(d[:, 1], d[:, 0]))
+            turn += float(np.abs((a + np.pi) % (2 * np.pi) - np.pi).sum())
+    if not len(lengths):
+        return 0, 0.0, 0.0, 0.0
+    return len(lines), float((lengths < 5).mean() * 100), float(np.median(lengths)), 100 * turn / max(lengths.sum(), 1e-9)
+
+
+def _line_settings(size: int, repeat: int) -> List[Sequence[Any]]:
+    """The raw bunny's silhouette strokes under each line setting, and the frame's time: what
+    each costs and how clean the strokes come out (after the SVG's quarter-pixel simplification)."""
+    import toonmesh as tm
+    from toonmesh import _strokes
+    from toonmesh.data import bunny
+
+    V, F = bunny()
+    r = tm.Renderer()
+    mesh = r.add_mesh(V, F)
+    settings = [
+        ("contours='faces' (Kang et al.)", dict(contours="faces")),
+        ("contours='auto' (the default: smooth between creases)", dict()),
+        ("+ suggestive contours", dict(suggestive=True)),
+        ("+ taper=20, width_by_depth", dict(taper=20.0, width_by_depth=True)),
+    ]
+    rows = []
+    for name, kw in settings:
+        outlines = tm.Outlines("mesh", **kw)
+        args = dict(outlines=outlines, width=size, height=size, outputs=("color", "lines"))
+        t = median_time(lambda: r.render(mesh, **args), repeat=repeat)
+        res = r.render(mesh, **args)
+        sil = [_strokes.simplified(l, _strokes.SIMPLIFY) for l, k in zip(res.lines, res.line_kinds) if k == "silhouette"]
+        n, short, median, turn = stroke_stats(sil)
+        rows.append((name, f"{t * 1e3:.1f} ms", n, f"{short:.0f}%", f"{median:.1f} px", f"{turn:.1f}"))
+    return rows
+
+
 def _near(mask: np.ndarray) -> np.ndarray:
     """Pixels within one pixel (3x3) of a set pixel."""
     p = np.pad(mask, 1)
@@ -474,7 +518,8 @@ def _tables(text: str) -> Tuple[str, ...]:
 
 def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
     """The tables of error against time: each accuracy knob (MSAA, supersampling) on the bunny,
-    and outlines against the exact ones at several sizes. They use sizes of their own (smaller
+    the line settings (how clean the silhouette strokes come out), and outlines against the
+    exact ones at several sizes. They use sizes of their own (smaller
     with ``quick``); the options in ``extra`` are checked but set the main table only."""
     _options(quick, extra)
     knob_size = 128 if quick else 512
@@ -482,6 +527,12 @@ def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) ->
         ["accuracy knob", "time", "mean abs difference (0-255)", "% pixels off by > 8"],
         [(k, f"{t * 1e3:.1f} ms", d, f"{p:.2f}") for k, t, d, p in _knobs(knob_size, repeat)],
         title=f"Accuracy knobs: the bunny at {knob_size}x{knob_size}, toon bands, against 4x supersampling",
+    ))
+    line_size = 200 if quick else 600
+    print(table(
+        ["line setting", "frame", "silhouette strokes", "under 5 px", "median", "turning per 100 px (rad)"],
+        _line_settings(line_size, repeat),
+        title=f"Line settings: the raw bunny at {line_size}x{line_size}, mesh lines",
     ))
     sizes = (128, 256) if quick else (256, 512, 1024, 2048)
     print(table(

@@ -67,7 +67,9 @@ impl Albedo {
                     return Err(Error::invalid("uv", format!("row {i} is not finite: {:?}", uv[i])));
                 }
             }
-            (Some(_), None) => return Err(Error::invalid("uv, texture", "uv given without a texture to look up")),
+            (Some(_), None) => {
+                return Err(Error::invalid("uv, texture", "uv given without a texture to look up"))
+            }
             (None, Some(_)) => return Err(Error::invalid("uv, texture", "a texture needs uv coordinates")),
             (None, None) => {}
         }

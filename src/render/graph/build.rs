@@ -38,9 +38,9 @@ pub struct MeshDraw<'a> {
     pub constants: &'a [(&'a str, f64)],
     pub more: &'a [Option<&'a wgpu::BindGroupLayout>],
     pub cull: Option<wgpu::Face>,
-    /// Reads the mesh's colour and texture (`gpu_albedo`): its vertex buffer, through
-    /// `vs_albedo`.
-    pub albedo: bool,
+    /// The vertex entry point that reads the mesh's colour and texture (`gpu_albedo`: its
+    /// vertex buffer and bind group), if the pipeline does.
+    pub albedo: Option<&'a str>,
 }
 
 /// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`, then
@@ -50,14 +50,14 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
     let layouts = &f.pipelines.layouts;
     let mut groups = vec![Some(&layouts.frame), Some(&layouts.draw)];
     groups.extend(d.more.iter().copied());
-    if d.albedo {
+    if d.albedo.is_some() {
         groups.resize(gpu_albedo::GROUP as usize, None);
         groups.push(Some(&layouts.albedo));
     }
     let layout = f.pipelines.layout_with_gaps(device, d.label, &groups);
     let options = wgpu::PipelineCompilationOptions { constants: d.constants, ..Default::default() };
     let mut buffers = vec![Some(GpuMesh::vertex_layout())];
-    if d.albedo {
+    if d.albedo.is_some() {
         buffers.resize(gpu_albedo::SLOT as usize + 1, None);
         buffers[gpu_albedo::SLOT as usize] = Some(gpu_albedo::vertex_layout());
     }
@@ -66,7 +66,7 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
         layout: Some(&layout),
         vertex: wgpu::VertexState {
             module,
-            entry_point: Some(if d.albedo { "vs_albedo" } else { "vs_main" }),
+            entry_point: Some(d.albedo.unwrap_or("vs_main")),
             compilation_options: options.clone(),
             buffers: &buffers,
         },

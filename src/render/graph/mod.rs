@@ -128,16 +128,16 @@ impl FrameCtx<'_> {
         pass: &mut wgpu::RenderPass<'_>,
         pipeline_for: impl Fn(&DrawItem<'_>) -> Arc<wgpu::RenderPipeline>,
     ) {
-        self.draw_meshes_with(pass, pipeline_for, false)
+        self.draw_meshes_with(pass, pipeline_for, |_| false)
     }
 
-    /// `draw_meshes`, binding each coloured mesh's albedo (vertex buffer and texture) when
-    /// `with_albedo` (the shading pass: its pipelines for those meshes read them).
+    /// `draw_meshes`, binding a coloured mesh's albedo (vertex buffer and texture) where
+    /// `with_albedo` says its pipeline reads them.
     pub fn draw_meshes_with(
         &self,
         pass: &mut wgpu::RenderPass<'_>,
         pipeline_for: impl Fn(&DrawItem<'_>) -> Arc<wgpu::RenderPipeline>,
-        with_albedo: bool,
+        with_albedo: impl Fn(&DrawItem<'_>) -> bool,
     ) {
         pass.set_bind_group(0, &self.res.uniforms.frame_group, &[]);
         let mut current: Option<Arc<wgpu::RenderPipeline>> = None;
@@ -149,7 +149,7 @@ impl FrameCtx<'_> {
             }
             pass.set_bind_group(1, &self.res.uniforms.draw_group, &[d.uniform_offset]);
             pass.set_vertex_buffer(0, d.mesh.vertices.slice(..));
-            if let (true, Some(a)) = (with_albedo, &d.mesh.albedo) {
+            if let (true, Some(a)) = (with_albedo(d), &d.mesh.albedo) {
                 pass.set_vertex_buffer(gpu_albedo::SLOT, a.vertices.slice(..));
                 pass.set_bind_group(gpu_albedo::GROUP, &a.group, &[]);
             }

@@ -2,7 +2,8 @@
 //! point of it dips behind the surface for a sample or two, and lines of one kind meet end to end
 //! where chains of edges and curves through faces meet. Ends of runs closer than a gap (in
 //! pixels) are joined, nearest pairs first, so that a contour is drawn as one long stroke, not as
-//! dashes a pixel apart.
+//! dashes a pixel apart; short runs that lie within the gap of a longer line of their kind (a
+//! contour's spur or sliver, whose ink that line draws) are left out.
 
 use std::collections::HashMap;
 
@@ -136,6 +137,70 @@ pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64)
     out
 }
 
+/// `runs` without the short ones that lie wholly within `gap(kind)` of a longer run of the same
+/// kind: a spur where a contour branches off another for a pixel or two, or a sliver beside it,
+/// whose ink the other line already draws. Only runs shorter than `SPUR_GAPS` gaps are looked at.
+pub fn drop_covered(runs: Vec<Polyline>, gap: impl Fn(usize) -> f64) -> Vec<Polyline> {
+    let lengths: Vec<f64> = runs.iter().map(|r| length(&r.points)).collect();
+    let short: Vec<usize> = (0..runs.len()).filter(|&i| lengths[i] < SPUR_GAPS * gap(runs[i].kind)).collect();
+    if short.is_empty() {
+        return runs;
+    }
+    let cell = runs.iter().map(|r| gap(r.kind)).fold(0.0f64, f64::max).max(1e-9);
+    let key = |p: [f64; 2]| ((p[0] / cell).floor() as i64, (p[1] / cell).floor() as i64);
+    // every segment of every run, filed under the cells it passes within `cell` of
+    let mut grid: HashMap<(i64, i64), Vec<(usize, usize)>> = HashMap::new();
+    for (i, r) in runs.iter().enumerate() {
+        for (j, w) in r.points.windows(2).enumerate() {
+            let (a, b) = (key(w[0]), key(w[1]));
+            for x in a.0.min(b.0) - 1..=a.0.max(b.0) + 1 {
+                for y in a.1.min(b.1) - 1..=a.1.max(b.1) + 1 {
+                    grid.entry((x, y)).or_default().push((i, j));
+                }
+            }
+        }
+    }
+    let covered = |i: usize| {
+        let r = &runs[i];
+        let g = gap(r.kind);
+        // the run's points and the middles of its segments
+        let probes = r.points.iter().copied().chain(r.points.windows(2).map(|w| mid(w[0], w[1])));
+        probes.into_iter().all(|p| {
+            grid.get(&key(p)).into_iter().flatten().any(|&(k, j)| {
+                let o = &runs[k];
+                k != i && o.kind == r.kind && lengths[k] > lengths[i] && {
+                    let (a, b) = (o.points[j], o.points[j + 1]);
+                    segment_distance(p, a, b) <= g
+                }
+            })
+        })
+    };
+    let drop: Vec<bool> = {
+        let mut d = vec![false; runs.len()];
+        for &i in &short {
+            d[i] = covered(i);
+        }
+        d
+    };
+    runs.into_iter().zip(drop).filter(|(_, d)| !d).map(|(r, _)| r).collect()
+}
+
+/// Runs shorter than this many join gaps are dropped where another line already covers them.
+pub const SPUR_GAPS: f64 = 4.0;
+
+fn mid(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
+    [(a[0] + b[0]) * 0.5, (a[1] + b[1]) * 0.5]
+}
+
+/// Distance from p to the segment ab, in pixels.
+fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let ab = [b[0] - a[0], b[1] - a[1]];
+    let l2 = ab[0] * ab[0] + ab[1] * ab[1];
+    let t =
+        if l2 > 0.0 { (((p[0] - a[0]) * ab[0] + (p[1] - a[1]) * ab[1]) / l2).clamp(0.0, 1.0) } else { 0.0 };
+    (p[0] - a[0] - t * ab[0]).hypot(p[1] - a[1] - t * ab[1])
+}
+
 fn is_closed(points: &[[f64; 2]]) -> bool {
     points.len() > 2 && points[0] == points[points.len() - 1]
 }
@@ -169,6 +234,19 @@ mod tests {
         assert_eq!(across.len(), 2);
         assert_eq!(across[0].points.last(), Some(&[30.0, 0.0]));
         assert_eq!(across[0].kind, 0, "the kind of the longest part");
+    }
+
+    #[test]
+    fn a_spur_along_another_line_goes_and_a_lone_dot_stays() {
+        let runs = vec![
+            run(0, &[[0.0, 0.0], [40.0, 0.0]]),
+            run(0, &[[10.0, 0.5], [13.0, 1.2]]), // within 1.5 px of the long line
+            run(1, &[[20.0, 0.5], [22.0, 0.5]]), // another kind: kept
+            run(0, &[[30.0, 5.0], [32.0, 5.0]]), // alone: kept
+        ];
+        let kept = drop_covered(runs, |_| 1.5);
+        assert_eq!(kept.len(), 3);
+        assert!(kept.iter().all(|r| r.points[0] != [10.0, 0.5]));
     }
 
     #[test]

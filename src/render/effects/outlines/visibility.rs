@@ -16,7 +16,7 @@ use crate::render::uniforms::{footprint, model_view};
 
 use super::mesh_lines::{LineInstance, ViewSlot};
 use super::settings::INK_KINDS;
-use super::strokes::join_runs;
+use super::strokes::{drop_covered, join_runs};
 
 /// The relative depth tolerance of the visibility test (float rounding of the line's own depth).
 pub const DEPTH_EPSILON: f64 = 1e-5;
@@ -265,7 +265,7 @@ pub fn visible_runs(
 
 /// The `visible_lines` step: the view's lines, chained per kind and mesh, cut to their visible
 /// runs against the frame's depth, and runs of a kind that meet (within `gaps`) joined into
-/// strokes (`RenderResult.lines`).
+/// strokes, short ones covered by a longer line left out (`RenderResult.lines`).
 #[derive(Debug)]
 pub struct VisibleLines {
     pub depth_offset: f32,
@@ -303,7 +303,8 @@ impl HostStep for VisibleLines {
                         .map(|points| Polyline { kind, points }),
                 );
             }
-            out.extend(join_runs(runs, true, |k| self.gaps[k]));
+            let gap = |k: usize| self.gaps[k];
+            out.extend(drop_covered(join_runs(runs, true, gap), gap));
         }
         report.lines = Some(out);
         Ok(())

@@ -11,3 +11,23 @@ fn fs_normal_depth(i: Varyings, @builtin(front_facing) front_facing: bool) -> @l
 fn fs_depth(i: Varyings) -> @location(0) u32 {
     return depth_bits(i);
 }
+
+// A coloured mesh with an alpha cutoff: no normal or depth where its pixels are cut
+// (shaders/albedo.wgsl).
+fn albedo_kept(v: VsOutAlbedoLean) {
+    if (albedo_sample(v.color, v.uv).a < ALPHA_CUTOFF) {
+        discard;
+    }
+}
+
+@fragment
+fn fs_normal_depth_albedo(v: VsOutAlbedoLean, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<u32> {
+    albedo_kept(v);
+    return normal_depth_bits(Varyings(v.clip, v.view_pos, v.view_normal), front_facing);
+}
+
+@fragment
+fn fs_depth_albedo(v: VsOutAlbedoLean) -> @location(0) u32 {
+    albedo_kept(v);
+    return depth_bits(Varyings(v.clip, v.view_pos, v.view_normal));
+}

@@ -3,16 +3,22 @@
 //! colour asked for).
 
 use crate::error::Result;
+use crate::render::gpu_albedo::GpuAlbedo;
 use crate::render::graph::build::{cull_bits, mesh_pipeline, MeshDraw};
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
-use crate::render::graph::{cleared, depth_buffer, geometry_clear, FrameCtx, Pass, Recorder};
+use crate::render::graph::{cleared, depth_buffer, geometry_clear, DrawItem, FrameCtx, Pass, Recorder};
 use crate::render::pipelines::{target, PipelineKey};
 
-pub const WGSL: &str = include_str!("geometry.wgsl");
+pub const WGSL: &str = concat!(include_str!("../../shaders/albedo.wgsl"), include_str!("geometry.wgsl"));
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Geometry {
     pub layout: GeometryLayout,
+}
+
+/// The colour of a mesh whose pixels an alpha cutoff may drop: read here too, to drop them.
+fn cut<'a>(d: &DrawItem<'a>) -> Option<&'a GpuAlbedo> {
+    d.mesh.albedo.as_ref().filter(|a| a.alpha_cutoff.is_some())
 }
 
 impl Pass for Geometry {
@@ -26,12 +32,22 @@ impl Pass for Geometry {
 
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layout = self.layout;
-        let pipeline = |cull: Option<wgpu::Face>| {
-            f.pipelines.get(PipelineKey::new("gbuffer", layout as u64 | cull_bits(cull) << 8), || {
+        let pipeline = |d: &DrawItem<'_>| {
+            let albedo = cut(d);
+            let constants: Vec<(&str, f64)> = albedo.map_or(vec![], |a| {
+                vec![
+                    ("TEXTURED", a.textured as u32 as f64),
+                    ("ALPHA_CUTOFF", a.alpha_cutoff.map_or(-1.0, f64::from)),
+                ]
+            });
+            let key = PipelineKey::new("gbuffer", layout as u64 | cull_bits(d.cull) << 8).with(&constants);
+            f.pipelines.get(key, || {
                 let module = f.module("gbuffer", WGSL, None);
-                let entry = match layout {
-                    GeometryLayout::NormalDepth => "fs_normal_depth",
-                    GeometryLayout::Depth => "fs_depth",
+                let entry = match (layout, albedo.is_some()) {
+                    (GeometryLayout::NormalDepth, false) => "fs_normal_depth",
+                    (GeometryLayout::NormalDepth, true) => "fs_normal_depth_albedo",
+                    (GeometryLayout::Depth, false) => "fs_depth",
+                    (GeometryLayout::Depth, true) => "fs_depth_albedo",
                 };
                 let targets = [target(layout.format())];
                 mesh_pipeline(
@@ -42,10 +58,10 @@ impl Pass for Geometry {
                         entry,
                         targets: &targets,
                         samples: 1,
-                        constants: &[],
+                        constants: &constants,
                         more: &[],
-                        cull,
-                        albedo: false,
+                        cull: d.cull,
+                        albedo: albedo.map(|_| "vs_albedo"),
                     },
                 )
             })
@@ -53,7 +69,7 @@ impl Pass for Geometry {
         let attachments = [cleared(f.res.view(Target::Geometry), geometry_clear(layout))];
         let mut pass =
             rec.begin("gbuffer", &attachments, depth_buffer(f.res.view(Target::GeometryDepth), false));
-        f.draw_meshes(&mut pass, |d| pipeline(d.cull));
+        f.draw_meshes_with(&mut pass, pipeline, |d| cut(d).is_some());
         Ok(())
     }
 }

@@ -17,7 +17,11 @@ use crate::render::pipelines::{target, PipelineKey};
 
 use variant::ShadingVariant;
 
-pub const WGSL: &str = concat!(include_str!("shade.wgsl"), include_str!("albedo.wgsl"));
+pub const WGSL: &str = concat!(
+    include_str!("shade.wgsl"),
+    include_str!("../../shaders/albedo.wgsl"),
+    include_str!("albedo.wgsl")
+);
 
 #[derive(Debug, Clone)]
 pub struct Shade {
@@ -67,13 +71,21 @@ impl Shade {
                     }
                 }
             };
+            // a coloured mesh's stages read its colour too (albedo.wgsl)
+            let albedo_entry = |name: &'static str| match (name, shading.anchored) {
+                ("fs_color", false) => "fs_color_albedo",
+                ("fs_color", true) => "fs_color_albedo_anchored",
+                ("normal_depth", false) => "fs_color_normal_depth_albedo",
+                ("normal_depth", true) => "fs_color_normal_depth_albedo_anchored",
+                (_, false) => "fs_color_depth_albedo",
+                (_, true) => "fs_color_depth_albedo_anchored",
+            };
             if shading.albedo {
-                // the coloured mesh's stages read every varying (albedo.wgsl)
-                entry = match self.geometry {
-                    None => "fs_color_albedo",
-                    Some(GeometryLayout::NormalDepth) => "fs_color_normal_depth_albedo",
-                    Some(GeometryLayout::Depth) => "fs_color_depth_albedo",
-                };
+                entry = albedo_entry(match self.geometry {
+                    None => "fs_color",
+                    Some(GeometryLayout::NormalDepth) => "normal_depth",
+                    Some(GeometryLayout::Depth) => "depth",
+                });
             }
             let mut constants = shading.constants.clone();
             constants.push(("LIGHTS", f.lights as f64));
@@ -94,7 +106,11 @@ impl Shade {
                     constants: &constants,
                     more: &more,
                     cull: d.cull,
-                    albedo: shading.albedo,
+                    albedo: shading.albedo.then_some(if shading.anchored {
+                        "vs_albedo_anchored"
+                    } else {
+                        "vs_albedo"
+                    }),
                 },
             )
         })
@@ -144,7 +160,7 @@ impl Pass for Shade {
         if let Some(h) = &self.hook {
             pass.set_bind_group(2, &h.bind_group(f), &[]);
         }
-        f.draw_meshes_with(&mut pass, |d| self.pipeline(f, d), true);
+        f.draw_meshes_with(&mut pass, |d| self.pipeline(f, d), |_| true);
         Ok(())
     }
 }
