@@ -289,3 +289,23 @@ def test_a_pil_image_is_a_texture():
     a = tm.render(tm.Mesh(V, F, uv=uv, texture=Image.fromarray(CHECKER)), **HEAD_ON).color
     b = tm.render(tm.Mesh(V, F, uv=uv, texture=CHECKER), **HEAD_ON).color
     assert np.array_equal(a, b)
+
+
+def test_a_textured_file_renders_with_its_texture_in_batch_renders(tmp_path):
+    trimesh = need("trimesh")
+    from PIL import Image
+
+    from toonmesh import batch
+
+    V, F = grid(5)
+    uv = (V[:, :2] + 1) / 2
+    pbr = trimesh.visual.material.PBRMaterial(baseColorTexture=Image.fromarray(CHECKER), baseColorFactor=[255] * 4)
+    visual = trimesh.visual.TextureVisuals(uv=uv, material=pbr)
+    path = str(tmp_path / "checker.glb")
+    trimesh.Trimesh(V, F, visual=visual, process=False).export(path)
+    out = str(tmp_path / "out.png")
+    batch.render_views(path, [out], camera=HEAD_ON["camera"], lights=HEAD_ON["lights"], width=S, height=S,
+                       material=HEAD_ON["material"], ambient=(0.0, 0.0, 0.0))
+    image = np.asarray(Image.open(out))[..., :3].astype(int)
+    direct = tm.render(tm.Mesh(V, F, uv=uv, texture=CHECKER), **HEAD_ON).color[..., :3].astype(int)
+    assert np.abs(image - direct).max() <= 2  # the file's texture, the right way up

@@ -12,7 +12,7 @@ from typing import Any, Dict, List, Sequence, Tuple
 
 import numpy as np
 
-from toonmesh import _core
+from toonmesh import _colors, _core
 
 #: Suffixes written for a render: the colour image alone, or every output array.
 IMAGE_SUFFIXES = (".png", ".npz")
@@ -42,6 +42,22 @@ def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
         ImportError: trimesh is not installed.
         ValueError: the file cannot be read as a triangle mesh.
     """
+    mesh = _load(path, keep_obj_order=True)
+    return _arrays(path, mesh)
+
+
+def read_colored_mesh(path: str) -> Tuple[np.ndarray, np.ndarray, Dict[str, Any]]:
+    """(V, F, colour keywords) of a mesh file, for rendering: as :func:`read_mesh`, except that
+    an OBJ's vertices are split where texture coordinates change (so that its texture maps
+    right), with the colour the file carries (vertex or face colours, or uv and the material's
+    image) as the keywords of :class:`toonmesh.Mesh`; what it carries but is not drawn is named
+    in a ``UserWarning``."""
+    mesh = _load(path, keep_obj_order=False)
+    V, F = _arrays(path, mesh)
+    return V, F, _colors.gather(mesh, {}, path)
+
+
+def _load(path: str, keep_obj_order: bool) -> Any:
     if not os.path.exists(path):
         raise FileNotFoundError(f"{path}: no such file")
     if os.path.isdir(path):
@@ -49,12 +65,16 @@ def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
     trimesh = _trimesh()
     try:
         # maintain_order: OBJ positions as listed, not split at texture seams
-        extra = {"maintain_order": True} if path.lower().endswith(".obj") else {}
+        extra = {"maintain_order": True} if keep_obj_order and path.lower().endswith(".obj") else {}
         mesh = trimesh.load(path, process=False, force="mesh", **extra)
     except Exception as exc:  # trimesh raises many kinds for files it cannot parse
         raise ValueError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
     if path.lower().endswith(".stl") and hasattr(mesh, "merge_vertices"):
         mesh.merge_vertices()
+    return mesh
+
+
+def _arrays(path: str, mesh: Any) -> Tuple[np.ndarray, np.ndarray]:
     faces = np.asarray(getattr(mesh, "faces", np.zeros((0, 3))))
     if faces.ndim != 2 or faces.shape[1] != 3 or len(faces) == 0:
         raise ValueError(f"{path}: no triangles in the file")

@@ -23,7 +23,7 @@ from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
-from toonmesh._files import check_distinct_names, image_suffix, read_mesh, save_result, view_paths
+from toonmesh._files import check_distinct_names, image_suffix, read_colored_mesh, save_result, view_paths
 from toonmesh._render import Normals, RenderOptions, shared_renderer
 from toonmesh._views import check_views, turntable
 
@@ -51,19 +51,19 @@ def render_views(
 ) -> List[Dict[str, Any]]:
     """Renders one mesh file into ``files``, one view each (a turntable about ``up`` when there
     are several files, unless ``camera`` is given with one file). ``render_options``: the
-    keywords of :class:`toonmesh.RenderOptions`. Returns one dict per file: see
-    :func:`render_files`."""
+    keywords of :class:`toonmesh.RenderOptions`. The file's own colour (vertex or face colours,
+    or a texture) is drawn. Returns one dict per file: see :func:`render_files`."""
     t0 = time.perf_counter()
     if "camera" in render_options and len(files) != 1:
         raise ValueError("camera: give either a camera or several views, not both")
     cameras = [render_options.pop("camera")] if "camera" in render_options else turntable(len(files), up)
     options = RenderOptions(**render_options)  # checked once, before the mesh is read
-    V, F = read_mesh(mesh_path)
+    V, F, colors = read_colored_mesh(mesh_path)  # with the colour and texture the file carries
     if smooth_iterations and smooth_method != "paper":
         V, smooth_iterations = _smoothed(V, F, smooth_method, smooth_iterations), 0
     renderer = shared_renderer(backend)
     # "paper": the renderer's own pre-smoothing, each vertex to its neighbours' mean
-    handle = renderer.add_mesh(V, F, normals=normals, smooth_iterations=smooth_iterations)
+    handle = renderer._add(V, F, normals, smooth_iterations, colors)
     load_s = time.perf_counter() - t0
     worker = f"{socket.gethostname()}:{os.getpid()}"
     rows = []
