@@ -296,8 +296,7 @@ def _surface(geom: Any, source: str, name: str, ignored: List[str], materials: b
     visual = getattr(geom, "visual", None)
     if visual is not None:
         _visual_into(surface, visual, ignored, materials)
-        if materials or getattr(visual, "kind", None) in ("vertex", "face"):  # not trimesh's placeholder
-            surface.colors = _colors.from_trimesh(geom)
+        surface.colors = _colors.from_trimesh(geom)  # the renderer's rule (trimesh's placeholder brings nothing)
         ignored.extend(_UNUSED.get(n, n) for n in surface.colors.pop("unused", []))
         if "texture" in surface.colors:  # one array, shared by the geometry's instances
             surface.colors["texture"] = _colors.texture_array(surface.colors["texture"])
