@@ -1735,7 +1735,7 @@ def _methods(cls: type) -> Set[str]:
 def test_every_public_callable_is_in_the_table() -> None:
     """A new public function, class or method must get its row in CASES (or be listed here as
     taking no arguments worth probing)."""
-    covered = {c.name.split("(")[0] for c in CASES} | {"data.load_obj"}  # load_obj: see below
+    covered = {c.name.split("(")[0] for c in CASES} | {"data.load_obj", "load"}  # they read files: see below
     no_arguments = {"get_num_threads", "data.bunny", "edges.FeatureEdges", "edges.EdgeDetection"}
     no_arguments |= {"edges.Curvature"}  # what curvature() returns
     no_arguments |= {"kang_table", "Light.key", "MeshHandle", "RenderStack"}
@@ -1793,3 +1793,37 @@ def test_load_obj_arguments(tmp_path: Any, label: str, path: Any, expected: Any)
     if expected is not FileNotFoundError:
         assert str(info.value).startswith("path:")
     assert load_obj.__module__ == "toonmesh.data"
+
+
+# toonmesh.load reads files too: a bad argument names ``path``; a bad file names the file.
+
+
+@pytest.mark.parametrize(
+    "label, path, expected",
+    [
+        ("int", 3, TypeError),
+        ("none", None, TypeError),
+        ("list", ["a.obj"], TypeError),
+        ("bytes", b"a.obj", TypeError),
+        ("missing file", "no/such/file.obj", FileNotFoundError),
+        ("not an obj", "BAD", ValueError),
+        ("short vertex line", "v 1 2\nf 1 2 3\n", ValueError),
+        ("a good obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", OK),
+    ],
+)
+def test_load_arguments(tmp_path: Any, label: str, path: Any, expected: Any) -> None:
+    from conftest import need
+
+    need("trimesh")  # toonmesh.load reads through trimesh
+    if isinstance(path, str) and path.startswith(("v ", "BAD")):
+        path = _obj_file(str(tmp_path), path.replace("BAD", "this is not an obj file\nf a b c\n"))
+    if expected == OK:
+        (mesh,) = tm.load(path)
+        assert mesh.vertices.shape == (3, 3) and mesh.faces.tolist() == [[0, 1, 2]]
+        return
+    with pytest.raises(expected) as info:
+        tm.load(path)
+    if expected is TypeError:
+        assert str(info.value).startswith("path:")
+    elif isinstance(path, str):
+        assert str(info.value).startswith(path)  # the file, then what is wrong with it

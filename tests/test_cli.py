@@ -83,9 +83,13 @@ def test_render_one_mesh_gives_the_api_image(tmp_path):
     assert "wrote spot.png (64x48" in r.stdout
     from toonmesh.data import load_obj
 
+    from toonmesh.cli import DEMO_OUTLINES
+
     V, F = load_obj(SPOT)
-    expected = tm.render(V, F, width=64, height=48).color  # the default camera is the y-up front view
+    # the default camera is the y-up front view; the default lines are the demo's
+    expected = tm.render(V, F, width=64, height=48, outlines=DEMO_OUTLINES).color
     assert np.array_equal(read_png(tmp_path / "spot.png"), expected)
+    assert DEMO_OUTLINES.kind == "mesh" and DEMO_OUTLINES.crease_angle == 60.0
 
 
 def test_render_turntable_of_several_meshes_into_a_folder(tmp_path, capsys, monkeypatch):

@@ -239,6 +239,13 @@ def test_a_trimesh_brings_its_colours_and_texture():
     assert np.array_equal(tm.render(textured, **HEAD_ON).color, r.render(tm.Mesh(V, F, uv=uv, texture=CHECKER), **HEAD_ON).color)
     handle = r.add_mesh(textured)
     assert np.array_equal(r.render(handle, **HEAD_ON).color, r.render(tm.Mesh(V, F, uv=uv, texture=CHECKER), **HEAD_ON).color)
+    # uv without a material of the file's (an OBJ with vt lines only: trimesh makes a grey
+    # placeholder image) brings nothing; an OBJ material's Kd without an image is the colour
+    bare = trimesh.Trimesh(V, F, visual=trimesh.visual.TextureVisuals(uv=uv), process=False)
+    assert tm.Mesh(bare).colors == {} and same(tm.Mesh(bare), tm.Mesh(V, F))
+    kd = trimesh.visual.material.SimpleMaterial(diffuse=[200, 30, 30, 255])
+    red = trimesh.Trimesh(V, F, visual=trimesh.visual.TextureVisuals(uv=uv, material=kd), process=False)
+    assert same(tm.Mesh(red), tm.Mesh(V, F, vertex_colors=np.tile([200, 30, 30], (len(V), 1)).astype(np.uint8)))
     # a glTF material: its base colour factor (linear light) multiplies the texture
     pbr = trimesh.visual.material.PBRMaterial(baseColorTexture=Image.fromarray(CHECKER), baseColorFactor=[128, 255, 255, 255])
     half_red = trimesh.Trimesh(V, F, visual=trimesh.visual.TextureVisuals(uv=uv, material=pbr), process=False)
@@ -289,3 +296,23 @@ def test_a_pil_image_is_a_texture():
     a = tm.render(tm.Mesh(V, F, uv=uv, texture=Image.fromarray(CHECKER)), **HEAD_ON).color
     b = tm.render(tm.Mesh(V, F, uv=uv, texture=CHECKER), **HEAD_ON).color
     assert np.array_equal(a, b)
+
+
+def test_a_textured_file_renders_with_its_texture_in_batch_renders(tmp_path):
+    trimesh = need("trimesh")
+    from PIL import Image
+
+    from toonmesh import batch
+
+    V, F = grid(5)
+    uv = (V[:, :2] + 1) / 2
+    pbr = trimesh.visual.material.PBRMaterial(baseColorTexture=Image.fromarray(CHECKER), baseColorFactor=[255] * 4)
+    visual = trimesh.visual.TextureVisuals(uv=uv, material=pbr)
+    path = str(tmp_path / "checker.glb")
+    trimesh.Trimesh(V, F, visual=visual, process=False).export(path)
+    out = str(tmp_path / "out.png")
+    batch.render_views(path, [out], camera=HEAD_ON["camera"], lights=HEAD_ON["lights"], width=S, height=S,
+                       material=HEAD_ON["material"], ambient=(0.0, 0.0, 0.0))
+    image = np.asarray(Image.open(out))[..., :3].astype(int)
+    direct = tm.render(tm.Mesh(V, F, uv=uv, texture=CHECKER), **HEAD_ON).color[..., :3].astype(int)
+    assert np.abs(image - direct).max() <= 2  # the file's texture, the right way up

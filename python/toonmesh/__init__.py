@@ -33,6 +33,7 @@ from toonmesh._render import (
     render,
 )
 
+from toonmesh._load import load
 from toonmesh._render import __all__ as _rendering
 from toonmesh.viewer import Viewer
 
@@ -45,6 +46,7 @@ __all__ = [
     "__version__",
     "edges",
     "get_num_threads",
+    "load",
     "set_num_threads",
     "shapes",
     "smooth",

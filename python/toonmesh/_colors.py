@@ -38,9 +38,27 @@ def _array(value: Any) -> Any:
         return value
 
 
+def _placeholder(material: Any) -> bool:
+    """Whether a material is the one trimesh makes for texture coordinates without one (an OBJ
+    with ``vt`` lines and no material): a tiny grey image that is no part of the file."""
+    from trimesh.visual.material import color_image
+
+    image = getattr(material, "image", None)
+    if image is None or getattr(image, "size", None) != color_image().size:
+        return False
+    return bool(np.array_equal(np.asarray(image.convert("RGBA")), np.asarray(color_image().convert("RGBA"))))
+
+
+def _default_diffuse() -> Any:
+    from trimesh.visual.material import SimpleMaterial
+
+    return SimpleMaterial().diffuse
+
+
 def from_trimesh(mesh: Any) -> Dict[str, Any]:
     """The colour keywords a trimesh carries (empty when it has none), and "unused": notes on
-    what it carries that is not drawn."""
+    what it carries that is not drawn. Texture coordinates without an image of the file's
+    (trimesh's grey placeholder) and trimesh's default material colour bring nothing."""
     visual = getattr(mesh, "visual", None)
     kind = getattr(visual, "kind", None)
     found: Dict[str, Any] = {}
@@ -63,10 +81,12 @@ def from_trimesh(mesh: Any) -> Dict[str, Any]:
                 cutoff = getattr(material, "alphaCutoff", None)
                 found["alpha_cutoff"] = 0.5 if cutoff is None else float(cutoff)  # glTF's default
             unused += [n for n in _PBR_UNUSED if getattr(material, n, None) is not None]
-        elif material is not None:  # trimesh's SimpleMaterial (OBJ files): the image, else Kd
+        elif material is not None and not _placeholder(material):
+            # trimesh's SimpleMaterial (OBJ files): the image, else Kd unless it is trimesh's default
             image = getattr(material, "image", None)
-            if image is None and getattr(material, "diffuse", None) is not None:
-                factor = np.asarray(material.diffuse, dtype=np.float64) / 255.0
+            diffuse = getattr(material, "diffuse", None)
+            if image is None and diffuse is not None and not np.array_equal(diffuse, _default_diffuse()):
+                factor = np.asarray(diffuse, dtype=np.float64) / 255.0
         if image is not None and uv is not None:
             found["texture"], found["uv"] = image, np.asarray(uv)
         elif image is not None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from typing import Any, Optional, Tuple
 
 import numpy as np
@@ -18,6 +19,11 @@ def mesh_arrays(vertices: Any, faces: Optional[Any]) -> Tuple[np.ndarray, np.nda
     if faces is None:
         if hasattr(vertices, "vertices") and hasattr(vertices, "faces"):
             return np.asarray(vertices.vertices), np.asarray(vertices.faces)
+        if hasattr(vertices, "graph") and hasattr(vertices, "geometry"):
+            raise TypeError("vertices: a trimesh.Scene holds several meshes: pass it to toonmesh.render, or "
+                            "toonmesh.load(path) / scene.to_mesh() for one mesh")
+        if isinstance(vertices, (str, os.PathLike)):
+            raise TypeError(f"vertices: got a file path ({os.fspath(vertices)!r}): read it with toonmesh.load")
         raise TypeError("faces: required unless vertices is a trimesh.Trimesh")
     return _as_array("vertices", vertices), _as_array("faces", faces)
 

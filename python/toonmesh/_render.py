@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any, Dict, Iterator, List, Optional, Sequence,
 
 import numpy as np
 
-from toonmesh import _colors, _core, _strokes
+from toonmesh import _colors, _core, _load, _strokes
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, RenderOptions, Shadows, kang_table
 from toonmesh._input import mesh_arrays
 
@@ -433,6 +433,8 @@ class Renderer:
         for the render and removed after it."""
         items = [] if meshes is None else (list(meshes) if isinstance(meshes, (list, tuple)) else [meshes])
         uploaded: List[MeshHandle] = []
+        # meshes that share their arrays (instances of one geometry) share one upload
+        by_arrays: Dict[Tuple[Any, ...], MeshHandle] = {}
         try:
             specs = []
             for i, item in enumerate(items):
@@ -442,8 +444,11 @@ class Renderer:
                     raise TypeError(f"meshes[{i}]: expected a toonmesh.Mesh or MeshHandle, got {type(item).__name__}")
                 handle = item.handle
                 if handle is None:
-                    handle = self._add(item.vertices, item.faces, item.normals, 0, item.colors)
-                    uploaded.append(handle)
+                    key = _geometry_key(item)
+                    handle = by_arrays.get(key)
+                    if handle is None:
+                        handle = by_arrays[key] = self._add(item.vertices, item.faces, item.normals, 0, item.colors)
+                        uploaded.append(handle)
                 elif handle.renderer is not self:
                     raise ValueError(f"meshes[{i}]: the MeshHandle belongs to another Renderer")
                 specs.append((handle.id, item.material, item.transform))
@@ -451,6 +456,14 @@ class Renderer:
         finally:
             for h in uploaded:
                 self._engine.remove_mesh(h.id)
+
+
+def _geometry_key(mesh: Mesh) -> Tuple[Any, ...]:
+    """What a mesh's upload depends on: its arrays and colour arrays (by identity; they live as
+    long as the scene's Mesh objects do, so ids are not reused meanwhile), its colour settings
+    and its normal mode."""
+    colors = tuple(sorted((k, id(v)) for k, v in mesh.colors.items()))  # any value, hashable or not
+    return (id(mesh.vertices), id(mesh.faces), mesh.normals, colors)
 
 
 class RenderStack(Sequence[RenderResult]):
@@ -517,8 +530,13 @@ def render(
     """Renders a mesh (or several) to a toon-shaded image, headless, and returns NumPy arrays.
 
     ``vertices``: (N, 3) float32/float64 with ``faces`` (M, 3) int32/int64/uint32; or a
-    ``trimesh.Trimesh``; or a :class:`Mesh` or list of them (each with its own material and
-    transform); None for an empty scene. Inputs are never modified.
+    ``trimesh.Trimesh``; or a ``trimesh.Scene`` or a mesh file's path (str or os.PathLike),
+    read as :func:`toonmesh.load` reads them (every node, its transform and colours; with no
+    ``material`` given, meshes that carry colours or a texture are drawn under the default
+    shading model in white, so their colours show as the file has them); or a
+    :class:`Mesh` or list of them (each with its own material and transform); None for an
+    empty scene. Inputs are never modified. Meshes that share their vertex and face arrays (the
+    instances of one geometry) are uploaded once.
     ``normals``: ``"smooth"`` (default), ``"flat"``, ``"auto"`` (split at edges sharper than 30
     degrees: hard edges for boxes and CAD parts) or ``("auto", degrees)``; see :class:`Mesh`.
     ``smooth_iterations``: Laplacian smoothing first (Al-Rousan et al.'s pipeline).
@@ -536,13 +554,25 @@ def render(
         items = []
     elif isinstance(vertices, Mesh):
         items = [vertices]
+    elif faces is None and (isinstance(vertices, (str, os.PathLike)) or _load.is_scene(vertices)):
+        loaded = _load.load(vertices) if isinstance(vertices, (str, os.PathLike)) else _load.scene_meshes(vertices)
+        items = [_with_normals(m, normals) for m in loaded]
+        if options.get("material") is None:  # a file's colours as it has them: under a white material
+            white = getattr(Material, opts.material.model)(_load.OWN_COLOURS_WHITE)
+            items = _load.under_own_colours(items, white)
     else:
         items = [Mesh(vertices, faces, normals=normals)]  # a trimesh brings its colour
     if iterations:
-        items = [
-            _with_vertices(m, _smoothed(m.vertices, m.faces, iterations)) if m.vertices is not None and m.faces is not None else m
-            for m in (x if isinstance(x, Mesh) else Mesh(x) for x in items)
-        ]
+        smoothed: Dict[Tuple[int, int], np.ndarray] = {}  # instances of one geometry: smoothed once, shared
+        out = []
+        for m in (x if isinstance(x, Mesh) else Mesh(x) for x in items):
+            if m.vertices is not None and m.faces is not None:
+                key = (id(m.vertices), id(m.faces))
+                if key not in smoothed:
+                    smoothed[key] = _smoothed(m.vertices, m.faces, iterations)
+                m = _with_vertices(m, smoothed[key])
+            out.append(m)
+        items = out
     return shared_renderer(backend)._render(items, opts)
 
 
@@ -550,6 +580,11 @@ def _with_vertices(m: Mesh, vertices: np.ndarray) -> Mesh:
     smoothed = copy.copy(m)
     smoothed.vertices = vertices
     return smoothed
+
+
+def _with_normals(m: Mesh, normals: Normals) -> Mesh:
+    m.normals = _normal_mode(normals)  # a mesh just made from a file: nobody else holds it
+    return m
 
 
 def gpu_info(backend: Optional[str] = None) -> Dict[str, Any]:

@@ -23,8 +23,9 @@ from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
-from toonmesh._files import check_distinct_names, image_suffix, read_mesh, save_result, view_paths
-from toonmesh._render import Normals, RenderOptions, shared_renderer
+from toonmesh._files import check_distinct_names, image_suffix, save_result, view_paths
+from toonmesh._load import load, under_own_colours
+from toonmesh._render import Mesh, Normals, RenderOptions, _geometry_key, shared_renderer
 from toonmesh._views import check_views, turntable
 
 __all__ = ["render_file", "render_files"]
@@ -47,39 +48,58 @@ def render_views(
     smooth_iterations: int = 0,
     smooth_method: str = "paper",
     normals: Normals = "smooth",
+    own_colors_material: Any = None,
     **render_options: Any,
 ) -> List[Dict[str, Any]]:
     """Renders one mesh file into ``files``, one view each (a turntable about ``up`` when there
     are several files, unless ``camera`` is given with one file). ``render_options``: the
-    keywords of :class:`toonmesh.RenderOptions`. Returns one dict per file: see
-    :func:`render_files`."""
+    keywords of :class:`toonmesh.RenderOptions`. ``own_colors_material``: the material of the
+    meshes that carry their own colours or texture (default: the render's ``material``; the
+    command line gives the style in white, so that a file's colours show as they are). Returns
+    one dict per file: see :func:`render_files`."""
     t0 = time.perf_counter()
     if "camera" in render_options and len(files) != 1:
         raise ValueError("camera: give either a camera or several views, not both")
     cameras = [render_options.pop("camera")] if "camera" in render_options else turntable(len(files), up)
     options = RenderOptions(**render_options)  # checked once, before the mesh is read
-    V, F = read_mesh(mesh_path)
-    if smooth_iterations and smooth_method != "paper":
-        V, smooth_iterations = _smoothed(V, F, smooth_method, smooth_iterations), 0
     renderer = shared_renderer(backend)
-    # "paper": the renderer's own pre-smoothing, each vertex to its neighbours' mean
-    handle = renderer.add_mesh(V, F, normals=normals, smooth_iterations=smooth_iterations)
+    scene, handles = [], {}
+    meshes = load(mesh_path)
+    if own_colors_material is not None:
+        under_own_colours(meshes, own_colors_material)
+    try:
+        for m in meshes:  # instances of one geometry share arrays: uploaded once
+            key = _geometry_key(m)
+            if key not in handles:
+                V, iterations = m.vertices, smooth_iterations
+                if iterations and smooth_method != "paper":
+                    V, iterations = _smoothed(V, m.faces, smooth_method, iterations), 0
+                # "paper": the renderer's own pre-smoothing, each vertex to its neighbours' mean
+                handles[key] = renderer.add_mesh(V, m.faces, normals=normals, smooth_iterations=iterations, **m.colors)
+            scene.append(Mesh(handles[key], material=m.material, transform=m.transform))
+    except BaseException:
+        for h in handles.values():
+            renderer.remove_mesh(h)
+        raise
+    n_vertices = sum(h.n_vertices for h in (item.handle for item in scene) if h is not None)
+    n_faces = sum(h.n_faces for h in (item.handle for item in scene) if h is not None)
     load_s = time.perf_counter() - t0
     worker = f"{socket.gethostname()}:{os.getpid()}"
     rows = []
     try:
         for k, (camera, path) in enumerate(zip(cameras, files)):
             t1 = time.perf_counter()
-            result = renderer._render(handle, options.replace(camera=camera))
+            result = renderer._render(scene, options.replace(camera=camera))
             t2 = time.perf_counter()
             save_result(result, path)
             rows.append({
-                "mesh": mesh_path, "view": k, "path": path, "vertices": len(V), "faces": len(F),
+                "mesh": mesh_path, "view": k, "path": path, "vertices": n_vertices, "faces": n_faces,
                 "load_s": load_s if k == 0 else 0.0, "render_s": t2 - t1,
                 "write_s": time.perf_counter() - t2, "worker": worker,
             })
     finally:
-        renderer.remove_mesh(handle)
+        for h in handles.values():
+            renderer.remove_mesh(h)
     return rows
 
 
@@ -98,7 +118,7 @@ def render_files(
     """Renders every mesh file in ``paths`` from ``views`` views on a Dask cluster.
 
     Args:
-        paths: mesh files (OBJ, PLY, STL, OFF, GLB, ... as trimesh reads them), readable by the
+        paths: mesh files (OBJ, PLY, STL, OFF, GLB, ... as :func:`toonmesh.load` reads them), readable by the
             workers. File name stems must differ: images are named after them.
         out_dir: folder for the images, created if needed, writable by the workers. One view
             gives ``STEM.png``; several give ``STEM-000.png``, ``STEM-001.png``, ... (``.npz``
@@ -119,7 +139,8 @@ def render_files(
 
     Returns:
         A list of dicts, one per image, in the order of ``paths`` and then views: ``mesh``,
-        ``view`` (0-based), ``path`` (the file written), ``vertices``, ``faces``, ``load_s``
+        ``view`` (0-based), ``path`` (the file written), ``vertices``, ``faces`` (summed over
+        the scene's placed meshes, as drawn), ``load_s``
         (reading, smoothing and uploading the mesh; on the first view's row), ``render_s``,
         ``write_s`` (seconds) and ``worker`` (host:pid). ``pandas.DataFrame(rows)`` makes it a
         table.

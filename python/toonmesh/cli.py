@@ -19,20 +19,45 @@ import inspect
 import os
 import sys
 import time
+import warnings
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import toonmesh as tm
 from toonmesh import _core
-from toonmesh._files import IMAGE_SUFFIXES, check_distinct_names, image_suffix, read_mesh, view_paths, write_mesh
+from toonmesh._files import (
+    IMAGE_SUFFIXES, check_distinct_names, image_suffix, read_mesh, seam_normals, view_paths, write_mesh,
+)
+from toonmesh._load import OWN_COLOURS_WHITE, read_surfaces
 from toonmesh._views import UP_AXES, up_vector, view_direction
 
 __all__ = ["main"]
 
 # the shading models and outline kinds the core has
 STYLES: Dict[str, Callable[..., Any]] = {m.replace("_", "-"): getattr(tm.Material, m) for m in _core.MODELS}
+STYLES["hatching"] = tm.Material.hatching  # bands drawn as strokes
 OUTLINES = ("none",) + _core.OUTLINE_KINDS
 SMOOTH_METHODS = ("laplacian", "taubin", "hc", "implicit")
 BACKENDS = ("auto", "vulkan", "gl")
+
+
+#: The ink lines of ``toonmesh demo``, and of ``toonmesh render`` unless its flags say otherwise.
+DEMO_OUTLINES = tm.Outlines("mesh", width=2.0, crease_angle=60.0)
+DEMO_LINE_WIDTH = float(getattr(DEMO_OUTLINES.styles["silhouette"], "width"))
+#: The hatching material's defaults (spacing and width of its strokes, in pixels).
+HATCHING: Dict[str, Any] = dict(tm.Material.hatching().hatch_style or {})
+
+
+def mesh_file(name: str) -> str:
+    """A mesh argument: a file, or the name of a mesh shipped with toonmesh (``bunny``) when no
+    file of that name exists."""
+    if os.path.exists(name):
+        return name
+    from toonmesh import data
+
+    packaged = data.packaged(name)
+    if packaged is not None:
+        return packaged
+    raise FileNotFoundError(f"{name}: no such file (meshes shipped with toonmesh: {', '.join(data.PACKAGED)})")
 
 
 class CliError(Exception):
@@ -148,23 +173,46 @@ def _render_targets(meshes: Sequence[str], out: str, views: int, outputs: List[s
     return [view_paths(m, out, views, image_suffix(outputs)) for m in meshes]
 
 
+def render_options(args: argparse.Namespace) -> Dict[str, Any]:
+    """The RenderOptions keywords of ``toonmesh render``'s flags."""
+    style = STYLES[args.style]
+    material_kw: Dict[str, Any] = {}
+    if args.color is not None:
+        material_kw["color"] = args.color
+    if args.dither != "none":
+        material_kw["dither"] = tm.Dither(args.dither, amount=args.dither_amount)
+    if args.style == "hatching":
+        material_kw.update(spacing=args.hatch_spacing, width=args.hatch_width)
+    elif args.hatch_spacing != HATCHING["spacing"] or args.hatch_width != HATCHING["width"]:
+        raise CliError("--hatch-spacing, --hatch-width: only with --style hatching")
+    if args.style == "lambert" or args.style == "phong":
+        if "dither" in material_kw:
+            raise CliError(f"--dither: not with --style {args.style} (it has no bands to dither between)")
+    options: Dict[str, Any] = dict(
+        width=args.size[0], height=args.size[1], material=style(**material_kw), outputs=args.outputs,
+        own_colors_material=None if args.color is not None else style(**material_kw, color=OWN_COLOURS_WHITE),
+        msaa=args.msaa, supersample=args.supersample, band_antialias=args.band_antialias,
+    )
+    if args.shadows:
+        key = tm.Light.key()
+        shadows = tm.Shadows(size=args.shadow_size, bias=args.shadow_bias)
+        options["lights"] = [tm.Light.directional(key.direction, color=key.color, intensity=key.intensity,
+                                                  space=key.space, shadows=shadows)]
+    if args.outlines != "none":
+        options["outlines"] = tm.Outlines(
+            args.outlines, width=args.outline_width, crease_angle=args.crease_angle, contours=args.contours,
+            taper=args.taper, width_by_depth=args.width_by_depth,
+            suggestive=args.suggestive or None, image_rule=args.image_rule, normal_angle=args.normal_angle,
+            depth_jump=args.depth_jump, normal_threshold=args.normal_threshold, depth_threshold=args.depth_threshold)
+    return options
+
+
 def cmd_render(args: argparse.Namespace) -> int:
     """toonmesh render: mesh files to toon-shaded images."""
     from toonmesh.batch import render_views
 
-    for m in args.meshes:  # before any work, so a typo in the last name costs nothing
-        if not os.path.exists(m):
-            raise FileNotFoundError(f"{m}: no such file")
-    style = STYLES[args.style]
-    material = style(color=args.color) if args.color is not None else style()
-    options: Dict[str, Any] = dict(
-        width=args.size[0], height=args.size[1], material=material, outputs=args.outputs,
-        msaa=args.msaa, supersample=args.supersample,
-    )
-    if args.outlines is not None and args.outlines != "none":
-        options["outlines"] = tm.Outlines(args.outlines, contours=args.contours, suggestive=args.suggestive or None,
-                                          image_rule=args.image_rule, normal_angle=args.normal_angle,
-                                          depth_jump=args.depth_jump)
+    args.meshes = [mesh_file(m) for m in args.meshes]  # before any work: a typo in the last name costs nothing
+    options = render_options(args)
     targets = _render_targets(args.meshes, args.out, args.views, args.outputs)
     t0 = time.perf_counter()
     bar = _progress(len(args.meshes) * args.views)
@@ -199,18 +247,26 @@ def cmd_render(args: argparse.Namespace) -> int:
 
 
 def cmd_smooth(args: argparse.Namespace) -> int:
-    """toonmesh smooth: smooth a mesh file and write the result."""
+    """toonmesh smooth: smooth a mesh file and write the result, keeping its texture
+    coordinates, texture, colours and normal seams."""
     import numpy as np
 
-    V, F = read_mesh(args.input)
+    placed = read_surfaces(mesh_file(args.input), keep_seams=True)
+    if len(placed) != 1 or placed[0][1] is not None:
+        raise ValueError(f"{args.input}: a scene of {len(placed)} placed meshes; toonmesh smooth takes one mesh "
+                         "(toonmesh.load and toonmesh.smooth in Python take scenes apart)")
+    surface = placed[0][0]
+    V, F = surface.vertices, surface.faces
     fn = getattr(tm.smooth, args.method)
     options = {k: getattr(args, k) for k in ("iterations", "preset", "weights", "boundary") if getattr(args, k) is not None}
-    if args.weld:
+    # a file split at UV or normal seams is one surface: smooth it welded, or the seams crack
+    if args.weld or surface.normals is not None or surface.uv is not None:
         options.update(pass_through(fn, "weld", True, "--weld"))
     t0 = time.perf_counter()
     out = fn(V, F, **options)
     secs = time.perf_counter() - t0
-    write_mesh(args.output, out, F)
+    normals = None if surface.normals is None else seam_normals(out, F, surface.normals)
+    write_mesh(args.output, out, F, surface, normals)
     moved = float(np.linalg.norm(out - V, axis=1).max()) if len(V) else 0.0
     diagonal = float(np.linalg.norm(V.max(axis=0) - V.min(axis=0))) if len(V) else 0.0
     share = f" ({moved / diagonal:.2%} of the bounding-box diagonal)" if diagonal > 0 else ""
@@ -228,7 +284,7 @@ def _add_contour_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--contours", choices=tuple(_core.CONTOUR_RULES), default=tm.Outlines().contours,
                    help="silhouettes on face edges (Kang et al.) or the smooth contour through the faces "
                         "(clean on scans); default: %(default)s")
-    p.add_argument("--suggestive", action="store_true", help="add suggestive contours (DeCarlo et al.)")
+    p.add_argument("--suggestive", action="store_true", help="add suggestive contours (DeCarlo et al.; default: off)")
 
 
 def cmd_edges(args: argparse.Namespace) -> int:
@@ -238,7 +294,7 @@ def cmd_edges(args: argparse.Namespace) -> int:
     suffix = os.path.splitext(args.out)[1].lower()
     if suffix not in (".svg", ".npz"):
         raise CliError(f"-o: expected a .svg or .npz file name, got {args.out}")
-    V, F = read_mesh(args.mesh)
+    V, F = read_mesh(mesh_file(args.mesh))
     if args.eye is not None:
         camera = tm.Camera.fit(args.eye, up=up_vector(args.up), orthographic=True)
     else:
@@ -295,7 +351,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
         width=args.width,
         height=args.height,
         supersample=2,
-        outlines=tm.Outlines("mesh", width=2.0, crease_angle=60.0),
+        outlines=DEMO_OUTLINES,
         backend=args.backend,
         background=(1.0, 1.0, 1.0, 1.0),
     )
@@ -324,33 +380,69 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p = sub.add_parser("render", help="render mesh files to toon-shaded images",
                        description="Render mesh files (OBJ, PLY, STL, OFF, GLB, ...) to PNG images, or NPZ with "
                                    "normal/depth outputs.")
-    p.add_argument("meshes", nargs="+", metavar="MESH", help="mesh files")
+    p.add_argument("meshes", nargs="+", metavar="MESH",
+                   help="mesh files, or the name of a mesh shipped with toonmesh (bunny)")
     p.add_argument("-o", "--out", required=True, metavar="OUT",
                    help="an image file (.png, .npz) for one mesh and view, else a folder")
     p.add_argument("--size", type=_size, default=(800, 600), metavar="WxH", help="image size in pixels (default 800x600)")
-    p.add_argument("--style", choices=tuple(STYLES), default="bands", help="shading model (default: bands)")
-    p.add_argument("--color", default=None, metavar="#RRGGBB", help="base colour of the material")
-    p.add_argument("--outlines", choices=OUTLINES, default=None, help="ink lines: on the mesh, from the image, or both")
+    p.add_argument("--style", choices=tuple(STYLES), default="bands", help="shading model (default: %(default)s)")
+    p.add_argument("--color", default=None, metavar="#RRGGBB",
+                   help="base colour of the material, multiplying a file's own colours and textures (default: "
+                        "the style's, and white under a file's own colours, so that they show as they are)")
+    p.add_argument("--dither", choices=("none",) + tuple(_core.DITHER_PATTERNS), default="none",
+                   help="dither between neighbouring bands with this pattern (default: %(default)s)")
+    p.add_argument("--dither-amount", type=float, default=tm.Dither().amount, metavar="X",
+                   help="how far into each band the dither reaches, in units of the light term (default %(default)g)")
+    p.add_argument("--hatch-spacing", type=float, default=HATCHING["spacing"], metavar="PX",
+                   help="--style hatching: pixels between strokes (default %(default)g)")
+    p.add_argument("--hatch-width", type=float, default=HATCHING["width"], metavar="PX",
+                   help="--style hatching: stroke width in pixels (default %(default)g)")
+    p.add_argument("--band-antialias", action=argparse.BooleanOptionalAction, default=tm.RenderOptions().band_antialias,
+                   help="blend across band borders over about a pixel; --no-band-antialias for the papers' hard "
+                        "borders (default: %(default)s)")
+    p.add_argument("--shadows", action="store_true", help="the key light casts shadows (default: off)")
+    p.add_argument("--shadow-size", type=int, default=tm.Shadows().size, metavar="TEXELS",
+                   help="the shadow map's side (default %(default)d)")
+    p.add_argument("--shadow-bias", type=float, default=tm.Shadows().bias, metavar="X",
+                   help="shadow depth bias in texels per unit of slope (default %(default)g)")
+    p.add_argument("--outlines", choices=OUTLINES, default=DEMO_OUTLINES.kind,
+                   help="ink lines: on the mesh, from the image, both, or none (default: %(default)s, as toonmesh demo)")
+    p.add_argument("--outline-width", type=float, default=DEMO_LINE_WIDTH, metavar="PX",
+                   help="line width in pixels (default %(default)g)")
+    p.add_argument("--crease-angle", type=float, default=DEMO_OUTLINES.crease_angle, metavar="DEG",
+                   help="crease lines where faces meet at more than this (default %(default)g)")
+    p.add_argument("--taper", type=float, default=DEMO_OUTLINES.taper, metavar="PX",
+                   help="mesh lines thin to a point over this many pixels at their ends (default %(default)g)")
+    p.add_argument("--width-by-depth", action=argparse.BooleanOptionalAction, default=DEMO_OUTLINES.width_by_depth,
+                   help="mesh lines wider near the camera, thinner far away (default: %(default)s)")
     _add_contour_arguments(p)
-    p.add_argument("--image-rule", choices=tuple(_core.IMAGE_RULES), default=tm.Outlines().image_rule,
+    p.add_argument("--image-rule", choices=tuple(_core.IMAGE_RULES), default=DEMO_OUTLINES.image_rule,
                    help="image-space lines: between pixels whose normals turn or depths jump, width pixels wide "
                         "and the same at any scale (discontinuity), or the paper's thresholded Sobel (paper); "
-                        "default: discontinuity")
-    defaults = tm.Outlines()  # the core's defaults
-    p.add_argument("--normal-angle", type=float, default=defaults.normal_angle, metavar="DEG",
-                   help="image lines where the normal turns by more than this between pixels (default %(default)g)")
-    p.add_argument("--depth-jump", type=float, default=defaults.depth_jump, metavar="PX",
-                   help="image lines where depth jumps by more than this many pixel footprints (default %(default)g)")
-    p.add_argument("--views", type=_positive, default=1, metavar="N", help="a turntable of N views about the up axis")
+                        "default: %(default)s")
+    p.add_argument("--normal-angle", type=float, default=DEMO_OUTLINES.normal_angle, metavar="DEG",
+                   help="discontinuity rule: lines where the normal turns by more than this between pixels "
+                        "(default %(default)g)")
+    p.add_argument("--depth-jump", type=float, default=DEMO_OUTLINES.depth_jump, metavar="PX",
+                   help="discontinuity rule: lines where depth jumps by more than this many pixel footprints "
+                        "(default %(default)g)")
+    p.add_argument("--normal-threshold", type=float, default=DEMO_OUTLINES.normal_threshold, metavar="X",
+                   help="paper rule: threshold of the Sobel response on normals (default %(default)g)")
+    p.add_argument("--depth-threshold", type=float, default=DEMO_OUTLINES.depth_threshold, metavar="X",
+                   help="paper rule: threshold of the Sobel response on depth (default %(default)g)")
+    p.add_argument("--views", type=_positive, default=1, metavar="N",
+                   help="a turntable of N views about the up axis (default 1)")
     p.add_argument("--up", **up)  # type: ignore[arg-type]
-    p.add_argument("--smooth", type=_count, default=0, metavar="N", help="smoothing iterations before rendering")
+    p.add_argument("--smooth", type=_count, default=0, metavar="N", help="smoothing iterations before rendering (default 0)")
     p.add_argument("--smooth-method", choices=("paper",) + SMOOTH_METHODS, default="paper",
-                   help="paper: each vertex to its neighbours' mean (the renderer's own); or a toonmesh.smooth method")
+                   help="paper (default): each vertex to its neighbours' mean (the renderer's own); or a "
+                        "toonmesh.smooth method")
     p.add_argument("--normals", type=_normals, default="smooth", metavar="MODE",
                    help="smooth (default), flat (facets), or auto: hard edges where faces meet at more than "
                         "30 degrees, for boxes and CAD parts (auto:DEG for another angle)")
     p.add_argument("--outputs", type=_outputs, default=["color"], metavar="LIST",
-                   help=f"comma-separated: {', '.join(_core.IMAGE_OUTPUTS)} (anything but color alone writes .npz)")
+                   help=f"comma-separated: {', '.join(_core.IMAGE_OUTPUTS)} (default color; anything but color "
+                        "alone writes .npz)")
     # ranges are the renderer's to check (it knows the device)
     p.add_argument("--msaa", type=_positive, default=1, metavar="N", help="samples per pixel (1 or 4; default 1)")
     p.add_argument("--supersample", type=_positive, default=1, metavar="N",
@@ -360,32 +452,38 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
 
     p = sub.add_parser("smooth", help="smooth a mesh file", description="Smooth a mesh file and write the result "
                                                                          "(the format follows OUT's suffix).")
-    p.add_argument("input", metavar="IN", help="mesh file to read")
+    p.add_argument("input", metavar="IN", help="mesh file to read, or the name of a mesh shipped with toonmesh (bunny)")
     p.add_argument("output", metavar="OUT", help="mesh file to write (.obj, .ply, .stl, .off, .glb, ...)")
-    p.add_argument("--method", choices=SMOOTH_METHODS, default="laplacian", help="default: laplacian")
+    p.add_argument("--method", choices=SMOOTH_METHODS, default="laplacian", help="default: %(default)s")
     p.add_argument("--iterations", type=_count, default=None, metavar="N", help="default: the method's (or preset's)")
     p.add_argument("--preset", choices=("trimesh", "pymeshlab", "paper"), default=None,
-                   help="reproduce a peer library's filter (see the README)")
-    p.add_argument("--weights", choices=("uniform", "cotangent", "distance"), default=None)
-    p.add_argument("--boundary", choices=("fixed", "free", "slide"), default=None)
-    p.add_argument("--weld", action="store_true", help="treat vertices at the same position as one (UV seams)")
+                   help="reproduce a peer library's filter (see the README; default: none)")
+    p.add_argument("--weights", choices=("uniform", "cotangent", "distance"), default=None,
+                   help="default: the method's (or preset's)")
+    p.add_argument("--boundary", choices=("fixed", "free", "slide"), default=None,
+                   help="default: the method's (or preset's)")
+    p.add_argument("--weld", action="store_true",
+                   help="treat vertices at the same position as one (default: off, but always on for a file "
+                        "whose texture coordinates or normals split its vertices)")
     p.set_defaults(run=cmd_smooth)
 
     p = sub.add_parser("edges", help="outline edges of a mesh file as SVG or NPZ",
                        description="Silhouette, boundary, crease and non-manifold edges of one view, drawn as SVG "
                                    "(hidden lines removed) or saved as NPZ arrays.")
-    p.add_argument("mesh", metavar="MESH")
+    p.add_argument("mesh", metavar="MESH", help="a mesh file, or the name of a mesh shipped with toonmesh (bunny)")
     p.add_argument("-o", "--out", required=True, metavar="OUT", help="lines.svg or lines.npz")
     p.add_argument("--eye", type=float, nargs=3, default=None, metavar=("X", "Y", "Z"),
                    help="look orthographically along -eye (default: the renderer's fit camera from --up)")
     p.add_argument("--up", **up)  # type: ignore[arg-type]
-    p.add_argument("--crease-angle", type=float, default=30.0, metavar="DEG", help="default 30")
+    p.add_argument("--crease-angle", type=float, default=tm.Outlines().crease_angle, metavar="DEG",
+                   help="crease edges where faces meet at more than this (default %(default)g)")
     p.add_argument("--no-weld", dest="weld", action="store_false",
-                   help="keep vertices at the same position apart (seams then show as boundaries)")
+                   help="keep vertices at the same position apart (seams then show as boundaries; default: welded)")
     p.add_argument("--size", type=_size, default=(800, 600), metavar="WxH", help="drawing size (default 800x600)")
-    p.add_argument("--hidden", action="store_true", help="draw hidden lines too (dashed)")
+    p.add_argument("--hidden", action="store_true", help="draw hidden lines too (dashed; default: off)")
     _add_contour_arguments(p)
-    p.add_argument("--stroke-width", type=float, default=1.5, metavar="PX")
+    p.add_argument("--stroke-width", type=float, default=tm.LineStyle().width, metavar="PX",
+                   help="line width in pixels (default %(default)g)")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_edges)
 
@@ -396,8 +494,8 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
 
     p = sub.add_parser("demo", help="render the built-in scene (the Stanford bunny, toon-shaded) to a PNG")
     p.add_argument("--out", default="toonmesh-demo.png", help="output PNG path (default: %(default)s)")
-    p.add_argument("--width", type=_positive, default=800)
-    p.add_argument("--height", type=_positive, default=600)
+    p.add_argument("--width", type=_positive, default=800, help="pixels (default %(default)d)")
+    p.add_argument("--height", type=_positive, default=600, help="pixels (default %(default)d)")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_demo)
     return parser
@@ -410,9 +508,21 @@ def _one_line(exc: BaseException) -> str:
 def main(argv: Optional[List[str]] = None) -> int:
     """Runs the command line; returns the exit status (0, 1 for a failure, 2 for a bad command
     line, 130 when interrupted)."""
+    parser = build_parser()
+    with warnings.catch_warnings():
+        warnings.simplefilter("default")
+        warnings.showwarning = _one_line_warning  # type: ignore[assignment]
+        return _run(parser, argv)
+
+
+def _one_line_warning(message: Any, category: Any, *args: Any, **kwargs: Any) -> None:
+    """A warning (what a file holds that is not drawn) as one line on stderr."""
+    print(f"toonmesh: warning: {_one_line(message)}", file=sys.stderr)
+
+
+def _run(parser: argparse.ArgumentParser, argv: Optional[List[str]]) -> int:
     from toonmesh.bench.__main__ import takes_extra_options
 
-    parser = build_parser()
     try:
         args, extra = parser.parse_known_args(argv)
         if extra and not (args.command == "bench" and takes_extra_options(args.suite)):

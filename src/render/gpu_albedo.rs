@@ -8,7 +8,7 @@ use wgpu::util::DeviceExt;
 use super::albedo::{Albedo, Colors, Filter, Texture, Wrap};
 use super::device::Device;
 
-/// Where the shader reads the albedo attributes (`AlbedoIn` in shade's albedo.wgsl): past the
+/// Where the shader reads the albedo attributes (`AlbedoIn` in shaders/albedo.wgsl): past the
 /// locations the geometry's own attributes may take.
 pub const COLOR_LOCATION: u32 = 8;
 pub const UV_LOCATION: u32 = 9;
@@ -117,6 +117,14 @@ pub struct GpuAlbedo {
 }
 
 impl GpuAlbedo {
+    /// The pipeline constants of `shaders/albedo.wgsl` for this mesh.
+    pub fn constants(&self) -> Vec<(&'static str, f64)> {
+        vec![
+            ("TEXTURED", self.textured as u32 as f64),
+            ("ALPHA_CUTOFF", self.alpha_cutoff.map_or(-1.0, f64::from)),
+        ]
+    }
+
     /// Uploads `albedo` for a mesh whose uploaded vertex i is input vertex `source(i)` and, when
     /// drawn as a list, corner i of face i / 3. `albedo.texture` is already fitted to the device.
     pub fn upload(dev: &Device, albedo: &Albedo, n: usize, source: impl Fn(usize) -> usize) -> GpuAlbedo {

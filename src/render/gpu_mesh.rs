@@ -1,5 +1,6 @@
-//! A mesh on the device: interleaved positions and normals (plus indices when shared), kept
-//! for as many renders as the caller wants.
+//! A mesh on the device: interleaved positions and normals (plus indices when shared), and its
+//! colour and texture when it has them (`gpu_albedo`, a buffer of their own), kept for as many
+//! renders as the caller wants.
 //!
 //! Positions reach the GPU in 32-bit floats, so they are stored relative to the centre of the
 //! mesh's bounds and divided by a power of two near its size: whatever the mesh's offset and

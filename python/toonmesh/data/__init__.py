@@ -9,6 +9,14 @@ import numpy as np
 
 _HERE = os.path.dirname(os.path.abspath(__file__))
 
+#: Meshes shipped with toonmesh, by name: the command line takes these names for files.
+PACKAGED = ("bunny",)
+
+
+def packaged(name: str) -> "str | None":
+    """The path of the shipped mesh called ``name`` ("bunny"), or None."""
+    return os.path.join(_HERE, name + ".obj") if name in PACKAGED else None
+
 
 def load_obj(path: "str | os.PathLike[str]") -> Tuple[np.ndarray, np.ndarray]:
     """Reads the vertices and faces of a Wavefront OBJ file.

@@ -34,12 +34,7 @@ impl Pass for Geometry {
         let layout = self.layout;
         let pipeline = |d: &DrawItem<'_>| {
             let albedo = cut(d);
-            let constants: Vec<(&str, f64)> = albedo.map_or(vec![], |a| {
-                vec![
-                    ("TEXTURED", a.textured as u32 as f64),
-                    ("ALPHA_CUTOFF", a.alpha_cutoff.map_or(-1.0, f64::from)),
-                ]
-            });
+            let constants = albedo.map_or(vec![], GpuAlbedo::constants);
             let key = PipelineKey::new("gbuffer", layout as u64 | cull_bits(d.cull) << 8).with(&constants);
             f.pipelines.get(key, || {
                 let module = f.module("gbuffer", WGSL, None);

@@ -71,7 +71,7 @@ impl Shade {
                     }
                 }
             };
-            // a coloured mesh's stages read its colour too (albedo.wgsl)
+            // a coloured mesh's stages read its colour too (shaders/albedo.wgsl, shade/albedo.wgsl)
             let albedo_entry = |name: &'static str| match (name, shading.anchored) {
                 ("fs_color", false) => "fs_color_albedo",
                 ("fs_color", true) => "fs_color_albedo_anchored",

@@ -23,10 +23,7 @@ impl ShadingVariant {
             anchored: m.per_vertex,
             albedo: albedo.is_some(),
         };
-        if let Some(a) = albedo {
-            v.constants.push(("TEXTURED", a.textured as u32 as f64));
-            v.constants.push(("ALPHA_CUTOFF", a.alpha_cutoff.map_or(-1.0, f64::from)));
-        }
+        v.constants.extend(albedo.map_or(vec![], GpuAlbedo::constants));
         for part in m.effects.variants() {
             v.constants.extend(part.constants);
             v.anchored |= part.anchored;

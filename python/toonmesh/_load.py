@@ -1,0 +1,340 @@
+"""Mesh files and trimesh scenes as lists of :class:`toonmesh.Mesh`: ``toonmesh.load(path)``.
+
+Files are read by trimesh (``pip install 'toonmesh[io]'``) after toonmesh's own checks
+(:mod:`toonmesh._file_checks`). A scene's node transforms are composed into each mesh's world
+transform; a geometry drawn by several nodes gives several meshes that share the same vertex and
+face arrays (a renderer uploads it once). What a mesh carries besides its triangles (texture
+coordinates, a texture, vertex or face colours, a base colour) is read into a :class:`Surface`
+record first; :func:`_mesh_of` is the one place that turns it into a :class:`toonmesh.Mesh`.
+"""
+
+from __future__ import annotations
+
+import os
+import warnings
+from dataclasses import dataclass, field
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as np
+
+from toonmesh import _colors, _ply_strips
+from toonmesh._file_checks import (
+    MeshFileError, check_gltf_sizes, check_obj, check_ply, gltf_document, gltf_ignored,
+)
+
+#: The most mesh instances (scene nodes with geometry) one file or scene may place.
+MAX_INSTANCES = 65_536
+#: The most distinct materials (and so textures) one file or scene may use.
+MAX_MATERIALS = 1_024
+
+_TRIMESH_HINT = "reading mesh files needs trimesh: pip install 'toonmesh[io]'"
+
+
+def trimesh_module() -> Any:
+    """trimesh, or an ImportError that says how to install it."""
+    try:
+        import trimesh
+    except ImportError:
+        raise ImportError(_TRIMESH_HINT) from None
+    return trimesh
+
+
+@dataclass
+class Surface:
+    """One geometry of a file and what it carries besides positions and triangles.
+
+    ``vertices`` (N, 3) float64 and ``faces`` (M, 3) int64 in the geometry's own frame;
+    ``uv`` (N, 2) float64 texture coordinates (origin bottom-left, as glTF after trimesh and
+    OBJ); ``texture`` (H, W, 4) uint8 RGBA image (top row first); ``vertex_colors`` (N, 4) and
+    ``face_colors`` (M, 4) uint8 RGBA; ``base_color`` (4,) float64 in [0, 1], the material's
+    colour factor (glTF baseColorFactor, MTL Kd) that multiplies texture and vertex colours;
+    ``normals`` (N, 3) float64, the file's own vertex normals (read for ``keep_seams`` only).
+    Any of them may be None: these are what ``toonmesh smooth`` writes back. ``colors``: the
+    colour keywords of :class:`toonmesh.Mesh` that draw the geometry (its albedo, by the
+    renderer's own rule in :mod:`toonmesh._colors`), made once per geometry so that its
+    instances share them.
+    """
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    uv: Optional[np.ndarray] = None
+    texture: Optional[np.ndarray] = None
+    vertex_colors: Optional[np.ndarray] = None
+    face_colors: Optional[np.ndarray] = None
+    base_color: Optional[np.ndarray] = None
+    normals: Optional[np.ndarray] = None
+    name: str = ""
+    colors: Dict[str, Any] = field(default_factory=dict)
+
+
+def load(path: "str | os.PathLike[str]") -> List[Any]:
+    """Reads a mesh file into a list of :class:`toonmesh.Mesh`, one per placed geometry.
+
+    Formats: OBJ (with its MTL: diffuse colour ``Kd`` and texture ``map_Kd``), PLY (vertex and
+    face colours; faces and triangle strips), STL, OFF, GLB and glTF (node transforms, mesh
+    instances, PBR ``baseColorFactor`` and ``baseColorTexture``, vertex colours ``COLOR_0``),
+    and whatever else trimesh reads. Each mesh has its world ``transform`` (4x4 float64, the
+    scene's node transforms composed; None for a single mesh) and its colour as
+    :class:`toonmesh.Mesh` takes it (``vertex_colors`` or ``face_colors``, or ``uv`` and
+    ``texture``, the base colour factor folded in, ``alpha_cutoff`` for a glTF alpha mask), as a
+    ``trimesh.Trimesh`` brings it; ``material`` is None (the render's). Meshes of one geometry
+    placed by several nodes share their vertex, face and colour arrays, so a renderer uploads
+    them once.
+    Vertices are kept as the file lists them (no merging or cleanup), except that an OBJ with a
+    texture is split where its texture coordinates change (a vertex gets one UV) and an STL's
+    corners are merged by position. What the file holds and toonmesh does not draw (cameras,
+    lights, animations, normal, emissive and metallic-roughness maps, ...) is named in one
+    warning.
+
+    Args:
+        path: the file (str or os.PathLike).
+
+    Returns:
+        A list of :class:`toonmesh.Mesh` (never empty).
+
+    Raises:
+        TypeError: ``path`` is not a str or os.PathLike.
+        FileNotFoundError: no such file. IsADirectoryError: ``path`` is a folder.
+        ImportError: trimesh is not installed.
+        ValueError: the file cannot be read as triangles, naming the file and what is wrong
+            (1-based line numbers in OBJ, 1-based vertices when not finite, element counts in
+            PLY); or it places more than :data:`MAX_INSTANCES` meshes or uses more than
+            :data:`MAX_MATERIALS` materials.
+    """
+    return [_mesh_of(s, t) for s, t in read_surfaces(path)]
+
+
+def read_surfaces(path: Any, *, keep_seams: bool = False) -> List[Tuple[Surface, Optional[np.ndarray]]]:
+    """(surface, world transform or None) per placed geometry of a file; see :func:`load`.
+    ``keep_seams``: read an OBJ with texture coordinates or normals split per corner (each
+    vertex one UV and one normal), as the file means them, even without a texture."""
+    path = _path(path)
+    ignored: List[str] = []
+    scene, materials = _read(path, keep_seams, ignored)
+    placed = _placed(scene, path, ignored, materials)
+    if keep_seams:
+        for surface, _ in placed:
+            geom = _geometries(scene).get(surface.name)
+            cache = getattr(geom, "_cache", None)  # normals trimesh read from the file, not computed
+            given = cache["vertex_normals"] if cache is not None and "vertex_normals" in cache else None
+            if given is not None and len(given) == len(surface.vertices):
+                surface.normals = np.asarray(given, dtype=np.float64)
+    if ignored:
+        warnings.warn(f"{path}: not drawn: {', '.join(dict.fromkeys(ignored))}", stacklevel=3)
+    return placed
+
+
+def scene_surfaces(scene: Any, source: str = "scene") -> List[Tuple[Surface, Optional[np.ndarray]]]:
+    """(surface, world transform) per placed geometry of a ``trimesh.Scene``."""
+    ignored: List[str] = []
+    placed = _placed(scene, source, ignored)
+    if ignored:
+        warnings.warn(f"{source}: not drawn: {', '.join(dict.fromkeys(ignored))}", stacklevel=3)
+    return placed
+
+
+def scene_meshes(scene: Any, source: str = "scene") -> List[Any]:
+    """A ``trimesh.Scene`` as :class:`toonmesh.Mesh` objects (see :func:`load`)."""
+    return [_mesh_of(s, t) for s, t in scene_surfaces(scene, source)]
+
+
+def is_scene(value: Any) -> bool:
+    """Whether ``value`` is a ``trimesh.Scene`` (without importing trimesh)."""
+    return hasattr(value, "graph") and hasattr(value, "geometry")
+
+
+#: The colour of the material under a file's own colours (they multiply it): white, so that
+#: they show as the file has them.
+OWN_COLOURS_WHITE = "#ffffff"
+
+
+def carries_colour(mesh: Any) -> bool:
+    """Whether a :class:`toonmesh.Mesh` has colours or a texture of its own."""
+    return any(k in getattr(mesh, "colors", {}) for k in ("vertex_colors", "face_colors", "texture"))
+
+
+def under_own_colours(meshes: List[Any], material: Any) -> List[Any]:
+    """``meshes`` with ``material`` on those that carry their own colours and name no material."""
+    for m in meshes:
+        if m.material is None and carries_colour(m):
+            m.material = material
+    return meshes
+
+
+def _mesh_of(surface: Surface, transform: Optional[np.ndarray]) -> Any:
+    """The one place a :class:`Surface` becomes a :class:`toonmesh.Mesh`."""
+    from toonmesh._render import Mesh
+
+    return Mesh(surface.vertices, surface.faces, transform=transform, **surface.colors)
+
+
+# ------------------------------------------------------------------------------------------------
+
+
+def _path(path: Any) -> str:
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path: expected a file path (str or os.PathLike), got {type(path).__name__}")
+    path = os.fspath(path)
+    if not isinstance(path, str):
+        raise TypeError("path: expected a str path, got bytes")
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"{path}: no such file")
+    if os.path.isdir(path):
+        raise IsADirectoryError(f"{path}: is a folder, not a mesh file")
+    return path
+
+
+def _read(path: str, keep_seams: bool, ignored: List[str]) -> Tuple[Any, bool]:
+    """The file as trimesh reads it (a Trimesh, Scene or PointCloud), after the pre-scans, and
+    whether its materials are the file's (an OBJ without an MTL gets trimesh's placeholder)."""
+    trimesh = trimesh_module()
+    suffix = os.path.splitext(path)[1].lower()
+    extra: Dict[str, Any] = {}
+    materials = True
+    if suffix == ".obj":
+        counts = check_obj(path)
+        if counts["materials"] > MAX_MATERIALS:
+            raise MeshFileError(f"{path}: {counts['materials']:,} materials ('usemtl' names); toonmesh reads at "
+                                f"most {MAX_MATERIALS:,} materials a file")
+        # positions as listed (not split at texture seams) unless the corners' UVs or normals matter
+        extra["maintain_order"] = not (keep_seams and (counts["texcoords"] or counts["normals"]))
+        materials = counts["libraries"] > 0
+    elif suffix == ".ply":
+        check_ply(path)
+        if _ply_strips.has_strips(path):  # trimesh reads strips as points, or not at all
+            V, F, colors = _ply_strips.read(path)
+            return trimesh.Trimesh(V, F, vertex_colors=colors, process=False), materials
+    doc = gltf_document(path) if suffix in (".glb", ".gltf") else None
+    if doc is not None:
+        _check_gltf_counts(path, doc)
+        check_gltf_sizes(path, doc)
+        ignored.extend(gltf_ignored(doc))
+    try:
+        loaded = trimesh.load(path, process=False, **extra)
+        if suffix == ".obj" and extra.get("maintain_order") and materials and _has_texture(loaded):
+            loaded = trimesh.load(path, process=False, maintain_order=False)  # a UV per vertex
+    except MeshFileError:
+        raise
+    except Exception as exc:  # trimesh raises many kinds for files it cannot parse
+        raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
+    if suffix == ".stl" and hasattr(loaded, "merge_vertices"):
+        loaded.merge_vertices()  # an STL stores every corner apart: connect the surface
+    return loaded, materials
+
+
+def _geometries(loaded: Any) -> Dict[str, Any]:
+    return dict(loaded.geometry) if hasattr(loaded, "geometry") else {"": loaded}
+
+
+def _has_texture(loaded: Any) -> bool:
+    geoms = loaded.geometry.values() if hasattr(loaded, "geometry") else [loaded]
+    return any(getattr(getattr(getattr(g, "visual", None), "material", None), "image", None) is not None for g in geoms)
+
+
+def _check_gltf_counts(path: str, doc: Dict[str, Any]) -> None:
+    placing = sum(1 for n in doc.get("nodes") or [] if "mesh" in n)
+    if placing > MAX_INSTANCES:
+        raise MeshFileError(f"{path}: {placing:,} nodes place meshes; toonmesh draws at most "
+                            f"{MAX_INSTANCES:,} mesh instances a scene")
+    for key in ("materials", "images"):  # a texture per face: refused before trimesh decodes them
+        n = len(doc.get(key) or [])
+        if n > MAX_MATERIALS:
+            raise MeshFileError(f"{path}: {n:,} {key}; toonmesh reads at most {MAX_MATERIALS:,} materials a file")
+
+
+def _placed(loaded: Any, source: str, ignored: List[str], materials: bool = True,
+            ) -> List[Tuple[Surface, Optional[np.ndarray]]]:
+    """Every drawn geometry with its world transform; one Surface per geometry, shared."""
+    if not hasattr(loaded, "graph"):  # a single mesh (or point cloud)
+        surface = _surface(loaded, source, "", ignored, materials)
+        if surface is None:
+            raise MeshFileError(f"{source}: no triangles in the file")
+        return [(surface, None)]
+    nodes = list(loaded.graph.nodes_geometry)
+    if len(nodes) > MAX_INSTANCES:
+        raise MeshFileError(f"{source}: {len(nodes):,} nodes place meshes; toonmesh draws at most "
+                            f"{MAX_INSTANCES:,} mesh instances a scene")
+    materials = {id(m) for m in (getattr(getattr(g, "visual", None), "material", None)
+                                 for g in loaded.geometry.values()) if m is not None}
+    if len(materials) > MAX_MATERIALS:
+        raise MeshFileError(f"{source}: {len(materials):,} materials; toonmesh reads at most {MAX_MATERIALS:,} "
+                            "materials a scene")
+    surfaces: Dict[str, Optional[Surface]] = {}
+    out: List[Tuple[Surface, Optional[np.ndarray]]] = []
+    for node in nodes:
+        transform, name = loaded.graph[node]
+        if name not in surfaces:
+            surfaces[name] = _surface(loaded.geometry[name], source, name, ignored, materials)
+        surface = surfaces[name]
+        if surface is not None:
+            out.append((surface, np.asarray(transform, dtype=np.float64)))
+    if not out:
+        raise MeshFileError(f"{source}: no triangles in the file")
+    return out
+
+
+def _surface(geom: Any, source: str, name: str, ignored: List[str], materials: bool) -> Optional[Surface]:
+    """A Surface of one trimesh geometry; None (and a note in ``ignored``) for one without faces."""
+    faces = getattr(geom, "faces", None)
+    if faces is None:
+        kind = type(geom).__name__
+        ignored.append({"PointCloud": "points", "Path3D": "lines", "Path2D": "2D paths"}.get(kind, kind))
+        return None
+    faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    vertices = np.asarray(geom.vertices, dtype=np.float64)
+    bad = np.flatnonzero(~np.isfinite(vertices).all(axis=1))
+    where = f" of mesh {name!r}" if name else ""
+    if len(bad):
+        raise MeshFileError(f"{source}: vertex {bad[0] + 1}{where} is not finite: {vertices[bad[0]].tolist()}")
+    if len(faces) == 0:
+        return None
+    if faces.min() < 0 or faces.max() >= len(vertices):
+        i = int(np.flatnonzero((faces < 0).any(axis=1) | (faces >= len(vertices)).any(axis=1))[0])
+        raise MeshFileError(f"{source}: face {i + 1}{where} has an index outside the {len(vertices):,} vertices: "
+                            f"{faces[i].tolist()}")
+    surface = Surface(vertices, faces, name=name)
+    visual = getattr(geom, "visual", None)
+    if visual is not None:
+        _visual_into(surface, visual, ignored, materials)
+        surface.colors = _colors.from_trimesh(geom)  # the renderer's rule (trimesh's placeholder brings nothing)
+        ignored.extend(_UNUSED.get(n, n) for n in surface.colors.pop("unused", []))
+        if "texture" in surface.colors:  # one array, shared by the geometry's instances
+            surface.colors["texture"] = _colors.texture_array(surface.colors["texture"])
+    return surface
+
+
+# what the renderer's colour rule leaves unused, in the words of the warning
+_UNUSED = {"emissiveTexture": "emissive maps", "normalTexture": "normal maps", "occlusionTexture": "occlusion maps",
+           "metallicRoughnessTexture": "metallic-roughness"}
+
+
+def _visual_into(surface: Surface, visual: Any, ignored: List[str], materials: bool) -> None:
+    """Colours, UVs, texture and base colour of a trimesh visual as the file holds them, for
+    writing back (UVs only when ``materials`` is False: the material is trimesh's placeholder)."""
+    kind = getattr(visual, "kind", None)
+    if kind == "vertex":
+        surface.vertex_colors = np.asarray(visual.vertex_colors, dtype=np.uint8)
+    elif kind == "face":
+        surface.face_colors = np.asarray(visual.face_colors, dtype=np.uint8)
+    material = getattr(visual, "material", None)
+    if material is None:
+        return
+    uv = getattr(visual, "uv", None)
+    if uv is not None and len(uv) == len(surface.vertices):
+        surface.uv = np.asarray(uv, dtype=np.float64)
+    if not materials:
+        return
+    factor = getattr(material, "baseColorFactor", None)
+    if factor is None and hasattr(material, "diffuse"):
+        factor = material.diffuse  # an MTL's Kd
+    if factor is not None:
+        surface.base_color = np.asarray(factor, dtype=np.float64).ravel()[:4] / 255.0
+    image = getattr(material, "baseColorTexture", None)
+    if image is None:
+        image = getattr(material, "image", None)
+    if image is not None and surface.uv is not None:
+        surface.texture = np.asarray(image.convert("RGBA"))
+
+
+def _one_line(exc: BaseException) -> str:
+    return " ".join(str(exc).split()) or type(exc).__name__
