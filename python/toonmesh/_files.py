@@ -47,12 +47,14 @@ def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
 
 
 def read_colored_mesh(path: str) -> Tuple[np.ndarray, np.ndarray, Dict[str, Any]]:
-    """(V, F, colour keywords) of a mesh file, for rendering: as :func:`read_mesh`, except that
-    an OBJ's vertices are split where texture coordinates change (so that its texture maps
-    right), with the colour the file carries (vertex or face colours, or uv and the material's
-    image) as the keywords of :class:`toonmesh.Mesh`; what it carries but is not drawn is named
-    in a ``UserWarning``."""
-    mesh = _load(path, keep_obj_order=False)
+    """(V, F, colour keywords) of a mesh file, for rendering: as :func:`read_mesh`, with the
+    colour the file carries (vertex or face colours, or uv and the material's image) as the
+    keywords of :class:`toonmesh.Mesh`; what it carries but is not drawn is named in a
+    ``UserWarning``. A textured OBJ's vertices are split where its texture coordinates change,
+    so that the texture maps right (smooth normals then break along those seams)."""
+    mesh = _load(path, keep_obj_order=True)
+    if path.lower().endswith(".obj") and "texture" in _colors.from_trimesh(mesh):
+        mesh = _load(path, keep_obj_order=False)
     V, F = _arrays(path, mesh)
     return V, F, _colors.gather(mesh, {}, path)
 
