@@ -114,8 +114,9 @@ class Mesh:
     - ``uv``: (N, 2) float texture coordinates, u to the right and v up (v = 0 is the image's
       bottom row, as in OBJ files and trimesh; trimesh turns glTF's v-down coordinates over
       when it loads them), with ``texture``: an (H, W, 3) or (H, W, 4) sRGB(A) image, uint8
-      or floats in [0, 1], top row first, or a PIL image. Each needs the other. A texture
-      larger than the device's ``max_texture_size`` is halved until it fits, with a warning.
+      or floats in [0, 1] (kept as 8-bit codes), top row first, or a PIL image. Each needs
+      the other. A texture larger than the device's ``max_texture_size`` is halved until it
+      fits, with a warning.
     - ``texture_filter``: ``"linear"`` (default: bilinear, trilinear between mip levels made
       by a 2x2 box filter) or ``"nearest"`` (the nearest texel of the full-size image);
       ``texture_wrap``: ``"repeat"`` (default), ``"clamp"`` or ``"mirror"`` (glTF's sampler).

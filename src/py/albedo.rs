@@ -61,19 +61,37 @@ fn colors(arg: &str, obj: &Bound<'_, PyAny>, what: &str) -> Result<Vec<[f32; 4]>
         .collect())
 }
 
-/// (H, W, 3|4) sRGB image, top row first, as 8-bit codes.
+/// (H, W, 3|4) sRGB image, top row first, as 8-bit codes (floats rounded to the nearest code).
 fn texture(obj: &Bound<'_, PyAny>) -> Result<Texture> {
-    let (v, shape) = unit_values("texture", obj, 3, "(H, W, 3) or (H, W, 4)")?;
+    let what = "(H, W, 3) or (H, W, 4)";
+    // uint8 codes are copied as they are (no float copy of a large image)
+    let native = native_order(obj)?;
+    let (texels, shape): (Vec<[u8; 4]>, Vec<usize>) = match native.extract::<PyReadonlyArrayDyn<'_, u8>>() {
+        Ok(x) if x.ndim() == 3 && matches!(x.shape()[2], 3 | 4) && !x.shape().contains(&0) => {
+            let shape = x.shape().to_vec();
+            let a = x.as_array();
+            let flat: Vec<u8> = a.iter().copied().collect();
+            let texels = flat
+                .chunks_exact(shape[2])
+                .map(|c| [c[0], c[1], c[2], c.get(3).copied().unwrap_or(255)])
+                .collect();
+            (texels, shape)
+        }
+        _ => {
+            let (v, shape) = unit_values("texture", obj, 3, what)?;
+            let code = |x: f32| (x * 255.0).round() as u8;
+            let texels = v
+                .chunks_exact(shape[2])
+                .map(|c| [code(c[0]), code(c[1]), code(c[2]), c.get(3).map_or(255, |&a| code(a))])
+                .collect();
+            (texels, shape)
+        }
+    };
     let too_large = || Error::invalid("texture", format!("{shape:?} is too large"));
     let (h, w) = (
         u32::try_from(shape[0]).map_err(|_| too_large())?,
         u32::try_from(shape[1]).map_err(|_| too_large())?,
     );
-    let code = |x: f32| (x * 255.0).round() as u8;
-    let texels = v
-        .chunks_exact(shape[2])
-        .map(|c| [code(c[0]), code(c[1]), code(c[2]), c.get(3).map_or(255, |&a| code(a))])
-        .collect();
     Texture::new(w, h, texels)
 }
 

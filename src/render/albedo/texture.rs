@@ -1,6 +1,8 @@
 //! A texture image and its mip chain, made on the host with a 2x2 box filter in linear light
 //! (the GPU samples these levels; `sampling` reads the same ones on the CPU).
 
+use rayon::prelude::*;
+
 use crate::error::{Error, Result};
 use crate::render::color::{linear_to_srgb, srgb_to_linear};
 
@@ -49,7 +51,8 @@ impl Texture {
     pub fn half(&self) -> Texture {
         let (w, h) = ((self.width / 2).max(1), (self.height / 2).max(1));
         let texels = (0..h)
-            .flat_map(|y| (0..w).map(move |x| (x, y)))
+            .into_par_iter()
+            .flat_map_iter(|y| (0..w).map(move |x| (x, y)))
             .map(|(x, y)| {
                 let mut sum = [0f32; 4];
                 for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
