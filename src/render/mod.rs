@@ -22,6 +22,7 @@ pub mod device;
 pub mod effects;
 pub mod gpu_mesh;
 pub mod graph;
+pub mod hatch_field;
 pub mod image_out;
 pub mod mesh_record;
 pub mod passes;

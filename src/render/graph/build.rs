@@ -2,6 +2,7 @@
 //! and full-screen triangles (image passes), and the states they share.
 
 use crate::render::gpu_mesh::GpuMesh;
+use crate::render::hatch_field::HatchField;
 
 use super::target::DEPTH_FORMAT;
 use super::FrameCtx;
@@ -37,6 +38,8 @@ pub struct MeshDraw<'a> {
     pub constants: &'a [(&'a str, f64)],
     pub more: &'a [&'a wgpu::BindGroupLayout],
     pub cull: Option<wgpu::Face>,
+    /// Reads the hatching field's vertex buffer too (vertex stage `vs_field`).
+    pub field: bool,
 }
 
 /// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`) with
@@ -48,14 +51,18 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
     groups.extend_from_slice(d.more);
     let layout = f.pipelines.layout(device, d.label, &groups);
     let options = wgpu::PipelineCompilationOptions { constants: d.constants, ..Default::default() };
+    let mut buffers = vec![Some(GpuMesh::vertex_layout())];
+    if d.field {
+        buffers.push(Some(HatchField::vertex_layout()));
+    }
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(d.label),
         layout: Some(&layout),
         vertex: wgpu::VertexState {
             module,
-            entry_point: Some("vs_main"),
+            entry_point: Some(if d.field { "vs_field" } else { "vs_main" }),
             compilation_options: options.clone(),
-            buffers: &[Some(GpuMesh::vertex_layout())],
+            buffers: &buffers,
         },
         // Both sides are drawn unless one cannot show: a camera inside a mesh, or an open
         // surface, shows back faces.

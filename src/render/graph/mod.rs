@@ -88,6 +88,8 @@ pub struct DrawItem<'a> {
     /// The faces the camera's passes may skip, and those the shadow map may (`render::culling`).
     pub cull: Option<wgpu::Face>,
     pub light_cull: Option<wgpu::Face>,
+    /// The mesh's hatching field, where its material hatches along it (`render::hatch_field`).
+    pub field: Option<&'a wgpu::Buffer>,
 }
 
 /// What every pass of a frame may use while it records.
@@ -137,6 +139,9 @@ impl FrameCtx<'_> {
             }
             pass.set_bind_group(1, &self.res.uniforms.draw_group, &[d.uniform_offset]);
             pass.set_vertex_buffer(0, d.mesh.vertices.slice(..));
+            if let Some(field) = d.field {
+                pass.set_vertex_buffer(crate::render::hatch_field::FIELD_SLOT, field.slice(..));
+            }
             match &d.mesh.indices {
                 Some(ib) => {
                     pass.set_index_buffer(ib.slice(..), wgpu::IndexFormat::Uint32);

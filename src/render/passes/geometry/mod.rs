@@ -45,6 +45,7 @@ impl Pass for Geometry {
                         constants: &[],
                         more: &[],
                         cull,
+                        field: false,
                     },
                 )
             })

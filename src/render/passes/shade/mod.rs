@@ -49,7 +49,8 @@ impl Shade {
             | cull_bits(d.cull) << 20
             | (f.lights as u64) << 32
             | (f.point_lights as u64) << 40
-            | (shading.anchored as u64) << 48;
+            | (shading.anchored as u64) << 48
+            | (shading.field as u64) << 49;
         f.pipelines.get(PipelineKey::new("shade", bits).with(&shading.constants), || {
             let module = f.module("shade", WGSL, hook);
             let mut targets = vec![target(COLOR_FORMAT)];
@@ -66,6 +67,8 @@ impl Shade {
                     }
                 }
             };
+            // the field's entry points read the anchors and the field (`VsFieldOut`)
+            let entry = if shading.field { entry.replace("_anchored", "_field") } else { entry.to_string() };
             let mut constants = shading.constants.clone();
             constants.push(("LIGHTS", f.lights as f64));
             constants.push(("POINT_LIGHTS", f.point_lights as f64));
@@ -79,12 +82,13 @@ impl Shade {
                 &module,
                 MeshDraw {
                     label: "shade",
-                    entry,
+                    entry: &entry,
                     targets: &targets,
                     samples: self.samples,
                     constants: &constants,
                     more: &more,
                     cull: d.cull,
+                    field: shading.field,
                 },
             )
         })

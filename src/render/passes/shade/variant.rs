@@ -10,6 +10,8 @@ pub struct ShadingVariant {
     /// Whether the fragment stage reads the vertex stage's anchors (object coordinates and
     /// per-vertex colours; `Anchors` in common.wgsl).
     pub anchored: bool,
+    /// Whether it reads the hatching field's vertex buffer (and so the anchors too).
+    pub field: bool,
 }
 
 impl ShadingVariant {
@@ -17,10 +19,12 @@ impl ShadingVariant {
         let mut v = ShadingVariant {
             constants: vec![("PER_VERTEX", m.per_vertex as u32 as f64), ("MODEL", m.model.id() as f64)],
             anchored: m.per_vertex,
+            field: false,
         };
         for part in m.effects.variants() {
             v.constants.extend(part.constants);
             v.anchored |= part.anchored;
+            v.field |= part.field;
         }
         v
     }
