@@ -467,7 +467,9 @@ fn field_hatching_matches_the_cpu_reference_on_both_backends() {
         near: None,
         far: None,
     };
-    let stripes = hatch_stripes(&v, &f, crate::cancel::Cancel::never()).unwrap();
+    let stripes = hatch_stripes(&v, &f, crate::edges::DEFAULT_CREASE_ANGLE, crate::cancel::Cancel::never())
+        .unwrap()
+        .per_vertex(v.len(), &f);
     let (w, h) = (128usize, 128usize);
     for backend in backends() {
         let r = open(backend).unwrap();

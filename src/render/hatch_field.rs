@@ -9,6 +9,7 @@ use std::sync::{Arc, Mutex};
 use wgpu::util::DeviceExt;
 
 use crate::cancel::Cancel;
+use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::Result;
 use crate::mesh::crease_normals::crease_normals;
 
@@ -27,15 +28,26 @@ pub struct HatchField {
     buffer: Mutex<Option<Arc<wgpu::Buffer>>>,
 }
 
-/// For each vertex the device holds, the host vertex it copies (the normal modes split
-/// vertices differently: `GpuMesh::upload`).
-fn device_sources(host: &HostMesh, normals: NormalMode) -> Result<Vec<u32>> {
+/// The stripe values of each vertex the device holds (the normal modes split vertices
+/// differently: `GpuMesh::upload`), the surface cut at the creases the normals split at (the
+/// default crease angle where they split nowhere).
+fn device_values(host: &HostMesh, normals: NormalMode) -> Result<Vec<[f32; 4]>> {
+    let angle = match normals {
+        NormalMode::Auto { crease_angle } => crease_angle,
+        _ => DEFAULT_CREASE_ANGLE,
+    };
+    let stripes = hatch_stripes(&host.positions, &host.faces, angle, Cancel::never())?;
     Ok(match normals {
-        NormalMode::Smooth => (0..host.positions.len() as u32).collect(),
+        NormalMode::Smooth => stripes.per_vertex(host.positions.len(), &host.faces),
         NormalMode::Auto { crease_angle } => {
-            crease_normals(&host.positions, &host.faces, crease_angle)?.source
+            let split = crease_normals(&host.positions, &host.faces, crease_angle)?;
+            stripes.per_vertex(split.source.len(), &split.faces)
         }
-        NormalMode::Flat => host.faces.iter().flatten().copied().collect(),
+        NormalMode::Flat => {
+            let corners: Vec<[u32; 3]> =
+                (0..host.faces.len() as u32).map(|f| [3 * f, 3 * f + 1, 3 * f + 2]).collect();
+            stripes.per_vertex(3 * host.faces.len(), &corners)
+        }
     })
 }
 
@@ -47,11 +59,7 @@ impl HatchField {
         if let Some(b) = &*slot {
             return Ok(b.clone());
         }
-        let stripes = crate::parallel::install(|| {
-            hatch_stripes(&rec.host.positions, &rec.host.faces, Cancel::never())
-        })?;
-        let per_vertex: Vec<[f32; 4]> =
-            device_sources(&rec.host, rec.gpu.normals)?.iter().map(|&i| stripes[i as usize]).collect();
+        let per_vertex = crate::parallel::install(|| device_values(&rec.host, rec.gpu.normals))?;
         let buffer = Arc::new(dev.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("hatching field"),
             contents: bytemuck::cast_slice(&per_vertex),

@@ -8,12 +8,14 @@
 //! triplanar blending); a phase per vertex interpolates into one continuous pattern.
 //!
 //! Positions at the same place (seams of a UV layout, split normals) are welded first, so the
-//! field runs across seams; the stripes' period is `FIELD_PERIOD_EDGES` mean edge lengths, so it
+//! field runs across seams, and the surface is cut at creases, where it has no curvature
+//! direction; the stripes' period is `FIELD_PERIOD_EDGES` mean edge lengths, so it
 //! follows the mesh's own scale and each edge turns the phase by about an eighth of a turn (a
 //! linear interpolation of psi then tracks the phase closely).
 
 use crate::cancel::Cancel;
 use crate::error::Result;
+use crate::mesh::crease_normals::crease_normals;
 use crate::mesh::line_field::principal_line_field;
 use crate::mesh::stripes::stripe_phase;
 use crate::mesh::weld::Merged;
@@ -36,11 +38,50 @@ fn mean_edge(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> f64 {
     sum / (3 * faces.len()).max(1) as f64
 }
 
-/// Per vertex of `positions`: psi of family a, then of family b (re, im each). `faces` are
-/// checked indices.
-pub fn hatch_stripes(positions: &[[f64; 3]], faces: &[[u32; 3]], cancel: &Cancel) -> Result<Vec<[f32; 4]>> {
+/// The stripe values of a mesh, per vertex of the mesh split at its creases: `values[v]` is psi
+/// of family a, then of family b (re, im each), and `corners[f][k]` the split vertex at corner
+/// k of face f.
+pub struct CornerStripes {
+    pub values: Vec<[f32; 4]>,
+    pub corners: Vec<[u32; 3]>,
+}
+
+impl CornerStripes {
+    /// Per vertex of a mesh whose face f has vertex `faces[f][k]` at corner k (the same faces,
+    /// indexed as a device mesh holds them): the value of one of its corners, the one whose
+    /// split vertex has the most faces where the vertex was split (the larger side of a crease).
+    pub fn per_vertex(&self, n_vertices: usize, faces: &[[u32; 3]]) -> Vec<[f32; 4]> {
+        let mut fan = vec![0u32; self.values.len()];
+        for &c in self.corners.iter().flatten() {
+            fan[c as usize] += 1;
+        }
+        let mut best: Vec<Option<u32>> = vec![None; n_vertices];
+        for (f, c) in faces.iter().zip(&self.corners) {
+            for k in 0..3 {
+                let b = &mut best[f[k] as usize];
+                if b.is_none_or(|b| fan[c[k] as usize] > fan[b as usize]) {
+                    *b = Some(c[k]);
+                }
+            }
+        }
+        best.iter().map(|b| b.map_or([1.0, 0.0, 1.0, 0.0], |c| self.values[c as usize])).collect()
+    }
+}
+
+/// The stripe values of `positions` and `faces` (checked indices), the surface cut where faces
+/// meet at more than `crease_angle` degrees: across a crease (a cylinder's rim) curvature has no
+/// direction, and each side is hatched on its own.
+pub fn hatch_stripes(
+    positions: &[[f64; 3]],
+    faces: &[[u32; 3]],
+    crease_angle: f64,
+    cancel: &Cancel,
+) -> Result<CornerStripes> {
     let merged = Merged::of(positions);
     let (p, f) = (merged.gather(positions), merged.faces(faces));
+    let split = crease_normals(&p, &f, crease_angle)?;
+    let p: Vec<[f64; 3]> = split.source.iter().map(|&i| p[i as usize]).collect();
+    let f = split.faces;
     let field = principal_line_field(&p, &f, cancel)?;
     let adj = Adjacency::build(p.len(), &f)?;
     let period = FIELD_PERIOD_EDGES * mean_edge(&p, &f);
@@ -53,14 +94,9 @@ pub fn hatch_stripes(positions: &[[f64; 3]], faces: &[[u32; 3]], cancel: &Cancel
         .collect();
     let a = stripe_phase(&p, &adj, &across, period, cancel)?;
     let b = stripe_phase(&p, &adj, &field.directions, period, cancel)?;
-    Ok(merged
-        .index
-        .iter()
-        .map(|&m| {
-            let (a, b) = (a[m as usize], b[m as usize]);
-            [a[0] as f32, a[1] as f32, b[0] as f32, b[1] as f32]
-        })
-        .collect())
+    let values =
+        a.iter().zip(&b).map(|(a, b)| [a[0] as f32, a[1] as f32, b[0] as f32, b[1] as f32]).collect();
+    Ok(CornerStripes { values, corners: f })
 }
 
 #[cfg(test)]
@@ -77,12 +113,42 @@ mod tests {
         let base = v2.len() as u32;
         v2.extend(first.map(|i| v[i as usize]));
         f2[0] = [base, base + 1, base + 2];
-        let s = hatch_stripes(&v2, &f2, Cancel::never()).unwrap();
-        let whole = hatch_stripes(&v, &f, Cancel::never()).unwrap();
+        let s = hatch_stripes(&v2, &f2, 30.0, Cancel::never()).unwrap().per_vertex(v2.len(), &f2);
+        let whole = hatch_stripes(&v, &f, 30.0, Cancel::never()).unwrap().per_vertex(v.len(), &f);
         for k in 0..3 {
             assert_eq!(s[base as usize + k], s[first[k] as usize]);
         }
         assert_eq!(&s[..v.len()], &whole[..], "the seam changes nothing");
         assert!(s.iter().all(|x| x.iter().all(|c| c.is_finite())));
+    }
+
+    #[test]
+    fn a_crease_cuts_the_field() {
+        // a cylinder with a flat cap: the side's field runs around it up to the rim
+        let (mut v, mut f) = crate::mesh::line_field::tests::cylinder(48, 24);
+        let centre = v.len() as u32;
+        v.push([0.0, 0.0, 1.0]);
+        let top = 24 * 48;
+        f.extend((0..48).map(|k| [centre, top + k, top + (k + 1) % 48]));
+        let s = hatch_stripes(&v, &f, 30.0, Cancel::never()).unwrap();
+        let values = s.per_vertex(v.len(), &f);
+        // family b's phase grows along d1, around: neighbours around a row differ by about
+        // the same turn, rim included
+        let step = |i: usize, j: usize| {
+            let (a, b) = (values[i], values[j]);
+            ((a[2] * b[3] - a[3] * b[2]) as f64).atan2((a[2] * b[2] + a[3] * b[3]) as f64).abs()
+        };
+        let want =
+            std::f64::consts::TAU * (std::f64::consts::TAU / 48.0) / (FIELD_PERIOD_EDGES * mean_edge(&v, &f));
+        for row in [0usize, 12, 24] {
+            for k in 0..48 {
+                let i = row * 48 + k;
+                let got = step(i, row * 48 + (k + 1) % 48);
+                assert!(
+                    got > 0.3 * want && got < 3.0 * want,
+                    "row {row}, vertex {k}: step {got}, about {want}"
+                );
+            }
+        }
     }
 }
