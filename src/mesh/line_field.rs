@@ -23,7 +23,10 @@ use crate::real::{dot, norm};
 
 /// Jacobi sweeps of the smoothing: the field's directions spread about sqrt(sweeps) edges
 /// into regions without a reliable direction, beyond which the fixed axis decides.
-pub const LINE_FIELD_SWEEPS: usize = 64;
+pub const LINE_FIELD_SWEEPS: usize = 200;
+/// The weight of a vertex's own direction where the surface is clearly anisotropic, beside a
+/// neighbour's 1.
+const OWN_PULL: f64 = 1.0;
 /// The weight, beside a neighbour's 1, of the fixed axis (only breaks ties).
 const AXIS_PULL: f64 = 1e-3;
 
@@ -105,9 +108,9 @@ pub fn principal_line_field(
         next.par_iter_mut().enumerate().for_each(|(i, out)| {
             let (n, v) = (normals[i], field[i]);
             let ring = adj.neighbours(i);
-            // the own direction weighs as much as the whole ring where the surface is clearly
-            // anisotropic
-            let mut acc = scale(aligned(own[i], v), weight[i] * ring.len() as f64);
+            // the own direction weighs as much as OWN_PULL neighbours where the surface is
+            // clearly anisotropic: scanned meshes' small bumps are smoothed over
+            let mut acc = scale(aligned(own[i], v), weight[i] * OWN_PULL);
             acc = add(acc, scale(aligned(axis[i], v), AXIS_PULL * ring.len().max(1) as f64));
             for &j in ring {
                 acc = add(acc, aligned(tangent(field[j as usize], n), v));

@@ -21,6 +21,11 @@ use crate::mesh::stripes::stripe_phase;
 use crate::mesh::weld::Merged;
 use crate::mesh::Adjacency;
 use crate::real::{norm, sub};
+use crate::smooth::{resolve, smooth_cancellable, Args, Method};
+
+/// Taubin iterations (lambda 0.5, mu -0.53) of the copy of the mesh whose curvature gives the
+/// directions.
+pub const FIELD_SMOOTHING: i64 = 100;
 
 /// The stripes' period, in mean edge lengths (the finest pattern the shader's octaves start from).
 pub const FIELD_PERIOD_EDGES: f64 = 8.0;
@@ -82,7 +87,11 @@ pub fn hatch_stripes(
     let split = crease_normals(&p, &f, crease_angle)?;
     let p: Vec<[f64; 3]> = split.source.iter().map(|&i| p[i as usize]).collect();
     let f = split.faces;
-    let field = principal_line_field(&p, &f, cancel)?;
+    // the directions from a smoothed copy: on a scanned mesh each bump a few edges wide
+    // would turn the strokes
+    let plan = resolve(Method::Taubin, &Args { iterations: Some(FIELD_SMOOTHING), ..Default::default() })?;
+    let smoothed = smooth_cancellable(&p, &f, &plan, None, cancel, None)?;
+    let field = principal_line_field(&smoothed, &f, cancel)?;
     let adj = Adjacency::build(p.len(), &f)?;
     let period = FIELD_PERIOD_EDGES * mean_edge(&p, &f);
     let period = if period.is_finite() && period > 0.0 { period } else { 1.0 };
