@@ -45,7 +45,10 @@ fn mean_edge(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> f64 {
 
 /// The stripe values of a mesh, per vertex of the mesh split at its creases: `values[v]` is psi
 /// of family a, then of family b (re, im each), and `corners[f][k]` the split vertex at corner
-/// k of face f.
+/// k of face f (`NO_CORNER` for a face that repeats a vertex).
+/// The corner of a face left out of the field.
+pub const NO_CORNER: u32 = u32::MAX;
+
 pub struct CornerStripes {
     pub values: Vec<[f32; 4]>,
     pub corners: Vec<[u32; 3]>,
@@ -57,11 +60,14 @@ impl CornerStripes {
     /// split vertex has the most faces where the vertex was split (the larger side of a crease).
     pub fn per_vertex(&self, n_vertices: usize, faces: &[[u32; 3]]) -> Vec<[f32; 4]> {
         let mut fan = vec![0u32; self.values.len()];
-        for &c in self.corners.iter().flatten() {
+        for &c in self.corners.iter().flatten().filter(|&&c| c != NO_CORNER) {
             fan[c as usize] += 1;
         }
         let mut best: Vec<Option<u32>> = vec![None; n_vertices];
         for (f, c) in faces.iter().zip(&self.corners) {
+            if c[0] == NO_CORNER {
+                continue;
+            }
             for k in 0..3 {
                 let b = &mut best[f[k] as usize];
                 if b.is_none_or(|b| fan[c[k] as usize] > fan[b as usize]) {
@@ -83,8 +89,12 @@ pub fn hatch_stripes(
     cancel: &Cancel,
 ) -> Result<CornerStripes> {
     let merged = Merged::of(positions);
-    let (p, f) = (merged.gather(positions), merged.faces(faces));
-    let split = crease_normals(&p, &f, crease_angle)?;
+    let p = merged.gather(positions);
+    // faces that repeat a vertex span nothing: left out, so that they change nothing
+    let welded = merged.faces(faces);
+    let spans = |t: &[u32; 3]| t[0] != t[1] && t[1] != t[2] && t[2] != t[0];
+    let kept: Vec<[u32; 3]> = welded.iter().copied().filter(spans).collect();
+    let split = crease_normals(&p, &kept, crease_angle)?;
     let p: Vec<[f64; 3]> = split.source.iter().map(|&i| p[i as usize]).collect();
     let f = split.faces;
     // the directions from a smoothed copy: on a scanned mesh each bump a few edges wide
@@ -105,7 +115,12 @@ pub fn hatch_stripes(
     let b = stripe_phase(&p, &adj, &field.directions, period, cancel)?;
     let values =
         a.iter().zip(&b).map(|(a, b)| [a[0] as f32, a[1] as f32, b[0] as f32, b[1] as f32]).collect();
-    Ok(CornerStripes { values, corners: f })
+    let mut split_faces = f.into_iter();
+    let corners = welded
+        .iter()
+        .map(|t| if spans(t) { split_faces.next().expect("one a kept face") } else { [NO_CORNER; 3] })
+        .collect();
+    Ok(CornerStripes { values, corners })
 }
 
 #[cfg(test)]
