@@ -10,7 +10,7 @@
 //! Positions at the same place (seams of a UV layout, split normals) are welded first, so the
 //! field runs across seams, and the surface is cut at creases, where it has no curvature
 //! direction; the stripes' period is `FIELD_PERIOD_EDGES` mean edge lengths, so it
-//! follows the mesh's own scale and each edge turns the phase by about an eighth of a turn (a
+//! follows the mesh's own scale and each edge turns the phase by about a sixteenth of a turn (a
 //! linear interpolation of psi then tracks the phase closely).
 
 use crate::cancel::Cancel;
@@ -28,7 +28,7 @@ use crate::smooth::{resolve, smooth_cancellable, Args, Method};
 pub const FIELD_SMOOTHING: i64 = 100;
 
 /// The stripes' period, in mean edge lengths (the finest pattern the shader's octaves start from).
-pub const FIELD_PERIOD_EDGES: f64 = 8.0;
+pub const FIELD_PERIOD_EDGES: f64 = 16.0;
 
 /// Mean length of the faces' edges (0 for a mesh without any).
 fn mean_edge(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> f64 {
