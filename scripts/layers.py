@@ -28,10 +28,11 @@ LAYERS: List[List[str]] = [
     [
         "render::color", "render::albedo", "render::albedo::*", "render::block", "render::wgsl", "render::scene", "render::scene::*",
         "render::effects::surface", "render::effects::surface_effect", "render::effects::hatching",
+        "render::effects::hatching::*",
         "render::effects::dither", "render::effects::*::settings", "render::effects::outlines::stroke_width",
     ],
     # the device and the meshes on it
-    ["render::device", "render::gpu_albedo", "render::gpu_mesh", "render::mesh_record", "render::culling", "render::reference",
+    ["render::device", "render::gpu_albedo", "render::gpu_mesh", "render::mesh_record", "render::hatch_field", "render::culling", "render::reference",
      "render::image_out"],
     ["render::uniforms", "render::pipelines", "render::graph", "render::graph::*", "render::context"],
     # passes, and the frame effects with theirs

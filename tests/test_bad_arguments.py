@@ -1438,6 +1438,7 @@ RENDER_CASES: List[Case] = [
             Param("values", VALUES, none=OK),
             Param("spacing", Number(2.0, 256.0), none=OK),
             Param("width", Number(0.0, 6.0, open_lo=True), none=OK),  # up to the spacing
+            Param("mode", Name(("field", "triplanar")), none=OK),
             PER_VERTEX,
             Param("dither", DITHER, none=OK),
         ],

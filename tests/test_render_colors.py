@@ -194,9 +194,17 @@ MODELS = [
     lambda c, pv: tm.Material.thresholded_phong(c, per_vertex=pv),
     lambda c, pv: tm.Material.bands(c, per_vertex=pv),
     lambda c, pv: tm.Material.bands(c, dither="bayer4"),
-    lambda c, pv: tm.Material.hatching(c),
+    lambda c, pv: tm.Material.hatching(c, mode="triplanar"),
     lambda c, pv: tm.Material.lut(None, c, per_vertex=pv),
 ]
+
+
+def test_hatching_along_the_form_refuses_a_coloured_mesh_clearly():
+    V, F = tm.shapes.icosphere(2)
+    coloured = tm.Mesh(V, F, vertex_colors=np.full((len(V), 3), 0.5))
+    with pytest.raises(ValueError, match="material.hatching.*mode='triplanar'"):
+        tm.render(coloured, material=tm.Material.hatching(), width=32, height=32)
+    assert tm.render(coloured, material=tm.Material.hatching(mode="triplanar"), width=32, height=32).color.shape == (32, 32, 4)
 
 
 @pytest.mark.parametrize("backend", BACKENDS)

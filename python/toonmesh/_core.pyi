@@ -1,5 +1,5 @@
 # Type stubs for the compiled core (checked against it with `python -m mypy.stubtest toonmesh._core`).
-from typing import Any, Dict, Final, Literal, List, Optional, Tuple, Union, final
+from typing import Any, Dict, Final, List, Literal, Optional, Tuple, Union, final
 
 from typing_extensions import Unpack
 
@@ -188,6 +188,7 @@ class Material:
         values: Optional[Any] = ...,
         spacing: Optional[float] = ...,
         width: Optional[float] = ...,
+        mode: Optional[Literal["field", "triplanar"]] = ...,
         per_vertex: Optional[bool] = ...,
         dither: _DitherArg = ...,
     ) -> Material: ...

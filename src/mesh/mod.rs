@@ -11,9 +11,11 @@ pub mod dihedral;
 pub mod edge_table;
 pub mod enclosure;
 pub mod input;
+pub mod line_field;
 pub mod normals;
 pub mod reorder;
 pub mod shapes;
+pub mod stripes;
 pub mod union_find;
 pub mod weld;
 

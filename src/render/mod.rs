@@ -24,6 +24,7 @@ pub mod effects;
 pub mod gpu_albedo;
 pub mod gpu_mesh;
 pub mod graph;
+pub mod hatch_field;
 pub mod image_out;
 pub mod mesh_record;
 pub mod passes;

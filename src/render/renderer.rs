@@ -26,7 +26,9 @@ use super::graph::effect::{FrameInputs, HostInputs, HostStep};
 use super::graph::report::FrameReport;
 use super::graph::resources::FrameResources;
 use super::graph::{DrawItem, FrameCtx, Recorder};
+use super::hatch_field::HatchField;
 use super::mesh_record::MeshRecord;
+use super::passes::shade::variant::ShadingVariant;
 use super::plan::{plan, Copy, Dest, Plan};
 use super::scene::camera::{Camera, ResolvedCamera, Sphere};
 use super::scene::checked::{CheckedScene, DeviceLimits};
@@ -335,7 +337,26 @@ impl Renderer {
                 culls(item, g.enclosure, g.placement.origin.into(), g.radius, &cam)
             })
             .collect();
-        let p = Prepared { scene, records, culls, cam, sphere, plan };
+        let fields = scene
+            .scene
+            .items
+            .iter()
+            .zip(&records)
+            .map(|(item, rec)| {
+                let albedo = rec.gpu.albedo.as_ref();
+                let field = ShadingVariant::of(&item.material, albedo).field;
+                if field && albedo.is_some() {
+                    // the two ride in the same vertex slot and entry points of their own
+                    return Err(Error::invalid(
+                        "material.hatching",
+                        "hatching along the form (mode='field') does not take a mesh's colour or \
+                         texture yet: use Material.hatching(mode='triplanar') on a coloured mesh",
+                    ));
+                }
+                field.then(|| HatchField::of(&self.ctx, rec)).transpose()
+            })
+            .collect::<Result<_>>()?;
+        let p = Prepared { scene, records, culls, cam, sphere, plan, fields };
         p.run_host(&p.plan.host_before, None, report)?;
         Ok(p)
     }
@@ -431,6 +452,7 @@ impl Renderer {
                 material: &item.material,
                 cull,
                 light_cull,
+                field: p.fields[i].as_deref(),
             })
             .collect();
         let bg = scene.frame.background;
@@ -584,6 +606,8 @@ pub(crate) struct Prepared {
     /// What the scene's meshes fill (world space).
     pub sphere: Sphere,
     pub plan: Plan,
+    /// Per mesh, its hatching field where its material hatches along one.
+    pub fields: Vec<Option<Arc<wgpu::Buffer>>>,
 }
 
 impl Prepared {

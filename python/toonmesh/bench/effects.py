@@ -144,7 +144,8 @@ def _cost_table(subdivisions: int, size: int, repeat: int) -> List[Sequence[Any]
     cases = [
         ("bands (reference)", tm.Material.bands(), key),
         ("+ shadows (2048, pcf)", tm.Material.bands(), casting),
-        ("hatching", tm.Material.hatching(), key),
+        ("hatching (field)", tm.Material.hatching(), key),
+        ("hatching (triplanar)", tm.Material.hatching(mode="triplanar"), key),
         ("dither bayer4, screen", tm.Material.bands(dither="bayer4"), key),
         ("dither bayer4, object", tm.Material.bands(dither=tm.Dither("bayer4", space="object")), key),
         ("hatching + dither + shadows", tm.Material.hatching(dither="bayer4"), casting),

@@ -29,6 +29,8 @@ pub struct Variant {
     pub constants: Vec<(&'static str, f64)>,
     /// Whether its fragment code reads the anchors (`Fragment.object_pos`, `object_normal`).
     pub anchored: bool,
+    /// Whether its vertex stage reads the hatching field's vertex buffer (`vs_field`).
+    pub field: bool,
 }
 
 pub trait SurfaceEffect: Sync {

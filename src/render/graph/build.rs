@@ -3,6 +3,7 @@
 
 use crate::render::gpu_albedo;
 use crate::render::gpu_mesh::GpuMesh;
+use crate::render::hatch_field::HatchField;
 
 use super::target::DEPTH_FORMAT;
 use super::FrameCtx;
@@ -41,6 +42,8 @@ pub struct MeshDraw<'a> {
     /// The vertex entry point that reads the mesh's colour and texture (`gpu_albedo`: its
     /// vertex buffer and bind group), if the pipeline does.
     pub albedo: Option<&'a str>,
+    /// Reads the hatching field's vertex buffer too (vertex stage `vs_field`).
+    pub field: bool,
 }
 
 /// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`, then
@@ -61,12 +64,17 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
         buffers.resize(gpu_albedo::SLOT as usize + 1, None);
         buffers[gpu_albedo::SLOT as usize] = Some(gpu_albedo::vertex_layout());
     }
+    if d.field {
+        use crate::render::hatch_field::FIELD_SLOT;
+        buffers.resize(buffers.len().max(FIELD_SLOT as usize + 1), None);
+        buffers[FIELD_SLOT as usize] = Some(HatchField::vertex_layout());
+    }
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(d.label),
         layout: Some(&layout),
         vertex: wgpu::VertexState {
             module,
-            entry_point: Some(d.albedo.unwrap_or("vs_main")),
+            entry_point: Some(d.albedo.unwrap_or(if d.field { "vs_field" } else { "vs_main" })),
             compilation_options: options.clone(),
             buffers: &buffers,
         },

@@ -89,6 +89,8 @@ pub struct DrawItem<'a> {
     /// The faces the camera's passes may skip, and those the shadow map may (`render::culling`).
     pub cull: Option<wgpu::Face>,
     pub light_cull: Option<wgpu::Face>,
+    /// The mesh's hatching field, where its material hatches along it (`render::hatch_field`).
+    pub field: Option<&'a wgpu::Buffer>,
 }
 
 /// What every pass of a frame may use while it records.
@@ -152,6 +154,9 @@ impl FrameCtx<'_> {
             if let (true, Some(a)) = (with_albedo(d), &d.mesh.albedo) {
                 pass.set_vertex_buffer(gpu_albedo::SLOT, a.vertices.slice(..));
                 pass.set_bind_group(gpu_albedo::GROUP, &a.group, &[]);
+            }
+            if let Some(field) = d.field {
+                pass.set_vertex_buffer(crate::render::hatch_field::FIELD_SLOT, field.slice(..));
             }
             match &d.mesh.indices {
                 Some(ib) => {

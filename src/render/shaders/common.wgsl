@@ -87,6 +87,19 @@ struct VsOut {
     @location(5) object_normal: vec3<f32>,
 };
 
+// `VsOut` and the stripe values of the hatching field (src/render/hatch_field.rs), for
+// materials that hatch along it (`vs_field`, `fs_*_field`).
+struct VsFieldOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) view_pos: vec3<f32>,
+    @location(1) view_normal: vec3<f32>,
+    @location(2) color_front: vec3<f32>,
+    @location(3) color_back: vec3<f32>,
+    @location(4) object_pos: vec3<f32>,
+    @location(5) object_normal: vec3<f32>,
+    @location(6) stripes: vec4<f32>,
+};
+
 struct Varyings {
     @builtin(position) clip: vec4<f32>,
     @location(0) view_pos: vec3<f32>,
@@ -116,6 +129,7 @@ struct Fragment {
     normal: vec3<f32>,         // the unit shading normal, turned toward the viewer
     object_pos: vec3<f32>,     // the mesh's stored coordinates (zero unless the material is anchored)
     object_normal: vec3<f32>,
+    stripes: vec4<f32>,        // the hatching field's psi of each stroke family (zero without one)
 };
 
 fn unit_or_zero(v: vec3<f32>) -> vec3<f32> {
@@ -268,7 +282,15 @@ fn vs_main(v: VsIn) -> VsOut {
     return mesh_vertex(v);
 }
 
-// The vertex stage of every mesh pipeline (also called by `vs_albedo`).
+// The mesh vertex stage with the hatching field's stripe values, from their own buffer.
+@vertex
+fn vs_field(v: VsIn, @location(7) stripes: vec4<f32>) -> VsFieldOut {
+    let o = mesh_vertex(v);
+    return VsFieldOut(o.clip, o.view_pos, o.view_normal, o.color_front, o.color_back, o.object_pos,
+                      o.object_normal, stripes);
+}
+
+// The vertex stage of every mesh pipeline (also called by `vs_albedo` and `vs_field`).
 fn mesh_vertex(v: VsIn) -> VsOut {
     var o: VsOut;
     let p = draw.mesh.model_view * vec4<f32>(v.position, 1.0);

@@ -175,6 +175,7 @@ impl SurfaceEffect for DitherEffect {
                 ("DITHER_OBJECT", object as u32 as f64),
             ],
             anchored: object,
+            field: false,
         }
     }
 }

@@ -10,19 +10,55 @@ struct HatchingBlock {
 };
 
 override HATCHING: bool = false;
+// Strokes along the hatching field (`HatchMode::Field`) rather than triplanar.
+override HATCH_FIELD: bool = false;
 
 // Coverage of one family of strokes along coordinate u: `spacing` pixels apart and `width`
 // pixels wide on screen at any distance, from the two octaves of an object-space pattern that
 // bracket that spacing, the finer one fading in as the surface comes nearer (a tonal art map's
 // mip levels, made in code).
 fn strokes(u: f32) -> f32 {
-    let per_pixel = max(fwidth(u), 1e-30);
-    let level = log2(1.0 / (draw.hatching.spacing * per_pixel));
+    return stroke_octaves(u, fwidth(u), 0.0, -1e30);
+}
+
+// `strokes` with u's change across a pixel given, the strokes shifted by `offset` (of a
+// stroke's spacing), and no octave coarser than 2^lowest (`stroke_octaves` on the CPU, which
+// has lowest = 0: a phase repeats at u's integers, so coarser octaves would not line up).
+fn stroke_octaves(u: f32, per_pixel: f32, offset: f32, lowest: f32) -> f32 {
+    let px = max(per_pixel, 1e-30);
+    let level = max(log2(1.0 / (draw.hatching.spacing * px)), lowest);
     let base = floor(level);
     let f = exp2(base);
-    let coarse = stroke(u * f, f * per_pixel);
-    let fine = stroke(u * 2.0 * f, 2.0 * f * per_pixel);
+    let coarse = stroke(u * f + offset, f * px);
+    let fine = stroke(u * 2.0 * f + offset, 2.0 * f * px);
     return max(coarse, fine * (level - base));
+}
+
+// A stripe value psi's phase in turns, its change across a pixel (from psi's derivatives: no
+// jump where the argument wraps) and the fade near the pattern's singular points
+// (`stripe_phase` on the CPU).
+fn stripe_phase(psi: vec2<f32>) -> vec3<f32> {
+    let dx = dpdxFine(psi);
+    let dy = dpdyFine(psi);
+    let r2 = max(dot(psi, psi), 1e-12);
+    let turn = 6.283185307179586;
+    let ux = (psi.x * dx.y - psi.y * dx.x) / r2;
+    let uy = (psi.x * dy.y - psi.y * dy.x) / r2;
+    let fade = clamp((sqrt(r2) - 0.5 * FIELD_FADE) / (0.5 * FIELD_FADE), 0.0, 1.0);
+    return vec3<f32>(atan2(psi.y, psi.x) / turn, (abs(ux) + abs(uy)) / turn, fade);
+}
+
+// Each layer's coverage along the field: the strokes along the first principal direction, along
+// the second, then each again between its strokes (`field_coverage` on the CPU).
+fn field_layers(f: Fragment) -> vec4<f32> {
+    let a = stripe_phase(f.stripes.xy);
+    let b = stripe_phase(f.stripes.zw);
+    return vec4<f32>(
+        stroke_octaves(a.x, a.y, 0.0, 0.0) * a.z,
+        stroke_octaves(b.x, b.y, 0.0, 0.0) * b.z,
+        stroke_octaves(a.x, a.y, 0.5, 0.0) * a.z,
+        stroke_octaves(b.x, b.y, 0.5, 0.0) * b.z,
+    );
 }
 
 // Coverage of the stroke nearest x (strokes at the integers), `px` units of x a pixel.
@@ -54,7 +90,12 @@ fn hatching_finish(f: Fragment, c: vec3<f32>) -> vec3<f32> {
     if (!HATCHING) {
         return c;
     }
-    let layers = hatch_layers(f);
+    var layers: vec4<f32>;
+    if (HATCH_FIELD) {
+        layers = field_layers(f);
+    } else {
+        layers = hatch_layers(f);
+    }
     let paper = draw.material.diffuse.rgb * albedo;
     let tone = dot(c, LUMA) / max(dot(paper, LUMA), 1e-6);
     var ink = 0.0;

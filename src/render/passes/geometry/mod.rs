@@ -57,6 +57,7 @@ impl Pass for Geometry {
                         more: &[],
                         cull: d.cull,
                         albedo: albedo.map(|_| "vs_albedo"),
+                        field: false,
                     },
                 )
             })

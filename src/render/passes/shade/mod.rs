@@ -54,7 +54,8 @@ impl Shade {
             | (f.lights as u64) << 32
             | (f.point_lights as u64) << 40
             | (shading.anchored as u64) << 48
-            | (shading.albedo as u64) << 56;
+            | (shading.albedo as u64) << 56
+            | (shading.field as u64) << 49;
         f.pipelines.get(PipelineKey::new("shade", bits).with(&shading.constants), || {
             let module = f.module("shade", WGSL, hook);
             let mut targets = vec![target(COLOR_FORMAT)];
@@ -87,6 +88,8 @@ impl Shade {
                     Some(GeometryLayout::Depth) => "depth",
                 });
             }
+            // the field's entry points read the anchors and the field (`VsFieldOut`)
+            let entry = if shading.field { entry.replace("_anchored", "_field") } else { entry.to_string() };
             let mut constants = shading.constants.clone();
             constants.push(("LIGHTS", f.lights as f64));
             constants.push(("POINT_LIGHTS", f.point_lights as f64));
@@ -100,7 +103,7 @@ impl Shade {
                 &module,
                 MeshDraw {
                     label: "shade",
-                    entry,
+                    entry: &entry,
                     targets: &targets,
                     samples: self.samples,
                     constants: &constants,
@@ -111,6 +114,7 @@ impl Shade {
                     } else {
                         "vs_albedo"
                     }),
+                    field: shading.field,
                 },
             )
         })

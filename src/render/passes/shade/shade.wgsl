@@ -5,7 +5,13 @@
 // their hooks (`surface_jitter`, `surface_finish`: src/render/effects/surface.rs).
 
 fn shaded_color(i: Varyings, a: Anchors, front_facing: bool) -> vec4<f32> {
-    let f = Fragment(i.clip, i.view_pos, facing_normal(i.view_normal, front_facing), a.object_pos, a.object_normal);
+    return shaded_color_on(i, a, vec4<f32>(0.0), front_facing);
+}
+
+// `stripes`: the hatching field's values (zero where the material does not hatch along it).
+fn shaded_color_on(i: Varyings, a: Anchors, stripes: vec4<f32>, front_facing: bool) -> vec4<f32> {
+    let f = Fragment(i.clip, i.view_pos, facing_normal(i.view_normal, front_facing), a.object_pos, a.object_normal,
+                     stripes);
     let jitter = surface_jitter(f);
     // the normal's change across a pixel, for band borders blended over it (taken here, in
     // uniform control flow; per 2x2 quad of pixels, as `reference::quad_derivatives` does)
@@ -69,4 +75,31 @@ fn fs_color_depth(i: Varyings, @builtin(front_facing) front_facing: bool) -> Col
 fn fs_color_depth_anchored(v: VsOut, @builtin(front_facing) front_facing: bool) -> ColorDepth {
     let i = varyings(v);
     return ColorDepth(shaded_color(i, anchors(v), front_facing), depth_bits(i));
+}
+
+// The entry points of materials that hatch along the field: the anchors and the stripe values.
+fn field_varyings(v: VsFieldOut) -> Varyings {
+    return Varyings(v.clip, v.view_pos, v.view_normal);
+}
+
+fn field_anchors(v: VsFieldOut) -> Anchors {
+    return Anchors(v.color_front, v.color_back, v.object_pos, v.object_normal);
+}
+
+@fragment
+fn fs_color_field(v: VsFieldOut, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    return shaded_color_on(field_varyings(v), field_anchors(v), v.stripes, front_facing);
+}
+
+@fragment
+fn fs_color_normal_depth_field(v: VsFieldOut, @builtin(front_facing) front_facing: bool) -> ColorNormalDepth {
+    let i = field_varyings(v);
+    let c = shaded_color_on(i, field_anchors(v), v.stripes, front_facing);
+    return ColorNormalDepth(c, normal_depth_bits(i, front_facing));
+}
+
+@fragment
+fn fs_color_depth_field(v: VsFieldOut, @builtin(front_facing) front_facing: bool) -> ColorDepth {
+    let i = field_varyings(v);
+    return ColorDepth(shaded_color_on(i, field_anchors(v), v.stripes, front_facing), depth_bits(i));
 }

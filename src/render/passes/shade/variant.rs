@@ -14,6 +14,8 @@ pub struct ShadingVariant {
     pub anchored: bool,
     /// Whether the stages read the mesh's colour (and texture): `vs_albedo`, `fs_*_albedo`.
     pub albedo: bool,
+    /// Whether it reads the hatching field's vertex buffer (and so the anchors too).
+    pub field: bool,
 }
 
 impl ShadingVariant {
@@ -22,11 +24,13 @@ impl ShadingVariant {
             constants: vec![("PER_VERTEX", m.per_vertex as u32 as f64), ("MODEL", m.model.id() as f64)],
             anchored: m.per_vertex,
             albedo: albedo.is_some(),
+            field: false,
         };
         v.constants.extend(albedo.map_or(vec![], GpuAlbedo::constants));
         for part in m.effects.variants() {
             v.constants.extend(part.constants);
             v.anchored |= part.anchored;
+            v.field |= part.field;
         }
         v
     }
