@@ -1,7 +1,11 @@
-"""Draws docs/effects.png: shadows, hatching and dithering. Left: a torus over a floor lit by a
-shadow-casting light (Kang, Kim and Yoon's shadow z-buffer; the shadowed floor falls to the
-lowest tone). Middle: the smoothed bunny cross-hatched (Borquez and Yepez), with mesh outlines.
-Right: the same bunny dithered between its bands (Bayer 4x4 in screen space, 2-pixel cells).
+"""Draws docs/effects.png: the toon finish, before (top: the papers' own settings) and after
+(bottom: the defaults). Columns: the smoothed bunny in toon bands, the bunny cross-hatched, spot
+in bands, spot cross-hatched, and a torus casting a shadow on a floor. Before: hard band borders
+(``band_antialias=False``), the paper's band values (``Material.bands(preset="paper")``: the
+darkest band and the shadow black, so ink vanishes over them) and triplanar hatching
+(``mode="triplanar"``). After: band borders blended over a pixel, the darkest tone keeping 30%
+of the colour, and hatching along the form (principal directions). No supersampling, so the
+band borders show as the renderer draws them.
 Run from the repository root: ``python docs/effects_figure.py``.
 """
 
@@ -11,28 +15,37 @@ import numpy as np
 from PIL import Image
 
 import toonmesh as tm
+from toonmesh._files import read_mesh
 from toonmesh.bench.effects import SHADOW_SCENES
 from toonmesh.data import bunny
 
 ROOT = Path(__file__).resolve().parent.parent
-SIZE = 360
+SIZE = 300
 
 
 def main() -> None:
-    (V, F), direction, eye = SHADOW_SCENES["torus over a plane"]
-    kw = dict(width=SIZE, height=SIZE, supersample=2)
-    shadows = tm.render(V, F, lights=[tm.Light.directional(direction, shadows=True)],
-                        material=tm.Material.lut(tm.kang_table(), color="#e8a040"), camera=tm.Camera.fit(eye),
-                        outlines="mesh", **kw).color
     Vb, Fb = bunny()
     Vb = tm.smooth.laplacian(Vb, Fb, iterations=5, preset="paper")
+    Vs, Fs = read_mesh(str(ROOT / "tests" / "data" / "meshes" / "spot.obj"))
+    (Vt, Ft), direction, eye = SHADOW_SCENES["torus over a plane"]
     light = [tm.Light.directional((0.6, -0.5, -1.0))]
-    hatched = tm.render(Vb, Fb, material=tm.Material.hatching(), lights=light, outlines="mesh", **kw).color
-    dithered = tm.render(Vb, Fb, material=tm.Material.bands(dither=tm.Dither("bayer4", scale=2.0)), lights=light,
-                         width=SIZE, height=SIZE).color
-    row = np.concatenate([shadows, hatched, dithered], axis=1)
+    rows = []
+    for before in (True, False):
+        kw = dict(width=SIZE, height=SIZE, outlines="mesh", band_antialias=not before)
+        bands = tm.Material.bands("#f08a3c", preset="paper" if before else None)
+        hatching = tm.Material.hatching(mode="triplanar" if before else "field")
+        spot = dict(camera=tm.Camera.fit((1.0, 0.35, 0.9)), lights=light)
+        cells = [
+            tm.render(Vb, Fb, material=bands, lights=light, **kw).color,
+            tm.render(Vb, Fb, material=hatching, lights=light, **kw).color,
+            tm.render(Vs, Fs, material=tm.Material.bands("#d8c8f0", preset="paper" if before else None), **spot, **kw).color,
+            tm.render(Vs, Fs, material=hatching, **spot, **kw).color,
+            tm.render(Vt, Ft, material=tm.Material.bands("#e8a040", preset="paper" if before else None),
+                      lights=[tm.Light.directional(direction, shadows=True)], camera=tm.Camera.fit(eye), **kw).color,
+        ]
+        rows.append(np.concatenate(cells, axis=1))
     out = ROOT / "docs" / "effects.png"
-    Image.fromarray(row).save(out, optimize=True)
+    Image.fromarray(np.concatenate(rows, axis=0)).save(out, optimize=True)
     print("wrote", out)
 
 

@@ -12,7 +12,7 @@ use super::renderer::{RenderOutput, Renderer};
 use super::scene::camera::{Camera, Placement, Projection};
 use super::scene::light::{Light, ViewLight};
 use super::scene::material::Material;
-use super::scene::model::{kang_table, Highlight, Model};
+use super::scene::model::{kang_table, Highlight, Model, PAPER_BAND_VALUES};
 use super::scene::{FrameSpec, Output, Outputs, Scene, SceneItem, IDENTITY};
 use crate::mesh::shapes::icosphere;
 
@@ -444,8 +444,9 @@ fn field_hatching_matches_the_cpu_reference_on_both_backends() {
     let (v, f) = crate::mesh::shapes::grid(12, 0.0, 0).unwrap();
     let hatching = Hatching { mode: HatchMode::Field, ..Hatching::default() };
     let effects = SurfaceSettings { hatching: Some(hatching), ..Default::default() };
-    let material = Material::bands([1.0; 3], None, None, false).unwrap().with_effects(effects).unwrap();
-    // L.n = 0.3 (the bands' value 0.2) under a light of 1.1: tone 0.22, three layers of strokes
+    let paper_values = Some(PAPER_BAND_VALUES.to_vec());
+    let material = Material::bands([1.0; 3], None, paper_values, false).unwrap().with_effects(effects).unwrap();
+    // L.n = 0.3 (the paper bands' value 0.2) under a light of 1.1: tone 0.22, three layers of strokes
     let light = Light {
         kind: LightKind::Directional { direction: [-(1.0f64 - 0.09).sqrt(), 0.0, -0.3] },
         space: Space::World,
