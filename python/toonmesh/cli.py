@@ -412,7 +412,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("--crease-angle", type=float, default=DEMO_OUTLINES.crease_angle, metavar="DEG",
                    help="crease lines where faces meet at more than this (default %(default)g)")
     p.add_argument("--taper", type=float, default=DEMO_OUTLINES.taper, metavar="PX",
-                   help="mesh lines thin to a point over this many pixels at their ends (default %(default)g)")
+                   help="mesh lines thin toward their ends over this many pixels, to a fifth of the width (default %(default)g)")
     p.add_argument("--width-by-depth", action=argparse.BooleanOptionalAction, default=DEMO_OUTLINES.width_by_depth,
                    help="mesh lines wider near the camera, thinner far away (default: %(default)s)")
     _add_contour_arguments(p)
