@@ -191,6 +191,31 @@ impl Adjacency {
         &self.nbrs[self.slots(i)]
     }
 
+    /// Visits every vertex breadth-first from the lowest index of each connected part, calling
+    /// `reach(i, j)` when j is first reached from i.
+    pub fn breadth_first(&self, mut reach: impl FnMut(usize, usize)) {
+        let n = self.n_vertices();
+        let mut seen = vec![false; n];
+        let mut queue = std::collections::VecDeque::new();
+        for root in 0..n {
+            if seen[root] {
+                continue;
+            }
+            seen[root] = true;
+            queue.push_back(root);
+            while let Some(i) = queue.pop_front() {
+                for &j in self.neighbours(i) {
+                    let j = j as usize;
+                    if !seen[j] {
+                        seen[j] = true;
+                        reach(i, j);
+                        queue.push_back(j);
+                    }
+                }
+            }
+        }
+    }
+
     /// How many face-edges join vertex i to each of its neighbours, slot by slot.
     #[inline]
     pub fn edge_faces(&self, i: usize) -> &[u32] {

@@ -11,8 +11,6 @@
 //! are propagated breadth-first so that neighbours agree wherever the line field allows it:
 //! stripes need a vector field.
 
-use std::collections::VecDeque;
-
 use rayon::prelude::*;
 
 use crate::cancel::Cancel;
@@ -126,25 +124,7 @@ pub fn principal_line_field(
 /// Flips directions so that each vertex agrees with the one it was reached from, breadth-first
 /// from the lowest index of each connected part.
 fn orient(adj: &Adjacency, field: &mut [[f64; 3]]) {
-    let mut seen = vec![false; field.len()];
-    let mut queue = VecDeque::new();
-    for root in 0..field.len() {
-        if seen[root] {
-            continue;
-        }
-        seen[root] = true;
-        queue.push_back(root);
-        while let Some(i) = queue.pop_front() {
-            for &j in adj.neighbours(i) {
-                let j = j as usize;
-                if !seen[j] {
-                    seen[j] = true;
-                    field[j] = aligned(field[j], field[i]);
-                    queue.push_back(j);
-                }
-            }
-        }
-    }
+    adj.breadth_first(|i, j| field[j] = aligned(field[j], field[i]));
 }
 
 #[cfg(test)]

@@ -15,8 +15,6 @@
 //! A renderer interpolates psi over each triangle and takes its argument: a phase that is
 //! continuous everywhere (no cut, no seam) except at the zeros.
 
-use std::collections::VecDeque;
-
 use rayon::prelude::*;
 
 use crate::cancel::Cancel;
@@ -57,25 +55,7 @@ pub fn stripe_phase(
     let frequency = std::f64::consts::TAU / period;
     // the phase integrated along a breadth-first tree, from the lowest index of each part
     let mut psi = vec![[1.0, 0.0]; n];
-    let mut seen = vec![false; n];
-    let mut queue = VecDeque::new();
-    for root in 0..n {
-        if seen[root] {
-            continue;
-        }
-        seen[root] = true;
-        queue.push_back(root);
-        while let Some(i) = queue.pop_front() {
-            for &j in adj.neighbours(i) {
-                let j = j as usize;
-                if !seen[j] {
-                    seen[j] = true;
-                    psi[j] = mul(psi[i], turn(edge_turn(positions, x, i, j, frequency)));
-                    queue.push_back(j);
-                }
-            }
-        }
-    }
+    adj.breadth_first(|i, j| psi[j] = mul(psi[i], turn(edge_turn(positions, x, i, j, frequency))));
     cancel.check()?;
     // each edge's turn, once (per one-ring slot), for the sweeps
     let turns: Vec<Complex> = (0..n)

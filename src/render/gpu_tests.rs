@@ -445,7 +445,8 @@ fn field_hatching_matches_the_cpu_reference_on_both_backends() {
     let hatching = Hatching { mode: HatchMode::Field, ..Hatching::default() };
     let effects = SurfaceSettings { hatching: Some(hatching), ..Default::default() };
     let paper_values = Some(PAPER_BAND_VALUES.to_vec());
-    let material = Material::bands([1.0; 3], None, paper_values, false).unwrap().with_effects(effects).unwrap();
+    let material =
+        Material::bands([1.0; 3], None, paper_values, false).unwrap().with_effects(effects).unwrap();
     // L.n = 0.3 (the paper bands' value 0.2) under a light of 1.1: tone 0.22, three layers of strokes
     let light = Light {
         kind: LightKind::Directional { direction: [-(1.0f64 - 0.09).sqrt(), 0.0, -0.3] },

@@ -143,14 +143,6 @@ impl Renderer {
         faces: Vec<[u32; 3]>,
         normals: NormalMode,
     ) -> Result<MeshId> {
-        self.ctx.check_process()?;
-        crate::mesh::check_positions("vertices", positions)?;
-        if let Some(bad) = faces.iter().flatten().find(|&&i| i as usize >= positions.len()) {
-            return Err(Error::out_of_range(
-                "faces",
-                format!("vertex index {bad} is outside [0, {})", positions.len()),
-            ));
-        }
         self.add_mesh_with(positions, faces, normals, None).map(|(id, _)| id)
     }
 
