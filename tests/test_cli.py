@@ -332,3 +332,12 @@ def test_edges_and_render_take_the_contour_rule_and_suggestive_contours(tmp_path
     in_process(capsys, "render", bunny, "-o", "b.png", "--size", "64x64", "--outlines", "mesh", "--contours", "smooth")
     assert (tmp_path / "b.png").stat().st_size > 0
     one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--contours", "zigzag", check=False), "--contours")
+
+
+def test_edges_joins_strokes_of_different_kinds_when_asked(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    bunny = str(Path(tm.__file__).parent / "data" / "bunny.obj")
+    in_process(capsys, "edges", bunny, "-o", "apart.svg", "--size", "300x300")
+    in_process(capsys, "edges", bunny, "-o", "joined.svg", "--size", "300x300", "--join-kinds")
+    apart, joined = ((tmp_path / n).read_text().count("<polyline") for n in ("apart.svg", "joined.svg"))
+    assert joined < apart

@@ -32,11 +32,13 @@ def view_lines(
     backend: Optional[str] = None,
     contours: Optional[str] = None,
     suggestive: bool = False,
+    join_kinds: bool = False,
 ) -> Dict[str, Any]:
     """The visible (and, with ``hidden``, every) outline polyline of one view, and the mesh's
-    feature edges; see :func:`write_npz` for the arrays. ``contours`` and ``suggestive`` as in
-    :class:`toonmesh.Outlines`."""
-    rule = dict(crease_angle=crease_angle, weld=weld, contours=contours, suggestive=suggestive or None)
+    feature edges; see :func:`write_npz` for the arrays. ``contours``, ``suggestive`` and
+    ``join_kinds`` as in :class:`toonmesh.Outlines`."""
+    rule = dict(crease_angle=crease_angle, weld=weld, contours=contours, suggestive=suggestive or None,
+                join_kinds=join_kinds)
     outlines = tm.Outlines("mesh", width=stroke_width, **rule)
     kw = dict(camera=camera, width=width, height=height, outputs=("lines",), backend=backend)
     seen = tm.render(vertices, faces, outlines=outlines, **kw)

@@ -201,6 +201,7 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     if args.outlines != "none":
         options["outlines"] = tm.Outlines(
             args.outlines, width=args.outline_width, crease_angle=args.crease_angle, contours=args.contours,
+            join_kinds=args.join_kinds,
             taper=args.taper, width_by_depth=args.width_by_depth,
             suggestive=args.suggestive or None, image_rule=args.image_rule, normal_angle=args.normal_angle,
             depth_jump=args.depth_jump, normal_threshold=args.normal_threshold, depth_threshold=args.depth_threshold)
@@ -282,9 +283,11 @@ def cmd_smooth(args: argparse.Namespace) -> int:
 
 def _add_contour_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--contours", choices=tuple(_core.CONTOUR_RULES), default=tm.Outlines().contours,
-                   help="silhouettes on face edges (Kang et al.) or the smooth contour through the faces "
-                        "(clean on scans); default: %(default)s")
+                   help="silhouettes on face edges (Kang et al.), the smooth contour through the faces "
+                        "(clean on scans), or auto: smooth unless the mesh is flat-shaded; default: %(default)s")
     p.add_argument("--suggestive", action="store_true", help="add suggestive contours (DeCarlo et al.; default: off)")
+    p.add_argument("--join-kinds", action=argparse.BooleanOptionalAction, default=tm.Outlines().join_kinds,
+                   help="join strokes of different kinds that meet end to end into one (default: %(default)s)")
 
 
 def cmd_edges(args: argparse.Namespace) -> int:
@@ -302,7 +305,8 @@ def cmd_edges(args: argparse.Namespace) -> int:
     w, h = args.size
     lines = _line_drawing.view_lines(V, F, camera, width=w, height=h, crease_angle=args.crease_angle,
                                      weld=args.weld, stroke_width=args.stroke_width, hidden=args.hidden,
-                                     backend=args.backend, contours=args.contours, suggestive=args.suggestive)
+                                     backend=args.backend, contours=args.contours, suggestive=args.suggestive,
+                                     join_kinds=args.join_kinds)
     if suffix == ".svg":
         _line_drawing.write_svg(args.out, lines)
     else:
