@@ -324,3 +324,16 @@ def test_a_textured_file_renders_with_its_texture_in_batch_renders(tmp_path):
     image = np.asarray(Image.open(out))[..., :3].astype(int)
     direct = tm.render(tm.Mesh(V, F, uv=uv, texture=CHECKER), **HEAD_ON).color[..., :3].astype(int)
     assert np.abs(image - direct).max() <= 2  # the file's texture, the right way up
+
+
+def test_own_colours_show_the_same_however_the_meshes_are_given():
+    V, F = tm.shapes.icosphere(2)
+    colours = np.tile(np.array([40, 90, 220], np.uint8), (len(V), 1))
+    mine = tm.Mesh(V, F, vertex_colors=colours)
+    kw = dict(width=48, height=48)
+    given = tm.render([mine], **kw).color
+    white = tm.render([tm.Mesh(V, F, vertex_colors=colours, material=tm.Material.bands("#ffffff"))], **kw).color
+    np.testing.assert_array_equal(given, white)  # the colours as they are, not times the default orange
+    assert mine.material is None  # the caller's mesh is left as it was
+    tinted = tm.render([mine], material=tm.Material.bands("#ff8000"), **kw).color
+    assert np.abs(tinted.astype(int) - given.astype(int)).max() > 40  # a given material multiplies them

@@ -10,6 +10,8 @@ record first; :func:`_mesh_of` is the one place that turns it into a :class:`too
 
 from __future__ import annotations
 
+import copy
+
 import os
 import warnings
 from dataclasses import dataclass, field
@@ -154,11 +156,17 @@ def carries_colour(mesh: Any) -> bool:
 
 
 def under_own_colours(meshes: List[Any], material: Any) -> List[Any]:
-    """``meshes`` with ``material`` on those that carry their own colours and name no material."""
+    """``meshes`` with ``material`` on those that carry their own colours and name no material
+    (copies of those: the caller's meshes are left as they are)."""
+    from toonmesh._render import Mesh
+
+    out = []
     for m in meshes:
-        if m.material is None and carries_colour(m):
+        if isinstance(m, Mesh) and m.material is None and carries_colour(m):
+            m = copy.copy(m)
             m.material = material
-    return meshes
+        out.append(m)
+    return out
 
 
 def _mesh_of(surface: Surface, transform: Optional[np.ndarray]) -> Any:

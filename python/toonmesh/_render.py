@@ -287,7 +287,10 @@ class RenderResult:
 
     def to_pil(self) -> Any:
         """The colour image as a ``PIL.Image.Image`` in mode RGBA (needs Pillow)."""
-        from PIL import Image
+        try:
+            from PIL import Image
+        except ImportError:
+            raise ImportError("to_pil needs Pillow: pip install pillow (or 'toonmesh[io]')") from None
 
         return Image.fromarray(self._color(), mode="RGBA") if _pil_takes_mode() else Image.fromarray(self._color())
 
@@ -532,11 +535,11 @@ def render(
 
     ``vertices``: (N, 3) float32/float64 with ``faces`` (M, 3) int32/int64/uint32; or a
     ``trimesh.Trimesh``; or a ``trimesh.Scene`` or a mesh file's path (str or os.PathLike),
-    read as :func:`toonmesh.load` reads them (every node, its transform and colours; with no
-    ``material`` given, meshes that carry colours or a texture are drawn under the default
-    shading model in white, so their colours show as the file has them); or a
+    read as :func:`toonmesh.load` reads them (every node, its transform and colours); or a
     :class:`Mesh` or list of them (each with its own material and transform); None for an
-    empty scene. Inputs are never modified. Meshes that share their vertex and face arrays (the
+    empty scene. With no ``material`` given, meshes that carry colours or a texture and name no
+    material of their own are drawn under the default shading model in white, so their colours
+    show as they are, however they were given. Inputs are never modified. Meshes that share their vertex and face arrays (the
     instances of one geometry) are uploaded once.
     ``normals``: ``"smooth"`` (default), ``"flat"``, ``"auto"`` (split at edges sharper than 30
     degrees: hard edges for boxes and CAD parts) or ``("auto", degrees)``; see :class:`Mesh`.
@@ -558,11 +561,11 @@ def render(
     elif faces is None and (isinstance(vertices, (str, os.PathLike)) or _load.is_scene(vertices)):
         loaded = _load.load(vertices) if isinstance(vertices, (str, os.PathLike)) else _load.scene_meshes(vertices)
         items = [_with_normals(m, normals) for m in loaded]
-        if options.get("material") is None:  # a file's colours as it has them: under a white material
-            white = getattr(Material, opts.material.model)(_load.OWN_COLOURS_WHITE)
-            items = _load.under_own_colours(items, white)
     else:
         items = [Mesh(vertices, faces, normals=normals)]  # a trimesh brings its colour
+    if options.get("material") is None:  # colours as the mesh has them: under a white material
+        white = getattr(Material, opts.material.model)(_load.OWN_COLOURS_WHITE)
+        items = _load.under_own_colours(items, white)
     if iterations:
         smoothed: Dict[Tuple[int, int], np.ndarray] = {}  # instances of one geometry: smoothed once, shared
         out = []

@@ -66,7 +66,7 @@ def render_views(
     scene, handles = [], {}
     meshes = load(mesh_path)
     if own_colors_material is not None:
-        under_own_colours(meshes, own_colors_material)
+        meshes = under_own_colours(meshes, own_colors_material)
     try:
         for m in meshes:  # instances of one geometry share arrays: uploaded once
             key = _geometry_key(m)

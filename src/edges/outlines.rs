@@ -40,6 +40,18 @@ impl LineKind {
         LineKind::Material,
     ];
 
+    /// Kinds that run along an object's outline, where background next to a line point does
+    /// not hide it: silhouettes, boundaries and the borders between scene items (a border is a
+    /// boundary of each of its two items).
+    pub fn on_rim(self) -> bool {
+        matches!(self, LineKind::Silhouette | LineKind::Boundary | LineKind::Material)
+    }
+
+    /// `on_rim` of every kind as bits (bit k for the kind of index k).
+    pub fn rim_bits() -> u32 {
+        LineKind::ALL.iter().filter(|k| k.on_rim()).map(|&k| 1u32 << k as u32).sum()
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             LineKind::Silhouette => "silhouette",

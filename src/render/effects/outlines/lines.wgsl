@@ -6,7 +6,8 @@
 // of the line is visible when its depth is at most the largest surface depth in the 3x3 pixels
 // around it plus `depth offset` pixel footprints (settings.rs), decided at the
 // nearest point of the centre line, so that the whole width of a line shows or hides together.
-// A silhouette or boundary with background among those pixels is on the rim and shows; other
+// A line of a rim kind (`LineKind::on_rim`: silhouette, boundary, material border) with background
+// among those pixels is on the rim and shows; other
 // lines are tested against the surface pixels only (a crease behind the rim stays hidden).
 // `visibility.rs` holds the same rule on the CPU.
 
@@ -88,7 +89,7 @@ fn surface_depth(p: vec2<i32>) -> u32 {
 fn visible(c: vec2<f32>, z: f32, kind: u32) -> bool {
     let size = vec2<i32>(textureDimensions(geometry));
     let q = vec2<i32>(floor(c));
-    let rim = kind == LINE_SILHOUETTE || kind == LINE_BOUNDARY;
+    let rim = ((RIM_KINDS >> kind) & 1u) == 1u;
     let tolerance = frame.outlines.depth_offset * (z * frame.view.footprint.x + frame.view.footprint.y) + z * DEPTH_EPSILON;
     // the pixel itself usually decides: in front of (or on) its surface, the largest depth
     // around can only agree

@@ -42,11 +42,11 @@ impl Visibility {
 
     /// Whether the point at pixel position `c`, depth `z`, of a line of kind `kind` is visible:
     /// its depth is at most the largest surface depth in the 3x3 pixels around it plus `offset`
-    /// footprints (plus `DEPTH_EPSILON` of itself). A silhouette or boundary with background
+    /// footprints (plus `DEPTH_EPSILON` of itself). A line of a rim kind (`LineKind::on_rim`) with background
     /// among those pixels is on the rim and visible; other kinds are held against the surface
     /// pixels only, so a crease behind the rim stays hidden. No surface around: visible.
     pub fn visible(&self, img: &DepthImage<'_>, c: [f64; 2], z: f64, kind: usize) -> bool {
-        let rim = kind == LineKind::Silhouette as usize || kind == LineKind::Boundary as usize;
+        let rim = LineKind::rim_bits() >> kind & 1 == 1;
         let (qx, qy) = (c[0].floor() as i64, c[1].floor() as i64);
         let mut far: Option<f64> = None;
         for j in -1..=1 {
