@@ -194,3 +194,16 @@ def test_render_draws_a_glb_in_its_own_colours(tmp_path, capsys):
     in_process(capsys, "render", path, "-o", str(tmp_path / "g.png"), "--size", "120x60", "--color", "#00ff00")
     red, blue = hues(read_png(tmp_path / "g.png"))
     assert red < 0.05 and blue < 0.05  # --color multiplies them: green light on red and blue
+
+
+def test_render_hatches_a_coloured_file_with_triplanar_strokes(tmp_path, capsys):
+    from test_load import coloured_scene
+
+    path = coloured_scene(tmp_path / "coloured.glb")
+    out = str(tmp_path / "h.png")
+    refused = in_process(capsys, "render", path, "-o", out, "--size", "64x64", "--style", "hatching", check=False)
+    assert refused.returncode == 1 and "mode='triplanar'" in refused.stderr
+    in_process(capsys, "render", path, "-o", out, "--size", "64x64", "--style", "hatching", "--hatch-mode", "triplanar")
+    assert read_png(out).shape[:2] == (64, 64)
+    bad = in_process(capsys, "render", path, "-o", out, "--hatch-mode", "triplanar", check=False)
+    assert bad.returncode != 0 and "--hatch-mode" in bad.stderr

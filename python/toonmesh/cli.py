@@ -182,9 +182,9 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     if args.dither != "none":
         material_kw["dither"] = tm.Dither(args.dither, amount=args.dither_amount)
     if args.style == "hatching":
-        material_kw.update(spacing=args.hatch_spacing, width=args.hatch_width)
-    elif args.hatch_spacing != HATCHING["spacing"] or args.hatch_width != HATCHING["width"]:
-        raise CliError("--hatch-spacing, --hatch-width: only with --style hatching")
+        material_kw.update(spacing=args.hatch_spacing, width=args.hatch_width, mode=args.hatch_mode)
+    elif (args.hatch_spacing, args.hatch_width, args.hatch_mode) != tuple(HATCHING[k] for k in ("spacing", "width", "mode")):
+        raise CliError("--hatch-spacing, --hatch-width, --hatch-mode: only with --style hatching")
     if args.style == "lambert" or args.style == "phong":
         if "dither" in material_kw:
             raise CliError(f"--dither: not with --style {args.style} (it has no bands to dither between)")
@@ -401,6 +401,9 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                    help="--style hatching: pixels between strokes (default %(default)g)")
     p.add_argument("--hatch-width", type=float, default=HATCHING["width"], metavar="PX",
                    help="--style hatching: stroke width in pixels (default %(default)g)")
+    p.add_argument("--hatch-mode", choices=("field", "triplanar"), default=HATCHING["mode"],
+                   help="--style hatching: strokes along the form, or straight triplanar strokes, which also "
+                        "take a file's colours (default %(default)s)")
     p.add_argument("--band-antialias", action=argparse.BooleanOptionalAction, default=tm.RenderOptions().band_antialias,
                    help="blend across band borders over about a pixel; --no-band-antialias for the papers' hard "
                         "borders (default: %(default)s)")
