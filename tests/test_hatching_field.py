@@ -133,3 +133,11 @@ def test_mode_is_checked_and_kept():
         tm.Material.hatching(mode="diagonal")
     with pytest.raises(TypeError, match="^mode"):
         tm.Material.hatching(mode=3)
+
+
+def test_field_hatching_runs_no_pass_more_than_plain_bands():
+    V, F = tm.shapes.icosphere(3)
+    kw = dict(width=48, height=48, outlines="mesh")
+    field = tm.render(V, F, material=tm.Material.hatching(), **kw)
+    plain = tm.render(V, F, material=tm.Material.bands(), **kw)
+    assert field.passes == plain.passes  # the field rides in the shade pass's own vertex stage

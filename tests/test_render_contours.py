@@ -261,3 +261,4 @@ def test_material_borders_between_scene_items(backend):
     off = tm.render(two, outlines=tm.Outlines("mesh", material=False), **kw)
     rim = lambda res: _pieces(res, "boundary").sum()  # noqa: E731
     assert "material" not in off.line_kinds and rim(off) > rim(r) + 0.5 * SIZE
+    assert r.passes == off.passes  # borders are lines of the same passes

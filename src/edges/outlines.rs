@@ -41,15 +41,14 @@ impl LineKind {
     ];
 
     /// Kinds that run along an object's outline, where background next to a line point does
-    /// not hide it: silhouettes, boundaries and the borders between scene items (a border is a
-    /// boundary of each of its two items).
-    pub fn on_rim(self) -> bool {
-        matches!(self, LineKind::Silhouette | LineKind::Boundary | LineKind::Material)
-    }
+    /// not hide it, as bits (bit k for the kind of index k): silhouettes, boundaries and the
+    /// borders between scene items (a border is a boundary of each of its two items).
+    pub const RIM_BITS: u32 =
+        1 << LineKind::Silhouette as u32 | 1 << LineKind::Boundary as u32 | 1 << LineKind::Material as u32;
 
-    /// `on_rim` of every kind as bits (bit k for the kind of index k).
-    pub fn rim_bits() -> u32 {
-        LineKind::ALL.iter().filter(|k| k.on_rim()).map(|&k| 1u32 << k as u32).sum()
+    /// Whether the kind of index `kind` runs along the rim (`RIM_BITS`).
+    pub fn on_rim(kind: usize) -> bool {
+        LineKind::RIM_BITS >> kind & 1 == 1
     }
 
     pub fn name(self) -> &'static str {

@@ -8,6 +8,7 @@ pub mod buckets;
 pub mod crease_normals;
 pub mod curvature;
 pub mod dihedral;
+pub mod edge_length;
 pub mod edge_table;
 pub mod enclosure;
 pub mod input;

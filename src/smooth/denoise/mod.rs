@@ -65,24 +65,6 @@ fn welded_or_not<T: Real>(
     on_welded(x0, faces, pinned, opts.weld, |x, f, pinned| denoise_mesh(x, f, opts, pinned, cancel))
 }
 
-/// The mean length of the faces' edges (each face counts its three). Summed in fixed chunks, in
-/// order, so that the result does not depend on how the work was split between threads.
-fn mean_edge_length(x: &[[f64; 3]], faces: &[[u32; 3]]) -> f64 {
-    let partial: Vec<f64> = faces
-        .par_chunks(4096)
-        .map(|chunk| {
-            chunk
-                .iter()
-                .map(|f| {
-                    let [a, b, c] = f.map(|i| x[i as usize]);
-                    (faces::dist2(a, b).sqrt() + faces::dist2(b, c).sqrt() + faces::dist2(c, a).sqrt()) / 3.0
-                })
-                .sum::<f64>()
-        })
-        .collect();
-    partial.iter().sum::<f64>() / faces.len().max(1) as f64
-}
-
 fn denoise_mesh<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
@@ -94,7 +76,7 @@ fn denoise_mesh<T: Real>(
     let mut x: Vec<[f64; 3]> = x0.par_iter().map(|p| p.map(|c| c.to_f64())).collect();
     let mut data = Vec::new();
     faces::face_data(&x, faces, &mut data);
-    let edge = mean_edge_length(&x, faces);
+    let edge = crate::mesh::edge_length::mean_edge_length(&x, faces);
     if edge.is_nan() || edge <= 0.0 {
         return Ok(x0.to_vec());
     }

@@ -16,11 +16,11 @@
 use crate::cancel::Cancel;
 use crate::error::Result;
 use crate::mesh::crease_normals::crease_normals;
+use crate::mesh::edge_length::mean_edge_length;
 use crate::mesh::line_field::principal_line_field;
 use crate::mesh::stripes::stripe_phase;
 use crate::mesh::weld::Merged;
 use crate::mesh::Adjacency;
-use crate::real::{norm, sub};
 use crate::smooth::{resolve, smooth_cancellable, Args, Method};
 
 /// Taubin iterations (lambda 0.5, mu -0.53) of the copy of the mesh whose curvature gives the
@@ -29,19 +29,6 @@ pub const FIELD_SMOOTHING: i64 = 100;
 
 /// The stripes' period, in mean edge lengths (the finest pattern the shader's octaves start from).
 pub const FIELD_PERIOD_EDGES: f64 = 16.0;
-
-/// Mean length of the faces' edges (0 for a mesh without any).
-fn mean_edge(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> f64 {
-    let sum: f64 = faces
-        .iter()
-        .map(|f| {
-            (0..3)
-                .map(|k| norm(sub(positions[f[k] as usize], positions[f[(k + 1) % 3] as usize])))
-                .sum::<f64>()
-        })
-        .sum();
-    sum / (3 * faces.len()).max(1) as f64
-}
 
 /// The stripe values of a mesh, per vertex of the mesh split at its creases: `values[v]` is psi
 /// of family a, then of family b (re, im each), and `corners[f][k]` the split vertex at corner
@@ -103,7 +90,7 @@ pub fn hatch_stripes(
     let smoothed = smooth_cancellable(&p, &f, &plan, None, cancel, None)?;
     let field = principal_line_field(&smoothed, &f, cancel)?;
     let adj = Adjacency::build(p.len(), &f)?;
-    let period = FIELD_PERIOD_EDGES * mean_edge(&p, &f);
+    let period = FIELD_PERIOD_EDGES * mean_edge_length(&p, &f);
     let period = if period.is_finite() && period > 0.0 { period } else { 1.0 };
     let across: Vec<[f64; 3]> = field
         .normals
@@ -162,8 +149,8 @@ mod tests {
             let (a, b) = (values[i], values[j]);
             ((a[2] * b[3] - a[3] * b[2]) as f64).atan2((a[2] * b[2] + a[3] * b[3]) as f64).abs()
         };
-        let want =
-            std::f64::consts::TAU * (std::f64::consts::TAU / 48.0) / (FIELD_PERIOD_EDGES * mean_edge(&v, &f));
+        let want = std::f64::consts::TAU * (std::f64::consts::TAU / 48.0)
+            / (FIELD_PERIOD_EDGES * mean_edge_length(&v, &f));
         for row in [0usize, 12, 24] {
             for k in 0..48 {
                 let i = row * 48 + k;

@@ -6,7 +6,7 @@
 // of the line is visible when its depth is at most the largest surface depth in the 3x3 pixels
 // around it plus `depth offset` pixel footprints (settings.rs), decided at the
 // nearest point of the centre line, so that the whole width of a line shows or hides together.
-// A line of a rim kind (`LineKind::on_rim`: silhouette, boundary, material border) with background
+// A line of a rim kind (`LineKind::RIM_BITS`: silhouette, boundary, material border) with background
 // among those pixels is on the rim and shows; other
 // lines are tested against the surface pixels only (a crease behind the rim stays hidden).
 // `visibility.rs` holds the same rule on the CPU.

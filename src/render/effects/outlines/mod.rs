@@ -68,7 +68,7 @@ impl FrameEffect for OutlinesEffect {
     fn block_wgsl(&self) -> String {
         let mut s = wgsl::constant_u32("INK_KINDS", INK_KINDS as u32);
         s += &wgsl::constant_u32("IMAGE_KIND", IMAGE_KIND as u32);
-        s += &wgsl::constant_u32("RIM_KINDS", LineKind::rim_bits());
+        s += &wgsl::constant_u32("RIM_KINDS", LineKind::RIM_BITS);
         s += &wgsl::constant_f32("DEPTH_EPSILON", visibility::DEPTH_EPSILON);
         s += &wgsl::constant_u32("IMAGE_RULE_PAPER", settings::ImageRule::Paper as u32);
         s + include_str!("block.wgsl")

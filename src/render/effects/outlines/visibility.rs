@@ -46,7 +46,7 @@ impl Visibility {
     /// among those pixels is on the rim and visible; other kinds are held against the surface
     /// pixels only, so a crease behind the rim stays hidden. No surface around: visible.
     pub fn visible(&self, img: &DepthImage<'_>, c: [f64; 2], z: f64, kind: usize) -> bool {
-        let rim = LineKind::rim_bits() >> kind & 1 == 1;
+        let rim = LineKind::on_rim(kind);
         let (qx, qy) = (c[0].floor() as i64, c[1].floor() as i64);
         let mut far: Option<f64> = None;
         for j in -1..=1 {
