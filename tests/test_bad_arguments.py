@@ -647,10 +647,11 @@ CASES: List[Case] = [
     Case(
         "edges.EdgeIndex.suggestive_contours",
         EDGE_INDEX.suggestive_contours,
-        dict(direction=(0.3, 0.2, -1.0), threshold=0.01),
+        dict(direction=(0.3, 0.2, -1.0), threshold=0.01, smoothing=1.0),
         [
             Param("direction", vec3("direction", ValueError), none=ValueError),
-            Param("threshold", Number(0.0, math.inf, open_hi=True)),
+            Param("threshold", Number(0.0, math.inf, open_hi=True), none=OK),
+            Param("smoothing", Number(0.0, math.inf, open_hi=True), none=OK),
         ],
     ),
     Case(
@@ -659,7 +660,16 @@ CASES: List[Case] = [
         dict(edges=EDGE_PAIRS),
         [Param("edges", SEGMENT_EDGES)],
     ),
-    Case("edges.curvature", te.curvature, _mesh(), [Param("vertices", CURVED_VERTICES), Param("faces", FACES)]),
+    Case(
+        "edges.curvature",
+        te.curvature,
+        _mesh(smoothing=1.0),
+        [
+            Param("vertices", CURVED_VERTICES),
+            Param("faces", FACES),
+            Param("smoothing", Number(0.0, math.inf, open_hi=True)),
+        ],
+    ),
     Case(
         "edges.contours",
         te.contours,
@@ -669,12 +679,13 @@ CASES: List[Case] = [
     Case(
         "edges.suggestive_contours",
         te.suggestive_contours,
-        _mesh(direction=(0.3, 0.2, -1.0), threshold=0.01, weld=True),
+        _mesh(direction=(0.3, 0.2, -1.0), threshold=0.01, smoothing=1.0, weld=True),
         [
             Param("vertices", CURVED_VERTICES),
             Param("faces", FACES),
             Param("direction", vec3("direction", ValueError), none=ValueError),
-            Param("threshold", Number(0.0, math.inf, open_hi=True)),
+            Param("threshold", Number(0.0, math.inf, open_hi=True), none=OK),
+            Param("smoothing", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("weld", Flag()),
         ],
     ),
@@ -1540,6 +1551,7 @@ RENDER_CASES: List[Case] = [
             ],
             Param("contours", Name(("auto", "faces", "smooth")), none=OK),
             Param("suggestive_threshold", Number(0.0, math.inf, open_hi=True), none=OK),
+            Param("curvature_smoothing", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("min_crease_length", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("image_rule", Name(("discontinuity", "paper")), none=OK),
             Param("normal_angle", Number(0.0, 180.0), none=OK),

@@ -334,6 +334,7 @@ class Outlines:
         depth_offset: Optional[float] = ...,
         contours: Optional[str] = ...,
         suggestive_threshold: Optional[float] = ...,
+        curvature_smoothing: Optional[float] = ...,
         min_crease_length: Optional[float] = ...,
         image_rule: Optional[str] = ...,
         normal_angle: Optional[float] = ...,
@@ -351,6 +352,7 @@ class Outlines:
     depth_offset: Final[float]
     contours: Final[str]
     suggestive_threshold: Final[float]
+    curvature_smoothing: Final[float]
     min_crease_length: Final[float]
     image_rule: Final[str]
     normal_angle: Final[float]
@@ -437,9 +439,15 @@ def _contours(
     vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
 def _suggestive_contours(
-    vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool, threshold: float
+    vertices: Any,
+    faces: Any,
+    eye: _Point,
+    direction: _Point,
+    weld: bool,
+    threshold: Optional[float],
+    smoothing: Optional[float],
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
-def _curvature(vertices: Any, faces: Any) -> Tuple[
+def _curvature(vertices: Any, faces: Any, smoothing: float) -> Tuple[
     npt.NDArray[np.float64],
     npt.NDArray[np.float64],
     npt.NDArray[np.float64],
@@ -464,7 +472,7 @@ class _EdgeIndex:
     def weld_map(self) -> Optional[npt.NDArray[np.int64]]: ...
     def contours(self, eye: _Point, direction: _Point) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
     def suggestive_contours(
-        self, eye: _Point, direction: _Point, threshold: float
+        self, eye: _Point, direction: _Point, threshold: Optional[float], smoothing: Optional[float]
     ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
     n_vertices: Final[int]
     n_faces: Final[int]

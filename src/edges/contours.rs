@@ -10,10 +10,11 @@
 //!   views, the lines artists draw on a neck or a haunch. The derivative test is cut at a
 //!   threshold relative to the mesh's feature size (so it does not depend on units).
 
-use std::sync::OnceLock;
+use std::sync::{Arc, Mutex};
 
 use rayon::prelude::*;
 
+use super::face_clusters::{FaceClusters, Sides};
 use super::silhouette::View;
 use super::zero_set::{zero_set, Polylines};
 use crate::cancel::Cancel;
@@ -26,21 +27,65 @@ use crate::mesh::Bounds;
 use crate::real::{dot, sub, Real, Vec3};
 
 /// A mesh prepared for contours, once: its positions in f64, its faces (welded when asked, so
-/// that seams do not cut the lines), its shading normals, and its curvature once a view asks
-/// for suggestive contours.
+/// that seams do not cut the lines), its shading normals, and what suggestive contours are
+/// traced on once a view asks for them (kept for the last smoothing asked).
 pub struct ContourMesh {
     positions: Vec<[f64; 3]>,
-    faces: Vec<[u32; 3]>,
+    /// The faces in clusters, so that a view visits only those near its contours.
+    clusters: FaceClusters,
     normals: Vec<[f64; 3]>,
-    curvature: OnceLock<(Curvature, f64)>,
+    suggestive: Mutex<Option<(u64, Arc<SuggestiveBasis>)>>,
+}
+
+/// What suggestive contours are traced on, per mesh and smoothing: the curvature, the feature
+/// size, and the faces where some view can find kr = 0, renumbered over their own vertices.
+/// Elsewhere kr keeps its sign in every view: kr = k1 cos^2 + k2 sin^2 of the angle to d1 (up
+/// to the factor sin^2 of the view to the normal), so kr > 0 needs k1 > 0 at a vertex and
+/// kr <= 0 needs k2 <= 0, and a face without both has no zero crossing. On a convex shape no
+/// face is left, and on a scan only its saddles are visited per view.
+pub struct SuggestiveBasis {
+    pub curvature: Curvature,
+    pub feature_size: f64,
+    /// The vertices of the faces kept (mesh numbering), their positions, and the faces in their
+    /// numbering, in clusters bounding the curvature's normals (a view visits the clusters
+    /// that face it).
+    vertices: Vec<u32>,
+    positions: Vec<[f64; 3]>,
+    clusters: FaceClusters,
+}
+
+impl SuggestiveBasis {
+    fn build(positions: &[[f64; 3]], faces: &[[u32; 3]], curvature: Curvature) -> SuggestiveBasis {
+        let feature_size = feature_size(positions, &curvature);
+        let crossable = |f: &[u32; 3]| {
+            f.iter().any(|&v| curvature.k1[v as usize] > 0.0)
+                && f.iter().any(|&v| curvature.k2[v as usize] <= 0.0)
+        };
+        let kept: Vec<[u32; 3]> = faces.par_iter().filter(|f| crossable(f)).copied().collect();
+        let mut vertices: Vec<u32> = kept.iter().flatten().copied().collect();
+        vertices.par_sort_unstable();
+        vertices.dedup();
+        let local = |v: u32| vertices.binary_search(&v).expect("a kept face's vertex") as u32;
+        let faces: Vec<[u32; 3]> = kept.par_iter().map(|f| f.map(local)).collect();
+        let positions: Vec<[f64; 3]> = vertices.iter().map(|&v| positions[v as usize]).collect();
+        let normals: Vec<[f64; 3]> = vertices.iter().map(|&v| curvature.normals[v as usize]).collect();
+        let clusters = FaceClusters::build(&positions, &normals, &faces);
+        SuggestiveBasis { curvature, feature_size, vertices, positions, clusters }
+    }
+
+    /// Faces where some view can find a suggestive contour.
+    pub fn n_faces(&self) -> usize {
+        self.clusters.faces.len()
+    }
 }
 
 impl ContourMesh {
     pub fn build<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], weld: bool) -> ContourMesh {
         let faces = if weld { weld_faces(faces, &weld_map(positions)) } else { faces.to_vec() };
         let normals = vertex_normals(positions, &faces);
-        let positions = positions.par_iter().map(|p| p.map(|x| x.to_f64())).collect();
-        ContourMesh { positions, faces, normals, curvature: OnceLock::new() }
+        let positions: Vec<[f64; 3]> = positions.par_iter().map(|p| p.map(|x| x.to_f64())).collect();
+        let clusters = FaceClusters::build(&positions, &normals, &faces);
+        ContourMesh { positions, clusters, normals, suggestive: Mutex::new(None) }
     }
 
     /// A mesh whose smooth contours stop at hard edges: vertices split into their fans at the
@@ -55,35 +100,63 @@ impl ContourMesh {
     ) -> Result<ContourMesh> {
         let faces = if weld { weld_faces(faces, &weld_map(positions)) } else { faces.to_vec() };
         let split = split_normals(positions, &faces, &ListedEdges(hard))?;
-        let positions = split.source.par_iter().map(|&s| positions[s as usize].map(|x| x.to_f64())).collect();
-        Ok(ContourMesh { positions, faces: split.faces, normals: split.normals, curvature: OnceLock::new() })
+        let positions: Vec<[f64; 3]> =
+            split.source.par_iter().map(|&s| positions[s as usize].map(|x| x.to_f64())).collect();
+        let clusters = FaceClusters::build(&positions, &split.normals, &split.faces);
+        Ok(ContourMesh { positions, clusters, normals: split.normals, suggestive: Mutex::new(None) })
     }
 
     /// Smooth contours of one view.
     pub fn smooth(&self, view: View) -> Polylines {
-        smooth_contours(&self.positions, &self.faces, &self.normals, view)
+        smooth_contours(&self.positions, &self.clusters, &self.normals, view)
     }
 
-    /// The mesh's curvature and feature size, computed on first use.
-    pub fn curvature(&self, cancel: &Cancel) -> Result<&(Curvature, f64)> {
-        if let Some(c) = self.curvature.get() {
-            return Ok(c);
+    /// The curvature at `smoothing` (`mesh::curvature`) and what goes with it, computed when
+    /// first asked at that smoothing.
+    pub fn suggestive_basis(&self, smoothing: f64, cancel: &Cancel) -> Result<Arc<SuggestiveBasis>> {
+        let key = smoothing.to_bits();
+        if let Some((k, b)) = &*self.suggestive.lock().unwrap_or_else(|e| e.into_inner()) {
+            if *k == key {
+                return Ok(b.clone());
+            }
         }
-        let c = curvature(&self.positions, &self.faces, cancel)?;
-        let size = feature_size(&self.positions, &c);
-        Ok(self.curvature.get_or_init(|| (c, size)))
+        let c = curvature(&self.positions, &self.clusters.faces, smoothing, cancel)?;
+        let basis = Arc::new(SuggestiveBasis::build(&self.positions, &self.clusters.faces, c));
+        *self.suggestive.lock().unwrap_or_else(|e| e.into_inner()) = Some((key, basis.clone()));
+        Ok(basis)
     }
 
-    /// Suggestive contours of one view; `threshold` relative to the feature size squared.
-    pub fn suggestive(&self, view: View, threshold: f64, cancel: &Cancel) -> Result<Polylines> {
-        let (c, size) = self.curvature(cancel)?;
-        Ok(suggestive_contours(&self.positions, &self.faces, c, view, threshold, *size))
+    /// Suggestive contours of one view; `threshold` relative to the feature size squared,
+    /// `smoothing` the curvature's in mean edge lengths.
+    pub fn suggestive(
+        &self,
+        view: View,
+        threshold: f64,
+        smoothing: f64,
+        cancel: &Cancel,
+    ) -> Result<Polylines> {
+        let basis = self.suggestive_basis(smoothing, cancel)?;
+        Ok(suggestive_contours(&basis, view, threshold))
     }
 }
 
 /// The derivative threshold of suggestive contours, relative to the feature size squared, when
 /// none is given (DeCarlo et al.'s implementation uses the same).
 pub const DEFAULT_SUGGESTIVE_THRESHOLD: f64 = 0.01;
+
+/// The width the curvature of suggestive contours is measured at when none is given, in mean
+/// edge lengths (`mesh::diffuse`): wide enough that a scan's noise does not draw, narrow
+/// enough that a clean mesh's lines stay where they are.
+pub const DEFAULT_CURVATURE_SMOOTHING: f64 = 2.0;
+
+/// Checks a curvature smoothing width: a finite number >= 0 of mean edge lengths.
+pub fn check_smoothing(arg: &str, s: f64) -> Result<f64> {
+    if s.is_finite() && s >= 0.0 {
+        Ok(s)
+    } else {
+        Err(Error::invalid(arg, format!("must be a finite number of mean edge lengths >= 0, got {s}")))
+    }
+}
 
 /// Checks a suggestive-contour threshold: a finite number >= 0.
 pub fn check_threshold(arg: &str, t: f64) -> Result<f64> {
@@ -108,17 +181,17 @@ fn to_viewer(view: View, p: [f64; 3]) -> [f64; 3] {
     }
 }
 
-/// Smooth contours of one view: the zero set of n . v over `faces`, with `normals` the vertex
-/// normals the surface is shaded with.
+/// Smooth contours of one view: the zero set of n . v over the faces, with `normals` the vertex
+/// normals the surface is shaded with, visiting only the clusters where n . v may change sign.
 pub fn smooth_contours(
     positions: &[[f64; 3]],
-    faces: &[[u32; 3]],
+    clusters: &FaceClusters,
     normals: &[[f64; 3]],
     view: View,
 ) -> Polylines {
-    let ndotv: Vec<f64> =
-        positions.par_iter().zip(normals.par_iter()).map(|(p, n)| dot(*n, to_viewer(view, *p))).collect();
-    zero_set(positions, faces, &ndotv, &[])
+    let faces = clusters.select(view, |s| s == Sides::Both);
+    let ndotv = |v: u32| dot(normals[v as usize], to_viewer(view, positions[v as usize]));
+    zero_set(positions, &faces, ndotv, |_| [])
 }
 
 /// The feature size of a curved mesh (DeCarlo et al.'s rule): 1% of the reciprocal of the 10th
@@ -142,40 +215,41 @@ pub fn feature_size(positions: &[[f64; 3]], c: &Curvature) -> f64 {
 }
 
 /// Suggestive contours of one view from the mesh's curvature (its normals and principal
-/// frame): the zero set of kr where D_w kr / |w| > threshold / feature_size^2 and n . v > 0.
-pub fn suggestive_contours(
-    positions: &[[f64; 3]],
-    faces: &[[u32; 3]],
-    c: &Curvature,
-    view: View,
-    threshold: f64,
-    feature_size: f64,
-) -> Polylines {
-    let cutoff = threshold / (feature_size * feature_size);
-    let per_vertex: Vec<(f64, f64, f64)> = (0..positions.len())
-        .into_par_iter()
-        .map(|i| {
-            let v = to_viewer(view, positions[i]);
-            let ndotv = dot(c.normals[i], v);
-            let (u, w) = (dot(v, c.d1[i]), dot(v, c.d2[i]));
-            let (u2, w2) = (u * u, w * w);
-            let sin2 = u2 + w2;
-            // kr sin^2(theta): the same zero set as kr where the view is not along the normal
-            let kr = c.k1[i] * u2 + c.k2[i] * w2;
-            if !(sin2 > 1e-12) {
-                return (kr, -1.0, ndotv);
-            }
-            let [c0, c1, c2, c3] = c.derivatives[i];
-            // D_w kr sin(theta) / cos(theta): the third-order term C(w, w, w) and the term of the
-            // principal frame's turning (the torsion along w)
-            let cw = u2 * (u * c0 + 3.0 * w * c1) + w2 * (3.0 * u * c2 + w * c3);
-            let torsion = (c.k2[i] - c.k1[i]) * u * w / sin2;
-            let num = cw / sin2 - 2.0 * ndotv * torsion * torsion;
-            (kr, num - cutoff * ndotv, ndotv)
-        })
-        .collect();
-    let kr: Vec<f64> = per_vertex.iter().map(|x| x.0).collect();
-    let test: Vec<f64> = per_vertex.iter().map(|x| x.1).collect();
-    let ndotv: Vec<f64> = per_vertex.iter().map(|x| x.2).collect();
-    zero_set(positions, faces, &kr, &[&test, &ndotv])
+/// frame): the zero set of kr where D_w kr / |w| > threshold / feature_size^2 and n . v > 0,
+/// over the faces where some view finds kr = 0.
+pub fn suggestive_contours(basis: &SuggestiveBasis, view: View, threshold: f64) -> Polylines {
+    let c = &basis.curvature;
+    let cutoff = threshold / (basis.feature_size * basis.feature_size);
+    // per vertex (local numbering): (kr sin^2, the derivative test, n . v)
+    let fields = |local: u32| {
+        let i = basis.vertices[local as usize] as usize;
+        let v = to_viewer(view, basis.positions[local as usize]);
+        let ndotv = dot(c.normals[i], v);
+        let (u, w) = (dot(v, c.d1[i]), dot(v, c.d2[i]));
+        let (u2, w2) = (u * u, w * w);
+        let sin2 = u2 + w2;
+        // kr sin^2(theta): the same zero set as kr where the view is not along the normal
+        let kr = c.k1[i] * u2 + c.k2[i] * w2;
+        if !(sin2 > 1e-12) {
+            return [kr, -1.0, ndotv];
+        }
+        let [c0, c1, c2, c3] = c.derivatives[i];
+        // D_w kr sin(theta) / cos(theta): the third-order term C(w, w, w) and the term of the
+        // principal frame's turning (the torsion along w)
+        let cw = u2 * (u * c0 + 3.0 * w * c1) + w2 * (3.0 * u * c2 + w * c3);
+        let torsion = (c.k2[i] - c.k1[i]) * u * w / sin2;
+        let num = cw / sin2 - 2.0 * ndotv * torsion * torsion;
+        [kr, num - cutoff * ndotv, ndotv]
+    };
+    // a cluster that faces away fails the n . v > 0 condition everywhere
+    let faces = basis.clusters.select(view, |s| s != Sides::Back);
+    zero_set(
+        &basis.positions,
+        &faces,
+        |v| fields(v)[0],
+        |v| {
+            let [_, test, ndotv] = fields(v);
+            [test, ndotv]
+        },
+    )
 }

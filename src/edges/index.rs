@@ -6,7 +6,7 @@ use rayon::prelude::*;
 
 use super::face_normals;
 use super::feature::{crease_pair, feature_edges, FeatureEdges, PREFETCH_AHEAD};
-use super::silhouette::{facing, View, BACK, FRONT};
+use super::silhouette::{face_side, facing, View, BACK, FRONT};
 use crate::error::Result;
 use crate::mesh::weld::{weld_faces, weld_map};
 use crate::mesh::EdgeTable;
@@ -164,6 +164,28 @@ impl EdgeIndex {
     }
 }
 
+impl EdgeIndex {
+    /// The silhouette edges among `edges` (edges of the mesh, sorted) for one view, by the rule
+    /// of `silhouette`, facing only their faces: for a few edges (the creases a smooth contour
+    /// stops at) without a pass over every face.
+    pub fn silhouette_among(&self, view: View, edges: &[[u32; 2]]) -> Result<Vec<[u32; 2]>> {
+        let view = view.check()?;
+        Ok(edges
+            .par_iter()
+            .filter(|e| {
+                let Ok(id) = self.table.edges.binary_search(e) else { return false };
+                let mut seen = [false; 3];
+                for u in self.table.uses(id) {
+                    let f = u.face as usize;
+                    seen[face_side(&self.normals[f], self.offsets[f], view) as usize] = true;
+                }
+                seen[FRONT as usize] && seen[BACK as usize]
+            })
+            .copied()
+            .collect())
+    }
+}
+
 fn merge_sorted(a: &[[u32; 2]], b: &[[u32; 2]]) -> Vec<[u32; 2]> {
     let mut out = Vec::with_capacity(a.len() + b.len());
     let (mut i, mut j) = (0, 0);
@@ -203,6 +225,12 @@ mod tests {
         let o = idx.silhouette(View::Direction([0.0, 0.0, -1.0])).unwrap();
         assert!(!o.is_empty());
         assert!(idx.silhouette(View::Direction([0.0; 3])).is_err());
+        // among a subset of the edges: the same rule, on those edges only
+        let some: Vec<[u32; 2]> = idx.table.edges.iter().step_by(3).copied().collect();
+        let among = idx.silhouette_among(View::Eye([0.0, 0.0, 5.0]), &some).unwrap();
+        let expected: Vec<[u32; 2]> = s.iter().filter(|e| some.binary_search(e).is_ok()).copied().collect();
+        assert!(!expected.is_empty());
+        assert_eq!(among, expected);
     }
 
     #[test]

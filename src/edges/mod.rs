@@ -4,6 +4,7 @@
 pub mod chains;
 pub mod contours;
 pub mod detect;
+pub mod face_clusters;
 pub mod feature;
 pub mod index;
 pub mod outlines;

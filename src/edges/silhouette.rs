@@ -39,6 +39,25 @@ pub const BACK: u8 = 0;
 pub const FRONT: u8 = 1;
 pub const NO_NORMAL: u8 = 2;
 
+/// Which side of a face (unit normal `n`, zero when degenerate, plane offset `d` = n . p) the
+/// viewer is on: FRONT, BACK or NO_NORMAL.
+#[inline]
+pub fn face_side(n: &[f64; 3], d: f64, view: View) -> u8 {
+    // n . V with V = p - eye equals d - n . eye.
+    let toward = match view {
+        View::Eye(e) => d - (n[0] * e[0] + n[1] * e[1] + n[2] * e[2]),
+        View::Direction(v) => n[0] * v[0] + n[1] * v[1] + n[2] * v[2],
+    };
+    let defined = n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
+    if !defined {
+        NO_NORMAL
+    } else if toward < 0.0 {
+        FRONT
+    } else {
+        BACK
+    }
+}
+
 /// Per face: FRONT, BACK or NO_NORMAL, given unit normals (zero when degenerate) and each face's
 /// plane offset n . p.
 pub fn facing(normals: &[[f64; 3]], offsets: &[f64], view: View) -> Vec<u8> {
@@ -46,19 +65,7 @@ pub fn facing(normals: &[[f64; 3]], offsets: &[f64], view: View) -> Vec<u8> {
     out.par_chunks_mut(16384).zip(normals.par_chunks(16384).zip(offsets.par_chunks(16384))).for_each(
         |(o, (n, d))| {
             for ((o, n), &d) in o.iter_mut().zip(n).zip(d) {
-                // n . V with V = p - eye equals d - n . eye.
-                let toward = match view {
-                    View::Eye(e) => d - (n[0] * e[0] + n[1] * e[1] + n[2] * e[2]),
-                    View::Direction(v) => n[0] * v[0] + n[1] * v[1] + n[2] * v[2],
-                };
-                let defined = n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
-                *o = if !defined {
-                    NO_NORMAL
-                } else if toward < 0.0 {
-                    FRONT
-                } else {
-                    BACK
-                };
+                *o = face_side(n, d, view);
             }
         },
     );

@@ -49,63 +49,72 @@ fn lerp(a: [f64; 3], b: [f64; 3], t: f64) -> [f64; 3] {
     [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])]
 }
 
-/// The zero set of `value` over the faces, kept where every field of `conditions` is > 0.
-pub fn zero_set(
+/// The zero set of `value` (a field given per vertex) over `faces` (any number of slices of
+/// them), kept where every field of `conditions` is > 0. The fields are read through functions
+/// of the vertex, so a caller computes them only for the faces it visits; each must give a
+/// vertex the same number whichever face asks.
+pub fn zero_set<const K: usize>(
     positions: &[[f64; 3]],
-    faces: &[[u32; 3]],
-    value: &[f64],
-    conditions: &[&[f64]],
+    faces: &[&[[u32; 3]]],
+    value: impl Fn(u32) -> f64 + Sync,
+    conditions: impl Fn(u32) -> [f64; K] + Sync,
 ) -> Polylines {
-    let pieces: Vec<[End; 2]> =
-        faces.par_iter().filter_map(|f| face_piece(positions, f, value, conditions)).collect();
+    let pieces: Vec<[End; 2]> = faces
+        .par_iter()
+        .flat_map_iter(|chunk| chunk.iter().filter_map(|f| face_piece(positions, f, &value, &conditions)))
+        .collect();
     chain_pieces(&pieces)
 }
 
 /// The piece of the zero set in one face, if any.
-fn face_piece(
+fn face_piece<const K: usize>(
     positions: &[[f64; 3]],
     f: &[u32; 3],
-    value: &[f64],
-    conditions: &[&[f64]],
+    value: &impl Fn(u32) -> f64,
+    conditions: &impl Fn(u32) -> [f64; K],
 ) -> Option<[End; 2]> {
-    let positive = f.map(|v| value[v as usize] > 0.0);
+    let values = f.map(value);
+    let positive = values.map(|x| x > 0.0);
     if positive[0] == positive[1] && positive[1] == positive[2] {
         return None;
     }
-    // the two edges whose ends differ in sign, each from its smaller index
-    let mut ends = [(0u32, 0u32, 0.0f64); 2];
+    // the two edges whose ends differ in sign, each from its smaller index: (corner of the
+    // smaller end, corner of the larger, t)
+    let mut ends = [(0usize, 0usize, 0.0f64); 2];
     let mut n = 0;
     for j in 0..3 {
-        let (a, b) = (f[j], f[(j + 1) % 3]);
-        if positive[j] != positive[(j + 1) % 3] {
-            let (lo, hi) = (a.min(b), a.max(b));
-            let (vl, vh) = (value[lo as usize], value[hi as usize]);
+        let k = (j + 1) % 3;
+        if positive[j] != positive[k] {
+            let (lo, hi) = if f[j] < f[k] { (j, k) } else { (k, j) };
+            let (vl, vh) = (values[lo], values[hi]);
             let t = vl / (vl - vh);
             ends[n] = (lo, hi, if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.5 });
             n += 1;
         }
     }
     debug_assert_eq!(n, 2);
-    let at = |(lo, hi, t): (u32, u32, f64), field: &[f64]| {
-        field[lo as usize] + t * (field[hi as usize] - field[lo as usize])
-    };
     // the part of the piece (u in [0, 1] from end 0 to end 1) where every condition is > 0
     let (mut u0, mut u1) = (0.0f64, 1.0f64);
-    for c in conditions {
-        let (c0, c1) = (at(ends[0], c), at(ends[1], c));
-        match (c0 > 0.0, c1 > 0.0) {
-            (true, true) => {}
-            (false, false) => return None,
-            (true, false) => u1 = u1.min(c0 / (c0 - c1)),
-            (false, true) => u0 = u0.max(c0 / (c0 - c1)),
+    if K > 0 {
+        let c = f.map(conditions);
+        let at = |(lo, hi, t): (usize, usize, f64), k: usize| c[lo][k] + t * (c[hi][k] - c[lo][k]);
+        for k in 0..K {
+            let (c0, c1) = (at(ends[0], k), at(ends[1], k));
+            match (c0 > 0.0, c1 > 0.0) {
+                (true, true) => {}
+                (false, false) => return None,
+                (true, false) => u1 = u1.min(c0 / (c0 - c1)),
+                (false, true) => u0 = u0.max(c0 / (c0 - c1)),
+            }
         }
     }
     if !(u1 > u0) {
         return None;
     }
-    let point = |(lo, hi, t): (u32, u32, f64)| lerp(positions[lo as usize], positions[hi as usize], t);
+    let point =
+        |(lo, hi, t): (usize, usize, f64)| lerp(positions[f[lo] as usize], positions[f[hi] as usize], t);
     let (p0, p1) = (point(ends[0]), point(ends[1]));
-    let key = |(lo, hi, _): (u32, u32, f64)| (lo as u64) << 32 | hi as u64;
+    let key = |(lo, hi, _): (usize, usize, f64)| (f[lo] as u64) << 32 | f[hi] as u64;
     let a = if u0 > 0.0 {
         End { key: None, p: lerp(p0, p1, u0) }
     } else {
@@ -163,12 +172,13 @@ mod tests {
             }
         }
         let value: Vec<f64> = positions.iter().map(|p| p[0] - 1.5).collect();
-        let lines = zero_set(&positions, &faces, &value, &[]);
+        let lines = zero_set(&positions, &[&faces], |v| value[v as usize], |_| []);
         assert_eq!(lines.len(), 1);
         assert!(lines.points.iter().all(|p| (p[0] - 1.5).abs() < 1e-12));
         // cut to y > 1.2 by a condition
         let cond: Vec<f64> = positions.iter().map(|p| p[1] - 1.2).collect();
-        let cut = zero_set(&positions, &faces, &value, &[&cond]);
+        let cut =
+            zero_set(&positions, &[&faces[..4], &faces[4..]], |v| value[v as usize], |v| [cond[v as usize]]);
         assert_eq!(cut.len(), 1);
         assert!(cut.points.iter().all(|p| p[1] >= 1.2 - 1e-12));
         assert!(cut.points.iter().any(|p| (p[1] - 1.2).abs() < 1e-12));

@@ -23,6 +23,8 @@ use rayon::prelude::*;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::mesh::buckets::{Buckets, RingCorner};
+use crate::mesh::diffuse::Patches;
+use crate::mesh::edge_length::mean_edge_length;
 use crate::mesh::normals::DEGENERATE_RELATIVE_AREA;
 use crate::mesh::Bounds;
 use crate::real::{Real, Vec3};
@@ -188,8 +190,18 @@ fn any_tangent(n: DVec3) -> DVec3 {
     n.cross(axis).normalize()
 }
 
-/// Curvature per vertex; see the module comment. `faces` are checked indices.
-pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Cancel) -> Result<Curvature> {
+/// Curvature per vertex; see the module comment. `faces` are checked indices. `smoothing` > 0
+/// measures it at that feature size instead of the one-ring's: the normals, then the tensors
+/// are averaged over patches a bell `smoothing` mean edge lengths wide (`mesh::diffuse`) before
+/// the next is fitted from them. The derivatives, fitted from the smoothed tensors, are not
+/// averaged again: on the Stanford bunny that pass costs as much as the other two together
+/// and changes its suggestive contours little (24 lines against 25).
+pub fn curvature<T: Real>(
+    positions: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    smoothing: f64,
+    cancel: &Cancel,
+) -> Result<Curvature> {
     let n_vertices = positions.len();
     let p = normalized_positions(positions);
     let scale = p.1;
@@ -199,6 +211,30 @@ pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Ca
     cancel.check()?;
     let normals = vertex_normals(n_vertices, faces, &corners);
     let ring = Buckets::<RingCorner>::corners_with_ids(n_vertices, faces)?;
+    let areas: Vec<f64> = (0..n_vertices)
+        .into_par_iter()
+        .map(|v| {
+            ring.at(v).iter().map(|&[_, _, id]| frames[id as usize / 3].corner_area[id as usize % 3]).sum()
+        })
+        .collect();
+    let patches = (smoothing > 0.0).then(|| {
+        let arrays: Vec<[f64; 3]> = p.iter().map(|q| q.to_array()).collect();
+        let sigma = smoothing * mean_edge_length(&arrays, faces);
+        Patches { positions: &p, normals: &normals, areas: &areas, ring: &ring, sigma }
+    });
+    let smoothed_normals;
+    let normals: &[DVec3] = match &patches {
+        Some(patches) => {
+            let mean = patches.average(|_, u| normals[u].to_array(), cancel)?;
+            smoothed_normals = mean
+                .iter()
+                .zip(normals.iter())
+                .map(|(m, &raw)| DVec3::from(*m).try_normalize().unwrap_or(raw))
+                .collect::<Vec<_>>();
+            &smoothed_normals
+        }
+        None => &normals,
+    };
 
     // Each face's second fundamental form in its own frame, from the normals' change along
     // each edge.
@@ -219,19 +255,40 @@ pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Ca
         .collect();
     cancel.check()?;
 
-    // Each vertex: the area-weighted mean of its faces' tensors in its tangent plane,
-    // diagonalised.
+    // Each vertex: the area-weighted mean of its faces' tensors in its tangent plane (then, when
+    // smoothing, averaged over its patch), diagonalised.
+    let frames_v: Vec<(DVec3, DVec3)> = normals
+        .par_iter()
+        .map(|&n| {
+            let u0 = any_tangent(n);
+            (u0, n.cross(u0))
+        })
+        .collect();
+    let frame = |v: usize| frames_v[v];
+    let tensors: Vec<[f64; 3]> = (0..n_vertices)
+        .into_par_iter()
+        .map(|v| {
+            let (u0, v0) = frame(v);
+            corner_mean(ring.at(v), &frames, |face, fr| project_tensor(fr.t, fr.b, face_ii[face], u0, v0))
+                .unwrap_or([0.0; 3])
+        })
+        .collect();
+    cancel.check()?;
+    let tensors = match &patches {
+        Some(patches) => patches.average(
+            |at, from| {
+                let ((u, v), (nu, nv)) = (frame(from), frame(at));
+                project_tensor(u, v, tensors[from], nu, nv)
+            },
+            cancel,
+        )?,
+        None => tensors,
+    };
     let principal: Vec<(f64, f64, DVec3, DVec3)> = (0..n_vertices)
         .into_par_iter()
         .map(|v| {
-            let n = normals[v];
-            let u0 = any_tangent(n);
-            let v0 = n.cross(u0);
-            let k = corner_mean(ring.at(v), &frames, |face, fr| {
-                project_tensor(fr.t, fr.b, face_ii[face], u0, v0)
-            })
-            .unwrap_or([0.0; 3]);
-            diagonalize(u0, v0, k)
+            let (u0, v0) = frame(v);
+            diagonalize(u0, v0, tensors[v])
         })
         .collect();
     cancel.check()?;
@@ -265,13 +322,14 @@ pub fn curvature<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]], cancel: &Ca
         .into_par_iter()
         .map(|v| {
             let (_, _, d1, d2) = principal[v];
-            let s = scale * scale;
             corner_mean(ring.at(v), &frames, |face, fr| {
                 project_derivative(fr.t, fr.b, face_dii[face], d1, d2)
             })
-            .map_or([0.0; 4], |c| c.map(|x| x / s))
+            .unwrap_or([0.0; 4])
         })
         .collect();
+    let s = scale * scale;
+    let derivatives: Vec<[f64; 4]> = derivatives.into_iter().map(|c| c.map(|x| x / s)).collect();
 
     // in the normalised coordinates every value is finite; only the scale can push them out of
     // range (a mesh below about 1e-154 units across, whose derivatives exceed f64)
@@ -395,7 +453,7 @@ mod tests {
         let (v, f) = icosphere(4, 0.0, 0).unwrap();
         for r in [1e-3, 1.0, 250.0] {
             let vs: Vec<[f64; 3]> = v.iter().map(|p| p.map(|x| x * r)).collect();
-            let c = curvature(&vs, &f, Cancel::never()).unwrap();
+            let c = curvature(&vs, &f, 0.0, Cancel::never()).unwrap();
             let rel1 = median(c.k1.iter().map(|k| (k * r - 1.0).abs()).collect());
             let rel2 = median(c.k2.iter().map(|k| (k * r - 1.0).abs()).collect());
             assert!(rel1 < 0.02 && rel2 < 0.02, "r {r}: {rel1} {rel2}");
@@ -411,10 +469,41 @@ mod tests {
     fn degenerate_and_lonely_vertices_are_finite() {
         let v = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 1.0, 0.0], [5.0, 5.0, 5.0]];
         let f = vec![[0, 1, 2], [0, 1, 3], [0, 0, 3]];
-        let c = curvature(&v, &f, Cancel::never()).unwrap();
+        let c = curvature(&v, &f, 0.0, Cancel::never()).unwrap();
         assert!(c.k1.iter().chain(&c.k2).all(|k| k.is_finite()));
         assert!(c.d1.iter().chain(&c.d2).flatten().all(|x| x.is_finite()));
         assert!(c.derivatives.iter().flatten().all(|x| x.is_finite()));
         assert_eq!(c.k1[4], 0.0);
+    }
+
+    #[test]
+    fn smoothing_finds_the_shape_under_noise_and_keeps_a_clean_one() {
+        // noise of a fifth of an edge along the normals: the one-ring estimate scatters
+        let (v, f) = icosphere(5, 0.01, 3).unwrap();
+        let spread = |c: &Curvature| median(c.k1.iter().chain(&c.k2).map(|k| (k - 1.0).abs()).collect());
+        let raw = curvature(&v, &f, 0.0, Cancel::never()).unwrap();
+        let smooth = curvature(&v, &f, 2.0, Cancel::never()).unwrap();
+        assert!(spread(&smooth) < 0.25 * spread(&raw), "{} against {}", spread(&smooth), spread(&raw));
+        // no saddles left to draw suggestive contours on
+        let saddles = |c: &Curvature| c.k2.iter().filter(|&&k| k <= 0.0).count();
+        assert!(
+            saddles(&smooth) * 20 < saddles(&raw).max(1),
+            "{} against {}",
+            saddles(&smooth),
+            saddles(&raw)
+        );
+        // a clean sphere stays at 1/r, at any scale
+        let (v, f) = icosphere(4, 0.0, 0).unwrap();
+        for r in [1e-3, 250.0] {
+            let vs: Vec<[f64; 3]> = v.iter().map(|p| p.map(|x| x * r)).collect();
+            let c = curvature(&vs, &f, 2.0, Cancel::never()).unwrap();
+            assert!(
+                spread(&Curvature {
+                    k1: c.k1.iter().map(|k| k * r).collect(),
+                    k2: c.k2.iter().map(|k| k * r).collect(),
+                    ..c
+                }) < 0.02
+            );
+        }
     }
 }

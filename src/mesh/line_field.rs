@@ -77,7 +77,7 @@ pub fn principal_line_field(
     faces: &[[u32; 3]],
     cancel: &Cancel,
 ) -> Result<LineField> {
-    let c = curvature(positions, faces, cancel)?;
+    let c = curvature(positions, faces, 0.0, cancel)?;
     let adj = Adjacency::build(positions.len(), faces)?;
     let size = Bounds::of(positions).diagonal().max(1e-300);
     let normals = c.normals.clone();

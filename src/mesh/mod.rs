@@ -7,6 +7,7 @@ pub mod bounds;
 pub mod buckets;
 pub mod crease_normals;
 pub mod curvature;
+pub mod diffuse;
 pub mod dihedral;
 pub mod edge_length;
 pub mod edge_table;

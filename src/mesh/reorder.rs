@@ -87,6 +87,11 @@ impl Reordering {
         Reordering { order, inverse }
     }
 
+    /// New index -> old index.
+    pub fn order(&self) -> &[u32] {
+        &self.order
+    }
+
     pub fn positions<T: Real>(&self, x: &[Vec3<T>]) -> Vec<Vec3<T>> {
         self.order.par_iter().map(|&o| x[o as usize]).collect()
     }

@@ -16,7 +16,9 @@ use super::errors::to_py;
 use super::mesh_input::{on_positions, MeshInput, PositionsRef};
 use super::runtime::{detached, detached_cancellable};
 use crate::edges::chains::chain_edges;
-use crate::edges::contours::ContourMesh;
+use crate::edges::contours::{
+    check_smoothing, check_threshold, ContourMesh, DEFAULT_CURVATURE_SMOOTHING, DEFAULT_SUGGESTIVE_THRESHOLD,
+};
 use crate::edges::detect::{paper_gradient, threshold_mask};
 use crate::edges::feature::FeatureEdges;
 use crate::edges::outlines::Statics;
@@ -128,13 +130,17 @@ fn rows_to_numpy<const K: usize>(py: Python<'_>, rows: Vec<[f64; K]>) -> Bound<'
 }
 
 #[pyfunction]
+#[pyo3(signature = (vertices, faces, smoothing))]
 fn _curvature<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
+    smoothing: &Bound<'py, PyAny>,
 ) -> PyResult<CurvatureOut<'py>> {
+    let smoothing =
+        args::number("smoothing", smoothing).and_then(|s| check_smoothing("smoothing", s)).map_err(to_py)?;
     let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
-    let c = mesh.run(py, faces, |p, f, cancel| on_positions!(p, v => curvature(v, f, cancel)))?;
+    let c = mesh.run(py, faces, |p, f, cancel| on_positions!(p, v => curvature(v, f, smoothing, cancel)))?;
     Ok((
         vec_to_numpy(py, c.k1),
         vec_to_numpy(py, c.k2),
@@ -193,13 +199,26 @@ fn _contours<'py>(
     view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, _| Ok(m.smooth(view)))
 }
 
-/// A suggestive-contour threshold argument.
-fn read_threshold(obj: &Bound<'_, PyAny>) -> Result<f64> {
-    args::number("threshold", obj).and_then(|t| crate::edges::contours::check_threshold("threshold", t))
+/// The suggestive-contour arguments, threshold and curvature smoothing; None takes the
+/// default.
+fn read_suggestive(threshold: &Bound<'_, PyAny>, smoothing: &Bound<'_, PyAny>) -> Result<(f64, f64)> {
+    let number = |arg: &str, obj: &Bound<'_, PyAny>, default: f64| {
+        if obj.is_none() {
+            Ok(default)
+        } else {
+            args::number(arg, obj)
+        }
+    };
+    let threshold =
+        check_threshold("threshold", number("threshold", threshold, DEFAULT_SUGGESTIVE_THRESHOLD)?)?;
+    let smoothing =
+        check_smoothing("smoothing", number("smoothing", smoothing, DEFAULT_CURVATURE_SMOOTHING)?)?;
+    Ok((threshold, smoothing))
 }
 
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, eye, direction, weld, threshold))]
+#[pyo3(signature = (vertices, faces, eye, direction, weld, threshold, smoothing))]
+#[allow(clippy::too_many_arguments)]
 fn _suggestive_contours<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
@@ -208,10 +227,11 @@ fn _suggestive_contours<'py>(
     direction: Option<&Bound<'py, PyAny>>,
     weld: &Bound<'py, PyAny>,
     threshold: &Bound<'py, PyAny>,
+    smoothing: &Bound<'py, PyAny>,
 ) -> PyResult<PolylinesOut<'py>> {
-    let threshold = read_threshold(threshold).map_err(to_py)?;
+    let (threshold, smoothing) = read_suggestive(threshold, smoothing).map_err(to_py)?;
     view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, cancel| {
-        m.suggestive(view, threshold, cancel)
+        m.suggestive(view, threshold, smoothing, cancel)
     })
 }
 
@@ -266,18 +286,20 @@ impl PyEdgeIndex {
     }
 
     /// Suggestive contours of one view (the curvature is computed on the first call and kept).
-    #[pyo3(signature = (eye, direction, threshold))]
+    #[pyo3(signature = (eye, direction, threshold, smoothing))]
     fn suggestive_contours<'py>(
         &self,
         py: Python<'py>,
         eye: Option<&Bound<'py, PyAny>>,
         direction: Option<&Bound<'py, PyAny>>,
         threshold: &Bound<'py, PyAny>,
+        smoothing: &Bound<'py, PyAny>,
     ) -> PyResult<PolylinesOut<'py>> {
         let view = view_of(eye, direction).map_err(to_py)?;
-        let threshold = read_threshold(threshold).map_err(to_py)?;
-        let lines =
-            detached_cancellable(py, |cancel| self.contour_mesh().suggestive(view, threshold, cancel))?;
+        let (threshold, smoothing) = read_suggestive(threshold, smoothing).map_err(to_py)?;
+        let lines = detached_cancellable(py, |cancel| {
+            self.contour_mesh().suggestive(view, threshold, smoothing, cancel)
+        })?;
         Ok(polylines_to_numpy(py, lines))
     }
 

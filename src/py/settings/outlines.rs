@@ -97,7 +97,10 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// stroke even when their kinds differ (a silhouette running on into a crease), taking the kind
 /// of their longest part, in ``RenderResult.lines`` and the SVG (default False: strokes of one
 /// kind only). suggestive_threshold: the derivative test of suggestive contours, relative
-/// to the mesh's feature size (default 0.01). min_crease_length: crease pieces (creases joined
+/// to the mesh's feature size (default 0.01). curvature_smoothing: the width, in mean edge
+/// lengths, over which the curvature of suggestive contours is averaged (as
+/// :func:`toonmesh.edges.curvature` with ``smoothing``), so a scan's noise does not draw
+/// (default 2; 0 is the one-ring estimate). min_crease_length: crease pieces (creases joined
 /// at their vertices, ridges and valleys together) shorter than this fraction of the mesh's
 /// bounding-box diagonal are not drawn, so that a scan's noise does not scatter crease dashes
 /// while a CAD part's creases stay (default 0.02; 0 draws every crease).
@@ -133,7 +136,7 @@ impl PyOutlines {
                         material = None,
                         image = None, crease_angle = None, weld = None, normal_threshold = None,
                         depth_threshold = None, depth_offset = None, contours = None,
-                        suggestive_threshold = None, min_crease_length = None, image_rule = None,
+                        suggestive_threshold = None, curvature_smoothing = None, min_crease_length = None, image_rule = None,
                         normal_angle = None, depth_jump = None, taper = None, width_by_depth = None,
                         join_kinds = None))]
     #[allow(clippy::too_many_arguments)]
@@ -157,6 +160,7 @@ impl PyOutlines {
         depth_offset: Obj<'_, '_>,
         contours: Obj<'_, '_>,
         suggestive_threshold: Obj<'_, '_>,
+        curvature_smoothing: Obj<'_, '_>,
         min_crease_length: Obj<'_, '_>,
         image_rule: Obj<'_, '_>,
         normal_angle: Obj<'_, '_>,
@@ -198,6 +202,8 @@ impl PyOutlines {
             }
             o.suggestive_threshold =
                 opt_number("suggestive_threshold", suggestive_threshold)?.unwrap_or(o.suggestive_threshold);
+            o.curvature_smoothing =
+                opt_number("curvature_smoothing", curvature_smoothing)?.unwrap_or(o.curvature_smoothing);
             o.min_crease_length =
                 opt_number("min_crease_length", min_crease_length)?.unwrap_or(o.min_crease_length);
             if let Some(r) = image_rule {
@@ -245,6 +251,7 @@ getters!(PyOutlines {
     /// "auto", "faces" or "smooth".
     contours -> &'static str = |o| o.contours.name();
     suggestive_threshold -> f64 = |o| o.suggestive_threshold;
+    curvature_smoothing -> f64 = |o| o.curvature_smoothing;
     min_crease_length -> f64 = |o| o.min_crease_length;
     /// "discontinuity" or "paper".
     image_rule -> &'static str = |o| o.image_rule.name();

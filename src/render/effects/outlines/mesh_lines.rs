@@ -83,13 +83,14 @@ impl MeshLines {
         if let Some(s) = self.split.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
             return Ok(s.clone());
         }
-        let hard: Vec<[u32; 2]> = statics
+        let mut hard: Vec<[u32; 2]> = statics
             .edges
             .iter()
             .zip(&statics.kinds)
             .filter(|(_, k)| matches!(k, LineKind::Ridge | LineKind::Valley | LineKind::NonManifold))
             .map(|(e, _)| *e)
             .collect();
+        hard.sort_unstable();
         let mesh = crate::parallel::install(|| {
             ContourMesh::split_at(&host.positions, &host.faces, outlines.weld, &hard)
         })?;
@@ -127,15 +128,17 @@ impl MeshLines {
         } else {
             let split = self.split(host, outlines, &statics)?;
             let (smooth, sil) = crate::parallel::install(|| {
-                rayon::join(|| split.mesh.smooth(view), || index.silhouette(view))
+                rayon::join(|| split.mesh.smooth(view), || index.silhouette_among(view, &split.hard))
             });
             curves.push((LineKind::Silhouette, smooth));
-            statics.with_silhouettes(&sorted_intersection(&sil?, &split.hard))
+            statics.with_silhouettes(&sil?)
         };
         if draws(LineKind::Suggestive) {
             let m = self.contour_mesh(host, outlines.weld);
             let threshold = outlines.suggestive_threshold;
-            let lines = crate::parallel::install(|| m.suggestive(view, threshold, Cancel::never()))?;
+            let smoothing = outlines.curvature_smoothing;
+            let lines =
+                crate::parallel::install(|| m.suggestive(view, threshold, smoothing, Cancel::never()))?;
             curves.push((LineKind::Suggestive, lines));
         }
         // boundaries are kept for the material borders found across the scene
@@ -143,24 +146,6 @@ impl MeshLines {
         let (edges, kinds) = all.edges.iter().zip(&all.kinds).filter(|(_, k)| keep(**k)).unzip();
         Ok(MeshOutline { edges: Outline { edges, kinds }, curves })
     }
-}
-
-/// The edges in both sorted lists.
-fn sorted_intersection(a: &[[u32; 2]], b: &[[u32; 2]]) -> Vec<[u32; 2]> {
-    let mut out = Vec::new();
-    let (mut i, mut j) = (0, 0);
-    while i < a.len() && j < b.len() {
-        match a[i].cmp(&b[j]) {
-            std::cmp::Ordering::Less => i += 1,
-            std::cmp::Ordering::Greater => j += 1,
-            std::cmp::Ordering::Equal => {
-                out.push(a[i]);
-                i += 1;
-                j += 1;
-            }
-        }
-    }
-    out
 }
 
 /// The view of `cam` in a mesh's stored coordinates (for its silhouette test). The mesh's
