@@ -352,7 +352,7 @@ class Outlines:
     depth_offset: Final[float]
     contours: Final[str]
     suggestive_threshold: Final[float]
-    curvature_smoothing: Final[float]
+    curvature_smoothing: Final[Optional[float]]
     min_crease_length: Final[float]
     image_rule: Final[str]
     normal_angle: Final[float]

@@ -282,7 +282,9 @@ def suggestive_contours(
             depend on units; larger keeps only the strongest lines. Default (None) 0.01.
         smoothing: the width the curvature is measured at, in mean edge lengths, as
             :func:`curvature` takes it; the feature size above comes from that curvature.
-            Default (None) 2: a scan's noise draws no lines, a clean mesh's lines stay put.
+            Default (None): 2, at most 1% of the bounding-box diagonal. A scan's noise lives
+            at the edge length and draws no lines at 2; a coarse mesh (a few thousand
+            vertices) keeps the features the cap protects.
 
     Per view, only faces where kr can change sign in some view are visited (a vertex with
     k1 > 0 and one with k2 <= 0): none on a convex shape.

@@ -16,9 +16,7 @@ use super::errors::to_py;
 use super::mesh_input::{on_positions, MeshInput, PositionsRef};
 use super::runtime::{detached, detached_cancellable};
 use crate::edges::chains::chain_edges;
-use crate::edges::contours::{
-    check_smoothing, check_threshold, ContourMesh, DEFAULT_CURVATURE_SMOOTHING, DEFAULT_SUGGESTIVE_THRESHOLD,
-};
+use crate::edges::contours::{check_smoothing, check_threshold, ContourMesh, DEFAULT_SUGGESTIVE_THRESHOLD};
 use crate::edges::detect::{paper_gradient, threshold_mask};
 use crate::edges::feature::FeatureEdges;
 use crate::edges::outlines::Statics;
@@ -201,18 +199,15 @@ fn _contours<'py>(
 
 /// The suggestive-contour arguments, threshold and curvature smoothing; None takes the
 /// default.
-fn read_suggestive(threshold: &Bound<'_, PyAny>, smoothing: &Bound<'_, PyAny>) -> Result<(f64, f64)> {
-    let number = |arg: &str, obj: &Bound<'_, PyAny>, default: f64| {
-        if obj.is_none() {
-            Ok(default)
-        } else {
-            args::number(arg, obj)
-        }
+fn read_suggestive(threshold: &Bound<'_, PyAny>, smoothing: &Bound<'_, PyAny>) -> Result<(f64, Option<f64>)> {
+    let threshold = match threshold.is_none() {
+        true => DEFAULT_SUGGESTIVE_THRESHOLD,
+        false => check_threshold("threshold", args::number("threshold", threshold)?)?,
     };
-    let threshold =
-        check_threshold("threshold", number("threshold", threshold, DEFAULT_SUGGESTIVE_THRESHOLD)?)?;
-    let smoothing =
-        check_smoothing("smoothing", number("smoothing", smoothing, DEFAULT_CURVATURE_SMOOTHING)?)?;
+    let smoothing = match smoothing.is_none() {
+        true => None,
+        false => Some(check_smoothing("smoothing", args::number("smoothing", smoothing)?)?),
+    };
     Ok((threshold, smoothing))
 }
 

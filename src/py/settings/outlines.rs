@@ -100,7 +100,8 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// to the mesh's feature size (default 0.01). curvature_smoothing: the width, in mean edge
 /// lengths, over which the curvature of suggestive contours is averaged (as
 /// :func:`toonmesh.edges.curvature` with ``smoothing``), so a scan's noise does not draw
-/// (default 2; 0 is the one-ring estimate). min_crease_length: crease pieces (creases joined
+/// (default None: 2, at most 1% of the bounding-box diagonal so a coarse mesh keeps its
+/// features; 0 is the one-ring estimate). min_crease_length: crease pieces (creases joined
 /// at their vertices, ridges and valleys together) shorter than this fraction of the mesh's
 /// bounding-box diagonal are not drawn, so that a scan's noise does not scatter crease dashes
 /// while a CAD part's creases stay (default 0.02; 0 draws every crease).
@@ -202,8 +203,7 @@ impl PyOutlines {
             }
             o.suggestive_threshold =
                 opt_number("suggestive_threshold", suggestive_threshold)?.unwrap_or(o.suggestive_threshold);
-            o.curvature_smoothing =
-                opt_number("curvature_smoothing", curvature_smoothing)?.unwrap_or(o.curvature_smoothing);
+            o.curvature_smoothing = opt_number("curvature_smoothing", curvature_smoothing)?;
             o.min_crease_length =
                 opt_number("min_crease_length", min_crease_length)?.unwrap_or(o.min_crease_length);
             if let Some(r) = image_rule {
@@ -251,7 +251,8 @@ getters!(PyOutlines {
     /// "auto", "faces" or "smooth".
     contours -> &'static str = |o| o.contours.name();
     suggestive_threshold -> f64 = |o| o.suggestive_threshold;
-    curvature_smoothing -> f64 = |o| o.curvature_smoothing;
+    /// None: 2 mean edge lengths, at most 1% of the bounding-box diagonal.
+    curvature_smoothing -> Option<f64> = |o| o.curvature_smoothing;
     min_crease_length -> f64 = |o| o.min_crease_length;
     /// "discontinuity" or "paper".
     image_rule -> &'static str = |o| o.image_rule.name();

@@ -5,9 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::edges::contours::{
-    check_smoothing, check_threshold, DEFAULT_CURVATURE_SMOOTHING, DEFAULT_SUGGESTIVE_THRESHOLD,
-};
+use crate::edges::contours::{check_smoothing, check_threshold, DEFAULT_SUGGESTIVE_THRESHOLD};
 use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
 use crate::edges::outlines::LineKind;
 use crate::edges::short_creases::DEFAULT_MIN_CREASE_LENGTH;
@@ -147,10 +145,10 @@ pub struct Outlines {
     /// The derivative threshold of suggestive contours, relative to the mesh's feature size
     /// squared (`edges::contours`).
     pub suggestive_threshold: f64,
-    /// The width suggestive contours' curvature is measured at, in mean edge lengths
-    /// (`edges::contours`).
-    #[serde(default = "default_curvature_smoothing")]
-    pub curvature_smoothing: f64,
+    /// The width suggestive contours' curvature is measured at, in mean edge lengths; None:
+    /// `edges::contours::auto_smoothing`.
+    #[serde(default)]
+    pub curvature_smoothing: Option<f64>,
     /// Hidden-line removal: a line point is visible when its depth is at most the largest
     /// surface depth in the 3x3 output pixels around it plus this many pixel footprints (the
     /// world size of one pixel at that depth); a silhouette or boundary with background among
@@ -163,10 +161,6 @@ pub struct Outlines {
     /// into a crease) into one stroke, of the kind of its longest part (`strokes::join_runs`).
     #[serde(default)]
     pub join_kinds: bool,
-}
-
-fn default_curvature_smoothing() -> f64 {
-    DEFAULT_CURVATURE_SMOOTHING
 }
 
 impl Default for Outlines {
@@ -186,7 +180,7 @@ impl Outlines {
             styles,
             contours: ContourRule::Auto,
             suggestive_threshold: DEFAULT_SUGGESTIVE_THRESHOLD,
-            curvature_smoothing: DEFAULT_CURVATURE_SMOOTHING,
+            curvature_smoothing: None,
             crease_angle: DEFAULT_CREASE_ANGLE,
             min_crease_length: DEFAULT_MIN_CREASE_LENGTH,
             weld: true,
@@ -265,7 +259,9 @@ impl Outlines {
             }
         }
         check_threshold(&field(prefix, "suggestive_threshold"), self.suggestive_threshold)?;
-        check_smoothing(&field(prefix, "curvature_smoothing"), self.curvature_smoothing)?;
+        if let Some(s) = self.curvature_smoothing {
+            check_smoothing(&field(prefix, "curvature_smoothing"), s)?;
+        }
         self.stroke_width.validate(prefix)
     }
 }
