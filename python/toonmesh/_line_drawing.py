@@ -66,10 +66,10 @@ def summary(lines: Dict[str, Any]) -> str:
     return text
 
 
-def write_svg(path: str, lines: Dict[str, Any]) -> None:
-    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg`); with hidden lines,
-    those go underneath, dashed and grey."""
-    svg = lines["seen"].svg()
+def write_svg(path: str, lines: Dict[str, Any], smooth: float = 0.0) -> None:
+    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg`, each stroke
+    smoothed over ``smooth`` pixels); with hidden lines, those go underneath, dashed and grey."""
+    svg = lines["seen"].svg(smooth=smooth)
     everything = lines["everything"]
     if everything is not None:
         polylines = "\n".join(
