@@ -207,6 +207,7 @@ def test_edges_npz_has_the_arrays_and_an_orthographic_view_along_minus_eye(tmp_p
         assert list(z["kinds"]) == ["silhouette"] and z["starts"].tolist() == [0, len(z["points"])]
         p = z["points"]
         assert np.allclose(p[0], p[-1]) and len(p) == 5  # a closed square
+        assert z["widths"].dtype == np.float32 and np.all(z["widths"] == tm.LineStyle().width)
         assert (p[:, 0].max() - p[:, 0].min()) > 30 and (p[:, 1].max() - p[:, 1].min()) > 30
 
 
