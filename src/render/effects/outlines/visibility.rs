@@ -267,15 +267,18 @@ mod tests {
         assert_eq!(runs[0].points.first(), Some(&[2.0, 8.5]));
         assert_eq!(runs[0].points.last(), Some(&[14.0, 8.5]));
         assert_eq!(runs[0].widths, vec![1.5, 1.5]);
-        // a tapered line: the width at each point is the factor there times the kind's width
+        // a tapered line cut where a wall in front begins (x >= 9): the width at each point is
+        // the factor there times the kind's width, where it stops too
+        let mut wall = depth.clone();
+        for row in wall.chunks_mut(16) {
+            row[9..].fill(1.0);
+        }
+        let wall_img = DepthImage { depth: &wall, width: 16, height: 16 };
         let tapered = ScreenLine { scale: [0.2, 1.0], ..line };
-        let behind =
-            ScreenLine { a: [14.0, 8.5], b: [26.0, 8.5], za: 2.0, zb: 3.0, kind: 0, scale: [1.0; 2] };
-        let runs = visible_runs(&[tapered, behind], false, &img, rule, 2.0);
+        let runs = visible_runs(&[tapered], false, &wall_img, rule, 2.0);
         assert_eq!(runs.len(), 1);
-        assert_eq!(runs[0].points.len(), runs[0].widths.len());
-        assert!((runs[0].widths[0] - 0.4).abs() < 1e-12 && runs[0].widths[1] == 2.0);
-        let stop = *runs[0].points.last().unwrap();
-        assert!(stop[0] > 14.0 && stop[0] < 26.0, "cut where the second line goes behind");
+        assert_eq!(runs[0].points, vec![[2.0, 8.5], [9.5, 8.5]]);
+        let want = [0.4, 2.0 * (0.2 + 0.8 * 7.5 / 12.0)];
+        assert!(runs[0].widths.iter().zip(want).all(|(w, x)| (w - x).abs() < 1e-12), "{:?}", runs[0].widths);
     }
 }
