@@ -7,7 +7,7 @@ travel between strokes short (greedy nearest neighbour, either end first, as vpy
 from __future__ import annotations
 
 import math
-from typing import List, Optional, Tuple
+from typing import Callable, List, Optional, Tuple
 
 import numpy as np
 
@@ -102,30 +102,26 @@ def kept(points: np.ndarray, tolerance: float, widths: Optional[np.ndarray] = No
     if tolerance <= 0 or n < 3:
         return np.arange(n)
     if widths is not None and np.ptp(widths) > 0:
-        return _kept_3d(np.column_stack([points, 0.5 * np.asarray(widths, float)]), tolerance)
-    keep = np.zeros(n, bool)
-    keep[[0, n - 1]] = True
-    stack = [(0, n - 1)]
-    while stack:
-        a, b = stack.pop()
-        if b - a < 2:
-            continue
-        seg = points[b] - points[a]
-        rel = points[a + 1 : b] - points[a]
-        length = np.hypot(*seg)
-        if length > 0:
-            dist = np.abs(seg[0] * rel[:, 1] - seg[1] * rel[:, 0]) / length
-        else:
-            dist = np.hypot(rel[:, 0], rel[:, 1])
-        k = int(np.argmax(dist))
-        if dist[k] > tolerance:
-            mid = a + 1 + k
-            keep[mid] = True
-            stack += [(a, mid), (mid, b)]
-    return np.flatnonzero(keep)
+        return _douglas_peucker(np.column_stack([points, 0.5 * np.asarray(widths, float)]), tolerance, _distance_3d)
+    return _douglas_peucker(points, tolerance, _distance_2d)
 
 
-def _kept_3d(points: np.ndarray, tolerance: float) -> np.ndarray:
+def _distance_2d(rel: np.ndarray, seg: np.ndarray) -> np.ndarray:
+    """Distances of the points `rel` from the line through 0 along `seg` (from 0 if seg is 0)."""
+    length = np.hypot(*seg)
+    if length > 0:
+        return np.abs(seg[0] * rel[:, 1] - seg[1] * rel[:, 0]) / length
+    return np.hypot(rel[:, 0], rel[:, 1])
+
+
+def _distance_3d(rel: np.ndarray, seg: np.ndarray) -> np.ndarray:
+    length = float(np.linalg.norm(seg))
+    if length > 0:
+        return np.linalg.norm(np.cross(rel, seg), axis=1) / length
+    return np.linalg.norm(rel, axis=1)
+
+
+def _douglas_peucker(points: np.ndarray, tolerance: float, distance: Callable[..., np.ndarray]) -> np.ndarray:
     n = len(points)
     keep = np.zeros(n, bool)
     keep[[0, n - 1]] = True
@@ -134,13 +130,7 @@ def _kept_3d(points: np.ndarray, tolerance: float) -> np.ndarray:
         a, b = stack.pop()
         if b - a < 2:
             continue
-        seg = points[b] - points[a]
-        rel = points[a + 1 : b] - points[a]
-        length = float(np.linalg.norm(seg))
-        if length > 0:
-            dist = np.linalg.norm(np.cross(rel, seg), axis=1) / length
-        else:
-            dist = np.linalg.norm(rel, axis=1)
+        dist = distance(points[a + 1 : b] - points[a], points[b] - points[a])
         k = int(np.argmax(dist))
         if dist[k] > tolerance:
             mid = a + 1 + k
