@@ -1622,6 +1622,23 @@ CASES += [
 
 
 # ------------------------------------------------------------------------------------------------
+# A render's strokes and SVG: a small render's lines, tapered so that their widths vary.
+
+LINES = tm.render(V, F, outlines=tm.Outlines("mesh", taper=5.0), outputs=("lines",), width=64, height=64)
+STROKE_PARAMS = [Param("smooth", Number(0.0, 4096.0)), Param("simplify", Number(0.0, math.inf, open_hi=True))]
+
+CASES += [
+    Case("RenderResult.strokes", LINES.strokes, dict(smooth=1.0, simplify=0.25), STROKE_PARAMS),
+    Case(
+        "RenderResult.svg",
+        LINES.svg,
+        dict(order="drawing", simplify=0.25, smooth=1.0, widths="auto"),
+        STROKE_PARAMS + [Param("order", Name(("drawing", "plotter"))), Param("widths", Name(("auto", "kind", "point")))],
+    ),
+]
+
+
+# ------------------------------------------------------------------------------------------------
 # Running the probes
 
 

@@ -86,3 +86,15 @@ def test_stroke_stats_count_short_strokes_and_turning():
     assert n == 2 and short == 50.0 and median == pytest.approx((20 + 3 * np.sqrt(2)) / 2)
     assert turn == pytest.approx(100 * 2 * (np.pi / 2) / (20 + 3 * np.sqrt(2)))
     assert stroke_stats([straight])[3] == 0.0 and stroke_stats([]) == (0, 0.0, 0.0, 0.0)
+
+
+def test_stroke_smoothing_table_keeps_every_point_within_the_radius():
+    from toonmesh.bench.render import _stroke_smoothing
+
+    rows = _stroke_smoothing(160, 1)
+    assert len(rows) == 10
+    for name, turning, moved, points, _ in rows:
+        radius = float(name.split("smooth=")[1])
+        assert 0 <= float(moved.split()[0]) <= radius and points > 0 and float(turning) > 0
+    turns = {r[0]: float(r[1]) for r in rows}
+    assert turns["contours='auto', smooth=4"] < turns["contours='auto', smooth=0"]

@@ -207,6 +207,7 @@ def test_edges_npz_has_the_arrays_and_an_orthographic_view_along_minus_eye(tmp_p
         assert list(z["kinds"]) == ["silhouette"] and z["starts"].tolist() == [0, len(z["points"])]
         p = z["points"]
         assert np.allclose(p[0], p[-1]) and len(p) == 5  # a closed square
+        assert z["widths"].dtype == np.float32 and np.all(z["widths"] == tm.LineStyle().width)
         assert (p[:, 0].max() - p[:, 0].min()) > 30 and (p[:, 1].max() - p[:, 1].min()) > 30
 
 
@@ -328,6 +329,11 @@ def test_edges_and_render_take_the_contour_rule_and_suggestive_contours(tmp_path
         return group.count("<polyline")
 
     assert silhouettes(smooth) < silhouettes(faces) / 1.5  # long strokes instead of staircases
+    in_process(capsys, "edges", bunny, "-o", "flowing.svg", "--size", "300x300", "--contours", "smooth", "--suggestive",
+               "--smooth-strokes", "2")
+    flowing = (tmp_path / "flowing.svg").read_text()
+    assert flowing != smooth and silhouettes(flowing) == silhouettes(smooth)  # the same strokes, smoothed
+    one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--smooth-strokes", "-1", check=False), "--smooth-strokes")
     assert '<g id="suggestive"' in smooth and '<g id="suggestive"' not in faces
     in_process(capsys, "render", bunny, "-o", "b.png", "--size", "64x64", "--outlines", "mesh", "--contours", "smooth")
     assert (tmp_path / "b.png").stat().st_size > 0

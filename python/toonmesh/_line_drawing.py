@@ -66,10 +66,10 @@ def summary(lines: Dict[str, Any]) -> str:
     return text
 
 
-def write_svg(path: str, lines: Dict[str, Any]) -> None:
-    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg`); with hidden lines,
-    those go underneath, dashed and grey."""
-    svg = lines["seen"].svg()
+def write_svg(path: str, lines: Dict[str, Any], smooth: float = 0.0) -> None:
+    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg`, each stroke
+    smoothed over ``smooth`` pixels); with hidden lines, those go underneath, dashed and grey."""
+    svg = lines["seen"].svg(smooth=smooth)
     everything = lines["everything"]
     if everything is not None:
         polylines = "\n".join(
@@ -87,8 +87,8 @@ def write_svg(path: str, lines: Dict[str, Any]) -> None:
 
 def write_npz(path: str, lines: Dict[str, Any]) -> None:
     """Writes the drawing as arrays: ``points`` (P, 2) float64 pixel coordinates of every visible
-    polyline, one after another, with ``starts`` (L + 1,) int64 where each begins and
-    ``kinds`` (L,) its kind; the mesh's feature edges (``boundary``, ``crease``,
+    polyline, one after another, with ``starts`` (L + 1,) int64 where each begins,
+    ``kinds`` (L,) its kind and ``widths`` (P,) float32 the ink's width at each point (pixels); the mesh's feature edges (``boundary``, ``crease``,
     ``crease_angles``, ``crease_convex``, ``nonmanifold``); and ``view_matrix``,
     ``projection``, ``width``, ``height`` of the camera."""
     seen, fe = lines["seen"], lines["features"]
@@ -99,6 +99,7 @@ def write_npz(path: str, lines: Dict[str, Any]) -> None:
         points=np.concatenate(polylines) if polylines else np.zeros((0, 2)),
         starts=starts,
         kinds=np.array(seen.line_kinds or [], dtype=str),
+        widths=np.concatenate(seen.line_widths) if polylines else np.zeros(0, np.float32),
         boundary=fe.boundary,
         crease=fe.crease,
         crease_angles=fe.crease_angles,

@@ -187,7 +187,10 @@ class RenderResult:
       0 in shadow or facing away from the light, fractions at filtered edges, 1 where no mesh is;
     - ``lines``: the visible mesh-space lines, a list of (K, 2) float64 arrays of pixel
       coordinates (x right, y down, origin at the image's top-left corner), with
-      ``line_kinds`` naming each one's kind ("silhouette", "boundary", ...);
+      ``line_kinds`` naming each one's kind ("silhouette", "boundary", ...) and
+      ``line_widths`` the width of its ink at each point, a (K,) float32 array of pixels (the
+      kind's width, times the outlines' taper and width by depth where they are used, as the
+      ink is drawn);
     - ``passes``: every step that ran, in order; ``timings``: seconds per step, with ``frame``
       the whole render; GPU passes are timed on the GPU when ``timing_source`` is ``"gpu"``,
       otherwise only the frame as a whole (``"wall"``);
@@ -205,6 +208,7 @@ class RenderResult:
         self.shadow: Optional[np.ndarray] = raw["shadow"]
         self.lines: Optional[List[np.ndarray]] = raw["lines"]
         self.line_kinds: Optional[List[str]] = raw["line_kinds"]
+        self.line_widths: Optional[List[np.ndarray]] = raw["line_widths"]
         self.passes: List[str] = list(raw["passes"])
         self.timings: Dict[str, float] = dict(raw["timings"])
         self.timing_source: str = "gpu" if raw["gpu_timed"] else "wall"
@@ -238,10 +242,48 @@ class RenderResult:
         with open(path, "wb") as f:
             f.write(data)
 
-    def svg(self, *, order: str = "drawing", simplify: float = _strokes.SIMPLIFY) -> str:
+    def strokes(
+        self, *, smooth: float = _strokes.SMOOTH, simplify: float = 0.0
+    ) -> List[Tuple[np.ndarray, np.ndarray, str]]:
+        """The visible mesh-space lines as :meth:`svg` draws them: for each of :attr:`lines`, in
+        order, ``(points, widths, kind)``: (K, 2) float64 pixel coordinates, (K,) float32 widths
+        of the ink in pixels at those points (from :attr:`line_widths`), and the kind's name.
+
+        Args:
+            smooth: radius in output pixels (default 0: off) over which each stroke's points are
+                averaged along its length (Gaussian weights, sigma a third of the radius), so
+                the stroke flows without the facets of the mesh's edges. The ends of a stroke
+                stay where they are (the window shrinks toward them), a closed stroke stays
+                closed, and no point moves more than ``smooth`` pixels. At most 4096.
+            simplify: drop points within this many pixels of the stroke, after smoothing
+                (Douglas-Peucker; default 0: every point). Where the width varies along a
+                stroke, its edges too stay within the tolerance.
+        """
+        _strokes.check("drawing", simplify, smooth)
+        return self._drawn_strokes(smooth, simplify, by_width=True)
+
+    def _drawn_strokes(self, smooth: float, simplify: float, by_width: bool) -> List[Tuple[np.ndarray, np.ndarray, str]]:
+        if self.lines is None or self.line_kinds is None or self.line_widths is None:
+            raise ValueError("lines: this render did not ask for the 'lines' output (outputs=(..., 'lines'))")
+        out = []
+        for points, widths, kind in zip(self.lines, self.line_widths, self.line_kinds):
+            points = _strokes.smoothed(points, smooth)
+            keep = _strokes.kept(points, simplify, widths if by_width else None)
+            out.append((points[keep], widths[keep], kind))
+        return out
+
+    def svg(
+        self,
+        *,
+        order: str = "drawing",
+        simplify: float = _strokes.SIMPLIFY,
+        smooth: float = _strokes.SMOOTH,
+        widths: str = "auto",
+    ) -> str:
         """The visible mesh-space lines as an SVG document of the image's size (pixel units),
-        one group per kind, one ``<polyline>`` per stroke, stroked in its kind's colour and
-        width.
+        one group per kind, one shape per stroke in its kind's colour: a ``<polyline>`` stroked
+        at its kind's width, or, where the width varies along the stroke, a filled ``<path>``
+        outlining the ink as the render draws it (:attr:`line_widths`).
 
         Args:
             order: "drawing" (default: the order the renderer found them) or "plotter": within
@@ -251,37 +293,62 @@ class RenderResult:
             simplify: drop points within this many pixels of the stroke (Douglas-Peucker;
                 default 0.25: the drawing stays the same to the eye, with a fraction of the
                 points and without the sub-pixel wobble of contours traced on scans); 0 keeps
-                every point.
+                every point. Filled outlines keep their edges within it too.
+            smooth: smooth each stroke over this radius in pixels first (default 0: off; see
+                :meth:`strokes`: ends stay, closed strokes stay closed, no point moves more).
+            widths: "auto" (default: filled outlines where the outlines taper or scale width by
+                depth, otherwise polylines at each kind's width), "kind" (polylines at each
+                kind's width, centre lines a pen plotter can draw) or "point" (filled outlines
+                always).
         """
-        _strokes.check(order, simplify)
-        if self.lines is None or self.line_kinds is None:
-            raise ValueError("lines: this render did not ask for the 'lines' output (outputs=(..., 'lines'))")
+        _strokes.check(order, simplify, smooth, widths)
         styles = self.outlines.styles if self.outlines is not None else {}
+        varying = widths == "point" or (
+            widths == "auto"
+            and self.outlines is not None
+            and (self.outlines.taper > 0 or self.outlines.width_by_depth)
+        )
+        strokes = self._drawn_strokes(smooth, simplify, by_width=varying)
         out = [
             '<?xml version="1.0" encoding="UTF-8"?>',
             f'<svg xmlns="http://www.w3.org/2000/svg" width="{self.width}" height="{self.height}" '
             f'viewBox="0 0 {self.width} {self.height}">',
         ]
-        for kind in sorted(set(self.line_kinds)):
+        for kind in sorted({k for _, _, k in strokes}):
             style = styles.get(kind) or LineStyle()
             color = "#" + "".join(f"{round(c * 255):02x}" for c in style.color)
-            out.append(
-                f'<g id="{kind}" fill="none" stroke="{color}" stroke-width="{style.width:g}" '
-                'stroke-linecap="round" stroke-linejoin="round">'
-            )
-            lines = [_strokes.simplified(l, simplify) for l, k in zip(self.lines, self.line_kinds) if k == kind]
+            if varying:
+                out.append(f'<g id="{kind}" fill="{color}" fill-rule="nonzero" stroke="none">')
+            else:
+                out.append(
+                    f'<g id="{kind}" fill="none" stroke="{color}" stroke-width="{style.width:g}" '
+                    'stroke-linecap="round" stroke-linejoin="round">'
+                )
+            group = [(p, w) for p, w, k in strokes if k == kind]
             if order == "plotter":
-                lines = [lines[i][::-1] if flip else lines[i] for i, flip in _strokes.plotter_order(lines)]
-            for line in lines:
-                points = " ".join(f"{x:.2f},{y:.2f}" for x, y in line)
-                out.append(f'<polyline points="{points}"/>')
+                flips = _strokes.plotter_order([p for p, _ in group])
+                group = [(group[i][0][::-1], group[i][1][::-1]) if flip else group[i] for i, flip in flips]
+            for points, w in group:
+                if varying:
+                    out.append(f'<path d="{_strokes.outline_path(points, w)}"/>')
+                else:
+                    out.append('<polyline points="' + " ".join(f"{x:.2f},{y:.2f}" for x, y in points) + '"/>')
             out.append("</g>")
         out.append("</svg>")
         return "\n".join(out) + "\n"
 
-    def save_svg(self, path: Any, *, order: str = "drawing", simplify: float = _strokes.SIMPLIFY) -> None:
-        """Writes :meth:`svg` (with its ``order`` and ``simplify``) to ``path``."""
-        text = self.svg(order=order, simplify=simplify)
+    def save_svg(
+        self,
+        path: Any,
+        *,
+        order: str = "drawing",
+        simplify: float = _strokes.SIMPLIFY,
+        smooth: float = _strokes.SMOOTH,
+        widths: str = "auto",
+    ) -> None:
+        """Writes :meth:`svg` (with its ``order``, ``simplify``, ``smooth`` and ``widths``) to
+        ``path``."""
+        text = self.svg(order=order, simplify=simplify, smooth=smooth, widths=widths)
         with open(path, "w", encoding="utf-8") as f:
             f.write(text)
 

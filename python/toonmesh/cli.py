@@ -2,7 +2,7 @@
 
     toonmesh render MESH... -o OUT [--size WxH] [--style S] [--normals MODE] [--views N] [--up x|y|z] ...
     toonmesh smooth IN OUT [--method M] [--iterations N] [--preset P] [--weld]
-    toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG]
+    toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG] [--smooth-strokes PX]
     toonmesh bench smooth|edges|render|effects|viewer|all [--quick] [--json FILE]
     toonmesh demo
     toonmesh --version
@@ -292,11 +292,12 @@ def _add_contour_arguments(p: argparse.ArgumentParser) -> None:
 
 def cmd_edges(args: argparse.Namespace) -> int:
     """toonmesh edges: outline edges of a mesh file as SVG line art or NPZ arrays."""
-    from toonmesh import _line_drawing
+    from toonmesh import _line_drawing, _strokes
 
     suffix = os.path.splitext(args.out)[1].lower()
     if suffix not in (".svg", ".npz"):
         raise CliError(f"-o: expected a .svg or .npz file name, got {args.out}")
+    _strokes.check_pixels("--smooth-strokes", args.smooth_strokes, _strokes.MAX_SMOOTH)
     V, F = read_mesh(mesh_file(args.mesh))
     if args.eye is not None:
         camera = tm.Camera.fit(args.eye, up=up_vector(args.up), orthographic=True)
@@ -308,7 +309,7 @@ def cmd_edges(args: argparse.Namespace) -> int:
                                      backend=args.backend, contours=args.contours, suggestive=args.suggestive,
                                      join_kinds=args.join_kinds)
     if suffix == ".svg":
-        _line_drawing.write_svg(args.out, lines)
+        _line_drawing.write_svg(args.out, lines, smooth=args.smooth_strokes)
     else:
         _line_drawing.write_npz(args.out, lines)
     print(f"{args.mesh}: {_line_drawing.summary(lines)} ({w}x{h}) to {args.out}")
@@ -491,6 +492,9 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     _add_contour_arguments(p)
     p.add_argument("--stroke-width", type=float, default=tm.LineStyle().width, metavar="PX",
                    help="line width in pixels (default %(default)g)")
+    p.add_argument("--smooth-strokes", type=float, default=0.0, metavar="PX",
+                   help="smooth each stroke of the SVG over this many pixels along it; no point moves more "
+                        "(default 0: off)")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_edges)
 

@@ -4,7 +4,7 @@
 
 use numpy::ndarray::{Array2, IxDyn};
 use numpy::{
-    IntoPyArray, PyArray2, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3,
+    IntoPyArray, PyArray1, PyArray2, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3,
     PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
@@ -212,25 +212,26 @@ fn report_dict<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     d.set_item("width", frame.width)?;
     d.set_item("height", frame.height)?;
-    let (lines, kinds) = match report.lines {
+    let (lines, kinds, widths) = match report.lines {
         Some(lines) => {
             let names = kind_names();
             let kinds: Vec<&str> = lines.iter().map(|l| names[l.kind]).collect();
-            let arrays: Vec<Bound<'py, PyArray2<f64>>> = lines
-                .into_iter()
-                .map(|l| {
-                    let n = l.points.len();
-                    Array2::from_shape_vec((n, 2), l.points.into_iter().flatten().collect())
-                        .expect("2 numbers a point")
-                        .into_pyarray(py)
-                })
-                .collect();
-            (Some(arrays), Some(kinds))
+            let mut arrays: Vec<Bound<'py, PyArray2<f64>>> = Vec::with_capacity(lines.len());
+            let mut widths: Vec<Bound<'py, PyArray1<f32>>> = Vec::with_capacity(lines.len());
+            for l in lines {
+                let n = l.points.len();
+                let points = Array2::from_shape_vec((n, 2), l.points.into_iter().flatten().collect())
+                    .expect("2 numbers a point");
+                arrays.push(points.into_pyarray(py));
+                widths.push(l.widths.iter().map(|&w| w as f32).collect::<Vec<f32>>().into_pyarray(py));
+            }
+            (Some(arrays), Some(kinds), Some(widths))
         }
-        None => (None, None),
+        None => (None, None, None),
     };
     d.set_item("lines", lines)?;
     d.set_item("line_kinds", kinds)?;
+    d.set_item("line_widths", widths)?;
     d.set_item("passes", report.passes)?;
     d.set_item("timings", report.timings)?;
     d.set_item("gpu_timed", report.gpu_timed)?;

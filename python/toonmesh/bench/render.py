@@ -422,6 +422,32 @@ def _line_settings(size: int, repeat: int) -> List[Sequence[Any]]:
     return rows
 
 
+def _stroke_smoothing(size: int, repeat: int) -> List[Sequence[Any]]:
+    """The raw bunny's silhouette strokes (default outlines) under each ``smooth`` radius of
+    :meth:`RenderResult.strokes`, after the SVG's quarter-pixel simplification: how much they
+    turn per 100 px, the farthest any point moved (at most the radius), and the time it took."""
+    import toonmesh as tm
+    from toonmesh import _strokes
+    from toonmesh.data import bunny
+
+    V, F = bunny()
+    rows = []
+    for rule in ("faces", "auto"):
+        res = tm.render(V, F, outlines=tm.Outlines("mesh", contours=rule), width=size, height=size, outputs=("lines",))
+        for radius in (0.0, 0.5, 1.0, 2.0, 4.0):
+            t = median_time(lambda: res.strokes(smooth=radius, simplify=_strokes.SIMPLIFY), repeat=repeat)
+            moved = 0.0
+            for line, k in zip(res.lines, res.line_kinds):
+                if k == "silhouette":
+                    moved = max(moved, float(np.hypot(*(_strokes.smoothed(line, radius) - line).T).max()))
+            sil = [p for p, _, k in res.strokes(smooth=radius, simplify=_strokes.SIMPLIFY) if k == "silhouette"]
+            n, _, _, turn = stroke_stats(sil)
+            points = sum(len(p) for p in sil)
+            rows.append((f"contours={rule!r}, smooth={radius:g}", f"{turn:.1f}", f"{moved:.2f} px", points,
+                         f"{t * 1e3:.1f} ms"))
+    return rows
+
+
 def _near(mask: np.ndarray) -> np.ndarray:
     """Pixels within one pixel (3x3) of a set pixel."""
     p = np.pad(mask, 1)
@@ -533,6 +559,12 @@ def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) ->
         ["line setting", "frame", "silhouette strokes", "under 5 px", "median", "turning per 100 px (rad)"],
         _line_settings(line_size, repeat),
         title=f"Line settings: the raw bunny at {line_size}x{line_size}, mesh lines",
+    ))
+    print(table(
+        ["stroke smoothing", "turning per 100 px (rad)", "farthest point moved", "points", "time (all strokes)"],
+        _stroke_smoothing(line_size, repeat),
+        title=f"Stroke smoothing (RenderResult.strokes(smooth=...)): the raw bunny's silhouette strokes at "
+              f"{line_size}x{line_size}, simplified to a quarter pixel",
     ))
     sizes = (128, 256) if quick else (256, 512, 1024, 2048)
     print(table(

@@ -92,7 +92,9 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// length on screen, down to a fifth of their width (default 0: no taper; closed loops have no
 /// ends). width_by_depth: scale their width by the depth of the scene's centre over the line's
 /// depth, between 0.25x and 4x (default False). Both shape the ink (the colour and "outline"
-/// outputs); ``RenderResult.lines`` and the SVG keep the centre lines, drawn at the kind's width.
+/// outputs), and ``RenderResult.line_widths`` gives the ink's width at each point of
+/// ``RenderResult.lines`` (pixels); the SVG then draws each stroke as a filled outline of that
+/// ink (``svg(widths="kind")``: centre lines at the kind's width, for a pen plotter).
 /// join_kinds: visible strokes that meet end to end within a line's width are joined into one
 /// stroke even when their kinds differ (a silhouette running on into a crease), taking the kind
 /// of their longest part, in ``RenderResult.lines`` and the SVG (default False: strokes of one

@@ -1,10 +1,13 @@
 //! What a render reports besides its images.
 
-/// One visible mesh-space polyline in pixel coordinates, and its kind.
+/// One visible mesh-space polyline in pixel coordinates, its kind, and the width of its ink at
+/// each point in pixels (its kind's width times the factors of `stroke_width`, as the line pass
+/// draws it).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Polyline {
     pub kind: usize,
     pub points: Vec<[f64; 2]>,
+    pub widths: Vec<f64>,
 }
 
 #[derive(Clone, Debug, Default)]

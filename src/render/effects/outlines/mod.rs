@@ -162,6 +162,7 @@ impl FrameEffect for OutlinesEffect {
                 steps.host_after.push(Box::new(visibility::VisibleLines {
                     depth_offset: outlines.depth_offset,
                     gaps: strokes::gaps(outlines),
+                    widths: strokes::widths(outlines),
                     join_kinds: outlines.join_kinds,
                     view,
                 }));

@@ -33,6 +33,11 @@ impl ScreenLine {
         (p, z)
     }
 
+    /// The factor of the kind's width at parameter t (linear on screen, as the line pass has it).
+    pub fn factor(&self, t: f64) -> f64 {
+        self.scale[0] + (self.scale[1] - self.scale[0]) * t
+    }
+
     pub fn length(&self) -> f64 {
         (self.b[0] - self.a[0]).hypot(self.b[1] - self.a[1])
     }

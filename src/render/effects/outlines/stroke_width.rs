@@ -1,8 +1,9 @@
 //! How wide a mesh-space line is along its length, as a factor of its kind's width: thinning
 //! toward the ends of each chain over `taper` pixels of its projected length (as brush strokes
 //! and Freestyle's thickness modifiers do), and, optionally, scaled by depth, nearer lines
-//! wider. The `silhouettes` step gives each line its factors at both ends; the line pass and
-//! its CPU reference (`visibility::coverage_image`) interpolate them along the line.
+//! wider. The `silhouettes` step gives each line its factors at both ends; the line pass, its
+//! CPU reference (`visibility::coverage_image`) and the visible strokes' widths
+//! (`visibility::visible_runs`, `RenderResult.line_widths`) interpolate them along the line.
 
 use serde::{Deserialize, Serialize};
 

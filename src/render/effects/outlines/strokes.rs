@@ -17,7 +17,12 @@ pub const MIN_JOIN_GAP: f64 = 1.5;
 
 /// The join gap of each ink kind under `outlines`.
 pub fn gaps(outlines: &Outlines) -> [f64; INK_KINDS] {
-    std::array::from_fn(|k| outlines.styles[k].map_or(MIN_JOIN_GAP, |s| (s.width as f64).max(MIN_JOIN_GAP)))
+    widths(outlines).map(|w| w.max(MIN_JOIN_GAP))
+}
+
+/// The width of each ink kind under `outlines`, in pixels (0 for a kind not drawn).
+pub fn widths(outlines: &Outlines) -> [f64; INK_KINDS] {
+    std::array::from_fn(|k| outlines.styles[k].map_or(0.0, |s| s.width as f64))
 }
 
 /// Joins the ends of `runs` that lie within `gap(kind)` pixels of each other, nearest first,
@@ -95,7 +100,8 @@ pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64)
         // enter run i through its first point when that end is free (or in a loop), else its last
         let mut entry =
             if partner[2 * i] == usize::MAX || partner[2 * i + 1] != usize::MAX { 2 * i } else { 2 * i + 1 };
-        let (mut points, mut parts): (Vec<[f64; 2]>, Vec<(f64, usize)>) = (Vec::new(), Vec::new());
+        let (mut points, mut widths, mut parts): (Vec<[f64; 2]>, Vec<f64>, Vec<(f64, usize)>) =
+            (Vec::new(), Vec::new(), Vec::new());
         let mut first = i;
         loop {
             let r = entry / 2;
@@ -103,6 +109,7 @@ pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64)
                 // back at the start of a loop: close it
                 if let Some(&p) = points.first() {
                     points.push(p);
+                    widths.push(widths[0]);
                 }
                 break;
             }
@@ -110,11 +117,13 @@ pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64)
             first = first.min(r);
             let run = &runs[r].points;
             let forward = entry % 2 == 0;
-            let it: Box<dyn Iterator<Item = &[f64; 2]>> =
-                if forward { Box::new(run.iter()) } else { Box::new(run.iter().rev()) };
-            for &p in it {
+            let pairs = run.iter().zip(&runs[r].widths);
+            let it: Box<dyn Iterator<Item = (&[f64; 2], &f64)>> =
+                if forward { Box::new(pairs) } else { Box::new(pairs.rev()) };
+            for (&p, &w) in it {
                 if points.last() != Some(&p) {
                     points.push(p);
+                    widths.push(w);
                 }
             }
             parts.push((length(run), runs[r].kind));
@@ -124,13 +133,14 @@ pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64)
                 next if next / 2 == r => {
                     // the run's own ends meet
                     points.push(points[0]);
+                    widths.push(widths[0]);
                     break;
                 }
                 next => entry = next,
             }
         }
         let kind = parts.iter().max_by(|a, b| a.0.total_cmp(&b.0)).map_or(runs[i].kind, |p| p.1);
-        starts.push((first, Polyline { kind, points }));
+        starts.push((first, Polyline { kind, points, widths }));
     }
     starts.sort_by_key(|s| s.0);
     out.extend(starts.into_iter().map(|s| s.1));
@@ -215,7 +225,7 @@ mod tests {
     use super::*;
 
     fn run(kind: usize, points: &[[f64; 2]]) -> Polyline {
-        Polyline { kind, points: points.to_vec() }
+        Polyline { kind, points: points.to_vec(), widths: (0..points.len()).map(|i| i as f64).collect() }
     }
 
     #[test]
@@ -229,6 +239,11 @@ mod tests {
         let joined = join_runs(runs.clone(), true, |_| 1.5);
         assert_eq!(joined.len(), 3);
         assert_eq!(joined[0].points, vec![[0.0, 0.0], [10.0, 0.0], [11.0, 0.0], [21.0, 0.0]]);
+        assert_eq!(
+            joined[0].widths,
+            vec![0.0, 1.0, 1.0, 0.0],
+            "each point keeps its width, reversed runs too"
+        );
         assert_eq!(joined[0].kind, 0);
         let across = join_runs(runs, false, |_| 1.5);
         assert_eq!(across.len(), 2);
@@ -259,6 +274,8 @@ mod tests {
         let joined = join_runs(runs, true, |_| 1.0);
         assert_eq!(joined.len(), 2);
         assert!(is_closed(&joined[0].points));
+        assert_eq!(joined[0].widths.len(), joined[0].points.len());
+        assert_eq!(joined[0].widths.first(), joined[0].widths.last());
         assert_eq!(joined[1].points.len(), 2);
     }
 }

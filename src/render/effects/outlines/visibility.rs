@@ -97,7 +97,7 @@ pub fn coverage_image(
                     0.0
                 };
                 let (c, z) = l.at(t, orthographic);
-                let here = width * (l.scale[0] + (l.scale[1] - l.scale[0]) * t);
+                let here = width * l.factor(t);
                 let cov = (here / 2.0 + 0.5 - (p[0] - c[0]).hypot(p[1] - c[1])).clamp(0.0, 1.0);
                 if cov > 0.0 && rule.visible(img, c, z, l.kind) {
                     let o = &mut out[y * w + x];
@@ -114,24 +114,38 @@ pub fn coverage_image(
 pub const MIN_RUN: f64 = 1.0;
 
 /// The visible parts of a chain of lines (each starting where the last ended) as polylines in
-/// pixel coordinates: visibility is sampled every half pixel, a run keeps the points where it
-/// starts and stops and the ends of the lines it passes, runs are cut to the image, and runs
-/// shorter than `MIN_RUN` pixels are left out.
+/// pixel coordinates, with the ink's width at each point (`width` pixels times the line's factor
+/// there, as `coverage_image` draws it): visibility is sampled every half pixel, a run keeps the
+/// points where it starts and stops and the ends of the lines it passes, runs are cut to the
+/// image, and runs shorter than `MIN_RUN` pixels are left out.
 pub fn visible_runs(
     chain: &[ScreenLine],
     orthographic: bool,
     img: &DepthImage<'_>,
     rule: Visibility,
-) -> Vec<Vec<[f64; 2]>> {
+    width: f64,
+) -> Vec<Polyline> {
     let (w, h) = (img.width as f64, img.height as f64);
+    let kind = chain.first().map_or(0, |l| l.kind);
     let mut runs = Vec::new();
-    let mut current: Vec<[f64; 2]> = Vec::new();
-    let mut close = |current: &mut Vec<[f64; 2]>| {
-        let length: f64 = current.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum();
+    let mut current = Polyline { kind, points: Vec::new(), widths: Vec::new() };
+    let mut close = |current: &mut Polyline| {
+        let p = &current.points;
+        let length: f64 = p.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum();
+        let run = Polyline {
+            kind,
+            points: std::mem::take(&mut current.points),
+            widths: std::mem::take(&mut current.widths),
+        };
         if length >= MIN_RUN {
-            runs.push(std::mem::take(current));
+            runs.push(run);
         }
-        current.clear();
+    };
+    let push = |current: &mut Polyline, (p, f): ([f64; 2], f64)| {
+        if current.points.last() != Some(&p) {
+            current.points.push(p);
+            current.widths.push(width * f);
+        }
     };
     for (i, l) in chain.iter().enumerate() {
         // a gap between lines (one cut by the near plane) ends the run
@@ -140,18 +154,20 @@ pub fn visible_runs(
         }
         let n = (l.length() / 0.5).ceil().max(1.0) as usize;
         // a run's points: where it starts, the ends of lines it passes, and where it stops
-        let mut last_visible: Option<[f64; 2]> = None;
+        let mut last_visible: Option<([f64; 2], f64)> = None;
         for s in 0..=n {
-            let (p, z) = l.at(s as f64 / n as f64, orthographic);
+            let t = s as f64 / n as f64;
+            let (p, z) = l.at(t, orthographic);
             let inside = (0.0..=w).contains(&p[0]) && (0.0..=h).contains(&p[1]);
+            let here = (p, l.factor(t));
             if inside && z > 0.0 && rule.visible(img, p, z, l.kind) {
-                if (current.is_empty() || s == n) && current.last() != Some(&p) {
-                    current.push(p);
+                if current.points.is_empty() || s == n {
+                    push(&mut current, here);
                 }
-                last_visible = Some(p);
+                last_visible = Some(here);
             } else {
-                if let Some(q) = last_visible.filter(|q| current.last() != Some(q)) {
-                    current.push(q);
+                if let Some(q) = last_visible {
+                    push(&mut current, q);
                 }
                 last_visible = None;
                 close(&mut current);
@@ -170,6 +186,8 @@ pub struct VisibleLines {
     pub depth_offset: f32,
     /// Runs of one kind whose ends are this close (pixels) are joined (`strokes::join_runs`).
     pub gaps: [f64; INK_KINDS],
+    /// Each kind's width in pixels (`strokes::widths`).
+    pub widths: [f64; INK_KINDS],
     /// Join strokes of different kinds too (`Outlines::join_kinds`).
     pub join_kinds: bool,
     pub view: ViewSlot,
@@ -191,18 +209,25 @@ impl HostStep for VisibleLines {
         let rule = Visibility::of(self.depth_offset, cx.cam, frame.height);
         let img = DepthImage { depth, width: frame.width as usize, height: frame.height as usize };
         let mut out = Vec::new();
-        for ((item, rec), chains) in cx.scene.scene.items.iter().zip(cx.records).zip(&view.chains) {
+        let items = cx.scene.scene.items.iter().zip(cx.records);
+        for (((item, rec), chains), draw) in items.zip(&view.chains).zip(&view.draws) {
             let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
+            // each chain's segments, in order, are the item's line instances (with their widths)
+            let mut instances =
+                view.instances[draw.instances.start as usize..draw.instances.end as usize].iter();
             let mut runs = Vec::new();
             for c in chains {
                 let kind = c.kind as usize;
-                let screen: Vec<_> =
-                    c.points.windows(2).filter_map(|s| projector.project(s[0], s[1], kind)).collect();
-                runs.extend(
-                    visible_runs(&screen, cx.cam.orthographic, &img, rule)
-                        .into_iter()
-                        .map(|points| Polyline { kind, points }),
-                );
+                let screen: Vec<_> = c
+                    .points
+                    .windows(2)
+                    .zip(instances.by_ref())
+                    .filter_map(|(s, line)| {
+                        let seen = projector.project(s[0], s[1], kind)?;
+                        Some(ScreenLine { scale: line.scale.map(f64::from), ..seen })
+                    })
+                    .collect();
+                runs.extend(visible_runs(&screen, cx.cam.orthographic, &img, rule, self.widths[kind]));
             }
             let gap = |k: usize| self.gaps[k];
             let strokes = drop_covered(join_runs(runs, true, gap), gap);
@@ -237,9 +262,23 @@ mod tests {
         assert!(cov[7 * 16 + 8] > 0.0 && cov[5 * 16 + 8] == 0.0);
         let hidden = ScreenLine { za: 3.0, zb: 3.0, ..line };
         assert!(coverage_image(&[hidden], &[1.5], false, &img, rule).iter().all(|&c| c == 0.0));
-        let runs = visible_runs(&[line], false, &img, rule);
+        let runs = visible_runs(&[line], false, &img, rule, 1.5);
         assert_eq!(runs.len(), 1);
-        assert_eq!(runs[0].first(), Some(&[2.0, 8.5]));
-        assert_eq!(runs[0].last(), Some(&[14.0, 8.5]));
+        assert_eq!(runs[0].points.first(), Some(&[2.0, 8.5]));
+        assert_eq!(runs[0].points.last(), Some(&[14.0, 8.5]));
+        assert_eq!(runs[0].widths, vec![1.5, 1.5]);
+        // a tapered line cut where a wall in front begins (x >= 9): the width at each point is
+        // the factor there times the kind's width, where it stops too
+        let mut wall = depth.clone();
+        for row in wall.chunks_mut(16) {
+            row[9..].fill(1.0);
+        }
+        let wall_img = DepthImage { depth: &wall, width: 16, height: 16 };
+        let tapered = ScreenLine { scale: [0.2, 1.0], ..line };
+        let runs = visible_runs(&[tapered], false, &wall_img, rule, 2.0);
+        assert_eq!(runs.len(), 1);
+        assert_eq!(runs[0].points, vec![[2.0, 8.5], [9.5, 8.5]]);
+        let want = [0.4, 2.0 * (0.2 + 0.8 * 7.5 / 12.0)];
+        assert!(runs[0].widths.iter().zip(want).all(|(w, x)| (w - x).abs() < 1e-12), "{:?}", runs[0].widths);
     }
 }
