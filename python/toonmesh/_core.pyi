@@ -335,6 +335,7 @@ class Outlines:
         contours: Optional[str] = ...,
         suggestive_threshold: Optional[float] = ...,
         min_crease_length: Optional[float] = ...,
+        max_crease_turn: Optional[float] = ...,
         image_rule: Optional[str] = ...,
         normal_angle: Optional[float] = ...,
         depth_jump: Optional[float] = ...,
@@ -352,6 +353,7 @@ class Outlines:
     contours: Final[str]
     suggestive_threshold: Final[float]
     min_crease_length: Final[float]
+    max_crease_turn: Final[float]
     image_rule: Final[str]
     normal_angle: Final[float]
     depth_jump: Final[float]
