@@ -45,7 +45,7 @@ fn turn(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
 /// its vertices of two creases (see the module's rule). `max_turn` >= 180 keeps every crease;
 /// boundaries and non-manifold edges are never dropped.
 pub fn drop_crooked_creases(fe: &mut FeatureEdges, positions: &[[f64; 3]], max_turn: f64) {
-    if !(max_turn < 180.0) || fe.crease.is_empty() {
+    if max_turn >= 180.0 || max_turn.is_nan() || fe.crease.is_empty() {
         return;
     }
     let pieces = CreasePieces::of(&fe.crease);

@@ -39,9 +39,13 @@ pub struct MeshLines {
     statics: [Statics; 2],
     /// Without and with welding: the normals and curvature the contours are traced on.
     contours: [OnceLock<ContourMesh>; 2],
-    /// The mesh split at the creases drawn under each (welding, crease angle, shortest crease).
-    split: Mutex<HashMap<(bool, u64, u64, u64), Arc<SplitContours>>>,
+    /// The mesh split at the creases drawn under each crease rule.
+    split: Mutex<HashMap<SplitKey, Arc<SplitContours>>>,
 }
+
+/// Welding, then the bits of the crease angle, the shortest crease piece and the largest mean
+/// turn of a piece.
+type SplitKey = (bool, u64, u64, u64);
 
 /// A mesh split at its drawn creases (smooth contours run between them) and those hard edges,
 /// sorted, with its non-manifold edges: where the face-edge rule draws the silhouette.
