@@ -5,7 +5,7 @@
 //! length of the part, a scan's noise makes short isolated pieces.
 
 /// The shortest crease piece a rendered outline draws when none is given, as a fraction of the
-/// mesh's bounding-box diagonal: it keeps a CAD part's creases (fandisk's are one piece 2.5
+/// mesh's bounding-box diagonal: it keeps a CAD part's creases (fandisk's are one piece 9.2
 /// diagonals long) and drops three quarters of the scattered pieces on the Stanford bunny scan.
 pub const DEFAULT_MIN_CREASE_LENGTH: f64 = 0.02;
 
