@@ -1553,6 +1553,7 @@ RENDER_CASES: List[Case] = [
             Param("suggestive_threshold", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("curvature_smoothing", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("min_crease_length", Number(0.0, math.inf, open_hi=True), none=OK),
+            Param("max_crease_turn", Number(0.0, 180.0), none=OK),
             Param("image_rule", Name(("discontinuity", "paper")), none=OK),
             Param("normal_angle", Number(0.0, 180.0), none=OK),
             Param("depth_jump", Number(0.0, F32_MAX), none=OK),

@@ -184,6 +184,36 @@ def test_short_crease_pieces_are_dropped_on_a_scan_and_kept_on_a_cad_part():
     assert creases(V, F, min_crease_length=100.0) == []
 
 
+def test_zig_zag_crease_pieces_are_dropped_on_a_scan_and_kept_on_a_cad_part():
+    from conftest import load_mesh
+    from toonmesh.bench.render import stroke_stats
+    from toonmesh.data import bunny
+
+    r = tm.Renderer()
+
+    def creases(mesh, **kw):
+        res = r.render(mesh, outputs=("lines",), width=600, height=600, outlines=tm.Outlines("mesh", **kw))
+        return [l for l, k in zip(res.lines, res.line_kinds) if k in ("ridge", "valley")]
+
+    assert tm.Outlines().max_crease_turn == 30.0
+    scan = r.add_mesh(*bunny())
+    n_short, short_under_5, _, turn_short = stroke_stats(creases(scan, max_crease_turn=180.0))
+    n, under_5, _, turn = stroke_stats(creases(scan))
+    # measured: 99 strokes under the shortest-piece rule alone, 21 with the turn rule; the
+    # saw-tooth pieces along the ears' rims go, so the strokes left turn less per pixel and
+    # fewer of them are dashes
+    assert 0 < n < 0.4 * n_short
+    assert turn < 0.8 * turn_short and under_5 < short_under_5
+    # a bound of 0 drops every piece with a vertex of two creases that is not a coarse curve
+    assert len(creases(scan, max_crease_turn=0.0)) < n
+    cad = r.add_mesh(*load_mesh("fandisk"))
+    plain = creases(cad, min_crease_length=0.0, max_crease_turn=180.0)
+    default = creases(cad)
+    assert len(default) == len(plain) > 0
+    for a, b in zip(default, plain):
+        np.testing.assert_array_equal(a, b)
+
+
 def _ink_per_pixel_of_line(res, kind):
     """Ink coverage summed over the picture per pixel of visible line of `kind`: its mean width."""
     length = _pieces(res, kind).sum()
@@ -227,8 +257,10 @@ def test_strokes_of_different_kinds_join_when_asked():
 
     V, F = bunny()
     kw = dict(outputs=("lines",), width=SIZE, height=SIZE)
-    apart = tm.render(V, F, outlines=tm.Outlines("mesh"), **kw)
-    joined = tm.render(V, F, outlines=tm.Outlines("mesh", join_kinds=True), **kw)
+    # every crease piece long enough drawn, zig-zags too: many creases meet the silhouette
+    every = dict(max_crease_turn=180.0)
+    apart = tm.render(V, F, outlines=tm.Outlines("mesh", **every), **kw)
+    joined = tm.render(V, F, outlines=tm.Outlines("mesh", join_kinds=True, **every), **kw)
     assert tm.Outlines().join_kinds is False and tm.Outlines(join_kinds=True).join_kinds is True
     length = lambda r: sum(np.linalg.norm(np.diff(l, axis=0), axis=1).sum() for l in r.lines)  # noqa: E731
     assert len(joined.lines) < 0.85 * len(apart.lines)

@@ -241,7 +241,8 @@ def test_settings_pickle_and_compare_by_value():
         tm.Camera.look_at((1, 2, 3), (0, 1, 0), up=(0, 0, 1), fov_y=50, near=0.1, far=20),
         tm.Camera.fit((1, 0, 0), orthographic=True),
         tm.Camera.orthographic((0, 0, 5), height=3),
-        tm.Outlines("both", silhouette=tm.LineStyle("#ff0000", 3), crease=False, image="#00ff00", crease_angle=40, weld=False),
+        tm.Outlines("both", silhouette=tm.LineStyle("#ff0000", 3), crease=False, image="#00ff00", crease_angle=40, weld=False,
+                    max_crease_turn=45),
         tm.LineStyle((0.1, 0.2, 0.3), 2.5),
     ]
     for obj in objects:

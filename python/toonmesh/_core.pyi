@@ -336,6 +336,7 @@ class Outlines:
         suggestive_threshold: Optional[float] = ...,
         curvature_smoothing: Optional[float] = ...,
         min_crease_length: Optional[float] = ...,
+        max_crease_turn: Optional[float] = ...,
         image_rule: Optional[str] = ...,
         normal_angle: Optional[float] = ...,
         depth_jump: Optional[float] = ...,
@@ -354,6 +355,7 @@ class Outlines:
     suggestive_threshold: Final[float]
     curvature_smoothing: Final[Optional[float]]
     min_crease_length: Final[float]
+    max_crease_turn: Final[float]
     image_rule: Final[str]
     normal_angle: Final[float]
     depth_jump: Final[float]

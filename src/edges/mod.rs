@@ -3,6 +3,8 @@
 
 pub mod chains;
 pub mod contours;
+pub mod crease_pieces;
+pub mod crooked_creases;
 pub mod detect;
 pub mod face_clusters;
 pub mod feature;

@@ -111,21 +111,24 @@ impl Outline {
     }
 }
 
-/// A mesh's view-independent lines per crease rule (crease angle, shortest crease piece), found
-/// once each and kept, so that each view of the mesh only finds its silhouettes.
+/// A mesh's view-independent lines per crease rule (crease angle, shortest crease piece, largest
+/// mean turn of a piece), found once each and kept, so that each view of the mesh only finds
+/// its silhouettes.
 #[derive(Debug, Default)]
-pub struct Statics(Mutex<HashMap<(u64, u64), Arc<Outline>>>);
+pub struct Statics(Mutex<HashMap<[u64; 3], Arc<Outline>>>);
 
 impl Statics {
-    /// The lines at `crease_angle` with crease pieces of at least `min_crease_length`, from
-    /// `find` (the mesh's feature edges under that rule) the first time.
+    /// The lines at `crease_angle` with crease pieces of at least `min_crease_length` that turn
+    /// by at most `max_crease_turn`, from `find` (the mesh's feature edges under that rule) the
+    /// first time.
     pub fn at(
         &self,
         crease_angle: f64,
         min_crease_length: f64,
+        max_crease_turn: f64,
         find: impl FnOnce() -> Result<FeatureEdges>,
     ) -> Result<Arc<Outline>> {
-        let key = (crease_angle.to_bits(), min_crease_length.to_bits());
+        let key = [crease_angle.to_bits(), min_crease_length.to_bits(), max_crease_turn.to_bits()];
         if let Some(s) = self.0.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
             return Ok(s.clone());
         }

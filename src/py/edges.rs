@@ -328,7 +328,7 @@ impl PyEdgeIndex {
         let with_kinds = args::flag("kinds", kinds).map_err(to_py)?;
         let (inner, statics) = (&self.inner, &self.statics);
         let all = detached(py, || {
-            let s = statics.at(crease_angle, 0.0, || inner.feature_edges(crease_angle))?;
+            let s = statics.at(crease_angle, 0.0, 180.0, || inner.feature_edges(crease_angle))?;
             Ok(s.with_silhouettes(&inner.silhouette(view)?))
         })?;
         let kinds = with_kinds.then(|| vec_to_numpy(py, all.kinds.iter().map(|&k| k as i8).collect()));

@@ -106,7 +106,12 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// features; 0 is the one-ring estimate). min_crease_length: crease pieces (creases joined
 /// at their vertices, ridges and valleys together) shorter than this fraction of the mesh's
 /// bounding-box diagonal are not drawn, so that a scan's noise does not scatter crease dashes
-/// while a CAD part's creases stay (default 0.02; 0 draws every crease).
+/// while a CAD part's creases stay (default 0.02; 0 draws every crease). max_crease_turn: crease
+/// pieces that turn by more than this many degrees on average at their vertices where two
+/// creases meet are not drawn: a scan's creases that follow the triangulation in a saw-tooth
+/// go, a CAD part's straight and gently curving creases stay (default 30; 180 draws every
+/// piece; with min_crease_length=0 it is the plain dihedral rule of
+/// :func:`toonmesh.edges.feature_edges`).
 ///
 /// crease_angle: dihedral angle in degrees above which an edge is a crease (default 30, as in
 /// :func:`toonmesh.edges.feature_edges`). weld: merge vertices at equal positions first, so
@@ -139,7 +144,8 @@ impl PyOutlines {
                         material = None,
                         image = None, crease_angle = None, weld = None, normal_threshold = None,
                         depth_threshold = None, depth_offset = None, contours = None,
-                        suggestive_threshold = None, curvature_smoothing = None, min_crease_length = None, image_rule = None,
+                        suggestive_threshold = None, curvature_smoothing = None, min_crease_length = None,
+                        max_crease_turn = None, image_rule = None,
                         normal_angle = None, depth_jump = None, taper = None, width_by_depth = None,
                         join_kinds = None))]
     #[allow(clippy::too_many_arguments)]
@@ -165,6 +171,7 @@ impl PyOutlines {
         suggestive_threshold: Obj<'_, '_>,
         curvature_smoothing: Obj<'_, '_>,
         min_crease_length: Obj<'_, '_>,
+        max_crease_turn: Obj<'_, '_>,
         image_rule: Obj<'_, '_>,
         normal_angle: Obj<'_, '_>,
         depth_jump: Obj<'_, '_>,
@@ -208,6 +215,7 @@ impl PyOutlines {
             o.curvature_smoothing = opt_number("curvature_smoothing", curvature_smoothing)?;
             o.min_crease_length =
                 opt_number("min_crease_length", min_crease_length)?.unwrap_or(o.min_crease_length);
+            o.max_crease_turn = opt_number("max_crease_turn", max_crease_turn)?.unwrap_or(o.max_crease_turn);
             if let Some(r) = image_rule {
                 o.image_rule = ImageRule::parse("image_rule", &text("image_rule", r)?)?;
             }
@@ -256,6 +264,7 @@ getters!(PyOutlines {
     /// None: 2 mean edge lengths, at most 1% of the bounding-box diagonal.
     curvature_smoothing -> Option<f64> = |o| o.curvature_smoothing;
     min_crease_length -> f64 = |o| o.min_crease_length;
+    max_crease_turn -> f64 = |o| o.max_crease_turn;
     /// "discontinuity" or "paper".
     image_rule -> &'static str = |o| o.image_rule.name();
     normal_angle -> f32 = |o| o.normal_angle;

@@ -13,6 +13,7 @@ use glam::{DMat4, DVec3};
 use crate::cancel::Cancel;
 use crate::edges::chains::chain_edges;
 use crate::edges::contours::ContourMesh;
+use crate::edges::crooked_creases::drop_crooked_creases;
 use crate::edges::outlines::{LineKind, Outline, Statics};
 use crate::edges::short_creases::drop_short_creases;
 use crate::edges::zero_set::Polylines;
@@ -38,9 +39,13 @@ pub struct MeshLines {
     statics: [Statics; 2],
     /// Without and with welding: the normals and curvature the contours are traced on.
     contours: [OnceLock<ContourMesh>; 2],
-    /// The mesh split at the creases drawn under each (welding, crease angle, shortest crease).
-    split: Mutex<HashMap<(bool, u64, u64), Arc<SplitContours>>>,
+    /// The mesh split at the creases drawn under each crease rule.
+    split: Mutex<HashMap<SplitKey, Arc<SplitContours>>>,
 }
+
+/// Welding, then the bits of the crease angle, the shortest crease piece and the largest mean
+/// turn of a piece.
+type SplitKey = (bool, u64, u64, u64);
 
 /// A mesh split at its drawn creases (smooth contours run between them) and those hard edges,
 /// sorted, with its non-manifold edges: where the face-edge rule draws the silhouette.
@@ -79,7 +84,12 @@ impl MeshLines {
     /// The mesh split at the creases `statics` draws (and non-manifold edges), for the smooth
     /// rule: where a crease line is drawn, the silhouette follows the face edges.
     fn split(&self, host: &HostMesh, outlines: &Outlines, statics: &Outline) -> Result<Arc<SplitContours>> {
-        let key = (outlines.weld, outlines.crease_angle.to_bits(), outlines.min_crease_length.to_bits());
+        let key = (
+            outlines.weld,
+            outlines.crease_angle.to_bits(),
+            outlines.min_crease_length.to_bits(),
+            outlines.max_crease_turn.to_bits(),
+        );
         if let Some(s) = self.split.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
             return Ok(s.clone());
         }
@@ -112,13 +122,15 @@ impl MeshLines {
     ) -> Result<MeshOutline> {
         let draws = |k: LineKind| outlines.styles[k as usize].is_some();
         let index = self.index(host, outlines.weld)?;
-        let min_crease = outlines.min_crease_length;
-        let statics = self.statics[outlines.weld as usize].at(outlines.crease_angle, min_crease, || {
-            let mut fe = crate::parallel::install(|| index.feature_edges(outlines.crease_angle))?;
-            let diagonal = Bounds::of(index.positions()).diagonal();
-            drop_short_creases(&mut fe, index.positions(), min_crease * diagonal);
-            Ok(fe)
-        })?;
+        let (min_crease, max_turn) = (outlines.min_crease_length, outlines.max_crease_turn);
+        let statics =
+            self.statics[outlines.weld as usize].at(outlines.crease_angle, min_crease, max_turn, || {
+                let mut fe = crate::parallel::install(|| index.feature_edges(outlines.crease_angle))?;
+                let diagonal = Bounds::of(index.positions()).diagonal();
+                drop_short_creases(&mut fe, index.positions(), min_crease * diagonal);
+                drop_crooked_creases(&mut fe, index.positions(), max_turn);
+                Ok(fe)
+            })?;
         let mut curves = Vec::new();
         let all = if !draws(LineKind::Silhouette) {
             (*statics).clone()

@@ -6,6 +6,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::edges::contours::{check_smoothing, check_threshold, DEFAULT_SUGGESTIVE_THRESHOLD};
+use crate::edges::crooked_creases::{check_max_crease_turn, DEFAULT_MAX_CREASE_TURN};
 use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
 use crate::edges::outlines::LineKind;
 use crate::edges::short_creases::DEFAULT_MIN_CREASE_LENGTH;
@@ -130,6 +131,11 @@ pub struct Outlines {
     /// Crease pieces (creases joined at their vertices) shorter than this fraction of the
     /// mesh's bounding-box diagonal are not drawn (`edges::short_creases`).
     pub min_crease_length: f64,
+    /// Crease pieces that turn by more than this many degrees on average where two of their
+    /// creases meet (a saw-tooth along the triangulation) are not drawn
+    /// (`edges::crooked_creases`); 180 keeps every piece.
+    #[serde(default = "default_max_crease_turn")]
+    pub max_crease_turn: f64,
     /// Merge vertices at equal positions before finding mesh-space lines, so that UV or normal
     /// seams are not taken for boundaries.
     pub weld: bool,
@@ -163,6 +169,11 @@ pub struct Outlines {
     pub join_kinds: bool,
 }
 
+/// Settings saved before the turn rule existed load with it at its default.
+fn default_max_crease_turn() -> f64 {
+    DEFAULT_MAX_CREASE_TURN
+}
+
 impl Default for Outlines {
     fn default() -> Self {
         Outlines::new(true, true)
@@ -183,6 +194,7 @@ impl Outlines {
             curvature_smoothing: None,
             crease_angle: DEFAULT_CREASE_ANGLE,
             min_crease_length: DEFAULT_MIN_CREASE_LENGTH,
+            max_crease_turn: DEFAULT_MAX_CREASE_TURN,
             weld: true,
             image_rule: ImageRule::Discontinuity,
             normal_angle: DEFAULT_NORMAL_ANGLE,
@@ -243,6 +255,7 @@ impl Outlines {
         };
         in_degrees("crease_angle", self.crease_angle)?;
         in_degrees("normal_angle", self.normal_angle as f64)?;
+        check_max_crease_turn(&field(prefix, "max_crease_turn"), self.max_crease_turn)?;
         // finite and >= 0, in the unit each is measured in
         for (name, t, unit) in [
             ("normal_threshold", self.normal_threshold as f64, ""),
