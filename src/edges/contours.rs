@@ -10,7 +10,7 @@
 //!   views, the lines artists draw on a neck or a haunch. The derivative test is cut at a
 //!   threshold relative to the mesh's feature size (so it does not depend on units).
 
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use rayon::prelude::*;
 
@@ -36,6 +36,8 @@ pub struct ContourMesh {
     clusters: FaceClusters,
     normals: Vec<[f64; 3]>,
     suggestive: Mutex<Option<(u64, Arc<SuggestiveBasis>)>>,
+    /// `auto_smoothing` of this mesh, once asked.
+    auto_smoothing: OnceLock<f64>,
 }
 
 /// What suggestive contours are traced on, per mesh and smoothing: the curvature, the feature
@@ -86,7 +88,13 @@ impl ContourMesh {
         let normals = vertex_normals(positions, &faces);
         let positions: Vec<[f64; 3]> = positions.par_iter().map(|p| p.map(|x| x.to_f64())).collect();
         let clusters = FaceClusters::build(&positions, &normals, &faces);
-        ContourMesh { positions, clusters, normals, suggestive: Mutex::new(None) }
+        ContourMesh {
+            positions,
+            clusters,
+            normals,
+            suggestive: Mutex::new(None),
+            auto_smoothing: OnceLock::new(),
+        }
     }
 
     /// A mesh whose smooth contours stop at hard edges: vertices split into their fans at the
@@ -104,7 +112,13 @@ impl ContourMesh {
         let positions: Vec<[f64; 3]> =
             split.source.par_iter().map(|&s| positions[s as usize].map(|x| x.to_f64())).collect();
         let clusters = FaceClusters::build(&positions, &split.normals, &split.faces);
-        Ok(ContourMesh { positions, clusters, normals: split.normals, suggestive: Mutex::new(None) })
+        Ok(ContourMesh {
+            positions,
+            clusters,
+            normals: split.normals,
+            suggestive: Mutex::new(None),
+            auto_smoothing: OnceLock::new(),
+        })
     }
 
     /// Smooth contours of one view.
@@ -115,7 +129,9 @@ impl ContourMesh {
     /// The curvature at `smoothing` (`mesh::curvature`; None: `auto_smoothing`) and what goes
     /// with it, computed when first asked at that smoothing.
     pub fn suggestive_basis(&self, smoothing: Option<f64>, cancel: &Cancel) -> Result<Arc<SuggestiveBasis>> {
-        let smoothing = smoothing.unwrap_or_else(|| auto_smoothing(&self.positions, &self.clusters.faces));
+        let smoothing = smoothing.unwrap_or_else(|| {
+            *self.auto_smoothing.get_or_init(|| auto_smoothing(&self.positions, &self.clusters.faces))
+        });
         let key = smoothing.to_bits();
         if let Some((k, b)) = &*self.suggestive.lock().unwrap_or_else(|e| e.into_inner()) {
             if *k == key {
@@ -197,8 +213,11 @@ fn to_viewer(view: View, p: [f64; 3]) -> [f64; 3] {
     }
 }
 
-/// Smooth contours of one view: the zero set of n . v over the faces, with `normals` the vertex
-/// normals the surface is shaded with, visiting only the clusters where n . v may change sign.
+/// Smooth contours of one view: the zero set of n . (eye - p) over the faces (n . d for a view
+/// direction d), with `normals` the vertex normals the surface is shaded with, interpolated
+/// unnormalised as Hertzmann and Zorin do (the same zero set as with the unit vector to the
+/// eye, without a square root per corner), visiting only the clusters where it may change
+/// sign.
 pub fn smooth_contours(
     positions: &[[f64; 3]],
     clusters: &FaceClusters,
@@ -206,8 +225,14 @@ pub fn smooth_contours(
     view: View,
 ) -> Polylines {
     let faces = clusters.select(view, |s| s == Sides::Both);
-    let ndotv = |v: u32| dot(normals[v as usize], to_viewer(view, positions[v as usize]));
-    zero_set(positions, &faces, ndotv, |_| [])
+    let facing = |v: u32| {
+        let (n, p) = (normals[v as usize], positions[v as usize]);
+        match view {
+            View::Eye(e) => dot(n, sub(e, p)),
+            View::Direction(d) => -dot(n, d),
+        }
+    };
+    zero_set(positions, &faces, facing, |_| [])
 }
 
 /// The feature size of a curved mesh (DeCarlo et al.'s rule): 1% of the reciprocal of the 10th

@@ -20,7 +20,7 @@ use crate::real::{dot, norm, sub};
 
 /// Faces per cluster: small enough that a contour's clusters hold few faces it does not
 /// cross, large enough that testing the clusters costs little beside them.
-const CLUSTER: usize = 64;
+const CLUSTER: usize = 32;
 
 /// Angles within this of the test's limit count as undecided, so rounding never skips a
 /// cluster the contour crosses.
@@ -31,8 +31,9 @@ struct Bound {
     centre: [f64; 3],
     radius: f64,
     axis: [f64; 3],
-    /// The cone's half-angle in radians (pi: no bound).
-    spread: f64,
+    /// Sine and cosine of the cone's half-angle plus MARGIN (cosine -1: no bound).
+    sin_spread: f64,
+    cos_spread: f64,
 }
 
 /// Which signs n . v may take over a cluster's vertices for a view.
@@ -98,17 +99,19 @@ fn bound(positions: &[[f64; 3]], normals: &[[f64; 3]], faces: &[[u32; 3]]) -> Bo
     let spread = if undefined || !(length > 0.0) || !axis.iter().all(|x| x.is_finite()) {
         std::f64::consts::PI
     } else {
-        corners().map(|v| dot(normals[v], axis).clamp(-1.0, 1.0).acos()).fold(0.0, f64::max)
+        corners().map(|v| dot(normals[v], axis).clamp(-1.0, 1.0).acos()).fold(0.0, f64::max) + MARGIN
     };
-    Bound { centre, radius, axis, spread }
+    Bound { centre, radius, axis, sin_spread: spread.sin(), cos_spread: spread.cos() }
 }
 
+/// The module comment's test in cosines, without an inverse trigonometric function per
+/// cluster: with reach = alpha + beta below 90 degrees, theta + reach < 90 degrees is
+/// cos(theta) > sin(reach), and theta - reach > 90 degrees is cos(theta) < -sin(reach).
 fn sides(b: &Bound, view: View) -> Sides {
-    use std::f64::consts::FRAC_PI_2;
-    if b.spread >= FRAC_PI_2 || !b.radius.is_finite() {
+    if !(b.cos_spread > 0.0) || !b.radius.is_finite() {
         return Sides::Both;
     }
-    let (toward, beta) = match view {
+    let (toward, sin_beta) = match view {
         View::Direction(d) => ([-d[0], -d[1], -d[2]], 0.0),
         View::Eye(e) => {
             let v = sub(e, b.centre);
@@ -116,18 +119,23 @@ fn sides(b: &Bound, view: View) -> Sides {
             if !(distance > b.radius) {
                 return Sides::Both;
             }
-            (v, (b.radius / distance).asin())
+            (v, b.radius / distance)
         }
     };
     let length = norm(toward);
     if !(length > 0.0) {
         return Sides::Both;
     }
-    let theta = (dot(toward, b.axis) / length).clamp(-1.0, 1.0).acos();
-    let reach = b.spread + beta + MARGIN;
-    if theta + reach < FRAC_PI_2 {
+    let cos_beta = (1.0 - sin_beta * sin_beta).max(0.0).sqrt();
+    let cos_reach = b.cos_spread * cos_beta - b.sin_spread * sin_beta;
+    if !(cos_reach > 0.0) {
+        return Sides::Both;
+    }
+    let sin_reach = b.sin_spread * cos_beta + b.cos_spread * sin_beta;
+    let cos_theta = dot(toward, b.axis) / length;
+    if cos_theta > sin_reach {
         Sides::Front
-    } else if theta - reach > FRAC_PI_2 {
+    } else if cos_theta < -sin_reach {
         Sides::Back
     } else {
         Sides::Both

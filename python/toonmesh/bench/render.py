@@ -278,6 +278,37 @@ def _outline_cost(subdiv: int, size: int, repeat: int) -> None:
                 title=f"What outlines cost: icosphere({subdiv}) at {size}x{size}, bands colour; median of {repeat}, in turns"))
 
 
+def _line_steps(subdiv: int, size: int, repeat: int) -> None:
+    """The frame's ``silhouettes`` step (finding a view's mesh lines) under each contour rule,
+    on the sphere clean and with noise, median over views around it; the first frame with
+    suggestive contours also measures the curvature, once per mesh."""
+    import math
+
+    import toonmesh as tm
+
+    views = [tm.Camera.look_at((3 * math.cos(a), 3 * math.sin(a), 1.0), fov_y=FOV_Y)
+             for a in np.linspace(0, 2 * math.pi, 7, endpoint=False)]
+    settings = [("contours='faces' (Kang et al.)", dict(contours="faces")), ("contours='auto' (the default)", {}),
+                ("auto + suggestive contours", dict(suggestive=True))]
+    rows = []
+    for noise in (0.0, 2e-4):
+        V, F = tm.shapes.icosphere(subdiv, noise=noise, seed=1)
+        r = tm.Renderer()
+        mesh = r.add_mesh(V, F)
+        base = None
+        for name, kw in settings:
+            outlines = tm.Outlines("mesh", **kw)
+            first = r.render(mesh, camera=views[0], width=size, height=size, outlines=outlines).timings["silhouettes"]
+            steps = [r.render(mesh, camera=c, width=size, height=size, outlines=outlines).timings["silhouettes"]
+                     for _ in range(max(1, repeat)) for c in views]
+            step = float(np.median(steps))
+            base = base or step
+            rows.append((f"icosphere({subdiv}, noise={noise:g}): {len(F):,} f", name, ms(first), ms(step), f"{step / base:.2f}x"))
+        del r
+    print(table(["mesh", "lines", "first frame's step", "step per view (median)", "against the face-edge rule"], rows,
+                title=f"Finding a view's mesh lines (the frame's 'silhouettes' step) at {size}x{size}, {len(views)} views"))
+
+
 # Kang, Kim and Yoon (2001): frames per second of their software renderer on a Pentium III, as
 # ranges over their models: outlines only, outlines + toon shading, + shadows.
 KANG_PAPER_FPS = ("about 80", "60-69", "45-50")
@@ -588,6 +619,7 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
         _stream(10 if quick else 100, 128 if quick else 512, repeat)
     if "outlines" in only:
         _outline_cost(subdiv, size, repeat)
+        _line_steps(subdiv, size, repeat)
     if "kang" in only:
         _kang(320 if quick else 640, 240 if quick else 480, 6 if quick else 30, repeat)
     if "accuracy" in only:
