@@ -236,10 +236,10 @@ def _polylines(points: np.ndarray, starts: np.ndarray) -> List[np.ndarray]:
 def contours(
     vertices: Any, faces: Any = None, *, eye: Any = None, direction: Any = None, weld: bool = False
 ) -> List[np.ndarray]:
-    """Smooth contours of one view (Hertzmann and Zorin 2000): the curve where n . v = 0, with n
-    interpolated linearly from the area-weighted vertex normals (the normals smooth shading
-    uses) and v the unit vector toward the eye, traced through the faces and chained across
-    them. Unlike :func:`silhouette` (face edges between front- and back-facing faces), it does
+    """Smooth contours of one view (Hertzmann and Zorin 2000): the zero set of n . (eye - p)
+    (n . -direction for an orthographic view), its vertex values from the area-weighted vertex
+    normals (the normals smooth shading uses) interpolated linearly, traced through the faces
+    and chained across them. Only the face clusters where it can change sign are visited. Unlike :func:`silhouette` (face edges between front- and back-facing faces), it does
     not follow the triangulation, so it does not zigzag on scanned or noisy surfaces.
 
     Give exactly one of ``eye`` (3,) (perspective) or ``direction`` (3,) (orthographic), as
