@@ -107,6 +107,47 @@ def test_torus_suggestive_contours_lie_where_radial_curvature_is_zero(eye):
     assert abs(_length(scaled) / 250.0 - total) < 1e-6 * total
 
 
+def _mean_edge(V, F):
+    return float(np.linalg.norm(V[F] - V[np.roll(F, 1, axis=1)], axis=2).mean())
+
+
+def test_a_scan_draws_its_shape_not_its_noise():
+    from toonmesh.data import bunny
+
+    V, F = bunny()
+    eye = V.mean(0) + np.array([0.3, 0.1, 1.0]) * 2.5 * np.ptp(V, 0).max()
+    raw = tm.edges.suggestive_contours(V, F, eye=eye, weld=True, smoothing=0.0)
+    default = tm.edges.suggestive_contours(V, F, eye=eye, weld=True)
+    assert len(default) * 5 < len(raw), (len(default), len(raw))
+    lengths = lambda lines: np.array([_length([l]) for l in lines])  # noqa: E731
+    assert np.median(lengths(default)) > 2 * np.median(lengths(raw))
+    # the default width is 2 mean edges, at most 1% of the diagonal: the bunny's is 1.7 edges
+    cap = 0.01 * np.linalg.norm(np.ptp(V, 0)) / _mean_edge(V, F)
+    assert 1.0 < cap < 2.0
+    explicit = tm.edges.suggestive_contours(V, F, eye=eye, weld=True, smoothing=min(2.0, cap))
+    # (the mean edge summed in another order: equal to rounding)
+    assert len(explicit) == len(default)
+    assert all(np.allclose(a, b, atol=1e-9) for a, b in zip(explicit, default))
+    # and it does not depend on units
+    scaled = tm.edges.suggestive_contours(V * 1e3, F, eye=eye * 1e3, weld=True)
+    assert len(scaled) == len(default)
+    assert abs(_length(scaled) / 1e3 - _length(default)) < 1e-6 * _length(default)
+
+
+def test_a_coarse_mesh_keeps_its_features():
+    from conftest import load_mesh
+
+    V, F = load_mesh("cow")
+    cap = 0.01 * np.linalg.norm(np.ptp(V, 0)) / _mean_edge(V, F)
+    assert cap < 1.0  # the cow's edges are 1.7% of its diagonal
+    eye = V.mean(0) + np.array([0.9, 0.3, 1.0]) * 2.5 * np.ptp(V, 0).max()
+    default = tm.edges.suggestive_contours(V, F, eye=eye, weld=True)
+    at_cap = tm.edges.suggestive_contours(V, F, eye=eye, weld=True, smoothing=cap)
+    wide = tm.edges.suggestive_contours(V, F, eye=eye, weld=True, smoothing=2.0)
+    assert len(default) == len(at_cap)
+    assert _length(default) > 2 * _length(wide)
+
+
 def test_hard_cases():
     V = np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [0, 0, 1], [0, -1, 0]], float)
     F = np.array([[0, 1, 2], [0, 1, 3], [0, 1, 4], [0, 1, 5], [0, 0, 3], [3, 4, 5]])

@@ -126,6 +126,30 @@ def test_scale_offset_orientation_and_dtype():
     np.testing.assert_allclose(single.k1, ref.k1, rtol=1e-3, atol=1e-3 * np.abs(ref.k1).max())
 
 
+def test_smoothing_measures_the_shape_under_noise_at_any_scale():
+    a, b, cc = 1.0, 0.7, 0.5
+    V, F = tm.shapes.icosphere(6)
+    noisy, _ = tm.shapes.icosphere(6, noise=0.004, seed=2)
+    x, y, z = (V * [a, b, cc]).T
+    q = x**2 / a**4 + y**2 / b**4 + z**2 / cc**4
+    mean = (x**2 + y**2 + z**2 - a**2 - b**2 - cc**2) / (2 * (a * b * cc) ** 2 * q**1.5)
+    noisy = noisy * [a, b, cc]
+    raw = tm.edges.curvature(noisy, F)
+    smooth = tm.edges.curvature(noisy, F, smoothing=2.0)
+    # the one-ring estimate follows the noise; at 2 mean edges the ellipsoid comes back
+    assert _median_rel(raw.mean, np.abs(mean)) > 0.5
+    assert _median_rel(smooth.mean, np.abs(mean)) < 0.15
+    assert np.mean(raw.k1 * raw.k2 < 0) > 0.2 and np.mean(smooth.k1 * smooth.k2 < 0) < 0.01
+    # the width is in mean edge lengths: the same answer in other units
+    for s in (1e-3, 1e3):
+        c = tm.edges.curvature(noisy * s + 5e3 * s, F, smoothing=2.0)
+        np.testing.assert_allclose(c.k1 * s, smooth.k1, rtol=1e-6, atol=1e-6 * np.abs(smooth.k1).max())
+    # a clean mesh keeps its values
+    clean = tm.edges.curvature(V * [a, b, cc], F, smoothing=2.0)
+    assert _median_rel(clean.mean, np.abs(mean)) < 0.03
+    assert np.all(np.isfinite(smooth.derivatives))
+
+
 def test_convex_shapes_have_no_negative_curvature_to_speak_of():
     V, F = tm.shapes.icosphere(4)
     c = tm.edges.curvature(V * [2.0, 1.0, 0.6], F)

@@ -111,6 +111,25 @@ def test_suggestive_contours_are_drawn_only_where_there_are_some(backend):
     assert np.count_nonzero((c[..., 0] > 150) & (c[..., 1] < 60) & (c[..., 2] < 60)) == 0
 
 
+def test_suggestive_contours_of_a_scan_use_the_curvature_at_a_feature_size():
+    from toonmesh.data import bunny
+
+    V, F = bunny()
+    r = tm.Renderer()
+    mesh = r.add_mesh(V, F)
+    kw = dict(outputs=("color", "lines"), width=SIZE, height=SIZE)
+    counts, passes = {}, set()
+    for smoothing in (0.0, None, 3.0):
+        res = r.render(mesh, outlines=tm.Outlines("mesh", suggestive=True, curvature_smoothing=smoothing), **kw)
+        counts[smoothing] = res.line_kinds.count("suggestive")
+        passes.add(tuple(res.passes))
+    assert counts[0.0] > 4 * counts[None] > 0 and counts[3.0] <= counts[None]
+    # the knob changes which lines, not which passes run
+    assert len(passes) == 1
+    assert tm.Outlines("mesh").curvature_smoothing is None
+    assert pickle.loads(pickle.dumps(tm.Outlines("mesh", curvature_smoothing=1.5))).curvature_smoothing == 1.5
+
+
 def test_svg_has_a_suggestive_group():
     V, F, _, _ = _torus(n_u=120, n_v=40)
     camera = tm.Camera.look_at(eye=(0.0, -4.0, 2.5), target=(0, 0, 0), up=(0, 0, 1))
