@@ -124,6 +124,14 @@ def test_suggestive_contours_of_a_scan_use_the_curvature_at_a_feature_size():
         counts[smoothing] = res.line_kinds.count("suggestive")
         passes.add(tuple(res.passes))
     assert counts[0.0] > 4 * counts[None] > 0 and counts[3.0] <= counts[None]
+    # faded by strength: thin (a fifth of the width) at the threshold, full width well past it
+    res = r.render(mesh, outlines=tm.Outlines("mesh", suggestive=True), **kw)
+    width = res.outlines.styles["suggestive"].width
+    faded = np.concatenate([w for w, k in zip(res.line_widths, res.line_kinds) if k == "suggestive"])
+    assert faded.min() >= 0.2 * width - 1e-4 and faded.max() <= width + 1e-4
+    assert faded.min() < 0.4 * width and faded.max() > 0.8 * width
+    others = np.concatenate([w for w, k in zip(res.line_widths, res.line_kinds) if k != "suggestive"])
+    assert np.all(others == res.outlines.styles["silhouette"].width)
     # the knob changes which lines, not which passes run
     assert len(passes) == 1
     assert tm.Outlines("mesh").curvature_smoothing is None

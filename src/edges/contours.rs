@@ -190,6 +190,22 @@ pub fn check_smoothing(arg: &str, s: f64) -> Result<f64> {
     }
 }
 
+/// How fast suggestive contours come in past the threshold, relative to the feature size squared
+/// (the authors' implementation fades them the same way): a line whose derivative test passes
+/// by this much has strength 1/2.
+pub const SUGGESTIVE_FADE: f64 = 0.03;
+
+/// The strength of a line whose test passes by `excess` (>= 0): excess / (fade + excess), 0 at
+/// the threshold and toward 1 well past it.
+fn strength(excess: f64, fade: f64) -> f64 {
+    let s = excess / (fade + excess);
+    if s.is_finite() {
+        s.clamp(0.0, 1.0)
+    } else {
+        1.0
+    }
+}
+
 /// Checks a suggestive-contour threshold: a finite number >= 0.
 pub fn check_threshold(arg: &str, t: f64) -> Result<f64> {
     if t.is_finite() && t >= 0.0 {
@@ -232,7 +248,7 @@ pub fn smooth_contours(
             View::Direction(d) => -dot(n, d),
         }
     };
-    zero_set(positions, &faces, facing, |_| [])
+    zero_set(positions, &faces, facing, |_| [], |_| 1.0)
 }
 
 /// The feature size of a curved mesh (DeCarlo et al.'s rule): 1% of the reciprocal of the 10th
@@ -284,6 +300,7 @@ pub fn suggestive_contours(basis: &SuggestiveBasis, view: View, threshold: f64) 
     };
     // a cluster that faces away fails the n . v > 0 condition everywhere
     let faces = basis.clusters.select(view, |s| s != Sides::Back);
+    let fade = SUGGESTIVE_FADE / (basis.feature_size * basis.feature_size);
     zero_set(
         &basis.positions,
         &faces,
@@ -292,5 +309,7 @@ pub fn suggestive_contours(basis: &SuggestiveBasis, view: View, threshold: f64) 
             let [_, test, ndotv] = fields(v);
             [test, ndotv]
         },
+        // the test divided by n . v: how far D_w kr / |w| passes the threshold
+        |[test, ndotv]| strength(test / ndotv, fade),
     )
 }

@@ -17,10 +17,13 @@ use super::chains::chain_edges;
 
 /// Polylines as one flat point list and the offsets where each starts (CSR): line i is
 /// `points[starts[i]..starts[i + 1]]`; a closed line repeats its first point at the end.
+/// `strength` holds a number per point (how strongly the line is there, in [0, 1]; 1 for a
+/// zero set without conditions).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Polylines {
     pub points: Vec<[f64; 3]>,
     pub starts: Vec<u32>,
+    pub strength: Vec<f64>,
 }
 
 impl Polylines {
@@ -36,6 +39,11 @@ impl Polylines {
     pub fn line(&self, i: usize) -> &[[f64; 3]] {
         &self.points[self.starts[i] as usize..self.starts[i + 1] as usize]
     }
+
+    /// Line i's strengths, one per point.
+    pub fn line_strength(&self, i: usize) -> &[f64] {
+        &self.strength[self.starts[i] as usize..self.starts[i + 1] as usize]
+    }
 }
 
 /// A piece's end: on a mesh edge (key `lo << 32 | hi`), or inside a face (cut by a condition).
@@ -43,6 +51,7 @@ impl Polylines {
 struct End {
     key: Option<u64>,
     p: [f64; 3],
+    strength: f64,
 }
 
 fn lerp(a: [f64; 3], b: [f64; 3], t: f64) -> [f64; 3] {
@@ -50,30 +59,39 @@ fn lerp(a: [f64; 3], b: [f64; 3], t: f64) -> [f64; 3] {
 }
 
 /// The zero set of `value` (a field given per vertex) over `faces` (any number of slices of
-/// them), kept where every field of `conditions` is > 0. The fields are read through functions
-/// of the vertex, so a caller computes them only for the faces it visits; each must give a
-/// vertex the same number whichever face asks.
+/// them), kept where every field of `conditions` is > 0, with `strength` of the conditions
+/// interpolated to each point. The fields are read through functions of the vertex, so a
+/// caller computes them only for the faces it visits; each must give a vertex the same number
+/// whichever face asks.
 pub fn zero_set<const K: usize>(
     positions: &[[f64; 3]],
     faces: &[&[[u32; 3]]],
     value: impl Fn(u32) -> f64 + Sync,
     conditions: impl Fn(u32) -> [f64; K] + Sync,
+    strength: impl Fn([f64; K]) -> f64 + Sync,
 ) -> Polylines {
+    let fields = Fields { value, conditions, strength };
     let pieces: Vec<[End; 2]> = faces
         .par_iter()
-        .flat_map_iter(|chunk| chunk.iter().filter_map(|f| face_piece(positions, f, &value, &conditions)))
+        .flat_map_iter(|chunk| chunk.iter().filter_map(|f| face_piece(positions, f, &fields)))
         .collect();
     chain_pieces(&pieces)
+}
+
+/// The functions a zero set reads.
+struct Fields<V, C, S> {
+    value: V,
+    conditions: C,
+    strength: S,
 }
 
 /// The piece of the zero set in one face, if any.
 fn face_piece<const K: usize>(
     positions: &[[f64; 3]],
     f: &[u32; 3],
-    value: &impl Fn(u32) -> f64,
-    conditions: &impl Fn(u32) -> [f64; K],
+    fields: &Fields<impl Fn(u32) -> f64, impl Fn(u32) -> [f64; K], impl Fn([f64; K]) -> f64>,
 ) -> Option<[End; 2]> {
-    let values = f.map(value);
+    let values = f.map(&fields.value);
     let positive = values.map(|x| x > 0.0);
     if positive[0] == positive[1] && positive[1] == positive[2] {
         return None;
@@ -95,11 +113,13 @@ fn face_piece<const K: usize>(
     debug_assert_eq!(n, 2);
     // the part of the piece (u in [0, 1] from end 0 to end 1) where every condition is > 0
     let (mut u0, mut u1) = (0.0f64, 1.0f64);
+    let (mut at0, mut at1) = ([0.0; K], [0.0; K]);
     if K > 0 {
-        let c = f.map(conditions);
+        let c = f.map(&fields.conditions);
         let at = |(lo, hi, t): (usize, usize, f64), k: usize| c[lo][k] + t * (c[hi][k] - c[lo][k]);
         for k in 0..K {
             let (c0, c1) = (at(ends[0], k), at(ends[1], k));
+            (at0[k], at1[k]) = (c0, c1);
             match (c0 > 0.0, c1 > 0.0) {
                 (true, true) => {}
                 (false, false) => return None,
@@ -111,19 +131,20 @@ fn face_piece<const K: usize>(
     if !(u1 > u0) {
         return None;
     }
+    let strength = |u: f64| (fields.strength)(std::array::from_fn(|k| at0[k] + u * (at1[k] - at0[k])));
     let point =
         |(lo, hi, t): (usize, usize, f64)| lerp(positions[f[lo] as usize], positions[f[hi] as usize], t);
     let (p0, p1) = (point(ends[0]), point(ends[1]));
     let key = |(lo, hi, _): (usize, usize, f64)| (f[lo] as u64) << 32 | f[hi] as u64;
     let a = if u0 > 0.0 {
-        End { key: None, p: lerp(p0, p1, u0) }
+        End { key: None, p: lerp(p0, p1, u0), strength: strength(u0) }
     } else {
-        End { key: Some(key(ends[0])), p: p0 }
+        End { key: Some(key(ends[0])), p: p0, strength: strength(0.0) }
     };
     let b = if u1 < 1.0 {
-        End { key: None, p: lerp(p0, p1, u1) }
+        End { key: None, p: lerp(p0, p1, u1), strength: strength(u1) }
     } else {
-        End { key: Some(key(ends[1])), p: p1 }
+        End { key: Some(key(ends[1])), p: p1, strength: strength(1.0) }
     };
     Some([a, b])
 }
@@ -131,15 +152,15 @@ fn face_piece<const K: usize>(
 /// Chains pieces that share an edge point into polylines (`chains::chain_edges`' rules).
 fn chain_pieces(pieces: &[[End; 2]]) -> Polylines {
     let mut ids: HashMap<u64, u32> = HashMap::with_capacity(pieces.len());
-    let mut points: Vec<[f64; 3]> = Vec::with_capacity(pieces.len() + 1);
-    let mut id_of = |e: &End, points: &mut Vec<[f64; 3]>| -> u32 {
+    let mut points: Vec<End> = Vec::with_capacity(pieces.len() + 1);
+    let mut id_of = |e: &End, points: &mut Vec<End>| -> u32 {
         match e.key {
             Some(k) => *ids.entry(k).or_insert_with(|| {
-                points.push(e.p);
+                points.push(*e);
                 points.len() as u32 - 1
             }),
             None => {
-                points.push(e.p);
+                points.push(*e);
                 points.len() as u32 - 1
             }
         }
@@ -147,7 +168,11 @@ fn chain_pieces(pieces: &[[End; 2]]) -> Polylines {
     let pairs: Vec<[u32; 2]> =
         pieces.iter().map(|[a, b]| [id_of(a, &mut points), id_of(b, &mut points)]).collect();
     let (flat, starts) = chain_edges(&pairs);
-    Polylines { points: flat.iter().map(|&i| points[i as usize]).collect(), starts }
+    Polylines {
+        points: flat.iter().map(|&i| points[i as usize].p).collect(),
+        starts,
+        strength: flat.iter().map(|&i| points[i as usize].strength).collect(),
+    }
 }
 
 #[cfg(test)]
@@ -172,15 +197,19 @@ mod tests {
             }
         }
         let value: Vec<f64> = positions.iter().map(|p| p[0] - 1.5).collect();
-        let lines = zero_set(&positions, &[&faces], |v| value[v as usize], |_| []);
+        let lines = zero_set(&positions, &[&faces], |v| value[v as usize], |_| [], |_| 1.0);
         assert_eq!(lines.len(), 1);
         assert!(lines.points.iter().all(|p| (p[0] - 1.5).abs() < 1e-12));
         // cut to y > 1.2 by a condition
         let cond: Vec<f64> = positions.iter().map(|p| p[1] - 1.2).collect();
-        let cut =
-            zero_set(&positions, &[&faces[..4], &faces[4..]], |v| value[v as usize], |v| [cond[v as usize]]);
+        let halves: [&[[u32; 3]]; 2] = [&faces[..4], &faces[4..]];
+        let cut = zero_set(&positions, &halves, |v| value[v as usize], |v| [cond[v as usize]], |c| c[0]);
         assert_eq!(cut.len(), 1);
         assert!(cut.points.iter().all(|p| p[1] >= 1.2 - 1e-12));
         assert!(cut.points.iter().any(|p| (p[1] - 1.2).abs() < 1e-12));
+        // the strength is the condition interpolated to each point: y - 1.2 on this line
+        assert_eq!(cut.strength.len(), cut.points.len());
+        assert!(cut.points.iter().zip(&cut.strength).all(|(p, s)| (s - (p[1] - 1.2)).abs() < 1e-12));
+        assert!(lines.strength.iter().all(|&s| s == 1.0));
     }
 }

@@ -99,7 +99,9 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 /// stroke even when their kinds differ (a silhouette running on into a crease), taking the kind
 /// of their longest part, in ``RenderResult.lines`` and the SVG (default False: strokes of one
 /// kind only). suggestive_threshold: the derivative test of suggestive contours, relative
-/// to the mesh's feature size (default 0.01). curvature_smoothing: the width, in mean edge
+/// to the mesh's feature size (default 0.01); a suggestive contour fades in by the strength
+/// with which it passes: its width goes from a fifth of its style's at the threshold toward the
+/// full width (half way where it passes by 0.03 / feature size^2, as the authors fade them). curvature_smoothing: the width, in mean edge
 /// lengths, over which the curvature of suggestive contours is averaged (as
 /// :func:`toonmesh.edges.curvature` with ``smoothing``), so a scan's noise does not draw
 /// (default None: 2, at most 1% of the bounding-box diagonal so a coarse mesh keeps its

@@ -29,7 +29,7 @@ use crate::render::scene::SceneItem;
 
 use super::projection::{Projector, ScreenLine};
 use super::settings::{ContourRule, Outlines};
-use super::stroke_width::StrokeWidth;
+use super::stroke_width::{strength_factor, StrokeWidth};
 
 /// A mesh's outline analysis, kept with it.
 #[derive(Default)]
@@ -207,6 +207,9 @@ pub struct LineDraw {
 pub struct Chain {
     pub kind: LineKind,
     pub points: Vec<[f64; 3]>,
+    /// How strongly the line is there at each point, in [0, 1] (a suggestive contour fades in
+    /// past its threshold); empty: fully.
+    pub strength: Vec<f64>,
 }
 
 /// The lines of one view: each scene item's chains, as the lines pass draws them (instances and
@@ -235,11 +238,19 @@ pub fn chains(outline: &MeshOutline, positions: &[[f64; 3]]) -> Vec<Chain> {
         let (flat, starts) = chain_edges(&of_kind);
         for w in starts.windows(2) {
             let points = flat[w[0] as usize..w[1] as usize].iter().map(|&v| positions[v as usize]).collect();
-            out.push(Chain { kind, points });
+            out.push(Chain { kind, points, strength: Vec::new() });
         }
     }
     for (kind, curves) in &outline.curves {
-        out.extend((0..curves.len()).map(|i| Chain { kind: *kind, points: curves.line(i).to_vec() }));
+        out.extend((0..curves.len()).map(|i| Chain {
+            kind: *kind,
+            points: curves.line(i).to_vec(),
+            strength: if *kind == LineKind::Suggestive {
+                curves.line_strength(i).to_vec()
+            } else {
+                Vec::new()
+            },
+        }));
     }
     out
 }
@@ -257,6 +268,7 @@ pub fn instances(
     for c in chains {
         let n = c.points.len();
         let (mut along, mut depths) = (vec![0.0; n], vec![0.0; n]);
+        let faded = c.strength.len() == n;
         if !rule.is_constant() {
             for i in 1..n {
                 let seen = projector.project(c.points[i - 1], c.points[i], 0);
@@ -269,8 +281,11 @@ pub fn instances(
             }
         }
         let closed = n > 2 && c.points[0] == c.points[n - 1];
-        let factors =
+        let mut factors =
             if rule.is_constant() { vec![1.0; n] } else { rule.factors(&along, &depths, closed, reference) };
+        if faded {
+            factors.iter_mut().zip(&c.strength).for_each(|(f, &s)| *f *= strength_factor(s));
+        }
         out.extend((1..n).map(|i| LineInstance {
             a: c.points[i - 1].map(|x| x as f32),
             kind: c.kind as u32,

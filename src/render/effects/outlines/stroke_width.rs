@@ -1,7 +1,8 @@
 //! How wide a mesh-space line is along its length, as a factor of its kind's width: thinning
 //! toward the ends of each chain over `taper` pixels of its projected length (as brush strokes
 //! and Freestyle's thickness modifiers do), and, optionally, scaled by depth, nearer lines
-//! wider. The `silhouettes` step gives each line its factors at both ends; the line pass, its
+//! wider; and a suggestive contour's by its strength (`strength_factor`). The `silhouettes`
+//! step gives each line its factors at both ends; the line pass, its
 //! CPU reference (`visibility::coverage_image`) and the visible strokes' widths
 //! (`visibility::visible_runs`, `RenderResult.line_widths`) interpolate them along the line.
 
@@ -16,6 +17,12 @@ pub const TAPER_FLOOR: f64 = 0.2;
 pub const DEPTH_FACTOR_RANGE: (f64, f64) = (0.25, 4.0);
 /// Longest taper, in pixels.
 pub const MAX_TAPER: f64 = 4096.0;
+
+/// The width factor of a line of `strength` in [0, 1] (a suggestive contour fading in past its
+/// threshold): down to `TAPER_FLOOR`, so a faint line is a thin one, as a brush would draw it.
+pub fn strength_factor(strength: f64) -> f64 {
+    TAPER_FLOOR + (1.0 - TAPER_FLOOR) * strength.clamp(0.0, 1.0)
+}
 
 /// Width along a chain: `taper` pixels at each end over which it thins to `TAPER_FLOOR`
 /// (0: no taper), and whether the width scales with reference depth / depth.
