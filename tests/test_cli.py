@@ -335,6 +335,16 @@ def test_edges_and_render_take_the_contour_rule_and_suggestive_contours(tmp_path
     assert flowing != smooth and silhouettes(flowing) == silhouettes(smooth)  # the same strokes, smoothed
     one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--smooth-strokes", "-1", check=False), "--smooth-strokes")
     assert '<g id="suggestive"' in smooth and '<g id="suggestive"' not in faces
+    # the curvature of suggestive contours at the one-ring: the scan's noise draws
+    in_process(capsys, "edges", bunny, "-o", "raw.svg", "--size", "300x300", "--suggestive", "--curvature-smoothing", "0")
+
+    def strokes(svg: str, kind: str) -> int:
+        group = svg.split(f'<g id="{kind}"')[1].split("</g>")[0]
+        return group.count("<polyline") + group.count("<path")
+
+    assert strokes((tmp_path / "raw.svg").read_text(), "suggestive") > 3 * strokes(smooth, "suggestive")
+    one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--suggestive", "--curvature-smoothing", "-1",
+                              check=False), "curvature_smoothing")
     in_process(capsys, "render", bunny, "-o", "b.png", "--size", "64x64", "--outlines", "mesh", "--contours", "smooth")
     assert (tmp_path / "b.png").stat().st_size > 0
     one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--contours", "zigzag", check=False), "--contours")

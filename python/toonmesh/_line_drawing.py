@@ -33,12 +33,13 @@ def view_lines(
     contours: Optional[str] = None,
     suggestive: bool = False,
     join_kinds: bool = False,
+    curvature_smoothing: Optional[float] = None,
 ) -> Dict[str, Any]:
     """The visible (and, with ``hidden``, every) outline polyline of one view, and the mesh's
-    feature edges; see :func:`write_npz` for the arrays. ``contours``, ``suggestive`` and
-    ``join_kinds`` as in :class:`toonmesh.Outlines`."""
+    feature edges; see :func:`write_npz` for the arrays. ``contours``, ``suggestive``,
+    ``join_kinds`` and ``curvature_smoothing`` as in :class:`toonmesh.Outlines`."""
     rule = dict(crease_angle=crease_angle, weld=weld, contours=contours, suggestive=suggestive or None,
-                join_kinds=join_kinds)
+                join_kinds=join_kinds, curvature_smoothing=curvature_smoothing)
     outlines = tm.Outlines("mesh", width=stroke_width, **rule)
     kw = dict(camera=camera, width=width, height=height, outputs=("lines",), backend=backend)
     seen = tm.render(vertices, faces, outlines=outlines, **kw)

@@ -203,7 +203,8 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
             args.outlines, width=args.outline_width, crease_angle=args.crease_angle, contours=args.contours,
             join_kinds=args.join_kinds,
             taper=args.taper, width_by_depth=args.width_by_depth,
-            suggestive=args.suggestive or None, image_rule=args.image_rule, normal_angle=args.normal_angle,
+            suggestive=args.suggestive or None, curvature_smoothing=args.curvature_smoothing,
+            image_rule=args.image_rule, normal_angle=args.normal_angle,
             depth_jump=args.depth_jump, normal_threshold=args.normal_threshold, depth_threshold=args.depth_threshold)
     return options
 
@@ -286,6 +287,9 @@ def _add_contour_arguments(p: argparse.ArgumentParser) -> None:
                    help="silhouettes on face edges (Kang et al.), the smooth contour through the faces "
                         "(clean on scans), or auto: smooth unless the mesh is flat-shaded; default: %(default)s")
     p.add_argument("--suggestive", action="store_true", help="add suggestive contours (DeCarlo et al.; default: off)")
+    p.add_argument("--curvature-smoothing", type=float, default=None, metavar="EDGES",
+                   help="the width their curvature is measured at, in mean edge lengths (0: the one-ring "
+                        "estimate; default: 2, at most 1%% of the bounding-box diagonal)")
     p.add_argument("--join-kinds", action=argparse.BooleanOptionalAction, default=tm.Outlines().join_kinds,
                    help="join strokes of different kinds that meet end to end into one (default: %(default)s)")
 
@@ -307,7 +311,7 @@ def cmd_edges(args: argparse.Namespace) -> int:
     lines = _line_drawing.view_lines(V, F, camera, width=w, height=h, crease_angle=args.crease_angle,
                                      weld=args.weld, stroke_width=args.stroke_width, hidden=args.hidden,
                                      backend=args.backend, contours=args.contours, suggestive=args.suggestive,
-                                     join_kinds=args.join_kinds)
+                                     join_kinds=args.join_kinds, curvature_smoothing=args.curvature_smoothing)
     if suffix == ".svg":
         _line_drawing.write_svg(args.out, lines, smooth=args.smooth_strokes)
     else:
