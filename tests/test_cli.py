@@ -345,6 +345,14 @@ def test_edges_and_render_take_the_contour_rule_and_suggestive_contours(tmp_path
     assert strokes((tmp_path / "raw.svg").read_text(), "suggestive") > 3 * strokes(smooth, "suggestive")
     one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--suggestive", "--curvature-smoothing", "-1",
                               check=False), "curvature_smoothing")
+    one_line_error(in_process(capsys, "render", bunny, "-o", "x.png", "--outlines", "image", "--suggestive",
+                              check=False), "--suggestive")
+    one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--eye", "0", "0", "0", check=False), "--eye")
+    # for a pen plotter: ordered strokes, every point kept
+    in_process(capsys, "edges", bunny, "-o", "plot.svg", "--size", "300x300", "--order", "plotter", "--simplify", "0")
+    plot = (tmp_path / "plot.svg").read_text()
+    assert plot != (tmp_path / "faces.svg").read_text() and plot.count(",") > smooth.count(",")
+    one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--simplify", "-1", check=False), "--simplify")
     in_process(capsys, "render", bunny, "-o", "b.png", "--size", "64x64", "--outlines", "mesh", "--contours", "smooth")
     assert (tmp_path / "b.png").stat().st_size > 0
     one_line_error(in_process(capsys, "edges", bunny, "-o", "x.svg", "--contours", "zigzag", check=False), "--contours")

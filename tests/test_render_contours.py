@@ -135,6 +135,10 @@ def test_suggestive_contours_of_a_scan_use_the_curvature_at_a_feature_size():
     # the knob changes which lines, not which passes run
     assert len(passes) == 1
     assert tm.Outlines("mesh").curvature_smoothing is None
+    # asked for where no mesh lines are drawn: refused, not dropped
+    with pytest.raises(ValueError, match="suggestive.*mesh"):
+        tm.Outlines("image", suggestive=True)
+    assert tm.Outlines("both", suggestive=True).styles["suggestive"] is not None
     assert pickle.loads(pickle.dumps(tm.Outlines("mesh", curvature_smoothing=1.5))).curvature_smoothing == 1.5
 
 

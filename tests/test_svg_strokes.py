@@ -31,11 +31,11 @@ def _closed(line):
 
 def test_smoothing_straightens_strokes_within_its_radius_and_keeps_their_ends(raw_bunny):
     res = raw_bunny
-    raw = [p for p, _, _ in res.strokes()]
+    raw = [p for p, _, _ in res.strokes(simplify=0)]
     assert all(np.array_equal(a, b) for a, b in zip(raw, res.lines)), "smooth=0, simplify=0: the lines as they are"
     turning = stroke_stats(raw)[3]
     for radius in (1.0, 3.0):
-        smooth = [p for p, _, _ in res.strokes(smooth=radius)]
+        smooth = [p for p, _, _ in res.strokes(smooth=radius, simplify=0)]
         assert stroke_stats(smooth)[3] < (0.85 if radius == 1.0 else 0.65) * turning
         for before, after in zip(res.lines, smooth):
             assert after.shape == before.shape

@@ -13,6 +13,7 @@ from typing import Any, Dict, List, Optional
 import numpy as np
 
 import toonmesh as tm
+from toonmesh import _strokes
 
 #: Depth offset (in pixel footprints) that lets every line through: no hidden-line removal.
 _SHOW_ALL = 1e30
@@ -67,10 +68,13 @@ def summary(lines: Dict[str, Any]) -> str:
     return text
 
 
-def write_svg(path: str, lines: Dict[str, Any], smooth: float = 0.0) -> None:
-    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg`, each stroke
-    smoothed over ``smooth`` pixels); with hidden lines, those go underneath, dashed and grey."""
-    svg = lines["seen"].svg(smooth=smooth)
+def write_svg(
+    path: str, lines: Dict[str, Any], smooth: float = 0.0, order: str = "drawing", simplify: float = _strokes.SIMPLIFY
+) -> None:
+    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg` with its
+    ``smooth``, ``order`` and ``simplify``); with hidden lines, those go underneath, dashed and
+    grey."""
+    svg = lines["seen"].svg(smooth=smooth, order=order, simplify=simplify)
     everything = lines["everything"]
     if everything is not None:
         polylines = "\n".join(

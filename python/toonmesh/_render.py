@@ -243,7 +243,7 @@ class RenderResult:
             f.write(data)
 
     def strokes(
-        self, *, smooth: float = _strokes.SMOOTH, simplify: float = 0.0
+        self, *, smooth: float = _strokes.SMOOTH, simplify: float = _strokes.SIMPLIFY
     ) -> List[Tuple[np.ndarray, np.ndarray, str]]:
         """The visible mesh-space lines as :meth:`svg` draws them: for each of :attr:`lines`, in
         order, ``(points, widths, kind)``: (K, 2) float64 pixel coordinates, (K,) float32 widths
@@ -256,8 +256,8 @@ class RenderResult:
                 stay where they are (the window shrinks toward them), a closed stroke stays
                 closed, and no point moves more than ``smooth`` pixels. At most 4096.
             simplify: drop points within this many pixels of the stroke, after smoothing
-                (Douglas-Peucker; default 0: every point). Where the width varies along a
-                stroke, its edges too stay within the tolerance.
+                (Douglas-Peucker; default 0.25, as :meth:`svg`; 0 keeps every point). Where the
+                width varies along a stroke, its edges too stay within the tolerance.
         """
         _strokes.check("drawing", simplify, smooth)
         return self._drawn_strokes(smooth, simplify, by_width=True)

@@ -23,7 +23,7 @@ import warnings
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import toonmesh as tm
-from toonmesh import _core
+from toonmesh import _core, _strokes
 from toonmesh._files import (
     IMAGE_SUFFIXES, check_distinct_names, image_suffix, read_mesh, seam_normals, view_paths, write_mesh,
 )
@@ -198,6 +198,9 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
         shadows = tm.Shadows(size=args.shadow_size, bias=args.shadow_bias)
         options["lights"] = [tm.Light.directional(key.direction, color=key.color, intensity=key.intensity,
                                                   space=key.space, shadows=shadows)]
+    if args.suggestive and args.outlines in ("none", "image"):
+        raise CliError(f"--suggestive: suggestive contours are mesh lines; they need --outlines mesh or both, "
+                       f"not {args.outlines}")
     if args.outlines != "none":
         options["outlines"] = tm.Outlines(
             args.outlines, width=args.outline_width, crease_angle=args.crease_angle, contours=args.contours,
@@ -296,14 +299,17 @@ def _add_contour_arguments(p: argparse.ArgumentParser) -> None:
 
 def cmd_edges(args: argparse.Namespace) -> int:
     """toonmesh edges: outline edges of a mesh file as SVG line art or NPZ arrays."""
-    from toonmesh import _line_drawing, _strokes
+    from toonmesh import _line_drawing
 
     suffix = os.path.splitext(args.out)[1].lower()
     if suffix not in (".svg", ".npz"):
         raise CliError(f"-o: expected a .svg or .npz file name, got {args.out}")
     _strokes.check_pixels("--smooth-strokes", args.smooth_strokes, _strokes.MAX_SMOOTH)
+    _strokes.check_pixels("--simplify", args.simplify)
     V, F = read_mesh(mesh_file(args.mesh))
     if args.eye is not None:
+        if not any(args.eye):
+            raise CliError("--eye: the direction to look from must not be 0 0 0")
         camera = tm.Camera.fit(args.eye, up=up_vector(args.up), orthographic=True)
     else:
         camera = tm.Camera.fit(view_direction(args.up), up=up_vector(args.up))
@@ -313,7 +319,7 @@ def cmd_edges(args: argparse.Namespace) -> int:
                                      backend=args.backend, contours=args.contours, suggestive=args.suggestive,
                                      join_kinds=args.join_kinds, curvature_smoothing=args.curvature_smoothing)
     if suffix == ".svg":
-        _line_drawing.write_svg(args.out, lines, smooth=args.smooth_strokes)
+        _line_drawing.write_svg(args.out, lines, smooth=args.smooth_strokes, order=args.order, simplify=args.simplify)
     else:
         _line_drawing.write_npz(args.out, lines)
     print(f"{args.mesh}: {_line_drawing.summary(lines)} ({w}x{h}) to {args.out}")
@@ -499,6 +505,11 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("--smooth-strokes", type=float, default=0.0, metavar="PX",
                    help="smooth each stroke of the SVG over this many pixels along it; no point moves more "
                         "(default 0: off)")
+    p.add_argument("--order", choices=_strokes.ORDERS, default="drawing",
+                   help="drawing: as found; plotter: each next stroke nearest where the pen stopped "
+                        "(default: %(default)s)")
+    p.add_argument("--simplify", type=float, default=_strokes.SIMPLIFY, metavar="PX",
+                   help="drop points within this many pixels of each stroke (default %(default)g; 0 keeps every point)")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_edges)
 

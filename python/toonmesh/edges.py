@@ -268,8 +268,9 @@ def suggestive_contours(
     smoothing: Optional[float] = None,
     weld: bool = False,
 ) -> List[np.ndarray]:
-    """Suggestive contours of one view (DeCarlo et al. 2003): where the radial curvature (see
-    :meth:`Curvature.radial`) is zero, its derivative along the projected view direction is
+    """Suggestive contours of one view (DeCarlo et al. 2003): where the radial curvature (the
+    normal curvature along the view direction projected into the tangent plane, k1 cos^2 +
+    k2 sin^2 of its angle to d1) is zero, its derivative along the projected view direction is
     positive, and the surface faces the viewer. They continue contours into the surface and
     draw the inner shape lines artists draw (a neck, a haunch, the inside of a bowl); a convex
     shape has none.

@@ -211,12 +211,20 @@ pub fn curvature<T: Real>(
     cancel.check()?;
     let normals = vertex_normals(n_vertices, faces, &corners);
     let ring = Buckets::<RingCorner>::corners_with_ids(n_vertices, faces)?;
-    let areas: Vec<f64> = (0..n_vertices)
-        .into_par_iter()
-        .map(|v| {
-            ring.at(v).iter().map(|&[_, _, id]| frames[id as usize / 3].corner_area[id as usize % 3]).sum()
-        })
-        .collect();
+    // each vertex's Voronoi area, for the patches' weights (only when smoothing)
+    let areas: Vec<f64> = if smoothing > 0.0 {
+        (0..n_vertices)
+            .into_par_iter()
+            .map(|v| {
+                ring.at(v)
+                    .iter()
+                    .map(|&[_, _, id]| frames[id as usize / 3].corner_area[id as usize % 3])
+                    .sum()
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
     let patches = (smoothing > 0.0).then(|| {
         let arrays: Vec<[f64; 3]> = p.iter().map(|q| q.to_array()).collect();
         let sigma = smoothing * mean_edge_length(&arrays, faces);

@@ -69,8 +69,8 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 
 /// Ink outlines for a render.
 ///
-/// kind: "mesh" (lines found on the mesh: Kang, Kim and Yoon), "image" (Sobel edges of the
-/// normal and depth buffers: Borquez and Yepez) or "both" (default). color and width: the common
+/// kind: "mesh" (lines found on the mesh: Kang, Kim and Yoon), "image" (edges found in the
+/// frame's normal and depth buffers, by ``image_rule`` below) or "both" (default). color and width: the common
 /// style of every kind (default black, 1.5 output pixels). Each kind can be styled on its own
 /// with a keyword: silhouette, boundary, crease (both ridge and valley), ridge, valley,
 /// nonmanifold, suggestive, material, image; each takes None or True (the common style), False (not

@@ -242,6 +242,13 @@ impl Outlines {
         if !self.mesh && !self.image {
             return Err(Error::invalid(field(prefix, "kind"), "must draw mesh lines, image edges or both"));
         }
+        // the other mesh kinds are on by default; suggestive contours are asked for
+        if !self.mesh && self.styles[LineKind::Suggestive as usize].is_some() {
+            return Err(Error::invalid(
+                field(prefix, "suggestive"),
+                "suggestive contours are lines found on the mesh: ask for kind \"mesh\" or \"both\", not \"image\"",
+            ));
+        }
         for (style, name) in self.styles.iter().zip(kind_names()) {
             if let Some(s) = style {
                 s.validate(&field(prefix, name))?;
