@@ -265,40 +265,44 @@ pub fn curvature<T: Real>(
 
     // Each vertex: the area-weighted mean of its faces' tensors in its tangent plane (then, when
     // smoothing, averaged over its patch), diagonalised.
-    let frames_v: Vec<(DVec3, DVec3)> = normals
-        .par_iter()
-        .map(|&n| {
-            let u0 = any_tangent(n);
-            (u0, n.cross(u0))
-        })
-        .collect();
-    let frame = |v: usize| frames_v[v];
-    let tensors: Vec<[f64; 3]> = (0..n_vertices)
-        .into_par_iter()
-        .map(|v| {
-            let (u0, v0) = frame(v);
-            corner_mean(ring.at(v), &frames, |face, fr| project_tensor(fr.t, fr.b, face_ii[face], u0, v0))
-                .unwrap_or([0.0; 3])
-        })
-        .collect();
-    cancel.check()?;
-    let tensors = match &patches {
-        Some(patches) => patches.average(
-            |at, from| {
-                let ((u, v), (nu, nv)) = (frame(from), frame(at));
-                project_tensor(u, v, tensors[from], nu, nv)
-            },
-            cancel,
-        )?,
-        None => tensors,
+    let frame = |v: usize| {
+        let u0 = any_tangent(normals[v]);
+        (u0, normals[v].cross(u0))
     };
-    let principal: Vec<(f64, f64, DVec3, DVec3)> = (0..n_vertices)
-        .into_par_iter()
-        .map(|v| {
-            let (u0, v0) = frame(v);
-            diagonalize(u0, v0, tensors[v])
-        })
-        .collect();
+    let tensor = |v: usize, (u0, v0): (DVec3, DVec3)| {
+        corner_mean(ring.at(v), &frames, |face, fr| project_tensor(fr.t, fr.b, face_ii[face], u0, v0))
+            .unwrap_or([0.0; 3])
+    };
+    let principal: Vec<(f64, f64, DVec3, DVec3)> = match &patches {
+        // one pass: the tensor in a frame, diagonalised
+        None => (0..n_vertices)
+            .into_par_iter()
+            .map(|v| {
+                let (u0, v0) = frame(v);
+                diagonalize(u0, v0, tensor(v, (u0, v0)))
+            })
+            .collect(),
+        Some(patches) => {
+            let frames_v: Vec<(DVec3, DVec3)> = (0..n_vertices).into_par_iter().map(frame).collect();
+            let tensors: Vec<[f64; 3]> =
+                (0..n_vertices).into_par_iter().map(|v| tensor(v, frames_v[v])).collect();
+            cancel.check()?;
+            let tensors = patches.average(
+                |at, from| {
+                    let ((u, v), (nu, nv)) = (frames_v[from], frames_v[at]);
+                    project_tensor(u, v, tensors[from], nu, nv)
+                },
+                cancel,
+            )?;
+            (0..n_vertices)
+                .into_par_iter()
+                .map(|v| {
+                    let (u0, v0) = frames_v[v];
+                    diagonalize(u0, v0, tensors[v])
+                })
+                .collect()
+        }
+    };
     cancel.check()?;
 
     // Each face's derivative of the tensor, from its vertices' tensors along its edges; then
@@ -330,14 +334,13 @@ pub fn curvature<T: Real>(
         .into_par_iter()
         .map(|v| {
             let (_, _, d1, d2) = principal[v];
+            let s = scale * scale;
             corner_mean(ring.at(v), &frames, |face, fr| {
                 project_derivative(fr.t, fr.b, face_dii[face], d1, d2)
             })
-            .unwrap_or([0.0; 4])
+            .map_or([0.0; 4], |c| c.map(|x| x / s))
         })
         .collect();
-    let s = scale * scale;
-    let derivatives: Vec<[f64; 4]> = derivatives.into_iter().map(|c| c.map(|x| x / s)).collect();
 
     // in the normalised coordinates every value is finite; only the scale can push them out of
     // range (a mesh below about 1e-154 units across, whose derivatives exceed f64)
