@@ -14,7 +14,7 @@ import copy
 import os
 import threading
 import warnings
-from typing import TYPE_CHECKING, Any, Dict, Iterator, List, Optional, Sequence, Tuple, TypedDict, Union
+from typing import TYPE_CHECKING, Any, Callable, Dict, Iterator, List, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 
@@ -189,8 +189,8 @@ class RenderResult:
       coordinates (x right, y down, origin at the image's top-left corner), with
       ``line_kinds`` naming each one's kind ("silhouette", "boundary", ...) and
       ``line_widths`` the width of its ink at each point, a (K,) float32 array of pixels (the
-      kind's width, times the outlines' taper and width by depth where they are used, as the
-      ink is drawn);
+      kind's width, times the outlines' taper and width by depth where they are used and a
+      suggestive contour's strength, as the ink is drawn);
     - ``passes``: every step that ran, in order; ``timings``: seconds per step, with ``frame``
       the whole render; GPU passes are timed on the GPU when ``timing_source`` is ``"gpu"``,
       otherwise only the frame as a whole (``"wall"``);
@@ -260,15 +260,17 @@ class RenderResult:
                 width varies along a stroke, its edges too stay within the tolerance.
         """
         _strokes.check("drawing", simplify, smooth)
-        return self._drawn_strokes(smooth, simplify, by_width=True)
+        return self._drawn_strokes(smooth, simplify, by_width=lambda kind: True)
 
-    def _drawn_strokes(self, smooth: float, simplify: float, by_width: bool) -> List[Tuple[np.ndarray, np.ndarray, str]]:
+    def _drawn_strokes(
+        self, smooth: float, simplify: float, by_width: Callable[[str], bool]
+    ) -> List[Tuple[np.ndarray, np.ndarray, str]]:
         if self.lines is None or self.line_kinds is None or self.line_widths is None:
             raise ValueError("lines: this render did not ask for the 'lines' output (outputs=(..., 'lines'))")
         out = []
         for points, widths, kind in zip(self.lines, self.line_widths, self.line_kinds):
             points = _strokes.smoothed(points, smooth)
-            keep = _strokes.kept(points, simplify, widths if by_width else None)
+            keep = _strokes.kept(points, simplify, widths if by_width(kind) else None)
             out.append((points[keep], widths[keep], kind))
         return out
 
@@ -296,19 +298,20 @@ class RenderResult:
                 every point. Filled outlines keep their edges within it too.
             smooth: smooth each stroke over this radius in pixels first (default 0: off; see
                 :meth:`strokes`: ends stay, closed strokes stay closed, no point moves more).
-            widths: "auto" (default: filled outlines where the outlines taper or scale width by
-                depth, otherwise polylines at each kind's width), "kind" (polylines at each
-                kind's width, centre lines a pen plotter can draw) or "point" (filled outlines
-                always).
+            widths: "auto" (default: filled outlines for the kinds whose ink changes width
+                along a stroke, with taper, width by depth or a suggestive contour's strength;
+                polylines at the kind's width for the others), "kind" (polylines at each kind's
+                width, centre lines a pen plotter can draw) or "point" (filled outlines always).
         """
         _strokes.check(order, simplify, smooth, widths)
         styles = self.outlines.styles if self.outlines is not None else {}
-        varying = widths == "point" or (
-            widths == "auto"
-            and self.outlines is not None
-            and (self.outlines.taper > 0 or self.outlines.width_by_depth)
-        )
-        strokes = self._drawn_strokes(smooth, simplify, by_width=varying)
+        if self.line_kinds is None or self.line_widths is None:
+            raise ValueError("lines: this render did not ask for the 'lines' output (outputs=(..., 'lines'))")
+        # the kinds whose ink changes width along a stroke (taper, width by depth, a suggestive
+        # contour's strength)
+        uneven = {k for w, k in zip(self.line_widths, self.line_kinds) if len(w) and np.ptp(w) > 0}
+        filled = lambda kind: widths == "point" or (widths == "auto" and kind in uneven)  # noqa: E731
+        strokes = self._drawn_strokes(smooth, simplify, by_width=filled)
         out = [
             '<?xml version="1.0" encoding="UTF-8"?>',
             f'<svg xmlns="http://www.w3.org/2000/svg" width="{self.width}" height="{self.height}" '
@@ -317,7 +320,7 @@ class RenderResult:
         for kind in sorted({k for _, _, k in strokes}):
             style = styles.get(kind) or LineStyle()
             color = "#" + "".join(f"{round(c * 255):02x}" for c in style.color)
-            if varying:
+            if filled(kind):
                 out.append(f'<g id="{kind}" fill="{color}" fill-rule="nonzero" stroke="none">')
             else:
                 out.append(
@@ -329,7 +332,7 @@ class RenderResult:
                 flips = _strokes.plotter_order([p for p, _ in group])
                 group = [(group[i][0][::-1], group[i][1][::-1]) if flip else group[i] for i, flip in flips]
             for points, w in group:
-                if varying:
+                if filled(kind):
                     out.append(f'<path d="{_strokes.outline_path(points, w)}"/>')
                 else:
                     out.append('<polyline points="' + " ".join(f"{x:.2f},{y:.2f}" for x, y in points) + '"/>')
