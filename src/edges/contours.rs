@@ -183,11 +183,7 @@ pub fn auto_smoothing(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> f64 {
 
 /// Checks a curvature smoothing width: a finite number >= 0 of mean edge lengths.
 pub fn check_smoothing(arg: &str, s: f64) -> Result<f64> {
-    if s.is_finite() && s >= 0.0 {
-        Ok(s)
-    } else {
-        Err(Error::invalid(arg, format!("must be a finite number of mean edge lengths >= 0, got {s}")))
-    }
+    non_negative(arg, s, " of mean edge lengths")
 }
 
 /// How fast suggestive contours come in past the threshold, relative to the feature size squared
@@ -208,10 +204,14 @@ fn strength(excess: f64, fade: f64) -> f64 {
 
 /// Checks a suggestive-contour threshold: a finite number >= 0.
 pub fn check_threshold(arg: &str, t: f64) -> Result<f64> {
-    if t.is_finite() && t >= 0.0 {
-        Ok(t)
+    non_negative(arg, t, "")
+}
+
+fn non_negative(arg: &str, x: f64, unit: &str) -> Result<f64> {
+    if x.is_finite() && x >= 0.0 {
+        Ok(x)
     } else {
-        Err(Error::invalid(arg, format!("must be a finite number >= 0, got {t}")))
+        Err(Error::invalid(arg, format!("must be a finite number{unit} >= 0, got {x}")))
     }
 }
 
