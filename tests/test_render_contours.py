@@ -325,3 +325,21 @@ def test_material_borders_between_scene_items(backend):
     rim = lambda res: _pieces(res, "boundary").sum()  # noqa: E731
     assert "material" not in off.line_kinds and rim(off) > rim(r) + 0.5 * SIZE
     assert r.passes == off.passes  # borders are lines of the same passes
+
+
+def test_a_double_sided_sheet_is_drawn_as_one_surface():
+    # a sheet stored twice, once per side (leaves, cloth): welded, its lines are the single
+    # sheet's, its border, not every edge of the grid as non-manifold silhouettes
+    V, F = tm.shapes.grid(10)
+    double = (np.r_[V, V], np.r_[F, F[:, ::-1] + len(V)])
+    camera = tm.Camera.look_at((0.3, -0.8, 1.5), target=(0.5, 0.5, 0.0))
+    kw = dict(camera=camera, width=200, height=200, outputs=("outline", "lines"))
+    single = tm.render(V, F, outlines=tm.Outlines("mesh"), **kw)
+    both = tm.render(*double, outlines=tm.Outlines("mesh", suggestive=True), **kw)
+    assert set(both.line_kinds) == {"boundary"} == set(single.line_kinds)
+    assert len(both.lines) == len(single.lines)
+    np.testing.assert_allclose(np.concatenate(both.lines), np.concatenate(single.lines), atol=1e-6)
+    assert np.count_nonzero(both.outline > 0.5) == np.count_nonzero(single.outline > 0.5)
+    # as stored (no welding), the two layers are two sheets, each with its border
+    apart = tm.render(*double, outlines=tm.Outlines("mesh", weld=False), **kw)
+    assert len(apart.lines) == 2 * len(single.lines)

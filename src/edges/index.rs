@@ -124,6 +124,11 @@ impl EdgeIndex {
         (0..self.normals.len() as u32).filter(|&f| self.normals[f as usize] == [0.0; 3]).collect()
     }
 
+    /// Whether any edge has three or more face-edges.
+    pub fn has_nonmanifold(&self) -> bool {
+        !self.nonmanifold.is_empty()
+    }
+
     pub fn feature_edges(&self, crease_angle: f64) -> Result<FeatureEdges> {
         feature_edges(&self.positions, &self.table, &self.normals, crease_angle)
     }

@@ -117,7 +117,8 @@ fn style(name: &str, obj: &Bound<'_, PyAny>, common: LineStyle) -> Result<Option
 ///
 /// crease_angle: dihedral angle in degrees above which an edge is a crease (default 30, as in
 /// :func:`toonmesh.edges.feature_edges`). weld: merge vertices at equal positions first, so
-/// UV or normal seams are not drawn as boundaries (default True).
+/// UV or normal seams are not drawn as boundaries, and a sheet stored double-sided (each face
+/// twice, back to back) is drawn as one surface with its border (default True).
 ///
 /// image_rule: how image-space edges are found. "discontinuity" (default): between neighbouring
 /// pixels whose normals turn by more than normal_angle degrees (default 25), whose depths jump

@@ -19,6 +19,7 @@ use crate::edges::short_creases::drop_short_creases;
 use crate::edges::zero_set::Polylines;
 use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
+use crate::mesh::weld::without_back_to_back;
 use crate::mesh::Bounds;
 use crate::render::gpu_mesh::{GpuMesh, HostMesh, NormalMode};
 use crate::render::graph::effect::{HostInputs, HostStep};
@@ -41,6 +42,9 @@ pub struct MeshLines {
     contours: [OnceLock<ContourMesh>; 2],
     /// The mesh split at the creases drawn under each crease rule.
     split: Mutex<HashMap<SplitKey, Arc<SplitContours>>>,
+    /// With welding, the faces less those back to back with another (`weld::without_back_to_back`;
+    /// None: all of them), decided with the welded index.
+    back_to_back: OnceLock<Option<Vec<[u32; 3]>>>,
 }
 
 /// Welding, then the bits of the crease angle, the shortest crease piece and the largest mean
@@ -68,16 +72,45 @@ impl MeshLines {
         rec.derived(MeshLines::default)
     }
 
+    /// The index of the faces lines are found on (`faces`).
     pub fn index(&self, host: &HostMesh, weld: bool) -> Result<&EdgeIndex> {
         self.indices[weld as usize]
-            .get_or_init(|| crate::parallel::install(|| EdgeIndex::build(&host.positions, &host.faces, weld)))
+            .get_or_init(|| {
+                crate::parallel::install(|| {
+                    let index = EdgeIndex::build(&host.positions, &host.faces, weld)?;
+                    // only faces back to back make non-manifold edges of a sheet
+                    let kept = match index.weld_map() {
+                        Some(map) if index.has_nonmanifold() => without_back_to_back(&host.faces, map),
+                        _ => None,
+                    };
+                    let index = match &kept {
+                        Some(faces) => EdgeIndex::build(&host.positions, faces, weld)?,
+                        None => index,
+                    };
+                    if weld {
+                        let _ = self.back_to_back.set(kept);
+                    }
+                    Ok(index)
+                })
+            })
             .as_ref()
             .map_err(Clone::clone)
     }
 
+    /// The faces lines are found on: with welding, a sheet stored double-sided counts once.
+    fn faces<'a>(&'a self, host: &'a HostMesh, weld: bool) -> &'a [[u32; 3]] {
+        if weld && self.index(host, weld).is_ok() {
+            if let Some(Some(faces)) = self.back_to_back.get() {
+                return faces;
+            }
+        }
+        &host.faces
+    }
+
     fn contour_mesh(&self, host: &HostMesh, weld: bool) -> &ContourMesh {
         self.contours[weld as usize].get_or_init(|| {
-            crate::parallel::install(|| ContourMesh::build(&host.positions, &host.faces, weld))
+            let faces = self.faces(host, weld);
+            crate::parallel::install(|| ContourMesh::build(&host.positions, faces, weld))
         })
     }
 
@@ -102,7 +135,7 @@ impl MeshLines {
             .collect();
         hard.sort_unstable();
         let mesh = crate::parallel::install(|| {
-            ContourMesh::split_at(&host.positions, &host.faces, outlines.weld, &hard)
+            ContourMesh::split_at(&host.positions, self.faces(host, outlines.weld), outlines.weld, &hard)
         })?;
         let s = Arc::new(SplitContours { mesh, hard });
         self.split.lock().unwrap_or_else(|e| e.into_inner()).insert(key, s.clone());
