@@ -17,8 +17,8 @@ use super::chains::chain_edges;
 
 /// Polylines as one flat point list and the offsets where each starts (CSR): line i is
 /// `points[starts[i]..starts[i + 1]]`; a closed line repeats its first point at the end.
-/// `strength` holds a number per point (how strongly the line is there, in [0, 1]; 1 for a
-/// zero set without conditions).
+/// `strength` holds a number per point (how strongly the line is there, in [0, 1]), or nothing
+/// for a zero set without conditions, whose every point is there fully.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Polylines {
     pub points: Vec<[f64; 3]>,
@@ -40,8 +40,11 @@ impl Polylines {
         &self.points[self.starts[i] as usize..self.starts[i + 1] as usize]
     }
 
-    /// Line i's strengths, one per point.
+    /// Line i's strengths, one per point (none: fully there).
     pub fn line_strength(&self, i: usize) -> &[f64] {
+        if self.strength.is_empty() {
+            return &[];
+        }
         &self.strength[self.starts[i] as usize..self.starts[i + 1] as usize]
     }
 }
@@ -75,7 +78,7 @@ pub fn zero_set<const K: usize>(
         .par_iter()
         .flat_map_iter(|chunk| chunk.iter().filter_map(|f| face_piece(positions, f, &fields)))
         .collect();
-    chain_pieces(&pieces)
+    chain_pieces(&pieces, K > 0)
 }
 
 /// The functions a zero set reads.
@@ -150,7 +153,7 @@ fn face_piece<const K: usize>(
 }
 
 /// Chains pieces that share an edge point into polylines (`chains::chain_edges`' rules).
-fn chain_pieces(pieces: &[[End; 2]]) -> Polylines {
+fn chain_pieces(pieces: &[[End; 2]], with_strength: bool) -> Polylines {
     let mut ids: HashMap<u64, u32> = HashMap::with_capacity(pieces.len());
     let mut points: Vec<End> = Vec::with_capacity(pieces.len() + 1);
     let mut id_of = |e: &End, points: &mut Vec<End>| -> u32 {
@@ -171,7 +174,10 @@ fn chain_pieces(pieces: &[[End; 2]]) -> Polylines {
     Polylines {
         points: flat.iter().map(|&i| points[i as usize].p).collect(),
         starts,
-        strength: flat.iter().map(|&i| points[i as usize].strength).collect(),
+        strength: match with_strength {
+            true => flat.iter().map(|&i| points[i as usize].strength).collect(),
+            false => Vec::new(),
+        },
     }
 }
 

@@ -278,11 +278,7 @@ pub fn chains(outline: &MeshOutline, positions: &[[f64; 3]]) -> Vec<Chain> {
         out.extend((0..curves.len()).map(|i| Chain {
             kind: *kind,
             points: curves.line(i).to_vec(),
-            strength: if *kind == LineKind::Suggestive {
-                curves.line_strength(i).to_vec()
-            } else {
-                Vec::new()
-            },
+            strength: curves.line_strength(i).to_vec(),
         }));
     }
     out
