@@ -7,7 +7,7 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
-from toonmesh._file_checks import _PLY_TYPES, MeshFileError, ply_header, strip_triangles
+from toonmesh._file_checks import PLY_TYPES, MeshFileError, ply_header, strip_triangles
 
 
 def has_strips(path: str) -> bool:
@@ -67,21 +67,21 @@ def _ascii_element(tokens: Any, count: int, props: List[Tuple[str, ...]]) -> Dic
 def _binary_element(data: bytes, pos: int, order: str, count: int,
                     props: List[Tuple[str, ...]]) -> Tuple[Dict[str, Any], int]:
     if all(p[0] != "list" for p in props):  # fixed rows: one structured array
-        dtype = np.dtype([(p[-1], order + _PLY_TYPES[p[0]]) for p in props])
+        dtype = np.dtype([(p[-1], order + PLY_TYPES[p[0]]) for p in props])
         rows = np.frombuffer(data, dtype=dtype, count=count, offset=pos)
         return {p[-1]: rows[p[-1]] for p in props}, pos + dtype.itemsize * count
     out: Dict[str, List[Any]] = {p[-1]: [] for p in props}
     for _ in range(count):
         for p in props:
             if p[0] == "list":
-                n_type = np.dtype(order + _PLY_TYPES[p[1]])
-                item = np.dtype(order + _PLY_TYPES[p[2]])
+                n_type = np.dtype(order + PLY_TYPES[p[1]])
+                item = np.dtype(order + PLY_TYPES[p[2]])
                 n = int(np.frombuffer(data, dtype=n_type, count=1, offset=pos)[0])
                 pos += n_type.itemsize
                 out[p[-1]].append(np.frombuffer(data, dtype=item, count=n, offset=pos).astype(np.int64))
                 pos += item.itemsize * n
             else:
-                t = np.dtype(order + _PLY_TYPES[p[0]])
+                t = np.dtype(order + PLY_TYPES[p[0]])
                 out[p[-1]].append(np.frombuffer(data, dtype=t, count=1, offset=pos)[0])
                 pos += t.itemsize
     return out, pos
