@@ -12,8 +12,9 @@ from typing import Any, Dict, List, Optional
 
 import numpy as np
 
-import toonmesh as tm
-from toonmesh import _strokes
+from toonmesh import _strokes, edges
+from toonmesh._core import Outlines
+from toonmesh._render import render
 
 #: Depth offset (in pixel footprints) that lets every line through: no hidden-line removal.
 _SHOW_ALL = 1e30
@@ -39,16 +40,16 @@ def view_lines(
     """The visible (and, with ``hidden``, every) outline polyline of one view, and the mesh's
     feature edges; see :func:`write_npz` for the arrays. ``contours``, ``suggestive``,
     ``join_kinds`` and ``curvature_smoothing`` as in :class:`toonmesh.Outlines`."""
-    rule = dict(crease_angle=crease_angle, weld=weld, contours=contours, suggestive=suggestive or None,
+    rule: Dict[str, Any] = dict(crease_angle=crease_angle, weld=weld, contours=contours, suggestive=suggestive or None,
                 join_kinds=join_kinds, curvature_smoothing=curvature_smoothing)
-    outlines = tm.Outlines("mesh", width=stroke_width, **rule)
+    outlines = Outlines("mesh", width=stroke_width, **rule)
     kw = dict(camera=camera, width=width, height=height, outputs=("lines",), backend=backend)
-    seen = tm.render(vertices, faces, outlines=outlines, **kw)
+    seen = render(vertices, faces, outlines=outlines, **kw)
     everything = None
     if hidden:
-        all_lines = tm.Outlines("mesh", depth_offset=_SHOW_ALL, **rule)
-        everything = tm.render(vertices, faces, outlines=all_lines, **kw)
-    features = tm.edges.feature_edges(vertices, faces, crease_angle, weld=weld)
+        all_lines = Outlines("mesh", depth_offset=_SHOW_ALL, **rule)
+        everything = render(vertices, faces, outlines=all_lines, **kw)
+    features = edges.feature_edges(vertices, faces, crease_angle, weld=weld)
     return {"seen": seen, "everything": everything, "features": features}
 
 

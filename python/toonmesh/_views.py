@@ -14,7 +14,7 @@ from typing import Any, Dict, List, Tuple
 
 import numpy as np
 
-from toonmesh import Camera
+from toonmesh._core import Camera
 
 Vec3 = Tuple[float, float, float]
 
