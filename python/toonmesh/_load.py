@@ -23,6 +23,7 @@ from toonmesh import _colors, _ply_strips
 from toonmesh._file_checks import (
     MeshFileError, check_gltf_sizes, check_obj, check_ply, gltf_document, gltf_ignored,
 )
+from toonmesh._scene import Mesh
 
 #: The most mesh instances (scene nodes with geometry) one file or scene may place.
 MAX_INSTANCES = 65_536
@@ -69,7 +70,7 @@ class Surface:
     colors: Dict[str, Any] = field(default_factory=dict)
 
 
-def load(path: "str | os.PathLike[str]") -> List[Any]:
+def load(path: "str | os.PathLike[str]") -> List[Mesh]:
     """Reads a mesh file into a list of :class:`toonmesh.Mesh`, one per placed geometry.
 
     Formats: OBJ (with its MTL: diffuse colour ``Kd`` and texture ``map_Kd``), PLY (vertex and
@@ -135,7 +136,7 @@ def scene_surfaces(scene: Any, source: str = "scene") -> List[Tuple[Surface, Opt
     return placed
 
 
-def scene_meshes(scene: Any, source: str = "scene") -> List[Any]:
+def scene_meshes(scene: Any, source: str = "scene") -> List[Mesh]:
     """A ``trimesh.Scene`` as :class:`toonmesh.Mesh` objects (see :func:`load`)."""
     return [_mesh_of(s, t) for s, t in scene_surfaces(scene, source)]
 
@@ -158,8 +159,6 @@ def carries_colour(mesh: Any) -> bool:
 def under_own_colours(meshes: List[Any], material: Any) -> List[Any]:
     """``meshes`` with ``material`` on those that carry their own colours and name no material
     (copies of those: the caller's meshes are left as they are)."""
-    from toonmesh._render import Mesh
-
     out = []
     for m in meshes:
         if isinstance(m, Mesh) and m.material is None and carries_colour(m):
@@ -169,10 +168,8 @@ def under_own_colours(meshes: List[Any], material: Any) -> List[Any]:
     return out
 
 
-def _mesh_of(surface: Surface, transform: Optional[np.ndarray]) -> Any:
+def _mesh_of(surface: Surface, transform: Optional[np.ndarray]) -> Mesh:
     """The one place a :class:`Surface` becomes a :class:`toonmesh.Mesh`."""
-    from toonmesh._render import Mesh
-
     return Mesh(surface.vertices, surface.faces, transform=transform, **surface.colors)
 
 

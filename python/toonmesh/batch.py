@@ -16,27 +16,47 @@ Needs ``pip install 'toonmesh[batch]'`` (``dask[distributed]`` and trimesh) for
 
 from __future__ import annotations
 
+import copy
 import os
 import socket
 import time
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
+from toonmesh import smooth
 from toonmesh._files import check_distinct_names, image_suffix, save_result, view_paths
 from toonmesh._load import load, under_own_colours
-from toonmesh._render import Mesh, Normals, RenderOptions, _geometry_key, shared_renderer
+from toonmesh._render import RenderOptions, draw, place_meshes, remove_meshes, shared_renderer
+from toonmesh._scene import Mesh, Normals, normal_mode
 from toonmesh._views import check_views, turntable
 
 __all__ = ["render_file", "render_files"]
 
 
 def _smoothed(V: np.ndarray, F: np.ndarray, method: str, iterations: int) -> np.ndarray:
-    import toonmesh as tm
-
     if method not in ("laplacian", "taubin", "hc", "implicit"):
         raise ValueError(f"smooth_method: expected 'paper', 'laplacian', 'taubin', 'hc' or 'implicit', got {method!r}")
-    return getattr(tm.smooth, method)(V, F, iterations=iterations)  # type: ignore[no-any-return]
+    return getattr(smooth, method)(V, F, iterations=iterations)  # type: ignore[no-any-return]
+
+
+def _prepared(meshes: List[Mesh], normals: Normals, method: str, iterations: int) -> List[Mesh]:
+    """The file's meshes in ``normals``, smoothed by ``method`` (once per geometry: its
+    instances share the smoothed arrays, and so one upload). "paper" is left to the upload."""
+    mode = normal_mode(normals)
+    smoothed: Dict[Tuple[int, int], np.ndarray] = {}
+    out = []
+    for m in meshes:
+        m = copy.copy(m)
+        m.normals = mode
+        if iterations and method != "paper":
+            assert m.vertices is not None and m.faces is not None  # read from a file: arrays, not a MeshHandle
+            key = (id(m.vertices), id(m.faces))
+            if key not in smoothed:
+                smoothed[key] = _smoothed(m.vertices, m.faces, method, iterations)
+            m.vertices = smoothed[key]
+        out.append(m)
+    return out
 
 
 def render_views(
@@ -63,33 +83,22 @@ def render_views(
     cameras = [render_options.pop("camera")] if "camera" in render_options else turntable(len(files), up)
     options = RenderOptions(**render_options)  # checked once, before the mesh is read
     renderer = shared_renderer(backend)
-    scene, handles = [], {}
     meshes = load(mesh_path)
     if own_colors_material is not None:
         meshes = under_own_colours(meshes, own_colors_material)
-    try:
-        for m in meshes:  # instances of one geometry share arrays: uploaded once
-            key = _geometry_key(m)
-            if key not in handles:
-                V, iterations = m.vertices, smooth_iterations
-                if iterations and smooth_method != "paper":
-                    V, iterations = _smoothed(V, m.faces, smooth_method, iterations), 0
-                # "paper": the renderer's own pre-smoothing, each vertex to its neighbours' mean
-                handles[key] = renderer.add_mesh(V, m.faces, normals=normals, smooth_iterations=iterations, **m.colors)
-            scene.append(Mesh(handles[key], material=m.material, transform=m.transform))
-    except BaseException:
-        for h in handles.values():
-            renderer.remove_mesh(h)
-        raise
-    n_vertices = sum(h.n_vertices for h in (item.handle for item in scene) if h is not None)
-    n_faces = sum(h.n_faces for h in (item.handle for item in scene) if h is not None)
+    meshes = _prepared(meshes, normals, smooth_method, smooth_iterations)
+    # "paper": the renderer's own smoothing at upload, each vertex to its neighbours' mean
+    at_upload = smooth_iterations if smooth_method == "paper" or not smooth_iterations else 0
+    scene, uploaded = place_meshes(renderer, meshes, at_upload)
+    n_vertices = sum(p.handle.n_vertices for p in scene)
+    n_faces = sum(p.handle.n_faces for p in scene)
     load_s = time.perf_counter() - t0
     worker = f"{socket.gethostname()}:{os.getpid()}"
     rows = []
     try:
         for k, (camera, path) in enumerate(zip(cameras, files)):
             t1 = time.perf_counter()
-            result = renderer._render(scene, options.replace(camera=camera))
+            result = draw(renderer, scene, options.replace(camera=camera))
             t2 = time.perf_counter()
             save_result(result, path)
             rows.append({
@@ -98,8 +107,7 @@ def render_views(
                 "write_s": time.perf_counter() - t2, "worker": worker,
             })
     finally:
-        for h in handles.values():
-            renderer.remove_mesh(h)
+        remove_meshes(renderer, uploaded)
     return rows
 
 

@@ -18,25 +18,16 @@ import io
 import math
 import re
 import threading
+import types
 from typing import TYPE_CHECKING, Any, Dict, Generic, List, Optional, Tuple, TypeVar, overload
 
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._render import (
-    Camera,
-    Dither,
-    Light,
-    Material,
-    Mesh,
-    Normals,
-    Outlines,
-    RenderOptions,
-    RenderResult,
-    Renderer,
-    Shadows,
-    shared_renderer,
-)
+from toonmesh._core import Camera, Dither, Light, Material, Outlines, RenderOptions, Shadows
+from toonmesh._render import PlacedMesh, Renderer, draw, place_meshes, remove_meshes, shared_renderer
+from toonmesh._results import RenderResult
+from toonmesh._scene import Mesh, MeshHandle, Normals
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
@@ -253,8 +244,8 @@ class Viewer:
         self.drag_scale = _number("drag_scale", drag_scale, 0.05, 1.0)
         self._normals = normals
         self._smooth_iterations = smooth_iterations
-        self._uploaded: List[Any] = []  # the MeshHandles this viewer made (close() frees them)
-        self._meshes, self._mesh_source, self._center = self._upload(vertices, faces, normals, smooth_iterations)
+        self._uploaded: List[MeshHandle] = []  # the meshes this viewer uploaded (close() frees them)
+        self._placed, self._mesh_source, self._center = self._upload(vertices, faces, normals, smooth_iterations)
         self.render_count = 0
         self.frame: Optional[np.ndarray] = None
         self._frame_id = 0
@@ -276,51 +267,43 @@ class Viewer:
 
     # -- the scene ----------------------------------------------------------------------------
 
-    def _upload(self, vertices: Any, faces: Any, normals: Normals, smooth_iterations: int) -> Tuple[List[Mesh], str, np.ndarray]:
+    def _upload(self, vertices: Any, faces: Any, normals: Normals,
+                smooth_iterations: int) -> Tuple[List[PlacedMesh], str, np.ndarray]:
         """The scene's meshes on the renderer (uploaded once), how code() passes them, and the
         centre of their bounding box in world space."""
         single = faces is not None or not isinstance(vertices, (Mesh, list, tuple))  # as tm.render reads it
         items = [Mesh(vertices, faces, normals=normals)] if single else ([vertices] if isinstance(vertices, Mesh) else list(vertices))
         if not items:
             raise ValueError("vertices: the scene has no mesh")
-        meshes: List[Mesh] = []
-        lows: List[np.ndarray] = []
-        highs: List[np.ndarray] = []
+        meshes = [item if isinstance(item, Mesh) else Mesh(item, normals=normals) for item in items]  # a Trimesh or a MeshHandle in a list
+        placed, self._uploaded = place_meshes(self._renderer, meshes, smooth_iterations, where="vertices")
         try:
-            self._add_meshes(items, normals, smooth_iterations, meshes, lows, highs)
+            center = self._center_of(meshes)
         except BaseException:
             self._free_meshes()
             raise
-        center = (np.min(lows, axis=0) + np.max(highs, axis=0)) / 2 if lows else np.zeros(3)
         if single:
             source = "mesh" if faces is None else "V, F"
         else:
             source = "meshes"
-        return meshes, source, center
+        return placed, source, center
 
-    def _add_meshes(self, items: List[Any], normals: Normals, smooth_iterations: int, meshes: List[Mesh],
-                    lows: List[np.ndarray], highs: List[np.ndarray]) -> None:
-        for i, item in enumerate(items):
-            if not isinstance(item, Mesh):
-                item = Mesh(item, normals=normals)  # a Trimesh or a MeshHandle in a list
-            if item.handle is not None:
-                if item.handle.renderer is not self._renderer:
-                    raise ValueError(f"vertices[{i}]: the MeshHandle belongs to another Renderer")
-                meshes.append(item)
+    def _center_of(self, meshes: List[Mesh]) -> np.ndarray:
+        """The centre of the world-space bounding box of the meshes given as arrays (a
+        MeshHandle's arrays are on the device only)."""
+        lows: List[np.ndarray] = []
+        highs: List[np.ndarray] = []
+        for mesh in meshes:
+            if mesh.vertices is None:
                 continue
-            assert item.vertices is not None and item.faces is not None
-            handle = self._renderer._add(item.vertices, item.faces, item.normals, smooth_iterations, item.colors)
-            self._uploaded.append(handle)
-            meshes.append(Mesh(handle, material=item.material, transform=item.transform))
-            V = item.vertices
-            transform = item.transform if item.transform is not None else self._options_transform()
-            V = V @ transform[:3, :3].T + transform[:3, 3]
+            transform = mesh.transform if mesh.transform is not None else self._options_transform()
+            V = mesh.vertices @ transform[:3, :3].T + transform[:3, 3]
             lows.append(V.min(axis=0))
             highs.append(V.max(axis=0))
+        return (np.min(lows, axis=0) + np.max(highs, axis=0)) / 2 if lows else np.zeros(3)
 
     def _free_meshes(self) -> None:
-        for handle in self._uploaded:
-            self._renderer.remove_mesh(handle)
+        remove_meshes(self._renderer, self._uploaded)
         self._uploaded = []
 
     def _options_transform(self) -> np.ndarray:
@@ -336,7 +319,7 @@ class Viewer:
             self._widget.close()
         with self._render_lock:
             self._free_meshes()
-            self._meshes = []
+            self._placed = []
 
     # -- the camera ---------------------------------------------------------------------------
 
@@ -433,7 +416,7 @@ class Viewer:
     def _render(self, camera: Camera, width: int, height: int) -> RenderResult:
         with self._render_lock:
             options = self._options.replace(camera=camera, width=width, height=height, outputs=("color",))
-            result = self._renderer._render(self._meshes, options)
+            result = draw(self._renderer, self._placed, options)
             self.render_count += 1
             return result
 
@@ -462,7 +445,7 @@ class Viewer:
         ``supersample``, ``outputs``, ...)."""
         with self._render_lock:
             opts = self.options.replace(**options)
-            result = self._renderer._render(self._meshes, opts)
+            result = draw(self._renderer, self._placed, opts)
             self.render_count += 1
             return result
 
@@ -619,17 +602,18 @@ def _source(value: Any) -> str:
 _FLOAT = re.compile(r"(?<![\w.])-?\d+\.\d+(?:e[-+]?\d+)?")
 
 
+#: What ``tm`` names in the source code() writes, to check that source here: the package's classes
+#: taken from their own modules (the package imports this module, so this one does not import it).
+_TM = types.SimpleNamespace(
+    Camera=Camera, Dither=Dither, Light=Light, Material=Material, Outlines=Outlines, Shadows=Shadows, _core=_core
+)
+
+
 def _gives(source: str, value: Any) -> bool:
     try:
-        return bool(eval(source, {"tm": _toonmesh()}) == value)
+        return bool(eval(source, {"tm": _TM}) == value)
     except Exception:
         return False
-
-
-def _toonmesh() -> Any:
-    import toonmesh
-
-    return toonmesh
 
 
 def _spellings(value: Any) -> List[str]:
