@@ -148,6 +148,8 @@ class Renderer:
         return self._add(vertices, faces, normals, smooth_iterations, _colors.gather(vertices, given, "add_mesh"))
 
     def _add(self, vertices: Any, faces: Any, normals: Normals, smooth_iterations: int, colors: Dict[str, Any]) -> MeshHandle:
+        """Every upload goes through here (:meth:`add_mesh`, :func:`place_meshes`): ``colors``
+        are colour keywords already gathered."""
         iterations = _smoothing_iterations(smooth_iterations)
         V, F = mesh_arrays(vertices, faces)
         V = _smoothed(V, F, iterations)
