@@ -30,6 +30,8 @@ LAYERS: List[List[str]] = [
         "render::effects::surface", "render::effects::surface_effect", "render::effects::hatching",
         "render::effects::hatching::*",
         "render::effects::dither", "render::effects::*::settings", "render::effects::outlines::stroke_width",
+        # each settings type described for front ends
+        "render::settings", "render::settings::*",
     ],
     # the device and the meshes on it
     ["render::device", "render::gpu_albedo", "render::gpu_mesh", "render::mesh_record", "render::hatch_field", "render::culling", "render::reference",

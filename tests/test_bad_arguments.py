@@ -26,7 +26,7 @@ import math
 import os
 import re
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Dict, List, Optional, Sequence, Set, Tuple
 
 import numpy as np
@@ -1008,18 +1008,19 @@ PIXELS = Integer(1, GPU["max_texture_size"])
 MSAA = Integer(1, 4, only=tuple(n for n in (1, 4) if n in GPU["msaa_samples"]))
 SUPERSAMPLE = Integer(1, 4)
 
-# The arguments that render, Renderer.render and Renderer.render_many share.
+# The arguments that render, Renderer.render and Renderer.render_many share (None: the
+# core's default, for every one).
 FRAME = [
     Param("material", MATERIALS, none=OK),
     Param("transform", TRANSFORMS, none=OK),
     Param("lights", LIGHTS, none=OK),
     Param("ambient", COLOUR, none=OK),
     Param("background", COLOUR_ALPHA, none=OK),
-    Param("width", PIXELS),
-    Param("height", PIXELS),
+    Param("width", PIXELS, none=OK),
+    Param("height", PIXELS, none=OK),
     Param("outputs", OUTPUTS, none=OK),
-    Param("msaa", MSAA),
-    Param("supersample", SUPERSAMPLE),
+    Param("msaa", MSAA, none=OK),
+    Param("supersample", SUPERSAMPLE, none=OK),
     Param("band_antialias", Flag(), none=OK),
     Param("outlines", OUTLINES, none=OK),
 ]
@@ -1053,6 +1054,7 @@ def _rendered(make: Callable[..., Any], use: Callable[[Any], Dict[str, Any]]) ->
                 return made, str(exc)
             raise
 
+    call.make, call.use = make, use  # type: ignore[attr-defined]
     return call
 
 
@@ -1572,6 +1574,21 @@ RENDER_CASES: List[Case] = [
 CASES += RENDER_CASES
 
 
+def _replace_case(case: Case) -> Case:
+    """`replace` on the value a settings constructor makes, with the probes of each of its
+    parameters that is a field: `replace` checks as the constructor does (None: the default)."""
+    cls_name, _, ctor = case.name.partition(".")
+    cls = getattr(tm, cls_name)
+    fields = {f["name"] for f in cls.describe()["fields"] if not f["fixed"]}
+    made = case.call.make(**case.base)  # type: ignore[attr-defined]
+    params = [replace(p, none=OK) for p in case.params if p.name in fields]
+    return Case(f"{cls_name}.replace({ctor or cls_name})", _rendered(made.replace, case.call.use), {}, params)  # type: ignore[attr-defined]
+
+
+SETTINGS = ("Material", "Dither", "Light", "Shadows", "Camera", "LineStyle", "Outlines")
+CASES += [_replace_case(c) for c in RENDER_CASES if c.name.partition(".")[0] in SETTINGS and hasattr(c.call, "make")]
+
+
 # ------------------------------------------------------------------------------------------------
 # The viewer (toonmesh.Viewer): each call on a fresh 16x16 viewer of the shared handle; the result
 # is its frame (or the snapshot).
@@ -1770,6 +1787,8 @@ def test_every_public_callable_is_in_the_table() -> None:
     no_arguments = {"get_num_threads", "data.bunny", "edges.FeatureEdges", "edges.EdgeDetection"}
     no_arguments |= {"edges.Curvature"}  # what curvature() returns
     no_arguments |= {"kang_table", "Light.key", "MeshHandle", "RenderStack"}
+    # what each settings class is made of, for front ends
+    no_arguments |= {f"{c}.describe" for c in SETTINGS + ("RenderOptions",)}
     # a TypedDict of the render keywords, for type checkers (RenderOptions takes them)
     no_arguments |= {"RenderKeywords"}
     # Made by their static methods only (which have rows).

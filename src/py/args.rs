@@ -10,9 +10,6 @@ use pyo3::types::{PyBool, PyByteArray, PyBytes, PyFloat, PyInt, PyString};
 use crate::error::{Error, Result};
 use crate::render::color;
 
-/// An optional argument: absent or None is `None`.
-pub type Obj<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
-
 pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
     obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "an unknown type".into())
 }
@@ -35,10 +32,6 @@ pub fn flag(name: &str, obj: &Bound<'_, PyAny>) -> Result<bool> {
     Err(Error::wrong_type(name, format!("expected a bool (True or False), got {}", type_name(obj))))
 }
 
-/// `flag`, or `default` when absent.
-pub fn flag_or(name: &str, obj: Option<&Bound<'_, PyAny>>, default: bool) -> Result<bool> {
-    obj.map_or(Ok(default), |o| flag(name, o))
-}
 
 /// A real number (int, float or NumPy number; not a bool or a string). NaN and inf pass: range
 /// checks decide.
@@ -55,10 +48,6 @@ pub fn number(name: &str, obj: &Bound<'_, PyAny>) -> Result<f64> {
     })
 }
 
-/// `number`, or None when absent.
-pub fn opt_number(name: &str, obj: Option<&Bound<'_, PyAny>>) -> Result<Option<f64>> {
-    obj.map(|o| number(name, o)).transpose()
-}
 
 /// An integer (int or NumPy integer; not a bool or a float), within i64.
 pub fn integer(name: &str, obj: &Bound<'_, PyAny>) -> Result<i64> {
@@ -158,10 +147,6 @@ pub fn rgb(name: &str, obj: &Bound<'_, PyAny>) -> Result<color::Srgb> {
     color::from_channels(name, &channels(name, obj)?)
 }
 
-/// `rgb`, or None when absent.
-pub fn opt_rgb(name: &str, obj: Option<&Bound<'_, PyAny>>) -> Result<Option<color::Srgb>> {
-    obj.map(|o| rgb(name, o)).transpose()
-}
 
 /// An sRGB colour with alpha: '#rrggbb', '#rrggbbaa', or 3 or 4 numbers in [0, 1] (alpha 1
 /// when not given).

@@ -15,8 +15,8 @@ use super::args::{number, text, type_name};
 use super::convert::{faces, positions, Positions};
 use super::errors::to_py;
 use super::runtime::{catching_panics, detached_cancellable};
-use super::settings::options::{camera_arg, each, transform};
-use super::settings::{PyMaterial, PyRenderOptions};
+use super::settings::values::{each, transform};
+use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
 use crate::render::effects::outlines::settings::kind_names;
@@ -337,7 +337,7 @@ impl PyRenderer {
         let o = &options.inner;
         let (cams, scene) = (|| {
             let cams = each(cameras, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", |c| {
-                camera_arg("", c).ok()
+                c.cast::<PyCamera>().ok().map(|c| c.get().inner)
             })?;
             let scene = o.scene(&mesh_specs(items)?);
             Ok((cams, self.inner.check(scene, o.frame)?))

@@ -33,6 +33,7 @@ pub mod plan;
 pub mod reference;
 pub mod renderer;
 pub mod scene;
+pub mod settings;
 pub mod shader;
 pub mod uniforms;
 pub mod wgsl;

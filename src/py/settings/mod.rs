@@ -1,126 +1,240 @@
-//! The scene's settings as frozen Python classes around the core's typed objects: `Material`,
-//! `Dither`, `Light`, `Shadows`, `Camera`, `LineStyle`, `Outlines` and `RenderOptions`, one file
-//! each. Defaults and checks live in the core (`crate::render::scene`, `crate::render::effects`);
-//! these classes convert arguments (naming them in errors), expose the fields read-only, compare
-//! by value, and pickle through the core's serde form (for sending to worker processes): the
-//! `settings_class!` line of each gives it hashing and pickling.
+//! The scene's settings as frozen Python classes, each derived from the core's description of
+//! its type (`render::settings`): its constructors, a getter per field, `replace`, `__repr__`
+//! (which evaluates back to an equal object), `__eq__`, `__hash__`, pickling through the core's
+//! serde form, and `describe()` for front ends. A field added to the core's description reaches
+//! all of them with no edit here.
 
-mod camera;
-mod dither;
-mod light;
-mod material;
-pub mod options;
-mod outlines;
+mod classes;
+pub mod values;
 
 use std::hash::{Hash, Hasher};
 
 use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyTuple};
 use pyo3::IntoPyObjectExt;
-use serde::de::DeserializeOwned;
-use serde::Serialize;
 
 use super::errors::to_py;
 use crate::error::{Error, Result};
+use crate::render::settings::{self as described, parameter, Described, Value};
 
-pub use camera::PyCamera;
-pub use dither::PyDither;
-pub use light::{PyLight, PyShadows};
-pub use material::PyMaterial;
-pub use options::PyRenderOptions;
-pub use outlines::{PyLineStyle, PyOutlines};
+pub use classes::{PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyRenderOptions, PyShadows};
 
-/// A settings class: the core value it wraps, its Python name, and the check a value restored
-/// from a pickle passes.
+/// A Python class around a described core type.
 pub trait Wraps: Sized {
-    type Core: Serialize + DeserializeOwned;
-    const CLASS: &'static str;
+    type Core: Described;
     fn wrap(inner: Self::Core) -> Self;
-    fn check(inner: &Self::Core) -> Result<()>;
 }
 
-/// Gives a settings class `Wraps`, `__hash__` (of its value) and `__reduce__` (its value in
-/// the core's text form, rebuilt and checked again by `_restore`).
+/// Declares a settings class: the wrapper, its core type and Python name, its docstring, and
+/// its constructors (`new` for `Class(...)`, then `fn name` for each `Class.name(...)`, each
+/// with its docstring).
 macro_rules! settings_class {
-    ($py:ident, $core:ty, $class:literal, $check:expr) => {
+    (
+        $(#[$doc:meta])* $py:ident($core:ty, $name:literal) {
+            $(new $(#[$ndoc:meta])*;)?
+            $($(#[$cdoc:meta])* fn $ctor:ident;)*
+        }
+    ) => {
+        $(#[$doc])*
+        #[pyo3::pyclass(name = $name, module = "toonmesh._core", frozen, eq)]
+        #[derive(Clone, PartialEq)]
+        pub struct $py {
+            pub inner: $core,
+        }
+
         impl $crate::py::settings::Wraps for $py {
             type Core = $core;
-            const CLASS: &'static str = $class;
             fn wrap(inner: $core) -> Self {
                 $py { inner }
-            }
-            fn check(inner: &$core) -> $crate::error::Result<()> {
-                let check: fn(&$core) -> $crate::error::Result<()> = $check;
-                check(inner)
             }
         }
 
         #[pyo3::pymethods]
         impl $py {
+            $(
+                $(#[$ndoc])*
+                #[new]
+                #[pyo3(signature = (*args, **kwargs))]
+                fn new(
+                    args: &pyo3::Bound<'_, pyo3::types::PyTuple>,
+                    kwargs: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>,
+                ) -> pyo3::PyResult<Self> {
+                    $crate::py::settings::make("", args, kwargs).map(|inner| $py { inner })
+                }
+            )?
+
+            $(
+                $(#[$cdoc])*
+                #[staticmethod]
+                #[pyo3(signature = (*args, **kwargs))]
+                fn $ctor(
+                    args: &pyo3::Bound<'_, pyo3::types::PyTuple>,
+                    kwargs: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>,
+                ) -> pyo3::PyResult<Self> {
+                    $crate::py::settings::make(stringify!($ctor), args, kwargs).map(|inner| $py { inner })
+                }
+            )*
+
+            fn __getattr__<'py>(
+                &self,
+                py: pyo3::Python<'py>,
+                name: &str,
+            ) -> pyo3::PyResult<pyo3::Bound<'py, pyo3::PyAny>> {
+                $crate::py::settings::getattr(py, &self.inner, name)
+            }
+
+            fn __dir__(slf: &pyo3::Bound<'_, Self>) -> pyo3::PyResult<Vec<String>> {
+                $crate::py::settings::dir::<$core>(slf.as_any())
+            }
+
             fn __hash__(&self) -> u64 {
                 $crate::py::settings::hash_of(&self.inner)
+            }
+
+            fn __repr__(&self, py: pyo3::Python<'_>) -> pyo3::PyResult<String> {
+                $crate::py::settings::repr(py, &self.inner)
             }
 
             fn __reduce__<'py>(
                 &self,
                 py: pyo3::Python<'py>,
             ) -> pyo3::PyResult<(pyo3::Bound<'py, pyo3::PyAny>, (&'static str, String))> {
-                $crate::py::settings::reduce::<$py>(py, &self.inner)
+                $crate::py::settings::reduce(py, &self.inner)
+            }
+
+            /// A copy with only the fields named changed (None: the field's default), checked as
+            /// the constructor checks.
+            #[pyo3(signature = (**changes))]
+            fn replace(&self, changes: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>) -> pyo3::PyResult<Self> {
+                $crate::py::settings::replace(&self.inner, changes).map(|inner| $py { inner })
+            }
+
+            /// The class described for front ends: its fields (name, kind, bounds or choices,
+            /// help) and constructors (their parameters, with the default of each).
+            #[staticmethod]
+            fn describe(py: pyo3::Python<'_>) -> pyo3::PyResult<pyo3::Bound<'_, pyo3::types::PyDict>> {
+                $crate::py::settings::describe::<$core>(py)
             }
         }
     };
 }
 pub(crate) use settings_class;
 
-/// Read-only properties of a settings class, each computed from its core value: `name -> type
-/// = |value| expression;`, doc comments allowed.
-macro_rules! getters {
-    ($py:ident { $($(#[$doc:meta])* $name:ident -> $ty:ty = |$v:ident| $body:expr;)* }) => {
-        #[pyo3::pymethods]
-        impl $py {
-            $(
-                $(#[$doc])*
-                #[getter]
-                fn $name(&self) -> $ty {
-                    let $v = &self.inner;
-                    $body
-                }
-            )*
+/// The arguments of a call to `constructor`, by parameter (None: the default, so left out).
+pub fn make<T: Described>(
+    constructor: &str,
+    args: &Bound<'_, PyTuple>,
+    kwargs: Option<&Bound<'_, PyDict>>,
+) -> PyResult<T> {
+    (|| {
+        let ctor = described::constructor::<T>(constructor);
+        let title = if ctor.name.is_empty() { T::CLASS.to_string() } else { format!("{}.{}", T::CLASS, ctor.name) };
+        if args.len() > ctor.positional {
+            return Err(Error::wrong_type(
+                "args",
+                format!("{title} takes at most {} positional arguments ({} given)", ctor.positional, args.len()),
+            ));
         }
-    };
+        let mut given: Vec<(String, Bound<'_, PyAny>)> =
+            ctor.params.iter().zip(args.iter()).map(|(p, a)| (p.to_string(), a)).collect();
+        for (k, v) in kwargs.into_iter().flat_map(|d| d.iter()) {
+            let k: String = k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?;
+            if given.iter().any(|(g, _)| *g == k) {
+                return Err(Error::wrong_type(k, format!("{title} got it twice")));
+            }
+            given.push((k, v));
+        }
+        given.retain(|(_, v)| !v.is_none());
+        let names: Vec<&str> = given.iter().map(|(n, _)| n.as_str()).collect();
+        described::check_arguments::<T>(ctor, &names)?;
+        let values = given
+            .iter()
+            .map(|(n, v)| {
+                let p = parameter::<T>(n).expect("a checked parameter");
+                Ok((p.name, values::from_py(n, p, v)?))
+            })
+            .collect::<Result<_>>()?;
+        T::construct(constructor, values)
+    })()
+    .map_err(to_py)
 }
-pub(crate) use getters;
 
-fn state<T: Serialize>(x: &T) -> String {
+pub fn replace<T: Described>(value: &T, changes: Option<&Bound<'_, PyDict>>) -> PyResult<T> {
+    (|| {
+        let mut out = Vec::new();
+        for (k, v) in changes.into_iter().flat_map(|d| d.iter()) {
+            let k: String = k.extract().map_err(|_| Error::wrong_type("changes", "keywords must be strings"))?;
+            let field = T::fields().iter().find(|f| f.name == k);
+            let value = match field {
+                Some(f) if !v.is_none() => Some(values::from_py(&k, f, &v)?),
+                _ => None,
+            };
+            // an unknown name is refused by the core, which lists the fields
+            out.push((k, value));
+        }
+        described::replace(value, out)
+    })()
+    .map_err(to_py)
+}
+
+pub fn getattr<'py, T: Described>(py: Python<'py>, value: &T, name: &str) -> PyResult<Bound<'py, PyAny>> {
+    if T::fields().iter().any(|f| f.name == name) {
+        return values::to_py(py, &value.get(name));
+    }
+    Err(pyo3::exceptions::PyAttributeError::new_err(format!("'{}' object has no attribute '{name}'", T::CLASS)))
+}
+
+pub fn dir<T: Described>(obj: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
+    let mut names: Vec<String> = obj.get_type().dir()?.extract()?;
+    names.extend(T::fields().iter().map(|f| f.name.to_string()));
+    names.sort();
+    Ok(names)
+}
+
+/// `Class.constructor(required, ..., name=value, ...)`: what makes the value again.
+pub fn repr<T: Described>(py: Python<'_>, value: &T) -> PyResult<String> {
+    let (ctor, args) = described::arguments(value);
+    let mut parts = Vec::with_capacity(args.len());
+    for (i, (name, v)) in args.iter().enumerate() {
+        let text = values::to_py(py, v)?.repr()?.to_string();
+        let by_position = ctor.params.get(i) == Some(name) && i < ctor.required;
+        parts.push(if by_position { text } else { format!("{name}={text}") });
+    }
+    let dot = if ctor.name.is_empty() { "" } else { "." };
+    Ok(format!("{}{dot}{}({})", T::CLASS, ctor.name, parts.join(", ")))
+}
+
+fn state<T: serde::Serialize>(x: &T) -> String {
     serde_json::to_string(x).expect("settings serialise")
 }
 
-pub fn hash_of<T: Serialize>(x: &T) -> u64 {
+pub fn hash_of<T: serde::Serialize>(x: &T) -> u64 {
     let mut h = std::collections::hash_map::DefaultHasher::new();
     state(x).hash(&mut h);
     h.finish()
 }
 
-pub fn reduce<'py, W: Wraps>(
-    py: Python<'py>,
-    inner: &W::Core,
-) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
-    Ok((py.import("toonmesh._core")?.getattr("_restore")?, (W::CLASS, state(inner))))
+pub fn reduce<'py, T: Described>(py: Python<'py>, inner: &T) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
+    Ok((py.import("toonmesh._core")?.getattr("_restore")?, (T::CLASS, state(inner))))
 }
 
-fn restore<'py, W: Wraps + IntoPyObjectExt<'py>>(py: Python<'py>, state: &str) -> PyResult<Py<PyAny>> {
+fn restore<'py, W: Wraps>(py: Python<'py>, state: &str) -> PyResult<Bound<'py, PyAny>>
+where
+    W: IntoPyObjectExt<'py>,
+{
     let inner: W::Core =
         serde_json::from_str(state).map_err(|e| to_py(Error::invalid("state", format!("{e}"))))?;
-    W::check(&inner).map_err(to_py)?;
-    W::wrap(inner).into_py_any(py)
+    inner.check().map_err(to_py)?;
+    W::wrap(inner).into_bound_py_any(py)
 }
 
 /// _restore(cls, state): a pickled setting, checked again.
 #[pyfunction]
-fn _restore(py: Python<'_>, cls: &str, state: &str) -> PyResult<Py<PyAny>> {
+fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
     macro_rules! classes {
         ($($py:ty),*) => {
             match cls {
-                $(c if c == <$py as Wraps>::CLASS => restore::<$py>(py, state),)*
+                $(c if c == <<$py as Wraps>::Core as Described>::CLASS => restore::<$py>(py, state),)*
                 other => Err(to_py(Error::invalid("cls", format!("no settings class {other:?}")))),
             }
         };
@@ -128,9 +242,57 @@ fn _restore(py: Python<'_>, cls: &str, state: &str) -> PyResult<Py<PyAny>> {
     classes!(PyMaterial, PyDither, PyLight, PyShadows, PyCamera, PyLineStyle, PyOutlines, PyRenderOptions)
 }
 
-/// A triple as a Python tuple.
-fn tup(v: [f64; 3]) -> (f64, f64, f64) {
-    (v[0], v[1], v[2])
+/// The description of `T` as Python data (see `render::settings`).
+pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    let field = |f: &described::Field, default: Option<Value>| -> PyResult<Bound<'_, PyDict>> {
+        let d = PyDict::new(py);
+        let kind = values::kind_to_py(py, &f.kind)?;
+        d.set_item("name", f.name)?;
+        d.set_item("kind", kind.get_item(0)?)?;
+        match f.kind {
+            described::Kind::Int { .. } | described::Kind::Float { .. } => {
+                d.set_item("min", kind.get_item(1)?)?;
+                d.set_item("max", kind.get_item(2)?)?;
+            }
+            described::Kind::Choice(_) | described::Kind::Names(_) => d.set_item("choices", kind.get_item(1)?)?,
+            described::Kind::Setting(_) => d.set_item("class", kind.get_item(1)?)?,
+            _ => {}
+        }
+        d.set_item("optional", f.optional)?;
+        d.set_item("fixed", f.fixed)?;
+        d.set_item("help", f.help)?;
+        if let Some(v) = default {
+            d.set_item("default", values::to_py(py, &v)?)?;
+        }
+        Ok(d)
+    };
+    let out = PyDict::new(py);
+    out.set_item("class", T::CLASS)?;
+    out.set_item("help", T::HELP)?;
+    let fields = PyList::empty(py);
+    for f in T::fields() {
+        fields.append(field(f, None)?)?;
+    }
+    out.set_item("fields", fields)?;
+    let ctors = PyList::empty(py);
+    for c in T::constructors() {
+        let start = T::start(c.name);
+        let d = PyDict::new(py);
+        d.set_item("name", c.name)?;
+        d.set_item("help", c.help)?;
+        d.set_item("positional", c.positional)?;
+        d.set_item("required", c.required)?;
+        let params = PyList::empty(py);
+        for p in c.params {
+            let f = parameter::<T>(p).expect("a described parameter");
+            let default = start.read(c.name, p).unwrap_or(Value::None);
+            params.append(field(f, Some(default))?)?;
+        }
+        d.set_item("params", params)?;
+        ctors.append(d)?;
+    }
+    out.set_item("constructors", ctors)?;
+    Ok(out)
 }
 
 /// The names the core accepts, for Python to take rather than repeat.
@@ -142,10 +304,9 @@ fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
     use crate::render::scene::model::{Highlight, Model};
     use crate::render::scene::Output;
     let py = m.py();
-    let names = |v: &[&str]| pyo3::types::PyTuple::new(py, v.iter().copied());
-    let outputs: Vec<&str> = Output::ALL.iter().map(|o| o.name()).collect();
+    let names = |v: &[&str]| PyTuple::new(py, v.iter().copied());
     let images: Vec<&str> = Output::ALL.iter().filter(|o| o.pixel().is_some()).map(|o| o.name()).collect();
-    m.add("OUTPUTS", names(&outputs)?)?;
+    m.add("OUTPUTS", names(&Output::NAMES)?)?;
     m.add("IMAGE_OUTPUTS", names(&images)?)?;
     m.add("LINE_KINDS", names(&LineKind::ALL.map(|k| k.name()))?)?;
     m.add("INK_KINDS", names(&kind_names())?)?;
@@ -153,10 +314,10 @@ fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CONTOUR_RULES", names(ContourRule::NAMES)?)?;
     m.add("IMAGE_RULES", names(ImageRule::NAMES)?)?;
     m.add("MODELS", names(&Model::NAMES)?)?;
-    m.add("HIGHLIGHTS", names(&Highlight::NAMES)?)?;
-    m.add("DITHER_PATTERNS", names(&DitherPattern::NAMES)?)?;
-    m.add("DITHER_SPACES", names(&DitherSpace::NAMES)?)?;
-    m.add("SHADOW_FILTERS", names(&ShadowFilter::NAMES)?)?;
+    m.add("HIGHLIGHTS", names(Highlight::NAMES)?)?;
+    m.add("DITHER_PATTERNS", names(DitherPattern::NAMES)?)?;
+    m.add("DITHER_SPACES", names(DitherSpace::NAMES)?)?;
+    m.add("SHADOW_FILTERS", names(ShadowFilter::NAMES)?)?;
     Ok(())
 }
 
@@ -171,6 +332,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyOutlines>()?;
     m.add_class::<PyRenderOptions>()?;
     m.add_function(wrap_pyfunction!(_restore, m)?)?;
-    m.add_function(wrap_pyfunction!(material::kang_table, m)?)?;
+    m.add_function(wrap_pyfunction!(classes::kang_table, m)?)?;
     Ok(())
 }

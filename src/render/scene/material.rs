@@ -144,6 +144,22 @@ impl Material {
         )
     }
 
+    /// Sets the coefficients that a base colour gives under this material's model, as its
+    /// constructor does: Lambert and Phong keep 10% of it as ambient and 90% as diffuse, the
+    /// thresholded Phong model 35% and 65%; bands and tables take it as it is.
+    pub fn set_color(&mut self, color: Srgb) {
+        let (ambient, diffuse) = match self.model {
+            Model::Lambert | Model::Phong { .. } => (SHADED_AMBIENT, SHADED_DIFFUSE),
+            Model::ThresholdedPhong { .. } => (TOON_AMBIENT, TOON_DIFFUSE),
+            Model::Bands { .. } | Model::Lut { .. } => {
+                self.diffuse = color;
+                return;
+            }
+        };
+        self.ambient = scaled(color, ambient);
+        self.diffuse = scaled(color, diffuse);
+    }
+
     /// This material with other per-pixel effects, checked against it.
     pub fn with_effects(mut self, effects: SurfaceSettings) -> Result<Self> {
         self.effects = effects;

@@ -36,15 +36,11 @@ impl Output {
     pub const ALL: [Output; 6] =
         [Output::Color, Output::Normal, Output::Depth, Output::Outline, Output::Lines, Output::Shadow];
 
+    /// The names of `ALL`, in its order.
+    pub const NAMES: [&'static str; 6] = ["color", "normal", "depth", "outline", "lines", "shadow"];
+
     pub fn name(self) -> &'static str {
-        match self {
-            Output::Color => "color",
-            Output::Normal => "normal",
-            Output::Depth => "depth",
-            Output::Outline => "outline",
-            Output::Lines => "lines",
-            Output::Shadow => "shadow",
-        }
+        Self::NAMES[self as usize]
     }
 
     /// The pixel of an image output; None for the lines, which are polylines.

@@ -1,0 +1,211 @@
+//! Python objects to a field's value and back, by the field's kind (`render::settings::Kind`):
+//! the only place that knows how each kind is spelt in Python.
+
+use numpy::{PyArrayDescrMethods, PyUntypedArray, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+use pyo3::types::{PyList, PyString, PyTuple};
+use pyo3::IntoPyObjectExt;
+
+use super::{PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyShadows};
+use crate::error::{Error, Result};
+use crate::py::args::{flag, integer, number, numbers, refuse_text, rgb, rgba, text, triple, type_name};
+use crate::render::scene::light::Light;
+use crate::render::scene::model::MAX_LUT;
+use crate::render::settings::{Field, Kind, Setting, Value};
+
+/// The value of `obj` for `field` (named `name` in errors).
+pub fn from_py(name: &str, field: &Field, obj: &Bound<'_, PyAny>) -> Result<Value> {
+    Ok(match field.kind {
+        Kind::Bool => Value::Bool(flag(name, obj)?),
+        Kind::Int { .. } => Value::Int(integer(name, obj)?),
+        Kind::Float { .. } => Value::Float(number(name, obj)?),
+        Kind::Choice(_) => Value::Text(text(name, obj)?),
+        Kind::Color => Value::Triple(rgb(name, obj)?),
+        Kind::Rgba => Value::Rgba(rgba(name, obj)?),
+        Kind::Vec3 => Value::Triple(triple(name, obj)?),
+        Kind::Floats => Value::Floats(numbers(name, obj)?),
+        Kind::Table => Value::Rows(table(name, obj)?),
+        Kind::Matrix => Value::Matrix(transform(name, obj)?),
+        Kind::Names(_) => Value::Names(names(name, obj)?),
+        Kind::Style => style(name, obj)?,
+        Kind::Setting(class) => setting(name, class, obj)?,
+        Kind::Lights => Value::Lights(lights(name, obj)?),
+    })
+}
+
+/// A field's value as Python gives it back.
+pub fn to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>> {
+    let triple = |t: &[f64; 3]| (t[0], t[1], t[2]);
+    match value {
+        Value::None => Ok(py.None().into_bound(py)),
+        Value::Bool(b) => b.into_bound_py_any(py),
+        Value::Int(i) => i.into_bound_py_any(py),
+        Value::Float(x) => x.into_bound_py_any(py),
+        Value::Text(s) => s.into_bound_py_any(py),
+        Value::Triple(t) => triple(t).into_bound_py_any(py),
+        Value::Rgba(c) => (c[0], c[1], c[2], c[3]).into_bound_py_any(py),
+        Value::Floats(v) => v.clone().into_bound_py_any(py),
+        Value::Rows(rows) => rows.iter().map(triple).collect::<Vec<_>>().into_bound_py_any(py),
+        Value::Matrix(m) => m.iter().map(|r| r.to_vec()).collect::<Vec<_>>().into_bound_py_any(py),
+        Value::Names(n) => n.clone().into_bound_py_any(py),
+        Value::Lights(l) => l.iter().map(|&inner| PyLight { inner }).collect::<Vec<_>>().into_bound_py_any(py),
+        Value::Setting(s) => match &**s {
+            Setting::Material(inner) => PyMaterial { inner: inner.clone() }.into_bound_py_any(py),
+            Setting::Dither(inner) => PyDither { inner: *inner }.into_bound_py_any(py),
+            Setting::Light(inner) => PyLight { inner: *inner }.into_bound_py_any(py),
+            Setting::Shadows(inner) => PyShadows { inner: *inner }.into_bound_py_any(py),
+            Setting::Camera(inner) => PyCamera { inner: *inner }.into_bound_py_any(py),
+            Setting::LineStyle(inner) => PyLineStyle { inner: *inner }.into_bound_py_any(py),
+            Setting::Outlines(inner) => PyOutlines { inner: inner.clone() }.into_bound_py_any(py),
+        },
+    }
+}
+
+/// A settings object of `class`, or the other forms its field takes (a name or a flag).
+fn setting(name: &str, class: &str, obj: &Bound<'_, PyAny>) -> Result<Value> {
+    let found = match class {
+        "Material" => obj.cast::<PyMaterial>().ok().map(|m| Setting::Material(m.get().inner.clone())),
+        "Camera" => obj.cast::<PyCamera>().ok().map(|c| Setting::Camera(c.get().inner)),
+        "Dither" => obj.cast::<PyDither>().ok().map(|d| Setting::Dither(d.get().inner)),
+        "Shadows" => obj.cast::<PyShadows>().ok().map(|s| Setting::Shadows(s.get().inner)),
+        "Outlines" => obj.cast::<PyOutlines>().ok().map(|o| Setting::Outlines(o.get().inner.clone())),
+        _ => None,
+    };
+    if let Some(s) = found {
+        return Ok(Value::setting(s));
+    }
+    let expected = match class {
+        "Dither" if obj.is_instance_of::<PyString>() => return Ok(Value::Text(text(name, obj)?)),
+        "Outlines" if obj.is_instance_of::<PyString>() => return Ok(Value::Text(text(name, obj)?)),
+        "Shadows" if flag(name, obj).is_ok() => return Ok(Value::Bool(flag(name, obj)?)),
+        "Dither" => "a pattern name or a toonmesh.Dither".to_string(),
+        "Outlines" => "None, 'mesh', 'image', 'both' or a toonmesh.Outlines".to_string(),
+        "Shadows" => "True, False or a toonmesh.Shadows".to_string(),
+        other => format!("a toonmesh.{other}"),
+    };
+    Err(Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj))))
+}
+
+/// An ink kind's style: True or False, a LineStyle, or a colour.
+fn style(name: &str, obj: &Bound<'_, PyAny>) -> Result<Value> {
+    if let Ok(s) = obj.cast::<PyLineStyle>() {
+        return Ok(Value::setting(Setting::LineStyle(s.get().inner)));
+    }
+    if let Ok(on) = flag(name, obj) {
+        return Ok(Value::Bool(on));
+    }
+    rgb(name, obj).map(Value::Triple).map_err(|e| match e {
+        Error::WrongType { .. } => Error::wrong_type(
+            name,
+            format!("expected True, False, a LineStyle or a colour, got {}", type_name(obj)),
+        ),
+        other => other,
+    })
+}
+
+/// The items of a sequence, each read by `read` (None: the wrong type for an item).
+pub fn each<T>(
+    obj: &Bound<'_, PyAny>,
+    name: &str,
+    expected: &str,
+    item: &str,
+    read: impl Fn(&Bound<'_, PyAny>) -> Option<T>,
+) -> Result<Vec<T>> {
+    let items = obj
+        .try_iter()
+        .map_err(|_| Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj))))?;
+    items
+        .enumerate()
+        .map(|(i, x)| {
+            let x = x.map_err(|e| Error::invalid(name, e.to_string()))?;
+            read(&x).ok_or_else(|| {
+                Error::wrong_type(format!("{name}[{i}]"), format!("expected {item}, got {}", type_name(&x)))
+            })
+        })
+        .collect()
+}
+
+fn lights(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<Light>> {
+    if let Ok(l) = obj.cast::<PyLight>() {
+        return Ok(vec![l.get().inner]);
+    }
+    each(obj, name, "a toonmesh.Light or a list of them", "a toonmesh.Light", |l| {
+        l.cast::<PyLight>().ok().map(|l| l.get().inner)
+    })
+}
+
+fn names(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<String>> {
+    if obj.is_instance_of::<PyString>() {
+        return Ok(vec![text(name, obj)?]);
+    }
+    let expected = "a name or a sequence of names";
+    each(obj, name, expected, "a name", |n| n.extract::<String>().ok())
+}
+
+/// A lookup table: (N,) grey factors or (N, 3) RGB factors, 1 <= N <= 256.
+fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 3]>> {
+    refuse_text(name, obj, "(N,) or (N, 3) numbers")?;
+    let rows: Vec<Bound<'_, PyAny>> = obj
+        .try_iter()
+        .map_err(|_| Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj))))?
+        .collect::<PyResult<_>>()
+        .map_err(|e| Error::invalid(name, e.to_string()))?;
+    if rows.is_empty() || rows.len() > MAX_LUT {
+        return Err(Error::invalid(name, format!("needs 1 to {MAX_LUT} entries, got {}", rows.len())));
+    }
+    rows.iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let arg = format!("{name}[{i}]");
+            if r.try_iter().is_ok() && !r.is_instance_of::<PyString>() {
+                triple(&arg, r)
+            } else {
+                Ok([number(&arg, r)?; 3])
+            }
+        })
+        .collect()
+}
+
+/// A 4x4 matrix of numbers.
+pub fn transform(arg: &str, obj: &Bound<'_, PyAny>) -> Result<[[f64; 4]; 4]> {
+    let wrong = || Error::wrong_type(arg, format!("expected a 4x4 array of numbers, got {}", type_name(obj)));
+    refuse_text(arg, obj, "a 4x4 array of numbers")?;
+    if let Ok(a) = obj.cast::<PyUntypedArray>() {
+        if !matches!(a.dtype().kind(), b'i' | b'u' | b'f') {
+            return Err(wrong());
+        }
+    }
+    let rows: Vec<Bound<'_, PyAny>> =
+        obj.try_iter().map_err(|_| wrong())?.collect::<PyResult<_>>().map_err(|_| wrong())?;
+    let rows: Vec<Vec<f64>> = rows.iter().map(|r| numbers(arg, r)).collect::<Result<_>>()?;
+    if rows.iter().any(|r| r.len() != rows[0].len()) {
+        return Err(wrong());
+    }
+    if rows.len() != 4 || rows[0].len() != 4 {
+        let cols = rows.first().map_or(0, |r| r.len());
+        return Err(Error::invalid(arg, format!("expected shape (4, 4), got ({}, {cols})", rows.len())));
+    }
+    Ok(std::array::from_fn(|i| std::array::from_fn(|j| rows[i][j])))
+}
+
+/// A field's description as Python data: its kind's name and bounds or choices.
+pub fn kind_to_py<'py>(py: Python<'py>, kind: &Kind) -> PyResult<Bound<'py, PyTuple>> {
+    let none = || py.None().into_bound(py);
+    let (name, a, b) = match kind {
+        Kind::Bool => ("bool", none(), none()),
+        Kind::Int { min, max } => ("int", min.into_bound_py_any(py)?, max.into_bound_py_any(py)?),
+        Kind::Float { min, max } => ("float", min.into_bound_py_any(py)?, max.into_bound_py_any(py)?),
+        Kind::Choice(c) => ("choice", PyList::new(py, c.iter())?.into_any(), none()),
+        Kind::Names(c) => ("names", PyList::new(py, c.iter())?.into_any(), none()),
+        Kind::Setting(class) => ("setting", class.into_bound_py_any(py)?, none()),
+        Kind::Color => ("color", none(), none()),
+        Kind::Rgba => ("rgba", none(), none()),
+        Kind::Vec3 => ("vec3", none(), none()),
+        Kind::Floats => ("floats", none(), none()),
+        Kind::Table => ("table", none(), none()),
+        Kind::Matrix => ("matrix", none(), none()),
+        Kind::Style => ("style", none(), none()),
+        Kind::Lights => ("lights", none(), none()),
+    };
+    PyTuple::new(py, [name.into_bound_py_any(py)?, a, b])
+}

@@ -1,0 +1,152 @@
+//! `Camera` described.
+
+use super::{not_here, Constructor, Described, Field, Kind, Value};
+use crate::error::Result;
+use crate::render::scene::camera::{Camera, Placement, Projection, DEFAULT_FOV_Y, DEFAULT_HEIGHT, DEFAULT_UP};
+
+const FIELDS: &[Field] = &[
+    Field::new("kind", Kind::Choice(&["fit", "look_at"]), "framed to fit the scene, or looking at a point").fixed(),
+    Field::new("projection", Kind::Choice(&["perspective", "orthographic"]), "the projection").fixed(),
+    Field::new("eye", Kind::Vec3, "a look-at camera's position").optional(),
+    Field::new("target", Kind::Vec3, "the point a look-at camera looks at").optional(),
+    Field::new("up", Kind::Vec3, "the direction that is up in the image"),
+    Field::new(
+        "direction",
+        Kind::Vec3,
+        "a fitted camera's direction from the scene toward the eye (the scene is framed to fit)",
+    )
+    .optional(),
+    Field::new("margin", Kind::Float { min: 0.5, max: 4.0 }, "a fitted camera's room around the scene (1: touching)")
+        .optional(),
+    Field::new("fov_y", Kind::Float { min: 1.0, max: 179.0 }, "vertical field of view in degrees, in (0, 180)").optional(),
+    Field::new("height", Kind::Float { min: 0.0, max: 100.0 }, "height of an orthographic view in world units, > 0")
+        .optional(),
+    Field::new("near", Kind::Float { min: 0.0, max: 100.0 }, "near clip distance (None: from the scene's bounds)")
+        .optional(),
+    Field::new("far", Kind::Float { min: 0.0, max: 1000.0 }, "far clip distance (None: from the scene's bounds)")
+        .optional(),
+];
+
+const EXTRAS: &[Field] =
+    &[Field::new("orthographic", Kind::Bool, "a fitted camera with an orthographic projection")];
+
+const CONSTRUCTORS: &[Constructor] = &[
+    Constructor {
+        name: "fit",
+        params: &["direction", "up", "fov_y", "margin", "orthographic"],
+        positional: 1,
+        required: 0,
+        help: "Frames the scene's bounding sphere from `direction`.",
+    },
+    Constructor {
+        name: "look_at",
+        params: &["eye", "target", "up", "fov_y", "near", "far"],
+        positional: 2,
+        required: 1,
+        help: "A perspective camera at `eye` looking at `target`.",
+    },
+    Constructor {
+        name: "orthographic",
+        params: &["eye", "target", "up", "height", "near", "far"],
+        positional: 2,
+        required: 1,
+        help: "An orthographic camera at `eye` looking at `target`.",
+    },
+];
+
+impl Described for Camera {
+    const CLASS: &'static str = "Camera";
+    const HELP: &'static str = "A camera: framed to fit the scene, looking at a point, or orthographic.";
+
+    fn fields() -> &'static [Field] {
+        FIELDS
+    }
+
+    fn extras() -> &'static [Field] {
+        EXTRAS
+    }
+
+    fn constructors() -> &'static [Constructor] {
+        CONSTRUCTORS
+    }
+
+    fn start(constructor: &str) -> Self {
+        let placement = Placement::LookAt { eye: [0.0, 0.0, 1.0], target: [0.0; 3], up: DEFAULT_UP };
+        let projection = match constructor {
+            "fit" => return Camera::default(),
+            "orthographic" => Projection::Orthographic { height: DEFAULT_HEIGHT },
+            _ => Projection::Perspective { fov_y_deg: DEFAULT_FOV_Y },
+        };
+        Camera { placement, projection, near: None, far: None }
+    }
+
+    fn made_by(&self) -> &'static str {
+        match (self.placement, self.projection) {
+            (Placement::Fit { .. }, _) => "fit",
+            (_, Projection::Perspective { .. }) => "look_at",
+            _ => "orthographic",
+        }
+    }
+
+    fn get(&self, field: &str) -> Value {
+        use Placement::*;
+        match (field, self.placement, self.projection) {
+            ("kind", Fit { .. }, _) => "fit".into(),
+            ("kind", LookAt { .. }, _) => "look_at".into(),
+            ("projection", _, Projection::Perspective { .. }) => "perspective".into(),
+            ("projection", _, Projection::Orthographic { .. }) => "orthographic".into(),
+            ("eye", LookAt { eye, .. }, _) => eye.into(),
+            ("target", LookAt { target, .. }, _) => target.into(),
+            ("up", LookAt { up, .. } | Fit { up, .. }, _) => up.into(),
+            ("direction", Fit { direction, .. }, _) => direction.into(),
+            ("margin", Fit { margin, .. }, _) => margin.into(),
+            ("fov_y", _, Projection::Perspective { fov_y_deg }) => fov_y_deg.into(),
+            ("height", _, Projection::Orthographic { height }) => height.into(),
+            ("near", ..) => self.near.into(),
+            ("far", ..) => self.far.into(),
+            _ => Value::None,
+        }
+    }
+
+    fn set(&mut self, field: &str, v: Value) -> Result<()> {
+        use Placement::*;
+        match (field, &mut self.placement, &mut self.projection) {
+            ("eye", LookAt { eye, .. }, _) => *eye = v.triple(field)?,
+            ("target", LookAt { target, .. }, _) => *target = v.triple(field)?,
+            ("up", LookAt { up, .. } | Fit { up, .. }, _) => *up = v.triple(field)?,
+            ("direction", Fit { direction, .. }, _) => *direction = v.triple(field)?,
+            ("margin", Fit { margin, .. }, _) => *margin = v.float(field)?,
+            ("fov_y", _, Projection::Perspective { fov_y_deg }) => *fov_y_deg = v.float(field)?,
+            ("height", _, Projection::Orthographic { height }) => *height = v.float(field)?,
+            ("near", ..) => self.near = v.opt_float(field)?,
+            ("far", ..) => self.far = v.opt_float(field)?,
+            ("eye" | "target", ..) => return Err(not_here(field, "a look-at camera")),
+            ("direction" | "margin", ..) => return Err(not_here(field, "a fitted camera")),
+            ("fov_y", ..) => return Err(not_here(field, "a perspective camera")),
+            _ => return Err(not_here(field, "an orthographic camera")),
+        }
+        Ok(())
+    }
+
+    fn apply(&mut self, constructor: &str, param: &str, value: Value) -> Result<()> {
+        if param == "orthographic" {
+            if value.bool(param)? {
+                self.projection = Projection::Orthographic { height: DEFAULT_HEIGHT };
+            }
+            return Ok(());
+        }
+        let _ = constructor;
+        self.set(param, value)
+    }
+
+    fn read(&self, _: &str, param: &str) -> Option<Value> {
+        match param {
+            "orthographic" => Some(matches!(self.projection, Projection::Orthographic { .. }).into()),
+            _ => Some(self.get(param)),
+        }
+    }
+
+    fn check(&self) -> Result<()> {
+        self.validate("")
+    }
+}

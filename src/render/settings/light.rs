@@ -1,0 +1,116 @@
+//! `Light` described.
+
+use super::{not_here, Constructor, Described, Field, Kind, Setting, Value};
+use crate::error::Result;
+use crate::render::effects::shadows::settings::Shadows;
+use crate::render::scene::light::{Light, LightKind, Space};
+
+const FIELDS: &[Field] = &[
+    Field::new("kind", Kind::Choice(&["directional", "point"]), "directional (sun-like) or point").fixed(),
+    Field::new("direction", Kind::Vec3, "a directional light's direction, from the light toward the scene").optional(),
+    Field::new("position", Kind::Vec3, "a point light's position").optional(),
+    Field::new("color", Kind::Color, "sRGB colour"),
+    Field::new("intensity", Kind::Float { min: 0.0, max: 4.0 }, "factor on the colour, >= 0"),
+    Field::new("space", Kind::Choice(Space::NAMES), "'world', or 'camera': fixed to the view (x right, y up, -z forward)"),
+    Field::new(
+        "shadows",
+        Kind::Setting("Shadows"),
+        "a directional light's shadows: True (the default Shadows), False or None (none), or a Shadows",
+    )
+    .optional(),
+];
+
+const CONSTRUCTORS: &[Constructor] = &[
+    Constructor {
+        name: "directional",
+        params: &["direction", "color", "intensity", "space", "shadows"],
+        positional: 1,
+        required: 1,
+        help: "Parallel light travelling along `direction`.",
+    },
+    Constructor {
+        name: "point",
+        params: &["position", "color", "intensity", "space"],
+        positional: 1,
+        required: 1,
+        help: "Light radiating from `position`, without falloff.",
+    },
+    Constructor {
+        name: "key",
+        params: &[],
+        positional: 0,
+        required: 0,
+        help: "The default key light: from the upper left, behind the viewer, moving with the camera.",
+    },
+];
+
+impl Described for Light {
+    const CLASS: &'static str = "Light";
+    const HELP: &'static str = "A light: directional or point, in world or camera space.";
+
+    fn fields() -> &'static [Field] {
+        FIELDS
+    }
+
+    fn constructors() -> &'static [Constructor] {
+        CONSTRUCTORS
+    }
+
+    fn start(constructor: &str) -> Self {
+        let kind = match constructor {
+            "key" => return Light::default(),
+            "point" => LightKind::Point { position: [0.0; 3] },
+            _ => LightKind::Directional { direction: [0.0, 0.0, -1.0] },
+        };
+        Light { kind, space: Space::World, color: [1.0; 3], intensity: 1.0, shadows: None }
+    }
+
+    fn made_by(&self) -> &'static str {
+        match self.kind {
+            _ if *self == Light::default() => "key",
+            LightKind::Directional { .. } => "directional",
+            LightKind::Point { .. } => "point",
+        }
+    }
+
+    fn get(&self, field: &str) -> Value {
+        match (field, self.kind) {
+            ("kind", LightKind::Directional { .. }) => "directional".into(),
+            ("kind", LightKind::Point { .. }) => "point".into(),
+            ("direction", LightKind::Directional { direction }) => direction.into(),
+            ("position", LightKind::Point { position }) => position.into(),
+            ("color", _) => self.color.into(),
+            ("intensity", _) => self.intensity.into(),
+            ("space", _) => self.space.name().into(),
+            ("shadows", _) => self.shadows.map_or(Value::None, |s| Value::setting(Setting::Shadows(s))),
+            _ => Value::None,
+        }
+    }
+
+    fn set(&mut self, field: &str, v: Value) -> Result<()> {
+        match (field, &mut self.kind) {
+            ("direction", LightKind::Directional { direction }) => *direction = v.triple(field)?,
+            ("position", LightKind::Point { position }) => *position = v.triple(field)?,
+            ("direction", _) => return Err(not_here(field, "a directional light")),
+            ("position", _) => return Err(not_here(field, "a point light")),
+            ("color", _) => self.color = v.triple(field)?,
+            ("intensity", _) => self.intensity = v.float(field)?,
+            ("space", _) => self.space = Space::parse(field, &v.text(field)?)?,
+            _ => {
+                self.shadows = match v {
+                    Value::None | Value::Bool(false) => None,
+                    Value::Bool(true) => Some(Shadows::default()),
+                    other => match other.into_setting(field)? {
+                        Setting::Shadows(s) => Some(s),
+                        other => return Err(super::mismatch(field, &Value::setting(other))),
+                    },
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn check(&self) -> Result<()> {
+        self.validate("")
+    }
+}

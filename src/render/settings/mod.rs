@@ -1,0 +1,248 @@
+//! The scene's settings described once: each settings type lists its fields (name, kind,
+//! one-line help), its constructors (which parameters each takes, in order) and how a field is
+//! read and written. Everything a front end needs is derived from this description: the Python
+//! classes (keyword constructors, getters, `replace`, a `repr` that evaluates back to an equal
+//! value), the type stub, the viewer's controls and the command line's flags. Defaults are not
+//! written here: a field's default is what its constructor makes when the field is not given.
+
+mod camera;
+mod dither;
+mod light;
+mod line_style;
+mod material;
+mod options;
+mod outlines;
+mod shadows;
+mod value;
+
+pub use value::{Setting, Value};
+
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+
+use crate::error::{closest, Error, Result};
+
+/// What a field holds, and so how a front end reads it from the user.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind {
+    Bool,
+    /// An integer; `min` and `max` bound a control (the core's check is the rule).
+    Int { min: i64, max: i64 },
+    /// A real number; `min` and `max` bound a control or a slider.
+    Float { min: f64, max: f64 },
+    /// One of these names.
+    Choice(&'static [&'static str]),
+    /// An sRGB colour: '#rrggbb' or three numbers in [0, 1].
+    Color,
+    /// An sRGB colour with alpha.
+    Rgba,
+    /// Three finite numbers (a point or a direction).
+    Vec3,
+    /// A sequence of numbers.
+    Floats,
+    /// (N,) or (N, 3) numbers: a lookup table.
+    Table,
+    /// A 4x4 matrix.
+    Matrix,
+    /// One name or several, from these.
+    Names(&'static [&'static str]),
+    /// An ink kind's style: True (the common style), False (not drawn), a LineStyle or a colour.
+    Style,
+    /// Another settings class (by its name); some also take a name or a flag, as the field's
+    /// help says.
+    Setting(&'static str),
+    /// A Light or a list of Lights.
+    Lights,
+}
+
+/// One field of a settings type.
+#[derive(Clone, Copy, Debug)]
+pub struct Field {
+    pub name: &'static str,
+    pub kind: Kind,
+    /// None is a value of the field (not only "the default").
+    pub optional: bool,
+    /// Set by the constructor that makes the value, not by `replace`.
+    pub fixed: bool,
+    pub help: &'static str,
+}
+
+impl Field {
+    pub const fn new(name: &'static str, kind: Kind, help: &'static str) -> Field {
+        Field { name, kind, optional: false, fixed: false, help }
+    }
+
+    pub const fn optional(self) -> Field {
+        Field { optional: true, ..self }
+    }
+
+    pub const fn fixed(self) -> Field {
+        Field { fixed: true, ..self }
+    }
+}
+
+/// A way to make a value: `Class(...)` (name "") or `Class.name(...)`.
+#[derive(Clone, Copy, Debug)]
+pub struct Constructor {
+    pub name: &'static str,
+    /// Its parameters, in order: fields, or the constructor-only parameters of
+    /// `Described::extras` (a base colour from which a model derives its coefficients).
+    pub params: &'static [&'static str],
+    /// How many of the first parameters may be given by position, and how many must be given.
+    pub positional: usize,
+    pub required: usize,
+    pub help: &'static str,
+}
+
+/// A settings type described for front ends.
+pub trait Described: Clone + PartialEq + Serialize + DeserializeOwned {
+    const CLASS: &'static str;
+    /// What an unknown keyword is not, where "a parameter of Class.constructor" is not the
+    /// best word ("a render option").
+    const PARAMETER: Option<&'static str> = None;
+    const HELP: &'static str;
+    fn fields() -> &'static [Field];
+    /// Constructor-only parameters.
+    fn extras() -> &'static [Field] {
+        &[]
+    }
+    fn constructors() -> &'static [Constructor];
+    /// What `constructor` makes from no arguments (its required parameters at a placeholder).
+    fn start(constructor: &str) -> Self;
+    /// The constructor that makes this value.
+    fn made_by(&self) -> &'static str;
+    /// A field's value (None where this value has no such field: a Phong exponent of bands).
+    fn get(&self, field: &str) -> Value;
+    /// Sets a field from a value of its kind; range checks are `check`'s.
+    fn set(&mut self, field: &str, value: Value) -> Result<()>;
+    /// A parameter of `constructor` applied while making a value; fields by default.
+    fn apply(&mut self, _constructor: &str, param: &str, value: Value) -> Result<()> {
+        self.set(param, value)
+    }
+    /// A parameter read back from a value it made, for the repr; None where it cannot be
+    /// (a colour that a model scaled: the coefficients it set are printed instead).
+    fn read(&self, _constructor: &str, param: &str) -> Option<Value> {
+        Self::fields().iter().any(|f| f.name == param).then(|| self.get(param))
+    }
+    /// The core's checks, naming fields as constructor arguments.
+    fn check(&self) -> Result<()>;
+    /// `constructor` applied to the arguments (`build`, unless a type's parameters depend on
+    /// each other in more than their order).
+    fn construct(constructor: &str, args: Vec<(&'static str, Value)>) -> Result<Self> {
+        build(constructor, args)
+    }
+}
+
+pub fn constructor<T: Described>(name: &str) -> &'static Constructor {
+    T::constructors().iter().find(|c| c.name == name).expect("a described constructor")
+}
+
+/// The field or constructor-only parameter called `name`.
+pub fn parameter<T: Described>(name: &str) -> Option<&'static Field> {
+    T::fields().iter().chain(T::extras()).find(|f| f.name == name)
+}
+
+fn title<T: Described>(c: &Constructor) -> String {
+    if c.name.is_empty() {
+        T::CLASS.to_string()
+    } else {
+        format!("{}.{}", T::CLASS, c.name)
+    }
+}
+
+fn unknown(name: &str, known: &[&str], what: &str) -> Error {
+    let hint = closest(name, known).map_or(String::new(), |k| format!("; did you mean '{k}'?"));
+    Error::wrong_type(name, format!("not {what}{hint} (they are: {})", known.join(", ")))
+}
+
+/// Checks that the arguments (name, value; None values dropped by the caller) belong to
+/// `constructor` and that its required ones are there.
+pub fn check_arguments<T: Described>(ctor: &Constructor, given: &[&str]) -> Result<()> {
+    for name in given {
+        if !ctor.params.contains(name) {
+            let what = T::PARAMETER.map_or_else(|| format!("a parameter of {}", title::<T>(ctor)), String::from);
+            return Err(unknown(name, ctor.params, &what));
+        }
+    }
+    if let Some(missing) = ctor.params[..ctor.required].iter().find(|p| !given.contains(p)) {
+        return Err(Error::wrong_type(*missing, format!("{} needs it", title::<T>(ctor))));
+    }
+    Ok(())
+}
+
+/// `constructor` applied to the arguments: in the order of its parameters (so a base colour
+/// comes before the coefficients it sets), then checked.
+pub fn build<T: Described>(constructor: &str, mut args: Vec<(&'static str, Value)>) -> Result<T> {
+    let ctor = self::constructor::<T>(constructor);
+    let names: Vec<&str> = args.iter().map(|(n, _)| *n).collect();
+    check_arguments::<T>(ctor, &names)?;
+    args.sort_by_key(|(n, _)| ctor.params.iter().position(|p| p == n));
+    let mut value = T::start(constructor);
+    for (name, v) in args {
+        value.apply(constructor, name, v)?;
+    }
+    value.check()?;
+    Ok(value)
+}
+
+/// A copy of `value` with the fields named changed (None: the field's default), checked.
+pub fn replace<T: Described>(value: &T, changes: Vec<(String, Option<Value>)>) -> Result<T> {
+    let mut out = value.clone();
+    let base = T::start(value.made_by());
+    let names: Vec<&str> = T::fields().iter().filter(|f| !f.fixed).map(|f| f.name).collect();
+    for (name, v) in changes {
+        if !names.contains(&name.as_str()) {
+            return Err(unknown(&name, &names, &format!("a field of {} to replace", T::CLASS)));
+        }
+        out.set(&name, v.unwrap_or_else(|| base.get(&name)))?;
+    }
+    out.check()?;
+    Ok(out)
+}
+
+/// The arguments that make `value` again with its constructor: the required ones, and each
+/// other that differs from what the constructor makes without it.
+pub fn arguments<T: Described>(value: &T) -> (&'static Constructor, Vec<(&'static str, Value)>) {
+    let ctor = constructor::<T>(value.made_by());
+    let base = T::start(ctor.name);
+    let args = ctor
+        .params
+        .iter()
+        .enumerate()
+        .filter_map(|(i, &p)| {
+            // None always means "the default" to a constructor: it adds nothing to a repr
+            let v = value.read(ctor.name, p).filter(|v| *v != Value::None)?;
+            (i < ctor.required || base.read(ctor.name, p).as_ref() != Some(&v)).then_some((p, v))
+        })
+        .collect();
+    (ctor, args)
+}
+
+/// Each field with its default: the value `constructor` makes.
+pub fn defaults<T: Described>(constructor: &str) -> Vec<(&'static Field, Value)> {
+    let start = T::start(constructor);
+    T::fields().iter().map(|f| (f, start.get(f.name))).collect()
+}
+
+/// Converts between a field's value and the core's numbers (f32 fields keep their shortest
+/// decimal, so that a repr reads 0.3 and not 0.30000001192092896).
+pub fn f32_value(x: f32) -> Value {
+    Value::Float(format!("{x}").parse().unwrap_or(x as f64))
+}
+
+pub fn f32s_value(xs: &[f32]) -> Value {
+    Value::Floats(xs.iter().map(|&x| format!("{x}").parse().unwrap_or(x as f64)).collect())
+}
+
+/// The value of a field that this variant of the type lacks, as an error.
+pub fn not_here(field: &str, what: &str) -> Error {
+    Error::invalid(field, format!("only {what} has it"))
+}
+
+/// A value of the wrong variant for the field: a bug of a front end, not of the user.
+pub fn mismatch(field: &str, value: &Value) -> Error {
+    Error::wrong_type(field, format!("cannot take {value:?}"))
+}
+
+#[cfg(test)]
+mod tests;

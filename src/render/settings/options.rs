@@ -1,0 +1,141 @@
+//! `RenderOptions` described: every render setting besides the meshes.
+
+use super::{mismatch, Constructor, Described, Field, Kind, Setting, Value};
+use crate::error::{Error, Result};
+use crate::render::effects::outlines::settings::Outlines;
+use crate::render::scene::options::RenderOptions;
+use crate::render::scene::{Output, Outputs, MAX_SUPERSAMPLE};
+
+const FIELDS: &[Field] = &[
+    Field::new("material", Kind::Setting("Material"), "the material of meshes that name none"),
+    Field::new("transform", Kind::Matrix, "4x4 model -> world matrix (row-major) of meshes that give none"),
+    Field::new("camera", Kind::Setting("Camera"), "the camera"),
+    Field::new("lights", Kind::Lights, "a Light or a list of up to 8"),
+    Field::new("ambient", Kind::Color, "the ambient light's sRGB colour"),
+    Field::new("background", Kind::Rgba, "sRGB or sRGBA where no mesh is"),
+    Field::new("width", Kind::Int { min: 1, max: 16384 }, "the image's width in pixels"),
+    Field::new("height", Kind::Int { min: 1, max: 16384 }, "the image's height in pixels"),
+    Field::new("outputs", Kind::Names(&Output::NAMES), "the outputs computed and read back"),
+    Field::new("msaa", Kind::Int { min: 1, max: 4 }, "samples per pixel: 1 or 4"),
+    Field::new(
+        "supersample",
+        Kind::Int { min: 1, max: MAX_SUPERSAMPLE as i64 },
+        "render this many times larger in each direction and average down",
+    ),
+    Field::new("band_antialias", Kind::Bool, "blend across band borders over about one pixel"),
+    Field::new(
+        "outlines",
+        Kind::Setting("Outlines"),
+        "ink outlines: None, 'mesh', 'image', 'both' or an Outlines",
+    )
+    .optional(),
+];
+
+const PARAMS: &[&str] = &[
+    "material",
+    "transform",
+    "camera",
+    "lights",
+    "ambient",
+    "background",
+    "width",
+    "height",
+    "outputs",
+    "msaa",
+    "supersample",
+    "band_antialias",
+    "outlines",
+];
+
+fn count(field: &str, v: Value, at_least: i64, what: &str) -> Result<u32> {
+    let n = v.int(field)?;
+    if n < at_least {
+        return Err(Error::invalid(field, format!("must be at least {at_least}{what}, got {n}")));
+    }
+    u32::try_from(n).map_err(|_| Error::invalid(field, format!("{n} is too large")))
+}
+
+impl Described for RenderOptions {
+    const CLASS: &'static str = "RenderOptions";
+    const PARAMETER: Option<&'static str> = Some("a render option");
+    const HELP: &'static str = "Every render setting besides the meshes, checked, with the core's defaults.";
+
+    fn fields() -> &'static [Field] {
+        FIELDS
+    }
+
+    fn constructors() -> &'static [Constructor] {
+        &[Constructor { name: "", params: PARAMS, positional: 0, required: 0, help: "" }]
+    }
+
+    fn start(_: &str) -> Self {
+        RenderOptions::default()
+    }
+
+    fn made_by(&self) -> &'static str {
+        ""
+    }
+
+    fn get(&self, field: &str) -> Value {
+        let f = &self.frame;
+        match field {
+            "material" => Value::setting(Setting::Material(self.material.clone())),
+            "transform" => Value::Matrix(self.transform),
+            "camera" => Value::setting(Setting::Camera(self.camera)),
+            "lights" => Value::Lights(self.lights.clone()),
+            "ambient" => self.ambient.into(),
+            "background" => Value::Rgba(f.background.map(|c| format!("{c}").parse().unwrap_or(c as f64))),
+            "width" => Value::Int(f.width as i64),
+            "height" => Value::Int(f.height as i64),
+            "outputs" => Value::Names(f.outputs.iter().map(|o| o.name().to_string()).collect()),
+            "msaa" => Value::Int(f.msaa as i64),
+            "supersample" => Value::Int(f.supersample as i64),
+            "band_antialias" => f.band_antialias.into(),
+            "outlines" => self.outlines.clone().map_or(Value::None, |o| Value::setting(Setting::Outlines(o))),
+            _ => Value::None,
+        }
+    }
+
+    fn set(&mut self, field: &str, v: Value) -> Result<()> {
+        let f = &mut self.frame;
+        match (field, v) {
+            ("transform", Value::Matrix(m)) => self.transform = m,
+            ("lights", Value::Lights(l)) => self.lights = l,
+            ("ambient", v) => self.ambient = v.triple(field)?,
+            ("background", Value::Rgba(c)) => f.background = c.map(|x| x as f32),
+            ("width" | "height", v) => {
+                let n = count(field, v, 1, " pixel")?;
+                *if field == "width" { &mut f.width } else { &mut f.height } = n;
+            }
+            ("msaa", v) => f.msaa = count(field, v, 0, "")?,
+            ("supersample", v) => f.supersample = count(field, v, 0, "")?,
+            ("band_antialias", v) => f.band_antialias = v.bool(field)?,
+            ("outputs", Value::Names(names)) => {
+                let mut o = Outputs::default();
+                for n in &names {
+                    o.insert(Output::parse(field, n)?);
+                }
+                o.validate()?;
+                f.outputs = o;
+            }
+            ("outlines", Value::None) => self.outlines = None,
+            ("outlines", Value::Text(kind)) => {
+                let (mesh, image) = Outlines::parse_kind(field, &kind)?;
+                self.outlines = Some(Outlines::new(mesh, image));
+            }
+            (_, Value::Setting(s)) => match (field, *s) {
+                ("material", Setting::Material(m)) => self.material = m,
+                ("camera", Setting::Camera(c)) => self.camera = c,
+                ("outlines", Setting::Outlines(o)) => self.outlines = Some(o),
+                (_, other) => return Err(mismatch(field, &Value::setting(other))),
+            },
+            (_, other) => return Err(mismatch(field, &other)),
+        }
+        Ok(())
+    }
+
+    /// Sizes, samples and outputs are checked against the device when it renders.
+    fn check(&self) -> Result<()> {
+        Ok(())
+    }
+}

@@ -1,0 +1,70 @@
+//! `Shadows` described.
+
+use super::{Constructor, Described, Field, Kind, Value};
+use crate::error::{Error, Result};
+use crate::render::effects::shadows::settings::{ShadowFilter, Shadows, SHADOW_SIZES};
+
+const FIELDS: &[Field] = &[
+    Field::new(
+        "size",
+        Kind::Int { min: *SHADOW_SIZES.start() as i64, max: *SHADOW_SIZES.end() as i64 },
+        "the shadow map's side in texels, a power of two",
+    ),
+    Field::new("bias", Kind::Float { min: 0.0, max: 8.0 }, "depth bias in texels per unit of receiver slope, >= 0"),
+    Field::new("filter", Kind::Choice(ShadowFilter::NAMES), "how the map is read: 'pcf' (soft edges) or 'none'"),
+];
+
+impl Described for Shadows {
+    const CLASS: &'static str = "Shadows";
+    const HELP: &'static str = "Shadow settings of a directional light.";
+
+    fn fields() -> &'static [Field] {
+        FIELDS
+    }
+
+    fn constructors() -> &'static [Constructor] {
+        &[Constructor { name: "", params: &["size", "bias", "filter"], positional: 3, required: 0, help: "" }]
+    }
+
+    fn start(_: &str) -> Self {
+        Shadows::default()
+    }
+
+    fn made_by(&self) -> &'static str {
+        ""
+    }
+
+    fn get(&self, field: &str) -> Value {
+        match field {
+            "size" => Value::Int(self.size as i64),
+            "bias" => self.bias.into(),
+            "filter" => self.filter.name().into(),
+            _ => Value::None,
+        }
+    }
+
+    fn set(&mut self, field: &str, v: Value) -> Result<()> {
+        match field {
+            "size" => {
+                let n = v.int(field)?;
+                self.size = u32::try_from(n).map_err(|_| {
+                    Error::invalid(
+                        field,
+                        format!(
+                            "must be a power of two from {} to {}, got {n}",
+                            SHADOW_SIZES.start(),
+                            SHADOW_SIZES.end()
+                        ),
+                    )
+                })?
+            }
+            "bias" => self.bias = v.float(field)?,
+            _ => self.filter = ShadowFilter::parse(field, &v.text(field)?)?,
+        }
+        Ok(())
+    }
+
+    fn check(&self) -> Result<()> {
+        self.validate("")
+    }
+}

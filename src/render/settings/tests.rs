@@ -1,0 +1,93 @@
+//! Every settings type's description against its values: each constructor's arguments make
+//! the value again, `replace` changes only what it names, and every field reads back what it set.
+
+use super::*;
+use crate::render::effects::dither::Dither;
+use crate::render::effects::outlines::settings::{LineStyle, Outlines};
+use crate::render::effects::shadows::settings::Shadows;
+use crate::render::scene::camera::Camera;
+use crate::render::scene::light::Light;
+use crate::render::scene::material::Material;
+use crate::render::scene::options::RenderOptions;
+
+/// Each constructor's value with no arguments, and with every parameter changed from its
+/// default where a second value is easy to name, makes itself again from its arguments.
+fn round_trips<T: Described + std::fmt::Debug>() {
+    for c in T::constructors() {
+        let v = T::start(c.name);
+        let (ctor, args) = arguments(&v);
+        assert_eq!(ctor.name, c.name, "{}: made by another constructor", T::CLASS);
+        let again: T = T::construct(c.name, args).unwrap_or_else(|e| panic!("{}.{}: {e}", T::CLASS, c.name));
+        assert_eq!(again, v, "{}.{}", T::CLASS, c.name);
+        for f in T::fields() {
+            let got = v.get(f.name);
+            if got != Value::None && !f.fixed {
+                let mut w = v.clone();
+                w.set(f.name, got.clone()).unwrap_or_else(|e| panic!("{}.{}: {e}", T::CLASS, f.name));
+                assert_eq!(w, v, "{}.{} does not read back what it set", T::CLASS, f.name);
+            }
+        }
+    }
+}
+
+#[test]
+fn every_constructor_makes_its_value_again() {
+    round_trips::<Material>();
+    round_trips::<Dither>();
+    round_trips::<Light>();
+    round_trips::<Shadows>();
+    round_trips::<Camera>();
+    round_trips::<LineStyle>();
+    round_trips::<Outlines>();
+    round_trips::<RenderOptions>();
+}
+
+#[test]
+fn a_base_colour_is_printed_as_the_coefficients_it_set() {
+    let m: Material = Material::construct("lambert", vec![("color", Value::Triple([0.2, 0.4, 0.6]))]).unwrap();
+    let (_, args) = arguments(&m);
+    let names: Vec<&str> = args.iter().map(|(n, _)| *n).collect();
+    assert_eq!(names, ["ambient", "diffuse"]);
+    assert_eq!(Material::construct("lambert", args).unwrap(), m);
+    let b: Material = Material::construct("bands", vec![("color", Value::Triple([0.2, 0.4, 0.6]))]).unwrap();
+    assert_eq!(arguments(&b).1, vec![("color", Value::Triple([0.2, 0.4, 0.6]))]);
+}
+
+#[test]
+fn replace_changes_only_the_field_named_and_checks_it() {
+    let o = Outlines::default();
+    let r = replace(&o, vec![("crease_angle".into(), Some(Value::Float(45.0)))]).unwrap();
+    assert_eq!(r.crease_angle, 45.0);
+    assert_eq!(Outlines { crease_angle: o.crease_angle, ..r.clone() }, o);
+    let e = replace(&o, vec![("crease_angle".into(), Some(Value::Float(200.0)))]).unwrap_err();
+    assert!(e.to_string().starts_with("crease_angle"), "{e}");
+    let e = replace(&o, vec![("crease_angel".into(), Some(Value::Float(20.0)))]).unwrap_err();
+    assert!(e.to_string().contains("did you mean 'crease_angle'"), "{e}");
+    let back = replace(&r, vec![("crease_angle".into(), None)]).unwrap();
+    assert_eq!(back, o);
+}
+
+#[test]
+fn the_common_style_reaches_every_kind_given_as_true() {
+    let red = [1.0, 0.0, 0.0];
+    let o = Outlines::construct(
+        "",
+        vec![("color", Value::Triple(red)), ("suggestive", Value::Bool(true)), ("crease", Value::Bool(false))],
+    )
+    .unwrap();
+    let style = |k: &str| o.get(k);
+    let red_style = Value::setting(Setting::LineStyle(LineStyle { color: red, ..LineStyle::default() }));
+    assert_eq!(style("silhouette"), red_style);
+    assert_eq!(style("suggestive"), red_style);
+    assert_eq!(style("ridge"), Value::Bool(false));
+    let (_, args) = arguments(&o);
+    assert_eq!(Outlines::construct("", args).unwrap(), o);
+}
+
+#[test]
+fn unknown_and_missing_arguments_are_named() {
+    let e = Light::construct("directional", vec![]).unwrap_err();
+    assert!(e.to_string().starts_with("direction:"), "{e}");
+    let e = check_arguments::<RenderOptions>(constructor::<RenderOptions>(""), &["widht"]).unwrap_err();
+    assert!(e.to_string().starts_with("widht: not a render option; did you mean 'width'"), "{e}");
+}
