@@ -2,12 +2,13 @@
 #   make demo   builds toonmesh into .venv and runs the main job
 #   make test   builds it with the peer libraries and runs every test (Rust and Python)
 #   make notebook  builds it with the notebook extra and opens the quickstart in JupyterLab
-# and: make docs (the API reference from the docstrings, into docs/api/)
+# and: make docs (the API reference from the docstrings, into docs/api/), make stubs (the core's
+# type stub, written from its description of the settings classes)
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 
-.PHONY: demo test bench docs notebook sysdeps sysdeps-test build build-test clean
+.PHONY: demo test bench docs stubs notebook sysdeps sysdeps-test build build-test clean
 
 sysdeps:
 	@bash scripts/system-deps.sh
@@ -48,3 +49,6 @@ docs: build-test
 
 clean:
 	rm -rf $(VENV) target
+
+stubs: build-test
+	$(BIN)/python scripts/stubs.py

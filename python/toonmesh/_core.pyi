@@ -1,9 +1,9 @@
 # Type stubs for the compiled core (checked against it with `python -m mypy.stubtest toonmesh._core`).
-from typing import Any, Dict, Final, List, Literal, Optional, Tuple, Union, final
+# Written by scripts/stubs.py (`make stubs`) from this template and the core's description of its
+# settings classes: edit the template, not the output.
+from typing import Any, Dict, Final, List, Literal, Optional, Sequence, Tuple, TypedDict, Union, final
 
 from typing_extensions import Unpack
-
-from toonmesh._render import RenderKeywords
 
 import numpy as np
 import numpy.typing as npt
@@ -21,6 +21,13 @@ __all__ = [
     "IMAGE_RULES",
     "OUTPUTS",
     "SHADOW_FILTERS",
+    "HATCH_MODES",
+    "BACKENDS",
+    "SMOOTH_METHODS",
+    "SMOOTH_WEIGHTS",
+    "SMOOTH_BOUNDARIES",
+    "SMOOTH_PRESETS",
+    "DEFAULT_CREASE_ANGLE",
     "Camera",
     "ConvergenceError",
     "Dither",
@@ -74,6 +81,13 @@ HIGHLIGHTS: Tuple[str, ...]
 DITHER_PATTERNS: Tuple[str, ...]
 DITHER_SPACES: Tuple[str, ...]
 SHADOW_FILTERS: Tuple[str, ...]
+HATCH_MODES: Tuple[str, ...]
+BACKENDS: Tuple[str, ...]
+SMOOTH_METHODS: Tuple[str, ...]
+SMOOTH_WEIGHTS: Tuple[str, ...]
+SMOOTH_BOUNDARIES: Tuple[str, ...]
+SMOOTH_PRESETS: Tuple[str, ...]
+DEFAULT_CREASE_ANGLE: float
 
 class ConvergenceError(RuntimeError): ...
 class GpuUnavailableError(RuntimeError): ...
@@ -121,130 +135,77 @@ def _denoise(
 _Color = Any  # '#rrggbb' or 3 numbers in [0, 1]
 _Vec3 = Tuple[float, float, float]
 
+
+class _RenderKeywords(TypedDict, total=False):
+    """The keywords of RenderOptions (None: the core's default)."""
+    material: Optional[Material]
+    transform: Optional[Any]
+    camera: Optional[Camera]
+    lights: Optional[Union[Light, Sequence[Light]]]
+    ambient: Optional[_Color]
+    background: Optional[_Color]
+    width: Optional[int]
+    height: Optional[int]
+    outputs: Optional[Union[str, Sequence[str]]]
+    msaa: Optional[int]
+    supersample: Optional[int]
+    band_antialias: Optional[bool]
+    outlines: Optional[Union[str, Outlines]]
+
 @final
 class Dither:
-    """Dithering between neighbouring bands: pattern "bayer2", "bayer4" (default), "bayer8" or
-    "blue"; space "screen" (default) or "object"; amount in L.n, 0 to 2 (default 0.15); scale:
-    pixels a cell covers, 1 to 64 (default 1)."""
-
-    def __new__(
-        cls,
-        pattern: Optional[str] = ...,
-        *,
-        space: Optional[str] = ...,
-        amount: Optional[float] = ...,
-        scale: Optional[float] = ...,
-    ) -> Dither: ...
+    """Dithering between neighbouring bands of a toon material. Fields: pattern: the threshold
+    pattern; space: what the pattern is fixed to: the screen's pixels or the surface; amount:
+    how far in L.n a pixel may move toward the neighbouring band, 0 to 2; scale: pixels a
+    pattern cell covers, 1 to 64.
+    """
+    def __new__(cls, pattern: Optional[Literal['bayer2', 'bayer4', 'bayer8', 'blue']] = ..., *, space: Optional[Literal['screen', 'object']] = ..., amount: Optional[float] = ..., scale: Optional[float] = ...) -> Dither: ...
     pattern: Final[str]
     space: Final[str]
     amount: Final[float]
     scale: Final[float]
-    def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
-
-_DitherArg = Union[None, str, Dither]
-
-@final
-class Material:
+    def replace(self, *, pattern: Optional[Literal['bayer2', 'bayer4', 'bayer8', 'blue']] = ..., space: Optional[Literal['screen', 'object']] = ..., amount: Optional[float] = ..., scale: Optional[float] = ...) -> Dither: ...
     @staticmethod
-    def lambert(color: Optional[_Color] = ..., *, ambient: Optional[_Color] = ..., per_vertex: Optional[bool] = ...) -> Material: ...
-    @staticmethod
-    def phong(
-        color: Optional[_Color] = ...,
-        *,
-        specular: Optional[_Color] = ...,
-        shininess: Optional[float] = ...,
-        ambient: Optional[_Color] = ...,
-        per_vertex: Optional[bool] = ...,
-    ) -> Material: ...
-    @staticmethod
-    def thresholded_phong(
-        color: Optional[_Color] = ...,
-        *,
-        t_h: Optional[float] = ...,
-        t_s: Optional[float] = ...,
-        highlight: Optional[str] = ...,
-        ambient: Optional[_Color] = ...,
-        specular: Optional[_Color] = ...,
-        per_vertex: Optional[bool] = ...,
-        dither: _DitherArg = ...,
-    ) -> Material: ...
-    @staticmethod
-    def bands(
-        color: Optional[_Color] = ...,
-        *,
-        thresholds: Optional[Any] = ...,
-        values: Optional[Any] = ...,
-        preset: Optional[Literal["paper"]] = ...,
-        per_vertex: Optional[bool] = ...,
-        dither: _DitherArg = ...,
-    ) -> Material: ...
-    @staticmethod
-    def hatching(
-        color: Optional[_Color] = ...,
-        *,
-        ink: Optional[_Color] = ...,
-        thresholds: Optional[Any] = ...,
-        values: Optional[Any] = ...,
-        spacing: Optional[float] = ...,
-        width: Optional[float] = ...,
-        mode: Optional[Literal["field", "triplanar"]] = ...,
-        per_vertex: Optional[bool] = ...,
-        dither: _DitherArg = ...,
-    ) -> Material: ...
-    @staticmethod
-    def lut(
-        table: Optional[Any] = ..., color: Optional[_Color] = ..., *, per_vertex: Optional[bool] = ..., dither: _DitherArg = ...
-    ) -> Material: ...
-    model: Final[str]
-    hatch_style: Final[Optional[Dict[str, Any]]]
-    dither: Final[Optional[Dither]]
-    diffuse: Final[_Vec3]
-    ambient: Final[_Vec3]
-    specular: Final[_Vec3]
-    per_vertex: Final[bool]
-    shininess: Final[Optional[float]]
-    t_h: Final[Optional[float]]
-    t_s: Final[Optional[float]]
-    highlight: Final[Optional[str]]
-    thresholds: Final[Optional[List[float]]]
-    values: Final[Optional[List[float]]]
-    table: Final[Optional[List[_Vec3]]]
+    def describe() -> Dict[str, Any]: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class Shadows:
-    """Shadow settings of a directional light: the shadow map's side in texels (a power of two
-    from 64 to 8192, default 2048), the depth bias in texels per unit of receiver slope (>= 0,
-    default 1.0) and the filter, "pcf" (default) or "none"."""
-
-    def __new__(
-        cls, size: Optional[int] = ..., bias: Optional[float] = ..., filter: Optional[str] = ...
-    ) -> Shadows: ...
+    """Shadow settings of a directional light. Fields: size: the shadow map's side in texels, a
+    power of two; bias: depth bias in texels per unit of receiver slope, >= 0; filter: how the
+    map is read: 'pcf' (soft edges) or 'none'.
+    """
+    def __new__(cls, size: Optional[int] = ..., bias: Optional[float] = ..., filter: Optional[Literal['none', 'pcf']] = ...) -> Shadows: ...
     size: Final[int]
     bias: Final[float]
     filter: Final[str]
+    def replace(self, *, size: Optional[int] = ..., bias: Optional[float] = ..., filter: Optional[Literal['none', 'pcf']] = ...) -> Shadows: ...
+    @staticmethod
+    def describe() -> Dict[str, Any]: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class Light:
+    """A light: directional or point, in world or camera space. Fields: kind: directional (sun-
+    like) or point; direction: a directional light's direction, from the light toward the scene;
+    position: a point light's position; color: sRGB colour; intensity: factor on the colour, >=
+    0; space: 'world', or 'camera': fixed to the view (x right, y up, -z forward); shadows: a
+    directional light's shadows: True (the default Shadows), False or None (none), or a Shadows.
+    """
     @staticmethod
-    def directional(
-        direction: Any,
-        *,
-        color: Optional[_Color] = ...,
-        intensity: Optional[float] = ...,
-        space: Optional[str] = ...,
-        shadows: Union[None, bool, Shadows] = ...,
-    ) -> Light: ...
+    def directional(direction: Sequence[float], *, color: Optional[_Color] = ..., intensity: Optional[float] = ..., space: Optional[Literal['world', 'camera']] = ..., shadows: Optional[Union[bool, Shadows]] = ...) -> Light:
+        """Parallel light travelling along `direction`."""
+        ...
     @staticmethod
-    def point(
-        position: Any, *, color: Optional[_Color] = ..., intensity: Optional[float] = ..., space: Optional[str] = ...
-    ) -> Light: ...
+    def point(position: Sequence[float], *, color: Optional[_Color] = ..., intensity: Optional[float] = ..., space: Optional[Literal['world', 'camera']] = ...) -> Light:
+        """Light radiating from `position`, without falloff."""
+        ...
     @staticmethod
-    def key() -> Light: ...
+    def key() -> Light:
+        """The default key light: from the upper left, behind the viewer, moving with the camera."""
+        ...
     kind: Final[str]
     direction: Final[Optional[_Vec3]]
     position: Final[Optional[_Vec3]]
@@ -252,40 +213,35 @@ class Light:
     intensity: Final[float]
     space: Final[str]
     shadows: Final[Optional[Shadows]]
+    def replace(self, *, direction: Optional[Sequence[float]] = ..., position: Optional[Sequence[float]] = ..., color: Optional[_Color] = ..., intensity: Optional[float] = ..., space: Optional[Literal['world', 'camera']] = ..., shadows: Optional[Union[bool, Shadows]] = ...) -> Light: ...
+    @staticmethod
+    def describe() -> Dict[str, Any]: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class Camera:
+    """A camera: framed to fit the scene, looking at a point, or orthographic. Fields: kind: framed
+    to fit the scene, or looking at a point; projection: the projection; eye: a look-at camera's
+    position; target: the point a look-at camera looks at; up: the direction that is up in the
+    image; direction: a fitted camera's direction from the scene toward the eye (the scene is
+    framed to fit); margin: a fitted camera's room around the scene (1: touching); fov_y:
+    vertical field of view in degrees, in (0, 180); height: height of an orthographic view in
+    world units, > 0; near: near clip distance (None: from the scene's bounds); far: far clip
+    distance (None: from the scene's bounds).
+    """
     @staticmethod
-    def fit(
-        direction: Optional[Any] = ...,
-        *,
-        up: Optional[Any] = ...,
-        fov_y: Optional[float] = ...,
-        margin: Optional[float] = ...,
-        orthographic: Optional[bool] = ...,
-    ) -> Camera: ...
+    def fit(direction: Optional[Sequence[float]] = ..., *, up: Optional[Sequence[float]] = ..., fov_y: Optional[float] = ..., margin: Optional[float] = ..., orthographic: Optional[bool] = ...) -> Camera:
+        """Frames the scene's bounding sphere from `direction`."""
+        ...
     @staticmethod
-    def look_at(
-        eye: Any,
-        target: Optional[Any] = ...,
-        *,
-        up: Optional[Any] = ...,
-        fov_y: Optional[float] = ...,
-        near: Optional[float] = ...,
-        far: Optional[float] = ...,
-    ) -> Camera: ...
+    def look_at(eye: Sequence[float], target: Optional[Sequence[float]] = ..., *, up: Optional[Sequence[float]] = ..., fov_y: Optional[float] = ..., near: Optional[float] = ..., far: Optional[float] = ...) -> Camera:
+        """A perspective camera at `eye` looking at `target`."""
+        ...
     @staticmethod
-    def orthographic(
-        eye: Any,
-        target: Optional[Any] = ...,
-        *,
-        up: Optional[Any] = ...,
-        height: Optional[float] = ...,
-        near: Optional[float] = ...,
-        far: Optional[float] = ...,
-    ) -> Camera: ...
+    def orthographic(eye: Sequence[float], target: Optional[Sequence[float]] = ..., *, up: Optional[Sequence[float]] = ..., height: Optional[float] = ..., near: Optional[float] = ..., far: Optional[float] = ...) -> Camera:
+        """An orthographic camera at `eye` looking at `target`."""
+        ...
     kind: Final[str]
     projection: Final[str]
     eye: Final[Optional[_Vec3]]
@@ -297,60 +253,64 @@ class Camera:
     height: Final[Optional[float]]
     near: Final[Optional[float]]
     far: Final[Optional[float]]
+    def replace(self, *, eye: Optional[Sequence[float]] = ..., target: Optional[Sequence[float]] = ..., up: Optional[Sequence[float]] = ..., direction: Optional[Sequence[float]] = ..., margin: Optional[float] = ..., fov_y: Optional[float] = ..., height: Optional[float] = ..., near: Optional[float] = ..., far: Optional[float] = ...) -> Camera: ...
+    @staticmethod
+    def describe() -> Dict[str, Any]: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class LineStyle:
+    """How one kind of ink line is drawn. Fields: color: the ink's sRGB colour; width: width in
+    output pixels, the same at every resolution and supersampling factor.
+    """
     def __new__(cls, color: Optional[_Color] = ..., width: Optional[float] = ...) -> LineStyle: ...
     color: Final[_Vec3]
     width: Final[float]
+    def replace(self, *, color: Optional[_Color] = ..., width: Optional[float] = ...) -> LineStyle: ...
+    @staticmethod
+    def describe() -> Dict[str, Any]: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
-_Style = Any  # None, True, False, a LineStyle or a colour
-
 @final
 class Outlines:
-    def __new__(
-        cls,
-        kind: Optional[str] = ...,
-        *,
-        color: Optional[_Color] = ...,
-        width: Optional[float] = ...,
-        silhouette: _Style = ...,
-        boundary: _Style = ...,
-        crease: _Style = ...,
-        ridge: _Style = ...,
-        valley: _Style = ...,
-        nonmanifold: _Style = ...,
-        suggestive: _Style = ...,
-        material: _Style = ...,
-        image: _Style = ...,
-        crease_angle: Optional[float] = ...,
-        weld: Optional[bool] = ...,
-        normal_threshold: Optional[float] = ...,
-        depth_threshold: Optional[float] = ...,
-        depth_offset: Optional[float] = ...,
-        contours: Optional[str] = ...,
-        suggestive_threshold: Optional[float] = ...,
-        curvature_smoothing: Optional[float] = ...,
-        min_crease_length: Optional[float] = ...,
-        max_crease_turn: Optional[float] = ...,
-        image_rule: Optional[str] = ...,
-        normal_angle: Optional[float] = ...,
-        depth_jump: Optional[float] = ...,
-        taper: Optional[float] = ...,
-        width_by_depth: Optional[bool] = ...,
-        join_kinds: Optional[bool] = ...,
-    ) -> Outlines: ...
+    """Ink outlines for a render: lines found on the mesh and edges found in the image. Fields:
+    kind: lines found on the mesh, edges found in the image, or both; silhouette: True (the
+    common style), False (not drawn), a LineStyle or a colour; boundary: True (the common
+    style), False (not drawn), a LineStyle or a colour; nonmanifold: True (the common style),
+    False (not drawn), a LineStyle or a colour; ridge: True (the common style), False (not
+    drawn), a LineStyle or a colour; valley: True (the common style), False (not drawn), a
+    LineStyle or a colour; suggestive: suggestive contours (DeCarlo et al.): drawn only when
+    asked for; material: borders between scene items that meet edge to edge; image: image-space
+    edges; crease_angle: dihedral angle in degrees above which an edge is a crease; weld: merge
+    vertices at equal positions first, so seams are not drawn as boundaries; contours: how
+    silhouettes are found: 'faces', 'smooth' or 'auto'; suggestive_threshold: the suggestive
+    contours' derivative test, relative to the mesh's feature size; curvature_smoothing: width
+    in mean edge lengths over which suggestive contours' curvature is averaged (None: 2, at most
+    1% of the diagonal); min_crease_length: crease pieces shorter than this fraction of the
+    bounding-box diagonal are not drawn; max_crease_turn: crease pieces turning by more than
+    this many degrees on average are not drawn (180: all); image_rule: how image-space edges are
+    found; normal_angle: degrees of normal turn between pixels drawn as an edge; depth_jump:
+    depth jump between pixels drawn as an edge, in pixel footprints; normal_threshold: the paper
+    rule's Sobel threshold on normals; depth_threshold: the paper rule's Sobel threshold on
+    depth; depth_offset: hidden-line removal's tolerance in pixel footprints; taper: pixels over
+    which lines thin toward their ends (0: none); width_by_depth: scale line widths by the scene
+    centre's depth over the line's; join_kinds: join strokes of different kinds that meet end to
+    end.
+    """
+    def __new__(cls, kind: Optional[Literal['mesh', 'image', 'both']] = ..., *, color: Optional[_Color] = ..., width: Optional[float] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., crease: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
     kind: Final[str]
-    styles: Final[Dict[str, Optional[LineStyle]]]
+    silhouette: Final[Optional[Union[LineStyle, bool]]]
+    boundary: Final[Optional[Union[LineStyle, bool]]]
+    nonmanifold: Final[Optional[Union[LineStyle, bool]]]
+    ridge: Final[Optional[Union[LineStyle, bool]]]
+    valley: Final[Optional[Union[LineStyle, bool]]]
+    suggestive: Final[Optional[Union[LineStyle, bool]]]
+    material: Final[Optional[Union[LineStyle, bool]]]
+    image: Final[Optional[Union[LineStyle, bool]]]
     crease_angle: Final[float]
     weld: Final[bool]
-    normal_threshold: Final[float]
-    depth_threshold: Final[float]
-    depth_offset: Final[float]
     contours: Final[str]
     suggestive_threshold: Final[float]
     curvature_smoothing: Final[Optional[float]]
@@ -359,22 +319,99 @@ class Outlines:
     image_rule: Final[str]
     normal_angle: Final[float]
     depth_jump: Final[float]
+    normal_threshold: Final[float]
+    depth_threshold: Final[float]
+    depth_offset: Final[float]
     taper: Final[float]
     width_by_depth: Final[bool]
     join_kinds: Final[bool]
+    styles: Final[Dict[str, Optional[LineStyle]]]
+    def replace(self, *, kind: Optional[Literal['mesh', 'image', 'both']] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
+    @staticmethod
+    def describe() -> Dict[str, Any]: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
-def _restore(cls: str, state: str) -> Any: ...
-def kang_table() -> npt.NDArray[np.float64]: ...
+@final
+class Material:
+    """A shading model with its colour coefficients and per-pixel effects. Fields: model: the
+    shading model (hatching is 'bands' with hatch strokes); diffuse: the diffuse coefficient
+    d_m, sRGB; ambient: the ambient coefficient a_m, sRGB; specular: the highlight coefficient
+    S_m, sRGB; per_vertex: shade the vertices and interpolate (Gouraud) instead of every pixel;
+    shininess: Phong's exponent, > 0; t_h: the thresholded Phong model's diffuse threshold on
+    L.n; t_s: the thresholded Phong model's highlight threshold; highlight: the highlight term:
+    'blinn' (n . h) or 'paper' (L . v, as the paper writes it); thresholds: the bands'
+    thresholds on L.n: 1 to 8, strictly increasing; values: the bands' tones: one more than the
+    thresholds, each >= 0; table: a lookup table: (N,) grey or (N, 3) RGB factors, 1 <= N <=
+    256; ink: hatch strokes' sRGB colour; spacing: pixels between hatch strokes, 2 to 256;
+    width: hatch strokes' width in pixels, up to the spacing; mode: how hatch strokes are laid:
+    along the principal directions ('field') or straight on the axis planes ('triplanar');
+    dither: dithering between bands: None, a pattern name or a Dither (needs per-pixel shading).
+    """
+    @staticmethod
+    def lambert(color: Optional[_Color] = ..., *, ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ...) -> Material:
+        """Plain Lambert: f = max(L.n, 0), no highlight."""
+        ...
+    @staticmethod
+    def phong(color: Optional[_Color] = ..., *, specular: Optional[_Color] = ..., shininess: Optional[float] = ..., ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ...) -> Material:
+        """Plain Phong: f = max(L.n, 0), s = max(R.v, 0)^shininess on lit points."""
+        ...
+    @staticmethod
+    def thresholded_phong(color: Optional[_Color] = ..., *, t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material:
+        """Al-Rousan et al.'s toon model: thresholded diffuse and highlight terms."""
+        ...
+    @staticmethod
+    def bands(color: Optional[_Color] = ..., *, thresholds: Optional[Sequence[float]] = ..., preset: Optional[Literal['paper']] = ..., values: Optional[Sequence[float]] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material:
+        """Borquez and Yepez's toon bands: f = values[number of thresholds <= L.n]."""
+        ...
+    @staticmethod
+    def hatching(color: Optional[_Color] = ..., *, ink: Optional[_Color] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material:
+        """Cross-hatching: the bands' tone picks how many layers of ink strokes cover the paper."""
+        ...
+    @staticmethod
+    def lut(table: Optional[Any] = ..., color: Optional[_Color] = ..., *, per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material:
+        """A lookup table (gradient map) of L.n applied to the colour."""
+        ...
+    model: Final[str]
+    diffuse: Final[_Vec3]
+    ambient: Final[_Vec3]
+    specular: Final[_Vec3]
+    per_vertex: Final[bool]
+    shininess: Final[Optional[float]]
+    t_h: Final[Optional[float]]
+    t_s: Final[Optional[float]]
+    highlight: Final[Optional[str]]
+    thresholds: Final[Optional[List[float]]]
+    values: Final[Optional[List[float]]]
+    table: Final[Optional[List[_Vec3]]]
+    ink: Final[Optional[_Vec3]]
+    spacing: Final[Optional[float]]
+    width: Final[Optional[float]]
+    mode: Final[Optional[str]]
+    dither: Final[Optional[Dither]]
+    hatch_style: Final[Optional[Dict[str, Any]]]
+    def replace(self, *, diffuse: Optional[_Color] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., shininess: Optional[float] = ..., t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., table: Optional[Any] = ..., ink: Optional[_Color] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material: ...
+    @staticmethod
+    def describe() -> Dict[str, Any]: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
 class RenderOptions:
-    """Every render setting besides the meshes (the keywords of RenderKeywords), checked,
-    with the core's defaults."""
-
-    def __new__(cls, **options: Unpack[RenderKeywords]) -> RenderOptions: ...
-    def replace(self, **options: Unpack[RenderKeywords]) -> RenderOptions: ...
+    """Every render setting besides the meshes, checked, with the core's defaults. Fields:
+    material: the material of meshes that name none; transform: a 4x4 affine model -> world
+    matrix (row-major, applied to column vectors) for meshes that give none; camera: the camera
+    (Camera.fit(): the scene framed from the front); lights: a Light or a list of up to 8;
+    ambient: the ambient light's sRGB colour; background: sRGB or sRGBA where no mesh is; width:
+    the image's width in pixels, 1 to the device's limit; height: the image's height in pixels,
+    1 to the device's limit; outputs: the outputs computed and read back, and only those
+    ('outline' and 'lines' need outlines, 'shadow' a light with shadows); msaa: samples per
+    pixel: 1 or 4; supersample: render this many times larger in each direction and average
+    down; band_antialias: blend across each band border over about one pixel, from the screen-
+    space change of the shading term: smooth tone borders at no extra samples (False: the
+    papers' hard borders); outlines: ink outlines: None, 'mesh', 'image', 'both' or an Outlines.
+    """
+    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ...) -> RenderOptions: ...
     material: Final[Material]
     transform: Final[List[List[float]]]
     camera: Final[Camera]
@@ -388,8 +425,15 @@ class RenderOptions:
     supersample: Final[int]
     band_antialias: Final[bool]
     outlines: Final[Optional[Outlines]]
+    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ...) -> RenderOptions: ...
+    @staticmethod
+    def describe() -> Dict[str, Any]: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
+
+def _restore(cls: str, state: str) -> Any: ...
+def kang_table() -> npt.NDArray[np.float64]: ...
+
 
 @final
 class Renderer:

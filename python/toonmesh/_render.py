@@ -32,44 +32,24 @@ if TYPE_CHECKING:
     from typing_extensions import Unpack
 
 
-class RenderKeywords(TypedDict, total=False):
-    """The keywords of :class:`RenderOptions`, and so of :func:`render`,
-    :meth:`Renderer.render` and :meth:`Renderer.render_many`. Each has its default in the core;
-    a keyword given as None takes it.
+def _render_keywords() -> Any:
+    """The keywords of :class:`RenderOptions` as a TypedDict, documented from the core's
+    description (its help and defaults), so that no keyword, default or word is written twice."""
+    (made,) = RenderOptions.describe()["constructors"]
+    keywords = TypedDict("RenderKeywords", {p["name"]: Any for p in made["params"]}, total=False)  # type: ignore[misc]
+    items = "\n".join(f"- ``{p['name']}``: {p['help']} (default ``{p['default']!r}``);" for p in made["params"])
+    keywords.__doc__ = (
+        "The keywords of :class:`RenderOptions`, and so of :func:`render`, :meth:`Renderer.render` "
+        "and :meth:`Renderer.render_many`. Each has its default in the core; a keyword given as None "
+        "takes it.\n\n" + items
+    )
+    return keywords
 
-    - ``material``: a :class:`Material` for meshes that name none (default
-      ``Material.bands()``, Borquez and Yepez's bands);
-    - ``transform``: a 4x4 affine model -> world matrix (row-major, applied to column vectors)
-      for meshes that give none (default identity);
-    - ``camera``: a :class:`Camera` (default ``Camera.fit()``: the scene framed from the front);
-    - ``lights``: a :class:`Light` or a list of up to 8 (default ``[Light.key()]``);
-    - ``ambient``: the ambient light's sRGB colour (default white);
-    - ``background``: sRGB or sRGBA where no mesh is (default opaque white);
-    - ``width``, ``height``: the image's size in pixels, 1 to the device's limit (default 512);
-    - ``outputs``: any of "color", "normal", "depth", "outline", "lines", "shadow" (default
-      ("color",)); only those are computed and read back ("outline" and "lines" need outlines,
-      "shadow" a light with ``shadows=True``);
-    - ``msaa``: samples per pixel, 1 or 4 (default 1); ``supersample``: render 1 to 4 times
-      larger in each direction and average down (default 1); ``band_antialias``: blend across
-      each band border and threshold over about one pixel, from the screen-space change of the
-      shading term (default True): smooth tone borders at no extra samples; False gives the
-      hard borders of the papers' figures;
-    - ``outlines``: None (default), "mesh", "image", "both" or an :class:`Outlines`.
-    """
 
-    material: Optional[Material]
-    transform: Optional[Any]
-    camera: Optional[Camera]
-    lights: Union[None, Light, Sequence[Light]]
-    ambient: Optional[Any]
-    background: Optional[Any]
-    width: int
-    height: int
-    outputs: Union[None, str, Sequence[str]]
-    msaa: int
-    supersample: int
-    band_antialias: bool
-    outlines: Union[None, str, Outlines]
+if TYPE_CHECKING:
+    from toonmesh._core import _RenderKeywords as RenderKeywords
+else:
+    RenderKeywords = _render_keywords()
 
 
 def _smoothing_iterations(iterations: Any) -> int:

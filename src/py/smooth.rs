@@ -9,17 +9,7 @@ use super::errors::to_py;
 use super::mesh_input::{MeshInput, PositionsRef};
 use crate::error::Error;
 use crate::smooth::denoise::{self, Filter};
-use crate::smooth::{self, Args, Method};
-
-fn method(name: &str) -> Result<Method, Error> {
-    match name {
-        "laplacian" => Ok(Method::Laplacian),
-        "taubin" => Ok(Method::Taubin),
-        "hc" => Ok(Method::Hc),
-        "implicit" => Ok(Method::Implicit),
-        _ => Err(Error::invalid("method", format!("unknown smoothing method '{name}'"))),
-    }
-}
+use crate::smooth::{self, Args};
 
 #[pyfunction]
 #[pyo3(signature = (
@@ -48,7 +38,7 @@ fn _smooth<'py>(
     preset: Option<&Bound<'py, PyAny>>,
     weld: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let m = method(method_name).map_err(to_py)?;
+    let m = smooth::options::parse_method(method_name).map_err(to_py)?;
     // None means "the preset's default" for every option.
     let args = (|| -> Result<Args, Error> {
         Ok(Args {

@@ -45,12 +45,11 @@ impl BackendChoice {
         }
     }
 
+    /// The names `parse` takes first, in the order of the variants.
+    pub const NAMES: [&'static str; 3] = ["auto", "vulkan", "gl"];
+
     pub fn name(self) -> &'static str {
-        match self {
-            Self::Auto => "auto",
-            Self::Vulkan => "vulkan",
-            Self::Gl => "gl",
-        }
+        Self::NAMES[self as usize]
     }
 }
 

@@ -90,33 +90,38 @@ fn parse<T: Copy>(arg: &str, value: &str, table: &[(&str, T)]) -> Result<T> {
     })
 }
 
+/// The names each option takes, for parsing and for front ends to list.
+pub const WEIGHTS: [(&str, Weights); 3] =
+    [("uniform", Weights::Uniform), ("cotangent", Weights::Cotangent), ("distance", Weights::Distance)];
+pub const BOUNDARIES: [(&str, Boundary); 3] =
+    [("fixed", Boundary::Fixed), ("free", Boundary::Free), ("slide", Boundary::Slide)];
+pub const PRESETS: [(&str, Preset); 3] =
+    [("trimesh", Preset::Trimesh), ("pymeshlab", Preset::Pymeshlab), ("paper", Preset::Paper)];
+pub const METHODS: [(&str, Method); 4] = [
+    ("laplacian", Method::Laplacian),
+    ("taubin", Method::Taubin),
+    ("hc", Method::Hc),
+    ("implicit", Method::Implicit),
+];
+
 pub fn parse_weights(s: &str) -> Result<Weights> {
-    parse(
-        "weights",
-        s,
-        &[("uniform", Weights::Uniform), ("cotangent", Weights::Cotangent), ("distance", Weights::Distance)],
-    )
+    parse("weights", s, &WEIGHTS)
 }
 
 pub fn parse_boundary(s: &str) -> Result<Boundary> {
-    parse("boundary", s, &[("fixed", Boundary::Fixed), ("free", Boundary::Free), ("slide", Boundary::Slide)])
+    parse("boundary", s, &BOUNDARIES)
 }
 
 pub fn parse_preset(s: &str) -> Result<Preset> {
-    parse(
-        "preset",
-        s,
-        &[("trimesh", Preset::Trimesh), ("pymeshlab", Preset::Pymeshlab), ("paper", Preset::Paper)],
-    )
+    parse("preset", s, &PRESETS)
+}
+
+pub fn parse_method(s: &str) -> Result<Method> {
+    parse("method", s, &METHODS)
 }
 
 fn name(m: Method) -> &'static str {
-    match m {
-        Method::Laplacian => "laplacian",
-        Method::Taubin => "taubin",
-        Method::Hc => "hc",
-        Method::Implicit => "implicit",
-    }
+    METHODS.iter().find(|(_, x)| *x == m).map_or("?", |(n, _)| n)
 }
 
 fn preset_name(p: Preset) -> &'static str {

@@ -318,6 +318,14 @@ fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("DITHER_PATTERNS", names(DitherPattern::NAMES)?)?;
     m.add("DITHER_SPACES", names(DitherSpace::NAMES)?)?;
     m.add("SHADOW_FILTERS", names(ShadowFilter::NAMES)?)?;
+    m.add("HATCH_MODES", names(crate::render::effects::hatching::HatchMode::NAMES)?)?;
+    m.add("BACKENDS", names(&crate::render::device::BackendChoice::NAMES)?)?;
+    use crate::smooth::options as smooth;
+    m.add("SMOOTH_METHODS", names(&smooth::METHODS.map(|(n, _)| n))?)?;
+    m.add("SMOOTH_WEIGHTS", names(&smooth::WEIGHTS.map(|(n, _)| n))?)?;
+    m.add("SMOOTH_BOUNDARIES", names(&smooth::BOUNDARIES.map(|(n, _)| n))?)?;
+    m.add("SMOOTH_PRESETS", names(&smooth::PRESETS.map(|(n, _)| n))?)?;
+    m.add("DEFAULT_CREASE_ANGLE", crate::edges::DEFAULT_CREASE_ANGLE)?;
     Ok(())
 }
 

@@ -8,21 +8,33 @@ use crate::render::scene::{Output, Outputs, MAX_SUPERSAMPLE};
 
 const FIELDS: &[Field] = &[
     Field::new("material", Kind::Setting("Material"), "the material of meshes that name none"),
-    Field::new("transform", Kind::Matrix, "4x4 model -> world matrix (row-major) of meshes that give none"),
-    Field::new("camera", Kind::Setting("Camera"), "the camera"),
+    Field::new(
+        "transform",
+        Kind::Matrix,
+        "a 4x4 affine model -> world matrix (row-major, applied to column vectors) for meshes that give none",
+    ),
+    Field::new("camera", Kind::Setting("Camera"), "the camera (Camera.fit(): the scene framed from the front)"),
     Field::new("lights", Kind::Lights, "a Light or a list of up to 8"),
     Field::new("ambient", Kind::Color, "the ambient light's sRGB colour"),
     Field::new("background", Kind::Rgba, "sRGB or sRGBA where no mesh is"),
-    Field::new("width", Kind::Int { min: 1, max: 16384 }, "the image's width in pixels"),
-    Field::new("height", Kind::Int { min: 1, max: 16384 }, "the image's height in pixels"),
-    Field::new("outputs", Kind::Names(&Output::NAMES), "the outputs computed and read back"),
+    Field::new("width", Kind::Int { min: 1, max: 16384 }, "the image's width in pixels, 1 to the device's limit"),
+    Field::new("height", Kind::Int { min: 1, max: 16384 }, "the image's height in pixels, 1 to the device's limit"),
+    Field::new(
+        "outputs",
+        Kind::Names(&Output::NAMES),
+        "the outputs computed and read back, and only those ('outline' and 'lines' need outlines, 'shadow' a light with shadows)",
+    ),
     Field::new("msaa", Kind::Int { min: 1, max: 4 }, "samples per pixel: 1 or 4"),
     Field::new(
         "supersample",
         Kind::Int { min: 1, max: MAX_SUPERSAMPLE as i64 },
         "render this many times larger in each direction and average down",
     ),
-    Field::new("band_antialias", Kind::Bool, "blend across band borders over about one pixel"),
+    Field::new(
+        "band_antialias",
+        Kind::Bool,
+        "blend across each band border over about one pixel, from the screen-space change of the shading term: smooth tone borders at no extra samples (False: the papers' hard borders)",
+    ),
     Field::new(
         "outlines",
         Kind::Setting("Outlines"),

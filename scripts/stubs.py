@@ -1,0 +1,151 @@
+"""Writes the type stub of the compiled core, `python/toonmesh/_core.pyi`: the template
+`scripts/core_stub.pyi.in` with its settings classes generated from the core's description of
+them (`Class.describe()`), so that a field added to the core reaches the stub with no other edit.
+
+    python scripts/stubs.py            # writes the stub
+    python scripts/stubs.py --check    # exit 1 if the committed stub differs (tests run this)
+"""
+
+from __future__ import annotations
+
+import sys
+import textwrap
+from pathlib import Path
+from typing import Any, Dict, List
+
+ROOT = Path(__file__).resolve().parent.parent
+TEMPLATE = ROOT / "scripts" / "core_stub.pyi.in"
+STUB = ROOT / "python" / "toonmesh" / "_core.pyi"
+MARK = "# @settings-classes\n"
+CLASSES = ("Dither", "Shadows", "Light", "Camera", "LineStyle", "Outlines", "Material", "RenderOptions")
+
+# The read-only views that are not fields (src/py/settings/classes.rs).
+VIEWS: Dict[str, List[str]] = {
+    "Outlines": ["styles: Final[Dict[str, Optional[LineStyle]]]"],
+    "Material": ["hatch_style: Final[Optional[Dict[str, Any]]]"],
+}
+
+# What each kind of field takes, and what its getter gives.
+TAKES = {
+    "bool": "bool",
+    "int": "int",
+    "float": "float",
+    "color": "_Color",
+    "rgba": "_Color",
+    "vec3": "Sequence[float]",
+    "floats": "Sequence[float]",
+    "table": "Any",
+    "matrix": "Any",
+    "names": "Union[str, Sequence[str]]",
+    "style": "Union[bool, LineStyle, _Color]",
+    "lights": "Union[Light, Sequence[Light]]",
+}
+GIVES = {
+    "bool": "bool",
+    "int": "int",
+    "float": "float",
+    "choice": "str",
+    "color": "_Vec3",
+    "rgba": "Tuple[float, float, float, float]",
+    "vec3": "_Vec3",
+    "floats": "List[float]",
+    "table": "List[_Vec3]",
+    "matrix": "List[List[float]]",
+    "names": "List[str]",
+    "style": "Union[LineStyle, bool]",
+    "lights": "List[Light]",
+}
+# The other forms a settings field takes besides the class (src/py/settings/values.rs).
+ALSO = {"Dither": "str", "Outlines": "str", "Shadows": "bool"}
+
+
+def takes(f: Dict[str, Any]) -> str:
+    if f["kind"] == "choice":
+        return "Literal[" + ", ".join(repr(c) for c in f["choices"]) + "]"
+    if f["kind"] == "setting":
+        other = ALSO.get(f["class"])
+        return f"Union[{other}, {f['class']}]" if other else f["class"]
+    return TAKES[f["kind"]]
+
+
+def gives(f: Dict[str, Any]) -> str:
+    t = f["class"] if f["kind"] == "setting" else GIVES[f["kind"]]
+    return f"Optional[{t}]" if f["optional"] else t
+
+
+def signature(params: List[Dict[str, Any]], positional: int, required: int, first: str) -> str:
+    out = [first] if first else []
+    for i, p in enumerate(params):
+        if i == positional:
+            out.append("*")
+        default = "" if i < required else " = ..."
+        t = takes(p) if i < required else f"Optional[{takes(p)}]"
+        out.append(f"{p['name']}: {t}{default}")
+    return ", ".join(out)
+
+
+def docstring(text: str, indent: str) -> List[str]:
+    lines = textwrap.wrap(text, 96 - len(indent))
+    if len(lines) == 1:
+        return [f'{indent}"""{lines[0]}"""']
+    return [f'{indent}"""{lines[0]}'] + [indent + line for line in lines[1:]] + [f'{indent}"""']
+
+
+def settings_class(cls: Any) -> str:
+    d = cls.describe()
+    name = d["class"]
+    fields = "; ".join(f"{f['name']}: {f['help']}" for f in d["fields"])
+    lines = ["@final", f"class {name}:", *docstring(f"{d['help']} Fields: {fields}.", "    ")]
+    for c in d["constructors"]:
+        sig = signature(c["params"], c["positional"], c["required"], "cls" if not c["name"] else "")
+        if c["name"]:
+            lines += ["    @staticmethod", f"    def {c['name']}({sig}) -> {name}:"]
+            lines += docstring(c["help"], "        ") + ["        ..."]
+        else:
+            lines.append(f"    def __new__({sig}) -> {name}: ...")
+    lines += [f"    {f['name']}: Final[{gives(f)}]" for f in d["fields"]]
+    lines += [f"    {v}" for v in VIEWS.get(name, [])]
+    changes = [f for f in d["fields"] if not f["fixed"]]
+    sig = signature(changes, 0, 0, "self")
+    lines.append(f"    def replace({sig}) -> {name}: ...")
+    lines += [
+        "    @staticmethod",
+        "    def describe() -> Dict[str, Any]: ...",
+        "    def __hash__(self) -> int: ...",
+        "    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...",
+    ]
+    return "\n".join(lines) + "\n"
+
+
+def render_keywords() -> str:
+    """The render keywords as a TypedDict, for `**options: Unpack[...]` in the public API."""
+    d = __import__("toonmesh._core", fromlist=["RenderOptions"]).RenderOptions.describe()
+    lines = ["class _RenderKeywords(TypedDict, total=False):"]
+    lines += docstring("The keywords of RenderOptions (None: the core's default).", "    ")
+    for f in d["fields"]:
+        lines.append(f"    {f['name']}: Optional[{takes(f)}]")
+    return "\n".join(lines) + "\n"
+
+
+def generate() -> str:
+    import toonmesh._core as core
+
+    classes = "\n".join(settings_class(getattr(core, c)) for c in CLASSES)
+    text = TEMPLATE.read_text()
+    assert MARK in text, f"{TEMPLATE} has no {MARK.strip()!r} line"
+    return text.replace(MARK, render_keywords() + "\n" + classes)
+
+
+def main(argv: List[str]) -> int:
+    text = generate()
+    if "--check" in argv:
+        if STUB.read_text() != text:
+            print(f"{STUB.relative_to(ROOT)} differs from what scripts/stubs.py writes: run `make stubs`")
+            return 1
+        return 0
+    STUB.write_text(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
