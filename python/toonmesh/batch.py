@@ -24,7 +24,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from toonmesh import smooth
+from toonmesh import _core, smooth
 from toonmesh._files import check_distinct_names, image_suffix, save_result, view_paths
 from toonmesh._load import load, under_own_colours
 from toonmesh._render import RenderOptions, draw, place_meshes, remove_meshes, shared_renderer
@@ -33,10 +33,16 @@ from toonmesh._views import check_views, turntable
 
 __all__ = ["render_file", "render_files"]
 
+#: ``smooth_method`` "paper": the renderer's own smoothing at upload (each vertex to its
+#: neighbours' mean, as in :func:`toonmesh.render`), not a :mod:`toonmesh.smooth` method.
+AT_UPLOAD = "paper"
+#: Every ``smooth_method``: the renderer's own, then the core's smoothing methods.
+SMOOTH_METHODS = (AT_UPLOAD,) + tuple(_core.SMOOTH_METHODS)
+
 
 def _smoothed(V: np.ndarray, F: np.ndarray, method: str, iterations: int) -> np.ndarray:
-    if method not in ("laplacian", "taubin", "hc", "implicit"):
-        raise ValueError(f"smooth_method: expected 'paper', 'laplacian', 'taubin', 'hc' or 'implicit', got {method!r}")
+    if method not in SMOOTH_METHODS:
+        raise ValueError(f"smooth_method: expected one of {', '.join(map(repr, SMOOTH_METHODS))}, got {method!r}")
     return getattr(smooth, method)(V, F, iterations=iterations)  # type: ignore[no-any-return]
 
 
@@ -49,7 +55,7 @@ def _prepared(meshes: List[Mesh], normals: Normals, method: str, iterations: int
     for m in meshes:
         m = copy.copy(m)
         m.normals = mode
-        if iterations and method != "paper":
+        if iterations and method != AT_UPLOAD:
             assert m.vertices is not None and m.faces is not None  # read from a file: arrays, not a MeshHandle
             key = (id(m.vertices), id(m.faces))
             if key not in smoothed:
@@ -66,7 +72,7 @@ def render_views(
     up: str = "y",
     backend: Optional[str] = None,
     smooth_iterations: int = 0,
-    smooth_method: str = "paper",
+    smooth_method: str = AT_UPLOAD,
     normals: Normals = "smooth",
     own_colors_material: Any = None,
     **render_options: Any,
@@ -87,8 +93,7 @@ def render_views(
     if own_colors_material is not None:
         meshes = under_own_colours(meshes, own_colors_material)
     meshes = _prepared(meshes, normals, smooth_method, smooth_iterations)
-    # "paper": the renderer's own smoothing at upload, each vertex to its neighbours' mean
-    at_upload = smooth_iterations if smooth_method == "paper" or not smooth_iterations else 0
+    at_upload = smooth_iterations if smooth_method == AT_UPLOAD or not smooth_iterations else 0
     scene, uploaded = place_meshes(renderer, meshes, at_upload)
     n_vertices = sum(p.handle.n_vertices for p in scene)
     n_faces = sum(p.handle.n_faces for p in scene)
@@ -139,8 +144,8 @@ def render_files(
             axis, "x", "y" (default) or "z"; ``backend`` as in :class:`toonmesh.Renderer`;
             ``smooth_iterations`` and ``smooth_method``, smoothing before rendering (``"paper"``,
             the default, is the renderer's own, each vertex to its neighbours' mean, as in
-            :func:`toonmesh.render`; or ``"laplacian"``, ``"taubin"``, ``"hc"``, ``"implicit"``
-            with that many iterations and their defaults); ``normals``, as in
+            :func:`toonmesh.render`; or a :mod:`toonmesh.smooth` method by name, with that
+            many iterations and its defaults: :data:`SMOOTH_METHODS` lists them all); ``normals``, as in
             :class:`toonmesh.Mesh`; and the keywords of :class:`toonmesh.RenderOptions` for every
             view (``width``, ``height``, ``material``, ``lights``, ``outputs``, ...; ``camera``
             only with one view), which pickle, so they travel to the workers.
