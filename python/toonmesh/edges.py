@@ -22,9 +22,9 @@ Rules shared by every mesh-space function:
 - Face normals follow the right-hand rule, (b - a) x (c - a), and are computed in float64, from
   rescaled edges where the face is too large or too small for the direct formula, so every
   rule holds for coordinates from subnormal up to about 1e307.
-- Arguments: arrays in any memory order and either byte order; ``crease_angle`` and the
-  thresholds are numbers (not bools, not strings), ``weld`` is True or False, ``eye`` and
-  ``direction`` are three numbers. Anything else raises TypeError, ValueError or IndexError
+- Arguments: arrays in any memory order and either byte order; ``crease_angle`` (None: the
+  core's default) and the thresholds are numbers (not bools, not strings), ``weld`` is True or
+  False, ``eye`` and ``direction`` are three numbers. Anything else raises TypeError, ValueError or IndexError
   whose message starts with the argument's name.
 """
 
@@ -102,6 +102,11 @@ class FeatureEdges:
         return _union(self.boundary, self.crease, self.nonmanifold)
 
 
+def _crease_angle(crease_angle: Optional[float]) -> Any:
+    """``crease_angle``, None being the core's default (the renderer's outlines use it too)."""
+    return _core.DEFAULT_CREASE_ANGLE if crease_angle is None else crease_angle
+
+
 def _features(raw: Tuple[Any, ...], crease_angle: float) -> FeatureEdges:
     boundary, crease, angles, convex, nonmanifold, degenerate = raw
     return FeatureEdges(boundary, crease, angles, convex, nonmanifold, degenerate, float(crease_angle))
@@ -138,7 +143,9 @@ def _union(*parts: np.ndarray) -> np.ndarray:
     return _union_keys(n, *(_edge_keys(e, n) for e in edges))
 
 
-def feature_edges(vertices: Any, faces: Any = None, crease_angle: float = 30.0, *, weld: bool = False) -> FeatureEdges:
+def feature_edges(
+    vertices: Any, faces: Any = None, crease_angle: Optional[float] = None, *, weld: bool = False
+) -> FeatureEdges:
     """Boundary, crease and non-manifold edges of a triangle mesh.
 
     Args:
@@ -146,7 +153,8 @@ def feature_edges(vertices: Any, faces: Any = None, crease_angle: float = 30.0, 
             ``faces`` out).
         faces: (M, 3) int32, int64, uint32 or uint64 vertex indices.
         crease_angle: threshold in degrees, in [0, 180]; an edge is a crease when the angle
-            between its two face normals is strictly greater. Default 30.
+            between its two face normals is strictly greater. None (the default): the core's
+            default, 30, as the renderer's outlines.
         weld: True to merge vertices at exactly the same position first (UV seams and split
             normals store one point twice, which otherwise shows up as boundary edges). Edges
             then refer to the smallest index of each group of coincident vertices.
@@ -159,7 +167,8 @@ def feature_edges(vertices: Any, faces: Any = None, crease_angle: float = 30.0, 
         TypeError, ValueError, IndexError: bad input, naming the argument.
     """
     V, F = mesh_arrays(vertices, faces)
-    return _features(_core._feature_edges(V, F, crease_angle, weld), crease_angle)
+    angle = _crease_angle(crease_angle)
+    return _features(_core._feature_edges(V, F, angle, weld), angle)
 
 
 @dataclass(frozen=True)
@@ -340,7 +349,8 @@ class EdgeIndex:
     Args:
         vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too). They are
             copied; later changes to the caller's arrays do not affect the index.
-        crease_angle: threshold in degrees for :attr:`features` (default 30).
+        crease_angle: threshold in degrees for :attr:`features` (None, the default: the core's
+            default, 30).
         weld: merge coincident vertices first, as in :func:`feature_edges`.
 
     Attributes:
@@ -350,7 +360,9 @@ class EdgeIndex:
             degenerate faces).
     """
 
-    def __init__(self, vertices: Any, faces: Any = None, *, crease_angle: float = 30.0, weld: bool = False) -> None:
+    def __init__(
+        self, vertices: Any, faces: Any = None, *, crease_angle: Optional[float] = None, weld: bool = False
+    ) -> None:
         V, F = mesh_arrays(vertices, faces)
         self._index = _core._EdgeIndex(V, F, weld)
         self.features = self.feature_edges(crease_angle)
@@ -394,9 +406,11 @@ class EdgeIndex:
     def nonmanifold(self) -> np.ndarray:
         return self.features.nonmanifold
 
-    def feature_edges(self, crease_angle: float = 30.0) -> FeatureEdges:
-        """:class:`FeatureEdges` at another threshold, without rebuilding anything."""
-        return _features(self._index.feature_edges(crease_angle), crease_angle)
+    def feature_edges(self, crease_angle: Optional[float] = None) -> FeatureEdges:
+        """:class:`FeatureEdges` at another threshold (None: the core's default, 30), without
+        rebuilding anything."""
+        angle = _crease_angle(crease_angle)
+        return _features(self._index.feature_edges(angle), angle)
 
     def silhouette(self, *, eye: Any = None, direction: Any = None) -> np.ndarray:
         """Silhouette edges for one view, (K, 2) int64; rules as in :func:`silhouette`."""
