@@ -12,7 +12,7 @@ from typing import Any, Dict, List, Optional
 
 import numpy as np
 
-from toonmesh import _strokes, edges
+from toonmesh import edges
 from toonmesh._core import Outlines
 from toonmesh._render import render
 
@@ -24,32 +24,22 @@ def view_lines(
     vertices: np.ndarray,
     faces: np.ndarray,
     camera: Any,
+    outlines: Outlines,
     *,
     width: int,
     height: int,
-    crease_angle: float = 30.0,
-    weld: bool = True,
-    stroke_width: float = 1.5,
     hidden: bool = False,
     backend: Optional[str] = None,
-    contours: Optional[str] = None,
-    suggestive: bool = False,
-    join_kinds: bool = False,
-    curvature_smoothing: Optional[float] = None,
 ) -> Dict[str, Any]:
-    """The visible (and, with ``hidden``, every) outline polyline of one view, and the mesh's
-    feature edges; see :func:`write_npz` for the arrays. ``contours``, ``suggestive``,
-    ``join_kinds`` and ``curvature_smoothing`` as in :class:`toonmesh.Outlines`."""
-    rule: Dict[str, Any] = dict(crease_angle=crease_angle, weld=weld, contours=contours, suggestive=suggestive or None,
-                join_kinds=join_kinds, curvature_smoothing=curvature_smoothing)
-    outlines = Outlines("mesh", width=stroke_width, **rule)
+    """The visible (and, with ``hidden``, every) polyline of one view that ``outlines`` (mesh
+    lines) draws, and the mesh's feature edges at its crease angle; see :func:`write_npz` for
+    the arrays."""
     kw = dict(camera=camera, width=width, height=height, outputs=("lines",), backend=backend)
     seen = render(vertices, faces, outlines=outlines, **kw)
     everything = None
     if hidden:
-        all_lines = Outlines("mesh", depth_offset=_SHOW_ALL, **rule)
-        everything = render(vertices, faces, outlines=all_lines, **kw)
-    features = edges.feature_edges(vertices, faces, crease_angle, weld=weld)
+        everything = render(vertices, faces, outlines=outlines.replace(depth_offset=_SHOW_ALL), **kw)
+    features = edges.feature_edges(vertices, faces, outlines.crease_angle, weld=outlines.weld)
     return {"seen": seen, "everything": everything, "features": features}
 
 
@@ -69,13 +59,11 @@ def summary(lines: Dict[str, Any]) -> str:
     return text
 
 
-def write_svg(
-    path: str, lines: Dict[str, Any], smooth: float = 0.0, order: str = "drawing", simplify: float = _strokes.SIMPLIFY
-) -> None:
-    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg` with its
-    ``smooth``, ``order`` and ``simplify``); with hidden lines, those go underneath, dashed and
-    grey."""
-    svg = lines["seen"].svg(smooth=smooth, order=order, simplify=simplify)
+def write_svg(path: str, lines: Dict[str, Any], **svg_options: Any) -> None:
+    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg` with
+    ``svg_options``, its defaults where left out); with hidden lines, those go underneath,
+    dashed and grey."""
+    svg = lines["seen"].svg(**svg_options)
     everything = lines["everything"]
     if everything is not None:
         polylines = "\n".join(

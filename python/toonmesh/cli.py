@@ -10,6 +10,10 @@
 Mesh files are read and written through trimesh (``pip install 'toonmesh[io]'``). A mistake
 (a missing file, a bad size, an unreadable mesh, a missing package) prints one line to stderr and
 exits with status 1 (2 for a bad command line); ``toonmesh COMMAND --help`` lists the options.
+
+A flag that sets one of the core's settings takes its choices, default and help from the core's
+description of it (``_described_flags``); a value the core refuses is a bad command line naming
+the flag.
 """
 
 from __future__ import annotations
@@ -22,29 +26,39 @@ import time
 import warnings
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
-import toonmesh as tm
-from toonmesh import _core, _strokes
+from toonmesh import _core, _strokes, smooth
+from toonmesh._core import __version__
+from toonmesh._described_flags import (
+    CORE_DEFAULT, add_described, described, errors_as_flags, sets, styles,
+)
 from toonmesh._files import (
     IMAGE_SUFFIXES, check_distinct_names, image_suffix, read_mesh, seam_normals, view_paths, write_mesh,
 )
+from toonmesh._line_drawing import summary, view_lines, write_npz, write_svg
 from toonmesh._load import OWN_COLOURS_WHITE, read_surfaces
-from toonmesh._views import UP_AXES, up_vector, view_direction
+from toonmesh._render import (
+    Camera, Dither, Light, LineStyle, Material, Mesh, Outlines, RenderOptions, RenderResult, Shadows, gpu_info,
+    render,
+)
+from toonmesh._scene import normal_mode
+from toonmesh._views import UP_AXES, check_views, up_vector, view_direction
+from toonmesh.batch import SMOOTH_METHODS as RENDER_SMOOTH_METHODS, render_views
 
 __all__ = ["main"]
 
-# the shading models and outline kinds the core has
-STYLES: Dict[str, Callable[..., Any]] = {m.replace("_", "-"): getattr(tm.Material, m) for m in _core.MODELS}
-STYLES["hatching"] = tm.Material.hatching  # bands drawn as strokes
-OUTLINES = ("none",) + _core.OUTLINE_KINDS
-SMOOTH_METHODS = ("laplacian", "taubin", "hc", "implicit")
-BACKENDS = ("auto", "vulkan", "gl")
-
+#: The command line's word for "leave it out", before the core's names of --outlines and --dither.
+NONE = "none"
+#: The style whose strokes --hatch-spacing, --hatch-width and --hatch-mode set (Material.hatching).
+HATCHING = "hatching"
+HATCH_FLAGS = ("spacing", "width", "mode")
+#: Image size of ``toonmesh render``, ``edges`` and ``demo`` unless --size (--width, --height) says.
+DEFAULT_SIZE = (800, 600)
+#: ``toonmesh smooth``'s method unless --method says: the plain one.
+SMOOTH_METHOD = "laplacian"
 
 #: The ink lines of ``toonmesh demo``, and of ``toonmesh render`` unless its flags say otherwise.
-DEMO_OUTLINES = tm.Outlines("mesh", width=2.0, crease_angle=60.0)
+DEMO_OUTLINES = Outlines("mesh", width=2.0, crease_angle=60.0)
 DEMO_LINE_WIDTH = float(getattr(DEMO_OUTLINES.styles["silhouette"], "width"))
-#: The hatching material's defaults (spacing and width of its strokes, in pixels).
-HATCHING: Dict[str, Any] = dict(tm.Material.hatching().hatch_style or {})
 
 
 def mesh_file(name: str) -> str:
@@ -76,47 +90,34 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _size(text: str) -> Tuple[int, int]:
+    """--size: WIDTHxHEIGHT, or one number for a square; the core checks the range."""
     parts = text.lower().split("x")
     try:
-        w, h = (int(parts[0]), int(parts[0])) if len(parts) == 1 else (int(parts[0]), int(parts[1]))
-        if len(parts) > 2 or w < 1 or h < 1:
+        if len(parts) > 2:
             raise ValueError
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT in pixels, both >= 1 (e.g. 640x480), got {text!r}") from None
+        w, h = int(parts[0]), int(parts[-1])
+        RenderOptions(width=w, height=h)
+    except ValueError as exc:
+        why = f"{exc}; " if str(exc).startswith(("width", "height")) else ""
+        raise argparse.ArgumentTypeError(f"{why}expected WIDTHxHEIGHT in pixels (e.g. 640x480), got {text!r}") from None
     return w, h
 
 
-def _positive(text: str) -> int:
+def _views(text: str) -> int:
     try:
-        n = int(text)
+        return check_views(int(text))
     except ValueError:
-        n = 0
-    if n < 1:
-        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {text!r}")
-    return n
-
-
-def _count(text: str) -> int:
-    try:
-        n = int(text)
-    except ValueError:
-        n = -1
-    if n < 0:
-        raise argparse.ArgumentTypeError(f"expected an integer >= 0, got {text!r}")
-    return n
+        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {text!r}") from None
 
 
 def _normals(text: str) -> Any:
-    """--normals: smooth, flat, auto, or auto:DEGREES (the angle is checked by the renderer)."""
+    """--normals: a normal mode by name, or auto:DEGREES; the core checks both."""
     name, sep, angle = text.partition(":")
-    if name in ("smooth", "flat", "auto") and not sep:
-        return name
-    if name == "auto" and sep:
-        try:
-            return ("auto", float(angle))
-        except ValueError:
-            pass
-    raise argparse.ArgumentTypeError(f"expected smooth, flat, auto or auto:DEGREES (e.g. auto:45), got {text!r}")
+    try:
+        return normal_mode((name, float(angle)) if sep else name)
+    except ValueError as exc:
+        why = f"{exc}; " if str(exc).startswith("normals") else ""
+        raise argparse.ArgumentTypeError(f"{why}expected a mode or auto:DEGREES (e.g. auto:45), got {text!r}") from None
 
 
 def _outputs(text: str) -> List[str]:
@@ -128,12 +129,28 @@ def _outputs(text: str) -> List[str]:
     return names
 
 
+def _keyword_default(fn: Callable[..., Any], keyword: str) -> Any:
+    """The default of ``fn``'s ``keyword``: the flag that passes it on starts where ``fn`` does."""
+    return inspect.signature(fn).parameters[keyword].default
+
+
+def default_style() -> str:
+    """--style's default: the model of the core's default material."""
+    return str(described(RenderOptions, "material")["default"].model).replace("_", "-")
+
+
+def _add_size_argument(p: argparse.ArgumentParser, what: str) -> None:
+    size = p.add_argument("--size", type=_size, default=DEFAULT_SIZE, metavar="WxH",
+                          help=f"{what} (default {DEFAULT_SIZE[0]}x{DEFAULT_SIZE[1]})")
+    sets(p, size, (RenderOptions, "width"), (RenderOptions, "height"))
+
+
 def pass_through(fn: Callable[..., Any], keyword: str, value: Any, flag: str) -> Dict[str, Any]:
     """``{keyword: value}`` when ``fn`` takes that keyword, for a flag whose feature may not be
     in this version of toonmesh yet; otherwise a one-line error naming the flag."""
     if keyword not in inspect.signature(fn).parameters:
         name = getattr(fn, "__qualname__", getattr(fn, "__name__", "the function"))
-        raise CliError(f"{flag}: not available in toonmesh {tm.__version__} ({name} has no {keyword}= option)")
+        raise CliError(f"{flag}: not available in toonmesh {__version__} ({name} has no {keyword}= option)")
     return {keyword: value}
 
 
@@ -174,48 +191,45 @@ def _render_targets(meshes: Sequence[str], out: str, views: int, outputs: List[s
 
 
 def render_options(args: argparse.Namespace) -> Dict[str, Any]:
-    """The RenderOptions keywords of ``toonmesh render``'s flags."""
-    style = STYLES[args.style]
+    """The RenderOptions keywords of ``toonmesh render``'s flags, checked by the core."""
+    style = getattr(Material, args.style.replace("-", "_"))
     material_kw: Dict[str, Any] = {}
     if args.color is not None:
         material_kw["color"] = args.color
-    if args.dither != "none":
-        material_kw["dither"] = tm.Dither(args.dither, amount=args.dither_amount)
-    if args.style == "hatching":
-        material_kw.update(spacing=args.hatch_spacing, width=args.hatch_width, mode=args.hatch_mode)
-    elif (args.hatch_spacing, args.hatch_width, args.hatch_mode) != tuple(HATCHING[k] for k in ("spacing", "width", "mode")):
-        raise CliError("--hatch-spacing, --hatch-width, --hatch-mode: only with --style hatching")
-    if args.style == "lambert" or args.style == "phong":
-        if "dither" in material_kw:
-            raise CliError(f"--dither: not with --style {args.style} (it has no bands to dither between)")
+    if args.dither != NONE:
+        with errors_as_flags(args, Dither):
+            material_kw["dither"] = Dither(args.dither, amount=args.dither_amount)
+    hatch = {name: getattr(args, f"hatch_{name}") for name in HATCH_FLAGS}
+    if args.style == HATCHING:
+        material_kw.update(hatch)
+    elif any(value != described(Material, name, HATCHING)["default"] for name, value in hatch.items()):
+        raise CliError(f"{', '.join('--hatch-' + name for name in HATCH_FLAGS)}: only with --style {HATCHING}")
+    with errors_as_flags(args, Material):  # a model without bands takes no dither: the core says so
+        material = style(**material_kw)
+        own_colors_material = None if args.color is not None else style(**material_kw, color=OWN_COLOURS_WHITE)
     options: Dict[str, Any] = dict(
-        width=args.size[0], height=args.size[1], material=style(**material_kw), outputs=args.outputs,
-        own_colors_material=None if args.color is not None else style(**material_kw, color=OWN_COLOURS_WHITE),
+        width=args.size[0], height=args.size[1], material=material, outputs=args.outputs,
+        own_colors_material=own_colors_material,
         msaa=args.msaa, supersample=args.supersample, band_antialias=args.band_antialias,
     )
     if args.shadows:
-        key = tm.Light.key()
-        shadows = tm.Shadows(size=args.shadow_size, bias=args.shadow_bias)
-        options["lights"] = [tm.Light.directional(key.direction, color=key.color, intensity=key.intensity,
-                                                  space=key.space, shadows=shadows)]
-    if args.suggestive and args.outlines in ("none", "image"):
-        raise CliError(f"--suggestive: suggestive contours are mesh lines; they need --outlines mesh or both, "
-                       f"not {args.outlines}")
-    if args.outlines != "none":
-        options["outlines"] = tm.Outlines(
-            args.outlines, width=args.outline_width, crease_angle=args.crease_angle, contours=args.contours,
-            join_kinds=args.join_kinds,
-            taper=args.taper, width_by_depth=args.width_by_depth,
-            suggestive=args.suggestive or None, curvature_smoothing=args.curvature_smoothing,
-            image_rule=args.image_rule, normal_angle=args.normal_angle,
-            depth_jump=args.depth_jump, normal_threshold=args.normal_threshold, depth_threshold=args.depth_threshold)
+        with errors_as_flags(args, Shadows):
+            options["lights"] = [Light.key().replace(shadows=Shadows(size=args.shadow_size, bias=args.shadow_bias))]
+    if args.outlines == NONE and args.suggestive:
+        raise CliError(f"--suggestive: suggestive contours are ink lines; not with --outlines {NONE}")
+    if args.outlines != NONE:
+        with errors_as_flags(args, Outlines):
+            options["outlines"] = Outlines(
+                args.outlines, width=args.outline_width, crease_angle=args.crease_angle, contours=args.contours,
+                join_kinds=args.join_kinds, taper=args.taper, width_by_depth=args.width_by_depth,
+                suggestive=args.suggestive or None, curvature_smoothing=args.curvature_smoothing,
+                image_rule=args.image_rule, normal_angle=args.normal_angle, depth_jump=args.depth_jump,
+                normal_threshold=args.normal_threshold, depth_threshold=args.depth_threshold)
     return options
 
 
 def cmd_render(args: argparse.Namespace) -> int:
     """toonmesh render: mesh files to toon-shaded images."""
-    from toonmesh.batch import render_views
-
     args.meshes = [mesh_file(m) for m in args.meshes]  # before any work: a typo in the last name costs nothing
     options = render_options(args)
     targets = _render_targets(args.meshes, args.out, args.views, args.outputs)
@@ -224,17 +238,19 @@ def cmd_render(args: argparse.Namespace) -> int:
     rows: List[Dict[str, Any]] = []
     try:
         for mesh, files in zip(args.meshes, targets):
-            done = render_views(
-                mesh, files, up=args.up, backend=args.backend, smooth_iterations=args.smooth,
-                smooth_method=args.smooth_method, normals=args.normals, **options,
-            )
+            # the renderer checks what depends on the device (msaa) and the smoothing
+            with errors_as_flags(args, RenderOptions, render_views, smooth):
+                done = render_views(
+                    mesh, files, up=args.up, backend=args.backend, smooth_iterations=args.smooth,
+                    smooth_method=args.smooth_method, normals=args.normals, **options,
+                )
             rows.extend(done)
             if bar is not None:
                 bar.update(len(done))
     finally:
         if bar is not None:
             bar.close()
-    info = tm.gpu_info(args.backend)
+    info = gpu_info(args.backend)
     where = f"on {info['name']} ({info['backend']})"
     secs = time.perf_counter() - t0
     if len(rows) == 1:
@@ -262,21 +278,22 @@ def cmd_smooth(args: argparse.Namespace) -> int:
                          "(toonmesh.load and toonmesh.smooth in Python take scenes apart)")
     surface = placed[0][0]
     V, F = surface.vertices, surface.faces
-    fn = getattr(tm.smooth, args.method)
+    fn = getattr(smooth, args.method)
     options = {k: getattr(args, k) for k in ("iterations", "preset", "weights", "boundary") if getattr(args, k) is not None}
     # a file split at UV or normal seams is one surface: smooth it welded, or the seams crack
     if args.weld or surface.normals is not None or surface.uv is not None:
         options.update(pass_through(fn, "weld", True, "--weld"))
     t0 = time.perf_counter()
-    out = fn(V, F, **options)
+    with errors_as_flags(args, smooth):
+        out = fn(V, F, **options)
     secs = time.perf_counter() - t0
     normals = None if surface.normals is None else seam_normals(out, F, surface.normals)
     write_mesh(args.output, out, F, surface, normals)
     moved = float(np.linalg.norm(out - V, axis=1).max()) if len(V) else 0.0
     diagonal = float(np.linalg.norm(V.max(axis=0) - V.min(axis=0))) if len(V) else 0.0
     share = f" ({moved / diagonal:.2%} of the bounding-box diagonal)" if diagonal > 0 else ""
-    described = ", ".join(f"{k}={v}" for k, v in options.items())
-    print(f"{args.input}: {len(V):,} vertices, {len(F):,} faces; {args.method}({described}) in {secs * 1e3:.1f} ms")
+    given = ", ".join(f"{k}={v}" for k, v in options.items())
+    print(f"{args.input}: {len(V):,} vertices, {len(F):,} faces; {args.method}({given}) in {secs * 1e3:.1f} ms")
     print(f"largest vertex move {moved:.4g}{share}; wrote {args.output}")
     return 0
 
@@ -285,44 +302,43 @@ def cmd_smooth(args: argparse.Namespace) -> int:
 # edges
 
 
-def _add_contour_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--contours", choices=tuple(_core.CONTOUR_RULES), default=tm.Outlines().contours,
-                   help="silhouettes on face edges (Kang et al.), the smooth contour through the faces "
-                        "(clean on scans), or auto: smooth unless the mesh is flat-shaded; default: %(default)s")
-    p.add_argument("--suggestive", action="store_true", help="add suggestive contours (DeCarlo et al.; default: off)")
-    p.add_argument("--curvature-smoothing", type=float, default=None, metavar="EDGES",
-                   help="the width their curvature is measured at, in mean edge lengths (0: the one-ring "
-                        "estimate; default: 2, at most 1%% of the bounding-box diagonal)")
-    p.add_argument("--join-kinds", action=argparse.BooleanOptionalAction, default=tm.Outlines().join_kinds,
-                   help="join strokes of different kinds that meet end to end into one (default: %(default)s)")
+def _add_contour_arguments(p: argparse.ArgumentParser, base: Optional[Outlines] = None) -> None:
+    """The flags of the lines found on the mesh that render and edges share; their defaults are
+    ``base``'s (None: the core's)."""
+    def default(name: str) -> Any:
+        return CORE_DEFAULT if base is None else getattr(base, name)
+
+    add_described(p, "--contours", Outlines, "contours", default=default("contours"))
+    add_described(p, "--suggestive", Outlines, "suggestive", action="store_true")
+    add_described(p, "--curvature-smoothing", Outlines, "curvature_smoothing", default=default("curvature_smoothing"),
+                  metavar="EDGES")
+    add_described(p, "--join-kinds", Outlines, "join_kinds", default=default("join_kinds"))
 
 
 def cmd_edges(args: argparse.Namespace) -> int:
     """toonmesh edges: outline edges of a mesh file as SVG line art or NPZ arrays."""
-    from toonmesh import _line_drawing
-
     suffix = os.path.splitext(args.out)[1].lower()
     if suffix not in (".svg", ".npz"):
         raise CliError(f"-o: expected a .svg or .npz file name, got {args.out}")
     _strokes.check_pixels("--smooth-strokes", args.smooth_strokes, _strokes.MAX_SMOOTH)
     _strokes.check_pixels("--simplify", args.simplify)
+    with errors_as_flags(args, Outlines):
+        outlines = Outlines("mesh", width=args.stroke_width, crease_angle=args.crease_angle, weld=args.weld,
+                            contours=args.contours, suggestive=args.suggestive or None, join_kinds=args.join_kinds,
+                            curvature_smoothing=args.curvature_smoothing)
     V, F = read_mesh(mesh_file(args.mesh))
-    if args.eye is not None:
-        if not any(args.eye):
-            raise CliError("--eye: the direction to look from must not be 0 0 0")
-        camera = tm.Camera.fit(args.eye, up=up_vector(args.up), orthographic=True)
-    else:
-        camera = tm.Camera.fit(view_direction(args.up), up=up_vector(args.up))
+    with errors_as_flags(args, Camera):
+        if args.eye is not None:
+            camera = Camera.fit(args.eye, up=up_vector(args.up), orthographic=True)
+        else:
+            camera = Camera.fit(view_direction(args.up), up=up_vector(args.up))
     w, h = args.size
-    lines = _line_drawing.view_lines(V, F, camera, width=w, height=h, crease_angle=args.crease_angle,
-                                     weld=args.weld, stroke_width=args.stroke_width, hidden=args.hidden,
-                                     backend=args.backend, contours=args.contours, suggestive=args.suggestive,
-                                     join_kinds=args.join_kinds, curvature_smoothing=args.curvature_smoothing)
+    lines = view_lines(V, F, camera, outlines, width=w, height=h, hidden=args.hidden, backend=args.backend)
     if suffix == ".svg":
-        _line_drawing.write_svg(args.out, lines, smooth=args.smooth_strokes, order=args.order, simplify=args.simplify)
+        write_svg(args.out, lines, smooth=args.smooth_strokes, order=args.order, simplify=args.simplify)
     else:
-        _line_drawing.write_npz(args.out, lines)
-    print(f"{args.mesh}: {_line_drawing.summary(lines)} ({w}x{h}) to {args.out}")
+        write_npz(args.out, lines)
+    print(f"{args.mesh}: {summary(lines)} ({w}x{h}) to {args.out}")
     return 0
 
 
@@ -348,7 +364,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
     from toonmesh.data import bunny
 
     V, F = bunny()
-    V = tm.smooth.laplacian(V, F, iterations=5, preset="paper")
+    V = smooth.laplacian(V, F, iterations=5, preset="paper")
     # a ground plane under the bunny, as a second mesh with its own material
     lo, hi = V.min(axis=0), V.max(axis=0)
     c, r = (lo + hi) / 2, float(np.linalg.norm(hi - lo))
@@ -356,22 +372,23 @@ def cmd_demo(args: argparse.Namespace) -> int:
     plane_v += [c[0], lo[1], c[2]]
     plane_f = np.array([[0, 2, 1], [0, 3, 2]])
     scene = [
-        tm.Mesh(V, F, material=tm.Material.thresholded_phong("#f08a3c", t_h=0.1, t_s=0.9)),
-        tm.Mesh(plane_v, plane_f, material=tm.Material.bands("#9ec5e8", thresholds=(0.2, 0.6), values=(0.55, 0.8, 1.0))),
+        Mesh(V, F, material=Material.thresholded_phong("#f08a3c", t_h=0.1, t_s=0.9)),
+        Mesh(plane_v, plane_f, material=Material.bands("#9ec5e8", thresholds=(0.2, 0.6), values=(0.55, 0.8, 1.0))),
     ]
-    result = tm.render(
-        scene,
-        camera=tm.Camera.fit((0.25, 0.35, 1.0), margin=0.8),
-        lights=[tm.Light.directional((0.6, -0.5, -0.45), space="camera")],
-        width=args.width,
-        height=args.height,
-        supersample=2,
-        outlines=DEMO_OUTLINES,
-        backend=args.backend,
-        background=(1.0, 1.0, 1.0, 1.0),
-    )
+    with errors_as_flags(args, RenderOptions):
+        result = render(
+            scene,
+            camera=Camera.fit((0.25, 0.35, 1.0), margin=0.8),
+            lights=[Light.directional((0.6, -0.5, -0.45), space="camera")],
+            width=args.width,
+            height=args.height,
+            supersample=2,
+            outlines=DEMO_OUTLINES,
+            backend=args.backend,
+            background=(1.0, 1.0, 1.0, 1.0),
+        )
     result.save(args.out)
-    info = tm.gpu_info(args.backend)
+    info = gpu_info(args.backend)
     print(f"wrote {args.out} ({result.width}x{result.height}) on {info['name']} ({info['backend']})")
     print("passes: " + ", ".join(f"{name} {secs * 1e3:.1f} ms" for name, secs in result.timings.items()))
     print(f"total from start: {time.perf_counter() - t0:.2f} s")
@@ -386,11 +403,12 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     from toonmesh.bench.__main__ import add_arguments as add_bench_arguments
 
     parser = _Parser(prog=prog, description="Mesh smoothing, outlines and toon rendering from the shell.")
-    parser.add_argument("--version", action="version", version=f"toonmesh {tm.__version__}")
+    parser.add_argument("--version", action="version", version=f"toonmesh {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    backend = dict(choices=BACKENDS, default=None, help="GPU backend (default: $TOONMESH_BACKEND, else auto)")
-    up = dict(choices=UP_AXES, default="y",
-              help="the mesh's up axis; the view is from the front, slightly above (z: front is -y). Default: y")
+    backend = dict(choices=_core.BACKENDS, default=None, help="GPU backend (default: $TOONMESH_BACKEND, else auto)")
+    up = dict(choices=UP_AXES, default=_keyword_default(render_views, "up"),
+              help="the mesh's up axis; the view is from the front, slightly above (z: front is -y). "
+                   "Default: %(default)s")
 
     p = sub.add_parser("render", help="render mesh files to toon-shaded images",
                        description="Render mesh files (OBJ, PLY, STL, OFF, GLB, ...) to PNG images, or NPZ with "
@@ -399,72 +417,60 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                    help="mesh files, or the name of a mesh shipped with toonmesh (bunny)")
     p.add_argument("-o", "--out", required=True, metavar="OUT",
                    help="an image file (.png, .npz) for one mesh and view, else a folder")
-    p.add_argument("--size", type=_size, default=(800, 600), metavar="WxH", help="image size in pixels (default 800x600)")
-    p.add_argument("--style", choices=tuple(STYLES), default="bands", help="shading model (default: %(default)s)")
-    p.add_argument("--color", default=None, metavar="#RRGGBB",
-                   help="base colour of the material, multiplying a file's own colours and textures (default: "
-                        "the style's, and white under a file's own colours, so that they show as they are)")
-    p.add_argument("--dither", choices=("none",) + tuple(_core.DITHER_PATTERNS), default="none",
-                   help="dither between neighbouring bands with this pattern (default: %(default)s)")
-    p.add_argument("--dither-amount", type=float, default=tm.Dither().amount, metavar="X",
-                   help="how far into each band the dither reaches, in units of the light term (default %(default)g)")
-    p.add_argument("--hatch-spacing", type=float, default=HATCHING["spacing"], metavar="PX",
-                   help="--style hatching: pixels between strokes (default %(default)g)")
-    p.add_argument("--hatch-width", type=float, default=HATCHING["width"], metavar="PX",
-                   help="--style hatching: stroke width in pixels (default %(default)g)")
-    p.add_argument("--hatch-mode", choices=("field", "triplanar"), default=HATCHING["mode"],
-                   help="--style hatching: strokes along the form, or straight triplanar strokes, which also "
-                        "take a file's colours (default %(default)s)")
-    p.add_argument("--band-antialias", action=argparse.BooleanOptionalAction, default=tm.RenderOptions().band_antialias,
-                   help="blend across band borders over about a pixel; --no-band-antialias for the papers' hard "
-                        "borders (default: %(default)s)")
+    _add_size_argument(p, "image size in pixels")
+    p.add_argument("--style", choices=styles(Material), default=default_style(),
+                   help="shading model: one of Material's constructors (default: %(default)s)")
+    color = p.add_argument("--color", default=None, metavar="#RRGGBB",
+                           help="base colour of the material, multiplying a file's own colours and textures "
+                                "(default: the style's, and white under a file's own colours, so that they show "
+                                "as they are)")
+    sets(p, color, (Material, "color"))
+    add_described(p, "--dither", Dither, "pattern", default=NONE, extra_choices=(NONE,),
+                  help_before="dither between neighbouring bands; ", also_sets=[(Material, "dither")])
+    add_described(p, "--dither-amount", Dither, "amount", metavar="X")
+    for name in HATCH_FLAGS:
+        add_described(p, f"--hatch-{name}", Material, name, constructor=HATCHING, help_before=f"--style {HATCHING}: ",
+                      metavar=None if name == "mode" else "PX")
+    add_described(p, "--band-antialias", RenderOptions, "band_antialias",
+                  help_after="; --no-band-antialias for the papers' hard borders")
     p.add_argument("--shadows", action="store_true", help="the key light casts shadows (default: off)")
-    p.add_argument("--shadow-size", type=int, default=tm.Shadows().size, metavar="TEXELS",
-                   help="the shadow map's side (default %(default)d)")
-    p.add_argument("--shadow-bias", type=float, default=tm.Shadows().bias, metavar="X",
-                   help="shadow depth bias in texels per unit of slope (default %(default)g)")
-    p.add_argument("--outlines", choices=OUTLINES, default=DEMO_OUTLINES.kind,
-                   help="ink lines: on the mesh, from the image, both, or none (default: %(default)s, as toonmesh demo)")
-    p.add_argument("--outline-width", type=float, default=DEMO_LINE_WIDTH, metavar="PX",
-                   help="line width in pixels (default %(default)g)")
-    p.add_argument("--crease-angle", type=float, default=DEMO_OUTLINES.crease_angle, metavar="DEG",
-                   help="crease lines where faces meet at more than this (default %(default)g)")
-    p.add_argument("--taper", type=float, default=DEMO_OUTLINES.taper, metavar="PX",
-                   help="mesh lines thin toward their ends over this many pixels, to a fifth of the width (default %(default)g)")
-    p.add_argument("--width-by-depth", action=argparse.BooleanOptionalAction, default=DEMO_OUTLINES.width_by_depth,
-                   help="mesh lines wider near the camera, thinner far away (default: %(default)s)")
-    _add_contour_arguments(p)
-    p.add_argument("--image-rule", choices=tuple(_core.IMAGE_RULES), default=DEMO_OUTLINES.image_rule,
-                   help="image-space lines: between pixels whose normals turn or depths jump, width pixels wide "
-                        "and the same at any scale (discontinuity), or the paper's thresholded Sobel (paper); "
-                        "default: %(default)s")
-    p.add_argument("--normal-angle", type=float, default=DEMO_OUTLINES.normal_angle, metavar="DEG",
-                   help="discontinuity rule: lines where the normal turns by more than this between pixels "
-                        "(default %(default)g)")
-    p.add_argument("--depth-jump", type=float, default=DEMO_OUTLINES.depth_jump, metavar="PX",
-                   help="discontinuity rule: lines where depth jumps by more than this many pixel footprints "
-                        "(default %(default)g)")
-    p.add_argument("--normal-threshold", type=float, default=DEMO_OUTLINES.normal_threshold, metavar="X",
-                   help="paper rule: threshold of the Sobel response on normals (default %(default)g)")
-    p.add_argument("--depth-threshold", type=float, default=DEMO_OUTLINES.depth_threshold, metavar="X",
-                   help="paper rule: threshold of the Sobel response on depth (default %(default)g)")
-    p.add_argument("--views", type=_positive, default=1, metavar="N",
-                   help="a turntable of N views about the up axis (default 1)")
+    add_described(p, "--shadow-size", Shadows, "size", metavar="TEXELS")
+    add_described(p, "--shadow-bias", Shadows, "bias", metavar="X")
+    add_described(p, "--outlines", Outlines, "kind", default=DEMO_OUTLINES.kind, extra_choices=(NONE,),
+                  help_before="ink lines: ", help_after=f", or {NONE}; the default is toonmesh demo's")
+    add_described(p, "--outline-width", Outlines, "width", default=DEMO_LINE_WIDTH, metavar="PX")
+    add_described(p, "--crease-angle", Outlines, "crease_angle", default=DEMO_OUTLINES.crease_angle, metavar="DEG")
+    add_described(p, "--taper", Outlines, "taper", default=DEMO_OUTLINES.taper, metavar="PX")
+    add_described(p, "--width-by-depth", Outlines, "width_by_depth", default=DEMO_OUTLINES.width_by_depth)
+    _add_contour_arguments(p, DEMO_OUTLINES)
+    add_described(p, "--image-rule", Outlines, "image_rule", default=DEMO_OUTLINES.image_rule)
+    add_described(p, "--normal-angle", Outlines, "normal_angle", default=DEMO_OUTLINES.normal_angle, metavar="DEG",
+                  help_before="discontinuity rule: ")
+    add_described(p, "--depth-jump", Outlines, "depth_jump", default=DEMO_OUTLINES.depth_jump, metavar="PX",
+                  help_before="discontinuity rule: ")
+    add_described(p, "--normal-threshold", Outlines, "normal_threshold", default=DEMO_OUTLINES.normal_threshold,
+                  metavar="X")
+    add_described(p, "--depth-threshold", Outlines, "depth_threshold", default=DEMO_OUTLINES.depth_threshold,
+                  metavar="X")
+    p.add_argument("--views", type=_views, default=1, metavar="N",
+                   help="a turntable of N views about the up axis (default %(default)s)")
     p.add_argument("--up", **up)  # type: ignore[arg-type]
-    p.add_argument("--smooth", type=_count, default=0, metavar="N", help="smoothing iterations before rendering (default 0)")
-    p.add_argument("--smooth-method", choices=("paper",) + SMOOTH_METHODS, default="paper",
-                   help="paper (default): each vertex to its neighbours' mean (the renderer's own); or a "
-                        "toonmesh.smooth method")
-    p.add_argument("--normals", type=_normals, default="smooth", metavar="MODE",
-                   help="smooth (default), flat (facets), or auto: hard edges where faces meet at more than "
-                        "30 degrees, for boxes and CAD parts (auto:DEG for another angle)")
-    p.add_argument("--outputs", type=_outputs, default=["color"], metavar="LIST",
-                   help=f"comma-separated: {', '.join(_core.IMAGE_OUTPUTS)} (default color; anything but color "
-                        "alone writes .npz)")
-    # ranges are the renderer's to check (it knows the device)
-    p.add_argument("--msaa", type=_positive, default=1, metavar="N", help="samples per pixel (1 or 4; default 1)")
-    p.add_argument("--supersample", type=_positive, default=1, metavar="N",
-                   help="render N times larger and average (default 1)")
+    smooth_flag = p.add_argument("--smooth", type=int, default=_keyword_default(render_views, "smooth_iterations"),
+                                 metavar="N", help="smoothing iterations before rendering (default %(default)s)")
+    sets(p, smooth_flag, (render_views, "smooth_iterations"), (smooth, "iterations"))
+    p.add_argument("--smooth-method", choices=RENDER_SMOOTH_METHODS,
+                   default=_keyword_default(render_views, "smooth_method"),
+                   help=f"{RENDER_SMOOTH_METHODS[0]}: each vertex to its neighbours' mean (the renderer's own); or "
+                        "a toonmesh.smooth method (default: %(default)s)")
+    p.add_argument("--normals", type=_normals, default=_keyword_default(render_views, "normals"), metavar="MODE",
+                   help=f"smooth, flat (facets), or auto: hard edges where faces meet at more than "
+                        f"{_core.DEFAULT_CREASE_ANGLE:g} degrees, for boxes and CAD parts (auto:DEG for another "
+                        "angle); default: %(default)s")
+    add_described(p, "--outputs", RenderOptions, "outputs", type=_outputs, choices=None, metavar="LIST",
+                  help_after=f": comma-separated, of {', '.join(_core.IMAGE_OUTPUTS)}; anything but color alone "
+                             "writes .npz")
+    add_described(p, "--msaa", RenderOptions, "msaa", metavar="N")
+    add_described(p, "--supersample", RenderOptions, "supersample", metavar="N")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_render)
 
@@ -472,14 +478,15 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                                                                          "(the format follows OUT's suffix).")
     p.add_argument("input", metavar="IN", help="mesh file to read, or the name of a mesh shipped with toonmesh (bunny)")
     p.add_argument("output", metavar="OUT", help="mesh file to write (.obj, .ply, .stl, .off, .glb, ...)")
-    p.add_argument("--method", choices=SMOOTH_METHODS, default="laplacian", help="default: %(default)s")
-    p.add_argument("--iterations", type=_count, default=None, metavar="N", help="default: the method's (or preset's)")
-    p.add_argument("--preset", choices=("trimesh", "pymeshlab", "paper"), default=None,
-                   help="reproduce a peer library's filter (see the README; default: none)")
-    p.add_argument("--weights", choices=("uniform", "cotangent", "distance"), default=None,
-                   help="default: the method's (or preset's)")
-    p.add_argument("--boundary", choices=("fixed", "free", "slide"), default=None,
-                   help="default: the method's (or preset's)")
+    p.add_argument("--method", choices=_core.SMOOTH_METHODS, default=SMOOTH_METHOD, help="default: %(default)s")
+    for flag, help_text in (
+        (p.add_argument("--iterations", type=int, default=None, metavar="N"), "the method's (or preset's)"),
+        (p.add_argument("--preset", choices=_core.SMOOTH_PRESETS, default=None), None),
+        (p.add_argument("--weights", choices=_core.SMOOTH_WEIGHTS, default=None), "the method's (or preset's)"),
+        (p.add_argument("--boundary", choices=_core.SMOOTH_BOUNDARIES, default=None), "the method's (or preset's)"),
+    ):
+        flag.help = f"default: {help_text}" if help_text else "reproduce a peer library's filter (see the README; default: none)"
+        sets(p, flag, (smooth, flag.dest))
     p.add_argument("--weld", action="store_true",
                    help="treat vertices at the same position as one (default: off, but always on for a file "
                         "whose texture coordinates or normals split its vertices)")
@@ -490,25 +497,25 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                                    "(hidden lines removed) or saved as NPZ arrays.")
     p.add_argument("mesh", metavar="MESH", help="a mesh file, or the name of a mesh shipped with toonmesh (bunny)")
     p.add_argument("-o", "--out", required=True, metavar="OUT", help="lines.svg or lines.npz")
-    p.add_argument("--eye", type=float, nargs=3, default=None, metavar=("X", "Y", "Z"),
-                   help="look orthographically along -eye (default: the renderer's fit camera from --up)")
-    p.add_argument("--up", **up)  # type: ignore[arg-type]
-    p.add_argument("--crease-angle", type=float, default=tm.Outlines().crease_angle, metavar="DEG",
-                   help="crease edges where faces meet at more than this (default %(default)g)")
-    p.add_argument("--no-weld", dest="weld", action="store_false",
-                   help="keep vertices at the same position apart (seams then show as boundaries; default: welded)")
-    p.add_argument("--size", type=_size, default=(800, 600), metavar="WxH", help="drawing size (default 800x600)")
+    eye = p.add_argument("--eye", type=float, nargs=3, default=None, metavar=("X", "Y", "Z"),
+                         help="look orthographically along -eye (default: the renderer's fit camera from --up)")
+    sets(p, eye, (Camera, "direction"))
+    sets(p, p.add_argument("--up", **up), (Camera, "up"))  # type: ignore[arg-type]
+    add_described(p, "--crease-angle", Outlines, "crease_angle", metavar="DEG")
+    add_described(p, "--no-weld", Outlines, "weld", action="store_false", dest="weld",
+                  help_before="keep vertices at the same position apart (seams then show as boundaries). "
+                              "Welding, on unless this flag is given: ")
+    _add_size_argument(p, "drawing size")
     p.add_argument("--hidden", action="store_true", help="draw hidden lines too (dashed; default: off)")
     _add_contour_arguments(p)
-    p.add_argument("--stroke-width", type=float, default=tm.LineStyle().width, metavar="PX",
-                   help="line width in pixels (default %(default)g)")
-    p.add_argument("--smooth-strokes", type=float, default=0.0, metavar="PX",
+    add_described(p, "--stroke-width", LineStyle, "width", metavar="PX", also_sets=[(Outlines, "width")])
+    p.add_argument("--smooth-strokes", type=float, default=_keyword_default(RenderResult.svg, "smooth"), metavar="PX",
                    help="smooth each stroke of the SVG over this many pixels along it; no point moves more "
-                        "(default 0: off)")
-    p.add_argument("--order", choices=_strokes.ORDERS, default="drawing",
+                        "(default %(default)g: off)")
+    p.add_argument("--order", choices=_strokes.ORDERS, default=_keyword_default(RenderResult.svg, "order"),
                    help="drawing: as found; plotter: each next stroke nearest where the pen stopped "
                         "(default: %(default)s)")
-    p.add_argument("--simplify", type=float, default=_strokes.SIMPLIFY, metavar="PX",
+    p.add_argument("--simplify", type=float, default=_keyword_default(RenderResult.svg, "simplify"), metavar="PX",
                    help="drop points within this many pixels of each stroke (default %(default)g; 0 keeps every point)")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_edges)
@@ -520,8 +527,8 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
 
     p = sub.add_parser("demo", help="render the built-in scene (the Stanford bunny, toon-shaded) to a PNG")
     p.add_argument("--out", default="toonmesh-demo.png", help="output PNG path (default: %(default)s)")
-    p.add_argument("--width", type=_positive, default=800, help="pixels (default %(default)d)")
-    p.add_argument("--height", type=_positive, default=600, help="pixels (default %(default)d)")
+    add_described(p, "--width", RenderOptions, "width", default=DEFAULT_SIZE[0])
+    add_described(p, "--height", RenderOptions, "height", default=DEFAULT_SIZE[1])
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_demo)
     return parser
@@ -554,7 +561,11 @@ def _run(parser: argparse.ArgumentParser, argv: Optional[List[str]]) -> int:
         if extra and not (args.command == "bench" and takes_extra_options(args.suite)):
             parser.error(f"unrecognised arguments: {' '.join(extra)}")
         args.extra = extra
-        return int(args.run(args) or 0)
+        try:
+            return int(args.run(args) or 0)
+        except argparse.ArgumentError as exc:  # the core refused a flag's value (errors_as_flags)
+            prog = f"{parser.prog} {args.command}"
+            raise CliError(f"{_one_line(exc)} (see {prog} --help)", prog) from None
     except CliError as exc:
         print(f"{exc.prog}: error: {exc}", file=sys.stderr)
         return 2
