@@ -45,11 +45,11 @@ __all__ = [
     "_chains",
     "_contours",
     "_curvature",
-    "_denoise",
     "_feature_edges",
     "_normal_mode",
     "_paper_edges",
     "_restore",
+    "_RenderKeywords",
     "_segments",
     "_shadow_truth",
     "_srgb_from_linear",
@@ -97,38 +97,8 @@ def set_num_threads(n: int) -> None: ...
 def get_num_threads() -> int: ...
 def icosphere(subdivisions: int, noise: float, seed: int) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
 def grid(n: int, noise: float, seed: int) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
-def _smooth(
-    method_name: str,
-    vertices: Any,
-    faces_arr: Any,
-    *,
-    iterations: Optional[int] = None,
-    lamb: Optional[float] = None,
-    mu: Optional[float] = None,
-    alpha: Optional[float] = None,
-    beta: Optional[float] = None,
-    step: Optional[float] = None,
-    tol: Optional[float] = None,
-    max_iter: Optional[int] = None,
-    weights: Optional[str] = None,
-    boundary: Optional[str] = None,
-    pinned: Optional[Any] = None,
-    volume_constraint: Optional[bool] = None,
-    preset: Optional[str] = None,
-    weld: bool,
-) -> npt.NDArray[np.floating[Any]]: ...
-def _denoise(
-    method_name: str,
-    vertices: Any,
-    faces_arr: Any,
-    *,
-    iterations: Optional[int] = None,
-    vertex_iterations: Optional[int] = None,
-    sigma_s: Optional[float] = None,
-    sigma_r: Optional[float] = None,
-    pinned: Optional[Any] = None,
-    weld: bool,
-) -> npt.NDArray[np.floating[Any]]: ...
+# the keywords of toonmesh.smooth's functions (their signatures are the documentation)
+def _smooth(method_name: str, vertices: Any, faces_arr: Any, **options: Any) -> npt.NDArray[np.floating[Any]]: ...
 
 # --- rendering (src/py/scene.rs, src/py/render.rs); the public API is toonmesh._render ---
 

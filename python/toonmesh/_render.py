@@ -18,7 +18,7 @@ import contextlib
 import os
 import threading
 import warnings
-from typing import TYPE_CHECKING, Any, Dict, Iterator, List, NamedTuple, Optional, Sequence, Tuple, TypedDict, Union
+from typing import TYPE_CHECKING, Any, Dict, Iterator, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -32,24 +32,8 @@ if TYPE_CHECKING:
     from typing_extensions import Unpack
 
 
-def _render_keywords() -> Any:
-    """The keywords of :class:`RenderOptions` as a TypedDict, documented from the core's
-    description (its help and defaults), so that no keyword, default or word is written twice."""
-    (made,) = RenderOptions.describe()["constructors"]
-    keywords = TypedDict("RenderKeywords", {p["name"]: Any for p in made["params"]}, total=False)  # type: ignore[misc]
-    items = "\n".join(f"- ``{p['name']}``: {p['help']} (default ``{p['default']!r}``);" for p in made["params"])
-    keywords.__doc__ = (
-        "The keywords of :class:`RenderOptions`, and so of :func:`render`, :meth:`Renderer.render` "
-        "and :meth:`Renderer.render_many`. Each has its default in the core; a keyword given as None "
-        "takes it.\n\n" + items
-    )
-    return keywords
-
-
-if TYPE_CHECKING:
-    from toonmesh._core import _RenderKeywords as RenderKeywords
-else:
-    RenderKeywords = _render_keywords()
+#: The keywords of :class:`RenderOptions` (a TypedDict made and documented by the core).
+RenderKeywords = _core._RenderKeywords
 
 
 def _smoothing_iterations(iterations: Any) -> int:

@@ -47,7 +47,7 @@ a mesh of size 1 placed at 1e10 is smoothed to about 1e-6.
 
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any, Dict, Optional
 
 import numpy as np
 import numpy.typing as npt
@@ -99,10 +99,13 @@ _COMMON = """
 """
 
 
-def _call(method: str, vertices: Any, faces: Any, **kwargs: Any) -> npt.NDArray[np.floating[Any]]:
-    # Every option's type and value is checked in the core, which names it in the error.
-    V, F = mesh_arrays(vertices, faces)
-    return _core._smooth(method, V, F, **kwargs)  # type: ignore[no-any-return]
+def _call(method: str, given: Dict[str, Any]) -> npt.NDArray[np.floating[Any]]:
+    """The core's smoother `method` on what a public function was given (its locals):
+    the signatures below are the only place each keyword is written. Every option's type and
+    value is checked in the core, which names it in the error."""
+    options = dict(given)
+    V, F = mesh_arrays(options.pop("vertices"), options.pop("faces"))
+    return _core._smooth(method, V, F, **options)  # type: ignore[no-any-return]
 
 
 def laplacian(
@@ -141,10 +144,7 @@ def laplacian(
         After each step, rescale about the initial centre of mass to restore the enclosed
         volume. Skipped on meshes that enclose no volume.
     """
-    return _call(
-        "laplacian", vertices, faces, iterations=iterations, lamb=lamb, weights=weights,
-        boundary=boundary, pinned=pinned, volume_constraint=volume_constraint, preset=preset, weld=weld,
-    )
+    return _call("laplacian", locals())
 
 
 def taubin(
@@ -176,10 +176,7 @@ def taubin(
     weights, boundary
         As in :func:`laplacian` (pymeshlab and trimesh presets: uniform only).
     """
-    return _call(
-        "taubin", vertices, faces, iterations=iterations, lamb=lamb, mu=mu, weights=weights,
-        boundary=boundary, pinned=pinned, preset=preset, weld=weld,
-    )
+    return _call("taubin", locals())
 
 
 def hc(
@@ -218,10 +215,7 @@ def hc(
     weights, boundary
         As in :func:`laplacian`.
     """
-    return _call(
-        "hc", vertices, faces, iterations=iterations, alpha=alpha, beta=beta, weights=weights,
-        boundary=boundary, pinned=pinned, preset=preset, weld=weld,
-    )
+    return _call("hc", locals())
 
 
 def implicit(
@@ -259,11 +253,7 @@ def implicit(
     boundary : "fixed" or "free", default "fixed"
     volume_constraint : bool, default False (trimesh preset: True)
     """
-    return _call(
-        "implicit", vertices, faces, step=step, iterations=iterations, tol=tol, max_iter=max_iter,
-        weights=weights, boundary=boundary, pinned=pinned, volume_constraint=volume_constraint,
-        preset=preset, weld=weld,
-    )
+    return _call("implicit", locals())
 
 
 for _f in (laplacian, taubin, hc, implicit):
@@ -345,11 +335,7 @@ def bilateral(
     light noise; under heavy noise the noisy normals themselves blur the creases, where
     :func:`guided` does better.
     """
-    V, F = mesh_arrays(vertices, faces)
-    return _core._denoise(  # type: ignore[no-any-return]
-        "bilateral", V, F, iterations=iterations, vertex_iterations=vertex_iterations,
-        sigma_s=sigma_s, sigma_r=sigma_r, pinned=pinned, weld=weld,
-    )
+    return _call("bilateral", locals())
 
 
 def guided(
@@ -371,11 +357,7 @@ def guided(
     where the noise is as strong as the crease. Better than :func:`bilateral` at medium and
     heavy noise, at about twice its cost.
     """
-    V, F = mesh_arrays(vertices, faces)
-    return _core._denoise(  # type: ignore[no-any-return]
-        "guided", V, F, iterations=iterations, vertex_iterations=vertex_iterations,
-        sigma_s=sigma_s, sigma_r=sigma_r, pinned=pinned, weld=weld,
-    )
+    return _call("guided", locals())
 
 
 for _f in (bilateral, guided):

@@ -1,81 +1,89 @@
-//! Python bindings for `crate::smooth`: one entry point, `_smooth`, that the public wrappers in
-//! `toonmesh/smooth.py` call with their own signatures and docstrings.
+//! Python bindings for `crate::smooth`: one entry point, `_smooth`, that the public functions
+//! of `toonmesh/smooth.py` call with their own signatures and docstrings (their keywords are
+//! written there only; None means the default, and each is checked here and in the core).
 
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 
 use super::args;
 use super::convert::{rows3_to_numpy, vertex_mask};
 use super::errors::to_py;
 use super::mesh_input::{MeshInput, PositionsRef};
-use crate::error::Error;
+use crate::error::{Error, Result};
 use crate::smooth::denoise::{self, Filter};
 use crate::smooth::{self, Args};
 
-#[pyfunction]
-#[pyo3(signature = (
-    method_name, vertices, faces_arr, *, iterations=None, lamb=None, mu=None, alpha=None, beta=None,
-    step=None, tol=None, max_iter=None, weights=None, boundary=None, pinned=None,
-    volume_constraint=None, preset=None, weld
-))]
-#[allow(clippy::too_many_arguments)]
-fn _smooth<'py>(
-    py: Python<'py>,
-    method_name: &str,
-    vertices: &Bound<'py, PyAny>,
-    faces_arr: &Bound<'py, PyAny>,
-    iterations: Option<&Bound<'py, PyAny>>,
-    lamb: Option<&Bound<'py, PyAny>>,
-    mu: Option<&Bound<'py, PyAny>>,
-    alpha: Option<&Bound<'py, PyAny>>,
-    beta: Option<&Bound<'py, PyAny>>,
-    step: Option<&Bound<'py, PyAny>>,
-    tol: Option<&Bound<'py, PyAny>>,
-    max_iter: Option<&Bound<'py, PyAny>>,
-    weights: Option<&Bound<'py, PyAny>>,
-    boundary: Option<&Bound<'py, PyAny>>,
-    pinned: Option<&Bound<'py, PyAny>>,
-    volume_constraint: Option<&Bound<'py, PyAny>>,
-    preset: Option<&Bound<'py, PyAny>>,
-    weld: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let m = smooth::options::parse_method(method_name).map_err(to_py)?;
-    // None means "the preset's default" for every option.
-    let args = (|| -> Result<Args, Error> {
-        Ok(Args {
-            iterations: args::optional("iterations", iterations, args::integer)?,
-            lamb: args::optional("lamb", lamb, args::number)?,
-            mu: args::optional("mu", mu, args::number)?,
-            alpha: args::optional("alpha", alpha, args::number)?,
-            beta: args::optional("beta", beta, args::number)?,
-            step: args::optional("step", step, args::number)?,
-            tol: args::optional("tol", tol, args::number)?,
-            max_iter: args::optional("max_iter", max_iter, args::integer)?,
-            weights: args::optional("weights", weights, args::text)?,
-            boundary: args::optional("boundary", boundary, args::text)?,
-            volume_constraint: args::optional("volume_constraint", volume_constraint, args::flag)?,
-            preset: args::optional("preset", preset, args::text)?,
-            weld: Some(args::flag("weld", weld)?),
-        })
-    })()
-    .map_err(to_py)?;
-    let plan = smooth::resolve(m, &args).map_err(to_py)?;
-    let mesh = MeshInput::read(vertices, faces_arr).map_err(to_py)?;
-    let pin = vertex_mask("pinned", pinned, mesh.n_vertices()).map_err(to_py)?;
-    let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
-    let out = mesh.run(py, faces_arr, |p, f, cancel| {
-        Ok(match p {
-            PositionsRef::F32(v) => {
-                Smoothed::F32(smooth::smooth_cancellable(v, f, &plan, pin, cancel, largest)?)
-            }
-            PositionsRef::F64(v) => {
-                Smoothed::F64(smooth::smooth_cancellable(v, f, &plan, pin, cancel, largest)?)
-            }
-        })
-    })?;
-    Ok(match out {
-        Smoothed::F32(v) => rows3_to_numpy(py, v).into_any(),
-        Smoothed::F64(v) => rows3_to_numpy(py, v).into_any(),
-    })
+/// The options a public function passed, taken one by one; what is left was not expected.
+struct Options<'a, 'py>(&'a Bound<'py, PyDict>);
+
+impl<'py> Options<'_, 'py> {
+    /// The value given for `name`, None included (absent: None).
+    fn given(&self, name: &str) -> Option<Bound<'py, PyAny>> {
+        let v = self.0.get_item(name).ok().flatten();
+        let _ = self.0.del_item(name);
+        v
+    }
+
+    /// An option whose None means its default.
+    fn take<T>(&self, name: &str, read: impl Fn(&str, &Bound<'_, PyAny>) -> Result<T>) -> Result<Option<T>> {
+        args::optional(name, self.given(name).as_ref(), read)
+    }
+
+    fn rest(&self, method: &str) -> Result<()> {
+        match self.0.keys().iter().next() {
+            Some(k) => Err(Error::wrong_type(k.to_string(), format!("not an option of {method}"))),
+            None => Ok(()),
+        }
+    }
+}
+
+/// How a smoother ran: the Laplacian family's plan, or a normal filter's options.
+enum Run {
+    Laplacian(smooth::Plan),
+    Normals(denoise::Options),
+}
+
+fn plan(method: &str, o: &Options<'_, '_>) -> Result<Run> {
+    let iterations = o.take("iterations", args::integer)?;
+    // weld is always given (False by default), so None is refused as a non-bool
+    let weld = o.given("weld").map(|w| args::flag("weld", &w)).transpose()?;
+    let filter = match method {
+        "bilateral" => Some(Filter::Bilateral),
+        "guided" => Some(Filter::Guided),
+        _ => None,
+    };
+    let run = match filter {
+        Some(f) => Run::Normals(denoise::resolve(
+            f,
+            &denoise::Args {
+                iterations,
+                vertex_iterations: o.take("vertex_iterations", args::integer)?,
+                sigma_s: o.take("sigma_s", args::number)?,
+                sigma_r: o.take("sigma_r", args::number)?,
+                weld: weld.unwrap_or(false),
+            },
+        )?),
+        None => Run::Laplacian(smooth::resolve(
+            smooth::options::parse_method(method)?,
+            &Args {
+                iterations,
+                lamb: o.take("lamb", args::number)?,
+                mu: o.take("mu", args::number)?,
+                alpha: o.take("alpha", args::number)?,
+                beta: o.take("beta", args::number)?,
+                step: o.take("step", args::number)?,
+                tol: o.take("tol", args::number)?,
+                max_iter: o.take("max_iter", args::integer)?,
+                weights: o.take("weights", args::text)?,
+                boundary: o.take("boundary", args::text)?,
+                volume_constraint: o.take("volume_constraint", args::flag)?,
+                preset: o.take("preset", args::text)?,
+                weld,
+            },
+        )?),
+    };
+    o.rest(method)?;
+    Ok(run)
 }
 
 /// Smoothed positions, in the input's precision.
@@ -84,54 +92,34 @@ enum Smoothed {
     F64(Vec<[f64; 3]>),
 }
 
-fn filter(name: &str) -> Result<Filter, Error> {
-    match name {
-        "bilateral" => Ok(Filter::Bilateral),
-        "guided" => Ok(Filter::Guided),
-        _ => Err(Error::invalid("method", format!("unknown normal filter '{name}'"))),
-    }
-}
-
-/// The feature-preserving smoothers (`crate::smooth::denoise`); None means the default.
 #[pyfunction]
-#[pyo3(signature = (
-    method_name, vertices, faces_arr, *, iterations=None, vertex_iterations=None, sigma_s=None,
-    sigma_r=None, pinned=None, weld
-))]
-#[allow(clippy::too_many_arguments)]
-fn _denoise<'py>(
+#[pyo3(signature = (method_name, vertices, faces_arr, **options))]
+fn _smooth<'py>(
     py: Python<'py>,
     method_name: &str,
     vertices: &Bound<'py, PyAny>,
     faces_arr: &Bound<'py, PyAny>,
-    iterations: Option<&Bound<'py, PyAny>>,
-    vertex_iterations: Option<&Bound<'py, PyAny>>,
-    sigma_s: Option<&Bound<'py, PyAny>>,
-    sigma_r: Option<&Bound<'py, PyAny>>,
-    pinned: Option<&Bound<'py, PyAny>>,
-    weld: &Bound<'py, PyAny>,
+    options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let f = filter(method_name).map_err(to_py)?;
-    let opts = (|| -> Result<denoise::Options, Error> {
-        denoise::resolve(
-            f,
-            &denoise::Args {
-                iterations: args::optional("iterations", iterations, args::integer)?,
-                vertex_iterations: args::optional("vertex_iterations", vertex_iterations, args::integer)?,
-                sigma_s: args::optional("sigma_s", sigma_s, args::number)?,
-                sigma_r: args::optional("sigma_r", sigma_r, args::number)?,
-                weld: args::flag("weld", weld)?,
-            },
-        )
-    })()
-    .map_err(to_py)?;
+    let options = options.map_or_else(|| PyDict::new(py), |d| d.copy().expect("a dict copies"));
+    let o = Options(&options);
+    let pinned = o.given("pinned").filter(|p| !p.is_none());
+    let run = plan(method_name, &o).map_err(to_py)?;
     let mesh = MeshInput::read(vertices, faces_arr).map_err(to_py)?;
-    let pin = vertex_mask("pinned", pinned, mesh.n_vertices()).map_err(to_py)?;
+    let pin = vertex_mask("pinned", pinned.as_ref(), mesh.n_vertices()).map_err(to_py)?;
     let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
-    let out = mesh.run(py, faces_arr, |p, faces, cancel| {
+    let out = mesh.run(py, faces_arr, |p, f, cancel| {
+        macro_rules! each {
+            ($v:expr) => {
+                match &run {
+                    Run::Laplacian(plan) => smooth::smooth_cancellable($v, f, plan, pin, cancel, largest),
+                    Run::Normals(opts) => denoise::denoise($v, f, opts, pin, cancel, largest),
+                }
+            };
+        }
         Ok(match p {
-            PositionsRef::F32(v) => Smoothed::F32(denoise::denoise(v, faces, &opts, pin, cancel, largest)?),
-            PositionsRef::F64(v) => Smoothed::F64(denoise::denoise(v, faces, &opts, pin, cancel, largest)?),
+            PositionsRef::F32(v) => Smoothed::F32(each!(v)?),
+            PositionsRef::F64(v) => Smoothed::F64(each!(v)?),
         })
     })?;
     Ok(match out {
@@ -141,7 +129,5 @@ fn _denoise<'py>(
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(_smooth, m)?)?;
-    m.add_function(wrap_pyfunction!(_denoise, m)?)?;
-    Ok(())
+    m.add_function(wrap_pyfunction!(_smooth, m)?)
 }

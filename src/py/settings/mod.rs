@@ -17,7 +17,9 @@ use super::errors::to_py;
 use crate::error::{Error, Result};
 use crate::render::settings::{self as described, parameter, Described, Value};
 
-pub use classes::{PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyRenderOptions, PyShadows};
+pub use classes::{
+    PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyRenderOptions, PyShadows,
+};
 
 /// A Python class around a described core type.
 pub trait Wraps: Sized {
@@ -128,17 +130,23 @@ pub fn make<T: Described>(
 ) -> PyResult<T> {
     (|| {
         let ctor = described::constructor::<T>(constructor);
-        let title = if ctor.name.is_empty() { T::CLASS.to_string() } else { format!("{}.{}", T::CLASS, ctor.name) };
+        let title =
+            if ctor.name.is_empty() { T::CLASS.to_string() } else { format!("{}.{}", T::CLASS, ctor.name) };
         if args.len() > ctor.positional {
             return Err(Error::wrong_type(
                 "args",
-                format!("{title} takes at most {} positional arguments ({} given)", ctor.positional, args.len()),
+                format!(
+                    "{title} takes at most {} positional arguments ({} given)",
+                    ctor.positional,
+                    args.len()
+                ),
             ));
         }
         let mut given: Vec<(String, Bound<'_, PyAny>)> =
             ctor.params.iter().zip(args.iter()).map(|(p, a)| (p.to_string(), a)).collect();
         for (k, v) in kwargs.into_iter().flat_map(|d| d.iter()) {
-            let k: String = k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?;
+            let k: String =
+                k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?;
             if given.iter().any(|(g, _)| *g == k) {
                 return Err(Error::wrong_type(k, format!("{title} got it twice")));
             }
@@ -163,8 +171,9 @@ pub fn replace<T: Described>(value: &T, changes: Option<&Bound<'_, PyDict>>) -> 
     (|| {
         let mut out = Vec::new();
         for (k, v) in changes.into_iter().flat_map(|d| d.iter()) {
-            let k: String = k.extract().map_err(|_| Error::wrong_type("changes", "keywords must be strings"))?;
-            let field = T::fields().iter().find(|f| f.name == k);
+            let k: String =
+                k.extract().map_err(|_| Error::wrong_type("changes", "keywords must be strings"))?;
+            let field = T::FIELDS.iter().find(|f| f.name == k);
             let value = match field {
                 Some(f) if !v.is_none() => Some(values::from_py(&k, f, &v)?),
                 _ => None,
@@ -178,15 +187,18 @@ pub fn replace<T: Described>(value: &T, changes: Option<&Bound<'_, PyDict>>) -> 
 }
 
 pub fn getattr<'py, T: Described>(py: Python<'py>, value: &T, name: &str) -> PyResult<Bound<'py, PyAny>> {
-    if T::fields().iter().any(|f| f.name == name) {
+    if T::FIELDS.iter().any(|f| f.name == name) {
         return values::to_py(py, &value.get(name));
     }
-    Err(pyo3::exceptions::PyAttributeError::new_err(format!("'{}' object has no attribute '{name}'", T::CLASS)))
+    Err(pyo3::exceptions::PyAttributeError::new_err(format!(
+        "'{}' object has no attribute '{name}'",
+        T::CLASS
+    )))
 }
 
 pub fn dir<T: Described>(obj: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
     let mut names: Vec<String> = obj.get_type().dir()?.extract()?;
-    names.extend(T::fields().iter().map(|f| f.name.to_string()));
+    names.extend(T::FIELDS.iter().map(|f| f.name.to_string()));
     names.sort();
     Ok(names)
 }
@@ -214,7 +226,10 @@ pub fn hash_of<T: serde::Serialize>(x: &T) -> u64 {
     h.finish()
 }
 
-pub fn reduce<'py, T: Described>(py: Python<'py>, inner: &T) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
+pub fn reduce<'py, T: Described>(
+    py: Python<'py>,
+    inner: &T,
+) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
     Ok((py.import("toonmesh._core")?.getattr("_restore")?, (T::CLASS, state(inner))))
 }
 
@@ -254,7 +269,9 @@ pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
                 d.set_item("min", kind.get_item(1)?)?;
                 d.set_item("max", kind.get_item(2)?)?;
             }
-            described::Kind::Choice(_) | described::Kind::Names(_) => d.set_item("choices", kind.get_item(1)?)?,
+            described::Kind::Choice(_) | described::Kind::Names(_) => {
+                d.set_item("choices", kind.get_item(1)?)?
+            }
             described::Kind::Setting(_) => d.set_item("class", kind.get_item(1)?)?,
             _ => {}
         }
@@ -270,12 +287,12 @@ pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     out.set_item("class", T::CLASS)?;
     out.set_item("help", T::HELP)?;
     let fields = PyList::empty(py);
-    for f in T::fields() {
+    for f in T::FIELDS {
         fields.append(field(f, None)?)?;
     }
     out.set_item("fields", fields)?;
     let ctors = PyList::empty(py);
-    for c in T::constructors() {
+    for c in T::CONSTRUCTORS {
         let start = T::start(c.name);
         let d = PyDict::new(py);
         d.set_item("name", c.name)?;
@@ -329,8 +346,35 @@ fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
     Ok(())
 }
 
+/// `RenderKeywords`: the render keywords as a TypedDict for `**options` in the public API, with
+/// each keyword's help and default in its docstring. Its keys are in `__optional_keys__`; its
+/// annotations are left empty, as no documentation tool finds a source line for them.
+fn render_keywords(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    use crate::render::scene::options::RenderOptions;
+    let py = m.py();
+    let typing = py.import("typing")?;
+    let keys = PyDict::new(py);
+    let start = RenderOptions::default();
+    let mut doc = String::from(
+        "The keywords of :class:`RenderOptions`, and so of :func:`render`, :meth:`Renderer.render` and \
+         :meth:`Renderer.render_many`. Each has its default in the core; a keyword given as None takes it.\n",
+    );
+    for f in RenderOptions::FIELDS {
+        keys.set_item(f.name, typing.getattr("Any")?)?;
+        let default = values::to_py(py, &start.get(f.name))?.repr()?;
+        doc += &format!("\n- ``{}``: {} (default ``{default}``);", f.name, f.help);
+    }
+    let total = PyDict::new(py);
+    total.set_item("total", false)?;
+    let keywords = typing.getattr("TypedDict")?.call(("RenderKeywords", keys), Some(&total))?;
+    keywords.setattr("__annotations__", PyDict::new(py))?;
+    keywords.setattr("__doc__", doc)?;
+    m.add("_RenderKeywords", keywords)
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add_names(m)?;
+    render_keywords(m)?;
     m.add_class::<PyMaterial>()?;
     m.add_class::<PyDither>()?;
     m.add_class::<PyLight>()?;

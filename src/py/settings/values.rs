@@ -48,7 +48,9 @@ pub fn to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>>
         Value::Rows(rows) => rows.iter().map(triple).collect::<Vec<_>>().into_bound_py_any(py),
         Value::Matrix(m) => m.iter().map(|r| r.to_vec()).collect::<Vec<_>>().into_bound_py_any(py),
         Value::Names(n) => n.clone().into_bound_py_any(py),
-        Value::Lights(l) => l.iter().map(|&inner| PyLight { inner }).collect::<Vec<_>>().into_bound_py_any(py),
+        Value::Lights(l) => {
+            l.iter().map(|&inner| PyLight { inner }).collect::<Vec<_>>().into_bound_py_any(py)
+        }
         Value::Setting(s) => match &**s {
             Setting::Material(inner) => PyMaterial { inner: inner.clone() }.into_bound_py_any(py),
             Setting::Dither(inner) => PyDither { inner: *inner }.into_bound_py_any(py),
@@ -147,7 +149,9 @@ fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 3]>> {
     refuse_text(name, obj, "(N,) or (N, 3) numbers")?;
     let rows: Vec<Bound<'_, PyAny>> = obj
         .try_iter()
-        .map_err(|_| Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj))))?
+        .map_err(|_| {
+            Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj)))
+        })?
         .collect::<PyResult<_>>()
         .map_err(|e| Error::invalid(name, e.to_string()))?;
     if rows.is_empty() || rows.len() > MAX_LUT {

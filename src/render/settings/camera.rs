@@ -2,10 +2,13 @@
 
 use super::{not_here, Constructor, Described, Field, Kind, Value};
 use crate::error::Result;
-use crate::render::scene::camera::{Camera, Placement, Projection, DEFAULT_FOV_Y, DEFAULT_HEIGHT, DEFAULT_UP};
+use crate::render::scene::camera::{
+    Camera, Placement, Projection, DEFAULT_FOV_Y, DEFAULT_HEIGHT, DEFAULT_UP,
+};
 
 const FIELDS: &[Field] = &[
-    Field::new("kind", Kind::Choice(&["fit", "look_at"]), "framed to fit the scene, or looking at a point").fixed(),
+    Field::new("kind", Kind::Choice(&["fit", "look_at"]), "framed to fit the scene, or looking at a point")
+        .fixed(),
     Field::new("projection", Kind::Choice(&["perspective", "orthographic"]), "the projection").fixed(),
     Field::new("eye", Kind::Vec3, "a look-at camera's position").optional(),
     Field::new("target", Kind::Vec3, "the point a look-at camera looks at").optional(),
@@ -16,15 +19,36 @@ const FIELDS: &[Field] = &[
         "a fitted camera's direction from the scene toward the eye (the scene is framed to fit)",
     )
     .optional(),
-    Field::new("margin", Kind::Float { min: 0.5, max: 4.0 }, "a fitted camera's room around the scene (1: touching)")
-        .optional(),
-    Field::new("fov_y", Kind::Float { min: 1.0, max: 179.0 }, "vertical field of view in degrees, in (0, 180)").optional(),
-    Field::new("height", Kind::Float { min: 0.0, max: 100.0 }, "height of an orthographic view in world units, > 0")
-        .optional(),
-    Field::new("near", Kind::Float { min: 0.0, max: 100.0 }, "near clip distance (None: from the scene's bounds)")
-        .optional(),
-    Field::new("far", Kind::Float { min: 0.0, max: 1000.0 }, "far clip distance (None: from the scene's bounds)")
-        .optional(),
+    Field::new(
+        "margin",
+        Kind::Float { min: 0.5, max: 4.0 },
+        "a fitted camera's room around the scene (1: touching)",
+    )
+    .optional(),
+    Field::new(
+        "fov_y",
+        Kind::Float { min: 1.0, max: 179.0 },
+        "vertical field of view in degrees, in (0, 180)",
+    )
+    .optional(),
+    Field::new(
+        "height",
+        Kind::Float { min: 0.0, max: 100.0 },
+        "height of an orthographic view in world units, > 0",
+    )
+    .optional(),
+    Field::new(
+        "near",
+        Kind::Float { min: 0.0, max: 100.0 },
+        "near clip distance (None: from the scene's bounds)",
+    )
+    .optional(),
+    Field::new(
+        "far",
+        Kind::Float { min: 0.0, max: 1000.0 },
+        "far clip distance (None: from the scene's bounds)",
+    )
+    .optional(),
 ];
 
 const EXTRAS: &[Field] =
@@ -58,17 +82,11 @@ impl Described for Camera {
     const CLASS: &'static str = "Camera";
     const HELP: &'static str = "A camera: framed to fit the scene, looking at a point, or orthographic.";
 
-    fn fields() -> &'static [Field] {
-        FIELDS
-    }
+    const FIELDS: &'static [Field] = FIELDS;
 
-    fn extras() -> &'static [Field] {
-        EXTRAS
-    }
+    const EXTRAS: &'static [Field] = EXTRAS;
 
-    fn constructors() -> &'static [Constructor] {
-        CONSTRUCTORS
-    }
+    const CONSTRUCTORS: &'static [Constructor] = CONSTRUCTORS;
 
     fn start(constructor: &str) -> Self {
         let placement = Placement::LookAt { eye: [0.0, 0.0, 1.0], target: [0.0; 3], up: DEFAULT_UP };

@@ -6,8 +6,16 @@ use crate::render::effects::dither::{Dither, DitherPattern, DitherSpace};
 
 const FIELDS: &[Field] = &[
     Field::new("pattern", Kind::Choice(DitherPattern::NAMES), "the threshold pattern"),
-    Field::new("space", Kind::Choice(DitherSpace::NAMES), "what the pattern is fixed to: the screen's pixels or the surface"),
-    Field::new("amount", Kind::Float { min: 0.0, max: 2.0 }, "how far in L.n a pixel may move toward the neighbouring band, 0 to 2"),
+    Field::new(
+        "space",
+        Kind::Choice(DitherSpace::NAMES),
+        "what the pattern is fixed to: the screen's pixels or the surface",
+    ),
+    Field::new(
+        "amount",
+        Kind::Float { min: 0.0, max: 2.0 },
+        "how far in L.n a pixel may move toward the neighbouring band, 0 to 2",
+    ),
     Field::new("scale", Kind::Float { min: 1.0, max: 64.0 }, "pixels a pattern cell covers, 1 to 64"),
 ];
 
@@ -15,26 +23,13 @@ impl Described for Dither {
     const CLASS: &'static str = "Dither";
     const HELP: &'static str = "Dithering between neighbouring bands of a toon material.";
 
-    fn fields() -> &'static [Field] {
-        FIELDS
-    }
+    const FIELDS: &'static [Field] = FIELDS;
 
-    fn constructors() -> &'static [Constructor] {
-        &[Constructor {
-            name: "",
-            params: &["pattern", "space", "amount", "scale"],
-            positional: 1,
-            required: 0,
-            help: "",
-        }]
-    }
+    const CONSTRUCTORS: &'static [Constructor] =
+        &[Constructor::only(&["pattern", "space", "amount", "scale"], 1)];
 
     fn start(_: &str) -> Self {
         Dither::default()
-    }
-
-    fn made_by(&self) -> &'static str {
-        ""
     }
 
     fn get(&self, field: &str) -> Value {

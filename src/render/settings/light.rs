@@ -7,11 +7,16 @@ use crate::render::scene::light::{Light, LightKind, Space};
 
 const FIELDS: &[Field] = &[
     Field::new("kind", Kind::Choice(&["directional", "point"]), "directional (sun-like) or point").fixed(),
-    Field::new("direction", Kind::Vec3, "a directional light's direction, from the light toward the scene").optional(),
+    Field::new("direction", Kind::Vec3, "a directional light's direction, from the light toward the scene")
+        .optional(),
     Field::new("position", Kind::Vec3, "a point light's position").optional(),
     Field::new("color", Kind::Color, "sRGB colour"),
     Field::new("intensity", Kind::Float { min: 0.0, max: 4.0 }, "factor on the colour, >= 0"),
-    Field::new("space", Kind::Choice(Space::NAMES), "'world', or 'camera': fixed to the view (x right, y up, -z forward)"),
+    Field::new(
+        "space",
+        Kind::Choice(Space::NAMES),
+        "'world', or 'camera': fixed to the view (x right, y up, -z forward)",
+    ),
     Field::new(
         "shadows",
         Kind::Setting("Shadows"),
@@ -48,13 +53,9 @@ impl Described for Light {
     const CLASS: &'static str = "Light";
     const HELP: &'static str = "A light: directional or point, in world or camera space.";
 
-    fn fields() -> &'static [Field] {
-        FIELDS
-    }
+    const FIELDS: &'static [Field] = FIELDS;
 
-    fn constructors() -> &'static [Constructor] {
-        CONSTRUCTORS
-    }
+    const CONSTRUCTORS: &'static [Constructor] = CONSTRUCTORS;
 
     fn start(constructor: &str) -> Self {
         let kind = match constructor {

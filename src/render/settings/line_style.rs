@@ -17,20 +17,12 @@ impl Described for LineStyle {
     const CLASS: &'static str = "LineStyle";
     const HELP: &'static str = "How one kind of ink line is drawn.";
 
-    fn fields() -> &'static [Field] {
-        FIELDS
-    }
+    const FIELDS: &'static [Field] = FIELDS;
 
-    fn constructors() -> &'static [Constructor] {
-        &[Constructor { name: "", params: &["color", "width"], positional: 2, required: 0, help: "" }]
-    }
+    const CONSTRUCTORS: &'static [Constructor] = &[Constructor::only(&["color", "width"], 2)];
 
     fn start(_: &str) -> Self {
         LineStyle::default()
-    }
-
-    fn made_by(&self) -> &'static str {
-        ""
     }
 
     fn get(&self, field: &str) -> Value {

@@ -70,7 +70,17 @@ const CONSTRUCTORS: &[Constructor] = &[
     },
     Constructor {
         name: "thresholded_phong",
-        params: &["color", "t_h", "t_s", "highlight", "ambient", "specular", "diffuse", "per_vertex", "dither"],
+        params: &[
+            "color",
+            "t_h",
+            "t_s",
+            "highlight",
+            "ambient",
+            "specular",
+            "diffuse",
+            "per_vertex",
+            "dither",
+        ],
         positional: 1,
         required: 0,
         help: "Al-Rousan et al.'s toon model: thresholded diffuse and highlight terms.",
@@ -106,17 +116,11 @@ impl Described for Material {
     const CLASS: &'static str = "Material";
     const HELP: &'static str = "A shading model with its colour coefficients and per-pixel effects.";
 
-    fn fields() -> &'static [Field] {
-        FIELDS
-    }
+    const FIELDS: &'static [Field] = FIELDS;
 
-    fn extras() -> &'static [Field] {
-        EXTRAS
-    }
+    const EXTRAS: &'static [Field] = EXTRAS;
 
-    fn constructors() -> &'static [Constructor] {
-        CONSTRUCTORS
-    }
+    const CONSTRUCTORS: &'static [Constructor] = CONSTRUCTORS;
 
     fn start(constructor: &str) -> Self {
         let c = DEFAULT_COLOR;
@@ -126,9 +130,14 @@ impl Described for Material {
             "thresholded_phong" => Material::thresholded_phong(c, None, None, None, None, None, false),
             "lut" => Material::lut(None, c, false),
             // the tone picks the number of stroke layers: the paper's values reach all of them
-            "hatching" => Material::bands([1.0; 3], None, Some(PAPER_BAND_VALUES.to_vec()), false).and_then(|m| {
-                m.with_effects(SurfaceSettings { hatching: Some(Hatching::default()), ..Default::default() })
-            }),
+            "hatching" => {
+                Material::bands([1.0; 3], None, Some(PAPER_BAND_VALUES.to_vec()), false).and_then(|m| {
+                    m.with_effects(SurfaceSettings {
+                        hatching: Some(Hatching::default()),
+                        ..Default::default()
+                    })
+                })
+            }
             _ => Material::bands(c, None, None, false),
         }
         .expect("the defaults are valid")
@@ -214,7 +223,9 @@ impl Described for Material {
             "color" => self.set_color(value.triple(param)?),
             "preset" => match value.text(param)?.as_str() {
                 "paper" => self.set("values", f32s_value(&PAPER_BAND_VALUES))?,
-                other => return Err(Error::invalid(param, format!("must be None or 'paper', got {other:?}"))),
+                other => {
+                    return Err(Error::invalid(param, format!("must be None or 'paper', got {other:?}")))
+                }
             },
             _ => self.set(param, value)?,
         }

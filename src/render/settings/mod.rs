@@ -27,9 +27,15 @@ use crate::error::{closest, Error, Result};
 pub enum Kind {
     Bool,
     /// An integer; `min` and `max` bound a control (the core's check is the rule).
-    Int { min: i64, max: i64 },
+    Int {
+        min: i64,
+        max: i64,
+    },
     /// A real number; `min` and `max` bound a control or a slider.
-    Float { min: f64, max: f64 },
+    Float {
+        min: f64,
+        max: f64,
+    },
     /// One of these names.
     Choice(&'static [&'static str]),
     /// An sRGB colour: '#rrggbb' or three numbers in [0, 1].
@@ -94,6 +100,14 @@ pub struct Constructor {
     pub help: &'static str,
 }
 
+impl Constructor {
+    /// The class's only constructor, `Class(...)`, whose first `positional` parameters may be
+    /// given by position.
+    pub const fn only(params: &'static [&'static str], positional: usize) -> Constructor {
+        Constructor { name: "", params, positional, required: 0, help: "" }
+    }
+}
+
 /// A settings type described for front ends.
 pub trait Described: Clone + PartialEq + Serialize + DeserializeOwned {
     const CLASS: &'static str;
@@ -101,16 +115,16 @@ pub trait Described: Clone + PartialEq + Serialize + DeserializeOwned {
     /// best word ("a render option").
     const PARAMETER: Option<&'static str> = None;
     const HELP: &'static str;
-    fn fields() -> &'static [Field];
+    const FIELDS: &'static [Field];
     /// Constructor-only parameters.
-    fn extras() -> &'static [Field] {
-        &[]
-    }
-    fn constructors() -> &'static [Constructor];
+    const EXTRAS: &'static [Field] = &[];
+    const CONSTRUCTORS: &'static [Constructor];
     /// What `constructor` makes from no arguments (its required parameters at a placeholder).
     fn start(constructor: &str) -> Self;
-    /// The constructor that makes this value.
-    fn made_by(&self) -> &'static str;
+    /// The constructor that makes this value (by default the class's only one).
+    fn made_by(&self) -> &'static str {
+        ""
+    }
     /// A field's value (None where this value has no such field: a Phong exponent of bands).
     fn get(&self, field: &str) -> Value;
     /// Sets a field from a value of its kind; range checks are `check`'s.
@@ -122,7 +136,7 @@ pub trait Described: Clone + PartialEq + Serialize + DeserializeOwned {
     /// A parameter read back from a value it made, for the repr; None where it cannot be
     /// (a colour that a model scaled: the coefficients it set are printed instead).
     fn read(&self, _constructor: &str, param: &str) -> Option<Value> {
-        Self::fields().iter().any(|f| f.name == param).then(|| self.get(param))
+        Self::FIELDS.iter().any(|f| f.name == param).then(|| self.get(param))
     }
     /// The core's checks, naming fields as constructor arguments.
     fn check(&self) -> Result<()>;
@@ -134,12 +148,12 @@ pub trait Described: Clone + PartialEq + Serialize + DeserializeOwned {
 }
 
 pub fn constructor<T: Described>(name: &str) -> &'static Constructor {
-    T::constructors().iter().find(|c| c.name == name).expect("a described constructor")
+    T::CONSTRUCTORS.iter().find(|c| c.name == name).expect("a described constructor")
 }
 
 /// The field or constructor-only parameter called `name`.
 pub fn parameter<T: Described>(name: &str) -> Option<&'static Field> {
-    T::fields().iter().chain(T::extras()).find(|f| f.name == name)
+    T::FIELDS.iter().chain(T::EXTRAS).find(|f| f.name == name)
 }
 
 fn title<T: Described>(c: &Constructor) -> String {
@@ -160,7 +174,8 @@ fn unknown(name: &str, known: &[&str], what: &str) -> Error {
 pub fn check_arguments<T: Described>(ctor: &Constructor, given: &[&str]) -> Result<()> {
     for name in given {
         if !ctor.params.contains(name) {
-            let what = T::PARAMETER.map_or_else(|| format!("a parameter of {}", title::<T>(ctor)), String::from);
+            let what =
+                T::PARAMETER.map_or_else(|| format!("a parameter of {}", title::<T>(ctor)), String::from);
             return Err(unknown(name, ctor.params, &what));
         }
     }
@@ -189,7 +204,7 @@ pub fn build<T: Described>(constructor: &str, mut args: Vec<(&'static str, Value
 pub fn replace<T: Described>(value: &T, changes: Vec<(String, Option<Value>)>) -> Result<T> {
     let mut out = value.clone();
     let base = T::start(value.made_by());
-    let names: Vec<&str> = T::fields().iter().filter(|f| !f.fixed).map(|f| f.name).collect();
+    let names: Vec<&str> = T::FIELDS.iter().filter(|f| !f.fixed).map(|f| f.name).collect();
     for (name, v) in changes {
         if !names.contains(&name.as_str()) {
             return Err(unknown(&name, &names, &format!("a field of {} to replace", T::CLASS)));
@@ -221,7 +236,7 @@ pub fn arguments<T: Described>(value: &T) -> (&'static Constructor, Vec<(&'stati
 /// Each field with its default: the value `constructor` makes.
 pub fn defaults<T: Described>(constructor: &str) -> Vec<(&'static Field, Value)> {
     let start = T::start(constructor);
-    T::fields().iter().map(|f| (f, start.get(f.name))).collect()
+    T::FIELDS.iter().map(|f| (f, start.get(f.name))).collect()
 }
 
 /// Converts between a field's value and the core's numbers (f32 fields keep their shortest

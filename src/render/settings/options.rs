@@ -72,20 +72,12 @@ impl Described for RenderOptions {
     const PARAMETER: Option<&'static str> = Some("a render option");
     const HELP: &'static str = "Every render setting besides the meshes, checked, with the core's defaults.";
 
-    fn fields() -> &'static [Field] {
-        FIELDS
-    }
+    const FIELDS: &'static [Field] = FIELDS;
 
-    fn constructors() -> &'static [Constructor] {
-        &[Constructor { name: "", params: PARAMS, positional: 0, required: 0, help: "" }]
-    }
+    const CONSTRUCTORS: &'static [Constructor] = &[Constructor::only(PARAMS, 0)];
 
     fn start(_: &str) -> Self {
         RenderOptions::default()
-    }
-
-    fn made_by(&self) -> &'static str {
-        ""
     }
 
     fn get(&self, field: &str) -> Value {

@@ -113,26 +113,17 @@ fn in_style(v: Value, common: LineStyle) -> Value {
 
 impl Described for Outlines {
     const CLASS: &'static str = "Outlines";
-    const HELP: &'static str = "Ink outlines for a render: lines found on the mesh and edges found in the image.";
+    const HELP: &'static str =
+        "Ink outlines for a render: lines found on the mesh and edges found in the image.";
 
-    fn fields() -> &'static [Field] {
-        FIELDS
-    }
+    const FIELDS: &'static [Field] = FIELDS;
 
-    fn extras() -> &'static [Field] {
-        EXTRAS
-    }
+    const EXTRAS: &'static [Field] = EXTRAS;
 
-    fn constructors() -> &'static [Constructor] {
-        &[Constructor { name: "", params: PARAMS, positional: 1, required: 0, help: "" }]
-    }
+    const CONSTRUCTORS: &'static [Constructor] = &[Constructor::only(PARAMS, 1)];
 
     fn start(_: &str) -> Self {
         Outlines::default()
-    }
-
-    fn made_by(&self) -> &'static str {
-        ""
     }
 
     fn get(&self, field: &str) -> Value {
@@ -219,13 +210,16 @@ impl Described for Outlines {
                 with_common.push((name, in_style(c.clone(), common)));
             }
         }
-        with_common.extend(rest.into_iter().map(|(n, v)| (n, if slot(n).is_some() { in_style(v, common) } else { v })));
+        with_common.extend(
+            rest.into_iter().map(|(n, v)| (n, if slot(n).is_some() { in_style(v, common) } else { v })),
+        );
         // later entries of the same kind win: `build` sorts stably by parameter
         let mut seen = std::collections::HashMap::new();
         for (i, (n, _)) in with_common.iter().enumerate() {
             seen.insert(*n, i);
         }
-        let args = with_common.into_iter().enumerate().filter(|(i, (n, _))| seen[n] == *i).map(|(_, a)| a).collect();
+        let args =
+            with_common.into_iter().enumerate().filter(|(i, (n, _))| seen[n] == *i).map(|(_, a)| a).collect();
         build(constructor, args)
     }
 

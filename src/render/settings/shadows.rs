@@ -10,28 +10,28 @@ const FIELDS: &[Field] = &[
         Kind::Int { min: *SHADOW_SIZES.start() as i64, max: *SHADOW_SIZES.end() as i64 },
         "the shadow map's side in texels, a power of two",
     ),
-    Field::new("bias", Kind::Float { min: 0.0, max: 8.0 }, "depth bias in texels per unit of receiver slope, >= 0"),
-    Field::new("filter", Kind::Choice(ShadowFilter::NAMES), "how the map is read: 'pcf' (soft edges) or 'none'"),
+    Field::new(
+        "bias",
+        Kind::Float { min: 0.0, max: 8.0 },
+        "depth bias in texels per unit of receiver slope, >= 0",
+    ),
+    Field::new(
+        "filter",
+        Kind::Choice(ShadowFilter::NAMES),
+        "how the map is read: 'pcf' (soft edges) or 'none'",
+    ),
 ];
 
 impl Described for Shadows {
     const CLASS: &'static str = "Shadows";
     const HELP: &'static str = "Shadow settings of a directional light.";
 
-    fn fields() -> &'static [Field] {
-        FIELDS
-    }
+    const FIELDS: &'static [Field] = FIELDS;
 
-    fn constructors() -> &'static [Constructor] {
-        &[Constructor { name: "", params: &["size", "bias", "filter"], positional: 3, required: 0, help: "" }]
-    }
+    const CONSTRUCTORS: &'static [Constructor] = &[Constructor::only(&["size", "bias", "filter"], 3)];
 
     fn start(_: &str) -> Self {
         Shadows::default()
-    }
-
-    fn made_by(&self) -> &'static str {
-        ""
     }
 
     fn get(&self, field: &str) -> Value {

@@ -13,13 +13,13 @@ use crate::render::scene::options::RenderOptions;
 /// Each constructor's value with no arguments, and with every parameter changed from its
 /// default where a second value is easy to name, makes itself again from its arguments.
 fn round_trips<T: Described + std::fmt::Debug>() {
-    for c in T::constructors() {
+    for c in T::CONSTRUCTORS {
         let v = T::start(c.name);
         let (ctor, args) = arguments(&v);
         assert_eq!(ctor.name, c.name, "{}: made by another constructor", T::CLASS);
         let again: T = T::construct(c.name, args).unwrap_or_else(|e| panic!("{}.{}: {e}", T::CLASS, c.name));
         assert_eq!(again, v, "{}.{}", T::CLASS, c.name);
-        for f in T::fields() {
+        for f in T::FIELDS {
             let got = v.get(f.name);
             if got != Value::None && !f.fixed {
                 let mut w = v.clone();
@@ -44,7 +44,8 @@ fn every_constructor_makes_its_value_again() {
 
 #[test]
 fn a_base_colour_is_printed_as_the_coefficients_it_set() {
-    let m: Material = Material::construct("lambert", vec![("color", Value::Triple([0.2, 0.4, 0.6]))]).unwrap();
+    let m: Material =
+        Material::construct("lambert", vec![("color", Value::Triple([0.2, 0.4, 0.6]))]).unwrap();
     let (_, args) = arguments(&m);
     let names: Vec<&str> = args.iter().map(|(n, _)| *n).collect();
     assert_eq!(names, ["ambient", "diffuse"]);
@@ -72,7 +73,11 @@ fn the_common_style_reaches_every_kind_given_as_true() {
     let red = [1.0, 0.0, 0.0];
     let o = Outlines::construct(
         "",
-        vec![("color", Value::Triple(red)), ("suggestive", Value::Bool(true)), ("crease", Value::Bool(false))],
+        vec![
+            ("color", Value::Triple(red)),
+            ("suggestive", Value::Bool(true)),
+            ("crease", Value::Bool(false)),
+        ],
     )
     .unwrap();
     let style = |k: &str| o.get(k);
