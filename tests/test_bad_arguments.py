@@ -536,7 +536,7 @@ CURVED_VERTICES = Array(tuple((n, v, ValueError if n == "tiny" else e) for n, v,
 
 # A mesh's arrays, and a crease threshold in degrees.
 MESH_PARAMS = [Param("vertices", VERTICES), Param("faces", FACES)]
-CREASE = Param("crease_angle", Number(0.0, 180.0))
+CREASE = Param("crease_angle", Number(0.0, 180.0), none=OK)  # None: the core's default
 # A generated shape's noise (relative to its size) and seed.
 NOISE_AND_SEED = [Param("noise", Number(0.0, math.inf, open_hi=True)), Param("seed", Integer(0, 2**64 - 1))]
 
@@ -624,7 +624,7 @@ CASES: List[Case] = [
         "edges.EdgeIndex.feature_edges",
         EDGE_INDEX.feature_edges,
         dict(crease_angle=20.0),
-        [Param("crease_angle", Number(0.0, 180.0))],
+        [CREASE],
     ),
     Case(
         "edges.EdgeIndex.silhouette",
