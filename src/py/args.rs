@@ -32,7 +32,6 @@ pub fn flag(name: &str, obj: &Bound<'_, PyAny>) -> Result<bool> {
     Err(Error::wrong_type(name, format!("expected a bool (True or False), got {}", type_name(obj))))
 }
 
-
 /// A real number (int, float or NumPy number; not a bool or a string). NaN and inf pass: range
 /// checks decide.
 pub fn number(name: &str, obj: &Bound<'_, PyAny>) -> Result<f64> {
@@ -47,7 +46,6 @@ pub fn number(name: &str, obj: &Bound<'_, PyAny>) -> Result<f64> {
         }
     })
 }
-
 
 /// An integer (int or NumPy integer; not a bool or a float), within i64.
 pub fn integer(name: &str, obj: &Bound<'_, PyAny>) -> Result<i64> {
@@ -146,7 +144,6 @@ fn channels(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
 pub fn rgb(name: &str, obj: &Bound<'_, PyAny>) -> Result<color::Srgb> {
     color::from_channels(name, &channels(name, obj)?)
 }
-
 
 /// An sRGB colour with alpha: '#rrggbb', '#rrggbbaa', or 3 or 4 numbers in [0, 1] (alpha 1
 /// when not given).
