@@ -25,6 +25,7 @@ import numpy as np
 
 from toonmesh import _core
 from toonmesh._core import Camera, Dither, Light, Material, Outlines, RenderOptions, Shadows
+from toonmesh._described import default
 from toonmesh._render import PlacedMesh, Renderer, draw, place_meshes, remove_meshes, shared_renderer
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals
@@ -47,6 +48,10 @@ _MAX_DRAG = 1e6
 _MAX_ZOOM = 1e3
 # How close the view may come to looking straight along ``up`` (radians), so it never flips.
 _POLE_MARGIN = math.radians(1.0)
+# What the view keeps for the projection it does not use (an orthographic camera has no field of
+# view): the core's defaults, should the view be switched to that projection.
+_FOV_Y = float(default(Camera, "look_at", "fov_y"))
+_HEIGHT = float(default(Camera, "orthographic", "height"))
 
 
 def _unit(v: np.ndarray) -> np.ndarray:
@@ -132,7 +137,7 @@ def _view_of(result: RenderResult, camera: Camera, center: np.ndarray) -> _View:
     target = eye + forward * max(float(np.dot(center - eye, forward)), 1e-6)
     orthographic = camera.projection == "orthographic"
     height = camera.height if camera.height is not None else 2.0 / float(result.projection[1, 1])
-    fov_y = camera.fov_y if camera.fov_y is not None else 35.0
+    fov_y = camera.fov_y if camera.fov_y is not None else _FOV_Y
     return _View(eye, target, camera.up, orthographic, float(fov_y), float(height))
 
 
@@ -341,7 +346,7 @@ class Viewer:
             view = _view_of(result, camera, self._center)
         else:
             view = _View(camera.eye, camera.target, camera.up, camera.projection == "orthographic",
-                         float(camera.fov_y or 35.0), float(camera.height or 1.0))
+                         float(camera.fov_y or _FOV_Y), float(camera.height or _HEIGHT))
         with self._state_lock:
             self._view = view
         if show:
