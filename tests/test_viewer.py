@@ -177,17 +177,17 @@ def test_controls_change_the_render_settings(mesh):
     need("ipywidgets")
     need("anywidget")
     v = tm.Viewer(*mesh, outlines="mesh", width=64, height=64, controls=True)
-    sliders = {c.description: c for c in v._controls.children[1].children}
+    controls = v._controls.widgets  # every control by the field it sets (tests/test_viewer_controls.py drives them all)
     count = v.render_count
-    sliders["outline width"].value = 3.0
+    controls["outlines.silhouette.width"].value = 3.0
     assert v.outlines.styles["silhouette"].width == 3.0 and v.render_count == count + 1
-    sliders["crease angle"].value = 60
+    controls["outlines.crease_angle"].value = 60
     assert v.outlines.crease_angle == 60
-    sliders["band 1"].value = 0.1
+    controls["material.thresholds[0]"].value = 0.1
     assert v.material.thresholds[0] == pytest.approx(0.1)
-    sliders["shadows"].value = True
+    controls["light.shadows"].value = True
     assert v.lights[0].shadows is not None
-    sliders["outlines"].value = "none"
+    controls["outlines.kind"].value = "none"
     assert v.outlines is None
     v.close()
 

@@ -180,7 +180,7 @@ def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
 
             # a control: outlines off re-renders (the frame has fewer dark pixels)
             before_switch = int(viewer.get_attribute("data-frame"))
-            page.locator(".widget-dropdown select").select_option("none")
+            page.locator(".toonmesh-outlines-kind select").select_option("none")  # the outlines' kind
             page.wait_for_function(
                 "(n) => +document.querySelector('.toonmesh-viewer').dataset.frame > n", arg=before_switch, timeout=20_000)
             page.wait_for_timeout(300)

@@ -1,97 +1,117 @@
-"""On-screen controls of :class:`toonmesh.Viewer` (``controls=True``): ipywidgets sliders and
-switches beside the frame, each setting the viewer's render settings (so ``code()`` sees them).
-Sliders update when released, so dragging one never queues renders."""
+"""On-screen controls of :class:`toonmesh.Viewer` (``controls=True``): a column beside the frame
+with a section per setting the viewer shows (material, the first light, outlines, the camera's
+field of view, and the render options), each made from the core's description of the setting's
+class (see _field_controls). A change from Python (``v.material = ...``, ``v.set(...)``)
+refreshes the controls; a control changes only its field, so ``code()`` sees it. A value the
+core refuses leaves the settings as they were: the control snaps back and a note above the
+controls says why. Sliders update when released, so dragging one never queues renders.
+Imported only where ipywidgets is installed."""
 
 from __future__ import annotations
 
-import math
-from typing import TYPE_CHECKING, Any, List, Optional
+import html
+from typing import TYPE_CHECKING, Any, Callable, List, Tuple
 
-from toonmesh._render import Light, Material, Outlines
+import ipywidgets as w  # type: ignore[import-untyped]
+
+from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
+from toonmesh._field_controls import Control, Panel, Source, controls_for
 
 if TYPE_CHECKING:
     from toonmesh.viewer import Viewer
 
-
-def _angles(direction: Any) -> "tuple[float, float]":
-    """Azimuth (about y, from +z toward +x) and elevation (toward +y) of a direction, in degrees.
-    The sliders show where the light comes from: the opposite of its direction of travel."""
-    x, y, z = direction
-    n = math.sqrt(x * x + y * y + z * z) or 1.0
-    return math.degrees(math.atan2(x, z)), math.degrees(math.asin(max(-1.0, min(1.0, y / n))))
-
-
-def _direction(azimuth: float, elevation: float) -> "tuple[float, float, float]":
-    a, e = math.radians(azimuth), math.radians(elevation)
-    return (math.cos(e) * math.sin(a), math.sin(e), math.cos(e) * math.cos(a))
+# The render options that have a section of their own, and the frame's size, which is set from
+# Python (``v.width = 640``): a slider would resize the view under the pointer.
+_OWN_SECTIONS = ("material", "lights", "outlines", "camera")
+_FRAME_SIZE = ("width", "height")
+# The column is as high as the frame (scrolling beyond), but never shorter than this.
+_MIN_HEIGHT = 360
 
 
-def control_panel(viewer: "Viewer") -> Any:
-    """The viewer's widget with a column of controls beside it (an ``ipywidgets.HBox``)."""
-    import ipywidgets as w  # type: ignore[import-untyped]
+class ControlPanel(Panel):
+    """The viewer's frame with the column of controls beside it (``widget``, an HBox); every
+    control's widget by key in ``widgets`` (``"material.thresholds[0]"``, ``"outlines.kind"``)."""
 
-    rows: List[Any] = []
-    style = {"description_width": "110px"}
-    layout = w.Layout(width="330px")
+    def __init__(self, viewer: "Viewer"):
+        super().__init__()
+        self.viewer = viewer
+        self.note = w.HTML("")
+        material = Source.whole(lambda: viewer.material, lambda m: viewer.set(material=m))
+        light = Source.whole(self._light, self._set_light)
+        outlines = Source.whole(lambda: viewer.outlines, lambda o: viewer.set(outlines=o))
+        camera = Source.whole(lambda: viewer.camera, lambda c: setattr(viewer, "camera", c))
+        render = Source(lambda: viewer.options, lambda name, value: viewer.set(**{name: value}))
+        rendering = [f["name"] for f in RenderOptions.describe()["fields"] if f["name"] not in _OWN_SECTIONS + _FRAME_SIZE]
+        self.sections: List[Tuple[Any, List[Control]]] = [
+            (_heading("material", Material), controls_for(self, material, Material, "material")),
+            (_heading("light", Light), controls_for(self, light, Light, "light", directions=("direction",))),
+            (_heading("outlines", Outlines), controls_for(self, outlines, Outlines, "outlines",
+                                                          whole=lambda o: viewer.set(outlines=o))),
+            (_heading("camera", Camera), controls_for(self, camera, Camera, "camera", only=("fov_y",))),
+            (_heading("render", RenderOptions), controls_for(self, render, RenderOptions, "render", only=rendering)),
+        ]
+        rows: List[Any] = [self.note]
+        for heading, controls in self.sections:
+            rows += [heading, *(c.box for c in controls)]
+        self.column = w.VBox(rows, layout=w.Layout(overflow="auto", flex="0 0 auto"))
+        self.widget = w.HBox([viewer.widget, self.column]) if viewer.widget is not None else self.column
+        self.refresh()
 
-    def slider(description: str, value: float, lo: float, hi: float, step: float) -> Any:
-        return w.FloatSlider(value=value, min=lo, max=hi, step=step, description=description,
-                             continuous_update=False, style=style, layout=layout)
+    def _light(self) -> Any:
+        lights = self.viewer.lights
+        return lights[0] if lights else None
 
-    def guarded(change: Any) -> None:
+    def _set_light(self, light: Light) -> None:
+        self.viewer.set(lights=[light, *self.viewer.lights[1:]])
+
+    def controls(self) -> List[Control]:
+        """Every control shown now, its own controls after it (a light's Shadows' under the switch)."""
+        out: List[Control] = []
+
+        def walk(controls: List[Control]) -> None:
+            for c in controls:
+                if c.box.layout.display != "none":
+                    out.append(c)
+                    walk(c.children())
+
+        for _, controls in self.sections:
+            walk(controls)
+        return out
+
+    def refresh(self) -> None:
+        """Shows the viewer's current settings (and only the controls of fields they have)."""
+        self.syncing = True
+        try:
+            for heading, controls in self.sections:
+                for c in controls:
+                    c.refresh()
+                heading.layout.display = None if any(c.box.layout.display != "none" for c in controls) else "none"
+            self.column.layout.max_height = f"{max(self.viewer.height, _MIN_HEIGHT)}px"
+        finally:
+            self.syncing = False
+
+    def apply(self, change: Callable[[], None]) -> None:
+        """Runs a control's change; where it fails, the settings go back to what they were and the
+        note says why (never over the frame), and the controls show the settings again."""
+        before = self.viewer.options
         try:
             change()
-        except (TypeError, ValueError) as exc:  # shown over the frame rather than lost in a log
-            if viewer.widget is not None:
-                viewer.widget.show_error(f"{type(exc).__name__}: {exc}")
+        except Exception as exc:  # a refused value: the control snaps back
+            self._restore(before)
+            self.note.value = f"<span style='color:#a00'>{html.escape(f'{type(exc).__name__}: {exc}')}</span>"
+        else:
+            self.note.value = ""
+        self.refresh()
 
-    light: Optional[Light] = viewer.lights[0] if viewer.lights else None
-    if light is not None and light.direction is not None:  # a directional light
-        az, el = _angles(tuple(-x for x in light.direction))
-        azimuth = slider("light azimuth", az, -180, 180, 1)
-        elevation = slider("light elevation", el, -89, 89, 1)
-        shadows = w.Checkbox(value=light.shadows is not None, description="shadows", style=style)
+    def _restore(self, before: RenderOptions) -> None:
+        """Puts back the settings a failed change left changed (the core refuses most values
+        before anything changes; a render can still fail after)."""
+        now = self.viewer.options
+        changed = {f["name"]: getattr(before, f["name"]) for f in RenderOptions.describe()["fields"]
+                   if getattr(before, f["name"]) != getattr(now, f["name"])}
+        if changed:
+            self.viewer.set(**changed)
 
-        def relight(_: Any = None) -> None:
-            first = viewer.lights[0]
-            toward = _direction(azimuth.value, elevation.value)
-            lit = Light.directional(tuple(-x for x in toward), color=first.color,
-                                    intensity=first.intensity, space=first.space,
-                                    shadows=(first.shadows or True) if shadows.value else None)
-            guarded(lambda: setattr(viewer, "lights", [lit, *viewer.lights[1:]]))
 
-        for c in (azimuth, elevation, shadows):
-            c.observe(relight, names="value")
-        rows += [azimuth, elevation, shadows]
-
-    material: Material = viewer.material
-    if material.model == "bands" and material.hatch_style is None and material.thresholds:
-        thresholds = [slider(f"band {i + 1}", t, 0, 1, 0.01) for i, t in enumerate(material.thresholds)]
-
-        def rethreshold(_: Any = None) -> None:
-            m = viewer.material
-            guarded(lambda: setattr(viewer, "material", Material.bands(
-                m.diffuse, thresholds=[s.value for s in thresholds], values=m.values, per_vertex=m.per_vertex, dither=m.dither)))
-
-        for s in thresholds:
-            s.observe(rethreshold, names="value")
-        rows += thresholds
-
-    current = viewer.outlines
-    first_style = next((s for s in current.styles.values() if s is not None), None) if current is not None else None
-    kind = w.Dropdown(options=["none", "mesh", "image", "both"], value=current.kind if current is not None else "none",
-                      description="outlines", style=style, layout=layout)
-    crease = slider("crease angle", current.crease_angle if current is not None else 30.0, 0, 180, 1)
-    width = slider("outline width", first_style.width if first_style is not None else 1.5, 0.5, 8, 0.25)
-
-    def reoutline(_: Any = None) -> None:
-        if kind.value == "none":
-            guarded(lambda: setattr(viewer, "outlines", None))
-            return
-        color = first_style.color if first_style is not None else (0.0, 0.0, 0.0)
-        guarded(lambda: setattr(viewer, "outlines", Outlines(kind.value, color=color, width=width.value, crease_angle=crease.value)))
-
-    for c in (kind, crease, width):
-        c.observe(reoutline, names="value")
-    rows += [kind, crease, width]
-    return w.HBox([viewer.widget, w.VBox(rows)]) if viewer.widget is not None else w.VBox(rows)
+def _heading(title: str, cls: Any) -> Any:
+    return w.HTML(f"<b>{html.escape(title)}</b>", tooltip=cls.describe()["help"])

@@ -198,8 +198,10 @@ class Viewer:
     the full-size frame before it returns), ``camera`` (read or set), and every render setting
     as an attribute that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
 
-    Viewer options: ``controls=True`` shows ipywidgets sliders beside the frame (light
-    direction, band thresholds, crease angle, outline width, outlines and shadows switches);
+    Viewer options: ``controls=True`` shows ipywidgets controls beside the frame, one per field
+    of the material, the first light, the outlines (and each line kind's style), the camera's
+    field of view and the render options, each following the core's description of the field
+    (its kind, bounds and choices) and showing the settings as they are now;
     ``image_format`` of the full-size frames, ``"png"`` (default) or ``"jpeg"``; ``drag_scale``,
     the size of the frames drawn while the pointer moves, as a fraction of the full size
     (0.05 to 1, default 0.5; they are sent as JPEG).
@@ -262,13 +264,13 @@ class Viewer:
         self._worker: Optional[threading.Thread] = None
         self._closed = False
         self._widget: Any = _make_widget(self)
-        self._controls: Any = None
-        self._set_camera(options.get("camera"), show=False)
+        self._controls: Any = None  # the on-screen controls (a ControlPanel), refreshed when a setting changes
+        self._set_camera(options.get("camera"))
         self._show(draft=False)
         if controls and self._widget is not None:  # without the notebook extra: the still frame
-            from toonmesh._viewer_controls import control_panel
+            from toonmesh._viewer_controls import ControlPanel
 
-            self._controls = control_panel(self)
+            self._controls = ControlPanel(self)
 
     # -- the scene ----------------------------------------------------------------------------
 
@@ -337,9 +339,13 @@ class Viewer:
 
     @camera.setter
     def camera(self, camera: Camera) -> None:
-        self._set_camera(camera, show=True)
+        self._set_camera(camera)
+        self._settings_shown()
+        self._show(draft=False)
 
-    def _set_camera(self, camera: Optional[Camera], show: bool) -> None:
+    def _set_camera(self, camera: Optional[Camera]) -> None:
+        """Holds ``camera`` as the view (a fitted one as the eye and target the core chose); the
+        caller renders."""
         camera = self._options.replace(camera=camera).camera  # checked, with the core's default
         if camera.kind == "fit":
             result = self._render(camera, self._options.width, self._options.height)
@@ -349,8 +355,6 @@ class Viewer:
                          float(camera.fov_y or _FOV_Y), float(camera.height or _HEIGHT))
         with self._state_lock:
             self._view = view
-        if show:
-            self._show(draft=False)
 
     def orbit(self, dx: float, dy: float) -> None:
         """Orbits about the target as a drag of ``dx``, ``dy`` pixels would (x right, y down; a
@@ -383,7 +387,7 @@ class Viewer:
         direction = tuple(float(x) for x in view.eye - view.target)
         up = tuple(float(x) for x in view.up)
         camera = Camera.fit(direction, up=up, orthographic=view.orthographic, fov_y=None if view.orthographic else view.fov_y)
-        self._set_camera(camera, show=False)
+        self._set_camera(camera)
 
     def _move(self, kind: str, a: float, b: float) -> None:
         with self._state_lock:
@@ -413,8 +417,14 @@ class Viewer:
             else:
                 self._given[k] = v
         if camera is not None:
-            self._set_camera(camera, show=False)
+            self._set_camera(camera)
+        self._settings_shown()
         self._show(draft=False)
+
+    def _settings_shown(self) -> None:
+        """The on-screen controls show the settings as they are now."""
+        if self._controls is not None:
+            self._controls.refresh()
 
     # -- rendering ----------------------------------------------------------------------------
 
@@ -536,7 +546,7 @@ class Viewer:
         """The widget where a front end shows widgets, and always the current frame as PNG (what
         nbconvert, GitHub and an untrusted notebook show) with a line of text."""
         bundle: Dict[str, Any] = {}
-        shown = self._controls if self._controls is not None else self._widget
+        shown = self._controls.widget if self._controls is not None else self._widget
         if shown is not None:
             widget_bundle = shown._repr_mimebundle_(include=include, exclude=exclude)
             if isinstance(widget_bundle, tuple):
