@@ -52,6 +52,17 @@ impl Error {
     pub fn wrong_type(arg: impl Into<String>, reason: impl Into<String>) -> Self {
         Error::WrongType { arg: arg.into(), reason: reason.into() }
     }
+
+    /// The same error naming the argument `from` as `to`, where a caller passes its own
+    /// argument on under another name (the renderer's `smooth_iterations` as `iterations`).
+    pub fn renamed(self, from: &str, to: &str) -> Self {
+        match self {
+            Error::InvalidValue { arg, reason } if arg == from => Error::invalid(to, reason),
+            Error::IndexOutOfRange { arg, reason } if arg == from => Error::out_of_range(to, reason),
+            Error::WrongType { arg, reason } if arg == from => Error::wrong_type(to, reason),
+            other => other,
+        }
+    }
 }
 
 pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -48,14 +48,11 @@ def _smoothing_iterations(iterations: Any) -> int:
 def _smoothed(vertices: np.ndarray, faces: np.ndarray, iterations: int) -> np.ndarray:
     if iterations == 0:
         return vertices
-    from toonmesh import smooth
-
-    try:
-        return smooth.laplacian(vertices, faces, iterations=iterations, preset="paper")
-    except ValueError as exc:  # the core's range of iterations, under this function's name for it
-        if str(exc).startswith("iterations:"):
-            raise ValueError(f"smooth_{exc}") from None
-        raise
+    # the core names the iterations as this function's caller does
+    return _core._smooth(  # type: ignore[no-any-return]
+        "laplacian", vertices, faces, iterations=iterations, preset="paper", weld=False,
+        _as=[("iterations", "smooth_iterations")],
+    )
 
 
 class Renderer:

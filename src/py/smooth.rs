@@ -104,7 +104,10 @@ fn _smooth<'py>(
     let options = options.map_or_else(|| PyDict::new(py), |d| d.copy().expect("a dict copies"));
     let o = Options(&options);
     let pinned = o.given("pinned").filter(|p| !p.is_none());
-    let run = plan(method_name, &o).map_err(to_py)?;
+    // `_as`: {option: the caller's name for it}, for errors
+    let names: Vec<(String, String)> = o.given("_as").map_or(Ok(Vec::new()), |d| d.extract())?;
+    let rename = |e: Error| names.iter().fold(e, |e, (from, to)| e.renamed(from, to));
+    let run = plan(method_name, &o).map_err(|e| to_py(rename(e)))?;
     let mesh = MeshInput::read(vertices, faces_arr).map_err(to_py)?;
     let pin = vertex_mask("pinned", pinned.as_ref(), mesh.n_vertices()).map_err(to_py)?;
     let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
