@@ -17,6 +17,9 @@ from toonmesh import _strokes
 
 #: Depth offset (in pixel footprints) that lets every line through: no hidden-line removal.
 _SHOW_ALL = 1e30
+#: Hidden lines in the SVG: grey, dashes of 4 pixels with gaps of 3.
+_HIDDEN_COLOR = "#9a9a9a"
+_HIDDEN_DASHES = (4.0, 3.0)
 
 
 def view_lines(
@@ -74,18 +77,12 @@ def write_svg(
     """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg` with its
     ``smooth``, ``order`` and ``simplify``); with hidden lines, those go underneath, dashed and
     grey."""
-    svg = lines["seen"].svg(smooth=smooth, order=order, simplify=simplify)
-    everything = lines["everything"]
+    seen, everything = lines["seen"], lines["everything"]
+    _strokes.check(order, simplify, smooth)
+    groups = seen._svg_groups(order, simplify, smooth, "auto")
     if everything is not None:
-        polylines = "\n".join(
-            '<polyline points="' + " ".join(f"{x:.2f},{y:.2f}" for x, y in p) + '"/>' for p in everything.lines
-        )
-        under = (
-            '<g id="hidden" fill="none" stroke="#9a9a9a" stroke-width="1" stroke-dasharray="4 3">\n'
-            f"{polylines}\n</g>\n"
-        )
-        head_end = svg.index(">", svg.index("<svg")) + 1
-        svg = svg[:head_end] + "\n" + under + svg[head_end + 1 :]
+        groups.insert(0, ("hidden", _HIDDEN_COLOR, 1.0, _HIDDEN_DASHES, [(p, None) for p in everything.lines]))
+    svg = _strokes.svg_document(seen.width, seen.height, groups)
     with open(path, "w", encoding="utf-8") as f:
         f.write(svg)
 
