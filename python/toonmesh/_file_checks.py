@@ -289,20 +289,17 @@ def strip_triangles(strips: Any) -> np.ndarray:
     of strips). Triangle k of a strip is (s[k], s[k+1], s[k+2]) for even k and (s[k+1], s[k],
     s[k+2]) for odd k, so that all face the same way; triangles with a repeated corner (the
     joins between strips) are dropped. Returns (M, 3) int64."""
-    seqs: List[np.ndarray] = []
-    for row in strips if isinstance(strips, (list, tuple)) or strips.dtype == object or strips.ndim == 2 else [strips]:
-        row = np.asarray(row, dtype=np.int64).ravel()
-        cuts = np.flatnonzero(row < 0)
-        seqs.extend(np.split(row, cuts))
-    tris: List[np.ndarray] = []
-    for s in seqs:
-        s = s[s >= 0]
-        if len(s) < 3:
-            continue
-        t = np.stack([s[:-2], s[1:-1], s[2:]], axis=1)
-        t[1::2, 0], t[1::2, 1] = s[2:-1:2], s[1:-2:2]  # odd triangles: first two corners swapped
-        tris.append(t)
-    out = np.concatenate(tris) if tris else np.zeros((0, 3), dtype=np.int64)
+    # one sequence, each row ended by a restart
+    if isinstance(strips, np.ndarray) and strips.dtype != object and strips.ndim == 2:
+        s = np.hstack([strips.astype(np.int64), np.full((len(strips), 1), -1)]).ravel()
+    else:
+        rows = strips if isinstance(strips, (list, tuple)) or strips.dtype == object else [strips]
+        ends = [np.append(np.asarray(row, dtype=np.int64).ravel(), -1) for row in rows]
+        s = np.concatenate(ends) if ends else np.zeros(0, np.int64)
+    k = np.flatnonzero((s[:-2] >= 0) & (s[1:-1] >= 0) & (s[2:] >= 0))  # first corners of whole triangles
+    restarts = np.where(s < 0, np.arange(len(s)), -1)
+    odd = (k - np.maximum.accumulate(restarts)[k]) % 2 == 0  # even distance from the restart: odd in its strip
+    out = np.stack([np.where(odd, s[k + 1], s[k]), np.where(odd, s[k], s[k + 1]), s[k + 2]], axis=1)
     keep = (out[:, 0] != out[:, 1]) & (out[:, 1] != out[:, 2]) & (out[:, 0] != out[:, 2])
     return out[keep]
 
