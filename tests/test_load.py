@@ -6,6 +6,7 @@ Every GLB, PLY and OBJ here is written at run time (by trimesh or by hand) into 
 
 from __future__ import annotations
 
+import os
 import tracemalloc
 import warnings
 
@@ -407,3 +408,36 @@ def test_a_file_renders_in_its_own_colours_with_its_instances_uploaded_once(tmp_
     # a material given is the user's: it multiplies the file's colours
     dark = tm.render(path, camera=camera, width=120, height=60, material=tm.Material.bands("#404040")).color
     assert dark[..., :3].astype(int).sum() < color[..., :3].astype(int).sum()
+
+
+def test_the_whole_file_obj_check_agrees_with_the_line_scan(tmp_path):
+    from toonmesh import _file_checks
+
+    texts = [
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf -3//-1 -2//1 -1//1\n",
+        "# a comment\nmtllib m.mtl\nv 0 0 0 1 0 0\nv 1 0 0 0 1 0\r\nv 0 1 0 0 0 1\nvt 0 0\nvt 1 0\nvn 0 0 1\n"
+        "usemtl a\nf 1/1/1 2/2/1 3/1/1\nusemtl b\nf 3/2/1 2/1/1 1/1/1\nusemtl a\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\n  v 1 1 0\nf 1 2 3 4\n",  # indented: the line scan reads it
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # a comment after it\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2 3\n",  # corners written two ways: refused by the line scan
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n",
+    ]
+    paths = [str(p) for p in (tmp_path / f"{i}.obj" for i in range(len(texts)))]
+    for path, text in zip(paths, texts):
+        with open(path, "w") as f:
+            f.write(text)
+    data_dir = os.path.join(os.path.dirname(__file__), "data", "meshes")
+    paths += [os.path.join(data_dir, name) for name in sorted(os.listdir(data_dir)) if name.endswith(".obj")]
+    fast = 0
+    for path in paths:
+        with open(path, "rb") as f:
+            data = f.read()
+        try:
+            expected = _file_checks._check_obj_by_line(path, data)
+        except ValueError as e:
+            expected = str(e)
+            assert _file_checks._obj_counts_at_once(data) is None
+        at_once = _file_checks._obj_counts_at_once(data)
+        fast += at_once is not None
+        assert at_once in (None, expected)
+    assert fast >= len(paths) - 4  # all but the files the line scan must read (or refuse)

@@ -211,3 +211,65 @@ def test_svg_widths_follow_depth():
     assert len(strokes) == len(res.lines)
     for (_, widths), w in zip(strokes, res.line_widths):
         assert abs(widths.max() - w.max()) < 0.02
+
+
+def _greedy_every_stroke(lines):
+    """The plotter rule tried against every undrawn stroke at each step (n squared): the
+    reference order."""
+    starts = np.array([l[0] for l in lines])
+    ends = np.array([l[-1] for l in lines])
+    todo = np.ones(len(lines), bool)
+    pen, out = np.zeros(2), []
+    for _ in lines:
+        ds = np.where(todo, np.hypot(*(starts - pen).T), np.inf)
+        de = np.where(todo, np.hypot(*(ends - pen).T), np.inf)
+        i, j = int(np.argmin(ds)), int(np.argmin(de))
+        flip = bool(de[j] < ds[i])
+        k = j if flip else i
+        todo[k] = False
+        out.append((k, flip))
+        pen = starts[k] if flip else ends[k]
+    return out
+
+
+def _random_strokes(n, seed):
+    rng = np.random.default_rng(seed)
+    starts = rng.uniform(0, 1000, (n, 2))
+    return [np.stack([s, s + rng.normal(0, 10, 2)]) for s in starts]
+
+
+def test_plotter_order_travels_no_further_than_the_greedy_rule_and_scales():
+    small = _random_strokes(500, 1)
+    order = _strokes.plotter_order(small)
+    assert order == _greedy_every_stroke(small)
+    drawn = lambda lines, order: [lines[i][::-1] if flip else lines[i] for i, flip in order]  # noqa: E731
+    greedy = _strokes.pen_travel(drawn(small, _greedy_every_stroke(small)))
+    assert _strokes.pen_travel(drawn(small, order)) <= greedy < 0.2 * _strokes.pen_travel(small)
+    # many strokes: each drawn once, in the order's time (its speed is the benchmark's)
+    many = _random_strokes(20_000, 2)
+    order = _strokes.plotter_order(many)
+    assert sorted(i for i, _ in order) == list(range(len(many)))
+    assert _strokes.pen_travel(drawn(many, order)) < 0.05 * _strokes.pen_travel(many)
+    assert _strokes.plotter_order([]) == []
+
+
+def test_bad_strokes_are_refused_naming_the_argument():
+    from toonmesh import _core
+
+    line = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]])
+    with pytest.raises(ValueError, match=r"lines\[0\]: expected shape \(K, 2\)"):
+        _strokes.drawn([np.zeros((3, 3))], [None], 0.0, 0.25)
+    with pytest.raises(ValueError, match=r"lines\[0\]: point 1 is not finite"):
+        _strokes.drawn([np.array([[0.0, 0.0], [np.nan, 1.0]])], [None], 0.0, 0.25)
+    with pytest.raises(ValueError, match=r"widths\[0\]: expected one width per point \(3\), got 2"):
+        _strokes.kept(line, 0.25, np.ones(2, np.float32))
+    with pytest.raises(ValueError, match="simplify"):
+        _strokes.simplified(line, -1.0)
+    with pytest.raises(ValueError, match="smooth"):
+        _strokes.smoothed(line, float("nan"))
+    with pytest.raises(ValueError, match="ends: expected as many as starts"):
+        _core._plotter_order(np.zeros((2, 2)), np.zeros((1, 2)))
+    with pytest.raises(ValueError, match=r"groups\[0\].widths: filled outlines need one widths array per line"):
+        _core._svg_document(10, 10, [("ridge", "#000000", None, None, [line], None)])
+    with pytest.raises(TypeError, match=r"groups\[0\].color"):
+        _core._svg_document(10, 10, [("ridge", 7, 1.0, None, [line], None)])

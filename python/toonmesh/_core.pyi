@@ -48,6 +48,8 @@ __all__ = [
     "_feature_edges",
     "_normal_mode",
     "_paper_edges",
+    "_pen_strokes",
+    "_plotter_order",
     "_restore",
     "_RenderKeywords",
     "_segments",
@@ -58,6 +60,7 @@ __all__ = [
     "_silhouette",
     "_smooth",
     "_sobel",
+    "_svg_document",
     "encode_png_rgba",
     "get_num_threads",
     "gpu_info",
@@ -472,6 +475,11 @@ def _curvature(vertices: Any, faces: Any, smoothing: float) -> Tuple[
     npt.NDArray[np.float64],
 ]: ...
 def _segments(vertices: Any, edges: Any) -> Any: ...
+def _pen_strokes(
+    lines: List[Any], widths: List[Optional[Any]], smooth: float, simplify: float
+) -> List[Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]]: ...
+def _plotter_order(starts: Any, ends: Any) -> Tuple[npt.NDArray[np.int64], npt.NDArray[np.bool_]]: ...
+def _svg_document(width: int, height: int, groups: List[Tuple[Any, ...]]) -> str: ...
 def _sobel(image: Any, output: str, convention: str) -> Any: ...
 def _paper_edges(name: str, buffer: Any, threshold: float) -> Tuple[Any, npt.NDArray[np.bool_]]: ...
 

@@ -12,6 +12,7 @@ import json
 import math
 import os
 import struct
+import warnings
 from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
@@ -34,6 +35,13 @@ def check_obj(path: str) -> Dict[str, Any]:
     line."""
     with open(path, "rb") as f:
         data = f.read()
+    counts = _obj_counts_at_once(data)
+    return counts if counts is not None else _check_obj_by_line(path, data)
+
+
+def _check_obj_by_line(path: str, data: bytes) -> Dict[str, Any]:
+    """:func:`check_obj` one line at a time: the rule itself, and the messages that name where
+    a file breaks it."""
     counts = {b"v": 0, b"vt": 0, b"vn": 0}
     faces = 0
     materials = set()  # the names 'usemtl' switches to
@@ -91,6 +99,112 @@ def check_obj(path: str) -> Dict[str, Any]:
 
 
 _NAMES = {b"v": "vertices", b"vt": "texture coordinates", b"vn": "normals"}
+
+#: The bytes that ``bytes.split()`` splits at.
+_BLANK = np.zeros(256, bool)
+_BLANK[list(b" \t\n\r\x0b\x0c")] = True
+
+
+def _obj_counts_at_once(data: bytes) -> Optional[Dict[str, Any]]:
+    """:func:`check_obj`'s counts of a file that keeps its rules, found with whole-file array
+    operations instead of a Python loop over lines; None where the file breaks a rule or is
+    written in a way this does not follow (a comment after a statement, faces whose corners are
+    written in different ways), so that the line-by-line scan decides and names the line."""
+    raw = np.frombuffer(data, np.uint8)
+    if not len(raw):
+        return None
+    blank = _BLANK[raw]
+    newlines = np.flatnonzero(raw == ord("\n"))
+    line_of = lambda at: np.searchsorted(newlines, at)  # noqa: E731
+    # a line's bytes, its newline first (blank), for picking whole lines
+    line_bytes = np.diff(np.concatenate([[0], newlines, [len(raw)]]))
+    n_lines = len(newlines) + 1
+    # the words (as data.split() finds them), the line of each, and each line's first word
+    word_starts = np.flatnonzero(~blank & np.concatenate([[True], blank[:-1]]))
+    per_line = np.bincount(line_of(word_starts), minlength=n_lines)
+    first_word = np.concatenate([[0], np.cumsum(per_line)[:-1]])
+    spoken = np.flatnonzero(per_line)
+    head = word_starts[first_word[spoken]]
+    padded = np.concatenate([raw, np.full(3, ord(" "), np.uint8)])
+    c0, c1, c2 = padded[head], padded[head + 1], padded[head + 2]
+    hashes = np.flatnonzero(raw == ord("#"))
+    if len(hashes) and np.any(c0[np.searchsorted(spoken, line_of(hashes))] != ord("#")):
+        return None  # a comment after a statement: the line scan cuts it off
+    one_letter = lambda c: (c0 == ord(c)) & _BLANK[c1]  # noqa: E731
+    two_letters = lambda c: (c0 == ord(c[0])) & (c1 == ord(c[1])) & _BLANK[c2]  # noqa: E731
+    listed = {b"v": spoken[one_letter("v")], b"vt": spoken[two_letters("vt")], b"vn": spoken[two_letters("vn")]}
+    faces = spoken[one_letter("f")]
+    # vertices: 3 finite coordinates each (any more, a colour, are numbers too)
+    v = listed[b"v"]
+    numbers = per_line[v] - 1
+    if np.any(numbers < 3):
+        return None
+    xyz = _numbers_of_lines(raw, line_bytes, v, word_starts[first_word[v]], float, numbers)
+    if xyz is None or not np.all(np.isfinite(xyz[(np.cumsum(numbers) - numbers)[:, None] + np.arange(3)])):
+        return None
+    # faces: 3 or more corners, all written one way (v, v/vt, v//vn or v/vt/vn)
+    corners = per_line[faces] - 1
+    if np.any(corners < 3):
+        return None
+    if len(faces):
+        on_face = np.zeros(n_lines, bool)
+        on_face[faces] = True
+        at_slash = np.flatnonzero(raw == ord("/"))
+        at_slash = at_slash[on_face[line_of(at_slash)]]
+        per_word = np.bincount(np.searchsorted(word_starts, at_slash, side="right") - 1, minlength=len(word_starts))
+        corner_words = (np.repeat(first_word[faces] + 1 - np.concatenate([[0], np.cumsum(corners)[:-1]]), corners)
+                        + np.arange(corners.sum()))
+        slashes = per_word[corner_words]
+        doubled = int(np.count_nonzero(np.diff(at_slash) == 1))  # "v//vn": no texture coordinate
+        if np.any(slashes != slashes[0]) or slashes[0] > 2 or doubled not in (0, len(slashes)):
+            return None
+        columns = [b"v", b"vn"] if doubled else [b"v", b"vt", b"vn"][: int(slashes[0]) + 1]
+        index = _numbers_of_lines(raw, line_bytes, faces, word_starts[first_word[faces]], np.int64,
+                                  corners * len(columns), at_slash)
+        if index is None:
+            return None
+        index = index.reshape(-1, len(columns))
+        face_of = np.repeat(faces, corners)
+        for column, name in enumerate(columns):
+            so_far = np.zeros(n_lines, np.int64)
+            so_far[listed[name]] = 1
+            before = np.cumsum(so_far)[face_of]  # negative indices count back from these
+            i = index[:, column]
+            if np.any(i == 0) or np.any(i < -before) or i.max() > len(listed[name]):
+                return None
+    # materials and libraries: a few lines, read as the line scan reads them
+    bounds = np.concatenate([[-1], newlines, [len(data)]])
+    materials = set()
+    libraries = 0
+    for number in spoken[(c0 == ord("u")) | (c0 == ord("m"))]:
+        words = data[bounds[number] + 1 : bounds[number + 1]].split()
+        if words[0] == b"usemtl":
+            materials.add(b" ".join(words[1:]))
+        elif words[0] == b"mtllib":
+            libraries += 1
+    return {"vertices": len(v), "texcoords": len(listed[b"vt"]), "normals": len(listed[b"vn"]),
+            "faces": len(faces), "materials": len(materials), "libraries": libraries}
+
+
+def _numbers_of_lines(raw: np.ndarray, line_bytes: np.ndarray, lines: np.ndarray, keywords: np.ndarray, dtype: Any,
+                      expected: np.ndarray, also_blank: Optional[np.ndarray] = None) -> Optional[np.ndarray]:
+    """The numbers written on ``lines`` (of ``line_bytes`` bytes each) after their one-letter
+    keywords (at ``keywords``), one after another, parsed by NumPy in one call (``also_blank``
+    marks more separators: a face's slashes); None unless every word parses, and there are as
+    many as ``expected`` per line."""
+    text = raw.copy()
+    text[keywords] = ord(" ")
+    if also_blank is not None:
+        text[also_blank] = ord(" ")
+    chosen = np.zeros(len(line_bytes), bool)
+    chosen[lines] = True
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # NumPy warns (later raises) where a word is not a number
+            out = np.fromstring(text[np.repeat(chosen, line_bytes)].tobytes(), dtype=dtype, sep=" ")
+    except (ValueError, DeprecationWarning):
+        return None
+    return out if len(out) == int(expected.sum()) else None
 
 
 def _obj_where(path: str, number: int, lines: List[bytes], problem: str) -> str:
@@ -176,20 +290,17 @@ def strip_triangles(strips: Any) -> np.ndarray:
     of strips). Triangle k of a strip is (s[k], s[k+1], s[k+2]) for even k and (s[k+1], s[k],
     s[k+2]) for odd k, so that all face the same way; triangles with a repeated corner (the
     joins between strips) are dropped. Returns (M, 3) int64."""
-    seqs: List[np.ndarray] = []
-    for row in strips if isinstance(strips, (list, tuple)) or strips.dtype == object or strips.ndim == 2 else [strips]:
-        row = np.asarray(row, dtype=np.int64).ravel()
-        cuts = np.flatnonzero(row < 0)
-        seqs.extend(np.split(row, cuts))
-    tris: List[np.ndarray] = []
-    for s in seqs:
-        s = s[s >= 0]
-        if len(s) < 3:
-            continue
-        t = np.stack([s[:-2], s[1:-1], s[2:]], axis=1)
-        t[1::2, 0], t[1::2, 1] = s[2:-1:2], s[1:-2:2]  # odd triangles: first two corners swapped
-        tris.append(t)
-    out = np.concatenate(tris) if tris else np.zeros((0, 3), dtype=np.int64)
+    # one sequence, each row ended by a restart
+    if isinstance(strips, np.ndarray) and strips.dtype != object and strips.ndim == 2:
+        s = np.hstack([strips.astype(np.int64), np.full((len(strips), 1), -1)]).ravel()
+    else:
+        rows = strips if isinstance(strips, (list, tuple)) or strips.dtype == object else [strips]
+        ends = [np.append(np.asarray(row, dtype=np.int64).ravel(), -1) for row in rows]
+        s = np.concatenate(ends) if ends else np.zeros(0, np.int64)
+    k = np.flatnonzero((s[:-2] >= 0) & (s[1:-1] >= 0) & (s[2:] >= 0))  # first corners of whole triangles
+    restarts = np.where(s < 0, np.arange(len(s)), -1)
+    odd = (k - np.maximum.accumulate(restarts)[k]) % 2 == 0  # even distance from the restart: odd in its strip
+    out = np.stack([np.where(odd, s[k + 1], s[k]), np.where(odd, s[k], s[k + 1]), s[k + 2]], axis=1)
     keep = (out[:, 0] != out[:, 1]) & (out[:, 1] != out[:, 2]) & (out[:, 0] != out[:, 2])
     return out[keep]
 

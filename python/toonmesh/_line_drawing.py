@@ -12,12 +12,15 @@ from typing import Any, Dict, List, Optional
 
 import numpy as np
 
-from toonmesh import edges
+from toonmesh import _strokes, edges
 from toonmesh._core import Outlines
 from toonmesh._render import render
 
 #: Depth offset (in pixel footprints) that lets every line through: no hidden-line removal.
 _SHOW_ALL = 1e30
+#: Hidden lines in the SVG: grey, dashes of 4 pixels with gaps of 3.
+_HIDDEN_COLOR = "#9a9a9a"
+_HIDDEN_DASHES = (4.0, 3.0)
 
 
 def view_lines(
@@ -63,18 +66,11 @@ def write_svg(path: str, lines: Dict[str, Any], **svg_options: Any) -> None:
     """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg` with
     ``svg_options``, its defaults where left out); with hidden lines, those go underneath,
     dashed and grey."""
-    svg = lines["seen"].svg(**svg_options)
-    everything = lines["everything"]
+    seen, everything = lines["seen"], lines["everything"]
+    groups = seen.svg_groups(**svg_options)
     if everything is not None:
-        polylines = "\n".join(
-            '<polyline points="' + " ".join(f"{x:.2f},{y:.2f}" for x, y in p) + '"/>' for p in everything.lines
-        )
-        under = (
-            '<g id="hidden" fill="none" stroke="#9a9a9a" stroke-width="1" stroke-dasharray="4 3">\n'
-            f"{polylines}\n</g>\n"
-        )
-        head_end = svg.index(">", svg.index("<svg")) + 1
-        svg = svg[:head_end] + "\n" + under + svg[head_end + 1 :]
+        groups.insert(0, ("hidden", _HIDDEN_COLOR, 1.0, _HIDDEN_DASHES, [(p, None) for p in everything.lines]))
+    svg = _strokes.svg_document(seen.width, seen.height, groups)
     with open(path, "w", encoding="utf-8") as f:
         f.write(svg)
 

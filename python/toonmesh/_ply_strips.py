@@ -23,13 +23,13 @@ def read(path: str) -> Tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
         f.seek(header)
         data = f.read()
     order = {"binary_little_endian": "<", "binary_big_endian": ">"}.get(fmt)
-    tokens = iter(data.split()) if order is None else None
+    words = data.split() if order is None else []
     pos = 0
     values: Dict[str, Dict[str, Any]] = {}
     try:
         for name, count, props in elements:
             if order is None:
-                values[name] = _ascii_element(tokens, count, props)
+                values[name], pos = _ascii_element(words, pos, count, props)
             else:
                 values[name], pos = _binary_element(data, pos, order, count, props)
     except (StopIteration, ValueError, IndexError):
@@ -52,16 +52,33 @@ def read(path: str) -> Tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
     return V, F, colors
 
 
-def _ascii_element(tokens: Any, count: int, props: List[Tuple[str, ...]]) -> Dict[str, Any]:
+def _ascii_element(words: List[bytes], pos: int, count: int,
+                   props: List[Tuple[str, ...]]) -> Tuple[Dict[str, Any], int]:
+    """The element's values from ``words[pos:]``, and where the next element starts: numbers
+    converted by NumPy a block at a time, as ``float()`` and ``int()`` read them (list counts
+    and items are integers)."""
+    if all(p[0] != "list" for p in props):  # fixed rows: one block
+        block = words[pos : pos + count * len(props)]
+        if len(block) < count * len(props):
+            raise ValueError("cut off")
+        rows = np.array(block or [b"0"]).astype(np.float64)[: len(block)].reshape(count, len(props))
+        return {p[-1]: rows[:, i].tolist() for i, p in enumerate(props)}, pos + len(block)
     out: Dict[str, List[Any]] = {p[-1]: [] for p in props}
     for _ in range(count):
         for p in props:
+            if pos >= len(words):
+                raise ValueError("cut off")
             if p[0] == "list":
-                n = int(next(tokens))
-                out[p[-1]].append([int(next(tokens)) for _ in range(n)])
+                n = max(int(words[pos]), 0)
+                items = words[pos + 1 : pos + 1 + n]
+                if len(items) < n:
+                    raise ValueError("cut off")
+                out[p[-1]].append(np.array(items or [b"0"]).astype(np.int64)[:n])
+                pos += 1 + n
             else:
-                out[p[-1]].append(float(next(tokens)))
-    return out
+                out[p[-1]].append(float(words[pos]))
+                pos += 1
+    return out, pos
 
 
 def _binary_element(data: bytes, pos: int, order: str, count: int,
@@ -70,6 +87,16 @@ def _binary_element(data: bytes, pos: int, order: str, count: int,
         dtype = np.dtype([(p[-1], order + PLY_TYPES[p[0]]) for p in props])
         rows = np.frombuffer(data, dtype=dtype, count=count, offset=pos)
         return {p[-1]: rows[p[-1]] for p in props}, pos + dtype.itemsize * count
+    if len(props) == 1 and count:  # one list a row (strips): one array where every row is as long
+        n_type = np.dtype(order + _PLY_TYPES[props[0][1]])
+        item = np.dtype(order + _PLY_TYPES[props[0][2]])
+        if pos + n_type.itemsize <= len(data):
+            n = int(np.frombuffer(data, dtype=n_type, count=1, offset=pos)[0])
+            row = np.dtype([("n", n_type), ("items", item, (max(n, 0),))])
+            if n >= 0 and pos + row.itemsize * count <= len(data):
+                rows = np.frombuffer(data, dtype=row, count=count, offset=pos)
+                if np.all(rows["n"] == n):
+                    return {props[0][-1]: rows["items"].astype(np.int64)}, pos + row.itemsize * count
     out: Dict[str, List[Any]] = {p[-1]: [] for p in props}
     for _ in range(count):
         for p in props:

@@ -106,12 +106,9 @@ class RenderResult:
     ) -> List[Tuple[np.ndarray, np.ndarray, str]]:
         if self.lines is None or self.line_kinds is None or self.line_widths is None:
             raise ValueError("lines: this render did not ask for the 'lines' output (outputs=(..., 'lines'))")
-        out = []
-        for points, widths, kind in zip(self.lines, self.line_widths, self.line_kinds):
-            points = _strokes.smoothed(points, smooth)
-            keep = _strokes.kept(points, simplify, widths if by_width(kind) else None)
-            out.append((points[keep], widths[keep], kind))
-        return out
+        by_widths = [w if by_width(k) else None for w, k in zip(self.line_widths, self.line_kinds)]
+        drawn = _strokes.drawn(self.lines, by_widths, smooth, simplify)
+        return [(p, w[keep], k) for (p, keep), w, k in zip(drawn, self.line_widths, self.line_kinds)]
 
     def svg(
         self,
@@ -142,6 +139,22 @@ class RenderResult:
                 polylines at the kind's width for the others), "kind" (polylines at each kind's
                 width, centre lines a pen plotter can draw) or "point" (filled outlines always).
         """
+        return _strokes.svg_document(
+            self.width, self.height, self.svg_groups(order=order, simplify=simplify, smooth=smooth, widths=widths)
+        )
+
+    def svg_groups(
+        self,
+        *,
+        order: str = "drawing",
+        simplify: float = _strokes.SIMPLIFY,
+        smooth: float = _strokes.SMOOTH,
+        widths: str = "auto",
+    ) -> List["_strokes.SvgGroup"]:
+        """The groups of :meth:`svg`'s document (same arguments), one per kind in name order:
+        ``(kind, colour, width or None for filled outlines, dashes, [(points, widths), ...])``,
+        for a caller that adds groups of its own (the command line's hidden lines) before
+        writing the document with the same writer."""
         _strokes.check(order, simplify, smooth, widths)
         styles = self.outlines.styles if self.outlines is not None else {}
         if self.line_kinds is None or self.line_widths is None:
@@ -151,33 +164,12 @@ class RenderResult:
         uneven = {k for w, k in zip(self.line_widths, self.line_kinds) if len(w) and np.ptp(w) > 0}
         filled = lambda kind: widths == "point" or (widths == "auto" and kind in uneven)  # noqa: E731
         strokes = self._drawn_strokes(smooth, simplify, by_width=filled)
-        out = [
-            '<?xml version="1.0" encoding="UTF-8"?>',
-            f'<svg xmlns="http://www.w3.org/2000/svg" width="{self.width}" height="{self.height}" '
-            f'viewBox="0 0 {self.width} {self.height}">',
-        ]
+        groups: List[_strokes.SvgGroup] = []
         for kind in sorted({k for _, _, k in strokes}):
             style = styles.get(kind) or LineStyle()
-            color = "#" + "".join(f"{round(c * 255):02x}" for c in style.color)
-            if filled(kind):
-                out.append(f'<g id="{kind}" fill="{color}" fill-rule="nonzero" stroke="none">')
-            else:
-                out.append(
-                    f'<g id="{kind}" fill="none" stroke="{color}" stroke-width="{style.width:g}" '
-                    'stroke-linecap="round" stroke-linejoin="round">'
-                )
-            group = [(p, w) for p, w, k in strokes if k == kind]
-            if order == "plotter":
-                flips = _strokes.plotter_order([p for p, _ in group])
-                group = [(group[i][0][::-1], group[i][1][::-1]) if flip else group[i] for i, flip in flips]
-            for points, w in group:
-                if filled(kind):
-                    out.append(f'<path d="{_strokes.outline_path(points, w)}"/>')
-                else:
-                    out.append('<polyline points="' + " ".join(f"{x:.2f},{y:.2f}" for x, y in points) + '"/>')
-            out.append("</g>")
-        out.append("</svg>")
-        return "\n".join(out) + "\n"
+            group = _strokes.in_order([(p, w) for p, w, k in strokes if k == kind], order)
+            groups.append((kind, style.color, None if filled(kind) else style.width, None, group))
+        return groups
 
     def save_svg(
         self,

@@ -11,6 +11,7 @@ mod runtime;
 mod settings;
 mod shapes;
 mod smooth;
+mod strokes;
 
 use pyo3::prelude::*;
 
@@ -20,6 +21,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     runtime::register(m)?;
     shapes::register(m)?;
     smooth::register(m)?;
+    strokes::register(m)?;
     settings::register(m)?;
     render::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -479,6 +479,30 @@ def _stroke_smoothing(size: int, repeat: int) -> List[Sequence[Any]]:
     return rows
 
 
+def _pen_strokes(size: int, n_random: int, repeat: int) -> List[Sequence[Any]]:
+    """What the SVG and the pen plotter's order cost: the bunny's strokes (default outlines with
+    suggestive contours) as SVG, drawn in order, for a plotter and as filled outlines, and the
+    plotter's order of ``n_random`` random short strokes (greedy nearest neighbour, about
+    n log n)."""
+    import toonmesh as tm
+    from toonmesh import _strokes
+    from toonmesh.data import bunny
+
+    V, F = bunny()
+    res = tm.render(V, F, outlines=tm.Outlines("mesh", suggestive=True), width=size, height=size, outputs=("lines",))
+    label = f"the bunny at {size}x{size}: {len(res.lines or []):,} strokes"
+    rows: List[Sequence[Any]] = []
+    for call, kw in (("svg()", {}), ("svg(order='plotter')", dict(order="plotter")),
+                     ("svg(widths='point')", dict(widths="point")), ("svg(smooth=2)", dict(smooth=2.0))):
+        rows.append((label, call, ms(median_time(lambda: res.svg(**kw), repeat=repeat))))
+    rng = np.random.default_rng(0)
+    starts = rng.uniform(0, 1000, (n_random, 2))
+    lines = [np.stack([s, s + rng.normal(0, 10, 2)]) for s in starts]
+    t = median_time(lambda: _strokes.plotter_order(lines), repeat=repeat)
+    rows.append((f"{n_random:,} random strokes in 1000x1000 px", "plotter_order", ms(t)))
+    return rows
+
+
 def _near(mask: np.ndarray) -> np.ndarray:
     """Pixels within one pixel (3x3) of a set pixel."""
     p = np.pad(mask, 1)
@@ -597,6 +621,8 @@ def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) ->
         title=f"Stroke smoothing (RenderResult.strokes(smooth=...)): the raw bunny's silhouette strokes at "
               f"{line_size}x{line_size}, simplified to a quarter pixel",
     ))
+    print(table(["strokes", "call", "time"], _pen_strokes(256 if quick else 1024, 2_000 if quick else 20_000, repeat),
+                title="Pen strokes: the SVG's text and the plotter's order"))
     sizes = (128, 256) if quick else (256, 512, 1024, 2048)
     print(table(
         ["size", "outlines", "frame", "cost over the same frame without", "precision", "recall"],

@@ -9,6 +9,7 @@ pub mod edges_reference;
 pub mod ink;
 pub mod lines;
 pub mod mesh_lines;
+pub mod pen;
 pub mod projection;
 pub mod settings;
 pub mod stroke_width;

@@ -1,0 +1,207 @@
+//! Python bindings for `crate::render::effects::outlines::pen`: the strokes of a line drawing as
+//! a pen draws them, called by `toonmesh/_strokes.py`.
+
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+use pyo3::types::{PyList, PyTuple};
+use rayon::prelude::*;
+
+use super::args;
+use super::convert::{native_order, untyped, vec_to_numpy};
+use super::errors::to_py;
+use super::runtime::detached;
+use crate::error::{Error, Result};
+use crate::render::effects::outlines::pen::svg::{self, Group, Ink, Stroke};
+use crate::render::effects::outlines::pen::{self, plotter_order as order};
+
+/// (K, 2) finite pixel coordinates.
+fn point_array(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 2]>> {
+    let obj = &native_order(obj)?;
+    let a = untyped(arg, obj)?;
+    if a.ndim() != 2 || a.shape()[1] != 2 {
+        return Err(Error::invalid(arg, format!("expected shape (K, 2), got {:?}", a.shape())));
+    }
+    let x = obj.extract::<PyReadonlyArray2<'_, f64>>().map_err(|_| {
+        Error::wrong_type(arg, format!("dtype must be float64, got {}", super::convert::dtype_name(a)))
+    })?;
+    let p: Vec<[f64; 2]> = x.as_array().rows().into_iter().map(|r| [r[0], r[1]]).collect();
+    if let Some(i) = p.iter().position(|q| !(q[0].is_finite() && q[1].is_finite())) {
+        return Err(Error::invalid(arg, format!("point {i} is not finite: {:?}", p[i])));
+    }
+    Ok(p)
+}
+
+/// (K,) finite widths in pixels, float32 or float64.
+fn width_array(arg: &str, obj: &Bound<'_, PyAny>, n: usize) -> Result<Vec<f64>> {
+    let obj = &native_order(obj)?;
+    let a = untyped(arg, obj)?;
+    let w: Vec<f64> = if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, f32>>() {
+        x.as_array().iter().map(|&v| v as f64).collect()
+    } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, f64>>() {
+        x.as_array().to_vec()
+    } else {
+        return Err(Error::wrong_type(
+            arg,
+            format!(
+                "expected a 1-D float32 or float64 array, got dtype {} and shape {:?}",
+                super::convert::dtype_name(a),
+                a.shape()
+            ),
+        ));
+    };
+    if w.len() != n {
+        return Err(Error::invalid(arg, format!("expected one width per point ({n}), got {}", w.len())));
+    }
+    if w.iter().any(|v| !v.is_finite()) {
+        return Err(Error::invalid(arg, "widths must be finite"));
+    }
+    Ok(w)
+}
+
+fn items<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Vec<Bound<'py, PyAny>>> {
+    args::refuse_text(arg, obj, "a list")?;
+    obj.try_iter()
+        .map_err(|_| Error::wrong_type(arg, format!("expected a list, got {}", args::type_name(obj))))?
+        .map(|item| item.map_err(|e| Error::invalid(arg, e.to_string())))
+        .collect()
+}
+
+fn rows2_to_numpy<'py>(py: Python<'py>, p: Vec<[f64; 2]>) -> Bound<'py, PyArray2<f64>> {
+    let n = p.len();
+    Array2::from_shape_vec((n, 2), p.into_iter().flatten().collect()).expect("length is 2n").into_pyarray(py)
+}
+
+/// Each of `lines` as the SVG draws it (`pen::drawn`): the points drawn and which of the line's
+/// points they are. `widths[i]` None simplifies line i by its points alone.
+#[pyfunction]
+fn _pen_strokes<'py>(
+    py: Python<'py>,
+    lines: &Bound<'py, PyAny>,
+    widths: &Bound<'py, PyAny>,
+    smooth: &Bound<'py, PyAny>,
+    simplify: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyList>> {
+    let read = || -> Result<_> {
+        let (line_items, width_items) = (items("lines", lines)?, items("widths", widths)?);
+        if line_items.len() != width_items.len() {
+            return Err(Error::invalid(
+                "widths",
+                format!("expected one entry per line ({}), got {}", line_items.len(), width_items.len()),
+            ));
+        }
+        let strokes = line_items
+            .iter()
+            .zip(&width_items)
+            .enumerate()
+            .map(|(i, (l, w))| {
+                let p = point_array(&format!("lines[{i}]"), l)?;
+                let w =
+                    if w.is_none() { None } else { Some(width_array(&format!("widths[{i}]"), w, p.len())?) };
+                Ok((p, w))
+            })
+            .collect::<Result<Vec<_>>>()?;
+        Ok((strokes, args::number("smooth", smooth)?, args::number("simplify", simplify)?))
+    };
+    let (strokes, smooth, simplify) = read().map_err(to_py)?;
+    let drawn = detached(py, || {
+        strokes
+            .par_iter()
+            .map(|(p, w)| pen::drawn(p, w.as_deref().unwrap_or(&[]), smooth, simplify, w.is_some()))
+            .collect::<Result<Vec<_>>>()
+    })?;
+    let out = drawn.into_iter().map(|(p, kept)| {
+        let kept: Vec<i64> = kept.into_iter().map(|i| i as i64).collect();
+        PyTuple::new(py, [rows2_to_numpy(py, p).into_any(), vec_to_numpy(py, kept).into_any()])
+    });
+    PyList::new(py, out.collect::<PyResult<Vec<_>>>()?)
+}
+
+/// `pen::plotter_order::plotter_order` of the strokes with first points `starts` and last
+/// points `ends` ((N, 2) each): the strokes' indices in drawing order, and whether each is drawn
+/// from its last point.
+#[pyfunction]
+fn _plotter_order<'py>(
+    py: Python<'py>,
+    starts: &Bound<'py, PyAny>,
+    ends: &Bound<'py, PyAny>,
+) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<bool>>)> {
+    let (starts, ends) =
+        (point_array("starts", starts).map_err(to_py)?, point_array("ends", ends).map_err(to_py)?);
+    if starts.len() != ends.len() {
+        let reason = format!("expected as many as starts ({}), got {}", starts.len(), ends.len());
+        return Err(to_py(Error::invalid("ends", reason)));
+    }
+    let drawn = detached(py, || Ok(order::plotter_order(&starts, &ends)))?;
+    let (index, reversed): (Vec<i64>, Vec<bool>) = drawn.into_iter().map(|(i, r)| (i as i64, r)).unzip();
+    Ok((vec_to_numpy(py, index), vec_to_numpy(py, reversed)))
+}
+
+/// One group of `svg_document`: (id, colour, width in pixels or None for filled outlines,
+/// (dash, gap) or None, lines, widths per line or None).
+fn group(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Group> {
+    let fields = items(arg, obj)?;
+    let [id, color, width, dashes, lines, line_widths] = fields.as_slice() else {
+        return Err(Error::invalid(arg, format!("expected 6 fields, got {}", fields.len())));
+    };
+    let field = |name: &str| format!("{arg}.{name}");
+    let ink = if width.is_none() {
+        Ink::Filled
+    } else {
+        let width = args::number(&field("width"), width)?;
+        let dashes = args::optional(&field("dashes"), Some(dashes), args::numbers)?
+            .map(|d| <[f64; 2]>::try_from(d.as_slice()))
+            .transpose()
+            .map_err(|_| Error::invalid(field("dashes"), "expected (dash, gap)"))?;
+        Ink::Lines { width, dashes }
+    };
+    let lines = items(&field("lines"), lines)?;
+    let line_widths = if line_widths.is_none() { None } else { Some(items(&field("widths"), line_widths)?) };
+    if matches!(ink, Ink::Filled) && line_widths.as_ref().is_none_or(|w| w.len() != lines.len()) {
+        return Err(Error::invalid(field("widths"), "filled outlines need one widths array per line"));
+    }
+    let strokes = lines
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            let points = point_array(&format!("{}[{i}]", field("lines")), l)?;
+            let widths = match &line_widths {
+                Some(w) => width_array(&format!("{}[{i}]", field("widths")), &w[i], points.len())?,
+                None => Vec::new(),
+            };
+            Ok(Stroke { points, widths })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Group { id: args::text(&field("id"), id)?, color: args::rgb(&field("color"), color)?, ink, strokes })
+}
+
+/// `pen::svg::document`: the SVG text of a `width` x `height` drawing of `groups`.
+#[pyfunction]
+fn _svg_document(
+    py: Python<'_>,
+    width: &Bound<'_, PyAny>,
+    height: &Bound<'_, PyAny>,
+    groups: &Bound<'_, PyAny>,
+) -> PyResult<String> {
+    let read = || -> Result<_> {
+        let size = |name: &str, obj| {
+            let v = args::integer(name, obj)?;
+            u32::try_from(v).map_err(|_| Error::invalid(name, format!("must be in [0, 2**32), got {v}")))
+        };
+        let groups = items("groups", groups)?
+            .iter()
+            .enumerate()
+            .map(|(i, g)| group(&format!("groups[{i}]"), g))
+            .collect::<Result<Vec<_>>>()?;
+        Ok((size("width", width)?, size("height", height)?, groups))
+    };
+    let (width, height, groups) = read().map_err(to_py)?;
+    detached(py, || Ok(svg::document(width, height, &groups)))
+}
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(_pen_strokes, m)?)?;
+    m.add_function(wrap_pyfunction!(_plotter_order, m)?)?;
+    m.add_function(wrap_pyfunction!(_svg_document, m)?)?;
+    Ok(())
+}
