@@ -88,8 +88,8 @@ def _binary_element(data: bytes, pos: int, order: str, count: int,
         rows = np.frombuffer(data, dtype=dtype, count=count, offset=pos)
         return {p[-1]: rows[p[-1]] for p in props}, pos + dtype.itemsize * count
     if len(props) == 1 and count:  # one list a row (strips): one array where every row is as long
-        n_type = np.dtype(order + _PLY_TYPES[props[0][1]])
-        item = np.dtype(order + _PLY_TYPES[props[0][2]])
+        n_type = np.dtype(order + PLY_TYPES[props[0][1]])
+        item = np.dtype(order + PLY_TYPES[props[0][2]])
         if pos + n_type.itemsize <= len(data):
             n = int(np.frombuffer(data, dtype=n_type, count=1, offset=pos)[0])
             row = np.dtype([("n", n_type), ("items", item, (max(n, 0),))])
