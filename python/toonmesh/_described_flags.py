@@ -12,6 +12,8 @@ import argparse
 from contextlib import contextmanager
 from typing import Any, Dict, Iterator, Optional, Sequence, Tuple
 
+from toonmesh._described import described
+
 #: The namespace attribute where a subcommand keeps which flag sets which setting:
 #: ``{(class name, setting name): argparse.Action}``.
 FLAGS_BY_SETTING = "flags_by_setting"
@@ -27,17 +29,6 @@ class _CoreDefault:
 
 
 CORE_DEFAULT: Any = _CoreDefault()
-
-
-def described(cls: Any, name: str, constructor: str = "") -> Dict[str, Any]:
-    """The parameter ``name`` of ``cls``'s constructor ``constructor`` (``""``: ``cls(...)``) as
-    the core describes it: kind, choices, help and default."""
-    for made_by in cls.describe()["constructors"]:
-        if made_by["name"] == constructor:
-            for param in made_by["params"]:
-                if param["name"] == name:
-                    return dict(param)
-    raise LookupError(f"{cls.__name__}.{constructor or '__init__'} has no parameter {name!r}")
 
 
 def styles(cls: Any) -> Tuple[str, ...]:

@@ -28,9 +28,8 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 from toonmesh import _core, _strokes, smooth
 from toonmesh._core import __version__
-from toonmesh._described_flags import (
-    CORE_DEFAULT, add_described, described, errors_as_flags, sets, styles,
-)
+from toonmesh._described import described
+from toonmesh._described_flags import CORE_DEFAULT, add_described, errors_as_flags, sets, styles
 from toonmesh._files import (
     IMAGE_SUFFIXES, check_distinct_names, image_suffix, read_mesh, seam_normals, view_paths, write_mesh,
 )
