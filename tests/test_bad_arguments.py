@@ -1499,6 +1499,7 @@ RENDER_CASES: List[Case] = [
             Param("size", Integer(64, 8192, only=tuple(2**k for k in range(6, 14)), slow_above=2048), none=OK),
             Param("bias", Number(0.0, math.inf, open_hi=True), none=OK),
             Param("filter", Name(("none", "pcf")), none=OK),
+            Param("strength", Number(0.0, 1.0), none=OK),
         ],
     ),
     Case(

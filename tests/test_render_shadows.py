@@ -147,3 +147,37 @@ def test_settings_pickle_and_print():
     assert tm.Light.directional((1, -2, 0.5), shadows=True).shadows == tm.Shadows()
     assert tm.Light.directional((1, -2, 0.5)).shadows is None
     assert hash(light) == hash(pickle.loads(pickle.dumps(light)))
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_lighter_shadow_takes_its_share_of_the_light(backend):
+    """Shadows(strength=s) leaves 1 - s of the light in the map's shadows (the shadow output
+    is mix(1, visibility, s) of the full shadow's, the CPU rule) and none on surfaces facing
+    away; the colour there lies between the full shadow's and no shadow's."""
+    (V, F), direction, eye = SCENES["box on a plane"]
+    r = tm.Renderer(backend=backend)
+    mesh = r.add_mesh(V, F)
+
+    def frame(strength):
+        light = tm.Light.directional(direction, shadows=tm.Shadows(strength=strength))
+        return r.render(mesh, lights=[light], camera=tm.Camera.fit(eye), width=128, height=128,
+                        outputs=("color", "shadow"), material=tm.Material.lambert(), band_antialias=False)
+
+    full, half = frame(1.0), frame(0.5)
+    away = full.shadow == 0  # facing away, or fully shadowed by the map
+    mapped = (full.shadow > 0) & (full.shadow < 1)
+    expected = 1.0 - 0.5 * (1.0 - full.shadow)
+    in_map = (full.shadow < 1) & (half.shadow < 1)
+    np.testing.assert_allclose(half.shadow[mapped], expected[mapped], atol=1e-5)
+    # a fully shadowed pixel of the map keeps half the light; one facing away none
+    assert set(np.unique(half.shadow[away & in_map])) <= {0.0, 0.5}
+    assert (half.shadow[away] == 0.5).sum() > 100
+    none = r.render(mesh, lights=[tm.Light.directional(direction)], camera=tm.Camera.fit(eye), width=128,
+                    height=128, outputs=("color",), material=tm.Material.lambert(), band_antialias=False)
+    shade = half.shadow == 0.5
+    grey = lambda res: res.color[shade][:, :3].astype(int).sum(axis=1)  # noqa: E731
+    assert (grey(full) < grey(half)).all() and (grey(half) <= grey(none)).all()
+    assert grey(half).mean() < grey(none).mean() - 20  # equal only where the light grazes
+    assert tm.Shadows(strength=0.5) != tm.Shadows() and pickle.loads(pickle.dumps(tm.Shadows(strength=0.5))).strength == 0.5
+    with pytest.raises(ValueError, match="^strength: must be in \\[0, 1\\]"):
+        tm.Shadows(strength=1.5)

@@ -20,6 +20,11 @@ const FIELDS: &[Field] = &[
         Kind::Choice(ShadowFilter::NAMES),
         "how the map is read: 'pcf' (soft edges) or 'none'",
     ),
+    Field::new(
+        "strength",
+        Kind::Float { min: 0.0, max: 1.0 },
+        "the share of the light a shadow takes away: 1 a full shadow, 0.5 a half-tone one",
+    ),
 ];
 
 impl Described for Shadows {
@@ -28,7 +33,8 @@ impl Described for Shadows {
 
     const FIELDS: &'static [Field] = FIELDS;
 
-    const CONSTRUCTORS: &'static [Constructor] = &[Constructor::only(&["size", "bias", "filter"], 3)];
+    const CONSTRUCTORS: &'static [Constructor] =
+        &[Constructor::only(&["size", "bias", "filter", "strength"], 3)];
 
     fn start(_: &str) -> Self {
         Shadows::default()
@@ -39,6 +45,7 @@ impl Described for Shadows {
             "size" => Value::Int(self.size as i64),
             "bias" => self.bias.into(),
             "filter" => self.filter.name().into(),
+            "strength" => self.strength.into(),
             _ => Value::None,
         }
     }
@@ -59,6 +66,7 @@ impl Described for Shadows {
                 })?
             }
             "bias" => self.bias = v.float(field)?,
+            "strength" => self.strength = v.float(field)?,
             _ => self.filter = ShadowFilter::parse(field, &v.text(field)?)?,
         }
         Ok(())

@@ -4,5 +4,5 @@ struct ShadowsBlock {
     tolerance: f32,          // depth tolerance per unit of receiver slope
     max_slope: f32,          // the largest receiver slope biased
     normal_offset: f32,      // how far a receiver moves along its normal before the test
-    _pad0: f32,
+    strength: f32,           // the share of the light a shadow takes away
 };

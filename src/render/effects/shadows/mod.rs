@@ -35,7 +35,8 @@ crate::uniform_block! {
         pub max_slope: f32,
         /// How far (normalised view units) a receiver moves along its normal before the test.
         pub normal_offset: f32,
-        pub _pad0: f32,
+        /// The share of the light a shadow takes away (`Shadows::strength`).
+        pub strength: f32,
     }
 }
 
@@ -141,6 +142,7 @@ impl FrameEffect for ShadowsEffect {
                 b.max_slope = MAX_BIAS_SLOPE as f32;
                 // the map's side spans the sphere's diameter
                 b.normal_offset = (c.settings.normal_offset() * 2.0 * r) as f32;
+                b.strength = c.settings.strength as f32;
             }
         }
         b.bytes()

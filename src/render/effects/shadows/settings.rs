@@ -10,6 +10,8 @@ use crate::error::{Error, Result};
 pub const DEFAULT_SHADOW_SIZE: u32 = 2048;
 /// The depth bias when none is given, in shadow-map texels per unit of receiver slope.
 pub const DEFAULT_SHADOW_BIAS: f64 = 1.0;
+/// The share of its light a shadow takes away when none is given: all of it.
+pub const DEFAULT_SHADOW_STRENGTH: f64 = 1.0;
 /// Sides a shadow map may have.
 pub const SHADOW_SIZES: std::ops::RangeInclusive<u32> = 64..=8192;
 /// Receiver slopes (tangent of the angle to the light) beyond this get this slope's bias:
@@ -45,11 +47,26 @@ pub struct Shadows {
     /// Depth bias in texels per unit of receiver slope (>= 0).
     pub bias: f64,
     pub filter: ShadowFilter,
+    /// The share of the light a shadow takes away, in [0, 1]: 1 a full shadow, less a lighter
+    /// one (the shadowed side keeps 1 - strength of the light). Surfaces facing away from the
+    /// light get none of it whatever this is.
+    #[serde(default = "full_strength")]
+    pub strength: f64,
+}
+
+/// Settings saved before the strength existed load with full shadows.
+fn full_strength() -> f64 {
+    DEFAULT_SHADOW_STRENGTH
 }
 
 impl Default for Shadows {
     fn default() -> Self {
-        Shadows { size: DEFAULT_SHADOW_SIZE, bias: DEFAULT_SHADOW_BIAS, filter: ShadowFilter::Pcf }
+        Shadows {
+            size: DEFAULT_SHADOW_SIZE,
+            bias: DEFAULT_SHADOW_BIAS,
+            filter: ShadowFilter::Pcf,
+            strength: DEFAULT_SHADOW_STRENGTH,
+        }
     }
 }
 
@@ -71,6 +88,12 @@ impl Shadows {
             return Err(Error::invalid(
                 field(prefix, "bias"),
                 format!("must be finite and >= 0, got {}", self.bias),
+            ));
+        }
+        if !(0.0..=1.0).contains(&self.strength) {
+            return Err(Error::invalid(
+                field(prefix, "strength"),
+                format!("must be in [0, 1], got {}", self.strength),
             ));
         }
         Ok(())

@@ -12,7 +12,8 @@ override PCF: bool = true;
 @group(2) @binding(0) var shadow_map: texture_depth_2d;
 @group(2) @binding(1) var shadow_sampler: sampler_comparison;
 
-// Visibility in [0, 1] of light k at view-space point p with unit normal n, where d = N . L.
+// Visibility in [0, 1] of light k at view-space point p with unit normal n, where d = N . L: a
+// shadow in the map takes `strength` of the light away, a surface facing away all of it.
 fn light_visibility(k: u32, n: vec3<f32>, p: vec3<f32>, d: f32) -> f32 {
     if (k != 0u) {
         return 1.0;
@@ -20,6 +21,11 @@ fn light_visibility(k: u32, n: vec3<f32>, p: vec3<f32>, d: f32) -> f32 {
     if (d <= 0.0) {
         return 0.0;
     }
+    return mix(1.0, map_visibility(n, p, d), frame.shadows.strength);
+}
+
+// The share of the map's tests at p that see the light.
+fn map_visibility(n: vec3<f32>, p: vec3<f32>, d: f32) -> f32 {
     let q = frame.shadows.to_light * vec4<f32>(p + n * frame.shadows.normal_offset, 1.0);
     let uv = vec2<f32>(q.x * 0.5 + 0.5, 0.5 - q.y * 0.5);
     let slope = min(sqrt(max(1.0 - d * d, 0.0)) / d, frame.shadows.max_slope);
