@@ -22,6 +22,7 @@ DESCRIBED = {
     ("render", "hatch_mode"): (Material, "hatching", "mode"),
     ("render", "band_antialias"): (RenderOptions, "", "band_antialias"),
     ("render", "shadow_size"): (Shadows, "", "size"),
+    ("render", "shadow_strength"): (Shadows, "", "strength"),
     ("render", "shadow_bias"): (Shadows, "", "bias"),
     ("render", "suggestive"): (Outlines, "", "suggestive"),
     ("render", "outputs"): (RenderOptions, "", "outputs"),

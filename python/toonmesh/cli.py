@@ -213,7 +213,7 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     )
     if args.shadows:
         with errors_as_flags(args, Shadows):
-            options["lights"] = [Light.key().replace(shadows=Shadows(size=args.shadow_size, bias=args.shadow_bias))]
+            options["lights"] = [Light.key().replace(shadows=Shadows(size=args.shadow_size, bias=args.shadow_bias, strength=args.shadow_strength))]
     if args.outlines == NONE and args.suggestive:
         raise CliError(f"--suggestive: suggestive contours are ink lines; not with --outlines {NONE}")
     if args.outlines != NONE:
@@ -435,6 +435,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("--shadows", action="store_true", help="the key light casts shadows (default: off)")
     add_described(p, "--shadow-size", Shadows, "size", metavar="TEXELS")
     add_described(p, "--shadow-bias", Shadows, "bias", metavar="X")
+    add_described(p, "--shadow-strength", Shadows, "strength", metavar="S")
     add_described(p, "--outlines", Outlines, "kind", default=DEMO_OUTLINES.kind, extra_choices=(NONE,),
                   help_before="ink lines: ", help_after=f", or {NONE}; the default is toonmesh demo's")
     add_described(p, "--outline-width", Outlines, "width", default=DEMO_LINE_WIDTH, metavar="PX")
