@@ -1,7 +1,7 @@
 # Type stubs for the compiled core (checked against it with `python -m mypy.stubtest toonmesh._core`).
 # Written by scripts/stubs.py (`make stubs`) from this template and the core's description of its
 # settings classes: edit the template, not the output.
-from typing import Any, Dict, Final, List, Literal, Optional, Sequence, Tuple, TypedDict, Union, final
+from typing import Any, Dict, Final, List, Literal, Optional, Sequence, Tuple, TypedDict, Union, final, overload
 
 from typing_extensions import Unpack
 
@@ -43,7 +43,6 @@ __all__ = [
     "_EdgeIndex",
     "__version__",
     "_chains",
-    "_contours",
     "_curvature",
     "_feature_edges",
     "_normal_mode",
@@ -52,15 +51,14 @@ __all__ = [
     "_plotter_order",
     "_restore",
     "_RenderKeywords",
-    "_segments",
     "_shadow_truth",
     "_srgb_from_linear",
-    "_suggestive_contours",
     "_transform",
-    "_silhouette",
     "_smooth",
     "_sobel",
     "_svg_document",
+    "_vertex_count",
+    "_view_lines",
     "encode_png_rgba",
     "get_num_threads",
     "gpu_info",
@@ -125,8 +123,14 @@ class _RenderKeywords(TypedDict, total=False):
     band_antialias: Optional[bool]
     outlines: Optional[Union[str, Outlines]]
 
+class _Settings:
+    @staticmethod
+    def describe() -> Dict[str, Any]: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
+
 @final
-class Dither:
+class Dither(_Settings):
     """Dithering between neighbouring bands of a toon material. Fields: pattern: the threshold
     pattern; space: what the pattern is fixed to: the screen's pixels or the surface; amount:
     how far in L.n a pixel may move toward the neighbouring band, 0 to 2; scale: pixels a
@@ -138,13 +142,9 @@ class Dither:
     amount: Final[float]
     scale: Final[float]
     def replace(self, *, pattern: Optional[Literal['bayer2', 'bayer4', 'bayer8', 'blue']] = ..., space: Optional[Literal['screen', 'object']] = ..., amount: Optional[float] = ..., scale: Optional[float] = ...) -> Dither: ...
-    @staticmethod
-    def describe() -> Dict[str, Any]: ...
-    def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
-class Shadows:
+class Shadows(_Settings):
     """Shadow settings of a directional light. Fields: size: the shadow map's side in texels, a
     power of two; bias: depth bias in texels per unit of receiver slope, >= 0; filter: how the
     map is read: 'pcf' (soft edges) or 'none'; strength: the share of the light a shadow takes
@@ -156,13 +156,9 @@ class Shadows:
     filter: Final[str]
     strength: Final[float]
     def replace(self, *, size: Optional[int] = ..., bias: Optional[float] = ..., filter: Optional[Literal['none', 'pcf']] = ..., strength: Optional[float] = ...) -> Shadows: ...
-    @staticmethod
-    def describe() -> Dict[str, Any]: ...
-    def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
-class Light:
+class Light(_Settings):
     """A light: directional or point, in world or camera space. Fields: kind: directional (sun-
     like) or point; direction: a directional light's direction, from the light toward the scene;
     position: a point light's position; color: sRGB colour; intensity: factor on the colour, >=
@@ -189,13 +185,9 @@ class Light:
     space: Final[str]
     shadows: Final[Optional[Shadows]]
     def replace(self, *, direction: Optional[Sequence[float]] = ..., position: Optional[Sequence[float]] = ..., color: Optional[_Color] = ..., intensity: Optional[float] = ..., space: Optional[Literal['world', 'camera']] = ..., shadows: Optional[Union[bool, Shadows]] = ...) -> Light: ...
-    @staticmethod
-    def describe() -> Dict[str, Any]: ...
-    def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
-class Camera:
+class Camera(_Settings):
     """A camera: framed to fit the scene, looking at a point, or orthographic. Fields: kind: framed
     to fit the scene, or looking at a point; projection: the projection; eye: a look-at camera's
     position; target: the point a look-at camera looks at; up: the direction that is up in the
@@ -229,13 +221,9 @@ class Camera:
     near: Final[Optional[float]]
     far: Final[Optional[float]]
     def replace(self, *, eye: Optional[Sequence[float]] = ..., target: Optional[Sequence[float]] = ..., up: Optional[Sequence[float]] = ..., direction: Optional[Sequence[float]] = ..., margin: Optional[float] = ..., fov_y: Optional[float] = ..., height: Optional[float] = ..., near: Optional[float] = ..., far: Optional[float] = ...) -> Camera: ...
-    @staticmethod
-    def describe() -> Dict[str, Any]: ...
-    def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
-class LineStyle:
+class LineStyle(_Settings):
     """How one kind of ink line is drawn. Fields: color: the ink's sRGB colour; width: width in
     output pixels, the same at every resolution and supersampling factor.
     """
@@ -243,13 +231,9 @@ class LineStyle:
     color: Final[_Vec3]
     width: Final[float]
     def replace(self, *, color: Optional[_Color] = ..., width: Optional[float] = ...) -> LineStyle: ...
-    @staticmethod
-    def describe() -> Dict[str, Any]: ...
-    def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
-class Outlines:
+class Outlines(_Settings):
     """Ink outlines for a render: lines found on the mesh and edges found in the image. Fields:
     kind: lines found on the mesh, edges found in the image, or both; silhouette: True (the
     common style), False (not drawn), a LineStyle or a colour; boundary: True (the common
@@ -302,13 +286,9 @@ class Outlines:
     join_kinds: Final[bool]
     styles: Final[Dict[str, Optional[LineStyle]]]
     def replace(self, *, kind: Optional[Literal['mesh', 'image', 'both']] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
-    @staticmethod
-    def describe() -> Dict[str, Any]: ...
-    def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
-class Material:
+class Material(_Settings):
     """A shading model with its colour coefficients and per-pixel effects. Fields: model: the
     shading model (hatching is 'bands' with hatch strokes); diffuse: the diffuse coefficient
     d_m, sRGB; ambient: the ambient coefficient a_m, sRGB; specular: the highlight coefficient
@@ -366,13 +346,9 @@ class Material:
     dither: Final[Optional[Dither]]
     hatch_style: Final[Optional[Dict[str, Any]]]
     def replace(self, *, diffuse: Optional[_Color] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., shininess: Optional[float] = ..., t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., table: Optional[Any] = ..., ink: Optional[_Color] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material: ...
-    @staticmethod
-    def describe() -> Dict[str, Any]: ...
-    def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 @final
-class RenderOptions:
+class RenderOptions(_Settings):
     """Every render setting besides the meshes, checked, with the core's defaults. Fields:
     material: the material of meshes that name none; transform: a 4x4 affine model -> world
     matrix (row-major, applied to column vectors) for meshes that give none; camera: the camera
@@ -401,10 +377,6 @@ class RenderOptions:
     band_antialias: Final[bool]
     outlines: Final[Optional[Outlines]]
     def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ...) -> RenderOptions: ...
-    @staticmethod
-    def describe() -> Dict[str, Any]: ...
-    def __hash__(self) -> int: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
 
 def _restore(cls: str, state: str) -> Any: ...
 def kang_table() -> npt.NDArray[np.float64]: ...
@@ -451,23 +423,26 @@ _FeatureTuple = Tuple[
     _Pairs, _Pairs, npt.NDArray[np.float64], npt.NDArray[np.bool_], _Pairs, npt.NDArray[np.int64]
 ]
 _Point = Optional[Any]  # three numbers, or None
+_Polylines = Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]  # flat points, line starts
 
 # Scalars are checked in the core (src/py/args.rs), which names the argument in errors.
 def _feature_edges(vertices: Any, faces: Any, crease_angle: float, weld: bool) -> _FeatureTuple: ...
-def _silhouette(vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool) -> _Pairs: ...
-def _chains(edges: Any) -> Tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
-def _contours(
-    vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
-def _suggestive_contours(
+@overload
+def _view_lines(
+    what: Literal["silhouette"], vertices: Any, faces: Any, eye: _Point, direction: _Point, weld: bool
+) -> _Pairs: ...
+@overload
+def _view_lines(
+    what: Literal["contours", "suggestive"],
     vertices: Any,
     faces: Any,
     eye: _Point,
     direction: _Point,
     weld: bool,
-    threshold: Optional[float],
-    smoothing: Optional[float],
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
+    threshold: Optional[float] = None,
+    smoothing: Optional[float] = None,
+) -> _Polylines: ...
+def _chains(edges: Any) -> Tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
 def _curvature(vertices: Any, faces: Any, smoothing: float) -> Tuple[
     npt.NDArray[np.float64],
     npt.NDArray[np.float64],
@@ -476,7 +451,7 @@ def _curvature(vertices: Any, faces: Any, smoothing: float) -> Tuple[
     npt.NDArray[np.float64],
     npt.NDArray[np.float64],
 ]: ...
-def _segments(vertices: Any, edges: Any) -> Any: ...
+def _vertex_count(vertices: Any) -> int: ...
 def _pen_strokes(
     lines: List[Any], widths: List[Optional[Any]], smooth: float, simplify: float
 ) -> List[Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]]: ...
@@ -488,7 +463,17 @@ def _paper_edges(name: str, buffer: Any, threshold: float) -> Tuple[Any, npt.NDA
 @final
 class _EdgeIndex:
     def __new__(cls, vertices: Any, faces: Any, weld: bool) -> _EdgeIndex: ...
-    def silhouette(self, eye: _Point, direction: _Point) -> _Pairs: ...
+    @overload
+    def view_lines(self, what: Literal["silhouette"], eye: _Point, direction: _Point) -> _Pairs: ...
+    @overload
+    def view_lines(
+        self,
+        what: Literal["contours", "suggestive"],
+        eye: _Point,
+        direction: _Point,
+        threshold: Optional[float] = None,
+        smoothing: Optional[float] = None,
+    ) -> _Polylines: ...
     def outlines(
         self, crease_angle: float, eye: _Point, direction: _Point, kinds: bool
     ) -> Tuple[_Pairs, Optional[npt.NDArray[np.int8]]]: ...
@@ -496,10 +481,6 @@ class _EdgeIndex:
     def face_normals(self) -> npt.NDArray[np.float64]: ...
     def vertices(self) -> npt.NDArray[np.float64]: ...
     def weld_map(self) -> Optional[npt.NDArray[np.int64]]: ...
-    def contours(self, eye: _Point, direction: _Point) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
-    def suggestive_contours(
-        self, eye: _Point, direction: _Point, threshold: Optional[float], smoothing: Optional[float]
-    ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
     n_vertices: Final[int]
     n_faces: Final[int]
     n_edges: Final[int]

@@ -264,7 +264,7 @@ def contours(
         first point at the end. Points lie on mesh edges.
     """
     V, F = mesh_arrays(vertices, faces)
-    return _polylines(*_core._contours(V, F, eye, direction, weld))
+    return _polylines(*_core._view_lines("contours", V, F, eye, direction, weld))
 
 
 def suggestive_contours(
@@ -304,7 +304,7 @@ def suggestive_contours(
         line is cut by the derivative test lie inside faces.
     """
     V, F = mesh_arrays(vertices, faces)
-    return _polylines(*_core._suggestive_contours(V, F, eye, direction, weld, threshold, smoothing))
+    return _polylines(*_core._view_lines("suggestive", V, F, eye, direction, weld, threshold, smoothing))
 
 
 def silhouette(
@@ -334,7 +334,7 @@ def silhouette(
         weld: as in :func:`feature_edges`.
     """
     V, F = mesh_arrays(vertices, faces)
-    return _core._silhouette(V, F, eye, direction, weld)
+    return _core._view_lines("silhouette", V, F, eye, direction, weld)
 
 
 class EdgeIndex:
@@ -414,7 +414,7 @@ class EdgeIndex:
 
     def silhouette(self, *, eye: Any = None, direction: Any = None) -> np.ndarray:
         """Silhouette edges for one view, (K, 2) int64; rules as in :func:`silhouette`."""
-        return self._index.silhouette(eye, direction)
+        return self._index.view_lines("silhouette", eye, direction)
 
     def outlines(self, *, eye: Any = None, direction: Any = None, kinds: bool = False) -> Any:
         """Silhouettes of this view plus boundary, crease and non-manifold edges, (K, 2) int64,
@@ -433,7 +433,7 @@ class EdgeIndex:
     def contours(self, *, eye: Any = None, direction: Any = None) -> List[np.ndarray]:
         """Smooth contours of one view, as :func:`contours` finds them (the index's ``weld``),
         without redoing the per-mesh work: a list of (K, 3) float64 polylines."""
-        return _polylines(*self._index.contours(eye, direction))
+        return _polylines(*self._index.view_lines("contours", eye, direction))
 
     def suggestive_contours(
         self,
@@ -446,7 +446,7 @@ class EdgeIndex:
         """Suggestive contours of one view, as :func:`suggestive_contours` finds them; the
         mesh's curvature is computed on the first call and kept for the next views with the
         same ``smoothing``."""
-        return _polylines(*self._index.suggestive_contours(eye, direction, threshold, smoothing))
+        return _polylines(*self._index.view_lines("suggestive", eye, direction, threshold, smoothing))
 
     def __repr__(self) -> str:
         return f"EdgeIndex({self.n_vertices} vertices, {self.n_faces} faces, {self.n_edges} edges)"
@@ -496,7 +496,13 @@ def segments(vertices: Any, edges: Any) -> np.ndarray:
     """
     if hasattr(vertices, "vertices") and hasattr(vertices, "faces"):
         vertices = vertices.vertices
-    return _core._segments(_as_array("vertices", vertices), _edge_array(edges))  # type: ignore[no-any-return]
+    V, E = _as_array("vertices", vertices), _edge_array(edges)
+    n = _core._vertex_count(V)
+    outside = np.flatnonzero(((E < 0) | (E >= n)).any(axis=1))
+    if outside.size:
+        k = outside[0]
+        raise IndexError(f"edges: edge {k} ({E[k, 0]}, {E[k, 1]}) refers to a vertex outside [0, {n})")
+    return np.asarray(V, dtype=V.dtype.newbyteorder("="))[E]  # native byte order, as the core reads it
 
 
 # ---------------------------------------------------------------------------------------------

@@ -1,11 +1,11 @@
 //! A mesh's colour, texture coordinates and texture read from NumPy (`render::albedo`): colours
 //! and texels as uint8 codes or floats in [0, 1], sRGB, decoded to linear light here.
 
-use numpy::{PyArrayDescrMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use numpy::{PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use super::args::{number, text};
-use super::convert::{dtype_name, native_order, untyped};
+use super::convert::{dtype_name, float_values, native_order, untyped};
 use crate::error::{Error, Result};
 use crate::render::albedo::texture::Texture;
 use crate::render::albedo::{Albedo, Colors, Filter, Sampling, Wrap};
@@ -20,34 +20,17 @@ fn unit_values(arg: &str, obj: &Bound<'_, PyAny>, rank: usize, what: &str) -> Re
     if shape.len() != rank || !matches!(shape[rank - 1], 3 | 4) || shape.contains(&0) {
         return Err(Error::invalid(arg, format!("expected shape {what}, got {shape:?}")));
     }
+    let wrong_dtype =
+        || Error::wrong_type(arg, format!("dtype must be uint8, float32 or float64, got {}", dtype_name(a)));
     let values: Vec<f32> = if let Ok(x) = obj.extract::<PyReadonlyArrayDyn<'_, u8>>() {
         x.as_array().iter().map(|&c| c as f32 / 255.0).collect()
-    } else if a.dtype().kind() == b'f' {
-        let v: Vec<f64> = match obj.extract::<PyReadonlyArrayDyn<'_, f64>>() {
-            Ok(x) => x.as_array().iter().copied().collect(),
-            Err(_) => obj
-                .extract::<PyReadonlyArrayDyn<'_, f32>>()
-                .map_err(|_| {
-                    Error::wrong_type(
-                        arg,
-                        format!("dtype must be uint8, float32 or float64, got {}", dtype_name(a)),
-                    )
-                })?
-                .as_array()
-                .iter()
-                .map(|&x| x as f64)
-                .collect(),
-        };
+    } else {
+        let v = float_values(obj).ok_or_else(wrong_dtype)?;
         if let Some(bad) = v.iter().find(|x| !(x.is_finite() && (0.0..=1.0).contains(*x))) {
             let hint = if bad.is_finite() && *bad > 1.0 { " (for 0-255 codes, use uint8)" } else { "" };
             return Err(Error::invalid(arg, format!("float values must be in [0, 1], got {bad}{hint}")));
         }
         v.into_iter().map(|x| x as f32).collect()
-    } else {
-        return Err(Error::wrong_type(
-            arg,
-            format!("dtype must be uint8, float32 or float64, got {}", dtype_name(a)),
-        ));
     };
     Ok((values, shape))
 }
@@ -103,25 +86,10 @@ fn uv(obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 2]>> {
     if shape.len() != 2 || shape[1] != 2 {
         return Err(Error::invalid("uv", format!("expected shape (N, 2), got {shape:?}")));
     }
-    if a.dtype().kind() != b'f' {
-        return Err(Error::wrong_type(
-            "uv",
-            format!("dtype must be float32 or float64, got {}", dtype_name(a)),
-        ));
-    }
-    let v: Vec<f32> = match obj.extract::<PyReadonlyArrayDyn<'_, f64>>() {
-        Ok(x) => x.as_array().iter().map(|&x| x as f32).collect(),
-        Err(_) => obj
-            .extract::<PyReadonlyArrayDyn<'_, f32>>()
-            .map_err(|_| {
-                Error::wrong_type("uv", format!("dtype must be float32 or float64, got {}", dtype_name(a)))
-            })?
-            .as_array()
-            .iter()
-            .copied()
-            .collect(),
-    };
-    Ok(v.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+    let v = float_values(obj).ok_or_else(|| {
+        Error::wrong_type("uv", format!("dtype must be float32 or float64, got {}", dtype_name(a)))
+    })?;
+    Ok(v.chunks_exact(2).map(|c| [c[0] as f32, c[1] as f32]).collect())
 }
 
 /// An optional argument: None when absent or given as None.

@@ -3,14 +3,33 @@
 
 use numpy::ndarray::{Array1, Array2};
 use numpy::{
-    IntoPyArray, PyArray2, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
-    PyUntypedArrayMethods,
+    IntoPyArray, PyArray1, PyArray2, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArray2,
+    PyReadonlyArrayDyn, PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::mesh::{check_faces, check_positions, Faces};
-use crate::real::Real;
+
+/// `$body` on the first of the element types `$t` that `$obj` reads as, bound to `$x` as a
+/// `$array` of it; None when it reads as none of them. NumPy dtypes match exactly (no casts).
+macro_rules! by_dtype {
+    ($obj:expr, $array:ident<$($t:ty),+>, |$x:ident| $body:expr) => {
+        None $(.or_else(|| $obj.extract::<$array<'_, $t>>().ok().map(|$x| $body)))+
+    };
+}
+pub(crate) use by_dtype;
+
+/// Runs `$body` with `$v` bound to the positions (a `PositionsRef`) in their own precision.
+macro_rules! on_positions {
+    ($p:expr, $v:ident => $body:expr) => {
+        match $p {
+            $crate::py::convert::PositionsRef::F32($v) => $body,
+            $crate::py::convert::PositionsRef::F64($v) => $body,
+        }
+    };
+}
+pub(crate) use on_positions;
 
 /// Vertex positions in the caller's precision.
 pub enum Positions {
@@ -18,11 +37,30 @@ pub enum Positions {
     F64(Vec<[f64; 3]>),
 }
 
+/// Borrowed vertex positions in the caller's precision.
+#[derive(Clone, Copy)]
+pub enum PositionsRef<'a> {
+    F32(&'a [[f32; 3]]),
+    F64(&'a [[f64; 3]]),
+}
+
 impl Positions {
     pub fn len(&self) -> usize {
+        on_positions!(self.slices(), v => v.len())
+    }
+
+    pub fn slices(&self) -> PositionsRef<'_> {
         match self {
-            Positions::F32(v) => v.len(),
-            Positions::F64(v) => v.len(),
+            Positions::F32(v) => PositionsRef::F32(v),
+            Positions::F64(v) => PositionsRef::F64(v),
+        }
+    }
+
+    /// Handed to NumPy as (N, 3), in their precision.
+    pub fn into_numpy(self, py: Python<'_>) -> Bound<'_, PyAny> {
+        match self {
+            Positions::F32(v) => rows_to_numpy(py, v).into_any(),
+            Positions::F64(v) => rows_to_numpy(py, v).into_any(),
         }
     }
 }
@@ -94,10 +132,7 @@ pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
             format!("dtype must be float32 or float64, got {}", dtype_name(a)),
         ));
     };
-    match &p {
-        Positions::F32(v) => check_positions(arg, v)?,
-        Positions::F64(v) => check_positions(arg, v)?,
-    }
+    on_positions!(p.slices(), v => check_positions(arg, v))?;
     Ok(p)
 }
 
@@ -113,17 +148,8 @@ pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Fac
         return Err(wrong_dtype());
     }
     check_rows3(arg, a, "M")?;
-    if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, i32>>() {
-        check_faces(arg, rows3(&x).into_iter(), n_vertices)
-    } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, i64>>() {
-        check_faces(arg, rows3(&x).into_iter(), n_vertices)
-    } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, u32>>() {
-        check_faces(arg, rows3(&x).into_iter(), n_vertices)
-    } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, u64>>() {
-        check_faces(arg, rows3(&x).into_iter(), n_vertices)
-    } else {
-        Err(wrong_dtype())
-    }
+    by_dtype!(obj, PyReadonlyArray2<i32, i64, u32, u64>, |x| check_faces(arg, rows3(&x).into_iter(), n_vertices))
+        .unwrap_or_else(|| Err(wrong_dtype()))
 }
 
 /// Reads an optional 1-D array of vertex indices (any integer dtype, either byte order) or a
@@ -210,31 +236,38 @@ pub fn vertex_mask(
     Ok(Some(mask))
 }
 
-/// Hands an (N, 3) result to NumPy without copying.
-pub fn rows3_to_numpy<'py, T: Real + numpy::Element>(
-    py: Python<'py>,
-    v: Vec<[T; 3]>,
-) -> Bound<'py, PyArray2<T>> {
-    let n = v.len();
-    let flat: Vec<T> = flatten3(v);
-    Array2::from_shape_vec((n, 3), flat).expect("length is 3n").into_pyarray(py)
+/// The values of a float32 or float64 array of any shape, widened to f64 (None: another dtype).
+pub fn float_values(obj: &Bound<'_, PyAny>) -> Option<Vec<f64>> {
+    by_dtype!(obj, PyReadonlyArrayDyn<f32, f64>, |x| x.as_array().iter().map(|&v| v as f64).collect())
 }
 
-/// Hands (M, 3) indices to NumPy as int64 (NumPy's default index type).
-pub fn faces_to_numpy<'py>(py: Python<'py>, f: Vec<[u32; 3]>) -> Bound<'py, PyArray2<i64>> {
-    let m = f.len();
-    let flat: Vec<i64> = f.into_iter().flat_map(|r| r.map(|i| i as i64)).collect();
-    Array2::from_shape_vec((m, 3), flat).expect("length is 3m").into_pyarray(py)
+/// Hands row-major values of a 2-D `shape` to NumPy without copying.
+pub fn grid_to_numpy<T: numpy::Element>(
+    py: Python<'_>,
+    shape: (usize, usize),
+    flat: Vec<T>,
+) -> Bound<'_, PyArray2<T>> {
+    Array2::from_shape_vec(shape, flat).expect("rows * columns values").into_pyarray(py)
 }
 
-pub fn vec_to_numpy<'py, T: numpy::Element>(py: Python<'py>, v: Vec<T>) -> Bound<'py, numpy::PyArray1<T>> {
+/// Hands rows of K values to NumPy as (N, K) without copying.
+pub fn rows_to_numpy<T: numpy::Element, const K: usize>(
+    py: Python<'_>,
+    rows: Vec<[T; K]>,
+) -> Bound<'_, PyArray2<T>> {
+    grid_to_numpy(py, (rows.len(), K), rows.into_flattened())
+}
+
+/// Hands rows of vertex indices to NumPy as int64 (NumPy's index type).
+pub fn index_rows_to_numpy<const K: usize>(py: Python<'_>, rows: Vec<[u32; K]>) -> Bound<'_, PyArray2<i64>> {
+    rows_to_numpy(py, rows.into_iter().map(|r| r.map(i64::from)).collect())
+}
+
+/// Hands indices to NumPy as int64 (NumPy's index type).
+pub fn indices_to_numpy(py: Python<'_>, indices: impl IntoIterator<Item = u32>) -> Bound<'_, PyArray1<i64>> {
+    vec_to_numpy(py, indices.into_iter().map(i64::from).collect())
+}
+
+pub fn vec_to_numpy<T: numpy::Element>(py: Python<'_>, v: Vec<T>) -> Bound<'_, PyArray1<T>> {
     Array1::from_vec(v).into_pyarray(py)
-}
-
-fn flatten3<T: Copy>(v: Vec<[T; 3]>) -> Vec<T> {
-    let mut v = std::mem::ManuallyDrop::new(v);
-    let (ptr, len, cap) = (v.as_mut_ptr(), v.len(), v.capacity());
-    // SAFETY: [T; 3] has the size and alignment of three Ts laid out contiguously, so the
-    // allocation is a valid Vec<T> of 3x the length and capacity.
-    unsafe { Vec::from_raw_parts(ptr as *mut T, len * 3, cap * 3) }
 }

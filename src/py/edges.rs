@@ -3,18 +3,22 @@
 
 use std::sync::OnceLock;
 
-use numpy::ndarray::Array2;
 use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArray,
+    PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArray,
     PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
+use pyo3::IntoPyObjectExt;
 
 use super::args;
-use super::convert::{native_order, positions, vec_to_numpy, Positions};
+use super::convert::{
+    by_dtype, grid_to_numpy, index_rows_to_numpy, indices_to_numpy, native_order, on_positions, positions,
+    rows_to_numpy, vec_to_numpy,
+};
 use super::errors::to_py;
-use super::mesh_input::{on_positions, MeshInput, PositionsRef};
+use super::mesh_input::MeshInput;
 use super::runtime::{detached, detached_cancellable};
+use crate::cancel::Cancel;
 use crate::edges::chains::chain_edges;
 use crate::edges::contours::{check_smoothing, check_threshold, ContourMesh, DEFAULT_SUGGESTIVE_THRESHOLD};
 use crate::edges::detect::{paper_gradient, threshold_mask};
@@ -38,20 +42,14 @@ type FeatureOut<'py> = (
     Bound<'py, PyArray1<i64>>,
 );
 
-fn pairs_to_numpy(py: Python<'_>, pairs: Vec<[u32; 2]>) -> Pairs<'_> {
-    let k = pairs.len();
-    let flat: Vec<i64> = pairs.into_iter().flat_map(|p| p.map(|i| i as i64)).collect();
-    Array2::from_shape_vec((k, 2), flat).expect("length is 2k").into_pyarray(py)
-}
-
 fn feature_to_numpy(py: Python<'_>, fe: FeatureEdges, degenerate: Vec<u32>) -> FeatureOut<'_> {
     (
-        pairs_to_numpy(py, fe.boundary),
-        pairs_to_numpy(py, fe.crease),
+        index_rows_to_numpy(py, fe.boundary),
+        index_rows_to_numpy(py, fe.crease),
         vec_to_numpy(py, fe.crease_angle),
         vec_to_numpy(py, fe.crease_convex),
-        pairs_to_numpy(py, fe.nonmanifold),
-        vec_to_numpy(py, degenerate.into_iter().map(|f| f as i64).collect()),
+        index_rows_to_numpy(py, fe.nonmanifold),
+        indices_to_numpy(py, degenerate),
     )
 }
 
@@ -92,26 +90,6 @@ fn _feature_edges<'py>(
     Ok(feature_to_numpy(py, fe, degenerate))
 }
 
-#[pyfunction]
-#[pyo3(signature = (vertices, faces, eye, direction, weld))]
-fn _silhouette<'py>(
-    py: Python<'py>,
-    vertices: &Bound<'py, PyAny>,
-    faces: &Bound<'py, PyAny>,
-    eye: Option<&Bound<'py, PyAny>>,
-    direction: Option<&Bound<'py, PyAny>>,
-    weld: &Bound<'py, PyAny>,
-) -> PyResult<Pairs<'py>> {
-    let s = on_view(
-        py,
-        (vertices, faces),
-        (eye, direction),
-        weld,
-        |p, f, view, weld, _| on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)),
-    )?;
-    Ok(pairs_to_numpy(py, s))
-}
-
 /// k1, k2 (N,), d1, d2, normals (N, 3), derivatives (N, 4), all float64
 type CurvatureOut<'py> = (
     Bound<'py, PyArray1<f64>>,
@@ -121,11 +99,6 @@ type CurvatureOut<'py> = (
     Bound<'py, PyArray2<f64>>,
     Bound<'py, PyArray2<f64>>,
 );
-
-fn rows_to_numpy<const K: usize>(py: Python<'_>, rows: Vec<[f64; K]>) -> Bound<'_, PyArray2<f64>> {
-    let n = rows.len();
-    Array2::from_shape_vec((n, K), rows.into_iter().flatten().collect()).expect("n * K").into_pyarray(py)
-}
 
 #[pyfunction]
 #[pyo3(signature = (vertices, faces, smoothing))]
@@ -149,85 +122,98 @@ fn _curvature<'py>(
     ))
 }
 
-type PolylinesOut<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<i64>>);
-
-fn polylines_to_numpy(py: Python<'_>, lines: Polylines) -> PolylinesOut<'_> {
-    (rows_to_numpy(py, lines.points), vec_to_numpy(py, lines.starts.into_iter().map(i64::from).collect()))
+/// What one view of a mesh is asked for: its silhouette edges, its smooth contours or its
+/// suggestive contours.
+#[derive(Clone, Copy)]
+enum Query {
+    Silhouette,
+    Contours,
+    Suggestive { threshold: f64, smoothing: Option<f64> },
 }
 
-/// `work` on a mesh and a view read from the arguments (the GIL released, Ctrl-C honoured).
-fn on_view<R: Send>(
-    py: Python<'_>,
-    (vertices, faces): (&Bound<'_, PyAny>, &Bound<'_, PyAny>),
-    (eye, direction): (Option<&Bound<'_, PyAny>>, Option<&Bound<'_, PyAny>>),
-    weld: &Bound<'_, PyAny>,
-    work: impl Fn(PositionsRef<'_>, &[[u32; 3]], View, bool, &crate::cancel::Cancel) -> Result<R> + Send + Sync,
-) -> PyResult<R> {
-    let view = view_of(eye, direction).map_err(to_py)?;
+impl Query {
+    /// `what` ("silhouette", "contours" or "suggestive") and its view, read from the arguments;
+    /// the suggestive contours' threshold and curvature smoothing take their defaults when None.
+    fn read(
+        what: &str,
+        (eye, direction): (Option<&Bound<'_, PyAny>>, Option<&Bound<'_, PyAny>>),
+        threshold: Option<&Bound<'_, PyAny>>,
+        smoothing: Option<&Bound<'_, PyAny>>,
+    ) -> Result<(Query, View)> {
+        let view = view_of(eye, direction)?;
+        let query = match what {
+            "silhouette" => Query::Silhouette,
+            "contours" => Query::Contours,
+            "suggestive" => Query::Suggestive {
+                threshold: args::optional("threshold", threshold, args::number)?
+                    .map(|t| check_threshold("threshold", t))
+                    .transpose()?
+                    .unwrap_or(DEFAULT_SUGGESTIVE_THRESHOLD),
+                smoothing: args::optional("smoothing", smoothing, args::number)?
+                    .map(|s| check_smoothing("smoothing", s))
+                    .transpose()?,
+            },
+            other => return Err(Error::invalid("what", format!("no view query {other:?}"))),
+        };
+        Ok((query, view))
+    }
+
+    /// The contours asked for, traced on `mesh`.
+    fn trace(self, mesh: &ContourMesh, view: View, cancel: &Cancel) -> Result<Lines> {
+        let lines = match self {
+            Query::Suggestive { threshold, smoothing } => {
+                mesh.suggestive(view, threshold, smoothing, cancel)?
+            }
+            _ => mesh.smooth(view),
+        };
+        Ok(Lines::Polylines(lines))
+    }
+}
+
+/// The lines of one view: edges (vertex pairs) or polylines.
+enum Lines {
+    Edges(Vec<[u32; 2]>),
+    Polylines(Polylines),
+}
+
+impl Lines {
+    /// Edges as (K, 2) int64; polylines as their flat (P, 3) points and int64 line starts.
+    fn into_py(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+        match self {
+            Lines::Edges(e) => Ok(index_rows_to_numpy(py, e).into_any()),
+            Lines::Polylines(l) => {
+                (rows_to_numpy(py, l.points), indices_to_numpy(py, l.starts)).into_bound_py_any(py)
+            }
+        }
+    }
+}
+
+/// One view's lines of a mesh (see `Query`), building only what they need: the edge index for
+/// silhouettes, the contour mesh for contours.
+#[pyfunction]
+#[pyo3(signature = (what, vertices, faces, eye, direction, weld, threshold = None, smoothing = None))]
+#[allow(clippy::too_many_arguments)]
+fn _view_lines<'py>(
+    py: Python<'py>,
+    what: &str,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    eye: Option<&Bound<'py, PyAny>>,
+    direction: Option<&Bound<'py, PyAny>>,
+    weld: &Bound<'py, PyAny>,
+    threshold: Option<&Bound<'py, PyAny>>,
+    smoothing: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (query, view) = Query::read(what, (eye, direction), threshold, smoothing).map_err(to_py)?;
     let weld = args::flag("weld", weld).map_err(to_py)?;
     let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
-    mesh.run(py, faces, |p, f, cancel| work(p, f, view, weld, cancel))
-}
-
-/// Lines of one view traced on a `ContourMesh` by `trace`, as flat points and line starts.
-fn view_lines<'py>(
-    py: Python<'py>,
-    mesh: (&Bound<'py, PyAny>, &Bound<'py, PyAny>),
-    view: (Option<&Bound<'py, PyAny>>, Option<&Bound<'py, PyAny>>),
-    weld: &Bound<'py, PyAny>,
-    trace: impl Fn(&ContourMesh, View, &crate::cancel::Cancel) -> Result<Polylines> + Send + Sync,
-) -> PyResult<PolylinesOut<'py>> {
-    let lines = on_view(py, mesh, view, weld, |p, f, view, weld, cancel| {
-        let m = on_positions!(p, v => ContourMesh::build(v, f, weld));
-        trace(&m, view, cancel)
+    let lines = mesh.run(py, faces, |p, f, cancel| match query {
+        Query::Silhouette => {
+            on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)).map(Lines::Edges)
+        }
+        _ => query.trace(&on_positions!(p, v => ContourMesh::build(v, f, weld)), view, cancel),
     })?;
-    Ok(polylines_to_numpy(py, lines))
-}
-
-#[pyfunction]
-#[pyo3(signature = (vertices, faces, eye, direction, weld))]
-fn _contours<'py>(
-    py: Python<'py>,
-    vertices: &Bound<'py, PyAny>,
-    faces: &Bound<'py, PyAny>,
-    eye: Option<&Bound<'py, PyAny>>,
-    direction: Option<&Bound<'py, PyAny>>,
-    weld: &Bound<'py, PyAny>,
-) -> PyResult<PolylinesOut<'py>> {
-    view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, _| Ok(m.smooth(view)))
-}
-
-/// The suggestive-contour arguments, threshold and curvature smoothing; None takes the
-/// default.
-fn read_suggestive(threshold: &Bound<'_, PyAny>, smoothing: &Bound<'_, PyAny>) -> Result<(f64, Option<f64>)> {
-    let threshold = match threshold.is_none() {
-        true => DEFAULT_SUGGESTIVE_THRESHOLD,
-        false => check_threshold("threshold", args::number("threshold", threshold)?)?,
-    };
-    let smoothing = match smoothing.is_none() {
-        true => None,
-        false => Some(check_smoothing("smoothing", args::number("smoothing", smoothing)?)?),
-    };
-    Ok((threshold, smoothing))
-}
-
-#[pyfunction]
-#[pyo3(signature = (vertices, faces, eye, direction, weld, threshold, smoothing))]
-#[allow(clippy::too_many_arguments)]
-fn _suggestive_contours<'py>(
-    py: Python<'py>,
-    vertices: &Bound<'py, PyAny>,
-    faces: &Bound<'py, PyAny>,
-    eye: Option<&Bound<'py, PyAny>>,
-    direction: Option<&Bound<'py, PyAny>>,
-    weld: &Bound<'py, PyAny>,
-    threshold: &Bound<'py, PyAny>,
-    smoothing: &Bound<'py, PyAny>,
-) -> PyResult<PolylinesOut<'py>> {
-    let (threshold, smoothing) = read_suggestive(threshold, smoothing).map_err(to_py)?;
-    view_lines(py, (vertices, faces), (eye, direction), weld, |m, view, cancel| {
-        m.suggestive(view, threshold, smoothing, cancel)
-    })
+    lines.into_py(py)
 }
 
 /// The once-per-mesh part of outline finding; immutable, so one index serves many threads.
@@ -267,48 +253,24 @@ impl PyEdgeIndex {
         Ok(PyEdgeIndex { inner, statics: Default::default(), faces, weld, contours: OnceLock::new() })
     }
 
-    /// Smooth contours of one view, as flat points and line starts.
-    #[pyo3(signature = (eye, direction))]
-    fn contours<'py>(
+    /// One view's lines (see `_view_lines`); the contour mesh is built on the first contour
+    /// asked for, and the curvature on the first suggestive one, and both are kept.
+    #[pyo3(signature = (what, eye, direction, threshold = None, smoothing = None))]
+    fn view_lines<'py>(
         &self,
         py: Python<'py>,
+        what: &str,
         eye: Option<&Bound<'py, PyAny>>,
         direction: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<PolylinesOut<'py>> {
-        let view = view_of(eye, direction).map_err(to_py)?;
-        let lines = detached(py, || Ok(self.contour_mesh().smooth(view)))?;
-        Ok(polylines_to_numpy(py, lines))
-    }
-
-    /// Suggestive contours of one view (the curvature is computed on the first call and kept).
-    #[pyo3(signature = (eye, direction, threshold, smoothing))]
-    fn suggestive_contours<'py>(
-        &self,
-        py: Python<'py>,
-        eye: Option<&Bound<'py, PyAny>>,
-        direction: Option<&Bound<'py, PyAny>>,
-        threshold: &Bound<'py, PyAny>,
-        smoothing: &Bound<'py, PyAny>,
-    ) -> PyResult<PolylinesOut<'py>> {
-        let view = view_of(eye, direction).map_err(to_py)?;
-        let (threshold, smoothing) = read_suggestive(threshold, smoothing).map_err(to_py)?;
-        let lines = detached_cancellable(py, |cancel| {
-            self.contour_mesh().suggestive(view, threshold, smoothing, cancel)
+        threshold: Option<&Bound<'py, PyAny>>,
+        smoothing: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let (query, view) = Query::read(what, (eye, direction), threshold, smoothing).map_err(to_py)?;
+        let lines = detached_cancellable(py, |cancel| match query {
+            Query::Silhouette => self.inner.silhouette(view).map(Lines::Edges),
+            _ => query.trace(self.contour_mesh(), view, cancel),
         })?;
-        Ok(polylines_to_numpy(py, lines))
-    }
-
-    #[pyo3(signature = (eye, direction))]
-    fn silhouette<'py>(
-        &self,
-        py: Python<'py>,
-        eye: Option<&Bound<'py, PyAny>>,
-        direction: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Pairs<'py>> {
-        let view = view_of(eye, direction).map_err(to_py)?;
-        let inner = &self.inner;
-        let s = detached(py, || inner.silhouette(view))?;
-        Ok(pairs_to_numpy(py, s))
+        lines.into_py(py)
     }
 
     /// The outline set of one view: silhouettes, boundaries, creases and non-manifold edges,
@@ -332,7 +294,7 @@ impl PyEdgeIndex {
             Ok(s.with_silhouettes(&inner.silhouette(view)?))
         })?;
         let kinds = with_kinds.then(|| vec_to_numpy(py, all.kinds.iter().map(|&k| k as i8).collect()));
-        Ok((pairs_to_numpy(py, all.edges), kinds))
+        Ok((index_rows_to_numpy(py, all.edges), kinds))
     }
 
     fn feature_edges<'py>(
@@ -348,17 +310,15 @@ impl PyEdgeIndex {
     }
 
     fn face_normals<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
-        let flat: Vec<f64> = self.inner.normals().iter().flatten().copied().collect();
-        Array2::from_shape_vec((self.inner.n_faces(), 3), flat).expect("3m").into_pyarray(py)
+        rows_to_numpy(py, self.inner.normals().to_vec())
     }
 
     fn vertices<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
-        let flat: Vec<f64> = self.inner.positions().iter().flatten().copied().collect();
-        Array2::from_shape_vec((self.inner.n_vertices(), 3), flat).expect("3n").into_pyarray(py)
+        rows_to_numpy(py, self.inner.positions().to_vec())
     }
 
     fn weld_map<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<i64>>> {
-        self.inner.weld_map().map(|m| vec_to_numpy(py, m.iter().map(|&i| i as i64).collect()))
+        self.inner.weld_map().map(|m| indices_to_numpy(py, m.iter().copied()))
     }
 
     #[getter]
@@ -407,40 +367,13 @@ fn _chains<'py>(
 ) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<i64>>)> {
     let e = read_pairs("edges", edges).map_err(to_py)?;
     let (flat, offsets) = detached(py, || Ok(chain_edges(&e)))?;
-    Ok((
-        vec_to_numpy(py, flat.into_iter().map(|i| i as i64).collect()),
-        vec_to_numpy(py, offsets.into_iter().map(|i| i as i64).collect()),
-    ))
+    Ok((indices_to_numpy(py, flat), indices_to_numpy(py, offsets)))
 }
 
-/// End points of edges, (K, 2, 3) in the vertices' dtype; `edges` is (K, 2) int64.
+/// The number of `vertices`, checked as every mesh function checks them.
 #[pyfunction]
-fn _segments<'py>(
-    py: Python<'py>,
-    vertices: &Bound<'py, PyAny>,
-    edges: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let v = positions("vertices", vertices).map_err(to_py)?;
-    let e = read_pairs("edges", edges).map_err(to_py)?;
-    let n = v.len();
-    if let Some(k) = e.iter().position(|p| p[0] as usize >= n || p[1] as usize >= n) {
-        return Err(to_py(Error::out_of_range(
-            "edges",
-            format!("edge {k} ({}, {}) refers to a vertex outside [0, {n})", e[k][0], e[k][1]),
-        )));
-    }
-    fn ends<'py, T: Real + numpy::Element>(
-        py: Python<'py>,
-        v: &[[T; 3]],
-        e: &[[u32; 2]],
-    ) -> Bound<'py, PyAny> {
-        let flat: Vec<T> = e.iter().flat_map(|p| p.iter().flat_map(|&i| v[i as usize])).collect();
-        numpy::ndarray::Array3::from_shape_vec((e.len(), 2, 3), flat).expect("6k").into_pyarray(py).into_any()
-    }
-    Ok(match &v {
-        Positions::F32(v) => ends(py, v, &e),
-        Positions::F64(v) => ends(py, v, &e),
-    })
+fn _vertex_count(vertices: &Bound<'_, PyAny>) -> PyResult<usize> {
+    Ok(positions("vertices", vertices).map_err(to_py)?.len())
 }
 
 fn sobel_typed<'py, T: Real + numpy::Element>(
@@ -482,13 +415,8 @@ fn _sobel<'py>(
     let convention =
         args::text("convention", convention).and_then(|c| Convention::parse(&c)).map_err(to_py)?;
     let image = &native_order(image).map_err(to_py)?;
-    if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f32>>() {
-        Ok(sobel_typed(py, x, output, convention)?.into_any())
-    } else if let Ok(x) = image.extract::<PyReadonlyArray2<'py, f64>>() {
-        Ok(sobel_typed(py, x, output, convention)?.into_any())
-    } else {
-        Err(to_py(Error::wrong_type("image", "expected a 2-D float32 or float64 array")))
-    }
+    by_dtype!(image, PyReadonlyArray2<f32, f64>, |x| sobel_typed(py, x, output, convention).map(Bound::into_any))
+        .unwrap_or_else(|| Err(to_py(Error::wrong_type("image", "expected a 2-D float32 or float64 array"))))
 }
 
 type Edges<'py> = (Bound<'py, PyAny>, Bound<'py, PyArray2<bool>>);
@@ -511,10 +439,7 @@ fn edges_typed<'py, T: Real + numpy::Element>(
         let m = threshold_mask(&arg, &g, threshold)?;
         Ok((g, m))
     })?;
-    Ok((
-        Array2::from_shape_vec((h, w), gradient).expect("h*w").into_pyarray(py).into_any(),
-        Array2::from_shape_vec((h, w), mask).expect("h*w").into_pyarray(py),
-    ))
+    Ok((grid_to_numpy(py, (h, w), gradient).into_any(), grid_to_numpy(py, (h, w), mask)))
 }
 
 /// The paper's gradient max over channels of max(|Gx|, |Gy|) of a C-contiguous (H, W, C) float
@@ -528,25 +453,18 @@ fn _paper_edges<'py>(
     threshold: &Bound<'py, PyAny>,
 ) -> PyResult<Edges<'py>> {
     let threshold = args::number(&format!("{name}_threshold"), threshold).map_err(to_py)?;
-    if let Ok(x) = buffer.extract::<PyReadonlyArray3<'py, f32>>() {
-        edges_typed(py, name, x, threshold)
-    } else if let Ok(x) = buffer.extract::<PyReadonlyArray3<'py, f64>>() {
-        edges_typed(py, name, x, threshold)
-    } else {
-        Err(to_py(Error::wrong_type(name, "expected a 3-D float32 or float64 array")))
-    }
+    by_dtype!(buffer, PyReadonlyArray3<f32, f64>, |x| edges_typed(py, name, x, threshold))
+        .unwrap_or_else(|| Err(to_py(Error::wrong_type(name, "expected a 3-D float32 or float64 array"))))
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_feature_edges, m)?)?;
-    m.add_function(wrap_pyfunction!(_silhouette, m)?)?;
     m.add_function(wrap_pyfunction!(_curvature, m)?)?;
-    m.add_function(wrap_pyfunction!(_contours, m)?)?;
-    m.add_function(wrap_pyfunction!(_suggestive_contours, m)?)?;
+    m.add_function(wrap_pyfunction!(_view_lines, m)?)?;
     m.add_function(wrap_pyfunction!(_chains, m)?)?;
     m.add_function(wrap_pyfunction!(_sobel, m)?)?;
     m.add_function(wrap_pyfunction!(_paper_edges, m)?)?;
-    m.add_function(wrap_pyfunction!(_segments, m)?)?;
+    m.add_function(wrap_pyfunction!(_vertex_count, m)?)?;
     m.add_class::<PyEdgeIndex>()?;
     Ok(())
 }

@@ -6,7 +6,7 @@
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
-use super::convert::{faces, native_order, positions, Positions};
+use super::convert::{faces, native_order, positions, Positions, PositionsRef};
 use super::errors::to_py;
 use super::runtime::detached_cancellable;
 use crate::cancel::Cancel;
@@ -24,12 +24,6 @@ pub struct MeshInput<'py> {
     n_vertices: usize,
     /// The largest absolute coordinate, when the fast path computed it.
     largest: Option<f64>,
-}
-
-#[derive(Clone, Copy)]
-pub enum PositionsRef<'a> {
-    F32(&'a [[f32; 3]]),
-    F64(&'a [[f64; 3]]),
 }
 
 #[derive(Clone, Copy)]
@@ -109,10 +103,7 @@ impl<'py> MeshInput<'py> {
         if let Some(x) = &self.v64 {
             return PositionsRef::F64(rows_of(x.as_slice().expect("checked contiguous")));
         }
-        match self.owned.as_ref().expect("one of the three is set") {
-            Positions::F32(v) => PositionsRef::F32(v),
-            Positions::F64(v) => PositionsRef::F64(v),
-        }
+        self.owned.as_ref().expect("one of the three is set").slices()
     }
 
     fn faces(&self) -> FacesRef<'_> {
@@ -181,14 +172,3 @@ fn faces_to_u32<I: Copy + Into<i64> + Sync>(flat: &[I], n: usize) -> Option<Vec<
     }
     ok.then_some(out)
 }
-
-/// Runs `$body` with `$v` bound to the positions in their own precision.
-macro_rules! on_positions {
-    ($p:expr, $v:ident => $body:expr) => {
-        match $p {
-            $crate::py::mesh_input::PositionsRef::F32($v) => $body,
-            $crate::py::mesh_input::PositionsRef::F64($v) => $body,
-        }
-    };
-}
-pub(crate) use on_positions;

@@ -2,7 +2,7 @@
 //! scenes rendered into NumPy arrays allocated here and filled without the GIL), `gpu_info` and
 //! PNG encoding. Every argument is converted with a check that names it.
 
-use numpy::ndarray::{Array2, IxDyn};
+use numpy::ndarray::IxDyn;
 use numpy::{
     IntoPyArray, PyArray1, PyArray2, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3,
     PyUntypedArrayMethods,
@@ -12,13 +12,14 @@ use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 
 use super::albedo::albedo;
 use super::args::{number, text, type_name};
-use super::convert::{faces, positions, Positions};
+use super::convert::{faces, grid_to_numpy, on_positions, positions, rows_to_numpy};
 use super::errors::to_py;
 use super::runtime::{catching_panics, detached_cancellable};
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
+use crate::real::Real;
 use crate::render::effects::outlines::settings::kind_names;
 use crate::render::gpu_mesh::NormalMode;
 use crate::render::image_out::encode_png;
@@ -47,10 +48,7 @@ fn info_dict<'py>(py: Python<'py>, info: &GpuInfo) -> PyResult<Bound<'py, PyDict
 }
 
 fn matrix(py: Python<'_>, m: [[f64; 4]; 4]) -> Bound<'_, PyAny> {
-    Array2::from_shape_vec((4, 4), m.iter().flatten().copied().collect())
-        .expect("16 values")
-        .into_pyarray(py)
-        .into_any()
+    rows_to_numpy(py, m.to_vec()).into_any()
 }
 
 /// `normals`: "smooth", "flat", "auto" (split at `DEFAULT_CREASE_ANGLE`) or ("auto", crease
@@ -219,10 +217,7 @@ fn report_dict<'py>(
             let mut arrays: Vec<Bound<'py, PyArray2<f64>>> = Vec::with_capacity(lines.len());
             let mut widths: Vec<Bound<'py, PyArray1<f32>>> = Vec::with_capacity(lines.len());
             for l in lines {
-                let n = l.points.len();
-                let points = Array2::from_shape_vec((n, 2), l.points.into_iter().flatten().collect())
-                    .expect("2 numbers a point");
-                arrays.push(points.into_pyarray(py));
+                arrays.push(rows_to_numpy(py, l.points));
                 widths.push(l.widths.iter().map(|&w| w as f32).collect::<Vec<f32>>().into_pyarray(py));
             }
             (Some(arrays), Some(kinds), Some(widths))
@@ -298,10 +293,8 @@ impl PyRenderer {
         })()
         .map_err(to_py)?;
         let inner = &self.inner;
-        let (id, notes) = without_gil(py, || match &p {
-            Positions::F32(v) => inner.add_mesh_with(v, f, mode, a),
-            Positions::F64(v) => inner.add_mesh_with(v, f, mode, a),
-        })?;
+        let (id, notes) =
+            without_gil(py, || on_positions!(p.slices(), v => inner.add_mesh_with(v, f, mode, a)))?;
         Ok((id, normal_spelling(py, mode)?, notes))
     }
 
@@ -409,15 +402,14 @@ fn _shadow_truth<'py>(
     }
     let rows: Vec<f64> = m.iter().copied().collect();
     let vp = DMat4::from_cols_slice(&rows).transpose();
-    let p: Vec<DVec3> = match positions("vertices", vertices).map_err(to_py)? {
-        Positions::F32(v) => v.iter().map(|q| DVec3::new(q[0] as f64, q[1] as f64, q[2] as f64)).collect(),
-        Positions::F64(v) => v.iter().map(|q| DVec3::from_array(*q)).collect(),
-    };
+    let p = positions("vertices", vertices).map_err(to_py)?;
+    let p: Vec<DVec3> =
+        on_positions!(p.slices(), v => v.iter().map(|q| DVec3::from_array(q.map(Real::to_f64))).collect());
     let f = faces("faces", faces_arr, p.len()).map_err(to_py)?;
     let tris = Triangles::new(f.iter().map(|t| t.map(|i| p[i as usize])).collect());
     let (w, h) = (width as usize, height as usize);
     let vis = without_gil(py, || Ok(crate::parallel::install(|| shadow_truth(&tris, vp, w, h, toward))))?;
-    Ok(Array2::from_shape_vec((h, w), vis).expect("one value a pixel").into_pyarray(py))
+    Ok(grid_to_numpy(py, (h, w), vis))
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -5,12 +5,29 @@ use numpy::PyArray2;
 use pyo3::prelude::*;
 
 use super::args;
-use super::convert::{faces_to_numpy, rows3_to_numpy};
+use super::convert::{index_rows_to_numpy, rows_to_numpy};
 use super::errors::to_py;
 use super::runtime::detached;
+use crate::error::Result;
 use crate::mesh::shapes;
 
 type MeshOut<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>);
+
+/// The mesh `make` builds from its size (the argument `size_name`), noise and seed, each read
+/// and checked here.
+fn procedural<'py>(
+    py: Python<'py>,
+    (size_name, size): (&str, &Bound<'py, PyAny>),
+    noise: &Bound<'py, PyAny>,
+    seed: &Bound<'py, PyAny>,
+    make: impl FnOnce(i64, f64, u64) -> Result<shapes::Shape> + Send,
+) -> PyResult<MeshOut<'py>> {
+    let size = args::integer(size_name, size).map_err(to_py)?;
+    let noise = args::number("noise", noise).map_err(to_py)?;
+    let seed = args::unsigned("seed", seed).map_err(to_py)?;
+    let (v, f) = detached(py, || make(size, noise, seed))?;
+    Ok((rows_to_numpy(py, v), index_rows_to_numpy(py, f)))
+}
 
 #[pyfunction]
 fn icosphere<'py>(
@@ -19,11 +36,7 @@ fn icosphere<'py>(
     noise: &Bound<'py, PyAny>,
     seed: &Bound<'py, PyAny>,
 ) -> PyResult<MeshOut<'py>> {
-    let subdivisions = args::integer("subdivisions", subdivisions).map_err(to_py)?;
-    let noise = args::number("noise", noise).map_err(to_py)?;
-    let seed = args::unsigned("seed", seed).map_err(to_py)?;
-    let (v, f) = detached(py, || shapes::icosphere(subdivisions, noise, seed))?;
-    Ok((rows3_to_numpy(py, v), faces_to_numpy(py, f)))
+    procedural(py, ("subdivisions", subdivisions), noise, seed, shapes::icosphere)
 }
 
 #[pyfunction]
@@ -33,11 +46,7 @@ fn grid<'py>(
     noise: &Bound<'py, PyAny>,
     seed: &Bound<'py, PyAny>,
 ) -> PyResult<MeshOut<'py>> {
-    let n = args::integer("n", n).map_err(to_py)?;
-    let noise = args::number("noise", noise).map_err(to_py)?;
-    let seed = args::unsigned("seed", seed).map_err(to_py)?;
-    let (v, f) = detached(py, || shapes::grid(n, noise, seed))?;
-    Ok((rows3_to_numpy(py, v), faces_to_numpy(py, f)))
+    procedural(py, ("n", n), noise, seed, shapes::grid)
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -6,9 +6,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::args;
-use super::convert::{rows3_to_numpy, vertex_mask};
+use super::convert::{vertex_mask, Positions, PositionsRef};
 use super::errors::to_py;
-use super::mesh_input::{MeshInput, PositionsRef};
+use super::mesh_input::MeshInput;
 use crate::error::{Error, Result};
 use crate::smooth::denoise::{self, Filter};
 use crate::smooth::{self, Args};
@@ -86,12 +86,6 @@ fn plan(method: &str, o: &Options<'_, '_>) -> Result<Run> {
     Ok(run)
 }
 
-/// Smoothed positions, in the input's precision.
-enum Smoothed {
-    F32(Vec<[f32; 3]>),
-    F64(Vec<[f64; 3]>),
-}
-
 #[pyfunction]
 #[pyo3(signature = (method_name, vertices, faces_arr, **options))]
 fn _smooth<'py>(
@@ -121,14 +115,11 @@ fn _smooth<'py>(
             };
         }
         Ok(match p {
-            PositionsRef::F32(v) => Smoothed::F32(each!(v)?),
-            PositionsRef::F64(v) => Smoothed::F64(each!(v)?),
+            PositionsRef::F32(v) => Positions::F32(each!(v)?),
+            PositionsRef::F64(v) => Positions::F64(each!(v)?),
         })
     })?;
-    Ok(match out {
-        Smoothed::F32(v) => rows3_to_numpy(py, v).into_any(),
-        Smoothed::F64(v) => rows3_to_numpy(py, v).into_any(),
-    })
+    Ok(out.into_numpy(py))
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

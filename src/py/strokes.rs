@@ -1,14 +1,13 @@
 //! Python bindings for `crate::render::effects::outlines::pen`: the strokes of a line drawing as
 //! a pen draws them, called by `toonmesh/_strokes.py`.
 
-use numpy::ndarray::Array2;
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{PyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 use rayon::prelude::*;
 
 use super::args;
-use super::convert::{native_order, untyped, vec_to_numpy};
+use super::convert::{dtype_name, float_values, native_order, rows_to_numpy, untyped, vec_to_numpy};
 use super::errors::to_py;
 use super::runtime::detached;
 use crate::error::{Error, Result};
@@ -22,9 +21,9 @@ fn point_array(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 2]>> {
     if a.ndim() != 2 || a.shape()[1] != 2 {
         return Err(Error::invalid(arg, format!("expected shape (K, 2), got {:?}", a.shape())));
     }
-    let x = obj.extract::<PyReadonlyArray2<'_, f64>>().map_err(|_| {
-        Error::wrong_type(arg, format!("dtype must be float64, got {}", super::convert::dtype_name(a)))
-    })?;
+    let x = obj
+        .extract::<PyReadonlyArray2<'_, f64>>()
+        .map_err(|_| Error::wrong_type(arg, format!("dtype must be float64, got {}", dtype_name(a))))?;
     let p: Vec<[f64; 2]> = x.as_array().rows().into_iter().map(|r| [r[0], r[1]]).collect();
     if let Some(i) = p.iter().position(|q| !(q[0].is_finite() && q[1].is_finite())) {
         return Err(Error::invalid(arg, format!("point {i} is not finite: {:?}", p[i])));
@@ -36,20 +35,13 @@ fn point_array(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 2]>> {
 fn width_array(arg: &str, obj: &Bound<'_, PyAny>, n: usize) -> Result<Vec<f64>> {
     let obj = &native_order(obj)?;
     let a = untyped(arg, obj)?;
-    let w: Vec<f64> = if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, f32>>() {
-        x.as_array().iter().map(|&v| v as f64).collect()
-    } else if let Ok(x) = obj.extract::<PyReadonlyArray1<'_, f64>>() {
-        x.as_array().to_vec()
-    } else {
-        return Err(Error::wrong_type(
+    let w = (a.ndim() == 1).then(|| float_values(obj)).flatten().ok_or_else(|| {
+        let (dtype, shape) = (dtype_name(a), a.shape());
+        Error::wrong_type(
             arg,
-            format!(
-                "expected a 1-D float32 or float64 array, got dtype {} and shape {:?}",
-                super::convert::dtype_name(a),
-                a.shape()
-            ),
-        ));
-    };
+            format!("expected a 1-D float32 or float64 array, got dtype {dtype} and shape {shape:?}"),
+        )
+    })?;
     if w.len() != n {
         return Err(Error::invalid(arg, format!("expected one width per point ({n}), got {}", w.len())));
     }
@@ -65,11 +57,6 @@ fn items<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Vec<Bound<'py, PyAny
         .map_err(|_| Error::wrong_type(arg, format!("expected a list, got {}", args::type_name(obj))))?
         .map(|item| item.map_err(|e| Error::invalid(arg, e.to_string())))
         .collect()
-}
-
-fn rows2_to_numpy<'py>(py: Python<'py>, p: Vec<[f64; 2]>) -> Bound<'py, PyArray2<f64>> {
-    let n = p.len();
-    Array2::from_shape_vec((n, 2), p.into_iter().flatten().collect()).expect("length is 2n").into_pyarray(py)
 }
 
 /// Each of `lines` as the SVG draws it (`pen::drawn`): the points drawn and which of the line's
@@ -112,7 +99,7 @@ fn _pen_strokes<'py>(
     })?;
     let out = drawn.into_iter().map(|(p, kept)| {
         let kept: Vec<i64> = kept.into_iter().map(|i| i as i64).collect();
-        PyTuple::new(py, [rows2_to_numpy(py, p).into_any(), vec_to_numpy(py, kept).into_any()])
+        PyTuple::new(py, [rows_to_numpy(py, p).into_any(), vec_to_numpy(py, kept).into_any()])
     });
     PyList::new(py, out.collect::<PyResult<Vec<_>>>()?)
 }
