@@ -95,7 +95,7 @@ def settings_class(cls: Any) -> str:
     d = cls.describe()
     name = d["class"]
     fields = "; ".join(f"{f['name']}: {f['help']}" for f in d["fields"])
-    lines = ["@final", f"class {name}:", *docstring(f"{d['help']} Fields: {fields}.", "    ")]
+    lines = ["@final", f"class {name}(_Settings):", *docstring(f"{d['help']} Fields: {fields}.", "    ")]
     for c in d["constructors"]:
         sig = signature(c["params"], c["positional"], c["required"], "cls" if not c["name"] else "")
         if c["name"]:
@@ -108,13 +108,16 @@ def settings_class(cls: Any) -> str:
     changes = [f for f in d["fields"] if not f["fixed"]]
     sig = signature(changes, 0, 0, "self")
     lines.append(f"    def replace({sig}) -> {name}: ...")
-    lines += [
-        "    @staticmethod",
-        "    def describe() -> Dict[str, Any]: ...",
-        "    def __hash__(self) -> int: ...",
-        "    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...",
-    ]
     return "\n".join(lines) + "\n"
+
+
+# What every settings class has besides its fields and constructors (src/py/settings/mod.rs).
+SETTINGS_BASE = """class _Settings:
+    @staticmethod
+    def describe() -> Dict[str, Any]: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, str]]: ...
+"""
 
 
 def render_keywords() -> str:
@@ -133,7 +136,7 @@ def generate() -> str:
     classes = "\n".join(settings_class(getattr(core, c)) for c in CLASSES)
     text = TEMPLATE.read_text()
     assert MARK in text, f"{TEMPLATE} has no {MARK.strip()!r} line"
-    return text.replace(MARK, render_keywords() + "\n" + classes)
+    return text.replace(MARK, render_keywords() + "\n" + SETTINGS_BASE + "\n" + classes)
 
 
 def main(argv: List[str]) -> int:
