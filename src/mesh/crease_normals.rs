@@ -100,7 +100,11 @@ pub fn split_normals<T: Real>(
                     prefetch(&unit, (c[2] / 3) as usize);
                 }
                 let at = buckets.start[v] as usize - base..buckets.start[v + 1] as usize - base;
-                fans[k] = scratch.group(v as u32, ring(v), &unit, test, &mut fan[at]);
+                // a closed fan is grouped by walking around it, any other by sorting
+                fans[k] = match group_closed_fan(v as u32, ring(v), &unit, test, &mut fan[at.clone()]) {
+                    Some(count) => count,
+                    None => scratch.group_any(v as u32, ring(v), &unit, test, &mut fan[at]),
+                };
             }
         });
 
@@ -194,24 +198,9 @@ struct FanScratch {
 const NO_FAN: u32 = u32::MAX;
 
 impl FanScratch {
-    /// Groups v's corners into fans: writes each corner's fan (numbered by first corner) into
-    /// `fan` and returns how many there are.
-    fn group(
-        &mut self,
-        v: u32,
-        corners: &[RingCorner],
-        unit: &[[f64; 3]],
-        test: &impl HardEdges,
-        fan: &mut [u32],
-    ) -> u32 {
-        match group_closed_fan(v, corners, unit, test, fan) {
-            Some(count) => count,
-            None => self.group_any(v, corners, unit, test, fan),
-        }
-    }
-
-    /// `group` for any fan: the face-edges at v sorted by their other end, so that each edge's
-    /// face-edges are a run.
+    /// Groups v's corners into fans, for any fan: writes each corner's fan (numbered by first
+    /// corner) into `fan` and returns how many there are. The face-edges at v are sorted by
+    /// their other end, so that each edge's face-edges are a run.
     fn group_any(
         &mut self,
         v: u32,
@@ -245,7 +234,7 @@ impl FanScratch {
     }
 }
 
-/// `FanScratch::group` for a closed, consistently oriented fan of up to 8 corners (most
+/// `FanScratch::group_any` for a closed, consistently oriented fan of up to 8 corners (most
 /// vertices of most meshes): each edge (v, u) then has exactly two face-edges, v -> u from the
 /// corner whose next vertex is u and u -> v from the one whose previous vertex is u, so the
 /// corners sorted by next and by previous vertex pair up edge by edge (as `Adjacency` finds

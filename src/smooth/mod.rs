@@ -127,15 +127,13 @@ pub fn smooth_cancellable<T: Real>(
     if plan.iterations == 0 {
         return Ok(x0.to_vec());
     }
-    let out = match range::Pow2::to_fit(x0, largest) {
-        None => smooth_welded_or_not(x0, faces, plan, pinned, cancel, None)?,
-        Some(s) => {
-            let scaled = s.scale(x0);
-            let mut out = smooth_welded_or_not(&scaled, faces, plan, pinned, cancel, Some(s))?;
-            s.restore(x0, &scaled, &mut out);
-            out
-        }
-    };
+    // welded first if the plan says so; `scale` serves the one rule stated in absolute units
+    // (trimesh's distance floor)
+    let out = range::at_fitted_scale(x0, largest, |x, scale| {
+        on_welded(x, faces, pinned, plan.weld, |x, f, pinned| {
+            smooth_any_order(x, f, plan, pinned, cancel, scale)
+        })
+    })?;
     if may_grow(plan) && !range::all_finite(&out) {
         return Err(overflow_error::<T>(x0, plan));
     }
@@ -176,21 +174,6 @@ fn overflow_error<T: Real>(x0: &[Vec3<T>], plan: &Plan) -> Error {
             ),
         )
     }
-}
-
-/// `x0` smoothed, welded first if the plan says so. `scale` is the power of two `x0` was scaled
-/// by, if any, for the one rule stated in absolute units (trimesh's distance floor).
-fn smooth_welded_or_not<T: Real>(
-    x0: &[Vec3<T>],
-    faces: &[[u32; 3]],
-    plan: &Plan,
-    pinned: Option<&[bool]>,
-    cancel: &Cancel,
-    scale: Option<range::Pow2>,
-) -> Result<Vec<Vec3<T>>> {
-    on_welded(x0, faces, pinned, plan.weld, |x, f, pinned| {
-        smooth_any_order(x, f, plan, pinned, cancel, scale)
-    })
 }
 
 /// `x0` smoothed in the vertex order that suits it best: its vertices are its vertices, welded

@@ -12,6 +12,7 @@
 
 use rayon::prelude::*;
 
+use crate::error::Result;
 use crate::real::{Real, Vec3};
 
 /// Largest coordinates below or above these are rescaled.
@@ -106,6 +107,20 @@ impl Pow2 {
             *o = if *o == *s { *x } else { o.map(|c| T::from_f64(self.apply(c.to_f64(), -1))) };
         });
     }
+}
+
+/// `smooth` run on `x` brought into range (see `Pow2::to_fit`, which takes `largest`), its result
+/// back at `x`'s scale; `smooth` is told the scale it runs at, if any.
+pub fn at_fitted_scale<T: Real>(
+    x: &[Vec3<T>],
+    largest: Option<f64>,
+    smooth: impl FnOnce(&[Vec3<T>], Option<Pow2>) -> Result<Vec<Vec3<T>>>,
+) -> Result<Vec<Vec3<T>>> {
+    let Some(s) = Pow2::to_fit(x, largest) else { return smooth(x, None) };
+    let scaled = s.scale(x);
+    let mut out = smooth(&scaled, Some(s))?;
+    s.restore(x, &scaled, &mut out);
+    Ok(out)
 }
 
 /// Whether every coordinate is finite, in parallel.

@@ -37,15 +37,9 @@ pub fn denoise<T: Real>(
     if opts.vertex_iterations == 0 {
         return Ok(x0.to_vec());
     }
-    let out = match range::Pow2::to_fit(x0, largest) {
-        None => welded_or_not(x0, faces, opts, pinned, cancel)?,
-        Some(s) => {
-            let scaled = s.scale(x0);
-            let mut out = welded_or_not(&scaled, faces, opts, pinned, cancel)?;
-            s.restore(x0, &scaled, &mut out);
-            out
-        }
-    };
+    let out = range::at_fitted_scale(x0, largest, |x, _| {
+        on_welded(x, faces, pinned, opts.weld, |x, f, pinned| denoise_mesh(x, f, opts, pinned, cancel))
+    })?;
     if !range::all_finite(&out) {
         return Err(Error::invalid(
             "vertices",
@@ -53,16 +47,6 @@ pub fn denoise<T: Real>(
         ));
     }
     Ok(out)
-}
-
-fn welded_or_not<T: Real>(
-    x0: &[Vec3<T>],
-    faces: &[[u32; 3]],
-    opts: &Options,
-    pinned: Option<&[bool]>,
-    cancel: &Cancel,
-) -> Result<Vec<Vec3<T>>> {
-    on_welded(x0, faces, pinned, opts.weld, |x, f, pinned| denoise_mesh(x, f, opts, pinned, cancel))
 }
 
 fn denoise_mesh<T: Real>(
