@@ -3,8 +3,9 @@
 
 use std::sync::OnceLock;
 
+use numpy::ndarray::Dimension;
 use numpy::{
-    PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArray,
+    PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArray,
     PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
@@ -15,7 +16,6 @@ use super::convert::{
     by_dtype, grid_to_numpy, index_rows_to_numpy, indices_to_numpy, native_order, on_positions, positions,
     rows_to_numpy, vec_to_numpy,
 };
-use super::errors::to_py;
 use super::mesh_input::MeshInput;
 use super::runtime::{detached, detached_cancellable};
 use crate::cancel::Cancel;
@@ -82,9 +82,9 @@ fn _feature_edges<'py>(
     crease_angle: &Bound<'py, PyAny>,
     weld: &Bound<'py, PyAny>,
 ) -> PyResult<FeatureOut<'py>> {
-    let crease_angle = crease_angle_of(crease_angle).map_err(to_py)?;
-    let weld = args::flag("weld", weld).map_err(to_py)?;
-    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let crease_angle = crease_angle_of(crease_angle)?;
+    let weld = args::flag("weld", weld)?;
+    let mesh = MeshInput::read(vertices, faces)?;
     let (fe, degenerate) =
         mesh.run(py, faces, |p, f, _| on_positions!(p, v => find_feature_edges(v, f, crease_angle, weld)))?;
     Ok(feature_to_numpy(py, fe, degenerate))
@@ -108,9 +108,8 @@ fn _curvature<'py>(
     faces: &Bound<'py, PyAny>,
     smoothing: &Bound<'py, PyAny>,
 ) -> PyResult<CurvatureOut<'py>> {
-    let smoothing =
-        args::number("smoothing", smoothing).and_then(|s| check_smoothing("smoothing", s)).map_err(to_py)?;
-    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let smoothing = args::number("smoothing", smoothing).and_then(|s| check_smoothing("smoothing", s))?;
+    let mesh = MeshInput::read(vertices, faces)?;
     let c = mesh.run(py, faces, |p, f, cancel| on_positions!(p, v => curvature(v, f, smoothing, cancel)))?;
     Ok((
         vec_to_numpy(py, c.k1),
@@ -178,7 +177,7 @@ enum Lines {
 
 impl Lines {
     /// Edges as (K, 2) int64; polylines as their flat (P, 3) points and int64 line starts.
-    fn into_py(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+    fn into_python(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
         match self {
             Lines::Edges(e) => Ok(index_rows_to_numpy(py, e).into_any()),
             Lines::Polylines(l) => {
@@ -204,16 +203,16 @@ fn _view_lines<'py>(
     threshold: Option<&Bound<'py, PyAny>>,
     smoothing: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let (query, view) = Query::read(what, (eye, direction), threshold, smoothing).map_err(to_py)?;
-    let weld = args::flag("weld", weld).map_err(to_py)?;
-    let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+    let (query, view) = Query::read(what, (eye, direction), threshold, smoothing)?;
+    let weld = args::flag("weld", weld)?;
+    let mesh = MeshInput::read(vertices, faces)?;
     let lines = mesh.run(py, faces, |p, f, cancel| match query {
         Query::Silhouette => {
             on_positions!(p, v => EdgeIndex::build(v, f, weld)?.silhouette(view)).map(Lines::Edges)
         }
         _ => query.trace(&on_positions!(p, v => ContourMesh::build(v, f, weld)), view, cancel),
     })?;
-    lines.into_py(py)
+    lines.into_python(py)
 }
 
 /// The once-per-mesh part of outline finding; immutable, so one index serves many threads.
@@ -243,8 +242,8 @@ impl PyEdgeIndex {
         faces: &Bound<'_, PyAny>,
         weld: &Bound<'_, PyAny>,
     ) -> PyResult<Self> {
-        let weld = args::flag("weld", weld).map_err(to_py)?;
-        let mesh = MeshInput::read(vertices, faces).map_err(to_py)?;
+        let weld = args::flag("weld", weld)?;
+        let mesh = MeshInput::read(vertices, faces)?;
         let (inner, faces) = mesh.run(
             py,
             faces,
@@ -265,12 +264,12 @@ impl PyEdgeIndex {
         threshold: Option<&Bound<'py, PyAny>>,
         smoothing: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let (query, view) = Query::read(what, (eye, direction), threshold, smoothing).map_err(to_py)?;
+        let (query, view) = Query::read(what, (eye, direction), threshold, smoothing)?;
         let lines = detached_cancellable(py, |cancel| match query {
             Query::Silhouette => self.inner.silhouette(view).map(Lines::Edges),
             _ => query.trace(self.contour_mesh(), view, cancel),
         })?;
-        lines.into_py(py)
+        lines.into_python(py)
     }
 
     /// The outline set of one view: silhouettes, boundaries, creases and non-manifold edges,
@@ -285,9 +284,9 @@ impl PyEdgeIndex {
         direction: Option<&Bound<'py, PyAny>>,
         kinds: &Bound<'py, PyAny>,
     ) -> PyResult<(Pairs<'py>, Option<Bound<'py, PyArray1<i8>>>)> {
-        let crease_angle = crease_angle_of(crease_angle).map_err(to_py)?;
-        let view = view_of(eye, direction).map_err(to_py)?;
-        let with_kinds = args::flag("kinds", kinds).map_err(to_py)?;
+        let crease_angle = crease_angle_of(crease_angle)?;
+        let view = view_of(eye, direction)?;
+        let with_kinds = args::flag("kinds", kinds)?;
         let (inner, statics) = (&self.inner, &self.statics);
         let all = detached(py, || {
             let s = statics.at(crease_angle, 0.0, 180.0, || inner.feature_edges(crease_angle))?;
@@ -302,7 +301,7 @@ impl PyEdgeIndex {
         py: Python<'py>,
         crease_angle: &Bound<'py, PyAny>,
     ) -> PyResult<FeatureOut<'py>> {
-        let crease_angle = crease_angle_of(crease_angle).map_err(to_py)?;
+        let crease_angle = crease_angle_of(crease_angle)?;
         let inner = &self.inner;
         let (fe, degenerate) =
             detached(py, || Ok((inner.feature_edges(crease_angle)?, inner.degenerate_faces())))?;
@@ -365,7 +364,7 @@ fn _chains<'py>(
     py: Python<'py>,
     edges: &Bound<'py, PyAny>,
 ) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<i64>>)> {
-    let e = read_pairs("edges", edges).map_err(to_py)?;
+    let e = read_pairs("edges", edges)?;
     let (flat, offsets) = detached(py, || Ok(chain_edges(&e)))?;
     Ok((indices_to_numpy(py, flat), indices_to_numpy(py, offsets)))
 }
@@ -373,7 +372,18 @@ fn _chains<'py>(
 /// The number of `vertices`, checked as every mesh function checks them.
 #[pyfunction]
 fn _vertex_count(vertices: &Bound<'_, PyAny>) -> PyResult<usize> {
-    Ok(positions("vertices", vertices).map_err(to_py)?.len())
+    Ok(positions("vertices", vertices)?.len())
+}
+
+/// The values of an array that the Python wrapper made C-contiguous (`arg` in errors).
+fn c_contiguous<'a, T: numpy::Element, D: Dimension>(
+    arg: &str,
+    a: &'a PyReadonlyArray<'_, T, D>,
+) -> Result<&'a [T]> {
+    if !a.is_c_contiguous() {
+        return Err(Error::invalid(arg, "must be C-contiguous (the Python wrapper makes it so)"));
+    }
+    a.as_slice().map_err(|_| Error::Internal(format!("{arg} is not C-contiguous")))
 }
 
 fn sobel_typed<'py, T: Real + numpy::Element>(
@@ -383,11 +393,7 @@ fn sobel_typed<'py, T: Real + numpy::Element>(
     convention: Convention,
 ) -> PyResult<Bound<'py, PyArray2<T>>> {
     let (h, w) = image.as_array().dim();
-    if !image.is_c_contiguous() {
-        return Err(to_py(Error::invalid("image", "must be C-contiguous (the Python wrapper makes it so)")));
-    }
-    let data =
-        image.as_slice().map_err(|_| to_py(Error::Internal("sobel: image is not C-contiguous".into())))?;
+    let data = c_contiguous("image", &image)?;
     // NumPy's allocator asks the kernel for huge pages on large arrays; a Vec here would pay
     // one page fault per 4 KiB of output, which costs as much as the filter itself.
     // SAFETY: every element is written by `sobel` before the array is returned (on error it is
@@ -395,9 +401,7 @@ fn sobel_typed<'py, T: Real + numpy::Element>(
     let result = unsafe { PyArray2::<T>::new(py, [h, w], false) };
     {
         let mut rw = result.readwrite();
-        let out = rw
-            .as_slice_mut()
-            .map_err(|_| to_py(Error::Internal("sobel: new array not contiguous".into())))?;
+        let out = rw.as_slice_mut().map_err(|_| Error::Internal("sobel: new array not contiguous".into()))?;
         detached(py, || sobel(data, h, w, out, output, convention))?;
     }
     Ok(result)
@@ -411,12 +415,11 @@ fn _sobel<'py>(
     output: &str,
     convention: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let output = Output::parse(output).map_err(to_py)?;
-    let convention =
-        args::text("convention", convention).and_then(|c| Convention::parse(&c)).map_err(to_py)?;
-    let image = &native_order(image).map_err(to_py)?;
+    let output = Output::parse(output)?;
+    let convention = args::text("convention", convention).and_then(|c| Convention::parse(&c))?;
+    let image = &native_order(image)?;
     by_dtype!(image, PyReadonlyArray2<f32, f64>, |x| sobel_typed(py, x, output, convention).map(Bound::into_any))
-        .unwrap_or_else(|| Err(to_py(Error::wrong_type("image", "expected a 2-D float32 or float64 array"))))
+        .unwrap_or_else(|| Err(Error::wrong_type("image", "expected a 2-D float32 or float64 array").into()))
 }
 
 type Edges<'py> = (Bound<'py, PyAny>, Bound<'py, PyArray2<bool>>);
@@ -428,11 +431,7 @@ fn edges_typed<'py, T: Real + numpy::Element>(
     threshold: f64,
 ) -> PyResult<Edges<'py>> {
     let (h, w, c) = buffer.as_array().dim();
-    if !buffer.is_c_contiguous() {
-        return Err(to_py(Error::invalid(name, "must be C-contiguous (the Python wrapper makes it so)")));
-    }
-    let data =
-        buffer.as_slice().map_err(|_| to_py(Error::Internal(format!("{name} is not C-contiguous"))))?;
+    let data = c_contiguous(name, &buffer)?;
     let arg = format!("{name}_threshold");
     let (gradient, mask) = detached(py, || {
         let g = paper_gradient(data, h, w, c)?;
@@ -452,9 +451,9 @@ fn _paper_edges<'py>(
     buffer: &Bound<'py, PyAny>,
     threshold: &Bound<'py, PyAny>,
 ) -> PyResult<Edges<'py>> {
-    let threshold = args::number(&format!("{name}_threshold"), threshold).map_err(to_py)?;
+    let threshold = args::number(&format!("{name}_threshold"), threshold)?;
     by_dtype!(buffer, PyReadonlyArray3<f32, f64>, |x| edges_typed(py, name, x, threshold))
-        .unwrap_or_else(|| Err(to_py(Error::wrong_type(name, "expected a 3-D float32 or float64 array"))))
+        .unwrap_or_else(|| Err(Error::wrong_type(name, "expected a 3-D float32 or float64 array").into()))
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

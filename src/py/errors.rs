@@ -33,6 +33,12 @@ pub fn to_py(e: Error) -> PyErr {
     }
 }
 
+impl From<Error> for PyErr {
+    fn from(e: Error) -> PyErr {
+        to_py(e)
+    }
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add("ConvergenceError", py.get_type::<ConvergenceError>())?;

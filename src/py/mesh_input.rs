@@ -7,7 +7,6 @@ use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use super::convert::{faces, native_order, positions, Positions, PositionsRef};
-use super::errors::to_py;
 use super::runtime::detached_cancellable;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
@@ -140,9 +139,12 @@ impl<'py> MeshInput<'py> {
         match outcome {
             Some(r) => Ok(r),
             // Some index is out of range: let the general reader say which one.
-            None => Err(to_py(faces("faces", faces_obj, n).err().unwrap_or_else(|| {
-                Error::Internal("faces: rejected by the fast reader but not by the general one".into())
-            }))),
+            None => Err(faces("faces", faces_obj, n)
+                .err()
+                .unwrap_or_else(|| {
+                    Error::Internal("faces: rejected by the fast reader but not by the general one".into())
+                })
+                .into()),
         }
     }
 }

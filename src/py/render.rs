@@ -91,14 +91,14 @@ fn normal_spelling(py: Python<'_>, mode: NormalMode) -> PyResult<Bound<'_, PyAny
 /// _normal_mode(normals) -> str | (str, float): `normals` checked, in its shortest spelling.
 #[pyfunction]
 fn _normal_mode<'py>(py: Python<'py>, normals: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-    normal_spelling(py, normal_mode(normals).map_err(to_py)?)
+    normal_spelling(py, normal_mode(normals)?)
 }
 
 /// _transform(transform) -> (4, 4) float64: a mesh's transform checked (see `RenderOptions`).
 #[pyfunction]
 fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-    let t = self::transform("transform", transform).map_err(to_py)?;
-    crate::render::scene::check_transform("transform", &t).map_err(to_py)?;
+    let t = self::transform("transform", transform)?;
+    crate::render::scene::check_transform("transform", &t)?;
     Ok(matrix(py, t))
 }
 
@@ -249,8 +249,8 @@ impl PyRenderer {
     #[new]
     #[pyo3(signature = (backend = None))]
     fn new(py: Python<'_>, backend: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-        let name = backend.map(|b| text("backend", b)).transpose().map_err(to_py)?;
-        let choice = BackendChoice::resolve(name.as_deref()).map_err(to_py)?;
+        let name = backend.map(|b| text("backend", b)).transpose()?;
+        let choice = BackendChoice::resolve(name.as_deref())?;
         let inner = without_gil(py, || Renderer::new(choice))?;
         Ok(PyRenderer { inner })
     }
@@ -283,15 +283,10 @@ impl PyRenderer {
         texture_wrap: Option<&Bound<'py, PyAny>>,
         alpha_cutoff: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<(u64, Bound<'py, PyAny>, Vec<String>)> {
-        let (mode, p, f, a) = (|| {
-            let mode = normal_mode(normals)?;
-            let p = positions("vertices", vertices)?;
-            let f = self::faces("faces", faces, p.len())?;
-            let a =
-                albedo(vertex_colors, face_colors, uv, texture, texture_filter, texture_wrap, alpha_cutoff)?;
-            Ok((mode, p, f, a))
-        })()
-        .map_err(to_py)?;
+        let mode = normal_mode(normals)?;
+        let p = positions("vertices", vertices)?;
+        let f = self::faces("faces", faces, p.len())?;
+        let a = albedo(vertex_colors, face_colors, uv, texture, texture_filter, texture_wrap, alpha_cutoff)?;
         let inner = &self.inner;
         let (id, notes) =
             without_gil(py, || on_positions!(p.slices(), v => inner.add_mesh_with(v, f, mode, a)))?;
@@ -310,8 +305,8 @@ impl PyRenderer {
         options: &PyRenderOptions,
     ) -> PyResult<Bound<'py, PyDict>> {
         let o = &options.inner;
-        let scene = o.scene(&mesh_specs(items).map_err(to_py)?);
-        let checked = self.inner.check(scene, o.frame).map_err(to_py)?;
+        let scene = o.scene(&mesh_specs(items)?);
+        let checked = self.inner.check(scene, o.frame)?;
         let images = Images::allocate(py, &o.frame, None);
         let buffers = images.buffers(1).pop().expect("one view");
         let inner = &self.inner;
@@ -328,14 +323,10 @@ impl PyRenderer {
         options: &PyRenderOptions,
     ) -> PyResult<(Bound<'py, PyDict>, Vec<Bound<'py, PyDict>>)> {
         let o = &options.inner;
-        let (cams, scene) = (|| {
-            let cams = each(cameras, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", |c| {
-                c.cast::<PyCamera>().ok().map(|c| c.get().inner)
-            })?;
-            let scene = o.scene(&mesh_specs(items)?);
-            Ok((cams, self.inner.check(scene, o.frame)?))
-        })()
-        .map_err(to_py)?;
+        let cams = each(cameras, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", |c| {
+            c.cast::<PyCamera>().ok().map(|c| c.get().inner)
+        })?;
+        let scene = self.inner.check(o.scene(&mesh_specs(items)?), o.frame)?;
         let images = Images::allocate(py, &o.frame, Some(cams.len()));
         let buffers = images.buffers(cams.len());
         let inner = &self.inner;
@@ -353,8 +344,8 @@ impl PyRenderer {
 #[pyfunction]
 #[pyo3(signature = (backend = None))]
 fn gpu_info<'py>(py: Python<'py>, backend: Option<&Bound<'py, PyAny>>) -> PyResult<Bound<'py, PyDict>> {
-    let name = backend.map(|b| text("backend", b)).transpose().map_err(to_py)?;
-    let choice = BackendChoice::resolve(name.as_deref()).map_err(to_py)?;
+    let name = backend.map(|b| text("backend", b)).transpose()?;
+    let choice = BackendChoice::resolve(name.as_deref())?;
     let ctx = without_gil(py, || crate::render::context::context(choice))?;
     info_dict(py, &ctx.info)
 }
@@ -364,10 +355,10 @@ fn gpu_info<'py>(py: Python<'py>, backend: Option<&Bound<'py, PyAny>>) -> PyResu
 fn encode_png_rgba<'py>(py: Python<'py>, color: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyBytes>> {
     let a: PyReadonlyArray3<'py, u8> = color
         .extract()
-        .map_err(|_| to_py(Error::wrong_type("color", "expected a uint8 array of shape (H, W, 4)")))?;
+        .map_err(|_| Error::wrong_type("color", "expected a uint8 array of shape (H, W, 4)"))?;
     let shape = a.shape().to_vec();
     if shape[2] != 4 {
-        return Err(to_py(Error::invalid("color", format!("expected shape (H, W, 4), got {shape:?}"))));
+        return Err(Error::invalid("color", format!("expected shape (H, W, 4), got {shape:?}")).into());
     }
     let pixels: Vec<u8> = a.as_array().iter().copied().collect();
     let png = without_gil(py, || encode_png(shape[1] as u32, shape[0] as u32, &pixels))?;
@@ -391,21 +382,17 @@ fn _shadow_truth<'py>(
 ) -> PyResult<Bound<'py, PyArray2<f32>>> {
     use crate::render::effects::shadows::raycast::{shadow_truth, Triangles};
     use glam::{DMat4, DVec3};
-    let toward =
-        DVec3::from_array(super::args::triple("toward_light", toward_light).map_err(to_py)?).normalize();
+    let toward = DVec3::from_array(super::args::triple("toward_light", toward_light)?).normalize();
     let m = view_proj.as_array();
     if m.shape() != [4, 4] {
-        return Err(to_py(Error::invalid(
-            "view_proj",
-            format!("expected shape (4, 4), got {:?}", m.shape()),
-        )));
+        return Err(Error::invalid("view_proj", format!("expected shape (4, 4), got {:?}", m.shape())).into());
     }
     let rows: Vec<f64> = m.iter().copied().collect();
     let vp = DMat4::from_cols_slice(&rows).transpose();
-    let p = positions("vertices", vertices).map_err(to_py)?;
+    let p = positions("vertices", vertices)?;
     let p: Vec<DVec3> =
         on_positions!(p.slices(), v => v.iter().map(|q| DVec3::from_array(q.map(Real::to_f64))).collect());
-    let f = faces("faces", faces_arr, p.len()).map_err(to_py)?;
+    let f = faces("faces", faces_arr, p.len())?;
     let tris = Triangles::new(f.iter().map(|t| t.map(|i| p[i as usize])).collect());
     let (w, h) = (width as usize, height as usize);
     let vis = without_gil(py, || Ok(crate::parallel::install(|| shadow_truth(&tris, vp, w, h, toward))))?;

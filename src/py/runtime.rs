@@ -104,10 +104,9 @@ pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
 /// ValueError below 0 or above 1024.
 #[pyfunction]
 fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
-    let n = args::integer("n", n).map_err(to_py)?;
+    let n = args::integer("n", n)?;
     let n = usize::try_from(n)
-        .map_err(|_| Error::invalid("n", format!("must be >= 0 (0 restores the default), got {n}")))
-        .map_err(to_py)?;
+        .map_err(|_| Error::invalid("n", format!("must be >= 0 (0 restores the default), got {n}")))?;
     parallel::set_num_threads(n).map_err(to_py)
 }
 

@@ -6,7 +6,6 @@ use pyo3::prelude::*;
 
 use super::args;
 use super::convert::{index_rows_to_numpy, rows_to_numpy};
-use super::errors::to_py;
 use super::runtime::detached;
 use crate::error::Result;
 use crate::mesh::shapes;
@@ -22,9 +21,9 @@ fn procedural<'py>(
     seed: &Bound<'py, PyAny>,
     make: impl FnOnce(i64, f64, u64) -> Result<shapes::Shape> + Send,
 ) -> PyResult<MeshOut<'py>> {
-    let size = args::integer(size_name, size).map_err(to_py)?;
-    let noise = args::number("noise", noise).map_err(to_py)?;
-    let seed = args::unsigned("seed", seed).map_err(to_py)?;
+    let size = args::integer(size_name, size)?;
+    let noise = args::number("noise", noise)?;
+    let seed = args::unsigned("seed", seed)?;
     let (v, f) = detached(py, || make(size, noise, seed))?;
     Ok((rows_to_numpy(py, v), index_rows_to_numpy(py, f)))
 }

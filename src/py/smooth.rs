@@ -7,7 +7,6 @@ use pyo3::types::PyDict;
 
 use super::args;
 use super::convert::{vertex_mask, Positions, PositionsRef};
-use super::errors::to_py;
 use super::mesh_input::MeshInput;
 use crate::error::{Error, Result};
 use crate::smooth::denoise::{self, Filter};
@@ -101,9 +100,9 @@ fn _smooth<'py>(
     // `_as`: {option: the caller's name for it}, for errors
     let names: Vec<(String, String)> = o.given("_as").map_or(Ok(Vec::new()), |d| d.extract())?;
     let rename = |e: Error| names.iter().fold(e, |e, (from, to)| e.renamed(from, to));
-    let run = plan(method_name, &o).map_err(|e| to_py(rename(e)))?;
-    let mesh = MeshInput::read(vertices, faces_arr).map_err(to_py)?;
-    let pin = vertex_mask("pinned", pinned.as_ref(), mesh.n_vertices()).map_err(to_py)?;
+    let run = plan(method_name, &o).map_err(rename)?;
+    let mesh = MeshInput::read(vertices, faces_arr)?;
+    let pin = vertex_mask("pinned", pinned.as_ref(), mesh.n_vertices())?;
     let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
     let out = mesh.run(py, faces_arr, |p, f, cancel| {
         macro_rules! each {

@@ -8,7 +8,6 @@ use rayon::prelude::*;
 
 use super::args;
 use super::convert::{dtype_name, float_values, native_order, rows_to_numpy, untyped, vec_to_numpy};
-use super::errors::to_py;
 use super::runtime::detached;
 use crate::error::{Error, Result};
 use crate::render::effects::outlines::pen::svg::{self, Group, Ink, Stroke};
@@ -69,28 +68,22 @@ fn _pen_strokes<'py>(
     smooth: &Bound<'py, PyAny>,
     simplify: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyList>> {
-    let read = || -> Result<_> {
-        let (line_items, width_items) = (items("lines", lines)?, items("widths", widths)?);
-        if line_items.len() != width_items.len() {
-            return Err(Error::invalid(
-                "widths",
-                format!("expected one entry per line ({}), got {}", line_items.len(), width_items.len()),
-            ));
-        }
-        let strokes = line_items
-            .iter()
-            .zip(&width_items)
-            .enumerate()
-            .map(|(i, (l, w))| {
-                let p = point_array(&format!("lines[{i}]"), l)?;
-                let w =
-                    if w.is_none() { None } else { Some(width_array(&format!("widths[{i}]"), w, p.len())?) };
-                Ok((p, w))
-            })
-            .collect::<Result<Vec<_>>>()?;
-        Ok((strokes, args::number("smooth", smooth)?, args::number("simplify", simplify)?))
-    };
-    let (strokes, smooth, simplify) = read().map_err(to_py)?;
+    let (line_items, width_items) = (items("lines", lines)?, items("widths", widths)?);
+    if line_items.len() != width_items.len() {
+        let reason = format!("expected one entry per line ({}), got {}", line_items.len(), width_items.len());
+        return Err(Error::invalid("widths", reason).into());
+    }
+    let strokes = line_items
+        .iter()
+        .zip(&width_items)
+        .enumerate()
+        .map(|(i, (l, w))| {
+            let p = point_array(&format!("lines[{i}]"), l)?;
+            let w = if w.is_none() { None } else { Some(width_array(&format!("widths[{i}]"), w, p.len())?) };
+            Ok((p, w))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let (smooth, simplify) = (args::number("smooth", smooth)?, args::number("simplify", simplify)?);
     let drawn = detached(py, || {
         strokes
             .par_iter()
@@ -113,11 +106,10 @@ fn _plotter_order<'py>(
     starts: &Bound<'py, PyAny>,
     ends: &Bound<'py, PyAny>,
 ) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<bool>>)> {
-    let (starts, ends) =
-        (point_array("starts", starts).map_err(to_py)?, point_array("ends", ends).map_err(to_py)?);
+    let (starts, ends) = (point_array("starts", starts)?, point_array("ends", ends)?);
     if starts.len() != ends.len() {
         let reason = format!("expected as many as starts ({}), got {}", starts.len(), ends.len());
-        return Err(to_py(Error::invalid("ends", reason)));
+        return Err(Error::invalid("ends", reason).into());
     }
     let drawn = detached(py, || Ok(order::plotter_order(&starts, &ends)))?;
     let (index, reversed): (Vec<i64>, Vec<bool>) = drawn.into_iter().map(|(i, r)| (i as i64, r)).unzip();
@@ -170,19 +162,16 @@ fn _svg_document(
     height: &Bound<'_, PyAny>,
     groups: &Bound<'_, PyAny>,
 ) -> PyResult<String> {
-    let read = || -> Result<_> {
-        let size = |name: &str, obj| {
-            let v = args::integer(name, obj)?;
-            u32::try_from(v).map_err(|_| Error::invalid(name, format!("must be in [0, 2**32), got {v}")))
-        };
-        let groups = items("groups", groups)?
-            .iter()
-            .enumerate()
-            .map(|(i, g)| group(&format!("groups[{i}]"), g))
-            .collect::<Result<Vec<_>>>()?;
-        Ok((size("width", width)?, size("height", height)?, groups))
+    let size = |name: &str, obj| -> Result<u32> {
+        let v = args::integer(name, obj)?;
+        u32::try_from(v).map_err(|_| Error::invalid(name, format!("must be in [0, 2**32), got {v}")))
     };
-    let (width, height, groups) = read().map_err(to_py)?;
+    let groups = items("groups", groups)?
+        .iter()
+        .enumerate()
+        .map(|(i, g)| group(&format!("groups[{i}]"), g))
+        .collect::<Result<Vec<_>>>()?;
+    let (width, height) = (size("width", width)?, size("height", height)?);
     detached(py, || Ok(svg::document(width, height, &groups)))
 }
 

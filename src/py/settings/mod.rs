@@ -13,7 +13,6 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use pyo3::IntoPyObjectExt;
 
-use super::errors::to_py;
 use crate::error::{Error, Result};
 use crate::render::settings::{self as described, parameter, Described, Value};
 
@@ -128,62 +127,51 @@ pub fn make<T: Described>(
     args: &Bound<'_, PyTuple>,
     kwargs: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<T> {
-    (|| {
-        let ctor = described::constructor::<T>(constructor);
-        let title =
-            if ctor.name.is_empty() { T::CLASS.to_string() } else { format!("{}.{}", T::CLASS, ctor.name) };
-        if args.len() > ctor.positional {
-            return Err(Error::wrong_type(
-                "args",
-                format!(
-                    "{title} takes at most {} positional arguments ({} given)",
-                    ctor.positional,
-                    args.len()
-                ),
-            ));
+    let ctor = described::constructor::<T>(constructor);
+    let title =
+        if ctor.name.is_empty() { T::CLASS.to_string() } else { format!("{}.{}", T::CLASS, ctor.name) };
+    if args.len() > ctor.positional {
+        return Err(Error::wrong_type(
+            "args",
+            format!("{title} takes at most {} positional arguments ({} given)", ctor.positional, args.len()),
+        )
+        .into());
+    }
+    let mut given: Vec<(String, Bound<'_, PyAny>)> =
+        ctor.params.iter().zip(args.iter()).map(|(p, a)| (p.to_string(), a)).collect();
+    for (k, v) in kwargs.into_iter().flat_map(|d| d.iter()) {
+        let k: String = k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?;
+        if given.iter().any(|(g, _)| *g == k) {
+            return Err(Error::wrong_type(k, format!("{title} got it twice")).into());
         }
-        let mut given: Vec<(String, Bound<'_, PyAny>)> =
-            ctor.params.iter().zip(args.iter()).map(|(p, a)| (p.to_string(), a)).collect();
-        for (k, v) in kwargs.into_iter().flat_map(|d| d.iter()) {
-            let k: String =
-                k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?;
-            if given.iter().any(|(g, _)| *g == k) {
-                return Err(Error::wrong_type(k, format!("{title} got it twice")));
-            }
-            given.push((k, v));
-        }
-        given.retain(|(_, v)| !v.is_none());
-        let names: Vec<&str> = given.iter().map(|(n, _)| n.as_str()).collect();
-        described::check_arguments::<T>(ctor, &names)?;
-        let values = given
-            .iter()
-            .map(|(n, v)| {
-                let p = parameter::<T>(n).expect("a checked parameter");
-                Ok((p.name, values::from_py(n, p, v)?))
-            })
-            .collect::<Result<_>>()?;
-        T::construct(constructor, values)
-    })()
-    .map_err(to_py)
+        given.push((k, v));
+    }
+    given.retain(|(_, v)| !v.is_none());
+    let names: Vec<&str> = given.iter().map(|(n, _)| n.as_str()).collect();
+    described::check_arguments::<T>(ctor, &names)?;
+    let values = given
+        .iter()
+        .map(|(n, v)| {
+            let p = parameter::<T>(n).expect("a checked parameter");
+            Ok((p.name, values::from_py(n, p, v)?))
+        })
+        .collect::<Result<_>>()?;
+    Ok(T::construct(constructor, values)?)
 }
 
 pub fn replace<T: Described>(value: &T, changes: Option<&Bound<'_, PyDict>>) -> PyResult<T> {
-    (|| {
-        let mut out = Vec::new();
-        for (k, v) in changes.into_iter().flat_map(|d| d.iter()) {
-            let k: String =
-                k.extract().map_err(|_| Error::wrong_type("changes", "keywords must be strings"))?;
-            let field = T::FIELDS.iter().find(|f| f.name == k);
-            let value = match field {
-                Some(f) if !v.is_none() => Some(values::from_py(&k, f, &v)?),
-                _ => None,
-            };
-            // an unknown name is refused by the core, which lists the fields
-            out.push((k, value));
-        }
-        described::replace(value, out)
-    })()
-    .map_err(to_py)
+    let mut out = Vec::new();
+    for (k, v) in changes.into_iter().flat_map(|d| d.iter()) {
+        let k: String = k.extract().map_err(|_| Error::wrong_type("changes", "keywords must be strings"))?;
+        let field = T::FIELDS.iter().find(|f| f.name == k);
+        let value = match field {
+            Some(f) if !v.is_none() => Some(values::from_py(&k, f, &v)?),
+            _ => None,
+        };
+        // an unknown name is refused by the core, which lists the fields
+        out.push((k, value));
+    }
+    Ok(described::replace(value, out)?)
 }
 
 pub fn getattr<'py, T: Described>(py: Python<'py>, value: &T, name: &str) -> PyResult<Bound<'py, PyAny>> {
@@ -237,9 +225,8 @@ fn restore<'py, W: Wraps>(py: Python<'py>, state: &str) -> PyResult<Bound<'py, P
 where
     W: IntoPyObjectExt<'py>,
 {
-    let inner: W::Core =
-        serde_json::from_str(state).map_err(|e| to_py(Error::invalid("state", format!("{e}"))))?;
-    inner.check().map_err(to_py)?;
+    let inner: W::Core = serde_json::from_str(state).map_err(|e| Error::invalid("state", format!("{e}")))?;
+    inner.check()?;
     W::wrap(inner).into_bound_py_any(py)
 }
 
@@ -250,7 +237,7 @@ fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py,
         ($($py:ty),*) => {
             match cls {
                 $(c if c == <<$py as Wraps>::Core as Described>::CLASS => restore::<$py>(py, state),)*
-                other => Err(to_py(Error::invalid("cls", format!("no settings class {other:?}")))),
+                other => Err(Error::invalid("cls", format!("no settings class {other:?}")).into()),
             }
         };
     }
