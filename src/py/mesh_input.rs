@@ -6,23 +6,35 @@
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
-use super::convert::{faces, native_order, positions, Positions, PositionsRef};
+use super::convert::{faces, native_order, on_positions, positions, Positions, PositionsRef};
 use super::runtime::detached_cancellable;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
+use crate::real::Real;
 use crate::smooth::range::largest_if_finite;
 
 /// Vertices and faces as read from Python: borrowed when possible, owned otherwise.
 pub struct MeshInput<'py> {
-    v32: Option<PyReadonlyArray2<'py, f32>>,
-    v64: Option<PyReadonlyArray2<'py, f64>>,
-    owned: Option<Positions>,
-    faces64: Option<PyReadonlyArray2<'py, i64>>,
-    faces32: Option<PyReadonlyArray2<'py, i32>>,
-    owned_faces: Option<Vec<[u32; 3]>>,
+    vertices: VerticesIn<'py>,
+    faces: FacesIn<'py>,
     n_vertices: usize,
     /// The largest absolute coordinate, when the fast path computed it.
     largest: Option<f64>,
+}
+
+/// NumPy's own buffer when it is C-contiguous and finite, else a checked copy.
+enum VerticesIn<'py> {
+    F32(PyReadonlyArray2<'py, f32>),
+    F64(PyReadonlyArray2<'py, f64>),
+    Copied(Positions),
+}
+
+/// NumPy's own int64 or int32 buffer when it is C-contiguous (its indices are checked as they
+/// are converted, in `run`), else a checked copy.
+enum FacesIn<'py> {
+    I64(PyReadonlyArray2<'py, i64>),
+    I32(PyReadonlyArray2<'py, i32>),
+    Checked(Vec<[u32; 3]>),
 }
 
 #[derive(Clone, Copy)]
@@ -44,45 +56,33 @@ fn contiguous_rows3<'py, T: numpy::Element>(obj: &Bound<'py, PyAny>) -> Option<P
     (shape[1] == 3 && shape[0] > 0 && x.is_c_contiguous()).then_some(x)
 }
 
+/// The largest absolute value in `x`, or None if any is not finite.
+fn largest_of<T: Real + numpy::Element>(x: &PyReadonlyArray2<'_, T>) -> Option<f64> {
+    largest_if_finite(x.as_slice().ok()?)
+}
+
 impl<'py> MeshInput<'py> {
     pub fn read(vertices: &Bound<'py, PyAny>, faces_obj: &Bound<'py, PyAny>) -> Result<Self> {
         let (vertices, faces_obj) = (&native_order(vertices)?, &native_order(faces_obj)?);
-        let mut me = MeshInput {
-            v32: contiguous_rows3::<f32>(vertices),
-            v64: None,
-            owned: None,
-            faces64: None,
-            faces32: None,
-            owned_faces: None,
-            n_vertices: 0,
-            largest: None,
-        };
-        if me.v32.is_none() {
-            me.v64 = contiguous_rows3::<f64>(vertices);
-        }
         // One pass checks finiteness and finds the scale (which smoothing needs).
-        me.largest = match (&me.v32, &me.v64) {
-            (Some(x), _) => largest_if_finite(x.as_slice().unwrap_or(&[f32::NAN])),
-            (_, Some(x)) => largest_if_finite(x.as_slice().unwrap_or(&[f64::NAN])),
-            _ => None,
+        let borrowed = match contiguous_rows3::<f32>(vertices) {
+            Some(x) => largest_of(&x).map(|m| (VerticesIn::F32(x), m)),
+            None => contiguous_rows3::<f64>(vertices)
+                .and_then(|x| largest_of(&x).map(|m| (VerticesIn::F64(x), m))),
         };
-        if me.largest.is_some() {
-            me.n_vertices =
-                me.v32.as_ref().map(|x| x.shape()[0]).or(me.v64.as_ref().map(|x| x.shape()[0])).unwrap_or(0);
-        } else {
-            me.v32 = None;
-            me.v64 = None;
-            let p = positions("vertices", vertices)?;
-            me.n_vertices = p.len();
-            me.owned = Some(p);
-        }
-        me.faces64 = contiguous_rows3::<i64>(faces_obj);
-        if me.faces64.is_none() {
-            me.faces32 = contiguous_rows3::<i32>(faces_obj);
-        }
-        if me.faces64.is_none() && me.faces32.is_none() {
-            me.owned_faces = Some(faces("faces", faces_obj, me.n_vertices)?);
-        }
+        let (vertices, largest) = match borrowed {
+            Some((v, m)) => (v, Some(m)),
+            None => (VerticesIn::Copied(positions("vertices", vertices)?), None),
+        };
+        let mut me = MeshInput { vertices, faces: FacesIn::Checked(Vec::new()), n_vertices: 0, largest };
+        me.n_vertices = on_positions!(me.positions(), v => v.len());
+        me.faces = match contiguous_rows3::<i64>(faces_obj) {
+            Some(x) => FacesIn::I64(x),
+            None => match contiguous_rows3::<i32>(faces_obj) {
+                Some(x) => FacesIn::I32(x),
+                None => FacesIn::Checked(faces("faces", faces_obj, me.n_vertices)?),
+            },
+        };
         Ok(me)
     }
 
@@ -96,23 +96,19 @@ impl<'py> MeshInput<'py> {
     }
 
     pub fn positions(&self) -> PositionsRef<'_> {
-        if let Some(x) = &self.v32 {
-            return PositionsRef::F32(rows_of(x.as_slice().expect("checked contiguous")));
+        match &self.vertices {
+            VerticesIn::F32(x) => PositionsRef::F32(rows_of(x.as_slice().expect("checked contiguous"))),
+            VerticesIn::F64(x) => PositionsRef::F64(rows_of(x.as_slice().expect("checked contiguous"))),
+            VerticesIn::Copied(p) => p.slices(),
         }
-        if let Some(x) = &self.v64 {
-            return PositionsRef::F64(rows_of(x.as_slice().expect("checked contiguous")));
-        }
-        self.owned.as_ref().expect("one of the three is set").slices()
     }
 
     fn faces(&self) -> FacesRef<'_> {
-        if let Some(x) = &self.faces64 {
-            return FacesRef::I64(x.as_slice().expect("checked contiguous"));
+        match &self.faces {
+            FacesIn::I64(x) => FacesRef::I64(x.as_slice().expect("checked contiguous")),
+            FacesIn::I32(x) => FacesRef::I32(x.as_slice().expect("checked contiguous")),
+            FacesIn::Checked(f) => FacesRef::Checked(f),
         }
-        if let Some(x) = &self.faces32 {
-            return FacesRef::I32(x.as_slice().expect("checked contiguous"));
-        }
-        FacesRef::Checked(self.owned_faces.as_deref().expect("one of the three is set"))
     }
 
     /// Runs `work` on the mesh with the GIL released, stopping on Ctrl-C when `work` checks its

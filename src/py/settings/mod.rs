@@ -248,20 +248,8 @@ fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py,
 pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     let field = |f: &described::Field, default: Option<Value>| -> PyResult<Bound<'_, PyDict>> {
         let d = PyDict::new(py);
-        let kind = values::kind_to_py(py, &f.kind)?;
         d.set_item("name", f.name)?;
-        d.set_item("kind", kind.get_item(0)?)?;
-        match f.kind {
-            described::Kind::Int { .. } | described::Kind::Float { .. } => {
-                d.set_item("min", kind.get_item(1)?)?;
-                d.set_item("max", kind.get_item(2)?)?;
-            }
-            described::Kind::Choice(_) | described::Kind::Names(_) => {
-                d.set_item("choices", kind.get_item(1)?)?
-            }
-            described::Kind::Setting(_) => d.set_item("class", kind.get_item(1)?)?,
-            _ => {}
-        }
+        values::describe_kind(&d, &f.kind)?;
         d.set_item("optional", f.optional)?;
         d.set_item("fixed", f.fixed)?;
         d.set_item("help", f.help)?;

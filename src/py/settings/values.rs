@@ -3,7 +3,7 @@
 
 use numpy::{PyArrayDescrMethods, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyString, PyTuple};
+use pyo3::types::{PyDict, PyList, PyString};
 use pyo3::IntoPyObjectExt;
 
 use super::{PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyShadows};
@@ -192,24 +192,31 @@ pub fn transform(arg: &str, obj: &Bound<'_, PyAny>) -> Result<[[f64; 4]; 4]> {
     Ok(std::array::from_fn(|i| std::array::from_fn(|j| rows[i][j])))
 }
 
-/// A field's description as Python data: its kind's name and bounds or choices.
-pub fn kind_to_py<'py>(py: Python<'py>, kind: &Kind) -> PyResult<Bound<'py, PyTuple>> {
-    let none = || py.None().into_bound(py);
-    let (name, a, b) = match kind {
-        Kind::Bool => ("bool", none(), none()),
-        Kind::Int { min, max } => ("int", min.into_bound_py_any(py)?, max.into_bound_py_any(py)?),
-        Kind::Float { min, max } => ("float", min.into_bound_py_any(py)?, max.into_bound_py_any(py)?),
-        Kind::Choice(c) => ("choice", PyList::new(py, c.iter())?.into_any(), none()),
-        Kind::Names(c) => ("names", PyList::new(py, c.iter())?.into_any(), none()),
-        Kind::Setting(class) => ("setting", class.into_bound_py_any(py)?, none()),
-        Kind::Color => ("color", none(), none()),
-        Kind::Rgba => ("rgba", none(), none()),
-        Kind::Vec3 => ("vec3", none(), none()),
-        Kind::Floats => ("floats", none(), none()),
-        Kind::Table => ("table", none(), none()),
-        Kind::Matrix => ("matrix", none(), none()),
-        Kind::Style => ("style", none(), none()),
-        Kind::Lights => ("lights", none(), none()),
+/// A field's kind described into `d`: its name ("kind"), then its bounds ("min", "max"),
+/// choices ("choices") or class ("class") where it has them.
+pub fn describe_kind(d: &Bound<'_, PyDict>, kind: &Kind) -> PyResult<()> {
+    let name = match kind {
+        Kind::Bool => "bool",
+        Kind::Int { .. } => "int",
+        Kind::Float { .. } => "float",
+        Kind::Choice(_) => "choice",
+        Kind::Names(_) => "names",
+        Kind::Setting(_) => "setting",
+        Kind::Color => "color",
+        Kind::Rgba => "rgba",
+        Kind::Vec3 => "vec3",
+        Kind::Floats => "floats",
+        Kind::Table => "table",
+        Kind::Matrix => "matrix",
+        Kind::Style => "style",
+        Kind::Lights => "lights",
     };
-    PyTuple::new(py, [name.into_bound_py_any(py)?, a, b])
+    d.set_item("kind", name)?;
+    match *kind {
+        Kind::Int { min, max } => d.set_item("min", min).and_then(|_| d.set_item("max", max)),
+        Kind::Float { min, max } => d.set_item("min", min).and_then(|_| d.set_item("max", max)),
+        Kind::Choice(c) | Kind::Names(c) => d.set_item("choices", PyList::new(d.py(), c.iter())?),
+        Kind::Setting(class) => d.set_item("class", class),
+        _ => Ok(()),
+    }
 }
