@@ -85,17 +85,22 @@ def signature(params: List[Dict[str, Any]], positional: int, required: int, firs
 
 
 def docstring(text: str, indent: str) -> List[str]:
-    lines = textwrap.wrap(text, 96 - len(indent))
+    """`text` as a docstring, each paragraph wrapped to the stub's width."""
+    lines: List[str] = []
+    for paragraph in text.strip().split("\n\n"):
+        if lines:
+            lines.append("")
+        lines += textwrap.wrap(" ".join(paragraph.split()), 96 - len(indent))
     if len(lines) == 1:
         return [f'{indent}"""{lines[0]}"""']
-    return [f'{indent}"""{lines[0]}'] + [indent + line for line in lines[1:]] + [f'{indent}"""']
+    return [f'{indent}"""{lines[0]}'] + [indent + line if line else "" for line in lines[1:]] + [f'{indent}"""']
 
 
 def settings_class(cls: Any) -> str:
     d = cls.describe()
     name = d["class"]
     fields = "; ".join(f"{f['name']}: {f['help']}" for f in d["fields"])
-    lines = ["@final", f"class {name}(_Settings):", *docstring(f"{d['help']} Fields: {fields}.", "    ")]
+    lines = ["@final", f"class {name}(_Settings):", *docstring(f"{d['help']}\n\nFields: {fields}.", "    ")]
     for c in d["constructors"]:
         sig = signature(c["params"], c["positional"], c["required"], "cls" if not c["name"] else "")
         if c["name"]:

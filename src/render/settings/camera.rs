@@ -60,27 +60,27 @@ const CONSTRUCTORS: &[Constructor] = &[
         params: &["direction", "up", "fov_y", "margin", "orthographic"],
         positional: 1,
         required: 0,
-        help: "Frames the scene's bounding sphere from `direction`.",
+        help: include_str!("docs/Camera.fit.md"),
     },
     Constructor {
         name: "look_at",
         params: &["eye", "target", "up", "fov_y", "near", "far"],
         positional: 2,
         required: 1,
-        help: "A perspective camera at `eye` looking at `target`.",
+        help: include_str!("docs/Camera.look_at.md"),
     },
     Constructor {
         name: "orthographic",
         params: &["eye", "target", "up", "height", "near", "far"],
         positional: 2,
         required: 1,
-        help: "An orthographic camera at `eye` looking at `target`.",
+        help: include_str!("docs/Camera.orthographic.md"),
     },
 ];
 
 impl Described for Camera {
     const CLASS: &'static str = "Camera";
-    const HELP: &'static str = "A camera: framed to fit the scene, looking at a point, or orthographic.";
+    const HELP: &'static str = include_str!("docs/Camera.md");
 
     const FIELDS: &'static [Field] = FIELDS;
 

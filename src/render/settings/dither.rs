@@ -21,7 +21,7 @@ const FIELDS: &[Field] = &[
 
 impl Described for Dither {
     const CLASS: &'static str = "Dither";
-    const HELP: &'static str = "Dithering between neighbouring bands of a toon material.";
+    const HELP: &'static str = include_str!("docs/Dither.md");
 
     const FIELDS: &'static [Field] = FIELDS;
 

@@ -31,27 +31,27 @@ const CONSTRUCTORS: &[Constructor] = &[
         params: &["direction", "color", "intensity", "space", "shadows"],
         positional: 1,
         required: 1,
-        help: "Parallel light travelling along `direction`.",
+        help: include_str!("docs/Light.directional.md"),
     },
     Constructor {
         name: "point",
         params: &["position", "color", "intensity", "space"],
         positional: 1,
         required: 1,
-        help: "Light radiating from `position`, without falloff.",
+        help: include_str!("docs/Light.point.md"),
     },
     Constructor {
         name: "key",
         params: &[],
         positional: 0,
         required: 0,
-        help: "The default key light: from the upper left, behind the viewer, moving with the camera.",
+        help: include_str!("docs/Light.key.md"),
     },
 ];
 
 impl Described for Light {
     const CLASS: &'static str = "Light";
-    const HELP: &'static str = "A light: directional or point, in world or camera space.";
+    const HELP: &'static str = include_str!("docs/Light.md");
 
     const FIELDS: &'static [Field] = FIELDS;
 

@@ -15,7 +15,7 @@ const FIELDS: &[Field] = &[
 
 impl Described for LineStyle {
     const CLASS: &'static str = "LineStyle";
-    const HELP: &'static str = "How one kind of ink line is drawn.";
+    const HELP: &'static str = include_str!("docs/LineStyle.md");
 
     const FIELDS: &'static [Field] = FIELDS;
 

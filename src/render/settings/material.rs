@@ -59,14 +59,14 @@ const CONSTRUCTORS: &[Constructor] = &[
         params: &["color", "ambient", "diffuse", "per_vertex"],
         positional: 1,
         required: 0,
-        help: "Plain Lambert: f = max(L.n, 0), no highlight.",
+        help: include_str!("docs/Material.lambert.md"),
     },
     Constructor {
         name: "phong",
         params: &["color", "specular", "shininess", "ambient", "diffuse", "per_vertex"],
         positional: 1,
         required: 0,
-        help: "Plain Phong: f = max(L.n, 0), s = max(R.v, 0)^shininess on lit points.",
+        help: include_str!("docs/Material.phong.md"),
     },
     Constructor {
         name: "thresholded_phong",
@@ -83,28 +83,28 @@ const CONSTRUCTORS: &[Constructor] = &[
         ],
         positional: 1,
         required: 0,
-        help: "Al-Rousan et al.'s toon model: thresholded diffuse and highlight terms.",
+        help: include_str!("docs/Material.thresholded_phong.md"),
     },
     Constructor {
         name: "bands",
         params: &["color", "thresholds", "preset", "values", "per_vertex", "dither"],
         positional: 1,
         required: 0,
-        help: "Borquez and Yepez's toon bands: f = values[number of thresholds <= L.n].",
+        help: include_str!("docs/Material.bands.md"),
     },
     Constructor {
         name: "hatching",
         params: &["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither"],
         positional: 1,
         required: 0,
-        help: "Cross-hatching: the bands' tone picks how many layers of ink strokes cover the paper.",
+        help: include_str!("docs/Material.hatching.md"),
     },
     Constructor {
         name: "lut",
         params: &["table", "color", "per_vertex", "dither"],
         positional: 2,
         required: 0,
-        help: "A lookup table (gradient map) of L.n applied to the colour.",
+        help: include_str!("docs/Material.lut.md"),
     },
 ];
 
@@ -114,7 +114,7 @@ fn hatching(m: &Material) -> Option<&Hatching> {
 
 impl Described for Material {
     const CLASS: &'static str = "Material";
-    const HELP: &'static str = "A shading model with its colour coefficients and per-pixel effects.";
+    const HELP: &'static str = include_str!("docs/Material.md");
 
     const FIELDS: &'static [Field] = FIELDS;
 

@@ -113,8 +113,7 @@ fn in_style(v: Value, common: LineStyle) -> Value {
 
 impl Described for Outlines {
     const CLASS: &'static str = "Outlines";
-    const HELP: &'static str =
-        "Ink outlines for a render: lines found on the mesh and edges found in the image.";
+    const HELP: &'static str = include_str!("docs/Outlines.md");
 
     const FIELDS: &'static [Field] = FIELDS;
 

@@ -29,7 +29,7 @@ const FIELDS: &[Field] = &[
 
 impl Described for Shadows {
     const CLASS: &'static str = "Shadows";
-    const HELP: &'static str = "Shadow settings of a directional light.";
+    const HELP: &'static str = include_str!("docs/Shadows.md");
 
     const FIELDS: &'static [Field] = FIELDS;
 
