@@ -8,6 +8,7 @@
 
 use rayon::prelude::*;
 
+use crate::error::Result;
 use crate::mesh::Bounds;
 use crate::real::{Real, Vec3};
 
@@ -110,6 +111,23 @@ impl Reordering {
     pub fn restore<T: Copy + Send + Sync>(&self, y: Vec<T>) -> Vec<T> {
         self.inverse.par_iter().map(|&n| y[n as usize]).collect()
     }
+}
+
+/// New positions from `work` on the mesh in the vertex order that suits it best: spatial when
+/// the mesh is large and its neighbours scattered, given back in the caller's order; as it is
+/// otherwise.
+pub fn on_best_order<T: Real>(
+    x0: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    pinned: Option<&[bool]>,
+    work: impl FnOnce(&[Vec3<T>], &[[u32; 3]], Option<&[bool]>) -> Result<Vec<Vec3<T>>>,
+) -> Result<Vec<Vec3<T>>> {
+    if x0.len() < MIN_VERTICES || !is_scattered(faces) {
+        return work(x0, faces, pinned);
+    }
+    let r = Reordering::spatial(x0);
+    let pinned = pinned.map(|p| r.mask(p));
+    Ok(r.restore(work(&r.positions(x0), &r.faces(faces), pinned.as_deref())?))
 }
 
 #[cfg(test)]

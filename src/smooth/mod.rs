@@ -22,7 +22,7 @@ use rayon::prelude::*;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::huge_pages;
-use crate::mesh::reorder::{self, Reordering};
+use crate::mesh::reorder;
 use crate::mesh::weld::on_welded;
 use crate::mesh::Adjacency;
 use crate::real::{self, Real, Vec3};
@@ -131,7 +131,9 @@ pub fn smooth_cancellable<T: Real>(
     // (trimesh's distance floor)
     let out = range::at_fitted_scale(x0, largest, |x, scale| {
         on_welded(x, faces, pinned, plan.weld, |x, f, pinned| {
-            smooth_any_order(x, f, plan, pinned, cancel, scale)
+            reorder::on_best_order(x, f, pinned, |x, f, pinned| {
+                smooth_in_order(x, f, plan, pinned, cancel, scale)
+            })
         })
     })?;
     if may_grow(plan) && !range::all_finite(&out) {
@@ -174,25 +176,6 @@ fn overflow_error<T: Real>(x0: &[Vec3<T>], plan: &Plan) -> Error {
             ),
         )
     }
-}
-
-/// `x0` smoothed in the vertex order that suits it best: its vertices are its vertices, welded
-/// or not.
-fn smooth_any_order<T: Real>(
-    x0: &[Vec3<T>],
-    faces: &[[u32; 3]],
-    plan: &Plan,
-    pinned: Option<&[bool]>,
-    cancel: &Cancel,
-    scale: Option<range::Pow2>,
-) -> Result<Vec<Vec3<T>>> {
-    if x0.len() < reorder::MIN_VERTICES || !reorder::is_scattered(faces) {
-        return smooth_in_order(x0, faces, plan, pinned, cancel, scale);
-    }
-    let r = Reordering::spatial(x0);
-    let pinned = pinned.map(|p| r.mask(p));
-    let out = smooth_in_order(&r.positions(x0), &r.faces(faces), plan, pinned.as_deref(), cancel, scale)?;
-    Ok(r.restore(out))
 }
 
 fn smooth_in_order<T: Real>(
