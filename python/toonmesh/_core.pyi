@@ -392,13 +392,7 @@ class Renderer:
         vertices: Any,
         faces: Any,
         normals: Union[str, Tuple[str, float]],
-        vertex_colors: Any = ...,
-        face_colors: Any = ...,
-        uv: Any = ...,
-        texture: Any = ...,
-        texture_filter: Optional[str] = ...,
-        texture_wrap: Optional[str] = ...,
-        alpha_cutoff: Optional[float] = ...,
+        **colors: Any,  # vertex_colors, face_colors, uv, texture, texture_filter, texture_wrap, alpha_cutoff
     ) -> Tuple[int, Union[str, Tuple[str, float]], List[str]]: ...
     def remove_mesh(self, mesh: int) -> bool: ...
     def render(self, items: Any, options: RenderOptions) -> Dict[str, Any]: ...

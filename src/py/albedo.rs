@@ -3,6 +3,7 @@
 
 use numpy::{PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 
 use super::args::{number, text};
 use super::convert::{dtype_name, float_values, native_order, untyped};
@@ -92,46 +93,45 @@ fn uv(obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 2]>> {
     Ok(v.chunks_exact(2).map(|c| [c[0] as f32, c[1] as f32]).collect())
 }
 
-/// An optional argument: None when absent or given as None.
-fn given<'a, 'py>(o: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'py, PyAny>> {
-    o.filter(|o| !o.is_none())
-}
+/// The colour keywords of `Renderer.add_mesh`, in the order `albedo` reads them.
+const KEYWORDS: [&str; 7] =
+    ["vertex_colors", "face_colors", "uv", "texture", "texture_filter", "texture_wrap", "alpha_cutoff"];
 
-/// The keywords of `Renderer.add_mesh` about colour, read into an `Albedo` (None: no colour).
-#[allow(clippy::too_many_arguments)]
-pub fn albedo(
-    vertex_colors: Option<&Bound<'_, PyAny>>,
-    face_colors: Option<&Bound<'_, PyAny>>,
-    uv_obj: Option<&Bound<'_, PyAny>>,
-    texture_obj: Option<&Bound<'_, PyAny>>,
-    filter: Option<&Bound<'_, PyAny>>,
-    wrap: Option<&Bound<'_, PyAny>>,
-    alpha_cutoff: Option<&Bound<'_, PyAny>>,
-) -> Result<Option<Albedo>> {
+/// The colour keywords of `Renderer.add_mesh` (`KEYWORDS`; None or absent: not given), read into
+/// an `Albedo` (None: no colour).
+pub fn albedo(keywords: Option<&Bound<'_, PyDict>>) -> Result<Option<Albedo>> {
+    let mut given: [Option<Bound<'_, PyAny>>; 7] = Default::default();
+    for (k, v) in keywords.into_iter().flat_map(|d| d.iter()) {
+        let k = k.to_string();
+        let i = KEYWORDS.iter().position(|n| *n == k);
+        let i = i.ok_or_else(|| Error::wrong_type(&k, "not a keyword of Renderer.add_mesh"))?;
+        given[i] = (!v.is_none()).then_some(v);
+    }
+    let [vertex_colors, face_colors, uv_obj, texture_obj, filter, wrap, alpha_cutoff] = given;
     let sampling = Sampling {
-        filter: given(filter)
-            .map(|f| Filter::parse("texture_filter", &text("texture_filter", f)?))
+        filter: filter
+            .map(|f| Filter::parse("texture_filter", &text("texture_filter", &f)?))
             .transpose()?
             .unwrap_or_default(),
-        wrap: given(wrap)
-            .map(|w| Wrap::parse("texture_wrap", &text("texture_wrap", w)?))
+        wrap: wrap
+            .map(|w| Wrap::parse("texture_wrap", &text("texture_wrap", &w)?))
             .transpose()?
             .unwrap_or_default(),
-        alpha_cutoff: given(alpha_cutoff).map(|c| number("alpha_cutoff", c).map(|c| c as f32)).transpose()?,
+        alpha_cutoff: alpha_cutoff.map(|c| number("alpha_cutoff", &c).map(|c| c as f32)).transpose()?,
     };
     sampling.check()?;
-    let colors = match (given(vertex_colors), given(face_colors)) {
+    let colors = match (vertex_colors, face_colors) {
         (Some(_), Some(_)) => {
             return Err(Error::invalid("vertex_colors, face_colors", "give one of them, not both"))
         }
-        (Some(c), None) => Some(Colors::Vertex(colors("vertex_colors", c, "(N, 3) or (N, 4)")?)),
-        (None, Some(c)) => Some(Colors::Face(colors("face_colors", c, "(M, 3) or (M, 4)")?)),
+        (Some(c), None) => Some(Colors::Vertex(colors("vertex_colors", &c, "(N, 3) or (N, 4)")?)),
+        (None, Some(c)) => Some(Colors::Face(colors("face_colors", &c, "(M, 3) or (M, 4)")?)),
         (None, None) => None,
     };
     let a = Albedo {
         colors,
-        uv: given(uv_obj).map(uv).transpose()?,
-        texture: given(texture_obj).map(texture).transpose()?,
+        uv: uv_obj.as_ref().map(uv).transpose()?,
+        texture: texture_obj.as_ref().map(texture).transpose()?,
         sampling,
     };
     Ok((a.is_used() || a.uv.is_some()).then_some(a))

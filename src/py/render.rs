@@ -265,28 +265,21 @@ impl PyRenderer {
         self.inner.mesh_count()
     }
 
-    /// (mesh id, the normal mode in its shortest spelling, notes to warn about).
-    #[pyo3(signature = (vertices, faces, normals, vertex_colors = None, face_colors = None, uv = None,
-        texture = None, texture_filter = None, texture_wrap = None, alpha_cutoff = None))]
-    #[allow(clippy::too_many_arguments)]
+    /// (mesh id, the normal mode in its shortest spelling, notes to warn about); `colors`: the
+    /// colour keywords (see `albedo`).
+    #[pyo3(signature = (vertices, faces, normals, **colors))]
     fn add_mesh<'py>(
         &self,
         py: Python<'py>,
         vertices: &Bound<'py, PyAny>,
         faces: &Bound<'py, PyAny>,
         normals: &Bound<'py, PyAny>,
-        vertex_colors: Option<&Bound<'py, PyAny>>,
-        face_colors: Option<&Bound<'py, PyAny>>,
-        uv: Option<&Bound<'py, PyAny>>,
-        texture: Option<&Bound<'py, PyAny>>,
-        texture_filter: Option<&Bound<'py, PyAny>>,
-        texture_wrap: Option<&Bound<'py, PyAny>>,
-        alpha_cutoff: Option<&Bound<'py, PyAny>>,
+        colors: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<(u64, Bound<'py, PyAny>, Vec<String>)> {
         let mode = normal_mode(normals)?;
         let p = positions("vertices", vertices)?;
         let f = self::faces("faces", faces, p.len())?;
-        let a = albedo(vertex_colors, face_colors, uv, texture, texture_filter, texture_wrap, alpha_cutoff)?;
+        let a = albedo(colors)?;
         let inner = &self.inner;
         let (id, notes) =
             without_gil(py, || on_positions!(p.slices(), v => inner.add_mesh_with(v, f, mode, a)))?;
