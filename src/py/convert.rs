@@ -10,6 +10,7 @@ use pyo3::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::mesh::{check_faces, check_positions, Faces};
+use crate::real::Real;
 
 /// `$body` on the first of the element types `$t` that `$obj` reads as, bound to `$x` as a
 /// `$array` of it; None when it reads as none of them. NumPy dtypes match exactly (no casts).
@@ -238,7 +239,7 @@ pub fn vertex_mask(
 
 /// The values of a float32 or float64 array of any shape, widened to f64 (None: another dtype).
 pub fn float_values(obj: &Bound<'_, PyAny>) -> Option<Vec<f64>> {
-    by_dtype!(obj, PyReadonlyArrayDyn<f32, f64>, |x| x.as_array().iter().map(|&v| v as f64).collect())
+    by_dtype!(obj, PyReadonlyArrayDyn<f32, f64>, |x| x.as_array().iter().map(|&v| Real::to_f64(v)).collect())
 }
 
 /// Hands row-major values of a 2-D `shape` to NumPy without copying.

@@ -32,15 +32,10 @@ use crate::mesh::curvature::curvature;
 use crate::real::Real;
 
 type Pairs<'py> = Bound<'py, PyArray2<i64>>;
+type Indices<'py> = Bound<'py, PyArray1<i64>>;
 /// boundary, crease, crease angles (degrees), crease convex, non-manifold, degenerate faces
-type FeatureOut<'py> = (
-    Pairs<'py>,
-    Pairs<'py>,
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<bool>>,
-    Pairs<'py>,
-    Bound<'py, PyArray1<i64>>,
-);
+type FeatureOut<'py> =
+    (Pairs<'py>, Pairs<'py>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<bool>>, Pairs<'py>, Indices<'py>);
 
 fn feature_to_numpy(py: Python<'_>, fe: FeatureEdges, degenerate: Vec<u32>) -> FeatureOut<'_> {
     (
@@ -316,7 +311,7 @@ impl PyEdgeIndex {
         rows_to_numpy(py, self.inner.positions().to_vec())
     }
 
-    fn weld_map<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<i64>>> {
+    fn weld_map<'py>(&self, py: Python<'py>) -> Option<Indices<'py>> {
         self.inner.weld_map().map(|m| indices_to_numpy(py, m.iter().copied()))
     }
 
@@ -360,10 +355,7 @@ fn read_pairs(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[u32; 2]>> {
 }
 
 #[pyfunction]
-fn _chains<'py>(
-    py: Python<'py>,
-    edges: &Bound<'py, PyAny>,
-) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<i64>>)> {
+fn _chains<'py>(py: Python<'py>, edges: &Bound<'py, PyAny>) -> PyResult<(Indices<'py>, Indices<'py>)> {
     let e = read_pairs("edges", edges)?;
     let (flat, offsets) = detached(py, || Ok(chain_edges(&e)))?;
     Ok((indices_to_numpy(py, flat), indices_to_numpy(py, offsets)))

@@ -97,6 +97,9 @@ fn _pen_strokes<'py>(
     PyList::new(py, out.collect::<PyResult<Vec<_>>>()?)
 }
 
+/// Stroke indices in drawing order, and whether each is drawn from its last point.
+type DrawingOrder<'py> = (Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<bool>>);
+
 /// `pen::plotter_order::plotter_order` of the strokes with first points `starts` and last
 /// points `ends` ((N, 2) each): the strokes' indices in drawing order, and whether each is drawn
 /// from its last point.
@@ -105,7 +108,7 @@ fn _plotter_order<'py>(
     py: Python<'py>,
     starts: &Bound<'py, PyAny>,
     ends: &Bound<'py, PyAny>,
-) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<bool>>)> {
+) -> PyResult<DrawingOrder<'py>> {
     let (starts, ends) = (point_array("starts", starts)?, point_array("ends", ends)?);
     if starts.len() != ends.len() {
         let reason = format!("expected as many as starts ({}), got {}", starts.len(), ends.len());

@@ -221,9 +221,9 @@ pub fn reduce<'py, T: Described>(
     Ok((py.import("toonmesh._core")?.getattr("_restore")?, (T::CLASS, state(inner))))
 }
 
-fn restore<'py, W: Wraps>(py: Python<'py>, state: &str) -> PyResult<Bound<'py, PyAny>>
+fn restore<'py, W>(py: Python<'py>, state: &str) -> PyResult<Bound<'py, PyAny>>
 where
-    W: IntoPyObjectExt<'py>,
+    W: Wraps + IntoPyObjectExt<'py>,
 {
     let inner: W::Core = serde_json::from_str(state).map_err(|e| Error::invalid("state", format!("{e}")))?;
     inner.check()?;
