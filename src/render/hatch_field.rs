@@ -18,9 +18,11 @@ use super::effects::hatching::field::hatch_stripes;
 use super::gpu_mesh::{HostMesh, NormalMode};
 use super::mesh_record::MeshRecord;
 
-/// The vertex buffer slot and the vertex-stage location of the field (`vs_field` in
-/// common.wgsl).
-pub const FIELD_SLOT: u32 = 1;
+/// The vertex buffer slot of the field: past the mesh's and its colour's (`gpu_albedo::SLOT`),
+/// so that a coloured mesh may hatch along it too.
+pub const FIELD_SLOT: u32 = 2;
+/// The vertex-stage location of the stripe values (the `field` part of `graph::mesh_stages`).
+pub const FIELD_LOCATION: u32 = 7;
 
 /// The cached buffer (None until a field-hatching material first draws the mesh).
 #[derive(Default)]
@@ -69,9 +71,9 @@ impl HatchField {
         Ok(buffer)
     }
 
-    /// The field's vertex buffer layout: one vec4 (psi of each stroke family) at location 7.
+    /// The field's vertex buffer layout: one vec4 (psi of each stroke family).
     pub fn vertex_layout() -> wgpu::VertexBufferLayout<'static> {
-        const ATTRS: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![7 => Float32x4];
+        const ATTRS: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![FIELD_LOCATION => Float32x4];
         wgpu::VertexBufferLayout {
             array_stride: std::mem::size_of::<[f32; 4]>() as u64,
             step_mode: wgpu::VertexStepMode::Vertex,
