@@ -8,6 +8,7 @@ use crate::render::effects::outlines::{edges, lines};
 use crate::render::effects::shadows::{map, mask, ShadowTest};
 use crate::render::effects::surface;
 use crate::render::graph::effect::ShadeHook;
+use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::passes::{downsample, geometry, shade};
 use crate::render::shader::preamble;
 use crate::render::uniforms::{draw_members, LightingBlock, MaterialBlock, Members, MeshBlock, ViewBlock};
@@ -17,16 +18,25 @@ fn parse(src: &str) -> naga::Module {
     naga::front::wgsl::parse_str(src).unwrap_or_else(|e| panic!("{}", e.emit_to_string(src)))
 }
 
-/// Every module a renderer can build: each pass's WGSL with the hooks it is built with.
+/// Every module a renderer can build: each pass's WGSL with the hooks it is built with, and
+/// the mesh passes' with the stages of every combination of what a draw reads and writes.
 fn modules() -> Vec<String> {
     let shadowed = ShadowTest { filter: crate::render::effects::shadows::settings::ShadowFilter::Pcf };
     let p = preamble();
-    let mut all: Vec<String> =
-        [shade::WGSL, geometry::WGSL, downsample::WGSL, edges::WGSL, lines::WGSL, map::WGSL]
-            .iter()
-            .map(|w| compose(p, DEFAULT_HOOKS, w))
-            .collect();
-    all.extend([shade::WGSL, mask::WGSL].iter().map(|w| compose(p, shadowed.wgsl(), w)));
+    let mut all: Vec<String> = [downsample::WGSL, edges::WGSL, lines::WGSL, map::WGSL]
+        .iter()
+        .map(|w| compose(p, DEFAULT_HOOKS, w))
+        .collect();
+    all.push(compose(p, shadowed.wgsl(), mask::WGSL));
+    for stages in MeshStages::all() {
+        let written = stages.wgsl();
+        for hooks in [DEFAULT_HOOKS, shadowed.wgsl()] {
+            all.push(compose(p, hooks, &format!("{}\n{written}", shade::WGSL)));
+        }
+        if !stages.color {
+            all.push(compose(p, DEFAULT_HOOKS, &format!("{}\n{written}", geometry::WGSL)));
+        }
+    }
     all
 }
 

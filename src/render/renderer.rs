@@ -335,16 +335,7 @@ impl Renderer {
             .iter()
             .zip(&records)
             .map(|(item, rec)| {
-                let albedo = rec.gpu.albedo.as_ref();
-                let field = ShadingVariant::of(&item.material, albedo).field;
-                if field && albedo.is_some() {
-                    // the two ride in the same vertex slot and entry points of their own
-                    return Err(Error::invalid(
-                        "material.hatching",
-                        "hatching along the form (mode='field') does not take a mesh's colour or \
-                         texture yet: use Material.hatching(mode='triplanar') on a coloured mesh",
-                    ));
-                }
+                let field = ShadingVariant::of(&item.material, rec.gpu.albedo.as_ref()).field;
                 field.then(|| HatchField::of(&self.ctx, rec)).transpose()
             })
             .collect::<Result<_>>()?;

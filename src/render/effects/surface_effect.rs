@@ -29,7 +29,8 @@ pub struct Variant {
     pub constants: Vec<(&'static str, f64)>,
     /// Whether its fragment code reads the anchors (`Fragment.object_pos`, `object_normal`).
     pub anchored: bool,
-    /// Whether its vertex stage reads the hatching field's vertex buffer (`vs_field`).
+    /// Whether its stages read the hatching field's vertex buffer (the `field` part of
+    /// `graph::mesh_stages`).
     pub field: bool,
 }
 

@@ -2,9 +2,8 @@
 //! and full-screen triangles (image passes), and the states they share.
 
 use crate::render::gpu_albedo;
-use crate::render::gpu_mesh::GpuMesh;
-use crate::render::hatch_field::HatchField;
 
+use super::mesh_stages::MeshStages;
 use super::target::DEPTH_FORMAT;
 use super::FrameCtx;
 
@@ -29,52 +28,40 @@ pub fn cull_bits(cull: Option<wgpu::Face>) -> u64 {
     }
 }
 
-/// How a mesh pipeline draws: its fragment entry point and targets, sample count, pipeline
-/// constants, the bind groups after the frame's and the draw's, and the faces it skips.
+/// How a mesh pipeline draws: its stages (what they read and the targets they write, in the
+/// module's `vs_mesh` and `fs_mesh`), sample count, pipeline constants, the bind groups after
+/// the frame's and the draw's, and the faces it skips.
 pub struct MeshDraw<'a> {
     pub label: &'static str,
-    pub entry: &'a str,
-    pub targets: &'a [Option<wgpu::ColorTargetState>],
+    pub stages: MeshStages,
     pub samples: u32,
     pub constants: &'a [(&'a str, f64)],
     pub more: &'a [Option<&'a wgpu::BindGroupLayout>],
     pub cull: Option<wgpu::Face>,
-    /// The vertex entry point that reads the mesh's colour and texture (`gpu_albedo`: its
-    /// vertex buffer and bind group), if the pipeline does.
-    pub albedo: Option<&'a str>,
-    /// Reads the hatching field's vertex buffer too (vertex stage `vs_field`).
-    pub field: bool,
 }
 
 /// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`, then
-/// the albedo group at `gpu_albedo::GROUP` when it reads it) with depth testing.
+/// the albedo group at `gpu_albedo::GROUP` when its stages read the mesh's colour) with depth
+/// testing.
 pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<'_>) -> wgpu::RenderPipeline {
     let device = &f.dev.device;
     let layouts = &f.pipelines.layouts;
     let mut groups = vec![Some(&layouts.frame), Some(&layouts.draw)];
     groups.extend(d.more.iter().copied());
-    if d.albedo.is_some() {
+    if d.stages.albedo {
         groups.resize(gpu_albedo::GROUP as usize, None);
         groups.push(Some(&layouts.albedo));
     }
     let layout = f.pipelines.layout_with_gaps(device, d.label, &groups);
     let options = wgpu::PipelineCompilationOptions { constants: d.constants, ..Default::default() };
-    let mut buffers = vec![Some(GpuMesh::vertex_layout())];
-    if d.albedo.is_some() {
-        buffers.resize(gpu_albedo::SLOT as usize + 1, None);
-        buffers[gpu_albedo::SLOT as usize] = Some(gpu_albedo::vertex_layout());
-    }
-    if d.field {
-        use crate::render::hatch_field::FIELD_SLOT;
-        buffers.resize(buffers.len().max(FIELD_SLOT as usize + 1), None);
-        buffers[FIELD_SLOT as usize] = Some(HatchField::vertex_layout());
-    }
+    let buffers = d.stages.vertex_buffers();
+    let targets = d.stages.targets();
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(d.label),
         layout: Some(&layout),
         vertex: wgpu::VertexState {
             module,
-            entry_point: Some(d.albedo.unwrap_or(if d.field { "vs_field" } else { "vs_main" })),
+            entry_point: Some("vs_mesh"),
             compilation_options: options.clone(),
             buffers: &buffers,
         },
@@ -89,9 +76,9 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
         multisample: wgpu::MultisampleState { count: d.samples, mask: !0, alpha_to_coverage_enabled: false },
         fragment: Some(wgpu::FragmentState {
             module,
-            entry_point: Some(d.entry),
+            entry_point: Some("fs_mesh"),
             compilation_options: options,
-            targets: d.targets,
+            targets: &targets,
         }),
         multiview_mask: None,
         cache: None,

@@ -5,6 +5,7 @@
 
 pub mod build;
 pub mod effect;
+pub mod mesh_stages;
 pub mod report;
 pub mod resources;
 pub mod target;
@@ -19,6 +20,7 @@ use super::gpu_mesh::GpuMesh;
 use super::pipelines::PipelineCache;
 use super::wgsl;
 use effect::ShadeHook;
+use mesh_stages::MeshStages;
 use resources::FrameResources;
 use target::{Shape, Use};
 
@@ -115,12 +117,37 @@ impl FrameCtx<'_> {
     /// The shader module `name` of a pass's WGSL, with the shading hooks of `hook` (the
     /// defaults where None), compiled on first use.
     pub fn module(&self, name: &'static str, pass: &str, hook: Option<&dyn ShadeHook>) -> wgpu::ShaderModule {
+        self.module_keyed(name.to_string(), || pass.to_string(), hook)
+    }
+
+    /// `module` for a mesh pass: its WGSL and the stages written for `stages`, each combination
+    /// written and compiled on first use.
+    pub fn mesh_module(
+        &self,
+        name: &'static str,
+        pass: &str,
+        stages: MeshStages,
+        hook: Option<&dyn ShadeHook>,
+    ) -> wgpu::ShaderModule {
+        self.module_keyed(
+            format!("{name} ({})", stages.name()),
+            || format!("{pass}\n{}", stages.wgsl()),
+            hook,
+        )
+    }
+
+    fn module_keyed(
+        &self,
+        name: String,
+        pass: impl FnOnce() -> String,
+        hook: Option<&dyn ShadeHook>,
+    ) -> wgpu::ShaderModule {
         let key = match hook {
             Some(h) => format!("{name}+{}", h.name()),
-            None => name.to_string(),
+            None => name,
         };
         self.pipelines.module(&self.dev.device, key, || {
-            wgsl::compose(self.preamble, hook.map_or(wgsl::DEFAULT_HOOKS, |h| h.wgsl()), pass)
+            wgsl::compose(self.preamble, hook.map_or(wgsl::DEFAULT_HOOKS, |h| h.wgsl()), &pass())
         })
     }
 

@@ -67,60 +67,17 @@ override LIGHTS: u32 = 0u;
 // pixel's position).
 override POINT_LIGHTS: u32 = 0u;
 
+// The mesh's positions and normals as the shadow map reads them (`GpuMesh::vertex_layout`).
 struct VsIn {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
 };
 
-// What the vertex stage passes on (`VsOut`). A fragment stage reads `Varyings`, its first
-// three, unless its material needs the anchors (`ShadingVariant::anchored`): a CPU rasteriser
-// sets up every input a fragment stage reads for every triangle, which on small triangles
-// costs as much as the shading.
-struct VsOut {
-    @builtin(position) clip: vec4<f32>,
-    @location(0) view_pos: vec3<f32>,
-    @location(1) view_normal: vec3<f32>,
-    @location(2) color_front: vec3<f32>,
-    @location(3) color_back: vec3<f32>,
-    // the mesh's stored coordinates and normal: what hatching and dithering anchor to
-    @location(4) object_pos: vec3<f32>,
-    @location(5) object_normal: vec3<f32>,
+// Gouraud shading's colours of a vertex's two sides (`gouraud`), interpolated.
+struct Gouraud {
+    front: vec3<f32>,
+    back: vec3<f32>,
 };
-
-// `VsOut` and the stripe values of the hatching field (src/render/hatch_field.rs), for
-// materials that hatch along it (`vs_field`, `fs_*_field`).
-struct VsFieldOut {
-    @builtin(position) clip: vec4<f32>,
-    @location(0) view_pos: vec3<f32>,
-    @location(1) view_normal: vec3<f32>,
-    @location(2) color_front: vec3<f32>,
-    @location(3) color_back: vec3<f32>,
-    @location(4) object_pos: vec3<f32>,
-    @location(5) object_normal: vec3<f32>,
-    @location(6) stripes: vec4<f32>,
-};
-
-struct Varyings {
-    @builtin(position) clip: vec4<f32>,
-    @location(0) view_pos: vec3<f32>,
-    @location(1) view_normal: vec3<f32>,
-};
-
-// The rest of `VsOut`: Gouraud colours and the anchors.
-struct Anchors {
-    color_front: vec3<f32>,
-    color_back: vec3<f32>,
-    object_pos: vec3<f32>,
-    object_normal: vec3<f32>,
-};
-
-fn varyings(v: VsOut) -> Varyings {
-    return Varyings(v.clip, v.view_pos, v.view_normal);
-}
-
-fn anchors(v: VsOut) -> Anchors {
-    return Anchors(v.color_front, v.color_back, v.object_pos, v.object_normal);
-}
 
 // What a per-pixel effect's hooks see of the pixel (src/render/effects/surface.rs).
 struct Fragment {
@@ -131,6 +88,12 @@ struct Fragment {
     object_normal: vec3<f32>,
     stripes: vec4<f32>,        // the hatching field's psi of each stroke family (zero without one)
 };
+
+// A pixel before the parts of its draw fill in the rest (src/render/graph/mesh_stages.rs).
+fn plain_fragment(clip: vec4<f32>, view_pos: vec3<f32>, view_normal: vec3<f32>, front_facing: bool) -> Fragment {
+    let o = vec3<f32>(0.0);
+    return Fragment(clip, view_pos, facing_normal(view_normal, front_facing), o, o, vec4<f32>(0.0));
+}
 
 fn unit_or_zero(v: vec3<f32>) -> vec3<f32> {
     let l2 = dot(v, v);
@@ -277,47 +240,24 @@ fn facing_normal(n: vec3<f32>, front_facing: bool) -> vec3<f32> {
     return select(-u, u, outer_side(front_facing));
 }
 
-@vertex
-fn vs_main(v: VsIn) -> VsOut {
-    return mesh_vertex(v);
-}
-
-// The mesh vertex stage with the hatching field's stripe values, from their own buffer.
-@vertex
-fn vs_field(v: VsIn, @location(7) stripes: vec4<f32>) -> VsFieldOut {
-    let o = mesh_vertex(v);
-    return VsFieldOut(o.clip, o.view_pos, o.view_normal, o.color_front, o.color_back, o.object_pos,
-                      o.object_normal, stripes);
-}
-
-// The vertex stage of every mesh pipeline (also called by `vs_albedo` and `vs_field`).
-fn mesh_vertex(v: VsIn) -> VsOut {
-    var o: VsOut;
-    let p = draw.mesh.model_view * vec4<f32>(v.position, 1.0);
-    o.clip = frame.view.proj * p;
-    o.view_pos = p.xyz;
-    o.view_normal = (draw.mesh.normal_matrix * vec4<f32>(v.normal, 0.0)).xyz;
-    o.object_pos = v.position;
-    o.object_normal = v.normal;
-    o.color_front = vec3<f32>(0.0);
-    o.color_back = vec3<f32>(0.0);
-    if (PER_VERTEX) {
-        let n = unit_or_zero(o.view_normal);
-        let hard = array<vec3<f32>, 2>(vec3<f32>(0.0), vec3<f32>(0.0));  // no derivatives per vertex
-        o.color_front = shade(n, p.xyz, 0.0, hard);
-        o.color_back = shade(-n, p.xyz, 0.0, hard);
+// Gouraud: both sides shaded at a vertex (zero unless the material shades per vertex).
+fn gouraud(view_normal: vec3<f32>, view_pos: vec3<f32>) -> Gouraud {
+    if (!PER_VERTEX) {
+        return Gouraud(vec3<f32>(0.0), vec3<f32>(0.0));
     }
-    return o;
+    let n = unit_or_zero(view_normal);
+    let hard = array<vec3<f32>, 2>(vec3<f32>(0.0), vec3<f32>(0.0));  // no derivatives per vertex
+    return Gouraud(shade(n, view_pos, 0.0, hard), shade(-n, view_pos, 0.0, hard));
 }
 
 // The geometry target's texels: f32 bit patterns of the facing unit normal and the linear depth
 // (distance from the camera plane, in normalised view units).
-fn depth_bits(i: Varyings) -> u32 {
-    return bitcast<u32>(-i.view_pos.z);
+fn depth_bits(f: Fragment) -> u32 {
+    return bitcast<u32>(-f.view_pos.z);
 }
 
-fn normal_depth_bits(i: Varyings, front_facing: bool) -> vec4<u32> {
-    return vec4<u32>(bitcast<vec3<u32>>(facing_normal(i.view_normal, front_facing)), depth_bits(i));
+fn normal_depth_bits(f: Fragment) -> vec4<u32> {
+    return vec4<u32>(bitcast<vec3<u32>>(f.normal), depth_bits(f));
 }
 
 // One triangle that covers the viewport (full-screen passes).

@@ -1,15 +1,18 @@
 //! The geometry pass: the view-space normal and linear depth at the output size, one sample per
 //! pixel, when the shading pass cannot write them (multisampled or supersampled colour, or no
-//! colour asked for).
+//! colour asked for). A coloured mesh with an alpha cutoff reads its colour here too, so that
+//! no normal or depth is written where its pixels are cut.
 
 use crate::error::Result;
 use crate::render::gpu_albedo::GpuAlbedo;
 use crate::render::graph::build::{cull_bits, mesh_pipeline, MeshDraw};
+use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
 use crate::render::graph::{cleared, depth_buffer, geometry_clear, DrawItem, FrameCtx, Pass, Recorder};
-use crate::render::pipelines::{target, PipelineKey};
+use crate::render::pipelines::PipelineKey;
 
-pub const WGSL: &str = concat!(include_str!("../../shaders/albedo.wgsl"), include_str!("geometry.wgsl"));
+/// The pass's WGSL, which its stages (`graph::mesh_stages`) are written after.
+pub const WGSL: &str = include_str!("../../shaders/albedo.wgsl");
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Geometry {
@@ -35,31 +38,20 @@ impl Pass for Geometry {
         let pipeline = |d: &DrawItem<'_>| {
             let albedo = cut(d);
             let constants = albedo.map_or(vec![], GpuAlbedo::constants);
-            let key = PipelineKey::new("gbuffer", layout as u64 | cull_bits(d.cull) << 8).with(&constants);
+            let stages =
+                MeshStages { albedo: albedo.is_some(), geometry: Some(layout), ..Default::default() };
+            let key = PipelineKey::new("gbuffer", stages.bits() | cull_bits(d.cull) << 8).with(&constants);
             f.pipelines.get(key, || {
-                let module = f.module("gbuffer", WGSL, None);
-                let entry = match (layout, albedo.is_some()) {
-                    (GeometryLayout::NormalDepth, false) => "fs_normal_depth",
-                    (GeometryLayout::NormalDepth, true) => "fs_normal_depth_albedo",
-                    (GeometryLayout::Depth, false) => "fs_depth",
-                    (GeometryLayout::Depth, true) => "fs_depth_albedo",
+                let module = f.mesh_module("gbuffer", WGSL, stages, None);
+                let draw = MeshDraw {
+                    label: "gbuffer",
+                    stages,
+                    samples: 1,
+                    constants: &constants,
+                    more: &[],
+                    cull: d.cull,
                 };
-                let targets = [target(layout.format())];
-                mesh_pipeline(
-                    f,
-                    &module,
-                    MeshDraw {
-                        label: "gbuffer",
-                        entry,
-                        targets: &targets,
-                        samples: 1,
-                        constants: &constants,
-                        more: &[],
-                        cull: d.cull,
-                        albedo: albedo.map(|_| "vs_albedo"),
-                        field: false,
-                    },
-                )
+                mesh_pipeline(f, &module, draw)
             })
         };
         let attachments = [cleared(f.res.view(Target::Geometry), geometry_clear(layout))];

@@ -8,20 +8,16 @@ pub mod variant;
 use std::sync::Arc;
 
 use crate::error::Result;
-use crate::render::device::COLOR_FORMAT;
 use crate::render::graph::build::{cull_bits, mesh_pipeline, MeshDraw};
 use crate::render::graph::effect::ShadeHook;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
 use crate::render::graph::{cleared, depth_buffer, geometry_clear, DrawItem, FrameCtx, Pass, Recorder};
-use crate::render::pipelines::{target, PipelineKey};
+use crate::render::pipelines::PipelineKey;
 
 use variant::ShadingVariant;
 
-pub const WGSL: &str = concat!(
-    include_str!("shade.wgsl"),
-    include_str!("../../shaders/albedo.wgsl"),
-    include_str!("albedo.wgsl")
-);
+/// The pass's WGSL, which its stages (`graph::mesh_stages`) are written after.
+pub const WGSL: &str = concat!(include_str!("shade.wgsl"), include_str!("../../shaders/albedo.wgsl"));
 
 #[derive(Debug, Clone)]
 pub struct Shade {
@@ -47,49 +43,15 @@ impl Shade {
     fn pipeline(&self, f: &FrameCtx<'_>, d: &DrawItem<'_>) -> Arc<wgpu::RenderPipeline> {
         let shading = ShadingVariant::of(d.material, d.mesh.albedo.as_ref());
         let hook = self.hook.as_deref();
+        let stages = shading.stages(self.geometry);
         let bits = self.samples as u64
-            | (self.geometry.map_or(0, |g| 1 + g as u64)) << 8
             | hook.map_or(0, |h| h.key()) << 12
             | cull_bits(d.cull) << 20
             | (f.lights as u64) << 32
             | (f.point_lights as u64) << 40
-            | (shading.anchored as u64) << 48
-            | (shading.albedo as u64) << 56
-            | (shading.field as u64) << 49;
+            | stages.bits() << 48;
         f.pipelines.get(PipelineKey::new("shade", bits).with(&shading.constants), || {
-            let module = f.module("shade", WGSL, hook);
-            let mut targets = vec![target(COLOR_FORMAT)];
-            let mut entry = match (self.geometry, shading.anchored) {
-                (None, false) => "fs_color",
-                (None, true) => "fs_color_anchored",
-                (Some(g), anchored) => {
-                    targets.push(target(g.format()));
-                    match (g, anchored) {
-                        (GeometryLayout::NormalDepth, false) => "fs_color_normal_depth",
-                        (GeometryLayout::NormalDepth, true) => "fs_color_normal_depth_anchored",
-                        (GeometryLayout::Depth, false) => "fs_color_depth",
-                        (GeometryLayout::Depth, true) => "fs_color_depth_anchored",
-                    }
-                }
-            };
-            // a coloured mesh's stages read its colour too (shaders/albedo.wgsl, shade/albedo.wgsl)
-            let albedo_entry = |name: &'static str| match (name, shading.anchored) {
-                ("fs_color", false) => "fs_color_albedo",
-                ("fs_color", true) => "fs_color_albedo_anchored",
-                ("normal_depth", false) => "fs_color_normal_depth_albedo",
-                ("normal_depth", true) => "fs_color_normal_depth_albedo_anchored",
-                (_, false) => "fs_color_depth_albedo",
-                (_, true) => "fs_color_depth_albedo_anchored",
-            };
-            if shading.albedo {
-                entry = albedo_entry(match self.geometry {
-                    None => "fs_color",
-                    Some(GeometryLayout::NormalDepth) => "normal_depth",
-                    Some(GeometryLayout::Depth) => "depth",
-                });
-            }
-            // the field's entry points read the anchors and the field (`VsFieldOut`)
-            let entry = if shading.field { entry.replace("_anchored", "_field") } else { entry.to_string() };
+            let module = f.mesh_module("shade", WGSL, stages, hook);
             let mut constants = shading.constants.clone();
             constants.push(("LIGHTS", f.lights as f64));
             constants.push(("POINT_LIGHTS", f.point_lights as f64));
@@ -103,18 +65,11 @@ impl Shade {
                 &module,
                 MeshDraw {
                     label: "shade",
-                    entry: &entry,
-                    targets: &targets,
+                    stages,
                     samples: self.samples,
                     constants: &constants,
                     more: &more,
                     cull: d.cull,
-                    albedo: shading.albedo.then_some(if shading.anchored {
-                        "vs_albedo_anchored"
-                    } else {
-                        "vs_albedo"
-                    }),
-                    field: shading.field,
                 },
             )
         })

@@ -3,6 +3,8 @@
 //! mesh adds: its colour and texture (`gpu_albedo`), only for meshes that have them.
 
 use crate::render::gpu_albedo::GpuAlbedo;
+use crate::render::graph::mesh_stages::MeshStages;
+use crate::render::graph::target::GeometryLayout;
 use crate::render::scene::material::Material;
 
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -10,11 +12,11 @@ pub struct ShadingVariant {
     /// Every pipeline constant of the material's shading, the core's first.
     pub constants: Vec<(&'static str, f64)>,
     /// Whether the fragment stage reads the vertex stage's anchors (object coordinates and
-    /// per-vertex colours; `Anchors` in common.wgsl).
+    /// per-vertex colours: the `anchors` part of `graph::mesh_stages`).
     pub anchored: bool,
-    /// Whether the stages read the mesh's colour (and texture): `vs_albedo`, `fs_*_albedo`.
+    /// Whether the stages read the mesh's colour (and texture).
     pub albedo: bool,
-    /// Whether it reads the hatching field's vertex buffer (and so the anchors too).
+    /// Whether they read the hatching field's vertex buffer.
     pub field: bool,
 }
 
@@ -33,5 +35,11 @@ impl ShadingVariant {
             v.field |= part.field;
         }
         v
+    }
+
+    /// The shading pass's stages for it, writing the colour and, where given, the geometry
+    /// target.
+    pub fn stages(&self, geometry: Option<GeometryLayout>) -> MeshStages {
+        MeshStages { albedo: self.albedo, anchors: self.anchored, field: self.field, color: true, geometry }
     }
 }

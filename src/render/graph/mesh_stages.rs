@@ -1,0 +1,334 @@
+//! The stages of a mesh pipeline, written for what its draw needs: the varyings struct
+//! (`MeshOut`), the vertex entry point `vs_mesh` and the fragment entry point `fs_mesh`, put
+//! together from one declaration per part (`Part`): the mesh's colour and texture, the
+//! material's anchors and hatching field, and the targets the pass writes (`Output`). A draw
+//! passes on only the varyings it reads: a CPU rasteriser sets up every one of them for every
+//! triangle, which on small triangles costs as much as the shading.
+
+use crate::render::device::COLOR_FORMAT;
+use crate::render::gpu_albedo;
+use crate::render::gpu_mesh::GpuMesh;
+use crate::render::hatch_field::{HatchField, FIELD_SLOT};
+use crate::render::pipelines::target;
+
+use super::target::GeometryLayout;
+
+/// What a mesh pipeline's stages read and write.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct MeshStages {
+    /// Reads the mesh's colour and texture (`gpu_albedo`: its vertex buffer and bind group).
+    pub albedo: bool,
+    /// The fragment stage reads the anchors: the mesh's stored coordinates and normal, and the
+    /// Gouraud colours.
+    pub anchors: bool,
+    /// Reads the hatching field's stripe values (`hatch_field`: a vertex buffer of their own).
+    pub field: bool,
+    /// Writes the shaded colour.
+    pub color: bool,
+    /// Writes the geometry target (after the colour, so that the targets stay contiguous: the GL
+    /// backend mishandles gaps between colour attachments).
+    pub geometry: Option<GeometryLayout>,
+}
+
+/// A vertex buffer a part reads: its slot, its layout, and the names its attributes take in
+/// the vertex stage, in the layout's order (their locations and types come from the layout).
+struct Buffer {
+    slot: u32,
+    layout: fn() -> wgpu::VertexBufferLayout<'static>,
+    names: &'static [&'static str],
+}
+
+/// One part of a mesh pipeline's stages.
+struct Part {
+    name: &'static str,
+    /// The varyings it adds (name, WGSL type).
+    varyings: &'static [(&'static str, &'static str)],
+    buffer: Option<Buffer>,
+    /// Vertex code: sets its varyings on `o` from the vertex's attributes.
+    vertex: &'static [&'static str],
+    /// Fragment code before the shading: fills in the pixel `f` (a `Fragment`) and the Gouraud
+    /// colours `lit` from the varyings `i`.
+    fragment: &'static [&'static str],
+    /// Fragment code after the shading (every derivative taken).
+    after: &'static [&'static str],
+}
+
+/// Where the vertex is: every mesh pipeline reads the mesh's positions and normals.
+const POSITION: Part = Part {
+    name: "position",
+    varyings: &[("view_pos", "vec3<f32>"), ("view_normal", "vec3<f32>")],
+    buffer: Some(Buffer { slot: 0, layout: GpuMesh::vertex_layout, names: &["position", "normal"] }),
+    vertex: &[
+        "let p = draw.mesh.model_view * vec4<f32>(position, 1.0);",
+        "o.clip = frame.view.proj * p;",
+        "o.view_pos = p.xyz;",
+        "o.view_normal = (draw.mesh.normal_matrix * vec4<f32>(normal, 0.0)).xyz;",
+    ],
+    fragment: &[
+        "var f = plain_fragment(i.clip, i.view_pos, i.view_normal, front_facing);",
+        "var lit = Gouraud(vec3<f32>(0.0), vec3<f32>(0.0));",
+    ],
+    after: &[],
+};
+
+/// The mesh's stored coordinates and normal (what hatching and dithering anchor to) and the
+/// Gouraud colours.
+const ANCHORS: Part = Part {
+    name: "anchors",
+    varyings: &[
+        ("color_front", "vec3<f32>"),
+        ("color_back", "vec3<f32>"),
+        ("object_pos", "vec3<f32>"),
+        ("object_normal", "vec3<f32>"),
+    ],
+    buffer: None,
+    vertex: &[
+        "let shaded = gouraud(o.view_normal, o.view_pos);",
+        "o.color_front = shaded.front;",
+        "o.color_back = shaded.back;",
+        "o.object_pos = position;",
+        "o.object_normal = normal;",
+    ],
+    fragment: &[
+        "f.object_pos = i.object_pos;",
+        "f.object_normal = i.object_normal;",
+        "lit = Gouraud(i.color_front, i.color_back);",
+    ],
+    after: &[],
+};
+
+/// The hatching field's stripe values (src/render/hatch_field.rs).
+const FIELD: Part = Part {
+    name: "field",
+    varyings: &[("stripes", "vec4<f32>")],
+    buffer: Some(Buffer { slot: FIELD_SLOT, layout: HatchField::vertex_layout, names: &["stripes"] }),
+    vertex: &["o.stripes = stripes;"],
+    fragment: &["f.stripes = i.stripes;"],
+    after: &[],
+};
+
+/// The mesh's colour and texture (shaders/albedo.wgsl), and its alpha cutoff.
+const ALBEDO: Part = Part {
+    name: "albedo",
+    varyings: &[("color", "vec4<f32>"), ("uv", "vec2<f32>")],
+    buffer: Some(Buffer {
+        slot: gpu_albedo::SLOT,
+        layout: gpu_albedo::vertex_layout,
+        names: &["color", "uv"],
+    }),
+    vertex: &["o.color = color;", "o.uv = uv;"],
+    fragment: &["let a = albedo_sample(i.color, i.uv);", "albedo = a.rgb;"],
+    after: &["if (a.a < ALPHA_CUTOFF) {", "    discard;", "}"],
+};
+
+/// Gouraud shading of a coloured mesh: the highlight apart from the rest (ambient and diffuse
+/// of a white surface), so that the albedo multiplies only the rest, per pixel.
+const ALBEDO_GOURAUD: Part = Part {
+    name: "albedo_gouraud",
+    varyings: &[("specular_front", "vec3<f32>"), ("specular_back", "vec3<f32>")],
+    buffer: None,
+    vertex: &[
+        "albedo = vec3<f32>(0.0);",
+        "let highlight = gouraud(o.view_normal, o.view_pos);",
+        "albedo = vec3<f32>(1.0);",
+        "o.color_front = o.color_front - highlight.front;",
+        "o.color_back = o.color_back - highlight.back;",
+        "o.specular_front = highlight.front;",
+        "o.specular_back = highlight.back;",
+    ],
+    fragment: &["lit = Gouraud(lit.front * albedo + i.specular_front, lit.back * albedo + i.specular_back);"],
+    after: &[],
+};
+
+/// A target the fragment stage writes: its member of `MeshTargets`, its WGSL type, its value.
+struct Output {
+    name: &'static str,
+    ty: &'static str,
+    value: &'static str,
+}
+
+const COLOR: Output = Output { name: "color", ty: "vec4<f32>", value: "shaded_color(f, lit, front_facing)" };
+const NORMAL_DEPTH: Output = Output { name: "geometry", ty: "vec4<u32>", value: "normal_depth_bits(f)" };
+const DEPTH: Output = Output { name: "geometry", ty: "u32", value: "depth_bits(f)" };
+
+/// The WGSL type of a vertex attribute.
+fn attribute_type(format: wgpu::VertexFormat) -> &'static str {
+    match format {
+        wgpu::VertexFormat::Float32x2 => "vec2<f32>",
+        wgpu::VertexFormat::Float32x3 => "vec3<f32>",
+        wgpu::VertexFormat::Float32x4 => "vec4<f32>",
+        other => unreachable!("no mesh attribute is {other:?}"),
+    }
+}
+
+fn lines(out: &mut String, code: &[&str]) {
+    for line in code {
+        out.push_str("    ");
+        out.push_str(line);
+        out.push('\n');
+    }
+}
+
+impl MeshStages {
+    /// Its parts, in the order their varyings and code follow each other.
+    fn parts(&self) -> Vec<&'static Part> {
+        let mut parts = vec![&POSITION];
+        if self.anchors {
+            parts.push(&ANCHORS);
+        }
+        if self.field {
+            parts.push(&FIELD);
+        }
+        if self.albedo {
+            parts.push(&ALBEDO);
+            if self.anchors {
+                parts.push(&ALBEDO_GOURAUD);
+            }
+        }
+        parts
+    }
+
+    fn outputs(&self) -> Vec<&'static Output> {
+        let mut outputs = Vec::new();
+        if self.color {
+            outputs.push(&COLOR);
+        }
+        match self.geometry {
+            Some(GeometryLayout::NormalDepth) => outputs.push(&NORMAL_DEPTH),
+            Some(GeometryLayout::Depth) => outputs.push(&DEPTH),
+            None => {}
+        }
+        outputs
+    }
+
+    /// Its name: the parts and the targets (the shader module's cache key and label).
+    pub fn name(&self) -> String {
+        let parts: Vec<_> = self.parts().iter().map(|p| p.name).collect();
+        let mut targets: Vec<&str> = if self.color { vec!["color"] } else { vec![] };
+        targets.extend(self.geometry.map(|g| match g {
+            GeometryLayout::NormalDepth => "normal_depth",
+            GeometryLayout::Depth => "depth",
+        }));
+        format!("{} -> {}", parts.join(" + "), targets.join(" + "))
+    }
+
+    /// A pipeline-cache key's bits for it.
+    pub fn bits(&self) -> u64 {
+        self.albedo as u64
+            | (self.anchors as u64) << 1
+            | (self.field as u64) << 2
+            | (self.color as u64) << 3
+            | self.geometry.map_or(0, |g| 1 + g as u64) << 4
+    }
+
+    /// The formats of the targets it writes, in order.
+    pub fn targets(&self) -> Vec<Option<wgpu::ColorTargetState>> {
+        let mut targets = Vec::new();
+        if self.color {
+            targets.push(target(COLOR_FORMAT));
+        }
+        targets.extend(self.geometry.map(|g| target(g.format())));
+        targets
+    }
+
+    /// The vertex buffers it reads, each in its slot (None: a slot it leaves empty).
+    pub fn vertex_buffers(&self) -> Vec<Option<wgpu::VertexBufferLayout<'static>>> {
+        let mut buffers = Vec::new();
+        for b in self.parts().iter().filter_map(|p| p.buffer.as_ref()) {
+            let slot = b.slot as usize;
+            buffers.resize(buffers.len().max(slot + 1), None);
+            buffers[slot] = Some((b.layout)());
+        }
+        buffers
+    }
+
+    /// Its WGSL: `MeshOut`, `MeshTargets`, `vs_mesh` and `fs_mesh`.
+    pub fn wgsl(&self) -> String {
+        let parts = self.parts();
+        let outputs = self.outputs();
+        let mut s = format!("// written by src/render/graph/mesh_stages.rs for {}\n\n", self.name());
+        s += "struct MeshOut {\n    @builtin(position) clip: vec4<f32>,\n";
+        let varyings = parts.iter().flat_map(|p| p.varyings.iter());
+        for (location, (name, ty)) in varyings.enumerate() {
+            s += &format!("    @location({location}) {name}: {ty},\n");
+        }
+        s += "};\n\nstruct MeshTargets {\n";
+        for (location, o) in outputs.iter().enumerate() {
+            s += &format!("    @location({location}) {}: {},\n", o.name, o.ty);
+        }
+        s += "};\n\n@vertex\nfn vs_mesh(";
+        let mut inputs = Vec::new();
+        for b in parts.iter().filter_map(|p| p.buffer.as_ref()) {
+            for (a, name) in (b.layout)().attributes.iter().zip(b.names) {
+                inputs.push(format!("@location({}) {name}: {}", a.shader_location, attribute_type(a.format)));
+            }
+        }
+        s += &inputs.join(", ");
+        s += ") -> MeshOut {\n    var o: MeshOut;\n";
+        for p in &parts {
+            s += &format!("    // {}\n", p.name);
+            lines(&mut s, p.vertex);
+        }
+        s += "    return o;\n}\n\n@fragment\nfn fs_mesh(i: MeshOut, @builtin(front_facing) front_facing: bool) -> MeshTargets {\n";
+        for p in parts.iter().filter(|p| !p.fragment.is_empty()) {
+            s += &format!("    // {}\n", p.name);
+            lines(&mut s, p.fragment);
+        }
+        s += "    var out: MeshTargets;\n";
+        for o in &outputs {
+            s += &format!("    out.{} = {};\n", o.name, o.value);
+        }
+        for p in parts.iter().filter(|p| !p.after.is_empty()) {
+            s += &format!("    // {}, after the shading\n", p.name);
+            lines(&mut s, p.after);
+        }
+        s + "    return out;\n}\n"
+    }
+
+    /// Every combination: the mesh's colour or none, the material's anchors and field or none,
+    /// and every set of targets a pass writes.
+    pub fn all() -> Vec<MeshStages> {
+        let targets = [
+            (true, None),
+            (true, Some(GeometryLayout::NormalDepth)),
+            (true, Some(GeometryLayout::Depth)),
+            (false, Some(GeometryLayout::NormalDepth)),
+            (false, Some(GeometryLayout::Depth)),
+        ];
+        let mut all = Vec::new();
+        for albedo in [false, true] {
+            for (anchors, field) in [(false, false), (true, false), (true, true), (false, true)] {
+                for (color, geometry) in targets {
+                    all.push(MeshStages { albedo, anchors, field, color, geometry });
+                }
+            }
+        }
+        all
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn varyings_are_only_what_the_parts_add() {
+        let plain = MeshStages { color: true, ..Default::default() }.wgsl();
+        assert!(plain.contains("@location(1) view_normal") && !plain.contains("@location(2)"), "{plain}");
+        let all = MeshStages { albedo: true, anchors: true, field: true, color: true, geometry: None };
+        let s = all.wgsl();
+        assert!(s.contains("@location(10) specular_back: vec3<f32>"), "{s}");
+        // the attributes' locations are the vertex layouts'
+        let color = gpu_albedo::COLOR_LOCATION;
+        assert!(s.contains(&format!("@location({color}) color: vec4<f32>")), "{s}");
+    }
+
+    #[test]
+    fn every_combination_has_its_own_name_and_bits() {
+        let all = MeshStages::all();
+        let names: std::collections::HashSet<_> = all.iter().map(MeshStages::name).collect();
+        let bits: std::collections::HashSet<_> = all.iter().map(MeshStages::bits).collect();
+        assert_eq!(names.len(), all.len());
+        assert_eq!(bits.len(), all.len());
+    }
+}
