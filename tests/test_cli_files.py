@@ -196,14 +196,14 @@ def test_render_draws_a_glb_in_its_own_colours(tmp_path, capsys):
     assert red < 0.05 and blue < 0.05  # --color multiplies them: green light on red and blue
 
 
-def test_render_hatches_a_coloured_file_with_triplanar_strokes(tmp_path, capsys):
+def test_render_hatches_a_coloured_file_in_either_mode(tmp_path, capsys):
     from test_load import coloured_scene
 
     path = coloured_scene(tmp_path / "coloured.glb")
     out = str(tmp_path / "h.png")
-    refused = in_process(capsys, "render", path, "-o", out, "--size", "64x64", "--style", "hatching", check=False)
-    assert refused.returncode == 1 and "mode='triplanar'" in refused.stderr
-    in_process(capsys, "render", path, "-o", out, "--size", "64x64", "--style", "hatching", "--hatch-mode", "triplanar")
-    assert read_png(out).shape[:2] == (64, 64)
+    # strokes along the principal directions take the file's colours as the triplanar ones do
+    for mode in ("field", "triplanar"):
+        in_process(capsys, "render", path, "-o", out, "--size", "64x64", "--style", "hatching", "--hatch-mode", mode)
+        assert read_png(out).shape[:2] == (64, 64)
     bad = in_process(capsys, "render", path, "-o", out, "--hatch-mode", "triplanar", check=False)
     assert bad.returncode != 0 and "--hatch-mode" in bad.stderr
