@@ -10,8 +10,9 @@ use crate::render::scene::material::Material;
 
 use super::mismatch;
 
-/// A settings value held by another's field.
+/// A settings value held by another's field (boxed in `Value`, so its size is paid once).
 #[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)]
 pub enum Setting {
     Material(Material),
     Dither(Dither),
