@@ -1,6 +1,6 @@
 //! `Camera` described.
 
-use super::{not_here, Constructor, Described, Field, Kind, Value};
+use super::{named, not_here, Constructor, Described, Field, Kind, Value};
 use crate::error::Result;
 use crate::render::scene::camera::{
     Camera, Placement, Projection, DEFAULT_FOV_Y, DEFAULT_HEIGHT, DEFAULT_UP,
@@ -55,27 +55,9 @@ const EXTRAS: &[Field] =
     &[Field::new("orthographic", Kind::Bool, "a fitted camera with an orthographic projection")];
 
 const CONSTRUCTORS: &[Constructor] = &[
-    Constructor {
-        name: "fit",
-        params: &["direction", "up", "fov_y", "margin", "orthographic"],
-        positional: 1,
-        required: 0,
-        help: include_str!("docs/Camera.fit.md"),
-    },
-    Constructor {
-        name: "look_at",
-        params: &["eye", "target", "up", "fov_y", "near", "far"],
-        positional: 2,
-        required: 1,
-        help: include_str!("docs/Camera.look_at.md"),
-    },
-    Constructor {
-        name: "orthographic",
-        params: &["eye", "target", "up", "height", "near", "far"],
-        positional: 2,
-        required: 1,
-        help: include_str!("docs/Camera.orthographic.md"),
-    },
+    named!("Camera", "fit", ["direction", "up", "fov_y", "margin", "orthographic"], 1, 0),
+    named!("Camera", "look_at", ["eye", "target", "up", "fov_y", "near", "far"], 2, 1),
+    named!("Camera", "orthographic", ["eye", "target", "up", "height", "near", "far"], 2, 1),
 ];
 
 impl Described for Camera {

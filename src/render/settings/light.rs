@@ -1,6 +1,6 @@
 //! `Light` described.
 
-use super::{not_here, Constructor, Described, Field, Kind, Setting, Value};
+use super::{named, not_here, Constructor, Described, Field, Kind, Setting, Value};
 use crate::error::Result;
 use crate::render::effects::shadows::settings::Shadows;
 use crate::render::scene::light::{Light, LightKind, Space};
@@ -26,27 +26,9 @@ const FIELDS: &[Field] = &[
 ];
 
 const CONSTRUCTORS: &[Constructor] = &[
-    Constructor {
-        name: "directional",
-        params: &["direction", "color", "intensity", "space", "shadows"],
-        positional: 1,
-        required: 1,
-        help: include_str!("docs/Light.directional.md"),
-    },
-    Constructor {
-        name: "point",
-        params: &["position", "color", "intensity", "space"],
-        positional: 1,
-        required: 1,
-        help: include_str!("docs/Light.point.md"),
-    },
-    Constructor {
-        name: "key",
-        params: &[],
-        positional: 0,
-        required: 0,
-        help: include_str!("docs/Light.key.md"),
-    },
+    named!("Light", "directional", ["direction", "color", "intensity", "space", "shadows"], 1, 1),
+    named!("Light", "point", ["position", "color", "intensity", "space"], 1, 1),
+    named!("Light", "key", [], 0, 0),
 ];
 
 impl Described for Light {

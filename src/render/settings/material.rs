@@ -1,7 +1,7 @@
 //! `Material` described: one field per coefficient of any model; a model's constructor takes
 //! those it uses, and a base colour from which it derives the colour coefficients.
 
-use super::{f32_value, f32s_value, not_here, Constructor, Described, Field, Kind, Setting, Value};
+use super::{f32_value, f32s_value, named, not_here, Constructor, Described, Field, Kind, Setting, Value};
 use crate::error::{Error, Result};
 use crate::render::effects::dither::{Dither, DitherPattern};
 use crate::render::effects::hatching::{HatchMode, Hatching};
@@ -54,58 +54,24 @@ const EXTRAS: &[Field] = &[
 ];
 
 const CONSTRUCTORS: &[Constructor] = &[
-    Constructor {
-        name: "lambert",
-        params: &["color", "ambient", "diffuse", "per_vertex"],
-        positional: 1,
-        required: 0,
-        help: include_str!("docs/Material.lambert.md"),
-    },
-    Constructor {
-        name: "phong",
-        params: &["color", "specular", "shininess", "ambient", "diffuse", "per_vertex"],
-        positional: 1,
-        required: 0,
-        help: include_str!("docs/Material.phong.md"),
-    },
-    Constructor {
-        name: "thresholded_phong",
-        params: &[
-            "color",
-            "t_h",
-            "t_s",
-            "highlight",
-            "ambient",
-            "specular",
-            "diffuse",
-            "per_vertex",
-            "dither",
-        ],
-        positional: 1,
-        required: 0,
-        help: include_str!("docs/Material.thresholded_phong.md"),
-    },
-    Constructor {
-        name: "bands",
-        params: &["color", "thresholds", "preset", "values", "per_vertex", "dither"],
-        positional: 1,
-        required: 0,
-        help: include_str!("docs/Material.bands.md"),
-    },
-    Constructor {
-        name: "hatching",
-        params: &["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither"],
-        positional: 1,
-        required: 0,
-        help: include_str!("docs/Material.hatching.md"),
-    },
-    Constructor {
-        name: "lut",
-        params: &["table", "color", "per_vertex", "dither"],
-        positional: 2,
-        required: 0,
-        help: include_str!("docs/Material.lut.md"),
-    },
+    named!("Material", "lambert", ["color", "ambient", "diffuse", "per_vertex"], 1, 0),
+    named!("Material", "phong", ["color", "specular", "shininess", "ambient", "diffuse", "per_vertex"], 1, 0),
+    named!(
+        "Material",
+        "thresholded_phong",
+        ["color", "t_h", "t_s", "highlight", "ambient", "specular", "diffuse", "per_vertex", "dither"],
+        1,
+        0
+    ),
+    named!("Material", "bands", ["color", "thresholds", "preset", "values", "per_vertex", "dither"], 1, 0),
+    named!(
+        "Material",
+        "hatching",
+        ["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither"],
+        1,
+        0
+    ),
+    named!("Material", "lut", ["table", "color", "per_vertex", "dither"], 2, 0),
 ];
 
 fn hatching(m: &Material) -> Option<&Hatching> {

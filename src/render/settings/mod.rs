@@ -100,6 +100,21 @@ pub struct Constructor {
     pub help: &'static str,
 }
 
+/// A named constructor of a class, `named!("Class", "name", [params...], positional, required)`,
+/// its docstring the file `docs/Class.name.md`.
+macro_rules! named {
+    ($class:literal, $name:literal, [$($param:literal),* $(,)?], $positional:expr, $required:expr) => {
+        $crate::render::settings::Constructor {
+            name: $name,
+            params: &[$($param),*],
+            positional: $positional,
+            required: $required,
+            help: include_str!(concat!("docs/", $class, ".", $name, ".md")),
+        }
+    };
+}
+pub(crate) use named;
+
 impl Constructor {
     /// The class's only constructor, `Class(...)`, whose first `positional` parameters may be
     /// given by position.
