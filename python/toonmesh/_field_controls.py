@@ -125,6 +125,13 @@ class Control:
     def watch(self, widget: Any, on_value: Callable[[Any], None]) -> None:
         widget.observe(lambda event: None if self.panel.syncing else on_value(event["new"]), names="value")
 
+    def own(self, widget: Any, on_value: Optional[Callable[[Any], None]] = None) -> Any:
+        """`widget` as this control's, under its key, calling `on_value` (by default
+        :meth:`change`) when the user sets it."""
+        self.panel.register(self.key, widget)
+        self.watch(widget, on_value or self.change)
+        return widget
+
     def children(self) -> List["Control"]:
         """The controls of the setting inside this field (a light's Shadows'), if any."""
         return []
@@ -165,9 +172,7 @@ def _place(slider: Any, value: Any, lo: float, hi: float) -> None:
 class Toggle(Control):
     def __init__(self, *args: Any):
         super().__init__(*args)
-        self.box = w.Checkbox(description=label(self.name), style=_STYLE, tooltip=self.field["help"])
-        self.panel.register(self.key, self.box)
-        self.watch(self.box, self.change)
+        self.box = self.own(w.Checkbox(description=label(self.name), style=_STYLE, tooltip=self.field["help"]))
 
     def show(self, value: Any) -> None:
         self.box.value = bool(value)
@@ -176,9 +181,8 @@ class Toggle(Control):
 class Slider(Control):
     def __init__(self, *args: Any):
         super().__init__(*args)
-        self.box = _slider(self.field["kind"], label(self.name), self.field["min"], self.field["max"], self.field["help"])
-        self.panel.register(self.key, self.box)
-        self.watch(self.box, self.change)
+        self.box = self.own(_slider(self.field["kind"], label(self.name), self.field["min"], self.field["max"],
+                                    self.field["help"]))
 
     def show(self, value: Any) -> None:
         _place(self.box, value, self.field["min"], self.field["max"])
@@ -196,10 +200,8 @@ class Choice(Control):
         self.whole = whole
         self.last: Any = None  # the setting before it was set to None
         options = ([self.OFF] if whole is not None else []) + list(field["choices"])
-        self.box = w.Dropdown(options=options, description=label(self.name), style=_STYLE,
-                              layout=w.Layout(width=_WIDTH), tooltip=field["help"])
-        self.panel.register(self.key, self.box)
-        self.watch(self.box, self.choose)
+        self.box = self.own(w.Dropdown(options=options, description=label(self.name), style=_STYLE,
+                                       layout=w.Layout(width=_WIDTH), tooltip=field["help"]), self.choose)
 
     def present(self) -> bool:
         return self.whole is not None or super().present()
@@ -227,9 +229,7 @@ class Choice(Control):
 class Color(Control):
     def __init__(self, *args: Any):
         super().__init__(*args)
-        self.box = w.ColorPicker(description=label(self.name), style=_STYLE, tooltip=self.field["help"])
-        self.panel.register(self.key, self.box)
-        self.watch(self.box, self.change)
+        self.box = self.own(w.ColorPicker(description=label(self.name), style=_STYLE, tooltip=self.field["help"]))
 
     def show(self, value: Any) -> None:
         self.box.value = "#" + "".join(f"{round(min(max(float(c), 0.0), 1.0) * 255):02x}" for c in value[:3])
@@ -331,9 +331,8 @@ class Switch(Control):
     def __init__(self, panel: Panel, source: Source, field: Field, key: str, cls: Any, on: Any, off: Any):
         super().__init__(panel, source, field, key)
         self.on, self.off = on, off
-        self.check = w.Checkbox(description=label(self.name), style=_STYLE, tooltip=field["help"])
-        self.panel.register(self.key, self.check)
-        self.watch(self.check, lambda value: self.change(self.on() if value else self.off))
+        self.check = self.own(w.Checkbox(description=label(self.name), style=_STYLE, tooltip=field["help"]),
+                              lambda value: self.change(self.on() if value else self.off))
         self.inner = controls_for(panel, source.inner(self.name), cls, key)
         self.box = _group([self.check, _group([c.box for c in self.inner], margin="0 0 0 24px")])
 
