@@ -19,6 +19,14 @@ from typing import Dict, List, Set, Tuple
 
 SRC = Path(__file__).resolve().parent.parent / "src"
 
+
+def surface_effects() -> List[str]:
+    """The per-pixel effects, as `effects/surface.rs` registers them (`name: Settings => EFFECT`)."""
+    text = (SRC / "render" / "effects" / "surface.rs").read_text()
+    listed = text[text.index("registry! {") :]
+    return re.findall(r"^\s+(\w+): [\w:]+ => [\w:]+,$", listed, re.M)
+
+
 # Lowest first. A module belongs to the first pattern that matches its path.
 LAYERS: List[List[str]] = [
     ["error", "real", "cancel", "parallel", "huge_pages", "names"],
@@ -27,9 +35,9 @@ LAYERS: List[List[str]] = [
     # plain data: settings, uniform blocks, WGSL text, and the per-pixel effects (no device)
     [
         "render::color", "render::albedo", "render::albedo::*", "render::block", "render::wgsl", "render::scene", "render::scene::*",
-        "render::effects::surface", "render::effects::surface_effect", "render::effects::hatching",
-        "render::effects::hatching::*",
-        "render::effects::dither", "render::effects::*::settings", "render::effects::outlines::stroke_width",
+        "render::effects::surface", "render::effects::surface_effect",
+        *[m for name in surface_effects() for m in (f"render::effects::{name}", f"render::effects::{name}::*")],
+        "render::effects::*::settings", "render::effects::outlines::stroke_width",
         # each settings type described for front ends
         "render::settings", "render::settings::*",
     ],

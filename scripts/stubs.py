@@ -17,7 +17,6 @@ ROOT = Path(__file__).resolve().parent.parent
 TEMPLATE = ROOT / "scripts" / "core_stub.pyi.in"
 STUB = ROOT / "python" / "toonmesh" / "_core.pyi"
 MARK = "# @settings-classes\n"
-CLASSES = ("Dither", "Shadows", "Light", "Camera", "LineStyle", "Outlines", "Material", "RenderOptions")
 
 # The read-only views that are not fields (src/py/settings/classes.rs).
 VIEWS: Dict[str, List[str]] = {
@@ -138,7 +137,7 @@ def render_keywords() -> str:
 def generate() -> str:
     import toonmesh._core as core
 
-    classes = "\n".join(settings_class(getattr(core, c)) for c in CLASSES)
+    classes = "\n".join(settings_class(getattr(core, c)) for c in core.SETTINGS_CLASSES)
     text = TEMPLATE.read_text()
     assert MARK in text, f"{TEMPLATE} has no {MARK.strip()!r} line"
     return text.replace(MARK, render_keywords() + "\n" + SETTINGS_BASE + "\n" + classes)

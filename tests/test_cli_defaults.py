@@ -12,7 +12,7 @@ import pytest
 
 from test_cli import in_process, one_line_error
 from toonmesh import _core, _described_flags, batch, cli
-from toonmesh._render import Dither, LineStyle, Material, Outlines, RenderOptions, Shadows
+from toonmesh._core import Dither, LineStyle, Material, Outlines, RenderOptions, Shadows
 
 #: (command, dest) -> (class, constructor, parameter): flags whose default is the described one.
 DESCRIBED = {

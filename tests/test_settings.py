@@ -17,7 +17,8 @@ import pytest
 import toonmesh as tm
 
 ROOT = Path(__file__).resolve().parent.parent
-CLASSES = [tm.Material, tm.Dither, tm.Light, tm.Shadows, tm.Camera, tm.LineStyle, tm.Outlines, tm.RenderOptions]
+# every settings class the core lists, as the package exports it
+CLASSES = [getattr(tm, name) for name in tm._core.SETTINGS_CLASSES]
 
 # Values made every way the classes offer, defaults and changed ones.
 VALUES: List[Any] = [
@@ -142,6 +143,18 @@ def test_the_description_is_the_class(cls):
         assert f["help"] and f["kind"], f
         if f["kind"] in ("float", "int"):
             assert f["min"] < f["max"], f
+
+
+def test_every_settings_class_is_the_cores_and_exported():
+    from toonmesh import _core
+
+    assert len(CLASSES) >= 8
+    for cls in CLASSES:
+        assert cls is getattr(_core, cls.__name__) and cls.__name__ in tm.__all__
+        assert cls.__doc__ and cls.describe()["class"] == cls.__name__
+    # and each class a settings field names is one of them
+    named = {f["class"] for c in CLASSES for f in c.describe()["fields"] if f["kind"] == "setting"}
+    assert named <= set(_core.SETTINGS_CLASSES), named
 
 
 def test_unknown_and_misplaced_arguments_are_named():

@@ -13,21 +13,25 @@ from toonmesh._core import (
     get_num_threads,
     set_num_threads,
 )
-from toonmesh._render import (
+
+# the settings classes (the core's SETTINGS_CLASSES, each a class of the core)
+from toonmesh._core import (
     Camera,
     Dither,
     Light,
     LineStyle,
     Material,
+    Outlines,
+    RenderOptions,
+    Shadows,
+)
+from toonmesh._render import (
     Mesh,
     MeshHandle,
-    Outlines,
     Renderer,
     RenderKeywords,
-    RenderOptions,
     RenderResult,
     RenderStack,
-    Shadows,
     gpu_info,
     kang_table,
     render,
@@ -39,6 +43,14 @@ from toonmesh.viewer import Viewer
 
 __all__ = [
     *_rendering,
+    "Camera",
+    "Dither",
+    "Light",
+    "LineStyle",
+    "Material",
+    "Outlines",
+    "RenderOptions",
+    "Shadows",
     "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",

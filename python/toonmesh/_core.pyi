@@ -28,6 +28,7 @@ __all__ = [
     "SMOOTH_BOUNDARIES",
     "SMOOTH_PRESETS",
     "DEFAULT_CREASE_ANGLE",
+    "SETTINGS_CLASSES",
     "Camera",
     "ConvergenceError",
     "Dither",
@@ -84,6 +85,8 @@ DITHER_SPACES: Tuple[str, ...]
 SHADOW_FILTERS: Tuple[str, ...]
 HATCH_MODES: Tuple[str, ...]
 BACKENDS: Tuple[str, ...]
+#: The settings classes, by name (each is a class of this module).
+SETTINGS_CLASSES: Tuple[str, ...]
 SMOOTH_METHODS: Tuple[str, ...]
 SMOOTH_WEIGHTS: Tuple[str, ...]
 SMOOTH_BOUNDARIES: Tuple[str, ...]

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any, Dict, Iterator, List, NamedTuple, Optiona
 import numpy as np
 
 from toonmesh import _colors, _core, _load
-from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, RenderOptions, Shadows, kang_table
+from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions, kang_table
 from toonmesh._input import mesh_arrays
 from toonmesh._results import RenderResult, RenderStack, stack_of
 from toonmesh._scene import Mesh, MeshHandle, Normals, geometry_key, normal_mode
@@ -322,19 +322,11 @@ def gpu_info(backend: Optional[str] = None) -> Dict[str, Any]:
 
 __all__ = [
     "RenderKeywords",
-    "RenderOptions",
-    "Camera",
-    "Dither",
-    "Light",
-    "LineStyle",
-    "Material",
     "Mesh",
     "MeshHandle",
-    "Outlines",
     "RenderResult",
     "RenderStack",
     "Renderer",
-    "Shadows",
     "gpu_info",
     "kang_table",
     "render",

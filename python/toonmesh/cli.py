@@ -35,10 +35,8 @@ from toonmesh._files import (
 )
 from toonmesh._line_drawing import summary, view_lines, write_npz, write_svg
 from toonmesh._load import OWN_COLOURS_WHITE, read_surfaces
-from toonmesh._render import (
-    Camera, Dither, Light, LineStyle, Material, Mesh, Outlines, RenderOptions, RenderResult, Shadows, gpu_info,
-    render,
-)
+from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, RenderOptions, Shadows
+from toonmesh._render import Mesh, RenderResult, gpu_info, render
 from toonmesh._scene import normal_mode
 from toonmesh._views import UP_AXES, check_views, up_vector, view_direction
 from toonmesh.batch import SMOOTH_METHODS as RENDER_SMOOTH_METHODS, render_views

@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any, Dict, Generic, List, Optional, Tuple, Typ
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._core import Camera, Dither, Light, Material, Outlines, RenderOptions, Shadows
+from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
 from toonmesh._described import default
 from toonmesh._render import PlacedMesh, Renderer, draw, place_meshes, remove_meshes, shared_renderer
 from toonmesh._results import RenderResult
@@ -617,11 +617,11 @@ def _source(value: Any) -> str:
 _FLOAT = re.compile(r"(?<![\w.])-?\d+\.\d+(?:e[-+]?\d+)?")
 
 
-#: What ``tm`` names in the source code() writes, to check that source here: the package's classes
-#: taken from their own modules (the package imports this module, so this one does not import it).
-_TM = types.SimpleNamespace(
-    Camera=Camera, Dither=Dither, Light=Light, Material=Material, Outlines=Outlines, Shadows=Shadows, _core=_core
-)
+#: What ``tm`` names in the source code() writes, to check that source here: the settings classes,
+#: taken from the core (the package imports this module, so this one does not import it).
+_TM = types.SimpleNamespace(**{name: getattr(_core, name) for name in _core.SETTINGS_CLASSES}, _core=_core)
+#: A settings class's name where a repr calls it or one of its constructors.
+_CLASS = re.compile(r"(?<![\w.'\"])(" + "|".join(_core.SETTINGS_CLASSES) + r")(?=[.(])")
 
 
 def _gives(source: str, value: Any) -> bool:
@@ -632,38 +632,11 @@ def _gives(source: str, value: Any) -> bool:
 
 
 def _spellings(value: Any) -> List[str]:
-    """Constructor calls that may give ``value`` back (each is checked)."""
-    out: List[str] = []
-    if isinstance(value, Outlines):
-        style = next((s for s in value.styles.values() if s is not None), None)
-        out.append(repr(value.kind))
-        if style is not None:
-            out.append(
-                f"tm.Outlines({value.kind!r}, color={_source(style.color)}, width={style.width!r}, "
-                f"crease_angle={value.crease_angle!r}, weld={value.weld!r}, normal_threshold={value.normal_threshold!r}, "
-                f"depth_threshold={value.depth_threshold!r}, depth_offset={value.depth_offset!r})"
-            )
-    elif isinstance(value, Light):
-        out.append("tm.Light.key()")
-        shadows = "None" if value.shadows is None else _source(value.shadows)
-        common = f"color={_source(value.color)}, intensity={value.intensity!r}, space={value.space!r}"
-        if value.kind == "directional":
-            out.append(f"tm.Light.directional({_source(value.direction)}, {common}, shadows={shadows})")
-        else:
-            out.append(f"tm.Light.point({_source(value.position)}, {common})")
-    elif isinstance(value, Shadows):
-        out.append(f"tm.Shadows({value.size!r}, {value.bias!r}, {value.filter!r})")
-    elif isinstance(value, Dither):
-        out.append(f"tm.Dither({value.pattern!r}, space={value.space!r}, amount={value.amount!r}, scale={value.scale!r})")
-    elif isinstance(value, Material):
-        dither = "None" if value.dither is None else _source(value.dither)
-        for factory in ("bands", "thresholded_phong", "lambert", "phong", "hatching", "lut"):
-            out.append(f"tm.Material.{factory}()")
-        if value.model == "bands" and value.hatch_style is None:
-            out.append(
-                f"tm.Material.bands({_source(value.diffuse)}, thresholds={_source(value.thresholds)}, "
-                f"values={_source(value.values)}, per_vertex={value.per_vertex!r}, dither={dither})"
-            )
+    """Constructor calls that may give ``value`` back (each is checked): a settings value's repr
+    (which evaluates back to it) with its classes as ``tm``'s; an outline set by its kind first."""
+    out: List[str] = [repr(value.kind)] if isinstance(value, Outlines) else []
+    if type(value).__name__ in _core.SETTINGS_CLASSES:
+        out.append(_CLASS.sub(r"tm.\1", repr(value)))
     return out
 
 

@@ -1,112 +1,43 @@
-//! The settings classes: each a described core type with its constructors (`settings_class!`),
-//! their docstrings the core's (`render/settings/docs`, which its description holds too), and the
-//! few read-only views that are not fields.
+//! The settings classes: one per entry of the core's list (`python_classes!`), their docstrings
+//! the core's (which its description holds too), and the few read-only views that are not
+//! fields.
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use super::settings_class;
-use crate::render::effects::dither::Dither;
-use crate::render::effects::outlines::settings::{kind_names, LineStyle, Outlines};
-use crate::render::effects::shadows::settings::Shadows;
-use crate::render::scene::camera::Camera;
-use crate::render::scene::light::Light;
-use crate::render::scene::material::Material;
+use crate::render::effects::outlines::settings::kind_names;
 use crate::render::scene::model;
-use crate::render::scene::options::RenderOptions;
+use crate::render::settings::{settings_classes, CLASSES};
 
-settings_class! {
-    #[doc = include_str!("../../render/settings/docs/Material.md")]
-    PyMaterial(Material, "Material") {
-        #[doc = include_str!("../../render/settings/docs/Material.lambert.md")]
-        fn lambert;
-        #[doc = include_str!("../../render/settings/docs/Material.phong.md")]
-        fn phong;
-        #[doc = include_str!("../../render/settings/docs/Material.thresholded_phong.md")]
-        fn thresholded_phong;
-        #[doc = include_str!("../../render/settings/docs/Material.bands.md")]
-        fn bands;
-        #[doc = include_str!("../../render/settings/docs/Material.hatching.md")]
-        fn hatching;
-        #[doc = include_str!("../../render/settings/docs/Material.lut.md")]
-        fn lut;
-    }
-}
+use super::python_classes;
+settings_classes!(python_classes);
 
-settings_class! {
-    #[doc = include_str!("../../render/settings/docs/Dither.md")]
-    PyDither(Dither, "Dither") {
-        new;
+/// Adds every settings class, and their names as `SETTINGS_CLASSES`.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    macro_rules! add {
+        ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
+            $(m.add_class::<$class>()?;)*
+        };
     }
-}
-
-settings_class! {
-    #[doc = include_str!("../../render/settings/docs/Light.md")]
-    PyLight(Light, "Light") {
-        #[doc = include_str!("../../render/settings/docs/Light.directional.md")]
-        fn directional;
-        #[doc = include_str!("../../render/settings/docs/Light.point.md")]
-        fn point;
-        #[doc = include_str!("../../render/settings/docs/Light.key.md")]
-        fn key;
-    }
-}
-
-settings_class! {
-    #[doc = include_str!("../../render/settings/docs/Shadows.md")]
-    PyShadows(Shadows, "Shadows") {
-        new;
-    }
-}
-
-settings_class! {
-    #[doc = include_str!("../../render/settings/docs/Camera.md")]
-    PyCamera(Camera, "Camera") {
-        #[doc = include_str!("../../render/settings/docs/Camera.fit.md")]
-        fn fit;
-        #[doc = include_str!("../../render/settings/docs/Camera.look_at.md")]
-        fn look_at;
-        #[doc = include_str!("../../render/settings/docs/Camera.orthographic.md")]
-        fn orthographic;
-    }
-}
-
-settings_class! {
-    #[doc = include_str!("../../render/settings/docs/LineStyle.md")]
-    PyLineStyle(LineStyle, "LineStyle") {
-        new;
-    }
-}
-
-settings_class! {
-    #[doc = include_str!("../../render/settings/docs/Outlines.md")]
-    PyOutlines(Outlines, "Outlines") {
-        new;
-    }
-}
-
-settings_class! {
-    #[doc = include_str!("../../render/settings/docs/RenderOptions.md")]
-    PyRenderOptions(RenderOptions, "RenderOptions") {
-        new;
-    }
+    settings_classes!(add);
+    m.add("SETTINGS_CLASSES", pyo3::types::PyTuple::new(m.py(), CLASSES)?)
 }
 
 #[pymethods]
-impl PyOutlines {
+impl Outlines {
     /// Each ink kind's :class:`LineStyle`, or None where it is not drawn.
     #[getter]
     fn styles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         for (name, s) in kind_names().iter().zip(&self.inner.styles) {
-            d.set_item(name, s.map(|inner| PyLineStyle { inner }))?;
+            d.set_item(name, s.map(|inner| LineStyle { inner }))?;
         }
         Ok(d)
     }
 }
 
 #[pymethods]
-impl PyMaterial {
+impl Material {
     /// A hatching material's ink (sRGB), spacing and width in pixels and mode ("field" or
     /// "triplanar") as a dict; None for others.
     #[getter]

@@ -16,9 +16,7 @@ use pyo3::IntoPyObjectExt;
 use crate::error::{Error, Result};
 use crate::render::settings::{self as described, parameter, Described, Value};
 
-pub use classes::{
-    PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyRenderOptions, PyShadows,
-};
+pub use classes::{Camera as PyCamera, Material as PyMaterial, RenderOptions as PyRenderOptions};
 
 /// A Python class around a described core type.
 pub trait Wraps: Sized {
@@ -26,32 +24,32 @@ pub trait Wraps: Sized {
     fn wrap(inner: Self::Core) -> Self;
 }
 
-/// Declares a settings class: the wrapper, its core type and Python name, its docstring, and
-/// its constructors (`new` for `Class(...)`, then `fn name` for each `Class.name(...)`, each
-/// with its docstring).
-macro_rules! settings_class {
-    (
-        $(#[$doc:meta])* $py:ident($core:ty, $name:literal) {
+/// The Python classes, one per entry of the core's list (`render::settings::settings_classes`):
+/// the wrapper (named as the class), its docstring and its constructors' (from the core's
+/// docs), and the methods every settings class has.
+macro_rules! python_classes {
+    ($(
+        $class:ident($docs:literal) = $core:path {
             $(new $(#[$ndoc:meta])*;)?
-            $($(#[$cdoc:meta])* fn $ctor:ident;)*
+            $(fn $ctor:ident;)*
         }
-    ) => {
-        $(#[$doc])*
-        #[pyo3::pyclass(name = $name, module = "toonmesh._core", frozen, eq)]
+    )*) => {$(
+        #[doc = include_str!(concat!("../../render/", $docs, "/", stringify!($class), ".md"))]
+        #[pyo3::pyclass(module = "toonmesh._core", frozen, eq)]
         #[derive(Clone, PartialEq)]
-        pub struct $py {
+        pub struct $class {
             pub inner: $core,
         }
 
-        impl $crate::py::settings::Wraps for $py {
+        impl $crate::py::settings::Wraps for $class {
             type Core = $core;
             fn wrap(inner: $core) -> Self {
-                $py { inner }
+                $class { inner }
             }
         }
 
         #[pyo3::pymethods]
-        impl $py {
+        impl $class {
             $(
                 $(#[$ndoc])*
                 #[new]
@@ -60,19 +58,21 @@ macro_rules! settings_class {
                     args: &pyo3::Bound<'_, pyo3::types::PyTuple>,
                     kwargs: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>,
                 ) -> pyo3::PyResult<Self> {
-                    $crate::py::settings::make("", args, kwargs).map(|inner| $py { inner })
+                    $crate::py::settings::make("", args, kwargs).map(|inner| $class { inner })
                 }
             )?
 
             $(
-                $(#[$cdoc])*
+                #[doc = include_str!(concat!(
+                    "../../render/", $docs, "/", stringify!($class), ".", stringify!($ctor), ".md"
+                ))]
                 #[staticmethod]
                 #[pyo3(signature = (*args, **kwargs))]
                 fn $ctor(
                     args: &pyo3::Bound<'_, pyo3::types::PyTuple>,
                     kwargs: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>,
                 ) -> pyo3::PyResult<Self> {
-                    $crate::py::settings::make(stringify!($ctor), args, kwargs).map(|inner| $py { inner })
+                    $crate::py::settings::make(stringify!($ctor), args, kwargs).map(|inner| $class { inner })
                 }
             )*
 
@@ -107,7 +107,7 @@ macro_rules! settings_class {
             /// the constructor checks.
             #[pyo3(signature = (**changes))]
             fn replace(&self, changes: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>) -> pyo3::PyResult<Self> {
-                $crate::py::settings::replace(&self.inner, changes).map(|inner| $py { inner })
+                $crate::py::settings::replace(&self.inner, changes).map(|inner| $class { inner })
             }
 
             /// The class described for front ends: its fields (name, kind, bounds or choices,
@@ -117,9 +117,9 @@ macro_rules! settings_class {
                 $crate::py::settings::describe::<$core>(py)
             }
         }
-    };
+    )*};
 }
-pub(crate) use settings_class;
+pub(crate) use python_classes;
 
 /// The arguments of a call to `constructor`, by parameter (None: the default, so left out).
 pub fn make<T: Described>(
@@ -233,15 +233,15 @@ where
 /// _restore(cls, state): a pickled setting, checked again.
 #[pyfunction]
 fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
-    macro_rules! classes {
-        ($($py:ty),*) => {
+    macro_rules! any_class {
+        ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
             match cls {
-                $(c if c == <<$py as Wraps>::Core as Described>::CLASS => restore::<$py>(py, state),)*
+                $(stringify!($class) => restore::<classes::$class>(py, state),)*
                 other => Err(Error::invalid("cls", format!("no settings class {other:?}")).into()),
             }
         };
     }
-    classes!(PyMaterial, PyDither, PyLight, PyShadows, PyCamera, PyLineStyle, PyOutlines, PyRenderOptions)
+    described::settings_classes!(any_class)
 }
 
 /// The description of `T` as Python data (see `render::settings`).
@@ -350,14 +350,7 @@ fn render_keywords(m: &Bound<'_, PyModule>) -> PyResult<()> {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add_names(m)?;
     render_keywords(m)?;
-    m.add_class::<PyMaterial>()?;
-    m.add_class::<PyDither>()?;
-    m.add_class::<PyLight>()?;
-    m.add_class::<PyShadows>()?;
-    m.add_class::<PyCamera>()?;
-    m.add_class::<PyLineStyle>()?;
-    m.add_class::<PyOutlines>()?;
-    m.add_class::<PyRenderOptions>()?;
+    classes::register(m)?;
     m.add_function(wrap_pyfunction!(_restore, m)?)?;
     m.add_function(wrap_pyfunction!(classes::kang_table, m)?)?;
     Ok(())

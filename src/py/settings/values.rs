@@ -6,7 +6,8 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString};
 use pyo3::IntoPyObjectExt;
 
-use super::{PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyShadows};
+use super::classes::{self, Light as PyLight, LineStyle as PyLineStyle};
+use crate::render::settings::settings_classes;
 use crate::error::{Error, Result};
 use crate::py::args::{flag, integer, number, numbers, refuse_text, rgb, rgba, text, triple, type_name};
 use crate::render::scene::light::Light;
@@ -51,28 +52,32 @@ pub fn to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>>
         Value::Lights(l) => {
             l.iter().map(|&inner| PyLight { inner }).collect::<Vec<_>>().into_bound_py_any(py)
         }
-        Value::Setting(s) => match &**s {
-            Setting::Material(inner) => PyMaterial { inner: inner.clone() }.into_bound_py_any(py),
-            Setting::Dither(inner) => PyDither { inner: *inner }.into_bound_py_any(py),
-            Setting::Light(inner) => PyLight { inner: *inner }.into_bound_py_any(py),
-            Setting::Shadows(inner) => PyShadows { inner: *inner }.into_bound_py_any(py),
-            Setting::Camera(inner) => PyCamera { inner: *inner }.into_bound_py_any(py),
-            Setting::LineStyle(inner) => PyLineStyle { inner: *inner }.into_bound_py_any(py),
-            Setting::Outlines(inner) => PyOutlines { inner: inner.clone() }.into_bound_py_any(py),
-        },
+        Value::Setting(s) => {
+            macro_rules! wrap {
+                ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
+                    match &**s {
+                        $(Setting::$class(inner) => classes::$class { inner: inner.clone() }.into_bound_py_any(py),)*
+                    }
+                };
+            }
+            settings_classes!(wrap)
+        }
     }
 }
 
 /// A settings object of `class`, or the other forms its field takes (a name or a flag).
 fn setting(name: &str, class: &str, obj: &Bound<'_, PyAny>) -> Result<Value> {
-    let found = match class {
-        "Material" => obj.cast::<PyMaterial>().ok().map(|m| Setting::Material(m.get().inner.clone())),
-        "Camera" => obj.cast::<PyCamera>().ok().map(|c| Setting::Camera(c.get().inner)),
-        "Dither" => obj.cast::<PyDither>().ok().map(|d| Setting::Dither(d.get().inner)),
-        "Shadows" => obj.cast::<PyShadows>().ok().map(|s| Setting::Shadows(s.get().inner)),
-        "Outlines" => obj.cast::<PyOutlines>().ok().map(|o| Setting::Outlines(o.get().inner.clone())),
-        _ => None,
-    };
+    macro_rules! cast {
+        ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
+            match class {
+                $(stringify!($class) => {
+                    obj.cast::<classes::$class>().ok().map(|o| Setting::$class(o.get().inner.clone()))
+                })*
+                _ => None,
+            }
+        };
+    }
+    let found = settings_classes!(cast);
     if let Some(s) = found {
         return Ok(Value::setting(s));
     }

@@ -6,6 +6,7 @@
 //! written here: a field's default is what its constructor makes when the field is not given.
 
 mod camera;
+mod classes;
 mod dither;
 mod light;
 mod line_style;
@@ -15,7 +16,9 @@ mod outlines;
 mod shadows;
 mod value;
 
-pub use value::{Setting, Value};
+pub(crate) use classes::settings_classes;
+pub use classes::{Setting, CLASSES};
+pub use value::Value;
 
 use serde::de::DeserializeOwned;
 use serde::Serialize;

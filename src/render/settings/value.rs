@@ -1,27 +1,10 @@
 //! A field's value, as front ends hand it to the core and read it back.
 
 use crate::error::Result;
-use crate::render::effects::dither::Dither;
-use crate::render::effects::outlines::settings::{LineStyle, Outlines};
-use crate::render::effects::shadows::settings::Shadows;
-use crate::render::scene::camera::Camera;
 use crate::render::scene::light::Light;
-use crate::render::scene::material::Material;
 
-use super::mismatch;
+use super::{mismatch, Setting};
 
-/// A settings value held by another's field (boxed in `Value`, so its size is paid once).
-#[derive(Clone, Debug, PartialEq)]
-#[allow(clippy::large_enum_variant)]
-pub enum Setting {
-    Material(Material),
-    Dither(Dither),
-    Light(Light),
-    Shadows(Shadows),
-    Camera(Camera),
-    LineStyle(LineStyle),
-    Outlines(Outlines),
-}
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Value {

@@ -1,0 +1,45 @@
+//! Every settings class, listed once: its name (which front ends give it too), where its docs are (below `src/render`), its core type, and its
+//! constructors (`new` for `Class(...)`, then `fn name` for each `Class.name(...)`, whose
+//! docstring is `<docs>/Class.name.md`). `Setting` (a settings value held by another's field),
+//! the Python classes and the stub's list of classes are written from this list, so a new
+//! settings class is one line here and its `Described` impl.
+
+/// Calls `$then! { Class("docs") = path::Type { constructors } ... }` with the list.
+macro_rules! settings_classes {
+    ($then:ident) => {
+        $then! {
+            Dither("settings/docs") = $crate::render::effects::dither::Dither { new; }
+            Shadows("settings/docs") = $crate::render::effects::shadows::settings::Shadows { new; }
+            Light("settings/docs") = $crate::render::scene::light::Light {
+                fn directional; fn point; fn key;
+            }
+            Camera("settings/docs") = $crate::render::scene::camera::Camera {
+                fn fit; fn look_at; fn orthographic;
+            }
+            LineStyle("settings/docs") = $crate::render::effects::outlines::settings::LineStyle { new; }
+            Outlines("settings/docs") = $crate::render::effects::outlines::settings::Outlines { new; }
+            Material("settings/docs") = $crate::render::scene::material::Material {
+                fn lambert; fn phong; fn thresholded_phong; fn bands; fn hatching; fn lut;
+            }
+            RenderOptions("settings/docs") = $crate::render::scene::options::RenderOptions { new; }
+        }
+    };
+}
+pub(crate) use settings_classes;
+
+/// `Setting`: one variant per class.
+macro_rules! setting_enum {
+    ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
+        /// A settings value held by another's field (boxed in `Value`, so its size is paid once).
+        #[derive(Clone, Debug, PartialEq)]
+        #[allow(clippy::large_enum_variant)]
+        pub enum Setting {
+            $($class($core),)*
+        }
+
+        /// Every settings class's name, in the list's order.
+        pub const CLASSES: &[&str] = &[$(stringify!($class)),*];
+    };
+}
+
+settings_classes!(setting_enum);
