@@ -7,11 +7,11 @@ use pyo3::types::{PyDict, PyList, PyString};
 use pyo3::IntoPyObjectExt;
 
 use super::classes::{self, Light as PyLight, LineStyle as PyLineStyle};
-use crate::render::settings::settings_classes;
 use crate::error::{Error, Result};
 use crate::py::args::{flag, integer, number, numbers, refuse_text, rgb, rgba, text, triple, type_name};
 use crate::render::scene::light::Light;
 use crate::render::scene::model::MAX_LUT;
+use crate::render::settings::settings_classes;
 use crate::render::settings::{Field, Kind, Setting, Value};
 
 /// The value of `obj` for `field` (named `name` in errors).

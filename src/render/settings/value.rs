@@ -5,7 +5,6 @@ use crate::render::scene::light::Light;
 
 use super::{mismatch, Setting};
 
-
 #[derive(Clone, Debug, PartialEq)]
 pub enum Value {
     None,
