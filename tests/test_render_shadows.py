@@ -181,3 +181,33 @@ def test_a_lighter_shadow_takes_its_share_of_the_light(backend):
     assert tm.Shadows(strength=0.5) != tm.Shadows() and pickle.loads(pickle.dumps(tm.Shadows(strength=0.5))).strength == 0.5
     with pytest.raises(ValueError, match="^strength: must be in \\[0, 1\\]"):
         tm.Shadows(strength=1.5)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_masked_textures_cut_outs_are_cut_out_of_its_shadow(backend):
+    # a square leaf above a floor, textured with a 4x4 checker of opaque and clear texels
+    # (alpha cutoff 0.5): its shadow on the floor is the checker, not a square
+    leaf_v, leaf_f = plane(1.0, y=1.0)
+    checker = (np.indices((4, 4)).sum(axis=0) % 2).astype(np.uint8)
+    texture = np.zeros((4, 4, 4), np.uint8)
+    texture[..., :3] = 200
+    texture[..., 3] = checker * 255
+    uv = (leaf_v[:, [0, 2]] + 1.0) / 2.0
+    light = [tm.Light.directional((0.0, -1.0, 0.0), shadows=tm.Shadows(filter="none"))]
+    camera = tm.Camera.orthographic((0.0, 5.0, 0.001), target=(0.0, 0.0, 0.0), height=2.0)
+    kw = dict(lights=light, camera=camera, width=64, height=64, outputs=("shadow", "depth"), backend=backend)
+    r = tm.Renderer(backend)
+    for cutoff in (None, 0.5):
+        leaf = tm.Mesh(leaf_v, leaf_f, uv=uv, texture=texture, alpha_cutoff=cutoff)
+        floor = tm.Mesh(*plane(2.0))
+        res = r.render([floor, leaf], **{k: v for k, v in kw.items() if k != "backend"})
+        on_floor = res.depth > 4.5  # the floor (5 below the camera), where the leaf is cut away
+        shadowed = res.shadow < 0.5
+        if cutoff is None:
+            # an opaque leaf: it covers the floor, which is all in its shadow where it shows
+            assert on_floor.sum() == 0 or shadowed[on_floor].mean() > 0.99
+        else:
+            # the floor shows through the clear texels and is lit there: the light passes too
+            assert on_floor.sum() > 64 * 64 * 0.4, on_floor.sum()
+            lit = (~shadowed) & on_floor
+            assert lit.sum() / on_floor.sum() > 0.95, (lit.sum(), on_floor.sum())

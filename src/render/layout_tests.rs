@@ -28,6 +28,7 @@ fn modules() -> Vec<String> {
         .map(|w| compose(p, DEFAULT_HOOKS, w))
         .collect();
     all.push(compose(p, shadowed.wgsl(), mask::WGSL));
+    all.push(compose(p, DEFAULT_HOOKS, &format!("{}\n{}", map::CUT_WGSL, map::cut_stages().wgsl())));
     for stages in MeshStages::all() {
         let written = stages.wgsl();
         for hooks in [DEFAULT_HOOKS, shadowed.wgsl()] {

@@ -2,6 +2,7 @@
 //! and full-screen triangles (image passes), and the states they share.
 
 use crate::render::gpu_albedo;
+use crate::render::pipelines::PipelineKey;
 
 use super::mesh_stages::MeshStages;
 use super::target::DEPTH_FORMAT;
@@ -74,7 +75,7 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
         },
         depth_stencil: nearest_wins(),
         multisample: wgpu::MultisampleState { count: d.samples, mask: !0, alpha_to_coverage_enabled: false },
-        fragment: Some(wgpu::FragmentState {
+        fragment: d.stages.fragment().then(|| wgpu::FragmentState {
             module,
             entry_point: Some("fs_mesh"),
             compilation_options: options,
@@ -82,6 +83,25 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
         }),
         multiview_mask: None,
         cache: None,
+    })
+}
+
+/// The pipeline of a depth pass's draw (one sample a pixel, no bind group but the frame's, the
+/// draw's and the mesh's colour): the geometry pass's and the shadow map's, cached under
+/// `label` with the stages, the cull mode and the constants.
+pub fn depth_pass_pipeline(
+    f: &FrameCtx<'_>,
+    label: &'static str,
+    wgsl: &str,
+    stages: MeshStages,
+    constants: Vec<(&'static str, f64)>,
+    cull: Option<wgpu::Face>,
+) -> std::sync::Arc<wgpu::RenderPipeline> {
+    let key = PipelineKey::new(label, stages.bits() | cull_bits(cull) << 8).with(&constants);
+    f.pipelines.get(key, || {
+        let module = f.mesh_module(label, wgsl, stages, None);
+        let draw = MeshDraw { label, stages, samples: 1, constants: &constants, more: &[], cull };
+        mesh_pipeline(f, &module, draw)
     })
 }
 

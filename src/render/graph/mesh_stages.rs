@@ -28,6 +28,9 @@ pub struct MeshStages {
     /// Writes the geometry target (after the colour, so that the targets stay contiguous: the GL
     /// backend mishandles gaps between colour attachments).
     pub geometry: Option<GeometryLayout>,
+    /// The matrix from normalised view space to where the vertices are drawn, when not the
+    /// camera's projection (`frame.view.proj`): the shadow-casting light's, for the shadow map.
+    pub clip: Option<&'static str>,
 }
 
 /// A vertex buffer a part reads: its slot, its layout, and the names its attributes take in
@@ -60,7 +63,6 @@ const POSITION: Part = Part {
     buffer: Some(Buffer { slot: 0, layout: GpuMesh::vertex_layout, names: &["position", "normal"] }),
     vertex: &[
         "let p = draw.mesh.model_view * vec4<f32>(position, 1.0);",
-        "o.clip = frame.view.proj * p;",
         "o.view_pos = p.xyz;",
         "o.view_normal = (draw.mesh.normal_matrix * vec4<f32>(normal, 0.0)).xyz;",
     ],
@@ -201,7 +203,14 @@ impl MeshStages {
         outputs
     }
 
-    /// Its name: the parts and the targets (the shader module's cache key and label).
+    /// Whether it has a fragment stage: it writes a colour target, or a part cuts pixels (a
+    /// depth-only draw of plain meshes, such as the shadow map's, needs none).
+    pub fn fragment(&self) -> bool {
+        !self.outputs().is_empty() || self.parts().iter().any(|p| !p.after.is_empty())
+    }
+
+    /// Its name: the parts, the clip matrix and the targets (the shader module's cache key and
+    /// label).
     pub fn name(&self) -> String {
         let parts: Vec<_> = self.parts().iter().map(|p| p.name).collect();
         let mut targets: Vec<&str> = if self.color { vec!["color"] } else { vec![] };
@@ -209,7 +218,8 @@ impl MeshStages {
             GeometryLayout::NormalDepth => "normal_depth",
             GeometryLayout::Depth => "depth",
         }));
-        format!("{} -> {}", parts.join(" + "), targets.join(" + "))
+        let clip = self.clip.map_or(String::new(), |c| format!(" @ {c}"));
+        format!("{}{clip} -> {}", parts.join(" + "), targets.join(" + "))
     }
 
     /// A pipeline-cache key's bits for it.
@@ -219,6 +229,7 @@ impl MeshStages {
             | (self.field as u64) << 2
             | (self.color as u64) << 3
             | self.geometry.map_or(0, |g| 1 + g as u64) << 4
+            | (self.clip.is_some() as u64) << 6
     }
 
     /// The formats of the targets it writes, in order.
@@ -252,11 +263,15 @@ impl MeshStages {
         for (location, (name, ty)) in varyings.enumerate() {
             s += &format!("    @location({location}) {name}: {ty},\n");
         }
-        s += "};\n\nstruct MeshTargets {\n";
-        for (location, o) in outputs.iter().enumerate() {
-            s += &format!("    @location({location}) {}: {},\n", o.name, o.ty);
+        s += "};\n\n";
+        if !outputs.is_empty() {
+            s += "struct MeshTargets {\n";
+            for (location, o) in outputs.iter().enumerate() {
+                s += &format!("    @location({location}) {}: {},\n", o.name, o.ty);
+            }
+            s += "};\n\n";
         }
-        s += "};\n\n@vertex\nfn vs_mesh(";
+        s += "@vertex\nfn vs_mesh(";
         let mut inputs = Vec::new();
         for b in parts.iter().filter_map(|p| p.buffer.as_ref()) {
             for (a, name) in (b.layout)().attributes.iter().zip(b.names) {
@@ -269,12 +284,16 @@ impl MeshStages {
             s += &format!("    // {}\n", p.name);
             lines(&mut s, p.vertex);
         }
-        s += "    return o;\n}\n\n@fragment\nfn fs_mesh(i: MeshOut, @builtin(front_facing) front_facing: bool) -> MeshTargets {\n";
+        s += &format!("    o.clip = {} * p;\n", self.clip.unwrap_or("frame.view.proj"));
+        s += "    return o;\n}\n\n@fragment\nfn fs_mesh(i: MeshOut, @builtin(front_facing) front_facing: bool)";
+        s += if outputs.is_empty() { " {\n" } else { " -> MeshTargets {\n" };
         for p in parts.iter().filter(|p| !p.fragment.is_empty()) {
             s += &format!("    // {}\n", p.name);
             lines(&mut s, p.fragment);
         }
-        s += "    var out: MeshTargets;\n";
+        if !outputs.is_empty() {
+            s += "    var out: MeshTargets;\n";
+        }
         for o in &outputs {
             s += &format!("    out.{} = {};\n", o.name, o.value);
         }
@@ -282,7 +301,7 @@ impl MeshStages {
             s += &format!("    // {}, after the shading\n", p.name);
             lines(&mut s, p.after);
         }
-        s + "    return out;\n}\n"
+        s + if outputs.is_empty() { "}\n" } else { "    return out;\n}\n" }
     }
 
     /// Every combination: the mesh's colour or none, the material's anchors and field or none,
@@ -299,7 +318,7 @@ impl MeshStages {
         for albedo in [false, true] {
             for (anchors, field) in [(false, false), (true, false), (true, true), (false, true)] {
                 for (color, geometry) in targets {
-                    all.push(MeshStages { albedo, anchors, field, color, geometry });
+                    all.push(MeshStages { albedo, anchors, field, color, geometry, clip: None });
                 }
             }
         }
@@ -315,7 +334,7 @@ mod tests {
     fn varyings_are_only_what_the_parts_add() {
         let plain = MeshStages { color: true, ..Default::default() }.wgsl();
         assert!(plain.contains("@location(1) view_normal") && !plain.contains("@location(2)"), "{plain}");
-        let all = MeshStages { albedo: true, anchors: true, field: true, color: true, geometry: None };
+        let all = MeshStages { albedo: true, anchors: true, field: true, color: true, ..Default::default() };
         let s = all.wgsl();
         assert!(s.contains("@location(10) specular_back: vec3<f32>"), "{s}");
         // the attributes' locations are the vertex layouts'

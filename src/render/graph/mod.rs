@@ -95,6 +95,14 @@ pub struct DrawItem<'a> {
     pub field: Option<&'a wgpu::Buffer>,
 }
 
+impl<'a> DrawItem<'a> {
+    /// The mesh's colour where an alpha cutoff may drop its pixels: the passes that write depth
+    /// without shading (geometry, shadow map) read it too, to drop them.
+    pub fn cut_albedo(&self) -> Option<&'a crate::render::gpu_albedo::GpuAlbedo> {
+        self.mesh.albedo.as_ref().filter(|a| a.alpha_cutoff.is_some())
+    }
+}
+
 /// What every pass of a frame may use while it records.
 pub struct FrameCtx<'a> {
     pub dev: &'a Device,

@@ -5,11 +5,10 @@
 
 use crate::error::Result;
 use crate::render::gpu_albedo::GpuAlbedo;
-use crate::render::graph::build::{cull_bits, mesh_pipeline, MeshDraw};
+use crate::render::graph::build::depth_pass_pipeline;
 use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
 use crate::render::graph::{cleared, depth_buffer, geometry_clear, DrawItem, FrameCtx, Pass, Recorder};
-use crate::render::pipelines::PipelineKey;
 
 /// The pass's WGSL, which its stages (`graph::mesh_stages`) are written after.
 pub const WGSL: &str = include_str!("../../shaders/albedo.wgsl");
@@ -17,11 +16,6 @@ pub const WGSL: &str = include_str!("../../shaders/albedo.wgsl");
 #[derive(Debug, Clone, PartialEq)]
 pub struct Geometry {
     pub layout: GeometryLayout,
-}
-
-/// The colour of a mesh whose pixels an alpha cutoff may drop: read here too, to drop them.
-fn cut<'a>(d: &DrawItem<'a>) -> Option<&'a GpuAlbedo> {
-    d.mesh.albedo.as_ref().filter(|a| a.alpha_cutoff.is_some())
 }
 
 impl Pass for Geometry {
@@ -36,28 +30,16 @@ impl Pass for Geometry {
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layout = self.layout;
         let pipeline = |d: &DrawItem<'_>| {
-            let albedo = cut(d);
-            let constants = albedo.map_or(vec![], GpuAlbedo::constants);
+            let albedo = d.cut_albedo();
             let stages =
                 MeshStages { albedo: albedo.is_some(), geometry: Some(layout), ..Default::default() };
-            let key = PipelineKey::new("gbuffer", stages.bits() | cull_bits(d.cull) << 8).with(&constants);
-            f.pipelines.get(key, || {
-                let module = f.mesh_module("gbuffer", WGSL, stages, None);
-                let draw = MeshDraw {
-                    label: "gbuffer",
-                    stages,
-                    samples: 1,
-                    constants: &constants,
-                    more: &[],
-                    cull: d.cull,
-                };
-                mesh_pipeline(f, &module, draw)
-            })
+            let constants = albedo.map_or(vec![], GpuAlbedo::constants);
+            depth_pass_pipeline(f, "gbuffer", WGSL, stages, constants, d.cull)
         };
         let attachments = [cleared(f.res.view(Target::Geometry), geometry_clear(layout))];
         let mut pass =
             rec.begin("gbuffer", &attachments, depth_buffer(f.res.view(Target::GeometryDepth), false));
-        f.draw_meshes_with(&mut pass, pipeline, |d| cut(d).is_some());
+        f.draw_meshes_with(&mut pass, pipeline, |d| d.cut_albedo().is_some());
         Ok(())
     }
 }

@@ -40,6 +40,13 @@ impl ShadingVariant {
     /// The shading pass's stages for it, writing the colour and, where given, the geometry
     /// target.
     pub fn stages(&self, geometry: Option<GeometryLayout>) -> MeshStages {
-        MeshStages { albedo: self.albedo, anchors: self.anchored, field: self.field, color: true, geometry }
+        MeshStages {
+            albedo: self.albedo,
+            anchors: self.anchored,
+            field: self.field,
+            color: true,
+            geometry,
+            clip: None,
+        }
     }
 }
