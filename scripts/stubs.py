@@ -17,6 +17,7 @@ ROOT = Path(__file__).resolve().parent.parent
 TEMPLATE = ROOT / "scripts" / "core_stub.pyi.in"
 STUB = ROOT / "python" / "toonmesh" / "_core.pyi"
 MARK = "# @settings-classes\n"
+NAMES_MARK = "# @settings-class-names\n"
 
 # The read-only views that are not fields (src/py/settings/classes.rs).
 VIEWS: Dict[str, List[str]] = {
@@ -38,6 +39,7 @@ TAKES = {
     "names": "Union[str, Sequence[str]]",
     "style": "Union[bool, LineStyle, _Color]",
     "lights": "Union[Light, Sequence[Light]]",
+    "image": "npt.ArrayLike",
 }
 GIVES = {
     "bool": "bool",
@@ -53,6 +55,7 @@ GIVES = {
     "names": "List[str]",
     "style": "Union[LineStyle, bool]",
     "lights": "List[Light]",
+    "image": "npt.NDArray[np.float32]",
 }
 # The other forms a settings field takes besides the class (src/py/settings/values.rs).
 ALSO = {"Dither": "str", "Outlines": "str", "Shadows": "bool"}
@@ -139,8 +142,9 @@ def generate() -> str:
 
     classes = "\n".join(settings_class(getattr(core, c)) for c in core.SETTINGS_CLASSES)
     text = TEMPLATE.read_text()
-    assert MARK in text, f"{TEMPLATE} has no {MARK.strip()!r} line"
-    return text.replace(MARK, render_keywords() + "\n" + SETTINGS_BASE + "\n" + classes)
+    assert MARK in text and NAMES_MARK in text, f"{TEMPLATE} lacks {MARK.strip()!r} or {NAMES_MARK.strip()!r}"
+    names = "".join(f'    "{c}",\n' for c in core.SETTINGS_CLASSES)
+    return text.replace(NAMES_MARK, names).replace(MARK, render_keywords() + "\n" + SETTINGS_BASE + "\n" + classes)
 
 
 def main(argv: List[str]) -> int:

@@ -1199,6 +1199,17 @@ DITHER = Array(
     )
 )
 
+RIM = Array(
+    (
+        ("a Rim", tm.Rim(), OK),
+        ("a coloured, lit-side Rim", tm.Rim("#3366ff", width=0.5, side="lit", blend="mix"), OK),
+        ("True", True, TypeError),
+        ("a name", "rim", TypeError),
+        ("a colour", (1.0, 1.0, 1.0), TypeError),
+        ("a Dither", tm.Dither(), TypeError),
+    )
+)
+
 SHADOWS = Array(
     (
         ("True", True, OK),
@@ -1403,7 +1414,7 @@ RENDER_CASES: List[Case] = [
         "Material.lambert",
         _rendered(tm.Material.lambert, lambda m: dict(material=m)),
         dict(color=(0.9, 0.5, 0.2)),
-        [COLOUR_OR_NONE, Param("ambient", COLOUR, none=OK), PER_VERTEX],
+        [COLOUR_OR_NONE, Param("ambient", COLOUR, none=OK), PER_VERTEX, Param("rim", RIM, none=OK)],
     ),
     Case(
         "Material.phong",
@@ -1438,7 +1449,7 @@ RENDER_CASES: List[Case] = [
         dict(color=(0.9, 0.5, 0.2)),
         [COLOUR_OR_NONE, Param("thresholds", THRESHOLDS, none=OK), Param("values", VALUES, none=OK),
          Param("preset", Name(("paper",), invalid=("trimesh", "pymeshlab")), none=OK), PER_VERTEX,
-         Param("dither", DITHER, none=OK)],
+         Param("dither", DITHER, none=OK), Param("rim", RIM, none=OK)],
     ),
     Case(
         "Material.hatching",
@@ -1471,6 +1482,19 @@ RENDER_CASES: List[Case] = [
             Param("space", Name(("screen", "object")), none=OK),
             Param("amount", Number(0.0, 2.0), none=OK),
             Param("scale", Number(1.0, 64.0), none=OK),
+        ],
+    ),
+    Case(
+        "Rim",
+        _rendered(tm.Rim, lambda rim: dict(material=tm.Material.lambert(rim=rim))),
+        dict(color=None),
+        [
+            Param("color", COLOUR, none=OK),
+            Param("width", Number(0.0, 1.0), none=OK),
+            Param("softness", Number(0.0, 1.0), none=OK),
+            Param("strength", Number(0.0, 1.0), none=OK),
+            Param("side", Name(("both", "lit", "shadowed")), none=OK),
+            Param("blend", Name(("add", "mix")), none=OK),
         ],
     ),
     *[
@@ -1586,7 +1610,7 @@ def _replace_case(case: Case) -> Case:
     return Case(f"{cls_name}.replace({ctor or cls_name})", _rendered(made.replace, case.call.use), {}, params)  # type: ignore[attr-defined]
 
 
-SETTINGS = ("Material", "Dither", "Light", "Shadows", "Camera", "LineStyle", "Outlines")
+SETTINGS = ("Material", "Dither", "Rim", "Light", "Shadows", "Camera", "LineStyle", "Outlines")
 CASES += [_replace_case(c) for c in RENDER_CASES if c.name.partition(".")[0] in SETTINGS and hasattr(c.call, "make")]
 
 
@@ -1735,12 +1759,12 @@ def _reference(case: Case) -> Any:
 
 
 def _named(message: str) -> List[str]:
-    """The arguments a message starts with: "name: ...", "name[i]: ..." for an element, "a, b:
-    ..." for arguments that go together, "owner.name: ..." or "owner[i].name: ..." for a field
-    of a compound argument (both owner and name count)."""
+    """The arguments a message starts with: "name: ...", "name[i]: ..." or "name[i, j]: ..." for
+    an element, "a, b: ..." for arguments that go together, "owner.name: ..." or
+    "owner[i].name: ..." for a field of a compound argument (both owner and name count)."""
     names = []
-    for n in message.split(":")[0].split(", "):
-        parts = re.sub(r"\[[^\]]*\]", "", n).split(".")
+    for n in re.sub(r"\[[^\]]*\]", "", message.split(":")[0]).split(", "):
+        parts = n.split(".")
         names += [parts[0], parts[-1]]
     return names
 

@@ -27,6 +27,8 @@ NEEDS = {
     "anchors": tm.Material.hatching(mode="triplanar"),
     "field": tm.Material.hatching(),
     "field, Gouraud": tm.Material.hatching(per_vertex=True),
+    "a rim": tm.Material.bands(rim=tm.Rim()),
+    "a rim, Gouraud": tm.Material.lambert(per_vertex=True, rim=tm.Rim(side="lit")),
 }
 # outputs, msaa, the pass that writes the geometry (None: none is written)
 TARGETS = {

@@ -23,6 +23,7 @@ from toonmesh._core import (
     Material,
     Outlines,
     RenderOptions,
+    Rim,
     Shadows,
 )
 from toonmesh._render import (
@@ -50,6 +51,7 @@ __all__ = [
     "Material",
     "Outlines",
     "RenderOptions",
+    "Rim",
     "Shadows",
     "ConvergenceError",
     "GpuError",

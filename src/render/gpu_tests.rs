@@ -39,7 +39,7 @@ pub(super) fn open(backend: BackendChoice) -> crate::error::Result<Renderer> {
     Renderer::new(backend)
 }
 
-fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene {
+pub(super) fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene {
     let (v, f) = icosphere(4, 0.0, 0).unwrap();
     let id = r.add_mesh(&v, f, normals).unwrap();
     Scene {
@@ -58,7 +58,7 @@ fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene 
     }
 }
 
-fn all_outputs(w: u32, h: u32) -> FrameSpec {
+pub(super) fn all_outputs(w: u32, h: u32) -> FrameSpec {
     FrameSpec {
         width: w,
         height: h,
@@ -76,6 +76,28 @@ fn agreement(scene: &Scene, out: &RenderOutput) -> (f64, usize) {
 /// `blended` (pixels whose 2x2 quad is not all surface are left out: the shader's derivatives
 /// there come from helper pixels the read-back does not hold).
 fn agreement_of(scene: &Scene, out: &RenderOutput, blended: bool) -> (f64, usize) {
+    agreement_with(scene, out, blended, |c, _| c)
+}
+
+/// A covered pixel as a per-pixel effect's reference sees it: the view's lights, and the
+/// surface's unit normal and view-space point at any pixel (None off the surface), for the
+/// derivatives the shader takes over the pixel's 2x2 quad.
+pub(super) struct RefPixel<'a> {
+    pub x: usize,
+    pub y: usize,
+    pub orthographic: bool,
+    pub lights: &'a [RefLight],
+    pub surface: &'a dyn Fn(usize, usize) -> Option<(Vec3, Vec3)>,
+}
+
+/// `agreement_of`, the reference's colour changed by `finish` (a per-pixel effect's CPU twin;
+/// linear colour in and out) before it is compared.
+pub(super) fn agreement_with(
+    scene: &Scene,
+    out: &RenderOutput,
+    blended: bool,
+    finish: impl Fn(Vec3, &RefPixel<'_>) -> Vec3,
+) -> (f64, usize) {
     let (w, h) = (out.width as usize, out.height as usize);
     let proj = DMat4::from_cols_array_2d(&out.report.proj).transpose();
     let view = DMat4::from_cols_array_2d(&out.report.view).transpose();
@@ -93,21 +115,25 @@ fn agreement_of(scene: &Scene, out: &RenderOutput, blended: bool) -> (f64, usize
         out.floats(Output::Depth).unwrap(),
     );
     let inv = proj.inverse();
+    let orthographic = proj.w_axis.w == 1.0;
+    let surface = |x: usize, y: usize| -> Option<(Vec3, Vec3)> {
+        let j = y * w + x;
+        let z = *depth.get(j).filter(|z| x < w && y < h && z.is_finite())?;
+        let n = Vec3::new(normal[3 * j], normal[3 * j + 1], normal[3 * j + 2]);
+        // the view-space point on the pixel's ray at linear depth z
+        let ndc =
+            DVec3::new((x as f64 + 0.5) / w as f64 * 2.0 - 1.0, 1.0 - (y as f64 + 0.5) / h as f64 * 2.0, 0.5);
+        let q = inv * DVec4::new(ndc.x, ndc.y, ndc.z, 1.0);
+        let q = q.truncate() / q.w;
+        let p = if orthographic { DVec3::new(q.x, q.y, -(z as f64)) } else { q * (z as f64 / -q.z) };
+        Some((n, p.as_vec3()))
+    };
     let (mut good, mut covered) = (0usize, 0usize);
     for y in 0..h {
         for x in 0..w {
-            let i = y * w + x;
-            let z = depth[i];
-            if !z.is_finite() {
-                continue;
-            }
-            let normal_at = |x: usize, y: usize| {
-                let j = y * w + x;
-                (x < w && y < h && depth[j].is_finite())
-                    .then(|| Vec3::new(normal[3 * j], normal[3 * j + 1], normal[3 * j + 2]))
-            };
+            let Some((n, p)) = surface(x, y) else { continue };
             let dn = if blended {
-                match super::reference::quad_derivatives(normal_at, x, y) {
+                match super::reference::quad_derivatives(|x, y| surface(x, y).map(|s| s.0), x, y) {
                     Some(d) => d,
                     None => continue,
                 }
@@ -115,27 +141,18 @@ fn agreement_of(scene: &Scene, out: &RenderOutput, blended: bool) -> (f64, usize
                 [Vec3::ZERO; 2]
             };
             covered += 1;
-            let n = Vec3::new(normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]);
-            // the view-space point on the pixel's ray at linear depth z
-            let ndc = DVec3::new(
-                (x as f64 + 0.5) / w as f64 * 2.0 - 1.0,
-                1.0 - (y as f64 + 0.5) / h as f64 * 2.0,
-                0.5,
-            );
-            let q = inv * DVec4::new(ndc.x, ndc.y, ndc.z, 1.0);
-            let q = q.truncate() / q.w;
-            let p =
-                if proj.w_axis.w == 1.0 { DVec3::new(q.x, q.y, -(z as f64)) } else { q * (z as f64 / -q.z) };
             let c = shade(
                 &scene.items[0].material,
                 n,
-                p.as_vec3(),
-                proj.w_axis.w == 1.0,
+                p,
+                orthographic,
                 Vec3::from(to_linear(scene.ambient)),
                 &lights,
                 dn,
             );
+            let c = finish(c, &RefPixel { x, y, orthographic, lights: &lights, surface: &surface });
             let want = [c.x, c.y, c.z].map(|v| linear_to_srgb8(v as f64) as i32);
+            let i = y * w + x;
             if (0..3).all(|k| (color[4 * i + k] as i32 - want[k]).abs() <= 1) {
                 good += 1;
             }
@@ -486,7 +503,7 @@ fn field_hatching_matches_the_cpu_reference_on_plain_coloured_and_textured_meshe
             camera,
             lights: vec![light],
             ambient: [0.0; 3],
-            outlines: None,
+            ..Default::default()
         };
         let frame = FrameSpec { width: w as u32, height: h as u32, ..Default::default() };
         let out = r.render(&scene, &frame).unwrap();

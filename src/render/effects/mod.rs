@@ -1,7 +1,7 @@
 //! Effects: what a scene's settings add to plain shading. Each is a folder with its typed
 //! settings, its uniform block, its WGSL and its CPU reference, registered in one list.
 //!
-//! - Per-pixel (surface) effects (`surface`: hatching, dithering) are carried by a material and
+//! - Per-pixel (surface) effects (`surface`: hatching, dithering, rim light) are carried by a material and
 //!   compiled into the shading pipeline through hooks; they add no pass.
 //! - Frame effects (`frame`: shadows, outlines) add passes and host steps to the frame
 //!   (`graph::effect::FrameEffect`).
@@ -10,6 +10,7 @@ pub mod dither;
 pub mod frame;
 pub mod hatching;
 pub mod outlines;
+pub mod rim;
 pub mod shadows;
 pub mod surface;
 pub mod surface_effect;

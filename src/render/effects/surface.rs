@@ -15,7 +15,7 @@ use crate::error::Result;
 use crate::render::block::BlockLayout;
 
 use super::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
-use super::{dither, hatching};
+use super::{dither, hatching, rim};
 
 /// Writes the registry from the list of effects: each one's field (named as the effect, in
 /// materials, in the WGSL `Draw` struct and in its hooks), its settings and its effect value.
@@ -69,6 +69,8 @@ macro_rules! registry {
 registry! {
     dither: dither::Dither => dither::EFFECT,
     hatching: hatching::Hatching => hatching::EFFECT,
+    // after hatching, so that its light shows on the strokes and the paper too
+    rim: rim::Rim => rim::EFFECT,
 }
 
 /// The WGSL functions that call every effect's hooks in registry order: `surface_jitter(f)`

@@ -9,6 +9,7 @@ macro_rules! settings_classes {
     ($then:ident) => {
         $then! {
             Dither("settings/docs") = $crate::render::effects::dither::Dither { new; }
+            Rim("effects/rim/docs") = $crate::render::effects::rim::Rim { new; }
             Shadows("settings/docs") = $crate::render::effects::shadows::settings::Shadows { new; }
             Light("settings/docs") = $crate::render::scene::light::Light {
                 fn directional; fn point; fn key;

@@ -46,6 +46,7 @@ const FIELDS: &[Field] = &[
         "dithering between bands: None, a pattern name or a Dither (needs per-pixel shading)",
     )
     .optional(),
+    Field::new("rim", Kind::Setting("Rim"), "a rim light along the silhouette: None or a Rim").optional(),
 ];
 
 const EXTRAS: &[Field] = &[
@@ -54,24 +55,36 @@ const EXTRAS: &[Field] = &[
 ];
 
 const CONSTRUCTORS: &[Constructor] = &[
-    named!("Material", "lambert", ["color", "ambient", "diffuse", "per_vertex"], 1, 0),
-    named!("Material", "phong", ["color", "specular", "shininess", "ambient", "diffuse", "per_vertex"], 1, 0),
+    named!("Material", "lambert", ["color", "ambient", "diffuse", "per_vertex", "rim"], 1, 0),
+    named!(
+        "Material",
+        "phong",
+        ["color", "specular", "shininess", "ambient", "diffuse", "per_vertex", "rim"],
+        1,
+        0
+    ),
     named!(
         "Material",
         "thresholded_phong",
-        ["color", "t_h", "t_s", "highlight", "ambient", "specular", "diffuse", "per_vertex", "dither"],
+        ["color", "t_h", "t_s", "highlight", "ambient", "specular", "diffuse", "per_vertex", "dither", "rim"],
         1,
         0
     ),
-    named!("Material", "bands", ["color", "thresholds", "preset", "values", "per_vertex", "dither"], 1, 0),
+    named!(
+        "Material",
+        "bands",
+        ["color", "thresholds", "preset", "values", "per_vertex", "dither", "rim"],
+        1,
+        0
+    ),
     named!(
         "Material",
         "hatching",
-        ["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither"],
+        ["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither", "rim"],
         1,
         0
     ),
-    named!("Material", "lut", ["table", "color", "per_vertex", "dither"], 2, 0),
+    named!("Material", "lut", ["table", "color", "per_vertex", "dither", "rim"], 2, 0),
 ];
 
 fn hatching(m: &Material) -> Option<&Hatching> {
@@ -138,6 +151,7 @@ impl Described for Material {
             ("width", _) => h.map(|h| h.width).into(),
             ("mode", _) => h.map_or(Value::None, |h| h.mode.name().into()),
             ("dither", _) => self.effects.dither.map_or(Value::None, |d| Value::setting(Setting::Dither(d))),
+            ("rim", _) => self.effects.rim.map_or(Value::None, |r| Value::setting(Setting::Rim(r))),
             _ => Value::None,
         }
     }
@@ -171,6 +185,15 @@ impl Described for Material {
                     Value::Text(name) => Some(Dither::new(DitherPattern::parse(field, &name)?)),
                     other => match other.into_setting(field)? {
                         Setting::Dither(d) => Some(d),
+                        other => return Err(super::mismatch(field, &Value::setting(other))),
+                    },
+                }
+            }
+            ("rim", ..) => {
+                self.effects.rim = match v {
+                    Value::None => None,
+                    other => match other.into_setting(field)? {
+                        Setting::Rim(r) => Some(r),
                         other => return Err(super::mismatch(field, &Value::setting(other))),
                     },
                 }
