@@ -27,6 +27,12 @@ def surface_effects() -> List[str]:
     return re.findall(r"^\s+(\w+): [\w:]+ => [\w:]+,$", listed, re.M)
 
 
+def frame_effects() -> List[str]:
+    """The frame effects, as `effects/frame.rs` registers them (`&name::EFFECT` in `FRAME`)."""
+    text = (SRC / "render" / "effects" / "frame.rs").read_text()
+    return re.findall(r"&(\w+)::EFFECT", text[text.index("pub static FRAME") :].split(";")[0])
+
+
 # Lowest first. A module belongs to the first pattern that matches its path.
 LAYERS: List[List[str]] = [
     ["error", "real", "cancel", "parallel", "huge_pages", "names"],
@@ -37,7 +43,7 @@ LAYERS: List[List[str]] = [
         "render::color", "render::albedo", "render::albedo::*", "render::block", "render::wgsl", "render::scene", "render::scene::*",
         "render::effects::surface", "render::effects::surface_effect",
         *[m for name in surface_effects() for m in (f"render::effects::{name}", f"render::effects::{name}::*")],
-        "render::effects::*::settings", "render::effects::outlines::stroke_width",
+        "render::effects::*::settings", "render::effects::outlines::stroke_width", "render::effects::scene_settings",
         # each settings type described for front ends
         "render::settings", "render::settings::*",
     ],
@@ -46,8 +52,8 @@ LAYERS: List[List[str]] = [
      "render::image_out"],
     ["render::uniforms", "render::pipelines", "render::graph", "render::graph::*", "render::context"],
     # passes, and the frame effects with theirs
-    ["render::passes", "render::passes::*", "render::effects::shadows", "render::effects::shadows::*",
-     "render::effects::outlines", "render::effects::outlines::*"],
+    ["render::passes", "render::passes::*",
+     *[m for name in frame_effects() for m in (f"render::effects::{name}", f"render::effects::{name}::*")]],
     # the registries that list the frame effects, and what is built from them
     ["render::effects", "render::effects::frame", "render::plan", "render::shader"],
     ["render::renderer", "render"],

@@ -1,7 +1,7 @@
 //! Python objects to a field's value and back, by the field's kind (`render::settings::Kind`):
 //! the only place that knows how each kind is spelt in Python.
 
-use numpy::{PyArrayDescrMethods, PyUntypedArray, PyUntypedArrayMethods};
+use numpy::{PyArrayDescrMethods, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString};
 use pyo3::IntoPyObjectExt;
@@ -12,7 +12,7 @@ use crate::py::args::{flag, integer, number, numbers, refuse_text, rgb, rgba, te
 use crate::render::scene::light::Light;
 use crate::render::scene::model::MAX_LUT;
 use crate::render::settings::settings_classes;
-use crate::render::settings::{Field, Kind, Setting, Value};
+use crate::render::settings::{Field, GreyImage, Kind, Setting, Value};
 
 /// The value of `obj` for `field` (named `name` in errors).
 pub fn from_py(name: &str, field: &Field, obj: &Bound<'_, PyAny>) -> Result<Value> {
@@ -31,6 +31,7 @@ pub fn from_py(name: &str, field: &Field, obj: &Bound<'_, PyAny>) -> Result<Valu
         Kind::Style => style(name, obj)?,
         Kind::Setting(class) => setting(name, class, obj)?,
         Kind::Lights => Value::Lights(lights(name, obj)?),
+        Kind::Image => Value::Image(image(name, obj)?),
     })
 }
 
@@ -49,6 +50,10 @@ pub fn to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>>
         Value::Rows(rows) => rows.iter().map(triple).collect::<Vec<_>>().into_bound_py_any(py),
         Value::Matrix(m) => m.iter().map(|r| r.to_vec()).collect::<Vec<_>>().into_bound_py_any(py),
         Value::Names(n) => n.clone().into_bound_py_any(py),
+        Value::Image(g) => {
+            let flat = numpy::PyArray1::from_slice(py, &g.values);
+            Ok(flat.reshape([g.height as usize, g.width as usize])?.into_any())
+        }
         Value::Lights(l) => {
             l.iter().map(|&inner| PyLight { inner }).collect::<Vec<_>>().into_bound_py_any(py)
         }
@@ -175,6 +180,28 @@ fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 3]>> {
         .collect()
 }
 
+/// A grey image: an (H, W) or (H, W, C) array of 8-bit integers or of numbers in [0, 1] (the
+/// core checks the shape and values, `GreyImage::from_pixels`).
+fn image(name: &str, obj: &Bound<'_, PyAny>) -> Result<GreyImage> {
+    let wrong = |what: &str| Error::wrong_type(name, format!("expected {what}, got {}", type_name(obj)));
+    let a = obj.cast::<PyUntypedArray>().map_err(|_| wrong("an (H, W) or (H, W, C) NumPy array"))?;
+    let full = match a.dtype().kind() {
+        b'u' | b'i' => 255.0,
+        b'f' => 1.0,
+        _ => return Err(wrong("an array of integers (0 to 255) or floats (0 to 1)")),
+    };
+    let shape = a.shape().to_vec();
+    let values = obj
+        .call_method1("astype", ("float64",))
+        .and_then(|x| x.extract::<numpy::PyReadonlyArrayDyn<'_, f64>>().map_err(PyErr::from))
+        .map_err(|e| Error::invalid(name, e.to_string()))?
+        .as_array()
+        .iter()
+        .copied()
+        .collect::<Vec<f64>>();
+    GreyImage::from_pixels(name, &shape, &values, full)
+}
+
 /// A 4x4 matrix of numbers.
 pub fn transform(arg: &str, obj: &Bound<'_, PyAny>) -> Result<[[f64; 4]; 4]> {
     let wrong = || Error::wrong_type(arg, format!("expected a 4x4 array of numbers, got {}", type_name(obj)));
@@ -215,6 +242,7 @@ pub fn describe_kind(d: &Bound<'_, PyDict>, kind: &Kind) -> PyResult<()> {
         Kind::Matrix => "matrix",
         Kind::Style => "style",
         Kind::Lights => "lights",
+        Kind::Image => "image",
     };
     d.set_item("kind", name)?;
     match *kind {

@@ -11,6 +11,7 @@ pub mod frame;
 pub mod hatching;
 pub mod outlines;
 pub mod rim;
+pub mod scene_settings;
 pub mod shadows;
 pub mod surface;
 pub mod surface_effect;

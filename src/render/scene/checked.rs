@@ -54,6 +54,7 @@ impl CheckedScene {
         if let Some(o) = &scene.outlines {
             o.validate("outlines")?;
         }
+        scene.effects.validate()?;
         let caster = shadow_caster(&scene.lights).map(|(index, light, settings)| Caster {
             index,
             light: *light,

@@ -26,6 +26,7 @@ use material::Material;
 pub use outputs::{Output, Outputs};
 
 use crate::render::effects::outlines::settings::Outlines;
+use crate::render::effects::scene_settings::SceneEffects;
 
 /// Image size, outputs and accuracy knobs.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -158,6 +159,8 @@ pub struct Scene {
     pub ambient: crate::render::color::Srgb,
     /// Ink lines, if any.
     pub outlines: Option<Outlines>,
+    /// The frame effects' settings (paper grain).
+    pub effects: SceneEffects,
 }
 
 impl Default for Scene {
@@ -169,6 +172,7 @@ impl Default for Scene {
             lights: vec![Light::default()],
             ambient: [1.0; 3],
             outlines: None,
+            effects: SceneEffects::default(),
         }
     }
 }

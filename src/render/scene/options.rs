@@ -11,6 +11,7 @@ use super::light::Light;
 use super::material::Material;
 use super::{FrameSpec, MeshId, Scene, SceneItem, IDENTITY};
 use crate::render::effects::outlines::settings::Outlines;
+use crate::render::effects::scene_settings::SceneEffects;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -25,6 +26,9 @@ pub struct RenderOptions {
     pub ambient: Srgb,
     /// Ink lines, if any.
     pub outlines: Option<Outlines>,
+    /// The frame effects' settings (paper grain).
+    #[serde(flatten)]
+    pub effects: SceneEffects,
     /// Size, outputs, accuracy knobs and background.
     #[serde(flatten)]
     pub frame: FrameSpec,
@@ -40,6 +44,7 @@ impl Default for RenderOptions {
             lights: scene.lights,
             ambient: scene.ambient,
             outlines: scene.outlines,
+            effects: scene.effects,
             frame: FrameSpec::default(),
         }
     }
@@ -64,6 +69,7 @@ impl RenderOptions {
             lights: self.lights.clone(),
             ambient: self.ambient,
             outlines: self.outlines.clone(),
+            effects: self.effects.clone(),
         }
     }
 }

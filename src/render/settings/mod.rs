@@ -8,6 +8,7 @@
 mod camera;
 mod classes;
 mod dither;
+mod grey_image;
 mod light;
 mod line_style;
 mod material;
@@ -16,8 +17,10 @@ mod outlines;
 mod shadows;
 mod value;
 
+#[cfg_attr(not(feature = "python"), allow(unused_imports))] // the front ends write from it
 pub(crate) use classes::settings_classes;
 pub use classes::{Setting, CLASSES};
+pub use grey_image::{GreyImage, MAX_IMAGE_SIDE};
 pub use value::Value;
 
 use serde::de::DeserializeOwned;
@@ -62,6 +65,9 @@ pub enum Kind {
     Setting(&'static str),
     /// A Light or a list of Lights.
     Lights,
+    /// A grey image (`GreyImage`): an (H, W) or (H, W, C) array of 8-bit integers or of numbers
+    /// in [0, 1].
+    Image,
 }
 
 /// One field of a settings type.
@@ -117,6 +123,18 @@ macro_rules! named {
     };
 }
 pub(crate) use named;
+
+/// `a` then `b` as one constant array (`N` the two lengths together, `a` not empty): a
+/// description that gathers lists kept elsewhere.
+pub const fn concat<T: Copy, const N: usize>(a: &[T], b: &[T]) -> [T; N] {
+    let mut out = [a[0]; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = if i < a.len() { a[i] } else { b[i - a.len()] };
+        i += 1;
+    }
+    out
+}
 
 impl Constructor {
     /// The class's only constructor, `Class(...)`, whose first `positional` parameters may be

@@ -1,12 +1,13 @@
 //! `RenderOptions` described: every render setting besides the meshes.
 
-use super::{mismatch, Constructor, Described, Field, Kind, Setting, Value};
+use super::{concat, mismatch, Constructor, Described, Field, Kind, Setting, Value};
 use crate::error::{Error, Result};
 use crate::render::effects::outlines::settings::Outlines;
+use crate::render::effects::scene_settings as effects;
 use crate::render::scene::options::RenderOptions;
 use crate::render::scene::{Output, Outputs, MAX_SUPERSAMPLE};
 
-const FIELDS: &[Field] = &[
+const OWN_FIELDS: &[Field] = &[
     Field::new("material", Kind::Setting("Material"), "the material of meshes that name none"),
     Field::new(
         "transform",
@@ -43,7 +44,11 @@ const FIELDS: &[Field] = &[
     .optional(),
 ];
 
-const PARAMS: &[&str] = &[
+/// Its own fields, then the frame effects' (`effects::scene_settings`).
+const FIELDS: &[Field] =
+    &concat::<_, { OWN_FIELDS.len() + effects::FIELDS.len() }>(OWN_FIELDS, effects::FIELDS);
+
+const OWN_PARAMS: &[&str] = &[
     "material",
     "transform",
     "camera",
@@ -58,6 +63,8 @@ const PARAMS: &[&str] = &[
     "band_antialias",
     "outlines",
 ];
+
+const PARAMS: &[&str] = &concat::<_, { OWN_PARAMS.len() + effects::NAMES.len() }>(OWN_PARAMS, effects::NAMES);
 
 fn count(field: &str, v: Value, at_least: i64, what: &str) -> Result<u32> {
     let n = v.int(field)?;
@@ -96,11 +103,14 @@ impl Described for RenderOptions {
             "supersample" => Value::Int(f.supersample as i64),
             "band_antialias" => f.band_antialias.into(),
             "outlines" => self.outlines.clone().map_or(Value::None, |o| Value::setting(Setting::Outlines(o))),
-            _ => Value::None,
+            other => self.effects.get(other).unwrap_or(Value::None),
         }
     }
 
     fn set(&mut self, field: &str, v: Value) -> Result<()> {
+        if effects::NAMES.contains(&field) {
+            return self.effects.set(field, v).expect("a frame effect's keyword");
+        }
         let f = &mut self.frame;
         match (field, v) {
             ("transform", Value::Matrix(m)) => self.transform = m,

@@ -3,7 +3,7 @@
 use crate::error::Result;
 use crate::render::scene::light::Light;
 
-use super::{mismatch, Setting};
+use super::{mismatch, GreyImage, Setting};
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Value {
@@ -22,6 +22,7 @@ pub enum Value {
     Names(Vec<String>),
     Setting(Box<Setting>),
     Lights(Vec<Light>),
+    Image(GreyImage),
 }
 
 impl Value {

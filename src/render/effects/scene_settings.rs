@@ -1,0 +1,68 @@
+//! The settings a scene carries for frame effects that are not tied to a light or a material
+//! (paper grain), listed once: each is a field of `Scene` and of `RenderOptions` (a render
+//! keyword of the same name, described from this list), checked with the scene.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::Result;
+use crate::render::settings::{Field, Kind, Setting, Value};
+
+/// Writes `SceneEffects` and its description from the list: each effect's field (its render
+/// keyword), its settings type, that type's name among the settings classes, and the keyword's
+/// one line of help.
+macro_rules! scene_effects {
+    ($($name:ident: $class:ident = $settings:ty, $help:literal,)*) => {
+        /// The frame effects' settings a scene carries (None: the effect is not used).
+        #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+        #[serde(default)]
+        pub struct SceneEffects {
+            $(pub $name: Option<$settings>,)*
+        }
+
+        /// Their render keywords, described.
+        pub const FIELDS: &[Field] = &[$(Field::new(stringify!($name), Kind::Setting(stringify!($class)), $help).optional(),)*];
+        /// Their names, in the order of `FIELDS`.
+        pub const NAMES: &[&str] = &[$(stringify!($name)),*];
+
+        // (an empty list leaves the arguments unused)
+        #[allow(unused_variables)]
+        impl SceneEffects {
+            /// Checks each, naming it as its render keyword.
+            pub fn validate(&self) -> Result<()> {
+                $(if let Some(s) = &self.$name {
+                    s.validate(stringify!($name))?;
+                })*
+                Ok(())
+            }
+
+            /// The value of the keyword `field` (None where it is not one of theirs).
+            pub fn get(&self, field: &str) -> Option<Value> {
+                match field {
+                    $(stringify!($name) => Some(
+                        self.$name.clone().map_or(Value::None, |s| Value::setting(Setting::$class(s))),
+                    ),)*
+                    _ => None,
+                }
+            }
+
+            /// Sets the keyword `field` (None where it is not one of theirs).
+            pub fn set(&mut self, field: &str, value: Value) -> Option<Result<()>> {
+                match field {
+                    $(stringify!($name) => Some((|| {
+                        self.$name = match value {
+                            Value::None => None,
+                            other => match other.into_setting(field)? {
+                                Setting::$class(s) => Some(s),
+                                other => return Err(crate::render::settings::mismatch(field, &Value::setting(other))),
+                            },
+                        };
+                        Ok(())
+                    })()),)*
+                    _ => None,
+                }
+            }
+        }
+    };
+}
+
+scene_effects! {}
