@@ -1008,6 +1008,33 @@ PIXELS = Integer(1, GPU["max_texture_size"])
 MSAA = Integer(1, 4, only=tuple(n for n in (1, 4) if n in GPU["msaa_samples"]))
 SUPERSAMPLE = Integer(1, 4)
 
+PAPER = Array(
+    (
+        ("a Paper", tm.Paper(), OK),
+        ("a Paper on the surface, of an image", tm.Paper(np.eye(3), space="surface"), OK),
+        ("True", True, TypeError),
+        ("a name", "paper", TypeError),
+        ("a Rim", tm.Rim(), TypeError),
+    )
+)
+
+GRAIN = Array(
+    (
+        ("a grey uint8 image", np.arange(12, dtype=np.uint8).reshape(3, 4), OK),
+        ("an RGBA float image", np.full((2, 3, 4), 0.25), OK),
+        ("a 1x1 image", np.ones((1, 1)), OK),
+        ("a list", [[0.0, 1.0]], TypeError),
+        ("a string", "rough", TypeError),
+        ("1-D", np.zeros(4), ValueError),
+        ("empty", np.zeros((0, 4)), ValueError),
+        ("5 channels", np.zeros((2, 2, 5)), ValueError),
+        ("NaN", np.array([[np.nan, 0.0]]), ValueError),
+        ("above 1", np.array([[1.5]]), ValueError),
+        ("negative", np.array([[-1, 0]], np.int16), ValueError),
+        ("complex", np.zeros((2, 2), complex), TypeError),
+    )
+)
+
 # The arguments that render, Renderer.render and Renderer.render_many share (None: the
 # core's default, for every one).
 FRAME = [
@@ -1023,6 +1050,7 @@ FRAME = [
     Param("supersample", SUPERSAMPLE, none=OK),
     Param("band_antialias", Flag(), none=OK),
     Param("outlines", OUTLINES, none=OK),
+    Param("paper", PAPER, none=OK),
 ]
 
 
@@ -1485,6 +1513,18 @@ RENDER_CASES: List[Case] = [
         ],
     ),
     Case(
+        "Paper",
+        _rendered(tm.Paper, lambda paper: dict(paper=paper)),
+        dict(grain=None),
+        [
+            Param("grain", GRAIN, none=OK),
+            Param("space", Name(("screen", "surface")), none=OK),
+            Param("scale", Number(0.25, 64.0), none=OK),
+            Param("strength", Number(0.0, 1.0), none=OK),
+            Param("tone", Number(0.0, 1.0), none=OK),
+        ],
+    ),
+    Case(
         "Rim",
         _rendered(tm.Rim, lambda rim: dict(material=tm.Material.lambert(rim=rim))),
         dict(color=None),
@@ -1610,7 +1650,7 @@ def _replace_case(case: Case) -> Case:
     return Case(f"{cls_name}.replace({ctor or cls_name})", _rendered(made.replace, case.call.use), {}, params)  # type: ignore[attr-defined]
 
 
-SETTINGS = ("Material", "Dither", "Rim", "Light", "Shadows", "Camera", "LineStyle", "Outlines")
+SETTINGS = ("Material", "Dither", "Rim", "Paper", "Light", "Shadows", "Camera", "LineStyle", "Outlines")
 CASES += [_replace_case(c) for c in RENDER_CASES if c.name.partition(".")[0] in SETTINGS and hasattr(c.call, "make")]
 
 

@@ -34,6 +34,8 @@ VALUES: List[Any] = [
     tm.Rim(),
     tm.Rim("#3366ff", width=0.45, softness=0.1, strength=1.0, side="shadowed", blend="mix"),
     tm.Material.lambert(rim=tm.Rim(side="lit"), per_vertex=True),
+    tm.Paper(),
+    tm.Paper(space="surface", scale=4.0, strength=0.9, tone=0.0),
     tm.Dither("bayer2", space="object", amount=0.5, scale=4),
     tm.Light.key(),
     tm.Light.directional((1, -2, -3), color="#ffeecc", intensity=0.8, shadows=tm.Shadows(1024, 0.5, "none")),
@@ -51,6 +53,7 @@ VALUES: List[Any] = [
     tm.RenderOptions(),
     tm.RenderOptions(width=64, height=48, outlines="mesh", outputs=("color", "depth"), lights=[tm.Light.point((1, 1, 1))],
                      material=tm.Material.hatching(), camera=tm.Camera.look_at((0, 0, 4)), background="#00000000"),
+    tm.RenderOptions(paper=tm.Paper(strength=1.0), outlines="image"),
 ]
 
 

@@ -29,18 +29,20 @@ __all__ = [
     "SMOOTH_PRESETS",
     "DEFAULT_CREASE_ANGLE",
     "SETTINGS_CLASSES",
-    "Camera",
-    "ConvergenceError",
     "Dither",
+    "Rim",
+    "Shadows",
+    "Light",
+    "Camera",
+    "LineStyle",
+    "Outlines",
+    "Material",
+    "Paper",
+    "RenderOptions",
+    "ConvergenceError",
     "GpuError",
     "GpuUnavailableError",
-    "Light",
-    "LineStyle",
-    "Material",
-    "Outlines",
-    "RenderOptions",
     "Renderer",
-    "Shadows",
     "_EdgeIndex",
     "__version__",
     "_chains",
@@ -125,6 +127,7 @@ class _RenderKeywords(TypedDict, total=False):
     supersample: Optional[int]
     band_antialias: Optional[bool]
     outlines: Optional[Union[str, Outlines]]
+    paper: Optional[Paper]
 
 class _Settings:
     @staticmethod
@@ -151,6 +154,32 @@ class Dither(_Settings):
     amount: Final[float]
     scale: Final[float]
     def replace(self, *, pattern: Optional[Literal['bayer2', 'bayer4', 'bayer8', 'blue']] = ..., space: Optional[Literal['screen', 'object']] = ..., amount: Optional[float] = ..., scale: Optional[float] = ...) -> Dither: ...
+
+@final
+class Rim(_Settings):
+    """A rim light: a band of light (or of a colour) along the silhouette, where the surface turns
+    away from the viewer. It covers the surface where n.v < width (n the normal, v toward the
+    eye), with a hard border blended over a pixel like the bands' borders (softness 0) or faded
+    over softness in n.v, in every shading model. color: sRGB (default white). width: 0 to 1
+    (default 0.3). softness: 0 to 1 (default 0). strength: the share of the colour at full
+    coverage, 0 to 1 (default 0.6). side: "both" (default), "lit" (where a light reaches the
+    surface, n.l > 0) or "shadowed" (where none does: a back light's glow). blend: "add"
+    (default: added as light) or "mix" (painted over the shading, as a colour). Give it to a
+    material: ``Material.bands(rim=Rim())``.
+
+    Fields: color: the rim's sRGB colour; width: the rim covers the surface where n.v < width, 0
+    to 1; softness: how far in n.v its border fades, 0 (a hard border) to 1; strength: the share
+    of its colour at full coverage, 0 to 1; side: where it shows: 'both' sides, the 'lit' side
+    or the 'shadowed' side; blend: 'add' (as light) or 'mix' (painted over, as a colour).
+    """
+    def __new__(cls, color: Optional[_Color] = ..., *, width: Optional[float] = ..., softness: Optional[float] = ..., strength: Optional[float] = ..., side: Optional[Literal['both', 'lit', 'shadowed']] = ..., blend: Optional[Literal['add', 'mix']] = ...) -> Rim: ...
+    color: Final[_Vec3]
+    width: Final[float]
+    softness: Final[float]
+    strength: Final[float]
+    side: Final[str]
+    blend: Final[str]
+    def replace(self, *, color: Optional[_Color] = ..., width: Optional[float] = ..., softness: Optional[float] = ..., strength: Optional[float] = ..., side: Optional[Literal['both', 'lit', 'shadowed']] = ..., blend: Optional[Literal['add', 'mix']] = ...) -> Rim: ...
 
 @final
 class Shadows(_Settings):
@@ -415,10 +444,11 @@ class Material(_Settings):
     1 <= N <= 256; ink: hatch strokes' sRGB colour; spacing: pixels between hatch strokes, 2 to
     256; width: hatch strokes' width in pixels, up to the spacing; mode: how hatch strokes are
     laid: along the principal directions ('field') or straight on the axis planes ('triplanar');
-    dither: dithering between bands: None, a pattern name or a Dither (needs per-pixel shading).
+    dither: dithering between bands: None, a pattern name or a Dither (needs per-pixel shading);
+    rim: a rim light along the silhouette: None or a Rim.
     """
     @staticmethod
-    def lambert(color: Optional[_Color] = ..., *, ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ...) -> Material:
+    def lambert(color: Optional[_Color] = ..., *, ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., rim: Optional[Rim] = ...) -> Material:
         """Plain Lambert: f = max(L.n, 0), no highlight.
 
         color: base colour (default (0.95, 0.55, 0.25)); the diffuse coefficient is 90% of it
@@ -426,7 +456,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def phong(color: Optional[_Color] = ..., *, specular: Optional[_Color] = ..., shininess: Optional[float] = ..., ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ...) -> Material:
+    def phong(color: Optional[_Color] = ..., *, specular: Optional[_Color] = ..., shininess: Optional[float] = ..., ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., rim: Optional[Rim] = ...) -> Material:
         """Plain Phong: f = max(L.n, 0), s = max(R.v, 0)^shininess on lit points (R: L reflected).
 
         color as in :meth:`lambert`; specular: highlight colour (default (0.5, 0.5, 0.5));
@@ -434,7 +464,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def thresholded_phong(color: Optional[_Color] = ..., *, t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material:
+    def thresholded_phong(color: Optional[_Color] = ..., *, t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
         """Al-Rousan et al.'s toon model: C = a_l a_m + thresh(L.n, t_h) d_l d_m + thresh(h, t_s)
         S_l S_m.
 
@@ -446,7 +476,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def bands(color: Optional[_Color] = ..., *, thresholds: Optional[Sequence[float]] = ..., preset: Optional[Literal['paper']] = ..., values: Optional[Sequence[float]] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material:
+    def bands(color: Optional[_Color] = ..., *, thresholds: Optional[Sequence[float]] = ..., preset: Optional[Literal['paper']] = ..., values: Optional[Sequence[float]] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
         """Borquez and Yepez's toon bands: f = values[k], k = number of thresholds t with L.n >= t.
 
         Thresholds default to the paper's (0.2, 0.5, 0.7, 0.9). Values default to (0.3, 0.45,
@@ -460,7 +490,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def hatching(color: Optional[_Color] = ..., *, ink: Optional[_Color] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material:
+    def hatching(color: Optional[_Color] = ..., *, ink: Optional[_Color] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
         """Cross-hatching (Borquez and Yepez): the bands' tone (their value times the light, as
         :meth:`bands` computes it) picks how many layers of ink strokes cover the paper: none
         where the tone is above 0.8, then one layer below 0.8, two below 0.6 (cross-hatching),
@@ -487,7 +517,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def lut(table: Optional[Any] = ..., color: Optional[_Color] = ..., *, per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material:
+    def lut(table: Optional[Any] = ..., color: Optional[_Color] = ..., *, per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
         """A lookup table (gradient map): f = table[min(floor(clamp(L.n, 0, 1) N), N - 1)].
 
         table: (N,) grey factors or (N, 3) RGB factors (linear, >= 0, 1 <= N <= 256) applied to
@@ -511,8 +541,36 @@ class Material(_Settings):
     width: Final[Optional[float]]
     mode: Final[Optional[str]]
     dither: Final[Optional[Dither]]
+    rim: Final[Optional[Rim]]
     hatch_style: Final[Optional[Dict[str, Any]]]
-    def replace(self, *, diffuse: Optional[_Color] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., shininess: Optional[float] = ..., t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., table: Optional[Any] = ..., ink: Optional[_Color] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., dither: Optional[Union[str, Dither]] = ...) -> Material: ...
+    def replace(self, *, diffuse: Optional[_Color] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., shininess: Optional[float] = ..., t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., table: Optional[Any] = ..., ink: Optional[_Color] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material: ...
+
+@final
+class Paper(_Settings):
+    """Paper grain over the finished image: the paper's tooth takes pigment on its peaks and leaves
+    its valleys light, as paper takes pencil or watercolour, on the tones, the hatching and the
+    ink lines alike. With grain height g in [0, 1], the paper takes ``m = 1 - strength * (1 -
+    g)`` of a pixel's pigment and shows its own tone ``1 - tone * (1 - g)`` in the rest (in
+    linear light). grain: None (default: a built-in value-noise grain) or the user's image, an
+    (H, W) or (H, W, C) array of 8-bit integers or of numbers in [0, 1] (its grey is the height;
+    it tiles the plane). space: "screen" (default: fixed to the pixels) or "surface" (fixed to
+    the scene's surfaces, mapped on the three axis planes of world coordinates; the background
+    keeps the screen's grain). scale: output pixels a grain texel covers, 0.25 to 64 (default
+    1.5; on the surface, at the scene's centre). strength: 0 to 1 (default 0.3). tone: 0 to 1
+    (default 0.1). Give it to a render: ``render(..., paper=Paper())``.
+
+    Fields: grain: the grain's heights: None (a built-in grain) or an image, (H, W) or (H, W,
+    C), tiled; space: what the grain is fixed to: the 'screen' or the scene's 'surface'; scale:
+    output pixels a grain texel covers, 0.25 to 64; strength: how much pigment the grain's
+    valleys refuse, 0 to 1; tone: how much the blank paper's valleys darken it, 0 to 1.
+    """
+    def __new__(cls, grain: Optional[npt.ArrayLike] = ..., *, space: Optional[Literal['screen', 'surface']] = ..., scale: Optional[float] = ..., strength: Optional[float] = ..., tone: Optional[float] = ...) -> Paper: ...
+    grain: Final[Optional[npt.NDArray[np.float32]]]
+    space: Final[str]
+    scale: Final[float]
+    strength: Final[float]
+    tone: Final[float]
+    def replace(self, *, grain: Optional[npt.ArrayLike] = ..., space: Optional[Literal['screen', 'surface']] = ..., scale: Optional[float] = ..., strength: Optional[float] = ..., tone: Optional[float] = ...) -> Paper: ...
 
 @final
 class RenderOptions(_Settings):
@@ -531,9 +589,10 @@ class RenderOptions(_Settings):
     pixel: 1 or 4; supersample: render this many times larger in each direction and average
     down; band_antialias: blend across each band border over about one pixel, from the screen-
     space change of the shading term: smooth tone borders at no extra samples (False: the
-    papers' hard borders); outlines: ink outlines: None, 'mesh', 'image', 'both' or an Outlines.
+    papers' hard borders); outlines: ink outlines: None, 'mesh', 'image', 'both' or an Outlines;
+    paper: paper grain over the image: None or a Paper.
     """
-    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ...) -> RenderOptions: ...
+    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
     material: Final[Material]
     transform: Final[List[List[float]]]
     camera: Final[Camera]
@@ -547,7 +606,8 @@ class RenderOptions(_Settings):
     supersample: Final[int]
     band_antialias: Final[bool]
     outlines: Final[Optional[Outlines]]
-    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ...) -> RenderOptions: ...
+    paper: Final[Optional[Paper]]
+    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
 
 def _restore(cls: str, state: str) -> Any: ...
 def kang_table() -> npt.NDArray[np.float64]: ...

@@ -10,6 +10,7 @@ pub mod dither;
 pub mod frame;
 pub mod hatching;
 pub mod outlines;
+pub mod paper;
 pub mod rim;
 pub mod scene_settings;
 pub mod shadows;

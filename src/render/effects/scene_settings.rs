@@ -65,4 +65,6 @@ macro_rules! scene_effects {
     };
 }
 
-scene_effects! {}
+scene_effects! {
+    paper: Paper = super::paper::settings::Paper, "paper grain over the image: None or a Paper",
+}

@@ -22,6 +22,7 @@ macro_rules! settings_classes {
             Material("settings/docs") = $crate::render::scene::material::Material {
                 fn lambert; fn phong; fn thresholded_phong; fn bands; fn hatching; fn lut;
             }
+            Paper("effects/paper/docs") = $crate::render::effects::paper::settings::Paper { new; }
             RenderOptions("settings/docs") = $crate::render::scene::options::RenderOptions { new; }
         }
     };
