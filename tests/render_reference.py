@@ -119,11 +119,31 @@ def shade(material: tm.Material, n: np.ndarray, p: np.ndarray, orthographic: boo
     return c
 
 
-def expected_color(res: tm.RenderResult, material: tm.Material, lights: List[tm.Light], ambient: Any = (1, 1, 1)) -> np.ndarray:
-    """(H, W, 3) int sRGB codes the renderer should produce, from its own normal and depth outputs."""
+def rim(r: Any, c: np.ndarray, n: np.ndarray, p: np.ndarray, orthographic: bool, lights: Any) -> np.ndarray:
+    """The linear colour ``c`` with the rim ``r`` (a :class:`toonmesh.Rim`) over it, its borders
+    hard (``band_antialias=False``): ``Rim::finish`` and ``rim_amount`` in Rust."""
+    v = np.broadcast_to([0.0, 0.0, 1.0], p.shape) if orthographic else _unit(-p)
+    t = (np.sum(n * v, axis=-1) <= r.width).astype(np.float64)
+    lit = np.max([np.sum(n * (np.broadcast_to(vec, p.shape) if kind == "toward" else _unit(vec - p)), axis=-1)
+                  for kind, vec, _ in lights], axis=0)
+    if r.side != "both":
+        t *= (lit >= 0) if r.side == "lit" else (lit < 0)
+    k = (t * r.strength)[..., None]
+    color = srgb_to_linear(r.color)
+    return c + color * k if r.blend == "add" else c + (color - c) * k
+
+
+def expected_color(res: tm.RenderResult, material: tm.Material, lights: List[tm.Light], ambient: Any = (1, 1, 1),
+                   albedo: Any = (1.0, 1.0, 1.0)) -> np.ndarray:
+    """(H, W, 3) int sRGB codes the renderer should produce, from its own normal and depth outputs;
+    ``albedo``: the surface's linear colour (a coloured mesh's, which multiplies the ambient and
+    diffuse light; a material without a highlight is all that)."""
     n = res.normal.astype(np.float64)
     n[np.linalg.norm(n, axis=-1) == 0] = (0.0, 0.0, 1.0)  # background: any unit normal
-    lin = shade(material, n, view_positions(res), is_orthographic(res), ambient, view_lights(res, lights))
+    p, ortho, view = view_positions(res), is_orthographic(res), view_lights(res, lights)
+    lin = shade(material, n, p, ortho, ambient, view) * np.asarray(albedo)
+    if material.rim is not None:
+        lin = rim(material.rim, lin, n, p, ortho, view)
     return linear_to_srgb8(lin)
 
 

@@ -2,8 +2,9 @@
 mesh's colour (none, per vertex, a texture) x what the material needs of the vertex stage
 (nothing, the anchors, the hatching field, both with Gouraud colours) x the targets the pass
 writes (colour; colour with normal and depth or depth alone from the shading pass; normal and
-depth or depth alone from the geometry pass), on Vulkan and GL. The stages of each are written
-from one declaration per part (src/render/graph/mesh_stages.rs)."""
+depth or depth alone from the geometry pass), on Vulkan and GL; where a NumPy reference covers
+the material, a small frame of each is held against it. The stages of each are written from one
+declaration per part (src/render/graph/mesh_stages.rs)."""
 
 from __future__ import annotations
 
@@ -11,6 +12,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
+from render_reference import expected_color, light_dots, match_fraction, srgb_to_linear, view_positions
 
 BACKENDS = ["vulkan", "gl"]
 V, F = tm.shapes.icosphere(2)
@@ -39,6 +41,36 @@ TARGETS = {
     "normal and depth alone": (("normal",), 1, "gbuffer"),
     "depth alone": (("depth",), 1, "gbuffer"),
 }
+
+
+# the materials whose every pixel the NumPy reference computes (render_reference.py), hard band
+# borders; the hatching strokes are held against their CPU reference in Rust
+REFERENCE = ("nothing", "a rim")
+LIGHTS = [tm.Light.directional((0.4, -0.6, -1.0))]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("albedo", list(ALBEDO))
+@pytest.mark.parametrize("needs", REFERENCE)
+def test_a_small_frame_of_each_combination_matches_the_cpu_reference(backend, albedo, needs):
+    material = NEEDS[needs]
+    res = tm.Renderer(backend).render(ALBEDO[albedo](), material=material, lights=LIGHTS, width=64, height=64,
+                                      outputs=("color", "normal", "depth"), band_antialias=False)
+    tint = srgb_to_linear(TINT / 255.0) if albedo != "none" else np.ones(3)
+    want = expected_color(res, material, LIGHTS, albedo=tint)
+    covered = np.isfinite(res.depth)
+    # pixels within rounding of a band's or the rim's border may land on either side
+    near = np.zeros_like(covered)
+    for d in light_dots(res, LIGHTS):
+        for t in material.thresholds:
+            near |= np.abs(d - t) < 0.02
+    if material.rim is not None:
+        p = view_positions(res)
+        v = -p / np.linalg.norm(p, axis=-1, keepdims=True)
+        near |= np.abs(np.sum(res.normal * v, axis=-1) - material.rim.width) < 0.02
+    mask = covered & ~near
+    assert mask.sum() > 1000
+    assert match_fraction(res, want, mask) > 0.99, (albedo, needs)
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
