@@ -10,7 +10,7 @@ use super::args;
 use super::errors::to_py;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
-use crate::parallel;
+use crate::parallel::{self, catching_panics};
 
 /// How often the calling thread looks for a pending signal while work runs: often enough that
 /// Ctrl-C stops the work within a fraction of a second, rarely enough to cost nothing.
@@ -82,18 +82,6 @@ fn on_main_thread(py: Python<'_>) -> bool {
     main.is_ok_and(|m| m == me)
 }
 
-/// Runs `work`, turning a panic into `Error::Internal` so that none reaches Python.
-pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)).unwrap_or_else(|p| {
-        let what = p
-            .downcast_ref::<&str>()
-            .map(|s| s.to_string())
-            .or_else(|| p.downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "unknown panic".into());
-        Err(Error::Internal(what))
-    })
-}
-
 /// set_num_threads(n: int) -> None
 ///
 /// Sets how many worker threads toonmesh's parallel work uses, from the next call on.
@@ -104,10 +92,7 @@ pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
 /// ValueError below 0 or above 1024.
 #[pyfunction]
 fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
-    let n = args::integer("n", n)?;
-    let n = usize::try_from(n)
-        .map_err(|_| Error::invalid("n", format!("must be >= 0 (0 restores the default), got {n}")))?;
-    parallel::set_num_threads(n).map_err(to_py)
+    Ok(parallel::set_num_threads(args::integer("n", n)?)?)
 }
 
 /// get_num_threads() -> int

@@ -6,7 +6,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::args;
-use super::convert::{vertex_mask, Positions, PositionsRef};
+use super::convert::{vertex_mask, Positions, PositionsRef, ToPython};
 use super::mesh_input::MeshInput;
 use crate::error::{Error, Result};
 use crate::smooth::denoise::{self, Filter};
@@ -104,7 +104,7 @@ fn _smooth<'py>(
     let mesh = MeshInput::read(vertices, faces_arr)?;
     let pin = vertex_mask("pinned", pinned.as_ref(), mesh.n_vertices())?;
     let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
-    let out = mesh.run(py, faces_arr, |p, f, cancel| {
+    let out = mesh.run(py, |p, f, cancel| {
         macro_rules! each {
             ($v:expr) => {
                 match &run {
@@ -118,7 +118,7 @@ fn _smooth<'py>(
             PositionsRef::F64(v) => Positions::F64(each!(v)?),
         })
     })?;
-    Ok(out.into_numpy(py))
+    out.to_python(py)
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

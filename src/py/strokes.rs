@@ -1,13 +1,13 @@
 //! Python bindings for `crate::render::effects::outlines::pen`: the strokes of a line drawing as
 //! a pen draws them, called by `toonmesh/_strokes.py`.
 
-use numpy::{PyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyTuple};
+use pyo3::types::PyList;
 use rayon::prelude::*;
 
 use super::args;
-use super::convert::{dtype_name, float_values, native_order, rows_to_numpy, untyped, vec_to_numpy};
+use super::convert::{dtype_name, float_values, native_order, untyped, ToPython};
 use super::runtime::detached;
 use crate::error::{Error, Result};
 use crate::render::effects::outlines::pen::svg::{self, Group, Ink, Stroke};
@@ -24,10 +24,7 @@ fn point_array(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 2]>> {
         .extract::<PyReadonlyArray2<'_, f64>>()
         .map_err(|_| Error::wrong_type(arg, format!("dtype must be float64, got {}", dtype_name(a))))?;
     let p: Vec<[f64; 2]> = x.as_array().rows().into_iter().map(|r| [r[0], r[1]]).collect();
-    if let Some(i) = p.iter().position(|q| !(q[0].is_finite() && q[1].is_finite())) {
-        return Err(Error::invalid(arg, format!("point {i} is not finite: {:?}", p[i])));
-    }
-    Ok(p)
+    pen::check_points(arg, &p).map(|()| p)
 }
 
 /// (K,) finite widths in pixels, float32 or float64.
@@ -41,13 +38,7 @@ fn width_array(arg: &str, obj: &Bound<'_, PyAny>, n: usize) -> Result<Vec<f64>> 
             format!("expected a 1-D float32 or float64 array, got dtype {dtype} and shape {shape:?}"),
         )
     })?;
-    if w.len() != n {
-        return Err(Error::invalid(arg, format!("expected one width per point ({n}), got {}", w.len())));
-    }
-    if w.iter().any(|v| !v.is_finite()) {
-        return Err(Error::invalid(arg, "widths must be finite"));
-    }
-    Ok(w)
+    pen::check_widths(arg, &w, n).map(|()| w)
 }
 
 fn items<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Vec<Bound<'py, PyAny>>> {
@@ -90,15 +81,9 @@ fn _pen_strokes<'py>(
             .map(|(p, w)| pen::drawn(p, w.as_deref().unwrap_or(&[]), smooth, simplify, w.is_some()))
             .collect::<Result<Vec<_>>>()
     })?;
-    let out = drawn.into_iter().map(|(p, kept)| {
-        let kept: Vec<i64> = kept.into_iter().map(|i| i as i64).collect();
-        PyTuple::new(py, [rows_to_numpy(py, p).into_any(), vec_to_numpy(py, kept).into_any()])
-    });
-    PyList::new(py, out.collect::<PyResult<Vec<_>>>()?)
+    let out = drawn.into_iter().map(|(p, kept)| (p, kept.into_iter().map(|i| i as i64).collect::<Vec<_>>()));
+    PyList::new(py, out.map(|d| d.to_python(py)).collect::<PyResult<Vec<_>>>()?)
 }
-
-/// Stroke indices in drawing order, and whether each is drawn from its last point.
-type DrawingOrder<'py> = (Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<bool>>);
 
 /// `pen::plotter_order::plotter_order` of the strokes with first points `starts` and last
 /// points `ends` ((N, 2) each): the strokes' indices in drawing order, and whether each is drawn
@@ -108,7 +93,7 @@ fn _plotter_order<'py>(
     py: Python<'py>,
     starts: &Bound<'py, PyAny>,
     ends: &Bound<'py, PyAny>,
-) -> PyResult<DrawingOrder<'py>> {
+) -> PyResult<Bound<'py, PyAny>> {
     let (starts, ends) = (point_array("starts", starts)?, point_array("ends", ends)?);
     if starts.len() != ends.len() {
         let reason = format!("expected as many as starts ({}), got {}", starts.len(), ends.len());
@@ -116,7 +101,7 @@ fn _plotter_order<'py>(
     }
     let drawn = detached(py, || Ok(order::plotter_order(&starts, &ends)))?;
     let (index, reversed): (Vec<i64>, Vec<bool>) = drawn.into_iter().map(|(i, r)| (i as i64, r)).unzip();
-    Ok((vec_to_numpy(py, index), vec_to_numpy(py, reversed)))
+    (index, reversed).to_python(py)
 }
 
 /// One group of `svg_document`: (id, colour, width in pixels or None for filled outlines,
