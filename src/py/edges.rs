@@ -50,7 +50,7 @@ fn query(
 }
 
 #[pyfunction]
-fn _feature_edges<'py>(
+pub(super) fn _feature_edges<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
@@ -65,7 +65,7 @@ fn _feature_edges<'py>(
 /// k1, k2 (N,), d1, d2, normals (N, 3), derivatives (N, 4), all float64
 #[pyfunction]
 #[pyo3(signature = (vertices, faces, smoothing))]
-fn _curvature<'py>(
+pub(super) fn _curvature<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
@@ -80,7 +80,7 @@ fn _curvature<'py>(
 #[pyfunction]
 #[pyo3(signature = (what, vertices, faces, eye, direction, weld, threshold = None, smoothing = None))]
 #[allow(clippy::too_many_arguments)]
-fn _view_lines<'py>(
+pub(super) fn _view_lines<'py>(
     py: Python<'py>,
     what: &str,
     vertices: &Bound<'py, PyAny>,
@@ -98,7 +98,7 @@ fn _view_lines<'py>(
 
 /// The once-per-mesh part of outline finding (`MeshLines`).
 #[pyclass(frozen, name = "_EdgeIndex", module = "toonmesh._core")]
-struct PyEdgeIndex(MeshLines);
+pub(super) struct PyEdgeIndex(MeshLines);
 
 #[pymethods]
 impl PyEdgeIndex {
@@ -180,7 +180,7 @@ impl PyEdgeIndex {
 /// Edges (K, 2) of non-negative int64 vertex indices chained into polylines: the flat vertex
 /// list and where each polyline starts.
 #[pyfunction]
-fn _chains<'py>(py: Python<'py>, edges: &Bound<'py, PyAny>) -> Out<'py> {
+pub(super) fn _chains<'py>(py: Python<'py>, edges: &Bound<'py, PyAny>) -> Out<'py> {
     let shape =
         untyped("edges", edges).map_err(|_| Error::wrong_type("edges", "expected a NumPy array"))?.shape();
     if shape.len() != 2 || shape[1] != 2 {
@@ -195,7 +195,7 @@ fn _chains<'py>(py: Python<'py>, edges: &Bound<'py, PyAny>) -> Out<'py> {
 
 /// The number of `vertices`, checked as every mesh function checks them.
 #[pyfunction]
-fn _vertex_count(vertices: &Bound<'_, PyAny>) -> PyResult<usize> {
+pub(super) fn _vertex_count(vertices: &Bound<'_, PyAny>) -> PyResult<usize> {
     Ok(positions("vertices", vertices)?.len())
 }
 
@@ -233,7 +233,7 @@ fn sobel_typed<'py, T: Real + numpy::Element>(
 
 /// Sobel of a C-contiguous 2-D float32 or float64 image; the Python wrapper does dtype rules.
 #[pyfunction]
-fn _sobel<'py>(
+pub(super) fn _sobel<'py>(
     py: Python<'py>,
     image: &Bound<'py, PyAny>,
     output: &str,
@@ -267,7 +267,7 @@ fn edges_typed<'py, T: Real + numpy::Element>(
 /// buffer, and the mask where it exceeds the threshold. `name` ("normal" or "depth") names the
 /// buffer and its threshold (`<name>_threshold`) in errors.
 #[pyfunction]
-fn _paper_edges<'py>(
+pub(super) fn _paper_edges<'py>(
     py: Python<'py>,
     name: &str,
     buffer: &Bound<'py, PyAny>,
@@ -276,16 +276,4 @@ fn _paper_edges<'py>(
     let threshold = args::number(&format!("{name}_threshold"), threshold)?;
     by_dtype!(buffer, PyReadonlyArray3<f32, f64>, |x| edges_typed(py, name, x, threshold))
         .unwrap_or_else(|| Err(Error::wrong_type(name, "expected a 3-D float32 or float64 array").into()))
-}
-
-pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(_feature_edges, m)?)?;
-    m.add_function(wrap_pyfunction!(_curvature, m)?)?;
-    m.add_function(wrap_pyfunction!(_view_lines, m)?)?;
-    m.add_function(wrap_pyfunction!(_chains, m)?)?;
-    m.add_function(wrap_pyfunction!(_sobel, m)?)?;
-    m.add_function(wrap_pyfunction!(_paper_edges, m)?)?;
-    m.add_function(wrap_pyfunction!(_vertex_count, m)?)?;
-    m.add_class::<PyEdgeIndex>()?;
-    Ok(())
 }

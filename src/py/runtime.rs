@@ -91,7 +91,7 @@ fn on_main_thread(py: Python<'_>) -> bool {
 /// count. Raises TypeError for anything but an int (or NumPy integer; bools are refused) and
 /// ValueError below 0 or above 1024.
 #[pyfunction]
-fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
+pub(super) fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
     Ok(parallel::set_num_threads(args::integer("n", n)?)?)
 }
 
@@ -99,12 +99,6 @@ fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
 ///
 /// The number of worker threads the next parallel call will use (see ``set_num_threads``).
 #[pyfunction]
-fn get_num_threads() -> usize {
+pub(super) fn get_num_threads() -> usize {
     parallel::num_threads()
-}
-
-pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(set_num_threads, m)?)?;
-    m.add_function(wrap_pyfunction!(get_num_threads, m)?)?;
-    Ok(())
 }

@@ -28,7 +28,7 @@ fn procedural<'py>(
 macro_rules! procedural {
     ($($shape:ident($size:ident)),*) => {$(
         #[pyfunction]
-        fn $shape<'py>(
+        pub(super) fn $shape<'py>(
             py: Python<'py>,
             $size: &Bound<'py, PyAny>,
             noise: &Bound<'py, PyAny>,
@@ -39,9 +39,3 @@ macro_rules! procedural {
     )*};
 }
 procedural!(icosphere(subdivisions), grid(n));
-
-pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(icosphere, m)?)?;
-    m.add_function(wrap_pyfunction!(grid, m)?)?;
-    Ok(())
-}

@@ -87,7 +87,7 @@ fn plan(method: &str, o: &Options<'_, '_>) -> Result<Run> {
 
 #[pyfunction]
 #[pyo3(signature = (method_name, vertices, faces_arr, **options))]
-fn _smooth<'py>(
+pub(super) fn _smooth<'py>(
     py: Python<'py>,
     method_name: &str,
     vertices: &Bound<'py, PyAny>,
@@ -119,8 +119,4 @@ fn _smooth<'py>(
         })
     })?;
     out.to_python(py)
-}
-
-pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(_smooth, m)?)
 }

@@ -52,7 +52,7 @@ fn items<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Vec<Bound<'py, PyAny
 /// Each of `lines` as the SVG draws it (`pen::drawn`): the points drawn and which of the line's
 /// points they are. `widths[i]` None simplifies line i by its points alone.
 #[pyfunction]
-fn _pen_strokes<'py>(
+pub(super) fn _pen_strokes<'py>(
     py: Python<'py>,
     lines: &Bound<'py, PyAny>,
     widths: &Bound<'py, PyAny>,
@@ -89,7 +89,7 @@ fn _pen_strokes<'py>(
 /// points `ends` ((N, 2) each): the strokes' indices in drawing order, and whether each is drawn
 /// from its last point.
 #[pyfunction]
-fn _plotter_order<'py>(
+pub(super) fn _plotter_order<'py>(
     py: Python<'py>,
     starts: &Bound<'py, PyAny>,
     ends: &Bound<'py, PyAny>,
@@ -144,7 +144,7 @@ fn group(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Group> {
 
 /// `pen::svg::document`: the SVG text of a `width` x `height` drawing of `groups`.
 #[pyfunction]
-fn _svg_document(
+pub(super) fn _svg_document(
     py: Python<'_>,
     width: &Bound<'_, PyAny>,
     height: &Bound<'_, PyAny>,
@@ -161,11 +161,4 @@ fn _svg_document(
         .collect::<Result<Vec<_>>>()?;
     let (width, height) = (size("width", width)?, size("height", height)?);
     detached(py, || Ok(svg::document(width, height, &groups)))
-}
-
-pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(_pen_strokes, m)?)?;
-    m.add_function(wrap_pyfunction!(_plotter_order, m)?)?;
-    m.add_function(wrap_pyfunction!(_svg_document, m)?)?;
-    Ok(())
 }

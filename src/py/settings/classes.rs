@@ -3,7 +3,7 @@
 //! few read-only views that are not fields.
 
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyTuple};
 
 use super::settings_class;
 use crate::render::effects::dither::Dither;

@@ -17,7 +17,7 @@ use crate::error::{Error, Result};
 use crate::render::settings::{self as described, parameter, Described, Value};
 
 pub use classes::{
-    PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyRenderOptions, PyShadows,
+    kang_table, PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyRenderOptions, PyShadows,
 };
 
 /// A Python class around a described core type.
@@ -28,7 +28,7 @@ pub trait Wraps: Sized {
 
 /// Declares a settings class: the wrapper, its core type and Python name, its docstring, and
 /// its constructors (`new` for `Class(...)`, then `fn name` for each `Class.name(...)`, each
-/// with its docstring).
+/// with its docstring). Where it is used, PyO3's prelude and `PyDict`, `PyTuple` are in scope.
 macro_rules! settings_class {
     (
         $(#[$doc:meta])* $py:ident($core:ty, $name:literal) {
@@ -37,7 +37,7 @@ macro_rules! settings_class {
         }
     ) => {
         $(#[$doc])*
-        #[pyo3::pyclass(name = $name, module = "toonmesh._core", frozen, eq)]
+        #[pyclass(name = $name, module = "toonmesh._core", frozen, eq)]
         #[derive(Clone, PartialEq)]
         pub struct $py {
             pub inner: $core,
@@ -50,16 +50,13 @@ macro_rules! settings_class {
             }
         }
 
-        #[pyo3::pymethods]
+        #[pymethods]
         impl $py {
             $(
                 $(#[$ndoc])*
                 #[new]
                 #[pyo3(signature = (*args, **kwargs))]
-                fn new(
-                    args: &pyo3::Bound<'_, pyo3::types::PyTuple>,
-                    kwargs: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>,
-                ) -> pyo3::PyResult<Self> {
+                fn new(args: &Bound<'_, PyTuple>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
                     $crate::py::settings::make("", args, kwargs).map(|inner| $py { inner })
                 }
             )?
@@ -68,23 +65,16 @@ macro_rules! settings_class {
                 $(#[$cdoc])*
                 #[staticmethod]
                 #[pyo3(signature = (*args, **kwargs))]
-                fn $ctor(
-                    args: &pyo3::Bound<'_, pyo3::types::PyTuple>,
-                    kwargs: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>,
-                ) -> pyo3::PyResult<Self> {
+                fn $ctor(args: &Bound<'_, PyTuple>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
                     $crate::py::settings::make(stringify!($ctor), args, kwargs).map(|inner| $py { inner })
                 }
             )*
 
-            fn __getattr__<'py>(
-                &self,
-                py: pyo3::Python<'py>,
-                name: &str,
-            ) -> pyo3::PyResult<pyo3::Bound<'py, pyo3::PyAny>> {
+            fn __getattr__<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
                 $crate::py::settings::getattr(py, &self.inner, name)
             }
 
-            fn __dir__(slf: &pyo3::Bound<'_, Self>) -> pyo3::PyResult<Vec<String>> {
+            fn __dir__(slf: &Bound<'_, Self>) -> PyResult<Vec<String>> {
                 $crate::py::settings::dir::<$core>(slf.as_any())
             }
 
@@ -92,28 +82,25 @@ macro_rules! settings_class {
                 $crate::py::settings::hash_of(&self.inner)
             }
 
-            fn __repr__(&self, py: pyo3::Python<'_>) -> pyo3::PyResult<String> {
+            fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
                 $crate::py::settings::repr(py, &self.inner)
             }
 
-            fn __reduce__<'py>(
-                &self,
-                py: pyo3::Python<'py>,
-            ) -> pyo3::PyResult<(pyo3::Bound<'py, pyo3::PyAny>, (&'static str, String))> {
+            fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
                 $crate::py::settings::reduce(py, &self.inner)
             }
 
             /// A copy with only the fields named changed (None: the field's default), checked as
             /// the constructor checks.
             #[pyo3(signature = (**changes))]
-            fn replace(&self, changes: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>) -> pyo3::PyResult<Self> {
+            fn replace(&self, changes: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
                 $crate::py::settings::replace(&self.inner, changes).map(|inner| $py { inner })
             }
 
             /// The class described for front ends: its fields (name, kind, bounds or choices,
             /// help) and constructors (their parameters, with the default of each).
             #[staticmethod]
-            fn describe(py: pyo3::Python<'_>) -> pyo3::PyResult<pyo3::Bound<'_, pyo3::types::PyDict>> {
+            fn describe(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
                 $crate::py::settings::describe::<$core>(py)
             }
         }
@@ -232,7 +219,7 @@ where
 
 /// _restore(cls, state): a pickled setting, checked again.
 #[pyfunction]
-fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
+pub(super) fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
     macro_rules! classes {
         ($($py:ty),*) => {
             match cls {
@@ -358,7 +345,5 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyLineStyle>()?;
     m.add_class::<PyOutlines>()?;
     m.add_class::<PyRenderOptions>()?;
-    m.add_function(wrap_pyfunction!(_restore, m)?)?;
-    m.add_function(wrap_pyfunction!(classes::kang_table, m)?)?;
     Ok(())
 }
