@@ -276,36 +276,10 @@ pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
 
 /// The names the core accepts, for Python to take rather than repeat.
 fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    use crate::edges::outlines::LineKind;
-    use crate::render::effects::dither::{DitherPattern, DitherSpace};
-    use crate::render::effects::outlines::settings::{kind_names, ContourRule, ImageRule, Outlines};
-    use crate::render::effects::shadows::settings::ShadowFilter;
-    use crate::render::scene::model::{Highlight, Model};
-    use crate::render::scene::Output;
-    let py = m.py();
-    let names = |v: &[&str]| PyTuple::new(py, v.iter().copied());
-    let images: Vec<&str> = Output::ALL.iter().filter(|o| o.pixel().is_some()).map(|o| o.name()).collect();
-    m.add("OUTPUTS", names(&Output::NAMES)?)?;
-    m.add("IMAGE_OUTPUTS", names(&images)?)?;
-    m.add("LINE_KINDS", names(&LineKind::ALL.map(|k| k.name()))?)?;
-    m.add("INK_KINDS", names(&kind_names())?)?;
-    m.add("OUTLINE_KINDS", names(&Outlines::KINDS)?)?;
-    m.add("CONTOUR_RULES", names(ContourRule::NAMES)?)?;
-    m.add("IMAGE_RULES", names(ImageRule::NAMES)?)?;
-    m.add("MODELS", names(&Model::NAMES)?)?;
-    m.add("HIGHLIGHTS", names(Highlight::NAMES)?)?;
-    m.add("DITHER_PATTERNS", names(DitherPattern::NAMES)?)?;
-    m.add("DITHER_SPACES", names(DitherSpace::NAMES)?)?;
-    m.add("SHADOW_FILTERS", names(ShadowFilter::NAMES)?)?;
-    m.add("HATCH_MODES", names(crate::render::effects::hatching::HatchMode::NAMES)?)?;
-    m.add("BACKENDS", names(&crate::render::device::BackendChoice::NAMES)?)?;
-    use crate::smooth::options as smooth;
-    m.add("SMOOTH_METHODS", names(&smooth::METHODS.map(|(n, _)| n))?)?;
-    m.add("SMOOTH_WEIGHTS", names(&smooth::WEIGHTS.map(|(n, _)| n))?)?;
-    m.add("SMOOTH_BOUNDARIES", names(&smooth::BOUNDARIES.map(|(n, _)| n))?)?;
-    m.add("SMOOTH_PRESETS", names(&smooth::PRESETS.map(|(n, _)| n))?)?;
-    m.add("DEFAULT_CREASE_ANGLE", crate::edges::DEFAULT_CREASE_ANGLE)?;
-    Ok(())
+    for (name, names) in crate::render::accepted_names() {
+        m.add(name, PyTuple::new(m.py(), names)?)?;
+    }
+    m.add("DEFAULT_CREASE_ANGLE", crate::edges::DEFAULT_CREASE_ANGLE)
 }
 
 /// `RenderKeywords`: the render keywords as a TypedDict for `**options` in the public API, with

@@ -195,23 +195,7 @@ pub fn transform(arg: &str, obj: &Bound<'_, PyAny>) -> Result<[[f64; 4]; 4]> {
 /// A field's kind described into `d`: its name ("kind"), then its bounds ("min", "max"),
 /// choices ("choices") or class ("class") where it has them.
 pub fn describe_kind(d: &Bound<'_, PyDict>, kind: &Kind) -> PyResult<()> {
-    let name = match kind {
-        Kind::Bool => "bool",
-        Kind::Int { .. } => "int",
-        Kind::Float { .. } => "float",
-        Kind::Choice(_) => "choice",
-        Kind::Names(_) => "names",
-        Kind::Setting(_) => "setting",
-        Kind::Color => "color",
-        Kind::Rgba => "rgba",
-        Kind::Vec3 => "vec3",
-        Kind::Floats => "floats",
-        Kind::Table => "table",
-        Kind::Matrix => "matrix",
-        Kind::Style => "style",
-        Kind::Lights => "lights",
-    };
-    d.set_item("kind", name)?;
+    d.set_item("kind", kind.name())?;
     match *kind {
         Kind::Int { min, max } => d.set_item("min", min).and_then(|_| d.set_item("max", max)),
         Kind::Float { min, max } => d.set_item("min", min).and_then(|_| d.set_item("max", max)),

@@ -61,6 +61,28 @@ pub enum Kind {
     Lights,
 }
 
+impl Kind {
+    /// The kind's name, for front ends.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Bool => "bool",
+            Kind::Int { .. } => "int",
+            Kind::Float { .. } => "float",
+            Kind::Choice(_) => "choice",
+            Kind::Names(_) => "names",
+            Kind::Setting(_) => "setting",
+            Kind::Color => "color",
+            Kind::Rgba => "rgba",
+            Kind::Vec3 => "vec3",
+            Kind::Floats => "floats",
+            Kind::Table => "table",
+            Kind::Matrix => "matrix",
+            Kind::Style => "style",
+            Kind::Lights => "lights",
+        }
+    }
+}
+
 /// One field of a settings type.
 #[derive(Clone, Copy, Debug)]
 pub struct Field {
