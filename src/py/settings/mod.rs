@@ -10,11 +10,11 @@ pub mod values;
 use std::hash::{Hash, Hasher};
 
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyTuple};
+use pyo3::types::{PyDict, PyTuple};
 use pyo3::IntoPyObjectExt;
 
 use crate::error::{Error, Result};
-use crate::render::settings::{self as described, parameter, Described, Value};
+use crate::render::settings::{self as described, parameter, Described};
 
 pub use classes::{
     kang_table, PyCamera, PyDither, PyLight, PyLineStyle, PyMaterial, PyOutlines, PyRenderOptions, PyShadows,
@@ -100,7 +100,7 @@ macro_rules! settings_class {
             /// The class described for front ends: its fields (name, kind, bounds or choices,
             /// help) and constructors (their parameters, with the default of each).
             #[staticmethod]
-            fn describe(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+            fn describe(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
                 $crate::py::settings::describe::<$core>(py)
             }
         }
@@ -231,47 +231,9 @@ pub(super) fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult
     classes!(PyMaterial, PyDither, PyLight, PyShadows, PyCamera, PyLineStyle, PyOutlines, PyRenderOptions)
 }
 
-/// The description of `T` as Python data (see `render::settings`).
-pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
-    let field = |f: &described::Field, default: Option<Value>| -> PyResult<Bound<'_, PyDict>> {
-        let d = PyDict::new(py);
-        d.set_item("name", f.name)?;
-        values::describe_kind(&d, &f.kind)?;
-        d.set_item("optional", f.optional)?;
-        d.set_item("fixed", f.fixed)?;
-        d.set_item("help", f.help)?;
-        if let Some(v) = default {
-            d.set_item("default", values::to_py(py, &v)?)?;
-        }
-        Ok(d)
-    };
-    let out = PyDict::new(py);
-    out.set_item("class", T::CLASS)?;
-    out.set_item("help", T::HELP)?;
-    let fields = PyList::empty(py);
-    for f in T::FIELDS {
-        fields.append(field(f, None)?)?;
-    }
-    out.set_item("fields", fields)?;
-    let ctors = PyList::empty(py);
-    for c in T::CONSTRUCTORS {
-        let start = T::start(c.name);
-        let d = PyDict::new(py);
-        d.set_item("name", c.name)?;
-        d.set_item("help", c.help)?;
-        d.set_item("positional", c.positional)?;
-        d.set_item("required", c.required)?;
-        let params = PyList::empty(py);
-        for p in c.params {
-            let f = parameter::<T>(p).expect("a described parameter");
-            let default = start.read(c.name, p).unwrap_or(Value::None);
-            params.append(field(f, Some(default))?)?;
-        }
-        d.set_item("params", params)?;
-        ctors.append(d)?;
-    }
-    out.set_item("constructors", ctors)?;
-    Ok(out)
+/// The description of `T` as Python data (see `render::settings::describe`).
+pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+    values::to_py(py, &described::describe::<T>())
 }
 
 /// The names the core accepts, for Python to take rather than repeat.

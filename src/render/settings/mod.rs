@@ -270,6 +270,52 @@ pub fn arguments<T: Described>(value: &T) -> (&'static Constructor, Vec<(&'stati
     (ctor, args)
 }
 
+/// `T` described for front ends: its class, help, fields (each with its name, kind, bounds,
+/// choices or class, whether None is a value, whether only a constructor sets it, and help) and
+/// constructors (their name, help, how many parameters go by position and how many must be
+/// given, and their parameters, described as fields with the default of each).
+pub fn describe<T: Described>() -> Value {
+    let text = |s: &str| Value::Text(s.to_string());
+    let field = |f: &Field, default: Option<Value>| {
+        let mut d = vec![("name", text(f.name)), ("kind", text(f.kind.name()))];
+        match f.kind {
+            Kind::Int { min, max } => d.extend([("min", Value::Int(min)), ("max", Value::Int(max))]),
+            Kind::Float { min, max } => d.extend([("min", Value::Float(min)), ("max", Value::Float(max))]),
+            Kind::Choice(c) | Kind::Names(c) => {
+                d.push(("choices", Value::Names(c.iter().map(|n| n.to_string()).collect())))
+            }
+            Kind::Setting(class) => d.push(("class", text(class))),
+            _ => {}
+        }
+        d.extend([
+            ("optional", Value::Bool(f.optional)),
+            ("fixed", Value::Bool(f.fixed)),
+            ("help", text(f.help)),
+        ]);
+        Value::Map(d.into_iter().chain(default.map(|v| ("default", v))).collect())
+    };
+    let constructor = |c: &Constructor| {
+        let start = T::start(c.name);
+        let param = |p: &&str| {
+            let f = parameter::<T>(p).expect("a described parameter");
+            field(f, Some(start.read(c.name, p).unwrap_or(Value::None)))
+        };
+        Value::Map(vec![
+            ("name", text(c.name)),
+            ("help", text(c.help)),
+            ("positional", Value::Int(c.positional as i64)),
+            ("required", Value::Int(c.required as i64)),
+            ("params", Value::List(c.params.iter().map(param).collect())),
+        ])
+    };
+    Value::Map(vec![
+        ("class", text(T::CLASS)),
+        ("help", text(T::HELP)),
+        ("fields", Value::List(T::FIELDS.iter().map(|f| field(f, None)).collect())),
+        ("constructors", Value::List(T::CONSTRUCTORS.iter().map(constructor).collect())),
+    ])
+}
+
 /// Each field with its default: the value `constructor` makes.
 pub fn defaults<T: Described>(constructor: &str) -> Vec<(&'static Field, Value)> {
     let start = T::start(constructor);

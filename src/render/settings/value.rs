@@ -40,6 +40,9 @@ pub enum Value {
     Names(Vec<String>),
     Setting(Box<Setting>),
     Lights(Vec<Light>),
+    /// Named values, in order: a description for front ends (`describe`).
+    Map(Vec<(&'static str, Value)>),
+    List(Vec<Value>),
 }
 
 impl Value {
