@@ -115,25 +115,13 @@ pub fn make<T: Described>(
     kwargs: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<T> {
     let ctor = described::constructor::<T>(constructor);
-    let title =
-        if ctor.name.is_empty() { T::CLASS.to_string() } else { format!("{}.{}", T::CLASS, ctor.name) };
-    if args.len() > ctor.positional {
-        return Err(Error::wrong_type(
-            "args",
-            format!("{title} takes at most {} positional arguments ({} given)", ctor.positional, args.len()),
-        )
-        .into());
-    }
-    let mut given: Vec<(String, Bound<'_, PyAny>)> =
-        ctor.params.iter().zip(args.iter()).map(|(p, a)| (p.to_string(), a)).collect();
+    let (mut keywords, mut given) = (Vec::new(), args.iter().collect::<Vec<_>>());
     for (k, v) in kwargs.into_iter().flat_map(|d| d.iter()) {
-        let k: String = k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?;
-        if given.iter().any(|(g, _)| *g == k) {
-            return Err(Error::wrong_type(k, format!("{title} got it twice")).into());
-        }
-        given.push((k, v));
+        keywords.push(k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?);
+        given.push(v);
     }
-    given.retain(|(_, v)| !v.is_none());
+    let names = described::bind::<T>(ctor, args.len(), keywords)?;
+    let given: Vec<_> = names.into_iter().zip(given).filter(|(_, v)| !v.is_none()).collect();
     let names: Vec<&str> = given.iter().map(|(n, _)| n.as_str()).collect();
     described::check_arguments::<T>(ctor, &names)?;
     let values = given
@@ -217,19 +205,25 @@ where
     W::wrap(inner).into_bound_py_any(py)
 }
 
-/// _restore(cls, state): a pickled setting, checked again.
-#[pyfunction]
-pub(super) fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
-    macro_rules! classes {
-        ($($py:ty),*) => {
+/// Each settings class: added to the module, and restored from a pickle by its name.
+macro_rules! classes {
+    ($($py:ty),*) => {
+        fn add_classes(m: &Bound<'_, PyModule>) -> PyResult<()> {
+            $(m.add_class::<$py>()?;)*
+            Ok(())
+        }
+
+        /// _restore(cls, state): a pickled setting, checked again.
+        #[pyfunction]
+        pub(super) fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
             match cls {
                 $(c if c == <<$py as Wraps>::Core as Described>::CLASS => restore::<$py>(py, state),)*
                 other => Err(Error::invalid("cls", format!("no settings class {other:?}")).into()),
             }
-        };
-    }
-    classes!(PyMaterial, PyDither, PyLight, PyShadows, PyCamera, PyLineStyle, PyOutlines, PyRenderOptions)
+        }
+    };
 }
+classes!(PyMaterial, PyDither, PyLight, PyShadows, PyCamera, PyLineStyle, PyOutlines, PyRenderOptions);
 
 /// The description of `T` as Python data (see `render::settings::describe`).
 pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
@@ -273,13 +267,5 @@ fn render_keywords(m: &Bound<'_, PyModule>) -> PyResult<()> {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add_names(m)?;
     render_keywords(m)?;
-    m.add_class::<PyMaterial>()?;
-    m.add_class::<PyDither>()?;
-    m.add_class::<PyLight>()?;
-    m.add_class::<PyShadows>()?;
-    m.add_class::<PyCamera>()?;
-    m.add_class::<PyLineStyle>()?;
-    m.add_class::<PyOutlines>()?;
-    m.add_class::<PyRenderOptions>()?;
-    Ok(())
+    add_classes(m)
 }

@@ -206,6 +206,29 @@ fn unknown(name: &str, known: &[&str], what: &str) -> Error {
     Error::wrong_type(name, format!("not {what}{hint} (they are: {})", known.join(", ")))
 }
 
+/// The parameters a call of `ctor` names: its first `positional` by position, then the
+/// `keywords`; refused when it is given more by position than it takes, or a parameter twice.
+pub fn bind<T: Described>(
+    ctor: &Constructor,
+    positional: usize,
+    keywords: Vec<String>,
+) -> Result<Vec<String>> {
+    if positional > ctor.positional {
+        let most = ctor.positional;
+        let why =
+            format!("{} takes at most {most} positional arguments ({positional} given)", title::<T>(ctor));
+        return Err(Error::wrong_type("args", why));
+    }
+    let mut names: Vec<String> = ctor.params.iter().take(positional).map(|p| p.to_string()).collect();
+    for k in keywords {
+        if names.contains(&k) {
+            return Err(Error::wrong_type(k, format!("{} got it twice", title::<T>(ctor))));
+        }
+        names.push(k);
+    }
+    Ok(names)
+}
+
 /// Checks that the arguments (name, value; None values dropped by the caller) belong to
 /// `constructor` and that its required ones are there.
 pub fn check_arguments<T: Described>(ctor: &Constructor, given: &[&str]) -> Result<()> {
