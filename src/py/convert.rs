@@ -108,22 +108,16 @@ fn rows3<T: numpy::Element + Copy>(a: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
 pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
     let obj = &native_order(obj)?;
     let a = untyped(arg, obj)?;
+    let wrong_dtype =
+        || Error::wrong_type(arg, format!("dtype must be float32 or float64, got {}", dtype_name(a)));
     if a.dtype().kind() != b'f' {
-        return Err(Error::wrong_type(
-            arg,
-            format!("dtype must be float32 or float64, got {}", dtype_name(a)),
-        ));
+        return Err(wrong_dtype());
     }
     check_rows3(arg, a, "N")?;
-    let p = if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, f32>>() {
-        Positions::F32(rows3(&x))
-    } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, f64>>() {
-        Positions::F64(rows3(&x))
-    } else {
-        return Err(Error::wrong_type(
-            arg,
-            format!("dtype must be float32 or float64, got {}", dtype_name(a)),
-        ));
+    let p = match (obj.extract::<PyReadonlyArray2<'_, f32>>(), obj.extract::<PyReadonlyArray2<'_, f64>>()) {
+        (Ok(x), _) => Positions::F32(rows3(&x)),
+        (_, Ok(x)) => Positions::F64(rows3(&x)),
+        _ => return Err(wrong_dtype()),
     };
     on_positions!(p.slices(), v => check_positions(arg, v))?;
     Ok(p)
