@@ -36,6 +36,12 @@ fn crease_angle_of(obj: &Bound<'_, PyAny>) -> Result<f64> {
     check_crease_angle(angle).map(|()| angle)
 }
 
+/// The view from `eye=` or `direction=` (None or absent: not given).
+fn view_of(eye: Option<&Bound<'_, PyAny>>, direction: Option<&Bound<'_, PyAny>>) -> Result<View> {
+    let eye = args::optional("eye", eye, args::triple)?;
+    View::of(eye, args::optional("direction", direction, args::triple)?)
+}
+
 /// What one view is asked for (see `Query`) and the view, from `eye=` or `direction=`.
 fn query(
     what: &str,
@@ -43,8 +49,7 @@ fn query(
     threshold: Option<&Bound<'_, PyAny>>,
     smoothing: Option<&Bound<'_, PyAny>>,
 ) -> Result<(Query, View)> {
-    let eye = args::optional("eye", eye, args::triple)?;
-    let view = View::of(eye, args::optional("direction", direction, args::triple)?)?;
+    let view = view_of(eye, direction)?;
     let number = |name, obj| move || args::optional(name, obj, args::number);
     Ok((Query::parse(what, number("threshold", threshold), number("smoothing", smoothing))?, view))
 }
@@ -140,8 +145,7 @@ impl PyEdgeIndex {
         kinds: &Bound<'py, PyAny>,
     ) -> Out<'py> {
         let crease_angle = crease_angle_of(crease_angle)?;
-        let eye = args::optional("eye", eye, args::triple)?;
-        let view = View::of(eye, args::optional("direction", direction, args::triple)?)?;
+        let view = view_of(eye, direction)?;
         let with_kinds = args::flag("kinds", kinds)?;
         let all = detached(py, || self.0.outlines(crease_angle, view))?;
         let kinds = with_kinds.then(|| all.kinds.iter().map(|&k| k as i8).collect::<Vec<_>>());

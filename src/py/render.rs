@@ -13,7 +13,6 @@ use pyo3::IntoPyObjectExt;
 use super::albedo::albedo;
 use super::args::{number, text, triple, type_name};
 use super::convert::{faces, grid_to_numpy, on_positions, positions, ToPython};
-use super::errors::to_py;
 use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
@@ -31,7 +30,7 @@ use crate::render::{BackendChoice, FrameReport, GpuInfo, ImageMut, OutputBuffers
 /// Runs GPU work with the GIL released, catching panics. Not in the compute pool: a render
 /// mostly waits on the device, and concurrent renders should not queue behind each other there.
 fn without_gil<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
-    py.detach(|| catching_panics(work)).map_err(to_py)
+    py.detach(|| catching_panics(work)).map_err(PyErr::from)
 }
 
 fn info_dict<'py>(py: Python<'py>, info: &GpuInfo) -> PyResult<Bound<'py, PyDict>> {

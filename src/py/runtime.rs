@@ -7,7 +7,6 @@ use std::time::Duration;
 use pyo3::prelude::*;
 
 use super::args;
-use super::errors::to_py;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::parallel::{self, catching_panics};
@@ -19,7 +18,7 @@ const SIGNAL_POLL: Duration = Duration::from_millis(5);
 /// Runs compute work with the GIL released, inside the thread pool, and maps its error (or a
 /// panic) to a Python exception.
 pub fn detached<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
-    py.detach(|| catching_panics(|| parallel::install(work))).map_err(to_py)
+    py.detach(|| catching_panics(|| parallel::install(work))).map_err(PyErr::from)
 }
 
 /// Runs long compute work as `detached` does, and stops it on Ctrl-C.
@@ -66,7 +65,7 @@ pub fn detached_cancellable<T: Send>(
     // A signal that was taken must be raised, whatever the work returned meanwhile.
     match raised {
         Some(e) => Err(e),
-        None => outcome.map_err(to_py),
+        None => outcome.map_err(PyErr::from),
     }
 }
 
