@@ -41,6 +41,17 @@ fn width_array(arg: &str, obj: &Bound<'_, PyAny>, n: usize) -> Result<Vec<f64>> 
     pen::check_widths(arg, &w, n).map(|()| w)
 }
 
+/// Line `i` of the lines `arg` and its widths (None: not given), the `i`th of `widths_arg`.
+fn stroke(
+    (arg, widths_arg, i): (&str, &str, usize),
+    line: &Bound<'_, PyAny>,
+    widths: Option<&Bound<'_, PyAny>>,
+) -> Result<(Vec<[f64; 2]>, Option<Vec<f64>>)> {
+    let points = point_array(&format!("{arg}[{i}]"), line)?;
+    let widths = widths.map(|w| width_array(&format!("{widths_arg}[{i}]"), w, points.len())).transpose()?;
+    Ok((points, widths))
+}
+
 fn items<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Vec<Bound<'py, PyAny>>> {
     args::refuse_text(arg, obj, "a list")?;
     obj.try_iter()
@@ -68,11 +79,7 @@ pub(super) fn _pen_strokes<'py>(
         .iter()
         .zip(&width_items)
         .enumerate()
-        .map(|(i, (l, w))| {
-            let p = point_array(&format!("lines[{i}]"), l)?;
-            let w = if w.is_none() { None } else { Some(width_array(&format!("widths[{i}]"), w, p.len())?) };
-            Ok((p, w))
-        })
+        .map(|(i, (l, w))| stroke(("lines", "widths", i), l, Some(w).filter(|w| !w.is_none())))
         .collect::<Result<Vec<_>>>()?;
     let (smooth, simplify) = (args::number("smooth", smooth)?, args::number("simplify", simplify)?);
     let drawn = detached(py, || {
@@ -131,12 +138,9 @@ fn group(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Group> {
         .iter()
         .enumerate()
         .map(|(i, l)| {
-            let points = point_array(&format!("{}[{i}]", field("lines")), l)?;
-            let widths = match &line_widths {
-                Some(w) => width_array(&format!("{}[{i}]", field("widths")), &w[i], points.len())?,
-                None => Vec::new(),
-            };
-            Ok(Stroke { points, widths })
+            let (points, widths) =
+                stroke((&field("lines"), &field("widths"), i), l, line_widths.as_ref().map(|w| &w[i]))?;
+            Ok(Stroke { points, widths: widths.unwrap_or_default() })
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Group { id: args::text(&field("id"), id)?, color: args::rgb(&field("color"), color)?, ink, strokes })
