@@ -59,8 +59,10 @@ pub fn pool() -> Arc<ThreadPool> {
 }
 
 /// Sets the number of worker threads (0 restores the default: `TOONMESH_NUM_THREADS` or the
-/// number of cores). More than `MAX_THREADS` is refused.
-pub fn set_num_threads(n: usize) -> Result<()> {
+/// number of cores). Fewer than 0, or more than `MAX_THREADS`, is refused.
+pub fn set_num_threads(n: i64) -> Result<()> {
+    let n = usize::try_from(n)
+        .map_err(|_| Error::invalid("n", format!("must be >= 0 (0 restores the default), got {n}")))?;
     if n > MAX_THREADS {
         return Err(Error::invalid("n", format!("at most {MAX_THREADS} threads, got {n}")));
     }
@@ -71,6 +73,19 @@ pub fn set_num_threads(n: usize) -> Result<()> {
 /// The number of worker threads the next parallel call will use.
 pub fn num_threads() -> usize {
     REQUESTED.lock().unwrap_or_else(|e| e.into_inner()).unwrap_or_else(default_threads)
+}
+
+/// Runs `work`, turning a panic into `Error::Internal` so that none reaches the caller (a
+/// panic must not cross into Python).
+pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)).unwrap_or_else(|p| {
+        let what = p
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| p.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown panic".into());
+        Err(Error::Internal(what))
+    })
 }
 
 /// Runs `f` inside the pool.

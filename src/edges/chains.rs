@@ -6,6 +6,23 @@
 //! each started at the first unused edge in the given order, from its first vertex, and closed
 //! by repeating that vertex at the end. Every edge is used exactly once.
 
+use crate::error::{Error, Result};
+
+/// Edges given as pairs of vertex indices (the argument `arg`), each index checked to be a
+/// vertex index (in [0, 2^32 - 1)).
+pub fn vertex_pairs(arg: &str, rows: impl IntoIterator<Item = [i64; 2]>) -> Result<Vec<[u32; 2]>> {
+    let valid = |i: i64| (0..u32::MAX as i64).contains(&i);
+    rows.into_iter()
+        .enumerate()
+        .map(|(k, [a, b])| match valid(a) && valid(b) {
+            true => Ok([a as u32, b as u32]),
+            false => {
+                Err(Error::out_of_range(arg, format!("edge {k} has an invalid vertex index ({a}, {b})")))
+            }
+        })
+        .collect()
+}
+
 /// Polylines as one flat index list and the offsets where each polyline starts (CSR).
 pub fn chain_edges(edges: &[[u32; 2]]) -> (Vec<u32>, Vec<u32>) {
     let n = edges.iter().map(|e| e[0].max(e[1]) as usize + 1).max().unwrap_or(0);

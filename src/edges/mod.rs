@@ -13,6 +13,7 @@ pub mod outlines;
 pub mod short_creases;
 pub mod silhouette;
 pub mod sobel;
+pub mod views;
 pub mod zero_set;
 
 pub use feature::FeatureEdges;

@@ -23,6 +23,18 @@ pub enum View {
 }
 
 impl View {
+    /// The view from exactly one of an eye (perspective) or a direction (orthographic), checked.
+    pub fn of(eye: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> Result<View> {
+        match (eye, direction) {
+            (Some(e), None) => View::Eye(e).check(),
+            (None, Some(d)) => View::Direction(d).check(),
+            _ => Err(Error::invalid(
+                "eye, direction",
+                "give exactly one of eye= (perspective) or direction= (orthographic)",
+            )),
+        }
+    }
+
     pub fn check(self) -> Result<View> {
         match self {
             View::Eye(e) if e.iter().all(|x| x.is_finite()) => Ok(self),

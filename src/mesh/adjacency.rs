@@ -507,10 +507,8 @@ mod tests {
     #[test]
     fn matches_a_brute_force_count_on_a_messy_mesh() {
         use std::collections::BTreeMap;
-        let mut rng = crate::mesh::shapes::SplitMix64::new(3);
         let n = 50;
-        let faces: Vec<[u32; 3]> =
-            (0..400).map(|_| [0, 1, 2].map(|_| (rng.next_u64() % n as u64) as u32)).collect();
+        let faces = crate::mesh::shapes::random_faces(3, n, 400);
         let a = Adjacency::build_with_corners(n, &faces).unwrap();
         let plain = Adjacency::build(n, &faces).unwrap();
         assert_eq!((&a.offsets, &a.nbrs, &a.self_edges), (&plain.offsets, &plain.nbrs, &plain.self_edges));

@@ -212,10 +212,8 @@ mod tests {
     #[test]
     fn matches_a_brute_force_table_on_a_messy_mesh() {
         use std::collections::BTreeMap;
-        let mut rng = crate::mesh::shapes::SplitMix64::new(5);
         let n = 40;
-        let faces: Vec<[u32; 3]> =
-            (0..300).map(|_| [0, 1, 2].map(|_| (rng.next_u64() % n as u64) as u32)).collect();
+        let faces = crate::mesh::shapes::random_faces(5, n, 300);
         let mut expect: BTreeMap<[u32; 2], Vec<FaceUse>> = BTreeMap::new();
         for (fi, f) in faces.iter().enumerate() {
             for j in 0..3 {

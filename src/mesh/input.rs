@@ -65,6 +65,83 @@ where
     Ok(faces)
 }
 
+/// Vertices flagged by index (the argument `arg`): each index in [0, `n_vertices`).
+pub fn flag_vertices<I>(
+    arg: &str,
+    indices: impl IntoIterator<Item = I>,
+    n_vertices: usize,
+) -> Result<Vec<bool>>
+where
+    I: Copy + TryInto<u64> + std::fmt::Display,
+{
+    let mut flags = vec![false; n_vertices];
+    for i in indices {
+        match i.try_into().ok().filter(|&j| j < n_vertices as u64) {
+            Some(j) => flags[j as usize] = true,
+            None => {
+                return Err(Error::out_of_range(
+                    arg,
+                    format!("vertex index {i} is outside [0, {n_vertices})"),
+                ))
+            }
+        }
+    }
+    Ok(flags)
+}
+
+/// A boolean mask of vertices (the argument `arg`): one entry per vertex.
+pub fn check_mask(arg: &str, mask: Vec<bool>, n_vertices: usize) -> Result<Vec<bool>> {
+    if mask.len() != n_vertices {
+        return Err(Error::invalid(
+            arg,
+            format!("a boolean mask needs {n_vertices} entries, got {}", mask.len()),
+        ));
+    }
+    Ok(mask)
+}
+
+/// Flat values as rows of three.
+pub fn rows_of<T>(flat: &[T]) -> &[[T; 3]] {
+    assert!(flat.len() % 3 == 0, "rows of three");
+    // SAFETY: [T; 3] has T's alignment and is three Ts laid out contiguously, and the length is
+    // a multiple of 3.
+    unsafe { std::slice::from_raw_parts(flat.as_ptr() as *const [T; 3], flat.len() / 3) }
+}
+
+/// Faces held as flat rows of three indices, converted to u32 in parallel (in huge pages) and
+/// checked as `check_faces` checks them, which names the first bad index.
+pub fn faces_from_flat<I>(arg: &str, flat: &[I], n_vertices: usize) -> Result<Faces>
+where
+    I: Copy + Into<i64> + Sync + std::fmt::Display,
+{
+    use rayon::prelude::*;
+    let rows = rows_of(flat);
+    let mut out: Faces = crate::huge_pages::with_capacity(rows.len());
+    let ok = out.spare_capacity_mut()[..rows.len()].par_chunks_mut(16384).zip(rows.par_chunks(16384)).all(
+        |(o, r)| {
+            let mut ok = true;
+            for (o, r) in o.iter_mut().zip(r) {
+                let row = r.map(|i| {
+                    let i: i64 = i.into();
+                    ok &= i >= 0 && (i as u64) < n_vertices as u64;
+                    i as u32
+                });
+                o.write(row);
+            }
+            ok
+        },
+    );
+    if !ok || rows.is_empty() {
+        let checked = check_faces(arg, rows.iter().copied(), n_vertices);
+        return Err(checked.err().unwrap_or_else(|| {
+            Error::Internal(format!("{arg}: rejected by the fast reader but not by the general one"))
+        }));
+    }
+    // SAFETY: `all` returned true, so every chunk ran and wrote each of its elements.
+    unsafe { out.set_len(rows.len()) };
+    Ok(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -84,5 +161,10 @@ mod tests {
         assert!(e.to_string().contains("negative"));
         assert!(check_faces::<i32>("faces", std::iter::empty(), 3).is_err());
         assert_eq!(check_faces("faces", [[0u32, 1, 2]].into_iter(), 3).unwrap(), vec![[0, 1, 2]]);
+        assert_eq!(faces_from_flat("faces", &[0i64, 1, 2, 2, 1, 0], 3).unwrap(), vec![[0, 1, 2], [2, 1, 0]]);
+        let e = faces_from_flat("faces", &[0i32, 1, 3], 3).unwrap_err();
+        assert!(flag_vertices("pinned", [2i64, -1], 3).unwrap_err().to_string().contains("index -1"));
+        assert_eq!(flag_vertices("pinned", [2u64], 3).unwrap(), vec![false, false, true]);
+        assert!(e.to_string().contains("refers to vertex 3"));
     }
 }

@@ -7,6 +7,14 @@ use crate::error::{Error, Result};
 /// A small, fast, seedable generator (SplitMix64): the same numbers on every platform.
 pub struct SplitMix64(u64);
 
+/// `count` faces of seeded random corners among `n_vertices` vertices: a messy mesh (repeated
+/// corners, non-manifold edges) for tests to check against a brute-force answer.
+#[cfg(test)]
+pub fn random_faces(seed: u64, n_vertices: usize, count: usize) -> Vec<[u32; 3]> {
+    let mut rng = SplitMix64::new(seed);
+    (0..count).map(|_| [0, 1, 2].map(|_| (rng.next_u64() % n_vertices as u64) as u32)).collect()
+}
+
 impl SplitMix64 {
     pub fn new(seed: u64) -> Self {
         SplitMix64(seed)

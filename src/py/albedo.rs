@@ -9,8 +9,7 @@ use super::args::{number, text};
 use super::convert::{dtype_name, float_values, native_order, untyped};
 use crate::error::{Error, Result};
 use crate::render::albedo::texture::Texture;
-use crate::render::albedo::{Albedo, Colors, Filter, Sampling, Wrap};
-use crate::render::color::srgb_to_linear;
+use crate::render::albedo::{check_unit_floats, linear_colors, Albedo, Colors, Filter, Sampling, Wrap};
 
 /// An array's values as floats in [0, 1] (uint8 codes divided by 255) and its shape, checked
 /// as the argument `arg`: `channels` the allowed sizes of its last axis, `rank` its axes.
@@ -27,56 +26,30 @@ fn unit_values(arg: &str, obj: &Bound<'_, PyAny>, rank: usize, what: &str) -> Re
         x.as_array().iter().map(|&c| c as f32 / 255.0).collect()
     } else {
         let v = float_values(obj).ok_or_else(wrong_dtype)?;
-        if let Some(bad) = v.iter().find(|x| !(x.is_finite() && (0.0..=1.0).contains(*x))) {
-            let hint = if bad.is_finite() && *bad > 1.0 { " (for 0-255 codes, use uint8)" } else { "" };
-            return Err(Error::invalid(arg, format!("float values must be in [0, 1], got {bad}{hint}")));
-        }
+        check_unit_floats(arg, &v)?;
         v.into_iter().map(|x| x as f32).collect()
     };
     Ok((values, shape))
 }
 
+/// (H, W, 3|4) sRGB image, top row first, as 8-bit codes (floats rounded to the nearest code).
+fn texture(obj: &Bound<'_, PyAny>) -> Result<Texture> {
+    // uint8 codes are copied as they are (no float copy of a large image)
+    match native_order(obj)?.extract::<PyReadonlyArrayDyn<'_, u8>>() {
+        Ok(x) if x.ndim() == 3 && matches!(x.shape()[2], 3 | 4) && !x.shape().contains(&0) => {
+            Texture::from_codes(x.shape(), &x.as_array().iter().copied().collect::<Vec<_>>())
+        }
+        _ => {
+            let (v, shape) = unit_values("texture", obj, 3, "(H, W, 3) or (H, W, 4)")?;
+            Texture::from_unit(&shape, &v)
+        }
+    }
+}
+
 /// (K, 3|4) sRGB colours as linear RGBA (alpha 1 when absent).
 fn colors(arg: &str, obj: &Bound<'_, PyAny>, what: &str) -> Result<Vec<[f32; 4]>> {
     let (v, shape) = unit_values(arg, obj, 2, what)?;
-    let decode = |c: f32| srgb_to_linear(c as f64) as f32;
-    Ok(v.chunks_exact(shape[1])
-        .map(|c| [decode(c[0]), decode(c[1]), decode(c[2]), c.get(3).copied().unwrap_or(1.0)])
-        .collect())
-}
-
-/// (H, W, 3|4) sRGB image, top row first, as 8-bit codes (floats rounded to the nearest code).
-fn texture(obj: &Bound<'_, PyAny>) -> Result<Texture> {
-    let what = "(H, W, 3) or (H, W, 4)";
-    // uint8 codes are copied as they are (no float copy of a large image)
-    let native = native_order(obj)?;
-    let (texels, shape): (Vec<[u8; 4]>, Vec<usize>) = match native.extract::<PyReadonlyArrayDyn<'_, u8>>() {
-        Ok(x) if x.ndim() == 3 && matches!(x.shape()[2], 3 | 4) && !x.shape().contains(&0) => {
-            let shape = x.shape().to_vec();
-            let a = x.as_array();
-            let flat: Vec<u8> = a.iter().copied().collect();
-            let texels = flat
-                .chunks_exact(shape[2])
-                .map(|c| [c[0], c[1], c[2], c.get(3).copied().unwrap_or(255)])
-                .collect();
-            (texels, shape)
-        }
-        _ => {
-            let (v, shape) = unit_values("texture", obj, 3, what)?;
-            let code = |x: f32| (x * 255.0).round() as u8;
-            let texels = v
-                .chunks_exact(shape[2])
-                .map(|c| [code(c[0]), code(c[1]), code(c[2]), c.get(3).map_or(255, |&a| code(a))])
-                .collect();
-            (texels, shape)
-        }
-    };
-    let too_large = || Error::invalid("texture", format!("{shape:?} is too large"));
-    let (h, w) = (
-        u32::try_from(shape[0]).map_err(|_| too_large())?,
-        u32::try_from(shape[1]).map_err(|_| too_large())?,
-    );
-    Texture::new(w, h, texels)
+    Ok(linear_colors(&v, shape[1]))
 }
 
 /// (N, 2) float texture coordinates.

@@ -148,10 +148,5 @@ pub fn rgb(name: &str, obj: &Bound<'_, PyAny>) -> Result<color::Srgb> {
 /// An sRGB colour with alpha: '#rrggbb', '#rrggbbaa', or 3 or 4 numbers in [0, 1] (alpha 1
 /// when not given).
 pub fn rgba(name: &str, obj: &Bound<'_, PyAny>) -> Result<[f64; 4]> {
-    let c = channels(name, obj)?;
-    if !(c.len() == 3 || c.len() == 4) {
-        return Err(Error::invalid(name, format!("expected 3 or 4 channels, got {}", c.len())));
-    }
-    color::check_unit(name, &c)?;
-    Ok([c[0], c[1], c[2], c.get(3).copied().unwrap_or(1.0)])
+    color::rgba_from_channels(name, &channels(name, obj)?)
 }

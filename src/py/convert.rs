@@ -1,15 +1,19 @@
 //! NumPy arrays <-> core types. Inputs are copied (so they are never modified and any memory
 //! order works); outputs are handed to NumPy without a copy.
 
-use numpy::ndarray::{Array1, Array2};
+use numpy::ndarray::Array2;
 use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArray2,
-    PyReadonlyArrayDyn, PyUntypedArray, PyUntypedArrayMethods,
+    IntoPyArray, PyArray2, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArrayDyn,
+    PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+use pyo3::IntoPyObjectExt;
 
+use super::args::type_name;
+use crate::edges::views::Lines;
 use crate::error::{Error, Result};
-use crate::mesh::{check_faces, check_positions, Faces};
+use crate::mesh::{check_faces, check_mask, check_positions, flag_vertices, Faces};
 use crate::real::Real;
 
 /// `$body` on the first of the element types `$t` that `$obj` reads as, bound to `$x` as a
@@ -56,14 +60,6 @@ impl Positions {
             Positions::F64(v) => PositionsRef::F64(v),
         }
     }
-
-    /// Handed to NumPy as (N, 3), in their precision.
-    pub fn into_numpy(self, py: Python<'_>) -> Bound<'_, PyAny> {
-        match self {
-            Positions::F32(v) => rows_to_numpy(py, v).into_any(),
-            Positions::F64(v) => rows_to_numpy(py, v).into_any(),
-        }
-    }
 }
 
 /// The array in native byte order: `obj` itself when it already is (or is no array), else one
@@ -84,10 +80,6 @@ pub fn native_order<'py>(obj: &Bound<'py, PyAny>) -> Result<Bound<'py, PyAny>> {
 pub fn untyped<'a, 'py>(arg: &str, obj: &'a Bound<'py, PyAny>) -> Result<&'a Bound<'py, PyUntypedArray>> {
     obj.cast::<PyUntypedArray>()
         .map_err(|_| Error::wrong_type(arg, format!("expected a NumPy array, got {}", type_name(obj))))
-}
-
-fn type_name(obj: &Bound<'_, PyAny>) -> String {
-    obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "an unknown type".into())
 }
 
 pub fn dtype_name(a: &Bound<'_, PyUntypedArray>) -> String {
@@ -116,22 +108,16 @@ fn rows3<T: numpy::Element + Copy>(a: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
 pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
     let obj = &native_order(obj)?;
     let a = untyped(arg, obj)?;
+    let wrong_dtype =
+        || Error::wrong_type(arg, format!("dtype must be float32 or float64, got {}", dtype_name(a)));
     if a.dtype().kind() != b'f' {
-        return Err(Error::wrong_type(
-            arg,
-            format!("dtype must be float32 or float64, got {}", dtype_name(a)),
-        ));
+        return Err(wrong_dtype());
     }
     check_rows3(arg, a, "N")?;
-    let p = if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, f32>>() {
-        Positions::F32(rows3(&x))
-    } else if let Ok(x) = obj.extract::<PyReadonlyArray2<'_, f64>>() {
-        Positions::F64(rows3(&x))
-    } else {
-        return Err(Error::wrong_type(
-            arg,
-            format!("dtype must be float32 or float64, got {}", dtype_name(a)),
-        ));
+    let p = match (obj.extract::<PyReadonlyArray2<'_, f32>>(), obj.extract::<PyReadonlyArray2<'_, f64>>()) {
+        (Ok(x), _) => Positions::F32(rows3(&x)),
+        (_, Ok(x)) => Positions::F64(rows3(&x)),
+        _ => return Err(wrong_dtype()),
     };
     on_positions!(p.slices(), v => check_positions(arg, v))?;
     Ok(p)
@@ -160,24 +146,16 @@ pub fn vertex_mask(
     obj: Option<&Bound<'_, PyAny>>,
     n_vertices: usize,
 ) -> Result<Option<Vec<bool>>> {
-    let Some(obj) = obj else { return Ok(None) };
-    if obj.is_none() {
-        return Ok(None);
-    }
+    let Some(obj) = obj.filter(|o| !o.is_none()) else { return Ok(None) };
     let expected = "expected vertex indices or an (N,) boolean mask";
     let obj = &if obj.cast::<PyUntypedArray>().is_ok() {
         native_order(obj)?
     } else {
         // A list or tuple of indices or booleans.
-        let arr = obj
-            .py()
-            .import("numpy")
-            .and_then(|np| np.call_method1("asarray", (obj,)))
-            .map_err(|_| Error::wrong_type(arg, format!("{expected}, got {}", type_name(obj))))?;
-        if arr.cast::<PyUntypedArray>().map_or(true, |a| a.ndim() != 1) {
-            return Err(Error::wrong_type(arg, format!("{expected}, got {}", type_name(obj))));
-        }
-        arr
+        let np = obj.py().import("numpy");
+        let arr = np.and_then(|np| np.call_method1("asarray", (obj,))).ok();
+        arr.filter(|a| a.cast::<PyUntypedArray>().is_ok_and(|a| a.ndim() == 1))
+            .ok_or_else(|| Error::wrong_type(arg, format!("{expected}, got {}", type_name(obj))))?
     };
     let a = untyped(arg, obj)?;
     if a.ndim() != 1 {
@@ -186,60 +164,118 @@ pub fn vertex_mask(
     if a.len() == 0 {
         return Ok(None); // an empty list pins nothing, whatever dtype NumPy gave it
     }
-    let out_of_range = |i: &dyn std::fmt::Display| {
-        Error::out_of_range(arg, format!("vertex index {i} is outside [0, {n_vertices})"))
-    };
+    let internal = |e: PyErr| Error::Internal(e.to_string());
     let dtype = a.dtype();
-    let idx: Vec<i64> = match (dtype.kind(), dtype.itemsize()) {
+    let flags = match (dtype.kind(), dtype.itemsize()) {
         (b'b', _) => {
-            let x =
-                obj.extract::<PyReadonlyArray1<'_, bool>>().map_err(|e| Error::Internal(e.to_string()))?;
-            let v = x.as_array();
-            if v.len() != n_vertices {
-                return Err(Error::invalid(
-                    arg,
-                    format!("a boolean mask needs {n_vertices} entries, got {}", v.len()),
-                ));
-            }
-            return Ok(Some(v.iter().copied().collect()));
+            let x = obj.extract::<PyReadonlyArray1<'_, bool>>().map_err(|e| internal(e.into()))?;
+            check_mask(arg, x.as_array().to_vec(), n_vertices)
         }
         (b'u', 8) => {
-            let x = obj.extract::<PyReadonlyArray1<'_, u64>>().map_err(|e| Error::Internal(e.to_string()))?;
-            if let Some(&big) = x.as_array().iter().find(|&&i| i >= n_vertices as u64) {
-                return Err(out_of_range(&big));
-            }
-            x.as_array().iter().map(|&i| i as i64).collect()
+            let x = obj.extract::<PyReadonlyArray1<'_, u64>>().map_err(|e| internal(e.into()))?;
+            flag_vertices(arg, x.as_array().iter().copied(), n_vertices)
         }
         (b'i' | b'u', _) => {
             // Every other integer dtype fits in int64.
-            let wide = obj.call_method1("astype", ("int64",)).map_err(|e| Error::Internal(e.to_string()))?;
-            let x =
-                wide.extract::<PyReadonlyArray1<'_, i64>>().map_err(|e| Error::Internal(e.to_string()))?;
-            x.as_array().iter().copied().collect()
+            let wide = obj.call_method1("astype", ("int64",)).map_err(internal)?;
+            let x = wide.extract::<PyReadonlyArray1<'_, i64>>().map_err(|e| internal(e.into()))?;
+            flag_vertices(arg, x.as_array().iter().copied(), n_vertices)
         }
-        _ => {
-            return Err(Error::wrong_type(
-                arg,
-                format!(
-                    "expected vertex indices of an integer dtype or an (N,) boolean mask, got dtype {}",
-                    dtype_name(a)
-                ),
-            ))
-        }
+        _ => Err(Error::wrong_type(
+            arg,
+            format!(
+                "expected vertex indices of an integer dtype or an (N,) boolean mask, got dtype {}",
+                dtype_name(a)
+            ),
+        )),
     };
-    let mut mask = vec![false; n_vertices];
-    for i in idx {
-        if i < 0 || i as u64 >= n_vertices as u64 {
-            return Err(out_of_range(&i));
-        }
-        mask[i as usize] = true;
-    }
-    Ok(Some(mask))
+    flags.map(Some)
 }
 
 /// The values of a float32 or float64 array of any shape, widened to f64 (None: another dtype).
 pub fn float_values(obj: &Bound<'_, PyAny>) -> Option<Vec<f64>> {
     by_dtype!(obj, PyReadonlyArrayDyn<f32, f64>, |x| x.as_array().iter().map(|&v| Real::to_f64(v)).collect())
+}
+
+/// A core result as Python receives it: a vector as a 1-D array and a vector of rows as a 2-D
+/// one, handed to NumPy without a copy; vertex indices (u32) as int64, NumPy's index type; an
+/// option as the value or None, and a tuple as a tuple of these.
+pub trait ToPython<'py> {
+    fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>>;
+}
+
+macro_rules! arrays {
+    ($($t:ty),*) => {$(
+        impl<'py> ToPython<'py> for Vec<$t> {
+            fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                Ok(self.into_pyarray(py).into_any())
+            }
+        }
+
+        impl<'py, const K: usize> ToPython<'py> for Vec<[$t; K]> {
+            fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                Ok(rows_to_numpy(py, self).into_any())
+            }
+        }
+    )*};
+}
+arrays!(f64, f32, bool, i8, i64);
+
+impl<'py> ToPython<'py> for Vec<u32> {
+    fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.into_iter().map(i64::from).collect::<Vec<_>>().to_python(py)
+    }
+}
+
+impl<'py, const K: usize> ToPython<'py> for Vec<[u32; K]> {
+    fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.into_iter().map(|r| r.map(i64::from)).collect::<Vec<_>>().to_python(py)
+    }
+}
+
+impl<'py, T> ToPython<'py> for Bound<'py, T> {
+    fn to_python(self, _: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        Ok(self.into_any())
+    }
+}
+
+impl<'py, T: ToPython<'py>> ToPython<'py> for Option<T> {
+    fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.map_or_else(|| Ok(py.None().into_bound(py)), |x| x.to_python(py))
+    }
+}
+
+macro_rules! tuples {
+    ($(($($x:ident),+))*) => {$(
+        impl<'py, $($x: ToPython<'py>),+> ToPython<'py> for ($($x,)+) {
+            #[allow(non_snake_case)]
+            fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                let ($($x,)+) = self;
+                PyTuple::new(py, [$($x.to_python(py)?),+])?.into_bound_py_any(py)
+            }
+        }
+    )*};
+}
+tuples!((A, B)(A, B, C)(A, B, C, D, E, F));
+
+/// Positions as (N, 3), in their precision.
+impl<'py> ToPython<'py> for Positions {
+    fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        match self {
+            Positions::F32(v) => v.to_python(py),
+            Positions::F64(v) => v.to_python(py),
+        }
+    }
+}
+
+/// Edges as (K, 2) int64; polylines as their flat (P, 3) points and int64 line starts.
+impl<'py> ToPython<'py> for Lines {
+    fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        match self {
+            Lines::Edges(e) => e.to_python(py),
+            Lines::Polylines(l) => (l.points, l.starts).to_python(py),
+        }
+    }
 }
 
 /// Hands row-major values of a 2-D `shape` to NumPy without copying.
@@ -257,18 +293,4 @@ pub fn rows_to_numpy<T: numpy::Element, const K: usize>(
     rows: Vec<[T; K]>,
 ) -> Bound<'_, PyArray2<T>> {
     grid_to_numpy(py, (rows.len(), K), rows.into_flattened())
-}
-
-/// Hands rows of vertex indices to NumPy as int64 (NumPy's index type).
-pub fn index_rows_to_numpy<const K: usize>(py: Python<'_>, rows: Vec<[u32; K]>) -> Bound<'_, PyArray2<i64>> {
-    rows_to_numpy(py, rows.into_iter().map(|r| r.map(i64::from)).collect())
-}
-
-/// Hands indices to NumPy as int64 (NumPy's index type).
-pub fn indices_to_numpy(py: Python<'_>, indices: impl IntoIterator<Item = u32>) -> Bound<'_, PyArray1<i64>> {
-    vec_to_numpy(py, indices.into_iter().map(i64::from).collect())
-}
-
-pub fn vec_to_numpy<T: numpy::Element>(py: Python<'_>, v: Vec<T>) -> Bound<'_, PyArray1<T>> {
-    Array1::from_vec(v).into_pyarray(py)
 }

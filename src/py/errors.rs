@@ -19,23 +19,20 @@ pyo3::create_exception!(
 );
 pyo3::create_exception!(toonmesh, GpuError, PyRuntimeError, "The GPU device failed while rendering.");
 
-pub fn to_py(e: Error) -> PyErr {
-    let msg = e.to_string();
-    match e {
-        Error::InvalidValue { .. } => PyValueError::new_err(msg),
-        Error::IndexOutOfRange { .. } => PyIndexError::new_err(msg),
-        Error::WrongType { .. } => PyTypeError::new_err(msg),
-        Error::NotConverged(_) => ConvergenceError::new_err(msg),
-        Error::NoAdapter(_) => GpuUnavailableError::new_err(msg),
-        Error::Gpu(_) => GpuError::new_err(msg),
-        Error::Interrupted => PyKeyboardInterrupt::new_err(msg),
-        Error::Internal(_) => PyRuntimeError::new_err(msg),
-    }
-}
-
+/// The one mapping from a core error to a Python exception.
 impl From<Error> for PyErr {
     fn from(e: Error) -> PyErr {
-        to_py(e)
+        let msg = e.to_string();
+        match e {
+            Error::InvalidValue { .. } => PyValueError::new_err(msg),
+            Error::IndexOutOfRange { .. } => PyIndexError::new_err(msg),
+            Error::WrongType { .. } => PyTypeError::new_err(msg),
+            Error::NotConverged(_) => ConvergenceError::new_err(msg),
+            Error::NoAdapter(_) => GpuUnavailableError::new_err(msg),
+            Error::Gpu(_) => GpuError::new_err(msg),
+            Error::Interrupted => PyKeyboardInterrupt::new_err(msg),
+            Error::Internal(_) => PyRuntimeError::new_err(msg),
+        }
     }
 }
 

@@ -9,7 +9,8 @@ use pyo3::prelude::*;
 use super::convert::{faces, native_order, on_positions, positions, Positions, PositionsRef};
 use super::runtime::detached_cancellable;
 use crate::cancel::Cancel;
-use crate::error::{Error, Result};
+use crate::error::Result;
+use crate::mesh::{faces_from_flat, rows_of};
 use crate::real::Real;
 use crate::smooth::range::largest_if_finite;
 
@@ -37,19 +38,6 @@ enum FacesIn<'py> {
     Checked(Vec<[u32; 3]>),
 }
 
-#[derive(Clone, Copy)]
-pub enum FacesRef<'a> {
-    I64(&'a [i64]),
-    I32(&'a [i32]),
-    Checked(&'a [[u32; 3]]),
-}
-
-fn rows_of<T>(flat: &[T]) -> &[[T; 3]] {
-    // SAFETY: [T; 3] has T's alignment and is three Ts laid out contiguously; the caller
-    // checked that the length is a multiple of 3.
-    unsafe { std::slice::from_raw_parts(flat.as_ptr() as *const [T; 3], flat.len() / 3) }
-}
-
 fn contiguous_rows3<'py, T: numpy::Element>(obj: &Bound<'py, PyAny>) -> Option<PyReadonlyArray2<'py, T>> {
     let x = obj.extract::<PyReadonlyArray2<'py, T>>().ok()?;
     let shape = x.shape();
@@ -60,6 +48,20 @@ fn contiguous_rows3<'py, T: numpy::Element>(obj: &Bound<'py, PyAny>) -> Option<P
 fn largest_of<T: Real + numpy::Element>(x: &PyReadonlyArray2<'_, T>) -> Option<f64> {
     largest_if_finite(x.as_slice().ok()?)
 }
+
+fn slice<'a, T: numpy::Element>(x: &'a PyReadonlyArray2<'_, T>) -> &'a [T] {
+    x.as_slice().expect("checked contiguous")
+}
+
+/// `$body` run on the mesh read from `$vertices` and `$faces` (see `MeshInput::run`), with `$v`
+/// its positions in their own precision, `$f` its faces and `$cancel` Ctrl-C's flag.
+macro_rules! on_mesh {
+    ($py:expr, $vertices:expr, $faces:expr, |$v:ident, $f:ident, $cancel:pat_param| $body:expr) => {
+        $crate::py::mesh_input::MeshInput::read($vertices, $faces)?
+            .run($py, |p, $f, $cancel| $crate::py::convert::on_positions!(p, $v => $body))
+    };
+}
+pub(crate) use on_mesh;
 
 impl<'py> MeshInput<'py> {
     pub fn read(vertices: &Bound<'py, PyAny>, faces_obj: &Bound<'py, PyAny>) -> Result<Self> {
@@ -97,76 +99,37 @@ impl<'py> MeshInput<'py> {
 
     pub fn positions(&self) -> PositionsRef<'_> {
         match &self.vertices {
-            VerticesIn::F32(x) => PositionsRef::F32(rows_of(x.as_slice().expect("checked contiguous"))),
-            VerticesIn::F64(x) => PositionsRef::F64(rows_of(x.as_slice().expect("checked contiguous"))),
+            VerticesIn::F32(x) => PositionsRef::F32(rows_of(slice(x))),
+            VerticesIn::F64(x) => PositionsRef::F64(rows_of(slice(x))),
             VerticesIn::Copied(p) => p.slices(),
         }
     }
 
-    fn faces(&self) -> FacesRef<'_> {
-        match &self.faces {
-            FacesIn::I64(x) => FacesRef::I64(x.as_slice().expect("checked contiguous")),
-            FacesIn::I32(x) => FacesRef::I32(x.as_slice().expect("checked contiguous")),
-            FacesIn::Checked(f) => FacesRef::Checked(f),
-        }
-    }
-
     /// Runs `work` on the mesh with the GIL released, stopping on Ctrl-C when `work` checks its
-    /// `Cancel` (see `runtime::detached_cancellable`). Faces are converted to u32 inside, in
-    /// parallel; if any index is bad, the general reader produces the error message.
+    /// `Cancel` (see `runtime::detached_cancellable`). NumPy's faces are converted to u32
+    /// inside, in parallel, and checked as the general reader checks them.
     pub fn run<R: Send>(
         &self,
         py: Python<'_>,
-        faces_obj: &Bound<'_, PyAny>,
         work: impl Fn(PositionsRef<'_>, &[[u32; 3]], &Cancel) -> Result<R> + Send + Sync,
     ) -> PyResult<R> {
-        let (positions, faces_ref, n) = (self.positions(), self.faces(), self.n_vertices);
-        let outcome = detached_cancellable(py, |cancel| {
-            let converted = match faces_ref {
-                FacesRef::Checked(f) => return work(positions, f, cancel).map(Some),
-                FacesRef::I64(flat) => faces_to_u32(flat, n),
-                FacesRef::I32(flat) => faces_to_u32(flat, n),
-            };
-            match converted {
-                Some(f) => work(positions, &f, cancel).map(Some),
-                None => Ok(None),
-            }
-        })?;
-        match outcome {
-            Some(r) => Ok(r),
-            // Some index is out of range: let the general reader say which one.
-            None => Err(faces("faces", faces_obj, n)
-                .err()
-                .unwrap_or_else(|| {
-                    Error::Internal("faces: rejected by the fast reader but not by the general one".into())
-                })
-                .into()),
-        }
+        let (positions, n) = (self.positions(), self.n_vertices);
+        let faces = match &self.faces {
+            FacesIn::Checked(f) => FacesRef::Checked(f),
+            FacesIn::I64(x) => FacesRef::I64(slice(x)),
+            FacesIn::I32(x) => FacesRef::I32(slice(x)),
+        };
+        detached_cancellable(py, |cancel| match faces {
+            FacesRef::Checked(f) => work(positions, f, cancel),
+            FacesRef::I64(flat) => work(positions, &faces_from_flat("faces", flat, n)?, cancel),
+            FacesRef::I32(flat) => work(positions, &faces_from_flat("faces", flat, n)?, cancel),
+        })
     }
 }
 
-/// Faces as u32 rows, or None if any index is outside [0, n).
-fn faces_to_u32<I: Copy + Into<i64> + Sync>(flat: &[I], n: usize) -> Option<Vec<[u32; 3]>> {
-    use rayon::prelude::*;
-    let rows = rows_of(flat);
-    let mut out: Vec<[u32; 3]> = crate::huge_pages::with_capacity(rows.len());
-    let ok = out.spare_capacity_mut()[..rows.len()].par_chunks_mut(16384).zip(rows.par_chunks(16384)).all(
-        |(o, r)| {
-            let mut ok = true;
-            for (o, r) in o.iter_mut().zip(r) {
-                let row = r.map(|i| {
-                    let i: i64 = i.into();
-                    ok &= i >= 0 && (i as u64) < n as u64;
-                    i as u32
-                });
-                o.write(row);
-            }
-            ok
-        },
-    );
-    if ok {
-        // SAFETY: `all` returned true, so every chunk ran and wrote each of its elements.
-        unsafe { out.set_len(rows.len()) };
-    }
-    ok.then_some(out)
+#[derive(Clone, Copy)]
+enum FacesRef<'a> {
+    I64(&'a [i64]),
+    I32(&'a [i32]),
+    Checked(&'a [[u32; 3]]),
 }

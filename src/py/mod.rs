@@ -15,15 +15,40 @@ mod strokes;
 
 use pyo3::prelude::*;
 
+/// Everything `toonmesh._core` holds.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
-    edges::register(m)?;
-    runtime::register(m)?;
-    shapes::register(m)?;
-    smooth::register(m)?;
-    strokes::register(m)?;
     settings::register(m)?;
-    render::register(m)?;
+    let functions = [
+        wrap_pyfunction!(edges::_feature_edges, m)?,
+        wrap_pyfunction!(edges::_curvature, m)?,
+        wrap_pyfunction!(edges::_view_lines, m)?,
+        wrap_pyfunction!(edges::_chains, m)?,
+        wrap_pyfunction!(edges::_sobel, m)?,
+        wrap_pyfunction!(edges::_paper_edges, m)?,
+        wrap_pyfunction!(edges::_vertex_count, m)?,
+        wrap_pyfunction!(runtime::set_num_threads, m)?,
+        wrap_pyfunction!(runtime::get_num_threads, m)?,
+        wrap_pyfunction!(shapes::icosphere, m)?,
+        wrap_pyfunction!(shapes::grid, m)?,
+        wrap_pyfunction!(smooth::_smooth, m)?,
+        wrap_pyfunction!(strokes::_pen_strokes, m)?,
+        wrap_pyfunction!(strokes::_plotter_order, m)?,
+        wrap_pyfunction!(strokes::_svg_document, m)?,
+        wrap_pyfunction!(render::_shadow_truth, m)?,
+        wrap_pyfunction!(albedo::_srgb_from_linear, m)?,
+        wrap_pyfunction!(render::_normal_mode, m)?,
+        wrap_pyfunction!(render::_transform, m)?,
+        wrap_pyfunction!(render::gpu_info, m)?,
+        wrap_pyfunction!(render::encode_png_rgba, m)?,
+        wrap_pyfunction!(settings::_restore, m)?,
+        wrap_pyfunction!(settings::kang_table, m)?,
+    ];
+    for f in functions {
+        m.add_function(f)?;
+    }
+    m.add_class::<edges::PyEdgeIndex>()?;
+    m.add_class::<render::PyRenderer>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

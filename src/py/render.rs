@@ -4,23 +4,22 @@
 
 use numpy::ndarray::IxDyn;
 use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3,
-    PyUntypedArrayMethods,
+    PyArray2, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
+use pyo3::IntoPyObjectExt;
 
 use super::albedo::albedo;
-use super::args::{number, text, type_name};
-use super::convert::{faces, grid_to_numpy, on_positions, positions, rows_to_numpy};
-use super::errors::to_py;
-use super::runtime::{catching_panics, detached_cancellable};
+use super::args::{number, text, triple, type_name};
+use super::convert::{faces, grid_to_numpy, on_positions, positions, ToPython};
+use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
-use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
-use crate::real::Real;
+use crate::parallel::catching_panics;
 use crate::render::effects::outlines::settings::kind_names;
+use crate::render::effects::shadows::raycast::mesh_shadow_truth;
 use crate::render::gpu_mesh::NormalMode;
 use crate::render::image_out::encode_png;
 use crate::render::scene::options::MeshSpec;
@@ -31,7 +30,7 @@ use crate::render::{BackendChoice, FrameReport, GpuInfo, ImageMut, OutputBuffers
 /// Runs GPU work with the GIL released, catching panics. Not in the compute pool: a render
 /// mostly waits on the device, and concurrent renders should not queue behind each other there.
 fn without_gil<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
-    py.detach(|| catching_panics(work)).map_err(to_py)
+    py.detach(|| catching_panics(work)).map_err(PyErr::from)
 }
 
 fn info_dict<'py>(py: Python<'py>, info: &GpuInfo) -> PyResult<Bound<'py, PyDict>> {
@@ -47,8 +46,13 @@ fn info_dict<'py>(py: Python<'py>, info: &GpuInfo) -> PyResult<Bound<'py, PyDict
     Ok(d)
 }
 
-fn matrix(py: Python<'_>, m: [[f64; 4]; 4]) -> Bound<'_, PyAny> {
-    rows_to_numpy(py, m.to_vec()).into_any()
+fn matrix(py: Python<'_>, m: [[f64; 4]; 4]) -> PyResult<Bound<'_, PyAny>> {
+    m.to_vec().to_python(py)
+}
+
+/// The backend asked for (None: the default choice).
+fn backend_of(backend: Option<&Bound<'_, PyAny>>) -> Result<BackendChoice> {
+    BackendChoice::resolve(backend.map(|b| text("backend", b)).transpose()?.as_deref())
 }
 
 /// `normals`: "smooth", "flat", "auto" (split at `DEFAULT_CREASE_ANGLE`) or ("auto", crease
@@ -59,14 +63,8 @@ fn normal_mode(obj: &Bound<'_, PyAny>) -> Result<NormalMode> {
     }
     if let Ok(pair) = obj.cast::<PyTuple>() {
         if let (2, Ok(name)) = (pair.len(), pair.get_item(0).and_then(|n| n.extract::<String>())) {
-            if name != "auto" {
-                return Err(Error::invalid(
-                    "normals",
-                    format!("only 'auto' takes a crease angle, got ({name:?}, ...)"),
-                ));
-            }
             let angle = pair.get_item(1).map_err(|e| Error::invalid("normals", e.to_string()))?;
-            return NormalMode::auto("normals", number("normals", &angle)?);
+            return NormalMode::with_angle("normals", &name, || number("normals", &angle));
         }
     }
     Err(Error::wrong_type(
@@ -80,26 +78,24 @@ fn normal_mode(obj: &Bound<'_, PyAny>) -> Result<NormalMode> {
 
 /// A normal mode in its shortest spelling: "auto" for ('auto', the default angle).
 fn normal_spelling(py: Python<'_>, mode: NormalMode) -> PyResult<Bound<'_, PyAny>> {
-    Ok(match mode {
-        NormalMode::Auto { crease_angle } if crease_angle != DEFAULT_CREASE_ANGLE => {
-            ("auto", crease_angle).into_pyobject(py)?.into_any()
-        }
-        mode => PyString::new(py, mode.name()).into_any(),
-    })
+    match mode.written_angle() {
+        Some(angle) => (mode.name(), angle).into_bound_py_any(py),
+        None => mode.name().into_bound_py_any(py),
+    }
 }
 
 /// _normal_mode(normals) -> str | (str, float): `normals` checked, in its shortest spelling.
 #[pyfunction]
-fn _normal_mode<'py>(py: Python<'py>, normals: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+pub(super) fn _normal_mode<'py>(py: Python<'py>, normals: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
     normal_spelling(py, normal_mode(normals)?)
 }
 
 /// _transform(transform) -> (4, 4) float64: a mesh's transform checked (see `RenderOptions`).
 #[pyfunction]
-fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+pub(super) fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
     let t = self::transform("transform", transform)?;
     crate::render::scene::check_transform("transform", &t)?;
-    Ok(matrix(py, t))
+    matrix(py, t)
 }
 
 /// The meshes of a render: [(mesh id, Material or None, 4x4 transform or None)].
@@ -127,56 +123,42 @@ fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
         .collect()
 }
 
+/// An image output's array: allocated here, filled by the render without the GIL.
+enum Image<'py> {
+    Bytes(Bound<'py, PyArrayDyn<u8>>),
+    Floats(Bound<'py, PyArrayDyn<f32>>),
+}
+
 /// The image outputs of `k` views (`k` None: one, without a leading axis), allocated here:
 /// (H, W, 4) uint8 colour, (H, W, 3) normals, (H, W) float32 for the others.
-struct Images<'py> {
-    arrays: Vec<(Output, Bound<'py, PyAny>)>,
-}
+struct Images<'py>(Vec<(Output, Image<'py>)>);
 
 impl<'py> Images<'py> {
     fn allocate(py: Python<'py>, frame: &FrameSpec, k: Option<usize>) -> Self {
         let (h, w) = (frame.height as usize, frame.width as usize);
-        let arrays = frame
-            .outputs
-            .iter()
-            .filter_map(|o| {
-                let mut shape: Vec<usize> = k.into_iter().chain([h, w]).collect();
-                // SAFETY: every element is written by the render before Python sees it.
-                let array = match o.pixel()? {
-                    Pixel::Bytes(c) => {
-                        shape.push(c);
-                        unsafe { PyArrayDyn::<u8>::new(py, IxDyn(&shape), false) }.into_any()
-                    }
-                    Pixel::Floats(c) => {
-                        if c > 1 {
-                            shape.push(c);
-                        }
-                        unsafe { PyArrayDyn::<f32>::new(py, IxDyn(&shape), false) }.into_any()
-                    }
-                };
-                Some((o, array))
-            })
-            .collect();
-        Images { arrays }
+        let shape = |c: Option<usize>| IxDyn(&k.into_iter().chain([h, w]).chain(c).collect::<Vec<_>>());
+        // SAFETY: every element is written by the render before Python sees it.
+        let image = |pixel| match pixel {
+            Pixel::Bytes(c) => Image::Bytes(unsafe { PyArrayDyn::new(py, shape(Some(c)), false) }),
+            Pixel::Floats(c) => {
+                Image::Floats(unsafe { PyArrayDyn::new(py, shape((c > 1).then_some(c)), false) })
+            }
+        };
+        Images(frame.outputs.iter().filter_map(|o| Some((o, image(o.pixel()?)))).collect())
     }
 
     /// One set of output buffers for each of `k` views.
     fn buffers(&self, k: usize) -> Vec<OutputBuffers<'_>> {
         let mut sets: Vec<OutputBuffers<'_>> = (0..k).map(|_| OutputBuffers::default()).collect();
-        for (o, array) in &self.arrays {
+        for (o, image) in &self.0 {
             // SAFETY: the arrays were just made here, are C-contiguous and shared with no one.
             let views: Vec<ImageMut<'_>> = unsafe {
-                match array.cast::<PyArrayDyn<u8>>() {
-                    Ok(a) => split(a.as_slice_mut().expect("contiguous"), k)
-                        .into_iter()
-                        .map(ImageMut::Bytes)
-                        .collect(),
-                    Err(_) => {
-                        let a = array.cast::<PyArrayDyn<f32>>().expect("f32 or u8");
-                        split(a.as_slice_mut().expect("contiguous"), k)
-                            .into_iter()
-                            .map(ImageMut::Floats)
-                            .collect()
+                match image {
+                    Image::Bytes(a) => {
+                        split(a.as_slice_mut().expect("contiguous"), k).map(ImageMut::Bytes).collect()
+                    }
+                    Image::Floats(a) => {
+                        split(a.as_slice_mut().expect("contiguous"), k).map(ImageMut::Floats).collect()
                     }
                 }
             };
@@ -190,15 +172,19 @@ impl<'py> Images<'py> {
     fn into_dict(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         for o in Output::ALL.into_iter().filter(|o| o.pixel().is_some()) {
-            d.set_item(o.name(), self.arrays.iter().find(|a| a.0 == o).map(|a| a.1.clone()))?;
+            let image = self.0.iter().find(|a| a.0 == o).map(|(_, image)| match image {
+                Image::Bytes(a) => a.as_any(),
+                Image::Floats(a) => a.as_any(),
+            });
+            d.set_item(o.name(), image)?;
         }
         Ok(d)
     }
 }
 
-fn split<T>(s: &mut [T], k: usize) -> Vec<&mut [T]> {
+fn split<T>(s: &mut [T], k: usize) -> std::slice::ChunksMut<'_, T> {
     let n = (s.len() / k.max(1)).max(1);
-    s.chunks_mut(n).collect()
+    s.chunks_mut(n)
 }
 
 /// A render's report as the dict `toonmesh.RenderResult` reads (its images added to `d`).
@@ -210,20 +196,14 @@ fn report_dict<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     d.set_item("width", frame.width)?;
     d.set_item("height", frame.height)?;
-    let (lines, kinds, widths) = match report.lines {
-        Some(lines) => {
-            let names = kind_names();
-            let kinds: Vec<&str> = lines.iter().map(|l| names[l.kind]).collect();
-            let mut arrays: Vec<Bound<'py, PyArray2<f64>>> = Vec::with_capacity(lines.len());
-            let mut widths: Vec<Bound<'py, PyArray1<f32>>> = Vec::with_capacity(lines.len());
-            for l in lines {
-                arrays.push(rows_to_numpy(py, l.points));
-                widths.push(l.widths.iter().map(|&w| w as f32).collect::<Vec<f32>>().into_pyarray(py));
-            }
-            (Some(arrays), Some(kinds), Some(widths))
-        }
-        None => (None, None, None),
-    };
+    let (mut lines, mut kinds, mut widths) = (None, None, None);
+    if let Some(all) = report.lines {
+        let names = kind_names();
+        kinds = Some(all.iter().map(|l| names[l.kind]).collect::<Vec<_>>());
+        let each = |l: &[f64]| l.iter().map(|&w| w as f32).collect::<Vec<f32>>().to_python(py);
+        widths = Some(all.iter().map(|l| each(&l.widths)).collect::<PyResult<Vec<_>>>()?);
+        lines = Some(all.into_iter().map(|l| l.points.to_python(py)).collect::<PyResult<Vec<_>>>()?);
+    }
     d.set_item("lines", lines)?;
     d.set_item("line_kinds", kinds)?;
     d.set_item("line_widths", widths)?;
@@ -231,8 +211,8 @@ fn report_dict<'py>(
     d.set_item("timings", report.timings)?;
     d.set_item("gpu_timed", report.gpu_timed)?;
     d.set_item("culled", report.culled)?;
-    d.set_item("view", matrix(py, report.view))?;
-    d.set_item("proj", matrix(py, report.proj))?;
+    d.set_item("view", matrix(py, report.view)?)?;
+    d.set_item("proj", matrix(py, report.proj)?)?;
     d.set_item("near", report.near)?;
     d.set_item("far", report.far)?;
     Ok(d)
@@ -240,7 +220,7 @@ fn report_dict<'py>(
 
 /// The device-side half of `toonmesh.Renderer` (see python/toonmesh/_render.py).
 #[pyclass(name = "Renderer", module = "toonmesh._core", frozen)]
-struct PyRenderer {
+pub(super) struct PyRenderer {
     inner: Renderer,
 }
 
@@ -249,8 +229,7 @@ impl PyRenderer {
     #[new]
     #[pyo3(signature = (backend = None))]
     fn new(py: Python<'_>, backend: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-        let name = backend.map(|b| text("backend", b)).transpose()?;
-        let choice = BackendChoice::resolve(name.as_deref())?;
+        let choice = backend_of(backend)?;
         let inner = without_gil(py, || Renderer::new(choice))?;
         Ok(PyRenderer { inner })
     }
@@ -336,16 +315,21 @@ impl PyRenderer {
 /// gpu_info(backend=None) -> dict: the adapter a render would use.
 #[pyfunction]
 #[pyo3(signature = (backend = None))]
-fn gpu_info<'py>(py: Python<'py>, backend: Option<&Bound<'py, PyAny>>) -> PyResult<Bound<'py, PyDict>> {
-    let name = backend.map(|b| text("backend", b)).transpose()?;
-    let choice = BackendChoice::resolve(name.as_deref())?;
+pub(super) fn gpu_info<'py>(
+    py: Python<'py>,
+    backend: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let choice = backend_of(backend)?;
     let ctx = without_gil(py, || crate::render::context::context(choice))?;
     info_dict(py, &ctx.info)
 }
 
 /// encode_png(color: uint8 (H, W, 4)) -> bytes
 #[pyfunction]
-fn encode_png_rgba<'py>(py: Python<'py>, color: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyBytes>> {
+pub(super) fn encode_png_rgba<'py>(
+    py: Python<'py>,
+    color: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyBytes>> {
     let a: PyReadonlyArray3<'py, u8> = color
         .extract()
         .map_err(|_| Error::wrong_type("color", "expected a uint8 array of shape (H, W, 4)"))?;
@@ -364,7 +348,7 @@ fn encode_png_rgba<'py>(py: Python<'py>, color: &Bound<'py, PyAny>) -> PyResult<
 /// world space seen through `view_proj` ((4, 4) world -> clip, as `projection @ view_matrix`),
 /// 1 where the pixel's surface sees the light along `toward_light` (or no surface), else 0.
 #[pyfunction]
-fn _shadow_truth<'py>(
+pub(super) fn _shadow_truth<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces_arr: &Bound<'py, PyAny>,
@@ -373,32 +357,18 @@ fn _shadow_truth<'py>(
     height: u32,
     toward_light: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyArray2<f32>>> {
-    use crate::render::effects::shadows::raycast::{shadow_truth, Triangles};
-    use glam::{DMat4, DVec3};
-    let toward = DVec3::from_array(super::args::triple("toward_light", toward_light)?).normalize();
+    let toward = triple("toward_light", toward_light)?;
     let m = view_proj.as_array();
     if m.shape() != [4, 4] {
         return Err(Error::invalid("view_proj", format!("expected shape (4, 4), got {:?}", m.shape())).into());
     }
     let rows: Vec<f64> = m.iter().copied().collect();
-    let vp = DMat4::from_cols_slice(&rows).transpose();
     let p = positions("vertices", vertices)?;
-    let p: Vec<DVec3> =
-        on_positions!(p.slices(), v => v.iter().map(|q| DVec3::from_array(q.map(Real::to_f64))).collect());
     let f = faces("faces", faces_arr, p.len())?;
-    let tris = Triangles::new(f.iter().map(|t| t.map(|i| p[i as usize])).collect());
     let (w, h) = (width as usize, height as usize);
-    let vis = without_gil(py, || Ok(crate::parallel::install(|| shadow_truth(&tris, vp, w, h, toward))))?;
+    let vis = without_gil(py, || {
+        let truth = || on_positions!(p.slices(), v => mesh_shadow_truth(v, &f, &rows, (w, h), toward));
+        Ok(crate::parallel::install(truth))
+    })?;
     Ok(grid_to_numpy(py, (h, w), vis))
-}
-
-pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(_shadow_truth, m)?)?;
-    m.add_function(wrap_pyfunction!(super::albedo::_srgb_from_linear, m)?)?;
-    m.add_function(wrap_pyfunction!(_normal_mode, m)?)?;
-    m.add_function(wrap_pyfunction!(_transform, m)?)?;
-    m.add_class::<PyRenderer>()?;
-    m.add_function(wrap_pyfunction!(gpu_info, m)?)?;
-    m.add_function(wrap_pyfunction!(encode_png_rgba, m)?)?;
-    Ok(())
 }

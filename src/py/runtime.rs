@@ -7,10 +7,9 @@ use std::time::Duration;
 use pyo3::prelude::*;
 
 use super::args;
-use super::errors::to_py;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
-use crate::parallel;
+use crate::parallel::{self, catching_panics};
 
 /// How often the calling thread looks for a pending signal while work runs: often enough that
 /// Ctrl-C stops the work within a fraction of a second, rarely enough to cost nothing.
@@ -19,7 +18,7 @@ const SIGNAL_POLL: Duration = Duration::from_millis(5);
 /// Runs compute work with the GIL released, inside the thread pool, and maps its error (or a
 /// panic) to a Python exception.
 pub fn detached<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
-    py.detach(|| catching_panics(|| parallel::install(work))).map_err(to_py)
+    py.detach(|| catching_panics(|| parallel::install(work))).map_err(PyErr::from)
 }
 
 /// Runs long compute work as `detached` does, and stops it on Ctrl-C.
@@ -66,7 +65,7 @@ pub fn detached_cancellable<T: Send>(
     // A signal that was taken must be raised, whatever the work returned meanwhile.
     match raised {
         Some(e) => Err(e),
-        None => outcome.map_err(to_py),
+        None => outcome.map_err(PyErr::from),
     }
 }
 
@@ -82,18 +81,6 @@ fn on_main_thread(py: Python<'_>) -> bool {
     main.is_ok_and(|m| m == me)
 }
 
-/// Runs `work`, turning a panic into `Error::Internal` so that none reaches Python.
-pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)).unwrap_or_else(|p| {
-        let what = p
-            .downcast_ref::<&str>()
-            .map(|s| s.to_string())
-            .or_else(|| p.downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "unknown panic".into());
-        Err(Error::Internal(what))
-    })
-}
-
 /// set_num_threads(n: int) -> None
 ///
 /// Sets how many worker threads toonmesh's parallel work uses, from the next call on.
@@ -103,23 +90,14 @@ pub fn catching_panics<T>(work: impl FnOnce() -> Result<T>) -> Result<T> {
 /// count. Raises TypeError for anything but an int (or NumPy integer; bools are refused) and
 /// ValueError below 0 or above 1024.
 #[pyfunction]
-fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
-    let n = args::integer("n", n)?;
-    let n = usize::try_from(n)
-        .map_err(|_| Error::invalid("n", format!("must be >= 0 (0 restores the default), got {n}")))?;
-    parallel::set_num_threads(n).map_err(to_py)
+pub(super) fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
+    Ok(parallel::set_num_threads(args::integer("n", n)?)?)
 }
 
 /// get_num_threads() -> int
 ///
 /// The number of worker threads the next parallel call will use (see ``set_num_threads``).
 #[pyfunction]
-fn get_num_threads() -> usize {
+pub(super) fn get_num_threads() -> usize {
     parallel::num_threads()
-}
-
-pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(set_num_threads, m)?)?;
-    m.add_function(wrap_pyfunction!(get_num_threads, m)?)?;
-    Ok(())
 }

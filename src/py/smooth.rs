@@ -6,11 +6,11 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::args;
-use super::convert::{vertex_mask, Positions, PositionsRef};
+use super::convert::{vertex_mask, Positions, PositionsRef, ToPython};
 use super::mesh_input::MeshInput;
 use crate::error::{Error, Result};
 use crate::smooth::denoise::{self, Filter};
-use crate::smooth::{self, Args};
+use crate::smooth::{self, Args, Run};
 
 /// The options a public function passed, taken one by one; what is left was not expected.
 struct Options<'a, 'py>(&'a Bound<'py, PyDict>);
@@ -36,22 +36,11 @@ impl<'py> Options<'_, 'py> {
     }
 }
 
-/// How a smoother ran: the Laplacian family's plan, or a normal filter's options.
-enum Run {
-    Laplacian(smooth::Plan),
-    Normals(denoise::Options),
-}
-
 fn plan(method: &str, o: &Options<'_, '_>) -> Result<Run> {
     let iterations = o.take("iterations", args::integer)?;
     // weld is always given (False by default), so None is refused as a non-bool
     let weld = o.given("weld").map(|w| args::flag("weld", &w)).transpose()?;
-    let filter = match method {
-        "bilateral" => Some(Filter::Bilateral),
-        "guided" => Some(Filter::Guided),
-        _ => None,
-    };
-    let run = match filter {
+    let run = match Filter::of_method(method) {
         Some(f) => Run::Normals(denoise::resolve(
             f,
             &denoise::Args {
@@ -87,7 +76,7 @@ fn plan(method: &str, o: &Options<'_, '_>) -> Result<Run> {
 
 #[pyfunction]
 #[pyo3(signature = (method_name, vertices, faces_arr, **options))]
-fn _smooth<'py>(
+pub(super) fn _smooth<'py>(
     py: Python<'py>,
     method_name: &str,
     vertices: &Bound<'py, PyAny>,
@@ -104,23 +93,11 @@ fn _smooth<'py>(
     let mesh = MeshInput::read(vertices, faces_arr)?;
     let pin = vertex_mask("pinned", pinned.as_ref(), mesh.n_vertices())?;
     let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
-    let out = mesh.run(py, faces_arr, |p, f, cancel| {
-        macro_rules! each {
-            ($v:expr) => {
-                match &run {
-                    Run::Laplacian(plan) => smooth::smooth_cancellable($v, f, plan, pin, cancel, largest),
-                    Run::Normals(opts) => denoise::denoise($v, f, opts, pin, cancel, largest),
-                }
-            };
-        }
+    let out = mesh.run(py, |p, f, cancel| {
         Ok(match p {
-            PositionsRef::F32(v) => Positions::F32(each!(v)?),
-            PositionsRef::F64(v) => Positions::F64(each!(v)?),
+            PositionsRef::F32(v) => Positions::F32(run.run(v, f, pin, cancel, largest)?),
+            PositionsRef::F64(v) => Positions::F64(run.run(v, f, pin, cancel, largest)?),
         })
     })?;
-    Ok(out.into_numpy(py))
-}
-
-pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(_smooth, m)?)
+    out.to_python(py)
 }

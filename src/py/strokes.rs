@@ -1,13 +1,13 @@
 //! Python bindings for `crate::render::effects::outlines::pen`: the strokes of a line drawing as
 //! a pen draws them, called by `toonmesh/_strokes.py`.
 
-use numpy::{PyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyTuple};
+use pyo3::types::PyList;
 use rayon::prelude::*;
 
 use super::args;
-use super::convert::{dtype_name, float_values, native_order, rows_to_numpy, untyped, vec_to_numpy};
+use super::convert::{dtype_name, float_values, native_order, untyped, ToPython};
 use super::runtime::detached;
 use crate::error::{Error, Result};
 use crate::render::effects::outlines::pen::svg::{self, Group, Ink, Stroke};
@@ -24,10 +24,7 @@ fn point_array(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 2]>> {
         .extract::<PyReadonlyArray2<'_, f64>>()
         .map_err(|_| Error::wrong_type(arg, format!("dtype must be float64, got {}", dtype_name(a))))?;
     let p: Vec<[f64; 2]> = x.as_array().rows().into_iter().map(|r| [r[0], r[1]]).collect();
-    if let Some(i) = p.iter().position(|q| !(q[0].is_finite() && q[1].is_finite())) {
-        return Err(Error::invalid(arg, format!("point {i} is not finite: {:?}", p[i])));
-    }
-    Ok(p)
+    pen::check_points(arg, &p).map(|()| p)
 }
 
 /// (K,) finite widths in pixels, float32 or float64.
@@ -41,13 +38,18 @@ fn width_array(arg: &str, obj: &Bound<'_, PyAny>, n: usize) -> Result<Vec<f64>> 
             format!("expected a 1-D float32 or float64 array, got dtype {dtype} and shape {shape:?}"),
         )
     })?;
-    if w.len() != n {
-        return Err(Error::invalid(arg, format!("expected one width per point ({n}), got {}", w.len())));
-    }
-    if w.iter().any(|v| !v.is_finite()) {
-        return Err(Error::invalid(arg, "widths must be finite"));
-    }
-    Ok(w)
+    pen::check_widths(arg, &w, n).map(|()| w)
+}
+
+/// Line `i` of the lines `arg` and its widths (None: not given), the `i`th of `widths_arg`.
+fn stroke(
+    (arg, widths_arg, i): (&str, &str, usize),
+    line: &Bound<'_, PyAny>,
+    widths: Option<&Bound<'_, PyAny>>,
+) -> Result<(Vec<[f64; 2]>, Option<Vec<f64>>)> {
+    let points = point_array(&format!("{arg}[{i}]"), line)?;
+    let widths = widths.map(|w| width_array(&format!("{widths_arg}[{i}]"), w, points.len())).transpose()?;
+    Ok((points, widths))
 }
 
 fn items<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Vec<Bound<'py, PyAny>>> {
@@ -61,7 +63,7 @@ fn items<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Vec<Bound<'py, PyAny
 /// Each of `lines` as the SVG draws it (`pen::drawn`): the points drawn and which of the line's
 /// points they are. `widths[i]` None simplifies line i by its points alone.
 #[pyfunction]
-fn _pen_strokes<'py>(
+pub(super) fn _pen_strokes<'py>(
     py: Python<'py>,
     lines: &Bound<'py, PyAny>,
     widths: &Bound<'py, PyAny>,
@@ -77,11 +79,7 @@ fn _pen_strokes<'py>(
         .iter()
         .zip(&width_items)
         .enumerate()
-        .map(|(i, (l, w))| {
-            let p = point_array(&format!("lines[{i}]"), l)?;
-            let w = if w.is_none() { None } else { Some(width_array(&format!("widths[{i}]"), w, p.len())?) };
-            Ok((p, w))
-        })
+        .map(|(i, (l, w))| stroke(("lines", "widths", i), l, Some(w).filter(|w| !w.is_none())))
         .collect::<Result<Vec<_>>>()?;
     let (smooth, simplify) = (args::number("smooth", smooth)?, args::number("simplify", simplify)?);
     let drawn = detached(py, || {
@@ -90,25 +88,19 @@ fn _pen_strokes<'py>(
             .map(|(p, w)| pen::drawn(p, w.as_deref().unwrap_or(&[]), smooth, simplify, w.is_some()))
             .collect::<Result<Vec<_>>>()
     })?;
-    let out = drawn.into_iter().map(|(p, kept)| {
-        let kept: Vec<i64> = kept.into_iter().map(|i| i as i64).collect();
-        PyTuple::new(py, [rows_to_numpy(py, p).into_any(), vec_to_numpy(py, kept).into_any()])
-    });
-    PyList::new(py, out.collect::<PyResult<Vec<_>>>()?)
+    let out = drawn.into_iter().map(|(p, kept)| (p, kept.into_iter().map(|i| i as i64).collect::<Vec<_>>()));
+    PyList::new(py, out.map(|d| d.to_python(py)).collect::<PyResult<Vec<_>>>()?)
 }
-
-/// Stroke indices in drawing order, and whether each is drawn from its last point.
-type DrawingOrder<'py> = (Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<bool>>);
 
 /// `pen::plotter_order::plotter_order` of the strokes with first points `starts` and last
 /// points `ends` ((N, 2) each): the strokes' indices in drawing order, and whether each is drawn
 /// from its last point.
 #[pyfunction]
-fn _plotter_order<'py>(
+pub(super) fn _plotter_order<'py>(
     py: Python<'py>,
     starts: &Bound<'py, PyAny>,
     ends: &Bound<'py, PyAny>,
-) -> PyResult<DrawingOrder<'py>> {
+) -> PyResult<Bound<'py, PyAny>> {
     let (starts, ends) = (point_array("starts", starts)?, point_array("ends", ends)?);
     if starts.len() != ends.len() {
         let reason = format!("expected as many as starts ({}), got {}", starts.len(), ends.len());
@@ -116,7 +108,7 @@ fn _plotter_order<'py>(
     }
     let drawn = detached(py, || Ok(order::plotter_order(&starts, &ends)))?;
     let (index, reversed): (Vec<i64>, Vec<bool>) = drawn.into_iter().map(|(i, r)| (i as i64, r)).unzip();
-    Ok((vec_to_numpy(py, index), vec_to_numpy(py, reversed)))
+    (index, reversed).to_python(py)
 }
 
 /// One group of `svg_document`: (id, colour, width in pixels or None for filled outlines,
@@ -146,12 +138,9 @@ fn group(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Group> {
         .iter()
         .enumerate()
         .map(|(i, l)| {
-            let points = point_array(&format!("{}[{i}]", field("lines")), l)?;
-            let widths = match &line_widths {
-                Some(w) => width_array(&format!("{}[{i}]", field("widths")), &w[i], points.len())?,
-                None => Vec::new(),
-            };
-            Ok(Stroke { points, widths })
+            let (points, widths) =
+                stroke((&field("lines"), &field("widths"), i), l, line_widths.as_ref().map(|w| &w[i]))?;
+            Ok(Stroke { points, widths: widths.unwrap_or_default() })
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Group { id: args::text(&field("id"), id)?, color: args::rgb(&field("color"), color)?, ink, strokes })
@@ -159,7 +148,7 @@ fn group(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Group> {
 
 /// `pen::svg::document`: the SVG text of a `width` x `height` drawing of `groups`.
 #[pyfunction]
-fn _svg_document(
+pub(super) fn _svg_document(
     py: Python<'_>,
     width: &Bound<'_, PyAny>,
     height: &Bound<'_, PyAny>,
@@ -176,11 +165,4 @@ fn _svg_document(
         .collect::<Result<Vec<_>>>()?;
     let (width, height) = (size("width", width)?, size("height", height)?);
     detached(py, || Ok(svg::document(width, height, &groups)))
-}
-
-pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(_pen_strokes, m)?)?;
-    m.add_function(wrap_pyfunction!(_plotter_order, m)?)?;
-    m.add_function(wrap_pyfunction!(_svg_document, m)?)?;
-    Ok(())
 }

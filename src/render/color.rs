@@ -60,6 +60,15 @@ pub fn from_channels(arg: &str, channels: &[f64]) -> Result<Srgb> {
     Ok([channels[0], channels[1], channels[2]])
 }
 
+/// An sRGB colour with alpha from three or four channels in [0, 1] (alpha 1 when not given).
+pub fn rgba_from_channels(arg: &str, c: &[f64]) -> Result<[f64; 4]> {
+    if !(c.len() == 3 || c.len() == 4) {
+        return Err(Error::invalid(arg, format!("expected 3 or 4 channels, got {}", c.len())));
+    }
+    check_unit(arg, c)?;
+    Ok([c[0], c[1], c[2], c.get(3).copied().unwrap_or(1.0)])
+}
+
 /// Parses `#rrggbb` (the `#` is optional) or `#rrggbbaa` into channels in [0, 1].
 pub fn parse_hex(arg: &str, text: &str) -> Result<Vec<f64>> {
     let hex = text.trim().trim_start_matches('#');

@@ -57,6 +57,26 @@ impl NormalMode {
         Ok(Self::Auto { crease_angle })
     }
 
+    /// A mode given by name with a crease angle (read by `angle`), as the argument `arg`: only
+    /// "auto" takes one.
+    pub fn with_angle(arg: &str, name: &str, angle: impl FnOnce() -> Result<f64>) -> Result<Self> {
+        if name != "auto" {
+            return Err(Error::invalid(
+                arg,
+                format!("only 'auto' takes a crease angle, got ({name:?}, ...)"),
+            ));
+        }
+        Self::auto(arg, angle()?)
+    }
+
+    /// The crease angle the mode is written with: "auto" at an angle other than the default.
+    pub fn written_angle(self) -> Option<f64> {
+        match self {
+            Self::Auto { crease_angle } if crease_angle != DEFAULT_CREASE_ANGLE => Some(crease_angle),
+            _ => None,
+        }
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             Self::Smooth => "smooth",

@@ -39,6 +39,15 @@ pub(super) fn open(backend: BackendChoice) -> crate::error::Result<Renderer> {
     Renderer::new(backend)
 }
 
+/// The mean absolute difference of two coverage images, and the share of pixels off by more
+/// than 0.25.
+fn difference(got: &[f32], want: &[f32]) -> (f64, f64) {
+    let n = got.len() as f64;
+    let mean = got.iter().zip(want).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / n;
+    let off = got.iter().zip(want).filter(|(a, b)| (*a - *b).abs() > 0.25).count() as f64 / n;
+    (mean, off)
+}
+
 pub(super) fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene {
     let (v, f) = icosphere(4, 0.0, 0).unwrap();
     let id = r.add_mesh(&v, f, normals).unwrap();
@@ -339,10 +348,7 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
         let rule = Visibility::of(outlines.depth_offset, &cam, frame.height);
         let widths: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.width)).collect();
         let want = coverage_image(&lines, &widths, false, &img, rule);
-        let got = out.floats(Output::Outline).unwrap();
-        let n = got.len() as f64;
-        let mean = got.iter().zip(&want).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / n;
-        let off = got.iter().zip(&want).filter(|(a, b)| (*a - *b).abs() > 0.25).count() as f64 / n;
+        let (mean, off) = difference(out.floats(Output::Outline).unwrap(), &want);
         let inked = want.iter().filter(|&&c| c > 0.0).count();
         assert!(inked > 500, "{backend:?}: the reference inks {inked} pixels");
         assert!(
@@ -427,10 +433,7 @@ fn image_lines_match_the_cpu_discontinuity_rule_on_both_backends() {
                 height: 137,
             };
             let want = rule.coverage_image(&buf);
-            let got = out.floats(Output::Outline).unwrap();
-            let n = got.len() as f64;
-            let mean = got.iter().zip(&want).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / n;
-            let off = got.iter().zip(&want).filter(|(a, b)| (*a - *b).abs() > 0.25).count() as f64 / n;
+            let (mean, off) = difference(out.floats(Output::Outline).unwrap(), &want);
             let inked = want.iter().filter(|&&c| c > 0.5).count();
             assert!(inked > 300, "{backend:?}: the reference inks {inked} pixels");
             assert!(

@@ -39,6 +39,39 @@ pub mod uniforms;
 pub mod wgsl;
 
 pub use device::{BackendChoice, GpuInfo};
+
+/// The names the core accepts, each list under the name a front end knows it by, for front ends
+/// to take rather than repeat.
+pub fn accepted_names() -> Vec<(&'static str, Vec<&'static str>)> {
+    use crate::edges::outlines::LineKind;
+    use crate::smooth::options as smooth;
+    use effects::dither::{DitherPattern, DitherSpace};
+    use effects::outlines::settings::{kind_names, ContourRule, ImageRule, Outlines};
+    use effects::shadows::settings::ShadowFilter;
+    use scene::model::{Highlight, Model};
+    use scene::Output;
+    let images = Output::ALL.iter().filter(|o| o.pixel().is_some()).map(|o| o.name()).collect();
+    vec![
+        ("OUTPUTS", Output::NAMES.to_vec()),
+        ("IMAGE_OUTPUTS", images),
+        ("LINE_KINDS", LineKind::ALL.map(|k| k.name()).to_vec()),
+        ("INK_KINDS", kind_names().to_vec()),
+        ("OUTLINE_KINDS", Outlines::KINDS.to_vec()),
+        ("CONTOUR_RULES", ContourRule::NAMES.to_vec()),
+        ("IMAGE_RULES", ImageRule::NAMES.to_vec()),
+        ("MODELS", Model::NAMES.to_vec()),
+        ("HIGHLIGHTS", Highlight::NAMES.to_vec()),
+        ("DITHER_PATTERNS", DitherPattern::NAMES.to_vec()),
+        ("DITHER_SPACES", DitherSpace::NAMES.to_vec()),
+        ("SHADOW_FILTERS", ShadowFilter::NAMES.to_vec()),
+        ("HATCH_MODES", effects::hatching::HatchMode::NAMES.to_vec()),
+        ("BACKENDS", BackendChoice::NAMES.to_vec()),
+        ("SMOOTH_METHODS", smooth::METHODS.map(|(n, _)| n).to_vec()),
+        ("SMOOTH_WEIGHTS", smooth::WEIGHTS.map(|(n, _)| n).to_vec()),
+        ("SMOOTH_BOUNDARIES", smooth::BOUNDARIES.map(|(n, _)| n).to_vec()),
+        ("SMOOTH_PRESETS", smooth::PRESETS.map(|(n, _)| n).to_vec()),
+    ]
+}
 pub use graph::report::{FrameReport, Polyline};
 pub use renderer::{Image, ImageMut, OutputBuffers, RenderOutput, Renderer};
 

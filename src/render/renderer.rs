@@ -319,26 +319,20 @@ impl Renderer {
             ));
         }
         let plan = plan(&scene);
-        let culls = scene
+        // each item's culling, and the hatching field its shading needs
+        let (culls, fields): (Vec<_>, Vec<_>) = scene
             .scene
             .items
             .iter()
             .zip(&records)
             .map(|(item, rec)| {
                 let g = &rec.gpu;
-                culls(item, g.enclosure, g.placement.origin.into(), g.radius, &cam)
+                let field = ShadingVariant::of(&item.material, g.albedo.as_ref()).field;
+                let field = field.then(|| HatchField::of(&self.ctx, rec)).transpose();
+                (culls(item, g.enclosure, g.placement.origin.into(), g.radius, &cam), field)
             })
-            .collect();
-        let fields = scene
-            .scene
-            .items
-            .iter()
-            .zip(&records)
-            .map(|(item, rec)| {
-                let field = ShadingVariant::of(&item.material, rec.gpu.albedo.as_ref()).field;
-                field.then(|| HatchField::of(&self.ctx, rec)).transpose()
-            })
-            .collect::<Result<_>>()?;
+            .unzip();
+        let fields = fields.into_iter().collect::<Result<_>>()?;
         let p = Prepared { scene, records, culls, cam, sphere, plan, fields };
         p.run_host(&p.plan.host_before, None, report)?;
         Ok(p)

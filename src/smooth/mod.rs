@@ -112,6 +112,29 @@ pub fn smooth<T: Real>(
     smooth_cancellable(x0, faces, plan, pinned, Cancel::never(), None)
 }
 
+/// How a smoother runs: the Laplacian family's plan, or a normal filter's options.
+pub enum Run {
+    Laplacian(Plan),
+    Normals(denoise::Options),
+}
+
+impl Run {
+    /// `x0` smoothed as `smooth_cancellable` or `denoise::denoise` smooths it.
+    pub fn run<T: Real>(
+        &self,
+        x0: &[Vec3<T>],
+        faces: &[[u32; 3]],
+        pinned: Option<&[bool]>,
+        cancel: &Cancel,
+        largest: Option<f64>,
+    ) -> Result<Vec<Vec3<T>>> {
+        match self {
+            Run::Laplacian(plan) => smooth_cancellable(x0, faces, plan, pinned, cancel, largest),
+            Run::Normals(opts) => denoise::denoise(x0, faces, opts, pinned, cancel, largest),
+        }
+    }
+}
+
 /// `smooth`, stopping with `Error::Interrupted` at the next step (or solver iteration) after
 /// `cancel` is raised. Meshes of any scale are handled (see `range`); a result that is not
 /// finite in the input's dtype is refused rather than returned. `largest` is the largest

@@ -3,7 +3,7 @@
 //! fields.
 
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyTuple};
 
 use crate::render::effects::outlines::settings::kind_names;
 use crate::render::scene::model;
@@ -20,7 +20,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         };
     }
     settings_classes!(add);
-    m.add("SETTINGS_CLASSES", pyo3::types::PyTuple::new(m.py(), CLASSES)?)
+    m.add("SETTINGS_CLASSES", PyTuple::new(m.py(), CLASSES)?)
 }
 
 #[pymethods]

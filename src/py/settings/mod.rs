@@ -2,7 +2,8 @@
 //! its type (`render::settings`): its constructors, a getter per field, `replace`, `__repr__`
 //! (which evaluates back to an equal object), `__eq__`, `__hash__`, pickling through the core's
 //! serde form, and `describe()` for front ends. A field added to the core's description reaches
-//! all of them with no edit here.
+//! all of them with no edit here; a class added to the core's list (`settings_classes!`) gets
+//! its Python class with none.
 
 mod classes;
 pub mod values;
@@ -10,13 +11,13 @@ pub mod values;
 use std::hash::{Hash, Hasher};
 
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyTuple};
+use pyo3::types::{PyDict, PyTuple};
 use pyo3::IntoPyObjectExt;
 
 use crate::error::{Error, Result};
-use crate::render::settings::{self as described, parameter, Described, Value};
+use crate::render::settings::{self as described, parameter, Described};
 
-pub use classes::{Camera as PyCamera, Material as PyMaterial, RenderOptions as PyRenderOptions};
+pub use classes::{kang_table, Camera as PyCamera, Material as PyMaterial, RenderOptions as PyRenderOptions};
 
 /// A Python class around a described core type.
 pub trait Wraps: Sized {
@@ -26,7 +27,8 @@ pub trait Wraps: Sized {
 
 /// The Python classes, one per entry of the core's list (`render::settings::settings_classes`):
 /// the wrapper (named as the class), its docstring and its constructors' (from the core's
-/// docs), and the methods every settings class has.
+/// docs), and the methods every settings class has. Where it is used, PyO3's prelude and
+/// `PyDict`, `PyTuple` are in scope.
 macro_rules! python_classes {
     ($(
         $class:ident($docs:literal) = $core:path {
@@ -35,7 +37,7 @@ macro_rules! python_classes {
         }
     )*) => {$(
         #[doc = include_str!(concat!("../../render/", $docs, "/", stringify!($class), ".md"))]
-        #[pyo3::pyclass(module = "toonmesh._core", frozen, eq)]
+        #[pyclass(module = "toonmesh._core", frozen, eq)]
         #[derive(Clone, PartialEq)]
         pub struct $class {
             pub inner: $core,
@@ -48,16 +50,13 @@ macro_rules! python_classes {
             }
         }
 
-        #[pyo3::pymethods]
+        #[pymethods]
         impl $class {
             $(
                 $(#[$ndoc])*
                 #[new]
                 #[pyo3(signature = (*args, **kwargs))]
-                fn new(
-                    args: &pyo3::Bound<'_, pyo3::types::PyTuple>,
-                    kwargs: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>,
-                ) -> pyo3::PyResult<Self> {
+                fn new(args: &Bound<'_, PyTuple>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
                     $crate::py::settings::make("", args, kwargs).map(|inner| $class { inner })
                 }
             )?
@@ -68,23 +67,16 @@ macro_rules! python_classes {
                 ))]
                 #[staticmethod]
                 #[pyo3(signature = (*args, **kwargs))]
-                fn $ctor(
-                    args: &pyo3::Bound<'_, pyo3::types::PyTuple>,
-                    kwargs: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>,
-                ) -> pyo3::PyResult<Self> {
+                fn $ctor(args: &Bound<'_, PyTuple>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
                     $crate::py::settings::make(stringify!($ctor), args, kwargs).map(|inner| $class { inner })
                 }
             )*
 
-            fn __getattr__<'py>(
-                &self,
-                py: pyo3::Python<'py>,
-                name: &str,
-            ) -> pyo3::PyResult<pyo3::Bound<'py, pyo3::PyAny>> {
+            fn __getattr__<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
                 $crate::py::settings::getattr(py, &self.inner, name)
             }
 
-            fn __dir__(slf: &pyo3::Bound<'_, Self>) -> pyo3::PyResult<Vec<String>> {
+            fn __dir__(slf: &Bound<'_, Self>) -> PyResult<Vec<String>> {
                 $crate::py::settings::dir::<$core>(slf.as_any())
             }
 
@@ -92,28 +84,25 @@ macro_rules! python_classes {
                 $crate::py::settings::hash_of(&self.inner)
             }
 
-            fn __repr__(&self, py: pyo3::Python<'_>) -> pyo3::PyResult<String> {
+            fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
                 $crate::py::settings::repr(py, &self.inner)
             }
 
-            fn __reduce__<'py>(
-                &self,
-                py: pyo3::Python<'py>,
-            ) -> pyo3::PyResult<(pyo3::Bound<'py, pyo3::PyAny>, (&'static str, String))> {
+            fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
                 $crate::py::settings::reduce(py, &self.inner)
             }
 
             /// A copy with only the fields named changed (None: the field's default), checked as
             /// the constructor checks.
             #[pyo3(signature = (**changes))]
-            fn replace(&self, changes: Option<&pyo3::Bound<'_, pyo3::types::PyDict>>) -> pyo3::PyResult<Self> {
+            fn replace(&self, changes: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
                 $crate::py::settings::replace(&self.inner, changes).map(|inner| $class { inner })
             }
 
             /// The class described for front ends: its fields (name, kind, bounds or choices,
             /// help) and constructors (their parameters, with the default of each).
             #[staticmethod]
-            fn describe(py: pyo3::Python<'_>) -> pyo3::PyResult<pyo3::Bound<'_, pyo3::types::PyDict>> {
+            fn describe(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
                 $crate::py::settings::describe::<$core>(py)
             }
         }
@@ -128,25 +117,13 @@ pub fn make<T: Described>(
     kwargs: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<T> {
     let ctor = described::constructor::<T>(constructor);
-    let title =
-        if ctor.name.is_empty() { T::CLASS.to_string() } else { format!("{}.{}", T::CLASS, ctor.name) };
-    if args.len() > ctor.positional {
-        return Err(Error::wrong_type(
-            "args",
-            format!("{title} takes at most {} positional arguments ({} given)", ctor.positional, args.len()),
-        )
-        .into());
-    }
-    let mut given: Vec<(String, Bound<'_, PyAny>)> =
-        ctor.params.iter().zip(args.iter()).map(|(p, a)| (p.to_string(), a)).collect();
+    let (mut keywords, mut given) = (Vec::new(), args.iter().collect::<Vec<_>>());
     for (k, v) in kwargs.into_iter().flat_map(|d| d.iter()) {
-        let k: String = k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?;
-        if given.iter().any(|(g, _)| *g == k) {
-            return Err(Error::wrong_type(k, format!("{title} got it twice")).into());
-        }
-        given.push((k, v));
+        keywords.push(k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?);
+        given.push(v);
     }
-    given.retain(|(_, v)| !v.is_none());
+    let names = described::bind::<T>(ctor, args.len(), keywords)?;
+    let given: Vec<_> = names.into_iter().zip(given).filter(|(_, v)| !v.is_none()).collect();
     let names: Vec<&str> = given.iter().map(|(n, _)| n.as_str()).collect();
     described::check_arguments::<T>(ctor, &names)?;
     let values = given
@@ -232,7 +209,7 @@ where
 
 /// _restore(cls, state): a pickled setting, checked again.
 #[pyfunction]
-fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
+pub(super) fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
     macro_rules! any_class {
         ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
             match cls {
@@ -244,81 +221,17 @@ fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py,
     described::settings_classes!(any_class)
 }
 
-/// The description of `T` as Python data (see `render::settings`).
-pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
-    let field = |f: &described::Field, default: Option<Value>| -> PyResult<Bound<'_, PyDict>> {
-        let d = PyDict::new(py);
-        d.set_item("name", f.name)?;
-        values::describe_kind(&d, &f.kind)?;
-        d.set_item("optional", f.optional)?;
-        d.set_item("fixed", f.fixed)?;
-        d.set_item("help", f.help)?;
-        if let Some(v) = default {
-            d.set_item("default", values::to_py(py, &v)?)?;
-        }
-        Ok(d)
-    };
-    let out = PyDict::new(py);
-    out.set_item("class", T::CLASS)?;
-    out.set_item("help", T::HELP)?;
-    let fields = PyList::empty(py);
-    for f in T::FIELDS {
-        fields.append(field(f, None)?)?;
-    }
-    out.set_item("fields", fields)?;
-    let ctors = PyList::empty(py);
-    for c in T::CONSTRUCTORS {
-        let start = T::start(c.name);
-        let d = PyDict::new(py);
-        d.set_item("name", c.name)?;
-        d.set_item("help", c.help)?;
-        d.set_item("positional", c.positional)?;
-        d.set_item("required", c.required)?;
-        let params = PyList::empty(py);
-        for p in c.params {
-            let f = parameter::<T>(p).expect("a described parameter");
-            let default = start.read(c.name, p).unwrap_or(Value::None);
-            params.append(field(f, Some(default))?)?;
-        }
-        d.set_item("params", params)?;
-        ctors.append(d)?;
-    }
-    out.set_item("constructors", ctors)?;
-    Ok(out)
+/// The description of `T` as Python data (see `render::settings::describe`).
+pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+    values::to_py(py, &described::describe::<T>())
 }
 
 /// The names the core accepts, for Python to take rather than repeat.
 fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    use crate::edges::outlines::LineKind;
-    use crate::render::effects::dither::{DitherPattern, DitherSpace};
-    use crate::render::effects::outlines::settings::{kind_names, ContourRule, ImageRule, Outlines};
-    use crate::render::effects::shadows::settings::ShadowFilter;
-    use crate::render::scene::model::{Highlight, Model};
-    use crate::render::scene::Output;
-    let py = m.py();
-    let names = |v: &[&str]| PyTuple::new(py, v.iter().copied());
-    let images: Vec<&str> = Output::ALL.iter().filter(|o| o.pixel().is_some()).map(|o| o.name()).collect();
-    m.add("OUTPUTS", names(&Output::NAMES)?)?;
-    m.add("IMAGE_OUTPUTS", names(&images)?)?;
-    m.add("LINE_KINDS", names(&LineKind::ALL.map(|k| k.name()))?)?;
-    m.add("INK_KINDS", names(&kind_names())?)?;
-    m.add("OUTLINE_KINDS", names(&Outlines::KINDS)?)?;
-    m.add("CONTOUR_RULES", names(ContourRule::NAMES)?)?;
-    m.add("IMAGE_RULES", names(ImageRule::NAMES)?)?;
-    m.add("MODELS", names(&Model::NAMES)?)?;
-    m.add("HIGHLIGHTS", names(Highlight::NAMES)?)?;
-    m.add("DITHER_PATTERNS", names(DitherPattern::NAMES)?)?;
-    m.add("DITHER_SPACES", names(DitherSpace::NAMES)?)?;
-    m.add("SHADOW_FILTERS", names(ShadowFilter::NAMES)?)?;
-    m.add("HATCH_MODES", names(crate::render::effects::hatching::HatchMode::NAMES)?)?;
-    m.add("BACKENDS", names(&crate::render::device::BackendChoice::NAMES)?)?;
-    use crate::smooth::options as smooth;
-    m.add("SMOOTH_METHODS", names(&smooth::METHODS.map(|(n, _)| n))?)?;
-    m.add("SMOOTH_WEIGHTS", names(&smooth::WEIGHTS.map(|(n, _)| n))?)?;
-    m.add("SMOOTH_BOUNDARIES", names(&smooth::BOUNDARIES.map(|(n, _)| n))?)?;
-    m.add("SMOOTH_PRESETS", names(&smooth::PRESETS.map(|(n, _)| n))?)?;
-    m.add("DEFAULT_CREASE_ANGLE", crate::edges::DEFAULT_CREASE_ANGLE)?;
-    Ok(())
+    for (name, names) in crate::render::accepted_names() {
+        m.add(name, PyTuple::new(m.py(), names)?)?;
+    }
+    m.add("DEFAULT_CREASE_ANGLE", crate::edges::DEFAULT_CREASE_ANGLE)
 }
 
 /// `RenderKeywords`: the render keywords as a TypedDict for `**options` in the public API, with
@@ -350,8 +263,5 @@ fn render_keywords(m: &Bound<'_, PyModule>) -> PyResult<()> {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add_names(m)?;
     render_keywords(m)?;
-    classes::register(m)?;
-    m.add_function(wrap_pyfunction!(_restore, m)?)?;
-    m.add_function(wrap_pyfunction!(classes::kang_table, m)?)?;
-    Ok(())
+    classes::register(m)
 }

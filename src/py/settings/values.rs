@@ -57,6 +57,17 @@ pub fn to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>>
         Value::Lights(l) => {
             l.iter().map(|&inner| PyLight { inner }).collect::<Vec<_>>().into_bound_py_any(py)
         }
+        Value::Map(items) => {
+            let d = PyDict::new(py);
+            for (k, v) in items {
+                d.set_item(k, to_py(py, v)?)?;
+            }
+            Ok(d.into_any())
+        }
+        Value::List(items) => {
+            PyList::new(py, items.iter().map(|v| to_py(py, v)).collect::<PyResult<Vec<_>>>()?)?
+                .into_bound_py_any(py)
+        }
         Value::Setting(s) => {
             macro_rules! wrap {
                 ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
@@ -222,34 +233,4 @@ pub fn transform(arg: &str, obj: &Bound<'_, PyAny>) -> Result<[[f64; 4]; 4]> {
         return Err(Error::invalid(arg, format!("expected shape (4, 4), got ({}, {cols})", rows.len())));
     }
     Ok(std::array::from_fn(|i| std::array::from_fn(|j| rows[i][j])))
-}
-
-/// A field's kind described into `d`: its name ("kind"), then its bounds ("min", "max"),
-/// choices ("choices") or class ("class") where it has them.
-pub fn describe_kind(d: &Bound<'_, PyDict>, kind: &Kind) -> PyResult<()> {
-    let name = match kind {
-        Kind::Bool => "bool",
-        Kind::Int { .. } => "int",
-        Kind::Float { .. } => "float",
-        Kind::Choice(_) => "choice",
-        Kind::Names(_) => "names",
-        Kind::Setting(_) => "setting",
-        Kind::Color => "color",
-        Kind::Rgba => "rgba",
-        Kind::Vec3 => "vec3",
-        Kind::Floats => "floats",
-        Kind::Table => "table",
-        Kind::Matrix => "matrix",
-        Kind::Style => "style",
-        Kind::Lights => "lights",
-        Kind::Image => "image",
-    };
-    d.set_item("kind", name)?;
-    match *kind {
-        Kind::Int { min, max } => d.set_item("min", min).and_then(|_| d.set_item("max", max)),
-        Kind::Float { min, max } => d.set_item("min", min).and_then(|_| d.set_item("max", max)),
-        Kind::Choice(c) | Kind::Names(c) => d.set_item("choices", PyList::new(d.py(), c.iter())?),
-        Kind::Setting(class) => d.set_item("class", class),
-        _ => Ok(()),
-    }
 }

@@ -14,6 +14,25 @@ use crate::error::{Error, Result};
 pub use sampling::{Filter, Sampling, Wrap};
 pub use texture::Texture;
 
+/// sRGB channel values in [0, 1], `channels` (3 or 4) a colour, as linear-light RGBA (alpha 1
+/// when absent).
+pub fn linear_colors(values: &[f32], channels: usize) -> Vec<[f32; 4]> {
+    let decode = |c: f32| crate::render::color::srgb_to_linear(c as f64) as f32;
+    let colour = |c: &[f32]| [decode(c[0]), decode(c[1]), decode(c[2]), c.get(3).copied().unwrap_or(1.0)];
+    values.chunks_exact(channels).map(colour).collect()
+}
+
+/// Checks colour channels given as floats (the argument `arg`): each in [0, 1].
+pub fn check_unit_floats(arg: &str, values: &[f64]) -> Result<()> {
+    match values.iter().find(|x| !(x.is_finite() && (0.0..=1.0).contains(*x))) {
+        Some(bad) => {
+            let hint = if bad.is_finite() && *bad > 1.0 { " (for 0-255 codes, use uint8)" } else { "" };
+            Err(Error::invalid(arg, format!("float values must be in [0, 1], got {bad}{hint}")))
+        }
+        None => Ok(()),
+    }
+}
+
 /// Linear-light RGBA colours, one per vertex or one per face.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Colors {

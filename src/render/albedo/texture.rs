@@ -42,6 +42,23 @@ impl Texture {
         Ok(Texture { width, height, texels })
     }
 
+    /// An image of `shape` (H, W, 3 or 4 channels), rows top first, from its 8-bit codes (alpha
+    /// 255 when absent).
+    pub fn from_codes(shape: &[usize], codes: &[u8]) -> Result<Self> {
+        let too_large = || Error::invalid("texture", format!("{shape:?} is too large"));
+        let h = u32::try_from(shape[0]).map_err(|_| too_large())?;
+        let w = u32::try_from(shape[1]).map_err(|_| too_large())?;
+        let texels =
+            codes.chunks_exact(shape[2]).map(|c| [c[0], c[1], c[2], c.get(3).copied().unwrap_or(255)]);
+        Texture::new(w, h, texels.collect())
+    }
+
+    /// The same from channel values in [0, 1], each rounded to the nearest code.
+    pub fn from_unit(shape: &[usize], values: &[f32]) -> Result<Self> {
+        let codes: Vec<u8> = values.iter().map(|&x| (x * 255.0).round() as u8).collect();
+        Texture::from_codes(shape, &codes)
+    }
+
     pub fn at(&self, x: u32, y: u32) -> [u8; 4] {
         self.texels[(y * self.width + x) as usize]
     }

@@ -70,6 +70,29 @@ pub enum Kind {
     Image,
 }
 
+impl Kind {
+    /// The kind's name, for front ends.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Bool => "bool",
+            Kind::Int { .. } => "int",
+            Kind::Float { .. } => "float",
+            Kind::Choice(_) => "choice",
+            Kind::Names(_) => "names",
+            Kind::Setting(_) => "setting",
+            Kind::Color => "color",
+            Kind::Rgba => "rgba",
+            Kind::Vec3 => "vec3",
+            Kind::Floats => "floats",
+            Kind::Table => "table",
+            Kind::Matrix => "matrix",
+            Kind::Style => "style",
+            Kind::Lights => "lights",
+            Kind::Image => "image",
+        }
+    }
+}
+
 /// One field of a settings type.
 #[derive(Clone, Copy, Debug)]
 pub struct Field {
@@ -205,6 +228,29 @@ fn unknown(name: &str, known: &[&str], what: &str) -> Error {
     Error::wrong_type(name, format!("not {what}{hint} (they are: {})", known.join(", ")))
 }
 
+/// The parameters a call of `ctor` names: its first `positional` by position, then the
+/// `keywords`; refused when it is given more by position than it takes, or a parameter twice.
+pub fn bind<T: Described>(
+    ctor: &Constructor,
+    positional: usize,
+    keywords: Vec<String>,
+) -> Result<Vec<String>> {
+    if positional > ctor.positional {
+        let most = ctor.positional;
+        let why =
+            format!("{} takes at most {most} positional arguments ({positional} given)", title::<T>(ctor));
+        return Err(Error::wrong_type("args", why));
+    }
+    let mut names: Vec<String> = ctor.params.iter().take(positional).map(|p| p.to_string()).collect();
+    for k in keywords {
+        if names.contains(&k) {
+            return Err(Error::wrong_type(k, format!("{} got it twice", title::<T>(ctor))));
+        }
+        names.push(k);
+    }
+    Ok(names)
+}
+
 /// Checks that the arguments (name, value; None values dropped by the caller) belong to
 /// `constructor` and that its required ones are there.
 pub fn check_arguments<T: Described>(ctor: &Constructor, given: &[&str]) -> Result<()> {
@@ -267,6 +313,52 @@ pub fn arguments<T: Described>(value: &T) -> (&'static Constructor, Vec<(&'stati
         })
         .collect();
     (ctor, args)
+}
+
+/// `T` described for front ends: its class, help, fields (each with its name, kind, bounds,
+/// choices or class, whether None is a value, whether only a constructor sets it, and help) and
+/// constructors (their name, help, how many parameters go by position and how many must be
+/// given, and their parameters, described as fields with the default of each).
+pub fn describe<T: Described>() -> Value {
+    let text = |s: &str| Value::Text(s.to_string());
+    let field = |f: &Field, default: Option<Value>| {
+        let mut d = vec![("name", text(f.name)), ("kind", text(f.kind.name()))];
+        match f.kind {
+            Kind::Int { min, max } => d.extend([("min", Value::Int(min)), ("max", Value::Int(max))]),
+            Kind::Float { min, max } => d.extend([("min", Value::Float(min)), ("max", Value::Float(max))]),
+            Kind::Choice(c) | Kind::Names(c) => {
+                d.push(("choices", Value::Names(c.iter().map(|n| n.to_string()).collect())))
+            }
+            Kind::Setting(class) => d.push(("class", text(class))),
+            _ => {}
+        }
+        d.extend([
+            ("optional", Value::Bool(f.optional)),
+            ("fixed", Value::Bool(f.fixed)),
+            ("help", text(f.help)),
+        ]);
+        Value::Map(d.into_iter().chain(default.map(|v| ("default", v))).collect())
+    };
+    let constructor = |c: &Constructor| {
+        let start = T::start(c.name);
+        let param = |p: &&str| {
+            let f = parameter::<T>(p).expect("a described parameter");
+            field(f, Some(start.read(c.name, p).unwrap_or(Value::None)))
+        };
+        Value::Map(vec![
+            ("name", text(c.name)),
+            ("help", text(c.help)),
+            ("positional", Value::Int(c.positional as i64)),
+            ("required", Value::Int(c.required as i64)),
+            ("params", Value::List(c.params.iter().map(param).collect())),
+        ])
+    };
+    Value::Map(vec![
+        ("class", text(T::CLASS)),
+        ("help", text(T::HELP)),
+        ("fields", Value::List(T::FIELDS.iter().map(|f| field(f, None)).collect())),
+        ("constructors", Value::List(T::CONSTRUCTORS.iter().map(constructor).collect())),
+    ])
 }
 
 /// Each field with its default: the value `constructor` makes.

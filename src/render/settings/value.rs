@@ -23,6 +23,9 @@ pub enum Value {
     Setting(Box<Setting>),
     Lights(Vec<Light>),
     Image(GreyImage),
+    /// Named values, in order: a description for front ends (`describe`).
+    Map(Vec<(&'static str, Value)>),
+    List(Vec<Value>),
 }
 
 impl Value {

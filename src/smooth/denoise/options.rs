@@ -13,6 +13,17 @@ pub enum Filter {
     Guided,
 }
 
+impl Filter {
+    /// The normal filter a smoothing method names (None: a method of the Laplacian family).
+    pub fn of_method(method: &str) -> Option<Filter> {
+        match method {
+            "bilateral" => Some(Filter::Bilateral),
+            "guided" => Some(Filter::Guided),
+            _ => None,
+        }
+    }
+}
+
 /// What the caller passed (None: the default).
 #[derive(Debug, Clone, Default)]
 pub struct Args {

@@ -6,6 +6,23 @@
 use glam::{DMat4, DVec3, DVec4};
 use rayon::prelude::*;
 
+use crate::real::{Real, Vec3};
+
+/// `shadow_truth` of a mesh in world space (`faces` checked against `positions`), with
+/// `view_proj` given as its 16 values row by row.
+pub fn mesh_shadow_truth<T: Real>(
+    positions: &[Vec3<T>],
+    faces: &[[u32; 3]],
+    view_proj: &[f64],
+    (width, height): (usize, usize),
+    toward_light: [f64; 3],
+) -> Vec<f32> {
+    let p: Vec<DVec3> = positions.iter().map(|q| DVec3::from_array(q.map(Real::to_f64))).collect();
+    let tris = Triangles::new(faces.iter().map(|t| t.map(|i| p[i as usize])).collect());
+    let toward = DVec3::from_array(toward_light).normalize();
+    shadow_truth(&tris, DMat4::from_cols_slice(view_proj).transpose(), width, height, toward)
+}
+
 /// A triangle soup in world space.
 pub struct Triangles {
     pub corners: Vec<[DVec3; 3]>,

@@ -7,7 +7,26 @@ pub mod simplification;
 pub mod smoothing;
 pub mod svg;
 
-use crate::error::Result;
+use crate::error::{Error, Result};
+
+/// Checks the points of a stroke (the argument `arg`): each finite.
+pub fn check_points(arg: &str, points: &[[f64; 2]]) -> Result<()> {
+    match points.iter().position(|q| !(q[0].is_finite() && q[1].is_finite())) {
+        Some(i) => Err(Error::invalid(arg, format!("point {i} is not finite: {:?}", points[i]))),
+        None => Ok(()),
+    }
+}
+
+/// Checks the widths of a stroke of `n` points (the argument `arg`): one per point, each finite.
+pub fn check_widths(arg: &str, widths: &[f64], n: usize) -> Result<()> {
+    if widths.len() != n {
+        return Err(Error::invalid(arg, format!("expected one width per point ({n}), got {}", widths.len())));
+    }
+    if widths.iter().any(|v| !v.is_finite()) {
+        return Err(Error::invalid(arg, "widths must be finite"));
+    }
+    Ok(())
+}
 
 /// A stroke as the SVG draws it: `points` smoothed over `smooth` pixels, then simplified to
 /// within `simplify` pixels, the ink's edges too where `by_width` (`widths`, pixels per point).
