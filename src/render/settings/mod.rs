@@ -283,6 +283,21 @@ pub fn build<T: Described>(constructor: &str, mut args: Vec<(&'static str, Value
 }
 
 /// A copy of `value` with the fields named changed (None: the field's default), checked.
+/// Checks that every real-number field of `value` lies within its described bounds, for the
+/// types whose bounds are the rule and not only a control's (`prefix` names the fields in
+/// errors).
+pub fn check_bounds<T: Described>(value: &T, prefix: &str) -> Result<()> {
+    for f in T::FIELDS {
+        if let (Kind::Float { min, max }, Value::Float(x)) = (f.kind, value.get(f.name)) {
+            if !(x.is_finite() && (min..=max).contains(&x)) {
+                let name = crate::error::field(prefix, f.name);
+                return Err(Error::invalid(name, format!("must be in [{min}, {max}], got {x}")));
+            }
+        }
+    }
+    Ok(())
+}
+
 pub fn replace<T: Described>(value: &T, changes: Vec<(String, Option<Value>)>) -> Result<T> {
     let mut out = value.clone();
     let base = T::start(value.made_by());

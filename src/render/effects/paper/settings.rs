@@ -2,8 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::{field, Error, Result};
-use crate::render::settings::{Constructor, Described, Field, GreyImage, Kind, Value};
+use crate::error::Result;
+use crate::render::settings::{check_bounds, Constructor, Described, Field, GreyImage, Kind, Value};
 
 crate::named_enum! {
     /// What the grain is fixed to.
@@ -36,19 +36,10 @@ impl Default for Paper {
 }
 
 impl Paper {
-    /// Checks the settings; `prefix` names them in errors ("" while they are being made).
+    /// Checks the settings; `prefix` names them in errors ("" while they are being made). Its
+    /// numbers' bounds are its description's (`FIELDS`); the grain was checked when it was read.
     pub fn validate(&self, prefix: &str) -> Result<()> {
-        let ranges = [
-            ("scale", self.scale, 0.25, 64.0),
-            ("strength", self.strength, 0.0, 1.0),
-            ("tone", self.tone, 0.0, 1.0),
-        ];
-        for (name, x, lo, hi) in ranges {
-            if !(x.is_finite() && (lo..=hi).contains(&x)) {
-                return Err(Error::invalid(field(prefix, name), format!("must be in [{lo}, {hi}], got {x}")));
-            }
-        }
-        Ok(())
+        check_bounds(self, prefix)
     }
 
     /// The linear colour `c` of a pixel whose grain height is `g`: the CPU reference of

@@ -12,10 +12,11 @@ mod settings;
 use serde::{Deserialize, Serialize};
 
 use crate::error::field;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::render::block::Block;
 use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
+use crate::render::settings::check_bounds;
 
 crate::named_enum! {
     /// Which side of the surface the rim shows on.
@@ -67,16 +68,11 @@ impl Default for Rim {
 }
 
 impl Rim {
-    /// Checks the settings; `prefix` names them in errors ("" while they are being made).
+    /// Checks the settings; `prefix` names them in errors ("" while they are being made). Its
+    /// numbers' bounds are its description's (`settings.rs`).
     pub fn validate(&self, prefix: &str) -> Result<()> {
         check_unit(&field(prefix, "color"), &self.color)?;
-        let ranges = [("width", self.width, 0.0, 1.0), ("softness", self.softness, 0.0, 1.0)];
-        for (name, x, lo, hi) in ranges.into_iter().chain([("strength", self.strength, 0.0, 1.0)]) {
-            if !(x.is_finite() && (lo..=hi).contains(&x)) {
-                return Err(Error::invalid(field(prefix, name), format!("must be in [{lo}, {hi}], got {x}")));
-            }
-        }
-        Ok(())
+        check_bounds(self, prefix)
     }
 
     /// The shaded linear colour `c` with the rim at `amount` (`rim_amount`): the CPU reference
