@@ -1,6 +1,6 @@
-"""Shadows, hatching, dithering and colour (vertex and face colours, textures): what each costs,
-and what the shadow map's size and filter buy in accuracy (intersection over union of the
-shadowed pixels with a CPU ray cast).
+"""Shadows, hatching, dithering, rim light, paper grain and colour (vertex and face colours,
+textures): what each costs, and what the shadow map's size and filter buy in accuracy
+(intersection over union of the shadowed pixels with a CPU ray cast).
 
     python -m toonmesh.bench effects [--quick] [--accuracy] [--repeat N] [--json FILE]
 """
@@ -141,7 +141,7 @@ def _cost_table(subdivisions: int, size: int, repeat: int) -> List[Sequence[Any]
     mesh = r.add_mesh(V, F)
     key = [tm.Light.directional((0.5, -0.6, -1.0))]
     casting = [tm.Light.directional((0.5, -0.6, -1.0), shadows=True)]
-    cases = [
+    cases: List[Tuple[Any, ...]] = [
         ("bands (reference)", tm.Material.bands(), key),
         ("+ shadows (2048, pcf)", tm.Material.bands(), casting),
         ("hatching (field)", tm.Material.hatching(), key),
@@ -149,12 +149,18 @@ def _cost_table(subdivisions: int, size: int, repeat: int) -> List[Sequence[Any]
         ("dither bayer4, screen", tm.Material.bands(dither="bayer4"), key),
         ("dither bayer4, object", tm.Material.bands(dither=tm.Dither("bayer4", space="object")), key),
         ("hatching + dither + shadows", tm.Material.hatching(dither="bayer4"), casting),
+        ("rim", tm.Material.bands(rim=tm.Rim()), key),
+        ("rim, lit side, soft", tm.Material.bands(rim=tm.Rim(side="lit", softness=0.2)), key),
+        ("paper (screen)", tm.Material.bands(), key, dict(paper=tm.Paper())),
+        ("paper (surface)", tm.Material.bands(), key, dict(paper=tm.Paper(space="surface"))),
     ]
     times = {}
     # in turns, so that a slow spell of the machine does not land on one case
     for _ in range(max(1, repeat)):
-        for name, material, lights in cases:
-            t = median_time(lambda: r.render(mesh, material=material, lights=lights, width=size, height=size), 1)
+        for name, material, lights, *more in cases:
+            options = more[0] if more else {}
+            t = median_time(lambda: r.render(mesh, material=material, lights=lights, width=size, height=size, **options),
+                            1)
             times.setdefault(name, []).append(t)
     base = float(np.median(times[cases[0][0]]))
     return [(name, len(F), f"{size}x{size}", float(np.median(t)) * 1e3, float(np.median(t)) / base)
