@@ -145,6 +145,23 @@ def test_outlines_flag_draws_ink(tmp_path, capsys, monkeypatch):
     assert dark["mesh"] > dark["none"] + 50, dark
 
 
+def test_rim_and_paper_flags_give_the_api_image(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    need("trimesh")
+    from toonmesh.cli import DEMO_OUTLINES
+    from toonmesh.data import load_obj
+
+    r = in_process(capsys, "render", SPOT, "-o", "rim.png", "--size", "64x48", "--rim", "lit", "--rim-width", "0.4",
+                   "--rim-color", "#ff8000", "--paper", "surface", "--paper-strength", "0.6", check=False)
+    assert r.returncode == 0, r.stderr
+    V, F = load_obj(SPOT)
+    material = tm.Material.bands(rim=tm.Rim("#ff8000", width=0.4, side="lit"))
+    expected = tm.render(V, F, width=64, height=48, outlines=DEMO_OUTLINES, material=material,
+                         paper=tm.Paper(space="surface", strength=0.6))
+    assert "paper" in expected.passes
+    assert np.array_equal(read_png(tmp_path / "rim.png"), expected.color)
+
+
 def test_smooth_command_matches_the_api(tmp_path):
     V, F = tm.shapes.icosphere(3, noise=0.03, seed=0)
     src = write_mesh(tmp_path / "noisy.obj", V, F)
@@ -223,6 +240,8 @@ def test_edges_npz_has_the_arrays_and_an_orthographic_view_along_minus_eye(tmp_p
         (["render", SPOT, "-o", "x.png", "--normals", "sharp"], ["--normals", "sharp"]),
         (["render", SPOT, "-o", "x.png", "--normals", "auto:wide"], ["--normals", "auto:wide"]),
         (["render", SPOT, "-o", "x.png", "--normals", "auto:-5"], ["normals", "180"]),
+        (["render", SPOT, "-o", "x.png", "--rim", "both", "--rim-width", "1.5"], ["--rim-width", "[0, 1]"]),
+        (["render", SPOT, "-o", "x.png", "--paper", "screen", "--paper-strength", "-1"], ["--paper-strength"]),
         (["smooth", "nothere.ply", "out.obj"], ["nothere.ply", "no such file"]),
         (["edges", SPOT, "-o", "lines.pdf"], [".svg or .npz"]),
         (["render", SPOT, "-o", "x.png", "--bogus"], ["--bogus"]),

@@ -12,11 +12,14 @@ import pytest
 
 from test_cli import in_process, one_line_error
 from toonmesh import _core, _described_flags, batch, cli
-from toonmesh._core import Dither, LineStyle, Material, Outlines, RenderOptions, Shadows
+from toonmesh._core import Dither, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 
 #: (command, dest) -> (class, constructor, parameter): flags whose default is the described one.
 DESCRIBED = {
     ("render", "dither_amount"): (Dither, "", "amount"),
+    ("render", "rim_color"): (Rim, "", "color"),
+    ("render", "rim_width"): (Rim, "", "width"),
+    ("render", "paper_strength"): (Paper, "", "strength"),
     ("render", "hatch_spacing"): (Material, "hatching", "spacing"),
     ("render", "hatch_width"): (Material, "hatching", "width"),
     ("render", "hatch_mode"): (Material, "hatching", "mode"),
@@ -48,6 +51,7 @@ DEMO_CHOICES = {"kind", "crease_angle"}
 #: Flags whose default is the command line's own (a file, a size, a word of its own), or nothing.
 OWN = {
     ("render", "out"), ("edges", "out"), ("render", "size"), ("render", "style"), ("render", "color"), ("render", "dither"), ("render", "shadows"),
+    ("render", "rim"), ("render", "paper"),
     ("render", "outline_width"), ("render", "views"), ("render", "up"), ("render", "smooth"),
     ("render", "smooth_method"), ("render", "normals"), ("render", "backend"),
     ("smooth", "method"), ("smooth", "iterations"), ("smooth", "preset"), ("smooth", "weights"),
@@ -58,12 +62,19 @@ OWN = {
 }
 
 
+def _choices(cls: Any, name: str) -> Tuple[str, ...]:
+    """A described choice's names, as the command line reads them (so that a changed core shows)."""
+    return tuple(_described_flags.described(cls, name)["choices"])
+
+
 def core_choices() -> Dict[Tuple[str, str], Tuple[str, ...]]:
     """(command, dest) -> the names the flag must offer, read from the core now."""
     styles = tuple(c["name"].replace("_", "-") for c in Material.describe()["constructors"] if c["name"])
     names = {
         ("render", "style"): styles,
         ("render", "dither"): ("none",) + tuple(_core.DITHER_PATTERNS),
+        ("render", "rim"): ("none",) + tuple(_choices(Rim, "side")),
+        ("render", "paper"): ("none",) + tuple(_choices(Paper, "space")),
         ("render", "hatch_mode"): tuple(_core.HATCH_MODES),
         ("render", "outlines"): ("none",) + tuple(_core.OUTLINE_KINDS),
         ("render", "contours"): tuple(_core.CONTOUR_RULES),

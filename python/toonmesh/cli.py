@@ -35,7 +35,7 @@ from toonmesh._files import (
 )
 from toonmesh._line_drawing import summary, view_lines, write_npz, write_svg
 from toonmesh._load import OWN_COLOURS_WHITE, read_surfaces
-from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, RenderOptions, Shadows
+from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 from toonmesh._render import Mesh, RenderResult, gpu_info, render
 from toonmesh._scene import normal_mode
 from toonmesh._views import UP_AXES, check_views, up_vector, view_direction
@@ -196,6 +196,9 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     if args.dither != NONE:
         with errors_as_flags(args, Dither):
             material_kw["dither"] = Dither(args.dither, amount=args.dither_amount)
+    if args.rim != NONE:
+        with errors_as_flags(args, Rim):
+            material_kw["rim"] = Rim(args.rim_color, width=args.rim_width, side=args.rim)
     hatch = {name: getattr(args, f"hatch_{name}") for name in HATCH_FLAGS}
     if args.style == HATCHING:
         material_kw.update(hatch)
@@ -209,6 +212,9 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
         own_colors_material=own_colors_material,
         msaa=args.msaa, supersample=args.supersample, band_antialias=args.band_antialias,
     )
+    if args.paper != NONE:
+        with errors_as_flags(args, Paper):
+            options["paper"] = Paper(space=args.paper, strength=args.paper_strength)
     if args.shadows:
         with errors_as_flags(args, Shadows):
             options["lights"] = [Light.key().replace(shadows=Shadows(size=args.shadow_size, bias=args.shadow_bias, strength=args.shadow_strength))]
@@ -425,6 +431,13 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     add_described(p, "--dither", Dither, "pattern", default=NONE, extra_choices=(NONE,),
                   help_before="dither between neighbouring bands; ", also_sets=[(Material, "dither")])
     add_described(p, "--dither-amount", Dither, "amount", metavar="X")
+    add_described(p, "--rim", Rim, "side", default=NONE, extra_choices=(NONE,),
+                  help_before="a rim light along the silhouette; ", also_sets=[(Material, "rim")])
+    add_described(p, "--rim-color", Rim, "color", metavar="#RRGGBB")
+    add_described(p, "--rim-width", Rim, "width", metavar="N.V")
+    add_described(p, "--paper", Paper, "space", default=NONE, extra_choices=(NONE,),
+                  help_before="paper grain over the image; ", also_sets=[(RenderOptions, "paper")])
+    add_described(p, "--paper-strength", Paper, "strength", metavar="S")
     for name in HATCH_FLAGS:
         add_described(p, f"--hatch-{name}", Material, name, constructor=HATCHING, help_before=f"--style {HATCHING}: ",
                       metavar=None if name == "mode" else "PX")
