@@ -74,13 +74,17 @@ def light_dots(res: tm.RenderResult, lights: List[tm.Light]) -> List[np.ndarray]
     p = view_positions(res)
     dots = []
     for kind, v, _ in view_lights(res, lights):
-        L = np.broadcast_to(v, p.shape) if kind == "toward" else _unit(v - p)
-        dots.append(np.sum(n * L, axis=-1))
+        dots.append(np.sum(n * _toward(kind, v, p), axis=-1))
     return dots
 
 
 def _unit(v: np.ndarray) -> np.ndarray:
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def _toward(kind: str, vec: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """The unit vector from view-space points ``p`` toward a light of ``view_lights``."""
+    return np.broadcast_to(vec, p.shape) if kind == "toward" else _unit(vec - p)
 
 
 def shade(material: tm.Material, n: np.ndarray, p: np.ndarray, orthographic: bool, ambient: Any, lights: Any) -> np.ndarray:
@@ -90,7 +94,7 @@ def shade(material: tm.Material, n: np.ndarray, p: np.ndarray, orthographic: boo
     c = np.broadcast_to(srgb_to_linear(ambient) * srgb_to_linear(m.ambient), p.shape).copy()
     diffuse, specular = srgb_to_linear(m.diffuse), srgb_to_linear(m.specular)
     for kind, vec, color in lights:
-        L = np.broadcast_to(vec, p.shape) if kind == "toward" else _unit(vec - p)
+        L = _toward(kind, vec, p)
         d = np.sum(n * L, axis=-1)
         s = np.zeros_like(d)
         if m.model == "lambert":
@@ -124,8 +128,7 @@ def rim(r: Any, c: np.ndarray, n: np.ndarray, p: np.ndarray, orthographic: bool,
     hard (``band_antialias=False``): ``Rim::finish`` and ``rim_amount`` in Rust."""
     v = np.broadcast_to([0.0, 0.0, 1.0], p.shape) if orthographic else _unit(-p)
     t = (np.sum(n * v, axis=-1) <= r.width).astype(np.float64)
-    lit = np.max([np.sum(n * (np.broadcast_to(vec, p.shape) if kind == "toward" else _unit(vec - p)), axis=-1)
-                  for kind, vec, _ in lights], axis=0)
+    lit = np.max([np.sum(n * _toward(kind, vec, p), axis=-1) for kind, vec, _ in lights], axis=0)
     if r.side != "both":
         t *= (lit >= 0) if r.side == "lit" else (lit < 0)
     k = (t * r.strength)[..., None]

@@ -4,7 +4,7 @@
 use glam::Vec3;
 
 use super::scene::material::Material;
-use super::scene::model::{Highlight, Model};
+use super::scene::model::{step_aa, Highlight, Model};
 
 /// A light in view space, as the shader receives it.
 #[derive(Clone, Copy, Debug)]
@@ -15,29 +15,23 @@ pub enum RefLight {
     At(Vec3, Vec3),
 }
 
+impl RefLight {
+    /// The unit vector from view-space point `p` toward the light, and its colour
+    /// (`light_toward` in the shader).
+    pub fn toward(&self, p: Vec3) -> (Vec3, Vec3) {
+        match *self {
+            RefLight::Toward(l, c) => (l, c),
+            RefLight::At(q, c) => ((q - p).normalize(), c),
+        }
+    }
+}
+
 /// The view vector v (unit, from the surface toward the eye) at view-space point `p`.
 pub fn view_dir(p: Vec3, orthographic: bool) -> Vec3 {
     if orthographic {
         Vec3::Z
     } else {
         (-p).normalize()
-    }
-}
-
-fn thresh(a: f32, b: f32) -> f32 {
-    if a >= b {
-        1.0
-    } else {
-        0.0
-    }
-}
-
-/// `thresh(a, b)` blended over a width `w` of a (0: the hard step), as `step_aa` in the shader.
-fn step_aa(a: f32, b: f32, w: f32) -> f32 {
-    if w > 0.0 {
-        ((a - b) / w + 0.5).clamp(0.0, 1.0)
-    } else {
-        thresh(a, b)
     }
 }
 
@@ -68,10 +62,7 @@ pub fn shade(
     let v = view_dir(p, orthographic);
     let mut c = ambient_light * Vec3::from(m.ambient_linear());
     for light in lights {
-        let (l, color) = match *light {
-            RefLight::Toward(l, c) => (l, c),
-            RefLight::At(q, c) => ((q - p).normalize(), c),
-        };
+        let (l, color) = light.toward(p);
         let d = n.dot(l);
         let w = glam::Vec2::new(dn[0].dot(l), dn[1].dot(l)).length();
         let (f, s): (Vec3, f32) = match &m.model {

@@ -9,6 +9,24 @@ use crate::error::{Error, Result};
 
 use crate::error::field;
 
+/// 1 where a >= b, else 0: a hard band border (`thresh` in shaders/common.wgsl).
+pub fn thresh(a: f32, b: f32) -> f32 {
+    if a >= b {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+/// `thresh(a, b)` blended over a width `w` of a (0: the hard step), as `step_aa` in the shader.
+pub fn step_aa(a: f32, b: f32, w: f32) -> f32 {
+    if w > 0.0 {
+        ((a - b) / w + 0.5).clamp(0.0, 1.0)
+    } else {
+        thresh(a, b)
+    }
+}
+
 /// Largest lookup table (one uniform array on the GPU).
 pub const MAX_LUT: usize = 256;
 /// Most band thresholds.

@@ -200,6 +200,15 @@ fn specular_term(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, d: f32, dn: array<vec
 // mesh): it multiplies the material's ambient and diffuse colours.
 var<private> albedo: vec3<f32> = vec3<f32>(1.0);
 
+// The unit vector from view-space point p toward light k (`RefLight::toward` on the CPU).
+fn light_toward(k: u32, p: vec3<f32>) -> vec3<f32> {
+    let light = frame.lighting.lights[k];
+    if (((POINT_LIGHTS >> k) & 1u) == 1u) {
+        return normalize(light.position.xyz - p);
+    }
+    return light.position.xyz;
+}
+
 // Linear colour of a point with unit view-space normal n at view-space position p; `jitter`
 // moves L.n before it is banded (dithering); dn: the normal's change across one pixel in x and
 // y (zero: hard band borders).
@@ -208,10 +217,7 @@ fn shade(n: vec3<f32>, p: vec3<f32>, jitter: f32, dn: array<vec3<f32>, 2>) -> ve
     var c = frame.lighting.ambient.rgb * draw.material.ambient.rgb * albedo;
     for (var k = 0u; k < LIGHTS; k++) {
         let light = frame.lighting.lights[k];
-        var l = light.position.xyz;
-        if (((POINT_LIGHTS >> k) & 1u) == 1u) {
-            l = normalize(light.position.xyz - p);
-        }
+        let l = light_toward(k, p);
         let d = dot(n, l);
         // how much d changes across a pixel (the light's direction changes slowly)
         let w = length(vec2<f32>(dot(dn[0], l), dot(dn[1], l)));

@@ -6,7 +6,7 @@ use super::{rim_amount, Rim, RimBlend, RimSide};
 use crate::render::effects::surface::SurfaceSettings;
 use crate::render::gpu_mesh::NormalMode;
 use crate::render::gpu_tests::{agreement_with, all_outputs, backends, open, sphere_scene, RefPixel};
-use crate::render::reference::{quad_derivatives, view_dir, RefLight};
+use crate::render::reference::{quad_derivatives, view_dir};
 use crate::render::scene::material::Material;
 use crate::render::scene::model::Model;
 use crate::render::scene::{FrameSpec, Output};
@@ -14,13 +14,7 @@ use crate::render::scene::{FrameSpec, Output};
 /// n.v and the largest n.l of a pixel.
 fn terms(px: &RefPixel<'_>, x: usize, y: usize) -> Option<(f32, f32)> {
     let (n, p) = (px.surface)(x, y)?;
-    let lit = px.lights.iter().fold(-1.0f32, |m, l| {
-        let l = match *l {
-            RefLight::Toward(d, _) => d,
-            RefLight::At(q, _) => (q - p).normalize(),
-        };
-        m.max(n.dot(l))
-    });
+    let lit = px.lights.iter().fold(-1.0f32, |m, l| m.max(n.dot(l.toward(p).0)));
     Some((n.dot(view_dir(p, px.orthographic)), lit))
 }
 

@@ -16,6 +16,7 @@ use crate::error::Result;
 use crate::render::block::Block;
 use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
+use crate::render::scene::model::step_aa;
 use crate::render::settings::check_bounds;
 
 crate::named_enum! {
@@ -97,17 +98,6 @@ pub fn rim_amount(rim: &Rim, nv: f32, lit: f32, aa_nv: f32, aa_lit: f32) -> f32 
         RimSide::Both => t,
         RimSide::Lit => t * lit,
         RimSide::Shadowed => t * (1.0 - lit),
-    }
-}
-
-/// `step_aa` of shaders/common.wgsl.
-fn step_aa(a: f32, b: f32, w: f32) -> f32 {
-    if w > 0.0 {
-        ((a - b) / w + 0.5).clamp(0.0, 1.0)
-    } else if a >= b {
-        1.0
-    } else {
-        0.0
     }
 }
 

@@ -16,12 +16,7 @@ override RIM: bool = false;
 fn rim_lit(f: Fragment) -> f32 {
     var lit = -1.0;
     for (var k = 0u; k < LIGHTS; k++) {
-        let light = frame.lighting.lights[k];
-        var l = light.position.xyz;
-        if (((POINT_LIGHTS >> k) & 1u) == 1u) {
-            l = normalize(light.position.xyz - f.view_pos);
-        }
-        lit = max(lit, dot(f.normal, l));
+        lit = max(lit, dot(f.normal, light_toward(k, f.view_pos)));
     }
     return lit;
 }
