@@ -215,14 +215,14 @@ def _core_items(placed: List[PlacedMesh]) -> List[Tuple[int, Optional[Material],
 
 def draw(renderer: Renderer, placed: List[PlacedMesh], options: RenderOptions) -> RenderResult:
     """One view of meshes already on ``renderer``'s device (see :func:`place_meshes`)."""
-    raw = renderer._engine.render(_core_items(placed), options)
-    return RenderResult(raw, renderer.backend, options.outlines)
+    images, (report,) = renderer._engine.render(_core_items(placed), options)
+    return RenderResult(dict(report, **images), renderer.backend, options.outlines)
 
 
 def draw_views(renderer: Renderer, placed: List[PlacedMesh], cameras: Sequence[Camera],
                options: RenderOptions) -> RenderStack:
     """The views of meshes already on ``renderer``'s device from each of ``cameras``."""
-    images, reports = renderer._engine.render_views(_core_items(placed), cameras, options)
+    images, reports = renderer._engine.render(_core_items(placed), options, cameras)
     return stack_of(images, reports, renderer.backend, options.outlines)
 
 

@@ -52,8 +52,8 @@ class RenderResult:
         self.timings: Dict[str, float] = dict(raw["timings"])
         self.timing_source: str = "gpu" if raw["gpu_timed"] else "wall"
         self.culled: List[bool] = list(raw["culled"])
-        self.view_matrix: np.ndarray = raw["view"]
-        self.projection: np.ndarray = raw["proj"]
+        self.view_matrix: np.ndarray = np.array(raw["view"])
+        self.projection: np.ndarray = np.array(raw["proj"])
         self.near: float = raw["near"]
         self.far: float = raw["far"]
         self.backend = backend
@@ -234,7 +234,7 @@ class RenderStack(Sequence[RenderResult]):
 
 def stack_of(images: Dict[str, Any], reports: List[Dict[str, Any]], backend: str,
              outlines: Optional[Outlines]) -> RenderStack:
-    """The views of one ``render_views`` call of the core: its stacked images, and one report
+    """The views of one ``render`` call of the core with cameras: its stacked images, and one report
     (passes, timings, camera) a view, whose images are that view's slices."""
     results = []
     for i, report in enumerate(reports):

@@ -13,7 +13,8 @@ use pyo3::IntoPyObjectExt;
 use super::args::type_name;
 use crate::edges::views::Lines;
 use crate::error::{Error, Result};
-use crate::mesh::{check_faces, check_mask, check_positions, flag_vertices, Faces};
+use crate::mesh::positions::on_positions;
+use crate::mesh::{check_faces, check_mask, check_positions, flag_vertices, Faces, Positions};
 use crate::real::Real;
 
 /// `$body` on the first of the element types `$t` that `$obj` reads as, bound to `$x` as a
@@ -24,43 +25,6 @@ macro_rules! by_dtype {
     };
 }
 pub(crate) use by_dtype;
-
-/// Runs `$body` with `$v` bound to the positions (a `PositionsRef`) in their own precision.
-macro_rules! on_positions {
-    ($p:expr, $v:ident => $body:expr) => {
-        match $p {
-            $crate::py::convert::PositionsRef::F32($v) => $body,
-            $crate::py::convert::PositionsRef::F64($v) => $body,
-        }
-    };
-}
-pub(crate) use on_positions;
-
-/// Vertex positions in the caller's precision.
-pub enum Positions {
-    F32(Vec<[f32; 3]>),
-    F64(Vec<[f64; 3]>),
-}
-
-/// Borrowed vertex positions in the caller's precision.
-#[derive(Clone, Copy)]
-pub enum PositionsRef<'a> {
-    F32(&'a [[f32; 3]]),
-    F64(&'a [[f64; 3]]),
-}
-
-impl Positions {
-    pub fn len(&self) -> usize {
-        on_positions!(self.slices(), v => v.len())
-    }
-
-    pub fn slices(&self) -> PositionsRef<'_> {
-        match self {
-            Positions::F32(v) => PositionsRef::F32(v),
-            Positions::F64(v) => PositionsRef::F64(v),
-        }
-    }
-}
 
 /// The array in native byte order: `obj` itself when it already is (or is no array), else one
 /// converted copy, so that big-endian input ('>f8', '>i4') is read like any other.

@@ -6,11 +6,12 @@
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
-use super::convert::{faces, native_order, on_positions, positions, Positions, PositionsRef};
+use super::convert::{faces, native_order, positions};
 use super::runtime::detached_cancellable;
 use crate::cancel::Cancel;
 use crate::error::Result;
-use crate::mesh::{faces_from_flat, rows_of};
+use crate::mesh::positions::on_positions;
+use crate::mesh::{faces_from_flat, rows_of, Positions, PositionsRef};
 use crate::real::Real;
 use crate::smooth::range::largest_if_finite;
 
@@ -58,7 +59,7 @@ fn slice<'a, T: numpy::Element>(x: &'a PyReadonlyArray2<'_, T>) -> &'a [T] {
 macro_rules! on_mesh {
     ($py:expr, $vertices:expr, $faces:expr, |$v:ident, $f:ident, $cancel:pat_param| $body:expr) => {
         $crate::py::mesh_input::MeshInput::read($vertices, $faces)?
-            .run($py, |p, $f, $cancel| $crate::py::convert::on_positions!(p, $v => $body))
+            .run($py, |p, $f, $cancel| $crate::mesh::positions::on_positions!(p, $v => $body))
     };
 }
 pub(crate) use on_mesh;

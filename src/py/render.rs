@@ -11,8 +11,9 @@ use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 use pyo3::IntoPyObjectExt;
 
 use super::albedo::albedo;
-use super::args::{number, text, triple, type_name};
-use super::convert::{faces, grid_to_numpy, on_positions, positions, ToPython};
+use super::args::{self, number, text, triple, type_name};
+use super::convert::{faces, grid_to_numpy, positions, ToPython};
+use crate::mesh::positions::on_positions;
 use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
@@ -25,7 +26,7 @@ use crate::render::image_out::encode_png;
 use crate::render::scene::options::MeshSpec;
 use crate::render::scene::outputs::{Output, Pixel};
 use crate::render::scene::FrameSpec;
-use crate::render::{BackendChoice, FrameReport, GpuInfo, ImageMut, OutputBuffers, Renderer};
+use crate::render::{BackendChoice, FrameReport, ImageMut, OutputBuffers, Renderer};
 
 /// Runs GPU work with the GIL released, catching panics. Not in the compute pool: a render
 /// mostly waits on the device, and concurrent renders should not queue behind each other there.
@@ -33,21 +34,9 @@ fn without_gil<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send)
     py.detach(|| catching_panics(work)).map_err(PyErr::from)
 }
 
-fn info_dict<'py>(py: Python<'py>, info: &GpuInfo) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("name", &info.name)?;
-    d.set_item("backend", info.backend)?;
-    d.set_item("device_type", &info.device_type)?;
-    d.set_item("driver", &info.driver)?;
-    d.set_item("driver_info", &info.driver_info)?;
-    d.set_item("max_texture_size", info.max_texture_size)?;
-    d.set_item("msaa_samples", info.msaa_samples.clone())?;
-    d.set_item("timestamps", info.timestamps)?;
-    Ok(d)
-}
-
-fn matrix(py: Python<'_>, m: [[f64; 4]; 4]) -> PyResult<Bound<'_, PyAny>> {
-    m.to_vec().to_python(py)
+/// A core report (its serde form) as Python data.
+fn python<'py>(py: Python<'py>, report: &impl serde::Serialize) -> PyResult<Bound<'py, PyAny>> {
+    pythonize::pythonize(py, report).map_err(|e| Error::Internal(e.to_string()).into())
 }
 
 /// The backend asked for (None: the default choice).
@@ -95,7 +84,7 @@ pub(super) fn _normal_mode<'py>(py: Python<'py>, normals: &Bound<'py, PyAny>) ->
 pub(super) fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
     let t = self::transform("transform", transform)?;
     crate::render::scene::check_transform("transform", &t)?;
-    matrix(py, t)
+    t.to_vec().to_python(py)
 }
 
 /// The meshes of a render: [(mesh id, Material or None, 4x4 transform or None)].
@@ -187,13 +176,10 @@ fn split<T>(s: &mut [T], k: usize) -> std::slice::ChunksMut<'_, T> {
     s.chunks_mut(n)
 }
 
-/// A render's report as the dict `toonmesh.RenderResult` reads (its images added to `d`).
-fn report_dict<'py>(
-    py: Python<'py>,
-    d: Bound<'py, PyDict>,
-    frame: &FrameSpec,
-    report: FrameReport,
-) -> PyResult<Bound<'py, PyDict>> {
+/// A render's report as the dict `toonmesh.RenderResult` reads (with its images): its serde
+/// form, the frame's size and its lines (points and widths as NumPy arrays, kinds by name).
+fn report_dict<'py>(py: Python<'py>, frame: &FrameSpec, report: FrameReport) -> PyResult<Bound<'py, PyDict>> {
+    let d = python(py, &report)?.cast_into::<PyDict>()?;
     d.set_item("width", frame.width)?;
     d.set_item("height", frame.height)?;
     let (mut lines, mut kinds, mut widths) = (None, None, None);
@@ -207,14 +193,6 @@ fn report_dict<'py>(
     d.set_item("lines", lines)?;
     d.set_item("line_kinds", kinds)?;
     d.set_item("line_widths", widths)?;
-    d.set_item("passes", report.passes)?;
-    d.set_item("timings", report.timings)?;
-    d.set_item("gpu_timed", report.gpu_timed)?;
-    d.set_item("culled", report.culled)?;
-    d.set_item("view", matrix(py, report.view)?)?;
-    d.set_item("proj", matrix(py, report.proj)?)?;
-    d.set_item("near", report.near)?;
-    d.set_item("far", report.far)?;
     Ok(d)
 }
 
@@ -235,8 +213,8 @@ impl PyRenderer {
     }
 
     #[getter]
-    fn info<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        info_dict(py, self.inner.info())
+    fn info<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        python(py, self.inner.info())
     }
 
     #[getter]
@@ -269,45 +247,29 @@ impl PyRenderer {
         self.inner.remove_mesh(mesh)
     }
 
-    /// items: [(mesh id, Material or None, 4x4 transform or None)].
+    /// items: [(mesh id, Material or None, 4x4 transform or None)], seen from `cameras` (None:
+    /// the options' camera, images without a leading axis), frames in flight: (images, reports).
+    #[pyo3(signature = (items, options, cameras = None))]
     fn render<'py>(
         &self,
         py: Python<'py>,
         items: &Bound<'py, PyAny>,
         options: &PyRenderOptions,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        let o = &options.inner;
-        let scene = o.scene(&mesh_specs(items)?);
-        let checked = self.inner.check(scene, o.frame)?;
-        let images = Images::allocate(py, &o.frame, None);
-        let buffers = images.buffers(1).pop().expect("one view");
-        let inner = &self.inner;
-        let report = without_gil(py, || inner.render_checked(checked, buffers))?;
-        report_dict(py, images.into_dict(py)?, &o.frame, report)
-    }
-
-    /// The same scene from each of `cameras`, frames in flight: (stacked images, reports).
-    fn render_views<'py>(
-        &self,
-        py: Python<'py>,
-        items: &Bound<'py, PyAny>,
-        cameras: &Bound<'py, PyAny>,
-        options: &PyRenderOptions,
+        cameras: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<(Bound<'py, PyDict>, Vec<Bound<'py, PyDict>>)> {
         let o = &options.inner;
-        let cams = each(cameras, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", |c| {
-            c.cast::<PyCamera>().ok().map(|c| c.get().inner)
-        })?;
+        let read = |c: &Bound<'_, PyAny>| c.cast::<PyCamera>().ok().map(|c| c.get().inner);
+        let cams = args::optional("cameras", cameras, |n, c| each(c, n, "a list of toonmesh.Camera", "a toonmesh.Camera", read))?;
         let scene = self.inner.check(o.scene(&mesh_specs(items)?), o.frame)?;
-        let images = Images::allocate(py, &o.frame, Some(cams.len()));
-        let buffers = images.buffers(cams.len());
+        let images = Images::allocate(py, &o.frame, cams.as_ref().map(Vec::len));
+        let mut buffers = images.buffers(cams.as_ref().map_or(1, Vec::len));
         let inner = &self.inner;
-        // a long stream of views stops on Ctrl-C between frames
-        let reports = detached_cancellable(py, |cancel| inner.render_views(&scene, &cams, buffers, cancel))?;
-        let reports = reports
-            .into_iter()
-            .map(|r| report_dict(py, PyDict::new(py), &o.frame, r))
-            .collect::<PyResult<_>>()?;
+        let reports = match cams {
+            None => vec![without_gil(py, || inner.render_checked(scene, buffers.pop().expect("one view")))?],
+            // a long stream of views stops on Ctrl-C between frames
+            Some(cams) => detached_cancellable(py, |cancel| inner.render_views(&scene, &cams, buffers, cancel))?,
+        };
+        let reports = reports.into_iter().map(|r| report_dict(py, &o.frame, r)).collect::<PyResult<_>>()?;
         Ok((images.into_dict(py)?, reports))
     }
 }
@@ -318,10 +280,10 @@ impl PyRenderer {
 pub(super) fn gpu_info<'py>(
     py: Python<'py>,
     backend: Option<&Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
+) -> PyResult<Bound<'py, PyAny>> {
     let choice = backend_of(backend)?;
     let ctx = without_gil(py, || crate::render::context::context(choice))?;
-    info_dict(py, &ctx.info)
+    python(py, &ctx.info)
 }
 
 /// encode_png(color: uint8 (H, W, 4)) -> bytes

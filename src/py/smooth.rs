@@ -6,7 +6,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::args;
-use super::convert::{vertex_mask, Positions, PositionsRef, ToPython};
+use super::convert::{vertex_mask, ToPython};
+use crate::mesh::{Positions, PositionsRef};
 use super::mesh_input::MeshInput;
 use crate::error::{Error, Result};
 use crate::smooth::denoise::{self, Filter};

@@ -54,7 +54,7 @@ impl BackendChoice {
 }
 
 /// What `gpu_info()` reports.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, serde::Serialize)]
 pub struct GpuInfo {
     pub name: String,
     pub backend: &'static str,

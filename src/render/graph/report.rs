@@ -10,7 +10,8 @@ pub struct Polyline {
     pub widths: Vec<f64>,
 }
 
-#[derive(Clone, Debug, Default)]
+/// Python receives it through its serde form; the lines, whose points go to NumPy, separately.
+#[derive(Clone, Debug, Default, serde::Serialize)]
 pub struct FrameReport {
     /// Every step that ran, in order (host steps included).
     pub passes: Vec<&'static str>,
@@ -26,6 +27,7 @@ pub struct FrameReport {
     pub near: f64,
     pub far: f64,
     /// The visible mesh-space lines, when asked for.
+    #[serde(skip)]
     pub lines: Option<Vec<Polyline>>,
     /// Per mesh, whether the camera's passes skipped its inner sides (`render::culling`).
     pub culled: Vec<bool>,
