@@ -67,7 +67,8 @@ def test_the_core_refuses_bad_items_given_directly():
     with pytest.raises(ValueError, match="normals"):
         r.add_mesh(V, F, "wobbly")
     # the next call works
-    assert r.render([(mesh, None, None)], frame)["color"].shape == (4, 4, 4)
+    images, (report,) = r.render([(mesh, None, None)], frame)
+    assert images["color"].shape == (4, 4, 4) and report["width"] == 4
 
 
 def test_a_misspelt_option_is_refused_naming_it_with_a_hint():

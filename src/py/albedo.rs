@@ -6,7 +6,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::args::{number, text};
-use super::convert::{dtype_name, float_values, native_order, untyped};
+use super::convert::{array_values, dtype_name, float_values, native_order, rows, untyped, FLOATS};
 use crate::error::{Error, Result};
 use crate::render::albedo::texture::Texture;
 use crate::render::albedo::{check_unit_floats, linear_colors, Albedo, Colors, Filter, Sampling, Wrap};
@@ -54,16 +54,7 @@ fn colors(arg: &str, obj: &Bound<'_, PyAny>, what: &str) -> Result<Vec<[f32; 4]>
 
 /// (N, 2) float texture coordinates.
 fn uv(obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 2]>> {
-    let obj = &native_order(obj)?;
-    let a = untyped("uv", obj)?;
-    let shape = a.shape().to_vec();
-    if shape.len() != 2 || shape[1] != 2 {
-        return Err(Error::invalid("uv", format!("expected shape (N, 2), got {shape:?}")));
-    }
-    let v = float_values(obj).ok_or_else(|| {
-        Error::wrong_type("uv", format!("dtype must be float32 or float64, got {}", dtype_name(a)))
-    })?;
-    Ok(v.chunks_exact(2).map(|c| [c[0] as f32, c[1] as f32]).collect())
+    Ok(rows(&array_values("uv", obj, FLOATS, (&[None, Some(2)], "(N, 2)"))?.0))
 }
 
 /// The colour keywords of `Renderer.add_mesh`, in the order `albedo` reads them.

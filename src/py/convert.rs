@@ -50,38 +50,74 @@ pub fn dtype_name(a: &Bound<'_, PyUntypedArray>) -> String {
     a.dtype().str().map(|s| s.to_string()).unwrap_or_else(|_| "?".into())
 }
 
-fn check_rows3(arg: &str, a: &Bound<'_, PyUntypedArray>, what: &str) -> Result<()> {
-    let shape = a.shape();
-    if shape.len() != 2 || shape[1] != 3 {
-        return Err(Error::invalid(arg, format!("expected shape ({what}, 3), got {shape:?}")));
+/// The float dtypes array arguments take.
+pub const FLOATS: &[&str] = &["float32", "float64"];
+
+/// "a, b or c".
+fn one_of(names: &[&str]) -> String {
+    match names.split_last() {
+        Some((last, [])) => last.to_string(),
+        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+        None => String::new(),
     }
-    Ok(())
 }
 
-fn rows3<T: numpy::Element + Copy>(a: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
-    let view = a.as_array();
-    if let Some(flat) = view.as_slice() {
-        flat.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
-    } else {
-        view.rows().into_iter().map(|r| [r[0], r[1], r[2]]).collect()
+/// An array argument in native byte order and its shape, checked: its dtype one of `dtypes`,
+/// its shape `shape` (None: any length on that axis), written `what` in errors ("(K, 2)").
+pub fn checked_array<'py>(
+    arg: &str,
+    obj: &Bound<'py, PyAny>,
+    dtypes: &[&str],
+    (shape, what): (&[Option<usize>], &str),
+) -> Result<(Bound<'py, PyAny>, Vec<usize>)> {
+    let obj = native_order(obj)?;
+    let a = untyped(arg, &obj)?;
+    let dtype = dtype_name(a);
+    if !dtypes.contains(&dtype.as_str()) {
+        return Err(Error::wrong_type(arg, format!("dtype must be {}, got {dtype}", one_of(dtypes))));
     }
+    let got = a.shape().to_vec();
+    if got.len() != shape.len() || shape.iter().zip(&got).any(|(s, g)| s.is_some_and(|s| s != *g)) {
+        return Err(Error::invalid(arg, format!("expected shape {what}, got {got:?}")));
+    }
+    Ok((obj, got))
+}
+
+/// The values of an array argument checked as `checked_array` does, converted to `T`, in
+/// row-major order, and its shape.
+pub fn array_values<T: numpy::Element + Copy>(
+    arg: &str,
+    obj: &Bound<'_, PyAny>,
+    dtypes: &[&str],
+    shape: (&[Option<usize>], &str),
+) -> Result<(Vec<T>, Vec<usize>)> {
+    let (obj, shape) = checked_array(arg, obj, dtypes, shape)?;
+    let x = obj.call_method1("astype", (numpy::dtype::<T>(obj.py()),));
+    let x = x
+        .and_then(|x| Ok(x.extract::<PyReadonlyArrayDyn<'_, T>>()?))
+        .map_err(|e| Error::Internal(e.to_string()))?;
+    Ok((x.as_array().iter().copied().collect(), shape))
+}
+
+/// Row-major values as rows of `K`.
+pub fn rows<T: Copy, const K: usize>(flat: &[T]) -> Vec<[T; K]> {
+    flat.chunks_exact(K).map(|c| std::array::from_fn(|i| c[i])).collect()
+}
+
+fn rows3<T: numpy::Element + Copy>(x: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
+    let view = x.as_array();
+    view.as_slice().map_or_else(|| view.rows().into_iter().map(|r| [r[0], r[1], r[2]]).collect(), rows)
 }
 
 /// Reads (N, 3) float32 or float64 positions (either byte order), checking shape and
 /// finiteness.
 pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
-    let obj = &native_order(obj)?;
-    let a = untyped(arg, obj)?;
-    let wrong_dtype =
-        || Error::wrong_type(arg, format!("dtype must be float32 or float64, got {}", dtype_name(a)));
-    if a.dtype().kind() != b'f' {
-        return Err(wrong_dtype());
-    }
-    check_rows3(arg, a, "N")?;
-    let p = match (obj.extract::<PyReadonlyArray2<'_, f32>>(), obj.extract::<PyReadonlyArray2<'_, f64>>()) {
-        (Ok(x), _) => Positions::F32(rows3(&x)),
-        (_, Ok(x)) => Positions::F64(rows3(&x)),
-        _ => return Err(wrong_dtype()),
+    let (obj, _) = checked_array(arg, obj, FLOATS, (&[None, Some(3)], "(N, 3)"))?;
+    let p = match obj.extract::<PyReadonlyArray2<'_, f32>>() {
+        Ok(x) => Positions::F32(rows3(&x)),
+        Err(_) => Positions::F64(rows3(
+            &obj.extract::<PyReadonlyArray2<'_, f64>>().map_err(|e| Error::Internal(e.to_string()))?,
+        )),
     };
     on_positions!(p.slices(), v => check_positions(arg, v))?;
     Ok(p)
@@ -90,17 +126,10 @@ pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
 /// Reads (M, 3) int32, int64, uint32 or uint64 faces (either byte order), checking every index
 /// against `n_vertices`.
 pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Faces> {
-    let obj = &native_order(obj)?;
-    let a = untyped(arg, obj)?;
-    let wrong_dtype = || {
-        Error::wrong_type(arg, format!("dtype must be int32, int64, uint32 or uint64, got {}", dtype_name(a)))
-    };
-    if !matches!(a.dtype().kind(), b'i' | b'u') {
-        return Err(wrong_dtype());
-    }
-    check_rows3(arg, a, "M")?;
+    let dtypes = ["int32", "int64", "uint32", "uint64"];
+    let (obj, _) = checked_array(arg, obj, &dtypes, (&[None, Some(3)], "(M, 3)"))?;
     by_dtype!(obj, PyReadonlyArray2<i32, i64, u32, u64>, |x| check_faces(arg, rows3(&x).into_iter(), n_vertices))
-        .unwrap_or_else(|| Err(wrong_dtype()))
+        .unwrap_or_else(|| Err(Error::Internal(format!("{arg}: an index array NumPy did not hand over"))))
 }
 
 /// Reads an optional 1-D array of vertex indices (any integer dtype, either byte order) or a

@@ -8,7 +8,7 @@ use numpy::{
 use pyo3::prelude::*;
 
 use super::args;
-use super::convert::{by_dtype, grid_to_numpy, native_order, positions, untyped, ToPython};
+use super::convert::{array_values, by_dtype, grid_to_numpy, native_order, positions, rows, ToPython};
 use super::mesh_input::on_mesh;
 use super::runtime::{detached, detached_cancellable};
 use crate::edges::chains::{chain_edges, vertex_pairs};
@@ -185,15 +185,8 @@ impl PyEdgeIndex {
 /// list and where each polyline starts.
 #[pyfunction]
 pub(super) fn _chains<'py>(py: Python<'py>, edges: &Bound<'py, PyAny>) -> Out<'py> {
-    let shape =
-        untyped("edges", edges).map_err(|_| Error::wrong_type("edges", "expected a NumPy array"))?.shape();
-    if shape.len() != 2 || shape[1] != 2 {
-        return Err(Error::invalid("edges", format!("expected shape (K, 2), got {shape:?}")).into());
-    }
-    let x = edges
-        .extract::<PyReadonlyArray2<'_, i64>>()
-        .map_err(|_| Error::wrong_type("edges", "expected an int64 array (the Python wrapper converts)"))?;
-    let e = vertex_pairs("edges", x.as_array().rows().into_iter().map(|r| [r[0], r[1]]))?;
+    let x: Vec<[i64; 2]> = rows(&array_values("edges", edges, &["int64"], (&[None, Some(2)], "(K, 2)"))?.0);
+    let e = vertex_pairs("edges", x.into_iter())?;
     detached(py, || Ok(chain_edges(&e)))?.to_python(py)
 }
 

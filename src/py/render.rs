@@ -3,21 +3,19 @@
 //! PNG encoding. Every argument is converted with a check that names it.
 
 use numpy::ndarray::IxDyn;
-use numpy::{
-    PyArray2, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
-};
+use numpy::{PyArray2, PyArrayDyn, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 use pyo3::IntoPyObjectExt;
 
 use super::albedo::albedo;
-use super::args::{self, number, text, triple, type_name};
-use super::convert::{faces, grid_to_numpy, positions, ToPython};
-use crate::mesh::positions::on_positions;
+use super::args::{number, text, triple, type_name};
+use super::convert::{array_values, faces, grid_to_numpy, positions, ToPython};
 use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
 use crate::error::{Error, Result};
+use crate::mesh::positions::on_positions;
 use crate::parallel::catching_panics;
 use crate::render::effects::outlines::settings::kind_names;
 use crate::render::effects::shadows::raycast::mesh_shadow_truth;
@@ -247,19 +245,24 @@ impl PyRenderer {
         self.inner.remove_mesh(mesh)
     }
 
-    /// items: [(mesh id, Material or None, 4x4 transform or None)], seen from `cameras` (None:
-    /// the options' camera, images without a leading axis), frames in flight: (images, reports).
-    #[pyo3(signature = (items, options, cameras = None))]
+    /// items: [(mesh id, Material or None, 4x4 transform or None)], seen from the cameras of the
+    /// one optional argument after `options` (none given: the options' camera, images without a
+    /// leading axis), frames in flight: (images, reports).
+    #[pyo3(signature = (items, options, *cameras))]
     fn render<'py>(
         &self,
         py: Python<'py>,
         items: &Bound<'py, PyAny>,
         options: &PyRenderOptions,
-        cameras: Option<&Bound<'py, PyAny>>,
+        cameras: &Bound<'py, PyTuple>,
     ) -> PyResult<(Bound<'py, PyDict>, Vec<Bound<'py, PyDict>>)> {
         let o = &options.inner;
         let read = |c: &Bound<'_, PyAny>| c.cast::<PyCamera>().ok().map(|c| c.get().inner);
-        let cams = args::optional("cameras", cameras, |n, c| each(c, n, "a list of toonmesh.Camera", "a toonmesh.Camera", read))?;
+        let cams = cameras
+            .iter()
+            .next()
+            .map(|c| each(&c, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", read));
+        let cams = cams.transpose()?;
         let scene = self.inner.check(o.scene(&mesh_specs(items)?), o.frame)?;
         let images = Images::allocate(py, &o.frame, cams.as_ref().map(Vec::len));
         let mut buffers = images.buffers(cams.as_ref().map_or(1, Vec::len));
@@ -267,7 +270,9 @@ impl PyRenderer {
         let reports = match cams {
             None => vec![without_gil(py, || inner.render_checked(scene, buffers.pop().expect("one view")))?],
             // a long stream of views stops on Ctrl-C between frames
-            Some(cams) => detached_cancellable(py, |cancel| inner.render_views(&scene, &cams, buffers, cancel))?,
+            Some(cams) => {
+                detached_cancellable(py, |cancel| inner.render_views(&scene, &cams, buffers, cancel))?
+            }
         };
         let reports = reports.into_iter().map(|r| report_dict(py, &o.frame, r)).collect::<PyResult<_>>()?;
         Ok((images.into_dict(py)?, reports))
@@ -292,14 +297,8 @@ pub(super) fn encode_png_rgba<'py>(
     py: Python<'py>,
     color: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyBytes>> {
-    let a: PyReadonlyArray3<'py, u8> = color
-        .extract()
-        .map_err(|_| Error::wrong_type("color", "expected a uint8 array of shape (H, W, 4)"))?;
-    let shape = a.shape().to_vec();
-    if shape[2] != 4 {
-        return Err(Error::invalid("color", format!("expected shape (H, W, 4), got {shape:?}")).into());
-    }
-    let pixels: Vec<u8> = a.as_array().iter().copied().collect();
+    let (pixels, shape) =
+        array_values::<u8>("color", color, &["uint8"], (&[None, None, Some(4)], "(H, W, 4)"))?;
     let png = without_gil(py, || encode_png(shape[1] as u32, shape[0] as u32, &pixels))?;
     Ok(PyBytes::new(py, &png))
 }
@@ -314,17 +313,13 @@ pub(super) fn _shadow_truth<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces_arr: &Bound<'py, PyAny>,
-    view_proj: PyReadonlyArray2<'py, f64>,
+    view_proj: &Bound<'py, PyAny>,
     width: u32,
     height: u32,
     toward_light: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyArray2<f32>>> {
     let toward = triple("toward_light", toward_light)?;
-    let m = view_proj.as_array();
-    if m.shape() != [4, 4] {
-        return Err(Error::invalid("view_proj", format!("expected shape (4, 4), got {:?}", m.shape())).into());
-    }
-    let rows: Vec<f64> = m.iter().copied().collect();
+    let rows = array_values::<f64>("view_proj", view_proj, &["float64"], (&[Some(4), Some(4)], "(4, 4)"))?.0;
     let p = positions("vertices", vertices)?;
     let f = faces("faces", faces_arr, p.len())?;
     let (w, h) = (width as usize, height as usize);

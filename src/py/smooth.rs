@@ -7,9 +7,9 @@ use pyo3::types::PyDict;
 
 use super::args;
 use super::convert::{vertex_mask, ToPython};
-use crate::mesh::{Positions, PositionsRef};
 use super::mesh_input::MeshInput;
 use crate::error::{Error, Result};
+use crate::mesh::{Positions, PositionsRef};
 use crate::smooth::denoise::{self, Filter};
 use crate::smooth::{self, Args, Run};
 

@@ -1,13 +1,12 @@
 //! Python bindings for `crate::render::effects::outlines::pen`: the strokes of a line drawing as
 //! a pen draws them, called by `toonmesh/_strokes.py`.
 
-use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use rayon::prelude::*;
 
 use super::args;
-use super::convert::{dtype_name, float_values, native_order, untyped, ToPython};
+use super::convert::{array_values, rows, ToPython, FLOATS};
 use super::runtime::detached;
 use crate::error::{Error, Result};
 use crate::render::effects::outlines::pen::svg::{self, Group, Ink, Stroke};
@@ -15,29 +14,13 @@ use crate::render::effects::outlines::pen::{self, plotter_order as order};
 
 /// (K, 2) finite pixel coordinates.
 fn point_array(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 2]>> {
-    let obj = &native_order(obj)?;
-    let a = untyped(arg, obj)?;
-    if a.ndim() != 2 || a.shape()[1] != 2 {
-        return Err(Error::invalid(arg, format!("expected shape (K, 2), got {:?}", a.shape())));
-    }
-    let x = obj
-        .extract::<PyReadonlyArray2<'_, f64>>()
-        .map_err(|_| Error::wrong_type(arg, format!("dtype must be float64, got {}", dtype_name(a))))?;
-    let p: Vec<[f64; 2]> = x.as_array().rows().into_iter().map(|r| [r[0], r[1]]).collect();
+    let p = rows(&array_values(arg, obj, &["float64"], (&[None, Some(2)], "(K, 2)"))?.0);
     pen::check_points(arg, &p).map(|()| p)
 }
 
 /// (K,) finite widths in pixels, float32 or float64.
 fn width_array(arg: &str, obj: &Bound<'_, PyAny>, n: usize) -> Result<Vec<f64>> {
-    let obj = &native_order(obj)?;
-    let a = untyped(arg, obj)?;
-    let w = (a.ndim() == 1).then(|| float_values(obj)).flatten().ok_or_else(|| {
-        let (dtype, shape) = (dtype_name(a), a.shape());
-        Error::wrong_type(
-            arg,
-            format!("expected a 1-D float32 or float64 array, got dtype {dtype} and shape {shape:?}"),
-        )
-    })?;
+    let w = array_values(arg, obj, FLOATS, (&[None], "(K,)"))?.0;
     pen::check_widths(arg, &w, n).map(|()| w)
 }
 
