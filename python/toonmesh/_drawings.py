@@ -204,6 +204,22 @@ def _within_cell(a: np.ndarray, b: np.ndarray, cell: float) -> np.ndarray:
     return best
 
 
+#: Stroke widths closer than this (pixels) are the same width.
+WIDTH_TOLERANCE = 0.01
+
+
+def _same_style(a: Tuple[Optional[str], Optional[str], Optional[str]],
+                b: Tuple[Optional[str], Optional[str], Optional[str]]) -> bool:
+    """The same colours (in any case) and stroke widths within WIDTH_TOLERANCE pixels."""
+    def width(w: Optional[str]) -> Optional[float]:
+        found = _numbers(w or "")
+        return found[0] if found else None
+
+    wa, wb = width(a[1]), width(b[1])
+    same_width = (wa is None and wb is None) or (wa is not None and wb is not None and abs(wa - wb) <= WIDTH_TOLERANCE)
+    return same_width and (a[0] or "").lower() == (b[0] or "").lower() and (a[2] or "").lower() == (b[2] or "").lower()
+
+
 class Comparison(NamedTuple):
     """Two drawings compared: the share of their line length farther than the tolerance from
     the other, the largest distance (pixels) between lines of a kind both have, where it is,
@@ -228,7 +244,7 @@ def compare(actual: Drawing, expected: Drawing, pixels: float) -> Comparison:
         a, e = actual.groups.get(kind), expected.groups.get(kind)
         if a is None or e is None:
             only.append(f"the {kind or 'ungrouped'} lines are only in {'the reference' if a is None else 'actual'}")
-        if a is not None and e is not None and a.style != e.style:
+        if a is not None and e is not None and not _same_style(a.style, e.style):
             styles.append(f"the {kind or 'ungrouped'} lines' style (stroke, stroke-width, fill) is {a.style}, "
                           f"in the reference {e.style}")
         pa, wa = samples(a.strokes if a else [])
