@@ -72,7 +72,7 @@ def table() -> List[str]:
         m = measure(name)
         lines = "-" if m["lines"] is None else f"{m['lines']:.3%}"
         differ, beyond = m["differ"], m["beyond"]
-        rows.append(f"| {name} | {differ.count} ({differ.share:.3%}) | {beyond.count} ({beyond.share:.4%}) "
+        rows.append(f"| {name} | {differ.differing} ({differ.share:.3%}) | {beyond.differing} ({beyond.share:.4%}) "
                     f"| {m['largest']} | {lines} |")
     return rows
 

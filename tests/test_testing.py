@@ -102,8 +102,8 @@ def test_images_close_counts_pixels_beyond_the_levels():
     b[:3, :3] = 8  # 9 pixels at the tolerance: the same
     b[50, 60, 1] = 200  # one beyond it
     d = assert_images_close(a, b)
-    assert (d.count, d.largest, d.at, d.share) == (1, 200, (60, 50), 1e-4)
-    assert image_difference(a, b, levels=0).count == 10
+    assert (d.differing, d.largest, d.at, d.share) == (1, 200, (60, 50), 1e-4)
+    assert image_difference(a, b, levels=0).differing == 10
     b[10:14, 10:14] = 255  # 17 pixels beyond: 0.17%
     with pytest.raises(AssertionError, match=r"0\.170% of the pixels \(17\).*largest difference is 255 levels"):
         assert_images_close(a, b)
@@ -117,7 +117,7 @@ def test_images_take_renders_floats_and_bools():
     assert_images_close(res, res.color, levels=0, share=0.0)
     assert_images_close(res.color / 255.0, res, levels=0, share=0.0)
     mask = res.color[..., 3] > 0
-    assert image_difference(mask, mask.astype(np.uint8) * 255, levels=0).count == 0
+    assert image_difference(mask, mask.astype(np.uint8) * 255, levels=0).differing == 0
     with pytest.raises(ValueError, match=r"^actual: a float image must hold finite values in \[0, 1\]"):
         image_difference(res.color * 2.0, res)
     with pytest.raises(ValueError, match="^expected: the render has no colour image"):

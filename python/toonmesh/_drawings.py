@@ -12,7 +12,6 @@ strokes compare in well under a second.
 
 from __future__ import annotations
 
-import math
 import re
 import xml.etree.ElementTree as ET
 from typing import Dict, List, NamedTuple, Optional, Tuple
@@ -237,7 +236,7 @@ class Comparison(NamedTuple):
 def compare(actual: Drawing, expected: Drawing, pixels: float) -> Comparison:
     """Each drawing's strokes against the other's of the same kind (see the module)."""
     total = differing_length = 0.0
-    largest, at, worst_kind = 0.0, (math.nan, math.nan), ""
+    largest, at, worst_kind = 0.0, (0.0, 0.0), ""
     differing = []
     styles, only = [], []
     for kind in sorted(set(actual.groups) | set(expected.groups)):

@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import struct
 import zlib
-from typing import Any, List
-
 import numpy as np
 
 _SIGNATURE = b"\x89PNG\r\n\x1a\n"
@@ -129,8 +127,5 @@ def _decode_with_pillow(data: bytes, name: str, needs: str) -> np.ndarray:
         raise ValueError(f"{name}: reading this PNG needs Pillow (pip install pillow); without it, "
                          f"{needs}") from None
     with Image.open(io.BytesIO(data)) as im:
-        modes: List[Any] = ["L", "LA", "RGB", "RGBA"]
-        if im.mode not in modes:
-            im = im.convert("RGBA")
-        pixels = np.asarray(im, dtype=np.uint8)
+        pixels = np.asarray(im if im.mode in ("L", "LA", "RGB", "RGBA") else im.convert("RGBA"), dtype=np.uint8)
     return pixels[:, :, None] if pixels.ndim == 2 else pixels

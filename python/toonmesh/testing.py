@@ -329,14 +329,14 @@ class ImageDifference(NamedTuple):
         share: the share of pixels (0 to 1) whose largest channel difference exceeds ``levels``.
         largest: the largest difference of any channel of any pixel (levels).
         at: ``(x, y)`` of a pixel with that difference (x right, y down from the top left).
-        count: how many pixels exceed ``levels``.
+        differing: how many pixels exceed ``levels``.
         levels: the tolerance per pixel the share was counted with.
     """
 
     share: float
     largest: int
     at: Tuple[int, int]
-    count: int
+    differing: int
     levels: int
 
 
@@ -346,7 +346,7 @@ def _image(name: str, value: Any) -> np.ndarray:
         if value.color is None:
             raise ValueError(f"{name}: the render has no colour image (render with outputs=('color', ...))")
         value = value.color
-    if isinstance(value, (str, bytes)) or value is None:
+    if isinstance(value, (str, bytes, int, float)) or value is None:
         raise TypeError(f"{name}: expected a RenderResult or an image array, got {type(value).__name__}")
     try:
         arr = np.asarray(value)
@@ -453,7 +453,7 @@ def assert_images_close(
 
 
 def _image_summary(d: ImageDifference) -> str:
-    return (f"{d.share:.3%} of the pixels ({d.count}) differ by more than {d.levels} levels; the largest "
+    return (f"{d.share:.3%} of the pixels ({d.differing}) differ by more than {d.levels} levels; the largest "
             f"difference is {d.largest} levels, at x={d.at[0]}, y={d.at[1]}")
 
 
@@ -484,7 +484,8 @@ class DrawingDifference(NamedTuple):
             ``pixels`` from the other drawing's lines of the same kind.
         largest: the largest such distance between lines of a kind both drawings have, in
             pixels (to within 1/8 pixel).
-        at: ``(x, y)`` pixel coordinates of the point at that distance.
+        at: ``(x, y)`` pixel coordinates of the point at that distance ((0, 0) when no
+            point is farther than 0).
         kind: the kind (SVG group id) of the line it is on.
         styles: how the kinds' styles (stroke colour and width, fill) differ, one sentence each.
         only: the kinds of line only one drawing has, one sentence each (their whole length
@@ -522,7 +523,8 @@ def _svg_text(name: str, value: Any) -> str:
             lines.append(p.astype(np.float64))
         top = max((float(p.max()) for p in lines), default=0.0)
         size = int(math.ceil(max(top, 0.0))) + 1
-        return _strokes.svg_document(size, size, [("lines", "#000000", 1.0, None, [(p, None) for p in lines])])
+        group: Any = ("lines", "#000000", 1.0, None, [(p, None) for p in lines])  # widths: None, one per kind
+        return _strokes.svg_document(size, size, [group])
     raise TypeError(f"{name}: expected a RenderResult with lines, an SVG document (str) or a list of (K, 2) "
                     f"arrays, got {type(value).__name__}")
 
@@ -613,7 +615,7 @@ def _difference_svg(actual: _drawings.Drawing, expected: _drawings.Drawing, diff
     w = int(math.ceil(max(actual.width, expected.width, 1.0)))
     h = int(math.ceil(max(actual.height, expected.height, 1.0)))
     dots = [(np.vstack([p, p]), None) for p in differing[:: max(1, len(differing) // 5000)]]
-    groups: List[_strokes.SvgGroup] = [
+    groups: List[Any] = [  # centre lines: no widths per point
         ("expected", "#b4b4b4", 2.0, None, polylines(expected)),
         ("actual", "#2060d0", 1.0, None, polylines(actual)),
         ("differing", "#ff0000", 2.5, None, dots),
@@ -1007,7 +1009,8 @@ class SobelDifference(NamedTuple):
 
     Attributes:
         largest: the largest absolute difference of any pixel, in the image's units (a unit
-            step gives 0.7071 in both).
+            step gives 0.7071 in both); non-finite values count as the same where both have
+            the same, as inf where only one has one.
         dtype: the dtype of toonmesh's result.
         peer_dtype: the dtype of scikit-image's (the same: toonmesh follows its rules).
     """
@@ -1054,5 +1057,9 @@ def sobel_vs_skimage(image: Any, mask: Any = None, *, which: str = "sobel") -> S
         theirs = peer(img, mask=mask)
     if ours.shape != theirs.shape:
         raise AssertionError(f"toonmesh's {which} is {ours.shape}, scikit-image's {theirs.shape}")
-    largest = float(np.max(np.abs(ours.astype(np.float64) - theirs.astype(np.float64)), initial=0.0))
-    return SobelDifference(largest, ours.dtype, theirs.dtype)
+    a, b = ours.astype(np.float64), theirs.astype(np.float64)
+    with np.errstate(invalid="ignore"):
+        diff = np.abs(a - b)
+    diff[(a == b) | (np.isnan(a) & np.isnan(b))] = 0.0  # the same inf or nan passed through
+    diff[np.isnan(diff)] = np.inf
+    return SobelDifference(float(np.max(diff, initial=0.0)), ours.dtype, theirs.dtype)
