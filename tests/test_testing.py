@@ -346,7 +346,18 @@ def test_snapshot_workflow_in_a_fresh_folder(tmp_path):
     # refreshed on purpose: passes again, and the stale actual and difference images go
     assert _pytest(tmp_path, "--toon-update", smooth=True).returncode == 0
     assert sorted(p.name for p in refs.iterdir()) == ["test_bunny.png", "test_bunny_lines.svg"]
-    assert _pytest(tmp_path, smooth=True).returncode == 0
+
+
+def test_the_example_test_file_of_the_docs_runs(tmp_path):
+    """docs/testing.md's complete example: --toon-update writes its references, then it passes."""
+    text = (ROOT / "docs" / "testing.md").read_text()
+    (example,) = re.findall(r"```python\n(# test_my_mesh_code\.py\n.*?)```", text, flags=re.S)
+    (tmp_path / "pytest.ini").write_text("[pytest]\n")
+    (tmp_path / "test_my_mesh_code.py").write_text(example)
+    r = _pytest(tmp_path, "--toon-update")
+    assert r.returncode == 0 and "wrote 4 references" in r.stdout, r.stdout + r.stderr
+    r = _pytest(tmp_path)
+    assert r.returncode == 0 and "6 passed" in r.stdout, r.stdout + r.stderr
 
 
 # ------------------------------------------------------------------------------------------------
