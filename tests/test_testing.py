@@ -279,7 +279,8 @@ def test_pyproject_declares_the_pytest11_entry_point():
     import tomllib
 
     project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
-    assert project["entry-points"]["pytest11"] == {"toonmesh": "toonmesh.pytest_plugin"}
+    # named as its module: -p toonmesh.pytest_plugin is then a no-op where it is installed
+    assert project["entry-points"]["pytest11"] == {"toonmesh.pytest_plugin": "toonmesh.pytest_plugin"}
 
 
 USER_TEST = '''
@@ -305,13 +306,13 @@ def test_bunny_lines(toon_snapshot):
 
 
 def _pytest(folder: Path, *args: str, smooth: bool = False) -> subprocess.CompletedProcess:
-    from conftest import _plugin_installed
-
+    """pytest run in ``folder`` with toonmesh's plugin named (a no-op where its entry point is
+    installed, and the way to load it where it is not, as in an editable build)."""
     env = dict(os.environ, SMOOTH_FIRST="1" if smooth else "")
     env.pop("PYTEST_ADDOPTS", None)
-    load = [] if _plugin_installed() else ["-p", "toonmesh.pytest_plugin"]
-    return subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", *load, *args],
-                          cwd=folder, env=env, capture_output=True, text=True, timeout=300)
+    return subprocess.run(
+        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p", "toonmesh.pytest_plugin", *args],
+        cwd=folder, env=env, capture_output=True, text=True, timeout=300)
 
 
 def test_snapshot_workflow_in_a_fresh_folder(tmp_path):

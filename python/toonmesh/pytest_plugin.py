@@ -1,9 +1,10 @@
 """toonmesh's pytest plugin: snapshot tests of renders and line drawings.
 
-Installed with toonmesh (the ``pytest11`` entry point ``toonmesh``), so that every test can ask
-for the ``toon_snapshot`` fixture; where the entry point is not installed (an editable build)
-load it with ``pytest -p toonmesh.pytest_plugin`` or ``pytest_plugins =
-["toonmesh.pytest_plugin"]`` in the top ``conftest.py``; ``-p no:toonmesh`` turns it off.
+Installed with toonmesh (the ``pytest11`` entry point ``toonmesh.pytest_plugin``), so that every
+test can ask for the ``toon_snapshot`` fixture; where the entry point is not installed (an
+editable build made before it) load it with ``pytest -p toonmesh.pytest_plugin`` or
+``pytest_plugins = ["toonmesh.pytest_plugin"]`` in the top ``conftest.py`` (a no-op where it is
+installed: the entry point has the module's name); ``-p no:toonmesh.pytest_plugin`` turns it off.
 
 ::
 
