@@ -47,7 +47,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def test_mesh_close_is_relative_to_the_diagonal_at_any_scale():
     V, F = tm.shapes.icosphere(2, noise=0.05, seed=1)
-    for scale in (1e-6, 1.0, 1e6):
+    for scale in (1e-290, 1e-6, 1.0, 1e6, 1e290):
         W = V * scale
         moved = W.copy()
         moved[7] += 1e-8 * scale  # 1.7e-8 of the size: within 1e-6 of the diagonal

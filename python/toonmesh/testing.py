@@ -185,12 +185,20 @@ def _mesh(name: str, value: Any) -> Tuple[np.ndarray, Optional[np.ndarray]]:
     return V, F.astype(np.int64)
 
 
+def _norms(x: np.ndarray) -> np.ndarray:
+    """Lengths of the rows of x, without overflow or underflow at any scale."""
+    scale = float(np.abs(x).max(initial=0.0))
+    if scale == 0.0 or not np.isfinite(scale):
+        return np.linalg.norm(x, axis=-1)
+    return np.linalg.norm(x / scale, axis=-1) * scale
+
+
 def _diagonal(V: np.ndarray) -> float:
-    return float(np.linalg.norm(V.max(axis=0) - V.min(axis=0)))
+    return float(_norms(V.max(axis=0) - V.min(axis=0)))
 
 
 def _differences(V: np.ndarray, W: np.ndarray) -> MeshDifference:
-    distances = np.linalg.norm(V - W, axis=1)
+    distances = _norms(V - W)
     vertex = int(np.argmax(distances))
     largest = float(distances[vertex])
     diagonal = _diagonal(W) or _diagonal(V)
