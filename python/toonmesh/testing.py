@@ -189,8 +189,8 @@ def _norms(x: np.ndarray) -> np.ndarray:
     """Lengths of the rows of x, without overflow or underflow at any scale."""
     scale = float(np.abs(x).max(initial=0.0))
     if scale == 0.0 or not np.isfinite(scale):
-        return np.linalg.norm(x, axis=-1)
-    return np.linalg.norm(x / scale, axis=-1) * scale
+        scale = 1.0
+    return np.asarray(np.linalg.norm(x / scale, axis=-1) * scale, dtype=np.float64)
 
 
 def _diagonal(V: np.ndarray) -> float:
