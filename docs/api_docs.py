@@ -16,7 +16,7 @@ from typing import List, Tuple
 
 #: The documented modules: the package (with toonmesh.smooth, .edges and .shapes, which it lists
 #: in __all__) and the public modules it does not import.
-MODULES = ("toonmesh", "toonmesh.batch", "toonmesh.data", "toonmesh.cli")
+MODULES = ("toonmesh", "toonmesh.batch", "toonmesh.data", "toonmesh.cli", "toonmesh.testing", "toonmesh.pytest_plugin")
 
 
 def undocumented() -> List[str]:

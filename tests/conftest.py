@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib
 import os
 from pathlib import Path
 from typing import Any, Tuple
@@ -10,18 +9,20 @@ from typing import Any, Tuple
 import numpy as np
 import pytest
 
+from toonmesh.testing import need_peer
+
 MESHES = Path(__file__).parent / "data" / "meshes"
 
 
 def need(module: str) -> Any:
     """Imports an optional peer library: skipped on a user's machine without it, but a hard
-    failure in CI, where every peer must be installed."""
-    try:
-        return importlib.import_module(module)
-    except ImportError:
-        if os.environ.get("CI", "").lower() == "true":
-            raise
-        pytest.skip(f"{module} is not installed")
+    failure in CI, where every peer must be installed (toonmesh.testing.need_peer)."""
+    return need_peer(module)
+
+
+# The toon_snapshot fixture and --toon-update: toonmesh's plugin, named here for a build whose
+# metadata predates its entry point (named as its module, so this is a no-op where it is loaded).
+pytest_plugins = ["toonmesh.pytest_plugin"]
 
 
 def load_mesh(name: str) -> Tuple[np.ndarray, np.ndarray]:
@@ -109,17 +110,21 @@ def backend_problem(backend: str) -> "str | None":
     return _BACKEND_STATE[backend][0]
 
 
-@pytest.fixture(autouse=True)
-def _render_backend_available(request: Any) -> None:
-    backend = getattr(getattr(request.node, "callspec", None), "params", {}).get("backend")
-    if backend not in RENDER_BACKENDS:
-        return
+def need_backend(backend: str) -> None:
+    """Skips the test when ``backend`` cannot render here (fails it in CI)."""
     problem = backend_problem(backend)
     if problem is None:
         return
     if os.environ.get("CI", "").lower() == "true":
         pytest.fail(f"the {backend} backend must work in CI: {problem}")
     pytest.skip(f"the {backend} backend is not available here: {problem}")
+
+
+@pytest.fixture(autouse=True)
+def _render_backend_available(request: Any) -> None:
+    backend = getattr(getattr(request.node, "callspec", None), "params", {}).get("backend")
+    if backend in RENDER_BACKENDS:
+        need_backend(backend)
 
 
 def pytest_terminal_summary(terminalreporter: Any) -> None:

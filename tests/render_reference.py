@@ -3,24 +3,17 @@ rendering tests to recompute every pixel's colour from the rendered normal and d
 
 from __future__ import annotations
 
-import importlib
-import os
 from typing import Any, List, Tuple
 
 import numpy as np
-import pytest
 
 import toonmesh as tm
+from toonmesh.testing import need_peer
 
 
 def need(module: str) -> Any:
     """Imports an optional test dependency: skipped on a user's machine, a failure in CI."""
-    try:
-        return importlib.import_module(module)
-    except ImportError:
-        if os.environ.get("CI") == "true":
-            raise
-        pytest.skip(f"{module} is not installed")
+    return need_peer(module)
 
 
 def srgb_to_linear(c: Any) -> np.ndarray:

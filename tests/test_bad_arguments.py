@@ -22,11 +22,15 @@ To cover another function, add a `Case` to `CASES`.
 
 from __future__ import annotations
 
+import atexit
 import math
 import os
 import re
+import shutil
+import tempfile
 import time
 from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import Any, Callable, Dict, List, Optional, Sequence, Set, Tuple
 
 import numpy as np
@@ -34,6 +38,7 @@ import pytest
 
 import toonmesh as tm
 from toonmesh import edges as te
+from toonmesh import testing
 from toonmesh.data import load_obj
 
 # ------------------------------------------------------------------------------------------------
@@ -1722,6 +1727,243 @@ CASES += [
 
 
 # ------------------------------------------------------------------------------------------------
+# toonmesh.testing: comparisons of meshes, images and drawings, snapshots, and the cross-checks.
+# A legal value that makes two things differ gives AssertionError, the comparison's outcome.
+
+
+def mesh_arguments(fewer: Any) -> Array:
+    """A mesh to compare: a (vertices, faces) pair, positions alone, or a Trimesh-like object;
+    ``fewer`` is what a mesh with fewer vertices gives."""
+    return Array(
+        (
+            ("pair", (V, F), OK),
+            ("list pair", [V, F], OK),
+            ("positions alone", V, OK),
+            ("float32 positions", (V.astype(np.float32), F), OK),
+            ("int positions", (np.round(V * 100).astype(np.int64), F), OK),
+            ("big-endian", (V.astype(">f8"), F.astype(">i4")), OK),
+            ("nested lists", (V.tolist(), F.tolist()), OK),
+            ("uint32 faces", (V, F.astype(np.uint32)), OK),
+            ("moved", (V + 0.1, F), OK),
+            ("faces turned and reordered", (V, np.roll(F[::-1], 1, axis=1)), OK),
+            ("a face flipped", (V, np.vstack([F[:1, ::-1], F[1:]])), OK),
+            ("fewer faces", (V, F[1:]), OK),
+            ("fewer vertices", V[1:], fewer),
+            ("complex", V.astype(complex), TypeError),
+            ("bool", V > 0, TypeError),
+            ("strings", V.astype(str), TypeError),
+            ("object", V.astype(object), TypeError),
+            ("a string", "mesh", TypeError),
+            ("ragged", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
+            ("float faces", (V, F.astype(float)), TypeError),
+            ("nan", (_with(V, (3, 1), np.nan), F), ValueError),
+            ("inf", (_with(V, (0, 0), np.inf), F), ValueError),
+            ("shape (N, 2)", V[:, :2].copy(), ValueError),
+            ("flat", V.ravel().copy(), ValueError),
+            ("empty", np.zeros((0, 3)), ValueError),
+            ("scalar", 1.0, ValueError),
+            ("faces (M, 4)", (V, np.hstack([F, F[:, :1]])), ValueError),
+            ("negative face index", (V, _with(F, (5, 2), -1)), IndexError),
+            ("face index N", (V, _with(F, (5, 2), N)), IndexError),
+        )
+    )
+
+
+IMG8 = (np.random.default_rng(5).random((9, 11, 4)) * 255).astype(np.uint8)
+COLOUR_AND_LINES = tm.render(V, F, outlines="mesh", outputs=("color", "lines"), width=11, height=9)
+DEPTH_ONLY = tm.render(V, F, outputs=("depth",), width=11, height=9)
+
+IMAGES_TO_COMPARE = Array(
+    (
+        ("uint8 RGBA", IMG8, OK),
+        ("floats in [0, 1]", IMG8 / 255.0, OK),
+        ("float32", (IMG8 / 255.0).astype(np.float32), OK),
+        ("int16 levels", IMG8.astype(np.int16), OK),
+        ("bool", IMG8 > 100, OK),
+        ("grey", IMG8[..., 0].copy(), OK),
+        ("RGB", IMG8[..., :3].copy(), OK),
+        ("a render", COLOUR_AND_LINES, OK),
+        ("another size", IMG8[:5], OK),
+        ("nested list", IMG8.tolist(), OK),
+        ("fortran order", np.asfortranarray(IMG8), OK),
+        ("a render without colour", DEPTH_ONLY, ValueError),
+        ("floats above 1", IMG8 * 1.0, ValueError),
+        ("nan", _with(IMG8 / 255.0, (2, 2, 0), np.nan), ValueError),
+        ("negative levels", IMG8.astype(np.int16) - 300, ValueError),
+        ("levels above 255", IMG8.astype(np.int16) + 300, ValueError),
+        ("1-D", IMG8[0, :, 0].copy(), ValueError),
+        ("5 channels", np.zeros((9, 11, 5), np.uint8), ValueError),
+        ("4-D", IMG8[None], ValueError),
+        ("empty", np.zeros((0, 4), np.uint8), ValueError),
+        ("complex", IMG8.astype(complex), TypeError),
+        ("strings", IMG8.astype(str), TypeError),
+        ("object", IMG8.astype(object), TypeError),
+        ("a string", "image.png", TypeError),
+        ("bytes", b"\x89PNG", TypeError),
+    )
+)
+
+DRAWINGS = Array(
+    (
+        ("a render", LINES, OK),
+        ("its SVG", LINES.svg(), OK),
+        ("its filled SVG", LINES.svg(widths="point"), OK),
+        ("a list of lines", list(LINES.lines), OK),
+        ("a tuple of lines", tuple(LINES.lines), OK),
+        ("no lines", [], OK),
+        ("a single point", [np.array([[3.0, 4.0]])], OK),
+        ("int lines", [np.array([[0, 0], [5, 5]])], OK),
+        ("a render without lines", DEPTH_ONLY, ValueError),
+        ("not SVG", "lines", ValueError),
+        ("broken SVG", "<svg", ValueError),
+        ("other XML", "<html/>", ValueError),
+        ("a line (K, 3)", [np.zeros((3, 3))], ValueError),
+        ("an empty line", [np.zeros((0, 2))], ValueError),
+        ("a nan point", [np.array([[0.0, 0.0], [np.nan, 1.0]])], ValueError),
+        ("string points", [np.array([["a", "b"]])], TypeError),
+        ("an array", np.zeros((4, 2)), TypeError),
+        ("bytes", b"<svg/>", TypeError),
+        ("an int", 3, TypeError),
+    )
+)
+
+# A mesh every peer smooths as toonmesh does: the vertex and face probes but those the peers
+# themselves cannot take (trimesh raises on unreferenced vertices after the largest face index;
+# values near float64's limits overflow inside the peers).
+PEER_VERTICES = Array(tuple(p for p in VERTICES.probes if p[0] not in ("huge but finite", "tiny")))
+PEER_FACES = Array(tuple(p for p in FACES.probes if p[0] not in ("one face",)))
+PEER_ITERATIONS = Param("iterations", Integer(0, 10**6, slow_above=20), none=OK)
+
+SNAPSHOTS = tempfile.mkdtemp(prefix="toonmesh-bad-arguments-")
+atexit.register(shutil.rmtree, SNAPSHOTS, ignore_errors=True)
+
+
+def _snapshot(**kw: Any) -> Any:
+    """A Snapshot, as what it holds."""
+    s = testing.Snapshot(**kw)
+    return (s.directory, s.test_name, s.update)
+
+
+def _snapshot_call(**kw: Any) -> Any:
+    """A Snapshot called with ``kw``, writing its references (``update``): the reference's name."""
+    return testing.Snapshot(SNAPSHOTS, "probe", update=True)(**kw).name
+
+
+SHARE = Param("share", Number(0.0, 1.0))
+COMPARED_MESHES = [Param("actual", mesh_arguments(OK)), Param("expected", mesh_arguments(OK))]
+
+CASES += [
+    Case(
+        "testing.assert_mesh_close",
+        testing.assert_mesh_close,
+        dict(actual=(V, F), expected=(V, F), rtol=1e-6, atol=0.0, check_faces=True),
+        COMPARED_MESHES + [
+            Param("rtol", Number(0.0, math.inf, open_hi=True)),
+            Param("atol", Number(0.0, math.inf, open_hi=True)),
+            Param("check_faces", Flag()),
+        ],
+        also=(AssertionError,),
+    ),
+    Case(
+        "testing.mesh_difference",
+        testing.mesh_difference,
+        dict(actual=(V, F), expected=(V, F)),
+        [Param("actual", mesh_arguments(ValueError)), Param("expected", mesh_arguments(ValueError))],
+    ),
+    *[
+        Case(
+            f"testing.{name}",
+            getattr(testing, name),
+            dict(actual=IMG8, expected=IMG8, levels=8, **extra),
+            [Param("actual", IMAGES_TO_COMPARE), Param("expected", IMAGES_TO_COMPARE),
+             Param("levels", Integer(0, 255))] + ([SHARE] if extra else []),
+            also=(AssertionError,),  # images of other sizes, or that differ
+        )
+        for name, extra in (("assert_images_close", {"share": 0.001}), ("image_difference", {}))
+    ],
+    *[
+        Case(
+            f"testing.{name}",
+            getattr(testing, name),
+            dict(actual=LINES, expected=LINES, pixels=1.0, **extra),
+            [Param("actual", DRAWINGS), Param("expected", DRAWINGS), Param("pixels", Number(0.0, 1e6))]
+            + ([SHARE] if extra else []),
+            also=(AssertionError,),
+        )
+        for name, extra in (("assert_drawings_close", {"share": 0.005}), ("drawing_difference", {}))
+    ],
+    Case(
+        "testing.Snapshot",
+        _snapshot,
+        dict(directory=SNAPSHOTS, test_name="probe", update=False, written=None),
+        [
+            Param("directory", Array((("a str", SNAPSHOTS, OK), ("a Path", Path(SNAPSHOTS), OK),
+                                      ("an int", 3, TypeError), ("bytes", SNAPSHOTS.encode(), TypeError)))),
+            Param("test_name", Array((("a name", "test_x[gl]", OK), ("odd characters", "a/b c:d", OK),
+                                      ("empty", "", ValueError), ("an int", 3, TypeError)))),
+            Param("update", Flag()),
+            Param("written", Array((("a list", [], OK), ("a tuple", (), TypeError))), none=OK),
+        ],
+    ),
+    Case(
+        "testing.Snapshot(call)",
+        _snapshot_call,
+        dict(value=COLOUR_AND_LINES, name=None, kind="auto", levels=8, pixels=1.0, share=None),
+        [
+            Param("value", Array((("a render", COLOUR_AND_LINES, OK), ("an image", IMG8, OK),
+                                  ("an SVG", LINES.svg(), OK), ("lines", list(LINES.lines), OK),
+                                  ("not SVG", "x", ValueError), ("an int", 3, TypeError)))),
+            Param("name", Array((("a name", "other", OK), ("empty", "", ValueError), ("an int", 3, TypeError))),
+                  none=OK),
+            Param("kind", Name(("auto", "image", "drawing"))),
+            Param("levels", Integer(0, 255)),
+            Param("pixels", Number(0.0, 1e6)),
+            Param("share", Number(0.0, 1.0), none=OK),
+        ],
+    ),
+    *[
+        Case(
+            f"testing.smoothing_vs_{peer}",
+            getattr(testing, f"smoothing_vs_{peer}"),
+            dict(vertices=V, faces=F, method="laplacian", iterations=3),
+            [
+                Param("vertices", PEER_VERTICES),
+                Param("faces", PEER_FACES, none=TypeError),
+                Param("method", Name(methods, invalid=invalid)),
+                PEER_ITERATIONS,
+            ],
+        )
+        for peer, methods, invalid in (
+            ("trimesh", ("laplacian", "taubin", "hc", "implicit"), ()),
+            ("pymeshlab", ("laplacian", "taubin", "hc"), ("implicit",)),
+        )
+    ],
+    Case(
+        "testing.curvature_vs_libigl",
+        testing.curvature_vs_libigl,
+        dict(vertices=V, faces=F, radius=2, smoothing=0.0),
+        [
+            Param("vertices", PEER_VERTICES),
+            Param("faces", PEER_FACES),
+            Param("radius", Integer(1, 10)),
+            Param("smoothing", Number(0.0, math.inf, open_hi=True)),
+        ],
+    ),
+    Case(
+        "testing.sobel_vs_skimage",
+        testing.sobel_vs_skimage,
+        dict(image=IMG, mask=None, which="sobel"),
+        [
+            # values near float64's limit overflow in scikit-image's filter (not in toonmesh's)
+            Param("image", Array(tuple(p for p in IMAGES.probes if p[0] != "huge values"))),
+            Param("mask", MASKS, none=OK),
+            Param("which", Name(("sobel", "sobel_h", "sobel_v"))),
+        ],
+    ),
+]
+
+
+# ------------------------------------------------------------------------------------------------
 # Running the probes
 
 
@@ -1864,6 +2106,12 @@ def test_every_public_callable_is_in_the_table() -> None:
     no_arguments |= {"Viewer.close", "Viewer.code", "Viewer.reframe"}
     public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
     public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny"}
+    # toonmesh.testing: what its comparisons return, and need_peer (tests/test_testing.py: it
+    # imports a module by name, skips or raises)
+    no_arguments |= {"testing.MeshDifference", "testing.ImageDifference", "testing.DrawingDifference",
+                     "testing.CurvatureAgreement", "testing.SobelDifference", "testing.PeerMissingError",
+                     "testing.need_peer"}
+    public |= {f"testing.{n}" for n in testing.__all__ if callable(getattr(testing, n))}
     public |= {"edges.EdgeIndex.feature_edges", "edges.EdgeIndex.silhouette", "edges.EdgeIndex.outlines",
                "edges.EdgeIndex.segments", "edges.EdgeIndex.contours", "edges.EdgeIndex.suggestive_contours",
                "data.load_obj"}

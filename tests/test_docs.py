@@ -24,7 +24,7 @@ def test_api_reference_builds_with_every_public_function_documented(tmp_path):
     pages, warned = api.build(tmp_path)
     names = {p.relative_to(tmp_path).as_posix() for p in pages}
     for page in ("toonmesh.html", "toonmesh/smooth.html", "toonmesh/edges.html", "toonmesh/batch.html",
-                 "toonmesh/cli.html"):
+                 "toonmesh/cli.html", "toonmesh/testing.html", "toonmesh/pytest_plugin.html"):
         assert page in names, sorted(names)
     top = (tmp_path / "toonmesh.html").read_text()
     for name in ("render", "Renderer", "Material", "Camera", "Light", "RenderResult", "Viewer"):

@@ -8,6 +8,7 @@ from render_reference import expected_color, light_dots, match_fraction, need
 
 import toonmesh as tm
 from toonmesh import _core
+from toonmesh.testing import assert_images_close
 
 BACKENDS = ["vulkan", "gl"]
 # Pixels whose L.n lies this close to a threshold may fall on either side of it through f32
@@ -108,9 +109,8 @@ def test_vulkan_and_gl_agree(bumpy):
         res = tm.render(*bumpy, material=tm.Material.bands(), lights=LIGHTS, width=257, height=181, outputs=("color", "depth"), backend=backend)
         images.append(res)
     a, b = images
-    covered = np.isfinite(a.depth) | np.isfinite(b.depth)
-    close = np.all(np.abs(a.color.astype(int) - b.color.astype(int)) <= 1, axis=-1)
-    assert close[covered].mean() >= 0.995
+    # no pixel more than 1 level apart but for 0.2% of them (docs/testing.md has the sizes)
+    assert_images_close(a, b, levels=1, share=0.002)
     assert np.array_equal(np.isfinite(a.depth), np.isfinite(b.depth)) or (np.isfinite(a.depth) != np.isfinite(b.depth)).mean() < 0.005
     both = np.isfinite(a.depth) & np.isfinite(b.depth)
     np.testing.assert_allclose(a.depth[both], b.depth[both], rtol=1e-4)

@@ -1,4 +1,5 @@
-"""Cross-validation of the smoothing presets against trimesh and pymeshlab themselves.
+"""Cross-validation of the smoothing presets against trimesh and pymeshlab themselves, through
+toonmesh.testing's cross-checks (the ones users call on their own meshes).
 
 Tolerance: 1e-6 of the bounding-box diagonal, float64 (observed differences are ~1e-12).
 """
@@ -10,8 +11,9 @@ import pytest
 
 import toonmesh as tm
 from toonmesh import _core
+from toonmesh.testing import smoothing_vs_pymeshlab, smoothing_vs_trimesh
 
-from conftest import load_mesh, need, rel_err
+from conftest import load_mesh
 
 TOL = 1e-6
 
@@ -37,86 +39,49 @@ PYMESHLAB_MESHES = dict(TRIMESH_MESHES, bunny=lambda: load_mesh("stanford-bunny"
 CLOSED = {"icosphere", "fandisk", "spot"}
 
 
-def _trimesh(V, F):
-    trimesh = need("trimesh")
-    return trimesh.Trimesh(V.copy(), F.copy(), process=False)
-
-
 @pytest.mark.parametrize("name", sorted(TRIMESH_MESHES))
 @pytest.mark.parametrize("lamb,iterations", [(0.5, 10), (0.2, 3), (0.9, 25)])
 def test_trimesh_filter_laplacian_explicit(name, lamb, iterations):
-    trimesh = need("trimesh")
     V, F = TRIMESH_MESHES[name]()
     for vc in ([False, True] if name in CLOSED else [False]):
-        m = _trimesh(V, F)
-        trimesh.smoothing.filter_laplacian(m, lamb=lamb, iterations=iterations, volume_constraint=vc)
-        ours = tm.smooth.laplacian(V, F, lamb=lamb, iterations=iterations, volume_constraint=vc, preset="trimesh")
-        assert rel_err(ours, m.vertices, V) <= TOL, (name, vc)
+        d = smoothing_vs_trimesh(V, F, "laplacian", lamb=lamb, iterations=iterations, volume_constraint=vc)
+        assert d.relative <= TOL, (name, vc)
 
 
 # The volume constraint is undefined on open meshes, so it is checked on the closed one only.
 @pytest.mark.parametrize("name,vc", [("icosphere", False), ("icosphere", True), ("grid", False), ("teapot", False)])
 def test_trimesh_filter_laplacian_implicit(name, vc):
-    trimesh = need("trimesh")
     V, F = TRIMESH_MESHES[name]()
-    m = _trimesh(V, F)
-    trimesh.smoothing.filter_laplacian(m, lamb=0.7, iterations=3, implicit_time_integration=True, volume_constraint=vc)
-    ours = tm.smooth.implicit(V, F, step=0.7, iterations=3, volume_constraint=vc, preset="trimesh")
-    assert rel_err(ours, m.vertices, V) <= TOL
+    assert smoothing_vs_trimesh(V, F, "implicit", step=0.7, iterations=3, volume_constraint=vc).relative <= TOL
 
 
 def test_trimesh_defaults_match():
-    trimesh = need("trimesh")
     V, F = _core.icosphere(6, 0.05, 2)  # large enough to take the spatially reordered path
-    m = _trimesh(V, F)
-    trimesh.smoothing.filter_laplacian(m)
-    assert rel_err(tm.smooth.laplacian(V, F, preset="trimesh"), m.vertices, V) <= TOL
+    assert smoothing_vs_trimesh(V, F).relative <= TOL
 
 
 @pytest.mark.parametrize("name", sorted(TRIMESH_MESHES))
 def test_trimesh_distance_weights(name):
-    trimesh = need("trimesh")
     V, F = TRIMESH_MESHES[name]()
-    m = _trimesh(V, F)
-    op = trimesh.smoothing.laplacian_calculation(m, equal_weight=False)
-    trimesh.smoothing.filter_laplacian(m, iterations=5, volume_constraint=False, laplacian_operator=op)
-    ours = tm.smooth.laplacian(V, F, iterations=5, weights="distance", volume_constraint=False, preset="trimesh")
-    assert rel_err(ours, m.vertices, V) <= TOL
+    d = smoothing_vs_trimesh(V, F, "laplacian", iterations=5, weights="distance", volume_constraint=False)
+    assert d.relative <= TOL
 
 
 @pytest.mark.parametrize("name", sorted(TRIMESH_MESHES))
 @pytest.mark.parametrize("iterations", [1, 7, 10])
 def test_trimesh_taubin_and_humphrey(name, iterations):
-    trimesh = need("trimesh")
     V, F = TRIMESH_MESHES[name]()
-    m = _trimesh(V, F)
-    trimesh.smoothing.filter_taubin(m, lamb=0.5, nu=0.5, iterations=iterations)
-    assert rel_err(tm.smooth.taubin(V, F, iterations=iterations, preset="trimesh"), m.vertices, V) <= TOL
-    m = _trimesh(V, F)
-    trimesh.smoothing.filter_humphrey(m, alpha=0.2, beta=0.6, iterations=iterations)
-    ours = tm.smooth.hc(V, F, alpha=0.2, beta=0.6, iterations=iterations, preset="trimesh")
-    assert rel_err(ours, m.vertices, V) <= TOL
+    # the defaults: lamb 0.5 and mu -0.5 here, lamb and nu 0.5 there
+    assert smoothing_vs_trimesh(V, F, "taubin", iterations=iterations).relative <= TOL
+    assert smoothing_vs_trimesh(V, F, "hc", alpha=0.2, beta=0.6, iterations=iterations).relative <= TOL
 
 
 def test_trimesh_pinned_vertices():
-    trimesh = need("trimesh")
     V, F = _grid()
     pinned = np.array([0, 5, 17, 100])
-    m = _trimesh(V, F)
-    op = trimesh.smoothing.laplacian_calculation(m, pinned_vertices=pinned)
-    trimesh.smoothing.filter_laplacian(m, volume_constraint=False, laplacian_operator=op)
+    assert smoothing_vs_trimesh(V, F, "laplacian", pinned=pinned, volume_constraint=False).relative <= TOL
     ours = tm.smooth.laplacian(V, F, pinned=pinned, volume_constraint=False, preset="trimesh")
-    assert rel_err(ours, m.vertices, V) <= TOL
     assert np.array_equal(ours[pinned], V[pinned])
-
-
-def _pymeshlab(V, F, filter_name, calls=1, **kw):
-    pymeshlab = need("pymeshlab")
-    ms = pymeshlab.MeshSet()
-    ms.add_mesh(pymeshlab.Mesh(V, F))
-    for _ in range(calls):
-        getattr(ms, filter_name)(**kw)
-    return ms.current_mesh().vertex_matrix()
 
 
 @pytest.mark.parametrize("name", sorted(PYMESHLAB_MESHES))
@@ -124,27 +89,21 @@ def _pymeshlab(V, F, filter_name, calls=1, **kw):
 @pytest.mark.parametrize("border", [True, False])
 def test_pymeshlab_laplacian(name, cot, border):
     V, F = PYMESHLAB_MESHES[name]()
-    ref = _pymeshlab(V, F, "apply_coord_laplacian_smoothing", stepsmoothnum=4, boundary=border, cotangentweight=cot)
-    ours = tm.smooth.laplacian(
-        V, F, iterations=4, weights="cotangent" if cot else "uniform",
-        boundary="slide" if border else "free", preset="pymeshlab",
-    )
-    assert rel_err(ours, ref, V) <= TOL
+    d = smoothing_vs_pymeshlab(V, F, "laplacian", iterations=4, weights="cotangent" if cot else "uniform",
+                               boundary="slide" if border else "free")
+    assert d.relative <= TOL
 
 
 def test_pymeshlab_laplacian_defaults():
     V, F = _grid()
-    ref = _pymeshlab(V, F, "apply_coord_laplacian_smoothing")
-    assert rel_err(tm.smooth.laplacian(V, F, preset="pymeshlab"), ref, V) <= TOL
+    assert smoothing_vs_pymeshlab(V, F).relative <= TOL
 
 
 @pytest.mark.parametrize("name", sorted(PYMESHLAB_MESHES))
 def test_pymeshlab_taubin_and_hc(name):
     V, F = PYMESHLAB_MESHES[name]()
-    ref = _pymeshlab(V, F, "apply_coord_taubin_smoothing", lambda_=0.6, mu=-0.62, stepsmoothnum=6)
-    assert rel_err(tm.smooth.taubin(V, F, lamb=0.6, mu=-0.62, iterations=6, preset="pymeshlab"), ref, V) <= TOL
-    ref = _pymeshlab(V, F, "apply_coord_hc_laplacian_smoothing", calls=4)
-    assert rel_err(tm.smooth.hc(V, F, iterations=4, preset="pymeshlab"), ref, V) <= TOL
+    assert smoothing_vs_pymeshlab(V, F, "taubin", lamb=0.6, mu=-0.62, iterations=6).relative <= TOL
+    assert smoothing_vs_pymeshlab(V, F, "hc", iterations=4).relative <= TOL
 
 
 def test_pymeshlab_cotangent_on_a_zero_area_face():
@@ -155,12 +114,11 @@ def test_pymeshlab_cotangent_on_a_zero_area_face():
     a, b = F[0, 0], F[0, 1]
     V = np.vstack([V, (V[a] + V[b]) / 2])  # a new vertex on the edge a-b ...
     F = np.vstack([F, [[a, b, len(V) - 1]]])  # ... and a zero-area face on it
-    ref = _pymeshlab(V, F, "apply_coord_laplacian_smoothing", stepsmoothnum=1, cotangentweight=True)
-    ours = tm.smooth.laplacian(V, F, iterations=1, preset="pymeshlab")
+    d = smoothing_vs_pymeshlab(V, F, "laplacian", iterations=1, weights="cotangent")
     touched = np.zeros(len(V), bool)
     touched[F[np.isin(F, F[-1]).any(axis=1)].ravel()] = True
-    assert rel_err(ours[~touched], ref[~touched], V) <= TOL
-    assert np.isfinite(ours).all()
+    assert d.distances[~touched].max() / d.diagonal <= TOL
+    assert np.isfinite(tm.smooth.laplacian(V, F, iterations=1, preset="pymeshlab")).all()
 
 
 def test_pymeshlab_cotangent_at_an_interior_collinear_face():
@@ -176,7 +134,6 @@ def test_pymeshlab_cotangent_at_an_interior_collinear_face():
     V[r] = V[p] + (V[q] - V[p]) * 0.25  # on the segment p-q exactly
     area = np.linalg.norm(np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]]), axis=1)
     assert area[60] == 0 and (area > 0).sum() == len(F) - 1
-    ref = _pymeshlab(V, F, "apply_coord_laplacian_smoothing")
+    assert smoothing_vs_pymeshlab(V, F).relative <= 1e-11
     ours = tm.smooth.laplacian(V, F, preset="pymeshlab")
-    assert rel_err(ours, ref, V) <= 1e-11
     assert np.abs(ours - V).max() > 1e-3  # it did smooth

@@ -20,3 +20,17 @@ def test_core_stubs_match_the_extension():
         text=True,
     )
     assert r.returncode == 0, r.stdout + r.stderr
+
+
+def test_the_testing_helpers_type_check_as_a_users_tests_see_them(tmp_path):
+    """toonmesh.testing and the pytest plugin are typed (py.typed): mypy --strict finds nothing."""
+    need("mypy")
+    package = Path(__file__).resolve().parent.parent / "python" / "toonmesh"
+    r = subprocess.run(
+        [sys.executable, "-m", "mypy", "--strict", "--follow-imports=silent", "--cache-dir", str(tmp_path),
+         str(package / "testing.py"), str(package / "pytest_plugin.py")],
+        capture_output=True,
+        text=True,
+        cwd=package.parent,
+    )
+    assert r.returncode == 0, r.stdout + r.stderr
