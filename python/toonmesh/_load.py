@@ -19,7 +19,7 @@ from typing import Any, Dict, List, Optional, Tuple, Type
 
 import numpy as np
 
-from toonmesh import _archives, _colors, _ply_strips
+from toonmesh import _archives, _colors, _core, _ply_strips
 from toonmesh._file_checks import (
     MeshFileError, asset_path, check_gltf_sizes, check_obj, check_ply, gltf_colour_notes, gltf_document,
     gltf_file_notes, gltf_ignored, obj_file_notes, obj_for_trimesh, ply_file_notes,
@@ -55,7 +55,8 @@ class Surface:
     ``uv`` (N, 2) float64 texture coordinates (origin bottom-left, as glTF after trimesh and
     OBJ); ``texture`` (H, W, 4) uint8 RGBA image (top row first); ``vertex_colors`` (N, 4) and
     ``face_colors`` (M, 4) uint8 RGBA; ``base_color`` (4,) float64 in [0, 1], the material's
-    colour factor (glTF baseColorFactor, MTL Kd) that multiplies texture and vertex colours;
+    colour (MTL Kd; a glTF baseColorFactor turned from linear light to sRGB, as drawn) that
+    multiplies texture and vertex colours;
     ``normals`` (N, 3) float64, the file's own vertex normals (read for ``keep_seams`` only).
     Any of them may be None: these are what ``toonmesh smooth`` writes back. ``colors``: the
     colour keywords of :class:`toonmesh.Mesh` that draw the geometry (its albedo, by the
@@ -425,10 +426,11 @@ def _visual_into(surface: Surface, visual: Any, ignored: List[str], materials: b
     if not materials:
         return
     factor = getattr(material, "baseColorFactor", None)
-    if factor is None and hasattr(material, "diffuse"):
-        factor = material.diffuse  # an MTL's Kd
-    if factor is not None:
+    if factor is not None:  # glTF's factor is linear light: the colour as drawn is sRGB
         surface.base_color = np.asarray(factor, dtype=np.float64).ravel()[:4] / 255.0
+        surface.base_color[:3] = _core._srgb_from_linear(np.ascontiguousarray(surface.base_color[:3]))
+    elif hasattr(material, "diffuse"):  # an MTL's Kd
+        surface.base_color = np.asarray(material.diffuse, dtype=np.float64).ravel()[:4] / 255.0
     image = getattr(material, "baseColorTexture", None)
     if image is None:
         image = getattr(material, "image", None)
