@@ -37,6 +37,16 @@ def write(path, text):
     return str(path)
 
 
+def triangle_ply(path, properties, values, comment=""):
+    """An ASCII PLY of one triangle whose vertices carry the float ``properties`` with
+    ``values`` (a row per vertex), and a header ``comment``."""
+    head = ["ply", "format ascii 1.0"] + ([f"comment {comment}"] if comment else []) + ["element vertex 3"]
+    head += [f"property float {name}" for name in ["x", "y", "z"] + properties]
+    head += ["element face 1", "property list uchar int vertex_indices", "end_header"]
+    rows = [" ".join(str(float(x)) for x in [*p, *v]) for p, v in zip([[0, 0, 0], [1, 0, 0], [0, 1, 0]], values)]
+    return write(path, "\n".join(head + rows + ["3 0 1 2"]) + "\n")
+
+
 def glb(path, V, F, colors=None, uri=None):
     """A one-triangle-list glTF by hand: float positions, uint32 indices and optional float
     COLOR_0, in a GLB or (with ``uri``) a .gltf whose buffer is the file ``uri``, not written."""
@@ -149,10 +159,7 @@ def test_a_missing_mtl_or_texture_is_named_with_the_path_tried(tmp_path):
     (m,), said = read(path)
     assert said == [] and "texture" in m.colors
     # a PLY's texture (comment TextureFile) and a glTF's image file
-    ply = ("ply\nformat ascii 1.0\ncomment TextureFile skin.png\nelement vertex 3\nproperty float x\nproperty float y\n"
-           "property float z\nproperty float s\nproperty float t\nelement face 1\n"
-           "property list uchar int vertex_indices\nend_header\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n3 0 1 2\n")
-    path = write(tmp_path / "skin.ply", ply)
+    path = triangle_ply(tmp_path / "skin.ply", ["s", "t"], [[0, 0], [1, 0], [0, 1]], "TextureFile skin.png")
     _, said = read(path)
     assert said == [f"{path}: texture {tmp_path / 'skin.png'} not found: not drawn"]
     path, binary = glb(tmp_path / "pic.gltf", [[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]], uri="pic.bin")
@@ -274,10 +281,7 @@ def test_colours_that_are_not_numbers_are_named(tmp_path):
     path = write(tmp_path / "c.obj", "v 0 0 0 1 0 0\nv 1 0 0 nan nan nan\nv 0 1 0 0 0 1\nf 1 2 3\n")
     (m,), said = read(path)
     assert said == [f"{path}: line 2: vertex 2's colour is not a number (nan nan nan): drawn black"]
-    ply = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-           "property float red\nproperty float green\nproperty float blue\nelement face 1\n"
-           "property list uchar int vertex_indices\nend_header\n0 0 0 1 0 0\n1 0 0 0 1 0\n0 1 0 nan 0 1\n3 0 1 2\n")
-    path = write(tmp_path / "c.ply", ply)
+    path = triangle_ply(tmp_path / "c.ply", ["red", "green", "blue"], [[1, 0, 0], [0, 1, 0], [np.nan, 0, 1]])
     _, said = read(path)
     assert said == [f"{path}: 1 vertex colours are not numbers (the first of vertex 3): drawn black"]
     path, _ = glb(tmp_path / "c.glb", [[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]],
