@@ -84,11 +84,11 @@ def check_writable(path: str, placed: int, source: str) -> None:
 def write_parts(path: str, parts: List[Part]) -> List[str]:
     """Writes the parts; the format follows the file name's suffix (.obj, .ply, .stl, .off,
     .glb, ...). Their texture coordinates, texture, material colour, vertex or face colours and
-    normals go along where the format holds them; a texture (and an OBJ's MTL) is written beside
-    the file, named after it (``OUT.png``, or ``OUT-2.png`` for the second part), so that two
-    results in one folder keep their own. A GLB holds several parts and keeps their placements;
-    the other formats hold one, written in world space. Returns what the format does not hold (and so
-    was not written), in words, for the caller's warning."""
+    normals go along where the format holds them; an OBJ's or PLY's texture (and an OBJ's MTL)
+    is written beside the file, named after it (``OUT.png``, ``OUT.mtl``), so that two results
+    in one folder keep their own. A GLB holds several parts (their textures inside it) and keeps
+    their placements; the other formats hold one, written in world space. Returns what the
+    format does not hold (and so was not written), in words, for the caller's warning."""
     trimesh = trimesh_module()
     suffix = os.path.splitext(path)[1].lower()
     stem = os.path.splitext(os.path.basename(path))[0]
@@ -199,7 +199,8 @@ def _visual(trimesh: Any, surface: Surface, suffix: str, name: str) -> Tuple[Any
     tinted = _material_colour(surface)
     if suffix == ".ply" and surface.texture is None and tinted and not colours:
         rgba = np.round(np.clip(surface.base_color, 0, 1) * 255).astype(np.uint8)  # drawn the same
-        return trimesh.visual.ColorVisuals(vertex_colors=np.tile(rgba, (len(surface.vertices), 1))), []
+        lost = [] if surface.uv is None else ["texture coordinates (a material colour is written as vertex colours)"]
+        return trimesh.visual.ColorVisuals(vertex_colors=np.tile(rgba, (len(surface.vertices), 1))), lost
     if surface.uv is not None or tinted:
         image = None
         if surface.texture is not None:
