@@ -64,7 +64,10 @@ def test_smooth_keeps_hard_edges_where_the_file_had_them(tmp_path, capsys):
     src, out = str(tmp_path / "cube.obj"), str(tmp_path / "cube-smooth.obj")
     src_text = trimesh.exchange.obj.export_obj(cube, include_normals=True, include_texture=False)
     Path(src).write_text(src_text)
-    in_process(capsys, "smooth", src, out, "--iterations", "2", "--boundary", "free")
+    # its edges smoothed too (a blob, and a warning says so): the normals still split where the file's did
+    r = in_process(capsys, "smooth", src, out, "--iterations", "2", "--boundary", "free", "--crease-angle", "180",
+                   check=False)
+    assert r.returncode == 0 and "smoothing moved a vertex" in r.stderr
     back = trimesh.load(out, process=False, maintain_order=False)
     assert np.array_equal(back.faces, cube.faces)
     n, file_normals = np.asarray(back.vertex_normals), np.asarray(cube.vertex_normals)
@@ -207,3 +210,197 @@ def test_render_hatches_a_coloured_file_in_either_mode(tmp_path, capsys):
         assert read_png(out).shape[:2] == (64, 64)
     bad = in_process(capsys, "render", path, "-o", out, "--hatch-mode", "triplanar", check=False)
     assert bad.returncode != 0 and "--hatch-mode" in bad.stderr
+
+
+# ------------------------------------------------------------------------------------------------
+# toonmesh smooth: what it writes, where, and how far it moves a CAD part
+
+
+def textured_obj(folder: Path, rgb, name: str = "in.obj") -> str:
+    """A box with UVs and a one-colour texture, as trimesh writes it: its texture named
+    material_0.png, as any two such files in two folders name theirs."""
+    trimesh, Image = need("trimesh"), need("PIL.Image")
+    folder.mkdir(parents=True, exist_ok=True)
+    m = trimesh.creation.box()
+    material = trimesh.visual.material.SimpleMaterial(image=Image.new("RGB", (4, 4), rgb))
+    m.visual = trimesh.visual.TextureVisuals(uv=np.random.default_rng(0).random((len(m.vertices), 2)), material=material)
+    m.export(str(folder / name))
+    assert (folder / "material_0.png").exists()
+    return str(folder / name)
+
+
+def drawn(path):
+    """(mean drawn RGB in [0, 1], the colour keywords) of each mesh tm.load gives: texture
+    (one colour here) times the colours the material colour is folded into, or the colours."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        meshes = tm.load(str(path))
+    out = []
+    for m in meshes:
+        rgb = np.ones(3)
+        for key in ("texture", "vertex_colors", "face_colors"):
+            if key in m.colors:
+                c = np.asarray(m.colors[key], dtype=np.float64).reshape(-1, np.shape(m.colors[key])[-1])[:, :3]
+                rgb = rgb * c.mean(axis=0) / (255.0 if np.asarray(m.colors[key]).dtype == np.uint8 else 1.0)
+        out.append((rgb, sorted(m.colors)))
+    return out
+
+
+def test_smooth_names_the_texture_after_the_output(tmp_path, capsys):
+    red = textured_obj(tmp_path / "red", (220, 20, 20))
+    blue = textured_obj(tmp_path / "blue", (20, 20, 220))
+    out = tmp_path / "out"
+    out.mkdir()
+    in_process(capsys, "smooth", red, "-o", str(out / "red.obj"))
+    in_process(capsys, "smooth", blue, "-o", str(out / "blue.obj"))  # the same folder: nothing overwritten
+    in_process(capsys, "smooth", red, "-o", str(out / "red.ply"))
+    in_process(capsys, "smooth", red, "-o", str(out / "red2.ply"))
+    assert sorted(p.name for p in out.iterdir()) == sorted(["blue.mtl", "blue.obj", "blue.png", "red.mtl", "red.obj",
+                                                             "red.png", "red.ply", "red2.ply", "red2.png"])
+    for name, rgb in (("red.obj", (220, 20, 20)), ("blue.obj", (20, 20, 220)), ("red.ply", (220, 20, 20))):
+        ((colour, keys),) = drawn(out / name)
+        assert keys == ["texture", "uv"] and np.allclose(colour * 255, rgb), (name, colour)
+    assert "comment TextureFile red2.png" in (out / "red2.ply").read_bytes()[:300].decode(errors="replace")
+
+
+def test_smooth_keeps_colours_uvs_and_materials_where_the_format_holds_them(tmp_path, capsys):
+    trimesh = need("trimesh")
+    sources = {"texture": textured_obj(tmp_path / "t", (40, 200, 60))}
+    (tmp_path / "kd.mtl").write_text("newmtl paint\nKd 0.8 0.3 0.1\n")  # a material colour, no texture
+    box = trimesh.creation.box()
+    text = trimesh.exchange.obj.export_obj(box, include_normals=False, include_texture=False, header=None)
+    (tmp_path / "kd.obj").write_text("mtllib kd.mtl\nusemtl paint\n" + text)
+    sources["MTL colour"] = str(tmp_path / "kd.obj")
+    pbr = box.copy()
+    pbr.visual = trimesh.visual.TextureVisuals(material=trimesh.visual.material.PBRMaterial(
+        baseColorFactor=[60, 120, 200, 255]))  # linear light
+    sources["glTF factor"] = str(tmp_path / "pbr.glb")
+    pbr.export(sources["glTF factor"])
+    for kind in ("vertex", "face"):
+        m = box.copy()
+        n = len(m.vertices) if kind == "vertex" else len(m.faces)
+        setattr(m.visual, f"{kind}_colors", np.tile([30, 90, 210, 255], (n, 1)).astype(np.uint8))
+        sources[f"{kind} colours"] = str(tmp_path / f"{kind}.ply")
+        m.export(sources[f"{kind} colours"])
+    # where the format holds it, each is drawn as before; where not, a warning names what is lost
+    holds_not = {".obj": {"face colours"}, ".stl": set(sources), ".off": set(sources)}
+    for what, src in sources.items():
+        ((before, _),) = drawn(src)
+        assert not np.allclose(before, 1.0), what  # each source has a colour of its own
+        for suffix in (".obj", ".ply", ".glb", ".stl", ".off"):
+            out = tmp_path / "out" / f"{what.replace(' ', '-')}{suffix}"
+            out.parent.mkdir(exist_ok=True)
+            r = in_process(capsys, "smooth", src, "-o", str(out), "--iterations", "1", check=False)
+            assert r.returncode == 0, r.stderr
+            ((after, _),) = drawn(out)
+            if what in holds_not.get(suffix, ()):
+                assert "warning" in r.stderr and "not written" in r.stderr, (what, suffix, r.stderr)
+                continue
+            assert r.stderr == "", (what, suffix, r.stderr)
+            np.testing.assert_allclose(after, before, atol=2.5 / 255, err_msg=f"{what} to {suffix}")
+
+
+def test_smooth_takes_a_glb_of_one_mesh_and_a_scene_part_by_part(tmp_path, capsys):
+    trimesh = need("trimesh")
+    from test_load import coloured_scene
+
+    # one mesh placed by a node: kept placed in a GLB, written where it is placed elsewhere
+    V, F = tm.shapes.icosphere(2, noise=0.02, seed=1)
+    one = trimesh.Scene()
+    place = trimesh.transformations.rotation_matrix(0.7, [0, 0, 1]) @ trimesh.transformations.translation_matrix([3, 0, 0])
+    one.add_geometry(trimesh.Trimesh(V, F, process=False), geom_name="ball", transform=place)
+    src = str(tmp_path / "one.glb")
+    one.export(src)
+    in_process(capsys, "smooth", src, "-o", str(tmp_path / "one-out.glb"), "--iterations", "3")
+    (m,) = tm.load(str(tmp_path / "one-out.glb"))
+    np.testing.assert_allclose(m.transform, place, atol=1e-6)
+    moved = np.linalg.norm(m.vertices - V, axis=1)
+    assert 1e-4 < moved.max() < 0.05  # smoothed, in its own frame
+    in_process(capsys, "smooth", src, "-o", str(tmp_path / "one-out.ply"), "--iterations", "3")
+    (w,) = tm.load(str(tmp_path / "one-out.ply"))
+    np.testing.assert_allclose(w.vertices, m.vertices @ place[:3, :3].T + place[:3, 3], atol=1e-5)
+    # a scene of several meshes (one of them placed twice): each part smoothed, colours and places kept
+    scene = coloured_scene(tmp_path / "scene.glb")
+    in_process(capsys, "smooth", scene, "-o", str(tmp_path / "scene-out.glb"))
+    before, after = tm.load(scene), tm.load(str(tmp_path / "scene-out.glb"))
+    key = lambda m: tuple(np.round(m.transform[:3, 3], 6))  # noqa: E731
+    assert sorted(map(key, before)) == sorted(map(key, after))
+    assert sorted(map(str, [k for _, k in drawn(scene)])) == sorted(map(str, [k for _, k in drawn(tmp_path / "scene-out.glb")]))
+    # parts apart from each other are smoothed as each alone would be, in its own frame
+    ball = trimesh.Trimesh(V, F, process=False)
+    V2, F2 = tm.shapes.icosphere(1, noise=0.05, seed=2)
+    two = trimesh.Scene()
+    two.add_geometry(ball, geom_name="ball", node_name="b1", transform=place)
+    two.graph.update(frame_to="b2", frame_from=two.graph.base_frame, geometry="ball",
+                     matrix=trimesh.transformations.translation_matrix([0, 5, 0]))
+    two.add_geometry(trimesh.Trimesh(V2, F2, process=False), geom_name="small", node_name="s",
+                     transform=trimesh.transformations.scale_matrix(2.0))
+    two.export(str(tmp_path / "two.glb"))
+    in_process(capsys, "smooth", str(tmp_path / "two.glb"), "-o", str(tmp_path / "two-out.glb"))
+    got = {len(m.vertices): m.vertices for m in tm.load(str(tmp_path / "two-out.glb"))}
+    for V0, F0 in ((V, F), (V2, F2)):
+        np.testing.assert_allclose(got[len(V0)], tm.smooth.taubin(V0, F0), atol=1e-6)  # a GLB holds float32
+    r = in_process(capsys, "smooth", scene, "-o", str(tmp_path / "scene.ply"), check=False)
+    assert r.returncode == 1
+    one_line_error(r, "scene.glb holds 3 placed meshes", "write a .glb", "scene.glb)")
+    assert not (tmp_path / "scene.ply").exists()
+
+
+def test_smooth_keeps_parts_that_share_an_edge_together(tmp_path, capsys):
+    """An OBJ of two materials is two meshes that share the vertices along their border:
+    smoothed together (welded), the border moves as one and does not open."""
+    V, F = tm.shapes.icosphere(2, noise=0.03, seed=4)
+    upper = V[F].mean(axis=1)[:, 1] > 0
+    lines = ["mtllib two.mtl"] + [f"v {x:.9f} {y:.9f} {z:.9f}" for x, y, z in V]
+    for name, chosen in (("a", upper), ("b", ~upper)):
+        lines += [f"usemtl {name}"] + [f"f {i + 1} {j + 1} {k + 1}" for i, j, k in F[chosen]]
+    (tmp_path / "two.obj").write_text("\n".join(lines) + "\n")
+    (tmp_path / "two.mtl").write_text("newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 0 1\n")
+    r = in_process(capsys, "smooth", str(tmp_path / "two.obj"), "-o", str(tmp_path / "two.glb"), "--iterations", "5")
+    assert "in 2 parts" in r.stdout
+    a, b = tm.load(str(tmp_path / "two.glb"))
+    points = lambda m: {tuple(p) for p in np.round(m.vertices[np.unique(m.faces)], 6)}  # noqa: E731
+    border = np.intersect1d(F[upper], F[~upper])
+    assert len(points(a) & points(b)) == len(border)  # every border vertex at one smoothed place in both parts
+    assert not points(a) & {tuple(p) for p in np.round(V[border], 6)}  # and the border moved
+
+
+def test_smooth_takes_o_as_the_other_commands_and_its_positional_form(tmp_path, capsys):
+    src = str(MESHES / "spot.obj")
+    in_process(capsys, "smooth", src, "-o", str(tmp_path / "a.ply"))
+    in_process(capsys, "smooth", src, str(tmp_path / "b.ply"))
+    assert (tmp_path / "a.ply").read_bytes() == (tmp_path / "b.ply").read_bytes()
+    one_line_error(in_process(capsys, "smooth", src, check=False), "-o", "missing")
+    one_line_error(in_process(capsys, "smooth", src, str(tmp_path / "c.ply"), "-o", str(tmp_path / "d.ply"), check=False),
+                   "-o", "twice")
+
+
+def cad_parts():
+    """Coarse CAD parts as an STL export holds them: few long triangles, flat faces, sharp edges."""
+    trimesh = need("trimesh")
+    yield "box", trimesh.creation.box((2.0, 1.0, 0.5))
+    yield "cylinder", trimesh.creation.cylinder(0.5, 2.0, sections=32)
+    yield "washer", trimesh.creation.annulus(0.3, 0.6, 0.4, sections=48)
+
+
+def test_the_default_smoothing_keeps_a_cad_part_and_a_large_move_is_named(tmp_path, capsys):
+    for name, part in cad_parts():
+        src = str(tmp_path / f"{name}.stl")
+        part.export(src)
+        r = in_process(capsys, "smooth", src, "-o", str(tmp_path / f"{name}-out.stl"))
+        share = float(re.search(r"\(([\d.]+)% of the bounding-box diagonal\)", r.stdout).group(1))
+        assert share < 0.5, (name, r.stdout)  # edges and corners kept: the part is the part
+        # the plain Laplacian across the creases rounds it into a blob: named in a warning
+        r = in_process(capsys, "smooth", src, "-o", str(tmp_path / f"{name}-blob.stl"), "--method", "laplacian",
+                       "--crease-angle", "180", check=False)
+        assert r.returncode == 0
+        assert re.search(r"warning: .*blob\.stl: smoothing moved a vertex [\d.]+% of the model's size", r.stderr), r.stderr
+    # a scan is smoothed as before, without a warning; a CAD part of many faces barely moves
+    for mesh, most in (("stanford-bunny", 1.0), ("fandisk", 1.0), ("rocker-arm", 2.0)):
+        r = in_process(capsys, "smooth", str(MESHES / f"{mesh}.obj"), "-o", str(tmp_path / f"{mesh}.ply"))
+        share = float(re.search(r"\(([\d.]+)% of the bounding-box diagonal\)", r.stdout).group(1))
+        assert 0.05 < share < most, (mesh, share)
+    one_line_error(in_process(capsys, "smooth", src, "-o", str(tmp_path / "x.stl"), "--crease-angle", "200",
+                              check=False), "--crease-angle", "180")

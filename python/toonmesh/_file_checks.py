@@ -8,12 +8,14 @@ broken file never renders with holes and exit status 0.
 
 from __future__ import annotations
 
+import base64
 import json
 import math
 import os
 import struct
 import warnings
-from typing import Any, Dict, List, Optional, Tuple
+from urllib.parse import unquote
+from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -26,17 +28,44 @@ class MeshFileError(ValueError):
 # OBJ
 
 
-def check_obj(path: str) -> Dict[str, Any]:
-    """Scans an OBJ's statements: every face has 3+ corners whose position, texture and normal
-    indices (1-based, or negative from the end of those listed so far) name existing entries, and
-    every ``v`` has 3 finite coordinates. Returns counts: ``vertices``, ``texcoords``, ``faces``
-    ``normals``, ``materials`` (distinct ``usemtl`` names) and ``libraries`` (``mtllib``
-    statements). Raises :class:`MeshFileError` naming the 1-based
-    line."""
-    with open(path, "rb") as f:
-        data = f.read()
+def check_obj(path: str, data: Optional[bytes] = None) -> Dict[str, Any]:
+    """Scans an OBJ's statements: every face has 3+ corners whose position indices (1-based, or
+    negative from the end of those listed so far) name existing vertices, and every ``v`` has 3
+    finite coordinates. Returns counts: ``vertices``, ``texcoords``, ``faces``, ``normals``,
+    ``materials`` (distinct ``usemtl`` names) and ``libraries`` (``mtllib`` statements); and
+    what the reader must know: ``negative`` (a face counts back from the entries so far),
+    ``drop`` (the index columns, ``b"vt"`` or ``b"vn"``, that name entries the file lacks: they
+    are left out, the positions kept) and ``notes`` (one line each about what is not read as
+    written: those columns, the first vertex whose colour is not a number). Raises
+    :class:`MeshFileError` naming the 1-based line. ``data``: the file's bytes, when read already."""
+    if data is None:
+        with open(path, "rb") as f:
+            data = f.read()
     counts = _obj_counts_at_once(data)
     return counts if counts is not None else _check_obj_by_line(path, data)
+
+
+_KINDS = (b"v", b"vt", b"vn")
+
+
+def _face_columns(path: str, number: int, lines: List[bytes], raw: bytes, words: List[bytes]) -> List[List[int]]:
+    """The indices of a face line, one list per kind (v, then vt and vn where written)."""
+    if len(words) < 4:
+        raise MeshFileError(_obj_where(path, number, lines, f"a face needs 3 or more corners, got {len(words) - 1}"))
+    # one list of indices per kind: v, or v/vt, v//vn, v/vt/vn
+    columns = [words[1:]] if b"/" not in raw else list(zip(*(c.split(b"/") for c in words[1:])))
+    try:
+        return [[int(t) for t in texts if t] for texts in columns]
+    except ValueError:
+        raise MeshFileError(_obj_where(path, number, lines, f"not an index in {raw.strip()[:60]!r}")) from None
+
+
+def _statements(lines: List[bytes]) -> Iterator[Tuple[int, bytes, List[bytes]]]:
+    """(1-based line number, line, words before any comment) of each non-empty line."""
+    for number, raw in enumerate(lines, start=1):
+        words = (raw.split(b"#", 1)[0] if b"#" in raw else raw).split()
+        if words:
+            yield number, raw, words
 
 
 def _check_obj_by_line(path: str, data: bytes) -> Dict[str, Any]:
@@ -46,43 +75,41 @@ def _check_obj_by_line(path: str, data: bytes) -> Dict[str, Any]:
     faces = 0
     materials = set()  # the names 'usemtl' switches to
     libraries = 0
-    kinds = (b"v", b"vt", b"vn")
-    largest = {k: (0, 0) for k in kinds}  # the largest positive index of each kind, and its line
+    negative = False
+    largest = {k: 0 for k in _KINDS}  # the largest positive index of each kind
+    absent: Dict[bytes, Tuple[int, int, int]] = {}  # kind -> (line, index, entries then) of the first miss
+    notes: List[str] = []
+    colour_noted = False
     lines = data.split(b"\n")
-    for number, raw in enumerate(lines, start=1):
-        words = (raw.split(b"#", 1)[0] if b"#" in raw else raw).split()
-        if not words:
-            continue
+    for number, raw, words in _statements(lines):
         head = words[0]
         if head == b"v":
             if len(words) < 4:
                 raise MeshFileError(_obj_where(path, number, lines, f"a vertex needs 3 coordinates, got {len(words) - 1}"))
             try:
-                x, y, z = float(words[1]), float(words[2]), float(words[3])
+                xyz = [float(w) for w in words[1:4]]
             except ValueError:
                 raise MeshFileError(_obj_where(path, number, lines, f"not a number in {raw.strip()[:60]!r}")) from None
             counts[b"v"] += 1
-            if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(z)):
-                raise MeshFileError(f"{path}: vertex {counts[b'v']} (line {number}) is not finite: {[x, y, z]}")
+            if not all(math.isfinite(x) for x in xyz):
+                raise MeshFileError(f"{path}: vertex {counts[b'v']} (line {number}) is not finite: {xyz}")
+            if len(words) > 4 and not colour_noted and not _finite_words(words[4:]):
+                colour_noted = True
+                notes.append(f"line {number}: vertex {counts[b'v']}'s colour is not a number "
+                             f"({b' '.join(words[4:]).decode(errors='replace')}): drawn black")
         elif head == b"f":
-            if len(words) < 4:
-                raise MeshFileError(_obj_where(path, number, lines, f"a face needs 3 or more corners, got {len(words) - 1}"))
-            # one list of indices per kind: v, or v/vt, v//vn, v/vt/vn
-            columns = [words[1:]] if b"/" not in raw else list(zip(*(c.split(b"/") for c in words[1:])))
-            for kind, texts in zip(kinds, columns):
-                try:
-                    ints = [int(t) for t in texts if t]
-                except ValueError:
-                    raise MeshFileError(_obj_where(path, number, lines, f"not an index in {raw.strip()[:60]!r}")) from None
+            for kind, ints in zip(_KINDS, _face_columns(path, number, lines, raw, words)):
                 if not ints:
                     continue
                 lo, hi, n = min(ints), max(ints), counts[kind]
+                negative = negative or lo < 0
                 if lo < -n or 0 in ints:  # negative: counted back from the entries so far
                     i = 0 if 0 in ints else lo
-                    raise MeshFileError(f"{path}: line {number}: face index {i} points past the {n} "
-                                        f"{_NAMES[kind]} listed before it")
-                if hi > largest[kind][0]:
-                    largest[kind] = (hi, number)
+                    if kind == b"v":
+                        raise MeshFileError(f"{path}: line {number}: face index {i} points past the {n} "
+                                            f"{_NAMES[kind]} listed before it")
+                    absent.setdefault(kind, (number, i, n))
+                largest[kind] = max(largest[kind], hi)
             faces += 1
         elif head == b"vt" or head == b"vn":
             counts[head] += 1
@@ -90,15 +117,68 @@ def _check_obj_by_line(path: str, data: bytes) -> Dict[str, Any]:
             materials.add(b" ".join(words[1:]))
         elif head == b"mtllib":
             libraries += 1
-    for kind, (i, number) in largest.items():
-        if i > counts[kind]:
-            raise MeshFileError(f"{path}: line {number}: face index {i} points past the {counts[kind]} "
-                                f"{_NAMES[kind]} in the file")
+    for kind in _KINDS:
+        if largest[kind] > counts[kind]:  # the first line past the entries in the whole file
+            number, i = _first_past(path, lines, kind, counts[kind])
+            if kind == b"v":
+                raise MeshFileError(f"{path}: line {number}: face index {i} points past the {counts[kind]} "
+                                    f"{_NAMES[kind]} in the file")
+            if kind not in absent or number < absent[kind][0]:
+                absent[kind] = (number, i, counts[kind])
+    for kind, (number, i, n) in sorted(absent.items(), key=lambda item: item[1][0]):
+        notes.append(f"line {number}: a face names {_ONE[kind]} {i}, of {n} listed: the file's {_NAMES[kind]} are "
+                     "not read (positions kept)")
     return {"vertices": counts[b"v"], "texcoords": counts[b"vt"], "normals": counts[b"vn"], "faces": faces,
-            "materials": len(materials), "libraries": libraries}
+            "materials": len(materials), "libraries": libraries, "negative": negative,
+            "drop": tuple(sorted(absent)), "notes": notes}
+
+
+def _finite_words(words: List[bytes]) -> bool:
+    try:
+        return all(math.isfinite(float(w)) for w in words)
+    except ValueError:
+        return True  # not numbers: not a colour trimesh reads
+
+
+def _first_past(path: str, lines: List[bytes], kind: bytes, count: int) -> Tuple[int, int]:
+    """(line, index) of the first face that names an entry of ``kind`` past the ``count`` in the file."""
+    column = _KINDS.index(kind)
+    for number, raw, words in _statements(lines):
+        if words[0] == b"f":
+            ints = _face_columns(path, number, lines, raw, words)
+            past = [i for i in (ints[column] if column < len(ints) else []) if i > count]
+            if past:
+                return number, past[0]
+    raise AssertionError("no face past the entries")  # pragma: no cover: called only when one is
+
+
+def obj_for_trimesh(data: bytes, drop: Sequence[bytes] = ()) -> bytes:
+    """An OBJ's text as trimesh reads it right: each face's negative indices written as the
+    positive ones they mean (counted back from the entries listed before the face; trimesh
+    counts from the end of the file, or fails) and the index columns of the kinds in ``drop``
+    (``b"vt"``, ``b"vn"``) left out. Other lines are kept as they are."""
+    counts = {k: 0 for k in _KINDS}
+    out = []
+    for raw in data.split(b"\n"):
+        words = (raw.split(b"#", 1)[0] if b"#" in raw else raw).split()
+        if words and words[0] in counts:
+            counts[words[0]] += 1
+        elif words and words[0] == b"f":
+            corners = []
+            for corner in words[1:]:
+                parts = corner.split(b"/") + [b"", b""]
+                fixed = [b"" if not text or kind in drop else
+                         (b"%d" % (int(text) + counts[kind] + 1) if text.startswith(b"-") else text)
+                         for kind, text in zip(_KINDS, parts)]
+                corners.append(fixed[0] + (b"/" + fixed[1] + b"/" + fixed[2] if fixed[2] else
+                                           b"/" + fixed[1] if fixed[1] else b""))
+            raw = b"f " + b" ".join(corners)
+        out.append(raw)
+    return b"\n".join(out)
 
 
 _NAMES = {b"v": "vertices", b"vt": "texture coordinates", b"vn": "normals"}
+_ONE = {b"vt": "texture coordinate", b"vn": "normal"}
 
 #: The bytes that ``bytes.split()`` splits at.
 _BLANK = np.zeros(256, bool)
@@ -140,8 +220,9 @@ def _obj_counts_at_once(data: bytes) -> Optional[Dict[str, Any]]:
     if np.any(numbers < 3):
         return None
     xyz = _numbers_of_lines(raw, line_bytes, v, word_starts[first_word[v]], float, numbers)
-    if xyz is None or not np.all(np.isfinite(xyz[(np.cumsum(numbers) - numbers)[:, None] + np.arange(3)])):
+    if xyz is None or not np.all(np.isfinite(xyz)):  # colours too: the line scan names the first
         return None
+    negative = False
     # faces: 3 or more corners, all written one way (v, v/vt, v//vn or v/vt/vn)
     corners = per_line[faces] - 1
     if np.any(corners < 3):
@@ -172,6 +253,7 @@ def _obj_counts_at_once(data: bytes) -> Optional[Dict[str, Any]]:
             i = index[:, column]
             if np.any(i == 0) or np.any(i < -before) or i.max() > len(listed[name]):
                 return None
+            negative = negative or bool(np.any(i < 0))
     # materials and libraries: a few lines, read as the line scan reads them
     bounds = np.concatenate([[-1], newlines, [len(data)]])
     materials = set()
@@ -183,7 +265,8 @@ def _obj_counts_at_once(data: bytes) -> Optional[Dict[str, Any]]:
         elif words[0] == b"mtllib":
             libraries += 1
     return {"vertices": len(v), "texcoords": len(listed[b"vt"]), "normals": len(listed[b"vn"]),
-            "faces": len(faces), "materials": len(materials), "libraries": libraries}
+            "faces": len(faces), "materials": len(materials), "libraries": libraries, "negative": negative,
+            "drop": (), "notes": []}
 
 
 def _numbers_of_lines(raw: np.ndarray, line_bytes: np.ndarray, lines: np.ndarray, keywords: np.ndarray, dtype: Any,
@@ -210,6 +293,113 @@ def _numbers_of_lines(raw: np.ndarray, line_bytes: np.ndarray, lines: np.ndarray
 def _obj_where(path: str, number: int, lines: List[bytes], problem: str) -> str:
     cut = number == len(lines) and lines[-1].strip() != b""  # the last line, with no line end
     return f"{path}: line {number}: {problem}" + (" (the file ends mid-line: cut off?)" if cut else "")
+
+
+# ------------------------------------------------------------------------------------------------
+# Files a mesh file names: MTL files, texture images, glTF buffers
+
+
+def asset_path(folder: str, name: str) -> Optional[str]:
+    """The file ``name`` beside a mesh file in ``folder``, found as trimesh's resolver finds it
+    (the name, then without a leading ``/``, then its last part; percent-escapes decoded too),
+    inside that folder; None where there is none."""
+    root = os.path.realpath(folder)
+    names = (name, unquote(name))
+    for candidate in dict.fromkeys(c for n in names for c in (n.strip(), n.strip().lstrip("/"), os.path.basename(n))):
+        if not candidate:
+            continue
+        full = os.path.realpath(os.path.join(root, candidate))
+        if full.startswith(root + os.sep) and os.path.isfile(full):
+            return full
+    return None
+
+
+def _image_notes(folder: str, name: str, what: str) -> List[str]:
+    """A note when the image ``name`` is not beside the file or cannot be decoded."""
+    found = asset_path(folder, name)
+    if found is None:
+        return [f"{what} {os.path.join(folder, name.strip())} not found: not drawn"]
+    try:
+        from PIL import Image
+    except ImportError:  # trimesh reads no image either; nothing to check it with
+        return []
+    try:
+        with Image.open(found) as image:
+            image.size
+    except Exception as exc:  # PIL raises several kinds for what it cannot decode
+        return [f"{what} {found} cannot be read as an image ({_one_line(exc)}): not drawn"]
+    return []
+
+
+def obj_file_notes(path: str, data: bytes) -> List[str]:
+    """Notes on the files an OBJ (its bytes ``data``) names, as trimesh reads them (the first
+    ``mtllib``; each ``map_Kd`` of that MTL): one not found (the path tried) or not an image,
+    and an MTL colour ``Kd`` that is not a number (drawn black)."""
+    at = data.find(b"mtllib")
+    if at < 0:
+        return []
+    end = data.find(b"\n", at)
+    name = data[at + 6 : end if end >= 0 else len(data)].strip().decode(errors="replace")
+    folder = os.path.dirname(os.path.abspath(path))
+    found = asset_path(folder, name)
+    if found is None:
+        return [f"MTL file {os.path.join(folder, name)} not found: its materials (colours, textures) are not drawn"]
+    with open(found, "rb") as f:
+        text = f.read().decode(errors="replace")
+    notes: List[str] = []
+    material = ""
+    for line in text.splitlines():
+        words = line.strip().split()
+        key = words[0].lower() if len(words) > 1 else ""
+        if key == "newmtl":
+            material = " ".join(words[1:])
+        elif key == "map_kd":
+            texture = line[line.lower().index("map_kd") + 6 :].strip()
+            notes += _image_notes(folder, texture, f"texture of material {material!r}")
+        elif key == "kd" and not _finite_words([w.encode() for w in words[1:]]):
+            notes.append(f"{found}: material {material!r}: Kd {' '.join(words[1:])} is not a colour: drawn black")
+    return notes
+
+
+def ply_file_notes(path: str) -> List[str]:
+    """A note when the texture a PLY names (``comment TextureFile NAME``, as trimesh reads it)
+    is not beside it or not an image."""
+    with open(path, "rb") as f:
+        head = f.read(65536)
+    end = head.find(b"end_header")
+    for raw in head[: end if end >= 0 else len(head)].split(b"\n"):
+        text = raw.decode(errors="replace").strip()
+        at = text.lower().find("texturefile")
+        if at >= 0:
+            return _image_notes(os.path.dirname(os.path.abspath(path)), text[at + 11 :].strip(), "texture")
+    return []
+
+
+def gltf_file_notes(path: str, doc: Dict[str, Any]) -> List[str]:
+    """Refuses a glTF whose buffer file is not there, or shorter than it claims (naming the
+    path tried); notes on images named by file that are not there or not images."""
+    folder = os.path.dirname(os.path.abspath(path))
+    for i, buffer in enumerate(doc.get("buffers") or []):
+        uri = buffer.get("uri")
+        if not isinstance(uri, str) or "base64," in uri:
+            continue
+        found = asset_path(folder, uri)
+        if found is None:
+            raise MeshFileError(f"{path}: buffer {i} is read from {os.path.join(folder, uri)}, which is not there")
+        size, claimed = os.path.getsize(found), int(buffer.get("byteLength", 0))
+        if size < claimed:
+            raise MeshFileError(f"{path}: buffer {i} ({found}) holds {size:,} bytes but the glTF claims {claimed:,}: "
+                                "truncated or corrupt")
+    notes: List[str] = []
+    for i, image in enumerate(doc.get("images") or []):
+        uri = image.get("uri")
+        if isinstance(uri, str) and "base64," not in uri:
+            notes += _image_notes(folder, uri, f"image {i}")
+    return notes
+
+
+def _one_line(exc: BaseException) -> str:
+    return " ".join(str(exc).split()) or type(exc).__name__
 
 
 # ------------------------------------------------------------------------------------------------
@@ -372,6 +562,62 @@ def check_gltf_sizes(path: str, doc: Dict[str, Any]) -> None:
         if need > int(views[v].get("byteLength", 0)):
             raise MeshFileError(f"{path}: accessor {i} claims {count:,} elements ({need:,} bytes) but its buffer "
                                 f"view holds {int(views[v].get('byteLength', 0)):,} bytes")
+
+
+def gltf_colour_notes(path: str, doc: Dict[str, Any]) -> List[str]:
+    """A note per primitive whose float vertex colours (``COLOR_0``) hold values that are not
+    numbers: trimesh turns them into black, silently."""
+    notes: List[str] = []
+    buffers: Dict[int, Optional[bytes]] = {}
+    for m, mesh in enumerate(doc.get("meshes") or []):
+        for p, primitive in enumerate(mesh.get("primitives") or []):
+            values = _float_accessor(path, doc, (primitive.get("attributes") or {}).get("COLOR_0"), buffers)
+            bad = np.zeros(0, np.int64) if values is None else np.flatnonzero(~np.isfinite(values).all(axis=1))
+            if len(bad):
+                name = f" ({mesh['name']})" if mesh.get("name") else ""
+                notes.append(f"mesh {m}{name} primitive {p}: {len(bad):,} vertex colours are not numbers "
+                             f"(the first of vertex {bad[0] + 1}): drawn black")
+    return notes
+
+
+def _float_accessor(path: str, doc: Dict[str, Any], index: Any, buffers: Dict[int, Optional[bytes]]
+                    ) -> Optional[np.ndarray]:
+    """The (count, components) values of a float accessor, or None (not one, or not readable:
+    trimesh then says why)."""
+    try:
+        accessor = doc["accessors"][index]
+        if accessor.get("componentType") != 5126 or "bufferView" not in accessor or "sparse" in accessor:
+            return None
+        view = doc["bufferViews"][accessor["bufferView"]]
+        b = int(view.get("buffer", 0))
+        if b not in buffers:
+            buffers[b] = _gltf_buffer(path, doc, b)
+        data = buffers[b]
+        n = _COMPONENTS[accessor["type"]]
+        stride = int(view.get("byteStride", 0)) or 4 * n
+        offset = int(view.get("byteOffset", 0)) + int(accessor.get("byteOffset", 0))
+        if data is None:
+            return None
+        return np.ndarray((int(accessor["count"]), n), "<f4", data, offset, (stride, 4))
+    except (LookupError, TypeError, ValueError):
+        return None
+
+
+def _gltf_buffer(path: str, doc: Dict[str, Any], index: int) -> Optional[bytes]:
+    """The bytes of buffer ``index``: a GLB's binary chunk, a base64 data URI, or the file."""
+    uri = doc["buffers"][index].get("uri")
+    if uri is None:
+        with open(path, "rb") as f:
+            data = f.read()
+        start = 28 + struct.unpack("<I", data[12:16])[0]
+        return data[start:]
+    if "base64," in uri:
+        return base64.b64decode(uri[uri.index("base64,") + 7 :])
+    found = asset_path(os.path.dirname(os.path.abspath(path)), uri)
+    if found is None:
+        return None
+    with open(found, "rb") as f:
+        return f.read()
 
 
 def gltf_ignored(doc: Dict[str, Any]) -> List[str]:

@@ -7,7 +7,9 @@ outputs (normal, depth) are asked for, as NPZ with every output array and the ca
 
 from __future__ import annotations
 
+import io
 import os
+from dataclasses import dataclass
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
@@ -42,35 +44,128 @@ def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
     return np.concatenate(Vs), np.concatenate(Fs)
 
 
-def write_mesh(path: str, vertices: np.ndarray, faces: np.ndarray, surface: Optional[Surface] = None,
-               normals: Optional[np.ndarray] = None) -> None:
-    """Writes a triangle mesh; the format follows the file name's suffix (.obj, .ply, .stl,
-    .off, .glb, ...). With ``surface``, its texture coordinates, texture, base colour and vertex
-    or face colours go along (where the format holds them; an OBJ's texture and MTL are written
-    beside it); ``normals`` (N, 3) are written where the format holds vertex normals."""
+#: The format that holds several meshes and their placements (node transforms, one geometry
+#: placed several times); the others hold one mesh, written in world space.
+SCENE = ".glb"
+
+#: What each format holds of a surface besides positions and triangles, as trimesh writes it
+#: (a PLY holds a material colour as vertex colours, when it has no texture).
+_HOLDS = {
+    ".glb": {"texture coordinates", "texture", "material colour", "vertex colours", "face colours", "normals"},
+    ".obj": {"texture coordinates", "texture", "material colour", "vertex colours", "normals"},
+    ".ply": {"texture coordinates", "texture", "material colour", "vertex colours", "face colours", "normals"},
+    ".off": set(),
+    ".stl": set(),
+}
+
+
+@dataclass
+class Part:
+    """One geometry to write: ``surface`` (its faces, colours, UVs, texture, material colour),
+    its ``vertices`` (N, 3) in its own frame, ``normals`` (N, 3) or None, and the world
+    ``transforms`` (4x4, or None for none) where the file places it."""
+
+    surface: Surface
+    vertices: np.ndarray
+    normals: Optional[np.ndarray]
+    transforms: List[Optional[np.ndarray]]
+
+
+def check_writable(path: str, placed: int, source: str) -> None:
+    """Refuses, before any work, to write ``placed`` meshes of ``source`` into a format that
+    holds one, saying which formats keep them."""
+    suffix = os.path.splitext(path)[1].lower()
+    if placed > 1 and suffix != SCENE:
+        raise ValueError(f"{source} holds {placed} placed meshes and a {suffix or 'file without suffix'} file, as "
+                         f"written here, one: write a {SCENE}, which keeps each mesh, its colours and its place "
+                         f"(-o {os.path.splitext(path)[0]}{SCENE})")
+
+
+def write_parts(path: str, parts: List[Part]) -> List[str]:
+    """Writes the parts; the format follows the file name's suffix (.obj, .ply, .stl, .off,
+    .glb, ...). Their texture coordinates, texture, material colour, vertex or face colours and
+    normals go along where the format holds them; an OBJ's or PLY's texture (and an OBJ's MTL)
+    is written beside the file, named after it (``OUT.png``, ``OUT.mtl``), so that two results
+    in one folder keep their own. A GLB holds several parts (their textures inside it) and keeps
+    their placements; the other formats hold one, written in world space. Returns what the
+    format does not hold (and so was not written), in words, for the caller's warning."""
     trimesh = trimesh_module()
-    suffix = os.path.splitext(path)[1].lower().lstrip(".")
-    mesh = trimesh.Trimesh(np.asarray(vertices), np.asarray(faces), process=False,
-                           vertex_normals=normals)
-    visual = None if surface is None else _visual(trimesh, surface)
-    if visual is not None:
-        mesh.visual = visual
+    suffix = os.path.splitext(path)[1].lower()
+    stem = os.path.splitext(os.path.basename(path))[0]
+    folder = os.path.dirname(os.path.abspath(path))
+    check_writable(path, sum(len(p.transforms) for p in parts), path)
+    lost: List[str] = []
+    meshes = []
+    for k, part in enumerate(parts):
+        name = stem if len(parts) == 1 else f"{stem}-{k + 1}"
+        mesh = trimesh.Trimesh(np.asarray(part.vertices), np.asarray(part.surface.faces), process=False,
+                               vertex_normals=part.normals)
+        visual, dropped = _visual(trimesh, part.surface, suffix, name)
+        if visual is not None:
+            mesh.visual = visual
+        lost += dropped + [w for w in _carried(part) if w not in _HOLDS.get(suffix, set())]
+        meshes.append((name, mesh, part))
+    beside: Dict[str, bytes] = {}
     try:
-        if suffix == "obj":  # its MTL and texture go beside it, named after it
-            stem = os.path.splitext(os.path.basename(path))[0]
-            text, beside = trimesh.exchange.obj.export_obj(
-                mesh, include_normals=normals is not None, include_texture=visual is not None,
-                return_texture=True, mtl_name=stem + ".mtl", header=None)
-            for name, data in beside.items():
-                with open(os.path.join(os.path.dirname(os.path.abspath(path)), name), "wb") as f:
-                    f.write(data)
-            data = text
-        else:
-            data = mesh.export(file_type=suffix)
+        if suffix == SCENE:
+            scene = trimesh.Scene()
+            for name, mesh, part in meshes:
+                for i, transform in enumerate(part.transforms):
+                    scene.add_geometry(mesh, geom_name=name, node_name=f"{name}-{i + 1}", transform=transform)
+            data = scene.export(file_type=suffix[1:])
+        else:  # one mesh, where it is placed
+            (_, mesh, part), = meshes
+            mesh = _placed_copy(mesh, part.transforms[0])
+            if suffix == ".obj":  # its MTL and texture go beside it, named after it
+                data, beside = trimesh.exchange.obj.export_obj(
+                    mesh, include_normals=part.normals is not None, include_texture=mesh.visual.kind == "texture",
+                    return_texture=True, mtl_name=stem + ".mtl", header=None)
+            else:
+                data = mesh.export(file_type=suffix[1:])
+                if suffix == ".ply" and part.surface.texture is not None and mesh.visual.kind == "texture":
+                    data, beside = _ply_with_texture(data, stem, part.surface.texture)
     except Exception as exc:
         raise ValueError(f"{path}: cannot write this format ({_one_line(exc)})") from None
+    for name, blob in beside.items():
+        with open(os.path.join(folder, name), "wb") as f:
+            f.write(blob)
     with open(path, "wb") as f:
         f.write(data if isinstance(data, bytes) else data.encode())
+    return list(dict.fromkeys(lost))
+
+
+def _placed_copy(mesh: Any, transform: Optional[np.ndarray]) -> Any:
+    """``mesh`` in world space (its normals turned with it), or itself for no transform."""
+    if transform is None or np.array_equal(transform, np.eye(4)):
+        return mesh
+    return mesh.copy().apply_transform(transform)
+
+
+def _carried(part: Part) -> List[str]:
+    """What a part carries besides positions and triangles, in the words of the warning."""
+    s = part.surface
+    return [what for what, there in (
+        ("texture coordinates", s.uv is not None), ("texture", s.texture is not None),
+        ("material colour", _material_colour(s)), ("vertex colours", s.vertex_colors is not None),
+        ("face colours", s.face_colors is not None), ("normals", part.normals is not None)) if there]
+
+
+def _material_colour(surface: Surface) -> bool:
+    """Whether the surface's material colour changes how it is drawn: the renderer's rule folds
+    it into the colours (white, trimesh's default and an OBJ's Kd under a texture it does not)."""
+    return surface.base_color is not None and surface.vertex_colors is None and "vertex_colors" in surface.colors
+
+
+def _ply_with_texture(data: bytes, stem: str, texture: np.ndarray) -> Tuple[bytes, Dict[str, bytes]]:
+    """A PLY naming its texture as MeshLab and trimesh read it (``comment TextureFile``), and
+    the texture as PNG bytes, named after the file."""
+    from PIL import Image
+
+    name = stem + ".png"
+    at = data.index(b"\n", data.index(b"format")) + 1
+    png = io.BytesIO()
+    Image.fromarray(texture).save(png, format="PNG")
+    return data[:at] + f"comment TextureFile {name}\n".encode() + data[at:], {name: png.getvalue()}
 
 
 def seam_normals(vertices: np.ndarray, faces: np.ndarray, before: np.ndarray) -> np.ndarray:
@@ -94,22 +189,49 @@ def seam_normals(vertices: np.ndarray, faces: np.ndarray, before: np.ndarray) ->
     return np.where(length > 0, out / np.where(length > 0, length, 1), before)
 
 
-def _visual(trimesh: Any, surface: Surface) -> Any:
-    """A trimesh visual holding a Surface's UVs and texture, or its colours."""
-    if surface.uv is not None:
-        from PIL import Image
+def _visual(trimesh: Any, surface: Surface, suffix: str, name: str) -> Tuple[Any, List[str]]:
+    """A trimesh visual holding a Surface's UVs, texture and material colour (a material named
+    ``name``: an OBJ's texture is written as ``name.png``), or its colours; and what it leaves
+    out (a visual holds a material or colours, not both). A GLB's material colour is written
+    as glTF's linear factor; a PLY's, without a texture, as vertex colours."""
+    colours = [w for w, c in (("vertex colours", surface.vertex_colors), ("face colours", surface.face_colors))
+               if c is not None]
+    tinted = _material_colour(surface)
+    if suffix == ".ply" and surface.texture is None and tinted and not colours:
+        rgba = np.round(np.clip(surface.base_color, 0, 1) * 255).astype(np.uint8)  # drawn the same
+        lost = [] if surface.uv is None else ["texture coordinates (a material colour is written as vertex colours)"]
+        return trimesh.visual.ColorVisuals(vertex_colors=np.tile(rgba, (len(surface.vertices), 1))), lost
+    if surface.uv is not None or tinted:
+        image = None
+        if surface.texture is not None:
+            from PIL import Image
 
-        image = None if surface.texture is None else Image.fromarray(surface.texture)
-        kw: Dict[str, Any] = {}
-        if surface.base_color is not None:
-            kw["diffuse"] = np.round(surface.base_color * 255).astype(np.uint8)
-        material = trimesh.visual.material.SimpleMaterial(image=image, **kw)
-        return trimesh.visual.TextureVisuals(uv=surface.uv, material=material)
+            image = Image.fromarray(surface.texture)
+        colour = None if surface.base_color is None else np.clip(surface.base_color, 0, 1)
+        if suffix == SCENE:  # a factor multiplies the texture in glTF: written only where it is drawn
+            factor = None if not tinted else np.concatenate([linear_from_srgb(colour[:3]), colour[3:]])
+            material = trimesh.visual.material.PBRMaterial(
+                name=name, baseColorTexture=image,
+                baseColorFactor=None if factor is None else np.round(factor * 255).astype(np.uint8))
+        else:
+            kw: Dict[str, Any] = {}
+            if colour is not None:
+                kw["diffuse"] = np.round(colour * 255).astype(np.uint8)
+            material = trimesh.visual.material.SimpleMaterial(image=image, name=name, **kw)
+        lost = colours + (["material colour"] if suffix == ".ply" and tinted else [])  # PLY: no materials
+        return trimesh.visual.TextureVisuals(uv=surface.uv, material=material), lost
     if surface.vertex_colors is not None:
-        return trimesh.visual.ColorVisuals(vertex_colors=surface.vertex_colors)
+        return trimesh.visual.ColorVisuals(vertex_colors=surface.vertex_colors), colours[1:]
     if surface.face_colors is not None:
-        return trimesh.visual.ColorVisuals(face_colors=surface.face_colors)
-    return None
+        return trimesh.visual.ColorVisuals(face_colors=surface.face_colors), []
+    return None, []
+
+
+def linear_from_srgb(values: np.ndarray) -> np.ndarray:
+    """sRGB values in [0, 1] as linear light (the inverse of the renderer's
+    ``_core._srgb_from_linear``): glTF's base colour factor is linear."""
+    v = np.asarray(values, dtype=np.float64)
+    return np.where(v <= 0.04045, v / 12.92, ((v + 0.055) / 1.055) ** 2.4)
 
 
 def image_suffix(outputs: Sequence[str]) -> str:

@@ -11,17 +11,18 @@ record first; :func:`_mesh_of` is the one place that turns it into a :class:`too
 from __future__ import annotations
 
 import copy
-
+import io
 import os
 import warnings
 from dataclasses import dataclass, field
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, List, Optional, Tuple, Type
 
 import numpy as np
 
-from toonmesh import _colors, _ply_strips
+from toonmesh import _archives, _colors, _core, _ply_strips
 from toonmesh._file_checks import (
-    MeshFileError, check_gltf_sizes, check_obj, check_ply, gltf_document, gltf_ignored,
+    MeshFileError, asset_path, check_gltf_sizes, check_obj, check_ply, gltf_colour_notes, gltf_document,
+    gltf_file_notes, gltf_ignored, obj_file_notes, obj_for_trimesh, ply_file_notes,
 )
 from toonmesh._scene import Mesh
 
@@ -29,6 +30,10 @@ from toonmesh._scene import Mesh
 MAX_INSTANCES = 65_536
 #: The most distinct materials (and so textures) one file or scene may use.
 MAX_MATERIALS = 1_024
+
+#: A mesh whose area is at most this share of its bounding-box diagonal squared has none (its
+#: faces are lines or points, up to rounding): named in a warning, as it draws nothing.
+ZERO_AREA = 1e-12
 
 _TRIMESH_HINT = "reading mesh files needs trimesh: pip install 'toonmesh[io]'"
 
@@ -50,7 +55,8 @@ class Surface:
     ``uv`` (N, 2) float64 texture coordinates (origin bottom-left, as glTF after trimesh and
     OBJ); ``texture`` (H, W, 4) uint8 RGBA image (top row first); ``vertex_colors`` (N, 4) and
     ``face_colors`` (M, 4) uint8 RGBA; ``base_color`` (4,) float64 in [0, 1], the material's
-    colour factor (glTF baseColorFactor, MTL Kd) that multiplies texture and vertex colours;
+    colour (MTL Kd; a glTF baseColorFactor turned from linear light to sRGB, as drawn) that
+    multiplies texture and vertex colours;
     ``normals`` (N, 3) float64, the file's own vertex normals (read for ``keep_seams`` only).
     Any of them may be None: these are what ``toonmesh smooth`` writes back. ``colors``: the
     colour keywords of :class:`toonmesh.Mesh` that draw the geometry (its albedo, by the
@@ -85,9 +91,14 @@ def load(path: "str | os.PathLike[str]") -> List[Mesh]:
     them once.
     Vertices are kept as the file lists them (no merging or cleanup), except that an OBJ with a
     texture is split where its texture coordinates change (a vertex gets one UV) and an STL's
-    corners are merged by position. What the file holds and toonmesh does not draw (cameras,
-    lights, animations, normal, emissive and metallic-roughness maps, ...) is named in one
-    warning.
+    corners are merged by position. A zip or tar archive, or a file compressed as ``.gz``,
+    ``.bz2`` or ``.xz``, is unpacked and each mesh file in it read as the plain file. What the
+    file holds and toonmesh does not draw (cameras, lights, animations, normal, emissive and
+    metallic-roughness maps, ...) is named in one warning; so is, each in one warning, what is
+    read other than written: OBJ faces naming texture coordinates or normals the file lacks
+    (their positions kept; the first such line), an MTL file or texture image that is not there
+    (the path tried), colours that are not numbers (drawn black), a mesh without area. Warnings
+    raised while reading (trimesh's, NumPy's) name the file.
 
     Args:
         path: the file (str or os.PathLike).
@@ -101,8 +112,9 @@ def load(path: "str | os.PathLike[str]") -> List[Mesh]:
         ImportError: trimesh is not installed.
         ValueError: the file cannot be read as triangles, naming the file and what is wrong
             (1-based line numbers in OBJ, 1-based vertices when not finite, element counts in
-            PLY); or it places more than :data:`MAX_INSTANCES` meshes or uses more than
-            :data:`MAX_MATERIALS` materials.
+            PLY, a glTF buffer file that is not there with the path tried); or it places more
+            than :data:`MAX_INSTANCES` meshes or uses more than :data:`MAX_MATERIALS`
+            materials.
     """
     return [_mesh_of(s, t) for s, t in read_surfaces(path)]
 
@@ -110,11 +122,33 @@ def load(path: "str | os.PathLike[str]") -> List[Mesh]:
 def read_surfaces(path: Any, *, keep_seams: bool = False) -> List[Tuple[Surface, Optional[np.ndarray]]]:
     """(surface, world transform or None) per placed geometry of a file; see :func:`load`.
     ``keep_seams``: read an OBJ with texture coordinates or normals split per corner (each
-    vertex one UV and one normal), as the file means them, even without a texture."""
+    vertex one UV and one normal), as the file means them, even without a texture. Warnings
+    raised while reading (toonmesh's, trimesh's, NumPy's) are given again naming the file."""
     path = _path(path)
+    notes: List[Tuple[str, Type[Warning]]] = []
+    if _archives.kind(path):
+        placed = _read_archive(path, keep_seams, notes)
+    else:
+        placed = _read_file(path, path, keep_seams, notes)
+    for text, category in dict.fromkeys(notes):
+        warnings.warn(text, category, stacklevel=3)
+    return placed
+
+
+def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, Type[Warning]]],
+               ) -> List[Tuple[Surface, Optional[np.ndarray]]]:
+    """:func:`read_surfaces` of one plain file; its warnings go to ``notes`` and its errors and
+    notes name it ``shown`` (a file in an archive: ``ARCHIVE:NAME``)."""
     ignored: List[str] = []
-    scene, materials = _read(path, keep_seams, ignored)
-    placed = _placed(scene, path, ignored, materials)
+    said: List[str] = []
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            scene, materials = _read(path, keep_seams, ignored, said)
+            placed = _placed(scene, path, ignored, materials)
+    except MeshFileError as exc:
+        if shown == path:
+            raise
+        raise MeshFileError(str(exc).replace(path, shown)) from None
     if keep_seams:
         for surface, _ in placed:
             geom = _geometries(scene).get(surface.name)
@@ -122,8 +156,28 @@ def read_surfaces(path: Any, *, keep_seams: bool = False) -> List[Tuple[Surface,
             given = cache["vertex_normals"] if cache is not None and "vertex_normals" in cache else None
             if given is not None and len(given) == len(surface.vertices):
                 surface.normals = np.asarray(given, dtype=np.float64)
+    for text in said:
+        notes.append((f"{shown}: {text}", UserWarning))
+    for w in caught:
+        text = str(w.message).replace(path, shown)
+        notes.append((text if text.startswith(shown) else f"{shown}: {text}", w.category))
     if ignored:
-        warnings.warn(f"{path}: not drawn: {', '.join(dict.fromkeys(ignored))}", stacklevel=3)
+        notes.append((f"{shown}: not drawn: {', '.join(dict.fromkeys(ignored))}", UserWarning))
+    return placed
+
+
+def _read_archive(path: str, keep_seams: bool, notes: List[Tuple[str, Type[Warning]]],
+                  ) -> List[Tuple[Surface, Optional[np.ndarray]]]:
+    """Every mesh file in a zip or tar archive or compressed file, each read as the plain file."""
+    formats = set(trimesh_module().available_formats())
+    placed: List[Tuple[Surface, Optional[np.ndarray]]] = []
+    with _archives.unpacked(path) as (folder, names):
+        meshes = [n for n in names if not _archives.kind(n) and os.path.splitext(n)[1].lower().lstrip(".") in formats]
+        if not meshes:
+            held = ", ".join(names[:8]) + (", ..." if len(names) > 8 else "") if names else "nothing"
+            raise MeshFileError(f"{path}: no mesh file inside (it holds {held})")
+        for name in meshes:
+            placed += _read_file(os.path.join(folder, name), f"{path}:{name}", keep_seams, notes)
     return placed
 
 
@@ -189,42 +243,77 @@ def _path(path: Any) -> str:
     return path
 
 
-def _read(path: str, keep_seams: bool, ignored: List[str]) -> Tuple[Any, bool]:
+def _read(path: str, keep_seams: bool, ignored: List[str], said: List[str]) -> Tuple[Any, bool]:
     """The file as trimesh reads it (a Trimesh, Scene or PointCloud), after the pre-scans, and
-    whether its materials are the file's (an OBJ without an MTL gets trimesh's placeholder)."""
+    whether its materials are the file's (an OBJ without an MTL gets trimesh's placeholder).
+    What the pre-scans find and does not stop the reading goes to ``said``."""
     trimesh = trimesh_module()
     suffix = os.path.splitext(path)[1].lower()
     extra: Dict[str, Any] = {}
     materials = True
+    text: Optional[bytes] = None  # the text trimesh reads instead of the file's (an OBJ made right)
     if suffix == ".obj":
-        counts = check_obj(path)
+        with open(path, "rb") as f:
+            data = f.read()
+        counts = check_obj(path, data)
         if counts["materials"] > MAX_MATERIALS:
             raise MeshFileError(f"{path}: {counts['materials']:,} materials ('usemtl' names); toonmesh reads at "
                                 f"most {MAX_MATERIALS:,} materials a file")
+        said += counts["notes"] + obj_file_notes(path, data)
+        if counts["negative"] or counts["drop"]:
+            text = obj_for_trimesh(data, counts["drop"])
+        del data
+        split = [n for n, kind in ((counts["texcoords"], b"vt"), (counts["normals"], b"vn")) if kind not in counts["drop"]]
         # positions as listed (not split at texture seams) unless the corners' UVs or normals matter
-        extra["maintain_order"] = not (keep_seams and (counts["texcoords"] or counts["normals"]))
+        extra["maintain_order"] = not (keep_seams and any(split))
         materials = counts["libraries"] > 0
     elif suffix == ".ply":
         check_ply(path)
+        said += ply_file_notes(path) + _ply_strips.colour_notes(path)
         if _ply_strips.has_strips(path):  # trimesh reads strips as points, or not at all
             V, F, colors = _ply_strips.read(path)
             return trimesh.Trimesh(V, F, vertex_colors=colors, process=False), materials
     doc = gltf_document(path) if suffix in (".glb", ".gltf") else None
     if doc is not None:
+        said += gltf_file_notes(path, doc)
         _check_gltf_counts(path, doc)
         check_gltf_sizes(path, doc)
+        said += gltf_colour_notes(path, doc)
         ignored.extend(gltf_ignored(doc))
+
+    def read(**options: Any) -> Any:
+        resolver = _Beside(trimesh, path)
+        if text is None:
+            return trimesh.load(path, process=False, resolver=resolver, **options)
+        return trimesh.load(io.BytesIO(text), file_type=suffix[1:], process=False, resolver=resolver, **options)
+
     try:
-        loaded = trimesh.load(path, process=False, **extra)
+        loaded = read(**extra)
         if suffix == ".obj" and extra.get("maintain_order") and materials and _has_texture(loaded):
-            loaded = trimesh.load(path, process=False, maintain_order=False)  # a UV per vertex
+            loaded = read(maintain_order=False)  # a UV per vertex
     except MeshFileError:
         raise
     except Exception as exc:  # trimesh raises many kinds for files it cannot parse
         raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
-    if suffix == ".stl" and hasattr(loaded, "merge_vertices"):
+    if suffix == ".stl" and hasattr(loaded, "merge_vertices") and np.isfinite(loaded.vertices).all():
         loaded.merge_vertices()  # an STL stores every corner apart: connect the surface
     return loaded, materials
+
+
+def _Beside(trimesh: Any, path: str) -> Any:
+    """trimesh's resolver of the files beside ``path``, finding them as
+    :func:`toonmesh._file_checks.asset_path` does (percent-escaped glTF names too), so that what
+    the checks found is what trimesh reads."""
+
+    class Beside(trimesh.resolvers.FilePathResolver):  # type: ignore[misc]
+        def get(self, name: str) -> bytes:
+            found = asset_path(self.parent, name)
+            if found is None:
+                return super().get(name)  # type: ignore[no-any-return]
+            with open(found, "rb") as f:
+                return f.read()
+
+    return Beside(path)
 
 
 def _geometries(loaded: Any) -> Dict[str, Any]:
@@ -297,6 +386,13 @@ def _surface(geom: Any, source: str, name: str, ignored: List[str], materials: b
         i = int(np.flatnonzero((faces < 0).any(axis=1) | (faces >= len(vertices)).any(axis=1))[0])
         raise MeshFileError(f"{source}: face {i + 1}{where} has an index outside the {len(vertices):,} vertices: "
                             f"{faces[i].tolist()}")
+    corners = vertices[faces]
+    area = np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1).sum() / 2
+    diagonal = np.linalg.norm(np.ptp(corners.reshape(-1, 3), axis=0))
+    if area <= ZERO_AREA * diagonal**2:
+        subject = f"mesh {name!r}" if name else "the mesh"
+        warnings.warn(f"{source}: {subject} has no area ({len(faces):,} faces, their corners in a line or at one "
+                      "point): nothing to draw", stacklevel=2)
     surface = Surface(vertices, faces, name=name)
     visual = getattr(geom, "visual", None)
     if visual is not None:
@@ -330,10 +426,11 @@ def _visual_into(surface: Surface, visual: Any, ignored: List[str], materials: b
     if not materials:
         return
     factor = getattr(material, "baseColorFactor", None)
-    if factor is None and hasattr(material, "diffuse"):
-        factor = material.diffuse  # an MTL's Kd
-    if factor is not None:
+    if factor is not None:  # glTF's factor is linear light: the colour as drawn is sRGB
         surface.base_color = np.asarray(factor, dtype=np.float64).ravel()[:4] / 255.0
+        surface.base_color[:3] = _core._srgb_from_linear(np.ascontiguousarray(surface.base_color[:3]))
+    elif hasattr(material, "diffuse"):  # an MTL's Kd
+        surface.base_color = np.asarray(material.diffuse, dtype=np.float64).ravel()[:4] / 255.0
     image = getattr(material, "baseColorTexture", None)
     if image is None:
         image = getattr(material, "image", None)

@@ -1,5 +1,7 @@
-"""PLY files of triangle strips (``element tristrips``), which trimesh reads as points (ASCII) or
-refuses (binary): read here, ASCII and binary, and their strips turned into triangles."""
+"""PLY files read by toonmesh where trimesh falls short: triangle strips (``element tristrips``),
+which trimesh reads as points (ASCII) or refuses (binary), read here, ASCII and binary, and their
+strips turned into triangles; and float colours, checked here for values that are not numbers
+(trimesh draws them black)."""
 
 from __future__ import annotations
 
@@ -18,22 +20,7 @@ def has_strips(path: str) -> bool:
 def read(path: str) -> Tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
     """(V (N, 3) float64, F (M, 3) int64, vertex colours (N, 4) uint8 or None) of a PLY whose
     faces are triangle strips (see :func:`toonmesh._file_checks.strip_triangles`)."""
-    fmt, elements, header = ply_header(path)
-    with open(path, "rb") as f:
-        f.seek(header)
-        data = f.read()
-    order = {"binary_little_endian": "<", "binary_big_endian": ">"}.get(fmt)
-    words = data.split() if order is None else []
-    pos = 0
-    values: Dict[str, Dict[str, Any]] = {}
-    try:
-        for name, count, props in elements:
-            if order is None:
-                values[name], pos = _ascii_element(words, pos, count, props)
-            else:
-                values[name], pos = _binary_element(data, pos, order, count, props)
-    except (StopIteration, ValueError, IndexError):
-        raise MeshFileError(f"{path}: the '{name}' elements are cut off or malformed") from None
+    values = _values(path)
     vertex = values.get("vertex", {})
     if not all(k in vertex for k in "xyz"):
         raise MeshFileError(f"{path}: no x, y, z vertex properties")
@@ -50,6 +37,52 @@ def read(path: str) -> Tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
         alpha = np.asarray(vertex["alpha"]) if "alpha" in vertex else np.full(len(V), 255)
         colors = np.stack(rgb + [alpha], axis=1).astype(np.uint8)
     return V, F, colors
+
+
+#: The colour properties trimesh reads from a PLY element.
+COLOUR_PROPERTIES = ("red", "green", "blue", "alpha")
+
+
+def colour_notes(path: str) -> List[str]:
+    """A note per element (vertex, face) whose float colours hold values that are not numbers
+    (trimesh turns them into black, silently); the file is read only when its header declares
+    float colours."""
+    floats = [name for name, _, props in ply_header(path)[1] if any(
+        p[-1] in COLOUR_PROPERTIES and p[0] != "list" and PLY_TYPES[p[0]].startswith("f") for p in props)]
+    if not floats:
+        return []
+    try:
+        values = _values(path)
+    except MeshFileError:
+        return []  # trimesh says what is wrong
+    notes = []
+    for name in floats:
+        columns = [np.asarray(values[name][k], dtype=np.float64) for k in COLOUR_PROPERTIES if k in values[name]]
+        bad = np.flatnonzero(~np.isfinite(np.stack(columns, axis=1)).all(axis=1))
+        if len(bad):
+            notes.append(f"{len(bad):,} {name} colours are not numbers (the first of {name} {bad[0] + 1}): drawn black")
+    return notes
+
+
+def _values(path: str) -> Dict[str, Dict[str, Any]]:
+    """Every element's properties by name, ASCII or binary."""
+    fmt, elements, header = ply_header(path)
+    with open(path, "rb") as f:
+        f.seek(header)
+        data = f.read()
+    order = {"binary_little_endian": "<", "binary_big_endian": ">"}.get(fmt)
+    words = data.split() if order is None else []
+    pos = 0
+    values: Dict[str, Dict[str, Any]] = {}
+    try:
+        for name, count, props in elements:
+            if order is None:
+                values[name], pos = _ascii_element(words, pos, count, props)
+            else:
+                values[name], pos = _binary_element(data, pos, order, count, props)
+    except (StopIteration, ValueError, IndexError):
+        raise MeshFileError(f"{path}: the '{name}' elements are cut off or malformed") from None
+    return values
 
 
 def _ascii_element(words: List[bytes], pos: int, count: int,

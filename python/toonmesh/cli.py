@@ -1,7 +1,7 @@
 """The command line: ``toonmesh`` (console script) and ``python -m toonmesh``.
 
     toonmesh render MESH... -o OUT [--size WxH] [--style S] [--normals MODE] [--views N] [--up x|y|z] ...
-    toonmesh smooth IN OUT [--method M] [--iterations N] [--preset P] [--weld]
+    toonmesh smooth IN -o OUT [--method M] [--iterations N] [--preset P] [--crease-angle DEG] [--weld]
     toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG] [--smooth-strokes PX]
     toonmesh bench smooth|edges|render|effects|viewer|all [--quick] [--json FILE]
     toonmesh demo
@@ -31,10 +31,12 @@ from toonmesh._core import __version__
 from toonmesh._described import described
 from toonmesh._described_flags import CORE_DEFAULT, add_described, errors_as_flags, sets, styles
 from toonmesh._files import (
-    IMAGE_SUFFIXES, check_distinct_names, image_suffix, read_mesh, seam_normals, view_paths, write_mesh,
+    IMAGE_SUFFIXES, Part, check_distinct_names, check_writable, image_suffix, read_mesh, seam_normals, view_paths,
+    write_parts,
 )
 from toonmesh._line_drawing import summary, view_lines, write_npz, write_svg
-from toonmesh._load import OWN_COLOURS_WHITE, read_surfaces
+from toonmesh._load import OWN_COLOURS_WHITE, Surface, read_surfaces
+from toonmesh.edges import feature_edges
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 from toonmesh._render import Mesh, RenderResult, gpu_info, render
 from toonmesh._scene import normal_mode
@@ -50,8 +52,16 @@ HATCHING = "hatching"
 HATCH_FLAGS = ("spacing", "width", "mode")
 #: Image size of ``toonmesh render``, ``edges`` and ``demo`` unless --size (--width, --height) says.
 DEFAULT_SIZE = (800, 600)
-#: ``toonmesh smooth``'s method unless --method says: the plain one.
-SMOOTH_METHOD = "laplacian"
+#: ``toonmesh smooth``'s method unless --method says: Taubin's, which does not shrink the mesh.
+SMOOTH_METHOD = "taubin"
+#: ``toonmesh smooth`` keeps in place the vertices on edges whose faces meet at more than this
+#: many degrees, unless --crease-angle says: a CAD part keeps its edges and corners (a coarse one
+#: is otherwise rounded into a blob), while the noise of a scan, folding its faces by less, is
+#: smoothed (at 30 degrees, the renderer's crease, strong noise is kept as creases).
+SMOOTH_CREASE_ANGLE = 60.0
+#: A smoothing whose largest vertex move is more than this share of the model's bounding-box
+#: diagonal is named in a warning: the shape itself changed.
+SMOOTH_MOVE_WARNING = 0.05
 
 #: The ink lines of ``toonmesh demo``, and of ``toonmesh render`` unless its flags say otherwise.
 DEMO_OUTLINES = Outlines("mesh", width=2.0, crease_angle=60.0)
@@ -270,35 +280,80 @@ def cmd_render(args: argparse.Namespace) -> int:
 # smooth
 
 
+def _smooth_output(args: argparse.Namespace) -> str:
+    """OUT of toonmesh smooth: ``-o OUT``, or the positional OUT of earlier versions."""
+    if args.out is not None and args.output is not None and args.out != args.output:
+        raise CliError(f"-o: the output is given twice ({args.out} and {args.output}): give it once")
+    out = args.out if args.out is not None else args.output
+    if out is None:
+        raise CliError("-o: the file to write is missing (toonmesh smooth IN -o OUT)")
+    return str(out)
+
+
 def cmd_smooth(args: argparse.Namespace) -> int:
     """toonmesh smooth: smooth a mesh file and write the result, keeping its texture
-    coordinates, texture, colours and normal seams."""
+    coordinates, texture, colours, material colours, normal seams and parts."""
     import numpy as np
 
+    out = _smooth_output(args)
     placed = read_surfaces(mesh_file(args.input), keep_seams=True)
-    if len(placed) != 1 or placed[0][1] is not None:
-        raise ValueError(f"{args.input}: a scene of {len(placed)} placed meshes; toonmesh smooth takes one mesh "
-                         "(toonmesh.load and toonmesh.smooth in Python take scenes apart)")
-    surface = placed[0][0]
-    V, F = surface.vertices, surface.faces
+    check_writable(out, len(placed), args.input)
+    # each geometry once, with its placements; all smoothed together where the first one puts it
+    grouped: Dict[int, Tuple[Surface, List[Any]]] = {}
+    for surface, transform in placed:
+        grouped.setdefault(id(surface), (surface, []))[1].append(transform)
+    surfaces = [s for s, _ in grouped.values()]
+    frames = [_frame(ts[0]) for _, ts in grouped.values()]
+    world = [s.vertices @ T[:3, :3].T + T[:3, 3] for s, T in zip(surfaces, frames)]
+    starts = np.cumsum([0] + [len(w) for w in world])
+    V = np.concatenate(world)
+    F = np.concatenate([s.faces + start for s, start in zip(surfaces, starts)])
     fn = getattr(smooth, args.method)
     options = {k: getattr(args, k) for k in ("iterations", "preset", "weights", "boundary") if getattr(args, k) is not None}
-    # a file split at UV or normal seams is one surface: smooth it welded, or the seams crack
-    if args.weld or surface.normals is not None or surface.uv is not None:
+    # a file split at UV or normal seams, or into parts, is one surface: smooth it welded, or the seams crack
+    if args.weld or len(surfaces) > 1 or any(s.normals is not None or s.uv is not None for s in surfaces):
         options.update(pass_through(fn, "weld", True, "--weld"))
+    crease = args.crease_angle if args.crease_angle is not None else 180.0 if args.preset else SMOOTH_CREASE_ANGLE
+    kept = np.zeros(0, np.int64)
+    if crease != 180:  # vertices on creases stay: a CAD part keeps its edges and corners (the core checks DEG)
+        with errors_as_flags(args, feature_edges):
+            kept = np.unique(feature_edges(V, F, crease, weld=bool(options.get("weld"))).crease)
     t0 = time.perf_counter()
     with errors_as_flags(args, smooth):
-        out = fn(V, F, **options)
+        result = fn(V, F, **options, **({"pinned": kept} if len(kept) else {}))
     secs = time.perf_counter() - t0
-    normals = None if surface.normals is None else seam_normals(out, F, surface.normals)
-    write_mesh(args.output, out, F, surface, normals)
-    moved = float(np.linalg.norm(out - V, axis=1).max()) if len(V) else 0.0
-    diagonal = float(np.linalg.norm(V.max(axis=0) - V.min(axis=0))) if len(V) else 0.0
+    parts = []
+    for k, (surface, transforms) in enumerate(grouped.values()):
+        moved = result[starts[k] : starts[k + 1]] - world[k]  # back into the geometry's own frame
+        R = frames[k][:3, :3]
+        local = surface.vertices + (moved if np.array_equal(R, np.eye(3)) else moved @ np.linalg.pinv(R).T)
+        normals = None if surface.normals is None else seam_normals(local, surface.faces, surface.normals)
+        parts.append(Part(surface, local, normals, transforms))
+    lost = write_parts(out, parts)
+    if lost:
+        warnings.warn(f"{out}: a {os.path.splitext(out)[1] or 'file without suffix'} file as written here holds no "
+                      f"{', '.join(lost)}: not written", stacklevel=2)
+    moves = np.linalg.norm(result - V, axis=1)
+    moved, diagonal = (float(moves.max()), float(np.linalg.norm(np.ptp(V, axis=0)))) if len(V) else (0.0, 0.0)
     share = f" ({moved / diagonal:.2%} of the bounding-box diagonal)" if diagonal > 0 else ""
     given = ", ".join(f"{k}={v}" for k, v in options.items())
-    print(f"{args.input}: {len(V):,} vertices, {len(F):,} faces; {args.method}({given}) in {secs * 1e3:.1f} ms")
-    print(f"largest vertex move {moved:.4g}{share}; wrote {args.output}")
+    pieces = f" in {len(surfaces)} parts" if len(surfaces) > 1 else ""
+    print(f"{args.input}: {len(V):,} vertices, {len(F):,} faces{pieces}; {args.method}({given}) in {secs * 1e3:.1f} ms"
+          + (f", {len(kept):,} vertices on creases over {crease:g} degrees kept" if len(kept) else ""))
+    print(f"largest vertex move {moved:.4g}{share}; wrote {out}")
+    if diagonal > 0 and moved > SMOOTH_MOVE_WARNING * diagonal:
+        other = "" if args.method == SMOOTH_METHOD else f", --method {SMOOTH_METHOD}"
+        warnings.warn(f"{out}: smoothing moved a vertex {moved / diagonal:.1%} of the model's size (its bounding-box "
+                      f"diagonal), more than {SMOOTH_MOVE_WARNING:.0%}: the shape changed (fewer --iterations{other} "
+                      "or a smaller --crease-angle keep it)", stacklevel=2)
     return 0
+
+
+def _frame(transform: Any) -> Any:
+    """A placement's 4x4 transform (identity for none)."""
+    import numpy as np
+
+    return np.eye(4) if transform is None else np.asarray(transform, dtype=np.float64)
 
 
 # --------------------------------------------------------------------------------------------
@@ -488,8 +543,16 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p = sub.add_parser("smooth", help="smooth a mesh file", description="Smooth a mesh file and write the result "
                                                                          "(the format follows OUT's suffix).")
     p.add_argument("input", metavar="IN", help="mesh file to read, or the name of a mesh shipped with toonmesh (bunny)")
-    p.add_argument("output", metavar="OUT", help="mesh file to write (.obj, .ply, .stl, .off, .glb, ...)")
+    p.add_argument("output", metavar="OUT", nargs="?", default=None, help="as -o OUT (the form of earlier versions)")
+    p.add_argument("-o", "--out", metavar="OUT", default=None,
+                   help="mesh file to write (.obj, .ply, .stl, .off, .glb, ...; several meshes: .glb or .obj); no "
+                        "default: required, here or as OUT")
     p.add_argument("--method", choices=_core.SMOOTH_METHODS, default=SMOOTH_METHOD, help="default: %(default)s")
+    crease = p.add_argument("--crease-angle", type=float, default=None, metavar="DEG",
+                            help="vertices on edges where faces meet at more than DEG degrees stay in place, so that "
+                                 "a CAD part keeps its edges and corners; 180 moves them too (default: "
+                                 f"{SMOOTH_CREASE_ANGLE:g}, or 180 with --preset: the peer's filter as it is)")
+    sets(p, crease, (feature_edges, "crease_angle"))
     for flag, help_text in (
         (p.add_argument("--iterations", type=int, default=None, metavar="N"), "the method's (or preset's)"),
         (p.add_argument("--preset", choices=_core.SMOOTH_PRESETS, default=None), None),
