@@ -271,6 +271,11 @@ impl<'py> ToPython<'py> for Lines {
     }
 }
 
+/// A core value through its serde form: a struct as a dict, an array or tuple as a tuple.
+pub fn python<'py>(py: Python<'py>, value: &impl serde::Serialize) -> PyResult<Bound<'py, PyAny>> {
+    pythonize::pythonize(py, value).map_err(|e| Error::Internal(e.to_string()).into())
+}
+
 /// Hands row-major values of a 2-D `shape` to NumPy without copying.
 pub fn grid_to_numpy<T: numpy::Element>(
     py: Python<'_>,

@@ -10,7 +10,7 @@ use pyo3::IntoPyObjectExt;
 
 use super::albedo::albedo;
 use super::args::{number, text, triple, type_name};
-use super::convert::{array_values, faces, grid_to_numpy, positions, ToPython};
+use super::convert::{array_values, faces, grid_to_numpy, positions, python, ToPython};
 use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
@@ -30,11 +30,6 @@ use crate::render::{BackendChoice, FrameReport, ImageMut, OutputBuffers, Rendere
 /// mostly waits on the device, and concurrent renders should not queue behind each other there.
 fn without_gil<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
     py.detach(|| catching_panics(work)).map_err(PyErr::from)
-}
-
-/// A core report (its serde form) as Python data.
-fn python<'py>(py: Python<'py>, report: &impl serde::Serialize) -> PyResult<Bound<'py, PyAny>> {
-    pythonize::pythonize(py, report).map_err(|e| Error::Internal(e.to_string()).into())
 }
 
 /// The backend asked for (None: the default choice).

@@ -41,14 +41,8 @@ impl Material {
     /// A hatching material's ink (sRGB), spacing and width in pixels and mode ("field" or
     /// "triplanar") as a dict; None for others.
     #[getter]
-    fn hatch_style<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
-        let Some(h) = &self.inner.effects.hatching else { return Ok(None) };
-        let d = PyDict::new(py);
-        d.set_item("ink", (h.ink[0], h.ink[1], h.ink[2]))?;
-        d.set_item("spacing", h.spacing)?;
-        d.set_item("width", h.width)?;
-        d.set_item("mode", h.mode.name())?;
-        Ok(Some(d))
+    fn hatch_style<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        self.inner.effects.hatching.as_ref().map(|h| crate::py::convert::python(py, h)).transpose()
     }
 }
 
