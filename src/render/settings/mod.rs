@@ -110,6 +110,16 @@ impl Field {
         Field { name, kind, optional: false, fixed: false, help }
     }
 
+    /// A real number within `min` and `max`.
+    pub const fn float(name: &'static str, min: f64, max: f64, help: &'static str) -> Field {
+        Field::new(name, Kind::Float { min, max }, help)
+    }
+
+    /// One of the names `choices`.
+    pub const fn choice(name: &'static str, choices: &'static [&'static str], help: &'static str) -> Field {
+        Field::new(name, Kind::Choice(choices), help)
+    }
+
     pub const fn optional(self) -> Field {
         Field { optional: true, ..self }
     }
@@ -146,6 +156,45 @@ macro_rules! named {
     };
 }
 pub(crate) use named;
+
+/// The parts of `impl Described` that a settings type made by one constructor, `Class(...)`,
+/// shares with the others: the constructor takes every field, in order, the first
+/// `positional` of them by position; a value starts from the type's default; and its check is
+/// the type's `validate`, which names the fields as the constructor's arguments. `help` is the
+/// class's docstring, `include_str!("docs/Class.md")` (written where the docs are found).
+macro_rules! one_constructor {
+    ($class:literal, $help:expr, $fields:ident, positional: $positional:expr) => {
+        const CLASS: &'static str = $class;
+        const HELP: &'static str = $help;
+        const FIELDS: &'static [$crate::render::settings::Field] = $fields;
+        const CONSTRUCTORS: &'static [$crate::render::settings::Constructor] =
+            &[$crate::render::settings::Constructor::only(
+                &$crate::render::settings::field_names::<{ $fields.len() }>($fields),
+                $positional,
+            )];
+
+        fn start(_: &str) -> Self {
+            Self::default()
+        }
+
+        fn check(&self) -> $crate::error::Result<()> {
+            self.validate("")
+        }
+    };
+}
+pub(crate) use one_constructor;
+
+/// The names of `fields`, in order (`N` of them): the parameters of a constructor that takes
+/// every field.
+pub const fn field_names<const N: usize>(fields: &[Field]) -> [&'static str; N] {
+    let mut out = [""; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = fields[i].name;
+        i += 1;
+    }
+    out
+}
 
 /// `a` then `b` as one constant array (`N` the two lengths together, `a` not empty): a
 /// description that gathers lists kept elsewhere.
