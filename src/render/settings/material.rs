@@ -50,36 +50,27 @@ const EXTRAS: &[Field] = &[
     Field::choice("preset", &["paper"], "'paper': the paper's band values (a black darkest band)"),
 ];
 
+/// A shading model's constructor, `Material.<model>(color, ...)`: its base colour may be
+/// given by position, and no parameter must be given.
+macro_rules! model {
+    ($name:literal, [$($param:literal),* $(,)?]) => {
+        named!("Material", $name, [$($param),*], 1, 0)
+    };
+}
+
 const CONSTRUCTORS: &[Constructor] = &[
-    named!("Material", "lambert", ["color", "ambient", "diffuse", "per_vertex", "rim"], 1, 0),
-    named!(
-        "Material",
-        "phong",
-        ["color", "specular", "shininess", "ambient", "diffuse", "per_vertex", "rim"],
-        1,
-        0
-    ),
-    named!(
-        "Material",
+    model!("lambert", ["color", "ambient", "diffuse", "per_vertex", "rim"]),
+    model!("phong", ["color", "specular", "shininess", "ambient", "diffuse", "per_vertex", "rim"]),
+    model!(
         "thresholded_phong",
-        ["color", "t_h", "t_s", "highlight", "ambient", "specular", "diffuse", "per_vertex", "dither", "rim"],
-        1,
-        0
+        ["color", "t_h", "t_s", "highlight", "ambient", "specular", "diffuse", "per_vertex", "dither", "rim"]
     ),
-    named!(
-        "Material",
-        "bands",
-        ["color", "thresholds", "preset", "values", "per_vertex", "dither", "rim"],
-        1,
-        0
-    ),
-    named!(
-        "Material",
+    model!("bands", ["color", "thresholds", "preset", "values", "per_vertex", "dither", "rim"]),
+    model!(
         "hatching",
-        ["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither", "rim"],
-        1,
-        0
+        ["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither", "rim"]
     ),
+    // the table comes first, and may be given by position too
     named!("Material", "lut", ["table", "color", "per_vertex", "dither", "rim"], 2, 0),
 ];
 
