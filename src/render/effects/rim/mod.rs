@@ -13,8 +13,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::field;
 use crate::error::Result;
-use crate::render::block::Block;
 use crate::render::color::{check_unit, to_linear, Srgb};
+use crate::render::block::Block;
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
 use crate::render::scene::model::step_aa;
 use crate::render::settings::check_bounds;
@@ -116,30 +116,24 @@ crate::uniform_block! {
     }
 }
 
-pub struct RimEffect;
-
-pub static EFFECT: RimEffect = RimEffect;
-
-impl SurfaceEffect for RimEffect {
-    type Settings = Rim;
-
-    fn wgsl(&self) -> String {
+impl SurfaceEffect for Rim {
+    fn wgsl() -> String {
         include_str!("rim.wgsl").to_string()
     }
 
-    fn block(&self) -> crate::render::block::BlockLayout {
+    fn block() -> crate::render::block::BlockLayout {
         RimBlock::layout()
     }
 
-    fn hooks(&self) -> &'static [Hook] {
+    fn hooks() -> &'static [Hook] {
         &[Hook::Finish]
     }
 
-    fn validate(&self, rim: Option<&Rim>, _: &Surface<'_>, prefix: &str) -> Result<()> {
+    fn validate_with(rim: Option<&Rim>, _: &Surface<'_>, prefix: &str) -> Result<()> {
         rim.map_or(Ok(()), |r| r.validate(&field(prefix, "rim")))
     }
 
-    fn block_bytes(&self, rim: Option<&Rim>) -> Vec<u8> {
+    fn block_bytes(rim: Option<&Rim>) -> Vec<u8> {
         let r = rim.copied().unwrap_or(Rim { strength: 0.0, ..Rim::default() });
         RimBlock {
             color: to_linear(r.color),
@@ -152,7 +146,7 @@ impl SurfaceEffect for RimEffect {
         .bytes()
     }
 
-    fn variant(&self, rim: Option<&Rim>) -> Variant {
+    fn variant(rim: Option<&Rim>) -> Variant {
         Variant { constants: vec![("RIM", rim.is_some() as u32 as f64)], anchored: false, field: false }
     }
 }
