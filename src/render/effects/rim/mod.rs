@@ -13,8 +13,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::field;
 use crate::error::Result;
-use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::block::Block;
+use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
 use crate::render::scene::model::step_aa;
 use crate::render::settings::check_bounds;
