@@ -35,9 +35,6 @@ const CONSTRUCTORS: &[Constructor] = &[
 ];
 
 impl Described for Camera {
-    const CLASS: &'static str = "Camera";
-    const HELP: &'static str = include_str!("docs/Camera.md");
-
     const FIELDS: &'static [Field] = FIELDS;
 
     const EXTRAS: &'static [Field] = EXTRAS;

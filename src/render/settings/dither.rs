@@ -16,7 +16,7 @@ const FIELDS: &[Field] = &[
 ];
 
 impl Described for Dither {
-    one_constructor!("Dither", include_str!("docs/Dither.md"), FIELDS, positional: 1);
+    one_constructor!(FIELDS, positional: 1);
 
     fn get(&self, field: &str) -> Value {
         match field {

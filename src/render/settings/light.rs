@@ -32,9 +32,6 @@ const CONSTRUCTORS: &[Constructor] = &[
 ];
 
 impl Described for Light {
-    const CLASS: &'static str = "Light";
-    const HELP: &'static str = include_str!("docs/Light.md");
-
     const FIELDS: &'static [Field] = FIELDS;
 
     const CONSTRUCTORS: &'static [Constructor] = CONSTRUCTORS;

@@ -15,7 +15,7 @@ const FIELDS: &[Field] = &[
 ];
 
 impl Described for LineStyle {
-    one_constructor!("LineStyle", include_str!("docs/LineStyle.md"), FIELDS, positional: 2);
+    one_constructor!(FIELDS, positional: 2);
 
     fn get(&self, field: &str) -> Value {
         match field {

@@ -79,9 +79,6 @@ fn hatching(m: &Material) -> Option<&Hatching> {
 }
 
 impl Described for Material {
-    const CLASS: &'static str = "Material";
-    const HELP: &'static str = include_str!("docs/Material.md");
-
     const FIELDS: &'static [Field] = FIELDS;
 
     const EXTRAS: &'static [Field] = EXTRAS;

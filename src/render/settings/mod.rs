@@ -19,7 +19,7 @@ mod value;
 
 #[cfg_attr(not(feature = "python"), allow(unused_imports))] // the front ends write from it
 pub(crate) use classes::settings_classes;
-pub use classes::{Setting, CLASSES};
+pub use classes::{Class, Setting, CLASSES};
 pub use grey_image::{GreyImage, MAX_IMAGE_SIDE};
 pub use value::Value;
 
@@ -160,12 +160,9 @@ pub(crate) use named;
 /// The parts of `impl Described` that a settings type made by one constructor, `Class(...)`,
 /// shares with the others: the constructor takes every field, in order, the first
 /// `positional` of them by position; a value starts from the type's default; and its check is
-/// the type's `validate`, which names the fields as the constructor's arguments. `help` is the
-/// class's docstring, `include_str!("docs/Class.md")` (written where the docs are found).
+/// the type's `validate`, which names the fields as the constructor's arguments.
 macro_rules! one_constructor {
-    ($class:literal, $help:expr, $fields:ident, positional: $positional:expr) => {
-        const CLASS: &'static str = $class;
-        const HELP: &'static str = $help;
+    ($fields:ident, positional: $positional:expr) => {
         const FIELDS: &'static [$crate::render::settings::Field] = $fields;
         const CONSTRUCTORS: &'static [$crate::render::settings::Constructor] =
             &[$crate::render::settings::Constructor::only(
@@ -216,13 +213,12 @@ impl Constructor {
     }
 }
 
-/// A settings type described for front ends.
-pub trait Described: Clone + PartialEq + Serialize + DeserializeOwned {
-    const CLASS: &'static str;
+/// A settings type described for front ends (its class's name and docstring are its `Class`,
+/// from `settings_classes!`).
+pub trait Described: Class + Clone + PartialEq + Serialize + DeserializeOwned {
     /// What an unknown keyword is not, where "a parameter of Class.constructor" is not the
     /// best word ("a render option").
     const PARAMETER: Option<&'static str> = None;
-    const HELP: &'static str;
     const FIELDS: &'static [Field];
     /// Constructor-only parameters.
     const EXTRAS: &'static [Field] = &[];

@@ -97,9 +97,6 @@ fn in_style(v: Value, common: LineStyle) -> Value {
 }
 
 impl Described for Outlines {
-    const CLASS: &'static str = "Outlines";
-    const HELP: &'static str = include_str!("docs/Outlines.md");
-
     const FIELDS: &'static [Field] = FIELDS;
 
     const EXTRAS: &'static [Field] = EXTRAS;

@@ -21,7 +21,7 @@ const FIELDS: &[Field] = &[
 ];
 
 impl Described for Shadows {
-    one_constructor!("Shadows", include_str!("docs/Shadows.md"), FIELDS, positional: 3);
+    one_constructor!(FIELDS, positional: 3);
 
     fn get(&self, field: &str) -> Value {
         match field {

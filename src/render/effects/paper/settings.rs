@@ -69,7 +69,7 @@ const FIELDS: &[Field] = &[
 ];
 
 impl Described for Paper {
-    one_constructor!("Paper", include_str!("docs/Paper.md"), FIELDS, positional: 1);
+    one_constructor!(FIELDS, positional: 1);
 
     fn get(&self, field: &str) -> Value {
         match field {

@@ -18,7 +18,7 @@ const FIELDS: &[Field] = &[
 ];
 
 impl Described for Rim {
-    one_constructor!("Rim", include_str!("docs/Rim.md"), FIELDS, positional: 1);
+    one_constructor!(FIELDS, positional: 1);
 
     fn get(&self, field: &str) -> Value {
         match field {
