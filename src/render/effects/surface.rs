@@ -29,9 +29,12 @@ macro_rules! registry {
         }
 
         impl SurfaceSettings {
-            /// Checks every effect's settings against the material's model and shading.
+            /// Checks the settings of every effect the material uses against its model and
+            /// shading.
             pub fn validate(&self, s: &Surface<'_>, prefix: &str) -> Result<()> {
-                $(<$settings as SurfaceEffect>::validate_with(self.$name.as_ref(), s, prefix)?;)*
+                $(if let Some(settings) = &self.$name {
+                    settings.validate_with(s, prefix)?;
+                })*
                 Ok(())
             }
 
@@ -62,7 +65,7 @@ macro_rules! registry {
 
         /// Every effect's name and hooks, in the order they run.
         fn hooks() -> Vec<(&'static str, &'static [Hook])> {
-            vec![$((stringify!($name), <$settings as SurfaceEffect>::hooks())),*]
+            vec![$((stringify!($name), <$settings as SurfaceEffect>::HOOKS)),*]
         }
     };
 }

@@ -1,7 +1,7 @@
 //! The interface of a per-pixel effect (`effects::surface` lists them), implemented by its
 //! settings type: its WGSL with its block and hooks, its per-draw block, its part of a
-//! material's pipeline, and its checks. Each function that depends on a material gets the
-//! settings it carries (None where the material does not use the effect).
+//! material's pipeline, and its checks. A material's block and pipeline are made from the
+//! settings it carries, None where it does not use the effect.
 
 use crate::error::Result;
 use crate::render::block::BlockLayout;
@@ -38,12 +38,13 @@ pub struct Variant {
 pub trait SurfaceEffect: Sized {
     /// Its WGSL: the block struct, its pipeline constants and its hooks.
     fn wgsl() -> String;
+    /// The hooks its WGSL implements.
+    const HOOKS: &'static [Hook];
     /// Its per-draw uniform block.
     fn block() -> BlockLayout;
-    /// The hooks its WGSL implements.
-    fn hooks() -> &'static [Hook];
-    /// Checks its settings with the rest of the material; `prefix` names the material.
-    fn validate_with(settings: Option<&Self>, s: &Surface<'_>, prefix: &str) -> Result<()>;
+    /// Checks the settings of a material that uses the effect with the rest of the material;
+    /// `prefix` names the material.
+    fn validate_with(&self, s: &Surface<'_>, prefix: &str) -> Result<()>;
     /// Its block for a material (zeros where the material does not use it).
     fn block_bytes(settings: Option<&Self>) -> Vec<u8>;
     /// Its part of a material's shading pipeline.

@@ -117,16 +117,13 @@ impl SurfaceEffect for Dither {
         s + include_str!("dither.wgsl")
     }
 
+    const HOOKS: &'static [Hook] = &[Hook::Jitter];
+
     fn block() -> crate::render::block::BlockLayout {
         DitherBlock::layout()
     }
 
-    fn hooks() -> &'static [Hook] {
-        &[Hook::Jitter]
-    }
-
-    fn validate_with(dither: Option<&Dither>, s: &Surface<'_>, prefix: &str) -> Result<()> {
-        let Some(d) = dither else { return Ok(()) };
+    fn validate_with(&self, s: &Surface<'_>, prefix: &str) -> Result<()> {
         if !s.model.is_toon() {
             return Err(Error::invalid(
                 "dither",
@@ -139,7 +136,7 @@ impl SurfaceEffect for Dither {
         if s.per_vertex {
             return Err(Error::invalid("dither", "needs per-pixel shading (per_vertex=False)"));
         }
-        d.validate(&field(prefix, "dither"))
+        self.validate(&field(prefix, "dither"))
     }
 
     fn block_bytes(dither: Option<&Dither>) -> Vec<u8> {

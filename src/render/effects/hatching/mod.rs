@@ -130,20 +130,17 @@ impl SurfaceEffect for Hatching {
         s + include_str!("hatching.wgsl")
     }
 
+    const HOOKS: &'static [Hook] = &[Hook::Finish];
+
     fn block() -> crate::render::block::BlockLayout {
         HatchingBlock::layout()
     }
 
-    fn hooks() -> &'static [Hook] {
-        &[Hook::Finish]
-    }
-
-    fn validate_with(hatching: Option<&Hatching>, s: &Surface<'_>, prefix: &str) -> Result<()> {
-        let Some(h) = hatching else { return Ok(()) };
+    fn validate_with(&self, s: &Surface<'_>, prefix: &str) -> Result<()> {
         if !matches!(s.model, Model::Bands { .. }) {
             return Err(Error::invalid(field(prefix, "hatching"), "hatches only toon bands"));
         }
-        h.validate(prefix)
+        self.validate(prefix)
     }
 
     fn block_bytes(hatching: Option<&Hatching>) -> Vec<u8> {

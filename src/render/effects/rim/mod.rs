@@ -121,16 +121,14 @@ impl SurfaceEffect for Rim {
         include_str!("rim.wgsl").to_string()
     }
 
+    const HOOKS: &'static [Hook] = &[Hook::Finish];
+
     fn block() -> crate::render::block::BlockLayout {
         RimBlock::layout()
     }
 
-    fn hooks() -> &'static [Hook] {
-        &[Hook::Finish]
-    }
-
-    fn validate_with(rim: Option<&Rim>, _: &Surface<'_>, prefix: &str) -> Result<()> {
-        rim.map_or(Ok(()), |r| r.validate(&field(prefix, "rim")))
+    fn validate_with(&self, _: &Surface<'_>, prefix: &str) -> Result<()> {
+        self.validate(&field(prefix, "rim"))
     }
 
     fn block_bytes(rim: Option<&Rim>) -> Vec<u8> {
