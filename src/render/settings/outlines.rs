@@ -4,7 +4,9 @@
 use super::{build, f32_value, mismatch, Constructor, Described, Field, Kind, Setting, Value};
 use crate::edges::outlines::LineKind;
 use crate::error::Result;
-use crate::render::effects::outlines::settings::{kind_names, ContourRule, ImageRule, LineStyle, Outlines};
+use crate::render::effects::outlines::settings::{
+    kind_names, ContourRule, ImageRule, LineStyle, Outlines, MAX_WIDTH,
+};
 
 const STYLE_HELP: &str = "True (the common style), False (not drawn), a LineStyle or a colour";
 
@@ -48,7 +50,7 @@ const FIELDS: &[Field] = &[
 
 const EXTRAS: &[Field] = &[
     Field::new("color", Kind::Color, "the common style's sRGB colour"),
-    Field::float("width", 0.25, 64.0, "the common style's width in output pixels"),
+    Field::float("width", 0.25, MAX_WIDTH as f64, "the common style's width in output pixels"),
     Field::new("crease", Kind::Style, "ridges and valleys together").optional(),
 ];
 
