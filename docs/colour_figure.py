@@ -12,13 +12,11 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
-from PIL import Image
+from figures import save, smoothed_bunny
 
 import toonmesh as tm
 from toonmesh.bench.effects import sphere_uv
-from toonmesh.data import bunny
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 360
 
 
@@ -41,8 +39,7 @@ def can_scene(path: Path) -> None:
 
 def main() -> None:
     kw = dict(width=SIZE, height=SIZE, supersample=2, lights=[tm.Light.directional((0.6, -0.5, -1.0))])
-    Vb, Fb = bunny()
-    Vb = tm.smooth.laplacian(Vb, Fb, iterations=5, preset="paper")
+    Vb, Fb = smoothed_bunny()
     t = (Vb - Vb.min(0)) / np.ptp(Vb, 0)
     colours = np.stack([0.3 + 0.7 * t[:, 1], np.full(len(Vb), 0.55), 1.0 - 0.7 * t[:, 2]], -1)
     bunny_image = tm.render([tm.Mesh(Vb, Fb, vertex_colors=colours)], material=tm.Material.bands("#ffffff"),
@@ -59,10 +56,7 @@ def main() -> None:
         cans = tm.load(path)
     scene = tm.render(cans, material=tm.Material.bands("#ffffff"), outlines=tm.Outlines("mesh", material="#2040a0"),
                       camera=tm.Camera.fit((0.2, 0.6, 1.0), margin=0.9), **kw).color
-    row = np.concatenate([bunny_image, textured, scene], axis=1)
-    out = ROOT / "docs" / "colour.png"
-    Image.fromarray(row).save(out, optimize=True)
-    print("wrote", out)
+    save("colour.png", np.concatenate([bunny_image, textured, scene], axis=1))
 
 
 if __name__ == "__main__":

@@ -6,18 +6,16 @@ hidden lines removed; each panel's title counts its strokes. The SVG is the bunn
 ``python docs/contours_figure.py``.
 """
 
-from pathlib import Path
-
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import trimesh  # noqa: E402
+from figures import MESHES, ROOT  # noqa: E402
 
 import toonmesh as tm  # noqa: E402
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 360
 BLUE = (0.18, 0.37, 0.66)
 # white paper: one band, so only the ink shows
@@ -43,7 +41,7 @@ def main():
     fig, axes = plt.subplots(len(rows), len(SETTINGS), figsize=(7.8, 7.8), dpi=100, layout="constrained")
     r = tm.Renderer()
     for (name, eye, label), ax_row in zip(rows, axes):
-        m = trimesh.load(ROOT / "tests" / "data" / "meshes" / name, process=False, force="mesh")
+        m = trimesh.load(MESHES / name, process=False, force="mesh")
         mesh = r.add_mesh(np.asarray(m.vertices, float), np.asarray(m.faces))
         camera = tm.Camera.fit(eye)
         for (title, kw), ax in zip(SETTINGS, ax_row):

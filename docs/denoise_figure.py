@@ -7,17 +7,15 @@ the creases. Needs trimesh and pymeshlab. Run from the repository root:
 ``python docs/denoise_figure.py``.
 """
 
-from pathlib import Path
-
 import numpy as np
 import pymeshlab
 import trimesh
+from figures import MESHES, save
 from PIL import Image, ImageDraw
 
 import toonmesh as tm
 from toonmesh.bench import parts
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 320
 
 
@@ -29,7 +27,7 @@ def two_step(V: np.ndarray, F: np.ndarray) -> np.ndarray:
 
 
 def main() -> None:
-    m = trimesh.load(ROOT / "tests" / "data" / "meshes" / "fandisk.obj", process=False, force="mesh")
+    m = trimesh.load(MESHES / "fandisk.obj", process=False, force="mesh")
     V, F = np.asarray(m.vertices, np.float64), np.asarray(m.faces, np.int64)
     N = parts.noisy(V, F, 0.4, seed=1)
     panels = {
@@ -51,10 +49,7 @@ def main() -> None:
             label += f": {parts.normal_error(X, F, V):.1f} deg"
         ImageDraw.Draw(pil).text((8, 8), label, fill=(0, 0, 0, 255))
         images.append(np.asarray(pil))
-    out = ROOT / "docs" / "denoise.png"
-    grid = np.concatenate([np.concatenate(images[:3], axis=1), np.concatenate(images[3:], axis=1)], axis=0)
-    Image.fromarray(grid).save(out, optimize=True)
-    print("wrote", out)
+    save("denoise.png", np.concatenate([np.concatenate(images[:3], axis=1), np.concatenate(images[3:], axis=1)], axis=0))
 
 
 if __name__ == "__main__":

@@ -6,19 +6,17 @@ Hidden lines are removed with a small NumPy z-buffer, which also provides the no
 buffers for the image-space panel.
 """
 
-from pathlib import Path
-
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import trimesh  # noqa: E402
+from figures import MESHES, ROOT  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
 from toonmesh import edges as te  # noqa: E402
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 260
 DISTANCE = 2.6  # eye distance in bounding-sphere radii
 
@@ -106,7 +104,7 @@ def toon(normal, depth):
 
 
 def panel(ax, name, eye_dir, title, crease_angle=30.0, image_space=False):
-    mesh = trimesh.load(ROOT / "tests" / "data" / "meshes" / name, process=False, force="mesh")
+    mesh = trimesh.load(MESHES / name, process=False, force="mesh")
     V, F = np.asarray(mesh.vertices, float), np.asarray(mesh.faces)
     eye, R, radius = camera(V, eye_dir)
     depth, normal = rasterise(V, F, eye, R, radius)

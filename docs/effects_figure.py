@@ -9,24 +9,19 @@ band borders show as the renderer draws them.
 Run from the repository root: ``python docs/effects_figure.py``.
 """
 
-from pathlib import Path
-
 import numpy as np
-from PIL import Image
+from figures import MESHES, save, smoothed_bunny
 
 import toonmesh as tm
 from toonmesh._files import read_mesh
 from toonmesh.bench.effects import SHADOW_SCENES
-from toonmesh.data import bunny
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 300
 
 
 def main() -> None:
-    Vb, Fb = bunny()
-    Vb = tm.smooth.laplacian(Vb, Fb, iterations=5, preset="paper")
-    Vs, Fs = read_mesh(str(ROOT / "tests" / "data" / "meshes" / "spot.obj"))
+    Vb, Fb = smoothed_bunny()
+    Vs, Fs = read_mesh(str(MESHES / "spot.obj"))
     (Vt, Ft), direction, eye = SHADOW_SCENES["torus over a plane"]
     light = [tm.Light.directional((0.6, -0.5, -1.0))]
     rows = []
@@ -44,9 +39,7 @@ def main() -> None:
                       lights=[tm.Light.directional(direction, shadows=True)], camera=tm.Camera.fit(eye), **kw).color,
         ]
         rows.append(np.concatenate(cells, axis=1))
-    out = ROOT / "docs" / "effects.png"
-    Image.fromarray(np.concatenate(rows, axis=0)).save(out, optimize=True)
-    print("wrote", out)
+    save("effects.png", np.concatenate(rows, axis=0))
 
 
 if __name__ == "__main__":

@@ -5,15 +5,13 @@ the curved parts, and auto keeps both right; on the bunny auto is close to smoot
 to read the OBJ file. Run from the repository root: ``python docs/normals_figure.py``.
 """
 
-from pathlib import Path
-
 import numpy as np
 import trimesh
+from figures import MESHES, ROOT
 
 import toonmesh as tm
 from toonmesh.data import bunny
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 220
 
 
@@ -24,7 +22,7 @@ def box():
 
 
 def main() -> None:
-    fandisk = trimesh.load(ROOT / "tests/data/meshes/fandisk.obj", process=False)
+    fandisk = trimesh.load(MESHES / "fandisk.obj", process=False)
     models = [
         (box(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (tm.shapes.pawn(48), tm.Camera.fit((0.0, 0.35, 1.0)), "#e8c07a"),

@@ -6,15 +6,12 @@ line drawing alone (the ``outline`` output). Bottom row: the same for the smooth
 Needs trimesh to read the OBJ file. Run from the repository root: ``python docs/outlines_figure.py``.
 """
 
-from pathlib import Path
-
 import numpy as np
 import trimesh
+from figures import MESHES, ROOT, smoothed_bunny
 
 import toonmesh as tm
-from toonmesh.data import bunny
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 360
 
 
@@ -31,10 +28,9 @@ def panels(V, F, material, camera, crease_angle):
 
 
 def main() -> None:
-    fandisk = trimesh.load(ROOT / "tests/data/meshes/fandisk.obj", process=False)
+    fandisk = trimesh.load(MESHES / "fandisk.obj", process=False)
     V1, F1 = np.asarray(fandisk.vertices), np.asarray(fandisk.faces)
-    V2, F2 = bunny()
-    V2 = tm.smooth.laplacian(V2, F2, iterations=5, preset="paper")
+    V2, F2 = smoothed_bunny()
     top = panels(V1, F1, tm.Material.bands("#8fb8de"), tm.Camera.fit((0.6, 0.5, 1.0)), 40.0)
     bottom = panels(V2, F2, tm.Material.thresholded_phong("#f08a3c", t_h=0.1, t_s=0.9), tm.Camera.fit((0.35, 0.3, 1.0)), 60.0)
     figure = np.ascontiguousarray(np.concatenate([top, bottom], axis=0))

@@ -6,15 +6,11 @@ weave made here with NumPy).
 Run from the repository root: ``python docs/paper_figure.py``.
 """
 
-from pathlib import Path
-
 import numpy as np
-from PIL import Image
+from figures import save, smoothed_bunny
 
 import toonmesh as tm
-from toonmesh.data import bunny
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 260
 
 
@@ -26,8 +22,7 @@ def canvas(n: int = 32) -> np.ndarray:
 
 
 def main() -> None:
-    V, F = bunny()
-    V = tm.smooth.laplacian(V, F, iterations=5, preset="paper")
+    V, F = smoothed_bunny()
     kw = dict(width=SIZE, height=SIZE, outlines="mesh", background="#f4efe4")
     bands = tm.Material.bands("#e08850")
     cells = [
@@ -37,9 +32,7 @@ def main() -> None:
         tm.render(V, F, material=bands, paper=tm.Paper(space="surface", strength=0.8, scale=2.0), **kw).color,
         tm.render(V, F, material=bands, paper=tm.Paper(canvas(), strength=0.5, scale=1.0), **kw).color,
     ]
-    out = ROOT / "docs" / "paper.png"
-    Image.fromarray(np.concatenate(cells, axis=1)).save(out, optimize=True)
-    print("wrote", out)
+    save("paper.png", np.concatenate(cells, axis=1))
 
 
 if __name__ == "__main__":

@@ -6,21 +6,16 @@ as rim light is usually shown.
 Run from the repository root: ``python docs/rim_figure.py``.
 """
 
-from pathlib import Path
-
 import numpy as np
-from PIL import Image
+from figures import save, smoothed_bunny
 
 import toonmesh as tm
-from toonmesh.data import bunny
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 260
 
 
 def main() -> None:
-    V, F = bunny()
-    V = tm.smooth.laplacian(V, F, iterations=5, preset="paper")
+    V, F = smoothed_bunny()
     side = [tm.Light.directional((-1.0, -0.3, -0.4))]
     kw = dict(width=SIZE, height=SIZE, outlines="mesh", lights=side, background="#3a4050")
     colour = "#f08a3c"
@@ -33,9 +28,7 @@ def main() -> None:
         tm.render(V, F, material=tm.Material.hatching(rim=tm.Rim("#ff9020", width=0.5, softness=0.3, strength=1.0, blend="mix")),
                   **kw).color,
     ]
-    out = ROOT / "docs" / "rim.png"
-    Image.fromarray(np.concatenate(cells, axis=1)).save(out, optimize=True)
-    print("wrote", out)
+    save("rim.png", np.concatenate(cells, axis=1))
 
 
 if __name__ == "__main__":

@@ -21,10 +21,10 @@ SRC = Path(__file__).resolve().parent.parent / "src"
 
 
 def surface_effects() -> List[str]:
-    """The per-pixel effects, as `effects/surface.rs` registers them (`name: Settings => EFFECT`)."""
+    """The per-pixel effects, as `effects/surface.rs` registers them (`name: Settings`)."""
     text = (SRC / "render" / "effects" / "surface.rs").read_text()
     listed = text[text.index("registry! {") :]
-    return re.findall(r"^\s+(\w+): [\w:]+ => [\w:]+,$", listed, re.M)
+    return re.findall(r"^\s+(\w+): [\w:]+,$", listed, re.M)
 
 
 def frame_effects() -> List[str]:

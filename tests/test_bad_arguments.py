@@ -142,6 +142,15 @@ class Case:
 # Probes per kind
 
 
+def in_range(value: float, kind: Any) -> Any:
+    """What a value of the right type gives: OK within the kind's range, ValueError outside it;
+    None (left out) for a legal value that would take long (above ``kind.slow_above``)."""
+    legal = kind.legal(value)
+    if legal and value > kind.slow_above:
+        return None
+    return OK if legal else ValueError
+
+
 def number_probes(p: Param) -> List[Tuple[str, Any, Any]]:
     k: Number = p.kind
     finite_lo = k.lo if math.isfinite(k.lo) else -1e3
@@ -170,10 +179,9 @@ def number_probes(p: Param) -> List[Tuple[str, Any, Any]]:
         if not math.isfinite(fv) and not math.isnan(fv) and isinstance(v, int):
             out.append((label, v, ValueError))  # an int too large for a float
             continue
-        legal = k.legal(fv)
-        if legal and fv > k.slow_above:
-            continue
-        out.append((label, v, OK if legal else ValueError))
+        outcome = in_range(fv, k)
+        if outcome is not None:
+            out.append((label, v, outcome))
     out += [
         ("bool", True, TypeError),
         ("numpy bool", np.True_, TypeError),
@@ -206,10 +214,9 @@ def integer_probes(p: Param) -> List[Tuple[str, Any, Any]]:
         if not k.representable(iv):
             out.append((label, v, ValueError))
             continue
-        legal = k.legal(iv)
-        if legal and iv > k.slow_above:
-            continue
-        out.append((label, v, OK if legal else ValueError))
+        outcome = in_range(iv, k)
+        if outcome is not None:
+            out.append((label, v, outcome))
     out += [
         ("float", 2.5, TypeError),
         ("integral float", 2.0, TypeError),
@@ -544,6 +551,17 @@ MESH_PARAMS = [Param("vertices", VERTICES), Param("faces", FACES)]
 CREASE = Param("crease_angle", Number(0.0, 180.0), none=OK)  # None: the core's default
 # A generated shape's noise (relative to its size) and seed.
 NOISE_AND_SEED = [Param("noise", Number(0.0, math.inf, open_hi=True)), Param("seed", Integer(0, 2**64 - 1))]
+# The view the edge functions take: an eye point (the origin is one) or a view direction (never
+# zero), and a valid one of each.
+EYE = Param("eye", vec3("eye", OK), none=ValueError)
+DIRECTION = Param("direction", vec3("direction", ValueError), none=ValueError)
+AN_EYE = dict(eye=(0.3, 0.2, 5.0))
+A_DIRECTION = dict(direction=(0.3, 0.2, -1.0))
+# Suggestive contours' derivative threshold and curvature smoothing (None: their defaults).
+SUGGESTIVE = [
+    Param("threshold", Number(0.0, math.inf, open_hi=True), none=OK),
+    Param("smoothing", Number(0.0, math.inf, open_hi=True), none=OK),
+]
 
 CASES: List[Case] = [
     Case(
@@ -607,57 +625,24 @@ CASES: List[Case] = [
         Case(name, call, _mesh(crease_angle=20.0, weld=False), [*MESH_PARAMS, CREASE, Param("weld", Flag())])
         for name, call in (("edges.feature_edges", te.feature_edges), ("edges.EdgeIndex", te.EdgeIndex))
     ],
-    Case(
-        "edges.silhouette",
-        te.silhouette,
-        _mesh(eye=(0.3, 0.2, 5.0), weld=False),
-        [
-            Param("vertices", VERTICES),
-            Param("faces", FACES),
-            Param("eye", vec3("eye", OK), none=ValueError),
-            Param("weld", Flag()),
-        ],
-    ),
-    Case(
-        "edges.silhouette(direction=)",
-        te.silhouette,
-        _mesh(direction=(0.3, 0.2, -1.0)),
-        [Param("direction", vec3("direction", ValueError), none=ValueError)],
-    ),
-
-    Case(
-        "edges.EdgeIndex.feature_edges",
-        EDGE_INDEX.feature_edges,
-        dict(crease_angle=20.0),
-        [CREASE],
-    ),
-    Case(
-        "edges.EdgeIndex.silhouette",
-        EDGE_INDEX.silhouette,
-        dict(eye=(0.3, 0.2, 5.0)),
-        [Param("eye", vec3("eye", OK), none=ValueError)],
-    ),
+    *[
+        Case(name, call, _mesh(**AN_EYE, weld=False), [*MESH_PARAMS, EYE, Param("weld", Flag())])
+        for name, call in (("edges.silhouette", te.silhouette), ("edges.contours", te.contours))
+    ],
+    Case("edges.silhouette(direction=)", te.silhouette, _mesh(**A_DIRECTION), [DIRECTION]),
+    Case("edges.EdgeIndex.feature_edges", EDGE_INDEX.feature_edges, dict(crease_angle=20.0), [CREASE]),
+    *[Case(f"edges.EdgeIndex.{name}", getattr(EDGE_INDEX, name), AN_EYE, [EYE]) for name in ("silhouette", "contours")],
     Case(
         "edges.EdgeIndex.outlines",
         EDGE_INDEX.outlines,
-        dict(direction=(0.3, 0.2, -1.0), kinds=False),
-        [Param("direction", vec3("direction", ValueError), none=ValueError), Param("kinds", Flag())],
-    ),
-    Case(
-        "edges.EdgeIndex.contours",
-        EDGE_INDEX.contours,
-        dict(eye=(0.3, 0.2, 5.0)),
-        [Param("eye", vec3("eye", OK), none=ValueError)],
+        dict(**A_DIRECTION, kinds=False),
+        [DIRECTION, Param("kinds", Flag())],
     ),
     Case(
         "edges.EdgeIndex.suggestive_contours",
         EDGE_INDEX.suggestive_contours,
-        dict(direction=(0.3, 0.2, -1.0), threshold=0.01, smoothing=1.0),
-        [
-            Param("direction", vec3("direction", ValueError), none=ValueError),
-            Param("threshold", Number(0.0, math.inf, open_hi=True), none=OK),
-            Param("smoothing", Number(0.0, math.inf, open_hi=True), none=OK),
-        ],
+        dict(**A_DIRECTION, threshold=0.01, smoothing=1.0),
+        [DIRECTION, *SUGGESTIVE],
     ),
     Case(
         "edges.EdgeIndex.segments",
@@ -676,23 +661,10 @@ CASES: List[Case] = [
         ],
     ),
     Case(
-        "edges.contours",
-        te.contours,
-        _mesh(eye=(0.3, 0.2, 5.0), weld=False),
-        [*MESH_PARAMS, Param("eye", vec3("eye", OK), none=ValueError), Param("weld", Flag())],
-    ),
-    Case(
         "edges.suggestive_contours",
         te.suggestive_contours,
-        _mesh(direction=(0.3, 0.2, -1.0), threshold=0.01, smoothing=1.0, weld=True),
-        [
-            Param("vertices", CURVED_VERTICES),
-            Param("faces", FACES),
-            Param("direction", vec3("direction", ValueError), none=ValueError),
-            Param("threshold", Number(0.0, math.inf, open_hi=True), none=OK),
-            Param("smoothing", Number(0.0, math.inf, open_hi=True), none=OK),
-            Param("weld", Flag()),
-        ],
+        _mesh(**A_DIRECTION, threshold=0.01, smoothing=1.0, weld=True),
+        [Param("vertices", CURVED_VERTICES), Param("faces", FACES), DIRECTION, *SUGGESTIVE, Param("weld", Flag())],
     ),
     Case("edges.chains", te.chains, dict(edges=EDGE_PAIRS), [Param("edges", EDGES)]),
     Case(
@@ -1091,6 +1063,14 @@ def _rendered(make: Callable[..., Any], use: Callable[[Any], Dict[str, Any]]) ->
     return call
 
 
+def _model_case(model: str, params: List[Param], base: Optional[Dict[str, Any]] = None) -> Case:
+    """The row of the shading model's constructor ``Material.<model>``, whose materials must
+    render; a valid call gives it a colour unless ``base`` says otherwise."""
+    make = getattr(tm.Material, model)
+    base = base if base is not None else dict(color=(0.9, 0.5, 0.2))
+    return Case(f"Material.{model}", _rendered(make, lambda m: dict(material=m)), base, params)
+
+
 # Huge or tiny meshes render, but their depths leave float32: no "depth" in these renders.
 
 
@@ -1194,6 +1174,8 @@ TEXTURE_PARAMS = [
     Param("alpha_cutoff", Number(0.0, 1.0), none=OK),
 ]
 BOTH_COLOURS = Array((("with vertex colours too", np.zeros((len(F), 3)), ValueError),))
+# Colours by vertex or by face (each None by default: not both).
+MESH_COLOURS = [Param("vertex_colors", mesh_colours(N), none=OK), Param("face_colors", mesh_colours(len(F)), none=OK)]
 
 
 COLOUR_OR_NONE = Param("color", COLOUR, none=OK)
@@ -1398,8 +1380,7 @@ RENDER_CASES: List[Case] = [
             Param("faces", FACES),
             Param("normals", NORMALS),
             Param("smooth_iterations", Integer(0, 10**6, slow_above=3)),
-            Param("vertex_colors", mesh_colours(N), none=OK),
-            Param("face_colors", mesh_colours(len(F)), none=OK),
+            *MESH_COLOURS,
         ],
     ),
     Case("Renderer.add_mesh(textured)", _added, dict(vertices=V, faces=F, **TEXTURED), TEXTURE_PARAMS),
@@ -1432,8 +1413,7 @@ RENDER_CASES: List[Case] = [
             Param("material", MATERIALS, none=OK),
             Param("transform", TRANSFORMS, none=OK),
             Param("normals", NORMALS),
-            Param("vertex_colors", mesh_colours(N), none=OK),
-            Param("face_colors", mesh_colours(len(F)), none=OK),
+            *MESH_COLOURS,
         ],
     ),
     Case("Mesh(textured)", _mesh_rendered, dict(vertices=V, faces=F, **TEXTURED), TEXTURE_PARAMS),
@@ -1443,16 +1423,9 @@ RENDER_CASES: List[Case] = [
         dict(vertices=V, faces=F, vertex_colors=np.ones((N, 3))),
         [Param("face_colors", BOTH_COLOURS, none=OK)],
     ),
-    Case(
-        "Material.lambert",
-        _rendered(tm.Material.lambert, lambda m: dict(material=m)),
-        dict(color=(0.9, 0.5, 0.2)),
-        [COLOUR_OR_NONE, Param("ambient", COLOUR, none=OK), PER_VERTEX, Param("rim", RIM, none=OK)],
-    ),
-    Case(
-        "Material.phong",
-        _rendered(tm.Material.phong, lambda m: dict(material=m)),
-        dict(color=(0.9, 0.5, 0.2)),
+    _model_case("lambert", [COLOUR_OR_NONE, Param("ambient", COLOUR, none=OK), PER_VERTEX, Param("rim", RIM, none=OK)]),
+    _model_case(
+        "phong",
         [
             COLOUR_OR_NONE,
             Param("specular", COLOUR, none=OK),
@@ -1461,10 +1434,8 @@ RENDER_CASES: List[Case] = [
             PER_VERTEX,
         ],
     ),
-    Case(
-        "Material.thresholded_phong",
-        _rendered(tm.Material.thresholded_phong, lambda m: dict(material=m)),
-        dict(color=(0.9, 0.5, 0.2)),
+    _model_case(
+        "thresholded_phong",
         [
             COLOUR_OR_NONE,
             Param("t_h", T, none=OK),
@@ -1476,18 +1447,14 @@ RENDER_CASES: List[Case] = [
             Param("dither", DITHER, none=OK),
         ],
     ),
-    Case(
-        "Material.bands",
-        _rendered(tm.Material.bands, lambda m: dict(material=m)),
-        dict(color=(0.9, 0.5, 0.2)),
+    _model_case(
+        "bands",
         [COLOUR_OR_NONE, Param("thresholds", THRESHOLDS, none=OK), Param("values", VALUES, none=OK),
          Param("preset", Name(("paper",), invalid=("trimesh", "pymeshlab")), none=OK), PER_VERTEX,
          Param("dither", DITHER, none=OK), Param("rim", RIM, none=OK)],
     ),
-    Case(
-        "Material.hatching",
-        _rendered(tm.Material.hatching, lambda m: dict(material=m)),
-        dict(color=None),
+    _model_case(
+        "hatching",
         [
             COLOUR_OR_NONE,
             Param("ink", COLOUR, none=OK),
@@ -1499,12 +1466,12 @@ RENDER_CASES: List[Case] = [
             PER_VERTEX,
             Param("dither", DITHER, none=OK),
         ],
+        base=dict(color=None),
     ),
-    Case(
-        "Material.lut",
-        _rendered(tm.Material.lut, lambda m: dict(material=m)),
-        dict(table=None, color=(0.9, 0.5, 0.2)),
+    _model_case(
+        "lut",
         [Param("table", LUT, none=OK), COLOUR_OR_NONE, PER_VERTEX, Param("dither", DITHER, none=OK)],
+        base=dict(table=None, color=(0.9, 0.5, 0.2)),
     ),
     Case(
         "Dither",

@@ -9,14 +9,28 @@ only gathers them and warns about whatever is given but not used.
 from __future__ import annotations
 
 import warnings
-from typing import Any, Dict, List, Optional
+from typing import Any, Dict, List, Mapping, Optional, TypedDict
 
 import numpy as np
 
 from toonmesh import _core
 
-#: The keywords about a mesh's colour, in the order the core takes them.
-KEYS = ("vertex_colors", "face_colors", "uv", "texture", "texture_filter", "texture_wrap", "alpha_cutoff")
+
+class MeshColors(TypedDict, total=False):
+    """The keywords about a mesh's colour (:class:`toonmesh.Mesh` says what each takes), in the
+    order the core takes them. None, or a keyword left out, is not given."""
+
+    vertex_colors: Any
+    face_colors: Any
+    uv: Any
+    texture: Any
+    texture_filter: Optional[str]
+    texture_wrap: Optional[str]
+    alpha_cutoff: Optional[float]
+
+
+#: Their names.
+KEYS = tuple(MeshColors.__annotations__)
 _DATA = KEYS[:4]
 # the textures of a glTF material the renderer does not draw with
 _PBR_UNUSED = ("emissiveTexture", "normalTexture", "occlusionTexture", "metallicRoughnessTexture")
@@ -98,10 +112,20 @@ def from_trimesh(mesh: Any) -> Dict[str, Any]:
     return found
 
 
-def gather(source: Any, given: Dict[str, Any], where: str, stacklevel: int = 3) -> Dict[str, Any]:
-    """The colour keywords for a mesh: those `given` (None: not given), else the trimesh's when
-    `source` is one. Warns (from the caller's caller) about what is given but not used."""
-    chosen = {k: v for k, v in given.items() if v is not None}
+def given(colors: Mapping[str, Any], where: str) -> Dict[str, Any]:
+    """The colour keywords a caller was given (``**colors``), None values left out; another
+    keyword is a TypeError, as for any Python function (``where`` names the function)."""
+    for k in colors:
+        if k not in KEYS:
+            raise TypeError(f"{where}() got an unexpected keyword argument {k!r}")
+    return {k: v for k, v in colors.items() if v is not None}
+
+
+def gather(source: Any, colors: Mapping[str, Any], where: str, stacklevel: int = 3) -> Dict[str, Any]:
+    """The colour keywords for a mesh: those of ``colors`` given (see :func:`given`), else the
+    trimesh's when `source` is one. Warns (from the caller's caller) about what is given but
+    not used."""
+    chosen = given(colors, where)
     notes: List[str] = []
     if hasattr(source, "vertices") and hasattr(source, "faces") and hasattr(source, "visual"):
         carried = from_trimesh(source)

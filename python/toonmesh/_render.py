@@ -31,6 +31,8 @@ from toonmesh._scene import Mesh, MeshHandle, Normals, geometry_key, normal_mode
 if TYPE_CHECKING:
     from typing_extensions import Unpack
 
+    from toonmesh._colors import MeshColors
+
 
 #: The keywords of :class:`RenderOptions` (a TypedDict made and documented by the core).
 RenderKeywords = _core._RenderKeywords
@@ -85,13 +87,7 @@ class Renderer:
         *,
         normals: Normals = "smooth",
         smooth_iterations: int = 0,
-        vertex_colors: Any = None,
-        face_colors: Any = None,
-        uv: Any = None,
-        texture: Any = None,
-        texture_filter: Optional[str] = None,
-        texture_wrap: Optional[str] = None,
-        alpha_cutoff: Optional[float] = None,
+        **colors: "Unpack[MeshColors]",
     ) -> MeshHandle:
         """Uploads a mesh ((N, 3) float32/float64 and (M, 3) int faces, or a trimesh.Trimesh).
 
@@ -102,11 +98,7 @@ class Renderer:
         ``texture_wrap``, ``alpha_cutoff``: the mesh's colour, as :class:`Mesh` describes (a
         trimesh brings its own).
         """
-        given = dict(
-            vertex_colors=vertex_colors, face_colors=face_colors, uv=uv, texture=texture,
-            texture_filter=texture_filter, texture_wrap=texture_wrap, alpha_cutoff=alpha_cutoff,
-        )
-        return self._add(vertices, faces, normals, smooth_iterations, _colors.gather(vertices, given, "add_mesh"))
+        return self._add(vertices, faces, normals, smooth_iterations, _colors.gather(vertices, colors, "add_mesh"))
 
     def _add(self, vertices: Any, faces: Any, normals: Normals, smooth_iterations: int, colors: Dict[str, Any]) -> MeshHandle:
         """Every upload goes through here (:meth:`add_mesh`, :func:`place_meshes`): ``colors``

@@ -5,12 +5,26 @@ and :class:`RenderStack` (the views of one scene), which the rest of the package
 
 from __future__ import annotations
 
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Sequence, Tuple, TypedDict
 
 import numpy as np
 
 from toonmesh import _core, _strokes
 from toonmesh._core import LineStyle, Outlines
+
+if TYPE_CHECKING:
+    from typing_extensions import Unpack
+
+
+class SvgOptions(TypedDict, total=False):
+    """The keywords of :meth:`RenderResult.svg`, :meth:`RenderResult.save_svg` and
+    :meth:`RenderResult.svg_groups`, whose signature gives their defaults."""
+
+    order: str
+    simplify: float
+    smooth: float
+    widths: str
+
 
 class RenderResult:
     """The images of one render. Arrays are row-major with the top row first.
@@ -110,14 +124,7 @@ class RenderResult:
         drawn = _strokes.drawn(self.lines, by_widths, smooth, simplify)
         return [(p, w[keep], k) for (p, keep), w, k in zip(drawn, self.line_widths, self.line_kinds)]
 
-    def svg(
-        self,
-        *,
-        order: str = "drawing",
-        simplify: float = _strokes.SIMPLIFY,
-        smooth: float = _strokes.SMOOTH,
-        widths: str = "auto",
-    ) -> str:
+    def svg(self, **options: "Unpack[SvgOptions]") -> str:
         """The visible mesh-space lines as an SVG document of the image's size (pixel units),
         one group per kind, one shape per stroke in its kind's colour: a ``<polyline>`` stroked
         at its kind's width, or, where the width varies along the stroke, a filled ``<path>``
@@ -139,9 +146,7 @@ class RenderResult:
                 polylines at the kind's width for the others), "kind" (polylines at each kind's
                 width, centre lines a pen plotter can draw) or "point" (filled outlines always).
         """
-        return _strokes.svg_document(
-            self.width, self.height, self.svg_groups(order=order, simplify=simplify, smooth=smooth, widths=widths)
-        )
+        return _strokes.svg_document(self.width, self.height, self.svg_groups(**options))
 
     def svg_groups(
         self,
@@ -151,7 +156,8 @@ class RenderResult:
         smooth: float = _strokes.SMOOTH,
         widths: str = "auto",
     ) -> List["_strokes.SvgGroup"]:
-        """The groups of :meth:`svg`'s document (same arguments), one per kind in name order:
+        """The groups of :meth:`svg`'s document (the same arguments; their defaults are these),
+        one per kind in name order:
         ``(kind, colour, width or None for filled outlines, dashes, [(points, widths), ...])``,
         for a caller that adds groups of its own (the command line's hidden lines) before
         writing the document with the same writer."""
@@ -171,18 +177,10 @@ class RenderResult:
             groups.append((kind, style.color, None if filled(kind) else style.width, None, group))
         return groups
 
-    def save_svg(
-        self,
-        path: Any,
-        *,
-        order: str = "drawing",
-        simplify: float = _strokes.SIMPLIFY,
-        smooth: float = _strokes.SMOOTH,
-        widths: str = "auto",
-    ) -> None:
+    def save_svg(self, path: Any, **options: "Unpack[SvgOptions]") -> None:
         """Writes :meth:`svg` (with its ``order``, ``simplify``, ``smooth`` and ``widths``) to
         ``path``."""
-        text = self.svg(order=order, simplify=simplify, smooth=smooth, widths=widths)
+        text = self.svg(**options)
         with open(path, "w", encoding="utf-8") as f:
             f.write(text)
 

@@ -8,13 +8,18 @@ the other to describe a scene.
 
 from __future__ import annotations
 
-from typing import Any, Dict, Optional, Tuple, Union
+from typing import TYPE_CHECKING, Any, Dict, Optional, Tuple, Union
 
 import numpy as np
 
 from toonmesh import _colors, _core
 from toonmesh._core import Material
 from toonmesh._input import mesh_arrays
+
+if TYPE_CHECKING:
+    from typing_extensions import Unpack
+
+    from toonmesh._colors import MeshColors
 
 #: A normal mode: ``"smooth"``, ``"flat"``, ``"auto"`` or ``("auto", crease angle in degrees)``.
 Normals = Union[str, Tuple[str, float]]
@@ -88,23 +93,13 @@ class Mesh:
         material: Optional[Material] = None,
         transform: Optional[Any] = None,
         normals: Normals = "smooth",
-        vertex_colors: Any = None,
-        face_colors: Any = None,
-        uv: Any = None,
-        texture: Any = None,
-        texture_filter: Optional[str] = None,
-        texture_wrap: Optional[str] = None,
-        alpha_cutoff: Optional[float] = None,
+        **colors: "Unpack[MeshColors]",
     ):
         self.handle: Optional[MeshHandle] = vertices if isinstance(vertices, MeshHandle) else None
-        given = dict(
-            vertex_colors=vertex_colors, face_colors=face_colors, uv=uv, texture=texture,
-            texture_filter=texture_filter, texture_wrap=texture_wrap, alpha_cutoff=alpha_cutoff,
-        )
         if self.handle is not None:
             if faces is not None:
                 raise TypeError("faces: must be None when vertices is a MeshHandle")
-            named = [k for k, v in given.items() if v is not None]
+            named = list(_colors.given(colors, "Mesh"))
             if named:
                 raise TypeError(f"{named[0]}: a MeshHandle has its colour already (give it to Renderer.add_mesh)")
             self.vertices: Optional[np.ndarray] = None
@@ -112,7 +107,7 @@ class Mesh:
             self.colors: Dict[str, Any] = {}
         else:
             self.vertices, self.faces = mesh_arrays(vertices, faces)
-            self.colors = _colors.gather(vertices, given, "Mesh")
+            self.colors = _colors.gather(vertices, colors, "Mesh")
         if material is not None and not isinstance(material, Material):
             raise TypeError(f"material: expected a toonmesh.Material, got {type(material).__name__}")
         self.material = material

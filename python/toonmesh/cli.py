@@ -583,13 +583,13 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("--hidden", action="store_true", help="draw hidden lines too (dashed; default: off)")
     _add_contour_arguments(p)
     add_described(p, "--stroke-width", LineStyle, "width", metavar="PX", also_sets=[(Outlines, "width")])
-    p.add_argument("--smooth-strokes", type=float, default=_keyword_default(RenderResult.svg, "smooth"), metavar="PX",
+    p.add_argument("--smooth-strokes", type=float, default=_keyword_default(RenderResult.svg_groups, "smooth"), metavar="PX",
                    help="smooth each stroke of the SVG over this many pixels along it; no point moves more "
                         "(default %(default)g: off)")
-    p.add_argument("--order", choices=_strokes.ORDERS, default=_keyword_default(RenderResult.svg, "order"),
+    p.add_argument("--order", choices=_strokes.ORDERS, default=_keyword_default(RenderResult.svg_groups, "order"),
                    help="drawing: as found; plotter: each next stroke nearest where the pen stopped "
                         "(default: %(default)s)")
-    p.add_argument("--simplify", type=float, default=_keyword_default(RenderResult.svg, "simplify"), metavar="PX",
+    p.add_argument("--simplify", type=float, default=_keyword_default(RenderResult.svg_groups, "simplify"), metavar="PX",
                    help="drop points within this many pixels of each stroke (default %(default)g; 0 keeps every point)")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_edges)

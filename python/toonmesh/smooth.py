@@ -47,7 +47,8 @@ a mesh of size 1 placed at 1e10 is smoothed to about 1e-6.
 
 from __future__ import annotations
 
-from typing import Any, Dict, Optional
+import inspect
+from typing import TYPE_CHECKING, Any, Callable, Mapping, Optional, TypedDict, get_type_hints
 
 import numpy as np
 import numpy.typing as npt
@@ -55,7 +56,13 @@ import numpy.typing as npt
 from toonmesh import _core
 from toonmesh._input import mesh_arrays
 
+if TYPE_CHECKING:
+    from typing_extensions import Unpack
+
 __all__ = ["laplacian", "taubin", "hc", "implicit", "bilateral", "guided"]
+
+#: What every smoothing function returns: new positions, of the input's float dtype.
+Positions = npt.NDArray[np.floating[Any]]
 
 _COMMON = """
     Parameters shared by every smoothing function
@@ -99,28 +106,58 @@ _COMMON = """
 """
 
 
-def _call(method: str, given: Dict[str, Any]) -> npt.NDArray[np.floating[Any]]:
-    """The core's smoother `method` on what a public function was given (its locals):
-    the signatures below are the only place each keyword is written. Every option's type and
-    value is checked in the core, which names it in the error."""
-    options = dict(given)
-    V, F = mesh_arrays(options.pop("vertices"), options.pop("faces"))
-    return _core._smooth(method, V, F, **options)  # type: ignore[no-any-return]
+class Options(TypedDict, total=False):
+    """The keywords every smoothing function takes (each function's own are in its
+    ``...Options``). A keyword left out, or None, is the function's default."""
+
+    iterations: Optional[int]
+    pinned: Optional[Any]
+    weld: bool
 
 
-def laplacian(
-    vertices: Any,
-    faces: Any = None,
-    *,
-    iterations: Optional[int] = None,
-    lamb: Optional[float] = None,
-    weights: Optional[str] = None,
-    boundary: Optional[str] = None,
-    pinned: Optional[Any] = None,
-    volume_constraint: Optional[bool] = None,
-    preset: Optional[str] = None,
-    weld: bool = False,
-) -> npt.NDArray[np.floating[Any]]:
+class LaplacianFamilyOptions(Options, total=False):
+    """The keywords of the Laplacian family (:func:`laplacian`, :func:`taubin`, :func:`hc`,
+    :func:`implicit`): the operator's weights, the boundary's rule and the preset."""
+
+    weights: Optional[str]
+    boundary: Optional[str]
+    preset: Optional[str]
+
+
+def _signature(options: type) -> inspect.Signature:
+    """A smoothing function's signature, as ``help()``, the command line and the API docs read
+    it: the mesh, then each keyword of ``options`` (a TypedDict), None by default (the
+    function's own default), or False for a flag that takes no None (``weld``)."""
+    mesh = [
+        inspect.Parameter("vertices", inspect.Parameter.POSITIONAL_OR_KEYWORD, annotation=Any),
+        inspect.Parameter("faces", inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None, annotation=Any),
+    ]
+    keywords = [
+        inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=False if hint is bool else None,
+                          annotation=hint)
+        for name, hint in get_type_hints(options).items()
+    ]
+    return inspect.Signature(mesh + keywords, return_annotation=Positions)
+
+
+def _call(smoother: Callable[..., Positions], vertices: Any, faces: Any, options: Mapping[str, Any]) -> Positions:
+    """The core's smoother of the public function ``smoother`` (its namesake) on what it was
+    given. A keyword ``smoother`` does not take is a TypeError, as for any Python function;
+    every option's type and value is checked in the core, which names it in the error."""
+    try:
+        inspect.signature(smoother).bind(vertices, faces, **options)
+    except TypeError as exc:
+        raise TypeError(f"{smoother.__name__}() {exc}") from None
+    V, F = mesh_arrays(vertices, faces)
+    return _core._smooth(smoother.__name__, V, F, **options)  # type: ignore[no-any-return]
+
+
+class LaplacianOptions(LaplacianFamilyOptions, total=False):
+    lamb: Optional[float]
+    volume_constraint: Optional[bool]
+
+
+def laplacian(vertices: Any, faces: Any = None, **options: Unpack[LaplacianOptions]) -> Positions:
     """Explicit Laplacian smoothing: ``x <- x + lamb * (A x - x)``, repeated.
 
     ``A x`` is the weighted mean of each vertex's neighbours.
@@ -144,22 +181,15 @@ def laplacian(
         After each step, rescale about the initial centre of mass to restore the enclosed
         volume. Skipped on meshes that enclose no volume.
     """
-    return _call("laplacian", locals())
+    return _call(laplacian, vertices, faces, options)
 
 
-def taubin(
-    vertices: Any,
-    faces: Any = None,
-    *,
-    iterations: Optional[int] = None,
-    lamb: Optional[float] = None,
-    mu: Optional[float] = None,
-    weights: Optional[str] = None,
-    boundary: Optional[str] = None,
-    pinned: Optional[Any] = None,
-    preset: Optional[str] = None,
-    weld: bool = False,
-) -> npt.NDArray[np.floating[Any]]:
+class TaubinOptions(LaplacianFamilyOptions, total=False):
+    lamb: Optional[float]
+    mu: Optional[float]
+
+
+def taubin(vertices: Any, faces: Any = None, **options: Unpack[TaubinOptions]) -> Positions:
     """Taubin (lambda/mu) smoothing, which removes noise without shrinking the mesh.
 
     Each iteration is a shrink step ``x += lamb (A x - x)`` then an inflate step
@@ -176,22 +206,15 @@ def taubin(
     weights, boundary
         As in :func:`laplacian` (pymeshlab and trimesh presets: uniform only).
     """
-    return _call("taubin", locals())
+    return _call(taubin, vertices, faces, options)
 
 
-def hc(
-    vertices: Any,
-    faces: Any = None,
-    *,
-    iterations: Optional[int] = None,
-    alpha: Optional[float] = None,
-    beta: Optional[float] = None,
-    weights: Optional[str] = None,
-    boundary: Optional[str] = None,
-    pinned: Optional[Any] = None,
-    preset: Optional[str] = None,
-    weld: bool = False,
-) -> npt.NDArray[np.floating[Any]]:
+class HcOptions(LaplacianFamilyOptions, total=False):
+    alpha: Optional[float]
+    beta: Optional[float]
+
+
+def hc(vertices: Any, faces: Any = None, **options: Unpack[HcOptions]) -> Positions:
     """HC smoothing (Vollmer, Mencl and Mueller 1999): Laplacian smoothing that pushes each
     vertex back toward its original and previous positions, so the mesh does not shrink.
 
@@ -215,24 +238,17 @@ def hc(
     weights, boundary
         As in :func:`laplacian`.
     """
-    return _call("hc", locals())
+    return _call(hc, vertices, faces, options)
 
 
-def implicit(
-    vertices: Any,
-    faces: Any = None,
-    *,
-    step: Optional[float] = None,
-    iterations: Optional[int] = None,
-    tol: Optional[float] = None,
-    max_iter: Optional[int] = None,
-    weights: Optional[str] = None,
-    boundary: Optional[str] = None,
-    pinned: Optional[Any] = None,
-    volume_constraint: Optional[bool] = None,
-    preset: Optional[str] = None,
-    weld: bool = False,
-) -> npt.NDArray[np.floating[Any]]:
+class ImplicitOptions(LaplacianFamilyOptions, total=False):
+    step: Optional[float]
+    tol: Optional[float]
+    max_iter: Optional[int]
+    volume_constraint: Optional[bool]
+
+
+def implicit(vertices: Any, faces: Any = None, **options: Unpack[ImplicitOptions]) -> Positions:
     """Implicit (backward Euler) Laplacian smoothing: solves ``((1 + step) I - step A) x' = x``.
 
     Stable for any step size, so one large step replaces many explicit ones (Desbrun et al.
@@ -253,12 +269,7 @@ def implicit(
     boundary : "fixed" or "free", default "fixed"
     volume_constraint : bool, default False (trimesh preset: True)
     """
-    return _call("implicit", locals())
-
-
-for _f in (laplacian, taubin, hc, implicit):
-    _f.__doc__ = (_f.__doc__ or "") + _COMMON
-del _f
+    return _call(implicit, vertices, faces, options)
 
 
 _NORMAL_FILTERING = """
@@ -317,17 +328,15 @@ _NORMAL_FILTERING = """
 """
 
 
-def bilateral(
-    vertices: Any,
-    faces: Any = None,
-    *,
-    iterations: Optional[int] = None,
-    vertex_iterations: Optional[int] = None,
-    sigma_s: Optional[float] = None,
-    sigma_r: Optional[float] = None,
-    pinned: Optional[Any] = None,
-    weld: bool = False,
-) -> npt.NDArray[np.floating[Any]]:
+class NormalFilterOptions(Options, total=False):
+    """The keywords of the normal filters (:func:`bilateral` and :func:`guided`)."""
+
+    vertex_iterations: Optional[int]
+    sigma_s: Optional[float]
+    sigma_r: Optional[float]
+
+
+def bilateral(vertices: Any, faces: Any = None, **options: Unpack[NormalFilterOptions]) -> Positions:
     """Feature-preserving smoothing by bilateral normal filtering (Zheng et al. 2011).
 
     Removes noise from flat and smoothly curved regions while keeping creases sharp: the range
@@ -335,20 +344,10 @@ def bilateral(
     light noise; under heavy noise the noisy normals themselves blur the creases, where
     :func:`guided` does better.
     """
-    return _call("bilateral", locals())
+    return _call(bilateral, vertices, faces, options)
 
 
-def guided(
-    vertices: Any,
-    faces: Any = None,
-    *,
-    iterations: Optional[int] = None,
-    vertex_iterations: Optional[int] = None,
-    sigma_s: Optional[float] = None,
-    sigma_r: Optional[float] = None,
-    pinned: Optional[Any] = None,
-    weld: bool = False,
-) -> npt.NDArray[np.floating[Any]]:
+def guided(vertices: Any, faces: Any = None, **options: Unpack[NormalFilterOptions]) -> Positions:
     """Feature-preserving smoothing by guided normal filtering (Zhang et al. 2015).
 
     As :func:`bilateral`, but the range weights compare guidance normals: at every pass, each
@@ -357,9 +356,19 @@ def guided(
     where the noise is as strong as the crease. Better than :func:`bilateral` at medium and
     heavy noise, at about twice its cost.
     """
-    return _call("guided", locals())
+    return _call(guided, vertices, faces, options)
 
 
-for _f in (bilateral, guided):
-    _f.__doc__ = (_f.__doc__ or "") + _NORMAL_FILTERING
-del _f
+# each function's keywords, as callers see them (signature), and the documentation of those
+# it shares with its family
+for _f, _options, _shared in (
+    (laplacian, LaplacianOptions, _COMMON),
+    (taubin, TaubinOptions, _COMMON),
+    (hc, HcOptions, _COMMON),
+    (implicit, ImplicitOptions, _COMMON),
+    (bilateral, NormalFilterOptions, _NORMAL_FILTERING),
+    (guided, NormalFilterOptions, _NORMAL_FILTERING),
+):
+    _f.__signature__ = _signature(_options)  # type: ignore[union-attr]
+    _f.__doc__ = (_f.__doc__ or "") + _shared
+del _f, _options, _shared

@@ -12,8 +12,8 @@
 use rayon::prelude::*;
 
 use super::buckets::{
-    across_next, across_prev, prefix_sum, sort8, split_by, vertex_chunks, Buckets, Corner, RingCorner,
-    NOT_A_VERTEX,
+    across_next, across_prev, fill_slot_pairs, prefix_sum, sort8, split_by, vertex_chunks, Buckets, Corner,
+    RingCorner, NOT_A_VERTEX,
 };
 use crate::error::Result;
 use crate::huge_pages;
@@ -148,15 +148,8 @@ impl Adjacency {
         );
         let offsets = prefix_sum(&distinct);
         drop(distinct);
-        let slots = offsets[n_vertices] as usize;
-        let mut nbrs: Vec<u32> = huge_pages::filled_vec(slots, 0);
-        let mut edge_faces: Vec<u32> = huge_pages::filled_vec(slots, 0);
-        let slot_start = |r: &std::ops::Range<usize>| offsets[r.start] as usize;
-        split_by(&mut nbrs, &ranges, slot_start)
-            .into_par_iter()
-            .zip(split_by(&mut edge_faces, &ranges, slot_start))
-            .zip(ranges.par_iter())
-            .for_each_init(Vec::new, |scratch, ((nb, ef), r)| {
+        let (nbrs, edge_faces) =
+            fill_slot_pairs(&offsets, &ranges, (0u32, 0u32), Vec::new, |scratch, (nb, ef), r| {
                 let base = offsets[r.start] as usize;
                 for i in r.clone() {
                     let c = ring(i);

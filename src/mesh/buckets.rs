@@ -292,6 +292,28 @@ pub fn split_by<'a, T>(
     out
 }
 
+/// Two arrays of slots, vertex v's `first[v]..first[v + 1]` in each, starting as `start` and
+/// filled in parallel over the vertex ranges: `fill` gets a range's pieces of both and a scratch
+/// value of its worker's, made by `init`.
+pub fn fill_slot_pairs<A: Copy + Send + Sync, B: Copy + Send + Sync, S>(
+    first: &[u32],
+    ranges: &[std::ops::Range<usize>],
+    start: (A, B),
+    init: impl Fn() -> S + Send + Sync,
+    fill: impl Fn(&mut S, (&mut [A], &mut [B]), &std::ops::Range<usize>) + Send + Sync,
+) -> (Vec<A>, Vec<B>) {
+    let slots = first.last().map_or(0, |&n| n as usize);
+    let mut a = huge_pages::filled_vec(slots, start.0);
+    let mut b = huge_pages::filled_vec(slots, start.1);
+    let at = |r: &std::ops::Range<usize>| first[r.start] as usize;
+    split_by(&mut a, ranges, at)
+        .into_par_iter()
+        .zip(split_by(&mut b, ranges, at))
+        .zip(ranges.par_iter())
+        .for_each_init(init, |scratch, (pieces, r)| fill(scratch, pieces, r));
+    (a, b)
+}
+
 pub fn prefix_sum(counts: &[u32]) -> Vec<u32> {
     let mut out = Vec::with_capacity(counts.len() + 1);
     let mut acc = 0u32;

@@ -18,7 +18,7 @@
 
 use rayon::prelude::*;
 
-use super::buckets::{prefix_sum, sort8, split_by, vertex_chunks, Buckets, RingCorner};
+use super::buckets::{fill_slot_pairs, prefix_sum, sort8, split_by, vertex_chunks, Buckets, RingCorner};
 use super::dihedral::CreaseTest;
 use super::edge_table::prefetch;
 use super::normals::{face_normals, is_defined, unit_or_zero};
@@ -123,15 +123,13 @@ pub fn split_normals<T: Real>(
 
     // Pass 2: each fan's normal, from its faces' area vectors in face order.
     let n_out = first[n] as usize;
-    let mut normals: Vec<[f64; 3]> = huge_pages::filled_vec(n_out, [0.0; 3]);
-    let mut source: Vec<u32> = huge_pages::filled_vec(n_out, 0);
-    let out_at = |r: &std::ops::Range<usize>| first[r.start] as usize;
-    split_by(&mut normals, &ranges, out_at)
-        .into_par_iter()
-        .zip(split_by(&mut source, &ranges, out_at))
-        .zip(ranges.par_iter())
-        .for_each_init(Vec::new, |sums: &mut Vec<[f64; 3]>, ((normals, source), r)| {
-            let base = out_at(r);
+    let (normals, source) = fill_slot_pairs(
+        &first,
+        &ranges,
+        ([0.0f64; 3], 0u32),
+        Vec::new,
+        |sums: &mut Vec<[f64; 3]>, (normals, source), r| {
+            let base = first[r.start] as usize;
             for v in r.clone() {
                 for c in ring((v + PREFETCH_AHEAD).min(n - 1)) {
                     prefetch(&area, (c[2] / 3) as usize);
@@ -142,7 +140,8 @@ pub fn split_normals<T: Real>(
                 let fan_of = &fan[buckets.start[v] as usize..][..corners.len()];
                 fan_normals(corners, fan_of, &area, sums, &mut normals[out]);
             }
-        });
+        },
+    );
 
     // Pass 3: every corner's output vertex: first[v] where v did not split; otherwise its fan,
     // found by a binary search in v's bucket, which lists v's corners by id.

@@ -18,9 +18,10 @@ use super::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
 use super::{dither, hatching, rim};
 
 /// Writes the registry from the list of effects: each one's field (named as the effect, in
-/// materials, in the WGSL `Draw` struct and in its hooks), its settings and its effect value.
+/// materials, in the WGSL `Draw` struct and in its hooks) and its settings, which implement
+/// the effect (`SurfaceEffect`).
 macro_rules! registry {
-    ($($name:ident: $settings:ty => $effect:expr,)*) => {
+    ($($name:ident: $settings:ty,)*) => {
         /// The per-pixel effects a material carries (None: not used).
         #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
         pub struct SurfaceSettings {
@@ -28,49 +29,52 @@ macro_rules! registry {
         }
 
         impl SurfaceSettings {
-            /// Checks every effect's settings against the material's model and shading.
+            /// Checks the settings of every effect the material uses against its model and
+            /// shading.
             pub fn validate(&self, s: &Surface<'_>, prefix: &str) -> Result<()> {
-                $($effect.validate(self.$name.as_ref(), s, prefix)?;)*
+                $(if let Some(settings) = &self.$name {
+                    settings.validate_with(s, prefix)?;
+                })*
                 Ok(())
             }
 
             /// Every effect's block, in the order of `blocks()`.
             pub fn block_bytes(&self) -> Vec<u8> {
                 let mut bytes = Vec::new();
-                $(bytes.extend($effect.block_bytes(self.$name.as_ref()));)*
+                $(bytes.extend(<$settings as SurfaceEffect>::block_bytes(self.$name.as_ref()));)*
                 bytes
             }
 
             /// Every effect's part of the shading pipeline.
             pub fn variants(&self) -> Vec<Variant> {
-                vec![$($effect.variant(self.$name.as_ref())),*]
+                vec![$(<$settings as SurfaceEffect>::variant(self.$name.as_ref())),*]
             }
         }
 
         /// Every effect's name and per-draw block, in the order they follow each other in `Draw`.
         pub fn blocks() -> Vec<(&'static str, BlockLayout)> {
-            vec![$((stringify!($name), $effect.block())),*]
+            vec![$((stringify!($name), <$settings as SurfaceEffect>::block())),*]
         }
 
         /// Every effect's WGSL.
         pub fn wgsl() -> String {
             let mut s = String::new();
-            $(s += &$effect.wgsl();)*
+            $(s += &<$settings as SurfaceEffect>::wgsl();)*
             s
         }
 
         /// Every effect's name and hooks, in the order they run.
         fn hooks() -> Vec<(&'static str, &'static [Hook])> {
-            vec![$((stringify!($name), $effect.hooks())),*]
+            vec![$((stringify!($name), <$settings as SurfaceEffect>::HOOKS)),*]
         }
     };
 }
 
 registry! {
-    dither: dither::Dither => dither::EFFECT,
-    hatching: hatching::Hatching => hatching::EFFECT,
+    dither: dither::Dither,
+    hatching: hatching::Hatching,
     // after hatching, so that its light shows on the strokes and the paper too
-    rim: rim::Rim => rim::EFFECT,
+    rim: rim::Rim,
 }
 
 /// The WGSL functions that call every effect's hooks in registry order: `surface_jitter(f)`

@@ -1,6 +1,7 @@
-//! The interface of a per-pixel effect (`effects::surface` lists them): its WGSL with its
-//! block and hooks, its per-draw block, its part of a material's pipeline, and its checks.
-//! Each method gets the effect's own settings (None where the material does not use it).
+//! The interface of a per-pixel effect (`effects::surface` lists them), implemented by its
+//! settings type: its WGSL with its block and hooks, its per-draw block, its part of a
+//! material's pipeline, and its checks. A material's block and pipeline are made from the
+//! settings it carries, None where it does not use the effect.
 
 use crate::error::Result;
 use crate::render::block::BlockLayout;
@@ -34,19 +35,18 @@ pub struct Variant {
     pub field: bool,
 }
 
-pub trait SurfaceEffect: Sync {
-    /// Its settings, as a material carries them.
-    type Settings;
+pub trait SurfaceEffect: Sized {
     /// Its WGSL: the block struct, its pipeline constants and its hooks.
-    fn wgsl(&self) -> String;
-    /// Its per-draw uniform block.
-    fn block(&self) -> BlockLayout;
+    fn wgsl() -> String;
     /// The hooks its WGSL implements.
-    fn hooks(&self) -> &'static [Hook];
-    /// Checks its settings against the rest of the material; `prefix` names the material.
-    fn validate(&self, settings: Option<&Self::Settings>, s: &Surface<'_>, prefix: &str) -> Result<()>;
+    const HOOKS: &'static [Hook];
+    /// Its per-draw uniform block.
+    fn block() -> BlockLayout;
+    /// Checks the settings of a material that uses the effect with the rest of the material;
+    /// `prefix` names the material.
+    fn validate_with(&self, s: &Surface<'_>, prefix: &str) -> Result<()>;
     /// Its block for a material (zeros where the material does not use it).
-    fn block_bytes(&self, settings: Option<&Self::Settings>) -> Vec<u8>;
+    fn block_bytes(settings: Option<&Self>) -> Vec<u8>;
     /// Its part of a material's shading pipeline.
-    fn variant(&self, settings: Option<&Self::Settings>) -> Variant;
+    fn variant(settings: Option<&Self>) -> Variant;
 }

@@ -7,9 +7,8 @@ use crate::render::scene::camera::{
 };
 
 const FIELDS: &[Field] = &[
-    Field::new("kind", Kind::Choice(&["fit", "look_at"]), "framed to fit the scene, or looking at a point")
-        .fixed(),
-    Field::new("projection", Kind::Choice(&["perspective", "orthographic"]), "the projection").fixed(),
+    Field::choice("kind", &["fit", "look_at"], "framed to fit the scene, or looking at a point").fixed(),
+    Field::choice("projection", &["perspective", "orthographic"], "the projection").fixed(),
     Field::new("eye", Kind::Vec3, "a look-at camera's position").optional(),
     Field::new("target", Kind::Vec3, "the point a look-at camera looks at").optional(),
     Field::new("up", Kind::Vec3, "the direction that is up in the image"),
@@ -19,36 +18,11 @@ const FIELDS: &[Field] = &[
         "a fitted camera's direction from the scene toward the eye (the scene is framed to fit)",
     )
     .optional(),
-    Field::new(
-        "margin",
-        Kind::Float { min: 0.5, max: 4.0 },
-        "a fitted camera's room around the scene (1: touching)",
-    )
-    .optional(),
-    Field::new(
-        "fov_y",
-        Kind::Float { min: 1.0, max: 179.0 },
-        "vertical field of view in degrees, in (0, 180)",
-    )
-    .optional(),
-    Field::new(
-        "height",
-        Kind::Float { min: 0.0, max: 100.0 },
-        "height of an orthographic view in world units, > 0",
-    )
-    .optional(),
-    Field::new(
-        "near",
-        Kind::Float { min: 0.0, max: 100.0 },
-        "near clip distance (None: from the scene's bounds)",
-    )
-    .optional(),
-    Field::new(
-        "far",
-        Kind::Float { min: 0.0, max: 1000.0 },
-        "far clip distance (None: from the scene's bounds)",
-    )
-    .optional(),
+    Field::float("margin", 0.5, 4.0, "a fitted camera's room around the scene (1: touching)").optional(),
+    Field::float("fov_y", 1.0, 179.0, "vertical field of view in degrees, in (0, 180)").optional(),
+    Field::float("height", 0.0, 100.0, "height of an orthographic view in world units, > 0").optional(),
+    Field::float("near", 0.0, 100.0, "near clip distance (None: from the scene's bounds)").optional(),
+    Field::float("far", 0.0, 1000.0, "far clip distance (None: from the scene's bounds)").optional(),
 ];
 
 const EXTRAS: &[Field] =
@@ -61,9 +35,6 @@ const CONSTRUCTORS: &[Constructor] = &[
 ];
 
 impl Described for Camera {
-    const CLASS: &'static str = "Camera";
-    const HELP: &'static str = include_str!("docs/Camera.md");
-
     const FIELDS: &'static [Field] = FIELDS;
 
     const EXTRAS: &'static [Field] = EXTRAS;

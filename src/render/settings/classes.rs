@@ -1,8 +1,9 @@
 //! Every settings class, listed once: its name (which front ends give it too), where its docs are (below `src/render`), its core type, and its
 //! constructors (`new` for `Class(...)`, then `fn name` for each `Class.name(...)`, whose
 //! docstring is `<docs>/Class.name.md`). `Setting` (a settings value held by another's field),
-//! the Python classes and the stub's list of classes are written from this list, so a new
-//! settings class is one line here and its `Described` impl.
+//! each type's `Class` (its name and its docstring, `<docs>/Class.md`), the Python classes and
+//! the stub's list of classes are written from this list, so a new settings class is one line
+//! here and its `Described` impl.
 
 /// Calls `$then! { Class("docs") = path::Type { constructors } ... }` with the list.
 macro_rules! settings_classes {
@@ -45,3 +46,23 @@ macro_rules! setting_enum {
 }
 
 settings_classes!(setting_enum);
+
+/// A settings type's class: its name and its docstring.
+pub trait Class {
+    const CLASS: &'static str;
+    const HELP: &'static str;
+}
+
+/// `Class` for each type of the list.
+macro_rules! class_impls {
+    ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
+        $(impl Class for $core {
+            const CLASS: &'static str = stringify!($class);
+            const HELP: &'static str = include_str!(concat!(
+                env!("CARGO_MANIFEST_DIR"), "/src/render/", $docs, "/", stringify!($class), ".md"
+            ));
+        })*
+    };
+}
+
+settings_classes!(class_impls);

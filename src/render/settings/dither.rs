@@ -1,36 +1,22 @@
 //! `Dither` described.
 
-use super::{Constructor, Described, Field, Kind, Value};
+use super::{one_constructor, Described, Field, Value};
 use crate::error::Result;
 use crate::render::effects::dither::{Dither, DitherPattern, DitherSpace};
 
 const FIELDS: &[Field] = &[
-    Field::new("pattern", Kind::Choice(DitherPattern::NAMES), "the threshold pattern"),
-    Field::new(
+    Field::choice("pattern", DitherPattern::NAMES, "the threshold pattern"),
+    Field::choice(
         "space",
-        Kind::Choice(DitherSpace::NAMES),
+        DitherSpace::NAMES,
         "what the pattern is fixed to: the screen's pixels or the surface",
     ),
-    Field::new(
-        "amount",
-        Kind::Float { min: 0.0, max: 2.0 },
-        "how far in L.n a pixel may move toward the neighbouring band, 0 to 2",
-    ),
-    Field::new("scale", Kind::Float { min: 1.0, max: 64.0 }, "pixels a pattern cell covers, 1 to 64"),
+    Field::float("amount", 0.0, 2.0, "how far in L.n a pixel may move toward the neighbouring band, 0 to 2"),
+    Field::float("scale", 1.0, 64.0, "pixels a pattern cell covers, 1 to 64"),
 ];
 
 impl Described for Dither {
-    const CLASS: &'static str = "Dither";
-    const HELP: &'static str = include_str!("docs/Dither.md");
-
-    const FIELDS: &'static [Field] = FIELDS;
-
-    const CONSTRUCTORS: &'static [Constructor] =
-        &[Constructor::only(&["pattern", "space", "amount", "scale"], 1)];
-
-    fn start(_: &str) -> Self {
-        Dither::default()
-    }
+    one_constructor!(FIELDS, positional: 1);
 
     fn get(&self, field: &str) -> Value {
         match field {
@@ -50,9 +36,5 @@ impl Described for Dither {
             _ => self.scale = v.float(field)?,
         }
         Ok(())
-    }
-
-    fn check(&self) -> Result<()> {
-        self.validate("")
     }
 }

@@ -6,15 +6,15 @@ use crate::render::effects::shadows::settings::Shadows;
 use crate::render::scene::light::{Light, LightKind, Space};
 
 const FIELDS: &[Field] = &[
-    Field::new("kind", Kind::Choice(&["directional", "point"]), "directional (sun-like) or point").fixed(),
+    Field::choice("kind", &["directional", "point"], "directional (sun-like) or point").fixed(),
     Field::new("direction", Kind::Vec3, "a directional light's direction, from the light toward the scene")
         .optional(),
     Field::new("position", Kind::Vec3, "a point light's position").optional(),
     Field::new("color", Kind::Color, "sRGB colour"),
-    Field::new("intensity", Kind::Float { min: 0.0, max: 4.0 }, "factor on the colour, >= 0"),
-    Field::new(
+    Field::float("intensity", 0.0, 4.0, "factor on the colour, >= 0"),
+    Field::choice(
         "space",
-        Kind::Choice(Space::NAMES),
+        Space::NAMES,
         "'world', or 'camera': fixed to the view (x right, y up, -z forward)",
     ),
     Field::new(
@@ -32,9 +32,6 @@ const CONSTRUCTORS: &[Constructor] = &[
 ];
 
 impl Described for Light {
-    const CLASS: &'static str = "Light";
-    const HELP: &'static str = include_str!("docs/Light.md");
-
     const FIELDS: &'static [Field] = FIELDS;
 
     const CONSTRUCTORS: &'static [Constructor] = CONSTRUCTORS;

@@ -10,20 +10,17 @@ use crate::render::scene::material::{Material, DEFAULT_COLOR};
 use crate::render::scene::model::{Highlight, Model, PAPER_BAND_VALUES};
 
 const FIELDS: &[Field] = &[
-    Field::new("model", Kind::Choice(&Model::NAMES), "the shading model (hatching is 'bands' with hatch strokes)")
-        .fixed(),
+    Field::choice("model", &Model::NAMES, "the shading model (hatching is 'bands' with hatch strokes)").fixed(),
     Field::new("diffuse", Kind::Color, "the diffuse coefficient d_m, sRGB"),
     Field::new("ambient", Kind::Color, "the ambient coefficient a_m, sRGB"),
     Field::new("specular", Kind::Color, "the highlight coefficient S_m, sRGB"),
     Field::new("per_vertex", Kind::Bool, "shade the vertices and interpolate (Gouraud) instead of every pixel"),
-    Field::new("shininess", Kind::Float { min: 1.0, max: 256.0 }, "Phong's exponent, > 0").optional(),
-    Field::new("t_h", Kind::Float { min: -1.0, max: 1.0 }, "the thresholded Phong model's diffuse threshold on L.n")
-        .optional(),
-    Field::new("t_s", Kind::Float { min: -1.0, max: 1.0 }, "the thresholded Phong model's highlight threshold")
-        .optional(),
-    Field::new(
+    Field::float("shininess", 1.0, 256.0, "Phong's exponent, > 0").optional(),
+    Field::float("t_h", -1.0, 1.0, "the thresholded Phong model's diffuse threshold on L.n").optional(),
+    Field::float("t_s", -1.0, 1.0, "the thresholded Phong model's highlight threshold").optional(),
+    Field::choice(
         "highlight",
-        Kind::Choice(Highlight::NAMES),
+        Highlight::NAMES,
         "the highlight term: 'blinn' (n . h) or 'paper' (L . v, as the paper writes it)",
     )
     .optional(),
@@ -31,12 +28,11 @@ const FIELDS: &[Field] = &[
     Field::new("values", Kind::Floats, "the bands' tones: one more than the thresholds, each >= 0").optional(),
     Field::new("table", Kind::Table, "a lookup table: (N,) grey or (N, 3) RGB factors, 1 <= N <= 256").optional(),
     Field::new("ink", Kind::Color, "hatch strokes' sRGB colour").optional(),
-    Field::new("spacing", Kind::Float { min: 2.0, max: 256.0 }, "pixels between hatch strokes, 2 to 256").optional(),
-    Field::new("width", Kind::Float { min: 0.25, max: 16.0 }, "hatch strokes' width in pixels, up to the spacing")
-        .optional(),
-    Field::new(
+    Field::float("spacing", 2.0, 256.0, "pixels between hatch strokes, 2 to 256").optional(),
+    Field::float("width", 0.25, 16.0, "hatch strokes' width in pixels, up to the spacing").optional(),
+    Field::choice(
         "mode",
-        Kind::Choice(HatchMode::NAMES),
+        HatchMode::NAMES,
         "how hatch strokes are laid: along the principal directions ('field') or straight on the axis planes ('triplanar')",
     )
     .optional(),
@@ -51,39 +47,30 @@ const FIELDS: &[Field] = &[
 
 const EXTRAS: &[Field] = &[
     Field::new("color", Kind::Color, "the base colour, from which the model derives its coefficients"),
-    Field::new("preset", Kind::Choice(&["paper"]), "'paper': the paper's band values (a black darkest band)"),
+    Field::choice("preset", &["paper"], "'paper': the paper's band values (a black darkest band)"),
 ];
 
+/// A shading model's constructor, `Material.<model>(color, ...)`: its base colour may be
+/// given by position, and no parameter must be given.
+macro_rules! model {
+    ($name:literal, [$($param:literal),* $(,)?]) => {
+        named!("Material", $name, [$($param),*], 1, 0)
+    };
+}
+
 const CONSTRUCTORS: &[Constructor] = &[
-    named!("Material", "lambert", ["color", "ambient", "diffuse", "per_vertex", "rim"], 1, 0),
-    named!(
-        "Material",
-        "phong",
-        ["color", "specular", "shininess", "ambient", "diffuse", "per_vertex", "rim"],
-        1,
-        0
-    ),
-    named!(
-        "Material",
+    model!("lambert", ["color", "ambient", "diffuse", "per_vertex", "rim"]),
+    model!("phong", ["color", "specular", "shininess", "ambient", "diffuse", "per_vertex", "rim"]),
+    model!(
         "thresholded_phong",
-        ["color", "t_h", "t_s", "highlight", "ambient", "specular", "diffuse", "per_vertex", "dither", "rim"],
-        1,
-        0
+        ["color", "t_h", "t_s", "highlight", "ambient", "specular", "diffuse", "per_vertex", "dither", "rim"]
     ),
-    named!(
-        "Material",
-        "bands",
-        ["color", "thresholds", "preset", "values", "per_vertex", "dither", "rim"],
-        1,
-        0
-    ),
-    named!(
-        "Material",
+    model!("bands", ["color", "thresholds", "preset", "values", "per_vertex", "dither", "rim"]),
+    model!(
         "hatching",
-        ["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither", "rim"],
-        1,
-        0
+        ["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither", "rim"]
     ),
+    // the table comes first, and may be given by position too
     named!("Material", "lut", ["table", "color", "per_vertex", "dither", "rim"], 2, 0),
 ];
 
@@ -92,9 +79,6 @@ fn hatching(m: &Material) -> Option<&Hatching> {
 }
 
 impl Described for Material {
-    const CLASS: &'static str = "Material";
-    const HELP: &'static str = include_str!("docs/Material.md");
-
     const FIELDS: &'static [Field] = FIELDS;
 
     const EXTRAS: &'static [Field] = EXTRAS;

@@ -19,7 +19,7 @@ mod value;
 
 #[cfg_attr(not(feature = "python"), allow(unused_imports))] // the front ends write from it
 pub(crate) use classes::settings_classes;
-pub use classes::{Setting, CLASSES};
+pub use classes::{Class, Setting, CLASSES};
 pub use grey_image::{GreyImage, MAX_IMAGE_SIDE};
 pub use value::Value;
 
@@ -110,6 +110,16 @@ impl Field {
         Field { name, kind, optional: false, fixed: false, help }
     }
 
+    /// A real number within `min` and `max`.
+    pub const fn float(name: &'static str, min: f64, max: f64, help: &'static str) -> Field {
+        Field::new(name, Kind::Float { min, max }, help)
+    }
+
+    /// One of the names `choices`.
+    pub const fn choice(name: &'static str, choices: &'static [&'static str], help: &'static str) -> Field {
+        Field::new(name, Kind::Choice(choices), help)
+    }
+
     pub const fn optional(self) -> Field {
         Field { optional: true, ..self }
     }
@@ -147,6 +157,42 @@ macro_rules! named {
 }
 pub(crate) use named;
 
+/// The parts of `impl Described` that a settings type made by one constructor, `Class(...)`,
+/// shares with the others: the constructor takes every field, in order, the first
+/// `positional` of them by position; a value starts from the type's default; and its check is
+/// the type's `validate`, which names the fields as the constructor's arguments.
+macro_rules! one_constructor {
+    ($fields:ident, positional: $positional:expr) => {
+        const FIELDS: &'static [$crate::render::settings::Field] = $fields;
+        const CONSTRUCTORS: &'static [$crate::render::settings::Constructor] =
+            &[$crate::render::settings::Constructor::only(
+                &$crate::render::settings::field_names::<{ $fields.len() }>($fields),
+                $positional,
+            )];
+
+        fn start(_: &str) -> Self {
+            Self::default()
+        }
+
+        fn check(&self) -> $crate::error::Result<()> {
+            self.validate("")
+        }
+    };
+}
+pub(crate) use one_constructor;
+
+/// The names of `fields`, in order (`N` of them): the parameters of a constructor that takes
+/// every field.
+pub const fn field_names<const N: usize>(fields: &[Field]) -> [&'static str; N] {
+    let mut out = [""; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = fields[i].name;
+        i += 1;
+    }
+    out
+}
+
 /// `a` then `b` as one constant array (`N` the two lengths together, `a` not empty): a
 /// description that gathers lists kept elsewhere.
 pub const fn concat<T: Copy, const N: usize>(a: &[T], b: &[T]) -> [T; N] {
@@ -167,13 +213,12 @@ impl Constructor {
     }
 }
 
-/// A settings type described for front ends.
-pub trait Described: Clone + PartialEq + Serialize + DeserializeOwned {
-    const CLASS: &'static str;
+/// A settings type described for front ends (its class's name and docstring are its `Class`,
+/// from `settings_classes!`).
+pub trait Described: Class + Clone + PartialEq + Serialize + DeserializeOwned {
     /// What an unknown keyword is not, where "a parameter of Class.constructor" is not the
     /// best word ("a render option").
     const PARAMETER: Option<&'static str> = None;
-    const HELP: &'static str;
     const FIELDS: &'static [Field];
     /// Constructor-only parameters.
     const EXTRAS: &'static [Field] = &[];

@@ -75,9 +75,7 @@ fn count(field: &str, v: Value, at_least: i64, what: &str) -> Result<u32> {
 }
 
 impl Described for RenderOptions {
-    const CLASS: &'static str = "RenderOptions";
     const PARAMETER: Option<&'static str> = Some("a render option");
-    const HELP: &'static str = include_str!("docs/RenderOptions.md");
 
     const FIELDS: &'static [Field] = FIELDS;
 

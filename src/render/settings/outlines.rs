@@ -4,7 +4,9 @@
 use super::{build, f32_value, mismatch, Constructor, Described, Field, Kind, Setting, Value};
 use crate::edges::outlines::LineKind;
 use crate::error::Result;
-use crate::render::effects::outlines::settings::{kind_names, ContourRule, ImageRule, LineStyle, Outlines};
+use crate::render::effects::outlines::settings::{
+    kind_names, ContourRule, ImageRule, LineStyle, Outlines, MAX_WIDTH,
+};
 
 const STYLE_HELP: &str = "True (the common style), False (not drawn), a LineStyle or a colour";
 
@@ -13,7 +15,7 @@ const fn style(name: &'static str) -> Field {
 }
 
 const FIELDS: &[Field] = &[
-    Field::new("kind", Kind::Choice(&Outlines::KINDS), "lines found on the mesh, edges found in the image, or both"),
+    Field::choice("kind", &Outlines::KINDS, "lines found on the mesh, edges found in the image, or both"),
     style("silhouette"),
     style("boundary"),
     style("nonmanifold"),
@@ -22,48 +24,33 @@ const FIELDS: &[Field] = &[
     Field::new("suggestive", Kind::Style, "suggestive contours (DeCarlo et al.): drawn only when asked for").optional(),
     Field::new("material", Kind::Style, "borders between scene items that meet edge to edge").optional(),
     Field::new("image", Kind::Style, "image-space edges").optional(),
-    Field::new("crease_angle", Kind::Float { min: 0.0, max: 180.0 }, "dihedral angle in degrees above which an edge is a crease"),
+    Field::float("crease_angle", 0.0, 180.0, "dihedral angle in degrees above which an edge is a crease"),
     Field::new("weld", Kind::Bool, "merge vertices at equal positions first, so seams are not drawn as boundaries"),
-    Field::new("contours", Kind::Choice(ContourRule::NAMES), "how silhouettes are found: 'faces', 'smooth' or 'auto'"),
-    Field::new(
-        "suggestive_threshold",
-        Kind::Float { min: 0.0, max: 0.2 },
-        "the suggestive contours' derivative test, relative to the mesh's feature size",
-    ),
-    Field::new(
+    Field::choice("contours", ContourRule::NAMES, "how silhouettes are found: 'faces', 'smooth' or 'auto'"),
+    Field::float("suggestive_threshold", 0.0, 0.2, "the suggestive contours' derivative test, relative to the mesh's feature size"),
+    Field::float(
         "curvature_smoothing",
-        Kind::Float { min: 0.0, max: 8.0 },
+        0.0,
+        8.0,
         "width in mean edge lengths over which suggestive contours' curvature is averaged (None: 2, at most 1% of the diagonal)",
     )
     .optional(),
-    Field::new(
-        "min_crease_length",
-        Kind::Float { min: 0.0, max: 0.2 },
-        "crease pieces shorter than this fraction of the bounding-box diagonal are not drawn",
-    ),
-    Field::new(
-        "max_crease_turn",
-        Kind::Float { min: 0.0, max: 180.0 },
-        "crease pieces turning by more than this many degrees on average are not drawn (180: all)",
-    ),
-    Field::new("image_rule", Kind::Choice(ImageRule::NAMES), "how image-space edges are found"),
-    Field::new("normal_angle", Kind::Float { min: 0.0, max: 180.0 }, "degrees of normal turn between pixels drawn as an edge"),
-    Field::new("depth_jump", Kind::Float { min: 0.0, max: 20.0 }, "depth jump between pixels drawn as an edge, in pixel footprints"),
-    Field::new("normal_threshold", Kind::Float { min: 0.0, max: 4.0 }, "the paper rule's Sobel threshold on normals"),
-    Field::new("depth_threshold", Kind::Float { min: 0.0, max: 4.0 }, "the paper rule's Sobel threshold on depth"),
-    Field::new(
-        "depth_offset",
-        Kind::Float { min: 0.0, max: 8.0 },
-        "hidden-line removal's tolerance in pixel footprints",
-    ),
-    Field::new("taper", Kind::Float { min: 0.0, max: 64.0 }, "pixels over which lines thin toward their ends (0: none)"),
+    Field::float("min_crease_length", 0.0, 0.2, "crease pieces shorter than this fraction of the bounding-box diagonal are not drawn"),
+    Field::float("max_crease_turn", 0.0, 180.0, "crease pieces turning by more than this many degrees on average are not drawn (180: all)"),
+    Field::choice("image_rule", ImageRule::NAMES, "how image-space edges are found"),
+    Field::float("normal_angle", 0.0, 180.0, "degrees of normal turn between pixels drawn as an edge"),
+    Field::float("depth_jump", 0.0, 20.0, "depth jump between pixels drawn as an edge, in pixel footprints"),
+    Field::float("normal_threshold", 0.0, 4.0, "the paper rule's Sobel threshold on normals"),
+    Field::float("depth_threshold", 0.0, 4.0, "the paper rule's Sobel threshold on depth"),
+    Field::float("depth_offset", 0.0, 8.0, "hidden-line removal's tolerance in pixel footprints"),
+    Field::float("taper", 0.0, 64.0, "pixels over which lines thin toward their ends (0: none)"),
     Field::new("width_by_depth", Kind::Bool, "scale line widths by the scene centre's depth over the line's"),
     Field::new("join_kinds", Kind::Bool, "join strokes of different kinds that meet end to end"),
 ];
 
 const EXTRAS: &[Field] = &[
     Field::new("color", Kind::Color, "the common style's sRGB colour"),
-    Field::new("width", Kind::Float { min: 0.25, max: 64.0 }, "the common style's width in output pixels"),
+    Field::float("width", 0.25, MAX_WIDTH as f64, "the common style's width in output pixels"),
     Field::new("crease", Kind::Style, "ridges and valleys together").optional(),
 ];
 
@@ -112,9 +99,6 @@ fn in_style(v: Value, common: LineStyle) -> Value {
 }
 
 impl Described for Outlines {
-    const CLASS: &'static str = "Outlines";
-    const HELP: &'static str = include_str!("docs/Outlines.md");
-
     const FIELDS: &'static [Field] = FIELDS;
 
     const EXTRAS: &'static [Field] = EXTRAS;

@@ -1,6 +1,6 @@
 //! `Shadows` described.
 
-use super::{Constructor, Described, Field, Kind, Value};
+use super::{one_constructor, Described, Field, Kind, Value};
 use crate::error::{Error, Result};
 use crate::render::effects::shadows::settings::{ShadowFilter, Shadows, SHADOW_SIZES};
 
@@ -10,35 +10,18 @@ const FIELDS: &[Field] = &[
         Kind::Int { min: *SHADOW_SIZES.start() as i64, max: *SHADOW_SIZES.end() as i64 },
         "the shadow map's side in texels, a power of two",
     ),
-    Field::new(
-        "bias",
-        Kind::Float { min: 0.0, max: 8.0 },
-        "depth bias in texels per unit of receiver slope, >= 0",
-    ),
-    Field::new(
-        "filter",
-        Kind::Choice(ShadowFilter::NAMES),
-        "how the map is read: 'pcf' (soft edges) or 'none'",
-    ),
-    Field::new(
+    Field::float("bias", 0.0, 8.0, "depth bias in texels per unit of receiver slope, >= 0"),
+    Field::choice("filter", ShadowFilter::NAMES, "how the map is read: 'pcf' (soft edges) or 'none'"),
+    Field::float(
         "strength",
-        Kind::Float { min: 0.0, max: 1.0 },
+        0.0,
+        1.0,
         "the share of the light a shadow takes away: 1 a full shadow, 0.5 a half-tone one",
     ),
 ];
 
 impl Described for Shadows {
-    const CLASS: &'static str = "Shadows";
-    const HELP: &'static str = include_str!("docs/Shadows.md");
-
-    const FIELDS: &'static [Field] = FIELDS;
-
-    const CONSTRUCTORS: &'static [Constructor] =
-        &[Constructor::only(&["size", "bias", "filter", "strength"], 3)];
-
-    fn start(_: &str) -> Self {
-        Shadows::default()
-    }
+    one_constructor!(FIELDS, positional: 3);
 
     fn get(&self, field: &str) -> Value {
         match field {
@@ -70,9 +53,5 @@ impl Described for Shadows {
             _ => self.filter = ShadowFilter::parse(field, &v.text(field)?)?,
         }
         Ok(())
-    }
-
-    fn check(&self) -> Result<()> {
-        self.validate("")
     }
 }

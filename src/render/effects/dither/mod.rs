@@ -9,6 +9,7 @@ use crate::error::field;
 use crate::error::{Error, Result};
 use crate::render::block::Block;
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
+use crate::render::settings::check_bounds;
 use crate::render::wgsl;
 
 /// How far (in L.n) dithering moves a pixel toward the neighbouring band, when none is given.
@@ -89,21 +90,10 @@ impl Dither {
         Dither { pattern, space: DitherSpace::Screen, amount: DEFAULT_DITHER_AMOUNT, scale: 1.0 }
     }
 
-    /// Checks the settings; `prefix` names them in errors ("" while they are being made).
+    /// Checks the settings; `prefix` names them in errors ("" while they are being made). Its
+    /// numbers' bounds are its description's (`settings::dither`).
     pub fn validate(&self, prefix: &str) -> Result<()> {
-        if !(self.amount.is_finite() && (0.0..=2.0).contains(&self.amount)) {
-            return Err(Error::invalid(
-                field(prefix, "amount"),
-                format!("must be in [0, 2], got {}", self.amount),
-            ));
-        }
-        if !(self.scale.is_finite() && (1.0..=64.0).contains(&self.scale)) {
-            return Err(Error::invalid(
-                field(prefix, "scale"),
-                format!("must be in [1, 64] pixels, got {}", self.scale),
-            ));
-        }
-        Ok(())
+        check_bounds(self, prefix)
     }
 }
 
@@ -119,30 +109,21 @@ crate::uniform_block! {
     }
 }
 
-pub struct DitherEffect;
-
-pub static EFFECT: DitherEffect = DitherEffect;
-
-impl SurfaceEffect for DitherEffect {
-    type Settings = Dither;
-
-    fn wgsl(&self) -> String {
+impl SurfaceEffect for Dither {
+    fn wgsl() -> String {
         let mut s = wgsl::constant_u32("DITHER_BLUE", DitherPattern::Blue.id());
         s += &wgsl::constant_f32("R2_STEP_X", R2_STEPS[0]);
         s += &wgsl::constant_f32("R2_STEP_Y", R2_STEPS[1]);
         s + include_str!("dither.wgsl")
     }
 
-    fn block(&self) -> crate::render::block::BlockLayout {
+    const HOOKS: &'static [Hook] = &[Hook::Jitter];
+
+    fn block() -> crate::render::block::BlockLayout {
         DitherBlock::layout()
     }
 
-    fn hooks(&self) -> &'static [Hook] {
-        &[Hook::Jitter]
-    }
-
-    fn validate(&self, dither: Option<&Dither>, s: &Surface<'_>, prefix: &str) -> Result<()> {
-        let Some(d) = dither else { return Ok(()) };
+    fn validate_with(&self, s: &Surface<'_>, prefix: &str) -> Result<()> {
         if !s.model.is_toon() {
             return Err(Error::invalid(
                 "dither",
@@ -155,10 +136,10 @@ impl SurfaceEffect for DitherEffect {
         if s.per_vertex {
             return Err(Error::invalid("dither", "needs per-pixel shading (per_vertex=False)"));
         }
-        d.validate(&field(prefix, "dither"))
+        self.validate(&field(prefix, "dither"))
     }
 
-    fn block_bytes(&self, dither: Option<&Dither>) -> Vec<u8> {
+    fn block_bytes(dither: Option<&Dither>) -> Vec<u8> {
         DitherBlock {
             amount: dither.map_or(0.0, |d| d.amount as f32),
             cell: dither.map_or(1.0, |d| d.scale as f32),
@@ -167,7 +148,7 @@ impl SurfaceEffect for DitherEffect {
         .bytes()
     }
 
-    fn variant(&self, dither: Option<&Dither>) -> Variant {
+    fn variant(dither: Option<&Dither>) -> Variant {
         let object = dither.is_some_and(|d| d.space == DitherSpace::Object);
         Variant {
             constants: vec![

@@ -122,37 +122,28 @@ crate::uniform_block! {
     }
 }
 
-pub struct HatchingEffect;
-
-pub static EFFECT: HatchingEffect = HatchingEffect;
-
-impl SurfaceEffect for HatchingEffect {
-    type Settings = Hatching;
-
-    fn wgsl(&self) -> String {
+impl SurfaceEffect for Hatching {
+    fn wgsl() -> String {
         let mut s = wgsl::constant_u32("HATCH_LAYERS", HATCH_LAYERS as u32);
         s += &wgsl::constant_vec3("LUMA", LUMA);
         s += &wgsl::constant_f32("FIELD_FADE", FIELD_FADE);
         s + include_str!("hatching.wgsl")
     }
 
-    fn block(&self) -> crate::render::block::BlockLayout {
+    const HOOKS: &'static [Hook] = &[Hook::Finish];
+
+    fn block() -> crate::render::block::BlockLayout {
         HatchingBlock::layout()
     }
 
-    fn hooks(&self) -> &'static [Hook] {
-        &[Hook::Finish]
-    }
-
-    fn validate(&self, hatching: Option<&Hatching>, s: &Surface<'_>, prefix: &str) -> Result<()> {
-        let Some(h) = hatching else { return Ok(()) };
+    fn validate_with(&self, s: &Surface<'_>, prefix: &str) -> Result<()> {
         if !matches!(s.model, Model::Bands { .. }) {
             return Err(Error::invalid(field(prefix, "hatching"), "hatches only toon bands"));
         }
-        h.validate(prefix)
+        self.validate(prefix)
     }
 
-    fn block_bytes(&self, hatching: Option<&Hatching>) -> Vec<u8> {
+    fn block_bytes(hatching: Option<&Hatching>) -> Vec<u8> {
         let mut b: HatchingBlock = bytemuck::Zeroable::zeroed();
         if let Some(h) = hatching {
             b.ink = vec4(to_linear(h.ink));
@@ -162,7 +153,7 @@ impl SurfaceEffect for HatchingEffect {
         b.bytes()
     }
 
-    fn variant(&self, hatching: Option<&Hatching>) -> Variant {
+    fn variant(hatching: Option<&Hatching>) -> Variant {
         let on = hatching.is_some();
         let field = hatching.is_some_and(|h| h.mode == HatchMode::Field);
         Variant {

@@ -13,7 +13,7 @@ use crate::render::pipelines::PipelineKey;
 use super::ink::Ink;
 use super::settings::ImageRule;
 
-pub const WGSL: &str = include_str!("edges.wgsl");
+pub const WGSL: &str = concat!(include_str!("inked.wgsl"), include_str!("edges.wgsl"));
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Edges {

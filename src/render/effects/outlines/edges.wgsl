@@ -115,39 +115,17 @@ fn coverage(pos: vec4<f32>) -> f32 {
     return discontinuity_coverage(pos);
 }
 
-// Image ink at coverage `a`, premultiplied.
-fn ink(a: f32) -> vec4<f32> {
-    return vec4<f32>(frame.outlines.ink[IMAGE_KIND].rgb * a, a);
-}
-
 @fragment
 fn fs_color(@builtin(position) pos: vec4<f32>) -> @location(0) vec4<f32> {
-    let a = coverage(pos);
-    if (a <= 0.0) {
-        discard;
-    }
-    return ink(a);
+    return inked(IMAGE_KIND, coverage(pos)).color;
 }
 
 @fragment
 fn fs_outline(@builtin(position) pos: vec4<f32>) -> @location(0) vec4<f32> {
-    let a = coverage(pos);
-    if (a <= 0.0) {
-        discard;
-    }
-    return vec4<f32>(a);
+    return inked(IMAGE_KIND, coverage(pos)).outline;
 }
-
-struct Both {
-    @location(0) color: vec4<f32>,
-    @location(1) outline: vec4<f32>,
-};
 
 @fragment
 fn fs_both(@builtin(position) pos: vec4<f32>) -> Both {
-    let a = coverage(pos);
-    if (a <= 0.0) {
-        discard;
-    }
-    return Both(ink(a), vec4<f32>(a));
+    return inked(IMAGE_KIND, coverage(pos));
 }

@@ -11,7 +11,7 @@ use crate::render::pipelines::PipelineKey;
 use super::ink::Ink;
 use super::mesh_lines::{LineInstance, ViewSlot};
 
-pub const WGSL: &str = include_str!("lines.wgsl");
+pub const WGSL: &str = concat!(include_str!("inked.wgsl"), include_str!("lines.wgsl"));
 
 #[derive(Debug, Clone)]
 pub struct Lines {

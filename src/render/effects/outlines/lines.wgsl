@@ -140,38 +140,17 @@ fn coverage(o: LineOut) -> f32 {
     return select(0.0, cov, visible(c, z, o.kind));
 }
 
-fn ink(kind: u32, cov: f32) -> vec4<f32> {
-    return vec4<f32>(frame.outlines.ink[kind].rgb * cov, cov);
-}
-
 @fragment
 fn fs_color(o: LineOut) -> @location(0) vec4<f32> {
-    let cov = coverage(o);
-    if (cov <= 0.0) {
-        discard;
-    }
-    return ink(o.kind, cov);
+    return inked(o.kind, coverage(o)).color;
 }
 
 @fragment
 fn fs_outline(o: LineOut) -> @location(0) vec4<f32> {
-    let cov = coverage(o);
-    if (cov <= 0.0) {
-        discard;
-    }
-    return vec4<f32>(cov);
+    return inked(o.kind, coverage(o)).outline;
 }
-
-struct Both {
-    @location(0) color: vec4<f32>,
-    @location(1) outline: vec4<f32>,
-};
 
 @fragment
 fn fs_both(o: LineOut) -> Both {
-    let cov = coverage(o);
-    if (cov <= 0.0) {
-        discard;
-    }
-    return Both(ink(o.kind, cov), vec4<f32>(cov));
+    return inked(o.kind, coverage(o));
 }

@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
-use crate::render::settings::{check_bounds, Constructor, Described, Field, GreyImage, Kind, Value};
+use crate::render::settings::{check_bounds, one_constructor, Described, Field, GreyImage, Kind, Value};
 
 crate::named_enum! {
     /// What the grain is fixed to.
@@ -58,40 +58,18 @@ const FIELDS: &[Field] = &[
         "the grain's heights: None (a built-in grain) or an image, (H, W) or (H, W, C), tiled",
     )
     .optional(),
-    Field::new(
+    Field::choice(
         "space",
-        Kind::Choice(PaperSpace::NAMES),
+        PaperSpace::NAMES,
         "what the grain is fixed to: the 'screen' or the scene's 'surface'",
     ),
-    Field::new(
-        "scale",
-        Kind::Float { min: 0.25, max: 64.0 },
-        "output pixels a grain texel covers, 0.25 to 64",
-    ),
-    Field::new(
-        "strength",
-        Kind::Float { min: 0.0, max: 1.0 },
-        "how much pigment the grain's valleys refuse, 0 to 1",
-    ),
-    Field::new(
-        "tone",
-        Kind::Float { min: 0.0, max: 1.0 },
-        "how much the blank paper's valleys darken it, 0 to 1",
-    ),
+    Field::float("scale", 0.25, 64.0, "output pixels a grain texel covers, 0.25 to 64"),
+    Field::float("strength", 0.0, 1.0, "how much pigment the grain's valleys refuse, 0 to 1"),
+    Field::float("tone", 0.0, 1.0, "how much the blank paper's valleys darken it, 0 to 1"),
 ];
 
 impl Described for Paper {
-    const CLASS: &'static str = "Paper";
-    const HELP: &'static str = include_str!("docs/Paper.md");
-
-    const FIELDS: &'static [Field] = FIELDS;
-
-    const CONSTRUCTORS: &'static [Constructor] =
-        &[Constructor::only(&["grain", "space", "scale", "strength", "tone"], 1)];
-
-    fn start(_: &str) -> Self {
-        Paper::default()
-    }
+    one_constructor!(FIELDS, positional: 1);
 
     fn get(&self, field: &str) -> Value {
         match field {
@@ -115,9 +93,5 @@ impl Described for Paper {
             (_, v) => self.tone = v.float(field)?,
         }
         Ok(())
-    }
-
-    fn check(&self) -> Result<()> {
-        self.validate("")
     }
 }

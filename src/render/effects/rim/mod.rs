@@ -116,30 +116,22 @@ crate::uniform_block! {
     }
 }
 
-pub struct RimEffect;
-
-pub static EFFECT: RimEffect = RimEffect;
-
-impl SurfaceEffect for RimEffect {
-    type Settings = Rim;
-
-    fn wgsl(&self) -> String {
+impl SurfaceEffect for Rim {
+    fn wgsl() -> String {
         include_str!("rim.wgsl").to_string()
     }
 
-    fn block(&self) -> crate::render::block::BlockLayout {
+    const HOOKS: &'static [Hook] = &[Hook::Finish];
+
+    fn block() -> crate::render::block::BlockLayout {
         RimBlock::layout()
     }
 
-    fn hooks(&self) -> &'static [Hook] {
-        &[Hook::Finish]
+    fn validate_with(&self, _: &Surface<'_>, prefix: &str) -> Result<()> {
+        self.validate(&field(prefix, "rim"))
     }
 
-    fn validate(&self, rim: Option<&Rim>, _: &Surface<'_>, prefix: &str) -> Result<()> {
-        rim.map_or(Ok(()), |r| r.validate(&field(prefix, "rim")))
-    }
-
-    fn block_bytes(&self, rim: Option<&Rim>) -> Vec<u8> {
+    fn block_bytes(rim: Option<&Rim>) -> Vec<u8> {
         let r = rim.copied().unwrap_or(Rim { strength: 0.0, ..Rim::default() });
         RimBlock {
             color: to_linear(r.color),
@@ -152,7 +144,7 @@ impl SurfaceEffect for RimEffect {
         .bytes()
     }
 
-    fn variant(&self, rim: Option<&Rim>) -> Variant {
+    fn variant(rim: Option<&Rim>) -> Variant {
         Variant { constants: vec![("RIM", rim.is_some() as u32 as f64)], anchored: false, field: false }
     }
 }

@@ -2,49 +2,23 @@
 
 use super::{Rim, RimBlend, RimSide};
 use crate::error::Result;
-use crate::render::settings::{Constructor, Described, Field, Kind, Value};
+use crate::render::settings::{one_constructor, Described, Field, Kind, Value};
 
 const FIELDS: &[Field] = &[
     Field::new("color", Kind::Color, "the rim's sRGB colour"),
-    Field::new(
-        "width",
-        Kind::Float { min: 0.0, max: 1.0 },
-        "the rim covers the surface where n.v < width, 0 to 1",
-    ),
-    Field::new(
-        "softness",
-        Kind::Float { min: 0.0, max: 1.0 },
-        "how far in n.v its border fades, 0 (a hard border) to 1",
-    ),
-    Field::new(
-        "strength",
-        Kind::Float { min: 0.0, max: 1.0 },
-        "the share of its colour at full coverage, 0 to 1",
-    ),
-    Field::new(
+    Field::float("width", 0.0, 1.0, "the rim covers the surface where n.v < width, 0 to 1"),
+    Field::float("softness", 0.0, 1.0, "how far in n.v its border fades, 0 (a hard border) to 1"),
+    Field::float("strength", 0.0, 1.0, "the share of its colour at full coverage, 0 to 1"),
+    Field::choice(
         "side",
-        Kind::Choice(RimSide::NAMES),
+        RimSide::NAMES,
         "where it shows: 'both' sides, the 'lit' side or the 'shadowed' side",
     ),
-    Field::new(
-        "blend",
-        Kind::Choice(RimBlend::NAMES),
-        "'add' (as light) or 'mix' (painted over, as a colour)",
-    ),
+    Field::choice("blend", RimBlend::NAMES, "'add' (as light) or 'mix' (painted over, as a colour)"),
 ];
 
 impl Described for Rim {
-    const CLASS: &'static str = "Rim";
-    const HELP: &'static str = include_str!("docs/Rim.md");
-
-    const FIELDS: &'static [Field] = FIELDS;
-
-    const CONSTRUCTORS: &'static [Constructor] =
-        &[Constructor::only(&["color", "width", "softness", "strength", "side", "blend"], 1)];
-
-    fn start(_: &str) -> Self {
-        Rim::default()
-    }
+    one_constructor!(FIELDS, positional: 1);
 
     fn get(&self, field: &str) -> Value {
         match field {
@@ -68,9 +42,5 @@ impl Described for Rim {
             _ => self.blend = RimBlend::parse(field, &v.text(field)?)?,
         }
         Ok(())
-    }
-
-    fn check(&self) -> Result<()> {
-        self.validate("")
     }
 }
