@@ -188,4 +188,4 @@ def test_weld_accepts_numpy_bools():
 def test_the_core_refuses_anything_but_a_bool_too():
     V, F = _core.icosphere(1, 0.0, 0)
     with pytest.raises(TypeError, match="weld"):
-        _core._smooth("laplacian", V, F, weld=1)
+        _core._smooth("laplacian", (V, F), weld=1)

@@ -52,7 +52,7 @@ def _smoothed(vertices: np.ndarray, faces: np.ndarray, iterations: int) -> np.nd
         return vertices
     # the core names the iterations as this function's caller does
     return _core._smooth(  # type: ignore[no-any-return]
-        "laplacian", vertices, faces, iterations=iterations, preset="paper", weld=False,
+        "laplacian", (vertices, faces), iterations=iterations, preset="paper", weld=False,
         _as=[("iterations", "smooth_iterations")],
     )
 

@@ -168,7 +168,7 @@ def feature_edges(
     """
     V, F = mesh_arrays(vertices, faces)
     angle = _crease_angle(crease_angle)
-    return _features(_core._feature_edges(V, F, angle, weld), angle)
+    return _features(_core._feature_edges((V, F), angle, weld), angle)
 
 
 @dataclass(frozen=True)
@@ -235,7 +235,7 @@ def curvature(vertices: Any, faces: Any = None, *, smoothing: float = 0.0) -> Cu
         TypeError, ValueError, IndexError: bad input, naming the argument.
     """
     V, F = mesh_arrays(vertices, faces)
-    return Curvature(*_core._curvature(V, F, smoothing))
+    return Curvature(*_core._curvature((V, F), smoothing))
 
 
 def _polylines(points: np.ndarray, starts: np.ndarray) -> List[np.ndarray]:
@@ -264,7 +264,7 @@ def contours(
         first point at the end. Points lie on mesh edges.
     """
     V, F = mesh_arrays(vertices, faces)
-    return _polylines(*_core._view_lines("contours", V, F, eye, direction, weld))
+    return _polylines(*_core._view_lines("contours", (V, F), eye, direction, weld))
 
 
 def suggestive_contours(
@@ -304,7 +304,7 @@ def suggestive_contours(
         line is cut by the derivative test lie inside faces.
     """
     V, F = mesh_arrays(vertices, faces)
-    return _polylines(*_core._view_lines("suggestive", V, F, eye, direction, weld, threshold, smoothing))
+    return _polylines(*_core._view_lines("suggestive", (V, F), eye, direction, weld, threshold, smoothing))
 
 
 def silhouette(
@@ -334,7 +334,7 @@ def silhouette(
         weld: as in :func:`feature_edges`.
     """
     V, F = mesh_arrays(vertices, faces)
-    return _core._view_lines("silhouette", V, F, eye, direction, weld)
+    return _core._view_lines("silhouette", (V, F), eye, direction, weld)
 
 
 class EdgeIndex:
@@ -364,7 +364,7 @@ class EdgeIndex:
         self, vertices: Any, faces: Any = None, *, crease_angle: Optional[float] = None, weld: bool = False
     ) -> None:
         V, F = mesh_arrays(vertices, faces)
-        self._index = _core._EdgeIndex(V, F, weld)
+        self._index = _core._EdgeIndex((V, F), weld)
         self.features = self.feature_edges(crease_angle)
 
     @cached_property

@@ -149,7 +149,7 @@ def _call(smoother: Callable[..., Positions], vertices: Any, faces: Any, options
     except TypeError as exc:
         raise TypeError(f"{smoother.__name__}() {exc}") from None
     V, F = mesh_arrays(vertices, faces)
-    return _core._smooth(smoother.__name__, V, F, **options)  # type: ignore[no-any-return]
+    return _core._smooth(smoother.__name__, (V, F), **options)  # type: ignore[no-any-return]
 
 
 class LaplacianOptions(LaplacianFamilyOptions, total=False):

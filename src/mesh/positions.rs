@@ -23,6 +23,7 @@ macro_rules! on_positions {
         }
     };
 }
+#[cfg(feature = "python")]
 pub(crate) use on_positions;
 
 impl Positions {

@@ -57,39 +57,34 @@ fn query(
 #[pyfunction]
 pub(super) fn _feature_edges<'py>(
     py: Python<'py>,
-    vertices: &Bound<'py, PyAny>,
-    faces: &Bound<'py, PyAny>,
+    mesh: &Bound<'py, PyAny>,
     crease_angle: &Bound<'py, PyAny>,
     weld: &Bound<'py, PyAny>,
 ) -> Out<'py> {
     let crease_angle = crease_angle_of(crease_angle)?;
     let weld = args::flag("weld", weld)?;
-    features(py, on_mesh!(py, vertices, faces, |v, f, _| find_feature_edges(v, f, crease_angle, weld))?)
+    features(py, on_mesh!(py, mesh, |v, f, _| find_feature_edges(v, f, crease_angle, weld))?)
 }
 
 /// k1, k2 (N,), d1, d2, normals (N, 3), derivatives (N, 4), all float64
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, smoothing))]
 pub(super) fn _curvature<'py>(
     py: Python<'py>,
-    vertices: &Bound<'py, PyAny>,
-    faces: &Bound<'py, PyAny>,
+    mesh: &Bound<'py, PyAny>,
     smoothing: &Bound<'py, PyAny>,
 ) -> Out<'py> {
     let smoothing = args::number("smoothing", smoothing).and_then(|s| check_smoothing("smoothing", s))?;
-    let c = on_mesh!(py, vertices, faces, |v, f, cancel| curvature(v, f, smoothing, cancel))?;
+    let c = on_mesh!(py, mesh, |v, f, cancel| curvature(v, f, smoothing, cancel))?;
     (c.k1, c.k2, c.d1, c.d2, c.normals, c.derivatives).to_python(py)
 }
 
 /// One view's lines of a mesh (see `Query::lines`).
 #[pyfunction]
-#[pyo3(signature = (what, vertices, faces, eye, direction, weld, threshold = None, smoothing = None))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (what, mesh, eye, direction, weld, threshold = None, smoothing = None))]
 pub(super) fn _view_lines<'py>(
     py: Python<'py>,
     what: &str,
-    vertices: &Bound<'py, PyAny>,
-    faces: &Bound<'py, PyAny>,
+    mesh: &Bound<'py, PyAny>,
     eye: Option<&Bound<'py, PyAny>>,
     direction: Option<&Bound<'py, PyAny>>,
     weld: &Bound<'py, PyAny>,
@@ -98,7 +93,7 @@ pub(super) fn _view_lines<'py>(
 ) -> Out<'py> {
     let (query, view) = query(what, (eye, direction), threshold, smoothing)?;
     let weld = args::flag("weld", weld)?;
-    on_mesh!(py, vertices, faces, |v, f, cancel| query.lines(v, f, weld, view, cancel))?.to_python(py)
+    on_mesh!(py, mesh, |v, f, cancel| query.lines(v, f, weld, view, cancel))?.to_python(py)
 }
 
 /// The once-per-mesh part of outline finding (`MeshLines`).
@@ -108,14 +103,9 @@ pub(super) struct PyEdgeIndex(MeshLines);
 #[pymethods]
 impl PyEdgeIndex {
     #[new]
-    fn new(
-        py: Python<'_>,
-        vertices: &Bound<'_, PyAny>,
-        faces: &Bound<'_, PyAny>,
-        weld: &Bound<'_, PyAny>,
-    ) -> PyResult<Self> {
+    fn new(py: Python<'_>, mesh: &Bound<'_, PyAny>, weld: &Bound<'_, PyAny>) -> PyResult<Self> {
         let weld = args::flag("weld", weld)?;
-        on_mesh!(py, vertices, faces, |v, f, _| MeshLines::build(v, f, weld)).map(PyEdgeIndex)
+        on_mesh!(py, mesh, |v, f, _| MeshLines::build(v, f, weld)).map(PyEdgeIndex)
     }
 
     /// One view's lines (see `_view_lines`); what contours are traced on is kept.

@@ -6,10 +6,11 @@
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
+use super::args::type_name;
 use super::convert::{faces, native_order, positions};
 use super::runtime::detached_cancellable;
 use crate::cancel::Cancel;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::mesh::positions::on_positions;
 use crate::mesh::{faces_from_flat, rows_of, Positions, PositionsRef};
 use crate::real::Real;
@@ -54,17 +55,26 @@ fn slice<'a, T: numpy::Element>(x: &'a PyReadonlyArray2<'_, T>) -> &'a [T] {
     x.as_slice().expect("checked contiguous")
 }
 
-/// `$body` run on the mesh read from `$vertices` and `$faces` (see `MeshInput::run`), with `$v`
+/// `$body` run on the mesh argument `$mesh` (see `MeshInput::of`, `MeshInput::run`), with `$v`
 /// its positions in their own precision, `$f` its faces and `$cancel` Ctrl-C's flag.
 macro_rules! on_mesh {
-    ($py:expr, $vertices:expr, $faces:expr, |$v:ident, $f:ident, $cancel:pat_param| $body:expr) => {
-        $crate::py::mesh_input::MeshInput::read($vertices, $faces)?
+    ($py:expr, $mesh:expr, |$v:ident, $f:ident, $cancel:pat_param| $body:expr) => {
+        $crate::py::mesh_input::MeshInput::of($mesh)?
             .run($py, |p, $f, $cancel| $crate::mesh::positions::on_positions!(p, $v => $body))
     };
 }
 pub(crate) use on_mesh;
 
 impl<'py> MeshInput<'py> {
+    /// A mesh argument: the pair (vertices, faces) the Python wrappers pass, read as `read` reads
+    /// them.
+    pub fn of(mesh: &Bound<'py, PyAny>) -> Result<Self> {
+        let (vertices, faces) = mesh.extract::<(Bound<'py, PyAny>, Bound<'py, PyAny>)>().map_err(|_| {
+            Error::wrong_type("mesh", format!("expected (vertices, faces), got {}", type_name(mesh)))
+        })?;
+        Self::read(&vertices, &faces)
+    }
+
     pub fn read(vertices: &Bound<'py, PyAny>, faces_obj: &Bound<'py, PyAny>) -> Result<Self> {
         let (vertices, faces_obj) = (&native_order(vertices)?, &native_order(faces_obj)?);
         // One pass checks finiteness and finds the scale (which smoothing needs).

@@ -11,6 +11,7 @@ use pyo3::IntoPyObjectExt;
 use super::albedo::albedo;
 use super::args::{number, text, triple, type_name};
 use super::convert::{array_values, faces, grid_to_numpy, positions, python, ToPython};
+use super::mesh_input::on_mesh;
 use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
@@ -298,29 +299,22 @@ pub(super) fn encode_png_rgba<'py>(
     Ok(PyBytes::new(py, &png))
 }
 
-/// _shadow_truth(vertices, faces, view_proj, width, height, toward_light) -> (H, W) float32
+/// _shadow_truth((vertices, faces), view_proj, shape, toward_light) -> (H, W) float32
 ///
 /// The ray-cast truth of the shadow output (`render::effects::shadows::raycast`): for a mesh in
 /// world space seen through `view_proj` ((4, 4) world -> clip, as `projection @ view_matrix`),
-/// 1 where the pixel's surface sees the light along `toward_light` (or no surface), else 0.
+/// at `shape` (H, W) pixels, 1 where the pixel's surface sees the light along `toward_light` (or
+/// no surface), else 0.
 #[pyfunction]
 pub(super) fn _shadow_truth<'py>(
     py: Python<'py>,
-    vertices: &Bound<'py, PyAny>,
-    faces_arr: &Bound<'py, PyAny>,
+    mesh: &Bound<'py, PyAny>,
     view_proj: &Bound<'py, PyAny>,
-    width: u32,
-    height: u32,
+    shape: (usize, usize),
     toward_light: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyArray2<f32>>> {
-    let toward = triple("toward_light", toward_light)?;
+    let ((h, w), toward) = (shape, triple("toward_light", toward_light)?);
     let rows = array_values::<f64>("view_proj", view_proj, &["float64"], (&[Some(4), Some(4)], "(4, 4)"))?.0;
-    let p = positions("vertices", vertices)?;
-    let f = faces("faces", faces_arr, p.len())?;
-    let (w, h) = (width as usize, height as usize);
-    let vis = without_gil(py, || {
-        let truth = || on_positions!(p.slices(), v => mesh_shadow_truth(v, &f, &rows, (w, h), toward));
-        Ok(crate::parallel::install(truth))
-    })?;
+    let vis = on_mesh!(py, mesh, |v, f, _| Ok(mesh_shadow_truth(v, f, &rows, (w, h), toward)))?;
     Ok(grid_to_numpy(py, (h, w), vis))
 }

@@ -76,12 +76,11 @@ fn plan(method: &str, o: &Options<'_, '_>) -> Result<Run> {
 }
 
 #[pyfunction]
-#[pyo3(signature = (method_name, vertices, faces_arr, **options))]
+#[pyo3(signature = (method_name, mesh, **options))]
 pub(super) fn _smooth<'py>(
     py: Python<'py>,
     method_name: &str,
-    vertices: &Bound<'py, PyAny>,
-    faces_arr: &Bound<'py, PyAny>,
+    mesh: &Bound<'py, PyAny>,
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let options = options.map_or_else(|| PyDict::new(py), |d| d.copy().expect("a dict copies"));
@@ -91,7 +90,7 @@ pub(super) fn _smooth<'py>(
     let names: Vec<(String, String)> = o.given("_as").map_or(Ok(Vec::new()), |d| d.extract())?;
     let rename = |e: Error| names.iter().fold(e, |e, (from, to)| e.renamed(from, to));
     let run = plan(method_name, &o).map_err(rename)?;
-    let mesh = MeshInput::read(vertices, faces_arr)?;
+    let mesh = MeshInput::of(mesh)?;
     let pin = vertex_mask("pinned", pinned.as_ref(), mesh.n_vertices())?;
     let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
     let out = mesh.run(py, |p, f, cancel| {

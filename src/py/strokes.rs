@@ -35,6 +35,12 @@ fn stroke(
     Ok((points, widths))
 }
 
+/// Refuses `arg` unless it has `n` entries (`expected` says what they match).
+fn as_many(arg: &str, got: usize, (expected, n): (&str, usize)) -> Result<()> {
+    let why = || format!("expected {expected} ({n}), got {got}");
+    (got == n).then_some(()).ok_or_else(|| Error::invalid(arg, why()))
+}
+
 fn items<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Vec<Bound<'py, PyAny>>> {
     args::refuse_text(arg, obj, "a list")?;
     obj.try_iter()
@@ -54,10 +60,7 @@ pub(super) fn _pen_strokes<'py>(
     simplify: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyList>> {
     let (line_items, width_items) = (items("lines", lines)?, items("widths", widths)?);
-    if line_items.len() != width_items.len() {
-        let reason = format!("expected one entry per line ({}), got {}", line_items.len(), width_items.len());
-        return Err(Error::invalid("widths", reason).into());
-    }
+    as_many("widths", width_items.len(), ("one entry per line", line_items.len()))?;
     let strokes = line_items
         .iter()
         .zip(&width_items)
@@ -85,10 +88,7 @@ pub(super) fn _plotter_order<'py>(
     ends: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let (starts, ends) = (point_array("starts", starts)?, point_array("ends", ends)?);
-    if starts.len() != ends.len() {
-        let reason = format!("expected as many as starts ({}), got {}", starts.len(), ends.len());
-        return Err(Error::invalid("ends", reason).into());
-    }
+    as_many("ends", ends.len(), ("as many as starts", starts.len()))?;
     let drawn = detached(py, || Ok(order::plotter_order(&starts, &ends)))?;
     let (index, reversed): (Vec<i64>, Vec<bool>) = drawn.into_iter().map(|(i, r)| (i as i64, r)).unzip();
     (index, reversed).to_python(py)

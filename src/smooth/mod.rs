@@ -119,7 +119,12 @@ pub enum Run {
 }
 
 impl Run {
-    /// `x0` smoothed as `smooth_cancellable` or `denoise::denoise` smooths it.
+    /// `x0` smoothed as this run says, stopping with `Error::Interrupted` at the next step (or
+    /// solver iteration, or filtering pass) after `cancel` is raised. Meshes of any scale are
+    /// handled (see `range`), welded first where the run says so (`mesh::weld::on_welded`); a
+    /// result that is not finite in the input's dtype is refused rather than returned.
+    /// `largest` is the largest absolute coordinate of `x0` if the caller already has it (it
+    /// saves a pass over `x0`).
     pub fn run<T: Real>(
         &self,
         x0: &[Vec3<T>],
@@ -128,17 +133,34 @@ impl Run {
         cancel: &Cancel,
         largest: Option<f64>,
     ) -> Result<Vec<Vec3<T>>> {
+        let (steps, weld) = match self {
+            Run::Laplacian(plan) => (plan.iterations, plan.weld),
+            Run::Normals(opts) => (opts.vertex_iterations, opts.weld),
+        };
+        if steps == 0 {
+            return Ok(x0.to_vec());
+        }
+        // `scale` serves the one rule stated in absolute units (trimesh's distance floor)
+        let out = range::at_fitted_scale(x0, largest, |x, scale| {
+            on_welded(x, faces, pinned, weld, |x, f, pinned| match self {
+                Run::Laplacian(plan) => reorder::on_best_order(x, f, pinned, |x, f, pinned| {
+                    smooth_in_order(x, f, plan, pinned, cancel, scale)
+                }),
+                Run::Normals(opts) => denoise::denoise_mesh(x, f, opts, pinned, cancel),
+            })
+        })?;
         match self {
-            Run::Laplacian(plan) => smooth_cancellable(x0, faces, plan, pinned, cancel, largest),
-            Run::Normals(opts) => denoise::denoise(x0, faces, opts, pinned, cancel, largest),
+            Run::Laplacian(plan) if may_grow(plan) && !range::all_finite(&out) => Err(overflow_error::<T>(x0, plan)),
+            Run::Normals(_) if !range::all_finite(&out) => Err(Error::invalid(
+                "vertices",
+                "the smoothed positions overflow the dtype: coordinates must stay well below its largest value",
+            )),
+            _ => Ok(out),
         }
     }
 }
 
-/// `smooth`, stopping with `Error::Interrupted` at the next step (or solver iteration) after
-/// `cancel` is raised. Meshes of any scale are handled (see `range`); a result that is not
-/// finite in the input's dtype is refused rather than returned. `largest` is the largest
-/// absolute coordinate of `x0` if the caller already has it (it saves a pass over `x0`).
+/// `smooth`, stopping on `cancel` (see `Run::run`).
 pub fn smooth_cancellable<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
@@ -147,22 +169,7 @@ pub fn smooth_cancellable<T: Real>(
     cancel: &Cancel,
     largest: Option<f64>,
 ) -> Result<Vec<Vec3<T>>> {
-    if plan.iterations == 0 {
-        return Ok(x0.to_vec());
-    }
-    // welded first if the plan says so; `scale` serves the one rule stated in absolute units
-    // (trimesh's distance floor)
-    let out = range::at_fitted_scale(x0, largest, |x, scale| {
-        on_welded(x, faces, pinned, plan.weld, |x, f, pinned| {
-            reorder::on_best_order(x, f, pinned, |x, f, pinned| {
-                smooth_in_order(x, f, plan, pinned, cancel, scale)
-            })
-        })
-    })?;
-    if may_grow(plan) && !range::all_finite(&out) {
-        return Err(overflow_error::<T>(x0, plan));
-    }
-    Ok(out)
+    Run::Laplacian(plan.clone()).run(x0, faces, pinned, cancel, largest)
 }
 
 /// Whether a result can leave the input's bounding box (and so, in principle, the dtype's

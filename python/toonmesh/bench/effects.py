@@ -72,7 +72,7 @@ def shadow_against_truth(name: str, size: int, shadows: Any = True, backend: str
     res = r.render(tm.Mesh(V, F, normals="flat"), lights=[tm.Light.directional(direction, shadows=shadows)],
                    camera=tm.Camera.fit(eye), width=size, height=size, outputs=("color", "shadow"))
     toward = -np.asarray(direction, float) / np.linalg.norm(direction)
-    truth = _core._shadow_truth(V, F, res.projection @ res.view_matrix, size, size, toward)
+    truth = _core._shadow_truth((V, F), res.projection @ res.view_matrix, (size, size), toward)
     return res, truth
 
 

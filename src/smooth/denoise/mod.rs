@@ -18,38 +18,14 @@ pub mod vertex_fit;
 use rayon::prelude::*;
 
 use crate::cancel::Cancel;
-use crate::error::{Error, Result};
-use crate::mesh::weld::on_welded;
+use crate::error::Result;
 use crate::real::{Real, Vec3};
-use crate::smooth::range;
 pub use options::{resolve, Args, Filter, Options};
 
-/// `x0` smoothed as `opts` says, stopping with `Error::Interrupted` at the next pass after
-/// `cancel` is raised. `largest` is the largest absolute coordinate of `x0` if the caller has it.
-pub fn denoise<T: Real>(
-    x0: &[Vec3<T>],
-    faces: &[[u32; 3]],
-    opts: &Options,
-    pinned: Option<&[bool]>,
-    cancel: &Cancel,
-    largest: Option<f64>,
-) -> Result<Vec<Vec3<T>>> {
-    if opts.vertex_iterations == 0 {
-        return Ok(x0.to_vec());
-    }
-    let out = range::at_fitted_scale(x0, largest, |x, _| {
-        on_welded(x, faces, pinned, opts.weld, |x, f, pinned| denoise_mesh(x, f, opts, pinned, cancel))
-    })?;
-    if !range::all_finite(&out) {
-        return Err(Error::invalid(
-            "vertices",
-            "the smoothed positions overflow the dtype: coordinates must stay well below its largest value",
-        ));
-    }
-    Ok(out)
-}
-
-fn denoise_mesh<T: Real>(
+/// `x0` smoothed as `opts` says, at a fitted scale and on the welded mesh where asked (see
+/// `smooth::Run::run`, which calls it), stopping with `Error::Interrupted` at the next pass
+/// after `cancel` is raised.
+pub(crate) fn denoise_mesh<T: Real>(
     x0: &[Vec3<T>],
     faces: &[[u32; 3]],
     opts: &Options,
