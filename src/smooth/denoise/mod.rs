@@ -68,6 +68,7 @@ fn denoise_mesh<T: Real>(
     let kernels = bilateral::Kernels {
         sigma_s: opts.sigma_s * edge,
         sigma_r: opts.sigma_r_for(noise::normal_noise(&rings, &normals)),
+        own: options::GUIDED_OWN_NORMALS,
     };
     let mut filtered = vec![[0.0; 3]; faces.len()];
     let mut guide = match opts.filter {

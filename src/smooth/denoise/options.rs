@@ -56,6 +56,12 @@ pub const DEFAULT_SIGMA_S: f64 = 1.0;
 pub const SIGMA_R_PER_NOISE: f64 = 0.35;
 pub const SIGMA_R_MIN: f64 = 0.05;
 pub const SIGMA_R_MAX: f64 = 0.6;
+/// In the guided filter's range weight, the squared distance between two faces' own normals
+/// adds at this share (dimensionless) to that between their guidance normals. Where every patch
+/// around a face crosses a crease (features a few faces wide, as a groove's walls), the
+/// guidance blurs the two sides together and the faces' own normals still tell them apart; a
+/// small share, so that outliers, which the guidance sees through, still weigh little.
+pub const GUIDED_OWN_NORMALS: f64 = 0.3;
 
 /// The most passes or steps accepted: far beyond any useful count, low enough to refuse typos.
 const MAX_ITERATIONS: i64 = 1_000_000;
