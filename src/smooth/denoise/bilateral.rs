@@ -10,18 +10,17 @@ use super::faces::{dist2, unit_or_zero, FaceData};
 use super::rings::FaceRings;
 
 /// The Gaussian kernels' widths: `sigma_s` a length (between face centroids), `sigma_r` a
-/// distance between unit normals (|n_i - n_j| = 2 sin(angle / 2)); `own` (dimensionless, 0 to
-/// compare the guide alone) the share at which the squared distance between the normals
-/// themselves adds to that between the guidance normals in the range weight.
+/// distance between unit normals (|n_i - n_j| = 2 sin(angle / 2)) compared in the guide;
+/// `sigma_own` the same for the normals themselves in the joint filter (None: the guide alone).
 #[derive(Debug, Clone, Copy)]
 pub struct Kernels {
     pub sigma_s: f64,
     pub sigma_r: f64,
-    pub own: f64,
+    pub sigma_own: Option<f64>,
 }
 
 /// `out[i]`: face i's filtered normal from `normals`, with range weights from `guide` (the
-/// normals themselves when None; `k.own` is then ignored). A face whose weights all vanish
+/// normals themselves when None; `k.sigma_own` is then ignored). A face whose weights all vanish
 /// (degenerate faces only) keeps its normal.
 pub fn filter(
     rings: &FaceRings,
@@ -32,13 +31,14 @@ pub fn filter(
     out: &mut [[f64; 3]],
 ) {
     let g = guide.unwrap_or(normals);
-    let own = if guide.is_some() { k.own } else { 0.0 };
-    let (is, ir) = (-0.5 / (k.sigma_s * k.sigma_s), -0.5 / (k.sigma_r * k.sigma_r));
+    let inv = |sigma: f64| -0.5 / (sigma * sigma);
+    let (is, ir) = (inv(k.sigma_s), inv(k.sigma_r));
+    let io = guide.and(k.sigma_own).map_or(0.0, inv);
     out.par_iter_mut().with_min_len(1024).enumerate().for_each(|(i, o)| {
         let (ci, gi) = (data[i].centroid, g[i]);
         let term = |j: usize| {
-            let range = dist2(gi, g[j]) + own * dist2(normals[i], normals[j]);
-            data[j].area * (is * dist2(ci, data[j].centroid) + ir * range).exp()
+            let range = ir * dist2(gi, g[j]) + io * dist2(normals[i], normals[j]);
+            data[j].area * (is * dist2(ci, data[j].centroid) + range).exp()
         };
         let w = term(i);
         let mut sum = normals[i].map(|c| w * c);
