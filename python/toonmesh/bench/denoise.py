@@ -5,7 +5,7 @@ their defaults, in one run.
     python -m toonmesh.bench denoise [--quick] [--repeat N] [--accuracy]
 
 Parts are the generated noisy CAD parts of :mod:`toonmesh.bench.parts` (box, fandisk-like,
-cylinder). Error is the mean angle, in degrees, between the result's face normals and the clean
+cylinder, and the harder sphere with V-grooves and twelve-sided prism). Error is the mean angle, in degrees, between the result's face normals and the clean
 part's. Every time is the median of ``repeat`` runs after a warm-up: toonmesh's is the whole
 call, pymeshlab's the filter on a loaded ``MeshSet`` (conversion in and out not counted).
 Ratios are pymeshlab's time / toonmesh's time: above 1 means toonmesh is faster.
@@ -79,7 +79,7 @@ def error_table(faces: int, repeat: int) -> str:
     """Error and time per part, noise and method."""
     pml = _pymeshlab()
     rows: List[List[Any]] = []
-    for name in parts.PARTS:
+    for name in parts.PARTS + parts.HARD_PARTS:
         V, F = parts.part(name, faces)
         for kind, level in NOISE_CASES:
             N = parts.noisy(V, F, level, kind, seed=1)

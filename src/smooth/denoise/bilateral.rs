@@ -1,7 +1,8 @@
 //! One pass of (joint) bilateral filtering of face normals (Zheng et al. 2011; with a guide,
 //! Zhang et al. 2015): each face's normal becomes the normalised sum over its vertex ring
 //! (itself included) of area x spatial weight x range weight x normal. The range weight
-//! compares the normals themselves, or, in the joint filter, the guidance normals.
+//! compares the normals themselves, or, in the joint filter, the guidance normals and, at a
+//! smaller share, the normals themselves.
 
 use rayon::prelude::*;
 
@@ -9,16 +10,18 @@ use super::faces::{dist2, unit_or_zero, FaceData};
 use super::rings::FaceRings;
 
 /// The Gaussian kernels' widths: `sigma_s` a length (between face centroids), `sigma_r` a
-/// distance between unit normals (|n_i - n_j| = 2 sin(angle / 2)).
+/// distance between unit normals (|n_i - n_j| = 2 sin(angle / 2)) compared in the guide;
+/// `sigma_own` the same for the normals themselves in the joint filter (None: the guide alone).
 #[derive(Debug, Clone, Copy)]
 pub struct Kernels {
     pub sigma_s: f64,
     pub sigma_r: f64,
+    pub sigma_own: Option<f64>,
 }
 
 /// `out[i]`: face i's filtered normal from `normals`, with range weights from `guide` (the
-/// normals themselves when None). A face whose weights all vanish (degenerate faces only) keeps
-/// its normal.
+/// normals themselves when None; `k.sigma_own` is then ignored). A face whose weights all vanish
+/// (degenerate faces only) keeps its normal.
 pub fn filter(
     rings: &FaceRings,
     data: &[FaceData],
@@ -28,10 +31,15 @@ pub fn filter(
     out: &mut [[f64; 3]],
 ) {
     let g = guide.unwrap_or(normals);
-    let (is, ir) = (-0.5 / (k.sigma_s * k.sigma_s), -0.5 / (k.sigma_r * k.sigma_r));
+    let inv = |sigma: f64| -0.5 / (sigma * sigma);
+    let (is, ir) = (inv(k.sigma_s), inv(k.sigma_r));
+    let io = guide.and(k.sigma_own).map_or(0.0, inv);
     out.par_iter_mut().with_min_len(1024).enumerate().for_each(|(i, o)| {
         let (ci, gi) = (data[i].centroid, g[i]);
-        let term = |j: usize| data[j].area * (is * dist2(ci, data[j].centroid) + ir * dist2(gi, g[j])).exp();
+        let term = |j: usize| {
+            let range = ir * dist2(gi, g[j]) + io * dist2(normals[i], normals[j]);
+            data[j].area * (is * dist2(ci, data[j].centroid) + range).exp()
+        };
         let w = term(i);
         let mut sum = normals[i].map(|c| w * c);
         for &j in rings.ring.row(i) {

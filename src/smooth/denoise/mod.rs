@@ -41,9 +41,11 @@ pub(crate) fn denoise_mesh<T: Real>(
         return Ok(x0.to_vec());
     }
     let mut normals: Vec<[f64; 3]> = data.iter().map(|d| d.normal).collect();
+    let noise = noise::normal_noise(&rings, &normals);
     let kernels = bilateral::Kernels {
         sigma_s: opts.sigma_s * edge,
-        sigma_r: opts.sigma_r_for(noise::normal_noise(&rings, &normals)),
+        sigma_r: opts.sigma_r_for(noise),
+        sigma_own: opts.sigma_own_for(noise),
     };
     let mut filtered = vec![[0.0; 3]; faces.len()];
     let mut guide = match opts.filter {

@@ -56,6 +56,15 @@ pub const DEFAULT_SIGMA_S: f64 = 1.0;
 pub const SIGMA_R_PER_NOISE: f64 = 0.35;
 pub const SIGMA_R_MIN: f64 = 0.05;
 pub const SIGMA_R_MAX: f64 = 0.6;
+/// The guided filter's range weight also compares two faces' own normals, with a width of the
+/// measured range width (as `sigma_r` defaults to) over the square root of this share
+/// (dimensionless): at the defaults, their squared distance adds at this share to that between
+/// the guidance normals. Where every patch around a face crosses a crease (features a few
+/// faces wide, as a groove's walls), the guidance blurs the two sides together and the faces'
+/// own normals still tell them apart; a small share, so that outliers, which the guidance sees
+/// through, still weigh little. It follows the noise, not a given `sigma_r`, so that a narrow
+/// `sigma_r` narrows the guidance's weight alone.
+pub const GUIDED_OWN_NORMALS: f64 = 0.3;
 
 /// The most passes or steps accepted: far beyond any useful count, low enough to refuse typos.
 const MAX_ITERATIONS: i64 = 1_000_000;
@@ -88,9 +97,20 @@ pub fn resolve(filter: Filter, a: &Args) -> Result<Options> {
     })
 }
 
+/// The range width that follows the measured normal noise.
+fn measured_sigma_r(noise: f64) -> f64 {
+    (SIGMA_R_PER_NOISE * noise).clamp(SIGMA_R_MIN, SIGMA_R_MAX)
+}
+
 impl Options {
     /// The range width for a mesh whose measured normal noise is `noise`.
     pub fn sigma_r_for(&self, noise: f64) -> f64 {
-        self.sigma_r.unwrap_or_else(|| (SIGMA_R_PER_NOISE * noise).clamp(SIGMA_R_MIN, SIGMA_R_MAX))
+        self.sigma_r.unwrap_or_else(|| measured_sigma_r(noise))
+    }
+
+    /// The guided filter's range width for the faces' own normals (`GUIDED_OWN_NORMALS`), None
+    /// for the bilateral filter.
+    pub fn sigma_own_for(&self, noise: f64) -> Option<f64> {
+        (self.filter == Filter::Guided).then(|| measured_sigma_r(noise) / GUIDED_OWN_NORMALS.sqrt())
     }
 }
