@@ -1002,6 +1002,11 @@ NORMALS = Name(
         ("auto alone", ("auto",), TypeError),
         ("auto three", ("auto", 30, 1), TypeError),
         ("auto list", ["auto", 45], TypeError),
+        ("own, one short", np.ones((len(V) - 1, 3)), ValueError),
+        ("own, two columns", np.ones((len(V), 2)), ValueError),
+        ("own, a zero row", np.zeros((len(V), 3)), ValueError),
+        ("own, integers", np.ones((len(V), 3), dtype=np.int64), TypeError),
+        ("own, a list", np.ones((len(V), 3)).tolist(), TypeError),
     ),
 )
 PIXELS = Integer(1, GPU["max_texture_size"])
@@ -1335,7 +1340,7 @@ RENDER_CASES: List[Case] = [
         [
             Param("vertices", VERTICES, none=OK),  # no "depth": see _added
             Param("faces", FACES),
-            Param("normals", NORMALS),
+            Param("normals", NORMALS, none=OK),  # None: the default
             Param("smooth_iterations", Integer(0, 10**6, slow_above=3)),
             Param("camera", CAMERAS_ONE, none=OK),
             Param("backend", BACKEND, none=OK, also=(tm.GpuUnavailableError,)),
@@ -1391,7 +1396,7 @@ RENDER_CASES: List[Case] = [
         [
             Param("vertices", VERTICES),
             Param("faces", FACES),
-            Param("normals", NORMALS),
+            Param("normals", NORMALS, none=OK),  # None: the default
             Param("smooth_iterations", Integer(0, 10**6, slow_above=3)),
             Param("vertex_colors", mesh_colours(N), none=OK),
             Param("face_colors", mesh_colours(len(F)), none=OK),
@@ -1426,7 +1431,7 @@ RENDER_CASES: List[Case] = [
             Param("faces", FACES),
             Param("material", MATERIALS, none=OK),
             Param("transform", TRANSFORMS, none=OK),
-            Param("normals", NORMALS),
+            Param("normals", NORMALS, none=OK),  # None: the default
             Param("vertex_colors", mesh_colours(N), none=OK),
             Param("face_colors", mesh_colours(len(F)), none=OK),
         ],
@@ -1690,7 +1695,7 @@ CASES += [
         [
             Param("vertices", VERTICES),
             Param("faces", FACES),
-            Param("normals", NORMALS),
+            Param("normals", NORMALS, none=OK),  # None: the default
             Param("image_format", Name(("png", "jpeg"))),
             Param("drag_scale", Number(0.05, 1.0)),
             Param("controls", Flag()),

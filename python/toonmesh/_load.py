@@ -19,11 +19,11 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
-from toonmesh import _colors, _ply_strips
+from toonmesh import _colors, _core, _ply_strips
 from toonmesh._file_checks import (
     MeshFileError, check_gltf_sizes, check_obj, check_ply, gltf_document, gltf_ignored,
 )
-from toonmesh._scene import Mesh
+from toonmesh._scene import Mesh, normal_mode
 
 #: The most mesh instances (scene nodes with geometry) one file or scene may place.
 MAX_INSTANCES = 65_536
@@ -51,7 +51,8 @@ class Surface:
     OBJ); ``texture`` (H, W, 4) uint8 RGBA image (top row first); ``vertex_colors`` (N, 4) and
     ``face_colors`` (M, 4) uint8 RGBA; ``base_color`` (4,) float64 in [0, 1], the material's
     colour factor (glTF baseColorFactor, MTL Kd) that multiplies texture and vertex colours;
-    ``normals`` (N, 3) float64, the file's own vertex normals (read for ``keep_seams`` only).
+    ``normals`` (N, 3) float64, the file's own vertex normals (glTF ``NORMAL``, OBJ ``vn``, PLY
+    ``nx ny nz``; read from files only, never computed).
     Any of them may be None: these are what ``toonmesh smooth`` writes back. ``colors``: the
     colour keywords of :class:`toonmesh.Mesh` that draw the geometry (its albedo, by the
     renderer's own rule in :mod:`toonmesh._colors`), made once per geometry so that its
@@ -70,7 +71,7 @@ class Surface:
     colors: Dict[str, Any] = field(default_factory=dict)
 
 
-def load(path: "str | os.PathLike[str]") -> List[Mesh]:
+def load(path: "str | os.PathLike[str]", up: Optional[str] = None) -> List[Mesh]:
     """Reads a mesh file into a list of :class:`toonmesh.Mesh`, one per placed geometry.
 
     Formats: OBJ (with its MTL: diffuse colour ``Kd`` and texture ``map_Kd``), PLY (vertex and
@@ -82,15 +83,21 @@ def load(path: "str | os.PathLike[str]") -> List[Mesh]:
     ``texture``, the base colour factor folded in, ``alpha_cutoff`` for a glTF alpha mask), as a
     ``trimesh.Trimesh`` brings it; ``material`` is None (the render's). Meshes of one geometry
     placed by several nodes share their vertex, face and colour arrays, so a renderer uploads
-    them once.
+    them once. Each mesh has the file's own vertex normals as ``normals`` where it holds them
+    (glTF ``NORMAL``, OBJ ``vn``, PLY ``nx ny nz``; a file whose normals include a zero or
+    non-finite one is drawn with the default normals, with a warning), else None (the default,
+    ``"auto"``); and ``up``, the file format's up axis (``up`` when given).
     Vertices are kept as the file lists them (no merging or cleanup), except that an OBJ with a
-    texture is split where its texture coordinates change (a vertex gets one UV) and an STL's
-    corners are merged by position. What the file holds and toonmesh does not draw (cameras,
-    lights, animations, normal, emissive and metallic-roughness maps, ...) is named in one
-    warning.
+    texture or normals is split where its texture coordinates or normals change (a vertex gets
+    one of each) and an STL's corners are merged by position. What the file holds and toonmesh
+    does not draw (cameras, lights, animations, normal, emissive and metallic-roughness maps,
+    ...) is named in one warning.
 
     Args:
         path: the file (str or os.PathLike).
+        up: the file's up axis, "x", "y" or "z"; None (default): its format's convention
+            (:func:`file_up_axis`: z for STL, PLY and 3MF, y for glTF, GLB and OBJ), or none
+            (the render's default, y) for other formats.
 
     Returns:
         A list of :class:`toonmesh.Mesh` (never empty).
@@ -102,26 +109,42 @@ def load(path: "str | os.PathLike[str]") -> List[Mesh]:
         ValueError: the file cannot be read as triangles, naming the file and what is wrong
             (1-based line numbers in OBJ, 1-based vertices when not finite, element counts in
             PLY); or it places more than :data:`MAX_INSTANCES` meshes or uses more than
-            :data:`MAX_MATERIALS` materials.
+            :data:`MAX_MATERIALS` materials; ``up`` is not an axis name.
     """
-    return [_mesh_of(s, t) for s, t in read_surfaces(path)]
+    up = _core._up_axis(up) if up is not None else file_up_axis(path)
+    return [_mesh_of(s, t, up) for s, t in read_surfaces(path)]
+
+
+def file_up_axis(path: Any) -> Optional[str]:
+    """The up axis of a mesh file's format by its suffix (the core's ``FILE_UP_AXES``), or None
+    for a format without a convention."""
+    suffix = os.path.splitext(os.fspath(path))[1].lower().lstrip(".") if isinstance(path, (str, os.PathLike)) else ""
+    return _core.FILE_UP_AXES.get(suffix)  # type: ignore[no-any-return]
+
+
+def up_conventions() -> str:
+    """The formats' up axes in words: ``"z for .stl, .ply, .3mf; y for .glb, .gltf, .obj and
+    others"``."""
+    by_axis: Dict[str, List[str]] = {}
+    for suffix, axis in _core.FILE_UP_AXES.items():
+        by_axis.setdefault(axis, []).append("." + suffix)
+    words = [f"{axis} for {', '.join(s)}{' and others' if axis == _core.DEFAULT_UP_AXIS else ''}"
+             for axis, s in by_axis.items()]
+    return "; ".join(sorted(words, key=lambda w: w.endswith("others")))
 
 
 def read_surfaces(path: Any, *, keep_seams: bool = False) -> List[Tuple[Surface, Optional[np.ndarray]]]:
-    """(surface, world transform or None) per placed geometry of a file; see :func:`load`.
-    ``keep_seams``: read an OBJ with texture coordinates or normals split per corner (each
-    vertex one UV and one normal), as the file means them, even without a texture."""
+    """(surface, world transform or None) per placed geometry of a file, with the file's own
+    normals; see :func:`load`. ``keep_seams``: read an OBJ with texture coordinates split per
+    corner (each vertex one UV), as the file means them, even without a texture (one with
+    normals is always read so)."""
     path = _path(path)
     ignored: List[str] = []
     scene, materials = _read(path, keep_seams, ignored)
     placed = _placed(scene, path, ignored, materials)
-    if keep_seams:
-        for surface, _ in placed:
-            geom = _geometries(scene).get(surface.name)
-            cache = getattr(geom, "_cache", None)  # normals trimesh read from the file, not computed
-            given = cache["vertex_normals"] if cache is not None and "vertex_normals" in cache else None
-            if given is not None and len(given) == len(surface.vertices):
-                surface.normals = np.asarray(given, dtype=np.float64)
+    geometries = _geometries(scene)
+    for surface in {id(s): s for s, _ in placed}.values():
+        surface.normals = _file_normals(geometries.get(surface.name), surface, path)
     if ignored:
         warnings.warn(f"{path}: not drawn: {', '.join(dict.fromkeys(ignored))}", stacklevel=3)
     return placed
@@ -168,9 +191,27 @@ def under_own_colours(meshes: List[Any], material: Any) -> List[Any]:
     return out
 
 
-def _mesh_of(surface: Surface, transform: Optional[np.ndarray]) -> Mesh:
+def _mesh_of(surface: Surface, transform: Optional[np.ndarray], up: Optional[str] = None) -> Mesh:
     """The one place a :class:`Surface` becomes a :class:`toonmesh.Mesh`."""
-    return Mesh(surface.vertices, surface.faces, transform=transform, **surface.colors)
+    return Mesh(surface.vertices, surface.faces, transform=transform, normals=surface.normals, up=up, **surface.colors)
+
+
+def _file_normals(geom: Any, surface: Surface, path: str) -> Optional[np.ndarray]:
+    """The vertex normals trimesh read from the file for ``geom`` (in its cache before anything
+    computes them), or None; a file whose normals the core refuses (a zero or non-finite one) is
+    named in a warning and drawn with the default normals."""
+    cache = getattr(geom, "_cache", None)
+    given = cache["vertex_normals"] if cache is not None and "vertex_normals" in cache else None
+    if given is None or len(given) != len(surface.vertices):
+        return None
+    normals = np.asarray(given, dtype=np.float64)
+    try:
+        normal_mode(normals, len(surface.vertices))
+    except ValueError as exc:
+        where = f" (mesh {surface.name!r})" if surface.name else ""
+        warnings.warn(f"{path}{where}: the file's {exc}; drawn with the default normals", stacklevel=4)
+        return None
+    return normals
 
 
 # ------------------------------------------------------------------------------------------------
@@ -201,8 +242,9 @@ def _read(path: str, keep_seams: bool, ignored: List[str]) -> Tuple[Any, bool]:
         if counts["materials"] > MAX_MATERIALS:
             raise MeshFileError(f"{path}: {counts['materials']:,} materials ('usemtl' names); toonmesh reads at "
                                 f"most {MAX_MATERIALS:,} materials a file")
-        # positions as listed (not split at texture seams) unless the corners' UVs or normals matter
-        extra["maintain_order"] = not (keep_seams and (counts["texcoords"] or counts["normals"]))
+        # positions as listed (not split at texture seams) unless the corners' normals (drawn) or
+        # UVs (kept) matter: a vertex gets one of each
+        extra["maintain_order"] = not (counts["normals"] or (keep_seams and counts["texcoords"]))
         materials = counts["libraries"] > 0
     elif suffix == ".ply":
         check_ply(path)
