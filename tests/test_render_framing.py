@@ -201,3 +201,9 @@ def test_the_command_line_says_which_up_axis_it_used(tmp_path, capsys, monkeypat
     assert main(["render", "teapot.stl", "-o", "d.png", "--up", "w"]) == 2
     err = capsys.readouterr().err
     assert "--up" in err and len(err.splitlines()) == 1
+
+
+def test_an_empty_scene_is_framed_by_the_unit_sphere():
+    for camera in (tm.Camera.fit(), tm.Camera.fit(orthographic=True), tm.Camera.fit((1.0, 0.0, 0.0), turn=30)):
+        r = tm.render(None, camera=camera, width=8, height=8, outputs=("color", "depth"))
+        assert np.isfinite(r.view_matrix).all() and np.isinf(r.depth).all()

@@ -422,7 +422,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"toonmesh {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     backend = dict(choices=_core.BACKENDS, default=None, help="GPU backend (default: $TOONMESH_BACKEND, else auto)")
-    up_help = f"; None: the file format's convention ({up_conventions()})"
+    up_help = f"; the formats' conventions: {up_conventions()}"
 
     p = sub.add_parser("render", help="render mesh files to toon-shaded images",
                        description="Render mesh files (OBJ, PLY, STL, OFF, GLB, ...) to PNG images, or NPZ with "

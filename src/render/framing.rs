@@ -15,6 +15,9 @@ use super::scene::SceneItem;
 /// meshes beyond it are framed by their boxes.
 pub const FRAMING_BUDGET: usize = 4_000_000;
 
+/// Vertices a thread takes at once.
+const CHUNK: usize = 65_536;
+
 /// The vertices a mesh's faces use (in stored coordinates), kept with it; None when every
 /// vertex is used (the host positions are then the list).
 #[derive(Default)]
@@ -69,15 +72,21 @@ pub fn scene_support<'a>(
                     // p = origin + scale * stored
                     let list = p.0.get().and_then(|l| l.as_deref()).unwrap_or(&rec.host.positions);
                     let origin = DVec3::from_array(g.placement.origin);
-                    let far = list
-                        .par_chunks(65_536)
-                        .map(|chunk| {
-                            chunk.iter().fold([f64::NEG_INFINITY; 4], |m, s| {
-                                let s = DVec3::from_array(*s);
-                                std::array::from_fn(|k| m[k].max(along[k].dot(s)))
-                            })
+                    let reach = |chunk: &[[f64; 3]]| {
+                        chunk.iter().fold([f64::NEG_INFINITY; 4], |m, s| {
+                            let s = DVec3::from_array(*s);
+                            std::array::from_fn(|k| m[k].max(along[k].dot(s)))
                         })
-                        .reduce(|| [f64::NEG_INFINITY; 4], |a, b| std::array::from_fn(|k| a[k].max(b[k])));
+                    };
+                    // in parallel only where a mesh is large enough to pay for it (many
+                    // instances of a small one are many small lists)
+                    let far = if list.len() <= CHUNK {
+                        reach(list)
+                    } else {
+                        list.par_chunks(CHUNK)
+                            .map(reach)
+                            .reduce(|| [f64::NEG_INFINITY; 4], |a, b| std::array::from_fn(|k| a[k].max(b[k])))
+                    };
                     std::array::from_fn(|k| along[k].dot(origin) + shift[k] + g.placement.scale * far[k])
                 }
                 None => {

@@ -374,6 +374,11 @@ fn fit(
     let s = direction_of(f.cross(up));
     let v = s.cross(f);
     let c = scene.sphere.center;
+    // an empty scene reaches nowhere: its box and sphere (the unit sphere) frame it
+    let support = |normals: [DVec3; 4]| {
+        let h = support(normals);
+        if h.iter().all(|x| x.is_finite()) { h } else { normals.map(|n| scene.support(n)) }
+    };
     match projection {
         Projection::Perspective { fov_y_deg } => {
             let ty = (fov_y_deg.to_radians() / 2.0).tan() / margin;
