@@ -151,7 +151,11 @@ pub fn unit_or_zero(n: [f64; 3]) -> [f64; 3] {
 /// A mesh's own vertex normals (a file's), checked as the argument `arg`: one a vertex of
 /// `n_vertices`, finite, none the zero vector; scaled to unit length (without squaring large or
 /// tiny components) in f32, as the GPU takes them.
-pub fn given_unit_normals<T: Real>(arg: &str, normals: &[Vec3<T>], n_vertices: usize) -> Result<Vec<[f32; 3]>> {
+pub fn given_unit_normals<T: Real>(
+    arg: &str,
+    normals: &[Vec3<T>],
+    n_vertices: usize,
+) -> Result<Vec<[f32; 3]>> {
     if normals.len() != n_vertices {
         return Err(Error::invalid(
             arg,

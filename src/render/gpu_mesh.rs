@@ -10,12 +10,12 @@
 use rayon::prelude::*;
 use wgpu::util::DeviceExt;
 
-use crate::edges::feature::check_crease_angle;
-use crate::edges::DEFAULT_CREASE_ANGLE;
-use crate::error::{Error, Result};
 use crate::edges::crooked_creases::DEFAULT_MAX_CREASE_TURN;
+use crate::edges::feature::check_crease_angle;
 use crate::edges::find_feature_edges;
 use crate::edges::short_creases::{keep_drawn_creases, DEFAULT_MIN_CREASE_LENGTH};
+use crate::edges::DEFAULT_CREASE_ANGLE;
+use crate::error::{Error, Result};
 use crate::mesh::crease_normals::{split_normals, ListedEdges, SplitNormals};
 use crate::mesh::enclosure::{enclosure_welded, Enclosure};
 use crate::mesh::normals::{triangle_unit_normal, vertex_normals};
@@ -196,7 +196,8 @@ fn build_vertices(stored: &[[f64; 3]], faces: &[[u32; 3]], normals: &MeshNormals
     let f32s = |p: &[f64; 3]| p.map(|x| x as f32);
     let mode = match normals {
         MeshNormals::Given(n) => {
-            let v = stored.par_iter().zip(n).map(|(p, &normal)| Vertex { position: f32s(p), normal }).collect();
+            let v =
+                stored.par_iter().zip(n).map(|(p, &normal)| Vertex { position: f32s(p), normal }).collect();
             return Ok((v, None, None));
         }
         MeshNormals::Mode(mode) => *mode,

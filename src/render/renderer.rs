@@ -307,10 +307,9 @@ impl Renderer {
     pub(crate) fn prepare(&self, scene: CheckedScene, report: &mut FrameReport) -> Result<Prepared> {
         let records: Vec<Arc<MeshRecord>> =
             scene.scene.items.iter().map(|i| self.mesh(i.mesh)).collect::<Result<_>>()?;
-        let bounds = scene.scene.bounds(
-            |id| Ok(self.mesh(id)?.gpu.sphere()),
-            |id| Ok(self.mesh(id)?.gpu.bounding_box()),
-        )?;
+        let bounds = scene
+            .scene
+            .bounds(|id| Ok(self.mesh(id)?.gpu.sphere()), |id| Ok(self.mesh(id)?.gpu.bounding_box()))?;
         let frame = &scene.frame;
         let cam = {
             let support = scene_support(&scene.scene.items, &records, bounds.sphere.center);

@@ -273,7 +273,8 @@ impl Camera {
                 let (eye, projection) = fit(scene, support, dir, up, margin, aspect, self.projection);
                 let forward = -dir;
                 let depth = (scene.sphere.center - eye).dot(forward);
-                let target = eye + forward * if depth > 0.0 { depth } else { scene.sphere.radius.max(1e-300) };
+                let target =
+                    eye + forward * if depth > 0.0 { depth } else { scene.sphere.radius.max(1e-300) };
                 (eye, target, up, projection)
             }
         };
@@ -342,7 +343,12 @@ impl SceneBounds {
 /// three-quarter view across the scene's longest horizontal extent, turned `turn` degrees about
 /// up; `up` or the scene's up axis (and where that is parallel to the direction, as a view from
 /// straight above, the canonical frame's back: its front at the image's bottom).
-fn fit_view(scene: &SceneBounds, direction: Option<[f64; 3]>, up: Option<[f64; 3]>, turn: f64) -> (DVec3, DVec3) {
+fn fit_view(
+    scene: &SceneBounds,
+    direction: Option<[f64; 3]>,
+    up: Option<[f64; 3]>,
+    turn: f64,
+) -> (DVec3, DVec3) {
     let axis = scene.up.vector();
     let up_given = up.map(|u| direction_of(DVec3::from_array(u)));
     let u = up_given.unwrap_or(axis);
@@ -377,7 +383,11 @@ fn fit(
     // an empty scene reaches nowhere: its box and sphere (the unit sphere) frame it
     let support = |normals: [DVec3; 4]| {
         let h = support(normals);
-        if h.iter().all(|x| x.is_finite()) { h } else { normals.map(|n| scene.support(n)) }
+        if h.iter().all(|x| x.is_finite()) {
+            h
+        } else {
+            normals.map(|n| scene.support(n))
+        }
     };
     match projection {
         Projection::Perspective { fov_y_deg } => {
@@ -478,7 +488,10 @@ mod tests {
         let ndc: Vec<DVec3> = corners.iter().map(|&p| vp.project_point3(p)).collect();
         let (top, bottom) = ndc.iter().fold((-9.0f64, 9.0f64), |(t, b), p| (t.max(p.y), b.min(p.y)));
         let right = ndc.iter().fold(0.0f64, |m, p| m.max(p.x.abs()));
-        assert!((top - 1.0 / DEFAULT_MARGIN).abs() < 1e-9 && (bottom + 1.0 / DEFAULT_MARGIN).abs() < 1e-9, "{top} {bottom}");
+        assert!(
+            (top - 1.0 / DEFAULT_MARGIN).abs() < 1e-9 && (bottom + 1.0 / DEFAULT_MARGIN).abs() < 1e-9,
+            "{top} {bottom}"
+        );
         assert!(right < 0.5, "narrow: {right}");
         // upright: the bottle's top above its foot
         let foot = vp.project_point3(DVec3::new(0.0, 0.0, 0.0));
@@ -488,7 +501,10 @@ mod tests {
 
     #[test]
     fn fit_frames_the_sphere_and_encloses_it() {
-        let cam = Camera { placement: Placement::Fit { direction: Some([0.35, 0.3, 1.0]), up: None, margin: 1.0, turn: 0.0 }, ..Camera::default() };
+        let cam = Camera {
+            placement: Placement::Fit { direction: Some([0.35, 0.3, 1.0]), up: None, margin: 1.0, turn: 0.0 },
+            ..Camera::default()
+        };
         let s = Sphere { center: DVec3::new(1.0, 2.0, 3.0), radius: 2.0 };
         let r = cam.resolve(&SceneBounds::of_sphere(s, Axis::Y), 2.0).unwrap();
         let c = r.view.transform_point3(s.center);

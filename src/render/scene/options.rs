@@ -7,11 +7,11 @@ use serde::{Deserialize, Serialize};
 use crate::render::color::Srgb;
 
 use super::camera::Camera;
-use super::up::{scene_up, Axis};
-use crate::error::Result;
 use super::light::Light;
 use super::material::Material;
+use super::up::{scene_up, Axis};
 use super::{FrameSpec, MeshId, Scene, SceneItem, IDENTITY};
+use crate::error::Result;
 use crate::render::effects::outlines::settings::Outlines;
 use crate::render::effects::scene_settings::SceneEffects;
 

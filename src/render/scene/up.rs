@@ -92,9 +92,9 @@ impl Frame {
     pub fn across(up: DVec3, points: &[DVec3]) -> Frame {
         let frame = Frame::canonical(up);
         let extent = |axis: DVec3| {
-            let (lo, hi) = points
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| (lo.min(p.dot(axis)), hi.max(p.dot(axis))));
+            let (lo, hi) = points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.dot(axis)), hi.max(p.dot(axis)))
+            });
             hi - lo
         };
         if extent(frame.front) > extent(frame.side) * (1.0 + LONGER_BY) {
@@ -151,11 +151,9 @@ mod tests {
 
     #[test]
     fn frames_are_right_handed_and_match_blender_s_front_views() {
-        for (up, side, front) in [
-            (DVec3::Y, DVec3::X, DVec3::Z),
-            (DVec3::Z, DVec3::X, -DVec3::Y),
-            (DVec3::X, DVec3::Z, DVec3::Y),
-        ] {
+        for (up, side, front) in
+            [(DVec3::Y, DVec3::X, DVec3::Z), (DVec3::Z, DVec3::X, -DVec3::Y), (DVec3::X, DVec3::Z, DVec3::Y)]
+        {
             let f = Frame::canonical(up);
             assert!((f.side - side).length() < 1e-12 && (f.front - front).length() < 1e-12, "{f:?}");
             assert!((f.side.cross(f.up) - f.front).length() < 1e-12);
