@@ -48,7 +48,7 @@ LAYERS: List[List[str]] = [
         "render::settings", "render::settings::*",
     ],
     # the device and the meshes on it
-    ["render::device", "render::gpu_albedo", "render::gpu_mesh", "render::mesh_record", "render::hatch_field", "render::culling", "render::reference",
+    ["render::device", "render::gpu_albedo", "render::gpu_mesh", "render::mesh_record", "render::hatch_field", "render::framing", "render::culling", "render::reference",
      "render::image_out"],
     ["render::uniforms", "render::pipelines", "render::graph", "render::graph::*", "render::context"],
     # passes, and the frame effects with theirs

@@ -979,6 +979,11 @@ NORMALS = Name(
         ("auto alone", ("auto",), TypeError),
         ("auto three", ("auto", 30, 1), TypeError),
         ("auto list", ["auto", 45], TypeError),
+        ("own, one short", np.ones((len(V) - 1, 3)), ValueError),
+        ("own, two columns", np.ones((len(V), 2)), ValueError),
+        ("own, a zero row", np.zeros((len(V), 3)), ValueError),
+        ("own, integers", np.ones((len(V), 3), dtype=np.int64), TypeError),
+        ("own, a list", np.ones((len(V), 3)).tolist(), TypeError),
     ),
 )
 PIXELS = Integer(1, GPU["max_texture_size"])
@@ -1322,7 +1327,7 @@ RENDER_CASES: List[Case] = [
         [
             Param("vertices", VERTICES, none=OK),  # no "depth": see _added
             Param("faces", FACES),
-            Param("normals", NORMALS),
+            Param("normals", NORMALS, none=OK),  # None: the default
             Param("smooth_iterations", Integer(0, 10**6, slow_above=3)),
             Param("camera", CAMERAS_ONE, none=OK),
             Param("backend", BACKEND, none=OK, also=(tm.GpuUnavailableError,)),
@@ -1378,7 +1383,7 @@ RENDER_CASES: List[Case] = [
         [
             Param("vertices", VERTICES),
             Param("faces", FACES),
-            Param("normals", NORMALS),
+            Param("normals", NORMALS, none=OK),  # None: the default
             Param("smooth_iterations", Integer(0, 10**6, slow_above=3)),
             *MESH_COLOURS,
         ],
@@ -1412,7 +1417,7 @@ RENDER_CASES: List[Case] = [
             Param("faces", FACES),
             Param("material", MATERIALS, none=OK),
             Param("transform", TRANSFORMS, none=OK),
-            Param("normals", NORMALS),
+            Param("normals", NORMALS, none=OK),  # None: the default
             *MESH_COLOURS,
         ],
     ),
@@ -1662,7 +1667,7 @@ CASES += [
         [
             Param("vertices", VERTICES),
             Param("faces", FACES),
-            Param("normals", NORMALS),
+            Param("normals", NORMALS, none=OK),  # None: the default
             Param("image_format", Name(("png", "jpeg"))),
             Param("drag_scale", Number(0.05, 1.0)),
             Param("controls", Flag()),

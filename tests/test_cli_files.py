@@ -101,7 +101,7 @@ def test_render_draws_a_glb_scene_with_its_instances(tmp_path, capsys):
     from test_load import instanced_scene
 
     path = str(tmp_path / "row.glb")
-    instanced_scene(4).export(path)
+    instanced_scene(4, spacing=2.0).export(path)  # apart as the three-quarter view sees them
     r = in_process(capsys, "render", path, "-o", str(tmp_path / "row.png"), "--size", "96x48")
     assert "48 faces" in r.stdout  # 4 instances of a 12-face box, drawn
     img = read_png(tmp_path / "row.png")

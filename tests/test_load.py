@@ -42,14 +42,14 @@ def textured_glb(path, *, extras: bool = False) -> str:
     return str(path)
 
 
-def instanced_scene(n: int, nested: bool = False):
-    """One box placed by ``n`` nodes (trimesh's scene graph, one geometry); with ``nested``,
-    each node is the child of a rotated parent."""
+def instanced_scene(n: int, nested: bool = False, spacing: float = 1.5):
+    """One box placed by ``n`` nodes ``spacing`` apart along x (trimesh's scene graph, one
+    geometry); with ``nested``, each node is the child of a rotated parent."""
     trimesh = need("trimesh")
     s = trimesh.Scene()
     s.add_geometry(box(0.5), geom_name="box", node_name="n0")
     for i in range(1, n):
-        T = trimesh.transformations.translation_matrix([1.5 * i, 0.0, 0.0])
+        T = trimesh.transformations.translation_matrix([spacing * i, 0.0, 0.0])
         if nested:
             parent = f"p{i}"
             R = trimesh.transformations.rotation_matrix(0.3 * i, [0, 1, 0])

@@ -59,16 +59,18 @@ def test_the_core_refuses_bad_items_given_directly():
     assert normals == "smooth"
     frame = tm.RenderOptions(width=4, height=4)
     with pytest.raises(TypeError, match="meshes\\[0\\].material"):
-        r.render([(mesh, {"model": "cel"}, None)], frame)
+        r.render([(mesh, {"model": "cel"}, None, None)], frame)
     with pytest.raises(TypeError, match="meshes\\[0\\]"):
         r.render([mesh], frame)
     with pytest.raises(ValueError, match="mesh"):
-        r.render([(mesh + 99, None, None)], frame)
+        r.render([(mesh + 99, None, None, None)], frame)
+    with pytest.raises(ValueError, match="^meshes\\[0\\].up: "):
+        r.render([(mesh, None, None, "w")], frame)
     with pytest.raises(ValueError, match="normals"):
         r.add_mesh(V, F, "wobbly")
     # the next call works
-    images, (report,) = r.render([(mesh, None, None)], frame)
-    assert images["color"].shape == (4, 4, 4) and report["width"] == 4
+    images, (report,) = r.render([(mesh, None, None, None)], frame)
+    assert images["color"].shape == (4, 4, 4) and report["width"] == 4 and report["up"] == "y"
 
 
 def test_a_misspelt_option_is_refused_naming_it_with_a_hint():

@@ -227,14 +227,20 @@ def test_a_scene_of_several_meshes_and_its_code(mesh):
     shifted[0, 3] = 0.2
     right = tm.Mesh(V, F, material=tm.Material.lambert("#50a050"), transform=shifted)
     v = tm.Viewer([left, right], width=96, height=64)
+    # the view turns about the point of its axis nearest the scene's centre (the fit centres the
+    # scene's image, so the axis passes near the centre, not through it)
+    eye, target = np.array(v.camera.eye), np.array(v.camera.target)
+    center = (V.min(axis=0) + V.max(axis=0) + [0.2, 0.0, 0.0]) / 2
+    axis = (target - eye) / np.linalg.norm(target - eye)
+    assert np.allclose(target, eye + axis * np.dot(center - eye, axis), atol=1e-9)
+    assert np.linalg.norm(target - center) < 0.1 * np.linalg.norm(V.max(axis=0) - V.min(axis=0))
     v.orbit(10, 5)
+    assert np.allclose(v.camera.target, target)  # orbiting keeps the target
     code = v.code()
     assert "tm.render(\n    meshes,\n" in code
     scope = {"meshes": [left, right]}
     exec(code, scope)
     np.testing.assert_array_equal(scope["r"].color, v.frame)
-    target = np.array(v.camera.target)
-    assert target[0] == pytest.approx((V[:, 0].min() + V[:, 0].max() + 0.2) / 2)  # the scene's centre
     v.close()
 
 

@@ -23,6 +23,9 @@ __all__ = [
     "SHADOW_FILTERS",
     "HATCH_MODES",
     "BACKENDS",
+    "UP_AXES",
+    "FILE_UP_AXES",
+    "DEFAULT_UP_AXIS",
     "SMOOTH_METHODS",
     "SMOOTH_WEIGHTS",
     "SMOOTH_BOUNDARIES",
@@ -49,6 +52,7 @@ __all__ = [
     "_curvature",
     "_feature_edges",
     "_normal_mode",
+    "_up_axis",
     "_paper_edges",
     "_pen_strokes",
     "_plotter_order",
@@ -87,6 +91,11 @@ DITHER_SPACES: Tuple[str, ...]
 SHADOW_FILTERS: Tuple[str, ...]
 HATCH_MODES: Tuple[str, ...]
 BACKENDS: Tuple[str, ...]
+#: The up axes a scene may have, each mesh file format's (by suffix, lower case, no dot) and the
+#: default of a scene without one.
+UP_AXES: Tuple[str, ...]
+FILE_UP_AXES: Dict[str, str]
+DEFAULT_UP_AXIS: str
 #: The settings classes, by name (each is a class of this module).
 SETTINGS_CLASSES: Tuple[str, ...]
 SMOOTH_METHODS: Tuple[str, ...]
@@ -120,6 +129,7 @@ class _RenderKeywords(TypedDict, total=False):
     material: Optional[Material]
     transform: Optional[Any]
     camera: Optional[Camera]
+    up: Optional[Literal['x', 'y', 'z']]
     lights: Optional[Union[Light, Sequence[Light]]]
     ambient: Optional[_Color]
     background: Optional[_Color]
@@ -250,19 +260,27 @@ class Camera(_Settings):
 
     Fields: kind: framed to fit the scene, or looking at a point; projection: the projection;
     eye: a look-at camera's position; target: the point a look-at camera looks at; up: the
-    direction that is up in the image; direction: a fitted camera's direction from the scene
-    toward the eye (the scene is framed to fit); margin: a fitted camera's room around the scene
-    (1: touching); fov_y: vertical field of view in degrees, in (0, 180); height: height of an
-    orthographic view in world units, > 0; near: near clip distance (None: from the scene's
-    bounds); far: far clip distance (None: from the scene's bounds).
+    direction that is up in the image (a fitted camera's None: the scene's up axis); direction:
+    a fitted camera's direction from the scene toward the eye (None: a three-quarter view about
+    the up axis, across the scene's longest horizontal extent); margin: a fitted camera's room
+    around the scene (1: touching); turn: degrees a fitted camera's view turns about the up
+    axis, counter-clockwise seen from above (a turntable's views); fov_y: vertical field of view
+    in degrees, in (0, 180); height: height of an orthographic view in world units, > 0; near:
+    near clip distance (None: from the scene's bounds); far: far clip distance (None: from the
+    scene's bounds).
     """
     @staticmethod
-    def fit(direction: Optional[Sequence[float]] = ..., *, up: Optional[Sequence[float]] = ..., fov_y: Optional[float] = ..., margin: Optional[float] = ..., orthographic: Optional[bool] = ...) -> Camera:
-        """Frame the meshes' bounding sphere, seen from ``direction`` (scene -> eye; default (0.35,
-        0.3, 1.0): from the front, a little from the right and above), with ``up`` the image's
-        up direction (default (0, 1, 0): +y up; pass (0, 0, 1) for a z-up scan). fov_y: vertical
-        field of view in degrees (default 35); margin >= 1 leaves room around the sphere
-        (default 1.05); orthographic: bool (default False).
+    def fit(direction: Optional[Sequence[float]] = ..., *, up: Optional[Sequence[float]] = ..., fov_y: Optional[float] = ..., margin: Optional[float] = ..., turn: Optional[float] = ..., orthographic: Optional[bool] = ...) -> Camera:
+        """Frame the meshes' bounding box (and sphere) as near as they allow, seen from
+        ``direction`` (scene -> eye; default None: a three-quarter view about the up axis, from
+        the front turned 30 degrees toward the side and raised 25, its front chosen so that the
+        camera looks across the scene's longest horizontal extent), turned ``turn`` degrees
+        about the up axis (default 0; counter-clockwise seen from above), with ``up`` the
+        image's up direction (default None: the scene's up axis, the render's ``up`` or its
+        meshes' own, as ``toonmesh.load`` reads a file's convention, else +y). fov_y: vertical
+        field of view in degrees (default 35); margin >= 1 leaves room around the scene (default
+        1.05: it spans 1 / 1.05 of the image's height or width); orthographic: bool (default
+        False).
         """
         ...
     @staticmethod
@@ -281,14 +299,15 @@ class Camera(_Settings):
     projection: Final[str]
     eye: Final[Optional[_Vec3]]
     target: Final[Optional[_Vec3]]
-    up: Final[_Vec3]
+    up: Final[Optional[_Vec3]]
     direction: Final[Optional[_Vec3]]
     margin: Final[Optional[float]]
+    turn: Final[Optional[float]]
     fov_y: Final[Optional[float]]
     height: Final[Optional[float]]
     near: Final[Optional[float]]
     far: Final[Optional[float]]
-    def replace(self, *, eye: Optional[Sequence[float]] = ..., target: Optional[Sequence[float]] = ..., up: Optional[Sequence[float]] = ..., direction: Optional[Sequence[float]] = ..., margin: Optional[float] = ..., fov_y: Optional[float] = ..., height: Optional[float] = ..., near: Optional[float] = ..., far: Optional[float] = ...) -> Camera: ...
+    def replace(self, *, eye: Optional[Sequence[float]] = ..., target: Optional[Sequence[float]] = ..., up: Optional[Sequence[float]] = ..., direction: Optional[Sequence[float]] = ..., margin: Optional[float] = ..., turn: Optional[float] = ..., fov_y: Optional[float] = ..., height: Optional[float] = ..., near: Optional[float] = ..., far: Optional[float] = ...) -> Camera: ...
 
 @final
 class LineStyle(_Settings):
@@ -584,21 +603,24 @@ class RenderOptions(_Settings):
 
     Fields: material: the material of meshes that name none; transform: a 4x4 affine model ->
     world matrix (row-major, applied to column vectors) for meshes that give none; camera: the
-    camera (Camera.fit(): the scene framed from the front); lights: a Light or a list of up to
-    8; ambient: the ambient light's sRGB colour; background: sRGB or sRGBA where no mesh is;
-    width: the image's width in pixels, 1 to the device's limit; height: the image's height in
-    pixels, 1 to the device's limit; outputs: the outputs computed and read back, and only those
-    ('outline' and 'lines' need outlines, 'shadow' a light with shadows); msaa: samples per
-    pixel: 1 or 4; supersample: render this many times larger in each direction and average
-    down; band_antialias: blend across each band border over about one pixel, from the screen-
-    space change of the shading term: smooth tone borders at no extra samples (False: the
+    camera (Camera.fit(): the scene framed from a three-quarter view about its up axis); up: the
+    scene's up axis, which a fitted camera keeps up in the image and turns about (None: its
+    meshes' own, as toonmesh.load reads a file's convention, else y); lights: a Light or a list
+    of up to 8; ambient: the ambient light's sRGB colour; background: sRGB or sRGBA where no
+    mesh is; width: the image's width in pixels, 1 to the device's limit; height: the image's
+    height in pixels, 1 to the device's limit; outputs: the outputs computed and read back, and
+    only those ('outline' and 'lines' need outlines, 'shadow' a light with shadows); msaa:
+    samples per pixel: 1 or 4; supersample: render this many times larger in each direction and
+    average down; band_antialias: blend across each band border over about one pixel, from the
+    screen-space change of the shading term: smooth tone borders at no extra samples (False: the
     papers' hard borders); outlines: ink outlines: None, 'mesh', 'image', 'both' or an Outlines;
     paper: paper grain over the image: None or a Paper.
     """
-    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
     material: Final[Material]
     transform: Final[List[List[float]]]
     camera: Final[Camera]
+    up: Final[Optional[str]]
     lights: Final[List[Light]]
     ambient: Final[_Vec3]
     background: Final[Tuple[float, float, float, float]]
@@ -610,7 +632,7 @@ class RenderOptions(_Settings):
     band_antialias: Final[bool]
     outlines: Final[Optional[Outlines]]
     paper: Final[Optional[Paper]]
-    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
 
 def _restore(cls: str, state: str) -> Any: ...
 def kang_table() -> npt.NDArray[np.float64]: ...
@@ -625,9 +647,9 @@ class Renderer:
         self,
         vertices: Any,
         faces: Any,
-        normals: Union[str, Tuple[str, float]],
+        normals: Any,  # a mode, None or an (N, 3) float array
         **colors: Any,  # vertex_colors, face_colors, uv, texture, texture_filter, texture_wrap, alpha_cutoff
-    ) -> Tuple[int, Union[str, Tuple[str, float]], List[str]]: ...
+    ) -> Tuple[int, Any, List[str]]: ...
     def remove_mesh(self, mesh: int) -> bool: ...
     def render(
         self, items: Any, options: RenderOptions, *cameras: Any
@@ -636,7 +658,8 @@ class Renderer:
 def gpu_info(backend: Optional[str] = ...) -> Dict[str, Any]: ...
 def encode_png_rgba(color: Any) -> bytes: ...
 def _srgb_from_linear(values: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]: ...
-def _normal_mode(normals: Any) -> Union[str, Tuple[str, float]]: ...
+def _normal_mode(normals: Any, n_vertices: int) -> Any: ...
+def _up_axis(up: Any) -> Optional[str]: ...
 def _transform(transform: Any) -> npt.NDArray[np.float64]: ...
 def _shadow_truth(
     mesh: _Mesh, view_proj: npt.NDArray[np.float64], shape: Tuple[int, int], toward_light: Any

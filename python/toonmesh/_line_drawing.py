@@ -33,11 +33,12 @@ def view_lines(
     height: int,
     hidden: bool = False,
     backend: Optional[str] = None,
+    up: Optional[str] = None,
 ) -> Dict[str, Any]:
     """The visible (and, with ``hidden``, every) polyline of one view that ``outlines`` (mesh
     lines) draws, and the mesh's feature edges at its crease angle; see :func:`write_npz` for
-    the arrays."""
-    kw = dict(camera=camera, width=width, height=height, outputs=("lines",), backend=backend)
+    the arrays. ``up``: the scene's up axis (None: y), which a fitted ``camera`` keeps up."""
+    kw = dict(camera=camera, width=width, height=height, outputs=("lines",), backend=backend, up=up)
     seen = render(vertices, faces, outlines=outlines, **kw)
     everything = None
     if hidden:

@@ -24,7 +24,7 @@ from toonmesh._file_checks import (
     MeshFileError, asset_path, check_gltf_sizes, check_obj, check_ply, gltf_colour_notes, gltf_document,
     gltf_file_notes, gltf_ignored, obj_file_notes, obj_for_trimesh, ply_file_notes,
 )
-from toonmesh._scene import Mesh
+from toonmesh._scene import Mesh, normal_mode
 
 #: The most mesh instances (scene nodes with geometry) one file or scene may place.
 MAX_INSTANCES = 65_536
@@ -57,7 +57,8 @@ class Surface:
     ``face_colors`` (M, 4) uint8 RGBA; ``base_color`` (4,) float64 in [0, 1], the material's
     colour (MTL Kd; a glTF baseColorFactor turned from linear light to sRGB, as drawn) that
     multiplies texture and vertex colours;
-    ``normals`` (N, 3) float64, the file's own vertex normals (read for ``keep_seams`` only).
+    ``normals`` (N, 3) float64, the file's own vertex normals (glTF ``NORMAL``, OBJ ``vn``, PLY
+    ``nx ny nz``; read from files only, never computed).
     Any of them may be None: these are what ``toonmesh smooth`` writes back. ``colors``: the
     colour keywords of :class:`toonmesh.Mesh` that draw the geometry (its albedo, by the
     renderer's own rule in :mod:`toonmesh._colors`), made once per geometry so that its
@@ -76,7 +77,7 @@ class Surface:
     colors: Dict[str, Any] = field(default_factory=dict)
 
 
-def load(path: "str | os.PathLike[str]") -> List[Mesh]:
+def load(path: "str | os.PathLike[str]", up: Optional[str] = None) -> List[Mesh]:
     """Reads a mesh file into a list of :class:`toonmesh.Mesh`, one per placed geometry.
 
     Formats: OBJ (with its MTL: diffuse colour ``Kd`` and texture ``map_Kd``), PLY (vertex and
@@ -88,20 +89,26 @@ def load(path: "str | os.PathLike[str]") -> List[Mesh]:
     ``texture``, the base colour factor folded in, ``alpha_cutoff`` for a glTF alpha mask), as a
     ``trimesh.Trimesh`` brings it; ``material`` is None (the render's). Meshes of one geometry
     placed by several nodes share their vertex, face and colour arrays, so a renderer uploads
-    them once.
+    them once. Each mesh has the file's own vertex normals as ``normals`` where it holds them
+    (glTF ``NORMAL``, OBJ ``vn``, PLY ``nx ny nz``; a file whose normals include a zero or
+    non-finite one is drawn with the default normals, with a warning), else None (the default,
+    ``"auto"``); and ``up``, the file format's up axis (``up`` when given).
     Vertices are kept as the file lists them (no merging or cleanup), except that an OBJ with a
-    texture is split where its texture coordinates change (a vertex gets one UV) and an STL's
-    corners are merged by position. A zip or tar archive, or a file compressed as ``.gz``,
-    ``.bz2`` or ``.xz``, is unpacked and each mesh file in it read as the plain file. What the
-    file holds and toonmesh does not draw (cameras, lights, animations, normal, emissive and
-    metallic-roughness maps, ...) is named in one warning; so is, each in one warning, what is
-    read other than written: OBJ faces naming texture coordinates or normals the file lacks
-    (their positions kept; the first such line), an MTL file or texture image that is not there
-    (the path tried), colours that are not numbers (drawn black), a mesh without area. Warnings
-    raised while reading (trimesh's, NumPy's) name the file.
+    texture or normals is split where its texture coordinates or normals change (a vertex gets
+    one of each) and an STL's corners are merged by position. A zip or tar archive, or a file
+    compressed as ``.gz``, ``.bz2`` or ``.xz``, is unpacked and each mesh file in it read as the
+    plain file. What the file holds and toonmesh does not draw (cameras, lights, animations,
+    normal, emissive and metallic-roughness maps, ...) is named in one warning; so is, each in
+    one warning, what is read other than written: OBJ faces naming texture coordinates or
+    normals the file lacks (their positions kept; the first such line), an MTL file or texture
+    image that is not there (the path tried), colours that are not numbers (drawn black), a mesh
+    without area. Warnings raised while reading (trimesh's, NumPy's) name the file.
 
     Args:
         path: the file (str or os.PathLike).
+        up: the file's up axis, "x", "y" or "z"; None (default): its format's convention
+            (:func:`file_up_axis`: z for STL, PLY and 3MF, y for glTF, GLB and OBJ), or none
+            (the render's default, y) for other formats.
 
     Returns:
         A list of :class:`toonmesh.Mesh` (never empty).
@@ -114,16 +121,36 @@ def load(path: "str | os.PathLike[str]") -> List[Mesh]:
             (1-based line numbers in OBJ, 1-based vertices when not finite, element counts in
             PLY, a glTF buffer file that is not there with the path tried); or it places more
             than :data:`MAX_INSTANCES` meshes or uses more than :data:`MAX_MATERIALS`
-            materials.
+            materials; ``up`` is not an axis name.
     """
-    return [_mesh_of(s, t) for s, t in read_surfaces(path)]
+    up = _core._up_axis(up) if up is not None else file_up_axis(path)
+    return [_mesh_of(s, t, up) for s, t in read_surfaces(path)]
+
+
+def file_up_axis(path: Any) -> Optional[str]:
+    """The up axis of a mesh file's format by its suffix (the core's ``FILE_UP_AXES``), or None
+    for a format without a convention."""
+    suffix = os.path.splitext(os.fspath(path))[1].lower().lstrip(".") if isinstance(path, (str, os.PathLike)) else ""
+    return _core.FILE_UP_AXES.get(suffix)  # type: ignore[no-any-return]
+
+
+def up_conventions() -> str:
+    """The formats' up axes in words: ``"z for .stl, .ply, .3mf; y for .glb, .gltf, .obj and
+    others"``."""
+    by_axis: Dict[str, List[str]] = {}
+    for suffix, axis in _core.FILE_UP_AXES.items():
+        by_axis.setdefault(axis, []).append("." + suffix)
+    words = [f"{axis} for {', '.join(s)}{' and others' if axis == _core.DEFAULT_UP_AXIS else ''}"
+             for axis, s in by_axis.items()]
+    return "; ".join(sorted(words, key=lambda w: w.endswith("others")))
 
 
 def read_surfaces(path: Any, *, keep_seams: bool = False) -> List[Tuple[Surface, Optional[np.ndarray]]]:
-    """(surface, world transform or None) per placed geometry of a file; see :func:`load`.
-    ``keep_seams``: read an OBJ with texture coordinates or normals split per corner (each
-    vertex one UV and one normal), as the file means them, even without a texture. Warnings
-    raised while reading (toonmesh's, trimesh's, NumPy's) are given again naming the file."""
+    """(surface, world transform or None) per placed geometry of a file, with the file's own
+    normals; see :func:`load`. ``keep_seams``: read an OBJ with texture coordinates split per
+    corner (each vertex one UV), as the file means them, even without a texture (one with
+    normals is always read so). Warnings raised while reading (toonmesh's, trimesh's, NumPy's)
+    are given again naming the file."""
     path = _path(path)
     notes: List[Tuple[str, Type[Warning]]] = []
     if _archives.kind(path):
@@ -145,17 +172,13 @@ def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, T
         with warnings.catch_warnings(record=True) as caught:
             scene, materials = _read(path, keep_seams, ignored, said)
             placed = _placed(scene, path, ignored, materials)
+            geometries = _geometries(scene)
+            for surface in {id(s): s for s, _ in placed}.values():
+                surface.normals = _file_normals(geometries.get(surface.name), surface, path)
     except MeshFileError as exc:
         if shown == path:
             raise
         raise MeshFileError(str(exc).replace(path, shown)) from None
-    if keep_seams:
-        for surface, _ in placed:
-            geom = _geometries(scene).get(surface.name)
-            cache = getattr(geom, "_cache", None)  # normals trimesh read from the file, not computed
-            given = cache["vertex_normals"] if cache is not None and "vertex_normals" in cache else None
-            if given is not None and len(given) == len(surface.vertices):
-                surface.normals = np.asarray(given, dtype=np.float64)
     for text in said:
         notes.append((f"{shown}: {text}", UserWarning))
     for w in caught:
@@ -222,9 +245,27 @@ def under_own_colours(meshes: List[Any], material: Any) -> List[Any]:
     return out
 
 
-def _mesh_of(surface: Surface, transform: Optional[np.ndarray]) -> Mesh:
+def _mesh_of(surface: Surface, transform: Optional[np.ndarray], up: Optional[str] = None) -> Mesh:
     """The one place a :class:`Surface` becomes a :class:`toonmesh.Mesh`."""
-    return Mesh(surface.vertices, surface.faces, transform=transform, **surface.colors)
+    return Mesh(surface.vertices, surface.faces, transform=transform, normals=surface.normals, up=up, **surface.colors)
+
+
+def _file_normals(geom: Any, surface: Surface, path: str) -> Optional[np.ndarray]:
+    """The vertex normals trimesh read from the file for ``geom`` (in its cache before anything
+    computes them), or None; a file whose normals the core refuses (a zero or non-finite one) is
+    named in a warning and drawn with the default normals."""
+    cache = getattr(geom, "_cache", None)
+    given = cache["vertex_normals"] if cache is not None and "vertex_normals" in cache else None
+    if given is None or len(given) != len(surface.vertices):
+        return None
+    normals = np.asarray(given, dtype=np.float64)
+    try:
+        normal_mode(normals, len(surface.vertices))
+    except ValueError as exc:
+        where = f" (mesh {surface.name!r})" if surface.name else ""
+        warnings.warn(f"{path}{where}: the file's {exc}; drawn with the default normals", stacklevel=4)
+        return None
+    return normals
 
 
 # ------------------------------------------------------------------------------------------------
@@ -263,9 +304,10 @@ def _read(path: str, keep_seams: bool, ignored: List[str], said: List[str]) -> T
         if counts["negative"] or counts["drop"]:
             text = obj_for_trimesh(data, counts["drop"])
         del data
-        split = [n for n, kind in ((counts["texcoords"], b"vt"), (counts["normals"], b"vn")) if kind not in counts["drop"]]
-        # positions as listed (not split at texture seams) unless the corners' UVs or normals matter
-        extra["maintain_order"] = not (keep_seams and any(split))
+        texcoords, normals = (counts[k] if kind not in counts["drop"] else 0 for k, kind in (("texcoords", b"vt"), ("normals", b"vn")))
+        # positions as listed (not split at texture seams) unless the corners' normals (drawn) or
+        # UVs (kept) matter: a vertex gets one of each
+        extra["maintain_order"] = not (normals or (keep_seams and texcoords))
         materials = counts["libraries"] > 0
     elif suffix == ".ply":
         check_ply(path)

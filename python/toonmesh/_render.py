@@ -26,7 +26,7 @@ from toonmesh import _colors, _core, _load
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions, kang_table
 from toonmesh._input import mesh_arrays
 from toonmesh._results import RenderResult, RenderStack, stack_of
-from toonmesh._scene import Mesh, MeshHandle, Normals, geometry_key, normal_mode
+from toonmesh._scene import Mesh, MeshHandle, Normals, geometry_key, normal_mode, own_normals
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
@@ -85,14 +85,15 @@ class Renderer:
         vertices: Any,
         faces: Any = None,
         *,
-        normals: Normals = "smooth",
+        normals: Normals = None,
         smooth_iterations: int = 0,
         **colors: "Unpack[MeshColors]",
     ) -> MeshHandle:
         """Uploads a mesh ((N, 3) float32/float64 and (M, 3) int faces, or a trimesh.Trimesh).
 
-        ``normals``: ``"smooth"`` (default), ``"flat"``, ``"auto"`` (split at edges sharper than
-        30 degrees) or ``("auto", degrees)``; see :class:`Mesh`. ``smooth_iterations``: Laplacian smoothing
+        ``normals``: None (default: ``"auto"``), ``"smooth"``, ``"flat"``, ``"auto"`` (split at
+        the creases a drawing keeps, sharper than 30 degrees), ``("auto", degrees)``, or the
+        mesh's own (N, 3) vertex normals; see :class:`Mesh`. ``smooth_iterations``: Laplacian smoothing
         first (each vertex to the mean of its neighbours, n times), as in Al-Rousan et al.
         ``vertex_colors``, ``face_colors``, ``uv``, ``texture``, ``texture_filter``,
         ``texture_wrap``, ``alpha_cutoff``: the mesh's colour, as :class:`Mesh` describes (a
@@ -106,6 +107,7 @@ class Renderer:
         iterations = _smoothing_iterations(smooth_iterations)
         V, F = mesh_arrays(vertices, faces)
         V = _smoothed(V, F, iterations)
+        normals = after_smoothing(normals, iterations > 0, "smooth_iterations")
         mesh_id, normals, notes = self._engine.add_mesh(V, F, normals, **colors)
         for note in notes:
             warnings.warn(note, UserWarning, stacklevel=3)
@@ -143,12 +145,23 @@ class Renderer:
             return draw_views(self, placed, cameras, opts)
 
 
+def after_smoothing(normals: Normals, smoothed: bool, how: str) -> Normals:
+    """The normals of a mesh whose positions ``how`` moved (``smoothed``): its own normals no
+    longer fit them, so the default is used instead, with a warning; a mode stays."""
+    if smoothed and own_normals(normals):
+        warnings.warn(f"normals: the mesh's own normals do not fit the positions {how} moved; "
+                      "drawn with the default normals instead", UserWarning, stacklevel=4)
+        return None
+    return normals
+
+
 class PlacedMesh(NamedTuple):
     """A scene item whose geometry is on a renderer's device: what the core draws."""
 
     handle: MeshHandle
     material: Optional[Material]
     transform: Optional[np.ndarray]
+    up: Optional[str] = None
 
 
 def place_meshes(renderer: Renderer, meshes: Any, smooth_iterations: int = 0,
@@ -178,7 +191,7 @@ def place_meshes(renderer: Renderer, meshes: Any, smooth_iterations: int = 0,
                     uploaded.append(handle)
             elif handle.renderer is not renderer:
                 raise ValueError(f"{where}[{i}]: the MeshHandle belongs to another Renderer")
-            placed.append(PlacedMesh(handle, item.material, item.transform))
+            placed.append(PlacedMesh(handle, item.material, item.transform, item.up))
     except BaseException:
         remove_meshes(renderer, uploaded)
         raise
@@ -201,8 +214,8 @@ def meshes_on_device(renderer: Renderer, meshes: Any, smooth_iterations: int = 0
         remove_meshes(renderer, uploaded)
 
 
-def _core_items(placed: List[PlacedMesh]) -> List[Tuple[int, Optional[Material], Optional[np.ndarray]]]:
-    return [(p.handle.id, p.material, p.transform) for p in placed]
+def _core_items(placed: List[PlacedMesh]) -> List[Tuple[int, Optional[Material], Optional[np.ndarray], Optional[str]]]:
+    return [(p.handle.id, p.material, p.transform, p.up) for p in placed]
 
 
 def draw(renderer: Renderer, placed: List[PlacedMesh], options: RenderOptions) -> RenderResult:
@@ -250,7 +263,7 @@ def render(
     vertices: Any = None,
     faces: Any = None,
     *,
-    normals: Normals = "smooth",
+    normals: Normals = None,
     smooth_iterations: int = 0,
     backend: Optional[str] = None,
     **options: "Unpack[RenderKeywords]",
@@ -265,9 +278,13 @@ def render(
     material of their own are drawn under the default shading model in white, so their colours
     show as they are, however they were given. Inputs are never modified. Meshes that share their vertex and face arrays (the
     instances of one geometry) are uploaded once.
-    ``normals``: ``"smooth"`` (default), ``"flat"``, ``"auto"`` (split at edges sharper than 30
-    degrees: hard edges for boxes and CAD parts) or ``("auto", degrees)``; see :class:`Mesh`.
-    ``smooth_iterations``: Laplacian smoothing first (Al-Rousan et al.'s pipeline).
+    ``normals``: None (default: a file's own normals where it has them, else ``"auto"``: hard
+    edges at the creases a drawing keeps, for boxes and CAD parts, and smooth scans),
+    ``"smooth"``, ``"flat"``, ``"auto"``, ``("auto", degrees)``, or the mesh's own (N, 3)
+    vertex normals; see :class:`Mesh`. A mode given replaces a file's normals.
+    ``smooth_iterations``: Laplacian smoothing first (Al-Rousan et al.'s pipeline). The scene's
+    up axis (the ``up`` option, see :class:`RenderOptions`) is a file's convention unless given:
+    ``render("part.stl")`` keeps +z up.
     ``backend`` as in :class:`Renderer`. ``options``: the keywords of :class:`RenderOptions`
     (``width``, ``height``, ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...),
     each defaulting as that class says.
@@ -284,7 +301,7 @@ def render(
         items = [vertices]
     elif faces is None and (isinstance(vertices, (str, os.PathLike)) or _load.is_scene(vertices)):
         loaded = _load.load(vertices) if isinstance(vertices, (str, os.PathLike)) else _load.scene_meshes(vertices)
-        items = [_with_normals(m, normals) for m in loaded]
+        items = loaded if normals is None else [_with_normals(m, normals) for m in loaded]
     else:
         items = [Mesh(vertices, faces, normals=normals)]  # a trimesh brings its colour
     if options.get("material") is None:  # colours as the mesh has them: under a white material
@@ -298,7 +315,9 @@ def render(
 
 
 def _with_normals(m: Mesh, normals: Normals) -> Mesh:
-    m.normals = normal_mode(normals)  # a mesh just made from a file: nobody else holds it
+    """A mesh just made from a file (nobody else holds it) drawn with ``normals`` instead of its own."""
+    assert m.vertices is not None  # read from a file: arrays, not a MeshHandle
+    m.normals = normal_mode(normals, len(m.vertices))
     return m
 
 

@@ -47,6 +47,7 @@ class RenderResult:
       the whole render; GPU passes are timed on the GPU when ``timing_source`` is ``"gpu"``,
       otherwise only the frame as a whole (``"wall"``);
     - ``view_matrix``, ``projection`` (4x4 float64), ``near``, ``far``: the camera used;
+      ``up``: the scene's up axis ("x", "y" or "z"), which a fitted camera keeps up;
     - ``culled``: per scene mesh, in order, whether its inner sides were skipped. That happens
       only where they cannot show (a closed, consistently wound mesh whose bounding sphere lies
       wholly beyond the near plane), so the image is the same, drawn in about half the time.
@@ -70,6 +71,7 @@ class RenderResult:
         self.projection: np.ndarray = np.array(raw["proj"])
         self.near: float = raw["near"]
         self.far: float = raw["far"]
+        self.up: str = raw["up"]
         self.backend = backend
         self.outlines = outlines
         self.width: int = raw["width"]

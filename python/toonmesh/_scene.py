@@ -1,5 +1,5 @@
-"""The scene as Python describes it: :class:`Mesh` (geometry, material, transform, normal mode and
-colour), :class:`MeshHandle` (a mesh already on a renderer's device) and the normal modes.
+"""The scene as Python describes it: :class:`Mesh` (geometry, material, transform, normals, up
+axis and colour), :class:`MeshHandle` (a mesh already on a renderer's device) and the normal modes.
 
 This is the bottom of the rendering layers: files (:mod:`toonmesh._load`) make meshes and the
 renderer (:mod:`toonmesh._render`) draws them; both take them from here, so that neither needs
@@ -21,8 +21,9 @@ if TYPE_CHECKING:
 
     from toonmesh._colors import MeshColors
 
-#: A normal mode: ``"smooth"``, ``"flat"``, ``"auto"`` or ``("auto", crease angle in degrees)``.
-Normals = Union[str, Tuple[str, float]]
+#: Normals: a mode, ``"smooth"``, ``"flat"``, ``"auto"`` or ``("auto", crease angle in degrees)``;
+#: the mesh's own, an (N, 3) float array; or None, the core's default (``"auto"``).
+Normals = Union[str, Tuple[str, float], np.ndarray, None]
 
 
 class MeshHandle:
@@ -36,29 +37,37 @@ class MeshHandle:
         self.normals = normals
 
     def __repr__(self) -> str:
-        return f"MeshHandle(id={self.id}, vertices={self.n_vertices}, faces={self.n_faces}, normals={self.normals!r})"
+        normals = "own" if own_normals(self.normals) else repr(self.normals)
+        return f"MeshHandle(id={self.id}, vertices={self.n_vertices}, faces={self.n_faces}, normals={normals})"
 
 
 class Mesh:
-    """A mesh placed in a scene: geometry, material, transform and normal mode.
+    """A mesh placed in a scene: geometry, material, transform, normals and up axis.
 
     ``vertices`` is an (N, 3) float32/float64 array with ``faces`` (M, 3) int32/int64/uint32, a
     ``trimesh.Trimesh`` (faces None), or a :class:`MeshHandle` already on a renderer's device.
     ``material``: a :class:`Material` (default: the render's ``material``). ``transform`` is a
-    4x4 affine model -> world matrix (row-major, applied to column vectors).
+    4x4 affine model -> world matrix (row-major, applied to column vectors). ``up``: the axis
+    that is up for this mesh, ``"x"``, ``"y"`` or ``"z"`` (:func:`toonmesh.load` sets its file
+    format's convention); None (default): the mesh names none. A render's fitted camera keeps
+    the scene's up axis up: its ``up`` option, else its meshes' (which must agree), else y.
 
     ``normals`` says how the surface is shaded between vertices:
 
-    - ``"smooth"`` (default): area-weighted vertex normals, interpolated across faces. Curved
-      surfaces look curved, and so do a box's edges (bands bend across its corners).
+    - None (default): ``"auto"``, the core's default.
+    - an (N, 3) float32/float64 array: the mesh's own vertex normals (a file's), one a vertex,
+      finite and not zero (scaled to unit length), interpolated across faces. After smoothing
+      (``smooth_iterations``) they no longer fit the surface: the default is used, with a warning.
+    - ``"smooth"``: area-weighted vertex normals, interpolated across faces. Curved surfaces
+      look curved, and so do a box's edges (bands bend across its corners).
     - ``"flat"``: one normal per face; curved surfaces show their facets.
     - ``"auto"``: smooth, but with vertices split where faces meet at more than 30 degrees (the
-      crease angle of :class:`Outlines`, so shading breaks where crease lines are drawn) and at
-      boundary and non-manifold edges, as Blender's auto smooth does: boxes, chess pieces and
-      CAD parts get hard edges and smooth curved parts. ``("auto", degrees)`` sets the angle
-      (0 to 180). On a finely tessellated smooth mesh it gives the smooth normals bit for bit;
-      on a noisy scan (the bunny) it sharpens the few folds sharper than the angle, which is why
-      it is not the default.
+      crease angle of :class:`Outlines`) and at boundary and non-manifold edges, as Blender's
+      auto smooth does, except where the creases are a scan's noise: pieces of crease shorter
+      than 2% of the bounding-box diagonal or zig-zagging (the crease lines a drawing keeps, so
+      shading breaks where crease lines are drawn). Boxes, chess pieces and CAD parts get hard
+      edges and smooth curved parts; scans stay smooth. ``("auto", degrees)`` sets the angle (0
+      to 180). On a finely tessellated smooth mesh it gives the smooth normals bit for bit.
 
     Colour (see README "Colour and textures"); the surface's albedo is the product of its
     colour and its texture sample, decoded from sRGB to linear light, and multiplies the
@@ -92,7 +101,8 @@ class Mesh:
         *,
         material: Optional[Material] = None,
         transform: Optional[Any] = None,
-        normals: Normals = "smooth",
+        normals: Normals = None,
+        up: Optional[str] = None,
         **colors: "Unpack[MeshColors]",
     ):
         self.handle: Optional[MeshHandle] = vertices if isinstance(vertices, MeshHandle) else None
@@ -112,17 +122,28 @@ class Mesh:
             raise TypeError(f"material: expected a toonmesh.Material, got {type(material).__name__}")
         self.material = material
         self.transform: Optional[np.ndarray] = None if transform is None else _core._transform(transform)
-        self.normals: Normals = normal_mode(normals)
+        # the vertices' own checks come at upload: here only their count, for normals of their own
+        n_vertices = self.handle.n_vertices if self.handle is not None else int(np.shape(self.vertices)[0] if np.ndim(self.vertices) else 0)
+        self.normals: Normals = normal_mode(normals, n_vertices)
+        self.up: Optional[str] = _core._up_axis(up)
 
 
-def normal_mode(normals: Any) -> Normals:
-    """``normals`` checked by the core, in its shortest spelling (``("auto", 30)`` is ``"auto"``)."""
-    return _core._normal_mode(normals)  # type: ignore[no-any-return]
+def normal_mode(normals: Any, n_vertices: int) -> Normals:
+    """``normals`` for a mesh of ``n_vertices`` checked by the core: a mode in its shortest
+    spelling (``("auto", 30)`` is ``"auto"``, None the default mode), or the array itself."""
+    return _core._normal_mode(normals, n_vertices)  # type: ignore[no-any-return]
+
+
+def own_normals(normals: Normals) -> bool:
+    """Whether ``normals`` are a mesh's own (an array), not a mode."""
+    return isinstance(normals, np.ndarray)
 
 
 def geometry_key(mesh: Mesh) -> Tuple[Any, ...]:
     """What a mesh's upload depends on: its arrays and colour arrays (by identity; they live as
     long as the scene's Mesh objects do, so ids are not reused meanwhile), its colour settings
-    and its normal mode. Meshes with equal keys (instances of one geometry) share one upload."""
+    and its normals (a mode, or its own array by identity). Meshes with equal keys (instances of
+    one geometry) share one upload."""
     colors = tuple(sorted((k, id(v)) for k, v in mesh.colors.items()))  # any value, hashable or not
-    return (id(mesh.vertices), id(mesh.faces), mesh.normals, colors)
+    normals = id(mesh.normals) if own_normals(mesh.normals) else mesh.normals
+    return (id(mesh.vertices), id(mesh.faces), normals, colors)

@@ -1,53 +1,17 @@
-"""Where the command line and batch renders look from: an up axis and a turntable around it.
+"""The views of the command line and batch renders: a turntable of fitted cameras.
 
-A mesh's up axis says which way its "front, slightly above" view lies. Seen with y up (most
-exporters, and the renderer's default camera), the front faces +z; scans and CAD files often have
-z up, and then the front faces -y (as in Blender). Each axis comes with a right-handed frame
-(side, up, front), and the view direction is ``0.35 side + 0.3 up + front``: for y up that is
-exactly :meth:`toonmesh.Camera.fit`'s default direction.
+A fitted camera (:meth:`toonmesh.Camera.fit`) frames the scene from a three-quarter view about
+its up axis (a file's convention, or the render's ``up``); a turntable turns that view about the
+up axis in equal steps.
 """
 
 from __future__ import annotations
 
-import math
-from typing import Any, Dict, List, Tuple
+from typing import Any, List
 
 import numpy as np
 
 from toonmesh._core import Camera
-
-Vec3 = Tuple[float, float, float]
-
-#: (side, up, front) unit vectors for each up axis; side x up = front (right-handed).
-FRAMES: Dict[str, Tuple[Vec3, Vec3, Vec3]] = {
-    "x": ((0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)),
-    "y": ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)),
-    "z": ((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.0, -1.0, 0.0)),
-}
-
-UP_AXES = tuple(FRAMES)
-
-
-def _frame(up: str) -> Tuple[Vec3, Vec3, Vec3]:
-    try:
-        return FRAMES[up]
-    except (KeyError, TypeError):
-        raise ValueError(f"up: expected one of {', '.join(UP_AXES)}, got {up!r}") from None
-
-
-def up_vector(up: str) -> Vec3:
-    """The unit vector of axis ``up`` ("x", "y" or "z")."""
-    return _frame(up)[1]
-
-
-def view_direction(up: str, angle: float = 0.0) -> Vec3:
-    """Scene -> eye direction of the front view, slightly above and to the side, turned by
-    ``angle`` radians about the up axis (counter-clockwise seen from above)."""
-    side, upv, front = _frame(up)
-    c, s = math.cos(angle), math.sin(angle)
-    # rotate the horizontal part (0.35 side + front) about up
-    a, b = 0.35 * c + s, -0.35 * s + c
-    return tuple(a * side[i] + 0.3 * upv[i] + b * front[i] for i in range(3))  # type: ignore[return-value]
 
 
 def check_views(views: Any) -> int:
@@ -57,8 +21,8 @@ def check_views(views: Any) -> int:
     return int(views)
 
 
-def turntable(views: int, up: str = "y") -> List[Camera]:
-    """``views`` fit cameras evenly spaced around the up axis, the first one the front view."""
+def turntable(views: int) -> List[Camera]:
+    """``views`` fitted cameras evenly spaced around the up axis, the first the fitted camera's
+    own three-quarter view."""
     views = check_views(views)
-    upv = up_vector(up)
-    return [Camera.fit(view_direction(up, 2.0 * math.pi * k / views), up=upv) for k in range(views)]
+    return [Camera.fit(turn=360.0 * k / views) for k in range(views)]

@@ -27,7 +27,7 @@ import numpy as np
 from toonmesh import _core, smooth
 from toonmesh._files import check_distinct_names, image_suffix, save_result, view_paths
 from toonmesh._load import load, under_own_colours
-from toonmesh._render import RenderOptions, draw, place_meshes, remove_meshes, shared_renderer
+from toonmesh._render import RenderOptions, after_smoothing, draw, place_meshes, remove_meshes, shared_renderer
 from toonmesh._scene import Mesh, Normals, normal_mode
 from toonmesh._views import check_views, turntable
 
@@ -47,20 +47,22 @@ def _smoothed(V: np.ndarray, F: np.ndarray, method: str, iterations: int) -> np.
 
 
 def _prepared(meshes: List[Mesh], normals: Normals, method: str, iterations: int) -> List[Mesh]:
-    """The file's meshes in ``normals``, smoothed by ``method`` (once per geometry: its
-    instances share the smoothed arrays, and so one upload). "paper" is left to the upload."""
-    mode = normal_mode(normals)
+    """The file's meshes in ``normals`` (None: their own, else the default), smoothed by
+    ``method`` (once per geometry: its instances share the smoothed arrays, and so one upload).
+    "paper" is left to the upload."""
     smoothed: Dict[Tuple[int, int], np.ndarray] = {}
     out = []
     for m in meshes:
         m = copy.copy(m)
-        m.normals = mode
+        assert m.vertices is not None and m.faces is not None  # read from a file: arrays, not a MeshHandle
+        if normals is not None:
+            m.normals = normal_mode(normals, len(m.vertices))
         if iterations and method != AT_UPLOAD:
-            assert m.vertices is not None and m.faces is not None  # read from a file: arrays, not a MeshHandle
             key = (id(m.vertices), id(m.faces))
             if key not in smoothed:
                 smoothed[key] = _smoothed(m.vertices, m.faces, method, iterations)
             m.vertices = smoothed[key]
+            m.normals = after_smoothing(m.normals, True, f"smooth_method={method!r}")
         out.append(m)
     return out
 
@@ -69,24 +71,25 @@ def render_views(
     mesh_path: str,
     files: Sequence[str],
     *,
-    up: str = "y",
     backend: Optional[str] = None,
     smooth_iterations: int = 0,
     smooth_method: str = AT_UPLOAD,
-    normals: Normals = "smooth",
+    normals: Normals = None,
     own_colors_material: Any = None,
     **render_options: Any,
 ) -> List[Dict[str, Any]]:
-    """Renders one mesh file into ``files``, one view each (a turntable about ``up`` when there
-    are several files, unless ``camera`` is given with one file). ``render_options``: the
-    keywords of :class:`toonmesh.RenderOptions`. ``own_colors_material``: the material of the
-    meshes that carry their own colours or texture (default: the render's ``material``; the
-    command line gives the style in white, so that a file's colours show as they are). Returns
-    one dict per file: see :func:`render_files`."""
+    """Renders one mesh file into ``files``, one view each (a turntable about the scene's up
+    axis when there are several files, unless ``camera`` is given with one file).
+    ``render_options``: the keywords of :class:`toonmesh.RenderOptions` (``up``: the file's up
+    axis, by default its format's convention). ``normals``: as :func:`toonmesh.render` takes
+    them (None: the file's own where it has them, else the default). ``own_colors_material``:
+    the material of the meshes that carry their own colours or texture (default: the render's
+    ``material``; the command line gives the style in white, so that a file's colours show as
+    they are). Returns one dict per file: see :func:`render_files`."""
     t0 = time.perf_counter()
     if "camera" in render_options and len(files) != 1:
         raise ValueError("camera: give either a camera or several views, not both")
-    cameras = [render_options.pop("camera")] if "camera" in render_options else turntable(len(files), up)
+    cameras = [render_options.pop("camera")] if "camera" in render_options else turntable(len(files))
     options = RenderOptions(**render_options)  # checked once, before the mesh is read
     renderer = shared_renderer(backend)
     meshes = load(mesh_path)
@@ -108,7 +111,7 @@ def render_views(
             save_result(result, path)
             rows.append({
                 "mesh": mesh_path, "view": k, "path": path, "vertices": n_vertices, "faces": n_faces,
-                "load_s": load_s if k == 0 else 0.0, "render_s": t2 - t1,
+                "up": result.up, "load_s": load_s if k == 0 else 0.0, "render_s": t2 - t1,
                 "write_s": time.perf_counter() - t2, "worker": worker,
             })
     finally:
@@ -136,24 +139,26 @@ def render_files(
         out_dir: folder for the images, created if needed, writable by the workers. One view
             gives ``STEM.png``; several give ``STEM-000.png``, ``STEM-001.png``, ... (``.npz``
             with every output array when ``outputs`` asks for ``normal`` or ``depth``).
-        views: views per mesh: a turntable of fit cameras about ``up``, the first one the front
-            view slightly from above (see ``toonmesh render --up``).
+        views: views per mesh: a turntable of fit cameras about the up axis, the first one the
+            fitted camera's three-quarter view (see ``toonmesh render --up``).
         client: a ``dask.distributed.Client``; None starts a local cluster (one worker process
             per core, one thread each) for this call and closes it afterwards.
-        **options: for every mesh, as :func:`render_views` takes them: ``up``, the meshes' up
-            axis, "x", "y" (default) or "z"; ``backend`` as in :class:`toonmesh.Renderer`;
+        **options: for every mesh, as :func:`render_views` takes them: ``backend`` as in
+            :class:`toonmesh.Renderer`;
             ``smooth_iterations`` and ``smooth_method``, smoothing before rendering (``"paper"``,
             the default, is the renderer's own, each vertex to its neighbours' mean, as in
             :func:`toonmesh.render`; or a :mod:`toonmesh.smooth` method by name, with that
             many iterations and its defaults: :data:`SMOOTH_METHODS` lists them all); ``normals``, as in
-            :class:`toonmesh.Mesh`; and the keywords of :class:`toonmesh.RenderOptions` for every
-            view (``width``, ``height``, ``material``, ``lights``, ``outputs``, ...; ``camera``
-            only with one view), which pickle, so they travel to the workers.
+            :func:`toonmesh.render` (None: each file's own, else the default); and the keywords of
+            :class:`toonmesh.RenderOptions` for every view (``width``, ``height``, ``material``,
+            ``lights``, ``outputs``, ``up``, the files' up axis: "x", "y" or "z", by default each
+            format's convention; ``camera`` only with one view), which pickle, so they travel to
+            the workers.
 
     Returns:
         A list of dicts, one per image, in the order of ``paths`` and then views: ``mesh``,
         ``view`` (0-based), ``path`` (the file written), ``vertices``, ``faces`` (summed over
-        the scene's placed meshes, as drawn), ``load_s``
+        the scene's placed meshes, as drawn), ``up`` (the up axis the view used), ``load_s``
         (reading, smoothing and uploading the mesh; on the first view's row), ``render_s``,
         ``write_s`` (seconds) and ``worker`` (host:pid). ``pandas.DataFrame(rows)`` makes it a
         table.

@@ -35,12 +35,12 @@ from toonmesh._files import (
     write_parts,
 )
 from toonmesh._line_drawing import summary, view_lines, write_npz, write_svg
-from toonmesh._load import OWN_COLOURS_WHITE, Surface, read_surfaces
+from toonmesh._load import OWN_COLOURS_WHITE, Surface, file_up_axis, read_surfaces, up_conventions
 from toonmesh.edges import feature_edges
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 from toonmesh._render import Mesh, RenderResult, gpu_info, render
 from toonmesh._scene import normal_mode
-from toonmesh._views import UP_AXES, check_views, up_vector, view_direction
+from toonmesh._views import check_views
 from toonmesh.batch import SMOOTH_METHODS as RENDER_SMOOTH_METHODS, render_views
 
 __all__ = ["main"]
@@ -121,7 +121,7 @@ def _normals(text: str) -> Any:
     """--normals: a normal mode by name, or auto:DEGREES; the core checks both."""
     name, sep, angle = text.partition(":")
     try:
-        return normal_mode((name, float(angle)) if sep else name)
+        return normal_mode((name, float(angle)) if sep else name, 0)
     except ValueError as exc:
         why = f"{exc}; " if str(exc).startswith("normals") else ""
         raise argparse.ArgumentTypeError(f"{why}expected a mode or auto:DEGREES (e.g. auto:45), got {text!r}") from None
@@ -266,6 +266,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     info = gpu_info(args.backend)
     where = f"on {info['name']} ({info['backend']})"
     secs = time.perf_counter() - t0
+    ups = "; ".join(dict.fromkeys(up_note(r["mesh"], args.up, r["up"]) for r in rows))
     if len(rows) == 1:
         r = rows[0]
         print(f"wrote {r['path']} ({args.size[0]}x{args.size[1]}, {r['faces']:,} faces) in {secs:.2f} s {where}")
@@ -273,7 +274,19 @@ def cmd_render(args: argparse.Namespace) -> int:
         render_s = sum(r["render_s"] for r in rows)
         print(f"wrote {len(rows)} images to {args.out} ({len(args.meshes)} meshes x {args.views} views) "
               f"in {secs:.2f} s, {render_s / len(rows) * 1e3:.1f} ms per render {where}")
+    print(ups)
     return 0
+
+
+def up_note(path: str, given: Optional[str], used: str) -> str:
+    """Which up axis a mesh file was drawn with, and why: ``--up``, its format's convention, or
+    the default where the format has none."""
+    name = os.path.basename(path)
+    if given is not None:
+        return f"{name}: up {used} (--up)"
+    suffix = os.path.splitext(path)[1].lower()
+    why = f"the {suffix} convention" if file_up_axis(path) is not None else f"the default; {suffix or 'this file'} has no convention"
+    return f"{name}: up {used} ({why}; --up to change)"
 
 
 # --------------------------------------------------------------------------------------------
@@ -384,19 +397,19 @@ def cmd_edges(args: argparse.Namespace) -> int:
         outlines = Outlines("mesh", width=args.stroke_width, crease_angle=args.crease_angle, weld=args.weld,
                             contours=args.contours, suggestive=args.suggestive or None, join_kinds=args.join_kinds,
                             curvature_smoothing=args.curvature_smoothing)
-    V, F = read_mesh(mesh_file(args.mesh))
+    path = mesh_file(args.mesh)
+    V, F = read_mesh(path)
     with errors_as_flags(args, Camera):
-        if args.eye is not None:
-            camera = Camera.fit(args.eye, up=up_vector(args.up), orthographic=True)
-        else:
-            camera = Camera.fit(view_direction(args.up), up=up_vector(args.up))
+        camera = Camera.fit(args.eye, orthographic=True) if args.eye is not None else Camera.fit()
     w, h = args.size
-    lines = view_lines(V, F, camera, outlines, width=w, height=h, hidden=args.hidden, backend=args.backend)
+    up = args.up if args.up is not None else file_up_axis(path)
+    lines = view_lines(V, F, camera, outlines, width=w, height=h, hidden=args.hidden, backend=args.backend, up=up)
     if suffix == ".svg":
         write_svg(args.out, lines, smooth=args.smooth_strokes, order=args.order, simplify=args.simplify)
     else:
         write_npz(args.out, lines)
     print(f"{args.mesh}: {summary(lines)} ({w}x{h}) to {args.out}")
+    print(up_note(path, args.up, lines["seen"].up))
     return 0
 
 
@@ -426,7 +439,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
     # a ground plane under the bunny, as a second mesh with its own material
     lo, hi = V.min(axis=0), V.max(axis=0)
     c, r = (lo + hi) / 2, float(np.linalg.norm(hi - lo))
-    plane_v = np.array([[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]], dtype=np.float64) * r * 0.6
+    plane_v = np.array([[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]], dtype=np.float64) * r * 0.45
     plane_v += [c[0], lo[1], c[2]]
     plane_f = np.array([[0, 2, 1], [0, 3, 2]])
     scene = [
@@ -436,7 +449,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
     with errors_as_flags(args, RenderOptions):
         result = render(
             scene,
-            camera=Camera.fit((0.25, 0.35, 1.0), margin=0.8),
+            camera=Camera.fit((0.25, 0.35, 1.0)),  # framed as near as the bunny and its ground allow
             lights=[Light.directional((0.6, -0.5, -0.45), space="camera")],
             width=args.width,
             height=args.height,
@@ -464,9 +477,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"toonmesh {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     backend = dict(choices=_core.BACKENDS, default=None, help="GPU backend (default: $TOONMESH_BACKEND, else auto)")
-    up = dict(choices=UP_AXES, default=_keyword_default(render_views, "up"),
-              help="the mesh's up axis; the view is from the front, slightly above (z: front is -y). "
-                   "Default: %(default)s")
+    up_help = f"; the formats' conventions: {up_conventions()}"
 
     p = sub.add_parser("render", help="render mesh files to toon-shaded images",
                        description="Render mesh files (OBJ, PLY, STL, OFF, GLB, ...) to PNG images, or NPZ with "
@@ -520,7 +531,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                   metavar="X")
     p.add_argument("--views", type=_views, default=1, metavar="N",
                    help="a turntable of N views about the up axis (default %(default)s)")
-    p.add_argument("--up", **up)  # type: ignore[arg-type]
+    add_described(p, "--up", RenderOptions, "up", help_after=up_help)
     smooth_flag = p.add_argument("--smooth", type=int, default=_keyword_default(render_views, "smooth_iterations"),
                                  metavar="N", help="smoothing iterations before rendering (default %(default)s)")
     sets(p, smooth_flag, (render_views, "smooth_iterations"), (smooth, "iterations"))
@@ -530,8 +541,9 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                         "a toonmesh.smooth method (default: %(default)s)")
     p.add_argument("--normals", type=_normals, default=_keyword_default(render_views, "normals"), metavar="MODE",
                    help=f"smooth, flat (facets), or auto: hard edges where faces meet at more than "
-                        f"{_core.DEFAULT_CREASE_ANGLE:g} degrees, for boxes and CAD parts (auto:DEG for another "
-                        "angle); default: %(default)s")
+                        f"{_core.DEFAULT_CREASE_ANGLE:g} degrees, except a scan's short or zig-zagging creases "
+                        "(auto:DEG for another angle); default: the file's own normals where it has them, else "
+                        f"{_core._normal_mode(None, 0)}")
     add_described(p, "--outputs", RenderOptions, "outputs", type=_outputs, choices=None, metavar="LIST",
                   help_after=f": comma-separated, of {', '.join(_core.IMAGE_OUTPUTS)}; anything but color alone "
                              "writes .npz")
@@ -572,9 +584,10 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("mesh", metavar="MESH", help="a mesh file, or the name of a mesh shipped with toonmesh (bunny)")
     p.add_argument("-o", "--out", required=True, metavar="OUT", help="lines.svg or lines.npz")
     eye = p.add_argument("--eye", type=float, nargs=3, default=None, metavar=("X", "Y", "Z"),
-                         help="look orthographically along -eye (default: the renderer's fit camera from --up)")
+                         help="look orthographically along -eye (default: the renderer's fitted camera, a "
+                              "three-quarter view about the up axis)")
     sets(p, eye, (Camera, "direction"))
-    sets(p, p.add_argument("--up", **up), (Camera, "up"))  # type: ignore[arg-type]
+    add_described(p, "--up", RenderOptions, "up", help_after=up_help)
     add_described(p, "--crease-angle", Outlines, "crease_angle", metavar="DEG")
     add_described(p, "--no-weld", Outlines, "weld", action="store_false", dest="weld",
                   help_before="keep vertices at the same position apart (seams then show as boundaries). "

@@ -28,7 +28,7 @@ from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
 from toonmesh._described import default
 from toonmesh._render import PlacedMesh, Renderer, draw, place_meshes, remove_meshes, shared_renderer
 from toonmesh._results import RenderResult
-from toonmesh._scene import Mesh, MeshHandle, Normals
+from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
@@ -138,7 +138,8 @@ def _view_of(result: RenderResult, camera: Camera, center: np.ndarray) -> _View:
     orthographic = camera.projection == "orthographic"
     height = camera.height if camera.height is not None else 2.0 / float(result.projection[1, 1])
     fov_y = camera.fov_y if camera.fov_y is not None else _FOV_Y
-    return _View(eye, target, camera.up, orthographic, float(fov_y), float(height))
+    up = camera.up if camera.up is not None else np.eye(3)["xyz".index(result.up)]  # the scene's up axis
+    return _View(eye, target, up, orthographic, float(fov_y), float(height))
 
 
 def _encode(color: np.ndarray, image_format: str, quality: int = 85) -> Tuple[bytes, str]:
@@ -229,7 +230,7 @@ class Viewer:
         vertices: Any,
         faces: Any = None,
         *,
-        normals: Normals = "smooth",
+        normals: Normals = None,
         smooth_iterations: int = 0,
         backend: Optional[str] = None,
         renderer: Optional[Renderer] = None,
@@ -469,8 +470,8 @@ class Viewer:
         notebook; ``print(v.code())`` elsewhere). Settings without a constructor spelling are
         written in their pickled form."""
         parts = [self._mesh_source]
-        if self._normals != "smooth" and self._mesh_source != "meshes":
-            parts.append(f"normals={self._normals!r}")
+        if self._normals is not None and self._mesh_source != "meshes":
+            parts.append("normals=normals" if own_normals(self._normals) else f"normals={self._normals!r}")
         if self._smooth_iterations:
             parts.append(f"smooth_iterations={self._smooth_iterations!r}")
         with self._state_lock:

@@ -10,8 +10,20 @@
 pub const DEFAULT_MIN_CREASE_LENGTH: f64 = 0.02;
 
 use super::crease_pieces::{retain_pieces, CreasePieces};
+use super::crooked_creases::drop_crooked_creases;
 use super::feature::FeatureEdges;
+use crate::mesh::Bounds;
 use crate::real::{norm, sub};
+
+/// Keeps the creases of `fe` that a drawing keeps on scans: pieces at least `min_length` of the
+/// bounding-box diagonal of `positions` long in all (this module's rule) that turn by at most
+/// `max_turn` degrees on average (`crooked_creases`). The crease lines drawn and the normals
+/// split at creases (`NormalMode::Auto`) both follow it.
+pub fn keep_drawn_creases(fe: &mut FeatureEdges, positions: &[[f64; 3]], min_length: f64, max_turn: f64) {
+    let diagonal = Bounds::of(positions).diagonal();
+    drop_short_creases(fe, positions, min_length * diagonal);
+    drop_crooked_creases(fe, positions, max_turn);
+}
 
 /// Drops the creases of `fe` whose connected piece is shorter than `min_length` (in the units
 /// of `positions`). Boundaries and non-manifold edges are kept whatever their length.

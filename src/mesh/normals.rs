@@ -17,6 +17,7 @@
 
 use rayon::prelude::*;
 
+use crate::error::{Error, Result};
 use crate::real::{cross, sub, to_f64, Real, Vec3};
 
 /// Twice the area of a face, relative to its longest edge squared, below which it has no normal.
@@ -145,6 +146,41 @@ pub fn unit_or_zero(n: [f64; 3]) -> [f64; 3] {
     } else {
         [0.0; 3]
     }
+}
+
+/// A mesh's own vertex normals (a file's), checked as the argument `arg`: one a vertex of
+/// `n_vertices`, finite, none the zero vector; scaled to unit length (without squaring large or
+/// tiny components) in f32, as the GPU takes them.
+pub fn given_unit_normals<T: Real>(
+    arg: &str,
+    normals: &[Vec3<T>],
+    n_vertices: usize,
+) -> Result<Vec<[f32; 3]>> {
+    if normals.len() != n_vertices {
+        return Err(Error::invalid(
+            arg,
+            format!("expected one normal a vertex, shape ({n_vertices}, 3), got ({}, 3)", normals.len()),
+        ));
+    }
+    normals
+        .iter()
+        .enumerate()
+        .map(|(i, n)| {
+            let n = to_f64(*n);
+            if !n.iter().all(|x| x.is_finite()) {
+                return Err(Error::invalid(arg, format!("the normal of vertex {i} is not finite: {n:?}")));
+            }
+            let m = n.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            if m == 0.0 {
+                return Err(Error::invalid(
+                    arg,
+                    format!("the normal of vertex {i} is the zero vector: a normal needs a direction"),
+                ));
+            }
+            let u = unit_or_zero(n.map(|x| x / m));
+            Ok(u.map(|x| x as f32))
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -54,7 +54,9 @@ fn colors(arg: &str, obj: &Bound<'_, PyAny>, what: &str) -> Result<Vec<[f32; 4]>
 
 /// (N, 2) float texture coordinates.
 fn uv(obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 2]>> {
-    Ok(rows(&array_values("uv", obj, FLOATS, (&[None, Some(2)], "(N, 2)"))?.0))
+    // read as float64 (no overflow in NumPy's cast); the core checks the narrowed values
+    let uv: Vec<f64> = array_values("uv", obj, FLOATS, (&[None, Some(2)], "(N, 2)"))?.0;
+    Ok(rows(&uv.into_iter().map(|c| c as f32).collect::<Vec<f32>>()))
 }
 
 /// The colour keywords of `Renderer.add_mesh`, in the order `albedo` reads them.

@@ -38,6 +38,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(render::_shadow_truth, m)?,
         wrap_pyfunction!(albedo::_srgb_from_linear, m)?,
         wrap_pyfunction!(render::_normal_mode, m)?,
+        wrap_pyfunction!(render::_up_axis, m)?,
         wrap_pyfunction!(render::_transform, m)?,
         wrap_pyfunction!(render::gpu_info, m)?,
         wrap_pyfunction!(render::encode_png_rgba, m)?,

@@ -3,7 +3,7 @@
 //! PNG encoding. Every argument is converted with a check that names it.
 
 use numpy::ndarray::IxDyn;
-use numpy::{PyArray2, PyArrayDyn, PyArrayMethods};
+use numpy::{PyArray2, PyArrayDyn, PyArrayMethods, PyUntypedArray};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 use pyo3::IntoPyObjectExt;
@@ -16,14 +16,16 @@ use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
 use crate::error::{Error, Result};
+use crate::mesh::normals::given_unit_normals;
 use crate::mesh::positions::on_positions;
 use crate::parallel::catching_panics;
 use crate::render::effects::outlines::settings::kind_names;
 use crate::render::effects::shadows::raycast::mesh_shadow_truth;
-use crate::render::gpu_mesh::NormalMode;
+use crate::render::gpu_mesh::{MeshNormals, NormalMode};
 use crate::render::image_out::encode_png;
 use crate::render::scene::options::MeshSpec;
 use crate::render::scene::outputs::{Output, Pixel};
+use crate::render::scene::up::Axis;
 use crate::render::scene::FrameSpec;
 use crate::render::{BackendChoice, FrameReport, ImageMut, OutputBuffers, Renderer};
 
@@ -38,39 +40,72 @@ fn backend_of(backend: Option<&Bound<'_, PyAny>>) -> Result<BackendChoice> {
     BackendChoice::resolve(backend.map(|b| text("backend", b)).transpose()?.as_deref())
 }
 
-/// `normals`: "smooth", "flat", "auto" (split at `DEFAULT_CREASE_ANGLE`) or ("auto", crease
-/// angle in degrees).
-fn normal_mode(obj: &Bound<'_, PyAny>) -> Result<NormalMode> {
+/// `normals`: "smooth", "flat", "auto" (split at `DEFAULT_CREASE_ANGLE`), ("auto", crease
+/// angle in degrees), None (`NormalMode::DEFAULT`), or an (N, 3) float array of the mesh's own
+/// vertex normals for a mesh of `n_vertices`.
+fn mesh_normals(obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<MeshNormals> {
+    if obj.is_none() {
+        return Ok(NormalMode::DEFAULT.into());
+    }
     if obj.is_instance_of::<PyString>() {
-        return NormalMode::parse("normals", &text("normals", obj)?);
+        return Ok(NormalMode::parse("normals", &text("normals", obj)?)?.into());
     }
     if let Ok(pair) = obj.cast::<PyTuple>() {
         if let (2, Ok(name)) = (pair.len(), pair.get_item(0).and_then(|n| n.extract::<String>())) {
             let angle = pair.get_item(1).map_err(|e| Error::invalid("normals", e.to_string()))?;
-            return NormalMode::with_angle("normals", &name, || number("normals", &angle));
+            return Ok(NormalMode::with_angle("normals", &name, || number("normals", &angle))?.into());
         }
+    }
+    if obj.cast::<PyUntypedArray>().is_ok() {
+        let given = positions("normals", obj)?;
+        return Ok(MeshNormals::Given(
+            on_positions!(given.slices(), n => given_unit_normals("normals", n, n_vertices))?,
+        ));
     }
     Err(Error::wrong_type(
         "normals",
         format!(
-            "expected 'smooth', 'flat', 'auto' or ('auto', crease angle in degrees), got {}",
+            "expected 'smooth', 'flat', 'auto', ('auto', crease angle in degrees), None or an (N, 3) float \
+             array of vertex normals, got {}",
             type_name(obj)
         ),
     ))
 }
 
-/// A normal mode in its shortest spelling: "auto" for ('auto', the default angle).
-fn normal_spelling(py: Python<'_>, mode: NormalMode) -> PyResult<Bound<'_, PyAny>> {
-    match mode.written_angle() {
-        Some(angle) => (mode.name(), angle).into_bound_py_any(py),
-        None => mode.name().into_bound_py_any(py),
+/// Normals in their shortest spelling: "auto" for ('auto', the default angle); a mesh's own as
+/// `given`, the caller's array.
+fn normal_spelling<'py>(
+    py: Python<'py>,
+    normals: &MeshNormals,
+    given: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
+    match normals {
+        MeshNormals::Given(_) => Ok(given.clone()),
+        MeshNormals::Mode(mode) => match mode.written_angle() {
+            Some(angle) => (mode.name(), angle).into_bound_py_any(py),
+            None => mode.name().into_bound_py_any(py),
+        },
     }
 }
 
-/// _normal_mode(normals) -> str | (str, float): `normals` checked, in its shortest spelling.
+/// _normal_mode(normals, n_vertices) -> str | (str, float) | array: `normals` checked for a
+/// mesh of `n_vertices`: a mode in its shortest spelling, or the mesh's own normals as given.
 #[pyfunction]
-pub(super) fn _normal_mode<'py>(py: Python<'py>, normals: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-    normal_spelling(py, normal_mode(normals)?)
+pub(super) fn _normal_mode<'py>(
+    py: Python<'py>,
+    normals: &Bound<'py, PyAny>,
+    n_vertices: usize,
+) -> PyResult<Bound<'py, PyAny>> {
+    normal_spelling(py, &mesh_normals(normals, n_vertices)?, normals)
+}
+
+/// _up_axis(up) -> str | None: an up axis ("x", "y" or "z") checked; None stays None.
+#[pyfunction]
+pub(super) fn _up_axis(up: &Bound<'_, PyAny>) -> PyResult<Option<&'static str>> {
+    if up.is_none() {
+        return Ok(None);
+    }
+    Ok(Some(Axis::parse("up", &text("up", up)?)?.name()))
 }
 
 /// _transform(transform) -> (4, 4) float64: a mesh's transform checked (see `RenderOptions`).
@@ -81,16 +116,17 @@ pub(super) fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) ->
     t.to_vec().to_python(py)
 }
 
-/// The meshes of a render: [(mesh id, Material or None, 4x4 transform or None)].
+/// The meshes of a render: [(mesh id, Material or None, 4x4 transform or None, up axis or
+/// None)].
 fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
     let list = items.try_iter().map_err(|_| Error::wrong_type("meshes", "expected a list of meshes"))?;
     list.enumerate()
         .map(|(i, item)| {
             let arg = format!("meshes[{i}]");
             let item = item.map_err(|e| Error::invalid(&arg, e.to_string()))?;
-            let (id, mat, tf): (u64, Bound<'_, PyAny>, Bound<'_, PyAny>) = item
+            let (id, mat, tf, up): (u64, Bound<'_, PyAny>, Bound<'_, PyAny>, Option<String>) = item
                 .extract()
-                .map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform)"))?;
+                .map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform, up axis)"))?;
             let material = match mat.cast::<PyMaterial>() {
                 Ok(m) => Some(m.get().inner.clone()),
                 Err(_) if mat.is_none() => None,
@@ -101,7 +137,8 @@ fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
             };
             let transform =
                 (!tf.is_none()).then(|| transform(&format!("{arg}.transform"), &tf)).transpose()?;
-            Ok((id, material, transform))
+            let up = up.map(|u| Axis::parse(&format!("{arg}.up"), &u)).transpose()?;
+            Ok((id, material, transform, up))
         })
         .collect()
 }
@@ -216,8 +253,8 @@ impl PyRenderer {
         self.inner.mesh_count()
     }
 
-    /// (mesh id, the normal mode in its shortest spelling, notes to warn about); `colors`: the
-    /// colour keywords (see `albedo`).
+    /// (mesh id, the normals in their shortest spelling, notes to warn about); `normals` as
+    /// `_normal_mode` takes them; `colors`: the colour keywords (see `albedo`).
     #[pyo3(signature = (vertices, faces, normals, **colors))]
     fn add_mesh<'py>(
         &self,
@@ -227,14 +264,15 @@ impl PyRenderer {
         normals: &Bound<'py, PyAny>,
         colors: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<(u64, Bound<'py, PyAny>, Vec<String>)> {
-        let mode = normal_mode(normals)?;
         let p = positions("vertices", vertices)?;
+        let normals_in = mesh_normals(normals, p.len())?;
         let f = self::faces("faces", faces, p.len())?;
         let a = albedo(colors)?;
+        let spelling = normal_spelling(py, &normals_in, normals)?;
         let inner = &self.inner;
         let (id, notes) =
-            without_gil(py, || on_positions!(p.slices(), v => inner.add_mesh_with(v, f, mode, a)))?;
-        Ok((id, normal_spelling(py, mode)?, notes))
+            without_gil(py, || on_positions!(p.slices(), v => inner.add_mesh_with(v, f, normals_in, a)))?;
+        Ok((id, spelling, notes))
     }
 
     fn remove_mesh(&self, mesh: u64) -> bool {
@@ -259,7 +297,7 @@ impl PyRenderer {
             .next()
             .map(|c| each(&c, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", read));
         let cams = cams.transpose()?;
-        let scene = self.inner.check(o.scene(&mesh_specs(items)?), o.frame)?;
+        let scene = self.inner.check(o.scene(&mesh_specs(items)?)?, o.frame)?;
         let images = Images::allocate(py, &o.frame, cams.as_ref().map(Vec::len));
         let mut buffers = images.buffers(cams.as_ref().map_or(1, Vec::len));
         let inner = &self.inner;

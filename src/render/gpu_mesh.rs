@@ -10,10 +10,13 @@
 use rayon::prelude::*;
 use wgpu::util::DeviceExt;
 
+use crate::edges::crooked_creases::DEFAULT_MAX_CREASE_TURN;
 use crate::edges::feature::check_crease_angle;
+use crate::edges::find_feature_edges;
+use crate::edges::short_creases::{keep_drawn_creases, DEFAULT_MIN_CREASE_LENGTH};
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::{Error, Result};
-use crate::mesh::crease_normals::crease_normals;
+use crate::mesh::crease_normals::{split_normals, ListedEdges, SplitNormals};
 use crate::mesh::enclosure::{enclosure_welded, Enclosure};
 use crate::mesh::normals::{triangle_unit_normal, vertex_normals};
 use crate::mesh::Bounds;
@@ -29,15 +32,19 @@ pub enum NormalMode {
     Smooth,
     /// One normal per face (vertices are split so that faces do not share them).
     Flat,
-    /// Smooth, except across edges sharper than `crease_angle` degrees (and boundary and
-    /// non-manifold edges), where vertices are split (`mesh::crease_normals`): hard edges
-    /// shade hard, curved parts smooth.
+    /// Smooth, except across the creases a drawing keeps (`auto_split`): edges sharper than
+    /// `crease_angle` degrees in pieces long and straight enough, and boundary and non-manifold
+    /// edges, where vertices are split (`mesh::crease_normals`): hard edges shade hard, curved
+    /// parts and a scan's noise smooth.
     Auto { crease_angle: f64 },
+    /// The mesh's own normals, one per vertex (`MeshNormals::Given`), interpolated across faces.
+    Given,
 }
 
 impl NormalMode {
-    /// The normals of a mesh given no mode.
-    pub const DEFAULT: NormalMode = NormalMode::Smooth;
+    /// The normals of a mesh given no mode and no normals of its own: split at the creases a
+    /// drawing keeps, right on CAD parts (hard edges) and on scans (no noise made hard).
+    pub const DEFAULT: NormalMode = NormalMode::Auto { crease_angle: DEFAULT_CREASE_ANGLE };
 
     /// A mode by name, as the argument `arg`; "auto" splits at `DEFAULT_CREASE_ANGLE`.
     pub fn parse(arg: &str, s: &str) -> Result<Self> {
@@ -82,8 +89,46 @@ impl NormalMode {
             Self::Smooth => "smooth",
             Self::Flat => "flat",
             Self::Auto { .. } => "auto",
+            Self::Given => "given",
         }
     }
+}
+
+/// The normals a mesh is uploaded with: made by a mode, or its own unit normals, one a vertex
+/// (checked by `mesh::normals::given_unit_normals`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum MeshNormals {
+    Mode(NormalMode),
+    Given(Vec<[f32; 3]>),
+}
+
+impl From<NormalMode> for MeshNormals {
+    fn from(mode: NormalMode) -> Self {
+        MeshNormals::Mode(mode)
+    }
+}
+
+impl MeshNormals {
+    /// The mode the mesh is drawn with (`Given` for its own normals).
+    pub fn mode(&self) -> NormalMode {
+        match self {
+            MeshNormals::Mode(m) => *m,
+            MeshNormals::Given(_) => NormalMode::Given,
+        }
+    }
+}
+
+/// The vertices split at the creases a drawing keeps (`NormalMode::Auto`): the crease edges
+/// sharper than `crease_angle` degrees, less the pieces a scan's noise makes (shorter than
+/// `DEFAULT_MIN_CREASE_LENGTH` of the bounding-box diagonal, or turning by more than
+/// `DEFAULT_MAX_CREASE_TURN` on average: `edges::keep_drawn_creases`, the rule of the drawn
+/// crease lines), and boundary, non-manifold and degenerate faces' edges.
+pub fn auto_split(stored: &[[f64; 3]], faces: &[[u32; 3]], crease_angle: f64) -> Result<SplitNormals> {
+    let (mut fe, _) = find_feature_edges(stored, faces, crease_angle, false)?;
+    keep_drawn_creases(&mut fe, stored, DEFAULT_MIN_CREASE_LENGTH, DEFAULT_MAX_CREASE_TURN);
+    let mut hard: Vec<[u32; 2]> = fe.crease.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect();
+    hard.sort_unstable();
+    split_normals(stored, faces, &ListedEdges(&hard))
 }
 
 #[repr(C)]
@@ -147,10 +192,18 @@ fn used_bounds<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Bounds {
 /// vertices, or for flat normals corner i of face i / 3).
 type Built = (Vec<Vertex>, Option<Vec<[u32; 3]>>, Option<Vec<u32>>);
 
-fn build_vertices(stored: &[[f64; 3]], faces: &[[u32; 3]], normals: NormalMode) -> Result<Built> {
+fn build_vertices(stored: &[[f64; 3]], faces: &[[u32; 3]], normals: &MeshNormals) -> Result<Built> {
     let f32s = |p: &[f64; 3]| p.map(|x| x as f32);
-    Ok(match normals {
-        NormalMode::Smooth => {
+    let mode = match normals {
+        MeshNormals::Given(n) => {
+            let v =
+                stored.par_iter().zip(n).map(|(p, &normal)| Vertex { position: f32s(p), normal }).collect();
+            return Ok((v, None, None));
+        }
+        MeshNormals::Mode(mode) => *mode,
+    };
+    Ok(match mode {
+        NormalMode::Smooth | NormalMode::Given => {
             let n = vertex_normals(stored, faces);
             let v = stored
                 .par_iter()
@@ -160,7 +213,7 @@ fn build_vertices(stored: &[[f64; 3]], faces: &[[u32; 3]], normals: NormalMode) 
             (v, None, None)
         }
         NormalMode::Auto { crease_angle } => {
-            let split = crease_normals(stored, faces, crease_angle)?;
+            let split = auto_split(stored, faces, crease_angle)?;
             let v = split
                 .source
                 .par_iter()
@@ -216,9 +269,9 @@ impl GpuMesh {
         dev: &Device,
         positions: &[Vec3<T>],
         faces: Vec<[u32; 3]>,
-        normals: NormalMode,
+        normals: impl Into<MeshNormals>,
     ) -> Result<(GpuMesh, HostMesh)> {
-        Self::upload_with(dev, positions, faces, normals, None)
+        Self::upload_with(dev, positions, faces, normals.into(), None)
     }
 
     /// `upload`, with the mesh's colour and texture (checked by the caller, its texture fitted
@@ -227,11 +280,19 @@ impl GpuMesh {
         dev: &Device,
         positions: &[Vec3<T>],
         faces: Vec<[u32; 3]>,
-        normals: NormalMode,
+        normals: MeshNormals,
         albedo: Option<&Albedo>,
     ) -> Result<(GpuMesh, HostMesh)> {
         if faces.is_empty() || positions.is_empty() {
             return Err(Error::invalid("faces", "the mesh has no faces"));
+        }
+        if let MeshNormals::Given(n) = &normals {
+            if n.len() != positions.len() {
+                return Err(Error::invalid(
+                    "normals",
+                    format!("{} normals for {} vertices: give one a vertex", n.len(), positions.len()),
+                ));
+            }
         }
         let bounds = used_bounds(positions, &faces);
         let placement = Placement::of(&bounds);
@@ -246,7 +307,8 @@ impl GpuMesh {
             * placement.scale;
         // whether the faces enclose solids, found while the vertices are built
         let (encloses, built) =
-            rayon::join(|| enclosure_welded(&stored, &faces), || build_vertices(&stored, &faces, normals));
+            rayon::join(|| enclosure_welded(&stored, &faces), || build_vertices(&stored, &faces, &normals));
+        let normals = normals.mode();
         let (mut vertices, mut indices, mut source) = built?;
         let mut indexed = !matches!(normals, NormalMode::Flat);
         let per_face = matches!(albedo.and_then(|a| a.colors.as_ref()), Some(Colors::Face(_)));
@@ -318,6 +380,12 @@ impl GpuMesh {
             step_mode: wgpu::VertexStepMode::Vertex,
             attributes: &ATTRS,
         }
+    }
+
+    /// The min and max corners of the box around the vertices the faces use, in the mesh's own
+    /// coordinates.
+    pub fn bounding_box(&self) -> [glam::DVec3; 2] {
+        [glam::DVec3::from_array(self.bounds.min), glam::DVec3::from_array(self.bounds.max)]
     }
 
     /// The mesh's bounding sphere in its own coordinates.

@@ -49,11 +49,15 @@ fn assert_coverage_close(got: &[f32], want: &[f32], case: &str) {
     assert!(mean < 0.01 && off < 0.005, "{case}: mean difference {mean}, {off} of pixels off by > 0.25");
 }
 
+/// A sphere lit by the key light and a warm point light, seen from the front, a little from the
+/// right and above (where the shadowed side's crescent shows: the rim's test needs it).
 pub(super) fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode) -> Scene {
     let (v, f) = icosphere(4, 0.0, 0).unwrap();
     let id = r.add_mesh(&v, f, normals).unwrap();
+    let placement = Placement::Fit { direction: Some([0.35, 0.3, 1.0]), up: None, margin: 1.05, turn: 0.0 };
     Scene {
         items: vec![SceneItem { mesh: id, transform: IDENTITY, material }],
+        camera: Camera { placement, ..Camera::default() },
         lights: vec![
             Light::default(),
             Light {

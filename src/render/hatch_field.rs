@@ -11,11 +11,10 @@ use wgpu::util::DeviceExt;
 use crate::cancel::Cancel;
 use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::Result;
-use crate::mesh::crease_normals::crease_normals;
 
 use super::device::Device;
 use super::effects::hatching::field::hatch_stripes;
-use super::gpu_mesh::{HostMesh, NormalMode};
+use super::gpu_mesh::{auto_split, HostMesh, NormalMode};
 use super::mesh_record::MeshRecord;
 
 /// The vertex buffer slot of the field: past the mesh's and its colour's (`gpu_albedo::SLOT`),
@@ -42,9 +41,9 @@ fn device_values(host: &HostMesh, normals: NormalMode, corners: bool) -> Result<
     let stripes = hatch_stripes(&host.positions, &host.faces, angle, Cancel::never())?;
     // the faces over the vertices the normals give, before any split into corners
     let (vertices, faces) = match normals {
-        NormalMode::Smooth => (host.positions.len(), host.faces.clone()),
+        NormalMode::Smooth | NormalMode::Given => (host.positions.len(), host.faces.clone()),
         NormalMode::Auto { crease_angle } => {
-            let split = crease_normals(&host.positions, &host.faces, crease_angle)?;
+            let split = auto_split(&host.positions, &host.faces, crease_angle)?;
             (split.source.len(), split.faces)
         }
         NormalMode::Flat => {

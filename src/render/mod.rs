@@ -21,6 +21,7 @@ pub mod context;
 pub mod culling;
 pub mod device;
 pub mod effects;
+pub mod framing;
 pub mod gpu_albedo;
 pub mod gpu_mesh;
 pub mod graph;
@@ -66,6 +67,7 @@ pub fn accepted_names() -> Vec<(&'static str, Vec<&'static str>)> {
         ("SHADOW_FILTERS", ShadowFilter::NAMES.to_vec()),
         ("HATCH_MODES", effects::hatching::HatchMode::NAMES.to_vec()),
         ("BACKENDS", BackendChoice::NAMES.to_vec()),
+        ("UP_AXES", scene::up::Axis::NAMES.to_vec()),
         ("SMOOTH_METHODS", smooth::METHODS.map(|(n, _)| n).to_vec()),
         ("SMOOTH_WEIGHTS", smooth::WEIGHTS.map(|(n, _)| n).to_vec()),
         ("SMOOTH_BOUNDARIES", smooth::BOUNDARIES.map(|(n, _)| n).to_vec()),

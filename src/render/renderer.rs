@@ -21,7 +21,8 @@ use super::context::{context, GpuContext};
 use super::culling::culls;
 use super::device::{BackendChoice, GpuInfo};
 use super::effects::frame::{check as check_effects, frame_bytes};
-use super::gpu_mesh::{GpuMesh, NormalMode};
+use super::framing::scene_support;
+use super::gpu_mesh::{GpuMesh, MeshNormals};
 use super::graph::effect::{FrameInputs, HostInputs, HostStep};
 use super::graph::report::FrameReport;
 use super::graph::resources::FrameResources;
@@ -141,7 +142,7 @@ impl Renderer {
         &self,
         positions: &[Vec3<T>],
         faces: Vec<[u32; 3]>,
-        normals: NormalMode,
+        normals: impl Into<MeshNormals>,
     ) -> Result<MeshId> {
         self.add_mesh_with(positions, faces, normals, None).map(|(id, _)| id)
     }
@@ -152,9 +153,10 @@ impl Renderer {
         &self,
         positions: &[Vec3<T>],
         faces: Vec<[u32; 3]>,
-        normals: NormalMode,
+        normals: impl Into<MeshNormals>,
         albedo: Option<Albedo>,
     ) -> Result<(MeshId, Vec<String>)> {
+        let normals = normals.into();
         self.ctx.check_process()?;
         crate::mesh::check_positions("vertices", positions)?;
         if let Some(bad) = faces.iter().flatten().find(|&&i| i as usize >= positions.len()) {
@@ -305,9 +307,14 @@ impl Renderer {
     pub(crate) fn prepare(&self, scene: CheckedScene, report: &mut FrameReport) -> Result<Prepared> {
         let records: Vec<Arc<MeshRecord>> =
             scene.scene.items.iter().map(|i| self.mesh(i.mesh)).collect::<Result<_>>()?;
-        let sphere = scene.scene.bounding_sphere(|id| Ok(self.mesh(id)?.gpu.sphere()))?;
+        let bounds = scene
+            .scene
+            .bounds(|id| Ok(self.mesh(id)?.gpu.sphere()), |id| Ok(self.mesh(id)?.gpu.bounding_box()))?;
         let frame = &scene.frame;
-        let cam = scene.scene.camera.resolve(sphere, frame.width as f64 / frame.height as f64)?;
+        let cam = {
+            let support = scene_support(&scene.scene.items, &records, bounds.sphere.center);
+            scene.scene.camera.resolve_with(&bounds, &support, frame.width as f64 / frame.height as f64)?
+        };
         if frame.outputs.has(Output::Depth) && !DEPTH_SCALE_RANGE.contains(&cam.scale) {
             return Err(Error::invalid(
                 "outputs",
@@ -333,7 +340,7 @@ impl Renderer {
             })
             .unzip();
         let fields = fields.into_iter().collect::<Result<_>>()?;
-        let p = Prepared { scene, records, culls, cam, sphere, plan, fields };
+        let p = Prepared { scene, records, culls, cam, sphere: bounds.sphere, plan, fields };
         p.run_host(&p.plan.host_before, None, report)?;
         Ok(p)
     }
@@ -341,7 +348,7 @@ impl Renderer {
     /// Prepares, records and submits one frame, and asks for its readback to be mapped.
     fn submit(&self, scene: CheckedScene) -> Result<InFlight> {
         let start = Instant::now();
-        let mut report = FrameReport::default();
+        let mut report = FrameReport { up: scene.scene.up.name(), ..Default::default() };
         let p = self.prepare(scene, &mut report)?;
         report.passes = p.plan.names();
         report.view = rows(p.cam.view);

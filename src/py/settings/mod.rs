@@ -231,7 +231,13 @@ fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
     for (name, names) in crate::render::accepted_names() {
         m.add(name, PyTuple::new(m.py(), names)?)?;
     }
-    m.add("DEFAULT_CREASE_ANGLE", crate::edges::DEFAULT_CREASE_ANGLE)
+    m.add("DEFAULT_CREASE_ANGLE", crate::edges::DEFAULT_CREASE_ANGLE)?;
+    let up = PyDict::new(m.py());
+    for (suffix, axis) in crate::render::scene::up::FILE_UP_AXES {
+        up.set_item(suffix, axis.name())?;
+    }
+    m.add("FILE_UP_AXES", up)?;
+    m.add("DEFAULT_UP_AXIS", crate::render::scene::up::DEFAULT_UP.name())
 }
 
 /// `RenderKeywords`: the render keywords as a TypedDict for `**options` in the public API, with

@@ -26,6 +26,8 @@ pub struct FrameReport {
     pub proj: [[f64; 4]; 4],
     pub near: f64,
     pub far: f64,
+    /// The scene's up axis ("x", "y" or "z"), which fitted cameras keep up.
+    pub up: &'static str,
     /// The visible mesh-space lines, when asked for.
     #[serde(skip)]
     pub lines: Option<Vec<Polyline>>,

@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 
+use super::up::{Axis, Frame};
 use crate::error::field;
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -25,9 +26,18 @@ pub enum Projection {
 pub enum Placement {
     /// An explicit eye, target and up vector.
     LookAt { eye: [f64; 3], target: [f64; 3], up: [f64; 3] },
-    /// Look at the scene's bounding sphere from `direction` (pointing from the scene toward
-    /// the eye), far enough that the sphere fits the image with `margin` (1 = touching).
-    Fit { direction: [f64; 3], up: [f64; 3], margin: f64 },
+    /// Frame the scene from `direction` (pointing from the scene toward the eye; None: the
+    /// three-quarter view about the up axis that looks across the scene's longest horizontal
+    /// extent, `up::Frame`), turned `turn` degrees about the up axis, as near as the scene's
+    /// bounds allow with `margin` (1 = touching the image's edge). `up`: the image's up
+    /// direction; None: the scene's up axis (`up::scene_up`).
+    Fit {
+        direction: Option<[f64; 3]>,
+        up: Option<[f64; 3]>,
+        margin: f64,
+        #[serde(default)]
+        turn: f64,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -39,9 +49,8 @@ pub struct Camera {
     pub far: Option<f64>,
 }
 
-/// Defaults of the camera constructors: seen from the front, a little from the right and above,
-/// with +y up, a 35 degree vertical field of view, and 5% room around the scene.
-pub const DEFAULT_DIRECTION: [f64; 3] = [0.35, 0.3, 1.0];
+/// Defaults of the camera constructors: +y up for a look-at camera (a fitted one takes the
+/// scene's up axis), a 35 degree vertical field of view, and 5% room around the scene.
 pub const DEFAULT_UP: [f64; 3] = [0.0, 1.0, 0.0];
 pub const DEFAULT_FOV_Y: f64 = 35.0;
 pub const DEFAULT_MARGIN: f64 = 1.05;
@@ -52,11 +61,7 @@ impl Default for Camera {
     /// Framed to fit from the default direction.
     fn default() -> Self {
         Camera {
-            placement: Placement::Fit {
-                direction: DEFAULT_DIRECTION,
-                up: DEFAULT_UP,
-                margin: DEFAULT_MARGIN,
-            },
+            placement: Placement::Fit { direction: None, up: None, margin: DEFAULT_MARGIN, turn: 0.0 },
             projection: Projection::Perspective { fov_y_deg: DEFAULT_FOV_Y },
             near: None,
             far: None,
@@ -204,17 +209,22 @@ impl Camera {
                     return Err(Error::invalid(f("up"), "must not be parallel to the viewing direction"));
                 }
             }
-            Placement::Fit { direction, up, margin } => {
-                let d = unit(&f("direction"), direction)?;
-                let u = unit(&f("up"), up)?;
-                if d.cross(u).length() < 1e-9 {
-                    return Err(Error::invalid(
-                        f("up"),
-                        format!("must not be parallel to {}", f("direction")),
-                    ));
+            Placement::Fit { direction, up, margin, turn } => {
+                let d = direction.map(|d| unit(&f("direction"), d)).transpose()?;
+                let u = up.map(|u| unit(&f("up"), u)).transpose()?;
+                if let (Some(d), Some(u)) = (d, u) {
+                    if d.cross(u).length() < 1e-9 {
+                        return Err(Error::invalid(
+                            f("up"),
+                            format!("must not be parallel to {}", f("direction")),
+                        ));
+                    }
                 }
                 if !(margin > 0.0 && margin.is_finite()) {
                     return Err(Error::invalid(f("margin"), format!("must be finite and > 0, got {margin}")));
+                }
+                if !turn.is_finite() {
+                    return Err(Error::invalid(f("turn"), format!("must be finite, got {turn}")));
                 }
             }
         }
@@ -240,36 +250,39 @@ impl Camera {
         Ok(())
     }
 
-    /// Matrices for an image of the given aspect ratio (width / height) showing `scene`.
-    pub fn resolve(&self, scene: Sphere, aspect: f64) -> Result<ResolvedCamera> {
+    /// Matrices for an image of the given aspect ratio (width / height) showing `scene`, framed
+    /// by its box and sphere.
+    pub fn resolve(&self, scene: &SceneBounds, aspect: f64) -> Result<ResolvedCamera> {
+        self.resolve_with(scene, &|n| n.map(|n| scene.support(n)), aspect)
+    }
+
+    /// `resolve`, framed by `support`: how far the scene reaches from its sphere's centre along
+    /// each of four directions (at most what its box and sphere reach, at least what it holds).
+    pub fn resolve_with(
+        &self,
+        scene: &SceneBounds,
+        support: &dyn Fn([DVec3; 4]) -> [f64; 4],
+        aspect: f64,
+    ) -> Result<ResolvedCamera> {
         let (eye, target, up, projection) = match self.placement {
             Placement::LookAt { eye, target, up } => {
                 (DVec3::from_array(eye), DVec3::from_array(target), DVec3::from_array(up), self.projection)
             }
-            Placement::Fit { direction, up, margin } => {
-                let dir = direction_of(DVec3::from_array(direction));
-                let r = scene.radius * margin;
-                match self.projection {
-                    Projection::Perspective { fov_y_deg } => {
-                        // the narrower of the two fields of view decides the distance
-                        let half_y = (fov_y_deg.to_radians() / 2.0).tan();
-                        let half = half_y.min(half_y * aspect).atan();
-                        let dist = r / half.sin();
-                        (scene.center + dir * dist, scene.center, DVec3::from_array(up), self.projection)
-                    }
-                    Projection::Orthographic { .. } => {
-                        let height = 2.0 * r * (1.0f64 / aspect).max(1.0);
-                        let eye = scene.center + dir * (2.0 * r.max(1e-300));
-                        (eye, scene.center, DVec3::from_array(up), Projection::Orthographic { height })
-                    }
-                }
+            Placement::Fit { direction, up, margin, turn } => {
+                let (dir, up) = fit_view(scene, direction, up, turn);
+                let (eye, projection) = fit(scene, support, dir, up, margin, aspect, self.projection);
+                let forward = -dir;
+                let depth = (scene.sphere.center - eye).dot(forward);
+                let target =
+                    eye + forward * if depth > 0.0 { depth } else { scene.sphere.radius.max(1e-300) };
+                (eye, target, up, projection)
             }
         };
         let view = look_at(eye, target, up);
         // clip distances that enclose the scene's sphere
         let forward = direction_of(target - eye);
-        let d = (scene.center - eye).dot(forward);
-        let r = scene.radius.max(1e-300);
+        let d = (scene.sphere.center - eye).dot(forward);
+        let r = scene.sphere.radius.max(1e-300);
         let orthographic = matches!(projection, Projection::Orthographic { .. });
         let (auto_near, auto_far) = if orthographic {
             ((d - r * 1.01).max(0.0), (d + r * 1.01).max(r * 1e-3))
@@ -293,8 +306,114 @@ impl Camera {
         if !view.is_finite() || !proj.is_finite() {
             return Err(Error::invalid("camera", "gives a non-finite view or projection matrix"));
         }
-        let scale = power_of_two_above(scene.radius);
+        let scale = power_of_two_above(scene.sphere.radius);
         Ok(ResolvedCamera { view, proj, near, far, orthographic, eye, forward, fov_or_height, aspect, scale })
+    }
+}
+
+/// What a fitted camera frames: a sphere and a box around every mesh as placed (the box's
+/// corners, in world coordinates), and the scene's up axis.
+#[derive(Clone, Copy, Debug)]
+pub struct SceneBounds {
+    pub sphere: Sphere,
+    pub corners: [DVec3; 8],
+    pub up: Axis,
+}
+
+impl SceneBounds {
+    /// The bounds of a sphere alone (its box the cube around it).
+    pub fn of_sphere(sphere: Sphere, up: Axis) -> SceneBounds {
+        let corners = std::array::from_fn(|k| {
+            let sign = |bit: usize| if k >> bit & 1 == 1 { 1.0 } else { -1.0 };
+            sphere.center + DVec3::new(sign(0), sign(1), sign(2)) * sphere.radius
+        });
+        SceneBounds { sphere, corners, up }
+    }
+
+    /// The largest of `n . (p - c)` over the scene (`c` the sphere's centre): the smaller of the
+    /// box's and the sphere's, both enclosing it.
+    pub fn support(&self, n: DVec3) -> f64 {
+        let c = self.sphere.center;
+        let boxed = self.corners.iter().map(|&p| (p - c).dot(n)).fold(f64::NEG_INFINITY, f64::max);
+        boxed.min(self.sphere.radius * length_of(n))
+    }
+}
+
+/// A fitted camera's direction (scene -> eye, unit) and image up: `direction` or the
+/// three-quarter view across the scene's longest horizontal extent, turned `turn` degrees about
+/// up; `up` or the scene's up axis (and where that is parallel to the direction, as a view from
+/// straight above, the canonical frame's back: its front at the image's bottom).
+fn fit_view(
+    scene: &SceneBounds,
+    direction: Option<[f64; 3]>,
+    up: Option<[f64; 3]>,
+    turn: f64,
+) -> (DVec3, DVec3) {
+    let axis = scene.up.vector();
+    let up_given = up.map(|u| direction_of(DVec3::from_array(u)));
+    let u = up_given.unwrap_or(axis);
+    let frame = match direction {
+        Some(_) => Frame::canonical(u),
+        None => Frame::across(u, &scene.corners),
+    };
+    let dir = direction.map_or_else(|| frame.three_quarter(), |d| direction_of(DVec3::from_array(d)));
+    let dir = glam::DQuat::from_axis_angle(u, turn.to_radians()) * dir;
+    let up = if up_given.is_none() && dir.cross(u).length() < 1e-9 { -Frame::canonical(u).front } else { u };
+    (dir, up)
+}
+
+/// The eye that frames `scene` seen along -`dir` with `up` up, with `margin` room, and the
+/// projection (an orthographic one gets the height that fits). A perspective eye is the nearest
+/// from which every point of the scene lies inside the view's four side planes shrunk by
+/// `margin`: each plane's offset is the scene's `support` along its normal, the eye's depth the
+/// larger that the two axes need, and it sits midway across the other.
+fn fit(
+    scene: &SceneBounds,
+    support: &dyn Fn([DVec3; 4]) -> [f64; 4],
+    dir: DVec3,
+    up: DVec3,
+    margin: f64,
+    aspect: f64,
+    projection: Projection,
+) -> (DVec3, Projection) {
+    let f = -dir;
+    let s = direction_of(f.cross(up));
+    let v = s.cross(f);
+    let c = scene.sphere.center;
+    // an empty scene reaches nowhere: its box and sphere (the unit sphere) frame it
+    let support = |normals: [DVec3; 4]| {
+        let h = support(normals);
+        if h.iter().all(|x| x.is_finite()) {
+            h
+        } else {
+            normals.map(|n| scene.support(n))
+        }
+    };
+    match projection {
+        Projection::Perspective { fov_y_deg } => {
+            let ty = (fov_y_deg.to_radians() / 2.0).tan() / margin;
+            let tx = ty * aspect;
+            let place = |[r, l, t, b]: [f64; 4]| {
+                let depth = (-(r + l) / (2.0 * tx)).min(-(t + b) / (2.0 * ty));
+                (s * ((r - l) / 2.0) + v * ((t - b) / 2.0) + f * depth, depth)
+            };
+            let normals = [s - f * tx, -s - f * tx, v - f * ty, -v - f * ty];
+            let (offset, depth) = place(support(normals));
+            // a scene without extent (a point, a flat box edge-on) is framed by its sphere
+            let offset = if depth < 0.0 {
+                offset
+            } else {
+                place(normals.map(|n| scene.sphere.radius * length_of(n))).0
+            };
+            (c + offset, projection)
+        }
+        Projection::Orthographic { .. } => {
+            let [r, l, t, b] = support([s, -s, v, -v]);
+            let height = ((t + b).max((r + l) / aspect) * margin).max(scene.sphere.radius * 1e-6);
+            let reach = (scene.sphere.radius * margin).max(1e-300);
+            let eye = c + s * ((r - l) / 2.0) + v * ((t - b) / 2.0) + dir * (2.0 * reach);
+            (eye, Projection::Orthographic { height })
+        }
     }
 }
 
@@ -354,12 +473,45 @@ mod tests {
     }
 
     #[test]
+    fn fit_frames_a_tall_box_to_the_image_s_height() {
+        // a bottle 10 tall and 1 wide, z up: upright in the image, filling its height
+        let lo = DVec3::new(-0.5, -0.5, 0.0);
+        let hi = DVec3::new(0.5, 0.5, 10.0);
+        let corners = std::array::from_fn(|k| {
+            DVec3::new([lo.x, hi.x][k & 1], [lo.y, hi.y][k >> 1 & 1], [lo.z, hi.z][k >> 2 & 1])
+        });
+        let center = (lo + hi) / 2.0;
+        let sphere = Sphere { center, radius: (hi - lo).length() / 2.0 };
+        let scene = SceneBounds { sphere, corners, up: Axis::Z };
+        let r = Camera::default().resolve(&scene, 4.0 / 3.0).unwrap();
+        let vp = r.proj * r.view;
+        let ndc: Vec<DVec3> = corners.iter().map(|&p| vp.project_point3(p)).collect();
+        let (top, bottom) = ndc.iter().fold((-9.0f64, 9.0f64), |(t, b), p| (t.max(p.y), b.min(p.y)));
+        let right = ndc.iter().fold(0.0f64, |m, p| m.max(p.x.abs()));
+        assert!(
+            (top - 1.0 / DEFAULT_MARGIN).abs() < 1e-9 && (bottom + 1.0 / DEFAULT_MARGIN).abs() < 1e-9,
+            "{top} {bottom}"
+        );
+        assert!(right < 0.5, "narrow: {right}");
+        // upright: the bottle's top above its foot
+        let foot = vp.project_point3(DVec3::new(0.0, 0.0, 0.0));
+        let head = vp.project_point3(DVec3::new(0.0, 0.0, 10.0));
+        assert!(head.y > foot.y + 1.0 && (head.x - foot.x).abs() < 0.1);
+    }
+
+    #[test]
     fn fit_frames_the_sphere_and_encloses_it() {
-        let cam = Camera::default();
+        let cam = Camera {
+            placement: Placement::Fit { direction: Some([0.35, 0.3, 1.0]), up: None, margin: 1.0, turn: 0.0 },
+            ..Camera::default()
+        };
         let s = Sphere { center: DVec3::new(1.0, 2.0, 3.0), radius: 2.0 };
-        let r = cam.resolve(s, 2.0).unwrap();
+        let r = cam.resolve(&SceneBounds::of_sphere(s, Axis::Y), 2.0).unwrap();
         let c = r.view.transform_point3(s.center);
         assert!(-c.z - s.radius > r.near && -c.z + s.radius < r.far);
         assert!(c.x.abs() < 1e-9 && c.y.abs() < 1e-9);
+        // the sphere's box is larger than the sphere: the sphere frames it, touching top and bottom
+        let half = (35f64.to_radians() / 2.0).tan();
+        assert!(((s.radius / (-c.z)).asin().tan() / half - 1.0).abs() < 1e-9);
     }
 }

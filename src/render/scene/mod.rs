@@ -13,13 +13,14 @@ pub mod material;
 pub mod model;
 pub mod options;
 pub mod outputs;
+pub mod up;
 
 use glam::{DMat3, DMat4, DVec3};
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 
-use camera::{Camera, Sphere};
+use camera::{Camera, SceneBounds, Sphere};
 use light::Light;
 use material::Material;
 
@@ -161,10 +162,12 @@ pub struct Scene {
     pub outlines: Option<Outlines>,
     /// The frame effects' settings (paper grain).
     pub effects: SceneEffects,
+    /// The up axis fitted cameras keep up and turn about (`up::scene_up` decides it).
+    pub up: up::Axis,
 }
 
 impl Default for Scene {
-    /// No meshes; the default camera, key light and white ambient light; no outlines.
+    /// No meshes; the default camera, key light and white ambient light; no outlines; +y up.
     fn default() -> Self {
         Scene {
             items: Vec::new(),
@@ -173,6 +176,7 @@ impl Default for Scene {
             ambient: [1.0; 3],
             outlines: None,
             effects: SceneEffects::default(),
+            up: up::DEFAULT_UP,
         }
     }
 }
@@ -203,6 +207,44 @@ impl Scene {
             },
             _ => Sphere { center: DVec3::ZERO, radius: 1.0 },
         })
+    }
+}
+
+impl Scene {
+    /// What a fitted camera frames: the bounding sphere, the world box around every mesh's own
+    /// box as placed (`mesh_box`: its min and max corners), and the up axis. An empty scene's box
+    /// is its sphere's cube.
+    pub fn bounds(
+        &self,
+        mesh_sphere: impl Fn(MeshId) -> Result<Sphere>,
+        mesh_box: impl Fn(MeshId) -> Result<[DVec3; 2]>,
+    ) -> Result<SceneBounds> {
+        let sphere = self.bounding_sphere(mesh_sphere)?;
+        let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+        for item in &self.items {
+            let m = item.model_matrix();
+            let [a, b] = mesh_box(item.mesh)?;
+            for k in 0..8 {
+                let corner = DVec3::new(
+                    if k & 1 == 0 { a.x } else { b.x },
+                    if k & 2 == 0 { a.y } else { b.y },
+                    if k & 4 == 0 { a.z } else { b.z },
+                );
+                let p = m.transform_point3(corner);
+                (lo, hi) = (lo.min(p), hi.max(p));
+            }
+        }
+        if !(lo.is_finite() && hi.is_finite()) {
+            return Ok(SceneBounds::of_sphere(sphere, self.up));
+        }
+        let corners = std::array::from_fn(|k| {
+            DVec3::new(
+                if k & 1 == 0 { lo.x } else { hi.x },
+                if k & 2 == 0 { lo.y } else { hi.y },
+                if k & 4 == 0 { lo.z } else { hi.z },
+            )
+        });
+        Ok(SceneBounds { sphere, corners, up: self.up })
     }
 }
 

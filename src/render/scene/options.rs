@@ -9,7 +9,9 @@ use crate::render::color::Srgb;
 use super::camera::Camera;
 use super::light::Light;
 use super::material::Material;
+use super::up::{scene_up, Axis};
 use super::{FrameSpec, MeshId, Scene, SceneItem, IDENTITY};
+use crate::error::Result;
 use crate::render::effects::outlines::settings::Outlines;
 use crate::render::effects::scene_settings::SceneEffects;
 
@@ -32,6 +34,9 @@ pub struct RenderOptions {
     /// Size, outputs, accuracy knobs and background.
     #[serde(flatten)]
     pub frame: FrameSpec,
+    /// The scene's up axis; None: the one its meshes name (a file's convention), else +y
+    /// (`up::scene_up`).
+    pub up: Option<Axis>,
 }
 
 impl Default for RenderOptions {
@@ -46,20 +51,23 @@ impl Default for RenderOptions {
             outlines: scene.outlines,
             effects: scene.effects,
             frame: FrameSpec::default(),
+            up: None,
         }
     }
 }
 
-/// A mesh of a render, with its own material and transform where it has them.
-pub type MeshSpec = (MeshId, Option<Material>, Option<[[f64; 4]; 4]>);
+/// A mesh of a render, with its own material, transform and up axis where it has them.
+pub type MeshSpec = (MeshId, Option<Material>, Option<[[f64; 4]; 4]>, Option<Axis>);
 
 impl RenderOptions {
-    /// The scene of `meshes` with these options.
-    pub fn scene(&self, meshes: &[MeshSpec]) -> Scene {
-        Scene {
+    /// The scene of `meshes` with these options; refused when the meshes name different up
+    /// axes and the options none.
+    pub fn scene(&self, meshes: &[MeshSpec]) -> Result<Scene> {
+        let up = scene_up(self.up, meshes.iter().map(|m| m.3))?;
+        Ok(Scene {
             items: meshes
                 .iter()
-                .map(|(mesh, material, transform)| SceneItem {
+                .map(|(mesh, material, transform, _)| SceneItem {
                     mesh: *mesh,
                     material: material.clone().unwrap_or_else(|| self.material.clone()),
                     transform: transform.unwrap_or(self.transform),
@@ -70,6 +78,7 @@ impl RenderOptions {
             ambient: self.ambient,
             outlines: self.outlines.clone(),
             effects: self.effects.clone(),
-        }
+            up,
+        })
     }
 }

@@ -11,14 +11,26 @@ const FIELDS: &[Field] = &[
     Field::choice("projection", &["perspective", "orthographic"], "the projection").fixed(),
     Field::new("eye", Kind::Vec3, "a look-at camera's position").optional(),
     Field::new("target", Kind::Vec3, "the point a look-at camera looks at").optional(),
-    Field::new("up", Kind::Vec3, "the direction that is up in the image"),
+    Field::new(
+        "up",
+        Kind::Vec3,
+        "the direction that is up in the image (a fitted camera's None: the scene's up axis)",
+    )
+    .optional(),
     Field::new(
         "direction",
         Kind::Vec3,
-        "a fitted camera's direction from the scene toward the eye (the scene is framed to fit)",
+        "a fitted camera's direction from the scene toward the eye (None: a three-quarter view about the up axis, across the scene's longest horizontal extent)",
     )
     .optional(),
     Field::float("margin", 0.5, 4.0, "a fitted camera's room around the scene (1: touching)").optional(),
+    Field::float(
+        "turn",
+        -360.0,
+        360.0,
+        "degrees a fitted camera's view turns about the up axis, counter-clockwise seen from above (a turntable's views)",
+    )
+    .optional(),
     Field::float("fov_y", 1.0, 179.0, "vertical field of view in degrees, in (0, 180)").optional(),
     Field::float("height", 0.0, 100.0, "height of an orthographic view in world units, > 0").optional(),
     Field::float("near", 0.0, 100.0, "near clip distance (None: from the scene's bounds)").optional(),
@@ -29,7 +41,7 @@ const EXTRAS: &[Field] =
     &[Field::new("orthographic", Kind::Bool, "a fitted camera with an orthographic projection")];
 
 const CONSTRUCTORS: &[Constructor] = &[
-    named!("Camera", "fit", ["direction", "up", "fov_y", "margin", "orthographic"], 1, 0),
+    named!("Camera", "fit", ["direction", "up", "fov_y", "margin", "turn", "orthographic"], 1, 0),
     named!("Camera", "look_at", ["eye", "target", "up", "fov_y", "near", "far"], 2, 1),
     named!("Camera", "orthographic", ["eye", "target", "up", "height", "near", "far"], 2, 1),
 ];
@@ -68,9 +80,11 @@ impl Described for Camera {
             ("projection", _, Projection::Orthographic { .. }) => "orthographic".into(),
             ("eye", LookAt { eye, .. }, _) => eye.into(),
             ("target", LookAt { target, .. }, _) => target.into(),
-            ("up", LookAt { up, .. } | Fit { up, .. }, _) => up.into(),
+            ("up", LookAt { up, .. }, _) => up.into(),
+            ("up", Fit { up, .. }, _) => up.into(),
             ("direction", Fit { direction, .. }, _) => direction.into(),
             ("margin", Fit { margin, .. }, _) => margin.into(),
+            ("turn", Fit { turn, .. }, _) => turn.into(),
             ("fov_y", _, Projection::Perspective { fov_y_deg }) => fov_y_deg.into(),
             ("height", _, Projection::Orthographic { height }) => height.into(),
             ("near", ..) => self.near.into(),
@@ -84,15 +98,17 @@ impl Described for Camera {
         match (field, &mut self.placement, &mut self.projection) {
             ("eye", LookAt { eye, .. }, _) => *eye = v.triple(field)?,
             ("target", LookAt { target, .. }, _) => *target = v.triple(field)?,
-            ("up", LookAt { up, .. } | Fit { up, .. }, _) => *up = v.triple(field)?,
-            ("direction", Fit { direction, .. }, _) => *direction = v.triple(field)?,
+            ("up", LookAt { up, .. }, _) => *up = v.triple(field)?,
+            ("up", Fit { up, .. }, _) => *up = v.opt_triple(field)?,
+            ("direction", Fit { direction, .. }, _) => *direction = v.opt_triple(field)?,
             ("margin", Fit { margin, .. }, _) => *margin = v.float(field)?,
+            ("turn", Fit { turn, .. }, _) => *turn = v.float(field)?,
             ("fov_y", _, Projection::Perspective { fov_y_deg }) => *fov_y_deg = v.float(field)?,
             ("height", _, Projection::Orthographic { height }) => *height = v.float(field)?,
             ("near", ..) => self.near = v.opt_float(field)?,
             ("far", ..) => self.far = v.opt_float(field)?,
             ("eye" | "target", ..) => return Err(not_here(field, "a look-at camera")),
-            ("direction" | "margin", ..) => return Err(not_here(field, "a fitted camera")),
+            ("direction" | "margin" | "turn", ..) => return Err(not_here(field, "a fitted camera")),
             ("fov_y", ..) => return Err(not_here(field, "a perspective camera")),
             _ => return Err(not_here(field, "an orthographic camera")),
         }

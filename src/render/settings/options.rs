@@ -5,6 +5,7 @@ use crate::error::{Error, Result};
 use crate::render::effects::outlines::settings::Outlines;
 use crate::render::effects::scene_settings as effects;
 use crate::render::scene::options::RenderOptions;
+use crate::render::scene::up::Axis;
 use crate::render::scene::{Output, Outputs, MAX_SUPERSAMPLE};
 
 const OWN_FIELDS: &[Field] = &[
@@ -14,7 +15,17 @@ const OWN_FIELDS: &[Field] = &[
         Kind::Matrix,
         "a 4x4 affine model -> world matrix (row-major, applied to column vectors) for meshes that give none",
     ),
-    Field::new("camera", Kind::Setting("Camera"), "the camera (Camera.fit(): the scene framed from the front)"),
+    Field::new(
+        "camera",
+        Kind::Setting("Camera"),
+        "the camera (Camera.fit(): the scene framed from a three-quarter view about its up axis)",
+    ),
+    Field::new(
+        "up",
+        Kind::Choice(Axis::NAMES),
+        "the scene's up axis, which a fitted camera keeps up in the image and turns about (None: its meshes' own, as toonmesh.load reads a file's convention, else y)",
+    )
+    .optional(),
     Field::new("lights", Kind::Lights, "a Light or a list of up to 8"),
     Field::new("ambient", Kind::Color, "the ambient light's sRGB colour"),
     Field::new("background", Kind::Rgba, "sRGB or sRGBA where no mesh is"),
@@ -52,6 +63,7 @@ const OWN_PARAMS: &[&str] = &[
     "material",
     "transform",
     "camera",
+    "up",
     "lights",
     "ambient",
     "background",
@@ -91,6 +103,7 @@ impl Described for RenderOptions {
             "material" => Value::setting(Setting::Material(self.material.clone())),
             "transform" => Value::Matrix(self.transform),
             "camera" => Value::setting(Setting::Camera(self.camera)),
+            "up" => self.up.map_or(Value::None, |a| a.name().into()),
             "lights" => Value::Lights(self.lights.clone()),
             "ambient" => self.ambient.into(),
             "background" => Value::Rgba(f.background.map(|c| format!("{c}").parse().unwrap_or(c as f64))),
@@ -112,6 +125,8 @@ impl Described for RenderOptions {
         let f = &mut self.frame;
         match (field, v) {
             ("transform", Value::Matrix(m)) => self.transform = m,
+            ("up", Value::None) => self.up = None,
+            ("up", v) => self.up = Some(Axis::parse(field, &v.text(field)?)?),
             ("lights", Value::Lights(l)) => self.lights = l,
             ("ambient", v) => self.ambient = v.triple(field)?,
             ("background", Value::Rgba(c)) => f.background = c.map(|x| x as f32),

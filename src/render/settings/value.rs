@@ -62,6 +62,13 @@ impl Value {
         }
     }
 
+    pub fn opt_triple(self, field: &str) -> Result<Option<[f64; 3]>> {
+        match self {
+            Value::None => Ok(None),
+            other => other.triple(field).map(Some),
+        }
+    }
+
     pub fn text(self, field: &str) -> Result<String> {
         match self {
             Value::Text(s) => Ok(s),

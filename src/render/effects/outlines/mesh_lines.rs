@@ -13,14 +13,12 @@ use glam::{DMat4, DVec3};
 use crate::cancel::Cancel;
 use crate::edges::chains::chain_edges;
 use crate::edges::contours::ContourMesh;
-use crate::edges::crooked_creases::drop_crooked_creases;
 use crate::edges::outlines::{LineKind, Outline, Statics};
-use crate::edges::short_creases::drop_short_creases;
+use crate::edges::short_creases::keep_drawn_creases;
 use crate::edges::zero_set::Polylines;
 use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
 use crate::mesh::weld::without_back_to_back;
-use crate::mesh::Bounds;
 use crate::render::gpu_mesh::{GpuMesh, HostMesh, NormalMode};
 use crate::render::graph::effect::{HostInputs, HostStep};
 use crate::render::graph::report::FrameReport;
@@ -159,9 +157,7 @@ impl MeshLines {
         let statics =
             self.statics[outlines.weld as usize].at(outlines.crease_angle, min_crease, max_turn, || {
                 let mut fe = crate::parallel::install(|| index.feature_edges(outlines.crease_angle))?;
-                let diagonal = Bounds::of(index.positions()).diagonal();
-                drop_short_creases(&mut fe, index.positions(), min_crease * diagonal);
-                drop_crooked_creases(&mut fe, index.positions(), max_turn);
+                keep_drawn_creases(&mut fe, index.positions(), min_crease, max_turn);
                 Ok(fe)
             })?;
         let mut curves = Vec::new();

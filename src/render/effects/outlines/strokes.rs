@@ -107,10 +107,7 @@ pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64)
             let r = entry / 2;
             if used[r] {
                 // back at the start of a loop: close it
-                if let Some(&p) = points.first() {
-                    points.push(p);
-                    widths.push(widths[0]);
-                }
+                close(&mut points, &mut widths);
                 break;
             }
             used[r] = true;
@@ -121,7 +118,7 @@ pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64)
             let it: Box<dyn Iterator<Item = (&[f64; 2], &f64)>> =
                 if forward { Box::new(pairs) } else { Box::new(pairs.rev()) };
             for (&p, &w) in it {
-                if points.last() != Some(&p) {
+                if !points.last().is_some_and(|&q| same_point(p, q)) {
                     points.push(p);
                     widths.push(w);
                 }
@@ -132,8 +129,7 @@ pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64)
                 usize::MAX => break,
                 next if next / 2 == r => {
                     // the run's own ends meet
-                    points.push(points[0]);
-                    widths.push(widths[0]);
+                    close(&mut points, &mut widths);
                     break;
                 }
                 next => entry = next,
@@ -145,6 +141,26 @@ pub fn join_runs(runs: Vec<Polyline>, by_kind: bool, gap: impl Fn(usize) -> f64)
     starts.sort_by_key(|s| s.0);
     out.extend(starts.into_iter().map(|s| s.1));
     out
+}
+
+/// Points closer than this (pixels) are one: where runs meet, their ends differ by rounding.
+const SAME_POINT: f64 = 1e-6;
+
+fn same_point(a: [f64; 2], b: [f64; 2]) -> bool {
+    (a[0] - b[0]).hypot(a[1] - b[1]) <= SAME_POINT
+}
+
+/// Closes a loop: its first point again at its end (in place of a last point that is the first
+/// but for rounding).
+fn close(points: &mut Vec<[f64; 2]>, widths: &mut Vec<f64>) {
+    if let (Some(&first), Some(&last)) = (points.first(), points.last()) {
+        if points.len() > 1 && same_point(first, last) {
+            points.pop();
+            widths.pop();
+        }
+        points.push(first);
+        widths.push(widths[0]);
+    }
 }
 
 /// `runs` without the short ones that lie wholly within `gap(kind)` of a longer run of the same
