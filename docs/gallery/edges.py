@@ -1,6 +1,8 @@
-"""Draws docs/edges.png: mesh-space outlines (toonmesh.edges.EdgeIndex) and image-space outlines
+"""Outlines found on the mesh and in the image.
+
+Mesh-space outlines (toonmesh.edges.EdgeIndex) and image-space outlines
 (toonmesh.edges.detect_edges) of the test meshes. Needs matplotlib and trimesh (not package
-dependencies). Run from the repository root: ``python docs/edges_figure.py``.
+dependencies).
 
 Hidden lines are removed with a small NumPy z-buffer, which also provides the normal and depth
 buffers for the image-space panel.
@@ -18,7 +20,7 @@ from matplotlib.collections import LineCollection  # noqa: E402
 
 from toonmesh import edges as te  # noqa: E402
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 260
 DISTANCE = 2.6  # eye distance in bounding-sphere radii
 
@@ -141,9 +143,9 @@ def main():
     panel(axes[0], "fandisk.obj", (1.0, 0.8, -1.4), "EdgeIndex: fandisk, crease_angle=30")
     panel(axes[1], "teapot.obj", (0.8, 0.9, 1.5), "EdgeIndex: teapot, crease_angle=60", crease_angle=60.0)
     panel(axes[2], "fandisk.obj", (1.0, 0.8, -1.4), "detect_edges: normal + depth", image_space=True)
-    out = ROOT / "docs" / "edges.png"
+    out = Path("edges.png")
     fig.savefig(out, dpi=100)
-    print(out.relative_to(ROOT), out.stat().st_size // 1024, "KB")
+    print("wrote", out, out.stat().st_size // 1024, "KB")
 
 
 if __name__ == "__main__":

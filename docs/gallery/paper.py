@@ -1,9 +1,10 @@
-"""Draws docs/paper.png: paper grain on the smoothed bunny. Left to right: toon bands and ink
+"""Paper grain.
+
+Paper grain on the smoothed bunny. Left to right: toon bands and ink
 without paper; ``Paper()`` (the built-in grain, fixed to the screen); ``Paper(strength=0.9,
 scale=2)`` under hatching, where the tooth breaks up strokes and lines as pencil on rough paper;
 ``Paper(space="surface")``, the grain fixed to the surface; and a user's grain image (a canvas
 weave made here with NumPy).
-Run from the repository root: ``python docs/paper_figure.py``.
 """
 
 from pathlib import Path
@@ -14,7 +15,6 @@ from PIL import Image
 import toonmesh as tm
 from toonmesh.data import bunny
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 260
 
 
@@ -37,7 +37,7 @@ def main() -> None:
         tm.render(V, F, material=bands, paper=tm.Paper(space="surface", strength=0.8, scale=2.0), **kw).color,
         tm.render(V, F, material=bands, paper=tm.Paper(canvas(), strength=0.5, scale=1.0), **kw).color,
     ]
-    out = ROOT / "docs" / "paper.png"
+    out = Path("paper.png")
     Image.fromarray(np.concatenate(cells, axis=1)).save(out, optimize=True)
     print("wrote", out)
 

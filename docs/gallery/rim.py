@@ -1,9 +1,10 @@
-"""Draws docs/rim.png: the rim light on the smoothed bunny in toon bands. Left to right: no rim;
+"""Rim light.
+
+The rim light on the smoothed bunny in toon bands. Left to right: no rim;
 ``Rim()`` (white light added where n.v < 0.3); ``Rim(side="lit")`` under a light from the right;
 ``Rim("#5080ff", side="shadowed", blend="mix")``, a back light's glow painted on the dark side;
 and a soft orange rim (``softness=0.3``, painted over) on a hatched bunny. On a dark background,
 as rim light is usually shown.
-Run from the repository root: ``python docs/rim_figure.py``.
 """
 
 from pathlib import Path
@@ -14,7 +15,6 @@ from PIL import Image
 import toonmesh as tm
 from toonmesh.data import bunny
 
-ROOT = Path(__file__).resolve().parent.parent
 SIZE = 260
 
 
@@ -33,7 +33,7 @@ def main() -> None:
         tm.render(V, F, material=tm.Material.hatching(rim=tm.Rim("#ff9020", width=0.5, softness=0.3, strength=1.0, blend="mix")),
                   **kw).color,
     ]
-    out = ROOT / "docs" / "rim.png"
+    out = Path("rim.png")
     Image.fromarray(np.concatenate(cells, axis=1)).save(out, optimize=True)
     print("wrote", out)
 

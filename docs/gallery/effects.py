@@ -1,4 +1,6 @@
-"""Draws docs/effects.png: the toon finish, before (top: the papers' own settings) and after
+"""Toon looks: band borders, tones, hatching and shadows.
+
+The toon finish, before (top: the papers' own settings) and after
 (bottom: the defaults). Columns: the smoothed bunny in toon bands, the bunny cross-hatched, spot
 in bands, spot cross-hatched, and a torus casting a shadow on a floor. Before: hard band borders
 (``band_antialias=False``), the paper's band values (``Material.bands(preset="paper")``: the
@@ -6,7 +8,6 @@ darkest band and the shadow black, so ink vanishes over them) and triplanar hatc
 (``mode="triplanar"``). After: band borders blended over a pixel, the darkest tone keeping 30%
 of the colour, and hatching along the form (principal directions). No supersampling, so the
 band borders show as the renderer draws them.
-Run from the repository root: ``python docs/effects_figure.py``.
 """
 
 from pathlib import Path
@@ -19,7 +20,7 @@ from toonmesh._files import read_mesh
 from toonmesh.bench.effects import SHADOW_SCENES
 from toonmesh.data import bunny
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 300
 
 
@@ -44,7 +45,7 @@ def main() -> None:
                       lights=[tm.Light.directional(direction, shadows=True)], camera=tm.Camera.fit(eye), **kw).color,
         ]
         rows.append(np.concatenate(cells, axis=1))
-    out = ROOT / "docs" / "effects.png"
+    out = Path("effects.png")
     Image.fromarray(np.concatenate(rows, axis=0)).save(out, optimize=True)
     print("wrote", out)
 
