@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import logging
 import sys
+import warnings
 from pathlib import Path
 from typing import List
 
@@ -24,7 +25,9 @@ MODULES = ("toonmesh", "toonmesh.smooth", "toonmesh.edges", "toonmesh.shapes", "
 
 def undocumented(python_dir: Path) -> List[str]:
     """Full names of the public functions, classes and methods of MODULES without a docstring."""
-    package = griffe.load("toonmesh", search_paths=[str(python_dir), *sys.path], force_inspection=True)
+    with warnings.catch_warnings():  # importing every module to read it: their deprecation notices
+        warnings.simplefilter("ignore", DeprecationWarning)
+        package = griffe.load("toonmesh", search_paths=[str(python_dir), *sys.path], force_inspection=True)
     missing = set()
     seen = set()
     stack = [package[name[len("toonmesh."):]] if name != "toonmesh" else package for name in MODULES]

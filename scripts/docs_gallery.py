@@ -79,8 +79,8 @@ def _page(name: str, source: str, figures: Dict[str, bytes], output: str) -> str
     parts = [f"# {title}", "", text, ""]
     for fig in figures:
         parts += [f"![{title}]({fig})", ""]
-    parts += [f"Run it anywhere with toonmesh installed: `python {name}.py` writes "
-              + ", ".join(f"`{f}`" for f in figures) + f" ([{name}.py]({name}.py)).", ""]
+    parts += [f"`python docs/gallery/{name}.py` writes " + ", ".join(f"`{f}`" for f in figures)
+              + f" into the current folder ([{name}.py]({name}.py)):", ""]
     parts += ["```python", code, "```", ""]
     if output.strip():
         parts += ["It prints:", "", "```text", output.rstrip(), "```", ""]

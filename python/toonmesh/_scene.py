@@ -55,7 +55,7 @@ class Mesh:
       on a noisy scan (the bunny) it sharpens the few folds sharper than the angle, which is why
       it is not the default.
 
-    Colour (see README "Colour and textures"); the surface's albedo is the product of its
+    Colour (see docs/colour.md); the surface's albedo is the product of its
     colour and its texture sample, decoded from sRGB to linear light, and multiplies the
     material's colour (its ambient and diffuse, the paper of hatching) in every model:
 
