@@ -27,8 +27,9 @@ egl_ok() {
     { have_file '/usr/lib/*/dri/*_dri.so' || have_file '/usr/lib/dri/*_dri.so' || have_file '/usr/lib64/dri/*_dri.so'; }
 }
 
-# Debian's names, what the other distributions call them, and what is missing
+# what is missing, by Debian's names
 need=()
+command -v cc >/dev/null 2>&1 || need+=(gcc)  # rustc links with it
 if ! "${PYTHON:-python3}" -c 'import ensurepip, venv' 2>/dev/null; then
   need+=(python3-venv)
 fi
