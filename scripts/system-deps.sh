@@ -53,13 +53,15 @@ if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
   export DEBIAN_FRONTEND=noninteractive
   # an automatic update on a fresh machine may hold the package lock: wait for it
   apt=(apt-get -o DPkg::Lock::Timeout=300 -o Acquire::Retries=3)
-  "${apt[@]}" update -qq
-  "${apt[@]}" install -y -qq --no-install-recommends "${need[@]}" >/dev/null
-  exit 0
+  if "${apt[@]}" update -qq && "${apt[@]}" install -y -qq --no-install-recommends "${need[@]}" >/dev/null; then
+    exit 0
+  fi
+  echo "toonmesh: apt-get could not install them (above); the build goes on without them" >&2
 fi
 
 # without root, or not Debian: say what to install, and go on
-distro=$(. /etc/os-release 2>/dev/null && echo "${ID:-} ${ID_LIKE:-}" || true)
+debian_like=0
+[ -r /etc/os-release ] && grep -qE '^(ID|ID_LIKE)=.*(debian|ubuntu)' /etc/os-release && debian_like=1
 {
   if [ $test_mode -eq 1 ]; then
     echo "toonmesh: the tests need system packages that are missing (both rendering stacks, Chromium);"
@@ -67,13 +69,10 @@ distro=$(. /etc/os-release 2>/dev/null && echo "${ID:-} ${ID_LIKE:-}" || true)
     echo "toonmesh: no Vulkan or EGL driver was found to render with;"
   fi
   echo "  the build goes on: smoothing and lines work, rendering raises GpuUnavailableError until one is there."
-  case " $distro " in
-    *" fedora "*|*" rhel "*)
-      echo "  install them with: sudo dnf install -y mesa-vulkan-drivers vulkan-loader mesa-libEGL mesa-dri-drivers$([ $test_mode -eq 1 ] && echo ' chromium')" ;;
-    *" arch "*)
-      echo "  install them with: sudo pacman -S --needed vulkan-swrast vulkan-icd-loader mesa libglvnd$([ $test_mode -eq 1 ] && echo ' chromium')" ;;
-    *)
-      echo "  install them with: sudo apt-get install -y ${need[*]}" ;;
-  esac
+  if [ $debian_like -eq 1 ]; then
+    echo "  install them with: sudo apt-get install -y ${need[*]}"
+  else
+    echo "  the packages for your distribution are in README.md, section Install (Debian's: ${need[*]})"
+  fi
 } >&2
 exit 0
