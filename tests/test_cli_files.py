@@ -1,5 +1,5 @@
 """The command line on real files: what `smooth` keeps, what `render` draws by default, what a
-broken file gives, and the README's command examples run as written."""
+broken file gives, and the command line page's examples (docs/cli.md) run as written."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ import toonmesh as tm
 from conftest import MESHES, need
 from test_cli import in_process, one_line_error, read_png
 
-README = Path(__file__).resolve().parent.parent / "README.md"
+CLI_PAGE = Path(__file__).resolve().parent.parent / "docs" / "cli.md"
 
 
 def test_smooth_keeps_texture_coordinates_and_closes_no_seam(tmp_path, capsys):
@@ -154,17 +154,17 @@ def test_render_draws_the_demo_outlines_by_default():
     assert render_options(args)["outlines"] == DEMO_OUTLINES
 
 
-def readme_commands():
-    text = README.read_text()
+def page_commands():
+    text = CLI_PAGE.read_text()
     start = text.index("in order, in an empty folder:")
     block = re.search(r"```sh\n(.*?)```", text[start:], flags=re.S).group(1)
     return [shlex.split(line.split("  #")[0]) for line in block.splitlines() if line.startswith("toonmesh ")]
 
 
-def test_the_readme_commands_run_as_written_in_an_empty_folder(tmp_path, capsys, monkeypatch):
+def test_the_cli_page_commands_run_as_written_in_an_empty_folder(tmp_path, capsys, monkeypatch):
     need("trimesh")
     monkeypatch.chdir(tmp_path)
-    commands = readme_commands()
+    commands = page_commands()
     assert len(commands) >= 10
     for cmd in commands:
         if cmd[1:] == ["--version"]:
@@ -177,8 +177,8 @@ def test_the_readme_commands_run_as_written_in_an_empty_folder(tmp_path, capsys,
     assert {"bunny.png", "smooth.ply", "bunny.glb", "lines.svg", "lines.npz", "toonmesh-demo.png"} <= set(
         p.name for p in tmp_path.iterdir())
     assert len(list((tmp_path / "frames").iterdir())) == 16
-    # the edges NPZ holds what the README says it holds
-    text = README.read_text()
+    # the edges NPZ holds what the page says it holds
+    text = CLI_PAGE.read_text()
     said = text[text.index("NPZ holds the visible polylines"):text.index("- **bench**")]
     named = set(re.findall(r"`(\w+)`", said))
     with np.load(tmp_path / "lines.npz") as z:

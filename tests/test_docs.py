@@ -1,36 +1,159 @@
-"""The API reference builds from the docstrings (``make docs``), with a page for each public
-module and a docstring on every public function, class and method."""
+"""The documentation site (``make docs``): it builds with warnings as errors, its gallery's scripts
+run and leave their figures in the built site, every link between its pages resolves, the API
+reference documents every public name, and a browser shows its pages without a broken image."""
 
 from __future__ import annotations
 
 import importlib.util
+import os
+import re
+import shutil
+import subprocess
+import sys
+from html.parser import HTMLParser
 from pathlib import Path
+from typing import Dict, List, Set, Tuple
+from urllib.parse import unquote, urlsplit
+
+import pytest
 
 from conftest import need
 
-SCRIPT = Path(__file__).resolve().parent.parent / "docs" / "api_docs.py"
+ROOT = Path(__file__).resolve().parent.parent
+GUIDES = ("smoothing", "lines", "rendering", "effects", "colour", "files", "viewer", "cli", "batch", "testing",
+          "notebooks")
 
 
-def _api_docs():
-    spec = importlib.util.spec_from_file_location("api_docs", SCRIPT)
+@pytest.fixture(scope="module")
+def site(tmp_path_factory) -> Path:
+    """The site, built once for this module with ``mkdocs build --strict`` into a fresh folder."""
+    need("mkdocs")
+    need("mkdocstrings")
+    out = tmp_path_factory.mktemp("site")
+    env = dict(os.environ, NO_MKDOCS_2_WARNING="1")
+    proc = subprocess.run([sys.executable, "-m", "mkdocs", "build", "--strict", "-f", str(ROOT / "mkdocs.yml"),
+                           "-d", str(out)], cwd=ROOT, env=env, capture_output=True, text=True, timeout=1200,
+                          stdin=subprocess.DEVNULL)
+    log = proc.stdout + proc.stderr
+    assert proc.returncode == 0, log
+    warnings = [line for line in log.splitlines() if line.startswith(("WARNING", "ERROR"))]
+    assert warnings == [], log
+    (out / "build.log").write_text(log)
+    return out
+
+
+def test_the_site_has_the_guides_the_measurements_and_the_api_reference(site):
+    for page in ("index", "install", *GUIDES, "accuracy", "benchmarks", "hard-cases", "api", "internals",
+                 "development"):
+        assert (site / f"{page}.html").is_file(), page
+    text = (site / "smoothing.html").read_text()
+    assert "Feature-preserving smoothing" in text and "volume_constraint" in text
+    # the README's sections shown on the site come from the README itself
+    assert "rustup" in (site / "install.html").read_text()
+    assert "bunny()" in re.sub("<[^>]+>", "", (site / "index.html").read_text())
+
+
+def test_every_gallery_script_ran_and_left_its_figures_in_the_built_site(site):
+    scripts = sorted(p.stem for p in (ROOT / "docs" / "gallery").glob("*.py"))
+    assert len(scripts) >= 10
+    figures = sorted(p.name for p in (site / "gallery").iterdir() if p.suffix in (".png", ".svg"))
+    assert len(figures) >= len(scripts) >= 10, figures
+    index = (site / "gallery" / "index.html").read_text()
+    for name in scripts:
+        page = (site / "gallery" / f"{name}.html").read_text()
+        assert f'href="{name}.html"' in index, name
+        shown = re.findall(r'<img[^>]*src="([^"]+\.(?:png|svg))"', page)
+        assert shown and all((site / "gallery" / src).stat().st_size > 1000 for src in shown), (name, shown)
+        assert "<code" in page and re.search(r"(from|import) toonmesh", re.sub("<[^>]+>", "", page)), name
+    log = (site / "build.log").read_text()
+    assert len(re.findall(r"gallery: \w+\.py ran in", log)) == len(scripts), log
+
+
+class _Links(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.links: List[str] = []
+        self.ids: Set[str] = set()
+
+    def handle_starttag(self, tag: str, attrs: List[Tuple[str, "str | None"]]) -> None:
+        a = dict(attrs)
+        if a.get("id"):
+            self.ids.add(a["id"] or "")
+        for key in ("href", "src"):
+            if a.get(key):
+                self.links.append(a[key] or "")
+
+
+def _parse(path: Path) -> _Links:
+    parser = _Links()
+    parser.feed(path.read_text(encoding="utf-8"))
+    return parser
+
+
+def test_every_internal_link_of_the_built_site_resolves(site):
+    pages: Dict[Path, _Links] = {p: _parse(p) for p in site.rglob("*.html") if p.name != "404.html"}
+    broken = []
+    checked = 0
+    for page, parsed in pages.items():
+        for link in parsed.links:
+            parts = urlsplit(link)
+            if parts.scheme or link.startswith("//") or link.startswith("mailto:"):
+                continue
+            target = (page.parent / unquote(parts.path)).resolve() if parts.path else page
+            if parts.path.endswith("/"):
+                target = target / "index.html"
+            checked += 1
+            if not target.exists():
+                broken.append(f"{page.relative_to(site)}: {link}")
+            elif parts.fragment and target.suffix == ".html":
+                ids = pages[target].ids if target in pages else _parse(target).ids
+                if parts.fragment not in ids:
+                    broken.append(f"{page.relative_to(site)}: {link} (no such anchor)")
+    assert checked > 500
+    assert broken == [], broken
+
+
+def test_the_api_reference_documents_every_public_function_class_and_method(site):
+    need("griffe")
+    spec = importlib.util.spec_from_file_location("docs_api", ROOT / "scripts" / "docs_api.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    return module
+    assert module.undocumented(ROOT / "python") == []
+    api = (site / "api.html").read_text()
+    for name in ("render", "Renderer", "Material", "Camera", "Light", "RenderResult", "Viewer", "smooth.laplacian",
+                 "edges.feature_edges", "testing.assert_images_close", "batch.render_files"):
+        assert f'id="toonmesh.{name}"' in api, name
+    assert "band_antialias" in api  # the render keywords (RenderKeywords), from the core's docstring
 
 
-def test_api_reference_builds_with_every_public_function_documented(tmp_path):
-    need("pdoc")
-    api = _api_docs()
-    pages, warned = api.build(tmp_path)
-    names = {p.relative_to(tmp_path).as_posix() for p in pages}
-    for page in ("toonmesh.html", "toonmesh/smooth.html", "toonmesh/edges.html", "toonmesh/batch.html",
-                 "toonmesh/cli.html", "toonmesh/testing.html", "toonmesh/pytest_plugin.html"):
-        assert page in names, sorted(names)
-    top = (tmp_path / "toonmesh.html").read_text()
-    for name in ("render", "Renderer", "Material", "Camera", "Light", "RenderResult", "Viewer"):
-        assert f'id="{name}"' in top, name  # the rendering API is documented on the package page
-    assert "laplacian" in (tmp_path / "toonmesh" / "smooth.html").read_text()
-    # pdoc cannot evaluate some postponed annotations (a NamedTuple's, under `from __future__ import
-    # annotations`); those pages still render. Anything else is a real problem.
-    assert [w for w in warned if "Error parsing type annotation" not in w] == []
-    assert api.undocumented() == []
+def _chromium() -> str:
+    path = shutil.which("chromium") or shutil.which("chromium-browser")
+    if path is None:
+        if os.environ.get("CI", "").lower() == "true":
+            raise RuntimeError("chromium is not installed: run scripts/system-deps.sh --test as root")
+        pytest.skip("chromium is not installed (scripts/system-deps.sh --test installs it)")
+    return path
+
+
+def test_the_home_page_and_a_gallery_page_show_every_picture_in_a_browser(site, tmp_path):
+    sync_api = need("playwright.sync_api")
+    chromium = _chromium()
+    shots = []
+    with sync_api.sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=chromium, args=["--no-sandbox"])
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            for name in ("index.html", "gallery/index.html", "gallery/papers.html"):
+                page.goto((site / name).as_uri())
+                page.wait_for_load_state("load")
+                images = page.evaluate("Array.from(document.images).map(i => [i.src, i.complete, i.naturalWidth])")
+                assert len(images) >= 1, name
+                broken = [src for src, complete, width in images if not complete or width == 0]
+                assert broken == [], (name, broken)
+                shot = tmp_path / (name.replace("/", "-").replace(".html", ".png"))
+                page.screenshot(path=str(shot), full_page=True)
+                shots.append(shot)
+        finally:
+            browser.close()
+    assert all(s.stat().st_size > 10_000 for s in shots)
+    print("screenshots:", *shots)

@@ -1,5 +1,5 @@
 """How far each function stays correct as coordinates and image values grow or shrink: the
-limits stated in the README's hard-case table, held by tests."""
+limits stated in the hard-case table (docs/hard-cases.md), held by tests."""
 
 from __future__ import annotations
 

@@ -7,7 +7,7 @@ from the kernel), that the frames drawn while dragging were smaller than the las
 full size, and that the kernel's viewer agrees (a cell run afterwards reads its render count);
 then turns the wheel and checks that the bunny grew, and switches the outlines off with the
 on-screen controls and checks that the ink went.
-With TOONMESH_SCREENSHOT=1 it also writes the screenshot the README shows (docs/viewer.png).
+With TOONMESH_SCREENSHOT=1 it also writes the screenshot the viewer's page shows (docs/viewer.png).
 """
 
 from __future__ import annotations
@@ -164,7 +164,7 @@ def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
             last_frame = int(viewer.get_attribute("data-frame"))
             after = _pixels(img.screenshot())
             sizes = page.evaluate("window.__sizes")
-            if os.environ.get("TOONMESH_SCREENSHOT") == "1":  # the README's picture: after the drag
+            if os.environ.get("TOONMESH_SCREENSHOT") == "1":  # the viewer page's picture: after the drag
                 cells.first.screenshot(path=str(SCREENSHOT))
 
             # the wheel turned away from the user zooms in: the bunny covers more of the frame

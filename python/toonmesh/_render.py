@@ -4,7 +4,7 @@ The scene's settings (:class:`Material`, :class:`Light`, :class:`Camera`, :class
 :class:`LineStyle`) are typed objects of the Rust core: frozen, compared by value, picklable,
 with their defaults and checks in one place. Colours are sRGB: ``"#rrggbb"`` or three numbers in
 [0, 1]; shading is computed in linear light and the colour output is encoded back to sRGB. See
-README "Rendering" for the conventions of every output.
+docs/rendering.md for the conventions of every output.
 
 Every render takes one path: :func:`place_meshes` (or :func:`meshes_on_device` for one render)
 puts the scene's meshes on a renderer's device, one upload per geometry, and :func:`draw` or

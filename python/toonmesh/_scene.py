@@ -69,7 +69,7 @@ class Mesh:
       edges and smooth curved parts; scans stay smooth. ``("auto", degrees)`` sets the angle (0
       to 180). On a finely tessellated smooth mesh it gives the smooth normals bit for bit.
 
-    Colour (see README "Colour and textures"); the surface's albedo is the product of its
+    Colour (see docs/colour.md); the surface's albedo is the product of its
     colour and its texture sample, decoded from sRGB to linear light, and multiplies the
     material's colour (its ambient and diffuse, the paper of hatching) in every model:
 

@@ -571,7 +571,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
         (p.add_argument("--weights", choices=_core.SMOOTH_WEIGHTS, default=None), "the method's (or preset's)"),
         (p.add_argument("--boundary", choices=_core.SMOOTH_BOUNDARIES, default=None), "the method's (or preset's)"),
     ):
-        flag.help = f"default: {help_text}" if help_text else "reproduce a peer library's filter (see the README; default: none)"
+        flag.help = f"default: {help_text}" if help_text else "reproduce a peer library's filter (see docs/smoothing.md; default: none)"
         sets(p, flag, (smooth, flag.dest))
     p.add_argument("--weld", action="store_true",
                    help="treat vertices at the same position as one (default: off, but always on for a file "

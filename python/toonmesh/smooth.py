@@ -153,6 +153,9 @@ def _call(smoother: Callable[..., Positions], vertices: Any, faces: Any, options
 
 
 class LaplacianOptions(LaplacianFamilyOptions, total=False):
+    """The keywords of :func:`laplacian` (a TypedDict, for type checkers; see its docstring for
+    each one's meaning, units and default)."""
+
     lamb: Optional[float]
     volume_constraint: Optional[bool]
 
@@ -185,6 +188,9 @@ def laplacian(vertices: Any, faces: Any = None, **options: Unpack[LaplacianOptio
 
 
 class TaubinOptions(LaplacianFamilyOptions, total=False):
+    """The keywords of :func:`taubin` (a TypedDict, for type checkers; see its docstring for
+    each one's meaning, units and default)."""
+
     lamb: Optional[float]
     mu: Optional[float]
 
@@ -210,6 +216,9 @@ def taubin(vertices: Any, faces: Any = None, **options: Unpack[TaubinOptions]) -
 
 
 class HcOptions(LaplacianFamilyOptions, total=False):
+    """The keywords of :func:`hc` (a TypedDict, for type checkers; see its docstring for
+    each one's meaning, units and default)."""
+
     alpha: Optional[float]
     beta: Optional[float]
 
@@ -242,6 +251,9 @@ def hc(vertices: Any, faces: Any = None, **options: Unpack[HcOptions]) -> Positi
 
 
 class ImplicitOptions(LaplacianFamilyOptions, total=False):
+    """The keywords of :func:`implicit` (a TypedDict, for type checkers; see its docstring for
+    each one's meaning, units and default)."""
+
     step: Optional[float]
     tol: Optional[float]
     max_iter: Optional[int]

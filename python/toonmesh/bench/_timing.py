@@ -24,7 +24,7 @@ def median_time(fn: Callable[[], Any], repeat: int = 3, warmup: int = 1) -> floa
 
 
 def table(headers: Sequence[str], rows: List[Sequence[Any]], title: Optional[str] = None) -> str:
-    """A Markdown table (it reads well in a terminal and pastes into the README). Inside
+    """A Markdown table (it reads well in a terminal and pastes into the documentation). Inside
     :func:`recording`, its rows are also kept as records for ``--json``."""
     _record(headers, rows, title)
     cells = [[_fmt(c) for c in r] for r in rows]

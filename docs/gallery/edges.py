@@ -1,10 +1,14 @@
-"""Draws docs/edges.png: mesh-space outlines (toonmesh.edges.EdgeIndex) and image-space outlines
+"""Outlines found on the mesh and in the image.
+
+Mesh-space outlines (toonmesh.edges.EdgeIndex) and image-space outlines
 (toonmesh.edges.detect_edges) of the test meshes. Needs matplotlib and trimesh (not package
-dependencies). Run from the repository root: ``python docs/edges_figure.py``.
+dependencies).
 
 Hidden lines are removed with a small NumPy z-buffer, which also provides the normal and depth
 buffers for the image-space panel.
 """
+
+from pathlib import Path
 
 import matplotlib
 
@@ -12,11 +16,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import trimesh  # noqa: E402
-from figures import MESHES, ROOT  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
 from toonmesh import edges as te  # noqa: E402
 
+ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 260
 DISTANCE = 2.6  # eye distance in bounding-sphere radii
 
@@ -104,7 +108,7 @@ def toon(normal, depth):
 
 
 def panel(ax, name, eye_dir, title, crease_angle=30.0, image_space=False):
-    mesh = trimesh.load(MESHES / name, process=False, force="mesh")
+    mesh = trimesh.load(ROOT / "tests" / "data" / "meshes" / name, process=False, force="mesh")
     V, F = np.asarray(mesh.vertices, float), np.asarray(mesh.faces)
     eye, R, radius = camera(V, eye_dir)
     depth, normal = rasterise(V, F, eye, R, radius)
@@ -139,9 +143,9 @@ def main():
     panel(axes[0], "fandisk.obj", (1.0, 0.8, -1.4), "EdgeIndex: fandisk, crease_angle=30")
     panel(axes[1], "teapot.obj", (0.8, 0.9, 1.5), "EdgeIndex: teapot, crease_angle=60", crease_angle=60.0)
     panel(axes[2], "fandisk.obj", (1.0, 0.8, -1.4), "detect_edges: normal + depth", image_space=True)
-    out = ROOT / "docs" / "edges.png"
+    out = Path("edges.png")
     fig.savefig(out, dpi=100)
-    print(out.relative_to(ROOT), out.stat().st_size // 1024, "KB")
+    print("wrote", out, out.stat().st_size // 1024, "KB")
 
 
 if __name__ == "__main__":

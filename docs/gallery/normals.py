@@ -1,17 +1,22 @@
-"""Draws docs/normals.png: the three normal modes (rows: ``"smooth"``, ``"flat"``, ``"auto"``) on
+"""Normals: smooth, flat or auto.
+
+The three normal modes (rows: ``"smooth"``, ``"flat"``, ``"auto"``) on
 a box, a chess pawn (``shapes.pawn``), the fandisk CAD part and the bunny, with toon bands.
 Smooth shading bends the bands across the box's edges and the pawn's rims, flat shading facets
 the curved parts, and auto keeps both right; on the bunny auto is close to smooth. Needs trimesh
-to read the OBJ file. Run from the repository root: ``python docs/normals_figure.py``.
+to read the OBJ file.
 """
 
+from pathlib import Path
+
 import numpy as np
+from PIL import Image
 import trimesh
-from figures import MESHES, ROOT
 
 import toonmesh as tm
 from toonmesh.data import bunny
 
+ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 220
 
 
@@ -22,7 +27,7 @@ def box():
 
 
 def main() -> None:
-    fandisk = trimesh.load(MESHES / "fandisk.obj", process=False)
+    fandisk = trimesh.load(ROOT / "tests/data/meshes/fandisk.obj", process=False)
     models = [
         (box(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (tm.shapes.pawn(48), tm.Camera.fit((0.0, 0.35, 1.0)), "#e8c07a"),
@@ -35,7 +40,7 @@ def main() -> None:
                          height=SIZE, supersample=2).color for (V, F), camera, colour in models]
         rows.append(np.concatenate(row, axis=1))
     figure = np.ascontiguousarray(np.concatenate(rows, axis=0))
-    (ROOT / "docs/normals.png").write_bytes(tm._core.encode_png_rgba(figure))
+    Image.fromarray(figure).save("normals.png", optimize=True)
 
 
 if __name__ == "__main__":

@@ -1,15 +1,19 @@
-"""Draws docs/paper.png: paper grain on the smoothed bunny. Left to right: toon bands and ink
+"""Paper grain.
+
+Paper grain on the smoothed bunny. Left to right: toon bands and ink
 without paper; ``Paper()`` (the built-in grain, fixed to the screen); ``Paper(strength=0.9,
 scale=2)`` under hatching, where the tooth breaks up strokes and lines as pencil on rough paper;
 ``Paper(space="surface")``, the grain fixed to the surface; and a user's grain image (a canvas
 weave made here with NumPy).
-Run from the repository root: ``python docs/paper_figure.py``.
 """
 
+from pathlib import Path
+
 import numpy as np
-from figures import save, smoothed_bunny
+from PIL import Image
 
 import toonmesh as tm
+from toonmesh.data import bunny
 
 SIZE = 260
 
@@ -22,7 +26,8 @@ def canvas(n: int = 32) -> np.ndarray:
 
 
 def main() -> None:
-    V, F = smoothed_bunny()
+    V, F = bunny()
+    V = tm.smooth.laplacian(V, F, iterations=5, preset="paper")
     kw = dict(width=SIZE, height=SIZE, outlines="mesh", background="#f4efe4")
     bands = tm.Material.bands("#e08850")
     cells = [
@@ -32,7 +37,9 @@ def main() -> None:
         tm.render(V, F, material=bands, paper=tm.Paper(space="surface", strength=0.8, scale=2.0), **kw).color,
         tm.render(V, F, material=bands, paper=tm.Paper(canvas(), strength=0.5, scale=1.0), **kw).color,
     ]
-    save("paper.png", np.concatenate(cells, axis=1))
+    out = Path("paper.png")
+    Image.fromarray(np.concatenate(cells, axis=1)).save(out, optimize=True)
+    print("wrote", out)
 
 
 if __name__ == "__main__":

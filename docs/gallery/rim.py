@@ -1,21 +1,26 @@
-"""Draws docs/rim.png: the rim light on the smoothed bunny in toon bands. Left to right: no rim;
+"""Rim light.
+
+The rim light on the smoothed bunny in toon bands. Left to right: no rim;
 ``Rim()`` (white light added where n.v < 0.3); ``Rim(side="lit")`` under a light from the right;
 ``Rim("#5080ff", side="shadowed", blend="mix")``, a back light's glow painted on the dark side;
 and a soft orange rim (``softness=0.3``, painted over) on a hatched bunny. On a dark background,
 as rim light is usually shown.
-Run from the repository root: ``python docs/rim_figure.py``.
 """
 
+from pathlib import Path
+
 import numpy as np
-from figures import save, smoothed_bunny
+from PIL import Image
 
 import toonmesh as tm
+from toonmesh.data import bunny
 
 SIZE = 260
 
 
 def main() -> None:
-    V, F = smoothed_bunny()
+    V, F = bunny()
+    V = tm.smooth.laplacian(V, F, iterations=5, preset="paper")
     side = [tm.Light.directional((-1.0, -0.3, -0.4))]
     kw = dict(width=SIZE, height=SIZE, outlines="mesh", lights=side, background="#3a4050")
     colour = "#f08a3c"
@@ -28,7 +33,9 @@ def main() -> None:
         tm.render(V, F, material=tm.Material.hatching(rim=tm.Rim("#ff9020", width=0.5, softness=0.3, strength=1.0, blend="mix")),
                   **kw).color,
     ]
-    save("rim.png", np.concatenate(cells, axis=1))
+    out = Path("rim.png")
+    Image.fromarray(np.concatenate(cells, axis=1)).save(out, optimize=True)
+    print("wrote", out)
 
 
 if __name__ == "__main__":

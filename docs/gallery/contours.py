@@ -1,10 +1,13 @@
-"""Draws docs/contours.png and docs/contours.svg: line drawings by the renderer of the raw Stanford
+"""Line drawings and SVG: contours and suggestive contours.
+
+Line drawings by the renderer of the raw Stanford
 bunny, spot and the cow, with Kang et al.'s face-edge silhouettes (``contours="faces"``), the
 default (smooth contours between creases) and the default plus suggestive contours (in blue),
 hidden lines removed; each panel's title counts its strokes. The SVG is the bunny's last panel as
-``RenderResult.save_svg`` writes it. Needs matplotlib and trimesh. Run from the repository root:
-``python docs/contours_figure.py``.
+``RenderResult.save_svg`` writes it. Needs matplotlib and trimesh.
 """
+
+from pathlib import Path
 
 import matplotlib
 
@@ -12,10 +15,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import trimesh  # noqa: E402
-from figures import MESHES, ROOT  # noqa: E402
 
 import toonmesh as tm  # noqa: E402
 
+ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 360
 BLUE = (0.18, 0.37, 0.66)
 # white paper: one band, so only the ink shows
@@ -41,7 +44,7 @@ def main():
     fig, axes = plt.subplots(len(rows), len(SETTINGS), figsize=(7.8, 7.8), dpi=100, layout="constrained")
     r = tm.Renderer()
     for (name, eye, label), ax_row in zip(rows, axes):
-        m = trimesh.load(MESHES / name, process=False, force="mesh")
+        m = trimesh.load(ROOT / "tests" / "data" / "meshes" / name, process=False, force="mesh")
         mesh = r.add_mesh(np.asarray(m.vertices, float), np.asarray(m.faces))
         camera = tm.Camera.fit(eye)
         for (title, kw), ax in zip(SETTINGS, ax_row):
@@ -51,11 +54,11 @@ def main():
             ax.set_title(f"{label}: {title}\n{counts}", fontsize=6.5)
             ax.axis("off")
             if name == "stanford-bunny.obj" and kw.get("suggestive"):
-                res.save_svg(ROOT / "docs" / "contours.svg")
+                res.save_svg("contours.svg")
         r.remove_mesh(mesh)
-    out = ROOT / "docs" / "contours.png"
+    out = Path("contours.png")
     fig.savefig(out, dpi=100)
-    print(out.relative_to(ROOT), out.stat().st_size // 1024, "KB")
+    print("wrote", out, out.stat().st_size // 1024, "KB")
 
 
 if __name__ == "__main__":

@@ -1,10 +1,11 @@
-"""Draws docs/colour.png: colour on the mesh and scenes from files. Left: the smoothed bunny with
+"""Colour, textures and scenes from files.
+
+Colour on the mesh and scenes from files. Left: the smoothed bunny with
 vertex colours (its height and depth as red and blue), bands and outlines. Middle: a sphere with
 a checker texture on an equirectangular map (uv from longitude and latitude), toon bands. Right:
 a GLB made here with trimesh (three instances of a can whose side and lids are parts with
 different PBR base colours), read by ``toonmesh.load``: its node transforms and materials,
 with material borders where the parts meet.
-Run from the repository root: ``python docs/colour_figure.py``.
 """
 
 import tempfile
@@ -12,10 +13,10 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
-from figures import save, smoothed_bunny
+from PIL import Image
 
 import toonmesh as tm
-from toonmesh.bench.effects import sphere_uv
+from toonmesh.data import bunny
 
 SIZE = 360
 
@@ -39,16 +40,19 @@ def can_scene(path: Path) -> None:
 
 def main() -> None:
     kw = dict(width=SIZE, height=SIZE, supersample=2, lights=[tm.Light.directional((0.6, -0.5, -1.0))])
-    Vb, Fb = smoothed_bunny()
+    Vb, Fb = bunny()
+    Vb = tm.smooth.laplacian(Vb, Fb, iterations=5, preset="paper")
     t = (Vb - Vb.min(0)) / np.ptp(Vb, 0)
     colours = np.stack([0.3 + 0.7 * t[:, 1], np.full(len(Vb), 0.55), 1.0 - 0.7 * t[:, 2]], -1)
     bunny_image = tm.render([tm.Mesh(Vb, Fb, vertex_colors=colours)], material=tm.Material.bands("#ffffff"),
                             outlines="mesh", **kw).color
     V, F = tm.shapes.icosphere(5)
-    cells = np.indices((16, 32)).sum(0) % 2
+    uv = np.stack([np.arctan2(V[:, 2], V[:, 0]) / (2 * np.pi) + 0.5,  # longitude and latitude: u right, v up
+                   np.arcsin(np.clip(V[:, 1], -1, 1)) / np.pi + 0.5], -1)
+    cells = np.indices((16, 32)).sum(0) % 2  # a checker of 32 x 16 cells ...
     checker = np.where(cells[..., None] == 1, [230, 120, 40], [250, 235, 200]).astype(np.uint8)
-    checker = np.kron(checker, np.ones((16, 16, 1), np.uint8))  # 16 texels a cell: crisp cell borders
-    textured = tm.render([tm.Mesh(V, F, uv=sphere_uv(V), texture=checker)], material=tm.Material.bands("#ffffff"),
+    checker = np.kron(checker, np.ones((16, 16, 1), np.uint8))  # ... of 16 x 16 texels: crisp cell borders
+    textured = tm.render([tm.Mesh(V, F, uv=uv, texture=checker)], material=tm.Material.bands("#ffffff"),
                          outlines="mesh", **kw).color
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "cans.glb"
@@ -56,7 +60,10 @@ def main() -> None:
         cans = tm.load(path)
     scene = tm.render(cans, material=tm.Material.bands("#ffffff"), outlines=tm.Outlines("mesh", material="#2040a0"),
                       camera=tm.Camera.fit((0.2, 0.6, 1.0), margin=0.9), **kw).color
-    save("colour.png", np.concatenate([bunny_image, textured, scene], axis=1))
+    row = np.concatenate([bunny_image, textured, scene], axis=1)
+    out = Path("colour.png")
+    Image.fromarray(row).save(out, optimize=True)
+    print("wrote", out)
 
 
 if __name__ == "__main__":

@@ -1,4 +1,6 @@
-"""Draws docs/effects.png: the toon finish, before (top: the papers' own settings) and after
+"""Toon looks: band borders, tones, hatching and shadows.
+
+The toon finish, before (top: the papers' own settings) and after
 (bottom: the defaults). Columns: the smoothed bunny in toon bands, the bunny cross-hatched, spot
 in bands, spot cross-hatched, and a torus casting a shadow on a floor. Before: hard band borders
 (``band_antialias=False``), the paper's band values (``Material.bands(preset="paper")``: the
@@ -6,22 +8,26 @@ darkest band and the shadow black, so ink vanishes over them) and triplanar hatc
 (``mode="triplanar"``). After: band borders blended over a pixel, the darkest tone keeping 30%
 of the colour, and hatching along the form (principal directions). No supersampling, so the
 band borders show as the renderer draws them.
-Run from the repository root: ``python docs/effects_figure.py``.
 """
 
+from pathlib import Path
+
 import numpy as np
-from figures import MESHES, save, smoothed_bunny
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh._files import read_mesh
 from toonmesh.bench.effects import SHADOW_SCENES
+from toonmesh.data import bunny
 
+ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 300
 
 
 def main() -> None:
-    Vb, Fb = smoothed_bunny()
-    Vs, Fs = read_mesh(str(MESHES / "spot.obj"))
+    Vb, Fb = bunny()
+    Vb = tm.smooth.laplacian(Vb, Fb, iterations=5, preset="paper")
+    Vs, Fs = read_mesh(str(ROOT / "tests" / "data" / "meshes" / "spot.obj"))
     (Vt, Ft), direction, eye = SHADOW_SCENES["torus over a plane"]
     light = [tm.Light.directional((0.6, -0.5, -1.0))]
     rows = []
@@ -39,7 +45,9 @@ def main() -> None:
                       lights=[tm.Light.directional(direction, shadows=True)], camera=tm.Camera.fit(eye), **kw).color,
         ]
         rows.append(np.concatenate(cells, axis=1))
-    save("effects.png", np.concatenate(rows, axis=0))
+    out = Path("effects.png")
+    Image.fromarray(np.concatenate(rows, axis=0)).save(out, optimize=True)
+    print("wrote", out)
 
 
 if __name__ == "__main__":

@@ -1,17 +1,23 @@
-"""Draws docs/outlines.png: ink outlines in the render. Top row: the fandisk CAD part with
+"""Ink outlines in the render.
+
+Ink outlines in the render. Top row: the fandisk CAD part with
 mesh-space lines (silhouettes, boundaries, creases as ridges and valleys: Kang, Kim and Yoon),
 with image-space lines (between pixels whose normals turn or whose depths jump, the default
 rule; no threshold to scale with the model), and the
 line drawing alone (the ``outline`` output). Bottom row: the same for the smoothed bunny.
-Needs trimesh to read the OBJ file. Run from the repository root: ``python docs/outlines_figure.py``.
+Needs trimesh to read the OBJ file.
 """
 
+from pathlib import Path
+
 import numpy as np
+from PIL import Image
 import trimesh
-from figures import MESHES, ROOT, smoothed_bunny
 
 import toonmesh as tm
+from toonmesh.data import bunny
 
+ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 360
 
 
@@ -28,13 +34,14 @@ def panels(V, F, material, camera, crease_angle):
 
 
 def main() -> None:
-    fandisk = trimesh.load(MESHES / "fandisk.obj", process=False)
+    fandisk = trimesh.load(ROOT / "tests/data/meshes/fandisk.obj", process=False)
     V1, F1 = np.asarray(fandisk.vertices), np.asarray(fandisk.faces)
-    V2, F2 = smoothed_bunny()
+    V2, F2 = bunny()
+    V2 = tm.smooth.laplacian(V2, F2, iterations=5, preset="paper")
     top = panels(V1, F1, tm.Material.bands("#8fb8de"), tm.Camera.fit((0.6, 0.5, 1.0)), 40.0)
     bottom = panels(V2, F2, tm.Material.thresholded_phong("#f08a3c", t_h=0.1, t_s=0.9), tm.Camera.fit((0.35, 0.3, 1.0)), 60.0)
     figure = np.ascontiguousarray(np.concatenate([top, bottom], axis=0))
-    (ROOT / "docs/outlines.png").write_bytes(tm._core.encode_png_rgba(figure))
+    Image.fromarray(figure).save("outlines.png", optimize=True)
 
 
 if __name__ == "__main__":

@@ -1,21 +1,24 @@
-"""Draws docs/denoise.png: the fandisk model (tests/data/meshes/fandisk.obj, 12,946 faces) with
+"""Denoising that keeps creases: bilateral and guided filtering.
+
+The fandisk model (tests/data/meshes/fandisk.obj, 12,946 faces) with
 Gaussian noise of 0.4 mean edge lengths along its normals, before and after each smoother, all
 with their defaults, rendered with mesh outlines (silhouettes and creases, Kang et al.). Top row:
 clean, noisy, Taubin; bottom row: pymeshlab's two-step smoothing, bilateral, guided; each panel gives
 its mean face-normal error to the clean model. The outlines show what each smoother leaves of
-the creases. Needs trimesh and pymeshlab. Run from the repository root:
-``python docs/denoise_figure.py``.
+the creases. Needs trimesh and pymeshlab.
 """
+
+from pathlib import Path
 
 import numpy as np
 import pymeshlab
 import trimesh
-from figures import MESHES, save
 from PIL import Image, ImageDraw
 
 import toonmesh as tm
 from toonmesh.bench import parts
 
+ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 320
 
 
@@ -27,7 +30,7 @@ def two_step(V: np.ndarray, F: np.ndarray) -> np.ndarray:
 
 
 def main() -> None:
-    m = trimesh.load(MESHES / "fandisk.obj", process=False, force="mesh")
+    m = trimesh.load(ROOT / "tests" / "data" / "meshes" / "fandisk.obj", process=False, force="mesh")
     V, F = np.asarray(m.vertices, np.float64), np.asarray(m.faces, np.int64)
     N = parts.noisy(V, F, 0.4, seed=1)
     panels = {
@@ -49,7 +52,10 @@ def main() -> None:
             label += f": {parts.normal_error(X, F, V):.1f} deg"
         ImageDraw.Draw(pil).text((8, 8), label, fill=(0, 0, 0, 255))
         images.append(np.asarray(pil))
-    save("denoise.png", np.concatenate([np.concatenate(images[:3], axis=1), np.concatenate(images[3:], axis=1)], axis=0))
+    out = Path("denoise.png")
+    grid = np.concatenate([np.concatenate(images[:3], axis=1), np.concatenate(images[3:], axis=1)], axis=0)
+    Image.fromarray(grid).save(out, optimize=True)
+    print("wrote", out)
 
 
 if __name__ == "__main__":

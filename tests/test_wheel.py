@@ -1,0 +1,66 @@
+"""The wheel (``make wheel``, which ``make test`` runs): an abi3 wheel, tagged manylinux, that
+installs into a fresh virtual environment with no Rust toolchain on the PATH and runs the README's
+ten-line example there."""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+
+import toonmesh
+
+ROOT = Path(__file__).resolve().parent.parent
+WHEELS = ROOT / "target" / "wheels"
+
+
+def _wheel() -> Path:
+    """The wheel of this build: there, and holding the extension this test suite imports."""
+    wheels = sorted(WHEELS.glob("toonmesh-*.whl"))
+    core = Path(toonmesh._core.__file__).read_bytes()
+    problem = None
+    if len(wheels) != 1:
+        problem = f"{len(wheels)} wheels in {WHEELS} (make wheel builds one)"
+    else:
+        with zipfile.ZipFile(wheels[0]) as z:
+            if z.read(f"toonmesh/{Path(toonmesh._core.__file__).name}") != core:
+                problem = f"{wheels[0].name} holds another build of the extension than this one (make wheel)"
+    if problem:
+        if os.environ.get("CI", "").lower() == "true":
+            pytest.fail(problem)
+        pytest.skip(problem)
+    return wheels[0]
+
+
+def test_the_wheel_is_abi3_and_manylinux():
+    name = _wheel().name
+    assert re.fullmatch(r"toonmesh-[\w.]+-cp39-abi3-manylinux_2_\d+_x86_64\.whl", name), name
+
+
+def test_the_wheel_installs_and_renders_without_rust(tmp_path):
+    wheel = _wheel()
+    venv = tmp_path / "venv"
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    # a PATH with the fresh environment and the system's tools, and no cargo or rustc
+    path = os.pathsep.join([str(venv / "bin"), "/usr/local/bin", "/usr/bin", "/bin"])
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("CARGO", "RUSTUP", "PYTHON", "VIRTUAL_ENV"))}
+    env.update(PATH=path, PIP_QUIET="1", PIP_DISABLE_PIP_VERSION_CHECK="1")
+    for tool in ("cargo", "rustc", "maturin"):
+        assert subprocess.run(["sh", "-c", f"command -v {tool}"], env=env).returncode != 0, tool
+    subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", str(wheel)], env=env, check=True,
+                   cwd=tmp_path, timeout=600)
+    readme = (ROOT / "README.md").read_text()
+    example = re.search(r"\[start:example\] -->\n```python\n(.*?)```", readme, flags=re.S).group(1)
+    (tmp_path / "example.py").write_text("import toonmesh\nprint(toonmesh.__file__)\n" + example)
+    run = subprocess.run([str(venv / "bin" / "python"), "example.py"], env=env, cwd=tmp_path, capture_output=True,
+                         text=True, timeout=300)
+    assert run.returncode == 0, run.stdout + run.stderr
+    where = run.stdout.splitlines()[0]
+    assert where.startswith(str(venv)), where  # the wheel's toonmesh, not the repository's
+    assert "shade" in run.stdout, run.stdout  # print(r.passes)
+    assert (tmp_path / "bunny.png").stat().st_size > 10_000
