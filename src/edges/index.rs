@@ -8,6 +8,7 @@ use super::face_normals;
 use super::feature::{crease_pair, feature_edges, FeatureEdges, PREFETCH_AHEAD};
 use super::silhouette::{face_side, facing, View, BACK, FRONT};
 use crate::error::Result;
+use crate::mesh::edge_table::FaceUse;
 use crate::mesh::weld::{weld_faces, weld_map};
 use crate::mesh::EdgeTable;
 use crate::real::{Real, Vec3};
@@ -117,6 +118,13 @@ impl EdgeIndex {
 
     pub fn weld_map(&self) -> Option<&[u32]> {
         self.weld.as_deref()
+    }
+
+    /// The faces on `edge` (its ends numbered as this index numbers them, welded where it
+    /// welds), each with the way it walks the edge; none if no face has that edge.
+    pub fn faces_on(&self, edge: [u32; 2]) -> impl Iterator<Item = FaceUse> + '_ {
+        let e = self.table.edges.binary_search(&[edge[0].min(edge[1]), edge[0].max(edge[1])]).ok();
+        e.into_iter().flat_map(move |e| self.table.uses(e))
     }
 
     /// Indices of faces without a normal.

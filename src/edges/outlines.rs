@@ -24,7 +24,7 @@ pub enum LineKind {
     Suggestive = 5,
     /// A border between two items of a scene (meshes, or the parts of a file with different
     /// materials): a boundary edge of one that lies on a boundary edge of another, as Blender's
-    /// Line Art draws material borders. Found per scene (`mesh_lines::material_borders`).
+    /// Line Art draws material borders. Found per scene (`outlines::shared_borders`).
     Material = 6,
 }
 

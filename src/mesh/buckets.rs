@@ -77,6 +77,27 @@ impl Buckets<Ring> {
 }
 
 impl Buckets<RingCorner> {
+    /// Every face of three distinct corners once, under its smallest corner, with the corners
+    /// after and before it and the face's index, `[next, prev, face]`: a face and its back (the
+    /// same corners the other way round) land in the same bucket, next and prev swapped.
+    pub fn faces_at_smallest(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Self> {
+        Self::build(n_vertices, faces, |f, face| {
+            let distinct = f[0] != f[1] && f[1] != f[2] && f[0] != f[2];
+            let k = if f[0] < f[1] {
+                if f[0] < f[2] {
+                    0
+                } else {
+                    2
+                }
+            } else if f[1] < f[2] {
+                1
+            } else {
+                2
+            };
+            [distinct.then(|| (f[k], [f[(k + 1) % 3], f[(k + 2) % 3], face])), None, None]
+        })
+    }
+
     /// Every corner under its vertex, with its next and prev vertex and its id (what the
     /// opposite corners of an edge need).
     pub fn corners_with_ids(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Self> {
@@ -87,15 +108,18 @@ impl Buckets<RingCorner> {
 }
 
 impl Buckets<u64> {
-    /// Every face-edge f[j] -> f[j + 1] that is not a self-edge under its smaller end, as
-    /// larger end << 32 | face << 1 | reversed (walking from the larger end to the smaller):
-    /// sorting a bucket sorts by the other end, then face, then direction.
+    /// Every face-edge f[j] -> f[j + 1] under its smaller end, as larger end << 32 | face << 1 |
+    /// reversed (walking from the larger end to the smaller): sorting a bucket sorts by the
+    /// other end, then face, then direction. A collapsed face (a corner repeated, as at a pole
+    /// stored as a row of copies, welded) files none: it is a line walked there and back, and
+    /// its two face-edges would make its edge non-manifold (a fan of them inked as a blob).
     pub fn face_edges(n_vertices: usize, faces: &[[u32; 3]]) -> Result<Self> {
         Self::build(n_vertices, faces, |f, face| {
+            let collapsed = f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
             std::array::from_fn(|j| {
                 let (a, b) = (f[j], f[(j + 1) % 3]);
                 let entry = (a.max(b) as u64) << 32 | (face as u64) << 1 | (a > b) as u64;
-                (a != b).then_some((a.min(b), entry))
+                (!collapsed).then_some((a.min(b), entry))
             })
         })
     }
@@ -365,10 +389,10 @@ mod tests {
         let r = Buckets::corners(5, &faces).unwrap();
         assert_eq!(r.start, t.start);
         assert!(r.entries.iter().zip(&t.entries).all(|(a, b)| a[..] == b[..2]));
-        // face-edges under their smaller end; face 2's self-edge 0-0 is left out
+        // face-edges under their smaller end; face 2, collapsed (corner 0 twice), files none
         let e = Buckets::face_edges(5, &faces).unwrap();
         let tag = |other: u64, face: u64, reversed: u64| other << 32 | face << 1 | reversed;
-        assert_eq!(e.at(0), &[tag(1, 0, 0), tag(2, 0, 1), tag(3, 2, 0), tag(3, 2, 1)]);
+        assert_eq!(e.at(0), &[tag(1, 0, 0), tag(2, 0, 1)]);
         assert_eq!(e.at(1), &[tag(2, 0, 0), tag(2, 1, 1), tag(3, 1, 0)]);
         assert_eq!(e.at(2), &[tag(3, 1, 1)]);
         assert!(e.at(3).is_empty() && e.at(4).is_empty());

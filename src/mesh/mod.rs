@@ -3,6 +3,7 @@
 //! procedural shapes.
 
 pub mod adjacency;
+pub mod back_to_back;
 pub mod bounds;
 pub mod buckets;
 pub mod crease_normals;

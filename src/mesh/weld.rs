@@ -36,36 +36,6 @@ pub fn weld_faces(faces: &[[u32; 3]], map: &[u32]) -> Vec<[u32; 3]> {
     faces.par_iter().map(|f| f.map(|i| map[i as usize])).collect()
 }
 
-/// The faces without those lying back to back with an earlier face: the same three vertices
-/// after welding (`map`), the other way round. A sheet stored double-sided (a leaf, cloth: each
-/// face twice, once per side) is then one surface to its lines, with its border a boundary,
-/// instead of a stack of non-manifold edges whose faces face both ways. None when no face goes.
-pub fn without_back_to_back(faces: &[[u32; 3]], map: &[u32]) -> Option<Vec<[u32; 3]>> {
-    use std::collections::hash_map::Entry;
-    let mut first: std::collections::HashMap<[u32; 3], bool> = std::collections::HashMap::new();
-    let keep: Vec<bool> = faces
-        .iter()
-        .map(|f| {
-            let w = f.map(|v| map[v as usize]);
-            if w[0] == w[1] || w[1] == w[2] || w[0] == w[2] {
-                return true;
-            }
-            // the turn that starts at the smallest index; which way round is whether the next
-            // index is the smaller of the other two
-            let k = (0..3).min_by_key(|&j| w[j]).expect("three corners");
-            let (a, b, c) = (w[k], w[(k + 1) % 3], w[(k + 2) % 3]);
-            match first.entry([a, b.min(c), b.max(c)]) {
-                Entry::Vacant(e) => {
-                    e.insert(b < c);
-                    true
-                }
-                Entry::Occupied(e) => *e.get() == (b < c),
-            }
-        })
-        .collect();
-    keep.iter().any(|k| !k).then(|| faces.iter().zip(&keep).filter(|(_, k)| **k).map(|(f, _)| *f).collect())
-}
-
 /// The welded mesh with one vertex per position: the representatives (smallest index of each
 /// position), in ascending order, so a mesh whose copies come after the vertices they copy
 /// merges into exactly the mesh it was split from.
@@ -164,18 +134,5 @@ mod tests {
         assert_eq!(m.any(&[false, false, true, false, false]), vec![true, false, false]);
         assert_eq!(m.gather(&[10, 11, 12, 13, 14]), vec![10, 11, 13]);
         assert_eq!(m.scatter(&[7, 8, 9]), vec![7, 8, 7, 9, 8]);
-    }
-
-    #[test]
-    fn a_double_sided_sheet_is_one_layer_and_a_single_one_is_left_alone() {
-        // two triangles, stored again the other way round with their own vertices 4..8
-        let faces = vec![[0, 1, 2], [0, 2, 3], [4, 6, 5], [4, 7, 6], [1, 0, 2]];
-        let map = vec![0, 1, 2, 3, 0, 1, 2, 3];
-        let kept = without_back_to_back(&faces, &map).expect("the back faces go");
-        // [1, 0, 2] is [0, 2, 1]: the back of [0, 1, 2]
-        assert_eq!(kept, vec![[0, 1, 2], [0, 2, 3]]);
-        assert!(without_back_to_back(&faces[..2], &map).is_none());
-        // the same face twice the same way round is not a back
-        assert!(without_back_to_back(&[[0, 1, 2], [1, 2, 0]], &map).is_none());
     }
 }

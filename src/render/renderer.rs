@@ -13,6 +13,7 @@ use glam::DMat4;
 
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
+use crate::mesh::back_to_back::{back_to_back_faces, kept};
 use crate::real::{Real, Vec3};
 
 use super::albedo::Albedo;
@@ -185,6 +186,19 @@ impl Renderer {
                 Some(a)
             }
             None => None,
+        };
+        // a sheet stored double-sided is drawn once, or its shared vertices' normals cancel
+        let (faces, albedo) = match crate::parallel::install(|| back_to_back_faces(&faces, None))? {
+            Some(keep) => {
+                let twins = keep.iter().filter(|k| !**k).count();
+                notes.push(format!(
+                    "{twins} of the {} faces lie back to back with another face (a sheet stored \
+                     double-sided); each pair is drawn once, as the first of the two",
+                    faces.len()
+                ));
+                (kept(&faces, &keep), albedo.map(|a| a.keeping_faces(&keep)))
+            }
+            None => (faces, albedo),
         };
         let (gpu, host) = crate::parallel::install(|| {
             GpuMesh::upload_with(&self.ctx, positions, faces, normals, albedo.as_ref())

@@ -57,6 +57,38 @@ impl Albedo {
         self.colors.is_some() || self.texture.is_some()
     }
 
+    /// A fingerprint of the surface's material, for the lines between scene items (a border
+    /// is a material border where two items' looks differ): the texture and its sampling, and
+    /// the colour where it is one colour throughout. Colours that vary count as one look, as
+    /// they show their own changes.
+    pub fn look(&self) -> u64 {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        let colors = match &self.colors {
+            Some(Colors::Vertex(c) | Colors::Face(c)) => Some(c),
+            None => None,
+        };
+        match colors.map(|c| (c.first(), c.iter().all(|x| Some(x) == c.first()))) {
+            None => 0u8.hash(&mut h),
+            Some((first, true)) => (1u8, first.map(|c| c.map(f32::to_bits))).hash(&mut h),
+            Some((_, false)) => 2u8.hash(&mut h),
+        }
+        if let Some(t) = &self.texture {
+            (t.width, t.height, &t.texels).hash(&mut h);
+            format!("{:?}", self.sampling).hash(&mut h);
+        }
+        h.finish()
+    }
+
+    /// The face colours of the faces flagged in `keep` (see `mesh::back_to_back`); the other
+    /// parts are per vertex or per mesh, so they stay.
+    pub fn keeping_faces(mut self, keep: &[bool]) -> Albedo {
+        if let Some(Colors::Face(c)) = &self.colors {
+            self.colors = Some(Colors::Face(crate::mesh::back_to_back::kept(c, keep)));
+        }
+        self
+    }
+
     /// Checks the parts against a mesh of `n_vertices` vertices and `n_faces` faces.
     pub fn check(&self, n_vertices: usize, n_faces: usize) -> Result<()> {
         match &self.colors {

@@ -18,7 +18,7 @@ use crate::edges::short_creases::keep_drawn_creases;
 use crate::edges::zero_set::Polylines;
 use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
-use crate::mesh::weld::without_back_to_back;
+use crate::mesh::back_to_back::without_back_to_back;
 use crate::render::gpu_mesh::{GpuMesh, HostMesh, NormalMode};
 use crate::render::graph::effect::{HostInputs, HostStep};
 use crate::render::graph::report::FrameReport;
@@ -28,6 +28,7 @@ use crate::render::scene::SceneItem;
 
 use super::projection::{Projector, ScreenLine};
 use super::settings::{ContourRule, Outlines};
+use super::shared_borders::shared_borders;
 use super::stroke_width::{strength_factor, StrokeWidth};
 
 /// A mesh's outline analysis, kept with it.
@@ -40,7 +41,7 @@ pub struct MeshLines {
     contours: [OnceLock<ContourMesh>; 2],
     /// The mesh split at the creases drawn under each crease rule.
     split: Mutex<HashMap<SplitKey, Arc<SplitContours>>>,
-    /// With welding, the faces less those back to back with another (`weld::without_back_to_back`;
+    /// With welding, the faces less those back to back with another (`back_to_back::without_back_to_back`;
     /// None: all of them), decided with the welded index.
     back_to_back: OnceLock<Option<Vec<[u32; 3]>>>,
 }
@@ -78,7 +79,7 @@ impl MeshLines {
                     let index = EdgeIndex::build(&host.positions, &host.faces, weld)?;
                     // only faces back to back make non-manifold edges of a sheet
                     let kept = match index.weld_map() {
-                        Some(map) if index.has_nonmanifold() => without_back_to_back(&host.faces, map),
+                        Some(map) if index.has_nonmanifold() => without_back_to_back(&host.faces, map)?,
                         _ => None,
                     };
                     let index = match &kept {
@@ -96,7 +97,7 @@ impl MeshLines {
     }
 
     /// The faces lines are found on: with welding, a sheet stored double-sided counts once.
-    fn faces<'a>(&'a self, host: &'a HostMesh, weld: bool) -> &'a [[u32; 3]] {
+    pub fn faces<'a>(&'a self, host: &'a HostMesh, weld: bool) -> &'a [[u32; 3]] {
         if weld && self.index(host, weld).is_ok() {
             if let Some(Some(faces)) = self.back_to_back.get() {
                 return faces;
@@ -182,8 +183,8 @@ impl MeshLines {
                 crate::parallel::install(|| m.suggestive(view, threshold, smoothing, Cancel::never()))?;
             curves.push((LineKind::Suggestive, lines));
         }
-        // boundaries are kept for the material borders found across the scene
-        let keep = |k: LineKind| draws(k) || (k == LineKind::Boundary && draws(LineKind::Material));
+        // boundaries are kept for the borders between items found across the scene
+        let keep = |k: LineKind| draws(k) || k == LineKind::Boundary;
         let (edges, kinds) = all.edges.iter().zip(&all.kinds).filter(|(_, k)| keep(**k)).unzip();
         Ok(MeshOutline { edges: Outline { edges, kinds }, curves })
     }
@@ -340,7 +341,8 @@ pub fn reference_depth(items: &[SceneItem], records: &[Arc<MeshRecord>], cam: &R
     -(cam.normalized_view().transform_point3(centre)).z
 }
 
-/// Every item's lines of the view of `cam`, with the material borders between items marked.
+/// Every item's lines of the view of `cam`, with the borders between items resolved
+/// (`shared_borders`).
 pub fn scene_outlines(
     items: &[SceneItem],
     records: &[Arc<MeshRecord>],
@@ -353,86 +355,15 @@ pub fn scene_outlines(
         let flat = rec.gpu.normals == NormalMode::Flat;
         outlines.push(MeshLines::of(rec).outline(&rec.host, flat, view, o)?);
     }
-    if o.styles[LineKind::Material as usize].is_some() {
-        if items.len() > 1 {
-            material_borders(items, records, &mut outlines);
-        }
-        if o.styles[LineKind::Boundary as usize].is_none() {
-            for out in &mut outlines {
-                out.edges = out.edges.without(LineKind::Boundary);
-            }
+    if items.len() > 1 {
+        shared_borders(items, records, cam, o, &mut outlines)?;
+    }
+    if o.styles[LineKind::Boundary as usize].is_none() {
+        for out in &mut outlines {
+            out.edges = out.edges.without(LineKind::Boundary);
         }
     }
     Ok(outlines)
-}
-
-/// Marks as material borders the boundary edges of each item that lie on a boundary edge of
-/// another item (both ends at the same world position, to a millionth of the scene's size).
-pub fn material_borders(items: &[SceneItem], records: &[Arc<MeshRecord>], outlines: &mut [MeshOutline]) {
-    let world = |i: usize, v: u32| {
-        let p = records[i].gpu.placement;
-        let stored = DVec3::from_array(records[i].host.positions[v as usize]);
-        items[i].model_matrix().transform_point3(stored * p.scale + DVec3::from_array(p.origin))
-    };
-    let ends: Vec<Vec<(usize, [DVec3; 2])>> = outlines
-        .iter()
-        .enumerate()
-        .map(|(i, o)| {
-            let e = &o.edges;
-            (0..e.len())
-                .filter(|&k| e.kinds[k] == LineKind::Boundary)
-                .map(|k| (k, e.edges[k].map(|v| world(i, v))))
-                .collect()
-        })
-        .collect();
-    let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
-    for p in ends.iter().flatten().flat_map(|(_, e)| e) {
-        lo = lo.min(*p);
-        hi = hi.max(*p);
-    }
-    let cell = ((hi - lo).length() * 1e-6).max(f64::MIN_POSITIVE);
-    let key = |p: DVec3| ((p - lo) / cell).round().as_i64vec3().to_array();
-    let edge_key = |e: &[DVec3; 2]| {
-        let (a, b) = (key(e[0]), key(e[1]));
-        if a <= b {
-            (a, b)
-        } else {
-            (b, a)
-        }
-    };
-    // which items have a boundary edge at each place
-    let mut owners: HashMap<([i64; 3], [i64; 3]), Vec<usize>> = HashMap::new();
-    for (i, list) in ends.iter().enumerate() {
-        for (_, e) in list {
-            let o = owners.entry(edge_key(e)).or_default();
-            if o.last() != Some(&i) {
-                o.push(i);
-            }
-        }
-    }
-    // the first item on a border draws it; the others leave their copy of it out
-    for (i, list) in ends.iter().enumerate() {
-        let mut repeated = vec![false; outlines[i].edges.len()];
-        for (k, e) in list {
-            let Some(o) = owners.get(&edge_key(e)) else { continue };
-            if o.iter().any(|&j| j != i) {
-                outlines[i].edges.kinds[*k] = LineKind::Material;
-                repeated[*k] = o[0] != i;
-            }
-        }
-        if repeated.contains(&true) {
-            let e = &outlines[i].edges;
-            let (edges, kinds) = e
-                .edges
-                .iter()
-                .zip(&e.kinds)
-                .zip(&repeated)
-                .filter(|(_, r)| !**r)
-                .map(|(ek, _)| (*ek.0, *ek.1))
-                .unzip();
-            outlines[i].edges = Outline { edges, kinds };
-        }
-    }
 }
 
 /// The `silhouettes` step: every item's lines for this view.

@@ -12,6 +12,7 @@ pub mod mesh_lines;
 pub mod pen;
 pub mod projection;
 pub mod settings;
+pub mod shared_borders;
 pub mod stroke_width;
 pub mod strokes;
 pub mod visibility;
