@@ -97,7 +97,7 @@ impl MeshLines {
     }
 
     /// The faces lines are found on: with welding, a sheet stored double-sided counts once.
-    pub fn faces<'a>(&'a self, host: &'a HostMesh, weld: bool) -> &'a [[u32; 3]] {
+    fn faces<'a>(&'a self, host: &'a HostMesh, weld: bool) -> &'a [[u32; 3]] {
         if weld && self.index(host, weld).is_ok() {
             if let Some(Some(faces)) = self.back_to_back.get() {
                 return faces;
@@ -356,7 +356,13 @@ pub fn scene_outlines(
         outlines.push(MeshLines::of(rec).outline(&rec.host, flat, view, o)?);
     }
     if items.len() > 1 {
-        shared_borders(items, records, cam, o, &mut outlines)?;
+        let mut edges: Vec<&mut Outline> = outlines.iter_mut().map(|out| &mut out.edges).collect();
+        shared_borders(items, records, cam, o, &mut edges, |i, edge| {
+            let (host, lines) = (&records[i].host, MeshLines::of(&records[i]));
+            let face = lines.index(host, o.weld).ok()?.faces_on(edge).next()?;
+            // a face walks its edge from the smaller index to the larger unless reversed
+            Some((lines.faces(host, o.weld)[face.face as usize], (edge[0] < edge[1]) != face.reversed))
+        })?;
     }
     if o.styles[LineKind::Boundary as usize].is_none() {
         for out in &mut outlines {

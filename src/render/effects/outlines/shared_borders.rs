@@ -19,21 +19,23 @@ use crate::render::mesh_record::MeshRecord;
 use crate::render::scene::camera::ResolvedCamera;
 use crate::render::scene::SceneItem;
 
-use super::mesh_lines::{MeshLines, MeshOutline};
 use super::settings::Outlines;
 
 /// An item's boundary edge: the item, the edge's position in its outline, its ends as the
 /// item's edge index numbers them, and in the world.
 type Border = (usize, usize, [u32; 2], [DVec3; 2]);
 
-/// Resolves the boundary edges that items share (see the module's comment); the first item on
-/// a shared edge draws it, the others leave their copy out.
+/// Resolves the boundary edges that items share (see the module's comment) in each item's
+/// `outlines`; the first item on a shared edge draws it, the others leave their copy out.
+/// `face_on(item, edge)`: the corners of the face on a boundary edge of the item (numbered as
+/// the item's outline numbers them).
 pub fn shared_borders(
     items: &[SceneItem],
     records: &[Arc<MeshRecord>],
     cam: &ResolvedCamera,
     o: &Outlines,
-    outlines: &mut [MeshOutline],
+    outlines: &mut [&mut Outline],
+    face_on: impl Fn(usize, [u32; 2]) -> Option<([u32; 3], bool)>,
 ) -> Result<()> {
     let world = |i: usize, v: u32| {
         let p = records[i].gpu.placement;
@@ -43,8 +45,7 @@ pub fn shared_borders(
     let borders: Vec<Border> = outlines
         .iter()
         .enumerate()
-        .flat_map(|(i, out)| {
-            let e = &out.edges;
+        .flat_map(|(i, e)| {
             (0..e.len()).filter(move |&k| e.kinds[k] == LineKind::Boundary).map(move |k| (i, k, e.edges[k]))
         })
         .map(|(i, k, e)| (i, k, e, e.map(|v| world(i, v))))
@@ -77,7 +78,7 @@ pub fn shared_borders(
         let (first, rest) = (borders[at[0]], &at[1..]);
         let kind = match rest {
             [other] if same_look(items, records, first.0, borders[*other].0) => {
-                let faces = [first, borders[*other]].map(|b| border_face(b, records, o, &world));
+                let faces = [first, borders[*other]].map(|b| border_face(b, &face_on, &world));
                 seam_kind(faces, first.3, cam, &crease).filter(|&k| draws(k))
             }
             _ if draws(LineKind::Material) => Some(LineKind::Material),
@@ -92,13 +93,12 @@ pub fn shared_borders(
         if changed.is_empty() {
             continue;
         }
-        let mut kinds: Vec<Option<LineKind>> = out.edges.kinds.iter().copied().map(Some).collect();
+        let mut kinds: Vec<Option<LineKind>> = out.kinds.iter().copied().map(Some).collect();
         for (k, kind) in changed {
             kinds[k] = kind;
         }
-        let (edges, kinds) =
-            out.edges.edges.iter().zip(kinds).filter_map(|(e, k)| k.map(|k| (*e, k))).unzip();
-        out.edges = Outline { edges, kinds };
+        let (edges, kinds) = out.edges.iter().zip(kinds).filter_map(|(e, k)| k.map(|k| (*e, k))).unzip();
+        **out = Outline { edges, kinds };
     }
     Ok(())
 }
@@ -112,17 +112,12 @@ fn same_look(items: &[SceneItem], records: &[Arc<MeshRecord>], i: usize, j: usiz
 /// for a face without area.
 fn border_face(
     (i, _, edge, ends): Border,
-    records: &[Arc<MeshRecord>],
-    o: &Outlines,
+    face_on: &impl Fn(usize, [u32; 2]) -> Option<([u32; 3], bool)>,
     world: &impl Fn(usize, u32) -> DVec3,
 ) -> Option<(DVec3, DVec3)> {
-    let rec = &records[i];
-    let lines = MeshLines::of(rec);
-    let face = lines.index(&rec.host, o.weld).ok()?.faces_on(edge).next()?;
-    let corners = lines.faces(&rec.host, o.weld)[face.face as usize].map(|v| world(i, v));
+    let (face, forward) = face_on(i, edge)?;
+    let corners = face.map(|v| world(i, v));
     let normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).try_normalize()?;
-    // a face walks its edge from the smaller index to the larger unless reversed
-    let forward = (edge[0] < edge[1]) != face.reversed;
     Some((normal, if forward { ends[1] - ends[0] } else { ends[0] - ends[1] }))
 }
 
