@@ -146,25 +146,24 @@ def test_a_fold_between_pieces_is_a_crease_and_a_turn_away_a_silhouette(backend)
 
 def _capsule(seg=50, rings=12, copies=True):
     """A capsule whose poles are stored as a row of copies of one point (one per segment, as
-    a UV sphere exports), or as one shared vertex per pole (`copies=False`)."""
+    a UV sphere exports: the faces between two copies collapse once welded), or as one vertex
+    each with a fan of triangles around it (`copies=False`)."""
     phis = np.r_[np.linspace(-np.pi / 2, 0, rings // 2 + 1), np.linspace(0, np.pi / 2, rings // 2 + 1)]
     offsets = np.r_[np.full(rings // 2 + 1, -0.75), np.full(rings // 2 + 1, 0.75)]
     V, rows = [], []
     for phi, off in zip(phis, offsets):
-        c = 0.0 if abs(abs(phi) - np.pi / 2) < 1e-9 else np.cos(phi)
-        rows.append(list(range(len(V), len(V) + seg)))
+        pole = abs(abs(phi) - np.pi / 2) < 1e-9
+        c = 0.0 if pole else np.cos(phi)
+        count = 1 if pole and not copies else seg
+        rows.append([len(V) + min(k, count - 1) for k in range(seg)])
         V += [[0.5 * c * np.cos(2 * np.pi * k / seg), 0.5 * np.sin(phi) + off, 0.5 * c * np.sin(2 * np.pi * k / seg)]
-              for k in range(seg)]
+              for k in range(count)]
     F = []
     for a, b in zip(rows[:-1], rows[1:]):
         for k in range(seg):
             k1 = (k + 1) % seg
-            F += [[a[k], b[k], b[k1]], [a[k], b[k1], a[k1]]]
-    V, F = np.array(V), np.array(F)
-    if not copies:
-        mesh = trimesh.Trimesh(V, F, process=True)  # merges the copies, drops the collapsed faces
-        V, F = mesh.vertices, mesh.faces
-    return V, F
+            F += [f for f in ([a[k], b[k], b[k1]], [a[k], b[k1], a[k1]]) if len(set(f)) == 3]
+    return np.array(V), np.array(F)
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
