@@ -153,8 +153,7 @@ def _call(smoother: Callable[..., Positions], vertices: Any, faces: Any, options
 
 
 class LaplacianOptions(LaplacianFamilyOptions, total=False):
-    """The keywords of :func:`laplacian` (a TypedDict, for type checkers; see its docstring for
-    each one's meaning, units and default)."""
+    """The keywords of :func:`laplacian`, for type checkers (see its docstring)."""
 
     lamb: Optional[float]
     volume_constraint: Optional[bool]
@@ -188,8 +187,7 @@ def laplacian(vertices: Any, faces: Any = None, **options: Unpack[LaplacianOptio
 
 
 class TaubinOptions(LaplacianFamilyOptions, total=False):
-    """The keywords of :func:`taubin` (a TypedDict, for type checkers; see its docstring for
-    each one's meaning, units and default)."""
+    """The keywords of :func:`taubin`, for type checkers (see its docstring)."""
 
     lamb: Optional[float]
     mu: Optional[float]
@@ -216,8 +214,7 @@ def taubin(vertices: Any, faces: Any = None, **options: Unpack[TaubinOptions]) -
 
 
 class HcOptions(LaplacianFamilyOptions, total=False):
-    """The keywords of :func:`hc` (a TypedDict, for type checkers; see its docstring for
-    each one's meaning, units and default)."""
+    """The keywords of :func:`hc`, for type checkers (see its docstring)."""
 
     alpha: Optional[float]
     beta: Optional[float]
@@ -251,8 +248,7 @@ def hc(vertices: Any, faces: Any = None, **options: Unpack[HcOptions]) -> Positi
 
 
 class ImplicitOptions(LaplacianFamilyOptions, total=False):
-    """The keywords of :func:`implicit` (a TypedDict, for type checkers; see its docstring for
-    each one's meaning, units and default)."""
+    """The keywords of :func:`implicit`, for type checkers (see its docstring)."""
 
     step: Optional[float]
     tol: Optional[float]

@@ -114,6 +114,9 @@ pub struct GpuAlbedo {
     /// Whether the shader samples the texture (a mesh with colours only binds a white texel).
     pub textured: bool,
     pub alpha_cutoff: Option<f32>,
+    /// The colour and texture's fingerprint (`Albedo::look`): meshes that meet edge to edge
+    /// with the same look and material are one surface to the lines.
+    pub look: u64,
 }
 
 impl GpuAlbedo {
@@ -167,6 +170,7 @@ impl GpuAlbedo {
             group,
             textured: albedo.texture.is_some(),
             alpha_cutoff: albedo.sampling.alpha_cutoff,
+            look: albedo.look(),
         }
     }
 }

@@ -260,9 +260,6 @@ pub struct GpuMesh {
     pub enclosure: Option<Enclosure>,
     /// The mesh's colour and texture, if it has any.
     pub albedo: Option<GpuAlbedo>,
-    /// Its colour and texture's fingerprint (`Albedo::look`; 0 without): meshes that meet edge
-    /// to edge with the same look and material are one surface to the lines.
-    pub look: u64,
 }
 
 impl GpuMesh {
@@ -353,7 +350,6 @@ impl GpuMesh {
             })
         });
         let flat = matches!(normals, NormalMode::Flat);
-        let look = albedo.filter(|a| a.is_used()).map_or(0, Albedo::look);
         let albedo = albedo.filter(|a| a.is_used()).map(|a| {
             GpuAlbedo::upload(dev, a, vertices.len(), |i| match &source {
                 Some(s) => s[i] as usize,
@@ -373,7 +369,6 @@ impl GpuMesh {
             normals,
             enclosure: encloses,
             albedo,
-            look,
         };
         Ok((mesh, HostMesh { positions: stored, faces }))
     }

@@ -105,7 +105,8 @@ pub fn shared_borders(
 
 /// Whether two items are one surface to the lines: the same material, colour and texture.
 fn same_look(items: &[SceneItem], records: &[Arc<MeshRecord>], i: usize, j: usize) -> bool {
-    items[i].material == items[j].material && records[i].gpu.look == records[j].gpu.look
+    let look = |k: usize| records[k].gpu.albedo.as_ref().map(|a| a.look);
+    items[i].material == items[j].material && look(i) == look(j)
 }
 
 /// The face on a border, in the world: its unit normal and the way it walks the border. None
