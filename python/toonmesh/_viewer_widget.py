@@ -18,7 +18,7 @@ _ESM = r"""
 // dropped. "exact" (render full size) follows once the pointer has stopped for SETTLE_MS or is
 // released. The root element's data-frames-shown counts the frames shown, data-exact is "1"
 // while a full-size frame is shown ("0" for a draft), data-busy "1" while a full-size frame is
-// on its way, data-dropped counts stale frames dropped.
+// on its way, data-dropped counts stale frames dropped, data-views-sent the views sent.
 const SETTLE_MS = 150;
 const ANSWER_TIMEOUT_MS = 10000;  // a view never answered (a kernel restarted) stops blocking
 const AXES = ["+x", "-x", "+y", "-y", "+z", "-z"];
@@ -30,7 +30,7 @@ function render({ model, el }) {
   root.tabIndex = 0;  // focus: the wheel zooms only when the view has it
   root.setAttribute("data-jp-suppress-context-menu", "");  // JupyterLab's menu stays off the view
   root.setAttribute("data-lm-suppress-shortcuts", "");  // keys pressed here do not run notebook commands
-  Object.assign(root.dataset, { framesShown: "0", exact: "0", busy: "0", dropped: "0" });
+  Object.assign(root.dataset, { framesShown: "0", exact: "0", busy: "0", dropped: "0", viewsSent: "0" });
   root.style.cssText = "position: relative; display: inline-block; line-height: 0; outline: none;"
     + " background: #fff; border: " + BORDER + "; box-shadow: none";
   const bar = document.createElement("div");
@@ -78,6 +78,7 @@ function render({ model, el }) {
     nextId = id + 1;
     if (pending.exact) exactWanted = id;
     model.send({ event: "view", id, steps: pending.steps, exact: pending.exact });
+    root.dataset.viewsSent = String(+root.dataset.viewsSent + 1);
     pending = null;
     inflight = id;
     sentAt = performance.now();
@@ -301,3 +302,10 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
             self._error = message
             self._view_id = max(self._view_id, view_id)
             self._answers += 1
+
+    def close(self) -> None:
+        """Closes the widget (its views leave the notebook) and its layout widget."""
+        layout = self.layout
+        super().close()
+        if layout is not None:
+            layout.close()

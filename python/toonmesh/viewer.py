@@ -214,6 +214,9 @@ class _Shared:
         self.closed = False
         self.worker: Optional[threading.Thread] = None
         self.view_id = 0  # the number of the browser's latest view applied (0: none yet)
+        self.answered = 0  # the number of the latest view a frame or an error answered
+        self.views = 0  # the views the browser sent
+        self.early = 0  # the views that came before the last one was answered (the browser waits: 0)
 
 
 class Viewer:
@@ -561,6 +564,7 @@ class Viewer:
             if self._widget is not None:
                 self._widget.show_frame(data, fmt, self._frame_id, self._options.width, self._options.height,
                                         view_id=view_id, exact=not draft)
+            self._shared.answered = view_id
             return result
 
     def snapshot(self, **options: "Unpack[RenderKeywords]") -> RenderResult:
@@ -654,6 +658,9 @@ class Viewer:
                 steps = content.get("steps") or []
                 exact = bool(content.get("exact"))
                 view_id = int(content.get("id", 0))
+                with self._state_lock:
+                    self._shared.views += 1
+                    self._shared.early += self._shared.answered < self._shared.view_id
             else:
                 steps = [content]
                 exact = content.get("event") not in ("orbit", "pan", "zoom")
@@ -663,7 +670,7 @@ class Viewer:
         except Exception as exc:  # answered, so that the browser sends its next view
             if view_id is not None:
                 with self._state_lock:
-                    self._shared.view_id = max(self._shared.view_id, view_id)
+                    self._shared.view_id = self._shared.answered = max(self._shared.view_id, view_id)
             if self._widget is not None:
                 self._widget.show_error(f"{type(exc).__name__}: {exc}", self._shared.view_id)
             return
@@ -762,6 +769,7 @@ def _serve(ref: "weakref.ref[Viewer]", shared: _Shared) -> None:
         except ViewerClosedError:
             pass
         except Exception as exc:  # shown in the widget, not lost in a thread
+            shared.answered = shared.view_id
             if viewer._widget is not None:
                 viewer._widget.show_error(f"{type(exc).__name__}: {exc}", shared.view_id)
         finally:
