@@ -15,7 +15,8 @@ the toolbar's +x and home buttons and checks the kernel's camera, downloads the 
 compares it with the kernel's frame, goes full screen and back, sends a frame made for an old
 view and checks that it is dropped, and closes the viewer: the view and its controls go, and
 using it raises an error that says it is closed.
-With TOONMESH_SCREENSHOT=1 it also writes the screenshot the viewer's page shows (docs/viewer.png).
+With TOONMESH_SCREENSHOT=1 it also writes the screenshot the viewer's page shows (docs/viewer.png:
+the viewer and its controls after the drag and the wheel turn).
 """
 
 from __future__ import annotations
@@ -249,8 +250,6 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             after = _pixels(img.screenshot())
             sizes = page.evaluate("window.__sizes")
             exact_marks, busy_marks = page.evaluate("[window.__exact, window.__busy]")
-            if os.environ.get("TOONMESH_SCREENSHOT") == "1":  # the viewer page's picture: after the drag
-                cells.first.screenshot(path=str(SCREENSHOT))
             counts = _run_cell(page, cells, 1, "renders").split()
             kernel_renders, kernel_views, early, off = int(counts[1]), int(counts[3]), int(counts[5]), float(counts[7])
 
@@ -268,6 +267,8 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             page.wait_for_timeout(300)
             zoomed = _pixels(img.screenshot())
             stats = viewer.locator(".toonmesh-stats").inner_text()
+            if os.environ.get("TOONMESH_SCREENSHOT") == "1":  # the viewer page's picture: after the drag and zoom
+                cells.first.locator(".jp-OutputArea").screenshot(path=str(SCREENSHOT))
 
             # a control: outlines off re-renders (the frame has fewer dark pixels)
             shown = int(viewer.get_attribute("data-frames-shown"))

@@ -164,7 +164,7 @@ function render({ model, el }) {
     b.dataset.axis = axis;
   }
   button("toonmesh-screenshot", "\u2913 PNG", "download the current full-size frame as PNG", screenshot);
-  const full = button("toonmesh-fullscreen", "\u26f6", "full screen", () => {
+  const full = button("toonmesh-fullscreen", "full", "full screen (again to leave)", () => {
     if (document.fullscreenElement === root) document.exitFullscreen();
     else if (root.requestFullscreen) root.requestFullscreen().catch(() => {});
   });
