@@ -291,7 +291,8 @@ class Viewer:
         if not isinstance(controls, (bool, np.bool_)):
             raise TypeError(f"controls: expected True or False, got {type(controls).__name__}")
         if vertices is None:
-            raise ValueError("vertices: the scene has no mesh")
+            raise TypeError("vertices: expected the scene (arrays with faces, a trimesh, a file's path, a "
+                            "trimesh.Scene, a toonmesh.Mesh or a list of meshes), got None")
         self._renderer = renderer if renderer is not None else shared_renderer(backend)
         self._options = RenderOptions(**options)  # checked before any upload
         self._given: Dict[str, Any] = {k: v for k, v in options.items() if k != "camera" and v is not None}
@@ -582,7 +583,7 @@ class Viewer:
     def turntable(self, path: "str | os.PathLike[str]", seconds: float = 4.0, fps: int = 24) -> str:
         """Writes a turn of the view about its target and the world's up (from the current view,
         all the way round, ``seconds`` long at ``fps`` frames per second: ``round(seconds * fps)``
-        frames at the viewer's size and settings) to ``path``, a ``.gif`` (Pillow) or ``.mp4``
+        frames, at least one, at the viewer's size and settings) to ``path``, a ``.gif`` (Pillow) or ``.mp4``
         (imageio-ffmpeg, H.264; width and height must be even). The views are drawn by the
         renderer's many-view render (:meth:`toonmesh.Renderer.render_many`). Returns the path
         written, as a string. ``seconds`` in (0, 600], ``fps`` an int in [1, 60]."""
@@ -598,9 +599,9 @@ class Viewer:
             raise TypeError(f"fps: expected an int, got {type(fps).__name__}")
         if not 1 <= fps <= 60:
             raise ValueError(f"fps: must be in [1, 60], got {fps}")
-        count = round(seconds * fps)
-        if count < 1:
-            raise ValueError(f"seconds: {seconds:g} s at {fps} fps is no frame")
+        if seconds == 0:
+            raise ValueError("seconds: must be more than 0, got 0")
+        count = max(1, round(seconds * fps))
         width, height = self._options.width, self._options.height
         if kind == ".mp4" and (width % 2 or height % 2):
             raise ValueError(f"path: an MP4 (H.264) needs an even width and height, the viewer is {width}x{height}")
@@ -827,7 +828,7 @@ def _gif_writer() -> Any:
 
 def _mp4_writer() -> Any:
     try:
-        import imageio_ffmpeg
+        import imageio_ffmpeg  # type: ignore[import-untyped]
     except ImportError:
         raise ImportError("turntable: writing an MP4 needs imageio-ffmpeg (pip install 'toonmesh[notebook]')") from None
 
