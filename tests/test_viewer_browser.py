@@ -220,18 +220,20 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             before = _pixels(img.screenshot())
             box = img.bounding_box()
             x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-            page.mouse.click(x, y, button="right")
-            page.wait_for_timeout(300)
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            page.mouse.click(x, y, button="right")  # a pan of no length: the full-size frame again
+            _wait_exact_after(page, shown)
             jupyter_menus = page.locator(".lm-Menu").count()
             page.keyboard.press("Escape")
 
-            # before the view has focus, the wheel is the notebook's: no frame comes
+            # before the view has focus, the wheel is the notebook's: no view is sent, no frame comes
             page.evaluate("document.activeElement && document.activeElement.blur()")
-            shown = int(viewer.get_attribute("data-frames-shown"))
+            shown, sent = int(viewer.get_attribute("data-frames-shown")), int(viewer.get_attribute("data-views-sent"))
             page.mouse.move(x, y)
             page.mouse.wheel(0, -200)
             page.wait_for_timeout(800)
             unfocused_frames = int(viewer.get_attribute("data-frames-shown")) - shown
+            unfocused_views = int(viewer.get_attribute("data-views-sent")) - sent
 
             first_frame = int(viewer.get_attribute("data-frame"))
             shown = int(viewer.get_attribute("data-frames-shown"))
@@ -317,7 +319,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     assert toolbar == {"home": 1, "axes": ["+x", "-x", "+y", "-y", "+z", "-z"], "screenshot": 1, "fullscreen": 1,
                        "suppress": "", "tabindex": "0"}, toolbar
     assert menu_prevented and jupyter_menus == 0, (menu_prevented, jupyter_menus)
-    assert unfocused_frames == 0, unfocused_frames
+    assert unfocused_frames == 0 and unfocused_views == 0, (unfocused_frames, unfocused_views)
 
     assert before.shape == after.shape and abs(before.shape[0] - 360) <= 1 and abs(before.shape[1] - 480) <= 1
     changed = np.abs(before - after).max(axis=2) > 24

@@ -210,7 +210,6 @@ class _Shared:
         self.lock = threading.Lock()
         self.wake = threading.Condition(self.lock)
         self.wanted: Optional[bool] = None  # the draft flag of the latest frame asked for
-        self.busy = False
         self.closed = False
         self.worker: Optional[threading.Thread] = None
         self.view_id = 0  # the number of the browser's latest view applied (0: none yet)
