@@ -1657,6 +1657,8 @@ def _viewer_call(method: str) -> Callable[..., Any]:
 
 
 DRAG = Number(-1e6, 1e6)
+TURNTABLES = tempfile.mkdtemp(prefix="toonmesh-bad-arguments-turntable-")
+atexit.register(shutil.rmtree, TURNTABLES, ignore_errors=True)
 VIEWER_SETTINGS = [p for p in FRAME if p.name != "outputs"]  # a viewer shows the colour image
 
 CASES += [
@@ -1678,6 +1680,11 @@ CASES += [
     Case("Viewer.zoom", _viewer_call("zoom"), dict(factor=1.5), [Param("factor", Number(1e-3, 1e3))]),
     Case("Viewer.set", _viewer_call("set"), dict(SMALL, outlines="mesh", msaa=1, supersample=1), VIEWER_SETTINGS),
     Case("Viewer.snapshot", _viewer_call("snapshot"), _frame(), FRAME),
+    Case("Viewer.view_from", _viewer_call("view_from"), dict(axis="+x"), [Param("axis", Name(tm.viewer.AXES))]),
+    # the path's checks: tests/test_viewer_lifetime.py
+    Case("Viewer.turntable", _viewer_call("turntable"),
+         dict(path=os.path.join(TURNTABLES, "turn.gif"), seconds=0.5, fps=4),
+         [Param("seconds", Number(0, 600, open_lo=True, slow_above=2)), Param("fps", Integer(1, 60))]),
 ]
 
 
@@ -2075,7 +2082,7 @@ def test_every_public_callable_is_in_the_table() -> None:
     # A render's result: its methods write its images out (test_render.py, test_render_outlines.py).
     no_arguments |= {"RenderResult"} | _methods(tm.RenderResult)
     # The viewer's methods without arguments: tests/test_viewer.py.
-    no_arguments |= {"Viewer.close", "Viewer.code", "Viewer.reframe"}
+    no_arguments |= {"Viewer.close", "Viewer.code", "Viewer.reframe", "Viewer.home"}
     public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
     public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny"}
     # toonmesh.testing: what its comparisons return, and need_peer (tests/test_testing.py: it

@@ -1,13 +1,22 @@
 """toonmesh.Viewer in a real browser: a JupyterLab server and headless Chromium (Debian's
 ``chromium``, installed by scripts/system-deps.sh) driven through Playwright.
 
-The test opens a notebook that shows a viewer of the bunny, runs it, drags across the frame
-and checks that the picture changed, that the kernel sent new frames (the frame numbers come
-from the kernel), that the frames drawn while dragging were smaller than the last one, which is
-full size, and that the kernel's viewer agrees (a cell run afterwards reads its render count);
-then turns the wheel and checks that the bunny grew, and switches the outlines off with the
-on-screen controls and checks that the ink went.
-With TOONMESH_SCREENSHOT=1 it also writes the screenshot the viewer's page shows (docs/viewer.png).
+The test opens a notebook that shows a viewer of the bunny (its renders slowed down by 0.2 s,
+so that pointer moves come faster than frames), runs it and checks the view's habits: the
+context menu is suppressed, the wheel does nothing before the view has focus. It drags across
+the frame and checks that the picture changed, that the kernel sent new frames (the frame
+numbers come from the kernel), that the frames drawn while dragging were smaller than the last
+one, which is full size, that the view was marked as a draft then exact, and busy meanwhile;
+that the browser sent a view only once the last was answered (the kernel counts the views that
+came early: none) and merged the moves meanwhile (fewer views than moves), losing none (the
+kernel's camera is the whole drag's). Then it turns the wheel and checks that the bunny grew,
+switches the outlines off with the on-screen controls and checks that the ink went, presses
+the toolbar's +x and home buttons and checks the kernel's camera, downloads the screenshot and
+compares it with the kernel's frame, goes full screen and back, sends a frame made for an old
+view and checks that it is dropped, and closes the viewer: the view and its controls go, and
+using it raises an error that says it is closed.
+With TOONMESH_SCREENSHOT=1 it also writes the screenshot the viewer's page shows (docs/viewer.png:
+the viewer and its controls after the drag and the wheel turn).
 """
 
 from __future__ import annotations
@@ -15,6 +24,7 @@ from __future__ import annotations
 import io
 import json
 import os
+import re
 import shutil
 import socket
 import subprocess
@@ -31,15 +41,42 @@ from conftest import need
 ROOT = Path(__file__).resolve().parent.parent
 SCREENSHOT = ROOT / "docs" / "viewer.png"
 
+# the drag: DRAG_STEPS pointer moves of (DRAG_DX, DRAG_DY) pixels each
+DRAG_STEPS, DRAG_DX, DRAG_DY = 12, 12, 3
+
 CELLS = [
+    "import time\n"
+    "import numpy as np\n"
     "import toonmesh as tm\n"
     "from toonmesh.data import bunny\n"
     "\n"
     "V, F = bunny()\n"
     "blue = tm.Material.bands('#4f8fd8')\n"
     "v = tm.Viewer(V, F, material=blue, outlines='mesh', width=480, height=360, controls=True)\n"
+    "_show = v._show\n"
+    "def slow(draft):  # frames slower than the pointer's moves\n"
+    "    time.sleep(0.2)\n"
+    "    return _show(draft)\n"
+    "v._show = slow\n"
     "v",
-    "print('renders', v.render_count, 'camera eye', v.camera.eye)",
+    # after the drag: the kernel's counts, and its camera against the whole drag at once
+    "del v._show\n"
+    "same = tm.Viewer(V, F, material=blue, outlines='mesh', width=480, height=360)\n"
+    f"same.orbit({DRAG_STEPS * DRAG_DX}, {DRAG_STEPS * DRAG_DY})\n"
+    "off = float(np.abs(np.subtract(v.camera.eye, same.camera.eye)).max())\n"
+    "same.close()\n"
+    "print('renders', v.render_count, 'views', v._shared.views, 'early', v._shared.early, 'off', off)",
+    "d = np.subtract(v.camera.eye, v.camera.target)\n"
+    "print('direction', *(d / np.linalg.norm(d)).round(6))",
+    "np.save('frame.npy', v.frame)\n"
+    "print('home', bool(np.allclose(v.camera.eye, v._home.eye) and np.allclose(v.camera.target, v._home.target)))",
+    "v.widget.show_frame(v.widget._frame, v.widget._format, 10**6, 480, 360, view_id=0)\n"
+    "print('stale sent')",
+    "v.close()\n"
+    "try:\n"
+    "    v.orbit(5, 0)\n"
+    "except Exception as e:\n"
+    "    print('error', type(e).__name__, e)",
 ]
 
 
@@ -118,14 +155,33 @@ def _pixels(png: bytes) -> np.ndarray:
     return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
 
 
-def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
+def _run_cell(page, cells, i: int, text: str, timeout: int = 30_000) -> str:
+    """Runs cell ``i`` and returns the text of its output that contains ``text``."""
+    cell = cells.nth(i)
+    cell.locator(".jp-InputPrompt").click()
+    page.keyboard.press("Shift+Enter")
+    printed = cell.locator(".jp-OutputArea-output", has_text=text)
+    printed.wait_for(timeout=timeout)
+    return printed.inner_text()
+
+
+def _wait_exact_after(page, frames_shown: int, timeout: int = 20_000) -> None:
+    """Waits until a full-size frame is shown after ``frames_shown`` frames, and nothing is on its way."""
+    page.wait_for_function(
+        "(n) => { const r = document.querySelector('.toonmesh-viewer');"
+        " return +r.dataset.framesShown > n && r.dataset.exact === '1' && r.dataset.busy === '0'; }",
+        arg=frames_shown, timeout=timeout)
+
+
+def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     chromium = _chromium()
     need("PIL")
     sync_api = need("playwright.sync_api")
+    work = tmp_path / "work"
     with sync_api.sync_playwright() as p:
         browser = p.chromium.launch(executable_path=chromium, args=["--no-sandbox"])
         try:
-            page = browser.new_page(viewport={"width": 1500, "height": 900})
+            page = browser.new_page(viewport={"width": 1500, "height": 900}, accept_downloads=True)
             page.goto(f"{jupyter_lab}/lab/tree/viewer.ipynb")
             page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=30_000)
             # the kernel connected and idle (the status bar says "Python 3 (ipykernel) | Idle")
@@ -138,80 +194,163 @@ def test_dragging_the_viewer_in_chromium_orbits_the_view(jupyter_lab, tmp_path):
             img = viewer.locator("img")
             page.wait_for_function("document.querySelector('.toonmesh-viewer img').naturalWidth > 0")
             page.evaluate("""() => {
-                const img = document.querySelector('.toonmesh-viewer img');
+                const root = document.querySelector('.toonmesh-viewer');
+                const img = root.querySelector('img');
                 window.__sizes = [];
+                window.__exact = [];
+                window.__busy = [];
                 img.addEventListener('load', () => window.__sizes.push(img.naturalWidth));
+                new MutationObserver(() => {
+                    if (window.__exact.at(-1) !== root.dataset.exact) window.__exact.push(root.dataset.exact);
+                    if (window.__busy.at(-1) !== root.dataset.busy) window.__busy.push(root.dataset.busy);
+                }).observe(root, { attributes: true });
             }""")
-            first_frame = int(viewer.get_attribute("data-frame"))
+            first = {k: viewer.get_attribute(f"data-{k}") for k in ("frame", "frames-shown", "exact", "busy")}
+            toolbar = {
+                "home": viewer.locator(".toonmesh-home").count(),
+                "axes": viewer.locator(".toonmesh-axis").evaluate_all("bs => bs.map(b => b.dataset.axis)"),
+                "screenshot": viewer.locator(".toonmesh-screenshot").count(),
+                "fullscreen": viewer.locator(".toonmesh-fullscreen").count(),
+                "suppress": viewer.get_attribute("data-jp-suppress-context-menu"),
+                "tabindex": viewer.get_attribute("tabindex"),
+            }
+            # the context menu is suppressed on the view (right-drag pans), the browser's and JupyterLab's
+            menu_prevented = img.evaluate(
+                "img => !img.dispatchEvent(new MouseEvent('contextmenu', { bubbles: true, cancelable: true, button: 2 }))")
             before = _pixels(img.screenshot())
-
             box = img.bounding_box()
             x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            page.mouse.click(x, y, button="right")  # a pan of no length: the full-size frame again
+            _wait_exact_after(page, shown)
+            jupyter_menus = page.locator(".lm-Menu").count()
+            page.keyboard.press("Escape")
+
+            # before the view has focus, the wheel is the notebook's: no view is sent, no frame comes
+            page.evaluate("document.activeElement && document.activeElement.blur()")
+            shown, sent = int(viewer.get_attribute("data-frames-shown")), int(viewer.get_attribute("data-views-sent"))
+            page.mouse.move(x, y)
+            page.mouse.wheel(0, -200)
+            page.wait_for_timeout(800)
+            unfocused_frames = int(viewer.get_attribute("data-frames-shown")) - shown
+            unfocused_views = int(viewer.get_attribute("data-views-sent")) - sent
+
+            first_frame = int(viewer.get_attribute("data-frame"))
+            shown = int(viewer.get_attribute("data-frames-shown"))
             page.mouse.move(x, y)
             page.mouse.down()
-            for i in range(1, 13):
-                page.mouse.move(x + 12 * i, y + 3 * i)
+            for i in range(1, DRAG_STEPS + 1):
+                page.mouse.move(x + DRAG_DX * i, y + DRAG_DY * i)
                 page.wait_for_timeout(30)
             page.mouse.up()
             # The full-size frame follows the release; wait until it has been shown.
-            page.wait_for_function(
-                "(n) => { const r = document.querySelector('.toonmesh-viewer');"
-                " return +r.dataset.frame >= n && r.querySelector('img').naturalWidth === 480"
-                " && (window.__sizes.at(-1) === 480); }",
-                arg=first_frame + 2, timeout=20_000,
-            )
-            page.wait_for_timeout(300)
+            _wait_exact_after(page, shown)
+            page.wait_for_function("window.__sizes.at(-1) === 480", timeout=20_000)
+            focused = page.evaluate("document.activeElement === document.querySelector('.toonmesh-viewer')")
             last_frame = int(viewer.get_attribute("data-frame"))
+            views_sent = int(viewer.get_attribute("data-views-sent"))
             after = _pixels(img.screenshot())
             sizes = page.evaluate("window.__sizes")
-            if os.environ.get("TOONMESH_SCREENSHOT") == "1":  # the viewer page's picture: after the drag
-                cells.first.screenshot(path=str(SCREENSHOT))
+            exact_marks, busy_marks = page.evaluate("[window.__exact, window.__busy]")
+            counts = _run_cell(page, cells, 1, "renders").split()
+            kernel_renders, kernel_views, early, off = int(counts[1]), int(counts[3]), int(counts[5]), float(counts[7])
 
-            # the wheel turned away from the user zooms in: the bunny covers more of the frame
-            page.mouse.move(x, y)
+            # once the view has focus (a click: running the cell took it), the wheel turned away
+            # from the user zooms in
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            img.scroll_into_view_if_needed()  # the output of the cell run moved it
+            box = img.bounding_box()
+            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+            page.mouse.click(x, y)
+            _wait_exact_after(page, shown)
+            shown = int(viewer.get_attribute("data-frames-shown"))
             page.mouse.wheel(0, -200)
-            page.wait_for_function(
-                "(n) => { const r = document.querySelector('.toonmesh-viewer');"
-                " return +r.dataset.frame > n && window.__sizes.at(-1) === 480; }",
-                arg=last_frame, timeout=20_000,
-            )
+            _wait_exact_after(page, shown)
             page.wait_for_timeout(300)
             zoomed = _pixels(img.screenshot())
+            stats = viewer.locator(".toonmesh-stats").inner_text()
+            if os.environ.get("TOONMESH_SCREENSHOT") == "1":  # the viewer page's picture: after the drag and zoom
+                cells.first.locator(".jp-OutputArea").screenshot(path=str(SCREENSHOT))
 
             # a control: outlines off re-renders (the frame has fewer dark pixels)
-            before_switch = int(viewer.get_attribute("data-frame"))
+            shown = int(viewer.get_attribute("data-frames-shown"))
             page.locator(".toonmesh-outlines-kind select").select_option("none")  # the outlines' kind
             page.wait_for_function(
-                "(n) => +document.querySelector('.toonmesh-viewer').dataset.frame > n", arg=before_switch, timeout=20_000)
+                "(n) => +document.querySelector('.toonmesh-viewer').dataset.framesShown > n", arg=shown, timeout=20_000)
             page.wait_for_timeout(300)
             no_outlines = _pixels(img.screenshot())
 
-            # the kernel's own count, read by the notebook's second cell (run after the drag)
-            cell = cells.nth(1)
-            cell.locator(".jp-InputPrompt").click()
-            page.keyboard.press("Shift+Enter")
-            printed = cell.locator(".jp-OutputArea-output", has_text="renders")
-            printed.wait_for(timeout=20_000)
-            kernel_renders = int(printed.inner_text().split()[1])
+            # the toolbar: the view from +x, then home (the first view)
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            viewer.locator(".toonmesh-axis[data-axis='+x']").click()
+            _wait_exact_after(page, shown)
+            direction = [float(t) for t in _run_cell(page, cells, 2, "direction").split()[1:]]
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            viewer.locator(".toonmesh-home").click()
+            _wait_exact_after(page, shown)
+            home = _run_cell(page, cells, 3, "home").split()[1]
+            with page.expect_download() as download:
+                viewer.locator(".toonmesh-screenshot").click()
+            download.value.save_as(str(tmp_path / "screenshot.png"))
+
+            viewer.locator(".toonmesh-fullscreen").click()
+            page.wait_for_function("document.fullscreenElement === document.querySelector('.toonmesh-viewer')",
+                                   timeout=5_000)
+            viewer.locator(".toonmesh-fullscreen").click()
+            page.wait_for_function("document.fullscreenElement === null", timeout=5_000)
+
+            # a frame made for an older view than the one shown is dropped
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            _run_cell(page, cells, 4, "stale sent")
+            page.wait_for_function("+document.querySelector('.toonmesh-viewer').dataset.dropped >= 1", timeout=10_000)
+            stale_shown = int(viewer.get_attribute("data-frames-shown")) - shown
+
+            # close(): the view and its controls leave the notebook; using it says it is closed
+            closed_error = _run_cell(page, cells, 5, "error")
+            page.wait_for_function("document.querySelectorAll('.toonmesh-viewer').length === 0", timeout=10_000)
+            controls_left = page.locator(".toonmesh-outlines-kind").count()
         except Exception:
             page.screenshot(path=str(tmp_path / "failure.png"))
             raise
         finally:
             browser.close()
 
+    assert first["exact"] == "1" and first["busy"] == "0" and int(first["frames-shown"]) >= 1, first
+    assert toolbar == {"home": 1, "axes": ["+x", "-x", "+y", "-y", "+z", "-z"], "screenshot": 1, "fullscreen": 1,
+                       "suppress": "", "tabindex": "0"}, toolbar
+    assert menu_prevented and jupyter_menus == 0, (menu_prevented, jupyter_menus)
+    assert unfocused_frames == 0 and unfocused_views == 0, (unfocused_frames, unfocused_views)
+
     assert before.shape == after.shape and abs(before.shape[0] - 360) <= 1 and abs(before.shape[1] - 480) <= 1
     changed = np.abs(before - after).max(axis=2) > 24
     assert changed.mean() > 0.02, f"only {changed.mean():.1%} of the pixels changed"
     assert last_frame >= first_frame + 2, (first_frame, last_frame)
-    assert sizes and max(sizes) == 480 and min(sizes) < 480, sizes  # drafts while dragging, then full size
+    assert sizes and sizes[-1] == 480 and min(sizes) < 480, sizes  # drafts while dragging, then full size
+    assert "0" in exact_marks and exact_marks[-1] == "1", exact_marks  # a draft shown, then the exact frame
+    assert "1" in busy_marks and busy_marks[-1] == "0", busy_marks
+    assert focused
+    # flow control: one view in flight at a time, the moves merged meanwhile, none lost
+    assert early == 0, early
+    assert kernel_views == views_sent and 2 <= views_sent < DRAG_STEPS, (kernel_views, views_sent)
+    assert off < 1e-9, off
     assert kernel_renders >= last_frame
 
     def covered(picture):  # pixels that are not the white background
         return float((picture.min(axis=2) < 200).mean())
 
     assert covered(zoomed) > 1.2 * covered(after), (covered(after), covered(zoomed))
+    assert re.fullmatch(r"\d+ fps \u00b7 \d+ ms", stats), stats
 
     def inked(picture):  # near-black pixels: outlines and the darkest band
         return float((picture.max(axis=2) < 40).mean())
 
     assert inked(no_outlines) < 0.9 * inked(zoomed), (inked(zoomed), inked(no_outlines))
+
+    assert direction[0] > 0.999, direction  # the eye on the +x side
+    assert home == "True"
+    shot = np.asarray(__import__("PIL.Image", fromlist=["Image"]).open(tmp_path / "screenshot.png"))
+    np.testing.assert_array_equal(shot, np.load(work / "frame.npy"))  # the kernel's exact frame, as it is
+
+    assert stale_shown == 0, stale_shown
+    assert "ViewerClosedError" in closed_error and "closed" in closed_error.split("ViewerClosedError", 1)[1], closed_error
+    assert controls_left == 0

@@ -41,7 +41,7 @@ from toonmesh._render import (
 
 from toonmesh._load import load
 from toonmesh._render import __all__ as _rendering
-from toonmesh.viewer import Viewer
+from toonmesh.viewer import Viewer, ViewerClosedError
 
 __all__ = [
     *_rendering,
@@ -59,6 +59,7 @@ __all__ = [
     "GpuError",
     "GpuUnavailableError",
     "Viewer",
+    "ViewerClosedError",
     "__version__",
     "edges",
     "get_num_threads",

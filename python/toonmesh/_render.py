@@ -293,25 +293,50 @@ def render(
     """
     iterations = _smoothing_iterations(smooth_iterations)
     opts = RenderOptions(**options)  # checked before any upload
-    if isinstance(vertices, (list, tuple)) and faces is None:
-        items: List[Any] = list(vertices)
-    elif vertices is None:
-        items = []
-    elif isinstance(vertices, Mesh):
-        items = [vertices]
-    elif faces is None and (isinstance(vertices, (str, os.PathLike)) or _load.is_scene(vertices)):
-        loaded = _load.load(vertices) if isinstance(vertices, (str, os.PathLike)) else _load.scene_meshes(vertices)
-        items = loaded if normals is None else [_with_normals(m, normals) for m in loaded]
-    else:
-        items = [Mesh(vertices, faces, normals=normals)]  # a trimesh brings its colour
-    if options.get("material") is None:  # colours as the mesh has them: under a white material
-        white = getattr(Material, opts.material.model)(_load.OWN_COLOURS_WHITE)
-        items = _load.under_own_colours(items, white)
-    if iterations:  # a list's trimeshes are read as meshes when smoothing (as the viewer reads them)
-        items = [x if isinstance(x, Mesh) else Mesh(x) for x in items]
+    items = own_colours(scene_items(vertices, faces, normals), opts, options.get("material"))
     renderer = shared_renderer(backend)
     with meshes_on_device(renderer, items, iterations) as placed:
         return draw(renderer, placed, opts)
+
+
+def scene_items(vertices: Any, faces: Any = None, normals: Normals = None) -> List[Any]:
+    """The scene's items as :func:`render` reads its first arguments (so does the viewer): (V, F)
+    arrays or a ``trimesh.Trimesh`` as one :class:`Mesh` with ``normals``; a mesh file's path
+    (str or os.PathLike) or a ``trimesh.Scene`` read as :func:`toonmesh.load` reads them (with
+    ``normals`` in place of a file's own where given); a :class:`Mesh`, or a list of
+    :class:`Mesh`, :class:`MeshHandle` and ``trimesh.Trimesh`` items (a trimesh made a
+    :class:`Mesh` with ``normals``); None for an empty scene. Errors name ``vertices``/``faces``."""
+    if isinstance(vertices, (list, tuple)) and faces is None:
+        return [Mesh(x, normals=normals) if _is_trimesh(x) else x for x in vertices]
+    if vertices is None:
+        return []
+    if isinstance(vertices, Mesh):
+        return [vertices]
+    if faces is None and (isinstance(vertices, (str, os.PathLike)) or _load.is_scene(vertices)):
+        loaded = _load.load(vertices) if isinstance(vertices, (str, os.PathLike)) else _load.scene_meshes(vertices)
+        return loaded if normals is None else [_with_normals(m, normals) for m in loaded]
+    return [Mesh(vertices, faces, normals=normals)]  # a trimesh brings its colour
+
+
+def _is_trimesh(value: Any) -> bool:
+    """Whether a scene item is a ``trimesh.Trimesh`` (without importing trimesh)."""
+    return not isinstance(value, (Mesh, MeshHandle)) and hasattr(value, "vertices") and hasattr(value, "faces")
+
+
+def own_colours_material(opts: RenderOptions, material: Optional[Material]) -> Optional[Material]:
+    """The material meshes that carry colours or a texture (and name no material) are drawn
+    under when a render names no ``material``: the default shading model (``opts.material``'s)
+    in white, so their colours show as they are; None when ``material`` is given."""
+    if material is not None:
+        return None
+    return getattr(Material, opts.material.model)(_load.OWN_COLOURS_WHITE)  # type: ignore[no-any-return]
+
+
+def own_colours(items: List[Any], opts: RenderOptions, material: Optional[Material]) -> List[Any]:
+    """``items`` as :func:`render` draws them with ``material`` (None where none was given):
+    see :func:`own_colours_material`. The caller's meshes are not changed (copies)."""
+    white = own_colours_material(opts, material)
+    return items if white is None else _load.under_own_colours(items, white)
 
 
 def _with_normals(m: Mesh, normals: Normals) -> Mesh:

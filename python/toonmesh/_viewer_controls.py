@@ -10,6 +10,7 @@ Imported only where ipywidgets is installed."""
 from __future__ import annotations
 
 import html
+import weakref
 from typing import TYPE_CHECKING, Any, Callable, List, Tuple
 
 import ipywidgets as w  # type: ignore[import-untyped]
@@ -30,10 +31,13 @@ _MIN_HEIGHT = 360
 
 class ControlPanel(Panel):
     """The viewer's frame with the column of controls beside it (``widget``, an HBox); every
-    control's widget by key in ``widgets`` (``"material.thresholds[0]"``, ``"outlines.kind"``)."""
+    control's widget by key in ``widgets`` (``"material.thresholds[0]"``, ``"outlines.kind"``).
+    It holds the viewer through a weak reference (the widgets live in ipywidgets' registry until
+    closed), so the viewer is freed once nothing else refers to it."""
 
     def __init__(self, viewer: "Viewer"):
         super().__init__()
+        viewer = weakref.proxy(viewer)
         self.viewer = viewer
         self.note = w.HTML("")
         material = Source.whole(lambda: viewer.material, lambda m: viewer.set(material=m))
@@ -56,6 +60,19 @@ class ControlPanel(Panel):
         self.column = w.VBox(rows, layout=w.Layout(overflow="auto", flex="0 0 auto"))
         self.widget = w.HBox([viewer.widget, self.column]) if viewer.widget is not None else self.column
         self.refresh()
+
+    def close(self) -> None:
+        """Closes the column, the box around it and every control (they leave the notebook)."""
+        seen = set()
+        stack = [self.widget, self.column, self.note, *self.widgets.values()]
+        while stack:
+            widget = stack.pop()
+            if id(widget) in seen:
+                continue
+            seen.add(id(widget))
+            stack.extend(getattr(widget, "children", ()) or ())
+            stack.extend(v for v in (getattr(widget, n, None) for n in widget.keys) if isinstance(v, w.Widget))  # layout, style
+            widget.close()
 
     def _light(self) -> Any:
         lights = self.viewer.lights

@@ -1,75 +1,212 @@
 """The browser side of :class:`toonmesh.Viewer`: an anywidget that shows the frames the kernel
-sends and sends pointer events back. Imported only where anywidget is installed."""
+sends, sends pointer events and toolbar clicks back, and paces them to the kernel's answers.
+Imported only where anywidget is installed."""
 
 from __future__ import annotations
 
-from typing import Any, Callable, Dict
+import weakref
+from typing import Any, Callable, Dict, Optional, Union
 
 import anywidget
 import traitlets
 
 _ESM = r"""
-// Shows the kernel's frames in an <img>; sends drags, wheel turns and double-clicks as events.
-// Events are merged per animation frame, and "settle" (render full size) follows once the
-// pointer has stopped for SETTLE_MS or is released.
+// Shows the kernel's frames in an <img> under a toolbar; sends drags, wheel turns, double-clicks
+// and toolbar clicks as numbered views. Flow control: one view is in flight at a time; the
+// moves made meanwhile are merged into the next one, sent when the kernel answers (a frame or an
+// error carrying the view's number). A frame made for an older view than the one shown is
+// dropped. "exact" (render full size) follows once the pointer has stopped for SETTLE_MS or is
+// released. The root element's data-frames-shown counts the frames shown, data-exact is "1"
+// while a full-size frame is shown ("0" for a draft), data-busy "1" while a full-size frame is
+// on its way, data-dropped counts stale frames dropped, data-views-sent the views sent.
 const SETTLE_MS = 150;
+const ANSWER_TIMEOUT_MS = 10000;  // a view never answered (a kernel restarted) stops blocking
+const AXES = ["+x", "-x", "+y", "-y", "+z", "-z"];
+const BORDER = "1px solid #c8c8c8", FOCUSED = "1px solid #1a73e8";
 
 function render({ model, el }) {
   const root = document.createElement("div");
   root.className = "toonmesh-viewer";
-  root.style.cssText = "position: relative; display: inline-block; line-height: 0";
+  root.tabIndex = 0;  // focus: the wheel zooms only when the view has it
+  root.setAttribute("data-jp-suppress-context-menu", "");  // JupyterLab's menu stays off the view
+  root.setAttribute("data-lm-suppress-shortcuts", "");  // keys pressed here do not run notebook commands
+  Object.assign(root.dataset, { framesShown: "0", exact: "0", busy: "0", dropped: "0", viewsSent: "0" });
+  root.style.cssText = "position: relative; display: inline-block; line-height: 0; outline: none;"
+    + " background: #fff; border: " + BORDER + "; box-shadow: none";
+  const bar = document.createElement("div");
+  bar.className = "toonmesh-toolbar";
+  bar.style.cssText = "display: flex; gap: 3px; align-items: center; padding: 2px 3px; line-height: 1.3;"
+    + " font: 12px sans-serif; background: #f5f5f5; border-bottom: 1px solid #e0e0e0";
+  function button(cls, label, title, onclick) {
+    const b = document.createElement("button");
+    b.type = "button";
+    b.className = "toonmesh-button " + cls;
+    b.textContent = label;
+    b.title = title;
+    b.style.cssText = "font: 12px sans-serif; padding: 0 6px; cursor: pointer";
+    b.addEventListener("click", (e) => { e.preventDefault(); onclick(b); });
+    bar.appendChild(b);
+    return b;
+  }
+  const stage = document.createElement("div");
+  stage.style.cssText = "position: relative";
   const img = document.createElement("img");
   img.draggable = false;
   img.alt = "toonmesh viewer";
   img.style.cssText = "cursor: grab; touch-action: none; user-select: none; display: block";
   const note = document.createElement("div");
+  note.className = "toonmesh-note";
   note.style.cssText = "position: absolute; left: 4px; bottom: 4px; font: 12px sans-serif; line-height: 1.2; color: #a00";
-  root.append(img, note);
-  el.appendChild(root);
+  const busy = document.createElement("div");
+  busy.className = "toonmesh-busy";
+  busy.title = "the full-size frame is on its way";
+  busy.style.cssText = "position: absolute; right: 6px; top: 6px; width: 10px; height: 10px; border-radius: 50%;"
+    + " border: 2px solid #1a73e8; border-right-color: transparent; visibility: hidden;"
+    + " animation: toonmesh-spin 0.8s linear infinite";
+  const style = document.createElement("style");
+  style.textContent = "@keyframes toonmesh-spin { to { transform: rotate(360deg) } }"
+    + " .toonmesh-viewer:fullscreen { display: flex; flex-direction: column; align-items: center; justify-content: center }";
+  stage.append(img, note, busy);
 
-  let url = null;
-  function show() {
+  // -- flow control ---------------------------------------------------------------------------
+  let nextId = 1, inflight = 0, sentAt = 0, pending = null, scheduled = false, exactWanted = 0;
+  let shownViewId = 0, lastAnswers = -1, latency = null, inflightTimer = null;
+  function send() {
+    scheduled = false;
+    if (inflight || !pending) return;
+    const id = Math.max(nextId, model.get("_view_id") + 1);
+    nextId = id + 1;
+    if (pending.exact) exactWanted = id;
+    model.send({ event: "view", id, steps: pending.steps, exact: pending.exact });
+    root.dataset.viewsSent = String(+root.dataset.viewsSent + 1);
+    pending = null;
+    inflight = id;
+    sentAt = performance.now();
+    clearTimeout(inflightTimer);
+    inflightTimer = setTimeout(() => { inflight = 0; schedule(); }, ANSWER_TIMEOUT_MS);
+  }
+  function schedule() { if (!scheduled && pending && !inflight) { scheduled = true; requestAnimationFrame(send); } }
+  function add(step, exact) {
+    if (!pending) pending = { steps: [], exact: false };
+    const last = pending.steps[pending.steps.length - 1];
+    if (step && last && last.event === step.event && "dx" in step) { last.dx += step.dx; last.dy += step.dy; }
+    else if (step) pending.steps.push(step);
+    pending.exact = exact;
+    if (exact) setBusy(true);
+    schedule();
+  }
+  function setBusy(on) {
+    root.dataset.busy = on ? "1" : "0";
+    busy.style.visibility = on ? "visible" : "hidden";
+  }
+
+  // -- frames ---------------------------------------------------------------------------------
+  let url = null, exactFrame = null;
+  const metas = new Map();
+  const shownAt = [];
+  function answer() {
+    const answers = model.get("_answers");
+    if (answers === lastAnswers) return;
+    lastAnswers = answers;
+    const viewId = model.get("_view_id");
+    if (inflight && viewId >= inflight) {
+      latency = performance.now() - sentAt;
+      inflight = 0;
+      clearTimeout(inflightTimer);
+      schedule();
+    }
+    note.textContent = model.get("_error");
     const data = model.get("_frame");
-    if (!data || data.byteLength === 0) return;
-    const blob = new Blob([data], { type: "image/" + model.get("_format") });
+    if (model.get("_error") || !data || data.byteLength === 0) {
+      if (exactWanted && viewId >= exactWanted && !(pending && pending.exact)) setBusy(false);
+      return;
+    }
+    if (viewId < shownViewId) {  // made for an older view than the one shown: dropped
+      root.dataset.dropped = String(+root.dataset.dropped + 1);
+      return;
+    }
+    shownViewId = viewId;
+    const format = model.get("_format");
+    const blob = new Blob([data], { type: "image/" + format });
     const next = URL.createObjectURL(blob);
-    const previous = url;
-    url = next;
-    img.src = next;
-    if (previous) setTimeout(() => URL.revokeObjectURL(previous), 1000);
     const [w, h] = model.get("_size");
+    metas.set(next, { id: model.get("_frame_id"), viewId, exact: model.get("_exact"), blob, format });
+    img.src = next;
     img.style.width = w + "px";
     img.style.height = h + "px";
-    root.dataset.frame = String(model.get("_frame_id"));
-    note.textContent = model.get("_error");
   }
-  model.on("change:_frame", show);
-  model.on("change:_error", () => { note.textContent = model.get("_error"); });
-  show();
+  img.addEventListener("load", () => {
+    const meta = metas.get(img.src);
+    if (!meta) return;
+    metas.delete(img.src);
+    if (url && url !== img.src) URL.revokeObjectURL(url);
+    url = img.src;
+    for (const old of metas.keys()) { URL.revokeObjectURL(old); metas.delete(old); }  // superseded before shown
+    root.dataset.frame = String(meta.id);
+    root.dataset.framesShown = String(+root.dataset.framesShown + 1);
+    root.dataset.exact = meta.exact ? "1" : "0";
+    if (meta.exact) {
+      exactFrame = meta;
+      if (meta.viewId >= exactWanted && !(pending && pending.exact)) setBusy(false);
+    }
+    const now = performance.now();
+    shownAt.push(now);
+    while (shownAt.length && shownAt[0] < now - 1000) shownAt.shift();
+    stats.textContent = shownAt.length + " fps" + (latency === null ? "" : " \u00b7 " + Math.round(latency) + " ms");
+  });
+  model.on("change:_answers", answer);
+  answer();
 
-  let drag = null;
-  let pending = null;
-  let scheduled = false;
-  let settleTimer = null;
-  function flush() {
-    scheduled = false;
-    if (pending) { model.send(pending); pending = null; }
+  // -- toolbar --------------------------------------------------------------------------------
+  button("toonmesh-home", "\u2302", "home: the first view", () => add({ event: "home" }, true));
+  for (const axis of AXES) {
+    const b = button("toonmesh-axis", axis, "view from " + axis, () => add({ event: "axis", axis }, true));
+    b.dataset.axis = axis;
   }
+  button("toonmesh-screenshot", "\u2913 PNG", "download the current full-size frame as PNG", screenshot);
+  const full = button("toonmesh-fullscreen", "full", "full screen (again to leave)", () => {
+    if (document.fullscreenElement === root) document.exitFullscreen();
+    else if (root.requestFullscreen) root.requestFullscreen().catch(() => {});
+  });
+  const stats = document.createElement("span");
+  stats.className = "toonmesh-stats";
+  stats.title = "frames shown in the last second \u00b7 the last view's time to the kernel's answer";
+  stats.style.cssText = "margin-left: auto; padding-left: 8px; color: #555; white-space: nowrap";
+  bar.appendChild(stats);
+  function screenshot() {
+    const f = exactFrame;
+    if (!f) return;
+    const save = (blob) => {
+      const a = document.createElement("a");
+      a.href = URL.createObjectURL(blob);
+      a.download = "toonmesh-" + f.id + ".png";
+      document.body.appendChild(a);
+      a.click();
+      a.remove();
+      setTimeout(() => URL.revokeObjectURL(a.href), 10000);
+    };
+    if (f.format === "png") { save(f.blob); return; }  // the kernel's own PNG, byte for byte
+    createImageBitmap(f.blob).then((bitmap) => {
+      const canvas = document.createElement("canvas");
+      canvas.width = bitmap.width;
+      canvas.height = bitmap.height;
+      canvas.getContext("2d").drawImage(bitmap, 0, 0);
+      canvas.toBlob(save, "image/png");
+    });
+  }
+  root.append(style, bar, stage);
+  el.appendChild(root);
+
+  // -- pointer --------------------------------------------------------------------------------
+  let drag = null, settleTimer = null;
   function queue(event, dx, dy) {
-    if (pending && pending.event !== event) flush();
-    if (!pending) pending = { event, dx: 0, dy: 0 };
-    pending.dx += dx;
-    pending.dy += dy;
-    if (!scheduled) { scheduled = true; requestAnimationFrame(flush); }
+    add({ event, dx, dy }, false);
     clearTimeout(settleTimer);
     settleTimer = setTimeout(settle, SETTLE_MS);
   }
-  function settle() {
-    clearTimeout(settleTimer);
-    flush();
-    model.send({ event: "settle" });
-  }
+  function settle() { clearTimeout(settleTimer); add(null, true); }
   function down(e) {
+    root.focus({ preventScroll: true });
     drag = { x: e.clientX, y: e.clientY, event: (e.shiftKey || e.button === 2) ? "pan" : "orbit" };
     img.setPointerCapture(e.pointerId);
     img.style.cursor = "grabbing";
@@ -81,25 +218,36 @@ function render({ model, el }) {
     drag.x = e.clientX; drag.y = e.clientY;
     if (dx || dy) queue(drag.event, dx, dy);
   }
-  function up(e) {
+  function up() {
     if (!drag) return;
     drag = null;
     img.style.cursor = "grab";
     settle();
   }
-  function wheel(e) { e.preventDefault(); queue("zoom", 0, e.deltaY); }
-  function dblclick(e) { e.preventDefault(); model.send({ event: "frame" }); }
-  function menu(e) { e.preventDefault(); }
+  function wheel(e) {
+    if (!root.contains(document.activeElement)) return;  // not focused: the notebook scrolls
+    e.preventDefault();
+    queue("zoom", 0, e.deltaY);
+  }
+  function dblclick(e) { e.preventDefault(); add({ event: "frame" }, true); }
+  function menu(e) { e.preventDefault(); }  // right-drag pans
+  const focus = () => { root.style.border = FOCUSED; root.style.boxShadow = "0 0 0 1px #1a73e8"; };
+  const blur = () => { root.style.border = BORDER; root.style.boxShadow = "none"; };
   img.addEventListener("pointerdown", down);
   img.addEventListener("pointermove", move);
   img.addEventListener("pointerup", up);
   img.addEventListener("pointercancel", up);
-  img.addEventListener("wheel", wheel, { passive: false });
+  stage.addEventListener("wheel", wheel, { passive: false });
   img.addEventListener("dblclick", dblclick);
-  img.addEventListener("contextmenu", menu);
+  root.addEventListener("contextmenu", menu);
+  root.addEventListener("focus", focus);
+  root.addEventListener("blur", blur);
   return () => {
     clearTimeout(settleTimer);
+    clearTimeout(inflightTimer);
+    if (document.fullscreenElement === root) document.exitFullscreen();
     if (url) URL.revokeObjectURL(url);
+    for (const old of metas.keys()) URL.revokeObjectURL(old);
   };
 }
 
@@ -109,28 +257,55 @@ export default { render };
 
 class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
     """The widget a :class:`toonmesh.Viewer` displays: its last frame (PNG or JPEG bytes), the
-    frame's size on screen and its number."""
+    frame's size on screen, its number, the number of the browser's view it was made for, whether
+    it is the full-size frame, and a count of the answers sent (frames and errors)."""
 
     _esm = _ESM
     _frame = traitlets.Bytes(b"").tag(sync=True)
     _format = traitlets.Unicode("png").tag(sync=True)
     _frame_id = traitlets.Int(0).tag(sync=True)
+    _view_id = traitlets.Int(0).tag(sync=True)
+    _exact = traitlets.Bool(True).tag(sync=True)
     _size = traitlets.List([512, 512]).tag(sync=True)
     _error = traitlets.Unicode("").tag(sync=True)
+    _answers = traitlets.Int(0).tag(sync=True)
 
-    def attach(self, on_event: Callable[[Dict[str, Any]], None]) -> None:
-        """Sends the front end's events (dicts with ``event``, ``dx``, ``dy``) to ``on_event``."""
-        self.on_msg(lambda _widget, content, _buffers: on_event(content))
+    def attach(self, on_event: "Union[weakref.WeakMethod[Callable[[Dict[str, Any]], None]], Callable[[Dict[str, Any]], None]]") -> None:
+        """Sends the front end's messages (dicts, see ``Viewer._on_event``) to ``on_event``: a
+        callable, or a ``weakref.WeakMethod`` (the widget then does not keep its viewer alive;
+        messages after the viewer is gone are dropped)."""
+        def handle(_widget: Any, content: Dict[str, Any], _buffers: Any) -> None:
+            target: Optional[Callable[[Dict[str, Any]], None]] = on_event() if isinstance(on_event, weakref.WeakMethod) else on_event
+            if target is not None:
+                target(content)
 
-    def show_frame(self, data: bytes, image_format: str, frame_id: int, width: int, height: int) -> None:
-        """Sends a frame: encoded bytes shown at ``width`` x ``height`` CSS pixels."""
+        self.on_msg(handle)
+
+    def show_frame(self, data: bytes, image_format: str, frame_id: int, width: int, height: int,
+                   view_id: int = 0, exact: bool = True) -> None:
+        """Sends a frame: encoded bytes shown at ``width`` x ``height`` CSS pixels, made for the
+        browser's view ``view_id`` (the browser drops it if it shows a later view's frame);
+        ``exact``: the full-size frame (False: a draft drawn while the pointer moves)."""
         with self.hold_sync():
             self._frame = data
             self._format = image_format
             self._frame_id = frame_id
+            self._view_id = view_id
+            self._exact = bool(exact)
             self._size = [width, height]
             self._error = ""
+            self._answers += 1
 
-    def show_error(self, message: str) -> None:
-        """Shows a render's error over the frame."""
-        self._error = message
+    def show_error(self, message: str, view_id: int = 0) -> None:
+        """Shows a render's error over the frame, answering the browser's view ``view_id``."""
+        with self.hold_sync():
+            self._error = message
+            self._view_id = max(self._view_id, view_id)
+            self._answers += 1
+
+    def close(self) -> None:
+        """Closes the widget (its views leave the notebook) and its layout widget."""
+        layout = self.layout
+        super().close()
+        if layout is not None:
+            layout.close()

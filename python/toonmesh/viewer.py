@@ -6,19 +6,29 @@ uploaded to the GPU once. The widget needs the ``notebook`` extra (``pip install
 'toonmesh[notebook]'``: anywidget, ipywidgets, JupyterLab); without it, or where no widget front
 end runs (nbconvert, GitHub, a terminal), the viewer shows its current frame as a still PNG.
 
-Flow control: pointer events only move the camera (no render each); one thread renders the
-latest view when it is free, so a slow frame never queues a backlog. While the pointer moves,
+Flow control: the browser sends a view (the pointer's moves since the last one, numbered) only
+once the kernel has answered the last one, keeping the newest moves merged meanwhile; pointer
+events only move the camera (no render each); one thread renders the latest view when it is
+free, so a slow frame never queues a backlog, and each frame carries the number of the view it
+was made for (the browser drops one older than the frame it shows). While the pointer moves,
 frames are drawn at ``drag_scale`` of the size and sent as JPEG; when it stops (or is released)
 the full-size frame follows in ``image_format``.
+
+Lifetime: the render thread runs only while frames are wanted, and neither it nor the widget
+holds the viewer (weak references), so a viewer no longer referenced is freed with its uploaded
+meshes and its front end; :meth:`Viewer.close` frees them at once.
 """
 
 from __future__ import annotations
 
+import copy
 import io
 import math
+import os
 import re
 import threading
 import types
+import weakref
 from typing import TYPE_CHECKING, Any, Dict, Generic, List, Optional, Tuple, TypeVar, overload
 
 import numpy as np
@@ -26,7 +36,9 @@ import numpy as np
 from toonmesh import _core
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
 from toonmesh._described import default
-from toonmesh._render import PlacedMesh, Renderer, draw, place_meshes, remove_meshes, shared_renderer
+from toonmesh._load import is_scene
+from toonmesh._render import (PlacedMesh, Renderer, draw, draw_views, own_colours, place_meshes, remove_meshes,
+                              scene_items, shared_renderer)
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
 
@@ -52,6 +64,12 @@ _POLE_MARGIN = math.radians(1.0)
 # view): the core's defaults, should the view be switched to that projection.
 _FOV_Y = float(default(Camera, "look_at", "fov_y"))
 _HEIGHT = float(default(Camera, "orthographic", "height"))
+#: The sides :meth:`Viewer.view_from` (and the toolbar's axis buttons) look from.
+AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
+
+
+class ViewerClosedError(RuntimeError):
+    """A closed :class:`Viewer` was asked to move, change or render."""
 
 
 def _unit(v: np.ndarray) -> np.ndarray:
@@ -184,20 +202,43 @@ class ViewerCode(str):
         return str(self)
 
 
+class _Shared:
+    """What a viewer shares with its render thread and its finaliser, none of which holds the
+    viewer: the lock over the view, the frame asked for, and whether the viewer is closed."""
+
+    def __init__(self) -> None:
+        self.lock = threading.Lock()
+        self.wake = threading.Condition(self.lock)
+        self.wanted: Optional[bool] = None  # the draft flag of the latest frame asked for
+        self.closed = False
+        self.worker: Optional[threading.Thread] = None
+        self.view_id = 0  # the number of the browser's latest view applied (0: none yet)
+        self.answered = 0  # the number of the latest view a frame or an error answered
+        self.views = 0  # the views the browser sent
+        self.early = 0  # the views that came before the last one was answered (the browser waits: 0)
+
+
 class Viewer:
     """An interactive toon render of a mesh in Jupyter, rendered by toonmesh in the kernel.
 
-    ``Viewer(V, F, **render keywords)``: ``vertices`` (N, 3) float32/float64 with ``faces``
-    (M, 3) int32/int64/uint32, a ``trimesh.Trimesh``, a :class:`toonmesh.Mesh` or a list of
-    them; ``normals`` and ``smooth_iterations`` as in :func:`toonmesh.render`; any keyword of
-    :class:`toonmesh.RenderOptions` (``width``, ``height`` in pixels, default 512; ``material``,
-    ``lights``, ``outlines``, ``camera``, ...). The meshes are uploaded once, to ``renderer``
-    (default: the process's shared renderer for ``backend``).
+    ``Viewer(V, F, **render keywords)`` takes the scene as :func:`toonmesh.render` does (one
+    function reads it for both): ``vertices`` (N, 3) float32/float64 with ``faces`` (M, 3)
+    int32/int64/uint32, a ``trimesh.Trimesh``, a mesh file's path, a ``trimesh.Scene``, a
+    :class:`toonmesh.Mesh` or a list of meshes; ``normals`` and ``smooth_iterations`` as in
+    :func:`toonmesh.render`; any keyword of :class:`toonmesh.RenderOptions` (``width``,
+    ``height`` in pixels, default 512; ``material``, ``lights``, ``outlines``, ``camera``, ...).
+    With no ``material``, meshes that carry colours or a texture are drawn as
+    :func:`toonmesh.render` draws them (under a white material), so the view shows what
+    ``tm.render`` shows. The meshes are uploaded once, to ``renderer`` (default: the process's
+    shared renderer for ``backend``).
 
-    In the browser: drag to orbit, wheel to zoom, shift-drag or right-drag to pan, double-click
-    to frame the scene again. From Python: :meth:`orbit`, :meth:`zoom`, :meth:`pan` (each renders
-    the full-size frame before it returns), ``camera`` (read or set), and every render setting
-    as an attribute that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
+    In the browser: drag to orbit, wheel to zoom (once the view has focus: click it; otherwise
+    the wheel scrolls the notebook), shift-drag or right-drag to pan, double-click to frame the
+    scene again; the toolbar has home (the first view), views from each axis, a PNG download of
+    the current full-size frame, full screen, and the frame rate and latency. From Python:
+    :meth:`orbit`, :meth:`zoom`, :meth:`pan`, :meth:`home`, :meth:`view_from` (each renders the
+    full-size frame before it returns), ``camera`` (read or set), and every render setting as an
+    attribute that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
 
     Viewer options: ``controls=True`` shows ipywidgets controls beside the frame, one per field
     of the material, the first light, the outlines (and each line kind's style), the camera's
@@ -209,7 +250,10 @@ class Viewer:
 
     ``frame`` is the last frame shown, (H, W, 4) uint8; ``render_count`` counts the renders;
     :meth:`snapshot` renders the current view at full quality (any size, any outputs);
+    :meth:`turntable` writes a turn about the view as a GIF or MP4;
     :meth:`code` gives the ``tm.render(...)`` call that reproduces the view.
+    :meth:`close` frees the viewer's meshes, render thread and front end (so does dropping the
+    last reference to it); a closed viewer raises :class:`ViewerClosedError` when used.
     """
 
     # The render settings, each re-rendering when set (see toonmesh.RenderOptions for what each
@@ -245,6 +289,9 @@ class Viewer:
             raise TypeError(f"renderer: expected a toonmesh.Renderer, got {type(renderer).__name__}")
         if not isinstance(controls, (bool, np.bool_)):
             raise TypeError(f"controls: expected True or False, got {type(controls).__name__}")
+        if vertices is None:
+            raise TypeError("vertices: expected the scene (arrays with faces, a trimesh, a file's path, a "
+                            "trimesh.Scene, a toonmesh.Mesh or a list of meshes), got None")
         self._renderer = renderer if renderer is not None else shared_renderer(backend)
         self._options = RenderOptions(**options)  # checked before any upload
         self._given: Dict[str, Any] = {k: v for k, v in options.items() if k != "camera" and v is not None}
@@ -252,49 +299,53 @@ class Viewer:
         self.drag_scale = _number("drag_scale", drag_scale, 0.05, 1.0)
         self._normals = normals
         self._smooth_iterations = smooth_iterations
-        self._uploaded: List[MeshHandle] = []  # the meshes this viewer uploaded (close() frees them)
-        self._placed, self._mesh_source, self._center = self._upload(vertices, faces, normals, smooth_iterations)
+        self._shared = _Shared()
+        self._state_lock = self._shared.lock
+        self._render_lock = threading.RLock()
+        # what the finaliser frees (close(), or the viewer freed): the meshes this viewer uploaded
+        # (not MeshHandles it was given) and the front end's widgets
+        self._uploaded: List[MeshHandle] = []
+        self._front: List[Any] = []
+        self._release = weakref.finalize(self, _release, self._shared, self._renderer, self._uploaded, self._front)
+        self._mesh_source = _mesh_source(vertices, faces)
+        self._placed, self._placed_own, self._center = self._upload(vertices, faces, normals, smooth_iterations)
         self.render_count = 0
         self.frame: Optional[np.ndarray] = None
         self._frame_id = 0
-        self._render_lock = threading.RLock()
-        self._state_lock = threading.Lock()
-        self._wanted: Optional[bool] = None  # the draft flag of the latest frame asked for
-        self._busy = False
-        self._wake = threading.Condition(self._state_lock)
-        self._worker: Optional[threading.Thread] = None
-        self._closed = False
         self._widget: Any = _make_widget(self)
+        if self._widget is not None:
+            self._front.append(self._widget)
         self._controls: Any = None  # the on-screen controls (a ControlPanel), refreshed when a setting changes
         self._set_camera(options.get("camera"))
+        self._home = copy.deepcopy(self._view)
         self._show(draft=False)
         if controls and self._widget is not None:  # without the notebook extra: the still frame
             from toonmesh._viewer_controls import ControlPanel
 
             self._controls = ControlPanel(self)
+            self._front.append(self._controls)
 
     # -- the scene ----------------------------------------------------------------------------
 
     def _upload(self, vertices: Any, faces: Any, normals: Normals,
-                smooth_iterations: int) -> Tuple[List[PlacedMesh], str, np.ndarray]:
-        """The scene's meshes on the renderer (uploaded once), how code() passes them, and the
-        centre of their bounding box in world space."""
-        single = faces is not None or not isinstance(vertices, (Mesh, list, tuple))  # as tm.render reads it
-        items = [Mesh(vertices, faces, normals=normals)] if single else ([vertices] if isinstance(vertices, Mesh) else list(vertices))
+                smooth_iterations: int) -> Tuple[List[PlacedMesh], List[PlacedMesh], np.ndarray]:
+        """The scene's meshes on the renderer (uploaded once), read as tm.render reads them; as
+        placed, and as drawn with no material given (meshes with colours of their own under
+        tm.render's white material); and the centre of their bounding box in world space."""
+        items = scene_items(vertices, faces, normals)
         if not items:
             raise ValueError("vertices: the scene has no mesh")
-        meshes = [item if isinstance(item, Mesh) else Mesh(item, normals=normals) for item in items]  # a Trimesh or a MeshHandle in a list
-        placed, self._uploaded = place_meshes(self._renderer, meshes, smooth_iterations, where="vertices")
+        meshes = [item if isinstance(item, Mesh) else Mesh(item) for item in items]  # a MeshHandle in a list
+        placed, uploaded = place_meshes(self._renderer, meshes, smooth_iterations, where="vertices")
+        self._uploaded.extend(uploaded)
         try:
+            own = own_colours(meshes, self._options, None)  # the same meshes, some under another material
+            placed_own = [p._replace(material=o.material) for p, o in zip(placed, own)]
             center = self._center_of(meshes)
         except BaseException:
             self._free_meshes()
             raise
-        if single:
-            source = "mesh" if faces is None else "V, F"
-        else:
-            source = "meshes"
-        return placed, source, center
+        return placed, placed_own, center
 
     def _center_of(self, meshes: List[Mesh]) -> np.ndarray:
         """The centre of the world-space bounding box of the meshes given as arrays (a
@@ -312,22 +363,35 @@ class Viewer:
 
     def _free_meshes(self) -> None:
         remove_meshes(self._renderer, self._uploaded)
-        self._uploaded = []
+        self._uploaded.clear()
 
     def _options_transform(self) -> np.ndarray:
         return np.asarray(self._options.transform, np.float64)
 
+    def _scene(self) -> List[PlacedMesh]:
+        """The placed meshes as a render with the viewer's settings draws them: with no material
+        given, those with colours of their own under tm.render's white material."""
+        return self._placed if "material" in self._given else self._placed_own
+
+    @property
+    def closed(self) -> bool:
+        """Whether :meth:`close` was called (or the viewer's resources were freed)."""
+        return self._shared.closed
+
+    def _check_open(self) -> None:
+        if self._shared.closed:
+            raise ViewerClosedError("this toonmesh.Viewer is closed (close() freed its meshes and front end): "
+                                    "make a new tm.Viewer")
+
     def close(self) -> None:
-        """Frees the meshes this viewer uploaded (not MeshHandles it was given) and closes its
-        widget; the viewer cannot render after this."""
-        with self._state_lock:
-            self._closed = True
-            self._wake.notify_all()
-        if self._widget is not None:
-            self._widget.close()
-        with self._render_lock:
-            self._free_meshes()
+        """Frees what the viewer holds: stops its render thread, frees the meshes it uploaded (not
+        MeshHandles it was given) and closes its widget and controls, which leave the notebook.
+        Using the viewer afterwards raises :class:`ViewerClosedError`. Dropping the last
+        reference to a viewer does the same. Closing twice does nothing."""
+        with self._render_lock:  # after the frame being drawn, if any
+            self._release()
             self._placed = []
+            self._placed_own = []
 
     # -- the camera ---------------------------------------------------------------------------
 
@@ -340,6 +404,7 @@ class Viewer:
 
     @camera.setter
     def camera(self, camera: Camera) -> None:
+        self._check_open()
         self._set_camera(camera)
         self._settings_shown()
         self._show(draft=False)
@@ -361,33 +426,75 @@ class Viewer:
         """Orbits about the target as a drag of ``dx``, ``dy`` pixels would (x right, y down; a
         drag over the frame's height turns half way round; each at most 1e6 either way), then
         renders the full-size frame."""
+        self._check_open()
         self._move("orbit", _pixels("dx", dx), _pixels("dy", dy))
         self._show(draft=False)
 
     def pan(self, dx: float, dy: float) -> None:
         """Moves the view as a shift-drag of ``dx``, ``dy`` pixels would (the scene follows the
         pointer; each at most 1e6 either way), then renders the full-size frame."""
+        self._check_open()
         self._move("pan", _pixels("dx", dx), _pixels("dy", dy))
         self._show(draft=False)
 
     def zoom(self, factor: float) -> None:
         """Zooms in by ``factor`` (0.001 to 1000; 2 halves the distance to the target or the
         orthographic view's height, 0.5 doubles it), then renders the full-size frame."""
+        self._check_open()
         factor = _number("factor", factor, 1.0 / _MAX_ZOOM, _MAX_ZOOM)
         self._move("zoom", factor, 0.0)
         self._show(draft=False)
 
     def reframe(self) -> None:
         """Frames the scene again from the current direction (what a double-click does)."""
+        self._check_open()
         self._reframe()
         self._show(draft=False)
+
+    def home(self) -> None:
+        """Goes back to the first view (the camera the viewer was made with; the toolbar's home
+        button), then renders the full-size frame."""
+        self._check_open()
+        self._go_home()
+        self._show(draft=False)
+
+    def view_from(self, axis: str) -> None:
+        """Frames the scene seen from the side ``axis`` names (``"+x"``, ``"-x"``, ``"+y"``,
+        ``"-y"``, ``"+z"`` or ``"-z"``: the eye on that side, looking back along the axis; the
+        toolbar's axis buttons), keeping the projection and the world's up; from the up axis's
+        ends the view stays a degree short of the pole, as orbiting does. Renders the full-size
+        frame."""
+        self._check_open()
+        self._view_from(_axis(axis))
+        self._show(draft=False)
+
+    def _go_home(self) -> None:
+        with self._state_lock:
+            self._view = copy.deepcopy(self._home)
+
+    def _view_from(self, axis: str) -> None:
+        direction = np.zeros(3)
+        direction["xyz".index(axis[1])] = 1.0 if axis[0] == "+" else -1.0
+        with self._state_lock:
+            view = self._view
+        along = float(np.dot(direction, view.up))
+        if abs(along) > math.cos(_POLE_MARGIN):  # from the pole: as far as orbiting goes, facing as now
+            level = (view.eye - view.target) - float(np.dot(view.eye - view.target, view.up)) * view.up
+            if np.linalg.norm(level) < 1e-12:
+                level = np.cross(view.up, (1.0, 0.0, 0.0) if abs(view.up[0]) < 0.9 else (0.0, 0.0, 1.0))
+            direction = math.copysign(math.cos(_POLE_MARGIN), along) * view.up + math.sin(_POLE_MARGIN) * _unit(level)
+        self._fit(direction, view)
 
     def _reframe(self) -> None:
         with self._state_lock:
             view = self._view
-        direction = tuple(float(x) for x in view.eye - view.target)
+        self._fit(view.eye - view.target, view)
+
+    def _fit(self, direction: np.ndarray, view: _View) -> None:
+        """Frames the scene from ``direction`` (target to eye) with ``view``'s up and projection."""
         up = tuple(float(x) for x in view.up)
-        camera = Camera.fit(direction, up=up, orthographic=view.orthographic, fov_y=None if view.orthographic else view.fov_y)
+        camera = Camera.fit(tuple(float(x) for x in direction), up=up, orthographic=view.orthographic,
+                            fov_y=None if view.orthographic else view.fov_y)
         self._set_camera(camera)
 
     def _move(self, kind: str, a: float, b: float) -> None:
@@ -408,6 +515,7 @@ class Viewer:
 
     def set(self, **options: "Unpack[RenderKeywords]") -> None:
         """Changes several render settings at once, then renders once."""
+        self._check_open()
         if "outputs" in options:
             raise TypeError("outputs: a Viewer shows the colour image; use snapshot(outputs=...) for others")
         camera = options.pop("camera", None)
@@ -431,17 +539,19 @@ class Viewer:
 
     def _render(self, camera: Camera, width: int, height: int) -> RenderResult:
         with self._render_lock:
+            self._check_open()
             options = self._options.replace(camera=camera, width=width, height=height, outputs=("color",))
-            result = draw(self._renderer, self._placed, options)
+            result = draw(self._renderer, self._scene(), options)
             self.render_count += 1
             return result
 
     def _show(self, draft: bool) -> RenderResult:
         """Renders the current view (at ``drag_scale`` of the size when ``draft``) and sends it
-        to the front end."""
+        to the front end, marked with the number of the browser's view it shows."""
         with self._render_lock:
             with self._state_lock:
                 camera = self._view.camera()
+                view_id = self._shared.view_id
             width, height = self._options.width, self._options.height
             if draft:
                 width = max(1, round(width * self.drag_scale))
@@ -452,25 +562,74 @@ class Viewer:
             self.frame = result.color
             self._frame_id += 1
             if self._widget is not None:
-                self._widget.show_frame(data, fmt, self._frame_id, self._options.width, self._options.height)
+                self._widget.show_frame(data, fmt, self._frame_id, self._options.width, self._options.height,
+                                        view_id=view_id, exact=not draft)
+            self._shared.answered = view_id
             return result
 
     def snapshot(self, **options: "Unpack[RenderKeywords]") -> RenderResult:
         """The current view rendered at full quality as a :class:`toonmesh.RenderResult`;
         ``options`` override the viewer's settings for this render only (``width``, ``height``,
         ``supersample``, ``outputs``, ...)."""
+        self._check_open()
         with self._render_lock:
             opts = self.options.replace(**options)
-            result = draw(self._renderer, self._placed, opts)
+            placed = self._placed if "material" in self._given or options.get("material") is not None else self._placed_own
+            result = draw(self._renderer, placed, opts)
             self.render_count += 1
             return result
+
+    def turntable(self, path: "str | os.PathLike[str]", seconds: float = 4.0, fps: int = 24) -> str:
+        """Writes a turn of the view about its target and the world's up (from the current view,
+        all the way round, ``seconds`` long at ``fps`` frames per second: ``round(seconds * fps)``
+        frames, at least one, at the viewer's size and settings) to ``path``, a ``.gif`` (Pillow) or ``.mp4``
+        (imageio-ffmpeg, H.264; width and height must be even). The views are drawn by the
+        renderer's many-view render (:meth:`toonmesh.Renderer.render_many`). Returns the path
+        written, as a string. ``seconds`` in (0, 600], ``fps`` an int in [1, 60]."""
+        self._check_open()
+        target = os.fspath(path) if isinstance(path, (str, os.PathLike)) else None
+        if not isinstance(target, str):
+            raise TypeError(f"path: expected a str or os.PathLike, got {type(path).__name__}")
+        kind = os.path.splitext(target)[1].lower()
+        if kind not in (".gif", ".mp4"):
+            raise ValueError(f"path: expected a .gif or .mp4 file name, got {target!r}")
+        seconds = _number("seconds", seconds, 0.0, 600.0)
+        if isinstance(fps, (bool, np.bool_)) or not isinstance(fps, (int, np.integer)):
+            raise TypeError(f"fps: expected an int, got {type(fps).__name__}")
+        if not 1 <= fps <= 60:
+            raise ValueError(f"fps: must be in [1, 60], got {fps}")
+        if seconds == 0:
+            raise ValueError("seconds: must be more than 0, got 0")
+        count = max(1, round(seconds * fps))
+        width, height = self._options.width, self._options.height
+        if kind == ".mp4" and (width % 2 or height % 2):
+            raise ValueError(f"path: an MP4 (H.264) needs an even width and height, the viewer is {width}x{height}")
+        writer = _gif_writer if kind == ".gif" else _mp4_writer
+        write = writer()  # the library is checked before any render
+        with self._state_lock:
+            start = copy.deepcopy(self._view)
+        cameras = []
+        for i in range(count):
+            view = copy.deepcopy(start)
+            view.eye = view.target + _rotate(start.eye - start.target, start.up, 2.0 * math.pi * i / count)
+            cameras.append(view.camera())
+        with self._render_lock:
+            self._check_open()
+            options = self._options.replace(camera=None, outputs=("color",))
+            stack = draw_views(self._renderer, self._scene(), cameras, options)
+            self.render_count += count
+        assert stack.color is not None
+        write(target, np.asarray(stack.color), fps)
+        return target
 
     def code(self) -> ViewerCode:
         """The ``tm.render(...)`` call that reproduces the current frame (shown unquoted in a
         notebook; ``print(v.code())`` elsewhere). Settings without a constructor spelling are
-        written in their pickled form."""
+        written in their pickled form. The scene is named as it was given: ``V, F``, ``mesh``
+        (a trimesh or a :class:`toonmesh.Mesh`), ``scene`` (a trimesh.Scene), ``meshes`` (a
+        list) or the file's path."""
         parts = [self._mesh_source]
-        if self._normals is not None and self._mesh_source != "meshes":
+        if self._normals is not None:
             parts.append("normals=normals" if own_normals(self._normals) else f"normals={self._normals!r}")
         if self._smooth_iterations:
             parts.append(f"smooth_iterations={self._smooth_iterations!r}")
@@ -485,53 +644,76 @@ class Viewer:
     # -- the front end's events and flow control ----------------------------------------------
 
     def _on_event(self, content: Dict[str, Any]) -> None:
-        """An event from the front end: the camera moves at once; a frame is asked for."""
-        event = content.get("event")
+        """A message from the front end. ``{"event": "view", "id": n, "steps": [...], "exact":
+        bool}``: the browser's view number ``n`` (it sends the next only once a frame or an
+        error answers this one); the camera takes the steps at once (each ``{"event": kind,
+        ...}``, as below) and a frame of the result is asked for, full size when ``exact``, else
+        a draft. A single step alone: ``orbit``/``pan``/``zoom`` with ``dx``, ``dy`` (a draft),
+        ``settle`` (the full-size frame), ``frame`` (frame the scene again), ``home``, ``axis``
+        with ``axis`` (see :meth:`view_from`)."""
+        if self._shared.closed:
+            return
+        try:
+            if content.get("event") == "view":
+                steps = content.get("steps") or []
+                exact = bool(content.get("exact"))
+                view_id = int(content.get("id", 0))
+                with self._state_lock:
+                    self._shared.views += 1
+                    self._shared.early += self._shared.answered < self._shared.view_id
+            else:
+                steps = [content]
+                exact = content.get("event") not in ("orbit", "pan", "zoom")
+                view_id = None
+            for step in steps:
+                self._step(step)
+        except Exception as exc:  # answered, so that the browser sends its next view
+            if view_id is not None:
+                with self._state_lock:
+                    self._shared.view_id = self._shared.answered = max(self._shared.view_id, view_id)
+            if self._widget is not None:
+                self._widget.show_error(f"{type(exc).__name__}: {exc}", self._shared.view_id)
+            return
+        if view_id is not None:
+            with self._state_lock:
+                self._shared.view_id = max(self._shared.view_id, view_id)
+        self._ask(draft=not exact)
+
+    def _step(self, step: Dict[str, Any]) -> None:
+        event = step.get("event")
         if event in ("orbit", "pan"):
-            self._move(event, float(content.get("dx", 0)), float(content.get("dy", 0)))
-            self._ask(draft=True)
+            self._move(event, _pixels("dx", float(step.get("dx", 0))), _pixels("dy", float(step.get("dy", 0))))
         elif event == "zoom":
-            self._move("zoom", math.exp(-_WHEEL_ZOOM * float(content.get("dy", 0))), 0.0)
-            self._ask(draft=True)
-        elif event == "settle":
-            self._ask(draft=False)
+            wheel = _number("dy", float(step.get("dy", 0)), -_MAX_DRAG, _MAX_DRAG)
+            self._move("zoom", float(np.clip(math.exp(-_WHEEL_ZOOM * wheel), 1.0 / _MAX_ZOOM, _MAX_ZOOM)), 0.0)
         elif event == "frame":
             self._reframe()
-            self._ask(draft=False)
+        elif event == "home":
+            self._go_home()
+        elif event == "axis":
+            self._view_from(_axis(step.get("axis")))
+        elif event != "settle":
+            raise ValueError(f"event: unknown front-end event {event!r}")
 
     def _ask(self, draft: bool) -> None:
-        """Asks the render thread for a frame of the current view; only the latest request is
-        kept (a full-size one is not downgraded by a later draft of the same view)."""
-        with self._state_lock:
-            self._wanted = draft
-            if self._worker is None:
-                self._worker = threading.Thread(target=self._serve, name="toonmesh-viewer", daemon=True)
-                self._worker.start()
-            self._wake.notify()
-
-    def _serve(self) -> None:
-        while True:
-            with self._state_lock:
-                while self._wanted is None and not self._closed:
-                    self._wake.wait()
-                if self._closed:
-                    return
-                draft, self._wanted = bool(self._wanted), None
-                self._busy = True
-            try:
-                self._show(draft=draft)
-            except Exception as exc:  # shown in the widget, not lost in a thread
-                if self._widget is not None:
-                    self._widget.show_error(f"{type(exc).__name__}: {exc}")
-            finally:
-                with self._state_lock:
-                    self._busy = False
-                    self._wake.notify_all()
+        """Asks the render thread for a frame of the current view (started if none runs; it
+        ends when no frame is wanted); only the latest request is kept."""
+        shared = self._shared
+        with shared.lock:
+            if shared.closed:
+                return
+            shared.wanted = draft
+            if shared.worker is None:
+                shared.worker = threading.Thread(target=_serve, args=(weakref.ref(self), shared),
+                                                 name="toonmesh-viewer", daemon=True)
+                shared.worker.start()
+            shared.wake.notify_all()
 
     def _wait(self, timeout: float = 30.0) -> bool:
         """Waits until every frame asked for is sent (for tests and scripts); False on timeout."""
-        with self._state_lock:
-            return self._wake.wait_for(lambda: self._wanted is None and not self._busy, timeout)
+        shared = self._shared
+        with shared.lock:
+            return shared.wake.wait_for(lambda: shared.worker is None, timeout)
 
     # -- display ------------------------------------------------------------------------------
 
@@ -548,7 +730,7 @@ class Viewer:
         nbconvert, GitHub and an untrusted notebook show) with a line of text."""
         bundle: Dict[str, Any] = {}
         shown = self._controls.widget if self._controls is not None else self._widget
-        if shown is not None:
+        if shown is not None and not self._shared.closed:
             widget_bundle = shown._repr_mimebundle_(include=include, exclude=exclude)
             if isinstance(widget_bundle, tuple):
                 widget_bundle = widget_bundle[0]
@@ -561,9 +743,104 @@ class Viewer:
 
     def __repr__(self) -> str:
         size = f"{self._options.width}x{self._options.height}"
+        if self._shared.closed:
+            return f"toonmesh.Viewer({size}): closed"
         if self._widget is None:
             return f"toonmesh.Viewer({size}): a still frame; for the interactive view, {NOTEBOOK_EXTRA}"
         return f"toonmesh.Viewer({size}): interactive where Jupyter widgets run (JupyterLab, Notebook 7, VS Code)"
+
+
+def _serve(ref: "weakref.ref[Viewer]", shared: _Shared) -> None:
+    """The render thread: draws the latest frame asked for until none is wanted, then ends. It
+    holds the viewer only while drawing, so a viewer no longer referenced is freed."""
+    while True:
+        with shared.lock:
+            if shared.wanted is None or shared.closed:
+                shared.wanted = None
+                shared.worker = None
+                shared.wake.notify_all()
+                return
+            draft, shared.wanted = shared.wanted, None
+        viewer = ref()
+        if viewer is None:
+            continue
+        try:
+            viewer._show(draft=draft)
+        except ViewerClosedError:
+            pass
+        except Exception as exc:  # shown in the widget, not lost in a thread
+            shared.answered = shared.view_id
+            if viewer._widget is not None:
+                viewer._widget.show_error(f"{type(exc).__name__}: {exc}", shared.view_id)
+        finally:
+            del viewer
+
+
+def _release(shared: _Shared, renderer: Renderer, uploaded: List[MeshHandle], front: List[Any]) -> None:
+    """Frees a viewer's resources (its close(), or its finaliser once nothing refers to it):
+    ends its render thread, frees the meshes it uploaded and closes its widgets."""
+    with shared.lock:
+        shared.closed = True
+        shared.wanted = None
+        shared.wake.notify_all()
+    remove_meshes(renderer, uploaded)
+    uploaded.clear()
+    for item in reversed(front):  # the controls (a ControlPanel: its box and every control), then the frame's widget
+        item.close()
+    front.clear()
+
+
+def _mesh_source(vertices: Any, faces: Any) -> str:
+    """How code() names the scene: as it was given."""
+    if faces is not None:
+        return "V, F"
+    if isinstance(vertices, (str, os.PathLike)):
+        return repr(os.fspath(vertices))
+    if is_scene(vertices):
+        return "scene"
+    if isinstance(vertices, (list, tuple)):
+        return "meshes"
+    return "mesh"
+
+
+def _axis(axis: Any) -> str:
+    if not isinstance(axis, str):
+        raise TypeError(f"axis: expected one of {', '.join(AXES)}, got {type(axis).__name__}")
+    if axis not in AXES:
+        raise ValueError(f"axis: expected one of {', '.join(AXES)}, got {axis!r}")
+    return axis
+
+
+def _gif_writer() -> Any:
+    try:
+        from PIL import Image
+    except ImportError:
+        raise ImportError("turntable: writing a GIF needs Pillow (pip install 'toonmesh[notebook]')") from None
+
+    def write(path: str, frames: np.ndarray, fps: int) -> None:
+        images = [Image.fromarray(np.ascontiguousarray(f[..., :3])) for f in frames]
+        images[0].save(path, save_all=True, append_images=images[1:], duration=round(1000 / fps), loop=0,
+                       optimize=False, disposal=1)
+
+    return write
+
+
+def _mp4_writer() -> Any:
+    try:
+        import imageio_ffmpeg  # type: ignore[import-untyped]
+    except ImportError:
+        raise ImportError("turntable: writing an MP4 needs imageio-ffmpeg (pip install 'toonmesh[notebook]')") from None
+
+    def write(path: str, frames: np.ndarray, fps: int) -> None:
+        height, width = frames.shape[1:3]
+        gen = imageio_ffmpeg.write_frames(path, (width, height), fps=fps, codec="libx264", pix_fmt_in="rgb24",
+                                          pix_fmt_out="yuv420p", macro_block_size=1, output_params=["-loglevel", "error"])
+        gen.send(None)
+        for f in frames:
+            gen.send(np.ascontiguousarray(f[..., :3]).tobytes())
+        gen.close()
+
+    return write
 
 
 #: The render settings a viewer holds as attributes, in the order code() writes them.
@@ -651,8 +928,8 @@ def _make_widget(viewer: Viewer) -> Any:
     except ImportError:
         return None
     widget = ViewerWidget()
-    widget.attach(viewer._on_event)
+    widget.attach(weakref.WeakMethod(viewer._on_event))
     return widget
 
 
-__all__ = ["Viewer", "ViewerCode"]
+__all__ = ["AXES", "Viewer", "ViewerClosedError", "ViewerCode"]
