@@ -285,6 +285,17 @@ pub fn grid_to_numpy<T: numpy::Element>(
     Array2::from_shape_vec(shape, flat).expect("rows * columns values").into_pyarray(py)
 }
 
+/// Hands row-major values of any `shape` to NumPy without copying.
+pub fn shaped_to_numpy<T: numpy::Element>(
+    py: Python<'_>,
+    shape: Vec<usize>,
+    flat: Vec<T>,
+) -> PyResult<Bound<'_, PyAny>> {
+    let a =
+        numpy::ndarray::ArrayD::from_shape_vec(shape, flat).map_err(|e| Error::Internal(e.to_string()))?;
+    Ok(a.into_pyarray(py).into_any())
+}
+
 /// Hands rows of K values to NumPy as (N, K) without copying.
 pub fn rows_to_numpy<T: numpy::Element, const K: usize>(
     py: Python<'_>,

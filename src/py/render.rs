@@ -2,19 +2,19 @@
 //! scenes rendered into NumPy arrays allocated here and filled without the GIL), `gpu_info` and
 //! PNG encoding. Every argument is converted with a check that names it.
 
-use numpy::ndarray::IxDyn;
-use numpy::{PyArray2, PyArrayDyn, PyArrayMethods, PyUntypedArray};
+use numpy::{PyArray2, PyUntypedArray};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 use pyo3::IntoPyObjectExt;
 
 use super::albedo::albedo;
 use super::args::{number, text, triple, type_name};
-use super::convert::{array_values, faces, grid_to_numpy, positions, python, ToPython};
+use super::convert::{array_values, faces, grid_to_numpy, positions, python, shaped_to_numpy, ToPython};
 use super::mesh_input::on_mesh;
 use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
+use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::mesh::normals::given_unit_normals;
 use crate::mesh::positions::on_positions;
@@ -24,10 +24,10 @@ use crate::render::effects::shadows::raycast::mesh_shadow_truth;
 use crate::render::gpu_mesh::{MeshNormals, NormalMode};
 use crate::render::image_out::encode_png;
 use crate::render::scene::options::MeshSpec;
-use crate::render::scene::outputs::{Output, Pixel};
+use crate::render::scene::outputs::Output;
 use crate::render::scene::up::Axis;
 use crate::render::scene::FrameSpec;
-use crate::render::{BackendChoice, FrameReport, ImageMut, OutputBuffers, Renderer};
+use crate::render::{BackendChoice, FrameReport, Image, Renderer, ViewImages};
 
 /// Runs GPU work with the GIL released, catching panics. Not in the compute pool: a render
 /// mostly waits on the device, and concurrent renders should not queue behind each other there.
@@ -143,68 +143,28 @@ fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
         .collect()
 }
 
-/// An image output's array: allocated here, filled by the render without the GIL.
-enum Image<'py> {
-    Bytes(Bound<'py, PyArrayDyn<u8>>),
-    Floats(Bound<'py, PyArrayDyn<f32>>),
-}
-
-/// The image outputs of `k` views (`k` None: one, without a leading axis), allocated here:
-/// (H, W, 4) uint8 colour, (H, W, 3) normals, (H, W) float32 for the others.
-struct Images<'py>(Vec<(Output, Image<'py>)>);
-
-impl<'py> Images<'py> {
-    fn allocate(py: Python<'py>, frame: &FrameSpec, k: Option<usize>) -> Self {
-        let (h, w) = (frame.height as usize, frame.width as usize);
-        let shape = |c: Option<usize>| IxDyn(&k.into_iter().chain([h, w]).chain(c).collect::<Vec<_>>());
-        // SAFETY: every element is written by the render before Python sees it.
-        let image = |pixel| match pixel {
-            Pixel::Bytes(c) => Image::Bytes(unsafe { PyArrayDyn::new(py, shape(Some(c)), false) }),
-            Pixel::Floats(c) => {
-                Image::Floats(unsafe { PyArrayDyn::new(py, shape((c > 1).then_some(c)), false) })
-            }
+/// The image outputs as the dict `toonmesh.RenderResult` reads: each output's array (the views'
+/// axis first when `views` is given), None where it was not asked for.
+fn image_dict<'py>(
+    py: Python<'py>,
+    frame: &FrameSpec,
+    images: ViewImages,
+    views: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    for o in Output::ALL.into_iter().filter(|o| o.pixel().is_some()) {
+        d.set_item(o.name(), py.None())?;
+    }
+    let leading: Vec<usize> = views.into_iter().collect();
+    for (o, image) in images.images {
+        let shape = o.shape(&leading, frame.height, frame.width).unwrap_or_default();
+        let array = match image {
+            Image::Bytes(v) => shaped_to_numpy(py, shape, v)?,
+            Image::Floats(v) => shaped_to_numpy(py, shape, v)?,
         };
-        Images(frame.outputs.iter().filter_map(|o| Some((o, image(o.pixel()?)))).collect())
+        d.set_item(o.name(), array)?;
     }
-
-    /// One set of output buffers for each of `k` views.
-    fn buffers(&self, k: usize) -> Vec<OutputBuffers<'_>> {
-        let mut sets: Vec<OutputBuffers<'_>> = (0..k).map(|_| OutputBuffers::default()).collect();
-        for (o, image) in &self.0 {
-            // SAFETY: the arrays were just made here, are C-contiguous and shared with no one.
-            let views: Vec<ImageMut<'_>> = unsafe {
-                match image {
-                    Image::Bytes(a) => {
-                        split(a.as_slice_mut().expect("contiguous"), k).map(ImageMut::Bytes).collect()
-                    }
-                    Image::Floats(a) => {
-                        split(a.as_slice_mut().expect("contiguous"), k).map(ImageMut::Floats).collect()
-                    }
-                }
-            };
-            for (set, v) in sets.iter_mut().zip(views) {
-                set.set(*o, v);
-            }
-        }
-        sets
-    }
-
-    fn into_dict(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let d = PyDict::new(py);
-        for o in Output::ALL.into_iter().filter(|o| o.pixel().is_some()) {
-            let image = self.0.iter().find(|a| a.0 == o).map(|(_, image)| match image {
-                Image::Bytes(a) => a.as_any(),
-                Image::Floats(a) => a.as_any(),
-            });
-            d.set_item(o.name(), image)?;
-        }
-        Ok(d)
-    }
-}
-
-fn split<T>(s: &mut [T], k: usize) -> std::slice::ChunksMut<'_, T> {
-    let n = (s.len() / k.max(1)).max(1);
-    s.chunks_mut(n)
+    Ok(d)
 }
 
 /// A render's report as the dict `toonmesh.RenderResult` reads (with its images): its serde
@@ -298,18 +258,23 @@ impl PyRenderer {
             .map(|c| each(&c, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", read));
         let cams = cams.transpose()?;
         let scene = self.inner.check(o.scene(&mesh_specs(items)?)?, o.frame)?;
-        let images = Images::allocate(py, &o.frame, cams.as_ref().map(Vec::len));
-        let mut buffers = images.buffers(cams.as_ref().map_or(1, Vec::len));
-        let inner = &self.inner;
-        let reports = match cams {
-            None => vec![without_gil(py, || inner.render_checked(scene, buffers.pop().expect("one view")))?],
+        let (frame, views, inner) = (o.frame, cams.as_ref().map(Vec::len), &self.inner);
+        // the images are made and filled without the GIL, and handed to NumPy as they are
+        let render = |cancel: &Cancel| {
+            let mut images = ViewImages::zeros(&frame, views.unwrap_or(1));
+            let reports = match &cams {
+                None => vec![inner.render_checked(scene, images.buffers().pop().expect("one view"))?],
+                Some(cams) => inner.render_views(&scene, cams, images.buffers(), cancel)?,
+            };
+            Ok((images, reports))
+        };
+        let (images, reports) = match views {
+            None => without_gil(py, || render(Cancel::never()))?,
             // a long stream of views stops on Ctrl-C between frames
-            Some(cams) => {
-                detached_cancellable(py, |cancel| inner.render_views(&scene, &cams, buffers, cancel))?
-            }
+            Some(_) => detached_cancellable(py, render)?,
         };
         let reports = reports.into_iter().map(|r| report_dict(py, &o.frame, r)).collect::<PyResult<_>>()?;
-        Ok((images.into_dict(py)?, reports))
+        Ok((image_dict(py, &frame, images, views)?, reports))
     }
 }
 

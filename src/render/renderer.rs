@@ -65,11 +65,11 @@ pub enum Image {
 }
 
 impl Image {
-    /// Zeros for an `n`-pixel image of `output`.
+    /// Zeros for an `n`-pixel image of `output` (in huge pages where large, as NumPy's arrays).
     pub fn zeros(output: Output, n: usize) -> Option<Image> {
         Some(match output.pixel()? {
-            Pixel::Bytes(k) => Image::Bytes(vec![0; k * n]),
-            Pixel::Floats(k) => Image::Floats(vec![0.0; k * n]),
+            Pixel::Bytes(k) => Image::Bytes(crate::huge_pages::filled_vec(k * n, 0)),
+            Pixel::Floats(k) => Image::Floats(crate::huge_pages::filled_vec(k * n, 0.0)),
         })
     }
 
@@ -78,6 +78,43 @@ impl Image {
             Image::Bytes(v) => ImageMut::Bytes(v),
             Image::Floats(v) => ImageMut::Floats(v),
         }
+    }
+}
+
+/// The image outputs of `views` frames of one size, each output one vector that holds every
+/// view's image in turn, so that a front end hands each to its arrays without a copy.
+pub struct ViewImages {
+    pub views: usize,
+    pub images: Vec<(Output, Image)>,
+}
+
+impl ViewImages {
+    /// Zeros for `views` frames of `frame`'s image outputs.
+    pub fn zeros(frame: &FrameSpec, views: usize) -> ViewImages {
+        let n = views * frame.width as usize * frame.height as usize;
+        ViewImages {
+            views,
+            images: frame.outputs.iter().filter_map(|o| Some((o, Image::zeros(o, n)?))).collect(),
+        }
+    }
+
+    /// One set of output buffers for each view (`Renderer::render_views`).
+    pub fn buffers(&mut self) -> Vec<OutputBuffers<'_>> {
+        let mut sets: Vec<OutputBuffers<'_>> = (0..self.views).map(|_| OutputBuffers::default()).collect();
+        fn per_view<T>(v: &mut [T], views: usize) -> std::slice::ChunksMut<'_, T> {
+            let n = (v.len() / views.max(1)).max(1);
+            v.chunks_mut(n)
+        }
+        for (o, image) in &mut self.images {
+            let views: Vec<ImageMut<'_>> = match image {
+                Image::Bytes(v) => per_view(v, self.views).map(ImageMut::Bytes).collect(),
+                Image::Floats(v) => per_view(v, self.views).map(ImageMut::Floats).collect(),
+            };
+            for (set, v) in sets.iter_mut().zip(views) {
+                set.set(*o, v);
+            }
+        }
+        sets
     }
 }
 
