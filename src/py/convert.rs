@@ -3,8 +3,8 @@
 
 use numpy::ndarray::Array2;
 use numpy::{
-    IntoPyArray, PyArray2, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArrayDyn,
-    PyUntypedArray, PyUntypedArrayMethods,
+    IntoPyArray, PyArray2, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArrayDyn, PyUntypedArray,
+    PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -13,8 +13,7 @@ use pyo3::IntoPyObjectExt;
 use super::args::type_name;
 use crate::edges::views::Lines;
 use crate::error::{Error, Result};
-use crate::mesh::positions::on_positions;
-use crate::mesh::{check_faces, check_mask, check_positions, flag_vertices, Faces, Positions};
+use crate::mesh::{check_mask, flag_vertices, Positions};
 use crate::real::Real;
 
 /// `$body` on the first of the element types `$t` that `$obj` reads as, bound to `$x` as a
@@ -102,34 +101,6 @@ pub fn array_values<T: numpy::Element + Copy>(
 /// Row-major values as rows of `K`.
 pub fn rows<T: Copy, const K: usize>(flat: &[T]) -> Vec<[T; K]> {
     flat.chunks_exact(K).map(|c| std::array::from_fn(|i| c[i])).collect()
-}
-
-fn rows3<T: numpy::Element + Copy>(x: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
-    let view = x.as_array();
-    view.as_slice().map_or_else(|| view.rows().into_iter().map(|r| [r[0], r[1], r[2]]).collect(), rows)
-}
-
-/// Reads (N, 3) float32 or float64 positions (either byte order), checking shape and
-/// finiteness.
-pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
-    let (obj, _) = checked_array(arg, obj, FLOATS, (&[None, Some(3)], "(N, 3)"))?;
-    let p = match obj.extract::<PyReadonlyArray2<'_, f32>>() {
-        Ok(x) => Positions::F32(rows3(&x)),
-        Err(_) => Positions::F64(rows3(
-            &obj.extract::<PyReadonlyArray2<'_, f64>>().map_err(|e| Error::Internal(e.to_string()))?,
-        )),
-    };
-    on_positions!(p.slices(), v => check_positions(arg, v))?;
-    Ok(p)
-}
-
-/// Reads (M, 3) int32, int64, uint32 or uint64 faces (either byte order), checking every index
-/// against `n_vertices`.
-pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Faces> {
-    let dtypes = ["int32", "int64", "uint32", "uint64"];
-    let (obj, _) = checked_array(arg, obj, &dtypes, (&[None, Some(3)], "(M, 3)"))?;
-    by_dtype!(obj, PyReadonlyArray2<i32, i64, u32, u64>, |x| check_faces(arg, rows3(&x).into_iter(), n_vertices))
-        .unwrap_or_else(|| Err(Error::Internal(format!("{arg}: an index array NumPy did not hand over"))))
 }
 
 /// Reads an optional 1-D array of vertex indices (any integer dtype, either byte order) or a

@@ -8,8 +8,8 @@ use numpy::{
 use pyo3::prelude::*;
 
 use super::args;
-use super::convert::{array_values, by_dtype, grid_to_numpy, native_order, positions, rows, ToPython};
-use super::mesh_input::on_mesh;
+use super::convert::{array_values, by_dtype, grid_to_numpy, native_order, rows, ToPython};
+use super::mesh_input::{on_mesh, PositionsIn};
 use super::runtime::{detached, detached_cancellable};
 use crate::edges::chains::{chain_edges, vertex_pairs};
 use crate::edges::contours::check_smoothing;
@@ -183,7 +183,7 @@ pub(super) fn _chains<'py>(py: Python<'py>, edges: &Bound<'py, PyAny>) -> Out<'p
 /// The number of `vertices`, checked as every mesh function checks them.
 #[pyfunction]
 pub(super) fn _vertex_count(vertices: &Bound<'_, PyAny>) -> PyResult<usize> {
-    Ok(positions("vertices", vertices)?.len())
+    Ok(PositionsIn::read("vertices", vertices)?.count())
 }
 
 /// The values of an array that the Python wrapper made C-contiguous (`arg` in errors).

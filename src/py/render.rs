@@ -9,8 +9,8 @@ use pyo3::IntoPyObjectExt;
 
 use super::albedo::albedo;
 use super::args::{number, text, triple, type_name};
-use super::convert::{array_values, faces, grid_to_numpy, positions, python, shaped_to_numpy, ToPython};
-use super::mesh_input::on_mesh;
+use super::convert::{array_values, grid_to_numpy, python, shaped_to_numpy, ToPython};
+use super::mesh_input::{on_mesh, MeshInput, PositionsIn};
 use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
@@ -57,9 +57,9 @@ fn mesh_normals(obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<MeshNormals
         }
     }
     if obj.cast::<PyUntypedArray>().is_ok() {
-        let given = positions("normals", obj)?;
+        let given = PositionsIn::read("normals", obj)?;
         return Ok(MeshNormals::Given(
-            on_positions!(given.slices(), n => given_unit_normals("normals", n, n_vertices))?,
+            on_positions!(given.get(), n => given_unit_normals("normals", n, n_vertices))?,
         ));
     }
     Err(Error::wrong_type(
@@ -224,14 +224,13 @@ impl PyRenderer {
         normals: &Bound<'py, PyAny>,
         colors: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<(u64, Bound<'py, PyAny>, Vec<String>)> {
-        let p = positions("vertices", vertices)?;
-        let normals_in = mesh_normals(normals, p.len())?;
-        let f = self::faces("faces", faces, p.len())?;
+        let mesh = MeshInput::read(vertices, faces)?;
+        let normals_in = mesh_normals(normals, mesh.vertices.count())?;
         let a = albedo(colors)?;
         let spelling = normal_spelling(py, &normals_in, normals)?;
         let inner = &self.inner;
         let (id, notes) =
-            without_gil(py, || on_positions!(p.slices(), v => inner.add_mesh_with(v, f, normals_in, a)))?;
+            mesh.run(py, |p, f, _| on_positions!(p, v => inner.add_mesh_with(v, f, normals_in, a)))?;
         Ok((id, spelling, notes))
     }
 

@@ -57,12 +57,12 @@ pub(super) fn _smooth<'py>(
     let rename = |e: Error| names.iter().fold(e, |e, (from, to)| e.renamed(from, to));
     let run = plan(method_name, &options).map_err(rename)?;
     let mesh = MeshInput::of(mesh)?;
-    let pin = vertex_mask("pinned", pinned.as_ref(), mesh.n_vertices())?;
-    let (pin, largest) = (pin.as_deref(), mesh.largest_coordinate());
+    let pin = vertex_mask("pinned", pinned.as_ref(), mesh.vertices.count())?;
+    let (pin, largest) = (pin.as_deref(), Some(mesh.vertices.largest));
     let out = mesh.run(py, |p, f, cancel| {
         Ok(match p {
-            PositionsRef::F32(v) => Positions::F32(run.run(v, f, pin, cancel, largest)?),
-            PositionsRef::F64(v) => Positions::F64(run.run(v, f, pin, cancel, largest)?),
+            PositionsRef::F32(v) => Positions::F32(run.run(v, &f, pin, cancel, largest)?),
+            PositionsRef::F64(v) => Positions::F64(run.run(v, &f, pin, cancel, largest)?),
         })
     })?;
     out.to_python(py)
