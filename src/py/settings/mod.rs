@@ -8,22 +8,13 @@
 mod classes;
 pub mod values;
 
-use std::hash::{Hash, Hasher};
-
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
-use pyo3::IntoPyObjectExt;
 
 use crate::error::{Error, Result};
-use crate::render::settings::{self as described, parameter, Described};
+use crate::render::settings::{self as described, parameter, Described, Setting, Value};
 
 pub use classes::{kang_table, Camera as PyCamera, Material as PyMaterial, RenderOptions as PyRenderOptions};
-
-/// A Python class around a described core type.
-pub trait Wraps: Sized {
-    type Core: Described;
-    fn wrap(inner: Self::Core) -> Self;
-}
 
 /// The Python classes, one per entry of the core's list (`render::settings::settings_classes`):
 /// the wrapper (named as the class), its docstring and its constructors' (from the core's
@@ -41,13 +32,6 @@ macro_rules! python_classes {
         #[derive(Clone, PartialEq)]
         pub struct $class {
             pub inner: $core,
-        }
-
-        impl $crate::py::settings::Wraps for $class {
-            type Core = $core;
-            fn wrap(inner: $core) -> Self {
-                $class { inner }
-            }
         }
 
         #[pymethods]
@@ -81,7 +65,7 @@ macro_rules! python_classes {
             }
 
             fn __hash__(&self) -> u64 {
-                $crate::py::settings::hash_of(&self.inner)
+                $crate::render::settings::state::hash(&self.inner)
             }
 
             fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
@@ -181,44 +165,17 @@ pub fn repr<T: Described>(py: Python<'_>, value: &T) -> PyResult<String> {
     Ok(format!("{}{dot}{}({})", T::CLASS, ctor.name, parts.join(", ")))
 }
 
-fn state<T: serde::Serialize>(x: &T) -> String {
-    serde_json::to_string(x).expect("settings serialise")
-}
-
-pub fn hash_of<T: serde::Serialize>(x: &T) -> u64 {
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    state(x).hash(&mut h);
-    h.finish()
-}
-
 pub fn reduce<'py, T: Described>(
     py: Python<'py>,
     inner: &T,
 ) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
-    Ok((py.import("toonmesh._core")?.getattr("_restore")?, (T::CLASS, state(inner))))
-}
-
-fn restore<'py, W>(py: Python<'py>, state: &str) -> PyResult<Bound<'py, PyAny>>
-where
-    W: Wraps + IntoPyObjectExt<'py>,
-{
-    let inner: W::Core = serde_json::from_str(state).map_err(|e| Error::invalid("state", format!("{e}")))?;
-    inner.check()?;
-    W::wrap(inner).into_bound_py_any(py)
+    Ok((py.import("toonmesh._core")?.getattr("_restore")?, (T::CLASS, described::state::state(inner))))
 }
 
 /// _restore(cls, state): a pickled setting, checked again.
 #[pyfunction]
 pub(super) fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
-    macro_rules! any_class {
-        ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
-            match cls {
-                $(stringify!($class) => restore::<classes::$class>(py, state),)*
-                other => Err(Error::invalid("cls", format!("no settings class {other:?}")).into()),
-            }
-        };
-    }
-    described::settings_classes!(any_class)
+    values::to_py(py, &Value::setting(Setting::restore(cls, state)?))
 }
 
 /// The description of `T` as Python data (see `render::settings::describe`).

@@ -15,9 +15,9 @@ mod material;
 mod options;
 mod outlines;
 mod shadows;
+pub mod state;
 mod value;
 
-#[cfg_attr(not(feature = "python"), allow(unused_imports))] // the front ends write from it
 pub(crate) use classes::settings_classes;
 pub use classes::{Class, Setting, CLASSES};
 pub use grey_image::{GreyImage, MAX_IMAGE_SIDE};
