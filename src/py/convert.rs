@@ -128,30 +128,15 @@ pub fn vertex_mask(
     if a.len() == 0 {
         return Ok(None); // an empty list pins nothing, whatever dtype NumPy gave it
     }
-    let internal = |e: PyErr| Error::Internal(e.to_string());
-    let dtype = a.dtype();
-    let flags = match (dtype.kind(), dtype.itemsize()) {
-        (b'b', _) => {
-            let x = obj.extract::<PyReadonlyArray1<'_, bool>>().map_err(|e| internal(e.into()))?;
-            check_mask(arg, x.as_array().to_vec(), n_vertices)
-        }
-        (b'u', 8) => {
-            let x = obj.extract::<PyReadonlyArray1<'_, u64>>().map_err(|e| internal(e.into()))?;
+    let flags = match obj.extract::<PyReadonlyArray1<'_, bool>>() {
+        Ok(mask) => check_mask(arg, mask.as_array().to_vec(), n_vertices),
+        Err(_) => by_dtype!(obj, PyReadonlyArray1<i8, i16, i32, i64, u8, u16, u32, u64>, |x| {
             flag_vertices(arg, x.as_array().iter().copied(), n_vertices)
-        }
-        (b'i' | b'u', _) => {
-            // Every other integer dtype fits in int64.
-            let wide = obj.call_method1("astype", ("int64",)).map_err(internal)?;
-            let x = wide.extract::<PyReadonlyArray1<'_, i64>>().map_err(|e| internal(e.into()))?;
-            flag_vertices(arg, x.as_array().iter().copied(), n_vertices)
-        }
-        _ => Err(Error::wrong_type(
-            arg,
-            format!(
-                "expected vertex indices of an integer dtype or an (N,) boolean mask, got dtype {}",
-                dtype_name(a)
-            ),
-        )),
+        })
+        .unwrap_or_else(|| {
+            let why = "expected vertex indices of an integer dtype or an (N,) boolean mask, got dtype";
+            Err(Error::wrong_type(arg, format!("{why} {}", dtype_name(a))))
+        }),
     };
     flags.map(Some)
 }
