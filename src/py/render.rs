@@ -8,7 +8,7 @@ use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 use pyo3::IntoPyObjectExt;
 
 use super::albedo::albedo;
-use super::args::{number, text, triple, type_name};
+use super::args::{self, number, text, triple, type_name};
 use super::convert::{array_values, grid_to_numpy, python, shaped_to_numpy, ToPython};
 use super::mesh_input::{on_mesh, MeshInput, PositionsIn};
 use super::runtime::detached_cancellable;
@@ -119,11 +119,11 @@ pub(super) fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) ->
 /// The meshes of a render: [(mesh id, Material or None, 4x4 transform or None, up axis or
 /// None)].
 fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
-    let list = items.try_iter().map_err(|_| Error::wrong_type("meshes", "expected a list of meshes"))?;
-    list.enumerate()
+    args::items("meshes", items, "a list of meshes")?
+        .iter()
+        .enumerate()
         .map(|(i, item)| {
             let arg = format!("meshes[{i}]");
-            let item = item.map_err(|e| Error::invalid(&arg, e.to_string()))?;
             let (id, mat, tf, up): (u64, Bound<'_, PyAny>, Bound<'_, PyAny>, Option<String>) = item
                 .extract()
                 .map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform, up axis)"))?;

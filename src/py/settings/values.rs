@@ -8,7 +8,7 @@ use pyo3::IntoPyObjectExt;
 
 use super::classes::{self, Light as PyLight, LineStyle as PyLineStyle};
 use crate::error::{Error, Result};
-use crate::py::args::{flag, integer, number, numbers, refuse_text, rgb, rgba, text, triple, type_name};
+use crate::py::args::{flag, integer, items, number, numbers, rgb, rgba, text, triple, type_name};
 use crate::render::scene::light::Light;
 use crate::render::scene::model::MAX_LUT;
 use crate::render::settings::settings_classes;
@@ -134,18 +134,10 @@ pub fn each<T>(
     item: &str,
     read: impl Fn(&Bound<'_, PyAny>) -> Option<T>,
 ) -> Result<Vec<T>> {
-    let items = obj
-        .try_iter()
-        .map_err(|_| Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj))))?;
-    items
-        .enumerate()
-        .map(|(i, x)| {
-            let x = x.map_err(|e| Error::invalid(name, e.to_string()))?;
-            read(&x).ok_or_else(|| {
-                Error::wrong_type(format!("{name}[{i}]"), format!("expected {item}, got {}", type_name(&x)))
-            })
-        })
-        .collect()
+    let wrong = |i, x: &Bound<'_, PyAny>| {
+        Error::wrong_type(format!("{name}[{i}]"), format!("expected {item}, got {}", type_name(x)))
+    };
+    items(name, obj, expected)?.iter().enumerate().map(|(i, x)| read(x).ok_or_else(|| wrong(i, x))).collect()
 }
 
 fn lights(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<Light>> {
@@ -167,14 +159,7 @@ fn names(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<String>> {
 
 /// A lookup table: (N,) grey factors or (N, 3) RGB factors, 1 <= N <= 256.
 fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 3]>> {
-    refuse_text(name, obj, "(N,) or (N, 3) numbers")?;
-    let rows: Vec<Bound<'_, PyAny>> = obj
-        .try_iter()
-        .map_err(|_| {
-            Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj)))
-        })?
-        .collect::<PyResult<_>>()
-        .map_err(|e| Error::invalid(name, e.to_string()))?;
+    let rows = items(name, obj, "(N,) or (N, 3) numbers")?;
     if rows.is_empty() || rows.len() > MAX_LUT {
         return Err(Error::invalid(name, format!("needs 1 to {MAX_LUT} entries, got {}", rows.len())));
     }
@@ -215,16 +200,13 @@ fn image(name: &str, obj: &Bound<'_, PyAny>) -> Result<GreyImage> {
 
 /// A 4x4 matrix of numbers.
 pub fn transform(arg: &str, obj: &Bound<'_, PyAny>) -> Result<[[f64; 4]; 4]> {
-    let wrong = || Error::wrong_type(arg, format!("expected a 4x4 array of numbers, got {}", type_name(obj)));
-    refuse_text(arg, obj, "a 4x4 array of numbers")?;
-    if let Ok(a) = obj.cast::<PyUntypedArray>() {
-        if !matches!(a.dtype().kind(), b'i' | b'u' | b'f') {
-            return Err(wrong());
-        }
+    let expected = "a 4x4 array of numbers";
+    let wrong = || Error::wrong_type(arg, format!("expected {expected}, got {}", type_name(obj)));
+    if obj.cast::<PyUntypedArray>().is_ok_and(|a| !matches!(a.dtype().kind(), b'i' | b'u' | b'f')) {
+        return Err(wrong());
     }
-    let rows: Vec<Bound<'_, PyAny>> =
-        obj.try_iter().map_err(|_| wrong())?.collect::<PyResult<_>>().map_err(|_| wrong())?;
-    let rows: Vec<Vec<f64>> = rows.iter().map(|r| numbers(arg, r)).collect::<Result<_>>()?;
+    let rows: Vec<Vec<f64>> =
+        items(arg, obj, expected)?.iter().map(|r| numbers(arg, r)).collect::<Result<_>>()?;
     if rows.iter().any(|r| r.len() != rows[0].len()) {
         return Err(wrong());
     }
