@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use crate::error::{Error, Result};
-use crate::render::settings::{self as described, parameter, Described, Setting, Value};
+use crate::render::settings::{self as described, Described, Setting, Value};
 
 pub use classes::{kang_table, Camera as PyCamera, Material as PyMaterial, RenderOptions as PyRenderOptions};
 
@@ -94,7 +94,8 @@ macro_rules! python_classes {
 }
 pub(crate) use python_classes;
 
-/// The arguments of a call to `constructor`, by parameter (None: the default, so left out).
+/// The arguments of a call to `constructor`, by parameter (None: the default, so left out);
+/// the core checks which it takes and needs.
 pub fn make<T: Described>(
     constructor: &str,
     args: &Bound<'_, PyTuple>,
@@ -106,17 +107,9 @@ pub fn make<T: Described>(
         keywords.push(k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?);
         given.push(v);
     }
-    let names = described::bind::<T>(ctor, args.len(), keywords)?;
-    let given: Vec<_> = names.into_iter().zip(given).filter(|(_, v)| !v.is_none()).collect();
-    let names: Vec<&str> = given.iter().map(|(n, _)| n.as_str()).collect();
-    described::check_arguments::<T>(ctor, &names)?;
-    let values = given
-        .iter()
-        .map(|(n, v)| {
-            let p = parameter::<T>(n).expect("a checked parameter");
-            Ok((p.name, values::from_py(n, p, v)?))
-        })
-        .collect::<Result<_>>()?;
+    let params = described::bind::<T>(ctor, args.len(), keywords)?;
+    let given = params.into_iter().zip(given).filter(|(_, v)| !v.is_none());
+    let values = given.map(|(p, v)| Ok((p.name, values::from_py(p.name, p, &v)?))).collect::<Result<_>>()?;
     Ok(T::construct(constructor, values)?)
 }
 

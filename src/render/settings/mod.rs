@@ -273,13 +273,26 @@ fn unknown(name: &str, known: &[&str], what: &str) -> Error {
     Error::wrong_type(name, format!("not {what}{hint} (they are: {})", known.join(", ")))
 }
 
+/// The parameter `name` of `ctor`; an error that lists them for any other name.
+fn parameter_of<T: Described>(ctor: &Constructor, name: &str) -> Result<&'static Field> {
+    match parameter::<T>(name).filter(|_| ctor.params.contains(&name)) {
+        Some(field) => Ok(field),
+        None => {
+            let what =
+                T::PARAMETER.map_or_else(|| format!("a parameter of {}", title::<T>(ctor)), String::from);
+            Err(unknown(name, ctor.params, &what))
+        }
+    }
+}
+
 /// The parameters a call of `ctor` names: its first `positional` by position, then the
-/// `keywords`; refused when it is given more by position than it takes, or a parameter twice.
+/// `keywords`; refused when it is given more by position than it takes, a parameter twice, or
+/// a name that is none of its parameters.
 pub fn bind<T: Described>(
     ctor: &Constructor,
     positional: usize,
     keywords: Vec<String>,
-) -> Result<Vec<String>> {
+) -> Result<Vec<&'static Field>> {
     if positional > ctor.positional {
         let most = ctor.positional;
         let why =
@@ -293,18 +306,14 @@ pub fn bind<T: Described>(
         }
         names.push(k);
     }
-    Ok(names)
+    names.iter().map(|n| parameter_of::<T>(ctor, n)).collect()
 }
 
 /// Checks that the arguments (name, value; None values dropped by the caller) belong to
 /// `constructor` and that its required ones are there.
 pub fn check_arguments<T: Described>(ctor: &Constructor, given: &[&str]) -> Result<()> {
     for name in given {
-        if !ctor.params.contains(name) {
-            let what =
-                T::PARAMETER.map_or_else(|| format!("a parameter of {}", title::<T>(ctor)), String::from);
-            return Err(unknown(name, ctor.params, &what));
-        }
+        parameter_of::<T>(ctor, name)?;
     }
     if let Some(missing) = ctor.params[..ctor.required].iter().find(|p| !given.contains(p)) {
         return Err(Error::wrong_type(*missing, format!("{} needs it", title::<T>(ctor))));
