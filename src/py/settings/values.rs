@@ -10,7 +10,6 @@ use super::classes::{self, Light as PyLight, LineStyle as PyLineStyle};
 use crate::error::{Error, Result};
 use crate::py::args::{flag, integer, items, number, numbers, rgb, rgba, text, triple, type_name};
 use crate::render::scene::light::Light;
-use crate::render::scene::model::MAX_LUT;
 use crate::render::settings::settings_classes;
 use crate::render::settings::{Field, GreyImage, Kind, Setting, Value};
 
@@ -157,13 +156,11 @@ fn names(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<String>> {
     each(obj, name, expected, "a name", |n| n.extract::<String>().ok())
 }
 
-/// A lookup table: (N,) grey factors or (N, 3) RGB factors, 1 <= N <= 256.
+/// A lookup table: (N,) grey factors or (N, 3) RGB factors.
 fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 3]>> {
-    let rows = items(name, obj, "(N,) or (N, 3) numbers")?;
-    if rows.is_empty() || rows.len() > MAX_LUT {
-        return Err(Error::invalid(name, format!("needs 1 to {MAX_LUT} entries, got {}", rows.len())));
-    }
-    rows.iter()
+    // how many entries a table may have is the core's check
+    items(name, obj, "(N,) or (N, 3) numbers")?
+        .iter()
         .enumerate()
         .map(|(i, r)| {
             let arg = format!("{name}[{i}]");
