@@ -19,7 +19,6 @@ use crate::error::{Error, Result};
 use crate::mesh::normals::given_unit_normals;
 use crate::mesh::positions::on_positions;
 use crate::parallel::catching_panics;
-use crate::render::effects::outlines::settings::kind_names;
 use crate::render::effects::shadows::raycast::mesh_shadow_truth;
 use crate::render::gpu_mesh::{MeshNormals, NormalMode};
 use crate::render::image_out::encode_png;
@@ -168,22 +167,12 @@ fn image_dict<'py>(
 }
 
 /// A render's report as the dict `toonmesh.RenderResult` reads (with its images): its serde
-/// form, the frame's size and its lines (points and widths as NumPy arrays, kinds by name).
+/// form, the frame's size and its lines as flat arrays (`FrameReport::flat_lines`).
 fn report_dict<'py>(py: Python<'py>, frame: &FrameSpec, report: FrameReport) -> PyResult<Bound<'py, PyDict>> {
     let d = python(py, &report)?.cast_into::<PyDict>()?;
     d.set_item("width", frame.width)?;
     d.set_item("height", frame.height)?;
-    let (mut lines, mut kinds, mut widths) = (None, None, None);
-    if let Some(all) = report.lines {
-        let names = kind_names();
-        kinds = Some(all.iter().map(|l| names[l.kind]).collect::<Vec<_>>());
-        let each = |l: &[f64]| l.iter().map(|&w| w as f32).collect::<Vec<f32>>().to_python(py);
-        widths = Some(all.iter().map(|l| each(&l.widths)).collect::<PyResult<Vec<_>>>()?);
-        lines = Some(all.into_iter().map(|l| l.points.to_python(py)).collect::<PyResult<Vec<_>>>()?);
-    }
-    d.set_item("lines", lines)?;
-    d.set_item("line_kinds", kinds)?;
-    d.set_item("line_widths", widths)?;
+    d.set_item("lines", report.flat_lines().to_python(py)?)?;
     Ok(d)
 }
 
