@@ -1,9 +1,8 @@
 //! NumPy arrays <-> core types. Inputs are copied (so they are never modified and any memory
 //! order works); outputs are handed to NumPy without a copy.
 
-use numpy::ndarray::Array2;
 use numpy::{
-    IntoPyArray, PyArray2, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArrayDyn, PyUntypedArray,
+    IntoPyArray, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArrayDyn, PyUntypedArray,
     PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
@@ -163,7 +162,7 @@ macro_rules! arrays {
 
         impl<'py, const K: usize> ToPython<'py> for Vec<[$t; K]> {
             fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-                Ok(rows_to_numpy(py, self).into_any())
+                shaped_to_numpy(py, vec![self.len(), K], self.into_flattened())
             }
         }
     )*};
@@ -232,15 +231,6 @@ pub fn python<'py>(py: Python<'py>, value: &impl serde::Serialize) -> PyResult<B
     pythonize::pythonize(py, value).map_err(|e| Error::Internal(e.to_string()).into())
 }
 
-/// Hands row-major values of a 2-D `shape` to NumPy without copying.
-pub fn grid_to_numpy<T: numpy::Element>(
-    py: Python<'_>,
-    shape: (usize, usize),
-    flat: Vec<T>,
-) -> Bound<'_, PyArray2<T>> {
-    Array2::from_shape_vec(shape, flat).expect("rows * columns values").into_pyarray(py)
-}
-
 /// Hands row-major values of any `shape` to NumPy without copying.
 pub fn shaped_to_numpy<T: numpy::Element>(
     py: Python<'_>,
@@ -250,12 +240,4 @@ pub fn shaped_to_numpy<T: numpy::Element>(
     let a =
         numpy::ndarray::ArrayD::from_shape_vec(shape, flat).map_err(|e| Error::Internal(e.to_string()))?;
     Ok(a.into_pyarray(py).into_any())
-}
-
-/// Hands rows of K values to NumPy as (N, K) without copying.
-pub fn rows_to_numpy<T: numpy::Element, const K: usize>(
-    py: Python<'_>,
-    rows: Vec<[T; K]>,
-) -> Bound<'_, PyArray2<T>> {
-    grid_to_numpy(py, (rows.len(), K), rows.into_flattened())
 }

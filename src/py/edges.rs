@@ -5,7 +5,7 @@ use numpy::{PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUnty
 use pyo3::prelude::*;
 
 use super::args;
-use super::convert::{array_values, by_dtype, grid_to_numpy, native_order, rows, ToPython};
+use super::convert::{array_values, by_dtype, native_order, rows, shaped_to_numpy, ToPython};
 use super::mesh_input::{on_mesh, PositionsIn};
 use super::runtime::{detached, detached_cancellable};
 use crate::edges::chains::{chain_edges, vertex_pairs};
@@ -241,6 +241,6 @@ pub(super) fn _paper_edges<'py>(
     on_floats!(buffer, name, PyReadonlyArray3, "3-D", |x, (h, w, c)| {
         let gradient = detached(py, || paper_gradient(x, h, w, c))?;
         let mask = detached(py, || threshold_mask(&arg, &gradient, threshold))?;
-        (grid_to_numpy(py, (h, w), gradient), grid_to_numpy(py, (h, w), mask)).to_python(py)
+        (shaped_to_numpy(py, vec![h, w], gradient)?, shaped_to_numpy(py, vec![h, w], mask)?).to_python(py)
     })
 }

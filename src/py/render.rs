@@ -2,14 +2,14 @@
 //! scenes rendered into NumPy arrays allocated here and filled without the GIL), `gpu_info` and
 //! PNG encoding. Every argument is converted with a check that names it.
 
-use numpy::{PyArray2, PyUntypedArray};
+use numpy::PyUntypedArray;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 use pyo3::IntoPyObjectExt;
 
 use super::albedo::albedo;
 use super::args::{self, number, text, triple, type_name};
-use super::convert::{array_values, grid_to_numpy, python, shaped_to_numpy, ToPython};
+use super::convert::{array_values, python, shaped_to_numpy, ToPython};
 use super::mesh_input::{on_mesh, MeshInput, PositionsIn};
 use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
@@ -101,10 +101,8 @@ pub(super) fn _normal_mode<'py>(
 /// _up_axis(up) -> str | None: an up axis ("x", "y" or "z") checked; None stays None.
 #[pyfunction]
 pub(super) fn _up_axis(up: &Bound<'_, PyAny>) -> PyResult<Option<&'static str>> {
-    if up.is_none() {
-        return Ok(None);
-    }
-    Ok(Some(Axis::parse("up", &text("up", up)?)?.name()))
+    let up = args::optional("up", Some(up), args::text)?;
+    Ok(up.map(|u| Axis::parse("up", &u)).transpose()?.map(Axis::name))
 }
 
 /// _transform(transform) -> (4, 4) float64: a mesh's transform checked (see `RenderOptions`).
@@ -303,9 +301,9 @@ pub(super) fn _shadow_truth<'py>(
     view_proj: &Bound<'py, PyAny>,
     shape: (usize, usize),
     toward_light: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, PyArray2<f32>>> {
+) -> PyResult<Bound<'py, PyAny>> {
     let ((h, w), toward) = (shape, triple("toward_light", toward_light)?);
     let rows = array_values::<f64>("view_proj", view_proj, &["float64"], (&[Some(4), Some(4)], "(4, 4)"))?.0;
     let vis = on_mesh!(py, mesh, |v, f, _| Ok(mesh_shadow_truth(v, f, &rows, (w, h), toward)))?;
-    Ok(grid_to_numpy(py, (h, w), vis))
+    shaped_to_numpy(py, vec![h, w], vis)
 }
