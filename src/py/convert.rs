@@ -13,6 +13,7 @@ use super::args::type_name;
 use crate::edges::views::Lines;
 use crate::error::{Error, Result};
 use crate::mesh::{check_mask, flag_vertices, Positions};
+use crate::names::listed;
 use crate::real::Real;
 
 /// `$body` on the first of the element types `$t` that `$obj` reads as, bound to `$x` as a
@@ -51,15 +52,6 @@ pub fn dtype_name(a: &Bound<'_, PyUntypedArray>) -> String {
 /// The float dtypes array arguments take.
 pub const FLOATS: &[&str] = &["float32", "float64"];
 
-/// "a, b or c".
-fn one_of(names: &[&str]) -> String {
-    match names.split_last() {
-        Some((last, [])) => last.to_string(),
-        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
-        None => String::new(),
-    }
-}
-
 /// An array argument in native byte order and its shape, checked: its dtype one of `dtypes`,
 /// its shape `shape` (None: any length on that axis), written `what` in errors ("(K, 2)").
 pub fn checked_array<'py>(
@@ -72,7 +64,7 @@ pub fn checked_array<'py>(
     let a = untyped(arg, &obj)?;
     let dtype = dtype_name(a);
     if !dtypes.contains(&dtype.as_str()) {
-        return Err(Error::wrong_type(arg, format!("dtype must be {}, got {dtype}", one_of(dtypes))));
+        return Err(Error::wrong_type(arg, format!("dtype must be {}, got {dtype}", listed(dtypes))));
     }
     let got = a.shape().to_vec();
     if got.len() != shape.len() || shape.iter().zip(&got).any(|(s, g)| s.is_some_and(|s| s != *g)) {
