@@ -7,10 +7,11 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::args::{number, text};
-use super::convert::{array_values, dtype_name, float_values, native_order, rows, untyped, FLOATS};
+use super::convert::{array_values, dtype_name, float_values, native_order, rows, untyped, ToPython, FLOATS};
 use crate::error::{Error, Result};
 use crate::render::albedo::given::{Channels, Given, Values};
 use crate::render::albedo::Albedo;
+use crate::render::color::linear_to_srgb;
 
 /// An sRGB array (the argument `arg`): uint8 codes, or float32 or float64 values.
 fn channels(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Channels> {
@@ -62,8 +63,6 @@ pub fn albedo(keywords: Option<&Bound<'_, PyDict>>) -> Result<Option<Albedo>> {
 pub fn _srgb_from_linear<'py>(
     py: Python<'py>,
     values: numpy::PyReadonlyArray1<'py, f64>,
-) -> Bound<'py, numpy::PyArray1<f64>> {
-    use numpy::IntoPyArray;
-    let v: Vec<f64> = values.as_array().iter().map(|&c| crate::render::color::linear_to_srgb(c)).collect();
-    v.into_pyarray(py)
+) -> PyResult<Bound<'py, PyAny>> {
+    values.as_array().iter().map(|&c| linear_to_srgb(c)).collect::<Vec<_>>().to_python(py)
 }

@@ -9,7 +9,7 @@ mod classes;
 pub mod values;
 
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
+use pyo3::types::{IntoPyDict, PyDict, PyTuple};
 
 use crate::error::{Error, Result};
 use crate::render::settings::{self as described, Described, Setting, Value};
@@ -182,11 +182,8 @@ fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
         m.add(name, PyTuple::new(m.py(), names)?)?;
     }
     m.add("DEFAULT_CREASE_ANGLE", crate::edges::DEFAULT_CREASE_ANGLE)?;
-    let up = PyDict::new(m.py());
-    for (suffix, axis) in crate::render::scene::up::FILE_UP_AXES {
-        up.set_item(suffix, axis.name())?;
-    }
-    m.add("FILE_UP_AXES", up)?;
+    let up = crate::render::scene::up::FILE_UP_AXES.iter().map(|(suffix, axis)| (suffix, axis.name()));
+    m.add("FILE_UP_AXES", up.into_py_dict(m.py())?)?;
     m.add("DEFAULT_UP_AXIS", crate::render::scene::up::DEFAULT_UP.name())
 }
 
