@@ -107,8 +107,12 @@ fn group(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Group> {
     let lines = items(&field("lines"), lines, "a list")?;
     let line_widths =
         if line_widths.is_none() { None } else { Some(items(&field("widths"), line_widths, "a list")?) };
-    if matches!(ink, Ink::Filled) && line_widths.as_ref().is_none_or(|w| w.len() != lines.len()) {
-        return Err(Error::invalid(field("widths"), "filled outlines need one widths array per line"));
+    match &line_widths {
+        None if matches!(ink, Ink::Filled) => {
+            return Err(Error::invalid(field("widths"), "filled outlines need one widths array per line"))
+        }
+        None => {}
+        Some(w) => as_many(&field("widths"), w.len(), ("one widths array per line", lines.len()))?,
     }
     let strokes = lines
         .iter()
