@@ -147,15 +147,7 @@ pub fn dir<T: Described>(obj: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
 
 /// `Class.constructor(required, ..., name=value, ...)`: what makes the value again.
 pub fn repr<T: Described>(py: Python<'_>, value: &T) -> PyResult<String> {
-    let (ctor, args) = described::arguments(value);
-    let mut parts = Vec::with_capacity(args.len());
-    for (i, (name, v)) in args.iter().enumerate() {
-        let text = values::to_py(py, v)?.repr()?.to_string();
-        let by_position = ctor.params.get(i) == Some(name) && i < ctor.required;
-        parts.push(if by_position { text } else { format!("{name}={text}") });
-    }
-    let dot = if ctor.name.is_empty() { "" } else { "." };
-    Ok(format!("{}{dot}{}({})", T::CLASS, ctor.name, parts.join(", ")))
+    described::call(value, |v| Ok(values::to_py(py, v)?.repr()?.to_string()))
 }
 
 pub fn reduce<'py, T: Described>(

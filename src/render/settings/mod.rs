@@ -385,6 +385,23 @@ pub fn arguments<T: Described>(value: &T) -> (&'static Constructor, Vec<(&'stati
     (ctor, args)
 }
 
+/// The call that makes `value` again, `Class.constructor(required, ..., name=value, ...)`, each
+/// value as `write` spells it (in a front end's own syntax).
+pub fn call<T: Described, E>(
+    value: &T,
+    mut write: impl FnMut(&Value) -> std::result::Result<String, E>,
+) -> std::result::Result<String, E> {
+    let (ctor, args) = arguments(value);
+    let mut parts = Vec::with_capacity(args.len());
+    for (i, (name, v)) in args.iter().enumerate() {
+        let text = write(v)?;
+        let by_position = ctor.params.get(i) == Some(name) && i < ctor.required;
+        parts.push(if by_position { text } else { format!("{name}={text}") });
+    }
+    let dot = if ctor.name.is_empty() { "" } else { "." };
+    Ok(format!("{}{dot}{}({})", T::CLASS, ctor.name, parts.join(", ")))
+}
+
 /// `T` described for front ends: its class, help, fields (each with its name, kind, bounds,
 /// choices or class, whether None is a value, whether only a constructor sets it, and help) and
 /// constructors (their name, help, how many parameters go by position and how many must be
