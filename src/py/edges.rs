@@ -130,8 +130,7 @@ impl PyEdgeIndex {
         direction: Option<&Bound<'py, PyAny>>,
         kinds: &Bound<'py, PyAny>,
     ) -> Out<'py> {
-        let crease_angle = crease_angle_of(crease_angle)?;
-        let view = view_of(eye, direction)?;
+        let (crease_angle, view) = (crease_angle_of(crease_angle)?, view_of(eye, direction)?);
         let with_kinds = args::flag("kinds", kinds)?;
         let all = detached(py, || self.0.outlines(crease_angle, view))?;
         let kinds = with_kinds.then(|| all.kinds.iter().map(|&k| k as i8).collect::<Vec<_>>());
@@ -151,19 +150,11 @@ impl PyEdgeIndex {
         self.0.index.positions().to_vec().to_python(py)
     }
 
+    /// (vertices, faces, distinct edges)
     #[getter]
-    fn n_vertices(&self) -> usize {
-        self.0.index.n_vertices()
-    }
-
-    #[getter]
-    fn n_faces(&self) -> usize {
-        self.0.index.n_faces()
-    }
-
-    #[getter]
-    fn n_edges(&self) -> usize {
-        self.0.index.n_edges()
+    fn sizes(&self) -> (usize, usize, usize) {
+        let index = &self.0.index;
+        (index.n_vertices(), index.n_faces(), index.n_edges())
     }
 }
 
