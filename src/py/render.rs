@@ -113,31 +113,18 @@ pub(super) fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) ->
     t.to_vec().to_python(py)
 }
 
-/// The meshes of a render: [(mesh id, Material or None, 4x4 transform or None, up axis or
-/// None)].
+/// The meshes of a render as the Python layer's `Mesh` checked them: [(mesh id, Material or
+/// None, 4x4 transform or None, up axis or None)]; the core checks their values in the scene.
 fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
-    args::items("meshes", items, "a list of meshes")?
-        .iter()
-        .enumerate()
-        .map(|(i, item)| {
-            let arg = format!("meshes[{i}]");
-            let (id, mat, tf, up): (u64, Bound<'_, PyAny>, Bound<'_, PyAny>, Option<String>) = item
-                .extract()
-                .map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform, up axis)"))?;
-            let material = match mat.cast::<PyMaterial>() {
-                Ok(m) => Some(m.get().inner.clone()),
-                Err(_) if mat.is_none() => None,
-                Err(_) => {
-                    let why = format!("expected a toonmesh.Material, got {}", type_name(&mat));
-                    return Err(Error::wrong_type(format!("{arg}.material"), why));
-                }
-            };
-            let transform =
-                (!tf.is_none()).then(|| transform(&format!("{arg}.transform"), &tf)).transpose()?;
-            let up = up.map(|u| Axis::parse(&format!("{arg}.up"), &u)).transpose()?;
-            Ok((id, material, transform, up))
-        })
-        .collect()
+    type Item<'py> = (u64, Option<Bound<'py, PyMaterial>>, Option<[[f64; 4]; 4]>, Option<String>);
+    let expected = "expected (mesh id, Material or None, 4x4 transform or None, up axis or None)";
+    let read = |(i, item): (usize, &Bound<'_, PyAny>)| {
+        let (id, material, transform, up): Item<'_> =
+            item.extract().map_err(|_| Error::wrong_type(format!("meshes[{i}]"), expected))?;
+        let up = up.map(|u| Axis::parse(&format!("meshes[{i}].up"), &u)).transpose()?;
+        Ok((id, material.map(|m| m.get().inner.clone()), transform, up))
+    };
+    args::items("meshes", items, "a list of meshes")?.iter().enumerate().map(read).collect()
 }
 
 /// The image outputs as the dict `toonmesh.RenderResult` reads: each output's array (the views'
