@@ -1,14 +1,15 @@
 //! Python objects to a field's value and back, by the field's kind (`render::settings::Kind`):
 //! the only place that knows how each kind is spelt in Python.
 
-use numpy::{PyArrayDescrMethods, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods};
+use numpy::{PyArrayDescrMethods, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString};
+use pyo3::types::{IntoPyDict, PyString};
 use pyo3::IntoPyObjectExt;
 
 use super::classes::{self, Light as PyLight, LineStyle as PyLineStyle};
 use crate::error::{Error, Result};
 use crate::py::args::{flag, integer, items, number, numbers, rgb, rgba, text, triple, type_name};
+use crate::py::convert::shaped_to_numpy;
 use crate::render::scene::light::Light;
 use crate::render::settings::settings_classes;
 use crate::render::settings::{Field, GreyImage, Kind, Setting, Value};
@@ -49,23 +50,16 @@ pub fn to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>>
         Value::Rows(rows) => rows.iter().map(triple).collect::<Vec<_>>().into_bound_py_any(py),
         Value::Matrix(m) => m.iter().map(|r| r.to_vec()).collect::<Vec<_>>().into_bound_py_any(py),
         Value::Names(n) => n.clone().into_bound_py_any(py),
-        Value::Image(g) => {
-            let flat = numpy::PyArray1::from_slice(py, &g.values);
-            Ok(flat.reshape([g.height as usize, g.width as usize])?.into_any())
-        }
+        Value::Image(g) => shaped_to_numpy(py, vec![g.height as usize, g.width as usize], g.values.clone()),
         Value::Lights(l) => {
             l.iter().map(|&inner| PyLight { inner }).collect::<Vec<_>>().into_bound_py_any(py)
         }
         Value::Map(items) => {
-            let d = PyDict::new(py);
-            for (k, v) in items {
-                d.set_item(k, to_py(py, v)?)?;
-            }
-            Ok(d.into_any())
+            let items = items.iter().map(|(k, v)| Ok((*k, to_py(py, v)?))).collect::<PyResult<Vec<_>>>()?;
+            Ok(items.into_py_dict(py)?.into_any())
         }
         Value::List(items) => {
-            PyList::new(py, items.iter().map(|v| to_py(py, v)).collect::<PyResult<Vec<_>>>()?)?
-                .into_bound_py_any(py)
+            items.iter().map(|v| to_py(py, v)).collect::<PyResult<Vec<_>>>()?.into_bound_py_any(py)
         }
         Value::Setting(s) => {
             macro_rules! wrap {
