@@ -110,15 +110,7 @@ pub fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
 
 /// Three finite numbers.
 pub fn triple(name: &str, obj: &Bound<'_, PyAny>) -> Result<[f64; 3]> {
-    let v = numbers(name, obj)?;
-    let t: [f64; 3] = v
-        .as_slice()
-        .try_into()
-        .map_err(|_| Error::invalid(name, format!("expected 3 numbers, got {}", v.len())))?;
-    if !t.iter().all(|x| x.is_finite()) {
-        return Err(Error::invalid(name, format!("must be finite, got {t:?}")));
-    }
-    Ok(t)
+    crate::real::finite3(name, &numbers(name, obj)?)
 }
 
 /// Channels of a colour: '#rrggbb' ('#rrggbbaa') or numbers.
