@@ -51,14 +51,10 @@ pub fn detached_cancellable<T: Send>(
 
 /// Whether this is the thread Python runs signal handlers on.
 fn on_main_thread(py: Python<'_>) -> bool {
-    let main = py
-        .import("threading")
-        .and_then(|t| t.call_method0("main_thread"))
-        .and_then(|t| t.getattr("ident"))
-        .and_then(|i| i.extract::<u64>());
-    // SAFETY: PyThread_get_thread_ident only reads the calling thread's id.
-    let me = unsafe { pyo3::ffi::PyThread_get_thread_ident() } as u64;
-    main.is_ok_and(|m| m == me)
+    let threading = py.import("threading");
+    let main =
+        threading.and_then(|t| Ok(t.call_method0("main_thread")?.is(&t.call_method0("current_thread")?)));
+    main.unwrap_or(false)
 }
 
 /// set_num_threads(n: int) -> None
