@@ -2,7 +2,7 @@
 //! and checked serially before the parallel work starts. An array in another memory order or
 //! byte order is converted once, on entry; every check after its dtype and shape is the core's.
 
-use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
 
 use super::args::type_name;
@@ -11,8 +11,8 @@ use super::runtime::detached_cancellable;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::mesh::positions::on_positions;
-use crate::mesh::{check_positions, rows_of, Faces, FacesRef, PositionsRef};
-use crate::smooth::range::largest_if_finite;
+use crate::mesh::{rows_of, Faces, FacesRef, PositionsRef};
+use crate::smooth::range::checked_scale;
 
 /// A C-contiguous (N, 3) array borrowed from NumPy, of an element type a mesh takes.
 enum Rows3<'py> {
@@ -33,9 +33,9 @@ impl<'py> Rows3<'py> {
     /// C-contiguous in native byte order.
     fn read(arg: &str, obj: &Bound<'py, PyAny>, dtypes: &[&str], what: &str) -> Result<Self> {
         let (obj, _) = checked_array(arg, obj, dtypes, (&[None, Some(3)], what))?;
-        let internal = |e: PyErr| Error::Internal(format!("{arg}: {e}"));
-        let contiguous = obj.cast::<numpy::PyUntypedArray>().is_ok_and(|a| a.is_c_contiguous());
-        let obj = if contiguous { obj } else { obj.call_method1("copy", ("C",)).map_err(internal)? };
+        let numpy = obj.py().import("numpy");
+        let obj = numpy.and_then(|np| np.call_method1("ascontiguousarray", (obj,)));
+        let obj = obj.map_err(|e| Error::Internal(format!("{arg}: {e}")))?;
         let x = None
             .or_else(|| obj.extract().ok().map(Rows3::F32))
             .or_else(|| obj.extract().ok().map(Rows3::F64))
@@ -75,14 +75,8 @@ pub struct PositionsIn<'py> {
 impl<'py> PositionsIn<'py> {
     pub fn read(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Self> {
         let rows = Rows3::read(arg, obj, FLOATS, "(N, 3)")?;
-        let p = rows.positions().expect("a float dtype");
-        // one pass checks finiteness and finds the scale; the core names what is wrong
-        match on_positions!(p, v => largest_if_finite(v.as_flattened()).filter(|_| !v.is_empty())) {
-            Some(largest) => Ok(PositionsIn { rows, largest }),
-            None => Err(on_positions!(p, v => check_positions(arg, v)).err().unwrap_or_else(|| {
-                Error::Internal(format!("{arg}: refused by the fast check but not by the core's"))
-            })),
-        }
+        let largest = on_positions!(rows.positions().expect("a float dtype"), v => checked_scale(arg, v))?;
+        Ok(PositionsIn { rows, largest })
     }
 
     pub fn get(&self) -> PositionsRef<'_> {
