@@ -3,7 +3,6 @@
 
 use pyo3::prelude::*;
 use pyo3::types::PyList;
-use rayon::prelude::*;
 
 use super::args::{self, items};
 use super::convert::{array_values, rows, ToPython, FLOATS};
@@ -60,12 +59,7 @@ pub(super) fn _pen_strokes<'py>(
         .map(|(i, (l, w))| stroke(("lines", "widths", i), l, Some(w).filter(|w| !w.is_none())))
         .collect::<Result<Vec<_>>>()?;
     let (smooth, simplify) = (args::number("smooth", smooth)?, args::number("simplify", simplify)?);
-    let drawn = detached(py, || {
-        strokes
-            .par_iter()
-            .map(|(p, w)| pen::drawn(p, w.as_deref().unwrap_or(&[]), smooth, simplify, w.is_some()))
-            .collect::<Result<Vec<_>>>()
-    })?;
+    let drawn = detached(py, || pen::drawn_all(&strokes, smooth, simplify))?;
     let out = drawn.into_iter().map(|(p, kept)| (p, kept.into_iter().map(|i| i as i64).collect::<Vec<_>>()));
     PyList::new(py, out.map(|d| d.to_python(py)).collect::<PyResult<Vec<_>>>()?)
 }

@@ -43,6 +43,20 @@ pub fn drawn(
     Ok((kept.iter().map(|&i| smooth_points[i]).collect(), kept))
 }
 
+/// `drawn` of each stroke, in parallel: its points, and its widths where they shape it (None:
+/// simplified by its points alone).
+pub fn drawn_all(
+    strokes: &[(Vec<[f64; 2]>, Option<Vec<f64>>)],
+    smooth: f64,
+    simplify: f64,
+) -> Result<Vec<(Vec<[f64; 2]>, Vec<usize>)>> {
+    use rayon::prelude::*;
+    strokes
+        .par_iter()
+        .map(|(p, w)| drawn(p, w.as_deref().unwrap_or(&[]), smooth, simplify, w.is_some()))
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
