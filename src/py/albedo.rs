@@ -7,7 +7,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::args::{number, text};
-use super::convert::{array_values, dtype_name, float_values, native_order, rows, untyped, ToPython, FLOATS};
+use super::convert::{array_values, by_dtype, dtype_name, native_order, rows, untyped, ToPython, FLOATS};
 use crate::error::{Error, Result};
 use crate::render::albedo::given::{Channels, Given, Values};
 use crate::render::albedo::Albedo;
@@ -21,7 +21,10 @@ fn channels(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Channels> {
         || Error::wrong_type(arg, format!("dtype must be uint8, float32 or float64, got {}", dtype_name(a)));
     let values = match obj.extract::<PyReadonlyArrayDyn<'_, u8>>() {
         Ok(x) => Values::Codes(x.as_array().iter().copied().collect()),
-        Err(_) => Values::Unit(float_values(obj).ok_or_else(wrong_dtype)?),
+        Err(_) => Values::Unit(
+            by_dtype!(obj, PyReadonlyArrayDyn<f32, f64>, |x| x.as_array().iter().map(|&v| v.into()).collect())
+                .ok_or_else(wrong_dtype)?,
+        ),
     };
     Ok(Channels { shape: a.shape().to_vec(), values })
 }

@@ -14,7 +14,6 @@ use crate::edges::views::Lines;
 use crate::error::{Error, Result};
 use crate::mesh::{check_mask, flag_vertices, Positions};
 use crate::names::listed;
-use crate::real::Real;
 
 /// `$body` on the first of the element types `$t` that `$obj` reads as, bound to `$x` as a
 /// `$array` of it; None when it reads as none of them. NumPy dtypes match exactly (no casts).
@@ -130,11 +129,6 @@ pub fn vertex_mask(
         }),
     };
     flags.map(Some)
-}
-
-/// The values of a float32 or float64 array of any shape, widened to f64 (None: another dtype).
-pub fn float_values(obj: &Bound<'_, PyAny>) -> Option<Vec<f64>> {
-    by_dtype!(obj, PyReadonlyArrayDyn<f32, f64>, |x| x.as_array().iter().map(|&v| Real::to_f64(v)).collect())
 }
 
 /// A core result as Python receives it: a vector as a 1-D array and a vector of rows as a 2-D
