@@ -23,9 +23,7 @@ use crate::render::effects::shadows::raycast::mesh_shadow_truth;
 use crate::render::gpu_mesh::{MeshNormals, NormalMode};
 use crate::render::image_out::encode_png;
 use crate::render::scene::options::MeshSpec;
-use crate::render::scene::outputs::Output;
 use crate::render::scene::up::Axis;
-use crate::render::scene::FrameSpec;
 use crate::render::{BackendChoice, FrameReport, Image, Renderer, ViewImages};
 
 /// Runs GPU work with the GIL released, catching panics. Not in the compute pool: a render
@@ -127,24 +125,15 @@ fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
     args::items("meshes", items, "a list of meshes")?.iter().enumerate().map(read).collect()
 }
 
-/// The image outputs as the dict `toonmesh.RenderResult` reads: each output's array (the views'
-/// axis first when `views` is given), None where it was not asked for.
-fn image_dict<'py>(
-    py: Python<'py>,
-    frame: &FrameSpec,
-    images: ViewImages,
-    views: Option<usize>,
-) -> PyResult<Bound<'py, PyDict>> {
+/// The image outputs as the dict `toonmesh.RenderResult` reads: each output's array, None where
+/// it was not asked for.
+fn image_dict(py: Python<'_>, images: ViewImages) -> PyResult<Bound<'_, PyDict>> {
     let d = PyDict::new(py);
-    for o in Output::ALL.into_iter().filter(|o| o.pixel().is_some()) {
-        d.set_item(o.name(), py.None())?;
-    }
-    let leading: Vec<usize> = views.into_iter().collect();
-    for (o, image) in images.images {
-        let shape = o.shape(&leading, frame.height, frame.width).unwrap_or_default();
+    for (o, shape, image) in images.shaped() {
         let array = match image {
-            Image::Bytes(v) => shaped_to_numpy(py, shape, v)?,
-            Image::Floats(v) => shaped_to_numpy(py, shape, v)?,
+            Some(Image::Bytes(v)) => Some(shaped_to_numpy(py, shape, v)?),
+            Some(Image::Floats(v)) => Some(shaped_to_numpy(py, shape, v)?),
+            None => None,
         };
         d.set_item(o.name(), array)?;
     }
@@ -152,11 +141,9 @@ fn image_dict<'py>(
 }
 
 /// A render's report as the dict `toonmesh.RenderResult` reads (with its images): its serde
-/// form, the frame's size and its lines as flat arrays (`FrameReport::flat_lines`).
-fn report_dict<'py>(py: Python<'py>, frame: &FrameSpec, report: FrameReport) -> PyResult<Bound<'py, PyDict>> {
+/// form and its lines as flat arrays (`FrameReport::flat_lines`).
+fn report_dict<'py>(py: Python<'py>, report: FrameReport) -> PyResult<Bound<'py, PyDict>> {
     let d = python(py, &report)?.cast_into::<PyDict>()?;
-    d.set_item("width", frame.width)?;
-    d.set_item("height", frame.height)?;
     d.set_item("lines", report.flat_lines().to_python(py)?)?;
     Ok(d)
 }
@@ -234,7 +221,7 @@ impl PyRenderer {
         let (frame, views, inner) = (o.frame, cams.as_ref().map(Vec::len), &self.inner);
         // the images are made and filled without the GIL, and handed to NumPy as they are
         let render = |cancel: &Cancel| {
-            let mut images = ViewImages::zeros(&frame, views.unwrap_or(1));
+            let mut images = ViewImages::zeros(&frame, views);
             let reports = match &cams {
                 None => vec![inner.render_checked(scene, images.buffers().pop().expect("one view"))?],
                 Some(cams) => inner.render_views(&scene, cams, images.buffers(), cancel)?,
@@ -246,8 +233,8 @@ impl PyRenderer {
             // a long stream of views stops on Ctrl-C between frames
             Some(_) => detached_cancellable(py, render)?,
         };
-        let reports = reports.into_iter().map(|r| report_dict(py, &o.frame, r)).collect::<PyResult<_>>()?;
-        Ok((image_dict(py, &frame, images, views)?, reports))
+        let reports = reports.into_iter().map(|r| report_dict(py, r)).collect::<PyResult<_>>()?;
+        Ok((image_dict(py, images)?, reports))
     }
 }
 

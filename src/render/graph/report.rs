@@ -16,6 +16,9 @@ pub struct Polyline {
 /// (`line_kinds`); the lines' points and widths, which go to arrays, through `flat_lines`.
 #[derive(Clone, Debug, Default, serde::Serialize)]
 pub struct FrameReport {
+    /// The frame's size in pixels.
+    pub width: u32,
+    pub height: u32,
     /// Every step that ran, in order (host steps included).
     pub passes: Vec<&'static str>,
     /// Seconds per step: GPU passes from timestamps where the device has them, host steps and
