@@ -73,7 +73,8 @@ macro_rules! python_classes {
             }
 
             fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
-                $crate::py::settings::reduce(py, &self.inner)
+                let state = $crate::render::settings::state::state(&self.inner);
+                Ok((py.import("toonmesh._core")?.getattr("_restore")?, (stringify!($class), state)))
             }
 
             /// A copy with only the fields named changed (None: the field's default), checked as
@@ -87,7 +88,7 @@ macro_rules! python_classes {
             /// help) and constructors (their parameters, with the default of each).
             #[staticmethod]
             fn describe(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
-                $crate::py::settings::describe::<$core>(py)
+                $crate::py::settings::values::to_py(py, &$crate::render::settings::describe::<$core>())
             }
         }
     )*};
@@ -150,22 +151,10 @@ pub fn repr<T: Described>(py: Python<'_>, value: &T) -> PyResult<String> {
     described::call(value, |v| Ok(values::to_py(py, v)?.repr()?.to_string()))
 }
 
-pub fn reduce<'py, T: Described>(
-    py: Python<'py>,
-    inner: &T,
-) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
-    Ok((py.import("toonmesh._core")?.getattr("_restore")?, (T::CLASS, described::state::state(inner))))
-}
-
 /// _restore(cls, state): a pickled setting, checked again.
 #[pyfunction]
 pub(super) fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
     values::to_py(py, &Value::setting(Setting::restore(cls, state)?))
-}
-
-/// The description of `T` as Python data (see `render::settings::describe`).
-pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
-    values::to_py(py, &described::describe::<T>())
 }
 
 /// The names the core accepts, for Python to take rather than repeat.
