@@ -5,8 +5,9 @@
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
+use crate::render::effects::outlines::settings::kind_names;
 use crate::render::scene::model;
-use crate::render::settings::{outline_styles, settings_classes, CLASSES};
+use crate::render::settings::{settings_classes, CLASSES};
 
 use super::python_classes;
 settings_classes!(python_classes);
@@ -26,8 +27,12 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 impl Outlines {
     /// Each ink kind's :class:`LineStyle`, or None where it is not drawn.
     #[getter]
-    fn styles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        super::values::to_py(py, &outline_styles(&self.inner))
+    fn styles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (name, s) in kind_names().iter().zip(&self.inner.styles) {
+            d.set_item(name, s.map(|inner| LineStyle { inner }))?;
+        }
+        Ok(d)
     }
 }
 

@@ -21,7 +21,6 @@ mod value;
 pub(crate) use classes::settings_classes;
 pub use classes::{Class, Setting, CLASSES};
 pub use grey_image::{GreyImage, MAX_IMAGE_SIDE};
-pub use outlines::outline_styles;
 pub use value::Value;
 
 use serde::de::DeserializeOwned;

@@ -8,13 +8,6 @@ use crate::render::effects::outlines::settings::{
     kind_names, ContourRule, ImageRule, LineStyle, Outlines, MAX_WIDTH,
 };
 
-/// Each ink kind's style by name, None where it is not drawn: the view of `Outlines` that front
-/// ends give as `styles` (the fields spell a kind not drawn as False).
-pub fn outline_styles(o: &Outlines) -> Value {
-    let style = |s: &Option<LineStyle>| s.map_or(Value::None, |s| Value::setting(Setting::LineStyle(s)));
-    Value::Map(kind_names().into_iter().zip(o.styles.iter().map(style)).collect())
-}
-
 const STYLE_HELP: &str = "True (the common style), False (not drawn), a LineStyle or a colour";
 
 const fn style(name: &'static str) -> Field {
