@@ -111,16 +111,20 @@ pub(super) fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) ->
     t.to_vec().to_python(py)
 }
 
-/// The meshes of a render as the Python layer's `Mesh` checked them: [(mesh id, Material or
-/// None, 4x4 transform or None, up axis or None)]; the core checks their values in the scene.
+/// The meshes of a render as the Python layer makes them: [(mesh id, Material or None, 4x4
+/// transform or None, up axis or None)]; the core checks the transforms in the scene.
 fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
-    type Item<'py> = (u64, Option<Bound<'py, PyMaterial>>, Option<[[f64; 4]; 4]>, Option<String>);
+    type Item<'py> = (u64, Bound<'py, PyAny>, Option<[[f64; 4]; 4]>, Option<String>);
     let expected = "expected (mesh id, Material or None, 4x4 transform or None, up axis or None)";
     let read = |(i, item): (usize, &Bound<'_, PyAny>)| {
         let (id, material, transform, up): Item<'_> =
             item.extract().map_err(|_| Error::wrong_type(format!("meshes[{i}]"), expected))?;
+        let material = args::optional(&format!("meshes[{i}].material"), Some(&material), |arg, m| {
+            let why = || format!("expected a toonmesh.Material, got {}", type_name(m));
+            m.cast::<PyMaterial>().map(|m| m.get().inner.clone()).map_err(|_| Error::wrong_type(arg, why()))
+        })?;
         let up = up.map(|u| Axis::parse(&format!("meshes[{i}].up"), &u)).transpose()?;
-        Ok((id, material.map(|m| m.get().inner.clone()), transform, up))
+        Ok((id, material, transform, up))
     };
     args::items("meshes", items, "a list of meshes")?.iter().enumerate().map(read).collect()
 }
