@@ -7,7 +7,7 @@ use pyo3::types::PyList;
 use super::args::{self, items};
 use super::convert::{array_values, rows, ToPython, FLOATS};
 use super::runtime::detached;
-use crate::error::{Error, Result};
+use crate::error::{as_many, Error, Result};
 use crate::render::effects::outlines::pen::svg::{self, Group, Ink, Stroke};
 use crate::render::effects::outlines::pen::{self, plotter_order as order};
 
@@ -32,12 +32,6 @@ fn stroke(
     let points = point_array(&format!("{arg}[{i}]"), line)?;
     let widths = widths.map(|w| width_array(&format!("{widths_arg}[{i}]"), w, points.len())).transpose()?;
     Ok((points, widths))
-}
-
-/// Refuses `arg` unless it has `n` entries (`expected` says what they match).
-fn as_many(arg: &str, got: usize, (expected, n): (&str, usize)) -> Result<()> {
-    let why = || format!("expected {expected} ({n}), got {got}");
-    (got == n).then_some(()).ok_or_else(|| Error::invalid(arg, why()))
 }
 
 /// Each of `lines` as the SVG draws it (`pen::drawn`): the points drawn and which of the line's
