@@ -1,6 +1,6 @@
 //! Python bindings for `crate::render`: the device-side `Renderer` (meshes kept on the device,
-//! scenes rendered into NumPy arrays allocated here and filled without the GIL), `gpu_info` and
-//! PNG encoding. Every argument is converted with a check that names it.
+//! scenes rendered without the GIL into the core's images, handed to NumPy without a copy),
+//! `gpu_info` and PNG encoding. Every argument is converted with a check that names it.
 
 use numpy::PyUntypedArray;
 use pyo3::prelude::*;
