@@ -67,6 +67,15 @@ impl Error {
 
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
+/// Refuses the argument `arg` unless it has `n` entries, `expected` saying what they match
+/// ("expected one width per point (3), got 2").
+pub fn as_many(arg: &str, got: usize, (expected, n): (&str, usize)) -> Result<()> {
+    if got != n {
+        return Err(Error::invalid(arg, format!("expected {expected} ({n}), got {got}")));
+    }
+    Ok(())
+}
+
 /// The name of field `name` of the argument called `prefix` in errors: `"prefix.name"`, or
 /// `"name"` alone for a setting that is being made (`prefix` empty), whose fields are its
 /// constructor's arguments. Scene checks name the place: `"meshes[0].material.shininess"`.

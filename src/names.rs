@@ -3,10 +3,15 @@
 
 /// `'a', 'b' or 'c'`: the names an argument takes, for an error message.
 pub fn one_of(names: &[&str]) -> String {
-    let quoted: Vec<String> = names.iter().map(|n| format!("'{n}'")).collect();
-    match quoted.split_last() {
+    listed(&names.iter().map(|n| format!("'{n}'")).collect::<Vec<_>>())
+}
+
+/// `a, b or c`.
+pub fn listed<S: AsRef<str>>(items: &[S]) -> String {
+    let items: Vec<&str> = items.iter().map(AsRef::as_ref).collect();
+    match items.split_last() {
         Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
-        _ => quoted.concat(),
+        _ => items.concat(),
     }
 }
 

@@ -6,10 +6,12 @@
 //! Results never depend on the thread count: work is split by fixed chunk sizes and partial sums
 //! are combined in a fixed order.
 
-use std::sync::{Arc, Mutex};
+use std::sync::{mpsc, Arc, Mutex};
+use std::time::Duration;
 
 use rayon::ThreadPool;
 
+use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 
 /// The most worker threads a pool may have: far above any machine's cores, low enough that a
@@ -93,6 +95,34 @@ pub fn install<R: Send>(f: impl FnOnce() -> R + Send) -> R {
     pool().install(f)
 }
 
+/// Runs `work` in the pool, panics caught, while the calling thread asks `stop` every `every`
+/// whether to stop it, for a caller that must watch for something else meanwhile (a signal):
+/// once `stop` says yes, the work's `Cancel` is raised and `stop` is not asked again.
+pub fn watched<T: Send>(
+    work: impl FnOnce(&Cancel) -> Result<T> + Send,
+    every: Duration,
+    mut stop: impl FnMut() -> bool,
+) -> Result<T> {
+    let cancel = Cancel::new();
+    let (done, finished) = mpsc::channel();
+    pool().in_place_scope(|scope| {
+        let cancel = &cancel;
+        scope.spawn(move |_| {
+            let _ = done.send(catching_panics(|| work(cancel)));
+        });
+        loop {
+            match finished.recv_timeout(every) {
+                Ok(result) => return result,
+                Err(mpsc::RecvTimeoutError::Timeout) if !cancel.is_requested() && stop() => cancel.request(),
+                Err(mpsc::RecvTimeoutError::Timeout) => {}
+                Err(mpsc::RecvTimeoutError::Disconnected) => {
+                    return Err(Error::Internal("the worker stopped without a result".into()))
+                }
+            }
+        }
+    })
+}
+
 /// Fixed chunk length for deterministic parallel reductions.
 pub const REDUCE_CHUNK: usize = 4096;
 
@@ -113,4 +143,27 @@ pub fn deterministic_sum(n: usize, f: impl Fn(usize) -> f64 + Sync) -> f64 {
         })
         .collect();
     partial.iter().sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn watched_work_stops_when_asked_and_panics_are_errors() {
+        let spin = |cancel: &Cancel| loop {
+            cancel.check()?;
+            std::thread::sleep(Duration::from_millis(1));
+        };
+        let mut asked = 0;
+        let stopped: Result<()> = watched(spin, Duration::from_millis(1), || {
+            asked += 1;
+            asked == 3
+        });
+        assert!(matches!(stopped, Err(Error::Interrupted)));
+        assert_eq!(asked, 3);
+        let panicked: Result<()> = watched(|_| panic!("boom"), Duration::from_millis(1), || false);
+        assert!(matches!(panicked, Err(Error::Internal(m)) if m == "boom"));
+        assert_eq!(watched(|_| Ok(7), Duration::from_millis(1), || false).unwrap(), 7);
+    }
 }

@@ -3,6 +3,8 @@
 
 use num_traits::Float;
 
+use crate::error::{Error, Result};
+
 pub trait Real: Float + Send + Sync + Default + std::fmt::Debug + std::iter::Sum + 'static {
     fn from_f64(x: f64) -> Self;
     fn to_f64(self) -> f64;
@@ -60,6 +62,16 @@ pub fn cross<T: Real>(a: Vec3<T>, b: Vec3<T>) -> Vec3<T> {
 #[inline]
 pub fn norm<T: Real>(a: Vec3<T>) -> T {
     dot(a, a).sqrt()
+}
+
+/// Three finite numbers (a point or a direction): the argument `arg`, given as `v`.
+pub fn finite3(arg: &str, v: &[f64]) -> Result<[f64; 3]> {
+    let t: [f64; 3] =
+        v.try_into().map_err(|_| Error::invalid(arg, format!("expected 3 numbers, got {}", v.len())))?;
+    if !t.iter().all(|x| x.is_finite()) {
+        return Err(Error::invalid(arg, format!("must be finite, got {t:?}")));
+    }
+    Ok(t)
 }
 
 /// Converts a position to f64 for accumulations that need the headroom.

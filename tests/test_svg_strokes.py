@@ -271,5 +271,7 @@ def test_bad_strokes_are_refused_naming_the_argument():
         _core._plotter_order(np.zeros((2, 2)), np.zeros((1, 2)))
     with pytest.raises(ValueError, match=r"groups\[0\].widths: filled outlines need one widths array per line"):
         _core._svg_document(10, 10, [("ridge", "#000000", None, None, [line], None)])
+    with pytest.raises(ValueError, match=r"groups\[0\].widths: expected one widths array per line \(2\), got 1"):
+        _core._svg_document(10, 10, [("ridge", "#000000", 1.0, None, [line, line], [np.ones(3)])])
     with pytest.raises(TypeError, match=r"groups\[0\].color"):
         _core._svg_document(10, 10, [("ridge", 7, 1.0, None, [line], None)])

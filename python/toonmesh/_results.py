@@ -60,9 +60,13 @@ class RenderResult:
         self.depth: Optional[np.ndarray] = raw["depth"]
         self.outline: Optional[np.ndarray] = raw["outline"]
         self.shadow: Optional[np.ndarray] = raw["shadow"]
-        self.lines: Optional[List[np.ndarray]] = raw["lines"]
+        self.lines: Optional[List[np.ndarray]] = None
         self.line_kinds: Optional[List[str]] = raw["line_kinds"]
-        self.line_widths: Optional[List[np.ndarray]] = raw["line_widths"]
+        self.line_widths: Optional[List[np.ndarray]] = None
+        if raw["lines"] is not None:  # every point, where each line starts, every point's width
+            points, starts, widths = raw["lines"]
+            self.lines = [points[a:b] for a, b in zip(starts[:-1], starts[1:])]
+            self.line_widths = [widths[a:b] for a, b in zip(starts[:-1], starts[1:])]
         self.passes: List[str] = list(raw["passes"])
         self.timings: Dict[str, float] = dict(raw["timings"])
         self.timing_source: str = "gpu" if raw["gpu_timed"] else "wall"

@@ -383,16 +383,16 @@ class EdgeIndex:
 
     @property
     def n_vertices(self) -> int:
-        return int(self._index.n_vertices)
+        return int(self._index.sizes[0])
 
     @property
     def n_faces(self) -> int:
-        return int(self._index.n_faces)
+        return int(self._index.sizes[1])
 
     @property
     def n_edges(self) -> int:
         """Number of distinct edges."""
-        return int(self._index.n_edges)
+        return int(self._index.sizes[2])
 
     @property
     def boundary(self) -> np.ndarray:

@@ -108,11 +108,32 @@ pub fn rows_of<T>(flat: &[T]) -> &[[T; 3]] {
     unsafe { std::slice::from_raw_parts(flat.as_ptr() as *const [T; 3], flat.len() / 3) }
 }
 
+/// Faces borrowed as flat rows of three indices, in the caller's integer type.
+#[derive(Clone, Copy)]
+pub enum FacesRef<'a> {
+    I32(&'a [i32]),
+    I64(&'a [i64]),
+    U32(&'a [u32]),
+    U64(&'a [u64]),
+}
+
+impl FacesRef<'_> {
+    /// The faces as rows of u32, each index checked against `n_vertices` (`faces_from_flat`).
+    pub fn checked(self, arg: &str, n_vertices: usize) -> Result<Faces> {
+        match self {
+            FacesRef::I32(flat) => faces_from_flat(arg, flat, n_vertices),
+            FacesRef::I64(flat) => faces_from_flat(arg, flat, n_vertices),
+            FacesRef::U32(flat) => faces_from_flat(arg, flat, n_vertices),
+            FacesRef::U64(flat) => faces_from_flat(arg, flat, n_vertices),
+        }
+    }
+}
+
 /// Faces held as flat rows of three indices, converted to u32 in parallel (in huge pages) and
 /// checked as `check_faces` checks them, which names the first bad index.
 pub fn faces_from_flat<I>(arg: &str, flat: &[I], n_vertices: usize) -> Result<Faces>
 where
-    I: Copy + Into<i64> + Sync + std::fmt::Display,
+    I: Copy + TryInto<i64> + Sync + std::fmt::Display,
 {
     use rayon::prelude::*;
     let rows = rows_of(flat);
@@ -122,7 +143,8 @@ where
             let mut ok = true;
             for (o, r) in o.iter_mut().zip(r) {
                 let row = r.map(|i| {
-                    let i: i64 = i.into();
+                    // an index beyond i64 (from uint64 faces) is out of range, as a negative one
+                    let i: i64 = i.try_into().unwrap_or(-1);
                     ok &= i >= 0 && (i as u64) < n_vertices as u64;
                     i as u32
                 });
@@ -163,6 +185,8 @@ mod tests {
         assert_eq!(check_faces("faces", [[0u32, 1, 2]].into_iter(), 3).unwrap(), vec![[0, 1, 2]]);
         assert_eq!(faces_from_flat("faces", &[0i64, 1, 2, 2, 1, 0], 3).unwrap(), vec![[0, 1, 2], [2, 1, 0]]);
         let e = faces_from_flat("faces", &[0i32, 1, 3], 3).unwrap_err();
+        let huge = FacesRef::U64(&[0, 1, u64::MAX]).checked("faces", 3).unwrap_err();
+        assert!(huge.to_string().contains(&format!("refers to vertex {}", u64::MAX)));
         assert!(flag_vertices("pinned", [2i64, -1], 3).unwrap_err().to_string().contains("index -1"));
         assert_eq!(flag_vertices("pinned", [2u64], 3).unwrap(), vec![false, false, true]);
         assert!(e.to_string().contains("refers to vertex 3"));

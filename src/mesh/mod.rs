@@ -27,5 +27,7 @@ pub use adjacency::Adjacency;
 pub use bounds::Bounds;
 pub use buckets::Buckets;
 pub use edge_table::EdgeTable;
-pub use input::{check_faces, check_mask, check_positions, faces_from_flat, flag_vertices, rows_of, Faces};
+pub use input::{
+    check_faces, check_mask, check_positions, faces_from_flat, flag_vertices, rows_of, Faces, FacesRef,
+};
 pub use positions::{Positions, PositionsRef};

@@ -86,44 +86,31 @@ pub fn text(name: &str, obj: &Bound<'_, PyAny>) -> Result<String> {
         .map_err(|_| Error::wrong_type(name, format!("expected a string, got {}", type_name(obj))))
 }
 
-/// A sequence of numbers (list, tuple, 1-D array).
-pub fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
-    refuse_text(name, obj, "a sequence of numbers")?;
-    let items = obj.try_iter().map_err(|_| {
-        Error::wrong_type(name, format!("expected a sequence of numbers, got {}", type_name(obj)))
-    })?;
-    items
-        .enumerate()
-        .map(|(i, item)| {
-            let item = item.map_err(|e| Error::invalid(name, e.to_string()))?;
-            number(&format!("{name}[{i}]"), &item)
-        })
-        .collect()
-}
-
-/// Refuses str, bytes and bytearray where numbers are expected: text iterates, but as
-/// characters or byte codes, never as numbers.
-pub fn refuse_text(name: &str, obj: &Bound<'_, PyAny>, expected: &str) -> Result<()> {
+/// The items of a sequence, `expected` saying what it should be. Text (str, bytes, bytearray)
+/// is refused: it iterates, but as characters or byte codes, never as numbers or items.
+pub fn items<'py>(name: &str, obj: &Bound<'py, PyAny>, expected: &str) -> Result<Vec<Bound<'py, PyAny>>> {
+    let wrong = || Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj)));
     if obj.is_instance_of::<PyString>()
         || obj.is_instance_of::<PyBytes>()
         || obj.is_instance_of::<PyByteArray>()
     {
-        return Err(Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj))));
+        return Err(wrong());
     }
-    Ok(())
+    obj.try_iter()
+        .map_err(|_| wrong())?
+        .map(|item| item.map_err(|e| Error::invalid(name, e.to_string())))
+        .collect()
+}
+
+/// A sequence of numbers (list, tuple, 1-D array).
+pub fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<f64>> {
+    let items = items(name, obj, "a sequence of numbers")?;
+    items.iter().enumerate().map(|(i, item)| number(&format!("{name}[{i}]"), item)).collect()
 }
 
 /// Three finite numbers.
 pub fn triple(name: &str, obj: &Bound<'_, PyAny>) -> Result<[f64; 3]> {
-    let v = numbers(name, obj)?;
-    let t: [f64; 3] = v
-        .as_slice()
-        .try_into()
-        .map_err(|_| Error::invalid(name, format!("expected 3 numbers, got {}", v.len())))?;
-    if !t.iter().all(|x| x.is_finite()) {
-        return Err(Error::invalid(name, format!("must be finite, got {t:?}")));
-    }
-    Ok(t)
+    crate::real::finite3(name, &numbers(name, obj)?)
 }
 
 /// Channels of a colour: '#rrggbb' ('#rrggbbaa') or numbers.

@@ -1,10 +1,9 @@
 //! NumPy arrays <-> core types. Inputs are copied (so they are never modified and any memory
 //! order works); outputs are handed to NumPy without a copy.
 
-use numpy::ndarray::Array2;
 use numpy::{
-    IntoPyArray, PyArray2, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArrayDyn,
-    PyUntypedArray, PyUntypedArrayMethods,
+    IntoPyArray, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArrayDyn, PyUntypedArray,
+    PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -13,9 +12,8 @@ use pyo3::IntoPyObjectExt;
 use super::args::type_name;
 use crate::edges::views::Lines;
 use crate::error::{Error, Result};
-use crate::mesh::positions::on_positions;
-use crate::mesh::{check_faces, check_mask, check_positions, flag_vertices, Faces, Positions};
-use crate::real::Real;
+use crate::mesh::{check_mask, flag_vertices, Positions};
+use crate::names::listed;
 
 /// `$body` on the first of the element types `$t` that `$obj` reads as, bound to `$x` as a
 /// `$array` of it; None when it reads as none of them. NumPy dtypes match exactly (no casts).
@@ -53,15 +51,6 @@ pub fn dtype_name(a: &Bound<'_, PyUntypedArray>) -> String {
 /// The float dtypes array arguments take.
 pub const FLOATS: &[&str] = &["float32", "float64"];
 
-/// "a, b or c".
-fn one_of(names: &[&str]) -> String {
-    match names.split_last() {
-        Some((last, [])) => last.to_string(),
-        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
-        None => String::new(),
-    }
-}
-
 /// An array argument in native byte order and its shape, checked: its dtype one of `dtypes`,
 /// its shape `shape` (None: any length on that axis), written `what` in errors ("(K, 2)").
 pub fn checked_array<'py>(
@@ -74,7 +63,7 @@ pub fn checked_array<'py>(
     let a = untyped(arg, &obj)?;
     let dtype = dtype_name(a);
     if !dtypes.contains(&dtype.as_str()) {
-        return Err(Error::wrong_type(arg, format!("dtype must be {}, got {dtype}", one_of(dtypes))));
+        return Err(Error::wrong_type(arg, format!("dtype must be {}, got {dtype}", listed(dtypes))));
     }
     let got = a.shape().to_vec();
     if got.len() != shape.len() || shape.iter().zip(&got).any(|(s, g)| s.is_some_and(|s| s != *g)) {
@@ -104,34 +93,6 @@ pub fn rows<T: Copy, const K: usize>(flat: &[T]) -> Vec<[T; K]> {
     flat.chunks_exact(K).map(|c| std::array::from_fn(|i| c[i])).collect()
 }
 
-fn rows3<T: numpy::Element + Copy>(x: &PyReadonlyArray2<'_, T>) -> Vec<[T; 3]> {
-    let view = x.as_array();
-    view.as_slice().map_or_else(|| view.rows().into_iter().map(|r| [r[0], r[1], r[2]]).collect(), rows)
-}
-
-/// Reads (N, 3) float32 or float64 positions (either byte order), checking shape and
-/// finiteness.
-pub fn positions(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Positions> {
-    let (obj, _) = checked_array(arg, obj, FLOATS, (&[None, Some(3)], "(N, 3)"))?;
-    let p = match obj.extract::<PyReadonlyArray2<'_, f32>>() {
-        Ok(x) => Positions::F32(rows3(&x)),
-        Err(_) => Positions::F64(rows3(
-            &obj.extract::<PyReadonlyArray2<'_, f64>>().map_err(|e| Error::Internal(e.to_string()))?,
-        )),
-    };
-    on_positions!(p.slices(), v => check_positions(arg, v))?;
-    Ok(p)
-}
-
-/// Reads (M, 3) int32, int64, uint32 or uint64 faces (either byte order), checking every index
-/// against `n_vertices`.
-pub fn faces(arg: &str, obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<Faces> {
-    let dtypes = ["int32", "int64", "uint32", "uint64"];
-    let (obj, _) = checked_array(arg, obj, &dtypes, (&[None, Some(3)], "(M, 3)"))?;
-    by_dtype!(obj, PyReadonlyArray2<i32, i64, u32, u64>, |x| check_faces(arg, rows3(&x).into_iter(), n_vertices))
-        .unwrap_or_else(|| Err(Error::Internal(format!("{arg}: an index array NumPy did not hand over"))))
-}
-
 /// Reads an optional 1-D array of vertex indices (any integer dtype, either byte order) or a
 /// boolean mask of length `n_vertices`, returning a per-vertex flag.
 pub fn vertex_mask(
@@ -157,37 +118,17 @@ pub fn vertex_mask(
     if a.len() == 0 {
         return Ok(None); // an empty list pins nothing, whatever dtype NumPy gave it
     }
-    let internal = |e: PyErr| Error::Internal(e.to_string());
-    let dtype = a.dtype();
-    let flags = match (dtype.kind(), dtype.itemsize()) {
-        (b'b', _) => {
-            let x = obj.extract::<PyReadonlyArray1<'_, bool>>().map_err(|e| internal(e.into()))?;
-            check_mask(arg, x.as_array().to_vec(), n_vertices)
-        }
-        (b'u', 8) => {
-            let x = obj.extract::<PyReadonlyArray1<'_, u64>>().map_err(|e| internal(e.into()))?;
+    let flags = match obj.extract::<PyReadonlyArray1<'_, bool>>() {
+        Ok(mask) => check_mask(arg, mask.as_array().to_vec(), n_vertices),
+        Err(_) => by_dtype!(obj, PyReadonlyArray1<i8, i16, i32, i64, u8, u16, u32, u64>, |x| {
             flag_vertices(arg, x.as_array().iter().copied(), n_vertices)
-        }
-        (b'i' | b'u', _) => {
-            // Every other integer dtype fits in int64.
-            let wide = obj.call_method1("astype", ("int64",)).map_err(internal)?;
-            let x = wide.extract::<PyReadonlyArray1<'_, i64>>().map_err(|e| internal(e.into()))?;
-            flag_vertices(arg, x.as_array().iter().copied(), n_vertices)
-        }
-        _ => Err(Error::wrong_type(
-            arg,
-            format!(
-                "expected vertex indices of an integer dtype or an (N,) boolean mask, got dtype {}",
-                dtype_name(a)
-            ),
-        )),
+        })
+        .unwrap_or_else(|| {
+            let why = "expected vertex indices of an integer dtype or an (N,) boolean mask, got dtype";
+            Err(Error::wrong_type(arg, format!("{why} {}", dtype_name(a))))
+        }),
     };
     flags.map(Some)
-}
-
-/// The values of a float32 or float64 array of any shape, widened to f64 (None: another dtype).
-pub fn float_values(obj: &Bound<'_, PyAny>) -> Option<Vec<f64>> {
-    by_dtype!(obj, PyReadonlyArrayDyn<f32, f64>, |x| x.as_array().iter().map(|&v| Real::to_f64(v)).collect())
 }
 
 /// A core result as Python receives it: a vector as a 1-D array and a vector of rows as a 2-D
@@ -207,7 +148,7 @@ macro_rules! arrays {
 
         impl<'py, const K: usize> ToPython<'py> for Vec<[$t; K]> {
             fn to_python(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-                Ok(rows_to_numpy(py, self).into_any())
+                shaped_to_numpy(py, vec![self.len(), K], self.into_flattened())
             }
         }
     )*};
@@ -276,19 +217,13 @@ pub fn python<'py>(py: Python<'py>, value: &impl serde::Serialize) -> PyResult<B
     pythonize::pythonize(py, value).map_err(|e| Error::Internal(e.to_string()).into())
 }
 
-/// Hands row-major values of a 2-D `shape` to NumPy without copying.
-pub fn grid_to_numpy<T: numpy::Element>(
+/// Hands row-major values of any `shape` to NumPy without copying.
+pub fn shaped_to_numpy<T: numpy::Element>(
     py: Python<'_>,
-    shape: (usize, usize),
+    shape: Vec<usize>,
     flat: Vec<T>,
-) -> Bound<'_, PyArray2<T>> {
-    Array2::from_shape_vec(shape, flat).expect("rows * columns values").into_pyarray(py)
-}
-
-/// Hands rows of K values to NumPy as (N, K) without copying.
-pub fn rows_to_numpy<T: numpy::Element, const K: usize>(
-    py: Python<'_>,
-    rows: Vec<[T; K]>,
-) -> Bound<'_, PyArray2<T>> {
-    grid_to_numpy(py, (rows.len(), K), rows.into_flattened())
+) -> PyResult<Bound<'_, PyAny>> {
+    let a =
+        numpy::ndarray::ArrayD::from_shape_vec(shape, flat).map_err(|e| Error::Internal(e.to_string()))?;
+    Ok(a.into_pyarray(py).into_any())
 }

@@ -1,15 +1,12 @@
 //! Python bindings for `crate::edges`. The public API, docstrings and result classes live in
 //! `python/toonmesh/edges.py`; these are the underscored entry points it calls.
 
-use numpy::ndarray::Dimension;
-use numpy::{
-    PyArray2, PyArrayMethods, PyReadonlyArray, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
-};
+use numpy::{PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use super::args;
-use super::convert::{array_values, by_dtype, grid_to_numpy, native_order, positions, rows, ToPython};
-use super::mesh_input::on_mesh;
+use super::convert::{array_values, by_dtype, native_order, rows, shaped_to_numpy, ToPython};
+use super::mesh_input::{on_mesh, PositionsIn};
 use super::runtime::{detached, detached_cancellable};
 use crate::edges::chains::{chain_edges, vertex_pairs};
 use crate::edges::contours::check_smoothing;
@@ -21,7 +18,6 @@ use crate::edges::{find_feature_edges, View};
 use crate::error::{Error, Result};
 use crate::mesh::curvature::curvature;
 use crate::mesh::dihedral::check_crease_angle;
-use crate::real::Real;
 
 type Out<'py> = PyResult<Bound<'py, PyAny>>;
 
@@ -134,8 +130,7 @@ impl PyEdgeIndex {
         direction: Option<&Bound<'py, PyAny>>,
         kinds: &Bound<'py, PyAny>,
     ) -> Out<'py> {
-        let crease_angle = crease_angle_of(crease_angle)?;
-        let view = view_of(eye, direction)?;
+        let (crease_angle, view) = (crease_angle_of(crease_angle)?, view_of(eye, direction)?);
         let with_kinds = args::flag("kinds", kinds)?;
         let all = detached(py, || self.0.outlines(crease_angle, view))?;
         let kinds = with_kinds.then(|| all.kinds.iter().map(|&k| k as i8).collect::<Vec<_>>());
@@ -155,19 +150,11 @@ impl PyEdgeIndex {
         self.0.index.positions().to_vec().to_python(py)
     }
 
+    /// (vertices, faces, distinct edges)
     #[getter]
-    fn n_vertices(&self) -> usize {
-        self.0.index.n_vertices()
-    }
-
-    #[getter]
-    fn n_faces(&self) -> usize {
-        self.0.index.n_faces()
-    }
-
-    #[getter]
-    fn n_edges(&self) -> usize {
-        self.0.index.n_edges()
+    fn sizes(&self) -> (usize, usize, usize) {
+        let index = &self.0.index;
+        (index.n_vertices(), index.n_faces(), index.n_edges())
     }
 }
 
@@ -183,39 +170,26 @@ pub(super) fn _chains<'py>(py: Python<'py>, edges: &Bound<'py, PyAny>) -> Out<'p
 /// The number of `vertices`, checked as every mesh function checks them.
 #[pyfunction]
 pub(super) fn _vertex_count(vertices: &Bound<'_, PyAny>) -> PyResult<usize> {
-    Ok(positions("vertices", vertices)?.len())
+    Ok(PositionsIn::read("vertices", vertices)?.count())
 }
 
-/// The values of an array that the Python wrapper made C-contiguous (`arg` in errors).
-fn c_contiguous<'a, T: numpy::Element, D: Dimension>(
-    arg: &str,
-    a: &'a PyReadonlyArray<'_, T, D>,
-) -> Result<&'a [T]> {
-    if !a.is_c_contiguous() {
-        return Err(Error::invalid(arg, "must be C-contiguous (the Python wrapper makes it so)"));
-    }
-    a.as_slice().map_err(|_| Error::Internal(format!("{arg} is not C-contiguous")))
-}
-
-fn sobel_typed<'py, T: Real + numpy::Element>(
-    py: Python<'py>,
-    image: PyReadonlyArray2<'py, T>,
-    output: Output,
-    convention: Convention,
-) -> Out<'py> {
-    let (h, w) = image.as_array().dim();
-    let data = c_contiguous("image", &image)?;
-    // NumPy's allocator asks the kernel for huge pages on large arrays; a Vec here would pay
-    // one page fault per 4 KiB of output, which costs as much as the filter itself.
-    // SAFETY: every element is written by `sobel` before the array is returned (on error it is
-    // dropped unread).
-    let result = unsafe { PyArray2::<T>::new(py, [h, w], false) };
-    {
-        let mut rw = result.readwrite();
-        let out = rw.as_slice_mut().map_err(|_| Error::Internal("sobel: new array not contiguous".into()))?;
-        detached(py, || sobel(data, h, w, out, output, convention))?;
-    }
-    Ok(result.into_any())
+/// `$body` on the values `$x` (f32 or f64, as NumPy holds them) and the dimensions `$dim` of
+/// the argument `$arg`, a C-contiguous float `$array` (the Python wrapper makes it so) with
+/// `$axes` axes; a TypeError for any other.
+macro_rules! on_floats {
+    ($obj:expr, $arg:expr, $array:ident, $axes:literal, |$x:ident, $dim:pat_param| $body:expr) => {
+        by_dtype!($obj, $array<f32, f64>, |a| {
+            let $dim = a.as_array().dim();
+            if !a.is_c_contiguous() {
+                return Err(Error::invalid($arg, "must be C-contiguous (the Python wrapper makes it so)").into());
+            }
+            let $x = a.as_slice().map_err(|e| Error::Internal(e.to_string()))?;
+            $body
+        })
+        .unwrap_or_else(|| {
+            Err(Error::wrong_type($arg, concat!("expected a ", $axes, " float32 or float64 array")).into())
+        })
+    };
 }
 
 /// Sobel of a C-contiguous 2-D float32 or float64 image; the Python wrapper does dtype rules.
@@ -229,25 +203,18 @@ pub(super) fn _sobel<'py>(
     let output = Output::parse(output)?;
     let convention = args::text("convention", convention).and_then(|c| Convention::parse(&c))?;
     let image = &native_order(image)?;
-    by_dtype!(image, PyReadonlyArray2<f32, f64>, |x| sobel_typed(py, x, output, convention))
-        .unwrap_or_else(|| Err(Error::wrong_type("image", "expected a 2-D float32 or float64 array").into()))
-}
-
-fn edges_typed<'py, T: Real + numpy::Element>(
-    py: Python<'py>,
-    name: &str,
-    buffer: PyReadonlyArray3<'py, T>,
-    threshold: f64,
-) -> Out<'py> {
-    let (h, w, c) = buffer.as_array().dim();
-    let data = c_contiguous(name, &buffer)?;
-    let arg = format!("{name}_threshold");
-    let (gradient, mask) = detached(py, || {
-        let g = paper_gradient(data, h, w, c)?;
-        let m = threshold_mask(&arg, &g, threshold)?;
-        Ok((g, m))
-    })?;
-    (grid_to_numpy(py, (h, w), gradient), grid_to_numpy(py, (h, w), mask)).to_python(py)
+    on_floats!(image, "image", PyReadonlyArray2, "2-D", |x, (h, w)| {
+        // NumPy's allocator asks the kernel for huge pages on large arrays; a Vec here would pay
+        // one page fault per 4 KiB of output, which costs as much as the filter itself.
+        // SAFETY: every element is written by `sobel` before the array is returned (on error it
+        // is dropped unread).
+        let result = unsafe { PyArray2::new(py, [h, w], false) };
+        let mut rw = result.readwrite();
+        let out = rw.as_slice_mut().map_err(|_| Error::Internal("sobel: new array not contiguous".into()))?;
+        detached(py, || sobel(x, h, w, out, output, convention))?;
+        drop(rw);
+        Ok(result.into_any())
+    })
 }
 
 /// The paper's gradient max over channels of max(|Gx|, |Gy|) of a C-contiguous (H, W, C) float
@@ -260,7 +227,11 @@ pub(super) fn _paper_edges<'py>(
     buffer: &Bound<'py, PyAny>,
     threshold: &Bound<'py, PyAny>,
 ) -> Out<'py> {
-    let threshold = args::number(&format!("{name}_threshold"), threshold)?;
-    by_dtype!(buffer, PyReadonlyArray3<f32, f64>, |x| edges_typed(py, name, x, threshold))
-        .unwrap_or_else(|| Err(Error::wrong_type(name, "expected a 3-D float32 or float64 array").into()))
+    let arg = format!("{name}_threshold");
+    let threshold = args::number(&arg, threshold)?;
+    on_floats!(buffer, name, PyReadonlyArray3, "3-D", |x, (h, w, c)| {
+        let gradient = detached(py, || paper_gradient(x, h, w, c))?;
+        let mask = detached(py, || threshold_mask(&arg, &gradient, threshold))?;
+        (shaped_to_numpy(py, vec![h, w], gradient)?, shaped_to_numpy(py, vec![h, w], mask)?).to_python(py)
+    })
 }

@@ -1,73 +1,113 @@
-//! Mesh input read straight from NumPy's buffers when they are C-contiguous (the usual case),
-//! so a million-face mesh is not copied and checked serially before the parallel work starts.
-//! Anything else, and every error message, goes through the general readers in `convert`.
-//! Arrays in the other byte order are converted once, on entry.
+//! Mesh input read straight from NumPy's buffers, so that a million-face mesh is not copied
+//! and checked serially before the parallel work starts. An array in another memory order or
+//! byte order is converted once, on entry; every check after its dtype and shape is the core's.
 
-use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
 
 use super::args::type_name;
-use super::convert::{faces, native_order, positions};
+use super::convert::{checked_array, FLOATS};
 use super::runtime::detached_cancellable;
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::mesh::positions::on_positions;
-use crate::mesh::{faces_from_flat, rows_of, Positions, PositionsRef};
-use crate::real::Real;
-use crate::smooth::range::largest_if_finite;
+use crate::mesh::{rows_of, Faces, FacesRef, PositionsRef};
+use crate::smooth::range::checked_scale;
 
-/// Vertices and faces as read from Python: borrowed when possible, owned otherwise.
-pub struct MeshInput<'py> {
-    vertices: VerticesIn<'py>,
-    faces: FacesIn<'py>,
-    n_vertices: usize,
-    /// The largest absolute coordinate, when the fast path computed it.
-    largest: Option<f64>,
-}
-
-/// NumPy's own buffer when it is C-contiguous and finite, else a checked copy.
-enum VerticesIn<'py> {
+/// A C-contiguous (N, 3) array borrowed from NumPy, of an element type a mesh takes.
+enum Rows3<'py> {
     F32(PyReadonlyArray2<'py, f32>),
     F64(PyReadonlyArray2<'py, f64>),
-    Copied(Positions),
-}
-
-/// NumPy's own int64 or int32 buffer when it is C-contiguous (its indices are checked as they
-/// are converted, in `run`), else a checked copy.
-enum FacesIn<'py> {
-    I64(PyReadonlyArray2<'py, i64>),
     I32(PyReadonlyArray2<'py, i32>),
-    Checked(Vec<[u32; 3]>),
+    I64(PyReadonlyArray2<'py, i64>),
+    U32(PyReadonlyArray2<'py, u32>),
+    U64(PyReadonlyArray2<'py, u64>),
 }
 
-fn contiguous_rows3<'py, T: numpy::Element>(obj: &Bound<'py, PyAny>) -> Option<PyReadonlyArray2<'py, T>> {
-    let x = obj.extract::<PyReadonlyArray2<'py, T>>().ok()?;
-    let shape = x.shape();
-    (shape[1] == 3 && shape[0] > 0 && x.is_c_contiguous()).then_some(x)
+fn flat<'a, T: numpy::Element>(x: &'a PyReadonlyArray2<'_, T>) -> &'a [T] {
+    x.as_slice().expect("made C-contiguous")
 }
 
-/// The largest absolute value in `x`, or None if any is not finite.
-fn largest_of<T: Real + numpy::Element>(x: &PyReadonlyArray2<'_, T>) -> Option<f64> {
-    largest_if_finite(x.as_slice().ok()?)
+impl<'py> Rows3<'py> {
+    /// The argument `arg`, checked for one of `dtypes` and the shape `what` ("(N, 3)"), and made
+    /// C-contiguous in native byte order.
+    fn read(arg: &str, obj: &Bound<'py, PyAny>, dtypes: &[&str], what: &str) -> Result<Self> {
+        let (obj, _) = checked_array(arg, obj, dtypes, (&[None, Some(3)], what))?;
+        let numpy = obj.py().import("numpy");
+        let obj = numpy.and_then(|np| np.call_method1("ascontiguousarray", (obj,)));
+        let obj = obj.map_err(|e| Error::Internal(format!("{arg}: {e}")))?;
+        let x = None
+            .or_else(|| obj.extract().ok().map(Rows3::F32))
+            .or_else(|| obj.extract().ok().map(Rows3::F64))
+            .or_else(|| obj.extract().ok().map(Rows3::I32))
+            .or_else(|| obj.extract().ok().map(Rows3::I64))
+            .or_else(|| obj.extract().ok().map(Rows3::U32))
+            .or_else(|| obj.extract().ok().map(Rows3::U64));
+        x.ok_or_else(|| Error::Internal(format!("{arg}: an array NumPy did not hand over")))
+    }
+
+    fn positions(&self) -> Option<PositionsRef<'_>> {
+        match self {
+            Rows3::F32(x) => Some(PositionsRef::F32(rows_of(flat(x)))),
+            Rows3::F64(x) => Some(PositionsRef::F64(rows_of(flat(x)))),
+            _ => None,
+        }
+    }
+
+    fn faces(&self) -> Option<FacesRef<'_>> {
+        match self {
+            Rows3::I32(x) => Some(FacesRef::I32(flat(x))),
+            Rows3::I64(x) => Some(FacesRef::I64(flat(x))),
+            Rows3::U32(x) => Some(FacesRef::U32(flat(x))),
+            Rows3::U64(x) => Some(FacesRef::U64(flat(x))),
+            _ => None,
+        }
+    }
 }
 
-fn slice<'a, T: numpy::Element>(x: &'a PyReadonlyArray2<'_, T>) -> &'a [T] {
-    x.as_slice().expect("checked contiguous")
+/// (N, 3) float32 or float64 positions borrowed from NumPy, checked finite and not empty.
+pub struct PositionsIn<'py> {
+    rows: Rows3<'py>,
+    /// The largest absolute coordinate (smoothing scales by it).
+    pub largest: f64,
+}
+
+impl<'py> PositionsIn<'py> {
+    pub fn read(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Self> {
+        let rows = Rows3::read(arg, obj, FLOATS, "(N, 3)")?;
+        let largest = on_positions!(rows.positions().expect("a float dtype"), v => checked_scale(arg, v))?;
+        Ok(PositionsIn { rows, largest })
+    }
+
+    pub fn get(&self) -> PositionsRef<'_> {
+        self.rows.positions().expect("a float dtype")
+    }
+
+    pub fn count(&self) -> usize {
+        on_positions!(self.get(), v => v.len())
+    }
+}
+
+/// Vertices and faces as read from Python, borrowed.
+pub struct MeshInput<'py> {
+    pub vertices: PositionsIn<'py>,
+    faces: Rows3<'py>,
 }
 
 /// `$body` run on the mesh argument `$mesh` (see `MeshInput::of`, `MeshInput::run`), with `$v`
 /// its positions in their own precision, `$f` its faces and `$cancel` Ctrl-C's flag.
 macro_rules! on_mesh {
     ($py:expr, $mesh:expr, |$v:ident, $f:ident, $cancel:pat_param| $body:expr) => {
-        $crate::py::mesh_input::MeshInput::of($mesh)?
-            .run($py, |p, $f, $cancel| $crate::mesh::positions::on_positions!(p, $v => $body))
+        $crate::py::mesh_input::MeshInput::of($mesh)?.run($py, |p, faces, $cancel| {
+            let $f = &faces;
+            $crate::mesh::positions::on_positions!(p, $v => $body)
+        })
     };
 }
 pub(crate) use on_mesh;
 
 impl<'py> MeshInput<'py> {
-    /// A mesh argument: the pair (vertices, faces) the Python wrappers pass, read as `read` reads
-    /// them.
+    /// A mesh argument: the pair (vertices, faces) the Python wrappers pass.
     pub fn of(mesh: &Bound<'py, PyAny>) -> Result<Self> {
         let (vertices, faces) = mesh.extract::<(Bound<'py, PyAny>, Bound<'py, PyAny>)>().map_err(|_| {
             Error::wrong_type("mesh", format!("expected (vertices, faces), got {}", type_name(mesh)))
@@ -75,72 +115,24 @@ impl<'py> MeshInput<'py> {
         Self::read(&vertices, &faces)
     }
 
-    pub fn read(vertices: &Bound<'py, PyAny>, faces_obj: &Bound<'py, PyAny>) -> Result<Self> {
-        let (vertices, faces_obj) = (&native_order(vertices)?, &native_order(faces_obj)?);
-        // One pass checks finiteness and finds the scale (which smoothing needs).
-        let borrowed = match contiguous_rows3::<f32>(vertices) {
-            Some(x) => largest_of(&x).map(|m| (VerticesIn::F32(x), m)),
-            None => contiguous_rows3::<f64>(vertices)
-                .and_then(|x| largest_of(&x).map(|m| (VerticesIn::F64(x), m))),
-        };
-        let (vertices, largest) = match borrowed {
-            Some((v, m)) => (v, Some(m)),
-            None => (VerticesIn::Copied(positions("vertices", vertices)?), None),
-        };
-        let mut me = MeshInput { vertices, faces: FacesIn::Checked(Vec::new()), n_vertices: 0, largest };
-        me.n_vertices = on_positions!(me.positions(), v => v.len());
-        me.faces = match contiguous_rows3::<i64>(faces_obj) {
-            Some(x) => FacesIn::I64(x),
-            None => match contiguous_rows3::<i32>(faces_obj) {
-                Some(x) => FacesIn::I32(x),
-                None => FacesIn::Checked(faces("faces", faces_obj, me.n_vertices)?),
-            },
-        };
-        Ok(me)
-    }
-
-    pub fn n_vertices(&self) -> usize {
-        self.n_vertices
-    }
-
-    /// The largest absolute coordinate, if reading found it.
-    pub fn largest_coordinate(&self) -> Option<f64> {
-        self.largest
-    }
-
-    pub fn positions(&self) -> PositionsRef<'_> {
-        match &self.vertices {
-            VerticesIn::F32(x) => PositionsRef::F32(rows_of(slice(x))),
-            VerticesIn::F64(x) => PositionsRef::F64(rows_of(slice(x))),
-            VerticesIn::Copied(p) => p.slices(),
-        }
+    /// (N, 3) float32 or float64 vertices and (M, 3) int32, int64, uint32 or uint64 faces, in
+    /// either byte order and any memory order; the faces' indices are checked in `run`.
+    pub fn read(vertices: &Bound<'py, PyAny>, faces: &Bound<'py, PyAny>) -> Result<Self> {
+        let vertices = PositionsIn::read("vertices", vertices)?;
+        let faces = Rows3::read("faces", faces, &["int32", "int64", "uint32", "uint64"], "(M, 3)")?;
+        Ok(MeshInput { vertices, faces })
     }
 
     /// Runs `work` on the mesh with the GIL released, stopping on Ctrl-C when `work` checks its
-    /// `Cancel` (see `runtime::detached_cancellable`). NumPy's faces are converted to u32
-    /// inside, in parallel, and checked as the general reader checks them.
+    /// `Cancel` (see `runtime::detached_cancellable`). The faces are converted to u32 inside, in
+    /// parallel, each index checked against the vertices.
     pub fn run<R: Send>(
         &self,
         py: Python<'_>,
-        work: impl Fn(PositionsRef<'_>, &[[u32; 3]], &Cancel) -> Result<R> + Send + Sync,
+        work: impl FnOnce(PositionsRef<'_>, Faces, &Cancel) -> Result<R> + Send,
     ) -> PyResult<R> {
-        let (positions, n) = (self.positions(), self.n_vertices);
-        let faces = match &self.faces {
-            FacesIn::Checked(f) => FacesRef::Checked(f),
-            FacesIn::I64(x) => FacesRef::I64(slice(x)),
-            FacesIn::I32(x) => FacesRef::I32(slice(x)),
-        };
-        detached_cancellable(py, |cancel| match faces {
-            FacesRef::Checked(f) => work(positions, f, cancel),
-            FacesRef::I64(flat) => work(positions, &faces_from_flat("faces", flat, n)?, cancel),
-            FacesRef::I32(flat) => work(positions, &faces_from_flat("faces", flat, n)?, cancel),
-        })
+        let (positions, n) = (self.vertices.get(), self.vertices.count());
+        let faces = self.faces.faces().expect("an integer dtype");
+        detached_cancellable(py, |cancel| work(positions, faces.checked("faces", n)?, cancel))
     }
-}
-
-#[derive(Clone, Copy)]
-enum FacesRef<'a> {
-    I64(&'a [i64]),
-    I32(&'a [i32]),
-    Checked(&'a [[u32; 3]]),
 }

@@ -1,33 +1,30 @@
 //! Python bindings for `crate::render`: the device-side `Renderer` (meshes kept on the device,
-//! scenes rendered into NumPy arrays allocated here and filled without the GIL), `gpu_info` and
-//! PNG encoding. Every argument is converted with a check that names it.
+//! scenes rendered without the GIL into the core's images, handed to NumPy without a copy),
+//! `gpu_info` and PNG encoding. Every argument is converted with a check that names it.
 
-use numpy::ndarray::IxDyn;
-use numpy::{PyArray2, PyArrayDyn, PyArrayMethods, PyUntypedArray};
+use numpy::PyUntypedArray;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 use pyo3::IntoPyObjectExt;
 
 use super::albedo::albedo;
-use super::args::{number, text, triple, type_name};
-use super::convert::{array_values, faces, grid_to_numpy, positions, python, ToPython};
-use super::mesh_input::on_mesh;
+use super::args::{self, number, text, triple, type_name};
+use super::convert::{array_values, python, shaped_to_numpy, ToPython};
+use super::mesh_input::{on_mesh, MeshInput, PositionsIn};
 use super::runtime::detached_cancellable;
 use super::settings::values::{each, transform};
 use super::settings::{PyCamera, PyMaterial, PyRenderOptions};
+use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::mesh::normals::given_unit_normals;
 use crate::mesh::positions::on_positions;
 use crate::parallel::catching_panics;
-use crate::render::effects::outlines::settings::kind_names;
 use crate::render::effects::shadows::raycast::mesh_shadow_truth;
 use crate::render::gpu_mesh::{MeshNormals, NormalMode};
 use crate::render::image_out::encode_png;
 use crate::render::scene::options::MeshSpec;
-use crate::render::scene::outputs::{Output, Pixel};
 use crate::render::scene::up::Axis;
-use crate::render::scene::FrameSpec;
-use crate::render::{BackendChoice, FrameReport, ImageMut, OutputBuffers, Renderer};
+use crate::render::{BackendChoice, FrameReport, Image, Renderer, ViewImages};
 
 /// Runs GPU work with the GIL released, catching panics. Not in the compute pool: a render
 /// mostly waits on the device, and concurrent renders should not queue behind each other there.
@@ -57,9 +54,9 @@ fn mesh_normals(obj: &Bound<'_, PyAny>, n_vertices: usize) -> Result<MeshNormals
         }
     }
     if obj.cast::<PyUntypedArray>().is_ok() {
-        let given = positions("normals", obj)?;
+        let given = PositionsIn::read("normals", obj)?;
         return Ok(MeshNormals::Given(
-            on_positions!(given.slices(), n => given_unit_normals("normals", n, n_vertices))?,
+            on_positions!(given.get(), n => given_unit_normals("normals", n, n_vertices))?,
         ));
     }
     Err(Error::wrong_type(
@@ -102,10 +99,8 @@ pub(super) fn _normal_mode<'py>(
 /// _up_axis(up) -> str | None: an up axis ("x", "y" or "z") checked; None stays None.
 #[pyfunction]
 pub(super) fn _up_axis(up: &Bound<'_, PyAny>) -> PyResult<Option<&'static str>> {
-    if up.is_none() {
-        return Ok(None);
-    }
-    Ok(Some(Axis::parse("up", &text("up", up)?)?.name()))
+    let up = args::optional("up", Some(up), args::text)?;
+    Ok(up.map(|u| Axis::parse("up", &u)).transpose()?.map(Axis::name))
 }
 
 /// _transform(transform) -> (4, 4) float64: a mesh's transform checked (see `RenderOptions`).
@@ -116,114 +111,44 @@ pub(super) fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) ->
     t.to_vec().to_python(py)
 }
 
-/// The meshes of a render: [(mesh id, Material or None, 4x4 transform or None, up axis or
-/// None)].
+/// The meshes of a render as the Python layer makes them: [(mesh id, Material or None, 4x4
+/// transform or None, up axis or None)]; the core checks the transforms in the scene.
 fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
-    let list = items.try_iter().map_err(|_| Error::wrong_type("meshes", "expected a list of meshes"))?;
-    list.enumerate()
-        .map(|(i, item)| {
-            let arg = format!("meshes[{i}]");
-            let item = item.map_err(|e| Error::invalid(&arg, e.to_string()))?;
-            let (id, mat, tf, up): (u64, Bound<'_, PyAny>, Bound<'_, PyAny>, Option<String>) = item
-                .extract()
-                .map_err(|_| Error::wrong_type(&arg, "expected (mesh id, material, transform, up axis)"))?;
-            let material = match mat.cast::<PyMaterial>() {
-                Ok(m) => Some(m.get().inner.clone()),
-                Err(_) if mat.is_none() => None,
-                Err(_) => {
-                    let why = format!("expected a toonmesh.Material, got {}", type_name(&mat));
-                    return Err(Error::wrong_type(format!("{arg}.material"), why));
-                }
-            };
-            let transform =
-                (!tf.is_none()).then(|| transform(&format!("{arg}.transform"), &tf)).transpose()?;
-            let up = up.map(|u| Axis::parse(&format!("{arg}.up"), &u)).transpose()?;
-            Ok((id, material, transform, up))
-        })
-        .collect()
+    type Item<'py> = (u64, Bound<'py, PyAny>, Option<[[f64; 4]; 4]>, Option<String>);
+    let expected = "expected (mesh id, Material or None, 4x4 transform or None, up axis or None)";
+    let read = |(i, item): (usize, &Bound<'_, PyAny>)| {
+        let (id, material, transform, up): Item<'_> =
+            item.extract().map_err(|_| Error::wrong_type(format!("meshes[{i}]"), expected))?;
+        let material = args::optional(&format!("meshes[{i}].material"), Some(&material), |arg, m| {
+            let why = || format!("expected a toonmesh.Material, got {}", type_name(m));
+            m.cast::<PyMaterial>().map(|m| m.get().inner.clone()).map_err(|_| Error::wrong_type(arg, why()))
+        })?;
+        let up = up.map(|u| Axis::parse(&format!("meshes[{i}].up"), &u)).transpose()?;
+        Ok((id, material, transform, up))
+    };
+    args::items("meshes", items, "a list of meshes")?.iter().enumerate().map(read).collect()
 }
 
-/// An image output's array: allocated here, filled by the render without the GIL.
-enum Image<'py> {
-    Bytes(Bound<'py, PyArrayDyn<u8>>),
-    Floats(Bound<'py, PyArrayDyn<f32>>),
-}
-
-/// The image outputs of `k` views (`k` None: one, without a leading axis), allocated here:
-/// (H, W, 4) uint8 colour, (H, W, 3) normals, (H, W) float32 for the others.
-struct Images<'py>(Vec<(Output, Image<'py>)>);
-
-impl<'py> Images<'py> {
-    fn allocate(py: Python<'py>, frame: &FrameSpec, k: Option<usize>) -> Self {
-        let (h, w) = (frame.height as usize, frame.width as usize);
-        let shape = |c: Option<usize>| IxDyn(&k.into_iter().chain([h, w]).chain(c).collect::<Vec<_>>());
-        // SAFETY: every element is written by the render before Python sees it.
-        let image = |pixel| match pixel {
-            Pixel::Bytes(c) => Image::Bytes(unsafe { PyArrayDyn::new(py, shape(Some(c)), false) }),
-            Pixel::Floats(c) => {
-                Image::Floats(unsafe { PyArrayDyn::new(py, shape((c > 1).then_some(c)), false) })
-            }
+/// The image outputs as the dict `toonmesh.RenderResult` reads: each output's array, None where
+/// it was not asked for.
+fn image_dict(py: Python<'_>, images: ViewImages) -> PyResult<Bound<'_, PyDict>> {
+    let d = PyDict::new(py);
+    for (o, shape, image) in images.shaped() {
+        let array = match image {
+            Some(Image::Bytes(v)) => Some(shaped_to_numpy(py, shape, v)?),
+            Some(Image::Floats(v)) => Some(shaped_to_numpy(py, shape, v)?),
+            None => None,
         };
-        Images(frame.outputs.iter().filter_map(|o| Some((o, image(o.pixel()?)))).collect())
+        d.set_item(o.name(), array)?;
     }
-
-    /// One set of output buffers for each of `k` views.
-    fn buffers(&self, k: usize) -> Vec<OutputBuffers<'_>> {
-        let mut sets: Vec<OutputBuffers<'_>> = (0..k).map(|_| OutputBuffers::default()).collect();
-        for (o, image) in &self.0 {
-            // SAFETY: the arrays were just made here, are C-contiguous and shared with no one.
-            let views: Vec<ImageMut<'_>> = unsafe {
-                match image {
-                    Image::Bytes(a) => {
-                        split(a.as_slice_mut().expect("contiguous"), k).map(ImageMut::Bytes).collect()
-                    }
-                    Image::Floats(a) => {
-                        split(a.as_slice_mut().expect("contiguous"), k).map(ImageMut::Floats).collect()
-                    }
-                }
-            };
-            for (set, v) in sets.iter_mut().zip(views) {
-                set.set(*o, v);
-            }
-        }
-        sets
-    }
-
-    fn into_dict(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let d = PyDict::new(py);
-        for o in Output::ALL.into_iter().filter(|o| o.pixel().is_some()) {
-            let image = self.0.iter().find(|a| a.0 == o).map(|(_, image)| match image {
-                Image::Bytes(a) => a.as_any(),
-                Image::Floats(a) => a.as_any(),
-            });
-            d.set_item(o.name(), image)?;
-        }
-        Ok(d)
-    }
-}
-
-fn split<T>(s: &mut [T], k: usize) -> std::slice::ChunksMut<'_, T> {
-    let n = (s.len() / k.max(1)).max(1);
-    s.chunks_mut(n)
+    Ok(d)
 }
 
 /// A render's report as the dict `toonmesh.RenderResult` reads (with its images): its serde
-/// form, the frame's size and its lines (points and widths as NumPy arrays, kinds by name).
-fn report_dict<'py>(py: Python<'py>, frame: &FrameSpec, report: FrameReport) -> PyResult<Bound<'py, PyDict>> {
+/// form and its lines as flat arrays (`FrameReport::flat_lines`).
+fn report_dict<'py>(py: Python<'py>, report: FrameReport) -> PyResult<Bound<'py, PyDict>> {
     let d = python(py, &report)?.cast_into::<PyDict>()?;
-    d.set_item("width", frame.width)?;
-    d.set_item("height", frame.height)?;
-    let (mut lines, mut kinds, mut widths) = (None, None, None);
-    if let Some(all) = report.lines {
-        let names = kind_names();
-        kinds = Some(all.iter().map(|l| names[l.kind]).collect::<Vec<_>>());
-        let each = |l: &[f64]| l.iter().map(|&w| w as f32).collect::<Vec<f32>>().to_python(py);
-        widths = Some(all.iter().map(|l| each(&l.widths)).collect::<PyResult<Vec<_>>>()?);
-        lines = Some(all.into_iter().map(|l| l.points.to_python(py)).collect::<PyResult<Vec<_>>>()?);
-    }
-    d.set_item("lines", lines)?;
-    d.set_item("line_kinds", kinds)?;
-    d.set_item("line_widths", widths)?;
+    d.set_item("lines", report.flat_lines().to_python(py)?)?;
     Ok(d)
 }
 
@@ -264,14 +189,13 @@ impl PyRenderer {
         normals: &Bound<'py, PyAny>,
         colors: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<(u64, Bound<'py, PyAny>, Vec<String>)> {
-        let p = positions("vertices", vertices)?;
-        let normals_in = mesh_normals(normals, p.len())?;
-        let f = self::faces("faces", faces, p.len())?;
+        let mesh = MeshInput::read(vertices, faces)?;
+        let normals_in = mesh_normals(normals, mesh.vertices.count())?;
         let a = albedo(colors)?;
         let spelling = normal_spelling(py, &normals_in, normals)?;
         let inner = &self.inner;
         let (id, notes) =
-            without_gil(py, || on_positions!(p.slices(), v => inner.add_mesh_with(v, f, normals_in, a)))?;
+            mesh.run(py, |p, f, _| on_positions!(p, v => inner.add_mesh_with(v, f, normals_in, a)))?;
         Ok((id, spelling, notes))
     }
 
@@ -298,18 +222,23 @@ impl PyRenderer {
             .map(|c| each(&c, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", read));
         let cams = cams.transpose()?;
         let scene = self.inner.check(o.scene(&mesh_specs(items)?)?, o.frame)?;
-        let images = Images::allocate(py, &o.frame, cams.as_ref().map(Vec::len));
-        let mut buffers = images.buffers(cams.as_ref().map_or(1, Vec::len));
-        let inner = &self.inner;
-        let reports = match cams {
-            None => vec![without_gil(py, || inner.render_checked(scene, buffers.pop().expect("one view")))?],
-            // a long stream of views stops on Ctrl-C between frames
-            Some(cams) => {
-                detached_cancellable(py, |cancel| inner.render_views(&scene, &cams, buffers, cancel))?
-            }
+        let (frame, views, inner) = (o.frame, cams.as_ref().map(Vec::len), &self.inner);
+        // the images are made and filled without the GIL, and handed to NumPy as they are
+        let render = |cancel: &Cancel| {
+            let mut images = ViewImages::zeros(&frame, views);
+            let reports = match &cams {
+                None => vec![inner.render_checked(scene, images.buffers().pop().expect("one view"))?],
+                Some(cams) => inner.render_views(&scene, cams, images.buffers(), cancel)?,
+            };
+            Ok((images, reports))
         };
-        let reports = reports.into_iter().map(|r| report_dict(py, &o.frame, r)).collect::<PyResult<_>>()?;
-        Ok((images.into_dict(py)?, reports))
+        let (images, reports) = match views {
+            None => without_gil(py, || render(Cancel::never()))?,
+            // a long stream of views stops on Ctrl-C between frames
+            Some(_) => detached_cancellable(py, render)?,
+        };
+        let reports = reports.into_iter().map(|r| report_dict(py, r)).collect::<PyResult<_>>()?;
+        Ok((image_dict(py, images)?, reports))
     }
 }
 
@@ -350,9 +279,9 @@ pub(super) fn _shadow_truth<'py>(
     view_proj: &Bound<'py, PyAny>,
     shape: (usize, usize),
     toward_light: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, PyArray2<f32>>> {
+) -> PyResult<Bound<'py, PyAny>> {
     let ((h, w), toward) = (shape, triple("toward_light", toward_light)?);
     let rows = array_values::<f64>("view_proj", view_proj, &["float64"], (&[Some(4), Some(4)], "(4, 4)"))?.0;
     let vis = on_mesh!(py, mesh, |v, f, _| Ok(mesh_shadow_truth(v, f, &rows, (w, h), toward)))?;
-    Ok(grid_to_numpy(py, (h, w), vis))
+    shaped_to_numpy(py, vec![h, w], vis)
 }

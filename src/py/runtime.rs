@@ -1,14 +1,13 @@
 //! Running core work from Python: outside the GIL, inside the thread pool, with panics caught
 //! so that none reaches Python, and (for long work) stopped by Ctrl-C.
 
-use std::sync::mpsc;
 use std::time::Duration;
 
 use pyo3::prelude::*;
 
 use super::args;
 use crate::cancel::Cancel;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::parallel::{self, catching_panics};
 
 /// How often the calling thread looks for a pending signal while work runs: often enough that
@@ -26,9 +25,9 @@ pub fn detached<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send
 /// Python runs signal handlers only on its main thread, so the work is handed to the pool and
 /// the calling thread, if it is the main thread, waits for it in short slices; after each
 /// slice it re-attaches to the interpreter and runs `check_signals`. When that raises (a
-/// KeyboardInterrupt, or whatever the handler raised), `cancel` is set, the work stops at its
-/// next check, and that exception is what the call raises. On any other thread signals cannot
-/// be handled, and the work simply runs.
+/// KeyboardInterrupt, or whatever the handler raised), the work's `Cancel` is raised, the work
+/// stops at its next check, and that exception is what the call raises. On any other thread
+/// signals cannot be handled, and the work simply runs.
 pub fn detached_cancellable<T: Send>(
     py: Python<'_>,
     work: impl FnOnce(&Cancel) -> Result<T> + Send,
@@ -36,30 +35,11 @@ pub fn detached_cancellable<T: Send>(
     if !on_main_thread(py) {
         return detached(py, || work(Cancel::never()));
     }
-    let cancel = Cancel::new();
     let mut raised: Option<PyErr> = None;
     let outcome = py.detach(|| {
-        let (done, finished) = mpsc::channel();
-        let (cancel, raised) = (&cancel, &mut raised);
-        parallel::pool().in_place_scope(|scope| {
-            scope.spawn(move |_| {
-                let _ = done.send(catching_panics(|| work(cancel)));
-            });
-            loop {
-                match finished.recv_timeout(SIGNAL_POLL) {
-                    Ok(result) => return result,
-                    Err(mpsc::RecvTimeoutError::Timeout) if raised.is_none() => {
-                        if let Err(e) = Python::attach(|py| py.check_signals()) {
-                            *raised = Some(e);
-                            cancel.request();
-                        }
-                    }
-                    Err(mpsc::RecvTimeoutError::Timeout) => {}
-                    Err(mpsc::RecvTimeoutError::Disconnected) => {
-                        return Err(Error::Internal("the worker stopped without a result".into()))
-                    }
-                }
-            }
+        parallel::watched(work, SIGNAL_POLL, || {
+            raised = Python::attach(|py| py.check_signals()).err();
+            raised.is_some()
         })
     });
     // A signal that was taken must be raised, whatever the work returned meanwhile.
@@ -71,14 +51,10 @@ pub fn detached_cancellable<T: Send>(
 
 /// Whether this is the thread Python runs signal handlers on.
 fn on_main_thread(py: Python<'_>) -> bool {
-    let main = py
-        .import("threading")
-        .and_then(|t| t.call_method0("main_thread"))
-        .and_then(|t| t.getattr("ident"))
-        .and_then(|i| i.extract::<u64>());
-    // SAFETY: PyThread_get_thread_ident only reads the calling thread's id.
-    let me = unsafe { pyo3::ffi::PyThread_get_thread_ident() } as u64;
-    main.is_ok_and(|m| m == me)
+    let threading = py.import("threading");
+    let main =
+        threading.and_then(|t| Ok(t.call_method0("main_thread")?.is(&t.call_method0("current_thread")?)));
+    main.unwrap_or(false)
 }
 
 /// set_num_threads(n: int) -> None

@@ -3,12 +3,11 @@
 
 use pyo3::prelude::*;
 use pyo3::types::PyList;
-use rayon::prelude::*;
 
-use super::args;
+use super::args::{self, items};
 use super::convert::{array_values, rows, ToPython, FLOATS};
 use super::runtime::detached;
-use crate::error::{Error, Result};
+use crate::error::{as_many, Error, Result};
 use crate::render::effects::outlines::pen::svg::{self, Group, Ink, Stroke};
 use crate::render::effects::outlines::pen::{self, plotter_order as order};
 
@@ -35,20 +34,6 @@ fn stroke(
     Ok((points, widths))
 }
 
-/// Refuses `arg` unless it has `n` entries (`expected` says what they match).
-fn as_many(arg: &str, got: usize, (expected, n): (&str, usize)) -> Result<()> {
-    let why = || format!("expected {expected} ({n}), got {got}");
-    (got == n).then_some(()).ok_or_else(|| Error::invalid(arg, why()))
-}
-
-fn items<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> Result<Vec<Bound<'py, PyAny>>> {
-    args::refuse_text(arg, obj, "a list")?;
-    obj.try_iter()
-        .map_err(|_| Error::wrong_type(arg, format!("expected a list, got {}", args::type_name(obj))))?
-        .map(|item| item.map_err(|e| Error::invalid(arg, e.to_string())))
-        .collect()
-}
-
 /// Each of `lines` as the SVG draws it (`pen::drawn`): the points drawn and which of the line's
 /// points they are. `widths[i]` None simplifies line i by its points alone.
 #[pyfunction]
@@ -59,7 +44,7 @@ pub(super) fn _pen_strokes<'py>(
     smooth: &Bound<'py, PyAny>,
     simplify: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyList>> {
-    let (line_items, width_items) = (items("lines", lines)?, items("widths", widths)?);
+    let (line_items, width_items) = (items("lines", lines, "a list")?, items("widths", widths, "a list")?);
     as_many("widths", width_items.len(), ("one entry per line", line_items.len()))?;
     let strokes = line_items
         .iter()
@@ -68,12 +53,7 @@ pub(super) fn _pen_strokes<'py>(
         .map(|(i, (l, w))| stroke(("lines", "widths", i), l, Some(w).filter(|w| !w.is_none())))
         .collect::<Result<Vec<_>>>()?;
     let (smooth, simplify) = (args::number("smooth", smooth)?, args::number("simplify", simplify)?);
-    let drawn = detached(py, || {
-        strokes
-            .par_iter()
-            .map(|(p, w)| pen::drawn(p, w.as_deref().unwrap_or(&[]), smooth, simplify, w.is_some()))
-            .collect::<Result<Vec<_>>>()
-    })?;
+    let drawn = detached(py, || pen::drawn_all(&strokes, smooth, simplify))?;
     let out = drawn.into_iter().map(|(p, kept)| (p, kept.into_iter().map(|i| i as i64).collect::<Vec<_>>()));
     PyList::new(py, out.map(|d| d.to_python(py)).collect::<PyResult<Vec<_>>>()?)
 }
@@ -97,7 +77,7 @@ pub(super) fn _plotter_order<'py>(
 /// One group of `svg_document`: (id, colour, width in pixels or None for filled outlines,
 /// (dash, gap) or None, lines, widths per line or None).
 fn group(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Group> {
-    let fields = items(arg, obj)?;
+    let fields = items(arg, obj, "a list")?;
     let [id, color, width, dashes, lines, line_widths] = fields.as_slice() else {
         return Err(Error::invalid(arg, format!("expected 6 fields, got {}", fields.len())));
     };
@@ -112,10 +92,15 @@ fn group(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Group> {
             .map_err(|_| Error::invalid(field("dashes"), "expected (dash, gap)"))?;
         Ink::Lines { width, dashes }
     };
-    let lines = items(&field("lines"), lines)?;
-    let line_widths = if line_widths.is_none() { None } else { Some(items(&field("widths"), line_widths)?) };
-    if matches!(ink, Ink::Filled) && line_widths.as_ref().is_none_or(|w| w.len() != lines.len()) {
-        return Err(Error::invalid(field("widths"), "filled outlines need one widths array per line"));
+    let lines = items(&field("lines"), lines, "a list")?;
+    let line_widths =
+        if line_widths.is_none() { None } else { Some(items(&field("widths"), line_widths, "a list")?) };
+    match &line_widths {
+        None if matches!(ink, Ink::Filled) => {
+            return Err(Error::invalid(field("widths"), "filled outlines need one widths array per line"))
+        }
+        None => {}
+        Some(w) => as_many(&field("widths"), w.len(), ("one widths array per line", lines.len()))?,
     }
     let strokes = lines
         .iter()
@@ -141,7 +126,7 @@ pub(super) fn _svg_document(
         let v = args::integer(name, obj)?;
         u32::try_from(v).map_err(|_| Error::invalid(name, format!("must be in [0, 2**32), got {v}")))
     };
-    let groups = items("groups", groups)?
+    let groups = items("groups", groups, "a list")?
         .iter()
         .enumerate()
         .map(|(i, g)| group(&format!("groups[{i}]"), g))

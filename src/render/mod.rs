@@ -75,7 +75,7 @@ pub fn accepted_names() -> Vec<(&'static str, Vec<&'static str>)> {
     ]
 }
 pub use graph::report::{FrameReport, Polyline};
-pub use renderer::{Image, ImageMut, OutputBuffers, RenderOutput, Renderer};
+pub use renderer::{Image, ImageMut, OutputBuffers, RenderOutput, Renderer, ViewImages};
 
 #[cfg(test)]
 mod albedo_gpu_tests;

@@ -66,11 +66,11 @@ pub enum Image {
 }
 
 impl Image {
-    /// Zeros for an `n`-pixel image of `output`.
+    /// Zeros for an `n`-pixel image of `output` (in huge pages where large, as NumPy's arrays).
     pub fn zeros(output: Output, n: usize) -> Option<Image> {
         Some(match output.pixel()? {
-            Pixel::Bytes(k) => Image::Bytes(vec![0; k * n]),
-            Pixel::Floats(k) => Image::Floats(vec![0.0; k * n]),
+            Pixel::Bytes(k) => Image::Bytes(crate::huge_pages::filled_vec(k * n, 0)),
+            Pixel::Floats(k) => Image::Floats(crate::huge_pages::filled_vec(k * n, 0.0)),
         })
     }
 
@@ -79,6 +79,54 @@ impl Image {
             Image::Bytes(v) => ImageMut::Bytes(v),
             Image::Floats(v) => ImageMut::Floats(v),
         }
+    }
+}
+
+/// The image outputs of one or more frames of one size, each output one vector that holds every
+/// view's image in turn, so that a front end hands each to its arrays without a copy.
+pub struct ViewImages {
+    /// How many views; None for one whose images have no views' axis.
+    views: Option<usize>,
+    size: (u32, u32),
+    /// Every image output, in `Output::ALL`'s order; None where the frame did not ask for it.
+    images: Vec<(Output, Option<Image>)>,
+}
+
+impl ViewImages {
+    /// Zeros for the image outputs of `views` frames of `frame` (None: one).
+    pub fn zeros(frame: &FrameSpec, views: Option<usize>) -> ViewImages {
+        let n = views.unwrap_or(1) * frame.width as usize * frame.height as usize;
+        let image = |o| frame.outputs.has(o).then(|| Image::zeros(o, n)).flatten();
+        let images = Output::ALL.into_iter().filter(|o| o.pixel().is_some()).map(|o| (o, image(o))).collect();
+        ViewImages { views, size: (frame.height, frame.width), images }
+    }
+
+    /// One set of output buffers for each view (`Renderer::render_views`).
+    pub fn buffers(&mut self) -> Vec<OutputBuffers<'_>> {
+        let views = self.views.unwrap_or(1);
+        let mut sets: Vec<OutputBuffers<'_>> = (0..views).map(|_| OutputBuffers::default()).collect();
+        fn per_view<T>(v: &mut [T], views: usize) -> std::slice::ChunksMut<'_, T> {
+            let n = (v.len() / views.max(1)).max(1);
+            v.chunks_mut(n)
+        }
+        for (o, image) in &mut self.images {
+            let views: Vec<ImageMut<'_>> = match image {
+                Some(Image::Bytes(v)) => per_view(v, views).map(ImageMut::Bytes).collect(),
+                Some(Image::Floats(v)) => per_view(v, views).map(ImageMut::Floats).collect(),
+                None => continue,
+            };
+            for (set, v) in sets.iter_mut().zip(views) {
+                set.set(*o, v);
+            }
+        }
+        sets
+    }
+
+    /// Each image output with its shape (the views' axis first where there is one) and, where
+    /// it was asked for, its values.
+    pub fn shaped(self) -> impl Iterator<Item = (Output, Vec<usize>, Option<Image>)> {
+        let (leading, (h, w)) = (self.views.into_iter().collect::<Vec<_>>(), self.size);
+        self.images.into_iter().map(move |(o, image)| (o, o.shape(&leading, h, w).unwrap_or_default(), image))
     }
 }
 
@@ -362,7 +410,8 @@ impl Renderer {
     /// Prepares, records and submits one frame, and asks for its readback to be mapped.
     fn submit(&self, scene: CheckedScene) -> Result<InFlight> {
         let start = Instant::now();
-        let mut report = FrameReport { up: scene.scene.up.name(), ..Default::default() };
+        let (width, height, up) = (scene.frame.width, scene.frame.height, scene.scene.up.name());
+        let mut report = FrameReport { width, height, up, ..Default::default() };
         let p = self.prepare(scene, &mut report)?;
         report.passes = p.plan.names();
         report.view = rows(p.cam.view);

@@ -12,12 +12,25 @@
 
 use rayon::prelude::*;
 
-use crate::error::Result;
+use crate::error::{Error, Result};
+use crate::mesh::check_positions;
 use crate::real::{Real, Vec3};
 
 /// Largest coordinates below or above these are rescaled.
 pub const LOW: f64 = pow2(-200);
 pub const HIGH: f64 = pow2(200);
+
+/// The largest absolute coordinate of `positions`, the scale smoothing works at, from one fast
+/// pass that also checks them as every mesh argument is checked (`check_positions`, whose error
+/// names what is wrong when the pass fails).
+pub fn checked_scale<T: Real>(arg: &str, positions: &[Vec3<T>]) -> Result<f64> {
+    match largest_if_finite(positions.as_flattened()).filter(|_| !positions.is_empty()) {
+        Some(largest) => Ok(largest),
+        None => check_positions(arg, positions).and_then(|()| {
+            Err(Error::Internal(format!("{arg}: refused by the fast check but not by check_positions")))
+        }),
+    }
+}
 
 /// The largest absolute value in `flat`, or None if any value is NaN or infinite. One pass,
 /// eight lanes at a time so that it vectorises: a finiteness check that also gives the scale.

@@ -8,22 +8,13 @@
 mod classes;
 pub mod values;
 
-use std::hash::{Hash, Hasher};
-
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
-use pyo3::IntoPyObjectExt;
+use pyo3::types::{IntoPyDict, PyDict, PyTuple};
 
 use crate::error::{Error, Result};
-use crate::render::settings::{self as described, parameter, Described};
+use crate::render::settings::{self as described, Described, Setting, Value};
 
 pub use classes::{kang_table, Camera as PyCamera, Material as PyMaterial, RenderOptions as PyRenderOptions};
-
-/// A Python class around a described core type.
-pub trait Wraps: Sized {
-    type Core: Described;
-    fn wrap(inner: Self::Core) -> Self;
-}
 
 /// The Python classes, one per entry of the core's list (`render::settings::settings_classes`):
 /// the wrapper (named as the class), its docstring and its constructors' (from the core's
@@ -41,13 +32,6 @@ macro_rules! python_classes {
         #[derive(Clone, PartialEq)]
         pub struct $class {
             pub inner: $core,
-        }
-
-        impl $crate::py::settings::Wraps for $class {
-            type Core = $core;
-            fn wrap(inner: $core) -> Self {
-                $class { inner }
-            }
         }
 
         #[pymethods]
@@ -81,7 +65,7 @@ macro_rules! python_classes {
             }
 
             fn __hash__(&self) -> u64 {
-                $crate::py::settings::hash_of(&self.inner)
+                $crate::render::settings::state::hash(&self.inner)
             }
 
             fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
@@ -89,7 +73,8 @@ macro_rules! python_classes {
             }
 
             fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
-                $crate::py::settings::reduce(py, &self.inner)
+                let state = $crate::render::settings::state::state(&self.inner);
+                Ok((py.import("toonmesh._core")?.getattr("_restore")?, (stringify!($class), state)))
             }
 
             /// A copy with only the fields named changed (None: the field's default), checked as
@@ -103,14 +88,15 @@ macro_rules! python_classes {
             /// help) and constructors (their parameters, with the default of each).
             #[staticmethod]
             fn describe(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
-                $crate::py::settings::describe::<$core>(py)
+                $crate::py::settings::values::to_py(py, &$crate::render::settings::describe::<$core>())
             }
         }
     )*};
 }
 pub(crate) use python_classes;
 
-/// The arguments of a call to `constructor`, by parameter (None: the default, so left out).
+/// The arguments of a call to `constructor`, by parameter (None: the default, so left out);
+/// the core checks which it takes and needs.
 pub fn make<T: Described>(
     constructor: &str,
     args: &Bound<'_, PyTuple>,
@@ -122,17 +108,9 @@ pub fn make<T: Described>(
         keywords.push(k.extract().map_err(|_| Error::wrong_type("kwargs", "keywords must be strings"))?);
         given.push(v);
     }
-    let names = described::bind::<T>(ctor, args.len(), keywords)?;
-    let given: Vec<_> = names.into_iter().zip(given).filter(|(_, v)| !v.is_none()).collect();
-    let names: Vec<&str> = given.iter().map(|(n, _)| n.as_str()).collect();
-    described::check_arguments::<T>(ctor, &names)?;
-    let values = given
-        .iter()
-        .map(|(n, v)| {
-            let p = parameter::<T>(n).expect("a checked parameter");
-            Ok((p.name, values::from_py(n, p, v)?))
-        })
-        .collect::<Result<_>>()?;
+    let params = described::bind::<T>(ctor, args.len(), keywords)?;
+    let given = params.into_iter().zip(given).filter(|(_, v)| !v.is_none());
+    let values = given.map(|(p, v)| Ok((p.name, values::from_py(p.name, p, &v)?))).collect::<Result<_>>()?;
     Ok(T::construct(constructor, values)?)
 }
 
@@ -170,60 +148,13 @@ pub fn dir<T: Described>(obj: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
 
 /// `Class.constructor(required, ..., name=value, ...)`: what makes the value again.
 pub fn repr<T: Described>(py: Python<'_>, value: &T) -> PyResult<String> {
-    let (ctor, args) = described::arguments(value);
-    let mut parts = Vec::with_capacity(args.len());
-    for (i, (name, v)) in args.iter().enumerate() {
-        let text = values::to_py(py, v)?.repr()?.to_string();
-        let by_position = ctor.params.get(i) == Some(name) && i < ctor.required;
-        parts.push(if by_position { text } else { format!("{name}={text}") });
-    }
-    let dot = if ctor.name.is_empty() { "" } else { "." };
-    Ok(format!("{}{dot}{}({})", T::CLASS, ctor.name, parts.join(", ")))
-}
-
-fn state<T: serde::Serialize>(x: &T) -> String {
-    serde_json::to_string(x).expect("settings serialise")
-}
-
-pub fn hash_of<T: serde::Serialize>(x: &T) -> u64 {
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    state(x).hash(&mut h);
-    h.finish()
-}
-
-pub fn reduce<'py, T: Described>(
-    py: Python<'py>,
-    inner: &T,
-) -> PyResult<(Bound<'py, PyAny>, (&'static str, String))> {
-    Ok((py.import("toonmesh._core")?.getattr("_restore")?, (T::CLASS, state(inner))))
-}
-
-fn restore<'py, W>(py: Python<'py>, state: &str) -> PyResult<Bound<'py, PyAny>>
-where
-    W: Wraps + IntoPyObjectExt<'py>,
-{
-    let inner: W::Core = serde_json::from_str(state).map_err(|e| Error::invalid("state", format!("{e}")))?;
-    inner.check()?;
-    W::wrap(inner).into_bound_py_any(py)
+    described::call(value, |v| Ok(values::to_py(py, v)?.repr()?.to_string()))
 }
 
 /// _restore(cls, state): a pickled setting, checked again.
 #[pyfunction]
 pub(super) fn _restore<'py>(py: Python<'py>, cls: &str, state: &str) -> PyResult<Bound<'py, PyAny>> {
-    macro_rules! any_class {
-        ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
-            match cls {
-                $(stringify!($class) => restore::<classes::$class>(py, state),)*
-                other => Err(Error::invalid("cls", format!("no settings class {other:?}")).into()),
-            }
-        };
-    }
-    described::settings_classes!(any_class)
-}
-
-/// The description of `T` as Python data (see `render::settings::describe`).
-pub fn describe<T: Described>(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
-    values::to_py(py, &described::describe::<T>())
+    values::to_py(py, &Value::setting(Setting::restore(cls, state)?))
 }
 
 /// The names the core accepts, for Python to take rather than repeat.
@@ -232,11 +163,8 @@ fn add_names(m: &Bound<'_, PyModule>) -> PyResult<()> {
         m.add(name, PyTuple::new(m.py(), names)?)?;
     }
     m.add("DEFAULT_CREASE_ANGLE", crate::edges::DEFAULT_CREASE_ANGLE)?;
-    let up = PyDict::new(m.py());
-    for (suffix, axis) in crate::render::scene::up::FILE_UP_AXES {
-        up.set_item(suffix, axis.name())?;
-    }
-    m.add("FILE_UP_AXES", up)?;
+    let up = crate::render::scene::up::FILE_UP_AXES.iter().map(|(suffix, axis)| (suffix, axis.name()));
+    m.add("FILE_UP_AXES", up.into_py_dict(m.py())?)?;
     m.add("DEFAULT_UP_AXIS", crate::render::scene::up::DEFAULT_UP.name())
 }
 

@@ -1,16 +1,16 @@
 //! Python objects to a field's value and back, by the field's kind (`render::settings::Kind`):
 //! the only place that knows how each kind is spelt in Python.
 
-use numpy::{PyArrayDescrMethods, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods};
+use numpy::{PyArrayDescrMethods, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString};
+use pyo3::types::{IntoPyDict, PyString};
 use pyo3::IntoPyObjectExt;
 
 use super::classes::{self, Light as PyLight, LineStyle as PyLineStyle};
 use crate::error::{Error, Result};
-use crate::py::args::{flag, integer, number, numbers, refuse_text, rgb, rgba, text, triple, type_name};
+use crate::py::args::{flag, integer, items, number, numbers, rgb, rgba, text, triple, type_name};
+use crate::py::convert::shaped_to_numpy;
 use crate::render::scene::light::Light;
-use crate::render::scene::model::MAX_LUT;
 use crate::render::settings::settings_classes;
 use crate::render::settings::{Field, GreyImage, Kind, Setting, Value};
 
@@ -50,23 +50,16 @@ pub fn to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>>
         Value::Rows(rows) => rows.iter().map(triple).collect::<Vec<_>>().into_bound_py_any(py),
         Value::Matrix(m) => m.iter().map(|r| r.to_vec()).collect::<Vec<_>>().into_bound_py_any(py),
         Value::Names(n) => n.clone().into_bound_py_any(py),
-        Value::Image(g) => {
-            let flat = numpy::PyArray1::from_slice(py, &g.values);
-            Ok(flat.reshape([g.height as usize, g.width as usize])?.into_any())
-        }
+        Value::Image(g) => shaped_to_numpy(py, vec![g.height as usize, g.width as usize], g.values.clone()),
         Value::Lights(l) => {
             l.iter().map(|&inner| PyLight { inner }).collect::<Vec<_>>().into_bound_py_any(py)
         }
         Value::Map(items) => {
-            let d = PyDict::new(py);
-            for (k, v) in items {
-                d.set_item(k, to_py(py, v)?)?;
-            }
-            Ok(d.into_any())
+            let items = items.iter().map(|(k, v)| Ok((*k, to_py(py, v)?))).collect::<PyResult<Vec<_>>>()?;
+            Ok(items.into_py_dict(py)?.into_any())
         }
         Value::List(items) => {
-            PyList::new(py, items.iter().map(|v| to_py(py, v)).collect::<PyResult<Vec<_>>>()?)?
-                .into_bound_py_any(py)
+            items.iter().map(|v| to_py(py, v)).collect::<PyResult<Vec<_>>>()?.into_bound_py_any(py)
         }
         Value::Setting(s) => {
             macro_rules! wrap {
@@ -134,18 +127,10 @@ pub fn each<T>(
     item: &str,
     read: impl Fn(&Bound<'_, PyAny>) -> Option<T>,
 ) -> Result<Vec<T>> {
-    let items = obj
-        .try_iter()
-        .map_err(|_| Error::wrong_type(name, format!("expected {expected}, got {}", type_name(obj))))?;
-    items
-        .enumerate()
-        .map(|(i, x)| {
-            let x = x.map_err(|e| Error::invalid(name, e.to_string()))?;
-            read(&x).ok_or_else(|| {
-                Error::wrong_type(format!("{name}[{i}]"), format!("expected {item}, got {}", type_name(&x)))
-            })
-        })
-        .collect()
+    let wrong = |i, x: &Bound<'_, PyAny>| {
+        Error::wrong_type(format!("{name}[{i}]"), format!("expected {item}, got {}", type_name(x)))
+    };
+    items(name, obj, expected)?.iter().enumerate().map(|(i, x)| read(x).ok_or_else(|| wrong(i, x))).collect()
 }
 
 fn lights(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<Light>> {
@@ -165,20 +150,11 @@ fn names(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<String>> {
     each(obj, name, expected, "a name", |n| n.extract::<String>().ok())
 }
 
-/// A lookup table: (N,) grey factors or (N, 3) RGB factors, 1 <= N <= 256.
+/// A lookup table: (N,) grey factors or (N, 3) RGB factors.
 fn table(name: &str, obj: &Bound<'_, PyAny>) -> Result<Vec<[f64; 3]>> {
-    refuse_text(name, obj, "(N,) or (N, 3) numbers")?;
-    let rows: Vec<Bound<'_, PyAny>> = obj
-        .try_iter()
-        .map_err(|_| {
-            Error::wrong_type(name, format!("expected (N,) or (N, 3) numbers, got {}", type_name(obj)))
-        })?
-        .collect::<PyResult<_>>()
-        .map_err(|e| Error::invalid(name, e.to_string()))?;
-    if rows.is_empty() || rows.len() > MAX_LUT {
-        return Err(Error::invalid(name, format!("needs 1 to {MAX_LUT} entries, got {}", rows.len())));
-    }
-    rows.iter()
+    // how many entries a table may have is the core's check
+    items(name, obj, "(N,) or (N, 3) numbers")?
+        .iter()
         .enumerate()
         .map(|(i, r)| {
             let arg = format!("{name}[{i}]");
@@ -215,16 +191,13 @@ fn image(name: &str, obj: &Bound<'_, PyAny>) -> Result<GreyImage> {
 
 /// A 4x4 matrix of numbers.
 pub fn transform(arg: &str, obj: &Bound<'_, PyAny>) -> Result<[[f64; 4]; 4]> {
-    let wrong = || Error::wrong_type(arg, format!("expected a 4x4 array of numbers, got {}", type_name(obj)));
-    refuse_text(arg, obj, "a 4x4 array of numbers")?;
-    if let Ok(a) = obj.cast::<PyUntypedArray>() {
-        if !matches!(a.dtype().kind(), b'i' | b'u' | b'f') {
-            return Err(wrong());
-        }
+    let expected = "a 4x4 array of numbers";
+    let wrong = || Error::wrong_type(arg, format!("expected {expected}, got {}", type_name(obj)));
+    if obj.cast::<PyUntypedArray>().is_ok_and(|a| !matches!(a.dtype().kind(), b'i' | b'u' | b'f')) {
+        return Err(wrong());
     }
-    let rows: Vec<Bound<'_, PyAny>> =
-        obj.try_iter().map_err(|_| wrong())?.collect::<PyResult<_>>().map_err(|_| wrong())?;
-    let rows: Vec<Vec<f64>> = rows.iter().map(|r| numbers(arg, r)).collect::<Result<_>>()?;
+    let rows: Vec<Vec<f64>> =
+        items(arg, obj, expected)?.iter().map(|r| numbers(arg, r)).collect::<Result<_>>()?;
     if rows.iter().any(|r| r.len() != rows[0].len()) {
         return Err(wrong());
     }

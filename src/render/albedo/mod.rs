@@ -6,6 +6,7 @@
 //! Plain data and its CPU twins (`texture`: the mip chain, `sampling`: the sampling rule); the
 //! device side is `render::gpu_albedo`.
 
+pub mod given;
 pub mod sampling;
 pub mod texture;
 

@@ -151,11 +151,7 @@ pub struct Sphere {
 }
 
 fn vec3(arg: &str, v: [f64; 3]) -> Result<DVec3> {
-    if v.iter().all(|x| x.is_finite()) {
-        Ok(DVec3::from_array(v))
-    } else {
-        Err(Error::invalid(arg, format!("must be finite, got {v:?}")))
-    }
+    crate::real::finite3(arg, &v).map(DVec3::from_array)
 }
 
 fn unit(arg: &str, v: [f64; 3]) -> Result<DVec3> {

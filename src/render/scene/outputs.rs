@@ -53,6 +53,16 @@ impl Output {
         }
     }
 
+    /// The shape of this output's image of a `height` x `width` frame after the `leading` axes:
+    /// (H, W, 4) colour, (H, W, 3) normals, (H, W) for the others; None without an image.
+    pub fn shape(self, leading: &[usize], height: u32, width: u32) -> Option<Vec<usize>> {
+        let channels = match self.pixel()? {
+            Pixel::Bytes(c) => Some(c),
+            Pixel::Floats(c) => (c > 1).then_some(c),
+        };
+        Some(leading.iter().copied().chain([height as usize, width as usize]).chain(channels).collect())
+    }
+
     pub fn parse(arg: &str, name: &str) -> Result<Self> {
         Self::ALL.into_iter().find(|o| o.name() == name).ok_or_else(|| {
             Error::invalid(

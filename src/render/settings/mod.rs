@@ -15,9 +15,9 @@ mod material;
 mod options;
 mod outlines;
 mod shadows;
+pub mod state;
 mod value;
 
-#[cfg_attr(not(feature = "python"), allow(unused_imports))] // the front ends write from it
 pub(crate) use classes::settings_classes;
 pub use classes::{Class, Setting, CLASSES};
 pub use grey_image::{GreyImage, MAX_IMAGE_SIDE};
@@ -273,13 +273,26 @@ fn unknown(name: &str, known: &[&str], what: &str) -> Error {
     Error::wrong_type(name, format!("not {what}{hint} (they are: {})", known.join(", ")))
 }
 
+/// The parameter `name` of `ctor`; an error that lists them for any other name.
+fn parameter_of<T: Described>(ctor: &Constructor, name: &str) -> Result<&'static Field> {
+    match parameter::<T>(name).filter(|_| ctor.params.contains(&name)) {
+        Some(field) => Ok(field),
+        None => {
+            let what =
+                T::PARAMETER.map_or_else(|| format!("a parameter of {}", title::<T>(ctor)), String::from);
+            Err(unknown(name, ctor.params, &what))
+        }
+    }
+}
+
 /// The parameters a call of `ctor` names: its first `positional` by position, then the
-/// `keywords`; refused when it is given more by position than it takes, or a parameter twice.
+/// `keywords`; refused when it is given more by position than it takes, a parameter twice, or
+/// a name that is none of its parameters.
 pub fn bind<T: Described>(
     ctor: &Constructor,
     positional: usize,
     keywords: Vec<String>,
-) -> Result<Vec<String>> {
+) -> Result<Vec<&'static Field>> {
     if positional > ctor.positional {
         let most = ctor.positional;
         let why =
@@ -293,18 +306,14 @@ pub fn bind<T: Described>(
         }
         names.push(k);
     }
-    Ok(names)
+    names.iter().map(|n| parameter_of::<T>(ctor, n)).collect()
 }
 
 /// Checks that the arguments (name, value; None values dropped by the caller) belong to
 /// `constructor` and that its required ones are there.
 pub fn check_arguments<T: Described>(ctor: &Constructor, given: &[&str]) -> Result<()> {
     for name in given {
-        if !ctor.params.contains(name) {
-            let what =
-                T::PARAMETER.map_or_else(|| format!("a parameter of {}", title::<T>(ctor)), String::from);
-            return Err(unknown(name, ctor.params, &what));
-        }
+        parameter_of::<T>(ctor, name)?;
     }
     if let Some(missing) = ctor.params[..ctor.required].iter().find(|p| !given.contains(p)) {
         return Err(Error::wrong_type(*missing, format!("{} needs it", title::<T>(ctor))));
@@ -373,6 +382,23 @@ pub fn arguments<T: Described>(value: &T) -> (&'static Constructor, Vec<(&'stati
         })
         .collect();
     (ctor, args)
+}
+
+/// The call that makes `value` again, `Class.constructor(required, ..., name=value, ...)`, each
+/// value as `write` spells it (in a front end's own syntax).
+pub fn call<T: Described, E>(
+    value: &T,
+    mut write: impl FnMut(&Value) -> std::result::Result<String, E>,
+) -> std::result::Result<String, E> {
+    let (ctor, args) = arguments(value);
+    let mut parts = Vec::with_capacity(args.len());
+    for (i, (name, v)) in args.iter().enumerate() {
+        let text = write(v)?;
+        let by_position = ctor.params.get(i) == Some(name) && i < ctor.required;
+        parts.push(if by_position { text } else { format!("{name}={text}") });
+    }
+    let dot = if ctor.name.is_empty() { "" } else { "." };
+    Ok(format!("{}{dot}{}({})", T::CLASS, ctor.name, parts.join(", ")))
 }
 
 /// `T` described for front ends: its class, help, fields (each with its name, kind, bounds,

@@ -7,7 +7,7 @@ pub mod simplification;
 pub mod smoothing;
 pub mod svg;
 
-use crate::error::{Error, Result};
+use crate::error::{as_many, Error, Result};
 
 /// Checks the points of a stroke (the argument `arg`): each finite.
 pub fn check_points(arg: &str, points: &[[f64; 2]]) -> Result<()> {
@@ -19,9 +19,7 @@ pub fn check_points(arg: &str, points: &[[f64; 2]]) -> Result<()> {
 
 /// Checks the widths of a stroke of `n` points (the argument `arg`): one per point, each finite.
 pub fn check_widths(arg: &str, widths: &[f64], n: usize) -> Result<()> {
-    if widths.len() != n {
-        return Err(Error::invalid(arg, format!("expected one width per point ({n}), got {}", widths.len())));
-    }
+    as_many(arg, widths.len(), ("one width per point", n))?;
     if widths.iter().any(|v| !v.is_finite()) {
         return Err(Error::invalid(arg, "widths must be finite"));
     }
@@ -41,6 +39,20 @@ pub fn drawn(
     let smooth_points = smoothing::smoothed(points, smooth)?;
     let kept = simplification::kept(&smooth_points, simplify, by_width.then_some(widths))?;
     Ok((kept.iter().map(|&i| smooth_points[i]).collect(), kept))
+}
+
+/// `drawn` of each stroke, in parallel: its points, and its widths where they shape it (None:
+/// simplified by its points alone).
+pub fn drawn_all(
+    strokes: &[(Vec<[f64; 2]>, Option<Vec<f64>>)],
+    smooth: f64,
+    simplify: f64,
+) -> Result<Vec<(Vec<[f64; 2]>, Vec<usize>)>> {
+    use rayon::prelude::*;
+    strokes
+        .par_iter()
+        .map(|(p, w)| drawn(p, w.as_deref().unwrap_or(&[]), smooth, simplify, w.is_some()))
+        .collect()
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! Simplifying a stroke (Douglas-Peucker): the fewest of its points, found by splitting at the
 //! farthest, that keep the polyline within a tolerance of where it was.
 
-use crate::error::{Error, Result};
+use crate::error::{as_many, Error, Result};
 
 /// Indices of the points of `points` that stay within `tolerance` pixels of the polyline; the
 /// ends are always kept, and a tolerance of 0 keeps every point. With `widths` (pixels per point)
@@ -16,9 +16,7 @@ pub fn kept(points: &[[f64; 2]], tolerance: f64, widths: Option<&[f64]>) -> Resu
     }
     let n = points.len();
     if let Some(w) = widths {
-        if w.len() != n {
-            return Err(Error::invalid("widths", format!("expected one per point ({n}), got {}", w.len())));
-        }
+        as_many("widths", w.len(), ("one per point", n))?;
     }
     if tolerance == 0.0 || n < 3 {
         return Ok((0..n).collect());
