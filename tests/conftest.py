@@ -20,6 +20,19 @@ def need(module: str) -> Any:
     return need_peer(module)
 
 
+def chromium() -> str:
+    """Debian's Chromium for the browser tests: skipped on a user's machine without it, a hard
+    failure in CI (scripts/system-deps.sh --test installs it)."""
+    import shutil
+
+    path = shutil.which("chromium") or shutil.which("chromium-browser")
+    if path is None:
+        if os.environ.get("CI", "").lower() == "true":
+            raise RuntimeError("chromium is not installed: run scripts/system-deps.sh --test as root")
+        pytest.skip("chromium is not installed (scripts/system-deps.sh --test installs it)")
+    return path
+
+
 # The toon_snapshot fixture and --toon-update: toonmesh's plugin, named here for a build whose
 # metadata predates its entry point (named as its module, so this is a no-op where it is loaded).
 pytest_plugins = ["toonmesh.pytest_plugin"]

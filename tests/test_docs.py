@@ -7,7 +7,6 @@ from __future__ import annotations
 import importlib.util
 import os
 import re
-import shutil
 import subprocess
 import sys
 from html.parser import HTMLParser
@@ -17,7 +16,7 @@ from urllib.parse import unquote, urlsplit
 
 import pytest
 
-from conftest import need
+from conftest import chromium, need
 
 ROOT = Path(__file__).resolve().parent.parent
 GUIDES = ("smoothing", "lines", "rendering", "effects", "colour", "files", "viewer", "cli", "batch", "testing",
@@ -126,21 +125,12 @@ def test_the_api_reference_documents_every_public_function_class_and_method(site
     assert "band_antialias" in api  # the render keywords (RenderKeywords), from the core's docstring
 
 
-def _chromium() -> str:
-    path = shutil.which("chromium") or shutil.which("chromium-browser")
-    if path is None:
-        if os.environ.get("CI", "").lower() == "true":
-            raise RuntimeError("chromium is not installed: run scripts/system-deps.sh --test as root")
-        pytest.skip("chromium is not installed (scripts/system-deps.sh --test installs it)")
-    return path
-
-
 def test_the_home_page_and_a_gallery_page_show_every_picture_in_a_browser(site, tmp_path):
     sync_api = need("playwright.sync_api")
-    chromium = _chromium()
+    executable = chromium()
     shots = []
     with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=chromium, args=["--no-sandbox"])
+        browser = p.chromium.launch(executable_path=executable, args=["--no-sandbox"])
         try:
             page = browser.new_page(viewport={"width": 1280, "height": 900})
             for name in ("index.html", "gallery/index.html", "gallery/papers.html"):

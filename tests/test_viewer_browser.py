@@ -25,7 +25,6 @@ import io
 import json
 import os
 import re
-import shutil
 import socket
 import subprocess
 import sys
@@ -36,7 +35,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import need
+from conftest import chromium, need
 
 ROOT = Path(__file__).resolve().parent.parent
 SCREENSHOT = ROOT / "docs" / "viewer.png"
@@ -95,15 +94,6 @@ def _free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         return int(s.getsockname()[1])
-
-
-def _chromium() -> str:
-    path = shutil.which("chromium") or shutil.which("chromium-browser")
-    if path is None:
-        if os.environ.get("CI", "").lower() == "true":
-            raise RuntimeError("chromium is not installed: run scripts/system-deps.sh as root")
-        pytest.skip("chromium is not installed (scripts/system-deps.sh installs it)")
-    return path
 
 
 @pytest.fixture
@@ -174,12 +164,12 @@ def _wait_exact_after(page, frames_shown: int, timeout: int = 20_000) -> None:
 
 
 def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
-    chromium = _chromium()
+    executable = chromium()
     need("PIL")
     sync_api = need("playwright.sync_api")
     work = tmp_path / "work"
     with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=chromium, args=["--no-sandbox"])
+        browser = p.chromium.launch(executable_path=executable, args=["--no-sandbox"])
         try:
             page = browser.new_page(viewport={"width": 1500, "height": 900}, accept_downloads=True)
             page.goto(f"{jupyter_lab}/lab/tree/viewer.ipynb")

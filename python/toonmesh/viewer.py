@@ -22,6 +22,7 @@ meshes and its front end; :meth:`Viewer.close` frees them at once.
 from __future__ import annotations
 
 import copy
+import importlib
 import io
 import math
 import os
@@ -604,8 +605,7 @@ class Viewer:
         width, height = self._options.width, self._options.height
         if kind == ".mp4" and (width % 2 or height % 2):
             raise ValueError(f"path: an MP4 (H.264) needs an even width and height, the viewer is {width}x{height}")
-        writer = _gif_writer if kind == ".gif" else _mp4_writer
-        write = writer()  # the library is checked before any render
+        write = _video_writer(kind)
         with self._state_lock:
             start = copy.deepcopy(self._view)
         cameras = []
@@ -811,35 +811,37 @@ def _axis(axis: Any) -> str:
     return axis
 
 
-def _gif_writer() -> Any:
+def _write_gif(path: str, frames: np.ndarray, fps: int) -> None:
+    from PIL import Image
+
+    images = [Image.fromarray(np.ascontiguousarray(f[..., :3])) for f in frames]
+    images[0].save(path, save_all=True, append_images=images[1:], duration=round(1000 / fps), loop=0,
+                   optimize=False, disposal=1)
+
+
+def _write_mp4(path: str, frames: np.ndarray, fps: int) -> None:
+    import imageio_ffmpeg  # type: ignore[import-untyped]
+
+    height, width = frames.shape[1:3]
+    gen = imageio_ffmpeg.write_frames(path, (width, height), fps=fps, codec="libx264", pix_fmt_in="rgb24",
+                                      pix_fmt_out="yuv420p", macro_block_size=1, output_params=["-loglevel", "error"])
+    gen.send(None)
+    for f in frames:
+        gen.send(np.ascontiguousarray(f[..., :3]).tobytes())
+    gen.close()
+
+
+#: Per video suffix: its writer, and the module and package it needs.
+_VIDEO = {".gif": (_write_gif, "PIL", "Pillow"), ".mp4": (_write_mp4, "imageio_ffmpeg", "imageio-ffmpeg")}
+
+
+def _video_writer(kind: str) -> Any:
+    """The writer of a ``kind`` (".gif" or ".mp4") video, its library checked before any render."""
+    write, module, package = _VIDEO[kind]
     try:
-        from PIL import Image
+        importlib.import_module(module)
     except ImportError:
-        raise ImportError("turntable: writing a GIF needs Pillow (pip install 'toonmesh[notebook]')") from None
-
-    def write(path: str, frames: np.ndarray, fps: int) -> None:
-        images = [Image.fromarray(np.ascontiguousarray(f[..., :3])) for f in frames]
-        images[0].save(path, save_all=True, append_images=images[1:], duration=round(1000 / fps), loop=0,
-                       optimize=False, disposal=1)
-
-    return write
-
-
-def _mp4_writer() -> Any:
-    try:
-        import imageio_ffmpeg  # type: ignore[import-untyped]
-    except ImportError:
-        raise ImportError("turntable: writing an MP4 needs imageio-ffmpeg (pip install 'toonmesh[notebook]')") from None
-
-    def write(path: str, frames: np.ndarray, fps: int) -> None:
-        height, width = frames.shape[1:3]
-        gen = imageio_ffmpeg.write_frames(path, (width, height), fps=fps, codec="libx264", pix_fmt_in="rgb24",
-                                          pix_fmt_out="yuv420p", macro_block_size=1, output_params=["-loglevel", "error"])
-        gen.send(None)
-        for f in frames:
-            gen.send(np.ascontiguousarray(f[..., :3]).tobytes())
-        gen.close()
-
+        raise ImportError(f"turntable: writing {kind} needs {package} (pip install 'toonmesh[notebook]')") from None
     return write
 
 
