@@ -108,6 +108,35 @@ def test_render_turntable_of_several_meshes_into_a_folder(tmp_path, capsys, monk
     assert np.array_equal(frames[0], read_png(tmp_path / "front.png"))  # view 0 is the front view
 
 
+def test_render_a_turntable_as_a_video(tmp_path, capsys, monkeypatch):
+    # -o turn.gif|turn.mp4 with --views N: the turntable's frames, in order, as one file
+    monkeypatch.chdir(tmp_path)
+    Image = need("PIL.Image")
+    imageio_ffmpeg = need("imageio_ffmpeg")
+    args = ("--size", "40x30", "--style", "thresholded-phong")
+    in_process(capsys, "render", SPOT, "-o", "frames", "--views", "4", *args)
+    r = in_process(capsys, "render", SPOT, "-o", "turn.gif", "--views", "4", "--fps", "8", *args)
+    assert "wrote turn.gif (4 frames at 8 fps, 40x30)" in r.stdout and "spot.obj: up y" in r.stdout
+    gif = Image.open(tmp_path / "turn.gif")
+    assert gif.n_frames == 4 and gif.size == (40, 30) and abs(gif.info["duration"] - 125) <= 10  # centiseconds
+    for k in range(4):  # each frame the turntable's view k (GIF's palette rounds the colours)
+        gif.seek(k)
+        want = read_png(tmp_path / "frames" / f"spot-{k:03d}.png")[..., :3].astype(int)
+        assert np.abs(np.asarray(gif.convert("RGB")).astype(int) - want).mean() < 4.0
+    in_process(capsys, "render", SPOT, "-o", "out/turn.mp4", "--views", "6", "--fps", "12", *args)
+    assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "out" / "turn.mp4")) == (6, 0.5)
+    for bad, words in [
+        (("-o", "x.gif"), ("-o", "--views N")),
+        (("-o", "x.gif", "--views", "3", "--outputs", "color,depth"), ("-o", "colour output only")),
+        (("-o", "x.mp4", "--views", "3", "--size", "41x30"), ("--size", "even width and height")),
+    ]:
+        r = in_process(capsys, "render", SPOT, *bad, check=False)
+        one_line_error(r, *words)
+    one_line_error(in_process(capsys, "render", SPOT, SPOT, "-o", "x.gif", "--views", "3", check=False),
+                   "-o", "one mesh")
+    assert not any((tmp_path / n).exists() for n in ("x.gif", "x.mp4"))
+
+
 def test_up_z_shows_a_z_up_mesh_as_y_up_shows_the_original(tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)
     V, F = tm.shapes.icosphere(2, noise=0.2, seed=1)

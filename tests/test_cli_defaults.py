@@ -52,7 +52,7 @@ DEMO_CHOICES = {"kind", "crease_angle"}
 OWN = {
     ("render", "out"), ("edges", "out"), ("render", "size"), ("render", "style"), ("render", "color"), ("render", "dither"), ("render", "shadows"),
     ("render", "rim"), ("render", "paper"),
-    ("render", "outline_width"), ("render", "views"), ("render", "up"), ("render", "smooth"),
+    ("render", "outline_width"), ("render", "views"), ("render", "fps"), ("render", "up"), ("render", "smooth"),
     ("render", "smooth_method"), ("render", "normals"), ("render", "backend"),
     ("smooth", "out"), ("smooth", "method"), ("smooth", "iterations"), ("smooth", "preset"), ("smooth", "weights"),
     ("smooth", "boundary"), ("smooth", "weld"), ("smooth", "crease_angle"),

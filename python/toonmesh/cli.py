@@ -1,6 +1,6 @@
 """The command line: ``toonmesh`` (console script) and ``python -m toonmesh``.
 
-    toonmesh render MESH... -o OUT [--size WxH] [--style S] [--normals MODE] [--views N] [--up x|y|z] ...
+    toonmesh render MESH... -o OUT [--size WxH] [--style S] [--normals MODE] [--views N [--fps N]] [--up x|y|z] ...
     toonmesh smooth IN -o OUT [--method M] [--iterations N] [--preset P] [--crease-angle DEG] [--weld]
     toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG] [--smooth-strokes PX]
     toonmesh bench smooth|edges|render|effects|viewer|all [--quick] [--json FILE]
@@ -19,14 +19,18 @@ the flag.
 from __future__ import annotations
 
 import argparse
+import glob
 import inspect
 import os
 import sys
+import tempfile
 import time
 import warnings
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
-from toonmesh import _core, _strokes, smooth
+import numpy as np
+
+from toonmesh import _core, _png, _strokes, smooth
 from toonmesh._core import __version__
 from toonmesh._described import described
 from toonmesh._described_flags import CORE_DEFAULT, add_described, errors_as_flags, sets, styles
@@ -40,6 +44,7 @@ from toonmesh.edges import feature_edges
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 from toonmesh._render import Mesh, RenderResult, gpu_info, render
 from toonmesh._scene import normal_mode
+from toonmesh._video import DEFAULT_FPS, VIDEO_SUFFIXES, check_fps, video_writer
 from toonmesh._views import check_views
 from toonmesh.batch import SMOOTH_METHODS as RENDER_SMOOTH_METHODS, render_views
 
@@ -108,6 +113,14 @@ def _size(text: str) -> Tuple[int, int]:
         why = f"{exc}; " if str(exc).startswith(("width", "height")) else ""
         raise argparse.ArgumentTypeError(f"{why}expected WIDTHxHEIGHT in pixels (e.g. 640x480), got {text!r}") from None
     return w, h
+
+
+def _fps(text: str) -> int:
+    try:
+        return check_fps(int(text))
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc).removeprefix("fps: ") if "fps:" in str(exc)
+                                         else f"expected an integer, got {text!r}") from None
 
 
 def _views(text: str) -> int:
@@ -241,11 +254,52 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     return options
 
 
+def _video_target(meshes: Sequence[str], out: str, views: int, outputs: List[str]) -> Optional[Any]:
+    """The video writer when ``out`` names a video (a turntable of one mesh's colour), checked
+    before any render; None otherwise."""
+    suffix = os.path.splitext(out)[1].lower()
+    if suffix not in VIDEO_SUFFIXES:
+        return None
+    if len(meshes) != 1:
+        raise CliError(f"-o: a {suffix} video is the turntable of one mesh, got {len(meshes)} meshes")
+    if views < 2:
+        raise CliError(f"-o: a {suffix} video needs --views N (N >= 2: the turntable's frames)")
+    if outputs != ["color"]:
+        raise CliError(f"-o: a {suffix} video holds the colour output only, not {','.join(outputs)}")
+    os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
+    return video_writer(suffix, "-o")
+
+
 def cmd_render(args: argparse.Namespace) -> int:
-    """toonmesh render: mesh files to toon-shaded images."""
+    """toonmesh render: mesh files to toon-shaded images, or one mesh's turntable as a video."""
     args.meshes = [mesh_file(m) for m in args.meshes]  # before any work: a typo in the last name costs nothing
     options = render_options(args)
-    targets = _render_targets(args.meshes, args.out, args.views, args.outputs)
+    video = _video_target(args.meshes, args.out, args.views, args.outputs)
+    if video is not None:
+        if args.size[0] % 2 or args.size[1] % 2:
+            if args.out.lower().endswith(".mp4"):
+                raise CliError(f"--size: an MP4 (H.264) needs an even width and height, got {args.size[0]}x{args.size[1]}")
+        with tempfile.TemporaryDirectory() as frames_dir:
+            args_out, args.out = args.out, frames_dir
+            try:
+                _render_to(args, options, _render_targets(args.meshes, frames_dir, args.views, args.outputs), quiet=True)
+            finally:
+                args.out = args_out
+            frames = np.stack([_read_frame(p) for p in sorted(glob.glob(os.path.join(frames_dir, "*.png")))])
+        video(args.out, frames, args.fps)
+        print(f"wrote {args.out} ({len(frames)} frames at {args.fps} fps, {args.size[0]}x{args.size[1]})")
+        return 0
+    return _render_to(args, options, _render_targets(args.meshes, args.out, args.views, args.outputs))
+
+
+def _read_frame(path: str) -> np.ndarray:
+    with open(path, "rb") as f:
+        return _png.decode(f.read(), path)
+
+
+def _render_to(args: argparse.Namespace, options: Dict[str, Any], targets: List[List[str]], quiet: bool = False) -> int:
+    """Renders every mesh's views into ``targets`` and says what it wrote (unless ``quiet``:
+    the frames of a video) and which up axis each mesh was drawn with."""
     t0 = time.perf_counter()
     bar = _progress(len(args.meshes) * args.views)
     rows: List[Dict[str, Any]] = []
@@ -267,7 +321,9 @@ def cmd_render(args: argparse.Namespace) -> int:
     where = f"on {info['name']} ({info['backend']})"
     secs = time.perf_counter() - t0
     ups = "; ".join(dict.fromkeys(up_note(r["mesh"], args.up, r["up"]) for r in rows))
-    if len(rows) == 1:
+    if quiet:
+        pass
+    elif len(rows) == 1:
         r = rows[0]
         print(f"wrote {r['path']} ({args.size[0]}x{args.size[1]}, {r['faces']:,} faces) in {secs:.2f} s {where}")
     else:
@@ -306,7 +362,6 @@ def _smooth_output(args: argparse.Namespace) -> str:
 def cmd_smooth(args: argparse.Namespace) -> int:
     """toonmesh smooth: smooth a mesh file and write the result, keeping its texture
     coordinates, texture, colours, material colours, normal seams and parts."""
-    import numpy as np
 
     out = _smooth_output(args)
     placed = read_surfaces(mesh_file(args.input), keep_seams=True)
@@ -485,7 +540,8 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("meshes", nargs="+", metavar="MESH",
                    help="mesh files, or the name of a mesh shipped with toonmesh (bunny)")
     p.add_argument("-o", "--out", required=True, metavar="OUT",
-                   help="an image file (.png, .npz) for one mesh and view, else a folder")
+                   help="an image file (.png, .npz) for one mesh and view, a video (.gif, .mp4) of one mesh's "
+                        "--views, else a folder")
     _add_size_argument(p, "image size in pixels")
     p.add_argument("--style", choices=styles(Material), default=default_style(),
                    help="shading model: one of Material's constructors (default: %(default)s)")
@@ -530,7 +586,10 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     add_described(p, "--depth-threshold", Outlines, "depth_threshold", default=DEMO_OUTLINES.depth_threshold,
                   metavar="X")
     p.add_argument("--views", type=_views, default=1, metavar="N",
-                   help="a turntable of N views about the up axis (default %(default)s)")
+                   help="a turntable of N views about the up axis (default %(default)s); with -o turn.gif or "
+                        "turn.mp4, its frames as a video")
+    p.add_argument("--fps", type=_fps, default=DEFAULT_FPS, metavar="N",
+                   help="frames per second of a video written by -o turn.gif|turn.mp4 (default %(default)s)")
     add_described(p, "--up", RenderOptions, "up", help_after=up_help)
     smooth_flag = p.add_argument("--smooth", type=int, default=_keyword_default(render_views, "smooth_iterations"),
                                  metavar="N", help="smoothing iterations before rendering (default %(default)s)")

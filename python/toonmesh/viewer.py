@@ -22,7 +22,6 @@ meshes and its front end; :meth:`Viewer.close` frees them at once.
 from __future__ import annotations
 
 import copy
-import importlib
 import io
 import math
 import os
@@ -42,6 +41,7 @@ from toonmesh._render import (PlacedMesh, Renderer, draw, draw_views, own_colour
                               scene_items, shared_renderer)
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
+from toonmesh._video import DEFAULT_FPS, VIDEO_SUFFIXES, check_fps, video_writer
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
@@ -580,7 +580,7 @@ class Viewer:
             self.render_count += 1
             return result
 
-    def turntable(self, path: "str | os.PathLike[str]", seconds: float = 4.0, fps: int = 24) -> str:
+    def turntable(self, path: "str | os.PathLike[str]", seconds: float = 4.0, fps: int = DEFAULT_FPS) -> str:
         """Writes a turn of the view about its target and the world's up (from the current view,
         all the way round, ``seconds`` long at ``fps`` frames per second: ``round(seconds * fps)``
         frames, at least one, at the viewer's size and settings) to ``path``, a ``.gif`` (Pillow) or ``.mp4``
@@ -592,20 +592,17 @@ class Viewer:
         if not isinstance(target, str):
             raise TypeError(f"path: expected a str or os.PathLike, got {type(path).__name__}")
         kind = os.path.splitext(target)[1].lower()
-        if kind not in (".gif", ".mp4"):
+        if kind not in VIDEO_SUFFIXES:
             raise ValueError(f"path: expected a .gif or .mp4 file name, got {target!r}")
         seconds = _number("seconds", seconds, 0.0, 600.0)
-        if isinstance(fps, (bool, np.bool_)) or not isinstance(fps, (int, np.integer)):
-            raise TypeError(f"fps: expected an int, got {type(fps).__name__}")
-        if not 1 <= fps <= 60:
-            raise ValueError(f"fps: must be in [1, 60], got {fps}")
+        fps = check_fps(fps)
         if seconds == 0:
             raise ValueError("seconds: must be more than 0, got 0")
         count = max(1, round(seconds * fps))
         width, height = self._options.width, self._options.height
         if kind == ".mp4" and (width % 2 or height % 2):
             raise ValueError(f"path: an MP4 (H.264) needs an even width and height, the viewer is {width}x{height}")
-        write = _video_writer(kind)
+        write = video_writer(kind, "turntable")
         with self._state_lock:
             start = copy.deepcopy(self._view)
         cameras = []
@@ -809,40 +806,6 @@ def _axis(axis: Any) -> str:
     if axis not in AXES:
         raise ValueError(f"axis: expected one of {', '.join(AXES)}, got {axis!r}")
     return axis
-
-
-def _write_gif(path: str, frames: np.ndarray, fps: int) -> None:
-    from PIL import Image
-
-    images = [Image.fromarray(np.ascontiguousarray(f[..., :3])) for f in frames]
-    images[0].save(path, save_all=True, append_images=images[1:], duration=round(1000 / fps), loop=0,
-                   optimize=False, disposal=1)
-
-
-def _write_mp4(path: str, frames: np.ndarray, fps: int) -> None:
-    import imageio_ffmpeg  # type: ignore[import-untyped]
-
-    height, width = frames.shape[1:3]
-    gen = imageio_ffmpeg.write_frames(path, (width, height), fps=fps, codec="libx264", pix_fmt_in="rgb24",
-                                      pix_fmt_out="yuv420p", macro_block_size=1, output_params=["-loglevel", "error"])
-    gen.send(None)
-    for f in frames:
-        gen.send(np.ascontiguousarray(f[..., :3]).tobytes())
-    gen.close()
-
-
-#: Per video suffix: its writer, and the module and package it needs.
-_VIDEO = {".gif": (_write_gif, "PIL", "Pillow"), ".mp4": (_write_mp4, "imageio_ffmpeg", "imageio-ffmpeg")}
-
-
-def _video_writer(kind: str) -> Any:
-    """The writer of a ``kind`` (".gif" or ".mp4") video, its library checked before any render."""
-    write, module, package = _VIDEO[kind]
-    try:
-        importlib.import_module(module)
-    except ImportError:
-        raise ImportError(f"turntable: writing {kind} needs {package} (pip install 'toonmesh[notebook]')") from None
-    return write
 
 
 #: The render settings a viewer holds as attributes, in the order code() writes them.
