@@ -436,3 +436,21 @@ def test_cad_files_shade_with_their_faces_normals_by_default(tmp_path, with_norm
         assert share >= 0.95 or share >= ceiling - 0.03, (name, share, ceiling)
     V, F = load_mesh("fandisk")
     assert within(tm.render(V, F, normals="smooth", width=256, height=256, outputs=("normal", "depth"))) < 0.95
+
+
+def test_normals_given_to_the_render_apply_to_its_meshes():
+    # a Mesh drawn by render(..., normals=...) takes them (a copy: the caller's mesh keeps its
+    # own), as arrays and files do; an uploaded MeshHandle's are fixed, so giving them is an error
+    V, F = box()
+    mesh = tm.Mesh(V, F)
+    kw = dict(width=64, height=64, camera=CAMERA)
+    flat = tm.render(V, F, normals="flat", **kw).color
+    assert np.array_equal(tm.render(mesh, normals="flat", **kw).color, flat)
+    assert np.array_equal(tm.render([mesh], normals="flat", **kw).color, flat)
+    assert not np.array_equal(tm.render(V, F, normals="smooth", **kw).color, flat)
+    assert mesh.normals == "auto"
+    handle = tm.Renderer().add_mesh(V, F)
+    with pytest.raises(ValueError, match="normals: a MeshHandle's normals are fixed"):
+        tm.render(handle, normals="flat", **kw)
+    with pytest.raises(ValueError, match="normals: a MeshHandle's normals are fixed"):
+        tm.render([mesh, handle], normals="flat", **kw)

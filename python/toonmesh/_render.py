@@ -15,6 +15,7 @@ puts the scene's meshes on a renderer's device, one upload per geometry, and :fu
 from __future__ import annotations
 
 import contextlib
+import copy
 import os
 import threading
 import warnings
@@ -281,7 +282,9 @@ def render(
     ``normals``: None (default: a file's own normals where it has them, else ``"auto"``: hard
     edges at the creases a drawing keeps, for boxes and CAD parts, and smooth scans),
     ``"smooth"``, ``"flat"``, ``"auto"``, ``("auto", degrees)``, or the mesh's own (N, 3)
-    vertex normals; see :class:`Mesh`. A mode given replaces a file's normals.
+    vertex normals; see :class:`Mesh`. A mode given replaces a file's normals and a :class:`Mesh`'s
+    (a copy: the caller's mesh is not changed); a :class:`MeshHandle`'s are fixed at its upload, so
+    giving ``normals`` with one is a ValueError.
     ``smooth_iterations``: Laplacian smoothing first (Al-Rousan et al.'s pipeline). The scene's
     up axis (the ``up`` option, see :class:`RenderOptions`) is a file's convention unless given:
     ``render("part.stl")`` keeps +z up.
@@ -307,15 +310,30 @@ def scene_items(vertices: Any, faces: Any = None, normals: Normals = None) -> Li
     :class:`Mesh`, :class:`MeshHandle` and ``trimesh.Trimesh`` items (a trimesh made a
     :class:`Mesh` with ``normals``); None for an empty scene. Errors name ``vertices``/``faces``."""
     if isinstance(vertices, (list, tuple)) and faces is None:
-        return [Mesh(x, normals=normals) if _is_trimesh(x) else x for x in vertices]
+        return [Mesh(x, normals=normals) if _is_trimesh(x) else _given_normals(x, normals) for x in vertices]
     if vertices is None:
         return []
-    if isinstance(vertices, Mesh):
-        return [vertices]
+    if isinstance(vertices, (Mesh, MeshHandle)):
+        return [_given_normals(vertices, normals)]
     if faces is None and (isinstance(vertices, (str, os.PathLike)) or _load.is_scene(vertices)):
         loaded = _load.load(vertices) if isinstance(vertices, (str, os.PathLike)) else _load.scene_meshes(vertices)
         return loaded if normals is None else [_with_normals(m, normals) for m in loaded]
     return [Mesh(vertices, faces, normals=normals)]  # a trimesh brings its colour
+
+
+def _given_normals(item: Any, normals: Normals) -> Any:
+    """A scene item drawn with the render's ``normals`` where given: a copy of a :class:`Mesh`
+    with them in place of its own (the caller's mesh is not changed); a :class:`MeshHandle`'s
+    were fixed at its upload, so giving them is an error rather than ignored."""
+    if normals is None:
+        return item
+    if isinstance(item, MeshHandle):
+        raise ValueError("normals: a MeshHandle's normals are fixed when it is uploaded "
+                         "(Renderer.add_mesh(..., normals=...)); not given to the render")
+    if isinstance(item, Mesh) and item.vertices is not None:
+        item = copy.copy(item)
+        item.normals = normal_mode(normals, len(item.vertices))
+    return item
 
 
 def _is_trimesh(value: Any) -> bool:
