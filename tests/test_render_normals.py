@@ -454,3 +454,5 @@ def test_normals_given_to_the_render_apply_to_its_meshes():
         tm.render(handle, normals="flat", **kw)
     with pytest.raises(ValueError, match="normals: a MeshHandle's normals are fixed"):
         tm.render([mesh, handle], normals="flat", **kw)
+    with pytest.raises(ValueError, match="normals: a MeshHandle's normals are fixed"):
+        tm.render(tm.Mesh(handle), normals="flat", **kw)

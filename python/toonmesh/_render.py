@@ -325,14 +325,13 @@ def _given_normals(item: Any, normals: Normals) -> Any:
     """A scene item drawn with the render's ``normals`` where given: a copy of a :class:`Mesh`
     with them in place of its own (the caller's mesh is not changed); a :class:`MeshHandle`'s
     were fixed at its upload, so giving them is an error rather than ignored."""
-    if normals is None:
+    if normals is None or not isinstance(item, (Mesh, MeshHandle)):
         return item
-    if isinstance(item, MeshHandle):
+    if isinstance(item, MeshHandle) or item.vertices is None:  # a Mesh may place a MeshHandle
         raise ValueError("normals: a MeshHandle's normals are fixed when it is uploaded "
                          "(Renderer.add_mesh(..., normals=...)); not given to the render")
-    if isinstance(item, Mesh) and item.vertices is not None:
-        item = copy.copy(item)
-        item.normals = normal_mode(normals, len(item.vertices))
+    item = copy.copy(item)
+    item.normals = normal_mode(normals, len(item.vertices))
     return item
 
 

@@ -20,7 +20,7 @@ import copy
 import os
 import socket
 import time
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -76,6 +76,7 @@ def render_views(
     smooth_method: str = AT_UPLOAD,
     normals: Normals = None,
     own_colors_material: Any = None,
+    save: Callable[[Any, str], None] = save_result,
     **render_options: Any,
 ) -> List[Dict[str, Any]]:
     """Renders one mesh file into ``files``, one view each (a turntable about the scene's up
@@ -85,7 +86,9 @@ def render_views(
     them (None: the file's own where it has them, else the default). ``own_colors_material``:
     the material of the meshes that carry their own colours or texture (default: the render's
     ``material``; the command line gives the style in white, so that a file's colours show as
-    they are). Returns one dict per file: see :func:`render_files`."""
+    they are). ``save(result, path)`` writes each view (default: the file, by its suffix; the
+    command line's video keeps the colour instead). Returns one dict per file: see
+    :func:`render_files`."""
     t0 = time.perf_counter()
     if "camera" in render_options and len(files) != 1:
         raise ValueError("camera: give either a camera or several views, not both")
@@ -108,7 +111,7 @@ def render_views(
             t1 = time.perf_counter()
             result = draw(renderer, scene, options.replace(camera=camera))
             t2 = time.perf_counter()
-            save_result(result, path)
+            save(result, path)
             rows.append({
                 "mesh": mesh_path, "view": k, "path": path, "vertices": n_vertices, "faces": n_faces,
                 "up": result.up, "load_s": load_s if k == 0 else 0.0, "render_s": t2 - t1,

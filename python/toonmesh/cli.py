@@ -19,18 +19,16 @@ the flag.
 from __future__ import annotations
 
 import argparse
-import glob
 import inspect
 import os
 import sys
-import tempfile
 import time
 import warnings
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from toonmesh import _core, _png, _strokes, smooth
+from toonmesh import _core, _strokes, smooth
 from toonmesh._core import __version__
 from toonmesh._described import described
 from toonmesh._described_flags import CORE_DEFAULT, add_described, errors_as_flags, sets, styles
@@ -279,27 +277,20 @@ def cmd_render(args: argparse.Namespace) -> int:
         if args.size[0] % 2 or args.size[1] % 2:
             if args.out.lower().endswith(".mp4"):
                 raise CliError(f"--size: an MP4 (H.264) needs an even width and height, got {args.size[0]}x{args.size[1]}")
-        with tempfile.TemporaryDirectory() as frames_dir:
-            args_out, args.out = args.out, frames_dir
-            try:
-                _render_to(args, options, _render_targets(args.meshes, frames_dir, args.views, args.outputs), quiet=True)
-            finally:
-                args.out = args_out
-            frames = np.stack([_read_frame(p) for p in sorted(glob.glob(os.path.join(frames_dir, "*.png")))])
-        video(args.out, frames, args.fps)
+        frames: List[np.ndarray] = []
+        _render_to(args, options, [[args.out] * args.views], quiet=True,
+                   save=lambda result, _: frames.append(result.color))
+        video(args.out, np.stack(frames), args.fps)
         print(f"wrote {args.out} ({len(frames)} frames at {args.fps} fps, {args.size[0]}x{args.size[1]})")
         return 0
     return _render_to(args, options, _render_targets(args.meshes, args.out, args.views, args.outputs))
 
 
-def _read_frame(path: str) -> np.ndarray:
-    with open(path, "rb") as f:
-        return _png.decode(f.read(), path)
-
-
-def _render_to(args: argparse.Namespace, options: Dict[str, Any], targets: List[List[str]], quiet: bool = False) -> int:
-    """Renders every mesh's views into ``targets`` and says what it wrote (unless ``quiet``:
-    the frames of a video) and which up axis each mesh was drawn with."""
+def _render_to(args: argparse.Namespace, options: Dict[str, Any], targets: List[List[str]], quiet: bool = False,
+               **save: Any) -> int:
+    """Renders every mesh's views into ``targets`` (``save``: as ``render_views`` takes it) and
+    says what it wrote (unless ``quiet``: the frames of a video) and which up axis each mesh was
+    drawn with."""
     t0 = time.perf_counter()
     bar = _progress(len(args.meshes) * args.views)
     rows: List[Dict[str, Any]] = []
@@ -309,7 +300,7 @@ def _render_to(args: argparse.Namespace, options: Dict[str, Any], targets: List[
             with errors_as_flags(args, RenderOptions, render_views, smooth):
                 done = render_views(
                     mesh, files, up=args.up, backend=args.backend, smooth_iterations=args.smooth,
-                    smooth_method=args.smooth_method, normals=args.normals, **options,
+                    smooth_method=args.smooth_method, normals=args.normals, **save, **options,
                 )
             rows.extend(done)
             if bar is not None:

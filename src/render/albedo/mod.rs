@@ -75,7 +75,8 @@ impl Albedo {
             Some((_, false)) => 2u8.hash(&mut h),
         }
         if let Some(t) = &self.texture {
-            (t.width, t.height, &t.texels).hash(&mut h);
+            // the texels as one run of bytes: one write, not one per texel
+            (t.width, t.height, bytemuck::cast_slice::<[u8; 4], u8>(&t.texels)).hash(&mut h);
             format!("{:?}", self.sampling).hash(&mut h);
         }
         h.finish()
