@@ -40,7 +40,7 @@ LAYERS: List[List[str]] = [
     ["edges", "edges::*", "smooth", "smooth::*"],
     # plain data: settings, uniform blocks, WGSL text, and the per-pixel effects (no device)
     [
-        "render::color", "render::albedo", "render::albedo::*", "render::block", "render::wgsl", "render::scene", "render::scene::*",
+        "render::color", "render::albedo", "render::albedo::*", "render::block", "render::wgsl", "render::stage_part", "render::scene", "render::scene::*",
         "render::effects::surface", "render::effects::surface_effect",
         *[m for name in surface_effects() for m in (f"render::effects::{name}", f"render::effects::{name}::*")],
         "render::effects::*::settings", "render::effects::outlines::stroke_width", "render::effects::scene_settings",
@@ -48,7 +48,7 @@ LAYERS: List[List[str]] = [
         "render::settings", "render::settings::*",
     ],
     # the device and the meshes on it
-    ["render::device", "render::gpu_albedo", "render::gpu_mesh", "render::mesh_record", "render::hatch_field", "render::framing", "render::culling", "render::reference",
+    ["render::device", "render::gpu_albedo", "render::gpu_mesh", "render::mesh_record", "render::derived_vertices", "render::framing", "render::culling", "render::reference",
      "render::image_out"],
     ["render::uniforms", "render::pipelines", "render::graph", "render::graph::*", "render::context"],
     # passes, and the frame effects with theirs

@@ -3,8 +3,10 @@ mesh's colour (none, per vertex, a texture) x what the material needs of the ver
 (nothing, the anchors, the hatching field, both with Gouraud colours) x the targets the pass
 writes (colour; colour with normal and depth or depth alone from the shading pass; normal and
 depth or depth alone from the geometry pass), on Vulkan and GL; where a NumPy reference covers
-the material, a small frame of each is held against it. The stages of each are written from one
-declaration per part (src/render/graph/mesh_stages.rs)."""
+the material, a small frame of each is held against it (every combination of the per-pixel
+effects is held against their CPU references in Rust: src/render/effect_combinations_tests.rs).
+The stages of each are written from one declaration per part (src/render/stage_part.rs,
+src/render/graph/mesh_stages.rs)."""
 
 from __future__ import annotations
 

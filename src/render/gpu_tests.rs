@@ -12,7 +12,7 @@ use super::renderer::{RenderOutput, Renderer};
 use super::scene::camera::{Camera, Placement, Projection};
 use super::scene::light::{Light, ViewLight};
 use super::scene::material::Material;
-use super::scene::model::{kang_table, Highlight, Model, PAPER_BAND_VALUES};
+use super::scene::model::{kang_table, Highlight, Model};
 use super::scene::{FrameSpec, Output, Outputs, Scene, SceneItem, IDENTITY};
 use crate::mesh::shapes::icosphere;
 
@@ -115,14 +115,7 @@ pub(super) fn agreement_with(
     let (w, h) = (out.width as usize, out.height as usize);
     let proj = DMat4::from_cols_array_2d(&out.report.proj).transpose();
     let view = DMat4::from_cols_array_2d(&out.report.view).transpose();
-    let lights: Vec<RefLight> = scene
-        .lights
-        .iter()
-        .map(|l| match l.to_view(&view) {
-            ViewLight::Toward(d) => RefLight::Toward(d.as_vec3(), Vec3::from(l.radiance())),
-            ViewLight::At(p) => RefLight::At(p.as_vec3(), Vec3::from(l.radiance())),
-        })
-        .collect();
+    let lights = view_lights(scene, &view);
     let (color, normal, depth) = (
         out.bytes(Output::Color).unwrap(),
         out.floats(Output::Normal).unwrap(),
@@ -163,6 +156,8 @@ pub(super) fn agreement_with(
                 Vec3::from(to_linear(scene.ambient)),
                 &lights,
                 dn,
+                Vec3::ONE,
+                0.0,
             );
             let c = finish(c, &RefPixel { x, y, orthographic, lights: &lights, surface: &surface });
             let want = [c.x, c.y, c.z].map(|v| linear_to_srgb8(v as f64) as i32);
@@ -173,6 +168,15 @@ pub(super) fn agreement_with(
         }
     }
     (good as f64 / covered.max(1) as f64, covered)
+}
+
+/// The scene's lights as the shader receives them, in the view space of `view`.
+pub(super) fn view_lights(scene: &Scene, view: &DMat4) -> Vec<RefLight> {
+    let light = |l: &Light| match l.to_view(view) {
+        ViewLight::Toward(d) => RefLight::Toward(d.as_vec3(), Vec3::from(l.radiance())),
+        ViewLight::At(p) => RefLight::At(p.as_vec3(), Vec3::from(l.radiance())),
+    };
+    scene.lights.iter().map(light).collect()
 }
 
 pub(super) fn backends() -> Vec<BackendChoice> {
@@ -439,127 +443,5 @@ fn image_lines_match_the_cpu_discontinuity_rule_on_both_backends() {
             let got = out.floats(Output::Outline).unwrap();
             assert_coverage_close(got, &want, &format!("{backend:?} width {width}"));
         }
-    }
-}
-
-/// The interpolated value at `q` of the triangle `t` (2D corners) with corner values `v`,
-/// extended beyond the triangle as a plane (as a GPU's helper pixels extend it).
-fn planar_value(t: [[f64; 2]; 3], v: [[f64; 4]; 3], q: [f64; 2]) -> [f64; 4] {
-    let d = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]);
-    let b1 = ((q[0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (q[1] - t[0][1])) / d;
-    let b2 = ((t[1][0] - t[0][0]) * (q[1] - t[0][1]) - (q[0] - t[0][0]) * (t[1][1] - t[0][1])) / d;
-    std::array::from_fn(|k| (1.0 - b1 - b2) * v[0][k] + b1 * v[1][k] + b2 * v[2][k])
-}
-
-#[test]
-fn field_hatching_matches_the_cpu_reference_on_plain_coloured_and_textured_meshes_on_both_backends() {
-    use super::albedo::{Albedo, Colors, Texture};
-    use super::effects::hatching::field::hatch_stripes;
-    use super::effects::hatching::{field_coverage, hatch_finish, HatchMode, Hatching};
-    use super::effects::surface::SurfaceSettings;
-    use super::scene::light::{LightKind, Space};
-    // a flat grid on [0, 1]^2 seen head-on: every pixel's stripe values are the linear
-    // interpolation of its triangle's, and their derivatives that triangle's gradient
-    let (v, f) = crate::mesh::shapes::grid(12, 0.0, 0).unwrap();
-    let hatching = Hatching { mode: HatchMode::Field, ..Hatching::default() };
-    let effects = SurfaceSettings { hatching: Some(hatching), ..Default::default() };
-    let paper_values = Some(PAPER_BAND_VALUES.to_vec());
-    let material =
-        Material::bands([1.0; 3], None, paper_values, false).unwrap().with_effects(effects).unwrap();
-    // L.n = 0.3 (the paper bands' value 0.2) under a light of 1.1: tone 0.22, three layers of strokes
-    let light = Light {
-        kind: LightKind::Directional { direction: [-(1.0f64 - 0.09).sqrt(), 0.0, -0.3] },
-        space: Space::World,
-        color: [1.0; 3],
-        intensity: 1.1,
-        shadows: None,
-    };
-    let camera = Camera {
-        placement: Placement::LookAt { eye: [0.5, 0.5, 3.0], target: [0.5, 0.5, 0.0], up: [0.0, 1.0, 0.0] },
-        projection: Projection::Orthographic { height: 0.9 },
-        near: None,
-        far: None,
-    };
-    let stripes = hatch_stripes(&v, &f, crate::edges::DEFAULT_CREASE_ANGLE, crate::cancel::Cancel::never())
-        .unwrap()
-        .per_vertex(v.len(), &f);
-    let (w, h) = (128usize, 128usize);
-    // on a plain mesh, and on a coloured and a textured one of one colour, which the paper takes
-    let tint = [153u8, 230, 76, 255];
-    let linear_tint = super::albedo::texture::linear(tint);
-    let colored = Albedo { colors: Some(Colors::Vertex(vec![linear_tint; v.len()])), ..Default::default() };
-    let textured = Albedo {
-        uv: Some(vec![[0.5, 0.5]; v.len()]),
-        texture: Some(Texture { width: 2, height: 2, texels: vec![tint; 4] }),
-        ..Default::default()
-    };
-    let meshes = [("plain", None), ("vertex-coloured", Some(colored)), ("textured", Some(textured))];
-    for (backend, (what, albedo)) in backends().into_iter().flat_map(|b| meshes.clone().map(|m| (b, m))) {
-        let r = open(backend).unwrap();
-        let paper_albedo: [f64; 3] =
-            if albedo.is_some() { std::array::from_fn(|k| linear_tint[k] as f64) } else { [1.0; 3] };
-        let id = r.add_mesh_with(&v, f.clone(), NormalMode::Smooth, albedo).unwrap().0;
-        let scene = Scene {
-            items: vec![SceneItem { mesh: id, transform: IDENTITY, material: material.clone() }],
-            camera,
-            lights: vec![light],
-            ambient: [0.0; 3],
-            ..Default::default()
-        };
-        let frame = FrameSpec { width: w as u32, height: h as u32, ..Default::default() };
-        let out = r.render(&scene, &frame).unwrap();
-        let color = out.bytes(Output::Color).unwrap();
-        let proj = DMat4::from_cols_array_2d(&out.report.proj).transpose();
-        let view = DMat4::from_cols_array_2d(&out.report.view).transpose();
-        let inv = (proj * view).inverse();
-        let world = |x: f64, y: f64| {
-            let q = inv * DVec4::new(x / w as f64 * 2.0 - 1.0, 1.0 - y / h as f64 * 2.0, 0.5, 1.0);
-            [q.x / q.w, q.y / q.w]
-        };
-        let tone = 0.2 * 1.1;
-        let white = to_linear([1.0; 3]).map(|c| c as f64);
-        let paper: [f64; 3] = std::array::from_fn(|k| white[k] * paper_albedo[k]);
-        let ink = to_linear(hatching.ink).map(|c| c as f64);
-        let (mut good, mut inked, mut n) = (0usize, 0usize, 0usize);
-        for y in 0..h {
-            for x in 0..w {
-                let q = world(x as f64 + 0.5, y as f64 + 0.5);
-                let Some(tri) = f.iter().find(|t| {
-                    let c = t.map(|i| [v[i as usize][0], v[i as usize][1]]);
-                    let s = planar_value(
-                        c,
-                        [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0]],
-                        q,
-                    );
-                    s[..3].iter().all(|&b| b >= 1e-6)
-                }) else {
-                    continue;
-                };
-                let corners = tri.map(|i| [v[i as usize][0], v[i as usize][1]]);
-                let values = tri.map(|i| stripes[i as usize].map(|c| c as f64));
-                let at = |q| planar_value(corners, values, q);
-                let (s, sx, sy) = (
-                    at(q),
-                    at(world(x as f64 + 1.5, y as f64 + 0.5)),
-                    at(world(x as f64 + 0.5, y as f64 + 1.5)),
-                );
-                let d = |a: [f64; 4], k: usize| [a[k] - s[k], a[k + 1] - s[k + 1]];
-                let layers = field_coverage(
-                    [[s[0], s[1]], [s[2], s[3]]],
-                    [d(sx, 0), d(sx, 2)],
-                    [d(sy, 0), d(sy, 2)],
-                    &hatching,
-                );
-                let c = hatch_finish(paper, ink, tone, layers);
-                let want = c.map(linear_to_srgb8);
-                let i = y * w + x;
-                n += 1;
-                inked += (linear_to_srgb8(hatch_finish(white, ink, tone, layers)[0]) < 200) as usize;
-                good += (0..3).all(|k| (color[4 * i + k] as i32 - want[k] as i32).abs() <= 2) as usize;
-            }
-        }
-        assert!(n > 15000, "{backend:?}, {what}: {n} pixels on the grid");
-        assert!(inked > n / 5 && inked < n * 4 / 5, "{backend:?}, {what}: the reference inks {inked} of {n}");
-        assert!(good as f64 >= 0.98 * n as f64, "{backend:?}, {what}: only {good} of {n} pixels match");
     }
 }

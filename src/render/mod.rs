@@ -19,13 +19,13 @@ pub mod block;
 pub mod color;
 pub mod context;
 pub mod culling;
+pub mod derived_vertices;
 pub mod device;
 pub mod effects;
 pub mod framing;
 pub mod gpu_albedo;
 pub mod gpu_mesh;
 pub mod graph;
-pub mod hatch_field;
 pub mod image_out;
 pub mod mesh_record;
 pub mod passes;
@@ -36,6 +36,7 @@ pub mod renderer;
 pub mod scene;
 pub mod settings;
 pub mod shader;
+pub mod stage_part;
 pub mod uniforms;
 pub mod wgsl;
 
@@ -79,6 +80,8 @@ pub use renderer::{Image, ImageMut, OutputBuffers, RenderOutput, Renderer, ViewI
 
 #[cfg(test)]
 mod albedo_gpu_tests;
+#[cfg(test)]
+mod effect_combinations_tests;
 #[cfg(test)]
 mod gpu_tests;
 #[cfg(test)]

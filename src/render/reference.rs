@@ -49,7 +49,9 @@ pub fn quad_derivatives<T: Copy + std::ops::Sub<Output = T>>(
 
 /// Linear RGB colour of a surface point with unit view-space normal `n` at view-space `p`, its
 /// band borders blended over the pixel: `dn` the normal's change across the pixel in x and y
-/// (`quad_derivatives`; zero: hard borders).
+/// (`quad_derivatives`; zero: hard borders). `albedo` (linear) multiplies the ambient and
+/// diffuse colours; `jitter` moves L.n before the model bands it (dithering).
+#[allow(clippy::too_many_arguments)]
 pub fn shade(
     m: &Material,
     n: Vec3,
@@ -58,19 +60,23 @@ pub fn shade(
     ambient_light: Vec3,
     lights: &[RefLight],
     dn: [Vec3; 2],
+    albedo: Vec3,
+    jitter: f32,
 ) -> Vec3 {
     let v = view_dir(p, orthographic);
-    let mut c = ambient_light * Vec3::from(m.ambient_linear());
+    let mut c = ambient_light * Vec3::from(m.ambient_linear()) * albedo;
     for light in lights {
         let (l, color) = light.toward(p);
         let d = n.dot(l);
+        // the diffuse term's L.n, moved by the jitter (the highlight's is not)
+        let dj = d + jitter;
         let w = glam::Vec2::new(dn[0].dot(l), dn[1].dot(l)).length();
         let (f, s): (Vec3, f32) = match &m.model {
-            Model::Lambert => (Vec3::splat(d.max(0.0)), 0.0),
+            Model::Lambert => (Vec3::splat(dj.max(0.0)), 0.0),
             Model::Phong { shininess } => {
                 let r = 2.0 * d * n - l;
                 let s = if d > 0.0 { r.dot(v).max(0.0).powf(*shininess) } else { 0.0 };
-                (Vec3::splat(d.max(0.0)), s)
+                (Vec3::splat(dj.max(0.0)), s)
             }
             Model::ThresholdedPhong { t_h, t_s, highlight } => {
                 let (hl, ws) = match highlight {
@@ -85,29 +91,30 @@ pub fn shade(
                         }
                     }
                 };
-                (Vec3::splat(step_aa(d, *t_h, w)), step_aa(hl, *t_s, ws))
+                (Vec3::splat(step_aa(dj, *t_h, w)), step_aa(hl, *t_s, ws))
             }
             Model::Bands { thresholds, values } => {
                 let v = thresholds
                     .iter()
                     .enumerate()
-                    .fold(values[0], |v, (i, &t)| v + (values[i + 1] - values[i]) * step_aa(d, t, w));
+                    .fold(values[0], |v, (i, &t)| v + (values[i + 1] - values[i]) * step_aa(dj, t, w));
                 (Vec3::splat(v), 0.0)
             }
             Model::Lut { table } => {
                 let n = table.len();
                 let cell = |x: f32| ((x.clamp(0.0, 1.0) * n as f32).floor() as usize).min(n - 1);
-                let (lo, hi) = (cell(d - 0.5 * w), cell(d + 0.5 * w));
+                let (lo, hi) = (cell(dj - 0.5 * w), cell(dj + 0.5 * w));
                 if w <= 0.0 || lo == hi {
-                    (Vec3::from(table[cell(d)]), 0.0)
+                    (Vec3::from(table[cell(dj)]), 0.0)
                 } else {
                     let border = (lo + 1) as f32 / n as f32;
-                    let below = ((border - (d - 0.5 * w)) / w).clamp(0.0, 1.0);
+                    let below = ((border - (dj - 0.5 * w)) / w).clamp(0.0, 1.0);
                     (Vec3::from(table[hi]).lerp(Vec3::from(table[lo]), below), 0.0)
                 }
             }
         };
-        c += f * color * Vec3::from(m.diffuse_linear()) + s * color * Vec3::from(m.specular_linear());
+        c +=
+            f * color * Vec3::from(m.diffuse_linear()) * albedo + s * color * Vec3::from(m.specular_linear());
     }
     c
 }

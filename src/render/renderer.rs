@@ -20,6 +20,7 @@ use super::albedo::Albedo;
 use super::color::srgb_to_linear;
 use super::context::{context, GpuContext};
 use super::culling::culls;
+use super::derived_vertices::derived_buffer;
 use super::device::{BackendChoice, GpuInfo};
 use super::effects::frame::{check as check_effects, frame_bytes};
 use super::framing::scene_support;
@@ -28,7 +29,6 @@ use super::graph::effect::{FrameInputs, HostInputs, HostStep};
 use super::graph::report::FrameReport;
 use super::graph::resources::FrameResources;
 use super::graph::{DrawItem, FrameCtx, Recorder};
-use super::hatch_field::HatchField;
 use super::mesh_record::MeshRecord;
 use super::passes::shade::variant::ShadingVariant;
 use super::plan::{plan, Copy, Dest, Plan};
@@ -388,21 +388,29 @@ impl Renderer {
             ));
         }
         let plan = plan(&scene);
-        // each item's culling, and the hatching field its shading needs
-        let (culls, fields): (Vec<_>, Vec<_>) = scene
+        // each item's culling, and the vertex data its shading derives from the mesh
+        let (culls, derived): (Vec<_>, Vec<_>) = scene
             .scene
             .items
             .iter()
             .zip(&records)
             .map(|(item, rec)| {
                 let g = &rec.gpu;
-                let field = ShadingVariant::of(&item.material, g.albedo.as_ref()).field;
-                let field = field.then(|| HatchField::of(&self.ctx, rec)).transpose();
-                (culls(item, g.enclosure, g.placement.origin.into(), g.radius, &cam), field)
+                let variant = ShadingVariant::of(&item.material, g.albedo.as_ref());
+                let derived: Result<Vec<_>> = variant
+                    .derived()
+                    .map(|part| {
+                        Ok((
+                            part.buffer.as_ref().map_or(0, |b| b.slot),
+                            derived_buffer(&self.ctx, rec, part)?,
+                        ))
+                    })
+                    .collect();
+                (culls(item, g.enclosure, g.placement.origin.into(), g.radius, &cam), derived)
             })
             .unzip();
-        let fields = fields.into_iter().collect::<Result<_>>()?;
-        let p = Prepared { scene, records, culls, cam, sphere: bounds.sphere, plan, fields };
+        let derived = derived.into_iter().collect::<Result<_>>()?;
+        let p = Prepared { scene, records, culls, cam, sphere: bounds.sphere, plan, derived };
         p.run_host(&p.plan.host_before, None, report)?;
         Ok(p)
     }
@@ -499,7 +507,7 @@ impl Renderer {
                 material: &item.material,
                 cull,
                 light_cull,
-                field: p.fields[i].as_deref(),
+                derived: &p.derived[i],
             })
             .collect();
         let bg = scene.frame.background;
@@ -653,8 +661,8 @@ pub(crate) struct Prepared {
     /// What the scene's meshes fill (world space).
     pub sphere: Sphere,
     pub plan: Plan,
-    /// Per mesh, its hatching field where its material hatches along one.
-    pub fields: Vec<Option<Arc<wgpu::Buffer>>>,
+    /// Per mesh, the vertex buffers its shading derives from it, each with its slot.
+    pub derived: Vec<Vec<(u32, Arc<wgpu::Buffer>)>>,
 }
 
 impl Prepared {

@@ -13,6 +13,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
 use crate::render::block::BlockLayout;
+use crate::render::stage_part::Part;
 
 use super::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
 use super::{dither, hatching, rim};
@@ -61,6 +62,13 @@ macro_rules! registry {
             let mut s = String::new();
             $(s += &<$settings as SurfaceEffect>::wgsl();)*
             s
+        }
+
+        /// The stage parts the effects declare, in registry order.
+        pub fn parts() -> Vec<&'static Part> {
+            let mut parts = Vec::new();
+            $(parts.extend(<$settings as SurfaceEffect>::PARTS);)*
+            parts
         }
 
         /// Every effect's name and hooks, in the order they run.

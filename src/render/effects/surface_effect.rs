@@ -1,11 +1,13 @@
 //! The interface of a per-pixel effect (`effects::surface` lists them), implemented by its
-//! settings type: its WGSL with its block and hooks, its per-draw block, its part of a
-//! material's pipeline, and its checks. A material's block and pipeline are made from the
+//! settings type: its WGSL with its block and hooks, its per-draw block, the stage parts it
+//! owns (vertex data, varyings and their code: `render::stage_part`), its part of a material's
+//! pipeline, and its checks. A material's block and pipeline are made from the
 //! settings it carries, None where it does not use the effect.
 
 use crate::error::Result;
 use crate::render::block::BlockLayout;
 use crate::render::scene::model::Model;
+use crate::render::stage_part::Part;
 
 /// What a per-pixel effect sees of the rest of a material.
 pub struct Surface<'a> {
@@ -28,11 +30,9 @@ pub enum Hook {
 pub struct Variant {
     /// Pipeline constants (override declarations of its WGSL), the same names for every material.
     pub constants: Vec<(&'static str, f64)>,
-    /// Whether its fragment code reads the anchors (`Fragment.object_pos`, `object_normal`).
-    pub anchored: bool,
-    /// Whether its stages read the hatching field's vertex buffer (the `field` part of
-    /// `graph::mesh_stages`).
-    pub field: bool,
+    /// The stage parts its code reads (`stage_part::ANCHORS` for `Fragment.object_pos` and
+    /// `object_normal`, or parts of its own), in any order.
+    pub parts: Vec<&'static Part>,
 }
 
 pub trait SurfaceEffect: Sized {
@@ -40,6 +40,8 @@ pub trait SurfaceEffect: Sized {
     fn wgsl() -> String;
     /// The hooks its WGSL implements.
     const HOOKS: &'static [Hook];
+    /// The stage parts it declares (those its variants may ask for besides the core's).
+    const PARTS: &'static [&'static Part] = &[];
     /// Its per-draw uniform block.
     fn block() -> BlockLayout;
     /// Checks the settings of a material that uses the effect with the rest of the material;

@@ -1,15 +1,19 @@
 //! The stages of a mesh pipeline, written for what its draw needs: the varyings struct
 //! (`MeshOut`), the vertex entry point `vs_mesh` and the fragment entry point `fs_mesh`, put
-//! together from one declaration per part (`Part`): the mesh's colour and texture, the
-//! material's anchors and hatching field, and the targets the pass writes (`Output`). A draw
-//! passes on only the varyings it reads: a CPU rasteriser sets up every one of them for every
-//! triangle, which on small triangles costs as much as the shading.
+//! together from one declaration per part (`render::stage_part::Part`): the core's (where the
+//! vertex is, the mesh's colour and texture), those a material's effects ask for (the anchors,
+//! an effect's own such as hatching's field), and the targets the pass writes (`Output`). A
+//! draw passes on only the varyings it reads: a CPU rasteriser sets up every one of them for
+//! every triangle, which on small triangles costs as much as the shading.
+
+use std::sync::OnceLock;
 
 use crate::render::device::COLOR_FORMAT;
+use crate::render::effects::surface;
 use crate::render::gpu_albedo;
 use crate::render::gpu_mesh::GpuMesh;
-use crate::render::hatch_field::{HatchField, FIELD_SLOT};
 use crate::render::pipelines::target;
+use crate::render::stage_part::{Part, VertexData, ANCHORS};
 
 use super::target::GeometryLayout;
 
@@ -18,11 +22,8 @@ use super::target::GeometryLayout;
 pub struct MeshStages {
     /// Reads the mesh's colour and texture (`gpu_albedo`: its vertex buffer and bind group).
     pub albedo: bool,
-    /// The fragment stage reads the anchors: the mesh's stored coordinates and normal, and the
-    /// Gouraud colours.
-    pub anchors: bool,
-    /// Reads the hatching field's stripe values (`hatch_field`: a vertex buffer of their own).
-    pub field: bool,
+    /// The parts the material's shading asks for (the anchors, effects' own parts).
+    pub parts: PartSet,
     /// Writes the shaded colour.
     pub color: bool,
     /// Writes the geometry target (after the colour, so that the targets stay contiguous: the GL
@@ -33,34 +34,57 @@ pub struct MeshStages {
     pub clip: Option<&'static str>,
 }
 
-/// A vertex buffer a part reads: its slot, its layout, and the names its attributes take in
-/// the vertex stage, in the layout's order (their locations and types come from the layout).
-struct Buffer {
-    slot: u32,
-    layout: fn() -> wgpu::VertexBufferLayout<'static>,
-    names: &'static [&'static str],
+/// The parts a material may ask for, in the order their varyings and code follow each other:
+/// the anchors, then the parts the per-pixel effects declare (`effects::surface::parts`).
+pub fn requestable() -> &'static [&'static Part] {
+    static PARTS: OnceLock<Vec<&'static Part>> = OnceLock::new();
+    PARTS.get_or_init(|| {
+        let mut parts = vec![&ANCHORS];
+        parts.extend(surface::parts());
+        assert!(parts.len() <= 8, "PartSet holds 8 parts");
+        parts
+    })
 }
 
-/// One part of a mesh pipeline's stages.
-struct Part {
-    name: &'static str,
-    /// The varyings it adds (name, WGSL type).
-    varyings: &'static [(&'static str, &'static str)],
-    buffer: Option<Buffer>,
-    /// Vertex code: sets its varyings on `o` from the vertex's attributes.
-    vertex: &'static [&'static str],
-    /// Fragment code before the shading: fills in the pixel `f` (a `Fragment`) and the Gouraud
-    /// colours `lit` from the varyings `i`.
-    fragment: &'static [&'static str],
-    /// Fragment code after the shading (every derivative taken).
-    after: &'static [&'static str],
+/// A set of requestable parts (bit i: `requestable()[i]`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct PartSet(u8);
+
+impl PartSet {
+    /// The set of `parts` (each requestable: an effect's part is declared in its `PARTS`).
+    pub fn of(parts: &[&'static Part]) -> Self {
+        let all = requestable();
+        PartSet(parts.iter().fold(0, |bits, p| {
+            let i = all.iter().position(|q| q == p);
+            bits | 1 << i.unwrap_or_else(|| panic!("part {} is not declared by an effect", p.name))
+        }))
+    }
+
+    pub fn contains(&self, part: &Part) -> bool {
+        self.iter().any(|p| p == part)
+    }
+
+    /// Its parts, in `requestable()` order.
+    pub fn iter(&self) -> impl Iterator<Item = &'static Part> + '_ {
+        requestable().iter().enumerate().filter(|(i, _)| self.0 >> i & 1 == 1).map(|(_, p)| *p)
+    }
+
+    /// Every subset of the requestable parts.
+    pub fn all() -> impl Iterator<Item = PartSet> {
+        (0..1u16 << requestable().len()).map(|b| PartSet(b as u8))
+    }
 }
 
 /// Where the vertex is: every mesh pipeline reads the mesh's positions and normals.
-const POSITION: Part = Part {
+static POSITION: Part = Part {
     name: "position",
     varyings: &[("view_pos", "vec3<f32>"), ("view_normal", "vec3<f32>")],
-    buffer: Some(Buffer { slot: 0, layout: GpuMesh::vertex_layout, names: &["position", "normal"] }),
+    buffer: Some(VertexData {
+        slot: 0,
+        layout: GpuMesh::vertex_layout,
+        names: &["position", "normal"],
+        derive: None,
+    }),
     vertex: &[
         "let p = draw.mesh.model_view * vec4<f32>(position, 1.0);",
         "o.view_pos = p.xyz;",
@@ -73,50 +97,15 @@ const POSITION: Part = Part {
     after: &[],
 };
 
-/// The mesh's stored coordinates and normal (what hatching and dithering anchor to) and the
-/// Gouraud colours.
-const ANCHORS: Part = Part {
-    name: "anchors",
-    varyings: &[
-        ("color_front", "vec3<f32>"),
-        ("color_back", "vec3<f32>"),
-        ("object_pos", "vec3<f32>"),
-        ("object_normal", "vec3<f32>"),
-    ],
-    buffer: None,
-    vertex: &[
-        "let shaded = gouraud(o.view_normal, o.view_pos);",
-        "o.color_front = shaded.front;",
-        "o.color_back = shaded.back;",
-        "o.object_pos = position;",
-        "o.object_normal = normal;",
-    ],
-    fragment: &[
-        "f.object_pos = i.object_pos;",
-        "f.object_normal = i.object_normal;",
-        "lit = Gouraud(i.color_front, i.color_back);",
-    ],
-    after: &[],
-};
-
-/// The hatching field's stripe values (src/render/hatch_field.rs).
-const FIELD: Part = Part {
-    name: "field",
-    varyings: &[("stripes", "vec4<f32>")],
-    buffer: Some(Buffer { slot: FIELD_SLOT, layout: HatchField::vertex_layout, names: &["stripes"] }),
-    vertex: &["o.stripes = stripes;"],
-    fragment: &["f.stripes = i.stripes;"],
-    after: &[],
-};
-
 /// The mesh's colour and texture (shaders/albedo.wgsl), and its alpha cutoff.
-const ALBEDO: Part = Part {
+static ALBEDO: Part = Part {
     name: "albedo",
     varyings: &[("color", "vec4<f32>"), ("uv", "vec2<f32>")],
-    buffer: Some(Buffer {
+    buffer: Some(VertexData {
         slot: gpu_albedo::SLOT,
         layout: gpu_albedo::vertex_layout,
         names: &["color", "uv"],
+        derive: None,
     }),
     vertex: &["o.color = color;", "o.uv = uv;"],
     fragment: &["let a = albedo_sample(i.color, i.uv);", "albedo = a.rgb;"],
@@ -125,7 +114,7 @@ const ALBEDO: Part = Part {
 
 /// Gouraud shading of a coloured mesh: the highlight apart from the rest (ambient and diffuse
 /// of a white surface), so that the albedo multiplies only the rest, per pixel.
-const ALBEDO_GOURAUD: Part = Part {
+static ALBEDO_GOURAUD: Part = Part {
     name: "albedo_gouraud",
     varyings: &[("specular_front", "vec3<f32>"), ("specular_back", "vec3<f32>")],
     buffer: None,
@@ -175,15 +164,10 @@ impl MeshStages {
     /// Its parts, in the order their varyings and code follow each other.
     fn parts(&self) -> Vec<&'static Part> {
         let mut parts = vec![&POSITION];
-        if self.anchors {
-            parts.push(&ANCHORS);
-        }
-        if self.field {
-            parts.push(&FIELD);
-        }
+        parts.extend(self.parts.iter());
         if self.albedo {
             parts.push(&ALBEDO);
-            if self.anchors {
+            if self.parts.contains(&ANCHORS) {
                 parts.push(&ALBEDO_GOURAUD);
             }
         }
@@ -222,14 +206,13 @@ impl MeshStages {
         format!("{}{clip} -> {}", parts.join(" + "), targets.join(" + "))
     }
 
-    /// A pipeline-cache key's bits for it.
+    /// A pipeline-cache key's bits for it (13 of them).
     pub fn bits(&self) -> u64 {
         self.albedo as u64
-            | (self.anchors as u64) << 1
-            | (self.field as u64) << 2
-            | (self.color as u64) << 3
-            | self.geometry.map_or(0, |g| 1 + g as u64) << 4
-            | (self.clip.is_some() as u64) << 6
+            | (self.color as u64) << 1
+            | self.geometry.map_or(0, |g| 1 + g as u64) << 2
+            | (self.clip.is_some() as u64) << 4
+            | (self.parts.0 as u64) << 5
     }
 
     /// The formats of the targets it writes, in order.
@@ -304,8 +287,8 @@ impl MeshStages {
         s + if outputs.is_empty() { "}\n" } else { "    return out;\n}\n" }
     }
 
-    /// Every combination: the mesh's colour or none, the material's anchors and field or none,
-    /// and every set of targets a pass writes.
+    /// Every combination: the mesh's colour or none, every set of the parts a material may ask
+    /// for, and every set of targets a pass writes.
     pub fn all() -> Vec<MeshStages> {
         let targets = [
             (true, None),
@@ -316,9 +299,9 @@ impl MeshStages {
         ];
         let mut all = Vec::new();
         for albedo in [false, true] {
-            for (anchors, field) in [(false, false), (true, false), (true, true), (false, true)] {
+            for parts in PartSet::all() {
                 for (color, geometry) in targets {
-                    all.push(MeshStages { albedo, anchors, field, color, geometry, clip: None });
+                    all.push(MeshStages { albedo, parts, color, geometry, clip: None });
                 }
             }
         }
@@ -334,7 +317,8 @@ mod tests {
     fn varyings_are_only_what_the_parts_add() {
         let plain = MeshStages { color: true, ..Default::default() }.wgsl();
         assert!(plain.contains("@location(1) view_normal") && !plain.contains("@location(2)"), "{plain}");
-        let all = MeshStages { albedo: true, anchors: true, field: true, color: true, ..Default::default() };
+        let parts = PartSet::of(requestable());
+        let all = MeshStages { albedo: true, parts, color: true, ..Default::default() };
         let s = all.wgsl();
         assert!(s.contains("@location(10) specular_back: vec3<f32>"), "{s}");
         // the attributes' locations are the vertex layouts'
@@ -349,5 +333,21 @@ mod tests {
         let bits: std::collections::HashSet<_> = all.iter().map(MeshStages::bits).collect();
         assert_eq!(names.len(), all.len());
         assert_eq!(bits.len(), all.len());
+        assert!(all.iter().all(|s| s.bits() < 1 << 13));
+    }
+
+    #[test]
+    fn parts_have_their_own_names_slots_and_locations() {
+        let mut parts = vec![&POSITION, &ALBEDO, &ALBEDO_GOURAUD];
+        parts.extend(requestable());
+        let names: std::collections::HashSet<_> = parts.iter().map(|p| p.name).collect();
+        assert_eq!(names.len(), parts.len());
+        let buffers: Vec<_> = parts.iter().filter_map(|p| p.buffer.as_ref()).collect();
+        let slots: std::collections::HashSet<_> = buffers.iter().map(|b| b.slot).collect();
+        assert_eq!(slots.len(), buffers.len());
+        let locations: Vec<u32> =
+            buffers.iter().flat_map(|b| (b.layout)().attributes.iter().map(|a| a.shader_location)).collect();
+        let distinct: std::collections::HashSet<_> = locations.iter().collect();
+        assert_eq!(distinct.len(), locations.len(), "{locations:?}");
     }
 }

@@ -91,8 +91,9 @@ pub struct DrawItem<'a> {
     /// The faces the camera's passes may skip, and those the shadow map may (`render::culling`).
     pub cull: Option<wgpu::Face>,
     pub light_cull: Option<wgpu::Face>,
-    /// The mesh's hatching field, where its material hatches along it (`render::hatch_field`).
-    pub field: Option<&'a wgpu::Buffer>,
+    /// The vertex buffers its shading derives from the mesh, each with its slot
+    /// (`render::derived_vertices`).
+    pub derived: &'a [(u32, std::sync::Arc<wgpu::Buffer>)],
 }
 
 impl<'a> DrawItem<'a> {
@@ -190,8 +191,8 @@ impl FrameCtx<'_> {
                 pass.set_vertex_buffer(gpu_albedo::SLOT, a.vertices.slice(..));
                 pass.set_bind_group(gpu_albedo::GROUP, &a.group, &[]);
             }
-            if let Some(field) = d.field {
-                pass.set_vertex_buffer(crate::render::hatch_field::FIELD_SLOT, field.slice(..));
+            for (slot, buffer) in d.derived {
+                pass.set_vertex_buffer(*slot, buffer.slice(..));
             }
             match &d.mesh.indices {
                 Some(ib) => {

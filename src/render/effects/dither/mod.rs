@@ -10,6 +10,7 @@ use crate::error::{Error, Result};
 use crate::render::block::Block;
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
 use crate::render::settings::check_bounds;
+use crate::render::stage_part::ANCHORS;
 use crate::render::wgsl;
 
 /// How far (in L.n) dithering moves a pixel toward the neighbouring band, when none is given.
@@ -155,8 +156,7 @@ impl SurfaceEffect for Dither {
                 ("DITHER", dither.map_or(0, |d| d.pattern.id()) as f64),
                 ("DITHER_OBJECT", object as u32 as f64),
             ],
-            anchored: object,
-            field: false,
+            parts: if object { vec![&ANCHORS] } else { vec![] },
         }
     }
 }

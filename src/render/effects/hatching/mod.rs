@@ -9,6 +9,7 @@
 //! the paper's straight strokes mapped triplanar in the mesh's own coordinates.
 
 pub mod field;
+pub mod field_part;
 
 use serde::{Deserialize, Serialize};
 
@@ -18,7 +19,10 @@ use crate::render::block::{vec4, Block};
 use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
 use crate::render::scene::model::Model;
+use crate::render::stage_part::{Part, ANCHORS};
 use crate::render::wgsl;
+
+use field_part::FIELD;
 
 /// Stroke layers of the hatching, added one by one as the tone darkens: along the first
 /// principal direction, along the second (cross-hatching), then each again between the strokes
@@ -131,6 +135,7 @@ impl SurfaceEffect for Hatching {
     }
 
     const HOOKS: &'static [Hook] = &[Hook::Finish];
+    const PARTS: &'static [&'static Part] = &[&FIELD];
 
     fn block() -> crate::render::block::BlockLayout {
         HatchingBlock::layout()
@@ -158,8 +163,11 @@ impl SurfaceEffect for Hatching {
         let field = hatching.is_some_and(|h| h.mode == HatchMode::Field);
         Variant {
             constants: vec![("HATCHING", on as u32 as f64), ("HATCH_FIELD", field as u32 as f64)],
-            anchored: on,
-            field,
+            parts: match (on, field) {
+                (true, true) => vec![&ANCHORS, &FIELD],
+                (true, false) => vec![&ANCHORS],
+                _ => vec![],
+            },
         }
     }
 }
@@ -173,11 +181,12 @@ pub fn stroke(x: f64, px: f64, width: f64) -> f64 {
 
 /// Coverage of one family of strokes along coordinate `u` (strokes at its integers), whose
 /// change across a pixel is `per_pixel`: about `spacing` pixels apart on screen, from the two
-/// octaves of the pattern that bracket that spacing, shifted by `offset` strokes, and never
-/// coarser than `u`'s own integers (`stroke_octaves` in hatching.wgsl, with `lowest` = 0).
-pub fn stroke_octaves(u: f64, per_pixel: f64, offset: f64, spacing: f64, width: f64) -> f64 {
+/// octaves of the pattern that bracket that spacing, shifted by `offset` strokes, and no octave
+/// coarser than 2^`lowest` (`stroke_octaves` in hatching.wgsl).
+pub fn stroke_octaves(u: f64, per_pixel: f64, offset: f64, lowest: f64, h: &Hatching) -> f64 {
+    let (spacing, width) = (h.spacing, h.width);
     let px = per_pixel.max(1e-30);
-    let level = (1.0 / (spacing * px)).log2().max(0.0);
+    let level = (1.0 / (spacing * px)).log2().max(lowest);
     let base = level.floor();
     let f = base.exp2();
     let coarse = stroke(u * f + offset, f * px, width);
@@ -202,8 +211,33 @@ pub fn stripe_phase(psi: [f64; 2], dx: [f64; 2], dy: [f64; 2]) -> (f64, f64, f64
 pub fn field_coverage(psi: [[f64; 2]; 2], dx: [[f64; 2]; 2], dy: [[f64; 2]; 2], h: &Hatching) -> [f64; 4] {
     let [a, b] = [0, 1].map(|k| stripe_phase(psi[k], dx[k], dy[k]));
     let at =
-        |(u, px, fade): (f64, f64, f64), offset| stroke_octaves(u, px, offset, h.spacing, h.width) * fade;
+        // a phase repeats at u's integers, so no octave is coarser than them
+        |(u, px, fade): (f64, f64, f64), offset| stroke_octaves(u, px, offset, 0.0, h) * fade;
     [at(a, 0.0), at(b, 0.0), at(a, 0.5), at(b, 0.5)]
+}
+
+/// The four layers' coverage of triplanar hatching at a pixel (`hatch_layers` in
+/// hatching.wgsl): strokes at 45, -45, 0 and 90 degrees on each axis plane of the object-space
+/// point `p`, blended by the object normal `n`; `dpx`, `dpy`: the point's change across the
+/// pixel in x and y.
+pub fn triplanar_coverage(p: [f64; 3], n: [f64; 3], dpx: [f64; 3], dpy: [f64; 3], h: &Hatching) -> [f64; 4] {
+    let len = n.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let w4 = n.map(|c| if len > 0.0 { (c / len).abs().powi(4) } else { 0.0 });
+    let sum = (w4[0] + w4[1] + w4[2]).max(1e-12);
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    // the plane's two coordinates of a point: (y, z), (z, x), (x, y)
+    let planes = [[1, 2], [2, 0], [0, 1]];
+    let mut cover = [0.0; 4];
+    for (k, [a, b]) in planes.into_iter().enumerate() {
+        // each layer's coordinate, linear in the point
+        let coords = |q: [f64; 3]| [s * (q[a] + q[b]), s * (q[a] - q[b]), q[b], q[a]];
+        let (u, ux, uy) = (coords(p), coords(dpx), coords(dpy));
+        for layer in 0..4 {
+            let strokes = stroke_octaves(u[layer], ux[layer].abs() + uy[layer].abs(), 0.0, -1e30, h);
+            cover[layer] += w4[k] / sum * strokes;
+        }
+    }
+    cover
 }
 
 /// The linear colour of hatching at tone `tone` with the layers' coverage `layers` (the

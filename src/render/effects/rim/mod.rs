@@ -145,6 +145,6 @@ impl SurfaceEffect for Rim {
     }
 
     fn variant(rim: Option<&Rim>) -> Variant {
-        Variant { constants: vec![("RIM", rim.is_some() as u32 as f64)], anchored: false, field: false }
+        Variant { constants: vec![("RIM", rim.is_some() as u32 as f64)], parts: vec![] }
     }
 }
