@@ -73,6 +73,36 @@ def test_ten_dropped_viewers_leave_threads_meshes_widgets_and_memory_as_they_wer
     assert grown < 20, f"RSS grew by {grown:.1f} MB over 10 viewers"
 
 
+def test_ten_kept_viewers_of_one_mesh_share_its_upload_as_re_runs_kept_in_out_do(mesh):
+    """A cell that ends in a bare ``v``, run again and again, keeps every viewer alive in
+    IPython's ``Out``: viewers of the same meshes (the same contents, as a file read again
+    gives) share one upload, freed with the last of them."""
+    need("anywidget")
+    renderer = tm._render.shared_renderer(None)
+    first = tm.Viewer(*mesh, outlines="mesh", width=512, height=512)  # first-use allocations out of the count
+    gc.collect()
+    threads, meshes, rss = threading.active_count(), renderer._engine.mesh_count, _rss_mb()
+    V, F = mesh
+    kept = [tm.Viewer(V.copy(), F.copy(), outlines="mesh", width=512, height=512) for _ in range(10)]
+    gc.collect()
+    time.sleep(0.2)
+    assert renderer._engine.mesh_count == meshes  # the first viewer's upload, shared
+    assert threading.active_count() == threads
+    grown = _rss_mb() - rss
+    assert grown < 20, f"RSS grew by {grown:.1f} MB over 10 kept viewers"
+    # another mesh is an upload of its own; the shared one goes with the last viewer holding it
+    other = tm.Viewer(V * 2.0, F, width=64, height=64)
+    assert renderer._engine.mesh_count == meshes + 1
+    first.close()
+    kept[0].close()
+    assert renderer._engine.mesh_count == meshes + 1
+    del first, kept
+    gc.collect()
+    assert renderer._engine.mesh_count == meshes
+    other.close()
+    assert renderer._engine.mesh_count == meshes - 1
+
+
 def test_a_closed_viewer_frees_everything_and_says_it_is_closed_when_used(mesh, tmp_path):
     need("anywidget")
     need("ipywidgets")

@@ -37,10 +37,11 @@ from toonmesh import _core
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
 from toonmesh._described import default
 from toonmesh._load import is_scene
-from toonmesh._render import (PlacedMesh, Renderer, draw, draw_views, own_colours, place_meshes, remove_meshes,
+from toonmesh._render import (PlacedMesh, Renderer, draw, draw_views, own_colours,
                               scene_items, shared_renderer)
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
+from toonmesh._viewer_uploads import SharedUpload, shared_upload
 from toonmesh._video import DEFAULT_FPS, VIDEO_SUFFIXES, check_fps, video_writer
 
 if TYPE_CHECKING:
@@ -303,11 +304,12 @@ class Viewer:
         self._shared = _Shared()
         self._state_lock = self._shared.lock
         self._render_lock = threading.RLock()
-        # what the finaliser frees (close(), or the viewer freed): the meshes this viewer uploaded
-        # (not MeshHandles it was given) and the front end's widgets
-        self._uploaded: List[MeshHandle] = []
+        # what the finaliser frees (close(), or the viewer freed): the upload of its meshes (shared
+        # with live viewers of the same meshes; not MeshHandles it was given) and the front end's
+        # widgets
+        self._uploads: List[SharedUpload] = []
         self._front: List[Any] = []
-        self._release = weakref.finalize(self, _release, self._shared, self._renderer, self._uploaded, self._front)
+        self._release = weakref.finalize(self, _release, self._shared, self._uploads, self._front)
         self._mesh_source = _mesh_source(vertices, faces)
         self._placed, self._placed_own, self._center = self._upload(vertices, faces, normals, smooth_iterations)
         self.render_count = 0
@@ -337,8 +339,9 @@ class Viewer:
         if not items:
             raise ValueError("vertices: the scene has no mesh")
         meshes = [item if isinstance(item, Mesh) else Mesh(item) for item in items]  # a MeshHandle in a list
-        placed, uploaded = place_meshes(self._renderer, meshes, smooth_iterations, where="vertices")
-        self._uploaded.extend(uploaded)
+        upload = shared_upload(self._renderer, meshes, smooth_iterations, where="vertices")
+        self._uploads.append(upload)
+        placed = upload.placed(meshes)
         try:
             own = own_colours(meshes, self._options, None)  # the same meshes, some under another material
             placed_own = [p._replace(material=o.material) for p, o in zip(placed, own)]
@@ -363,8 +366,7 @@ class Viewer:
         return (np.min(lows, axis=0) + np.max(highs, axis=0)) / 2 if lows else np.zeros(3)
 
     def _free_meshes(self) -> None:
-        remove_meshes(self._renderer, self._uploaded)
-        self._uploaded.clear()
+        self._uploads.clear()
 
     def _options_transform(self) -> np.ndarray:
         return np.asarray(self._options.transform, np.float64)
@@ -773,15 +775,15 @@ def _serve(ref: "weakref.ref[Viewer]", shared: _Shared) -> None:
             del viewer
 
 
-def _release(shared: _Shared, renderer: Renderer, uploaded: List[MeshHandle], front: List[Any]) -> None:
+def _release(shared: _Shared, uploads: List[SharedUpload], front: List[Any]) -> None:
     """Frees a viewer's resources (its close(), or its finaliser once nothing refers to it):
-    ends its render thread, frees the meshes it uploaded and closes its widgets."""
+    ends its render thread, lets go of its meshes' upload (freed with the last viewer that
+    shares it) and closes its widgets."""
     with shared.lock:
         shared.closed = True
         shared.wanted = None
         shared.wake.notify_all()
-    remove_meshes(renderer, uploaded)
-    uploaded.clear()
+    uploads.clear()
     for item in reversed(front):  # the controls (a ControlPanel: its box and every control), then the frame's widget
         item.close()
     front.clear()
