@@ -14,8 +14,6 @@ pub const COLOR_LOCATION: u32 = 8;
 pub const UV_LOCATION: u32 = 9;
 /// The vertex buffer slot of the albedo attributes.
 pub const SLOT: u32 = 1;
-/// The bind group of the texture and its sampler in the shading pass.
-pub const GROUP: u32 = 3;
 
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]

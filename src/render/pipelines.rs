@@ -8,7 +8,6 @@ use std::sync::{Arc, Mutex};
 use wgpu::TextureSampleType;
 
 use crate::render::effects::shadows::settings::ShadowFilter;
-use crate::render::gpu_albedo;
 
 const FRAGMENT: wgpu::ShaderStages = wgpu::ShaderStages::FRAGMENT;
 const VERTEX_FRAGMENT: wgpu::ShaderStages = wgpu::ShaderStages::VERTEX_FRAGMENT;
@@ -46,8 +45,6 @@ pub struct Layouts {
     pub float_texture: wgpu::BindGroupLayout,
     /// The shadow map (a depth texture) and its comparison sampler.
     pub shadow: wgpu::BindGroupLayout,
-    /// A mesh's texture and its sampler (`gpu_albedo`).
-    pub albedo: wgpu::BindGroupLayout,
 }
 
 /// A bind group layout of `entries` (binding 0, 1, ...), each seen by `visibility`.
@@ -131,7 +128,6 @@ impl PipelineCache {
                         wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
                     ],
                 ),
-                albedo: gpu_albedo::bind_group_layout(device),
             },
             shadow_samplers: [
                 shadow_sampler(device, ShadowFilter::Nearest),

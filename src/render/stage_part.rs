@@ -1,7 +1,8 @@
 //! One part of a mesh pipeline's stages, as the core and a per-pixel effect declare it: the
 //! varyings it passes from the vertex to the fragment stage, the vertex data it reads (the
 //! mesh's own buffers, or values an effect derives from the mesh, made once and kept with it),
-//! and its lines of vertex and fragment code. `graph::mesh_stages` writes the stages of a draw
+//! the bind group it reads (its variables and layout; the stages give it a group index), its
+//! WGSL at module scope, and its lines of vertex and fragment code. `graph::mesh_stages` writes the stages of a draw
 //! from the parts it needs; an effect asks for parts through its `Variant`
 //! (`effects::surface_effect`) and lists the ones it owns in the registry (`effects::surface`).
 //! Plain data: no device.
@@ -38,6 +39,16 @@ pub struct UploadedMesh<'a> {
     pub uploaded_faces: &'a [[u32; 3]],
 }
 
+/// A bind group a part reads: its variables, bound 0, 1, ... in order. The stages declare them
+/// in the group they give the part (`MeshStages::groups`: after the frame's, the draw's and a
+/// shading hook's), and the pipeline's layout takes `layout` there.
+pub struct Bindings {
+    /// Each variable's name and WGSL type, e.g. `("albedo_texture", "texture_2d<f32>")`.
+    pub vars: &'static [(&'static str, &'static str)],
+    /// The group's layout: one entry per variable, in order.
+    pub layout: fn(&wgpu::Device) -> wgpu::BindGroupLayout,
+}
+
 /// One part of a mesh pipeline's stages.
 pub struct Part {
     /// Its name: unique among parts (the stages' name, and derived data's cache key).
@@ -45,6 +56,10 @@ pub struct Part {
     /// The varyings it adds (name, WGSL type).
     pub varyings: &'static [(&'static str, &'static str)],
     pub buffer: Option<VertexData>,
+    pub bindings: Option<Bindings>,
+    /// WGSL at module scope (functions and pipeline constants its code calls), written once
+    /// into the stages that have the part.
+    pub module: &'static str,
     /// Vertex code: sets its varyings on `o` from the vertex's attributes (`p`: the view-space
     /// position, after the `position` part).
     pub vertex: &'static [&'static str],
@@ -66,6 +81,8 @@ pub static ANCHORS: Part = Part {
         ("object_normal", "vec3<f32>"),
     ],
     buffer: None,
+    bindings: None,
+    module: "",
     vertex: &[
         "let shaded = gouraud(o.view_normal, o.view_pos);",
         "o.color_front = shaded.front;",

@@ -1,7 +1,6 @@
 //! The two kinds of pipeline passes build: mesh draws (the camera's passes and the shadow map)
 //! and full-screen triangles (image passes), and the states they share.
 
-use crate::render::gpu_albedo;
 use crate::render::pipelines::PipelineKey;
 
 use super::mesh_stages::MeshStages;
@@ -42,16 +41,21 @@ pub struct MeshDraw<'a> {
 }
 
 /// A pipeline that draws meshes (groups 0 and 1: frame and draw uniforms, then `more`, then
-/// the albedo group at `gpu_albedo::GROUP` when its stages read the mesh's colour) with depth
-/// testing.
+/// the groups its stages' parts read, each at the index the stages give it) with depth testing.
 pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<'_>) -> wgpu::RenderPipeline {
     let device = &f.dev.device;
     let layouts = &f.pipelines.layouts;
+    let part_groups: Vec<(u32, wgpu::BindGroupLayout)> = d
+        .stages
+        .groups()
+        .into_iter()
+        .filter_map(|(g, part)| part.bindings.as_ref().map(|b| (g, (b.layout)(device))))
+        .collect();
     let mut groups = vec![Some(&layouts.frame), Some(&layouts.draw)];
     groups.extend(d.more.iter().copied());
-    if d.stages.albedo {
-        groups.resize(gpu_albedo::GROUP as usize, None);
-        groups.push(Some(&layouts.albedo));
+    for (g, layout) in &part_groups {
+        groups.resize(groups.len().max(*g as usize), None);
+        groups.push(Some(layout));
     }
     let layout = f.pipelines.layout_with_gaps(device, d.label, &groups);
     let options = wgpu::PipelineCompilationOptions { constants: d.constants, ..Default::default() };
@@ -87,22 +91,23 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
 }
 
 /// The pipeline of a depth pass's draw (one sample a pixel, no bind group but the frame's, the
-/// draw's and the mesh's colour): the geometry pass's and the shadow map's, cached under
-/// `label` with the stages, the cull mode and the constants.
+/// draw's and its stages' parts', no WGSL but its stages'): the geometry pass's and the shadow
+/// map's, cached under `label` with the stages, the cull mode and the constants; with its
+/// stages, for `FrameCtx::draw_meshes`.
 pub fn depth_pass_pipeline(
     f: &FrameCtx<'_>,
     label: &'static str,
-    wgsl: &str,
     stages: MeshStages,
     constants: Vec<(&'static str, f64)>,
     cull: Option<wgpu::Face>,
-) -> std::sync::Arc<wgpu::RenderPipeline> {
-    let key = PipelineKey::new(label, stages.bits() | cull_bits(cull) << 8).with(&constants);
-    f.pipelines.get(key, || {
-        let module = f.mesh_module(label, wgsl, stages, None);
+) -> (std::sync::Arc<wgpu::RenderPipeline>, MeshStages) {
+    let key = PipelineKey::new(label, stages.bits() | cull_bits(cull) << 16).with(&constants);
+    let pipeline = f.pipelines.get(key, || {
+        let module = f.mesh_module(label, "", stages, None);
         let draw = MeshDraw { label, stages, samples: 1, constants: &constants, more: &[], cull };
         mesh_pipeline(f, &module, draw)
-    })
+    });
+    (pipeline, stages)
 }
 
 /// A pipeline that covers the output with one triangle (`vs_fullscreen` in common.wgsl).

@@ -13,7 +13,7 @@ use crate::render::effects::surface;
 use crate::render::gpu_albedo;
 use crate::render::gpu_mesh::GpuMesh;
 use crate::render::pipelines::target;
-use crate::render::stage_part::{Part, VertexData, ANCHORS};
+use crate::render::stage_part::{Bindings, Part, VertexData, ANCHORS};
 
 use super::target::GeometryLayout;
 
@@ -33,6 +33,10 @@ pub struct MeshStages {
     /// camera's projection (`frame.view.proj`): the shadow-casting light's, for the shadow map.
     pub clip: Option<&'static str>,
 }
+
+/// The first bind group the parts' bindings take: after the frame's (0), the draw's (1) and a
+/// shading hook's (2).
+pub const FIRST_PART_GROUP: u32 = 3;
 
 /// The parts a material may ask for, in the order their varyings and code follow each other:
 /// the anchors, then the parts the per-pixel effects declare (`effects::surface::parts`).
@@ -85,6 +89,8 @@ static POSITION: Part = Part {
         names: &["position", "normal"],
         derive: None,
     }),
+    bindings: None,
+    module: "",
     vertex: &[
         "let p = draw.mesh.model_view * vec4<f32>(position, 1.0);",
         "o.view_pos = p.xyz;",
@@ -98,7 +104,7 @@ static POSITION: Part = Part {
 };
 
 /// The mesh's colour and texture (shaders/albedo.wgsl), and its alpha cutoff.
-static ALBEDO: Part = Part {
+pub static ALBEDO: Part = Part {
     name: "albedo",
     varyings: &[("color", "vec4<f32>"), ("uv", "vec2<f32>")],
     buffer: Some(VertexData {
@@ -107,6 +113,11 @@ static ALBEDO: Part = Part {
         names: &["color", "uv"],
         derive: None,
     }),
+    bindings: Some(Bindings {
+        vars: &[("albedo_texture", "texture_2d<f32>"), ("albedo_sampler", "sampler")],
+        layout: gpu_albedo::bind_group_layout,
+    }),
+    module: include_str!("../shaders/albedo.wgsl"),
     vertex: &["o.color = color;", "o.uv = uv;"],
     fragment: &["let a = albedo_sample(i.color, i.uv);", "albedo = a.rgb;"],
     after: &["if (a.a < ALPHA_CUTOFF) {", "    discard;", "}"],
@@ -118,6 +129,8 @@ static ALBEDO_GOURAUD: Part = Part {
     name: "albedo_gouraud",
     varyings: &[("specular_front", "vec3<f32>"), ("specular_back", "vec3<f32>")],
     buffer: None,
+    bindings: None,
+    module: "",
     vertex: &[
         "albedo = vec3<f32>(0.0);",
         "let highlight = gouraud(o.view_normal, o.view_pos);",
@@ -215,6 +228,18 @@ impl MeshStages {
             | (self.parts.0 as u64) << 5
     }
 
+    /// The bind groups its parts read, each with its group index (from `FIRST_PART_GROUP`, in
+    /// the parts' order).
+    pub fn groups(&self) -> Vec<(u32, &'static Part)> {
+        let with_bindings = self.parts().into_iter().filter(|p| p.bindings.is_some());
+        (FIRST_PART_GROUP..).zip(with_bindings).collect()
+    }
+
+    /// The group index of `part`'s bindings (None: the stages do not read them).
+    pub fn group_of(&self, part: &Part) -> Option<u32> {
+        self.groups().into_iter().find(|(_, p)| *p == part).map(|(g, _)| g)
+    }
+
     /// The formats of the targets it writes, in order.
     pub fn targets(&self) -> Vec<Option<wgpu::ColorTargetState>> {
         let mut targets = Vec::new();
@@ -241,6 +266,16 @@ impl MeshStages {
         let parts = self.parts();
         let outputs = self.outputs();
         let mut s = format!("// written by src/render/graph/mesh_stages.rs for {}\n\n", self.name());
+        for p in parts.iter().filter(|p| !p.module.is_empty()) {
+            s += &format!("// {}\n{}\n", p.name, p.module);
+        }
+        for (group, p) in self.groups() {
+            let vars = p.bindings.as_ref().map_or(&[][..], |b| b.vars);
+            for (binding, (name, ty)) in vars.iter().enumerate() {
+                s += &format!("@group({group}) @binding({binding}) var {name}: {ty};\n");
+            }
+            s += "\n";
+        }
         s += "struct MeshOut {\n    @builtin(position) clip: vec4<f32>,\n";
         let varyings = parts.iter().flat_map(|p| p.varyings.iter());
         for (location, (name, ty)) in varyings.enumerate() {
@@ -324,6 +359,12 @@ mod tests {
         // the attributes' locations are the vertex layouts'
         let color = gpu_albedo::COLOR_LOCATION;
         assert!(s.contains(&format!("@location({color}) color: vec4<f32>")), "{s}");
+        // the albedo part's bindings, declared in the group the stages give it, and its
+        // module-scope code, only where the part is
+        assert_eq!(all.group_of(&ALBEDO), Some(FIRST_PART_GROUP));
+        let group = format!("@group({FIRST_PART_GROUP}) @binding(1) var albedo_sampler: sampler;");
+        assert!(s.contains(&group) && s.contains("fn albedo_sample"), "{s}");
+        assert!(plain.find("albedo_sample").is_none() && MeshStages::default().groups().is_empty());
     }
 
     #[test]

@@ -20,7 +20,7 @@ use super::gpu_mesh::GpuMesh;
 use super::pipelines::PipelineCache;
 use super::wgsl;
 use effect::ShadeHook;
-use mesh_stages::MeshStages;
+use mesh_stages::{MeshStages, ALBEDO};
 use resources::FrameResources;
 use target::{Shape, Use};
 
@@ -160,36 +160,28 @@ impl FrameCtx<'_> {
         })
     }
 
-    /// Draws every mesh, switching pipelines only when the variant changes.
+    /// Draws every mesh with the pipeline `pipeline_for` gives it, switching pipelines only
+    /// when the variant changes, and binds what the pipeline's stages read: the mesh's
+    /// positions, its colour (vertex buffer and texture group) where the stages have the albedo
+    /// part, and the vertex data derived for its shading.
     pub fn draw_meshes(
         &self,
         pass: &mut wgpu::RenderPass<'_>,
-        pipeline_for: impl Fn(&DrawItem<'_>) -> Arc<wgpu::RenderPipeline>,
-    ) {
-        self.draw_meshes_with(pass, pipeline_for, |_| false)
-    }
-
-    /// `draw_meshes`, binding a coloured mesh's albedo (vertex buffer and texture) where
-    /// `with_albedo` says its pipeline reads them.
-    pub fn draw_meshes_with(
-        &self,
-        pass: &mut wgpu::RenderPass<'_>,
-        pipeline_for: impl Fn(&DrawItem<'_>) -> Arc<wgpu::RenderPipeline>,
-        with_albedo: impl Fn(&DrawItem<'_>) -> bool,
+        pipeline_for: impl Fn(&DrawItem<'_>) -> (Arc<wgpu::RenderPipeline>, MeshStages),
     ) {
         pass.set_bind_group(0, &self.res.uniforms.frame_group, &[]);
         let mut current: Option<Arc<wgpu::RenderPipeline>> = None;
         for d in self.draws {
-            let p = pipeline_for(d);
+            let (p, stages) = pipeline_for(d);
             if current.as_ref().is_none_or(|c| !Arc::ptr_eq(c, &p)) {
                 pass.set_pipeline(&p);
                 current = Some(p);
             }
             pass.set_bind_group(1, &self.res.uniforms.draw_group, &[d.uniform_offset]);
             pass.set_vertex_buffer(0, d.mesh.vertices.slice(..));
-            if let (true, Some(a)) = (with_albedo(d), &d.mesh.albedo) {
+            if let (Some(group), Some(a)) = (stages.group_of(&ALBEDO), &d.mesh.albedo) {
                 pass.set_vertex_buffer(gpu_albedo::SLOT, a.vertices.slice(..));
-                pass.set_bind_group(gpu_albedo::GROUP, &a.group, &[]);
+                pass.set_bind_group(group, &a.group, &[]);
             }
             for (slot, buffer) in d.derived {
                 pass.set_vertex_buffer(*slot, buffer.slice(..));

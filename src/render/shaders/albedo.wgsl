@@ -1,18 +1,16 @@
 
 // Colour on the surface (src/render/gpu_albedo.rs): the mesh's colour (per vertex, or flat per
 // face) times its texture sample, both in linear light, is the albedo that multiplies the
-// material's ambient and diffuse colours (`albedo` in common.wgsl). Only the stages of meshes
-// that have colour read it (the `albedo` part in src/render/graph/mesh_stages.rs), so other
-// meshes read no more than before. The shading pass and the geometry pass (its alpha cutoff)
-// share this part.
+// material's ambient and diffuse colours (`albedo` in common.wgsl). The module-scope code of the
+// `albedo` stage part (src/render/graph/mesh_stages.rs), which also declares the texture and
+// its sampler (`albedo_texture`, `albedo_sampler`) in a group of their own: only the stages of
+// meshes that have colour have it, so other meshes read no more than before. The shading pass,
+// the geometry pass and the shadow map (the alpha cutoff) share this part.
 
 // Whether the mesh has a texture (otherwise its colour alone).
 override TEXTURED: bool = false;
 // glTF's alpha mask: pixels whose alpha is below it are not drawn; negative: opaque.
 override ALPHA_CUTOFF: f32 = -1.0;
-
-@group(3) @binding(0) var albedo_texture: texture_2d<f32>;
-@group(3) @binding(1) var albedo_sampler: sampler;
 
 // The albedo's alpha at a pixel: colour alpha times texture alpha.
 fn albedo_sample(color: vec4<f32>, uv: vec2<f32>) -> vec4<f32> {

@@ -43,6 +43,8 @@ pub static FIELD: Part = Part {
         names: &["stripes"],
         derive: Some(stripe_values),
     }),
+    bindings: None,
+    module: "",
     vertex: &["o.stripes = stripes;"],
     fragment: &["f.stripes = i.stripes;"],
     after: &[],

@@ -10,9 +10,6 @@ use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
 use crate::render::graph::{cleared, depth_buffer, geometry_clear, DrawItem, FrameCtx, Pass, Recorder};
 
-/// The pass's WGSL, which its stages (`graph::mesh_stages`) are written after.
-pub const WGSL: &str = include_str!("../../shaders/albedo.wgsl");
-
 #[derive(Debug, Clone, PartialEq)]
 pub struct Geometry {
     pub layout: GeometryLayout,
@@ -34,12 +31,12 @@ impl Pass for Geometry {
             let stages =
                 MeshStages { albedo: albedo.is_some(), geometry: Some(layout), ..Default::default() };
             let constants = albedo.map_or(vec![], GpuAlbedo::constants);
-            depth_pass_pipeline(f, "gbuffer", WGSL, stages, constants, d.cull)
+            depth_pass_pipeline(f, "gbuffer", stages, constants, d.cull)
         };
         let attachments = [cleared(f.res.view(Target::Geometry), geometry_clear(layout))];
         let mut pass =
             rec.begin("gbuffer", &attachments, depth_buffer(f.res.view(Target::GeometryDepth), false));
-        f.draw_meshes_with(&mut pass, pipeline, |d| d.cut_albedo().is_some());
+        f.draw_meshes(&mut pass, pipeline);
         Ok(())
     }
 }

@@ -10,6 +10,7 @@ use std::sync::Arc;
 use crate::error::Result;
 use crate::render::graph::build::{cull_bits, mesh_pipeline, MeshDraw};
 use crate::render::graph::effect::ShadeHook;
+use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
 use crate::render::graph::{cleared, depth_buffer, geometry_clear, DrawItem, FrameCtx, Pass, Recorder};
 use crate::render::pipelines::PipelineKey;
@@ -17,7 +18,7 @@ use crate::render::pipelines::PipelineKey;
 use variant::ShadingVariant;
 
 /// The pass's WGSL, which its stages (`graph::mesh_stages`) are written after.
-pub const WGSL: &str = concat!(include_str!("shade.wgsl"), include_str!("../../shaders/albedo.wgsl"));
+pub const WGSL: &str = include_str!("shade.wgsl");
 
 #[derive(Debug, Clone)]
 pub struct Shade {
@@ -40,7 +41,7 @@ impl Shade {
         }
     }
 
-    fn pipeline(&self, f: &FrameCtx<'_>, d: &DrawItem<'_>) -> Arc<wgpu::RenderPipeline> {
+    fn pipeline(&self, f: &FrameCtx<'_>, d: &DrawItem<'_>) -> (Arc<wgpu::RenderPipeline>, MeshStages) {
         let shading = ShadingVariant::of(d.material, d.mesh.albedo.as_ref());
         let hook = self.hook.as_deref();
         let stages = shading.stages(self.geometry);
@@ -50,7 +51,7 @@ impl Shade {
             | (f.lights as u64) << 32
             | (f.point_lights as u64) << 40
             | stages.bits() << 48;
-        f.pipelines.get(PipelineKey::new("shade", bits).with(&shading.constants), || {
+        let pipeline = f.pipelines.get(PipelineKey::new("shade", bits).with(&shading.constants), || {
             let module = f.mesh_module("shade", WGSL, stages, hook);
             let mut constants = shading.constants.clone();
             constants.push(("LIGHTS", f.lights as f64));
@@ -72,7 +73,8 @@ impl Shade {
                     cull: d.cull,
                 },
             )
-        })
+        });
+        (pipeline, stages)
     }
 }
 
@@ -119,7 +121,7 @@ impl Pass for Shade {
         if let Some(h) = &self.hook {
             pass.set_bind_group(2, &h.bind_group(f), &[]);
         }
-        f.draw_meshes_with(&mut pass, |d| self.pipeline(f, d), |_| true);
+        f.draw_meshes(&mut pass, |d| self.pipeline(f, d));
         Ok(())
     }
 }
