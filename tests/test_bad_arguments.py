@@ -1685,6 +1685,10 @@ CASES += [
     Case("Viewer.turntable", _viewer_call("turntable"),
          dict(path=os.path.join(TURNTABLES, "turn.gif"), seconds=0.5, fps=4),
          [Param("seconds", Number(0, 600, open_lo=True, slow_above=2)), Param("fps", Integer(1, 60))]),
+    # the path's checks: tests/test_render_many.py
+    Case("RenderStack.save", RENDERER.render_many(HANDLE, [tm.Camera.fit(), tm.Camera.fit(turn=90)], **SMALL).save,
+         dict(path=os.path.join(TURNTABLES, "stack.gif"), fps=4, progress=False),
+         [Param("fps", Integer(1, 60)), Param("progress", Flag())]),
 ]
 
 

@@ -125,6 +125,8 @@ def test_render_a_turntable_as_a_video(tmp_path, capsys, monkeypatch):
         assert np.abs(np.asarray(gif.convert("RGB")).astype(int) - want).mean() < 4.0
     in_process(capsys, "render", SPOT, "-o", "out/turn.mp4", "--views", "6", "--fps", "12", *args)
     assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "out" / "turn.mp4")) == (6, 0.5)
+    in_process(capsys, "render", SPOT, "-o", "turn.webm", "--views", "6", "--fps", "12", *args)
+    assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "turn.webm")) == (6, 0.5)
     for bad, words in [
         (("-o", "x.gif"), ("-o", "--views N")),
         (("-o", "x.gif", "--views", "3", "--outputs", "color,depth"), ("-o", "colour output only")),

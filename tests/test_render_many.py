@@ -10,6 +10,8 @@ import toonmesh as tm
 from toonmesh import _core
 from toonmesh.testing import assert_drawings_close, assert_images_close
 
+from conftest import need
+
 BACKENDS = ["vulkan", "gl"]
 
 
@@ -43,3 +45,40 @@ def test_render_many_checks_its_cameras():
     with pytest.raises(TypeError, match="cameras"):
         r.render_many(mesh, 5)
     assert len(r.render_many(mesh, [], width=8, height=8)) == 0
+
+
+def test_a_stack_of_views_saves_itself_as_a_video_in_each_format(tmp_path, capsys):
+    Image = need("PIL.Image")
+    imageio_ffmpeg = need("imageio_ffmpeg")
+    V, F = _core.icosphere(3, 0.04, 4)
+    r = tm.Renderer()
+    mesh = r.add_mesh(V, F)
+    cams = [tm.Camera.fit(turn=t) for t in range(0, 360, 36)]
+    stack = r.render_many(mesh, cams, width=64, height=48)
+    gif = stack.save(tmp_path / "turn.gif", fps=10)
+    assert gif == str(tmp_path / "turn.gif")
+    assert "writing turn.gif" in capsys.readouterr().err  # ten frames: a progress bar
+    with Image.open(gif) as im:
+        assert im.n_frames == 10 and im.size == (64, 48) and abs(im.info["duration"] - 100) <= 10
+        im.seek(3)  # frame k is view k (GIF's palette rounds the colours)
+        assert np.abs(np.asarray(im.convert("RGB")).astype(int) - stack.color[3, ..., :3]).mean() < 4.0
+    for suffix in (".mp4", ".webm"):
+        path = stack.save(tmp_path / f"turn{suffix}", fps=5, progress=False)
+        assert imageio_ffmpeg.count_frames_and_secs(path) == (10, 2.0), suffix
+        reader = imageio_ffmpeg.read_frames(path)
+        next(reader)  # its metadata, then the frames
+        first = np.frombuffer(next(reader), np.uint8)
+        reader.close()
+        assert np.abs(first.reshape(48, 64, 3).astype(int) - stack.color[0, ..., :3]).mean() < 6.0, suffix
+    assert "writing" not in capsys.readouterr().err
+    with pytest.raises(ValueError, match="path: expected a .gif, .mp4, .webm"):
+        stack.save(tmp_path / "turn.avi")
+    with pytest.raises(ValueError, match="fps"):
+        stack.save(tmp_path / "turn.gif", fps=0)
+    odd = r.render_many(mesh, cams[:2], width=33, height=48)
+    with pytest.raises(ValueError, match="path: a .webm video needs an even width and height, got 33x48"):
+        odd.save(tmp_path / "odd.webm")
+    depth_only = r.render_many(mesh, cams[:2], width=32, height=32, outputs=("depth",))
+    with pytest.raises(ValueError, match="colour"):
+        depth_only.save(tmp_path / "depth.gif")
+    assert not any((tmp_path / n).exists() for n in ("turn.avi", "odd.webm", "depth.gif"))

@@ -1,5 +1,5 @@
 """Argument checks for the functions written in Python (the core checks its own): the package's
-type rules for an integer and a number, with errors that name the argument."""
+type rules for a flag, an integer and a number, with errors that name the argument."""
 
 from __future__ import annotations
 
@@ -8,6 +8,13 @@ import numbers
 from typing import Any
 
 import numpy as np
+
+
+def flag(name: str, value: Any) -> bool:
+    """``value`` as a bool: True or False (NumPy's too), nothing else."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name}: expected True or False, got {type(value).__name__}")
+    return bool(value)
 
 
 def integer(name: str, value: Any, lo: int, hi: int) -> int:

@@ -5,12 +5,14 @@ and :class:`RenderStack` (the views of one scene), which the rest of the package
 
 from __future__ import annotations
 
+import os
 from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Sequence, Tuple, TypedDict
 
 import numpy as np
 
 from toonmesh import _core, _strokes
 from toonmesh._core import LineStyle, Outlines
+from toonmesh._video import DEFAULT_FPS, save_video
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
@@ -234,6 +236,17 @@ class RenderStack(Sequence[RenderResult]):
 
     def __repr__(self) -> str:
         return f"RenderStack({len(self)} views)"
+
+    def save(self, path: "str | os.PathLike[str]", fps: int = DEFAULT_FPS, progress: bool = True) -> str:
+        """Writes the views' colour images as a video, one frame a view in order (a turntable
+        from :meth:`Renderer.render_many`): ``path`` a ``.gif`` (Pillow), ``.mp4`` (H.264) or
+        ``.webm`` (VP9; both through imageio-ffmpeg, which ships its own ffmpeg; width and height
+        even), ``fps`` an int in [1, 60] frames per second (default 24), with a progress bar
+        (tqdm) while it is written when ``progress`` and there are 8 views or more. Returns the
+        path written, as a string."""
+        if self.color is None:
+            raise ValueError("path: a video holds the colour images: render them (outputs=('color', ...))")
+        return save_video(path, self.color, fps, progress)
 
 
 def stack_of(images: Dict[str, Any], reports: List[Dict[str, Any]], backend: str,

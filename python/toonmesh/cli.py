@@ -42,7 +42,7 @@ from toonmesh.edges import feature_edges
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 from toonmesh._render import Mesh, RenderResult, gpu_info, render
 from toonmesh._scene import normal_mode
-from toonmesh._video import DEFAULT_FPS, VIDEO_SUFFIXES, check_fps, video_writer
+from toonmesh._video import DEFAULT_FPS, VIDEO_SUFFIXES, check_fps, check_video_size, save_video, video_writer
 from toonmesh._views import check_views
 from toonmesh.batch import SMOOTH_METHODS as RENDER_SMOOTH_METHODS, render_views
 
@@ -252,35 +252,33 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     return options
 
 
-def _video_target(meshes: Sequence[str], out: str, views: int, outputs: List[str]) -> Optional[Any]:
-    """The video writer when ``out`` names a video (a turntable of one mesh's colour), checked
-    before any render; None otherwise."""
+def _is_video(meshes: Sequence[str], out: str, views: int, outputs: List[str], size: Tuple[int, int]) -> bool:
+    """Whether ``out`` names a video (a turntable of one mesh's colour), its writer and size
+    checked before any render."""
     suffix = os.path.splitext(out)[1].lower()
     if suffix not in VIDEO_SUFFIXES:
-        return None
+        return False
     if len(meshes) != 1:
         raise CliError(f"-o: a {suffix} video is the turntable of one mesh, got {len(meshes)} meshes")
     if views < 2:
         raise CliError(f"-o: a {suffix} video needs --views N (N >= 2: the turntable's frames)")
     if outputs != ["color"]:
         raise CliError(f"-o: a {suffix} video holds the colour output only, not {','.join(outputs)}")
+    check_video_size(suffix, size[0], size[1], "--size")
+    video_writer(suffix, "-o")
     os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
-    return video_writer(suffix, "-o")
+    return True
 
 
 def cmd_render(args: argparse.Namespace) -> int:
     """toonmesh render: mesh files to toon-shaded images, or one mesh's turntable as a video."""
     args.meshes = [mesh_file(m) for m in args.meshes]  # before any work: a typo in the last name costs nothing
     options = render_options(args)
-    video = _video_target(args.meshes, args.out, args.views, args.outputs)
-    if video is not None:
-        if args.size[0] % 2 or args.size[1] % 2:
-            if args.out.lower().endswith(".mp4"):
-                raise CliError(f"--size: an MP4 (H.264) needs an even width and height, got {args.size[0]}x{args.size[1]}")
+    if _is_video(args.meshes, args.out, args.views, args.outputs, args.size):
         frames: List[np.ndarray] = []
         _render_to(args, options, [[args.out] * args.views], quiet=True,
                    save=lambda result, _: frames.append(result.color))
-        video(args.out, np.stack(frames), args.fps)
+        save_video(args.out, np.stack(frames), args.fps, progress=sys.stderr.isatty(), who="-o")
         print(f"wrote {args.out} ({len(frames)} frames at {args.fps} fps, {args.size[0]}x{args.size[1]})")
         return 0
     return _render_to(args, options, _render_targets(args.meshes, args.out, args.views, args.outputs))
@@ -531,7 +529,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("meshes", nargs="+", metavar="MESH",
                    help="mesh files, or the name of a mesh shipped with toonmesh (bunny)")
     p.add_argument("-o", "--out", required=True, metavar="OUT",
-                   help="an image file (.png, .npz) for one mesh and view, a video (.gif, .mp4) of one mesh's "
+                   help="an image file (.png, .npz) for one mesh and view, a video (.gif, .mp4, .webm) of one mesh's "
                         "--views, else a folder")
     _add_size_argument(p, "image size in pixels")
     p.add_argument("--style", choices=styles(Material), default=default_style(),

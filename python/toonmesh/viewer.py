@@ -42,7 +42,7 @@ from toonmesh._render import (PlacedMesh, Renderer, draw, draw_views, own_colour
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
 from toonmesh._viewer_uploads import SharedUpload, shared_upload
-from toonmesh._video import DEFAULT_FPS, VIDEO_SUFFIXES, check_fps, video_writer
+from toonmesh._video import DEFAULT_FPS, check_fps, check_video_size, video_kind, video_writer
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
@@ -585,26 +585,20 @@ class Viewer:
     def turntable(self, path: "str | os.PathLike[str]", seconds: float = 4.0, fps: int = DEFAULT_FPS) -> str:
         """Writes a turn of the view about its target and the world's up (from the current view,
         all the way round, ``seconds`` long at ``fps`` frames per second: ``round(seconds * fps)``
-        frames, at least one, at the viewer's size and settings) to ``path``, a ``.gif`` (Pillow) or ``.mp4``
-        (imageio-ffmpeg, H.264; width and height must be even). The views are drawn by the
-        renderer's many-view render (:meth:`toonmesh.Renderer.render_many`). Returns the path
-        written, as a string. ``seconds`` in (0, 600], ``fps`` an int in [1, 60]."""
+        frames, at least one, at the viewer's size and settings) to ``path``, a ``.gif`` (Pillow),
+        ``.mp4`` (H.264) or ``.webm`` (VP9; both through imageio-ffmpeg, width and height even),
+        with a progress bar while it is written (:meth:`toonmesh.RenderStack.save`). The views are
+        drawn by the renderer's many-view render (:meth:`toonmesh.Renderer.render_many`). Returns
+        the path written, as a string. ``seconds`` in (0, 600], ``fps`` an int in [1, 60]."""
         self._check_open()
-        target = os.fspath(path) if isinstance(path, (str, os.PathLike)) else None
-        if not isinstance(target, str):
-            raise TypeError(f"path: expected a str or os.PathLike, got {type(path).__name__}")
-        kind = os.path.splitext(target)[1].lower()
-        if kind not in VIDEO_SUFFIXES:
-            raise ValueError(f"path: expected a .gif or .mp4 file name, got {target!r}")
+        kind = video_kind(path)
         seconds = _number("seconds", seconds, 0.0, 600.0)
         fps = check_fps(fps)
         if seconds == 0:
             raise ValueError("seconds: must be more than 0, got 0")
         count = max(1, round(seconds * fps))
-        width, height = self._options.width, self._options.height
-        if kind == ".mp4" and (width % 2 or height % 2):
-            raise ValueError(f"path: an MP4 (H.264) needs an even width and height, the viewer is {width}x{height}")
-        write = video_writer(kind, "turntable")
+        check_video_size(kind, self._options.width, self._options.height, "path")
+        video_writer(kind, "turntable")
         with self._state_lock:
             start = copy.deepcopy(self._view)
         cameras = []
@@ -617,9 +611,7 @@ class Viewer:
             options = self._options.replace(camera=None, outputs=("color",))
             stack = draw_views(self._renderer, self._scene(), cameras, options)
             self.render_count += count
-        assert stack.color is not None
-        write(target, np.asarray(stack.color), fps)
-        return target
+        return stack.save(path, fps=fps)
 
     def code(self) -> ViewerCode:
         """The ``tm.render(...)`` call that reproduces the current frame (shown unquoted in a
