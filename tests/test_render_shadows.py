@@ -5,10 +5,7 @@ the settings' checks."""
 
 from __future__ import annotations
 
-import os
 import pickle
-import subprocess
-import sys
 
 import numpy as np
 import pytest
@@ -188,14 +185,7 @@ def test_a_lighter_shadow_takes_its_share_of_the_light(backend):
 
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_a_masked_textures_cut_outs_are_cut_out_of_its_shadow(backend):
-    if backend == "gl":
-        # in a process of its own: on GL, a frame that reads depth and shadows without a colour
-        # output can come back with an earlier same-sized frame's geometry (docs/rendering.md, Backends: the known issue)
-        run = subprocess.run([sys.executable, "-c", f"import {__name__} as t; t.check_cut_out_shadows('gl')"],
-                             cwd=os.path.dirname(__file__), capture_output=True, text=True, timeout=300)
-        assert run.returncode == 0, run.stderr[-3000:]
-    else:
-        check_cut_out_shadows(backend)
+    check_cut_out_shadows(backend)
 
 
 def check_cut_out_shadows(backend):

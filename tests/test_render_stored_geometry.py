@@ -15,8 +15,6 @@ import toonmesh as tm
 
 BACKENDS = ["vulkan", "gl"]
 SIZE = 240
-# the outline output always comes with colour here: on GL, a frame without colour can read
-# the previous frame's depth (docs/rendering.md, Backends: the known issue)
 
 
 def _write_obj(path, V, F):
@@ -99,7 +97,7 @@ def test_a_part_stored_as_pieces_draws_only_its_real_edges(tmp_path, backend):
         scene.add_geometry(piece, geom_name=f"piece{k}")
     path = tmp_path / "pieces.glb"
     scene.export(path)
-    kw = dict(width=SIZE, height=SIZE, backend=backend, outlines="mesh", outputs=("color", "outline", "lines"),
+    kw = dict(width=SIZE, height=SIZE, backend=backend, outlines="mesh", outputs=("outline", "lines"),
               camera=tm.Camera.fit((1.0, 0.8, 1.3)))
     whole = tm.render(box.vertices, box.faces, **kw)
     apart = tm.render(path, **kw)
@@ -127,7 +125,7 @@ def test_a_fold_between_pieces_is_a_crease_and_a_turn_away_a_silhouette(backend)
     side = cyl.faces[np.abs(cyl.face_normals[:, 2]) < 0.5]
     centres = cyl.vertices[side].mean(axis=1)
     halves = [tm.Mesh(cyl.vertices, side[centres[:, 0] >= 0]), tm.Mesh(cyl.vertices, side[centres[:, 0] < 0])]
-    kw = dict(width=SIZE, height=SIZE, backend=backend, outlines="mesh", outputs=("color", "outline", "lines"))
+    kw = dict(width=SIZE, height=SIZE, backend=backend, outlines="mesh", outputs=("outline", "lines"))
     cam = tm.Camera.look_at(eye=(0.0, 6.0, 0.5), target=(0.0, 0.0, 0.0), up=(0.0, 0.0, 1.0))
     whole = tm.render(cyl.vertices, side, camera=cam, **kw)
     apart = tm.render(halves, camera=cam, **kw)
@@ -172,7 +170,7 @@ def test_a_pole_of_copies_is_not_inked_as_a_blob(tmp_path, backend):
     path = _write_obj(tmp_path / "capsule.obj", V, F)
     fe = tm.edges.feature_edges(V, F, weld=True)
     assert len(fe.nonmanifold) == 0 and len(fe.boundary) == 0
-    kw = dict(width=SIZE, height=SIZE, backend=backend, outlines="mesh", outputs=("color", "outline", "lines"),
+    kw = dict(width=SIZE, height=SIZE, backend=backend, outlines="mesh", outputs=("outline", "lines"),
               camera=tm.Camera.fit((0.0, 1.0, 0.6)))
     stored = tm.render(path, **kw)
     clean = tm.render(*_capsule(copies=False), **kw)

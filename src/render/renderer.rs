@@ -28,6 +28,7 @@ use super::gpu_mesh::{GpuMesh, MeshNormals};
 use super::graph::effect::{FrameInputs, HostInputs, HostStep};
 use super::graph::report::FrameReport;
 use super::graph::resources::FrameResources;
+use super::graph::target::Access;
 use super::graph::{DrawItem, FrameCtx, Recorder};
 use super::mesh_record::MeshRecord;
 use super::passes::shade::variant::ShadingVariant;
@@ -530,7 +531,19 @@ impl Renderer {
         let mut encoder =
             ctx.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
         let mut timed = Vec::new();
+        let mut drawn = false;
         for pass in &plan.passes {
+            if ctx.is_gl && !drawn && pass.uses().iter().any(|u| u.1 == Access::CopyFrom) {
+                // GL (Mesa's llvmpipe): a copy out of a texture recorded after the passes that
+                // draw it may read it as the last frame left it (1 frame in 4 in a test); the
+                // drawing is submitted and waited for first, so the copies read this frame's.
+                drawn = true;
+                let next = ctx
+                    .device
+                    .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("readback") });
+                let drawing = ctx.queue.submit([std::mem::replace(&mut encoder, next).finish()]);
+                ctx.wait(drawing, "the frame")?;
+            }
             let timing = match (&f.res.queries, pass.timed()) {
                 (Some((set, _)), true) => {
                     let i = 2 * timed.len() as u32;
