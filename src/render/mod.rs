@@ -20,6 +20,7 @@ pub mod color;
 pub mod context;
 pub mod culling;
 pub mod device;
+pub mod draft;
 pub mod effects;
 pub mod framing;
 pub mod gpu_albedo;

@@ -39,6 +39,12 @@ use super::scene::{FrameSpec, MeshId, Scene};
 use super::shader::preamble;
 use super::uniforms::draw_bytes;
 
+/// The frame's background as the colour target is cleared to: linear RGB and alpha.
+pub fn background_linear(frame: &FrameSpec) -> [f64; 4] {
+    let bg = frame.background;
+    [srgb_to_linear(bg[0] as f64), srgb_to_linear(bg[1] as f64), srgb_to_linear(bg[2] as f64), bg[3] as f64]
+}
+
 /// Where a render writes one image output, row-major, top row first.
 pub enum ImageMut<'a> {
     Bytes(&'a mut [u8]),
@@ -502,7 +508,7 @@ impl Renderer {
                 field: p.fields[i].as_deref(),
             })
             .collect();
-        let bg = scene.frame.background;
+        let [r, g, b, a] = background_linear(&scene.frame);
         let f = FrameCtx {
             dev: ctx,
             pipelines: &ctx.pipelines,
@@ -510,12 +516,7 @@ impl Renderer {
             shape: plan.shape,
             draws: &draws,
             preamble: preamble(),
-            background: wgpu::Color {
-                r: srgb_to_linear(bg[0] as f64),
-                g: srgb_to_linear(bg[1] as f64),
-                b: srgb_to_linear(bg[2] as f64),
-                a: bg[3] as f64,
-            },
+            background: wgpu::Color { r, g, b, a },
             lights: scene.shader_lights.len() as u32,
             point_lights: scene.point_lights,
         };
