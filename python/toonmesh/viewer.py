@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import copy
 import io
+import json
 import math
 import os
 import re
@@ -37,8 +38,8 @@ from toonmesh import _core
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
 from toonmesh._described import default
 from toonmesh._load import is_scene
-from toonmesh._render import (PlacedMesh, Renderer, draw, draw_views, own_colours, place_meshes, remove_meshes,
-                              scene_items, shared_renderer)
+from toonmesh._render import (PlacedMesh, Renderer, _core_items, draw, draw_views, own_colours, place_meshes,
+                              remove_meshes, scene_items, shared_renderer)
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
 from toonmesh._video import DEFAULT_FPS, VIDEO_SUFFIXES, check_fps, video_writer
@@ -65,6 +66,9 @@ _POLE_MARGIN = math.radians(1.0)
 # view): the core's defaults, should the view be switched to that projection.
 _FOV_Y = float(default(Camera, "look_at", "fov_y"))
 _HEIGHT = float(default(Camera, "orthographic", "height"))
+# The moves as the browser's draft renderer makes them (_draft.js), from the constants above.
+_MOVES = {"orbit_per_height": _ORBIT_PER_HEIGHT, "wheel_zoom": _WHEEL_ZOOM, "pole_margin": _POLE_MARGIN,
+          "max_zoom": _MAX_ZOOM}
 #: The sides :meth:`Viewer.view_from` (and the toolbar's axis buttons) look from.
 AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
 
@@ -563,10 +567,69 @@ class Viewer:
             self.frame = result.color
             self._frame_id += 1
             if self._widget is not None:
+                if not draft:
+                    self._send_draft()
                 self._widget.show_frame(data, fmt, self._frame_id, self._options.width, self._options.height,
-                                        view_id=view_id, exact=not draft)
+                                        view_id=view_id, exact=not draft, camera=self._camera_state())
             self._shared.answered = view_id
             return result
+
+    # -- drafts drawn in the browser ----------------------------------------------------------
+
+    def _camera_state(self) -> Dict[str, Any]:
+        """The current view as the browser's draft renderer moves it (``_draft.js``)."""
+        with self._state_lock:
+            v = self._view
+            return {"eye": v.eye.tolist(), "target": v.target.tolist(), "up": v.up.tolist(),
+                    "orthographic": v.orthographic, "fov_y": v.fov_y, "height": v.height}
+
+    def _draft(self) -> Tuple[str, bytes]:
+        """The core's draft of the scene with the viewer's settings from the current view: its
+        JSON and its bytes (see ``toonmesh._viewer_draft``)."""
+        with self._render_lock:
+            self._check_open()
+            with self._state_lock:
+                camera = self._view.camera()
+            options = self._options.replace(camera=camera, outputs=("color",))
+            spec, blob = self._renderer._engine._draft(_core_items(self._scene()), options)
+            return spec, bytes(blob)
+
+    def _send_draft(self) -> None:
+        """Sends the draft to the browser once, and again when a setting changed."""
+        key = repr(self._options.replace(camera=None))
+        if key == getattr(self, "_draft_key", None):
+            return
+        try:
+            spec, blob = self._draft()
+        except ViewerClosedError:
+            raise
+        except Exception as exc:  # the kernel's drafts remain; the tooltip says why
+            spec, blob = json.dumps({"error": f"{type(exc).__name__}: {exc}"}), b""
+        self._draft_key = key
+        self._widget.show_draft(spec, blob, _MOVES)
+
+    def to_html(self, path: "str | os.PathLike[str]") -> str:
+        """Writes a standalone HTML page to ``path`` that orbits the scene from the current view,
+        drawn in the browser by WebGL2 with toonmesh's own shaders (translated to GLSL ES 3.00 by
+        the core; the draft the viewer shows while the pointer moves: the toon shading, the
+        mesh's colours and texture, image-space ink; mesh-space lines, hatching, shadows, paper
+        and supersampling are left out, and the page's tooltip says which). Everything is
+        inlined (the script, the shaders, the mesh as base64): the page needs no kernel and no
+        network. Drag to orbit, shift-drag to pan, wheel to zoom, double-click for the first
+        view. The page's root element has the ``toonmesh-viewer`` class and counts the frames
+        drawn in ``data-frames-shown``. Returns the path written, as a string."""
+        self._check_open()
+        target = os.fspath(path) if isinstance(path, (str, os.PathLike)) else None
+        if not isinstance(target, str):
+            raise TypeError(f"path: expected a str or os.PathLike, got {type(path).__name__}")
+        from toonmesh._viewer_draft import page
+
+        spec, blob = self._draft()
+        text = page(spec, blob, self._camera_state(), _MOVES, (self._options.width, self._options.height),
+                    "toonmesh viewer")
+        with open(target, "w", encoding="utf-8") as out:
+            out.write(text)
+        return target
 
     def snapshot(self, **options: "Unpack[RenderKeywords]") -> RenderResult:
         """The current view rendered at full quality as a :class:`toonmesh.RenderResult`;

@@ -20,7 +20,7 @@ impl PyRenderer {
         let o = &options.inner;
         let scene = self.inner.check(o.scene(&mesh_specs(items)?)?, o.frame)?;
         let inner = &self.inner;
-        let (draft, blob) = without_gil(py, || {
+        let (draft, blob): (String, Vec<u8>) = without_gil(py, || {
             let (draft, blob) = inner.draft(&scene)?;
             let json = serde_json::to_string(&draft).map_err(|e| Error::Internal(format!("a draft as JSON: {e}")))?;
             Ok((json, blob))

@@ -155,7 +155,7 @@ fn report_dict<'py>(py: Python<'py>, report: FrameReport) -> PyResult<Bound<'py,
 /// The device-side half of `toonmesh.Renderer` (see python/toonmesh/_render.py).
 #[pyclass(name = "Renderer", module = "toonmesh._core", frozen)]
 pub(super) struct PyRenderer {
-    inner: Renderer,
+    pub(super) inner: Renderer,
 }
 
 #[pymethods]
