@@ -132,7 +132,7 @@ function render({ model, el }) {
   let shownViewId = 0, lastAnswers = -1, latency = null, inflightTimer = null;
   function send() {
     scheduled = false;
-    if (inflight || !pending) return;
+    if (inflight || !pending || (draft && !pending.exact)) return;  // moves drawn here wait for the exact frame
     const id = Math.max(nextId, model.get("_view_id") + 1);
     nextId = id + 1;
     if (pending.exact) exactWanted = id;
