@@ -23,20 +23,15 @@ the viewer and its controls after the drag and the wheel turn).
 from __future__ import annotations
 
 import io
-import json
 import os
 import re
-import socket
-import subprocess
-import sys
-import time
-import urllib.request
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from conftest import chromium, need
+from toonmesh.bench._lab import open_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
 SCREENSHOT = ROOT / "docs" / "viewer.png"
@@ -80,64 +75,17 @@ CELLS = [
 ]
 
 
-def _notebook(path: Path) -> None:
-    cells = [{"cell_type": "code", "metadata": {}, "source": s, "outputs": [], "execution_count": None} for s in CELLS]
-    nb = {
-        "cells": cells,
-        "metadata": {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"}},
-        "nbformat": 4,
-        "nbformat_minor": 5,
-    }
-    path.write_text(json.dumps(nb), encoding="utf-8")
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
-
-
 @pytest.fixture
 def jupyter_lab(tmp_path):
-    """A token-less JupyterLab server on a free port, serving tmp_path/work; yields its URL."""
+    """A token-less JupyterLab server on a free port, serving tmp_path/work with the notebook; yields its URL."""
     need("jupyterlab")
     need("anywidget")
-    work = tmp_path / "work"
-    work.mkdir()
-    _notebook(work / "viewer.ipynb")
-    port = _free_port()
-    # the user's own Jupyter settings, kernels and workspaces stay out of it: the kernel is this Python
-    env = dict(os.environ, JUPYTER_CONFIG_DIR=str(tmp_path / "config"), JUPYTER_DATA_DIR=str(tmp_path / "data"),
-               JUPYTER_RUNTIME_DIR=str(tmp_path / "runtime"), JUPYTERLAB_WORKSPACES_DIR=str(tmp_path / "workspaces"),
-               JUPYTER_PLATFORM_DIRS="1")
-    log = open(tmp_path / "server.log", "wb")
-    server = subprocess.Popen(
-        [sys.executable, "-m", "jupyterlab", "--no-browser", "--ip=127.0.0.1", f"--port={port}",
-         "--ServerApp.token=", "--ServerApp.password=", "--ServerApp.disable_check_xsrf=True",
-         f"--ServerApp.root_dir={work}", "--LabApp.news_url=", "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
-         "--allow-root"],
-        cwd=work, env=env, stdout=log, stderr=subprocess.STDOUT,
-    )
-    url = f"http://127.0.0.1:{port}"
-    try:
-        deadline = time.monotonic() + 30
-        while True:
-            try:
-                urllib.request.urlopen(f"{url}/api/status", timeout=1).read()
-                break
-            except OSError:
-                if server.poll() is not None or time.monotonic() > deadline:
-                    log.close()
-                    raise RuntimeError("jupyter lab did not start:\n" + (tmp_path / "server.log").read_text(errors="replace"))
-                time.sleep(0.25)
+    from toonmesh.bench._lab import jupyter_lab, write_notebook
+
+    (tmp_path / "work").mkdir()
+    write_notebook(tmp_path / "work" / "viewer.ipynb", CELLS)
+    with jupyter_lab(tmp_path) as url:
         yield url
-    finally:
-        server.terminate()
-        try:
-            server.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            server.kill()
-        log.close()
 
 
 def _pixels(png: bytes) -> np.ndarray:
@@ -173,11 +121,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
         browser = p.chromium.launch(executable_path=executable, args=["--no-sandbox"])
         try:
             page = browser.new_page(viewport={"width": 1500, "height": 900}, accept_downloads=True)
-            page.goto(f"{jupyter_lab}/lab/tree/viewer.ipynb")
-            page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=30_000)
-            # the kernel connected and idle (the status bar says "Python 3 (ipykernel) | Idle")
-            page.get_by_text("| Idle").wait_for(timeout=30_000)
-            cells = page.locator(".jp-Notebook .jp-Cell")
+            cells = open_notebook(page, jupyter_lab, "viewer.ipynb")
             cells.first.locator(".jp-InputPrompt").click()
             page.keyboard.press("Shift+Enter")  # runs the cell that shows the viewer
             viewer = page.locator(".toonmesh-viewer[data-frame]")

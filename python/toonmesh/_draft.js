@@ -124,6 +124,10 @@ function projection(cam, aspect, near, far, scale) {
 function createDraft(canvas, spec, blob) {
   const gl = canvas.getContext("webgl2", { antialias: false, depth: false, preserveDrawingBuffer: true });
   if (!gl) throw new Error("WebGL2 is not available");
+  // An sRGB canvas takes the colour target's bytes by a blit; without one (older browsers) they
+  // are read back and copied into a plain texture first (slower: the read waits for the draw).
+  const srgbCanvas = typeof gl.drawingBufferStorage === "function";
+  let canvasSize = null;
   const bytes = (span) => new Uint8Array(blob, span.offset, span.length);
 
   function shader(type, source, name) {
@@ -165,6 +169,10 @@ function createDraft(canvas, spec, blob) {
   const F = { proj: at("view.proj"), size: at("view.size"), footprint: at("view.footprint"), near: at("view.near"),
               lights: at("lighting.lights") };
   const footprint = [frameF32[F.footprint], frameF32[F.footprint + 1]];
+  // the ink's widths (output pixels; `outlines.ink`: rgb and width per kind), drawn as wide on
+  // screen at a smaller draft size
+  const inkField = spec.frame_fields.find((x) => x.name === "outlines.ink");
+  const inkWidths = inkField ? Array.from({ length: inkField.size / 16 }, (_, k) => frameF32[inkField.offset / 4 + 4 * k + 3]) : [];
   const lightStride = 8;  // a LightSlot: position, colour (vec4 each)
   const lights = spec.lights.map((l, k) => ({ world: l.world,
     q: Array.from(frameF32.subarray(F.lights + k * lightStride, F.lights + k * lightStride + 4)) }));
@@ -276,6 +284,7 @@ function createDraft(canvas, spec, blob) {
     const zoom = (c.height / h) * (cam.orthographic ? cam.height / c.fov_or_height : 1);
     frameF32[F.footprint] = footprint[0] * zoom; frameF32[F.footprint + 1] = footprint[1] * zoom;
     frameF32[F.near] = near / scale;
+    inkWidths.forEach((width, k) => { frameF32[inkField.offset / 4 + 4 * k + 3] = width * h / c.height; });
     lights.forEach((l, k) => {
       let p = l.q.slice(0, 3);
       if (l.world) {
@@ -334,7 +343,19 @@ function createDraft(canvas, spec, blob) {
       gl.drawArrays(gl.TRIANGLES, 0, 3);
       gl.disable(gl.BLEND);
     }
-    // onto the canvas: the sRGB bytes as they are (read, copied into a plain texture, blitted)
+    if (!canvasSize || canvasSize[0] !== canvas.width || canvasSize[1] !== canvas.height) {
+      canvasSize = [canvas.width, canvas.height];
+      if (srgbCanvas) gl.drawingBufferStorage(gl.SRGB8_ALPHA8, canvas.width, canvas.height);
+    }
+    // the targets hold the rows top first (the translated stages flip y), the canvas bottom first
+    const blit = () => gl.blitFramebuffer(0, 0, w, h, 0, canvas.height, canvas.width, 0, gl.COLOR_BUFFER_BIT, gl.LINEAR);
+    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+    if (srgbCanvas) {  // sRGB to sRGB: the bytes as they are
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.ink);
+      blit();
+      return;
+    }
+    // onto a plain canvas: the sRGB bytes as they are (read, copied into a plain texture, blitted)
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.ink);
     gl.bindBuffer(gl.PIXEL_PACK_BUFFER, targets.pbo);
     gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, 0);
@@ -345,8 +366,7 @@ function createDraft(canvas, spec, blob) {
     gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, null);
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.presentFbo);
     gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
-    // the targets hold the rows top first (the translated stages flip y), the canvas bottom first
-    gl.blitFramebuffer(0, 0, w, h, 0, canvas.height, canvas.width, 0, gl.COLOR_BUFFER_BIT, gl.LINEAR);
+    blit();
   }
 
   // The last draft's pixels: RGBA8 (sRGB), rows top first.
@@ -359,6 +379,25 @@ function createDraft(canvas, spec, blob) {
   }
 
   return { draw, pixels, leftToExact: spec.left_to_exact, gl };
+}
+
+// The size drafts are drawn at while the view moves, as a share of the full size: at most
+// `most` (the viewer's drag_scale), less while drafts come slower than every TARGET_MS (the
+// browser draws on the CPU: SwiftShader), so that the view keeps up with the pointer.
+const DRAFT_TARGET_MS = 40, DRAFT_LEAST_SCALE = 0.25;
+function draftPacer(most) {
+  let scale = most, last = 0;
+  return {
+    scale: () => scale,
+    // a draft was shown at `now` (ms); `moving`: the one before was shown during the same move
+    shown(now, moving) {
+      if (moving && last) {
+        const wanted = scale * Math.sqrt(DRAFT_TARGET_MS / Math.max(now - last, 1));
+        scale = Math.min(most, Math.max(DRAFT_LEAST_SCALE, 0.5 * scale + 0.5 * wanted));
+      }
+      last = now;
+    },
+  };
 }
 
 // The tooltip's words for what the exact frame adds to a draft.

@@ -22,7 +22,8 @@ const [width, height] = data.size;
 canvas.width = width; canvas.height = height;
 canvas.style.width = width + "px"; canvas.style.height = height + "px";
 const home = draftCamera(data.camera);
-let cam = draftCamera(home), draft = null, wanted = false;
+let cam = draftCamera(home), draft = null, wanted = false, moving = false, settle = null;
+const pacer = draftPacer(data.moves.drag_scale);
 try {
   draft = createDraft(canvas, JSON.parse(data.spec), blob);
   root.title = "drag to orbit, shift-drag to pan, wheel to zoom, double-click for the first view; "
@@ -31,13 +32,22 @@ try {
   root.dataset.error = String(e.message || e);
   root.title = "WebGL2 drafts failed: " + root.dataset.error;
 }
+// while the view moves, drafts at the viewer's drag_scale of the size; full size once it stops
 function frame() {
   wanted = false;
   if (!draft) return;
-  draft.draw(cam, width, height);
+  const s = moving ? pacer.scale() : 1;
+  draft.draw(cam, Math.max(1, Math.round(width * s)), Math.max(1, Math.round(height * s)));
+  pacer.shown(performance.now(), moving);
   root.dataset.framesShown = String(+root.dataset.framesShown + 1);
 }
 function ask() { if (!wanted) { wanted = true; requestAnimationFrame(frame); } }
+function moved() {
+  moving = true;
+  ask();
+  clearTimeout(settle);
+  settle = setTimeout(() => { moving = false; ask(); }, 150);
+}
 let drag = null;
 canvas.addEventListener("pointerdown", (e) => {
   drag = { x: e.clientX, y: e.clientY, event: (e.shiftKey || e.button === 2) ? "pan" : "orbit" };
@@ -48,15 +58,17 @@ canvas.addEventListener("pointermove", (e) => {
   if (!drag) return;
   const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
   drag.x = e.clientX; drag.y = e.clientY;
-  if (dx || dy) { draftStep(cam, { event: drag.event, dx, dy }, height, data.moves); ask(); }
+  if (dx || dy) { draftStep(cam, { event: drag.event, dx, dy }, height, data.moves); moved(); }
 });
 const up = () => { drag = null; };
 canvas.addEventListener("pointerup", up);
 canvas.addEventListener("pointercancel", up);
-canvas.addEventListener("wheel", (e) => { e.preventDefault(); draftStep(cam, { event: "zoom", dy: e.deltaY }, height, data.moves); ask(); }, { passive: false });
+canvas.addEventListener("wheel", (e) => { e.preventDefault(); draftStep(cam, { event: "zoom", dy: e.deltaY }, height, data.moves); moved(); }, { passive: false });
 canvas.addEventListener("dblclick", () => { cam = draftCamera(home); ask(); });
 canvas.addEventListener("contextmenu", (e) => e.preventDefault());
-window.toonmeshDraft = { draw: (c) => { if (c) cam = draftCamera(c); frame(); }, pixels: () => draft && draft.pixels() };
+window.toonmeshDraftRaw = draft;
+window.toonmeshDraft = { draw: (c) => { if (c) cam = draftCamera(c); moving = false; frame(); },
+                         pixels: () => draft && draft.pixels() };
 frame();
 """
 

@@ -78,7 +78,7 @@ function render({ model, el }) {
   stage.append(img, canvas, note, busy);
 
   // -- drafts drawn here ----------------------------------------------------------------------
-  let draft = null, cam = null, drawWanted = false, lastEvent = 0;
+  let draft = null, cam = null, drawWanted = false, lastEvent = 0, pacer = null;
   const eventDelays = [];
   const KERNEL_DRAFTS = "drag: drafts rendered by the kernel";
   function loadDraft() {
@@ -91,6 +91,7 @@ function render({ model, el }) {
       const data = model.get("_draft_data");
       const blob = data.buffer.slice(data.byteOffset, data.byteOffset + data.byteLength);
       draft = createDraft(canvas, parsed, blob);
+      pacer = null;
       root.dataset.draft = "webgl";
       root.title = "drag: drafts drawn here in WebGL2 from toonmesh's shaders; " + draftNote(draft.leftToExact);
     } catch (e) {
@@ -107,21 +108,27 @@ function render({ model, el }) {
       canvas.width = w; canvas.height = h;
       canvas.style.width = w + "px"; canvas.style.height = h + "px";
     }
-    draft.draw(cam, w, h);
+    if (!pacer) pacer = draftPacer(model.get("_moves").drag_scale);
+    const s = pacer.scale();  // drawn smaller while moving, as the kernel's drafts
+    draft.draw(cam, Math.max(1, Math.round(w * s)), Math.max(1, Math.round(h * s)));
+    pacer.shown(performance.now(), !!drag);
     canvas.style.visibility = "visible";
     root.dataset.exact = "0";
-    if (lastEvent) {
-      eventDelays.push(performance.now() - lastEvent);
-      if (eventDelays.length > 1000) eventDelays.shift();
-      root.dataset.eventDelays = eventDelays.map(Math.round).join(",");
+    root.dataset.draftScale = s.toFixed(2);
+    if (lastEvent) {  // the delay from the oldest move it shows to the next animation frame (on screen)
+      const since = lastEvent;
       lastEvent = 0;
+      requestAnimationFrame(() => {
+        eventDelays.push(performance.now() - since);
+        if (eventDelays.length > 1000) eventDelays.shift();
+        root.dataset.eventDelays = eventDelays.map(Math.round).join(",");
+      });
     }
     shown();
   }
   function moveDraft(step) {
     if (!cam) cam = draftCamera(model.get("_camera"));
     draftStep(cam, step, model.get("_size")[1], model.get("_moves"));
-    if (!lastEvent) lastEvent = performance.now();
     if (!drawWanted) { drawWanted = true; requestAnimationFrame(drawDraft); }
   }
   model.on("change:_draft_spec", loadDraft);
@@ -285,6 +292,7 @@ function render({ model, el }) {
     if (!drag) return;
     const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
     drag.x = e.clientX; drag.y = e.clientY;
+    if (draft && !lastEvent && (dx || dy)) lastEvent = e.timeStamp;  // the oldest move the next draft shows
     if (dx || dy) queue(drag.event, dx, dy);
   }
   function up() {

@@ -594,8 +594,14 @@ class Viewer:
             spec, blob = self._renderer._engine._draft(_core_items(self._scene()), options)
             return spec, bytes(blob)
 
+    # Whether the browser draws the drafts (False: the kernel does, as before WebGL2 drafts; the
+    # viewer benchmark's yardstick).
+    _browser_drafts = True
+
     def _send_draft(self) -> None:
         """Sends the draft to the browser once, and again when a setting changed."""
+        if not self._browser_drafts:
+            return
         key = repr(self._options.replace(camera=None))
         if key == getattr(self, "_draft_key", None):
             return
@@ -606,7 +612,7 @@ class Viewer:
         except Exception as exc:  # the kernel's drafts remain; the tooltip says why
             spec, blob = json.dumps({"error": f"{type(exc).__name__}: {exc}"}), b""
         self._draft_key = key
-        self._widget.show_draft(spec, blob, _MOVES)
+        self._widget.show_draft(spec, blob, dict(_MOVES, drag_scale=self.drag_scale))
 
     def to_html(self, path: "str | os.PathLike[str]") -> str:
         """Writes a standalone HTML page to ``path`` that orbits the scene from the current view,
@@ -625,7 +631,8 @@ class Viewer:
         from toonmesh._viewer_draft import page
 
         spec, blob = self._draft()
-        text = page(spec, blob, self._camera_state(), _MOVES, (self._options.width, self._options.height),
+        text = page(spec, blob, self._camera_state(), dict(_MOVES, drag_scale=self.drag_scale),
+                    (self._options.width, self._options.height),
                     "toonmesh viewer")
         with open(target, "w", encoding="utf-8") as out:
             out.write(text)
