@@ -243,8 +243,17 @@ function createDraft(canvas, spec, blob) {
     if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE) throw new Error("an incomplete framebuffer");
     return f;
   }
+  function free() {
+    if (!targets) return;
+    for (const t of [targets.color, targets.geometry, targets.edgeBits, targets.present]) if (t) gl.deleteTexture(t);
+    for (const f of [targets.shade, targets.edgeBitsFbo, targets.ink, targets.presentFbo]) if (f) gl.deleteFramebuffer(f);
+    gl.deleteRenderbuffer(targets.depth);
+    if (targets.pbo) gl.deleteBuffer(targets.pbo);
+    targets = null;
+  }
   function resize(w, h) {
     if (size && size[0] === w && size[1] === h) return;
+    free();
     size = [w, h];
     const color = texture(gl.SRGB8_ALPHA8, gl.RGBA, gl.UNSIGNED_BYTE, w, h);
     const geometry = spec.geometry_clear ? texture(gl.RGBA32UI, gl.RGBA_INTEGER, gl.UNSIGNED_INT, w, h) : null;
@@ -252,21 +261,25 @@ function createDraft(canvas, spec, blob) {
     const depth = gl.createRenderbuffer();
     gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
     gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT32F, w, h);
-    const present = texture(gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, w, h);
-    const pbo = gl.createBuffer();
-    gl.bindBuffer(gl.PIXEL_PACK_BUFFER, pbo);
-    gl.bufferData(gl.PIXEL_PACK_BUFFER, w * h * 4, gl.STREAM_COPY);
-    gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
+    const present = srgbCanvas ? null : texture(gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, w, h);
+    let pbo = null;
+    if (!srgbCanvas) {
+      pbo = gl.createBuffer();
+      gl.bindBuffer(gl.PIXEL_PACK_BUFFER, pbo);
+      gl.bufferData(gl.PIXEL_PACK_BUFFER, w * h * 4, gl.STREAM_COPY);
+      gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
+    }
     targets = {
-      color, geometry, edgeBits, present, pbo,
+      color, geometry, edgeBits, present, pbo, depth,
       shade: fbo(geometry ? [color, geometry] : [color], depth),
       edgeBitsFbo: edgeBits ? fbo([edgeBits]) : null,
       ink: fbo([color]),
-      presentFbo: fbo([present]),
+      presentFbo: present ? fbo([present]) : null,
     };
   }
 
-  // Draws the view `cam` at w x h pixels into the canvas (stretched to its size).
+  // Draws the view `cam` at w x h pixels into the canvas, whose drawing buffer takes that size
+  // (the page stretches it to the size it shows).
   function draw(cam, w, h) {
     resize(w, h);
     const c = spec.camera;
@@ -343,12 +356,14 @@ function createDraft(canvas, spec, blob) {
       gl.drawArrays(gl.TRIANGLES, 0, 3);
       gl.disable(gl.BLEND);
     }
-    if (!canvasSize || canvasSize[0] !== canvas.width || canvasSize[1] !== canvas.height) {
-      canvasSize = [canvas.width, canvas.height];
-      if (srgbCanvas) gl.drawingBufferStorage(gl.SRGB8_ALPHA8, canvas.width, canvas.height);
+    if (!canvasSize || canvasSize[0] !== w || canvasSize[1] !== h) {
+      canvasSize = [w, h];
+      canvas.width = w;
+      canvas.height = h;
+      if (srgbCanvas) gl.drawingBufferStorage(gl.SRGB8_ALPHA8, w, h);
     }
     // the targets hold the rows top first (the translated stages flip y), the canvas bottom first
-    const blit = () => gl.blitFramebuffer(0, 0, w, h, 0, canvas.height, canvas.width, 0, gl.COLOR_BUFFER_BIT, gl.LINEAR);
+    const blit = () => gl.blitFramebuffer(0, 0, w, h, 0, h, w, 0, gl.COLOR_BUFFER_BIT, gl.NEAREST);
     gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
     if (srgbCanvas) {  // sRGB to sRGB: the bytes as they are
       gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.ink);
@@ -388,7 +403,7 @@ const DRAFT_TARGET_MS = 40, DRAFT_LEAST_SCALE = 0.25;
 function draftPacer(most) {
   let scale = most, last = 0;
   return {
-    scale: () => scale,
+    scale: () => Math.min(most, Math.max(DRAFT_LEAST_SCALE, Math.round(scale * 16) / 16)),  // few sizes
     // a draft was shown at `now` (ms); `moving`: the one before was shown during the same move
     shown(now, moving) {
       if (moving && last) {

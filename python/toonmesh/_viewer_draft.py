@@ -19,7 +19,6 @@ const blob = Uint8Array.from(atob(document.getElementById("toonmesh-blob").textC
 const root = document.querySelector(".toonmesh-viewer");
 const canvas = root.querySelector("canvas");
 const [width, height] = data.size;
-canvas.width = width; canvas.height = height;
 canvas.style.width = width + "px"; canvas.style.height = height + "px";
 const home = draftCamera(data.camera);
 let cam = draftCamera(home), draft = null, wanted = false, moving = false, settle = null;

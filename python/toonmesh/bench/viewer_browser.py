@@ -173,7 +173,7 @@ def _viewer_row(page: Any, i: int) -> Dict[str, Optional[float]]:
     start = _drag(page, box["x"] + box["width"] / 2 - 75, box["y"] + box["height"] / 2)
     page.wait_for_function("window.__watch.exact !== null", timeout=30_000)
     w = page.evaluate("window.__watch")
-    delays = [float(d) for d in (root.get_attribute("data-event-delays") or "").split(",") if d]
+    delays = root.evaluate("r => r.toonmeshEventDelays || []")
     scale = root.get_attribute("data-draft-scale")
     return {"fps": _rate(w["shown"], start), "delay": statistics.median(delays) if delays else None,
             "exact": w["exact"] - w["up"], "scale": None if scale is None else float(scale)}
