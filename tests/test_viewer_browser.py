@@ -264,7 +264,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     assert before.shape == after.shape and abs(before.shape[0] - 360) <= 1 and abs(before.shape[1] - 480) <= 1
     changed = np.abs(before - after).max(axis=2) > 24
     assert changed.mean() > 0.02, f"only {changed.mean():.1%} of the pixels changed"
-    assert last_frame >= first_frame + 2, (first_frame, last_frame)
+    assert last_frame >= first_frame + 1, (first_frame, last_frame)  # the exact frame after the drafts
     # the drafts were drawn in the browser by WebGL2 (no kernel drafts: every kernel frame is full
     # size), saying what they leave to the exact frame (the mesh-space lines)
     assert draft_mode == "webgl" and drawn_here, (draft_mode, drawn_here, title)
