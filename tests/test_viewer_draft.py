@@ -7,11 +7,14 @@ GLSL that counts), it draws (the canvas is not blank) and a drag makes it draw m
 draft and the exact frame of the same view (``tm.render`` with the viewer's camera) agree on at
 least 95% of the covered pixels within 8 levels, for the plain bunny, a coloured one and a
 textured one, with Vulkan and GL kernels (shading without ink: the draft's ink is image-space
-only). The draft's image-space ink is drawn (dark pixels where the exact frame has its edges)
-and what it leaves to the exact frame is named in the page's tooltip.
+only). The draft's image-space ink is drawn (dark pixels where the exact frame has its edges),
+the page shows the draft's pixels as they are (a screenshot of the canvas), and what the draft
+leaves to the exact frame is named in the page's tooltip.
 """
 
 from __future__ import annotations
+
+import io
 
 import numpy as np
 import pytest
@@ -117,6 +120,12 @@ def _page_of(browser, tmp_path, name, **options):
 def test_the_draft_draws_the_image_space_ink_as_the_exact_frame_does(browser, tmp_path):
     page, exact, camera = _page_of(browser, tmp_path, "image", outlines="image")
     draft = _draft(page, camera)
+    # what the page shows is the draft's pixels, as they are
+    need("PIL")
+    from PIL import Image
+
+    shown = np.asarray(Image.open(io.BytesIO(page.locator("canvas").screenshot())).convert("RGB"))
+    np.testing.assert_array_equal(shown, draft[..., :3])
     page.close()
     dark_draft = draft[..., :3].max(-1) < 100
     dark_exact = exact[..., :3].max(-1) < 100

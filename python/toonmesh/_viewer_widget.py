@@ -130,6 +130,7 @@ function render({ model, el }) {
   }
   // the delays of the last 200 drafts (ms), read by the benchmark and tests
   Object.defineProperty(root, "toonmeshEventDelays", { get: () => eventDelays.slice() });
+  Object.defineProperty(root, "toonmeshDraft", { get: () => draft });  // its pixels(), for tests
   model.on("change:_draft_spec", loadDraft);
   loadDraft();
 
