@@ -269,7 +269,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     # the drafts were drawn in the browser by WebGL2 (no kernel drafts: every kernel frame is full
     # size), saying what they leave to the exact frame (the mesh-space lines)
     assert draft_mode == "webgl" and drawn_here, (draft_mode, drawn_here, title)
-    assert "WebGL2" in title and "lines" in title, title
+    assert "WebGL2" in title and "left to the exact frame: mesh-space lines" in title, title
     assert sizes and set(sizes) == {480}, sizes
     assert "0" in exact_marks and exact_marks[-1] == "1", exact_marks  # a draft shown, then the exact frame
     assert "1" in busy_marks and busy_marks[-1] == "0", busy_marks

@@ -139,7 +139,7 @@ def test_the_page_draws_orbits_and_names_what_the_draft_leaves_out(browser, tmp_
     root = page.locator(".toonmesh-viewer")
     assert root.get_attribute("data-exact") == "0"
     title = root.get_attribute("title")
-    assert "left to the exact frame" in title and "lines" in title and "msaa" in title, title
+    assert "left to the exact frame: mesh-space lines, multisampling" in title, title
     first = _draft(page, camera)
     assert first[..., :3].min() < 150 and first[..., :3].max() > 200, "the canvas is blank"
     # a synthetic drag: more frames, another picture
@@ -169,3 +169,21 @@ def test_to_html_refuses_a_path_that_is_not_one():
         v.close()
     with pytest.raises(tm.ViewerClosedError):
         v.to_html("x.html")
+
+
+@pytest.mark.parametrize("options, left", [
+    ({"material": tm.Material.hatching("#d08050")}, "hatching"),
+    ({"lights": [tm.Light.directional((-1, -1, -1), shadows=True)]}, "shadows"),
+    ({"material": tm.Material.bands("#d08050", rim=tm.Rim(), dither="bayer4")}, None),
+    ({"supersample": 2}, "supersampling"),
+])
+def test_effects_compile_in_the_browser_and_those_it_cannot_draw_are_named(browser, tmp_path, options, left):
+    page, exact, camera = _page_of(browser, tmp_path, "effects", **options)  # its programs compiled and linked
+    title = page.locator(".toonmesh-viewer").get_attribute("title")
+    draft = _draft(page, camera)
+    page.close()
+    if left is None:  # a rim light and dithering: per-pixel effects the draft draws as the exact frame does
+        assert "the draft draws everything" in title, title
+        assert _agreement(draft, exact) >= 0.95
+    else:
+        assert f"left to the exact frame: {left}" in title, title

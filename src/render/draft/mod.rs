@@ -43,7 +43,17 @@ use crate::render::wgsl::{compose, DEFAULT_HOOKS};
 use glsl::GlslProgram;
 
 /// The passes of the exact frame a draft draws too (or that give nothing to see).
-const DRAWN: &[&str] = &["shade", "edge_bits", "edges", "geometry", "clear_outline"];
+const DRAWN: &[&str] = &["shade", "edge_bits", "edges", "gbuffer", "clear_outline"];
+
+/// What a step of the exact frame that a draft leaves out draws, in the words a tooltip uses.
+fn described(step: &str) -> &str {
+    match step {
+        "silhouettes" | "lines" | "visible_lines" => "mesh-space lines",
+        "shadow_map" | "shadow" => "shadows",
+        "downsample" => "supersampling",
+        other => other,
+    }
+}
 
 /// A field of a uniform struct: its byte offset and size.
 #[derive(Clone, Debug, Serialize)]
@@ -342,19 +352,21 @@ impl Renderer {
         let frame_span = blob.push(&bytes);
         let lights = scene.shader_lights.iter().map(|l| DraftLight { world: l.space == Space::World }).collect();
         let mut left: Vec<String> = Vec::new();
+        let mut leave = |what: &str| {
+            if !left.iter().any(|l| l == what) {
+                left.push(what.to_string());
+            }
+        };
         for name in plan(scene).names() {
-            if !DRAWN.contains(&name) && !name.starts_with("readback") && !left.iter().any(|l| l == name) {
-                left.push(name.to_string());
+            if !DRAWN.contains(&name) && !name.starts_with("readback") {
+                leave(described(name));
             }
         }
         if scene.scene.items.iter().any(|i| i.material.effects.hatching.is_some()) {
-            left.push("hatching".into());
+            leave("hatching");
         }
         if frame.msaa > 1 {
-            left.push("msaa".into());
-        }
-        if frame.supersample > 1 {
-            left.push("supersample".into());
+            leave("multisampling");
         }
         let to3 = |v: glam::DVec3| v.to_array();
         let draft = Draft {
