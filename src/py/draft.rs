@@ -22,7 +22,8 @@ impl PyRenderer {
         let inner = &self.inner;
         let (draft, blob): (String, Vec<u8>) = without_gil(py, || {
             let (draft, blob) = inner.draft(&scene)?;
-            let json = serde_json::to_string(&draft).map_err(|e| Error::Internal(format!("a draft as JSON: {e}")))?;
+            let json = serde_json::to_string(&draft)
+                .map_err(|e| Error::Internal(format!("a draft as JSON: {e}")))?;
             Ok((json, blob))
         })?;
         Ok((draft, PyBytes::new(py, &blob)))

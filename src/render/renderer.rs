@@ -32,7 +32,7 @@ use super::hatch_field::HatchField;
 use super::mesh_record::MeshRecord;
 use super::passes::shade::variant::ShadingVariant;
 use super::plan::{plan, Copy, Dest, Plan};
-use super::scene::camera::{Camera, ResolvedCamera, Sphere};
+use super::scene::camera::{Camera, ResolvedCamera, SceneBounds, Sphere};
 use super::scene::checked::{CheckedScene, DeviceLimits};
 use super::scene::outputs::{Output, Pixel};
 use super::scene::{FrameSpec, MeshId, Scene};
@@ -370,9 +370,12 @@ impl Renderer {
         result.map(|_| reports)
     }
 
-    /// Everything a frame needs before the GPU: the meshes, the camera, the plan, and its host
-    /// steps before the frame (timed into `report`).
-    pub(crate) fn prepare(&self, scene: CheckedScene, report: &mut FrameReport) -> Result<Prepared> {
+    /// The scene's meshes (in the order of its items), its bounds, and its camera resolved for
+    /// them and the frame's aspect.
+    pub(crate) fn resolve(
+        &self,
+        scene: &CheckedScene,
+    ) -> Result<(Vec<Arc<MeshRecord>>, SceneBounds, ResolvedCamera)> {
         let records: Vec<Arc<MeshRecord>> =
             scene.scene.items.iter().map(|i| self.mesh(i.mesh)).collect::<Result<_>>()?;
         let bounds = scene
@@ -383,6 +386,14 @@ impl Renderer {
             let support = scene_support(&scene.scene.items, &records, bounds.sphere.center);
             scene.scene.camera.resolve_with(&bounds, &support, frame.width as f64 / frame.height as f64)?
         };
+        Ok((records, bounds, cam))
+    }
+
+    /// Everything a frame needs before the GPU: the meshes, the camera, the plan, and its host
+    /// steps before the frame (timed into `report`).
+    pub(crate) fn prepare(&self, scene: CheckedScene, report: &mut FrameReport) -> Result<Prepared> {
+        let (records, bounds, cam) = self.resolve(&scene)?;
+        let frame = &scene.frame;
         if frame.outputs.has(Output::Depth) && !DEPTH_SCALE_RANGE.contains(&cam.scale) {
             return Err(Error::invalid(
                 "outputs",

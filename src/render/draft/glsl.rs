@@ -59,7 +59,8 @@ pub fn stage(
     entry: &str,
     constants: &[(&str, f64)],
 ) -> Result<GlslStage> {
-    let constants: naga::back::PipelineConstants = constants.iter().map(|(k, v)| (k.to_string(), *v)).collect();
+    let constants: naga::back::PipelineConstants =
+        constants.iter().map(|(k, v)| (k.to_string(), *v)).collect();
     let (module, info) =
         naga::back::pipeline_constants::process_overrides(module, info, Some((stage, entry)), &constants)
             .map_err(|e| glsl_error(name, e))?;
@@ -69,14 +70,19 @@ pub fn stage(
         binding_map: Default::default(),
         zero_initialize_workgroup_memory: false,
     };
-    let pipeline = glsl::PipelineOptions { shader_stage: stage, entry_point: entry.to_string(), multiview: None };
+    let pipeline =
+        glsl::PipelineOptions { shader_stage: stage, entry_point: entry.to_string(), multiview: None };
     let mut source = String::new();
     let mut writer = glsl::Writer::new(&mut source, &module, &info, &options, &pipeline, Default::default())
         .map_err(|e| glsl_error(name, e))?;
     let reflection = writer.write().map_err(|e| glsl_error(name, e))?;
     let binding = |handle: naga::Handle<naga::GlobalVariable>, name: &str| {
         let b = module.global_variables[handle].binding.as_ref();
-        Binding { name: name.to_string(), group: b.map_or(0, |b| b.group), binding: b.map_or(0, |b| b.binding) }
+        Binding {
+            name: name.to_string(),
+            group: b.map_or(0, |b| b.group),
+            binding: b.map_or(0, |b| b.binding),
+        }
     };
     let mut blocks: Vec<Binding> = reflection.uniforms.iter().map(|(h, n)| binding(*h, n)).collect();
     let mut textures: Vec<Binding> =

@@ -13,8 +13,6 @@
 
 pub mod glsl;
 
-use std::sync::Arc;
-
 use glam::DMat4;
 use serde::Serialize;
 
@@ -23,13 +21,11 @@ use crate::render::block::BlockLayout;
 use crate::render::effects::frame::{frame_bytes, frame_members};
 use crate::render::effects::outlines::settings::ImageRule;
 use crate::render::effects::outlines::{edge_bits, edges};
-use crate::render::framing::scene_support;
 use crate::render::gpu_albedo;
 use crate::render::graph::effect::FrameInputs;
+use crate::render::graph::geometry_clear;
 use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::graph::target::GeometryLayout;
-use crate::render::graph::geometry_clear;
-use crate::render::mesh_record::MeshRecord;
 use crate::render::passes::shade::{self, variant::ShadingVariant};
 use crate::render::plan::plan;
 use crate::render::renderer::{background_linear, Renderer};
@@ -256,16 +252,8 @@ impl Renderer {
     /// The draft of `scene` from its camera (see the module's documentation), and the blob of
     /// bytes its spans point into.
     pub fn draft(&self, scene: &CheckedScene) -> Result<(Draft, Vec<u8>)> {
-        let records: Vec<Arc<MeshRecord>> =
-            scene.scene.items.iter().map(|i| self.mesh(i.mesh)).collect::<Result<_>>()?;
-        let bounds = scene
-            .scene
-            .bounds(|id| Ok(self.mesh(id)?.gpu.sphere()), |id| Ok(self.mesh(id)?.gpu.bounding_box()))?;
+        let (records, bounds, cam) = self.resolve(scene)?;
         let frame = &scene.frame;
-        let cam = {
-            let support = scene_support(&scene.scene.items, &records, bounds.sphere.center);
-            scene.scene.camera.resolve_with(&bounds, &support, frame.width as f64 / frame.height as f64)?
-        };
         let image_edges = scene.scene.outlines.as_ref().filter(|o| o.draws_image_edges());
         let geometry = image_edges.map(|_| GeometryLayout::NormalDepth);
         let mut blob = Blob::default();
@@ -284,7 +272,8 @@ impl Renderer {
             let program = match keys.iter().position(|k| *k == key) {
                 Some(i) => i,
                 None => {
-                    let wgsl = compose(preamble(), DEFAULT_HOOKS, &format!("{}\n{}", shade::WGSL, stages.wgsl()));
+                    let wgsl =
+                        compose(preamble(), DEFAULT_HOOKS, &format!("{}\n{}", shade::WGSL, stages.wgsl()));
                     let name = format!("shade ({})", stages.name());
                     programs.push(glsl::program(&name, &wgsl, "vs_mesh", "fs_mesh", &key.1)?);
                     keys.push(key);
@@ -300,22 +289,23 @@ impl Renderer {
                 Some(a) if stages.albedo => Some(blob.push(&read_buffer(self, &a.vertices)?)),
                 _ => None,
             };
-            let texture = g.albedo.as_ref().filter(|a| a.textured).and_then(|a| a.texture.as_ref()).map(|(t, s)| {
-                DraftTexture {
-                    width: t.width,
-                    height: t.height,
-                    texels: blob.push(bytemuck::cast_slice(&t.texels)),
-                    filter: match s.filter {
-                        crate::render::albedo::Filter::Linear => "linear",
-                        crate::render::albedo::Filter::Nearest => "nearest",
-                    },
-                    wrap: match s.wrap {
-                        crate::render::albedo::Wrap::Repeat => "repeat",
-                        crate::render::albedo::Wrap::Clamp => "clamp",
-                        crate::render::albedo::Wrap::Mirror => "mirror",
-                    },
-                }
-            });
+            let texture =
+                g.albedo.as_ref().filter(|a| a.textured).and_then(|a| a.texture.as_ref()).map(|(t, s)| {
+                    DraftTexture {
+                        width: t.width,
+                        height: t.height,
+                        texels: blob.push(bytemuck::cast_slice(&t.texels)),
+                        filter: match s.filter {
+                            crate::render::albedo::Filter::Linear => "linear",
+                            crate::render::albedo::Filter::Nearest => "nearest",
+                        },
+                        wrap: match s.wrap {
+                            crate::render::albedo::Wrap::Repeat => "repeat",
+                            crate::render::albedo::Wrap::Clamp => "clamp",
+                            crate::render::albedo::Wrap::Mirror => "mirror",
+                        },
+                    }
+                });
             let model = model_matrix(&item, &g.placement);
             meshes.push(DraftMesh {
                 program,
@@ -346,11 +336,13 @@ impl Renderer {
         unturned.view = DMat4::IDENTITY;
         let lighting = lighting_block(scene, &unturned);
         let members = frame_members();
-        let lighting_at: usize = members.iter().take_while(|(n, _)| *n != "lighting").map(|(_, b)| b.size).sum();
+        let lighting_at: usize =
+            members.iter().take_while(|(n, _)| *n != "lighting").map(|(_, b)| b.size).sum();
         let lighting_bytes = crate::render::block::Block::bytes(&lighting);
         bytes[lighting_at..lighting_at + lighting_bytes.len()].copy_from_slice(&lighting_bytes);
         let frame_span = blob.push(&bytes);
-        let lights = scene.shader_lights.iter().map(|l| DraftLight { world: l.space == Space::World }).collect();
+        let lights =
+            scene.shader_lights.iter().map(|l| DraftLight { world: l.space == Space::World }).collect();
         let mut left: Vec<String> = Vec::new();
         let mut leave = |what: &str| {
             if !left.iter().any(|l| l == what) {

@@ -13,7 +13,8 @@ fn every_shading_variant_translates() {
     for stages in MeshStages::all().into_iter().filter(|s| s.color && !s.field) {
         let wgsl = compose(preamble(), DEFAULT_HOOKS, &format!("{}\n{}", shade::WGSL, stages.wgsl()));
         for model in 0..5 {
-            let constants = [("MODEL", model as f64), ("LIGHTS", 2.0), ("POINT_LIGHTS", 2.0), ("TEXTURED", 1.0)];
+            let constants =
+                [("MODEL", model as f64), ("LIGHTS", 2.0), ("POINT_LIGHTS", 2.0), ("TEXTURED", 1.0)];
             let p = program(&stages.name(), &wgsl, "vs_mesh", "fs_mesh", &constants)
                 .unwrap_or_else(|e| panic!("{}: {e}", stages.name()));
             assert!(p.vertex.source.starts_with("#version 300 es"), "{}", p.vertex.source);
@@ -30,7 +31,8 @@ fn every_shading_variant_translates() {
 #[test]
 fn the_image_ink_passes_translate() {
     for (wgsl, entry) in [(edge_bits::WGSL, "fs_edge_bits"), (edges::WGSL, "fs_color")] {
-        let p = program(entry, &compose(preamble(), DEFAULT_HOOKS, wgsl), "vs_fullscreen", entry, &[]).unwrap();
+        let p =
+            program(entry, &compose(preamble(), DEFAULT_HOOKS, wgsl), "vs_fullscreen", entry, &[]).unwrap();
         assert_eq!(p.fragment.textures.len(), 1, "{:?}", p.fragment.textures);
         assert!(p.fragment.source.contains("usampler2D"), "{}", p.fragment.source);
     }
