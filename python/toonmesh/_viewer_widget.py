@@ -111,6 +111,7 @@ function render({ model, el }) {
     draft.draw(cam, Math.max(1, Math.round(w * s)), Math.max(1, Math.round(h * s)));
     pacer.shown(performance.now(), !!drag);
     canvas.style.visibility = "visible";
+    img.style.opacity = "0";  // not composited under the draft (opacity keeps its pointer events)
     root.dataset.exact = "0";
     if (root.dataset.draftScale !== s.toFixed(3)) root.dataset.draftScale = s.toFixed(3);
     if (lastEvent) {  // the delay from the oldest move it shows to the next animation frame (on screen)
@@ -175,6 +176,7 @@ function render({ model, el }) {
   let url = null, exactFrame = null;
   const metas = new Map();
   const shownAt = [];
+  let statsAt = 0;
   function answer() {
     const answers = model.get("_answers");
     if (answers === lastAnswers) return;
@@ -216,6 +218,7 @@ function render({ model, el }) {
     root.dataset.frame = String(meta.id);
     root.dataset.exact = meta.exact ? "1" : "0";
     canvas.style.visibility = "hidden";
+    img.style.opacity = "1";
     if (meta.exact) {
       exactFrame = meta;
       if (meta.viewId >= exactWanted && !(pending && pending.exact)) setBusy(false);
@@ -228,6 +231,8 @@ function render({ model, el }) {
     const now = performance.now();
     shownAt.push(now);
     while (shownAt.length && shownAt[0] < now - 1000) shownAt.shift();
+    if (now - statsAt < 250) return;  // the readout four times a second
+    statsAt = now;
     const text = shownAt.length + " fps" + (latency === null ? "" : " \u00b7 " + Math.round(latency) + " ms");
     if (stats.textContent !== text) stats.textContent = text;
   }

@@ -224,7 +224,7 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
     title = (f"The viewer during a {DRAG_SECONDS:g} s drag at {HZ} Hz: the bunny ({len(F):,} faces) at "
              f"{SIZE}x{SIZE} with ink, JupyterLab in headless Chromium")
     print(table(("view", "drawn at", "fps", "of plain", "event to frame (median)", "release to exact"), rows, title))
-    ratio = browser_drafts["fps"] / max(kernel_drafts["fps"] or 0.0, 1e-9)
+    ratio = (browser_drafts["fps"] or 0.0) / max(kernel_drafts["fps"] or 0.0, 1e-9)
     print(f"browser drafts / kernel drafts: {ratio:.1f}x")
 
 
