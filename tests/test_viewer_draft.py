@@ -187,3 +187,26 @@ def test_effects_compile_in_the_browser_and_those_it_cannot_draw_are_named(brows
         assert _agreement(draft, exact) >= 0.95
     else:
         assert f"left to the exact frame: {left}" in title, title
+
+
+@pytest.mark.parametrize("options", [
+    {"camera": tm.Camera.fit(orthographic=True)},
+    {"outlines": tm.Outlines("image", image_rule="paper")},  # the ink read from the geometry target
+    {"transform": [[0, 0, 2, 0.5], [0, 2, 0, 0], [-2, 0, 0, 1], [0, 0, 0, 1]]},
+    {"lights": [tm.Light.point((0.3, 0.3, 0.3), space="world"), tm.Light.directional((1, 0, -1))]},
+], ids=["orthographic", "paper-rule", "transform", "world-lights"])
+def test_the_camera_the_placement_and_the_lights_follow_the_view_as_in_the_kernel(browser, tmp_path, options):
+    V, F = bunny()
+    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1], **options)
+    try:
+        v.orbit(40, 10)
+        v.to_html(tmp_path / "page.html")
+        camera = v._camera_state()
+        given = {k: x for k, x in options.items() if k != "camera"}
+        exact = tm.render(V, F, camera=v.camera, width=SIZE[0], height=SIZE[1], **given).color
+    finally:
+        v.close()
+    page = _open(browser, tmp_path / "page.html")
+    draft = _draft(page, camera)
+    page.close()
+    assert _agreement(draft, exact) >= 0.95

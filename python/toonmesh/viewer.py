@@ -602,7 +602,8 @@ class Viewer:
         """Sends the draft to the browser once, and again when a setting changed."""
         if not self._browser_drafts:
             return
-        key = repr(self._options.replace(camera=None))
+        with self._state_lock:  # the settings, and the projection the draft's footprint is for
+            key = repr((self._options.replace(camera=None), self._view.orthographic))
         if key == getattr(self, "_draft_key", None):
             return
         try:
