@@ -210,3 +210,27 @@ def test_the_camera_the_placement_and_the_lights_follow_the_view_as_in_the_kerne
     draft = _draft(page, camera)
     page.close()
     assert _agreement(draft, exact) >= 0.95
+
+
+def test_a_shader_the_browser_refuses_is_said_in_the_tooltip(browser, tmp_path):
+    import json
+
+    from toonmesh._viewer_draft import page as draft_page
+
+    V, F = bunny()
+    v = tm.Viewer(V, F, width=64, height=64)
+    try:
+        spec, blob = v._draft()
+        camera = v._camera_state()
+    finally:
+        v.close()
+    broken = json.loads(spec)
+    broken["programs"][0]["fragment"]["source"] += "\nthis is not GLSL\n"
+    path = tmp_path / "broken.html"
+    path.write_text(draft_page(json.dumps(broken), blob, camera, {"drag_scale": 0.5}, (64, 64), "t"), encoding="utf-8")
+    page = browser.new_page()
+    page.goto(path.as_uri())
+    page.wait_for_function("document.querySelector('.toonmesh-viewer').dataset.error !== undefined", timeout=30_000)
+    title = page.locator(".toonmesh-viewer").get_attribute("title")
+    page.close()
+    assert title.startswith("WebGL2 drafts failed: shade") and "fragment" in title, title
