@@ -1,6 +1,7 @@
-"""The browser side of :class:`toonmesh.Viewer`: an anywidget that shows the frames the kernel
-sends, sends pointer events and toolbar clicks back, and paces them to the kernel's answers.
-Imported only where anywidget is installed."""
+"""The browser side of :class:`toonmesh.Viewer`: an anywidget that draws drafts while the pointer
+moves (WebGL2, the core's draft: ``toonmesh._viewer_draft``), shows the frames the kernel sends,
+sends pointer events and toolbar clicks back, and paces them to the kernel's answers. Imported
+only where anywidget is installed."""
 
 from __future__ import annotations
 

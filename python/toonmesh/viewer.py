@@ -1,8 +1,11 @@
 """An interactive toon render in Jupyter: ``toonmesh.Viewer(V, F, **render keywords)``.
 
-The kernel renders every frame with toonmesh itself (toon bands, outlines, hatching, shadows) and
-sends it to the browser as a JPEG or PNG; the browser sends back pointer events. The mesh is
-uploaded to the GPU once. The widget needs the ``notebook`` extra (``pip install
+While the pointer moves, the browser draws draft frames itself in WebGL2 with toonmesh's own
+shaders (the core translates them to GLSL ES 3.00 and sends them with the uniform bytes and the
+mesh: ``toonmesh._viewer_draft``); when it stops, the kernel renders the exact frame with
+toonmesh itself (toon bands, mesh-space lines, hatching, shadows) and sends it as a PNG or JPEG.
+Where the browser cannot draw the drafts, the kernel draws them too. The mesh is uploaded to
+the GPU once. The widget needs the ``notebook`` extra (``pip install
 'toonmesh[notebook]'``: anywidget, ipywidgets, JupyterLab); without it, or where no widget front
 end runs (nbconvert, GitHub, a terminal), the viewer shows its current frame as a still PNG.
 
@@ -11,8 +14,8 @@ once the kernel has answered the last one, keeping the newest moves merged meanw
 events only move the camera (no render each); one thread renders the latest view when it is
 free, so a slow frame never queues a backlog, and each frame carries the number of the view it
 was made for (the browser drops one older than the frame it shows). While the pointer moves,
-frames are drawn at ``drag_scale`` of the size and sent as JPEG; when it stops (or is released)
-the full-size frame follows in ``image_format``.
+frames are drawn at ``drag_scale`` of the size (by the browser, or by the kernel and sent as
+JPEG); when it stops (or is released) the full-size frame follows in ``image_format``.
 
 Lifetime: the render thread runs only while frames are wanted, and neither it nor the widget
 holds the viewer (weak references), so a viewer no longer referenced is freed with its uploaded
@@ -251,11 +254,18 @@ class Viewer:
     (its kind, bounds and choices) and showing the settings as they are now;
     ``image_format`` of the full-size frames, ``"png"`` (default) or ``"jpeg"``; ``drag_scale``,
     the size of the frames drawn while the pointer moves, as a fraction of the full size
-    (0.05 to 1, default 0.5; they are sent as JPEG).
+    (0.05 to 1, default 0.5; the browser draws them smaller where it cannot keep up, the kernel's
+    are sent as JPEG).
+
+    While the pointer moves, the browser draws the drafts in WebGL2 from toonmesh's own shaders:
+    the bands, tones, colours and texture, dithering, rim light and image-space ink; it leaves
+    mesh-space lines, hatching, shadows, paper, multisampling and supersampling to the exact
+    frame that follows from the kernel, and the view's tooltip says which.
 
     ``frame`` is the last frame shown, (H, W, 4) uint8; ``render_count`` counts the renders;
     :meth:`snapshot` renders the current view at full quality (any size, any outputs);
-    :meth:`turntable` writes a turn about the view as a GIF or MP4;
+    :meth:`turntable` writes a turn about the view as a GIF or MP4; :meth:`to_html` writes a
+    standalone page that orbits the scene in a browser (WebGL2, no kernel);
     :meth:`code` gives the ``tm.render(...)`` call that reproduces the view.
     :meth:`close` frees the viewer's meshes, render thread and front end (so does dropping the
     last reference to it); a closed viewer raises :class:`ViewerClosedError` when used.
