@@ -1685,6 +1685,8 @@ CASES += [
     Case("Viewer.turntable", _viewer_call("turntable"),
          dict(path=os.path.join(TURNTABLES, "turn.gif"), seconds=0.5, fps=4),
          [Param("seconds", Number(0, 600, open_lo=True, slow_above=2)), Param("fps", Integer(1, 60))]),
+    # its only argument is the path: tests/test_viewer_draft.py checks it
+    Case("Viewer.to_html", _viewer_call("to_html"), dict(path=os.path.join(TURNTABLES, "page.html")), []),
 ]
 
 

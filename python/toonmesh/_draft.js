@@ -166,16 +166,13 @@ function createDraft(canvas, spec, blob) {
   const frameF32 = new Float32Array(frameBytes.buffer);
   const frameU32 = new Uint32Array(frameBytes.buffer);
   const at = (name) => field(spec.frame_fields, name).offset / 4;
-  const F = { proj: at("view.proj"), size: at("view.size"), footprint: at("view.footprint"), near: at("view.near"),
-              lights: at("lighting.lights") };
+  const F = { proj: at("view.proj"), size: at("view.size"), footprint: at("view.footprint"), near: at("view.near") };
   const footprint = [frameF32[F.footprint], frameF32[F.footprint + 1]];
-  // the ink's widths (output pixels; `outlines.ink`: rgb and width per kind), drawn as wide on
-  // screen at a smaller draft size
-  const inkField = spec.frame_fields.find((x) => x.name === "outlines.ink");
-  const inkWidths = inkField ? Array.from({ length: inkField.size / 16 }, (_, k) => frameF32[inkField.offset / 4 + 4 * k + 3]) : [];
-  const lightStride = 8;  // a LightSlot: position, colour (vec4 each)
-  const lights = spec.lights.map((l, k) => ({ world: l.world,
-    q: Array.from(frameF32.subarray(F.lights + k * lightStride, F.lights + k * lightStride + 4)) }));
+  // the widths in output pixels (the ink's), drawn as wide on screen at a smaller draft size
+  const widths = spec.pixel_widths.map((offset) => [offset / 4, frameF32[offset / 4]]);
+  // each light's position as an unturned view sees it
+  const lights = spec.lights.map((l) => ({ world: l.world, at: l.position / 4,
+    q: Array.from(frameF32.subarray(l.position / 4, l.position / 4 + 4)) }));
   const frameUbo = gl.createBuffer();
   gl.bindBuffer(gl.UNIFORM_BUFFER, frameUbo);
   gl.bufferData(gl.UNIFORM_BUFFER, frameBytes, gl.DYNAMIC_DRAW);
@@ -297,14 +294,14 @@ function createDraft(canvas, spec, blob) {
     const zoom = (c.height / h) * (cam.orthographic ? cam.height / c.fov_or_height : 1);
     frameF32[F.footprint] = footprint[0] * zoom; frameF32[F.footprint + 1] = footprint[1] * zoom;
     frameF32[F.near] = near / scale;
-    inkWidths.forEach((width, k) => { frameF32[inkField.offset / 4 + 4 * k + 3] = width * h / c.height; });
-    lights.forEach((l, k) => {
+    for (const [i, width] of widths) frameF32[i] = width * h / c.height;
+    lights.forEach((l) => {
       let p = l.q.slice(0, 3);
       if (l.world) {
         const r = [0, 1, 2].map((row) => view[row] * p[0] + view[4 + row] * p[1] + view[8 + row] * p[2]);
         p = l.q[3] === 1 ? r.map((x, i) => x + vn[12 + i]) : r;
       }
-      frameF32.set(p, F.lights + k * lightStride);
+      frameF32.set(p, l.at);
     });
     gl.bindBuffer(gl.UNIFORM_BUFFER, frameUbo);
     gl.bufferSubData(gl.UNIFORM_BUFFER, 0, frameBytes);

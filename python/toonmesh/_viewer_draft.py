@@ -65,9 +65,9 @@ canvas.addEventListener("pointercancel", up);
 canvas.addEventListener("wheel", (e) => { e.preventDefault(); draftStep(cam, { event: "zoom", dy: e.deltaY }, height, data.moves); moved(); }, { passive: false });
 canvas.addEventListener("dblclick", () => { cam = draftCamera(home); ask(); });
 canvas.addEventListener("contextmenu", (e) => e.preventDefault());
-window.toonmeshDraftRaw = draft;
+// for tests and measurements: draw a view (the viewer's camera state) at full size, read it back
 window.toonmeshDraft = { draw: (c) => { if (c) cam = draftCamera(c); moving = false; frame(); },
-                         pixels: () => draft && draft.pixels() };
+                         pixels: () => draft && draft.pixels(), renderer: draft };
 frame();
 """
 

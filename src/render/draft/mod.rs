@@ -20,6 +20,7 @@ use crate::error::{Error, Result};
 use crate::render::block::BlockLayout;
 use crate::render::effects::frame::{frame_bytes, frame_members};
 use crate::render::effects::outlines::settings::ImageRule;
+use crate::render::effects::outlines::settings::INK_KINDS;
 use crate::render::effects::outlines::{edge_bits, edges};
 use crate::render::gpu_albedo;
 use crate::render::graph::effect::FrameInputs;
@@ -33,7 +34,7 @@ use crate::render::scene::checked::CheckedScene;
 use crate::render::scene::light::Space;
 use crate::render::scene::SceneItem;
 use crate::render::shader::preamble;
-use crate::render::uniforms::{draw_bytes, draw_members, lighting_block, model_matrix, Members};
+use crate::render::uniforms::{draw_bytes, draw_members, lighting_block, model_matrix, LightSlot, Members};
 use crate::render::wgsl::{compose, DEFAULT_HOOKS};
 
 use glsl::GlslProgram;
@@ -119,6 +120,8 @@ pub struct DraftMesh {
 #[derive(Clone, Debug, Serialize)]
 pub struct DraftLight {
     pub world: bool,
+    /// The byte offset in the frame's bytes of its position (xyz, w: 0 a direction, 1 a point).
+    pub position: usize,
 }
 
 /// The camera the draft's bytes were written for.
@@ -154,6 +157,9 @@ pub struct Draft {
     pub frame: Span,
     pub frame_fields: Vec<Field>,
     pub draw_fields: Vec<Field>,
+    /// The byte offsets in the frame's bytes of the f32s measured in output pixels (the ink's
+    /// widths): a draft drawn smaller scales them.
+    pub pixel_widths: Vec<usize>,
     pub lights: Vec<DraftLight>,
     pub camera: DraftCamera,
     /// The colour target's clear value (linear RGBA) and the geometry target's (u32 bits).
@@ -341,8 +347,25 @@ impl Renderer {
         let lighting_bytes = crate::render::block::Block::bytes(&lighting);
         bytes[lighting_at..lighting_at + lighting_bytes.len()].copy_from_slice(&lighting_bytes);
         let frame_span = blob.push(&bytes);
-        let lights =
-            scene.shader_lights.iter().map(|l| DraftLight { world: l.space == Space::World }).collect();
+        let frame_fields = fields(&members);
+        let field_at = |name: &str| frame_fields.iter().find(|f| f.name == name).map(|f| f.offset);
+        let lights_at =
+            field_at("lighting.lights").ok_or_else(|| Error::Internal("no lighting.lights".into()))?;
+        let lights = scene
+            .shader_lights
+            .iter()
+            .enumerate()
+            .map(|(k, l)| DraftLight {
+                world: l.space == Space::World,
+                position: lights_at
+                    + k * std::mem::size_of::<LightSlot>()
+                    + std::mem::offset_of!(LightSlot, position),
+            })
+            .collect();
+        // the w of each ink kind's [r, g, b, width]
+        let pixel_widths = field_at("outlines.ink").map_or(vec![], |at| {
+            (0..INK_KINDS).map(|k| at + k * std::mem::size_of::<[f32; 4]>() + 12).collect()
+        });
         let mut left: Vec<String> = Vec::new();
         let mut leave = |what: &str| {
             if !left.iter().any(|l| l == what) {
@@ -367,7 +390,8 @@ impl Renderer {
             edges: edges_program,
             meshes,
             frame: frame_span,
-            frame_fields: fields(&members),
+            frame_fields,
+            pixel_widths,
             draw_fields: fields(&draw_members()),
             lights,
             camera: DraftCamera {
