@@ -164,7 +164,6 @@ function createDraft(canvas, spec, blob) {
   };
   const frameBytes = bytes(spec.frame).slice();
   const frameF32 = new Float32Array(frameBytes.buffer);
-  const frameU32 = new Uint32Array(frameBytes.buffer);
   const at = (name) => field(spec.frame_fields, name).offset / 4;
   const F = { proj: at("view.proj"), size: at("view.size"), footprint: at("view.footprint"), near: at("view.near") };
   const footprint = [frameF32[F.footprint], frameF32[F.footprint + 1]];
@@ -346,7 +345,7 @@ function createDraft(canvas, spec, blob) {
       }
       gl.bindFramebuffer(gl.FRAMEBUFFER, targets.ink);
       gl.enable(gl.BLEND);
-      gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);  // premultiplied "over", as the core's ink
+      gl.blendFunc(gl[spec.ink_blend[0]], gl[spec.ink_blend[1]]);  // the core's ink blending
       gl.useProgram(programs[spec.edges]);
       gl.activeTexture(gl.TEXTURE1);
       gl.bindTexture(gl.TEXTURE_2D, spec.edge_bits !== null ? targets.edgeBits : targets.geometry);

@@ -19,10 +19,12 @@ use serde::Serialize;
 use crate::error::{Error, Result};
 use crate::render::block::BlockLayout;
 use crate::render::effects::frame::{frame_bytes, frame_members};
+use crate::render::effects::outlines::ink::INK_OVER;
 use crate::render::effects::outlines::settings::ImageRule;
 use crate::render::effects::outlines::settings::INK_KINDS;
 use crate::render::effects::outlines::{edge_bits, edges};
 use crate::render::gpu_albedo;
+use crate::render::graph::build::nearest_wins;
 use crate::render::graph::effect::FrameInputs;
 use crate::render::graph::geometry_clear;
 use crate::render::graph::mesh_stages::MeshStages;
@@ -169,6 +171,8 @@ pub struct Draft {
     /// `ADJUST_COORDINATE_SPACE` turns wgpu's counter-clockwise around) and the depth test.
     pub front_face: &'static str,
     pub depth_compare: &'static str,
+    /// The image ink's blending over the colour (GL's source and destination factors).
+    pub ink_blend: [&'static str; 2],
     /// What the exact frame draws that the draft leaves out.
     pub left_to_exact: Vec<String>,
 }
@@ -184,6 +188,25 @@ fn fields(members: &Members) -> Vec<Field> {
         at += size;
     }
     out
+}
+
+/// GL's name of a depth test.
+fn gl_compare(c: Option<wgpu::CompareFunction>) -> &'static str {
+    match c {
+        Some(wgpu::CompareFunction::Less) => "LESS",
+        Some(wgpu::CompareFunction::LessEqual) => "LEQUAL",
+        _ => "ALWAYS",
+    }
+}
+
+/// GL's name of a blend factor the ink uses.
+fn gl_factor(f: wgpu::BlendFactor) -> &'static str {
+    match f {
+        wgpu::BlendFactor::One => "ONE",
+        wgpu::BlendFactor::OneMinusSrcAlpha => "ONE_MINUS_SRC_ALPHA",
+        wgpu::BlendFactor::SrcAlpha => "SRC_ALPHA",
+        _ => "ZERO",
+    }
 }
 
 fn cols(m: DMat4) -> [f64; 16] {
@@ -413,7 +436,8 @@ impl Renderer {
                 [c.r, c.g, c.b, c.a].map(|x| x as u32)
             }),
             front_face: "CW",
-            depth_compare: "LESS",
+            depth_compare: gl_compare(nearest_wins().and_then(|d| d.depth_compare)),
+            ink_blend: [gl_factor(INK_OVER.color.src_factor), gl_factor(INK_OVER.color.dst_factor)],
             left_to_exact: left,
         };
         Ok((draft, blob.0))
