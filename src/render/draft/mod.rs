@@ -26,9 +26,9 @@ use crate::render::effects::outlines::{edge_bits, edges};
 use crate::render::gpu_albedo;
 use crate::render::graph::build::nearest_wins;
 use crate::render::graph::effect::FrameInputs;
-use crate::render::graph::geometry_clear;
 use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::graph::target::GeometryLayout;
+use crate::render::graph::{geometry_clear, mesh_pass_wgsl, module_wgsl};
 use crate::render::passes::shade::{self, variant::ShadingVariant};
 use crate::render::plan::plan;
 use crate::render::renderer::{background_linear, Renderer};
@@ -37,7 +37,6 @@ use crate::render::scene::light::Space;
 use crate::render::scene::SceneItem;
 use crate::render::shader::preamble;
 use crate::render::uniforms::{draw_bytes, draw_members, lighting_block, model_matrix, LightSlot, Members};
-use crate::render::wgsl::{compose, DEFAULT_HOOKS};
 
 use glsl::GlslProgram;
 
@@ -294,15 +293,12 @@ impl Renderer {
             let g = &rec.gpu;
             let shading = ShadingVariant::of(&item.material, g.albedo.as_ref());
             let stages = shading.stages(geometry);
-            let mut constants = shading.constants.clone();
-            constants.push(("LIGHTS", scene.shader_lights.len() as f64));
-            constants.push(("POINT_LIGHTS", scene.point_lights as f64));
+            let constants = shading.frame_constants(scene.shader_lights.len() as u32, scene.point_lights);
             let key = (stages, constants);
             let program = match keys.iter().position(|k| *k == key) {
                 Some(i) => i,
                 None => {
-                    let wgsl =
-                        compose(preamble(), DEFAULT_HOOKS, &format!("{}\n{}", shade::WGSL, stages.wgsl()));
+                    let wgsl = module_wgsl(preamble(), &mesh_pass_wgsl(shade::WGSL, stages), None);
                     let name = format!("shade ({})", stages.name());
                     programs.push(glsl::program(&name, &wgsl, "vs_mesh", "fs_mesh", &key.1)?);
                     keys.push(key);
@@ -351,11 +347,11 @@ impl Renderer {
         let (mut edge_bits_program, mut edges_program) = (None, None);
         if let Some(o) = image_edges {
             if o.image_rule == ImageRule::Discontinuity {
-                let wgsl = compose(preamble(), DEFAULT_HOOKS, edge_bits::WGSL);
+                let wgsl = module_wgsl(preamble(), edge_bits::WGSL, None);
                 programs.push(glsl::program("edge_bits", &wgsl, "vs_fullscreen", "fs_edge_bits", &[])?);
                 edge_bits_program = Some(programs.len() - 1);
             }
-            let wgsl = compose(preamble(), DEFAULT_HOOKS, edges::WGSL);
+            let wgsl = module_wgsl(preamble(), edges::WGSL, None);
             programs.push(glsl::program("edges", &wgsl, "vs_fullscreen", "fs_color", &[])?);
             edges_program = Some(programs.len() - 1);
         }

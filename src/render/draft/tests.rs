@@ -4,14 +4,14 @@
 use super::glsl::program;
 use crate::render::effects::outlines::{edge_bits, edges};
 use crate::render::graph::mesh_stages::MeshStages;
+use crate::render::graph::{mesh_pass_wgsl, module_wgsl};
 use crate::render::passes::shade;
 use crate::render::shader::preamble;
-use crate::render::wgsl::{compose, DEFAULT_HOOKS};
 
 #[test]
 fn every_shading_variant_translates() {
     for stages in MeshStages::all().into_iter().filter(|s| s.color && !s.field) {
-        let wgsl = compose(preamble(), DEFAULT_HOOKS, &format!("{}\n{}", shade::WGSL, stages.wgsl()));
+        let wgsl = module_wgsl(preamble(), &mesh_pass_wgsl(shade::WGSL, stages), None);
         for model in 0..5 {
             let constants =
                 [("MODEL", model as f64), ("LIGHTS", 2.0), ("POINT_LIGHTS", 2.0), ("TEXTURED", 1.0)];
@@ -31,8 +31,7 @@ fn every_shading_variant_translates() {
 #[test]
 fn the_image_ink_passes_translate() {
     for (wgsl, entry) in [(edge_bits::WGSL, "fs_edge_bits"), (edges::WGSL, "fs_color")] {
-        let p =
-            program(entry, &compose(preamble(), DEFAULT_HOOKS, wgsl), "vs_fullscreen", entry, &[]).unwrap();
+        let p = program(entry, &module_wgsl(preamble(), wgsl, None), "vs_fullscreen", entry, &[]).unwrap();
         assert_eq!(p.fragment.textures.len(), 1, "{:?}", p.fragment.textures);
         assert!(p.fragment.source.contains("usampler2D"), "{}", p.fragment.source);
     }
