@@ -5,8 +5,8 @@ core (``Renderer._draft``), drawn by WebGL2 in headless Chromium (SwiftShader) f
 The page is opened in Chromium: its shaders compile and link there (the check of the translated
 GLSL that counts), it draws (the canvas is not blank) and a drag makes it draw more frames. A
 draft and the exact frame of the same view (``tm.render`` with the viewer's camera) agree on at
-least 95% of the covered pixels within 8 levels, for the plain bunny, a coloured one and a
-textured one, with Vulkan and GL kernels (shading without ink: the draft's ink is image-space
+least 95% of the covered pixels within 8 levels, for the plain bunny, a coloured one, a
+textured one and two bunnies (each its own draw and material), with Vulkan and GL kernels (shading without ink: the draft's ink is image-space
 only). The draft's image-space ink is drawn (dark pixels where the exact frame has its edges),
 the page shows the draft's pixels as they are (a screenshot of the canvas), and what the draft
 leaves to the exact frame is named in the page's tooltip.
@@ -30,6 +30,9 @@ def _scene(kind: str):
     V, F = bunny()
     if kind == "plain":
         return tm.Mesh(V, F)
+    if kind == "two meshes":  # each with its own draw: one placed, one coloured by its material
+        moved = np.array([[1, 0, 0, 0.12], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], float)
+        return [tm.Mesh(V, F), tm.Mesh(V, F, transform=moved, material=tm.Material.bands("#4f8fd8"))]
     lo, hi = V.min(axis=0), V.max(axis=0)
     t = (V - lo) / (hi - lo)
     if kind == "coloured":
@@ -80,7 +83,7 @@ def _agreement(draft: np.ndarray, exact: np.ndarray) -> float:
 
 
 @pytest.mark.parametrize("backend", RENDER_BACKENDS)
-@pytest.mark.parametrize("kind", ["plain", "coloured", "textured"])
+@pytest.mark.parametrize("kind", ["plain", "coloured", "textured", "two meshes"])
 def test_a_draft_agrees_with_the_exact_frame_of_the_same_view(browser, tmp_path, backend, kind):
     mesh = _scene(kind)
     v = tm.Viewer(mesh, backend=backend, width=SIZE[0], height=SIZE[1])
