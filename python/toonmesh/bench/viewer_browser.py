@@ -109,7 +109,6 @@ function draw() {
   gl.uniformMatrix3fv(gl.getUniformLocation(prog, 'nm'), false, new Float32Array(r));
   gl.clearColor(1, 1, 1, 1); gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
   gl.drawElements(gl.TRIANGLES, I.length, gl.UNSIGNED_INT, 0);
-  gl.finish();
   const now = performance.now();
   w.shown.push(now);
   if (lastEvent) { const since = lastEvent; lastEvent = 0; requestAnimationFrame(() => w.delays.push(performance.now() - since)); }
