@@ -56,7 +56,7 @@ LAYERS: List[List[str]] = [
      *[m for name in frame_effects() for m in (f"render::effects::{name}", f"render::effects::{name}::*")]],
     # the registries that list the frame effects, and what is built from them
     ["render::effects", "render::effects::frame", "render::plan", "render::shader"],
-    ["render::renderer", "render"],
+    ["render::renderer", "render::draft", "render::draft::*", "render"],
     ["py", "py::*", "lib"],
 ]
 

@@ -1689,6 +1689,8 @@ CASES += [
     Case("RenderStack.save", RENDERER.render_many(HANDLE, [tm.Camera.fit(), tm.Camera.fit(turn=90)], **SMALL).save,
          dict(path=os.path.join(TURNTABLES, "stack.gif"), fps=4, progress=False),
          [Param("fps", Integer(1, 60)), Param("progress", Flag())]),
+    # its only argument is the path: tests/test_viewer_draft.py checks it
+    Case("Viewer.to_html", _viewer_call("to_html"), dict(path=os.path.join(TURNTABLES, "page.html")), []),
 ]
 
 

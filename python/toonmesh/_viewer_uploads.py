@@ -1,14 +1,16 @@
 """Uploads shared by the viewers of one scene. Re-running a notebook cell that ends in a viewer
 keeps each earlier viewer alive in IPython's output history (``Out``), and each would hold an
 upload of its own: its meshes and their line caches, about 13 MB for the bunny with mesh
-outlines. Viewers whose meshes have the same contents on the same renderer share one upload
-instead, freed when the last of them is closed or freed."""
+outlines, and the draft it sends the browser, about 2 MB more. Viewers whose meshes have the
+same contents on the same renderer share one upload instead, and one copy of equal drafts,
+freed when the last of them is closed or freed."""
 
 from __future__ import annotations
 
 import hashlib
 import threading
 import weakref
+from collections import OrderedDict
 from typing import Any, List, Tuple
 
 import numpy as np
@@ -36,14 +38,34 @@ def content_key(mesh: Mesh) -> Tuple[Any, ...]:
     return (_digest(mesh.vertices), _digest(mesh.faces), normals, colors)
 
 
+#: How many of the drafts' bytes an upload keeps for its viewers to share.
+KEPT_DRAFTS = 4
+
+
 class SharedUpload:
     """One scene's meshes on a renderer, in order (``handles``), freed when nothing refers to
-    it."""
+    it; and the bytes of the last drafts its viewers sent to the browser (mostly the meshes'
+    buffers), so that viewers of the same view share one copy."""
 
     def __init__(self, renderer: Renderer, meshes: List[Mesh], smooth_iterations: int, where: str):
         placed, uploaded = place_meshes(renderer, meshes, smooth_iterations, where=where)
         self.handles = [p.handle for p in placed]
+        self._drafts: "OrderedDict[bytes, bytes]" = OrderedDict()
+        self._lock = threading.Lock()
         weakref.finalize(self, remove_meshes, renderer, uploaded)
+
+    def shared_bytes(self, data: bytes) -> bytes:
+        """``data``, or an equal bytes object a viewer of this upload already holds."""
+        key = hashlib.blake2b(data, digest_size=16).digest()
+        with self._lock:
+            kept = self._drafts.get(key)
+            if kept is not None and kept == data:
+                self._drafts.move_to_end(key)
+                return kept
+            self._drafts[key] = data
+            while len(self._drafts) > KEPT_DRAFTS:
+                self._drafts.popitem(last=False)
+            return data
 
     def placed(self, meshes: List[Mesh]) -> List[PlacedMesh]:
         """The meshes placed as each says (material, transform, up), on the shared upload."""

@@ -1,6 +1,7 @@
-"""The browser side of :class:`toonmesh.Viewer`: an anywidget that shows the frames the kernel
-sends, sends pointer events and toolbar clicks back, and paces them to the kernel's answers.
-Imported only where anywidget is installed."""
+"""The browser side of :class:`toonmesh.Viewer`: an anywidget that draws drafts while the pointer
+moves (WebGL2, the core's draft: ``toonmesh._viewer_draft``), shows the frames the kernel sends,
+sends pointer events and toolbar clicks back, and paces them to the kernel's answers. Imported
+only where anywidget is installed."""
 
 from __future__ import annotations
 
@@ -9,6 +10,8 @@ from typing import Any, Callable, Dict, Optional, Union
 
 import anywidget
 import traitlets
+
+from toonmesh._viewer_draft import draft_js
 
 _ESM = r"""
 // Shows the kernel's frames in an <img> under a toolbar; sends drags, wheel turns, double-clicks
@@ -19,6 +22,10 @@ _ESM = r"""
 // released. The root element's data-frames-shown counts the frames shown, data-exact is "1"
 // while a full-size frame is shown ("0" for a draft), data-busy "1" while a full-size frame is
 // on its way, data-dropped counts stale frames dropped, data-views-sent the views sent.
+// While a WebGL2 draft renderer runs (_draft.js: the core's shaders in GLSL ES), drags are drawn
+// here, one draft per animation frame, and the moves go to the kernel only with the exact frame
+// asked for when the pointer stops (data-draft "webgl"); otherwise (no WebGL2, a program that
+// fails) the kernel draws the drafts as before (data-draft "kernel"), and the tooltip says why.
 const SETTLE_MS = 150;
 const ANSWER_TIMEOUT_MS = 10000;  // a view never answered (a kernel restarted) stops blocking
 const AXES = ["+x", "-x", "+y", "-y", "+z", "-z"];
@@ -30,7 +37,7 @@ function render({ model, el }) {
   root.tabIndex = 0;  // focus: the wheel zooms only when the view has it
   root.setAttribute("data-jp-suppress-context-menu", "");  // JupyterLab's menu stays off the view
   root.setAttribute("data-lm-suppress-shortcuts", "");  // keys pressed here do not run notebook commands
-  Object.assign(root.dataset, { framesShown: "0", exact: "0", busy: "0", dropped: "0", viewsSent: "0" });
+  Object.assign(root.dataset, { framesShown: "0", exact: "0", busy: "0", dropped: "0", viewsSent: "0", draft: "kernel" });
   root.style.cssText = "position: relative; display: inline-block; line-height: 0; outline: none;"
     + " background: #fff; border: " + BORDER + "; box-shadow: none";
   const bar = document.createElement("div");
@@ -66,14 +73,75 @@ function render({ model, el }) {
   const style = document.createElement("style");
   style.textContent = "@keyframes toonmesh-spin { to { transform: rotate(360deg) } }"
     + " .toonmesh-viewer:fullscreen { display: flex; flex-direction: column; align-items: center; justify-content: center }";
-  stage.append(img, note, busy);
+  const canvas = document.createElement("canvas");
+  canvas.className = "toonmesh-draft";
+  canvas.style.cssText = "position: absolute; left: 0; top: 0; visibility: hidden; pointer-events: none";
+  stage.append(img, canvas, note, busy);
+
+  // -- drafts drawn here ----------------------------------------------------------------------
+  let draft = null, cam = null, drawWanted = false, lastEvent = 0, pacer = null;
+  const eventDelays = [];
+  const KERNEL_DRAFTS = "drag: drafts rendered by the kernel";
+  function loadDraft() {
+    draft = null;
+    const spec = model.get("_draft_spec");
+    if (!spec) return;
+    try {
+      const parsed = JSON.parse(spec);
+      if (parsed.error) throw new Error(parsed.error);
+      const data = model.get("_draft_data");
+      const blob = data.buffer.slice(data.byteOffset, data.byteOffset + data.byteLength);
+      draft = createDraft(canvas, parsed, blob);
+      pacer = null;
+      root.dataset.draft = "webgl";
+      root.title = "drag: drafts drawn here in WebGL2 from toonmesh's shaders; " + draftNote(draft.leftToExact);
+    } catch (e) {
+      draft = null;
+      root.dataset.draft = "kernel";
+      root.title = KERNEL_DRAFTS + " (WebGL2 drafts failed: " + (e.message || e) + ")";
+    }
+  }
+  function drawDraft() {
+    drawWanted = false;
+    if (!draft || !cam) return;
+    const [w, h] = model.get("_size");
+    canvas.style.width = w + "px";
+    canvas.style.height = h + "px";
+    if (!pacer) pacer = draftPacer(model.get("_moves").drag_scale);
+    const s = pacer.scale();  // drawn smaller while moving, as the kernel's drafts
+    draft.draw(cam, Math.max(1, Math.round(w * s)), Math.max(1, Math.round(h * s)));
+    pacer.shown(performance.now(), !!drag);
+    canvas.style.visibility = "visible";
+    img.style.opacity = "0";  // not composited under the draft (opacity keeps its pointer events)
+    root.dataset.exact = "0";
+    if (root.dataset.draftScale !== s.toFixed(3)) root.dataset.draftScale = s.toFixed(3);
+    if (lastEvent) {  // the delay from the oldest move it shows to the next animation frame (on screen)
+      const since = lastEvent;
+      lastEvent = 0;
+      requestAnimationFrame(() => {
+        eventDelays.push(Math.round(performance.now() - since));
+        if (eventDelays.length > 200) eventDelays.shift();
+      });
+    }
+    shown();
+  }
+  function moveDraft(step) {
+    if (!cam) cam = draftCamera(model.get("_camera"));
+    draftStep(cam, step, model.get("_size")[1], model.get("_moves"));
+    if (!drawWanted) { drawWanted = true; requestAnimationFrame(drawDraft); }
+  }
+  // the delays of the last 200 drafts (ms), read by the benchmark and tests
+  Object.defineProperty(root, "toonmeshEventDelays", { get: () => eventDelays.slice() });
+  Object.defineProperty(root, "toonmeshDraft", { get: () => draft });  // its pixels(), for tests
+  model.on("change:_draft_spec", loadDraft);
+  loadDraft();
 
   // -- flow control ---------------------------------------------------------------------------
   let nextId = 1, inflight = 0, sentAt = 0, pending = null, scheduled = false, exactWanted = 0;
   let shownViewId = 0, lastAnswers = -1, latency = null, inflightTimer = null;
   function send() {
     scheduled = false;
-    if (inflight || !pending) return;
+    if (inflight || !pending || (draft && !pending.exact)) return;  // moves drawn here wait for the exact frame
     const id = Math.max(nextId, model.get("_view_id") + 1);
     nextId = id + 1;
     if (pending.exact) exactWanted = id;
@@ -85,8 +153,13 @@ function render({ model, el }) {
     clearTimeout(inflightTimer);
     inflightTimer = setTimeout(() => { inflight = 0; schedule(); }, ANSWER_TIMEOUT_MS);
   }
-  function schedule() { if (!scheduled && pending && !inflight) { scheduled = true; requestAnimationFrame(send); } }
+  function schedule() {
+    if (draft && pending && !pending.exact) return;  // moves drawn here go with the exact frame
+    if (!scheduled && pending && !inflight) { scheduled = true; requestAnimationFrame(send); }
+  }
   function add(step, exact) {
+    if (draft && step && "dx" in step) moveDraft(step);
+    else if (step) cam = null;  // home, an axis, framing: the kernel's camera follows
     if (!pending) pending = { steps: [], exact: false };
     const last = pending.steps[pending.steps.length - 1];
     if (step && last && last.event === step.event && "dx" in step) { last.dx += step.dx; last.dy += step.dy; }
@@ -104,6 +177,7 @@ function render({ model, el }) {
   let url = null, exactFrame = null;
   const metas = new Map();
   const shownAt = [];
+  let statsAt = 0;
   function answer() {
     const answers = model.get("_answers");
     if (answers === lastAnswers) return;
@@ -130,7 +204,7 @@ function render({ model, el }) {
     const blob = new Blob([data], { type: "image/" + format });
     const next = URL.createObjectURL(blob);
     const [w, h] = model.get("_size");
-    metas.set(next, { id: model.get("_frame_id"), viewId, exact: model.get("_exact"), blob, format });
+    metas.set(next, { id: model.get("_frame_id"), viewId, exact: model.get("_exact"), blob, format, camera: model.get("_camera") });
     img.src = next;
     img.style.width = w + "px";
     img.style.height = h + "px";
@@ -143,17 +217,26 @@ function render({ model, el }) {
     url = img.src;
     for (const old of metas.keys()) { URL.revokeObjectURL(old); metas.delete(old); }  // superseded before shown
     root.dataset.frame = String(meta.id);
-    root.dataset.framesShown = String(+root.dataset.framesShown + 1);
     root.dataset.exact = meta.exact ? "1" : "0";
+    canvas.style.visibility = "hidden";
+    img.style.opacity = "1";
     if (meta.exact) {
       exactFrame = meta;
       if (meta.viewId >= exactWanted && !(pending && pending.exact)) setBusy(false);
+      if (!pending && !drag) cam = draftCamera(meta.camera);  // the kernel's view, until the next move
     }
+    shown();
+  });
+  function shown() {
+    root.dataset.framesShown = String(+root.dataset.framesShown + 1);
     const now = performance.now();
     shownAt.push(now);
     while (shownAt.length && shownAt[0] < now - 1000) shownAt.shift();
-    stats.textContent = shownAt.length + " fps" + (latency === null ? "" : " \u00b7 " + Math.round(latency) + " ms");
-  });
+    if (now - statsAt < 250) return;  // the readout four times a second
+    statsAt = now;
+    const text = shownAt.length + " fps" + (latency === null ? "" : " \u00b7 " + Math.round(latency) + " ms");
+    if (stats.textContent !== text) stats.textContent = text;
+  }
   model.on("change:_answers", answer);
   answer();
 
@@ -216,6 +299,7 @@ function render({ model, el }) {
     if (!drag) return;
     const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
     drag.x = e.clientX; drag.y = e.clientY;
+    if (draft && !lastEvent && (dx || dy)) lastEvent = e.timeStamp;  // the oldest move the next draft shows
     if (dx || dy) queue(drag.event, dx, dy);
   }
   function up() {
@@ -260,7 +344,7 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
     frame's size on screen, its number, the number of the browser's view it was made for, whether
     it is the full-size frame, and a count of the answers sent (frames and errors)."""
 
-    _esm = _ESM
+    _esm = draft_js() + _ESM
     _frame = traitlets.Bytes(b"").tag(sync=True)
     _format = traitlets.Unicode("png").tag(sync=True)
     _frame_id = traitlets.Int(0).tag(sync=True)
@@ -269,6 +353,10 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
     _size = traitlets.List([512, 512]).tag(sync=True)
     _error = traitlets.Unicode("").tag(sync=True)
     _answers = traitlets.Int(0).tag(sync=True)
+    _camera = traitlets.Dict({}).tag(sync=True)
+    _draft_spec = traitlets.Unicode("").tag(sync=True)
+    _draft_data = traitlets.Bytes(b"").tag(sync=True)
+    _moves = traitlets.Dict({}).tag(sync=True)
 
     def attach(self, on_event: "Union[weakref.WeakMethod[Callable[[Dict[str, Any]], None]], Callable[[Dict[str, Any]], None]]") -> None:
         """Sends the front end's messages (dicts, see ``Viewer._on_event``) to ``on_event``: a
@@ -282,11 +370,14 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
         self.on_msg(handle)
 
     def show_frame(self, data: bytes, image_format: str, frame_id: int, width: int, height: int,
-                   view_id: int = 0, exact: bool = True) -> None:
+                   view_id: int = 0, exact: bool = True, camera: Optional[Dict[str, Any]] = None) -> None:
         """Sends a frame: encoded bytes shown at ``width`` x ``height`` CSS pixels, made for the
         browser's view ``view_id`` (the browser drops it if it shows a later view's frame);
-        ``exact``: the full-size frame (False: a draft drawn while the pointer moves)."""
+        ``exact``: the full-size frame (False: a draft drawn while the pointer moves);
+        ``camera``: the view it shows, as the browser's draft renderer moves it."""
         with self.hold_sync():
+            if camera is not None:
+                self._camera = camera
             self._frame = data
             self._format = image_format
             self._frame_id = frame_id
@@ -295,6 +386,14 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
             self._size = [width, height]
             self._error = ""
             self._answers += 1
+
+    def show_draft(self, spec: str, data: bytes, moves: Dict[str, float]) -> None:
+        """Sends the core's draft (its JSON and bytes; ``toonmesh._viewer_draft``) and the
+        constants of the viewer's moves, for the browser to draw drafts itself."""
+        with self.hold_sync():
+            self._draft_data = data
+            self._moves = moves
+            self._draft_spec = spec
 
     def show_error(self, message: str, view_id: int = 0) -> None:
         """Shows a render's error over the frame, answering the browser's view ``view_id``."""

@@ -1,8 +1,11 @@
 """An interactive toon render in Jupyter: ``toonmesh.Viewer(V, F, **render keywords)``.
 
-The kernel renders every frame with toonmesh itself (toon bands, outlines, hatching, shadows) and
-sends it to the browser as a JPEG or PNG; the browser sends back pointer events. The mesh is
-uploaded to the GPU once. The widget needs the ``notebook`` extra (``pip install
+While the pointer moves, the browser draws draft frames itself in WebGL2 with toonmesh's own
+shaders (the core translates them to GLSL ES 3.00 and sends them with the uniform bytes and the
+mesh: ``toonmesh._viewer_draft``); when it stops, the kernel renders the exact frame with
+toonmesh itself (toon bands, mesh-space lines, hatching, shadows) and sends it as a PNG or JPEG.
+Where the browser cannot draw the drafts, the kernel draws them too. The mesh is uploaded to
+the GPU once. The widget needs the ``notebook`` extra (``pip install
 'toonmesh[notebook]'``: anywidget, ipywidgets, JupyterLab); without it, or where no widget front
 end runs (nbconvert, GitHub, a terminal), the viewer shows its current frame as a still PNG.
 
@@ -11,8 +14,8 @@ once the kernel has answered the last one, keeping the newest moves merged meanw
 events only move the camera (no render each); one thread renders the latest view when it is
 free, so a slow frame never queues a backlog, and each frame carries the number of the view it
 was made for (the browser drops one older than the frame it shows). While the pointer moves,
-frames are drawn at ``drag_scale`` of the size and sent as JPEG; when it stops (or is released)
-the full-size frame follows in ``image_format``.
+frames are drawn at ``drag_scale`` of the size (by the browser, or by the kernel and sent as
+JPEG); when it stops (or is released) the full-size frame follows in ``image_format``.
 
 Lifetime: the render thread runs only while frames are wanted, and neither it nor the widget
 holds the viewer (weak references), so a viewer no longer referenced is freed with its uploaded
@@ -23,6 +26,7 @@ from __future__ import annotations
 
 import copy
 import io
+import json
 import math
 import os
 import re
@@ -37,7 +41,7 @@ from toonmesh import _core
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
 from toonmesh._described import default
 from toonmesh._load import is_scene
-from toonmesh._render import (PlacedMesh, Renderer, draw, draw_views, own_colours,
+from toonmesh._render import (PlacedMesh, Renderer, _core_items, draw, draw_views, own_colours,
                               scene_items, shared_renderer)
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
@@ -66,6 +70,9 @@ _POLE_MARGIN = math.radians(1.0)
 # view): the core's defaults, should the view be switched to that projection.
 _FOV_Y = float(default(Camera, "look_at", "fov_y"))
 _HEIGHT = float(default(Camera, "orthographic", "height"))
+# The moves as the browser's draft renderer makes them (_draft.js), from the constants above.
+_MOVES = {"orbit_per_height": _ORBIT_PER_HEIGHT, "wheel_zoom": _WHEEL_ZOOM, "pole_margin": _POLE_MARGIN,
+          "max_zoom": _MAX_ZOOM}
 #: The sides :meth:`Viewer.view_from` (and the toolbar's axis buttons) look from.
 AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
 
@@ -248,11 +255,18 @@ class Viewer:
     (its kind, bounds and choices) and showing the settings as they are now;
     ``image_format`` of the full-size frames, ``"png"`` (default) or ``"jpeg"``; ``drag_scale``,
     the size of the frames drawn while the pointer moves, as a fraction of the full size
-    (0.05 to 1, default 0.5; they are sent as JPEG).
+    (0.05 to 1, default 0.5; the browser draws them smaller where it cannot keep up, the kernel's
+    are sent as JPEG).
+
+    While the pointer moves, the browser draws the drafts in WebGL2 from toonmesh's own shaders:
+    the bands, tones, colours and texture, dithering, rim light and image-space ink; it leaves
+    mesh-space lines, hatching, shadows, paper, multisampling and supersampling to the exact
+    frame that follows from the kernel, and the view's tooltip says which.
 
     ``frame`` is the last frame shown, (H, W, 4) uint8; ``render_count`` counts the renders;
     :meth:`snapshot` renders the current view at full quality (any size, any outputs);
-    :meth:`turntable` writes a turn about the view as a GIF or MP4;
+    :meth:`turntable` writes a turn about the view as a GIF or MP4; :meth:`to_html` writes a
+    standalone page that orbits the scene in a browser (WebGL2, no kernel);
     :meth:`code` gives the ``tm.render(...)`` call that reproduces the view.
     :meth:`close` frees the viewer's meshes, render thread and front end (so does dropping the
     last reference to it); a closed viewer raises :class:`ViewerClosedError` when used.
@@ -565,10 +579,78 @@ class Viewer:
             self.frame = result.color
             self._frame_id += 1
             if self._widget is not None:
+                if not draft:
+                    self._send_draft()
                 self._widget.show_frame(data, fmt, self._frame_id, self._options.width, self._options.height,
-                                        view_id=view_id, exact=not draft)
+                                        view_id=view_id, exact=not draft, camera=self._camera_state())
             self._shared.answered = view_id
             return result
+
+    # -- drafts drawn in the browser ----------------------------------------------------------
+
+    def _camera_state(self) -> Dict[str, Any]:
+        """The current view as the browser's draft renderer moves it (``_draft.js``)."""
+        with self._state_lock:
+            v = self._view
+            return {"eye": v.eye.tolist(), "target": v.target.tolist(), "up": v.up.tolist(),
+                    "orthographic": v.orthographic, "fov_y": v.fov_y, "height": v.height}
+
+    def _draft(self) -> Tuple[str, bytes]:
+        """The core's draft of the scene with the viewer's settings from the current view: its
+        JSON and its bytes (see ``toonmesh._viewer_draft``)."""
+        with self._render_lock:
+            self._check_open()
+            with self._state_lock:
+                camera = self._view.camera()
+            options = self._options.replace(camera=camera, outputs=("color",))
+            spec, blob = self._renderer._engine._draft(_core_items(self._scene()), options)
+            data = bytes(blob)
+            return spec, self._uploads[0].shared_bytes(data) if self._uploads else data
+
+    # Whether the browser draws the drafts (False: the kernel does, as before WebGL2 drafts; the
+    # viewer benchmark's yardstick).
+    _browser_drafts = True
+
+    def _send_draft(self) -> None:
+        """Sends the draft to the browser once, and again when a setting changed."""
+        if not self._browser_drafts:
+            return
+        with self._state_lock:  # the settings, and the projection the draft's footprint is for
+            key = repr((self._options.replace(camera=None), self._view.orthographic))
+        if key == getattr(self, "_draft_key", None):
+            return
+        try:
+            spec, blob = self._draft()
+        except ViewerClosedError:
+            raise
+        except Exception as exc:  # the kernel's drafts remain; the tooltip says why
+            spec, blob = json.dumps({"error": f"{type(exc).__name__}: {exc}"}), b""
+        self._draft_key = key
+        self._widget.show_draft(spec, blob, dict(_MOVES, drag_scale=self.drag_scale))
+
+    def to_html(self, path: "str | os.PathLike[str]") -> str:
+        """Writes a standalone HTML page to ``path`` that orbits the scene from the current view,
+        drawn in the browser by WebGL2 with toonmesh's own shaders (translated to GLSL ES 3.00 by
+        the core; the draft the viewer shows while the pointer moves: the toon shading, the
+        mesh's colours and texture, image-space ink; mesh-space lines, hatching, shadows, paper
+        and supersampling are left out, and the page's tooltip says which). Everything is
+        inlined (the script, the shaders, the mesh as base64): the page needs no kernel and no
+        network. Drag to orbit, shift-drag to pan, wheel to zoom, double-click for the first
+        view. The page's root element has the ``toonmesh-viewer`` class and counts the frames
+        drawn in ``data-frames-shown``. Returns the path written, as a string."""
+        self._check_open()
+        target = os.fspath(path) if isinstance(path, (str, os.PathLike)) else None
+        if not isinstance(target, str):
+            raise TypeError(f"path: expected a str or os.PathLike, got {type(path).__name__}")
+        from toonmesh._viewer_draft import page
+
+        spec, blob = self._draft()
+        text = page(spec, blob, self._camera_state(), dict(_MOVES, drag_scale=self.drag_scale),
+                    (self._options.width, self._options.height),
+                    "toonmesh viewer")
+        with open(target, "w", encoding="utf-8") as out:
+            out.write(text)
+        return target
 
     def snapshot(self, **options: "Unpack[RenderKeywords]") -> RenderResult:
         """The current view rendered at full quality as a :class:`toonmesh.RenderResult`;

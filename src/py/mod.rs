@@ -3,6 +3,7 @@
 mod albedo;
 mod args;
 mod convert;
+mod draft;
 mod edges;
 mod errors;
 mod mesh_input;

@@ -28,7 +28,7 @@ use crate::render::{BackendChoice, FrameReport, Image, Renderer, ViewImages};
 
 /// Runs GPU work with the GIL released, catching panics. Not in the compute pool: a render
 /// mostly waits on the device, and concurrent renders should not queue behind each other there.
-fn without_gil<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
+pub(super) fn without_gil<T: Send>(py: Python<'_>, work: impl FnOnce() -> Result<T> + Send) -> PyResult<T> {
     py.detach(|| catching_panics(work)).map_err(PyErr::from)
 }
 
@@ -113,7 +113,7 @@ pub(super) fn _transform<'py>(py: Python<'py>, transform: &Bound<'py, PyAny>) ->
 
 /// The meshes of a render as the Python layer makes them: [(mesh id, Material or None, 4x4
 /// transform or None, up axis or None)]; the core checks the transforms in the scene.
-fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
+pub(super) fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
     type Item<'py> = (u64, Bound<'py, PyAny>, Option<[[f64; 4]; 4]>, Option<String>);
     let expected = "expected (mesh id, Material or None, 4x4 transform or None, up axis or None)";
     let read = |(i, item): (usize, &Bound<'_, PyAny>)| {
@@ -155,7 +155,7 @@ fn report_dict<'py>(py: Python<'py>, report: FrameReport) -> PyResult<Bound<'py,
 /// The device-side half of `toonmesh.Renderer` (see python/toonmesh/_render.py).
 #[pyclass(name = "Renderer", module = "toonmesh._core", frozen)]
 pub(super) struct PyRenderer {
-    inner: Renderer,
+    pub(super) inner: Renderer,
 }
 
 #[pymethods]

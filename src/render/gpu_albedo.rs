@@ -5,7 +5,7 @@
 
 use wgpu::util::DeviceExt;
 
-use super::albedo::{Albedo, Colors, Filter, Texture, Wrap};
+use super::albedo::{Albedo, Colors, Filter, Sampling, Texture, Wrap};
 use super::device::Device;
 
 /// Where the shader reads the albedo attributes (`AlbedoIn` in shaders/albedo.wgsl): past the
@@ -115,6 +115,9 @@ pub struct GpuAlbedo {
     /// The colour and texture's fingerprint (`Albedo::look`): meshes that meet edge to edge
     /// with the same look and material are one surface to the lines.
     pub look: u64,
+    /// The texture's full-size level and its sampling, for a draft drawn elsewhere
+    /// (`render::draft`).
+    pub texture: Option<(std::sync::Arc<Texture>, Sampling)>,
 }
 
 impl GpuAlbedo {
@@ -146,7 +149,8 @@ impl GpuAlbedo {
         let buffer = dev.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("mesh albedo"),
             contents: bytemuck::cast_slice(&vertices),
-            usage: wgpu::BufferUsages::VERTEX,
+            // read back for a draft drawn elsewhere (`render::draft`)
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_SRC,
         });
         let one = [Texture { width: 1, height: 1, texels: vec![[255; 4]] }];
         let levels = match &albedo.texture {
@@ -169,6 +173,7 @@ impl GpuAlbedo {
             textured: albedo.texture.is_some(),
             alpha_cutoff: albedo.sampling.alpha_cutoff,
             look: albedo.look(),
+            texture: albedo.texture.as_ref().map(|t| (std::sync::Arc::new(t.clone()), albedo.sampling)),
         }
     }
 }

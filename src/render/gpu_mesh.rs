@@ -340,13 +340,14 @@ impl GpuMesh {
         let vertex_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("mesh vertices"),
             contents: vertex_bytes,
-            usage: wgpu::BufferUsages::VERTEX,
+            // read back for a draft drawn elsewhere (`render::draft`)
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_SRC,
         });
         let index_buffer = indexed.then(|| {
             device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("mesh indices"),
                 contents: index_bytes,
-                usage: wgpu::BufferUsages::INDEX,
+                usage: wgpu::BufferUsages::INDEX | wgpu::BufferUsages::COPY_SRC,
             })
         });
         let flat = matches!(normals, NormalMode::Flat);

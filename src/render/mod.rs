@@ -21,6 +21,7 @@ pub mod context;
 pub mod culling;
 pub mod derived_vertices;
 pub mod device;
+pub mod draft;
 pub mod effects;
 pub mod framing;
 pub mod gpu_albedo;

@@ -33,12 +33,18 @@ use super::graph::{DrawItem, FrameCtx, Recorder};
 use super::mesh_record::MeshRecord;
 use super::passes::shade::variant::ShadingVariant;
 use super::plan::{plan, Copy, Dest, Plan};
-use super::scene::camera::{Camera, ResolvedCamera, Sphere};
+use super::scene::camera::{Camera, ResolvedCamera, SceneBounds, Sphere};
 use super::scene::checked::{CheckedScene, DeviceLimits};
 use super::scene::outputs::{Output, Pixel};
 use super::scene::{FrameSpec, MeshId, Scene};
 use super::shader::preamble;
 use super::uniforms::draw_bytes;
+
+/// The frame's background as the colour target is cleared to: linear RGB and alpha.
+pub fn background_linear(frame: &FrameSpec) -> [f64; 4] {
+    let bg = frame.background;
+    [srgb_to_linear(bg[0] as f64), srgb_to_linear(bg[1] as f64), srgb_to_linear(bg[2] as f64), bg[3] as f64]
+}
 
 /// Where a render writes one image output, row-major, top row first.
 pub enum ImageMut<'a> {
@@ -365,9 +371,12 @@ impl Renderer {
         result.map(|_| reports)
     }
 
-    /// Everything a frame needs before the GPU: the meshes, the camera, the plan, and its host
-    /// steps before the frame (timed into `report`).
-    pub(crate) fn prepare(&self, scene: CheckedScene, report: &mut FrameReport) -> Result<Prepared> {
+    /// The scene's meshes (in the order of its items), its bounds, and its camera resolved for
+    /// them and the frame's aspect.
+    pub(crate) fn resolve(
+        &self,
+        scene: &CheckedScene,
+    ) -> Result<(Vec<Arc<MeshRecord>>, SceneBounds, ResolvedCamera)> {
         let records: Vec<Arc<MeshRecord>> =
             scene.scene.items.iter().map(|i| self.mesh(i.mesh)).collect::<Result<_>>()?;
         let bounds = scene
@@ -378,6 +387,14 @@ impl Renderer {
             let support = scene_support(&scene.scene.items, &records, bounds.sphere.center);
             scene.scene.camera.resolve_with(&bounds, &support, frame.width as f64 / frame.height as f64)?
         };
+        Ok((records, bounds, cam))
+    }
+
+    /// Everything a frame needs before the GPU: the meshes, the camera, the plan, and its host
+    /// steps before the frame (timed into `report`).
+    pub(crate) fn prepare(&self, scene: CheckedScene, report: &mut FrameReport) -> Result<Prepared> {
+        let (records, bounds, cam) = self.resolve(&scene)?;
+        let frame = &scene.frame;
         if frame.outputs.has(Output::Depth) && !DEPTH_SCALE_RANGE.contains(&cam.scale) {
             return Err(Error::invalid(
                 "outputs",
@@ -511,7 +528,7 @@ impl Renderer {
                 derived: &p.derived[i],
             })
             .collect();
-        let bg = scene.frame.background;
+        let [r, g, b, a] = background_linear(&scene.frame);
         let f = FrameCtx {
             dev: ctx,
             pipelines: &ctx.pipelines,
@@ -519,12 +536,7 @@ impl Renderer {
             shape: plan.shape,
             draws: &draws,
             preamble: preamble(),
-            background: wgpu::Color {
-                r: srgb_to_linear(bg[0] as f64),
-                g: srgb_to_linear(bg[1] as f64),
-                b: srgb_to_linear(bg[2] as f64),
-                a: bg[3] as f64,
-            },
+            background: wgpu::Color { r, g, b, a },
             lights: scene.shader_lights.len() as u32,
             point_lights: scene.point_lights,
         };

@@ -132,12 +132,17 @@ pub fn lighting_block(scene: &CheckedScene, cam: &ResolvedCamera) -> LightingBlo
     b
 }
 
-/// Model -> normalised view for an item, including the mesh's storage placement.
-pub fn model_view(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera) -> DMat4 {
-    cam.normalized_view()
-        * item.model_matrix()
+/// Stored coordinates -> world for an item: its model matrix after the mesh's storage
+/// placement.
+pub fn model_matrix(item: &SceneItem, placement: &Placement) -> DMat4 {
+    item.model_matrix()
         * DMat4::from_translation(placement.origin.into())
         * DMat4::from_scale(glam::DVec3::splat(placement.scale))
+}
+
+/// Model -> normalised view for an item, including the mesh's storage placement.
+pub fn model_view(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera) -> DMat4 {
+    cam.normalized_view() * model_matrix(item, placement)
 }
 
 pub fn mesh_block(item: &SceneItem, placement: &Placement, cam: &ResolvedCamera) -> MeshBlock {

@@ -122,6 +122,17 @@ pub struct FrameCtx<'a> {
     pub point_lights: u32,
 }
 
+/// A mesh pass's own WGSL: its file, then the stages written for `stages`.
+pub fn mesh_pass_wgsl(pass: &str, stages: MeshStages) -> String {
+    format!("{pass}\n{}", stages.wgsl())
+}
+
+/// A whole module's WGSL: the renderer's `preamble`, the shading hooks of `hook` (the defaults
+/// where None), the pass's own WGSL.
+pub fn module_wgsl(preamble: &str, pass: &str, hook: Option<&dyn ShadeHook>) -> String {
+    wgsl::compose(preamble, hook.map_or(wgsl::DEFAULT_HOOKS, |h| h.wgsl()), pass)
+}
+
 impl FrameCtx<'_> {
     /// The shader module `name` of a pass's WGSL, with the shading hooks of `hook` (the
     /// defaults where None), compiled on first use.
@@ -138,11 +149,7 @@ impl FrameCtx<'_> {
         stages: MeshStages,
         hook: Option<&dyn ShadeHook>,
     ) -> wgpu::ShaderModule {
-        self.module_keyed(
-            format!("{name} ({})", stages.name()),
-            || format!("{pass}\n{}", stages.wgsl()),
-            hook,
-        )
+        self.module_keyed(format!("{name} ({})", stages.name()), || mesh_pass_wgsl(pass, stages), hook)
     }
 
     fn module_keyed(
@@ -155,9 +162,7 @@ impl FrameCtx<'_> {
             Some(h) => format!("{name}+{}", h.name()),
             None => name,
         };
-        self.pipelines.module(&self.dev.device, key, || {
-            wgsl::compose(self.preamble, hook.map_or(wgsl::DEFAULT_HOOKS, |h| h.wgsl()), &pass())
-        })
+        self.pipelines.module(&self.dev.device, key, || module_wgsl(self.preamble, &pass(), hook))
     }
 
     /// Draws every mesh with the pipeline `pipeline_for` gives it, switching pipelines only

@@ -19,33 +19,32 @@ fn finite_bits(b: u32) -> bool {
     return (b & 0x7f800000u) != 0x7f800000u;
 }
 
-// max(|Gx|, |Gy|) of one channel of a 3x3 window w[row][column], in the order the CPU sums it.
-fn sobel(w: array<array<f32, 3>, 3>) -> f32 {
-    let gx = (w[0][0] - w[0][2]) + 2.0 * (w[1][0] - w[1][2]) + (w[2][0] - w[2][2]);
-    let gy = (w[0][0] - w[2][0]) + 2.0 * (w[0][1] - w[2][1]) + (w[0][2] - w[2][2]);
+// max(|Gx|, |Gy|) of one channel of a 3x3 window, w[3 * row + column], in the order the CPU
+// sums it (flat: GLSL ES 3.00, which the browser's drafts use, has no arrays of arrays).
+fn sobel(w: array<f32, 9>) -> f32 {
+    let gx = (w[0] - w[2]) + 2.0 * (w[3] - w[5]) + (w[6] - w[8]);
+    let gy = (w[0] - w[6]) + 2.0 * (w[1] - w[7]) + (w[2] - w[8]);
     return max(abs(gx), abs(gy));
 }
 
 fn is_edge(pos: vec4<f32>) -> bool {
     let size = vec2<i32>(textureDimensions(geometry));
     let c = vec2<i32>(floor(pos.xy));
-    var texels: array<array<vec4<u32>, 3>, 3>;
+    var texels: array<vec4<u32>, 9>;
     var background = 0u;
     for (var r = 0; r < 3; r++) {
         for (var k = 0; k < 3; k++) {
             let p = clamp(c + vec2<i32>(k - 1, r - 1), vec2<i32>(0), size - 1);
             let t = textureLoad(geometry, p, 0);
-            texels[r][k] = t;
+            texels[3 * r + k] = t;
             background += select(1u, 0u, finite_bits(t.w));
         }
     }
     var gn = 0.0;
     for (var ch = 0; ch < 3; ch++) {
-        var w: array<array<f32, 3>, 3>;
-        for (var r = 0; r < 3; r++) {
-            for (var k = 0; k < 3; k++) {
-                w[r][k] = bitcast<f32>(texels[r][k][ch]);
-            }
+        var w: array<f32, 9>;
+        for (var i = 0; i < 9; i++) {
+            w[i] = bitcast<f32>(texels[i][ch]);
         }
         gn = max(gn, sobel(w));
     }
@@ -58,11 +57,9 @@ fn is_edge(pos: vec4<f32>) -> bool {
     if (background > 0u) {
         return true;
     }
-    var d: array<array<f32, 3>, 3>;
-    for (var r = 0; r < 3; r++) {
-        for (var k = 0; k < 3; k++) {
-            d[r][k] = bitcast<f32>(texels[r][k].w);
-        }
+    var d: array<f32, 9>;
+    for (var i = 0; i < 9; i++) {
+        d[i] = bitcast<f32>(texels[i].w);
     }
     return sobel(d) > frame.outlines.depth_threshold;
 }

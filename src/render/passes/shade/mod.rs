@@ -53,9 +53,7 @@ impl Shade {
             | stages.bits() << 48;
         let pipeline = f.pipelines.get(PipelineKey::new("shade", bits).with(&shading.constants), || {
             let module = f.mesh_module("shade", WGSL, stages, hook);
-            let mut constants = shading.constants.clone();
-            constants.push(("LIGHTS", f.lights as f64));
-            constants.push(("POINT_LIGHTS", f.point_lights as f64));
+            let mut constants = shading.frame_constants(f.lights, f.point_lights);
             let mut more = vec![];
             if let Some(h) = hook {
                 constants.extend(h.constants());

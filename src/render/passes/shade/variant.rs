@@ -36,6 +36,15 @@ impl ShadingVariant {
         self.parts.iter().filter(|p| p.buffer.as_ref().is_some_and(|b| b.derive.is_some()))
     }
 
+    /// Its pipeline constants for a frame of `lights` lights, `point_lights` the bits of those
+    /// that are points.
+    pub fn frame_constants(&self, lights: u32, point_lights: u32) -> Vec<(&'static str, f64)> {
+        let mut constants = self.constants.clone();
+        constants.push(("LIGHTS", lights as f64));
+        constants.push(("POINT_LIGHTS", point_lights as f64));
+        constants
+    }
+
     /// The shading pass's stages for it, writing the colour and, where given, the geometry
     /// target.
     pub fn stages(&self, geometry: Option<GeometryLayout>) -> MeshStages {

@@ -1,0 +1,444 @@
+//! Drafts drawn elsewhere: what a WebGL2 page needs to draw a scene with the renderer's own
+//! shaders while the view moves, the exact frame following from the renderer.
+//!
+//! `Renderer::draft` gives, for a checked scene: the GL programs (the shading pass's stages for
+//! each mesh's variant, and the image-space ink's two fragment passes, `edge_bits` and `edges`,
+//! around `vs_fullscreen`), all translated from the composed WGSL by naga (`glsl`); the bytes of
+//! the `Frame` uniform struct and of each mesh's `Draw`, with where each field lies in them, so
+//! that the page rewrites only the camera's fields per frame; the meshes' vertex, index and
+//! colour buffers as the renderer uploaded them, with their layouts; the lights as they are
+//! before the view turns them; and the steps of the exact frame the draft leaves out (mesh-space
+//! lines, hatching, shadows, paper, multisampling, supersampling). The page's own code is
+//! plumbing: GL calls, and the camera's matrices from its eye, target and up.
+
+pub mod glsl;
+
+use glam::DMat4;
+use serde::Serialize;
+
+use crate::error::{Error, Result};
+use crate::render::block::BlockLayout;
+use crate::render::effects::frame::{frame_bytes, frame_members};
+use crate::render::effects::outlines::ink::INK_OVER;
+use crate::render::effects::outlines::settings::ImageRule;
+use crate::render::effects::outlines::settings::INK_KINDS;
+use crate::render::effects::outlines::{edge_bits, edges};
+use crate::render::gpu_albedo;
+use crate::render::graph::build::nearest_wins;
+use crate::render::graph::effect::FrameInputs;
+use crate::render::graph::mesh_stages::MeshStages;
+use crate::render::graph::target::GeometryLayout;
+use crate::render::graph::{geometry_clear, mesh_pass_wgsl, module_wgsl};
+use crate::render::passes::shade::{self, variant::ShadingVariant};
+use crate::render::plan::plan;
+use crate::render::renderer::{background_linear, Renderer};
+use crate::render::scene::checked::CheckedScene;
+use crate::render::scene::light::Space;
+use crate::render::scene::SceneItem;
+use crate::render::shader::preamble;
+use crate::render::uniforms::{draw_bytes, draw_members, lighting_block, model_matrix, LightSlot, Members};
+
+use glsl::GlslProgram;
+
+/// The passes of the exact frame a draft draws too (or that give nothing to see).
+const DRAWN: &[&str] = &["shade", "edge_bits", "edges", "gbuffer", "clear_outline"];
+
+/// What a step of the exact frame that a draft leaves out draws, in the words a tooltip uses.
+fn described(step: &str) -> &str {
+    match step {
+        "silhouettes" | "lines" | "visible_lines" => "mesh-space lines",
+        "shadow_map" | "shadow" => "shadows",
+        "downsample" => "supersampling",
+        other => other,
+    }
+}
+
+/// A field of a uniform struct: its byte offset and size.
+#[derive(Clone, Debug, Serialize)]
+pub struct Field {
+    pub name: String,
+    pub offset: usize,
+    pub size: usize,
+}
+
+/// Where a stretch of the draft's data lies in its one byte blob.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Span {
+    pub offset: usize,
+    pub length: usize,
+}
+
+/// A vertex attribute: its location, its float count, its byte offset in its buffer.
+#[derive(Clone, Debug, Serialize)]
+pub struct Attribute {
+    pub location: u32,
+    pub components: u32,
+    pub offset: u64,
+}
+
+/// A vertex buffer a program reads: which of the mesh's buffers, its stride, its attributes.
+#[derive(Clone, Debug, Serialize)]
+pub struct VertexBuffer {
+    /// "vertices" (positions and normals) or "albedo" (colour and texture coordinates).
+    pub buffer: &'static str,
+    pub stride: u64,
+    pub attributes: Vec<Attribute>,
+}
+
+/// A mesh's texture: its full-size level (sRGB RGBA8, rows top first) and its sampling.
+#[derive(Clone, Debug, Serialize)]
+pub struct DraftTexture {
+    pub width: u32,
+    pub height: u32,
+    pub texels: Span,
+    /// "linear" (mipmapped) or "nearest".
+    pub filter: &'static str,
+    /// "repeat", "clamp" or "mirror".
+    pub wrap: &'static str,
+}
+
+/// One mesh of the scene.
+#[derive(Clone, Debug, Serialize)]
+pub struct DraftMesh {
+    /// Its program in `Draft::programs`.
+    pub program: usize,
+    pub vertex_buffers: Vec<VertexBuffer>,
+    pub vertices: Span,
+    pub albedo: Option<Span>,
+    /// u32 indices (None: the vertices are drawn as a list).
+    pub indices: Option<Span>,
+    pub count: u32,
+    /// Its `Draw` struct's bytes.
+    pub draw: Span,
+    /// Stored coordinates -> world, column-major: the page's model-view is the normalised view
+    /// times this.
+    pub model: [f64; 16],
+    pub texture: Option<DraftTexture>,
+}
+
+/// A light's slot as the view turns it: `world` lights turn with the view (in the lighting
+/// block they are given as seen from an unturned view), camera lights stay.
+#[derive(Clone, Debug, Serialize)]
+pub struct DraftLight {
+    pub world: bool,
+    /// The byte offset in the frame's bytes of its position (xyz, w: 0 a direction, 1 a point).
+    pub position: usize,
+}
+
+/// The camera the draft's bytes were written for.
+#[derive(Clone, Debug, Serialize)]
+pub struct DraftCamera {
+    /// The normalisation: the GPU works in view space divided by it.
+    pub scale: f64,
+    pub orthographic: bool,
+    /// The vertical field of view (radians) or the view's height (world units).
+    pub fov_or_height: f64,
+    pub near: f64,
+    pub far: f64,
+    pub eye: [f64; 3],
+    pub forward: [f64; 3],
+    /// The output size the view block was written for.
+    pub width: u32,
+    pub height: u32,
+    /// The sphere around the scene (world): clip planes that enclose it.
+    pub center: [f64; 3],
+    pub radius: f64,
+}
+
+/// Everything a page needs to draw drafts of a scene.
+#[derive(Clone, Debug, Serialize)]
+pub struct Draft {
+    /// The shading programs, then `edge_bits` and `edges` when the scene has image-space ink.
+    pub programs: Vec<GlslProgram>,
+    /// `edge_bits` and `edges` in `programs` (the image-space ink), and the rule: under the
+    /// paper's the edges read the geometry target directly (no `edge_bits`).
+    pub edge_bits: Option<usize>,
+    pub edges: Option<usize>,
+    pub meshes: Vec<DraftMesh>,
+    pub frame: Span,
+    pub frame_fields: Vec<Field>,
+    pub draw_fields: Vec<Field>,
+    /// The byte offsets in the frame's bytes of the f32s measured in output pixels (the ink's
+    /// widths): a draft drawn smaller scales them.
+    pub pixel_widths: Vec<usize>,
+    pub lights: Vec<DraftLight>,
+    pub camera: DraftCamera,
+    /// The colour target's clear value (linear RGBA) and the geometry target's (u32 bits).
+    pub background: [f64; 4],
+    pub geometry_clear: Option<[u32; 4]>,
+    /// GL state the translated stages assume: the winding GL calls front (the y flip of
+    /// `ADJUST_COORDINATE_SPACE` turns wgpu's counter-clockwise around) and the depth test.
+    pub front_face: &'static str,
+    pub depth_compare: &'static str,
+    /// The image ink's blending over the colour (GL's source and destination factors).
+    pub ink_blend: [&'static str; 2],
+    /// What the exact frame draws that the draft leaves out.
+    pub left_to_exact: Vec<String>,
+}
+
+fn fields(members: &Members) -> Vec<Field> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    for (member, block) in members {
+        let BlockLayout { size, fields, .. } = block;
+        for (name, offset, len) in fields {
+            out.push(Field { name: format!("{member}.{name}"), offset: at + offset, size: *len });
+        }
+        at += size;
+    }
+    out
+}
+
+/// GL's name of a depth test.
+fn gl_compare(c: Option<wgpu::CompareFunction>) -> &'static str {
+    match c {
+        Some(wgpu::CompareFunction::Less) => "LESS",
+        Some(wgpu::CompareFunction::LessEqual) => "LEQUAL",
+        _ => "ALWAYS",
+    }
+}
+
+/// GL's name of a blend factor the ink uses.
+fn gl_factor(f: wgpu::BlendFactor) -> &'static str {
+    match f {
+        wgpu::BlendFactor::One => "ONE",
+        wgpu::BlendFactor::OneMinusSrcAlpha => "ONE_MINUS_SRC_ALPHA",
+        wgpu::BlendFactor::SrcAlpha => "SRC_ALPHA",
+        _ => "ZERO",
+    }
+}
+
+fn cols(m: DMat4) -> [f64; 16] {
+    m.to_cols_array()
+}
+
+/// The bytes of a device buffer.
+fn read_buffer(r: &Renderer, buffer: &wgpu::Buffer) -> Result<Vec<u8>> {
+    let dev = r.context();
+    let staging = dev.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("draft readback"),
+        size: buffer.size(),
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let mut enc = dev.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("draft") });
+    enc.copy_buffer_to_buffer(buffer, 0, &staging, 0, buffer.size());
+    let submission = dev.queue.submit([enc.finish()]);
+    staging.map_async(wgpu::MapMode::Read, .., |_| {});
+    dev.wait(submission, "a draft's mesh")?;
+    let bytes = staging
+        .get_mapped_range(..)
+        .map_err(|e| Error::Internal(format!("reading a mesh back for a draft: {e}")))?
+        .to_vec();
+    Ok(bytes)
+}
+
+/// The blob the draft's spans point into.
+#[derive(Default)]
+struct Blob(Vec<u8>);
+
+impl Blob {
+    /// Appends `bytes` (4-byte aligned, for typed arrays over it).
+    fn push(&mut self, bytes: &[u8]) -> Span {
+        while self.0.len() % 4 != 0 {
+            self.0.push(0);
+        }
+        let span = Span { offset: self.0.len(), length: bytes.len() };
+        self.0.extend_from_slice(bytes);
+        span
+    }
+}
+
+/// The item a draft draws: its material without the hatching (the field's strokes are left to
+/// the exact frame).
+fn drafted(item: &SceneItem) -> SceneItem {
+    let mut item = item.clone();
+    item.material.effects.hatching = None;
+    item
+}
+
+fn vertex_buffers(stages: &MeshStages) -> Vec<VertexBuffer> {
+    let mut out = Vec::new();
+    for (slot, layout) in stages.vertex_buffers().into_iter().enumerate() {
+        let Some(layout) = layout else { continue };
+        let buffer = if slot as u32 == gpu_albedo::SLOT { "albedo" } else { "vertices" };
+        let attributes = layout
+            .attributes
+            .iter()
+            .map(|a| Attribute {
+                location: a.shader_location,
+                components: (a.format.size() / 4) as u32,
+                offset: a.offset,
+            })
+            .collect();
+        out.push(VertexBuffer { buffer, stride: layout.array_stride, attributes });
+    }
+    out
+}
+
+impl Renderer {
+    /// The draft of `scene` from its camera (see the module's documentation), and the blob of
+    /// bytes its spans point into.
+    pub fn draft(&self, scene: &CheckedScene) -> Result<(Draft, Vec<u8>)> {
+        let (records, bounds, cam) = self.resolve(scene)?;
+        let frame = &scene.frame;
+        let image_edges = scene.scene.outlines.as_ref().filter(|o| o.draws_image_edges());
+        let geometry = image_edges.map(|_| GeometryLayout::NormalDepth);
+        let mut blob = Blob::default();
+        let mut programs: Vec<GlslProgram> = Vec::new();
+        let mut keys: Vec<(MeshStages, Vec<(&'static str, f64)>)> = Vec::new();
+        let mut meshes = Vec::new();
+        for (item, rec) in scene.scene.items.iter().zip(&records) {
+            let item = drafted(item);
+            let g = &rec.gpu;
+            let shading = ShadingVariant::of(&item.material, g.albedo.as_ref());
+            let stages = shading.stages(geometry);
+            let constants = shading.frame_constants(scene.shader_lights.len() as u32, scene.point_lights);
+            let key = (stages, constants);
+            let program = match keys.iter().position(|k| *k == key) {
+                Some(i) => i,
+                None => {
+                    let wgsl = module_wgsl(preamble(), &mesh_pass_wgsl(shade::WGSL, stages), None);
+                    let name = format!("shade ({})", stages.name());
+                    programs.push(glsl::program(&name, &wgsl, "vs_mesh", "fs_mesh", &key.1)?);
+                    keys.push(key);
+                    programs.len() - 1
+                }
+            };
+            let vertices = blob.push(&read_buffer(self, &g.vertices)?);
+            let indices = match &g.indices {
+                Some(b) => Some(blob.push(&read_buffer(self, b)?)),
+                None => None,
+            };
+            let albedo = match &g.albedo {
+                Some(a) if stages.albedo => Some(blob.push(&read_buffer(self, &a.vertices)?)),
+                _ => None,
+            };
+            let texture =
+                g.albedo.as_ref().filter(|a| a.textured).and_then(|a| a.texture.as_ref()).map(|(t, s)| {
+                    DraftTexture {
+                        width: t.width,
+                        height: t.height,
+                        texels: blob.push(bytemuck::cast_slice(&t.texels)),
+                        filter: match s.filter {
+                            crate::render::albedo::Filter::Linear => "linear",
+                            crate::render::albedo::Filter::Nearest => "nearest",
+                        },
+                        wrap: match s.wrap {
+                            crate::render::albedo::Wrap::Repeat => "repeat",
+                            crate::render::albedo::Wrap::Clamp => "clamp",
+                            crate::render::albedo::Wrap::Mirror => "mirror",
+                        },
+                    }
+                });
+            let model = model_matrix(&item, &g.placement);
+            meshes.push(DraftMesh {
+                program,
+                vertex_buffers: vertex_buffers(&stages),
+                vertices,
+                albedo,
+                indices,
+                count: g.draw_count,
+                draw: blob.push(&draw_bytes(&item, &g.placement, &cam)),
+                model: cols(model),
+                texture,
+            });
+        }
+        let (mut edge_bits_program, mut edges_program) = (None, None);
+        if let Some(o) = image_edges {
+            if o.image_rule == ImageRule::Discontinuity {
+                let wgsl = module_wgsl(preamble(), edge_bits::WGSL, None);
+                programs.push(glsl::program("edge_bits", &wgsl, "vs_fullscreen", "fs_edge_bits", &[])?);
+                edge_bits_program = Some(programs.len() - 1);
+            }
+            let wgsl = module_wgsl(preamble(), edges::WGSL, None);
+            programs.push(glsl::program("edges", &wgsl, "vs_fullscreen", "fs_color", &[])?);
+            edges_program = Some(programs.len() - 1);
+        }
+        // the frame's bytes, the lights as an unturned view sees them (the page turns them)
+        let mut bytes = frame_bytes(&FrameInputs { scene, cam: &cam, sphere: bounds.sphere });
+        let mut unturned = cam;
+        unturned.view = DMat4::IDENTITY;
+        let lighting = lighting_block(scene, &unturned);
+        let members = frame_members();
+        let lighting_at: usize =
+            members.iter().take_while(|(n, _)| *n != "lighting").map(|(_, b)| b.size).sum();
+        let lighting_bytes = crate::render::block::Block::bytes(&lighting);
+        bytes[lighting_at..lighting_at + lighting_bytes.len()].copy_from_slice(&lighting_bytes);
+        let frame_span = blob.push(&bytes);
+        let frame_fields = fields(&members);
+        let field_at = |name: &str| frame_fields.iter().find(|f| f.name == name).map(|f| f.offset);
+        let lights_at =
+            field_at("lighting.lights").ok_or_else(|| Error::Internal("no lighting.lights".into()))?;
+        let lights = scene
+            .shader_lights
+            .iter()
+            .enumerate()
+            .map(|(k, l)| DraftLight {
+                world: l.space == Space::World,
+                position: lights_at
+                    + k * std::mem::size_of::<LightSlot>()
+                    + std::mem::offset_of!(LightSlot, position),
+            })
+            .collect();
+        // the w of each ink kind's [r, g, b, width]
+        let pixel_widths = field_at("outlines.ink").map_or(vec![], |at| {
+            (0..INK_KINDS).map(|k| at + k * std::mem::size_of::<[f32; 4]>() + 12).collect()
+        });
+        let mut left: Vec<String> = Vec::new();
+        let mut leave = |what: &str| {
+            if !left.iter().any(|l| l == what) {
+                left.push(what.to_string());
+            }
+        };
+        for name in plan(scene).names() {
+            if !DRAWN.contains(&name) && !name.starts_with("readback") {
+                leave(described(name));
+            }
+        }
+        if scene.scene.items.iter().any(|i| i.material.effects.hatching.is_some()) {
+            leave("hatching");
+        }
+        if frame.msaa > 1 {
+            leave("multisampling");
+        }
+        let to3 = |v: glam::DVec3| v.to_array();
+        let draft = Draft {
+            programs,
+            edge_bits: edge_bits_program,
+            edges: edges_program,
+            meshes,
+            frame: frame_span,
+            frame_fields,
+            pixel_widths,
+            draw_fields: fields(&draw_members()),
+            lights,
+            camera: DraftCamera {
+                scale: cam.scale,
+                orthographic: cam.orthographic,
+                fov_or_height: cam.fov_or_height,
+                near: cam.near,
+                far: cam.far,
+                eye: to3(cam.eye),
+                forward: to3(cam.forward),
+                width: frame.width,
+                height: frame.height,
+                center: to3(bounds.sphere.center),
+                radius: bounds.sphere.radius,
+            },
+            background: background_linear(frame),
+            geometry_clear: geometry.map(|g| {
+                let c = geometry_clear(g);
+                [c.r, c.g, c.b, c.a].map(|x| x as u32)
+            }),
+            front_face: "CW",
+            depth_compare: gl_compare(nearest_wins().and_then(|d| d.depth_compare)),
+            ink_blend: [gl_factor(INK_OVER.color.src_factor), gl_factor(INK_OVER.color.dst_factor)],
+            left_to_exact: left,
+        };
+        Ok((draft, blob.0))
+    }
+}
+
+#[cfg(test)]
+mod tests;

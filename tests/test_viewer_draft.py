@@ -1,0 +1,239 @@
+"""The viewer's drafts drawn in the browser: toonmesh's own WGSL translated to GLSL ES 3.00 by the
+core (``Renderer._draft``), drawn by WebGL2 in headless Chromium (SwiftShader) from the page
+:meth:`toonmesh.Viewer.to_html` writes.
+
+The page is opened in Chromium: its shaders compile and link there (the check of the translated
+GLSL that counts), it draws (the canvas is not blank) and a drag makes it draw more frames. A
+draft and the exact frame of the same view (``tm.render`` with the viewer's camera) agree on at
+least 95% of the covered pixels within 8 levels, for the plain bunny, a coloured one, a
+textured one and two bunnies (each its own draw and material), with Vulkan and GL kernels (shading without ink: the draft's ink is image-space
+only). The draft's image-space ink is drawn (dark pixels where the exact frame has its edges),
+the page shows the draft's pixels as they are (a screenshot of the canvas), and what the draft
+leaves to the exact frame is named in the page's tooltip.
+"""
+
+from __future__ import annotations
+
+import io
+
+import numpy as np
+import pytest
+
+import toonmesh as tm
+from conftest import RENDER_BACKENDS, chromium, need
+from toonmesh.data import bunny
+
+SIZE = (320, 240)
+
+
+def _scene(kind: str):
+    V, F = bunny()
+    if kind == "plain":
+        return tm.Mesh(V, F)
+    if kind == "two meshes":  # each with its own draw: one placed, one coloured by its material
+        moved = np.array([[1, 0, 0, 0.12], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], float)
+        return [tm.Mesh(V, F), tm.Mesh(V, F, transform=moved, material=tm.Material.bands("#4f8fd8"))]
+    lo, hi = V.min(axis=0), V.max(axis=0)
+    t = (V - lo) / (hi - lo)
+    if kind == "coloured":
+        return tm.Mesh(V, F, vertex_colors=np.c_[t, np.ones(len(V))].astype(np.float32))
+    checker = (np.indices((8, 8)).sum(axis=0) % 2).astype(np.uint8)
+    texture = np.stack([checker * 200 + 40, 120 + checker * 60, 255 - checker * 180, np.full_like(checker, 255)], -1)
+    return tm.Mesh(V, F, uv=t[:, :2].astype(np.float32), texture=texture.astype(np.uint8), texture_filter="nearest")
+
+
+@pytest.fixture(scope="module")
+def browser():
+    executable = chromium()
+    sync_api = need("playwright.sync_api")
+    with sync_api.sync_playwright() as p:
+        b = p.chromium.launch(executable_path=executable, args=["--no-sandbox"])
+        try:
+            yield b
+        finally:
+            b.close()
+
+
+def _open(browser, path):
+    page = browser.new_page()
+    errors = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(path.as_uri())
+    page.wait_for_function("() => { const r = document.querySelector('.toonmesh-viewer');"
+                           " return +r.dataset.framesShown > 0 || r.dataset.error; }", timeout=60_000)
+    error = page.evaluate("document.querySelector('.toonmesh-viewer').dataset.error")
+    assert error is None and not errors, (error, errors)
+    return page
+
+
+def _draft(page, camera=None) -> np.ndarray:
+    """The page's draft of ``camera`` (the viewer's camera state; None: as it is), (H, W, 4) uint8."""
+    p = page.evaluate("(c) => { window.toonmeshDraft.draw(c); const p = window.toonmeshDraft.pixels();"
+                      " return [p.width, p.height, Array.from(p.data)]; }", camera)
+    return np.asarray(p[2], np.uint8).reshape(p[1], p[0], 4)
+
+
+def _agreement(draft: np.ndarray, exact: np.ndarray) -> float:
+    """The share of the pixels covered in either image (not the background, the corner's colour)
+    whose channels differ by at most 8 levels."""
+    bg = exact[0, 0, :3].astype(int)
+    covered = (np.abs(exact[..., :3] - bg).max(-1) > 0) | (np.abs(draft[..., :3] - bg).max(-1) > 0)
+    diff = np.abs(draft[..., :3].astype(int) - exact[..., :3].astype(int)).max(-1)
+    return float((diff[covered] <= 8).mean())
+
+
+@pytest.mark.parametrize("backend", RENDER_BACKENDS)
+@pytest.mark.parametrize("kind", ["plain", "coloured", "textured", "two meshes"])
+def test_a_draft_agrees_with_the_exact_frame_of_the_same_view(browser, tmp_path, backend, kind):
+    mesh = _scene(kind)
+    v = tm.Viewer(mesh, backend=backend, width=SIZE[0], height=SIZE[1])
+    try:
+        v.orbit(70, -25)  # not the first view: the page's camera follows the viewer's
+        v.to_html(tmp_path / "page.html")
+        page = _open(browser, tmp_path / "page.html")
+        draft = _draft(page, v._camera_state())
+        exact = tm.render(mesh, camera=v.camera, width=SIZE[0], height=SIZE[1], backend=backend).color
+        title = page.evaluate("document.querySelector('.toonmesh-viewer').title")
+        page.close()
+    finally:
+        v.close()
+    assert draft.shape == exact.shape
+    covered = float((np.abs(exact[..., :3].astype(int) - 255).max(-1) > 0).mean())
+    assert covered > 0.1, covered  # the bunny is in the view
+    share = _agreement(draft, exact)
+    assert share >= 0.95, f"{share:.1%} of the covered pixels agree within 8 levels"
+    assert "WebGL2" in title and "the draft draws everything" in title, title
+
+
+def _page_of(browser, tmp_path, name, **options):
+    """The page of a bunny viewer with ``options``, opened; and the viewer's exact frame and camera."""
+    V, F = bunny()
+    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1], **options)
+    path = tmp_path / f"{name}.html"
+    try:
+        assert v.to_html(path) == str(path)
+        exact, camera = v.frame, v._camera_state()
+    finally:
+        v.close()
+    text = path.read_text(encoding="utf-8")
+    assert "http://" not in text and "https://" not in text and "src=" not in text  # all inlined
+    return _open(browser, path), exact, camera
+
+
+def test_the_draft_draws_the_image_space_ink_as_the_exact_frame_does(browser, tmp_path):
+    page, exact, camera = _page_of(browser, tmp_path, "image", outlines="image")
+    draft = _draft(page, camera)
+    # what the page shows is the draft's pixels, as they are
+    need("PIL")
+    from PIL import Image
+
+    shown = np.asarray(Image.open(io.BytesIO(page.locator("canvas").screenshot())).convert("RGB"))
+    np.testing.assert_array_equal(shown, draft[..., :3])
+    page.close()
+    dark_draft = draft[..., :3].max(-1) < 100
+    dark_exact = exact[..., :3].max(-1) < 100
+    assert dark_exact.sum() > 500, dark_exact.sum()
+    assert (dark_draft & dark_exact).sum() > 0.8 * max(dark_draft.sum(), dark_exact.sum())
+    assert _agreement(draft, exact) >= 0.95
+
+
+def test_the_page_draws_orbits_and_names_what_the_draft_leaves_out(browser, tmp_path):
+    page, exact, camera = _page_of(browser, tmp_path, "both", outlines="both", msaa=4)
+    root = page.locator(".toonmesh-viewer")
+    assert root.get_attribute("data-exact") == "0"
+    title = root.get_attribute("title")
+    assert "left to the exact frame: mesh-space lines, multisampling" in title, title
+    first = _draft(page, camera)
+    assert first[..., :3].min() < 150 and first[..., :3].max() > 200, "the canvas is blank"
+    # a synthetic drag: more frames, another picture
+    shown = int(root.get_attribute("data-frames-shown"))
+    box = page.locator("canvas").bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for i in range(1, 11):
+        page.mouse.move(x + 8 * i, y + 2 * i)
+        page.wait_for_timeout(20)
+    page.mouse.up()
+    page.wait_for_function("(n) => +document.querySelector('.toonmesh-viewer').dataset.framesShown >= n + 3",
+                           arg=shown, timeout=20_000)
+    moved = _draft(page)
+    assert (np.abs(moved.astype(int) - first.astype(int)).max(-1) > 24).mean() > 0.02
+    page.close()
+
+
+def test_to_html_refuses_a_path_that_is_not_one():
+    V, F = bunny()
+    v = tm.Viewer(V, F, width=64, height=64)
+    try:
+        with pytest.raises(TypeError, match="path"):
+            v.to_html(3)  # type: ignore[arg-type]
+    finally:
+        v.close()
+    with pytest.raises(tm.ViewerClosedError):
+        v.to_html("x.html")
+
+
+@pytest.mark.parametrize("options, left", [
+    ({"material": tm.Material.hatching("#d08050")}, "hatching"),
+    ({"lights": [tm.Light.directional((-1, -1, -1), shadows=True)]}, "shadows"),
+    ({"material": tm.Material.bands("#d08050", rim=tm.Rim(), dither="bayer4")}, None),
+    ({"supersample": 2}, "supersampling"),
+])
+def test_effects_compile_in_the_browser_and_those_it_cannot_draw_are_named(browser, tmp_path, options, left):
+    page, exact, camera = _page_of(browser, tmp_path, "effects", **options)  # its programs compiled and linked
+    title = page.locator(".toonmesh-viewer").get_attribute("title")
+    draft = _draft(page, camera)
+    page.close()
+    if left is None:  # a rim light and dithering: per-pixel effects the draft draws as the exact frame does
+        assert "the draft draws everything" in title, title
+        assert _agreement(draft, exact) >= 0.95
+    else:
+        assert f"left to the exact frame: {left}" in title, title
+
+
+@pytest.mark.parametrize("options", [
+    {"camera": tm.Camera.fit(orthographic=True)},
+    {"outlines": tm.Outlines("image", image_rule="paper")},  # the ink read from the geometry target
+    {"transform": [[0, 0, 2, 0.5], [0, 2, 0, 0], [-2, 0, 0, 1], [0, 0, 0, 1]]},
+    {"lights": [tm.Light.point((0.3, 0.3, 0.3), space="world"), tm.Light.directional((1, 0, -1))]},
+], ids=["orthographic", "paper-rule", "transform", "world-lights"])
+def test_the_camera_the_placement_and_the_lights_follow_the_view_as_in_the_kernel(browser, tmp_path, options):
+    V, F = bunny()
+    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1], **options)
+    try:
+        v.orbit(40, 10)
+        v.to_html(tmp_path / "page.html")
+        camera = v._camera_state()
+        given = {k: x for k, x in options.items() if k != "camera"}
+        exact = tm.render(V, F, camera=v.camera, width=SIZE[0], height=SIZE[1], **given).color
+    finally:
+        v.close()
+    page = _open(browser, tmp_path / "page.html")
+    draft = _draft(page, camera)
+    page.close()
+    assert _agreement(draft, exact) >= 0.95
+
+
+def test_a_shader_the_browser_refuses_is_said_in_the_tooltip(browser, tmp_path):
+    import json
+
+    from toonmesh._viewer_draft import page as draft_page
+
+    V, F = bunny()
+    v = tm.Viewer(V, F, width=64, height=64)
+    try:
+        spec, blob = v._draft()
+        camera = v._camera_state()
+    finally:
+        v.close()
+    broken = json.loads(spec)
+    broken["programs"][0]["fragment"]["source"] += "\nthis is not GLSL\n"
+    path = tmp_path / "broken.html"
+    path.write_text(draft_page(json.dumps(broken), blob, camera, {"drag_scale": 0.5}, (64, 64), "t"), encoding="utf-8")
+    page = browser.new_page()
+    page.goto(path.as_uri())
+    page.wait_for_function("document.querySelector('.toonmesh-viewer').dataset.error !== undefined", timeout=30_000)
+    title = page.locator(".toonmesh-viewer").get_attribute("title")
+    page.close()
+    assert title.startswith("WebGL2 drafts failed: shade") and "fragment" in title, title
