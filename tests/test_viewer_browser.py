@@ -13,7 +13,8 @@ came early: none) and merged the moves meanwhile (fewer views than moves), losin
 kernel's camera is the whole drag's). Then it turns the wheel and checks that the bunny grew,
 switches the outlines off with the on-screen controls and checks that the ink went, presses
 the toolbar's +x and home buttons and checks the kernel's camera, downloads the screenshot and
-compares it with the kernel's frame, goes full screen and back, sends a frame made for an old
+compares it with the kernel's frame, goes full screen and back, turns the view with the
+auto-rotate button and stops it (the exact frame shows the turned view), sends a frame made for an old
 view and checks that it is dropped, and closes the viewer: the view and its controls go, and
 using it raises an error that says it is closed.
 With TOONMESH_SCREENSHOT=1 it also writes the screenshot the viewer's page shows (docs/viewer.png:
@@ -146,6 +147,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
                 "axes": viewer.locator(".toonmesh-axis").evaluate_all("bs => bs.map(b => b.dataset.axis)"),
                 "screenshot": viewer.locator(".toonmesh-screenshot").count(),
                 "fullscreen": viewer.locator(".toonmesh-fullscreen").count(),
+                "spin": viewer.locator(".toonmesh-spin").count(),
                 "suppress": viewer.get_attribute("data-jp-suppress-context-menu"),
                 "tabindex": viewer.get_attribute("tabindex"),
             }
@@ -240,6 +242,21 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             viewer.locator(".toonmesh-fullscreen").click()
             page.wait_for_function("document.fullscreenElement === null", timeout=5_000)
 
+            # auto-rotate: the view turns (drafts drawn here) until the button is pressed again,
+            # then the exact frame of where it turned to
+            before_spin = _pixels(img.screenshot())
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            viewer.locator(".toonmesh-spin").click()
+            page.wait_for_function("(n) => +document.querySelector('.toonmesh-viewer').dataset.framesShown > n + 5",
+                                   arg=shown, timeout=20_000)
+            spinning = viewer.get_attribute("data-spinning")
+            viewer.locator(".toonmesh-spin").click()
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            _wait_exact_after(page, shown)
+            page.wait_for_timeout(300)
+            after_spin = _pixels(img.screenshot())
+            stopped = viewer.get_attribute("data-spinning")
+
             # a frame made for an older view than the one shown is dropped
             shown = int(viewer.get_attribute("data-frames-shown"))
             _run_cell(page, cells, 4, "stale sent")
@@ -258,7 +275,9 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
 
     assert first["exact"] == "1" and first["busy"] == "0" and int(first["frames-shown"]) >= 1, first
     assert toolbar == {"home": 1, "axes": ["+x", "-x", "+y", "-y", "+z", "-z"], "screenshot": 1, "fullscreen": 1,
-                       "suppress": "", "tabindex": "0"}, toolbar
+                       "spin": 1, "suppress": "", "tabindex": "0"}, toolbar
+    assert spinning == "1" and stopped == "0", (spinning, stopped)
+    assert (np.abs(before_spin - after_spin).max(axis=2) > 24).mean() > 0.02  # it turned
     assert menu_prevented and jupyter_menus == 0, (menu_prevented, jupyter_menus)
     assert unfocused_frames == 0 and unfocused_views == 0, (unfocused_frames, unfocused_views)
 

@@ -237,3 +237,44 @@ def test_a_shader_the_browser_refuses_is_said_in_the_tooltip(browser, tmp_path):
     title = page.locator(".toonmesh-viewer").get_attribute("title")
     page.close()
     assert title.startswith("WebGL2 drafts failed: shade") and "fragment" in title, title
+
+
+def _two_fingers(page, spread: float, shift: float) -> None:
+    """Two touch pointers on the canvas's centre, 40 px apart, moved apart by ``spread`` px each
+    and both by ``shift`` px to the right, in ten steps, then lifted."""
+    page.evaluate("""([spread, shift]) => {
+      const c = document.querySelector('canvas'), r = c.getBoundingClientRect();
+      const cx = r.left + r.width / 2, cy = r.top + r.height / 2;
+      const ev = (type, id, x) => c.dispatchEvent(new PointerEvent(type, { pointerId: id, clientX: x, clientY: cy,
+        pointerType: 'touch', isPrimary: id === 1, bubbles: true, cancelable: true }));
+      ev('pointerdown', 1, cx - 20); ev('pointerdown', 2, cx + 20);
+      let a = cx - 20, b = cx + 20;
+      for (let i = 1; i <= 10; i++) {
+        a += shift / 10 - spread / 10; b += shift / 10 + spread / 10;
+        ev('pointermove', 1, a); ev('pointermove', 2, b);
+      }
+      ev('pointerup', 1, a); ev('pointerup', 2, b);
+    }""", [spread, shift])
+
+
+def _covered(img: np.ndarray) -> np.ndarray:
+    bg = img[0, 0, :3].astype(int)
+    return np.abs(img[..., :3].astype(int) - bg).max(-1) > 0
+
+
+def test_two_fingers_pinch_to_zoom_and_move_together_to_pan(browser, tmp_path):
+    page, _, _ = _page_of(browser, tmp_path, "fingers")
+    first = _covered(_draft(page))
+    _two_fingers(page, spread=40.0, shift=0.0)  # apart: nearer
+    nearer = _covered(_draft(page))
+    assert nearer.sum() > 1.3 * first.sum(), (first.sum(), nearer.sum())
+    _two_fingers(page, spread=-20.0, shift=0.0)  # together: farther
+    farther = _covered(_draft(page))
+    assert farther.sum() < 0.9 * nearer.sum(), (nearer.sum(), farther.sum())
+    _two_fingers(page, spread=0.0, shift=40.0)  # both to the right: the model follows
+    moved = _covered(_draft(page))
+    x = np.arange(SIZE[0])
+    centre = lambda m: float((m * x).sum() / m.sum())  # noqa: E731
+    assert 25 < centre(moved) - centre(farther) < 55, (centre(farther), centre(moved))
+    assert abs(moved.sum() - farther.sum()) < 0.1 * farther.sum()  # a pan, not a zoom
+    page.close()

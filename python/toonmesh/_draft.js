@@ -60,6 +60,54 @@ function draftZoom(cam, wheel, k) {
   else cam.eye = v3.add(cam.target, v3.mul(v3.sub(cam.eye, cam.target), 1 / factor));
 }
 
+// Pointer gestures on `el` as the viewer's steps ({event, dx, dy}, as `draftStep` and the
+// kernel take them): one pointer drags (orbit; shift or the right button pans), two pointers
+// pinch (a zoom, in the wheel's units: `k().wheel_zoom`) and move together (a pan of their
+// midpoint). `on(step, e)` takes each step; `down(e)` and `up(e)` the first pointer down and the
+// last one up. Lifting one finger of two ends the pinch; the other then does nothing.
+function draftGestures(el, k, on, down, up) {
+  const pointers = new Map();
+  let drag = null, pinch = null;
+  const pair = () => {
+    const [a, b] = [...pointers.values()];
+    return { d: Math.hypot(a.x - b.x, a.y - b.y), x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
+  };
+  el.addEventListener("pointerdown", (e) => {
+    pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
+    try { el.setPointerCapture(e.pointerId); } catch (_) { /* a pointer already gone */ }
+    e.preventDefault();
+    if (pointers.size === 1) {
+      drag = (e.shiftKey || e.button === 2) ? "pan" : "orbit";
+      down(e);
+    } else if (pointers.size === 2) {
+      drag = null;
+      pinch = pair();
+    }
+  });
+  el.addEventListener("pointermove", (e) => {
+    const p = pointers.get(e.pointerId);
+    if (!p) return;
+    const dx = e.clientX - p.x, dy = e.clientY - p.y;
+    p.x = e.clientX; p.y = e.clientY;
+    if (pinch && pointers.size === 2) {
+      const now = pair(), wheel = k().wheel_zoom;
+      if (wheel && pinch.d > 0 && now.d > 0 && now.d !== pinch.d) on({ event: "zoom", dx: 0, dy: -Math.log(now.d / pinch.d) / wheel }, e);
+      if (now.x !== pinch.x || now.y !== pinch.y) on({ event: "pan", dx: now.x - pinch.x, dy: now.y - pinch.y }, e);
+      pinch = now;
+    } else if (drag && (dx || dy)) {
+      on({ event: drag, dx, dy }, e);
+    }
+  });
+  const lift = (e) => {
+    if (!pointers.delete(e.pointerId)) return;
+    drag = null;
+    pinch = null;
+    if (pointers.size === 0) up(e);
+  };
+  el.addEventListener("pointerup", lift);
+  el.addEventListener("pointercancel", lift);
+}
+
 // A step as the kernel's viewer takes it ({event, dx, dy}).
 function draftStep(cam, step, pixelsHigh, k) {
   if (step.event === "orbit") draftOrbit(cam, step.dx, step.dy, pixelsHigh, k);

@@ -25,7 +25,7 @@ let cam = draftCamera(home), draft = null, wanted = false, moving = false, settl
 const pacer = draftPacer(data.moves.drag_scale);
 try {
   draft = createDraft(canvas, JSON.parse(data.spec), blob);
-  root.title = "drag to orbit, shift-drag to pan, wheel to zoom, double-click for the first view; "
+  root.title = "drag to orbit, shift-drag to pan, wheel or pinch to zoom, two fingers to pan, double-click for the first view; "
     + "drafts drawn in WebGL2 from toonmesh's shaders; " + draftNote(draft.leftToExact);
 } catch (e) {
   root.dataset.error = String(e.message || e);
@@ -47,21 +47,7 @@ function moved() {
   clearTimeout(settle);
   settle = setTimeout(() => { moving = false; ask(); }, 150);
 }
-let drag = null;
-canvas.addEventListener("pointerdown", (e) => {
-  drag = { x: e.clientX, y: e.clientY, event: (e.shiftKey || e.button === 2) ? "pan" : "orbit" };
-  canvas.setPointerCapture(e.pointerId);
-  e.preventDefault();
-});
-canvas.addEventListener("pointermove", (e) => {
-  if (!drag) return;
-  const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
-  drag.x = e.clientX; drag.y = e.clientY;
-  if (dx || dy) { draftStep(cam, { event: drag.event, dx, dy }, height, data.moves); moved(); }
-});
-const up = () => { drag = null; };
-canvas.addEventListener("pointerup", up);
-canvas.addEventListener("pointercancel", up);
+draftGestures(canvas, () => data.moves, (step) => { draftStep(cam, step, height, data.moves); moved(); }, () => {}, () => {});
 canvas.addEventListener("wheel", (e) => { e.preventDefault(); draftStep(cam, { event: "zoom", dy: e.deltaY }, height, data.moves); moved(); }, { passive: false });
 canvas.addEventListener("dblclick", () => { cam = draftCamera(home); ask(); });
 canvas.addEventListener("contextmenu", (e) => e.preventDefault());

@@ -27,6 +27,7 @@ _ESM = r"""
 // asked for when the pointer stops (data-draft "webgl"); otherwise (no WebGL2, a program that
 // fails) the kernel draws the drafts as before (data-draft "kernel"), and the tooltip says why.
 const SETTLE_MS = 150;
+const SPIN_PX = 2;  // auto-rotate: a drag of this many pixels a frame
 const ANSWER_TIMEOUT_MS = 10000;  // a view never answered (a kernel restarted) stops blocking
 const AXES = ["+x", "-x", "+y", "-y", "+z", "-z"];
 const BORDER = "1px solid #c8c8c8", FOCUSED = "1px solid #1a73e8";
@@ -37,7 +38,8 @@ function render({ model, el }) {
   root.tabIndex = 0;  // focus: the wheel zooms only when the view has it
   root.setAttribute("data-jp-suppress-context-menu", "");  // JupyterLab's menu stays off the view
   root.setAttribute("data-lm-suppress-shortcuts", "");  // keys pressed here do not run notebook commands
-  Object.assign(root.dataset, { framesShown: "0", exact: "0", busy: "0", dropped: "0", viewsSent: "0", draft: "kernel" });
+  Object.assign(root.dataset, { framesShown: "0", exact: "0", busy: "0", dropped: "0", viewsSent: "0", draft: "kernel",
+                                spinning: "0" });
   root.style.cssText = "position: relative; display: inline-block; line-height: 0; outline: none;"
     + " background: #fff; border: " + BORDER + "; box-shadow: none";
   const bar = document.createElement("div");
@@ -159,7 +161,7 @@ function render({ model, el }) {
   }
   function add(step, exact) {
     if (draft && step && "dx" in step) moveDraft(step);
-    else if (step) cam = null;  // home, an axis, framing: the kernel's camera follows
+    else if (step) { cam = null; stopSpin(); }  // home, an axis, framing: the kernel's camera follows
     if (!pending) pending = { steps: [], exact: false };
     const last = pending.steps[pending.steps.length - 1];
     if (step && last && last.event === step.event && "dx" in step) { last.dx += step.dx; last.dy += step.dy; }
@@ -251,6 +253,24 @@ function render({ model, el }) {
     if (document.fullscreenElement === root) document.exitFullscreen();
     else if (root.requestFullscreen) root.requestFullscreen().catch(() => {});
   });
+  // auto-rotate: the view turns about its up by SPIN_PX of a drag a frame, until clicked again,
+  // dragged or sent elsewhere
+  let spinning = false;
+  const spinButton = button("toonmesh-spin", "\u27f3", "turn about the view's up (again to stop)", () => {
+    if (spinning) stopSpin();
+    else { spinning = true; root.dataset.spinning = "1"; spinButton.style.fontWeight = "bold"; requestAnimationFrame(spin); }
+  });
+  function spin() {
+    if (!spinning) return;
+    queue("orbit", SPIN_PX, 0);
+    requestAnimationFrame(spin);
+  }
+  function stopSpin() {
+    if (!spinning) return;
+    spinning = false;
+    root.dataset.spinning = "0";
+    spinButton.style.fontWeight = "";
+  }
   const stats = document.createElement("span");
   stats.className = "toonmesh-stats";
   stats.title = "frames shown in the last second \u00b7 the last view's time to the kernel's answer";
@@ -288,22 +308,17 @@ function render({ model, el }) {
     settleTimer = setTimeout(settle, SETTLE_MS);
   }
   function settle() { clearTimeout(settleTimer); add(null, true); }
-  function down(e) {
+  function down() {
     root.focus({ preventScroll: true });
-    drag = { x: e.clientX, y: e.clientY, event: (e.shiftKey || e.button === 2) ? "pan" : "orbit" };
-    img.setPointerCapture(e.pointerId);
+    stopSpin();
+    drag = true;
     img.style.cursor = "grabbing";
-    e.preventDefault();
   }
-  function move(e) {
-    if (!drag) return;
-    const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
-    drag.x = e.clientX; drag.y = e.clientY;
-    if (draft && !lastEvent && (dx || dy)) lastEvent = e.timeStamp;  // the oldest move the next draft shows
-    if (dx || dy) queue(drag.event, dx, dy);
+  function step(s, e) {
+    if (draft && !lastEvent) lastEvent = e.timeStamp;  // the oldest move the next draft shows
+    queue(s.event, s.dx, s.dy);
   }
   function up() {
-    if (!drag) return;
     drag = null;
     img.style.cursor = "grab";
     settle();
@@ -317,10 +332,8 @@ function render({ model, el }) {
   function menu(e) { e.preventDefault(); }  // right-drag pans
   const focus = () => { root.style.border = FOCUSED; root.style.boxShadow = "0 0 0 1px #1a73e8"; };
   const blur = () => { root.style.border = BORDER; root.style.boxShadow = "none"; };
-  img.addEventListener("pointerdown", down);
-  img.addEventListener("pointermove", move);
-  img.addEventListener("pointerup", up);
-  img.addEventListener("pointercancel", up);
+  // one pointer orbits (shift or the right button pans), two pinch to zoom and move to pan
+  draftGestures(img, () => model.get("_moves"), step, down, up);
   stage.addEventListener("wheel", wheel, { passive: false });
   img.addEventListener("dblclick", dblclick);
   root.addEventListener("contextmenu", menu);

@@ -969,6 +969,7 @@ def _make_widget(viewer: Viewer) -> Any:
     except ImportError:
         return None
     widget = ViewerWidget()
+    widget._moves = dict(_MOVES, drag_scale=viewer.drag_scale)  # for pinches, before any draft
     widget.attach(weakref.WeakMethod(viewer._on_event))
     return widget
 
