@@ -278,3 +278,52 @@ def test_two_fingers_pinch_to_zoom_and_move_together_to_pan(browser, tmp_path):
     assert 25 < centre(moved) - centre(farther) < 55, (centre(farther), centre(moved))
     assert abs(moved.sum() - farther.sum()) < 0.1 * farther.sum()  # a pan, not a zoom
     page.close()
+
+
+def test_the_wheel_zooms_toward_the_cursor_as_the_kernels_viewer_does(browser, tmp_path):
+    V, F = bunny()
+    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1])
+    path = tmp_path / "wheel.html"
+    v.to_html(path)
+    page = _open(browser, path)
+    box = page.locator("canvas").bounding_box()
+    offset = (70, -40)  # right of and above the centre
+    page.mouse.move(box["x"] + box["width"] / 2 + offset[0], box["y"] + box["height"] / 2 + offset[1])
+    page.mouse.wheel(0, -300)
+    page.wait_for_timeout(200)
+    drafted = page.evaluate("window.toonmeshDraft.camera()")
+    page.close()
+    # the kernel's viewer, given the same wheel turn at the same cursor
+    v._step({"event": "zoom", "dx": 0, "dy": -300, "x": offset[0], "y": offset[1]})
+    kernel = v._camera_state()
+    v.close()
+    for k in ("eye", "target"):
+        assert np.allclose(drafted[k], kernel[k], rtol=1e-6, atol=1e-6 * np.abs(kernel["eye"]).max()), (k, drafted, kernel)
+
+
+@pytest.mark.parametrize("orthographic", [False, True])
+def test_a_zoom_toward_the_cursor_keeps_the_point_under_it(orthographic):
+    V, F = bunny()
+    camera = tm.Camera.orthographic((0.3, 0.4, 1.0), height=0.3) if orthographic else None
+    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1], camera=camera)
+    before = v._camera_state()
+
+    def under(state, x, y):
+        """The point at the target's depth under pixel offset (x, y), and the basis and pixel size."""
+        eye, target, up = (np.asarray(state[k], float) for k in ("eye", "target", "up"))
+        f = (target - eye) / np.linalg.norm(target - eye)
+        right = np.cross(f, up)
+        right /= np.linalg.norm(right)
+        true_up = np.cross(right, f)
+        size = (state["height"] if state["orthographic"]
+                else 2 * np.linalg.norm(target - eye) * np.tan(np.radians(state["fov_y"]) / 2)) / SIZE[1]
+        return target + (x * right - y * true_up) * size, right, true_up, size, target
+
+    point = under(before, 90, 35)[0]
+    v._step({"event": "zoom", "dx": 0, "dy": -400, "x": 90, "y": 35})
+    after = v._camera_state()
+    _, right, true_up, size, target = under(after, 0, 0)
+    assert size < under(before, 0, 0)[3] * 0.8  # nearer
+    seen = ((point - target) @ right / size, -(point - target) @ true_up / size)
+    assert np.allclose(seen, (90, 35), atol=1e-6), seen
+    v.close()

@@ -54,10 +54,13 @@ function draftPan(cam, dx, dy, pixelsHigh) {
   cam.target = v3.add(cam.target, step);
 }
 
-function draftZoom(cam, wheel, k) {
+// A zoom toward the cursor at (x, y) pixels from the view's centre: the point under it at the
+// target's depth stays under it (a pan after the zoom, as the kernel's viewer does).
+function draftZoom(cam, wheel, x, y, pixelsHigh, k) {
   const factor = Math.min(k.max_zoom, Math.max(1 / k.max_zoom, Math.exp(-k.wheel_zoom * wheel)));
   if (cam.orthographic) cam.height /= factor;
   else cam.eye = v3.add(cam.target, v3.mul(v3.sub(cam.eye, cam.target), 1 / factor));
+  if (x || y) draftPan(cam, -x * (factor - 1), -y * (factor - 1), pixelsHigh);
 }
 
 // Pointer gestures on `el` as the viewer's steps ({event, dx, dy}, as `draftStep` and the
@@ -112,7 +115,7 @@ function draftGestures(el, k, on, down, up) {
 function draftStep(cam, step, pixelsHigh, k) {
   if (step.event === "orbit") draftOrbit(cam, step.dx, step.dy, pixelsHigh, k);
   else if (step.event === "pan") draftPan(cam, step.dx, step.dy, pixelsHigh);
-  else if (step.event === "zoom") draftZoom(cam, step.dy, k);
+  else if (step.event === "zoom") draftZoom(cam, step.dy, step.x || 0, step.y || 0, pixelsHigh, k);
 }
 
 // Column-major 4x4 product a * b.

@@ -48,12 +48,18 @@ function moved() {
   settle = setTimeout(() => { moving = false; ask(); }, 150);
 }
 draftGestures(canvas, () => data.moves, (step) => { draftStep(cam, step, height, data.moves); moved(); }, () => {}, () => {});
-canvas.addEventListener("wheel", (e) => { e.preventDefault(); draftStep(cam, { event: "zoom", dy: e.deltaY }, height, data.moves); moved(); }, { passive: false });
+canvas.addEventListener("wheel", (e) => {  // toward the cursor, as the viewer zooms
+  e.preventDefault();
+  const r = canvas.getBoundingClientRect();
+  const at = { x: e.clientX - r.left - r.width / 2, y: e.clientY - r.top - r.height / 2 };
+  draftStep(cam, { event: "zoom", dx: 0, dy: e.deltaY, ...at }, height, data.moves);
+  moved();
+}, { passive: false });
 canvas.addEventListener("dblclick", () => { cam = draftCamera(home); ask(); });
 canvas.addEventListener("contextmenu", (e) => e.preventDefault());
 // for tests and measurements: draw a view (the viewer's camera state) at full size, read it back
 window.toonmeshDraft = { draw: (c) => { if (c) cam = draftCamera(c); moving = false; frame(); },
-                         pixels: () => draft && draft.pixels(), renderer: draft };
+                         pixels: () => draft && draft.pixels(), camera: () => draftCamera(cam), renderer: draft };
 frame();
 """
 

@@ -164,7 +164,9 @@ function render({ model, el }) {
     else if (step) { cam = null; stopSpin(); }  // home, an axis, framing: the kernel's camera follows
     if (!pending) pending = { steps: [], exact: false };
     const last = pending.steps[pending.steps.length - 1];
-    if (step && last && last.event === step.event && "dx" in step) { last.dx += step.dx; last.dy += step.dy; }
+    // consecutive moves of one kind merge (zooms only at one cursor: then they add up exactly)
+    const same = step && last && last.event === step.event && "dx" in step && last.x === step.x && last.y === step.y;
+    if (same) { last.dx += step.dx; last.dy += step.dy; }
     else if (step) pending.steps.push(step);
     pending.exact = exact;
     if (exact) setBusy(true);
@@ -326,7 +328,12 @@ function render({ model, el }) {
   function wheel(e) {
     if (!root.contains(document.activeElement)) return;  // not focused: the notebook scrolls
     e.preventDefault();
-    queue("zoom", 0, e.deltaY);
+    const r = img.getBoundingClientRect();  // toward the cursor: its offset from the view's centre
+    const at = { x: Math.round(e.clientX - r.left - r.width / 2), y: Math.round(e.clientY - r.top - r.height / 2) };
+    if (draft && !lastEvent) lastEvent = e.timeStamp;
+    add({ event: "zoom", dx: 0, dy: e.deltaY, ...at }, false);
+    clearTimeout(settleTimer);
+    settleTimer = setTimeout(settle, SETTLE_MS);
   }
   function dblclick(e) { e.preventDefault(); add({ event: "frame" }, true); }
   function menu(e) { e.preventDefault(); }  // right-drag pans

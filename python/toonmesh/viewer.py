@@ -758,7 +758,13 @@ class Viewer:
             self._move(event, _pixels("dx", float(step.get("dx", 0))), _pixels("dy", float(step.get("dy", 0))))
         elif event == "zoom":
             wheel = _number("dy", float(step.get("dy", 0)), -_MAX_DRAG, _MAX_DRAG)
-            self._move("zoom", float(np.clip(math.exp(-_WHEEL_ZOOM * wheel), 1.0 / _MAX_ZOOM, _MAX_ZOOM)), 0.0)
+            factor = float(np.clip(math.exp(-_WHEEL_ZOOM * wheel), 1.0 / _MAX_ZOOM, _MAX_ZOOM))
+            self._move("zoom", factor, 0.0)
+            # toward the cursor (x, y: its offset from the view's centre, pixels): the point under
+            # it at the target's depth stays under it (draftZoom in _draft.js moves the same way)
+            x, y = (_pixels(k, float(step.get(k, 0))) for k in ("x", "y"))
+            if x or y:
+                self._move("pan", -x * (factor - 1.0), -y * (factor - 1.0))
         elif event == "frame":
             self._reframe()
         elif event == "home":
