@@ -55,6 +55,19 @@ def test_a_hundred_quick_drag_events_render_a_few_frames_and_end_on_the_final_vi
     same.close()
 
 
+def test_drag_scale_can_be_changed_and_reaches_the_browser(viewer):
+    need("anywidget")
+    viewer.drag_scale = 0.25
+    assert viewer.drag_scale == 0.25 and viewer.widget._moves["drag_scale"] == 0.25
+    viewer._on_event({"event": "orbit", "dx": 2, "dy": 0.5})
+    assert viewer._wait()
+    assert viewer.frame.shape == (SIZE // 4, SIZE // 4, 4)  # a kernel draft at the new scale
+    with pytest.raises(ValueError, match="drag_scale"):
+        viewer.drag_scale = 0
+    assert viewer.drag_scale == 0.25
+    viewer.drag_scale = 0.5
+
+
 def test_orbit_turns_about_the_target_and_half_a_turn_per_frame_height(viewer):
     c0 = viewer.camera
     frame0 = viewer.frame.copy()

@@ -136,6 +136,7 @@ function render({ model, el }) {
   Object.defineProperty(root, "toonmeshEventDelays", { get: () => eventDelays.slice() });
   Object.defineProperty(root, "toonmeshDraft", { get: () => draft });  // its pixels(), for tests
   model.on("change:_draft_spec", loadDraft);
+  model.on("change:_moves", () => { pacer = null; });  // a new drag_scale paces the next drafts
   loadDraft();
 
   // -- flow control ---------------------------------------------------------------------------

@@ -312,7 +312,7 @@ class Viewer:
         self._options = RenderOptions(**options)  # checked before any upload
         self._given: Dict[str, Any] = {k: v for k, v in options.items() if k != "camera" and v is not None}
         self.image_format = _format(image_format)
-        self.drag_scale = _number("drag_scale", drag_scale, 0.05, 1.0)
+        self.drag_scale = drag_scale
         self._normals = normals
         self._smooth_iterations = smooth_iterations
         self._shared = _Shared()
@@ -341,6 +341,19 @@ class Viewer:
 
             self._controls = ControlPanel(self)
             self._front.append(self._controls)
+
+    @property
+    def drag_scale(self) -> float:
+        """The size of the frames drawn while the pointer moves, as a fraction of the full size
+        (0.05 to 1); setting it reaches the browser's drafts at once."""
+        return self._drag_scale
+
+    @drag_scale.setter
+    def drag_scale(self, value: float) -> None:
+        self._drag_scale = _number("drag_scale", value, 0.05, 1.0)
+        widget = getattr(self, "_widget", None)  # None while the viewer is being made
+        if widget is not None:
+            widget._moves = dict(_MOVES, drag_scale=self._drag_scale)
 
     # -- the scene ----------------------------------------------------------------------------
 
