@@ -63,6 +63,13 @@ function draftZoom(cam, wheel, x, y, pixelsHigh, k) {
   if (x || y) draftPan(cam, -x * (factor - 1), -y * (factor - 1), pixelsHigh);
 }
 
+// The pointer event `e`'s offset from the centre of `el` in whole pixels (where a zoom goes
+// toward: the kernel's viewer takes it so).
+function draftCursor(e, el) {
+  const r = el.getBoundingClientRect();
+  return { x: Math.round(e.clientX - r.left - r.width / 2), y: Math.round(e.clientY - r.top - r.height / 2) };
+}
+
 // Pointer gestures on `el` as the viewer's steps ({event, dx, dy}, as `draftStep` and the
 // kernel take them): one pointer drags (orbit; shift or the right button pans), two pointers
 // pinch (a zoom, in the wheel's units: `k().wheel_zoom`) and move together (a pan of their
@@ -233,7 +240,7 @@ function createDraft(canvas, spec, blob) {
   const meshes = spec.meshes.map((m) => {
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = { vertices: m.vertices, albedo: m.albedo };
+    const buffers = { position: m.vertices, albedo: m.albedo };  // by the stage part that reads each
     for (const vb of m.vertex_buffers) {
       const b = gl.createBuffer();
       gl.bindBuffer(gl.ARRAY_BUFFER, b);

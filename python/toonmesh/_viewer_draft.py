@@ -50,9 +50,7 @@ function moved() {
 draftGestures(canvas, () => data.moves, (step) => { draftStep(cam, step, height, data.moves); moved(); }, () => {}, () => {});
 canvas.addEventListener("wheel", (e) => {  // toward the cursor, as the viewer zooms
   e.preventDefault();
-  const r = canvas.getBoundingClientRect();
-  const at = { x: e.clientX - r.left - r.width / 2, y: e.clientY - r.top - r.height / 2 };
-  draftStep(cam, { event: "zoom", dx: 0, dy: e.deltaY, ...at }, height, data.moves);
+  draftStep(cam, { event: "zoom", dx: 0, dy: e.deltaY, ...draftCursor(e, canvas) }, height, data.moves);
   moved();
 }, { passive: false });
 canvas.addEventListener("dblclick", () => { cam = draftCamera(home); ask(); });

@@ -265,7 +265,7 @@ function render({ model, el }) {
   });
   function spin() {
     if (!spinning) return;
-    queue("orbit", SPIN_PX, 0);
+    queue({ event: "orbit", dx: SPIN_PX, dy: 0 });
     requestAnimationFrame(spin);
   }
   function stopSpin() {
@@ -305,8 +305,8 @@ function render({ model, el }) {
 
   // -- pointer --------------------------------------------------------------------------------
   let drag = null, settleTimer = null;
-  function queue(event, dx, dy) {
-    add({ event, dx, dy }, false);
+  function queue(step) {  // a move; the exact frame follows once the moves stop
+    add(step, false);
     clearTimeout(settleTimer);
     settleTimer = setTimeout(settle, SETTLE_MS);
   }
@@ -319,7 +319,7 @@ function render({ model, el }) {
   }
   function step(s, e) {
     if (draft && !lastEvent) lastEvent = e.timeStamp;  // the oldest move the next draft shows
-    queue(s.event, s.dx, s.dy);
+    queue(s);
   }
   function up() {
     drag = null;
@@ -329,12 +329,7 @@ function render({ model, el }) {
   function wheel(e) {
     if (!root.contains(document.activeElement)) return;  // not focused: the notebook scrolls
     e.preventDefault();
-    const r = img.getBoundingClientRect();  // toward the cursor: its offset from the view's centre
-    const at = { x: Math.round(e.clientX - r.left - r.width / 2), y: Math.round(e.clientY - r.top - r.height / 2) };
-    if (draft && !lastEvent) lastEvent = e.timeStamp;
-    add({ event: "zoom", dx: 0, dy: e.deltaY, ...at }, false);
-    clearTimeout(settleTimer);
-    settleTimer = setTimeout(settle, SETTLE_MS);
+    step({ event: "zoom", dx: 0, dy: e.deltaY, ...draftCursor(e, img) }, e);  // toward the cursor
   }
   function dblclick(e) { e.preventDefault(); add({ event: "frame" }, true); }
   function menu(e) { e.preventDefault(); }  // right-drag pans

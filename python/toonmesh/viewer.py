@@ -353,7 +353,11 @@ class Viewer:
         self._drag_scale = _number("drag_scale", value, 0.05, 1.0)
         widget = getattr(self, "_widget", None)  # None while the viewer is being made
         if widget is not None:
-            widget._moves = dict(_MOVES, drag_scale=self._drag_scale)
+            widget._moves = self._moves()
+
+    def _moves(self) -> Dict[str, float]:
+        """The constants of the viewer's moves and its drag_scale, for the browser's drafts."""
+        return dict(_MOVES, drag_scale=self._drag_scale)
 
     # -- the scene ----------------------------------------------------------------------------
 
@@ -639,7 +643,7 @@ class Viewer:
         except Exception as exc:  # the kernel's drafts remain; the tooltip says why
             spec, blob = json.dumps({"error": f"{type(exc).__name__}: {exc}"}), b""
         self._draft_key = key
-        self._widget.show_draft(spec, blob, dict(_MOVES, drag_scale=self.drag_scale))
+        self._widget.show_draft(spec, blob, self._moves())
 
     def to_html(self, path: "str | os.PathLike[str]") -> str:
         """Writes a standalone HTML page to ``path`` that orbits the scene from the current view,
@@ -658,7 +662,7 @@ class Viewer:
         from toonmesh._viewer_draft import page
 
         spec, blob = self._draft()
-        text = page(spec, blob, self._camera_state(), dict(_MOVES, drag_scale=self.drag_scale),
+        text = page(spec, blob, self._camera_state(), self._moves(),
                     (self._options.width, self._options.height),
                     "toonmesh viewer")
         with open(target, "w", encoding="utf-8") as out:
@@ -988,7 +992,7 @@ def _make_widget(viewer: Viewer) -> Any:
     except ImportError:
         return None
     widget = ViewerWidget()
-    widget._moves = dict(_MOVES, drag_scale=viewer.drag_scale)  # for pinches, before any draft
+    widget._moves = viewer._moves()  # for pinches, before any draft
     widget.attach(weakref.WeakMethod(viewer._on_event))
     return widget
 

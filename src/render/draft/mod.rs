@@ -23,7 +23,6 @@ use crate::render::effects::outlines::ink::INK_OVER;
 use crate::render::effects::outlines::settings::ImageRule;
 use crate::render::effects::outlines::settings::INK_KINDS;
 use crate::render::effects::outlines::{edge_bits, edges};
-use crate::render::gpu_albedo;
 use crate::render::graph::build::nearest_wins;
 use crate::render::graph::effect::FrameInputs;
 use crate::render::graph::mesh_stages::MeshStages;
@@ -36,6 +35,7 @@ use crate::render::scene::checked::CheckedScene;
 use crate::render::scene::light::Space;
 use crate::render::scene::SceneItem;
 use crate::render::shader::preamble;
+use crate::render::stage_part::{Part, VertexData};
 use crate::render::uniforms::{draw_bytes, draw_members, lighting_block, model_matrix, LightSlot, Members};
 
 use glsl::GlslProgram;
@@ -79,7 +79,8 @@ pub struct Attribute {
 /// A vertex buffer a program reads: which of the mesh's buffers, its stride, its attributes.
 #[derive(Clone, Debug, Serialize)]
 pub struct VertexBuffer {
-    /// "vertices" (positions and normals) or "albedo" (colour and texture coordinates).
+    /// The stage part that reads it: "position" (positions and normals: the mesh's `vertices`)
+    /// or "albedo" (colour and texture coordinates).
     pub buffer: &'static str,
     pub stride: u64,
     pub attributes: Vec<Attribute>,
@@ -258,10 +259,8 @@ fn drafted(item: &SceneItem) -> SceneItem {
 }
 
 fn vertex_buffers(stages: &MeshStages) -> Vec<VertexBuffer> {
-    let mut out = Vec::new();
-    for (slot, layout) in stages.vertex_buffers().into_iter().enumerate() {
-        let Some(layout) = layout else { continue };
-        let buffer = if slot as u32 == gpu_albedo::SLOT { "albedo" } else { "vertices" };
+    let buffer = |(part, data): (&'static Part, &VertexData)| {
+        let layout = (data.layout)();
         let attributes = layout
             .attributes
             .iter()
@@ -271,9 +270,9 @@ fn vertex_buffers(stages: &MeshStages) -> Vec<VertexBuffer> {
                 offset: a.offset,
             })
             .collect();
-        out.push(VertexBuffer { buffer, stride: layout.array_stride, attributes });
-    }
-    out
+        VertexBuffer { buffer: part.name, stride: layout.array_stride, attributes }
+    };
+    stages.buffers().into_iter().map(buffer).collect()
 }
 
 impl Renderer {
@@ -320,15 +319,8 @@ impl Renderer {
                         width: t.width,
                         height: t.height,
                         texels: blob.push(bytemuck::cast_slice(&t.texels)),
-                        filter: match s.filter {
-                            crate::render::albedo::Filter::Linear => "linear",
-                            crate::render::albedo::Filter::Nearest => "nearest",
-                        },
-                        wrap: match s.wrap {
-                            crate::render::albedo::Wrap::Repeat => "repeat",
-                            crate::render::albedo::Wrap::Clamp => "clamp",
-                            crate::render::albedo::Wrap::Mirror => "mirror",
-                        },
+                        filter: s.filter.name(),
+                        wrap: s.wrap.name(),
                     }
                 });
             let model = model_matrix(&item, &g.placement);

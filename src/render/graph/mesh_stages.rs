@@ -250,10 +250,15 @@ impl MeshStages {
         targets
     }
 
+    /// The parts that read a vertex buffer, with it, in the parts' order.
+    pub fn buffers(&self) -> Vec<(&'static Part, &'static VertexData)> {
+        self.parts().into_iter().filter_map(|p| p.buffer.as_ref().map(|b| (p, b))).collect()
+    }
+
     /// The vertex buffers it reads, each in its slot (None: a slot it leaves empty).
     pub fn vertex_buffers(&self) -> Vec<Option<wgpu::VertexBufferLayout<'static>>> {
         let mut buffers = Vec::new();
-        for b in self.parts().iter().filter_map(|p| p.buffer.as_ref()) {
+        for (_, b) in self.buffers() {
             let slot = b.slot as usize;
             buffers.resize(buffers.len().max(slot + 1), None);
             buffers[slot] = Some((b.layout)());
