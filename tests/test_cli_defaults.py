@@ -31,6 +31,7 @@ DESCRIBED = {
     ("render", "outputs"): (RenderOptions, "", "outputs"),
     ("render", "msaa"): (RenderOptions, "", "msaa"),
     ("render", "supersample"): (RenderOptions, "", "supersample"),
+    ("render", "pixel_ratio"): (RenderOptions, "", "pixel_ratio"),
     ("edges", "crease_angle"): (Outlines, "", "crease_angle"),
     ("edges", "weld"): (Outlines, "", "weld"),
     ("edges", "contours"): (Outlines, "", "contours"),

@@ -266,3 +266,68 @@ def test_close_frees_only_the_meshes_the_viewer_uploaded(mesh):
     v.close()
     assert renderer._engine.mesh_count == 1
     assert renderer.render(mine, width=16, height=16).color.shape == (16, 16, 4)
+
+
+def _report(v, view_id, **size):
+    """The browser's size report, as the widget sends it (a view of one ``size`` step)."""
+    v._on_event({"event": "view", "id": view_id, "exact": True,
+                 "steps": [{"event": "size", "width": None, "ratio": None, "full": None, **size}]})
+    assert v._wait()
+
+
+def test_a_view_without_a_width_fits_the_cell_at_the_screens_pixel_ratio(mesh):
+    need("anywidget")
+    V, F = mesh
+    v = tm.Viewer(V, F, outlines="mesh", height=90)
+    assert (v.width, v.height, v.pixel_ratio) == (512, 90, 1.0)  # until the browser says
+    assert v.widget._layout == {"fit": True, "follow_screen": True, "ratio": 1.0}
+    _report(v, 1, width=150, ratio=2)
+    assert (v.width, v.height, v.pixel_ratio) == (150, 90, 2.0)
+    assert v.frame.shape == (180, 300, 4)  # the frame in output pixels; shown at 150 x 90
+    assert v.widget._size == [150, 90] and v.widget._layout["ratio"] == 2.0
+    assert v.options.width == 300 and v.options.pixel_ratio == 2.0 and "at 2x" in repr(v)
+    # code() reproduces the frame, at its size and ratio
+    code = v.code()
+    assert "width=300" in code and "height=180" in code and "pixel_ratio=2.0" in code
+    scope = {"V": V, "F": F}
+    exec(code, scope)
+    np.testing.assert_array_equal(scope["r"].color, v.frame)
+    # a drag is in layout pixels: across the view's height, half a turn, at any pixel ratio
+    up = np.asarray(v.camera.up, np.float64) / np.linalg.norm(v.camera.up)
+
+    def level():  # the eye's offset from the target, across up
+        d = np.subtract(v.camera.eye, v.camera.target)
+        return d - np.dot(d, up) * up
+
+    before = level()
+    v.orbit(90, 0)
+    np.testing.assert_allclose(level(), -before, atol=1e-9 * np.linalg.norm(before))
+    # full screen fills the screen while it lasts
+    _report(v, 2, width=150, ratio=2, full=[400, 300])
+    assert (v.width, v.height) == (400, 300) and v.frame.shape == (600, 800, 4)
+    _report(v, 3, width=160, ratio=2)
+    assert (v.width, v.height) == (160, 90)
+    v.close()
+
+
+def test_a_given_width_and_ratio_stay_and_none_follows_again(mesh):
+    need("anywidget")
+    v = tm.Viewer(*mesh, width=70, height=50, pixel_ratio=1)
+    assert v.widget._layout == {"fit": False, "follow_screen": False, "ratio": 1.0}
+    _report(v, 1, width=200, ratio=2)  # a cell and screen it does not follow
+    assert (v.width, v.pixel_ratio) == (70, 1.0) and v.frame.shape == (50, 70, 4)
+    v.width = None  # fits the cell it was told of
+    v.pixel_ratio = None
+    assert (v.width, v.pixel_ratio) == (200, 2.0) and v.frame.shape == (100, 400, 4)
+    v.set(width=40, pixel_ratio=1.5)
+    assert v.frame.shape == (75, 60, 4)
+    for bad, error in [(dict(width=0), ValueError), (dict(width=1.5), TypeError), (dict(pixel_ratio=9), ValueError),
+                       (dict(pixel_ratio="2"), TypeError), (dict(height=-1), ValueError)]:
+        with pytest.raises(error, match=next(iter(bad))):
+            v.set(**bad)
+    assert v.frame.shape == (75, 60, 4)
+    # a report the viewer cannot read is answered with an error, and nothing changes
+    count = v.render_count
+    _report(v, 2, width="wide")
+    assert "width" in v.widget._error and v.render_count == count and v.frame.shape == (75, 60, 4)
+    v.close()

@@ -23,10 +23,12 @@ the viewer and its controls after the drag and the wheel turn).
 
 from __future__ import annotations
 
+import contextlib
 import io
 import os
 import re
 from pathlib import Path
+from typing import Iterator, List
 
 import numpy as np
 import pytest
@@ -76,16 +78,23 @@ CELLS = [
 ]
 
 
-@pytest.fixture
-def jupyter_lab(tmp_path):
-    """A token-less JupyterLab server on a free port, serving tmp_path/work with the notebook; yields its URL."""
+@contextlib.contextmanager
+def notebook_server(tmp_path: Path, name: str, cells: List[str]) -> Iterator[str]:
+    """A token-less JupyterLab server on a free port, serving tmp_path/work with the notebook
+    ``name`` of ``cells``; yields its URL."""
     need("jupyterlab")
     need("anywidget")
     from toonmesh.bench._lab import jupyter_lab, write_notebook
 
     (tmp_path / "work").mkdir()
-    write_notebook(tmp_path / "work" / "viewer.ipynb", CELLS)
+    write_notebook(tmp_path / "work" / name, cells)
     with jupyter_lab(tmp_path) as url:
+        yield url
+
+
+@pytest.fixture
+def jupyter_lab(tmp_path):
+    with notebook_server(tmp_path, "viewer.ipynb", CELLS) as url:
         yield url
 
 

@@ -138,6 +138,7 @@ class _RenderKeywords(TypedDict, total=False):
     outputs: Optional[Union[str, Sequence[str]]]
     msaa: Optional[int]
     supersample: Optional[int]
+    pixel_ratio: Optional[float]
     band_antialias: Optional[bool]
     outlines: Optional[Union[str, Outlines]]
     paper: Optional[Paper]
@@ -611,12 +612,14 @@ class RenderOptions(_Settings):
     height in pixels, 1 to the device's limit; outputs: the outputs computed and read back, and
     only those ('outline' and 'lines' need outlines, 'shadow' a light with shadows); msaa:
     samples per pixel: 1 or 4; supersample: render this many times larger in each direction and
-    average down; band_antialias: blend across each band border over about one pixel, from the
-    screen-space change of the shading term: smooth tone borders at no extra samples (False: the
-    papers' hard borders); outlines: ink outlines: None, 'mesh', 'image', 'both' or an Outlines;
-    paper: paper grain over the image: None or a Paper.
+    average down; pixel_ratio: output pixels per pixel of the widths, spacings and scales given
+    in pixels: 2 with twice the width and height draws the same picture, sharper (a 2x screen);
+    band_antialias: blend across each band border over about one pixel, from the screen-space
+    change of the shading term: smooth tone borders at no extra samples (False: the papers' hard
+    borders); outlines: ink outlines: None, 'mesh', 'image', 'both' or an Outlines; paper: paper
+    grain over the image: None or a Paper.
     """
-    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
     material: Final[Material]
     transform: Final[List[List[float]]]
     camera: Final[Camera]
@@ -629,10 +632,11 @@ class RenderOptions(_Settings):
     outputs: Final[List[str]]
     msaa: Final[int]
     supersample: Final[int]
+    pixel_ratio: Final[float]
     band_antialias: Final[bool]
     outlines: Final[Optional[Outlines]]
     paper: Final[Optional[Paper]]
-    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
 
 def _restore(cls: str, state: str) -> Any: ...
 def kang_table() -> npt.NDArray[np.float64]: ...

@@ -333,8 +333,10 @@ function createDraft(canvas, spec, blob) {
   }
 
   // Draws the view `cam` at w x h pixels into the canvas, whose drawing buffer takes that size
-  // (the page stretches it to the size it shows).
-  function draw(cam, w, h) {
+  // (the page stretches it to the size it shows); `ratio`: its pixels per layout pixel (the
+  // lengths the settings give in pixels are drawn that many pixels long; by default as the
+  // kernel's frame of the same height would draw them).
+  function draw(cam, w, h, ratio) {
     resize(w, h);
     const c = spec.camera;
     // the camera's matrices, in the core's normalised view space (view space / scale)
@@ -351,7 +353,8 @@ function createDraft(canvas, spec, blob) {
     const zoom = (c.height / h) * (cam.orthographic ? cam.height / c.fov_or_height : 1);
     frameF32[F.footprint] = footprint[0] * zoom; frameF32[F.footprint + 1] = footprint[1] * zoom;
     frameF32[F.near] = near / scale;
-    for (const [i, width] of widths) frameF32[i] = width * h / c.height;
+    const perWidth = ratio === undefined ? h / c.height : ratio / c.pixel_ratio;
+    for (const [i, width] of widths) frameF32[i] = width * perWidth;
     lights.forEach((l) => {
       let p = l.q.slice(0, 3);
       if (l.world) {

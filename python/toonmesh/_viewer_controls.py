@@ -21,10 +21,11 @@ from toonmesh._field_controls import Control, Panel, Source, controls_for
 if TYPE_CHECKING:
     from toonmesh.viewer import Viewer
 
-# The render options that have a section of their own, and the frame's size, which is set from
-# Python (``v.width = 640``): a slider would resize the view under the pointer.
+# The render options that have a section of their own, and the view's size and pixel ratio,
+# which follow the cell and the screen or are set from Python (``v.width = 640``): a slider
+# would resize the view under the pointer.
 _OWN_SECTIONS = ("material", "lights", "outlines", "camera")
-_FRAME_SIZE = ("width", "height")
+_FRAME_SIZE = ("width", "height", "pixel_ratio")
 # The column is as high as the frame (scrolling beyond), but never shorter than this.
 _MIN_HEIGHT = 360
 

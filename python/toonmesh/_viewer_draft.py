@@ -35,8 +35,9 @@ try {
 function frame() {
   wanted = false;
   if (!draft) return;
-  const s = moving ? pacer.scale() : 1;
-  draft.draw(cam, Math.max(1, Math.round(width * s)), Math.max(1, Math.round(height * s)));
+  // at the screen's pixel ratio (sharp on a 2x screen), smaller while moving
+  const r = (window.devicePixelRatio || 1) * (moving ? pacer.scale() : 1);
+  draft.draw(cam, Math.max(1, Math.round(width * r)), Math.max(1, Math.round(height * r)), r);
   pacer.shown(performance.now(), moving);
   root.dataset.framesShown = String(+root.dataset.framesShown + 1);
 }

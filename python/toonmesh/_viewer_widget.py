@@ -44,7 +44,7 @@ function render({ model, el }) {
     + " background: #fff; border: " + BORDER + "; box-shadow: none";
   const bar = document.createElement("div");
   bar.className = "toonmesh-toolbar";
-  bar.style.cssText = "display: flex; gap: 3px; align-items: center; padding: 2px 3px; line-height: 1.3;"
+  bar.style.cssText = "display: flex; flex-wrap: wrap; gap: 3px; align-items: center; padding: 2px 3px; line-height: 1.3;"
     + " font: 12px sans-serif; background: #f5f5f5; border-bottom: 1px solid #e0e0e0";
   function button(cls, label, title, onclick) {
     const b = document.createElement("button");
@@ -106,12 +106,13 @@ function render({ model, el }) {
   function drawDraft() {
     drawWanted = false;
     if (!draft || !cam) return;
-    const [w, h] = model.get("_size");
+    const [w, h] = model.get("_size");  // layout pixels
     canvas.style.width = w + "px";
     canvas.style.height = h + "px";
     if (!pacer) pacer = draftPacer(model.get("_moves").drag_scale);
-    const s = pacer.scale();  // drawn smaller while moving, as the kernel's drafts
-    draft.draw(cam, Math.max(1, Math.round(w * s)), Math.max(1, Math.round(h * s)));
+    // drawn smaller while moving, as the kernel's drafts, at the kernel frames' pixel ratio
+    const s = pacer.scale(), r = model.get("_layout").ratio * s;
+    draft.draw(cam, Math.max(1, Math.round(w * r)), Math.max(1, Math.round(h * r)), r);
     pacer.shown(performance.now(), !!drag);
     canvas.style.visibility = "visible";
     img.style.opacity = "0";  // not composited under the draft (opacity keeps its pointer events)
@@ -162,8 +163,9 @@ function render({ model, el }) {
   }
   function add(step, exact) {
     if (draft && step && "dx" in step) moveDraft(step);
-    else if (step) { cam = null; stopSpin(); }  // home, an axis, framing: the kernel's camera follows
+    else if (step && step.event !== "size") { cam = null; stopSpin(); }  // home, an axis, framing: the kernel's camera follows
     if (!pending) pending = { steps: [], exact: false };
+    if (step && step.event === "size") pending.steps = pending.steps.filter((s) => s.event !== "size");  // the newest size
     const last = pending.steps[pending.steps.length - 1];
     // consecutive moves of one kind merge (zooms only at one cursor: then they add up exactly)
     const same = step && last && last.event === step.event && "dx" in step && last.x === step.x && last.y === step.y;
@@ -303,6 +305,41 @@ function render({ model, el }) {
   root.append(style, bar, stage);
   el.appendChild(root);
 
+  // -- size -----------------------------------------------------------------------------------
+  // The kernel renders the view at the cell's width (where no width was given: _layout.fit),
+  // at the screen's pixel ratio (where none was given: _layout.follow_screen), and filling the
+  // screen while full screen; this reports them when they change.
+  let sizeTimer = null, sentSize = "", sentFull = false;
+  function reportSize() {
+    clearTimeout(sizeTimer);
+    const layout = model.get("_layout"), [w, h] = model.get("_size");
+    const isFull = document.fullscreenElement === root;
+    const border = root.offsetWidth - root.clientWidth;  // the root's own border, both sides
+    const full = isFull ? [Math.floor(window.innerWidth) - border, Math.floor(window.innerHeight - bar.offsetHeight) - border] : null;
+    const available = Math.floor(el.getBoundingClientRect().width) - border;
+    if (!isFull && available <= 0) return;  // not laid out (a hidden output)
+    const width = layout.fit ? available : null;
+    const ratio = layout.follow_screen ? (window.devicePixelRatio || 1) : null;
+    const shown = full ? full[0] === w && full[1] === h : !sentFull && (width === null || width === w);
+    const key = JSON.stringify([width, ratio, full]);
+    if ((shown && (ratio === null || ratio === layout.ratio)) || key === sentSize) return;
+    sentSize = key;
+    sentFull = isFull;
+    add({ event: "size", width, ratio, full }, true);
+  }
+  const laterSize = () => { clearTimeout(sizeTimer); sizeTimer = setTimeout(reportSize, 100); };
+  function fitStyle() {  // a fitted view takes the row's free width (beside the controls too)
+    const fit = model.get("_layout").fit;
+    el.style.flex = fit ? "1 1 0" : "";
+    el.style.minWidth = fit ? "0" : "";
+  }
+  const resizes = new ResizeObserver(laterSize);
+  resizes.observe(el);
+  window.addEventListener("resize", laterSize);  // a zoom changes the pixel ratio
+  document.addEventListener("fullscreenchange", laterSize);
+  model.on("change:_layout", () => { fitStyle(); laterSize(); });
+  fitStyle();
+
   // -- pointer --------------------------------------------------------------------------------
   let drag = null, settleTimer = null;
   function queue(step) {  // a move; the exact frame follows once the moves stop
@@ -343,6 +380,10 @@ function render({ model, el }) {
   root.addEventListener("focus", focus);
   root.addEventListener("blur", blur);
   return () => {
+    resizes.disconnect();
+    window.removeEventListener("resize", laterSize);
+    document.removeEventListener("fullscreenchange", laterSize);
+    clearTimeout(sizeTimer);
     clearTimeout(settleTimer);
     clearTimeout(inflightTimer);
     if (document.fullscreenElement === root) document.exitFullscreen();
@@ -367,6 +408,7 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
     _view_id = traitlets.Int(0).tag(sync=True)
     _exact = traitlets.Bool(True).tag(sync=True)
     _size = traitlets.List([512, 512]).tag(sync=True)
+    _layout = traitlets.Dict({"fit": False, "follow_screen": False, "ratio": 1.0}).tag(sync=True)
     _error = traitlets.Unicode("").tag(sync=True)
     _answers = traitlets.Int(0).tag(sync=True)
     _camera = traitlets.Dict({}).tag(sync=True)
@@ -386,14 +428,19 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
         self.on_msg(handle)
 
     def show_frame(self, data: bytes, image_format: str, frame_id: int, width: int, height: int,
-                   view_id: int = 0, exact: bool = True, camera: Optional[Dict[str, Any]] = None) -> None:
+                   view_id: int = 0, exact: bool = True, camera: Optional[Dict[str, Any]] = None,
+                   layout: Optional[Dict[str, Any]] = None) -> None:
         """Sends a frame: encoded bytes shown at ``width`` x ``height`` CSS pixels, made for the
         browser's view ``view_id`` (the browser drops it if it shows a later view's frame);
         ``exact``: the full-size frame (False: a draft drawn while the pointer moves);
-        ``camera``: the view it shows, as the browser's draft renderer moves it."""
+        ``camera``: the view it shows, as the browser's draft renderer moves it; ``layout``:
+        whether the browser reports the cell's width (``fit``) and the screen's pixel ratio
+        (``follow_screen``), and the ratio the frames are rendered at (``ratio``)."""
         with self.hold_sync():
             if camera is not None:
                 self._camera = camera
+            if layout is not None:
+                self._layout = layout
             self._frame = data
             self._format = image_format
             self._frame_id = frame_id

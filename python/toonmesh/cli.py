@@ -231,7 +231,8 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     options: Dict[str, Any] = dict(
         width=args.size[0], height=args.size[1], material=material, outputs=args.outputs,
         own_colors_material=own_colors_material,
-        msaa=args.msaa, supersample=args.supersample, band_antialias=args.band_antialias,
+        msaa=args.msaa, supersample=args.supersample, pixel_ratio=args.pixel_ratio,
+        band_antialias=args.band_antialias,
     )
     if args.paper != NONE:
         with errors_as_flags(args, Paper):
@@ -597,6 +598,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                              "writes .npz")
     add_described(p, "--msaa", RenderOptions, "msaa", metavar="N")
     add_described(p, "--supersample", RenderOptions, "supersample", metavar="N")
+    add_described(p, "--pixel-ratio", RenderOptions, "pixel_ratio", metavar="R")
     p.add_argument("--backend", **backend)  # type: ignore[arg-type]
     p.set_defaults(run=cmd_render)
 

@@ -45,6 +45,7 @@ from toonmesh._render import (PlacedMesh, Renderer, _core_items, draw, draw_view
                               scene_items, shared_renderer)
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
+from toonmesh._viewer_layout import Layout, check_ratio, check_side
 from toonmesh._viewer_uploads import SharedUpload, shared_upload
 from toonmesh._video import DEFAULT_FPS, check_fps, check_video_size, video_kind, video_writer
 
@@ -234,8 +235,13 @@ class Viewer:
     function reads it for both): ``vertices`` (N, 3) float32/float64 with ``faces`` (M, 3)
     int32/int64/uint32, a ``trimesh.Trimesh``, a mesh file's path, a ``trimesh.Scene``, a
     :class:`toonmesh.Mesh` or a list of meshes; ``normals`` and ``smooth_iterations`` as in
-    :func:`toonmesh.render`; any keyword of :class:`toonmesh.RenderOptions` (``width``,
-    ``height`` in pixels, default 512; ``material``, ``lights``, ``outlines``, ``camera``, ...).
+    :func:`toonmesh.render`; any keyword of :class:`toonmesh.RenderOptions` (``material``,
+    ``lights``, ``outlines``, ``camera``, ...). ``width`` and ``height`` are the view's size in
+    layout (CSS) pixels: without a width the view fits the notebook cell's width (512 until the
+    browser reports it), the height defaults to 512; the frames are rendered at the screen's
+    pixel ratio (``pixel_ratio``: given, or the browser's device pixel ratio), so on a 2x screen
+    they have twice the pixels each way with every length in pixels doubled: the same picture,
+    sharp. Full screen fills the screen while it lasts.
     With no ``material``, meshes that carry colours or a texture are drawn as
     :func:`toonmesh.render` draws them (under a white material), so the view shows what
     ``tm.render`` shows. The meshes are uploaded once, to ``renderer`` (default: the process's
@@ -279,8 +285,6 @@ class Viewer:
     lights: _Setting[List[Light]] = _Setting()
     ambient: _Setting[Tuple[float, float, float]] = _Setting()
     background: _Setting[Tuple[float, float, float, float]] = _Setting()
-    width: _Setting[int] = _Setting()
-    height: _Setting[int] = _Setting()
     msaa: _Setting[int] = _Setting()
     supersample: _Setting[int] = _Setting()
     outlines: _Setting[Optional[Outlines]] = _Setting()
@@ -309,7 +313,9 @@ class Viewer:
             raise TypeError("vertices: expected the scene (arrays with faces, a trimesh, a file's path, a "
                             "trimesh.Scene, a toonmesh.Mesh or a list of meshes), got None")
         self._renderer = renderer if renderer is not None else shared_renderer(backend)
-        self._options = RenderOptions(**options)  # checked before any upload
+        sides = {k: options.pop(k) for k in _LAYOUT if k in options}  # type: ignore[misc]
+        self._layout = Layout(*(_layout_value(k, sides.get(k)) for k in _LAYOUT))
+        self._options = RenderOptions(**options, **self._layout.frame())  # checked before any upload
         self._given: Dict[str, Any] = {k: v for k, v in options.items() if k != "camera" and v is not None}
         self.image_format = _format(image_format)
         self.drag_scale = drag_scale
@@ -341,6 +347,47 @@ class Viewer:
 
             self._controls = ControlPanel(self)
             self._front.append(self._controls)
+
+    # -- the view's size ------------------------------------------------------------------------
+
+    @property
+    def width(self) -> int:
+        """The view's width in layout (CSS) pixels, as shown now: as given, or the notebook
+        cell's width where none was given (512 until the browser reports it; it follows the
+        cell as the window changes). Set an int to fix it, None to fit the cell again; either
+        re-renders. A frame is ``width * pixel_ratio`` output pixels wide."""
+        return self._layout.view_size()[0]
+
+    @width.setter
+    def width(self, value: Optional[int]) -> None:
+        self.set(width=value)
+
+    @property
+    def height(self) -> int:
+        """The view's height in layout (CSS) pixels (default 512; None sets the default);
+        setting it re-renders. A frame is ``height * pixel_ratio`` output pixels high."""
+        return self._layout.view_size()[1]
+
+    @height.setter
+    def height(self, value: Optional[int]) -> None:
+        self.set(height=value)
+
+    @property
+    def pixel_ratio(self) -> float:
+        """Output pixels per layout pixel of the frames (:class:`toonmesh.RenderOptions`'
+        ``pixel_ratio``: the lengths the settings give in pixels scale with it, so the picture is
+        the same, sharper): as given, or the screen's device pixel ratio as the browser reports
+        it where none was given (1 until then). Set a number (0.25 to 8) to fix it, None to
+        follow the screen again; either re-renders."""
+        return self._layout.pixel_ratio()
+
+    @pixel_ratio.setter
+    def pixel_ratio(self, value: Optional[float]) -> None:
+        self.set(pixel_ratio=value)
+
+    def _resized(self) -> None:
+        """The render options follow the view's size and pixel ratio (the caller renders)."""
+        self._options = self._options.replace(**self._layout.frame())
 
     @property
     def drag_scale(self) -> float:
@@ -533,10 +580,10 @@ class Viewer:
 
     def _move(self, kind: str, a: float, b: float) -> None:
         with self._state_lock:
-            if kind == "orbit":
-                self._view.orbit(a, b, self._options.height)
+            if kind == "orbit":  # pointer moves are in layout pixels, the view's
+                self._view.orbit(a, b, self.height)
             elif kind == "pan":
-                self._view.pan(a, b, self._options.height)
+                self._view.pan(a, b, self.height)
             else:
                 self._view.zoom(a)
 
@@ -553,7 +600,11 @@ class Viewer:
         if "outputs" in options:
             raise TypeError("outputs: a Viewer shows the colour image; use snapshot(outputs=...) for others")
         camera = options.pop("camera", None)
+        sides = {k: _layout_value(k, options.pop(k)) for k in _LAYOUT if k in options}  # type: ignore[misc]
         self._options = self._options.replace(**options)  # type: ignore[misc]
+        for name, value in sides.items():
+            setattr(self._layout, _LAYOUT_FIELDS[name], value)
+        self._resized()
         for k, v in options.items():
             if v is None:
                 self._given.pop(k, None)
@@ -598,8 +649,9 @@ class Viewer:
             if self._widget is not None:
                 if not draft:
                     self._send_draft()
-                self._widget.show_frame(data, fmt, self._frame_id, self._options.width, self._options.height,
-                                        view_id=view_id, exact=not draft, camera=self._camera_state())
+                width, height = self._layout.view_size()
+                self._widget.show_frame(data, fmt, self._frame_id, width, height, view_id=view_id,
+                                        exact=not draft, camera=self._camera_state(), layout=self._layout.state())
             self._shared.answered = view_id
             return result
 
@@ -632,8 +684,11 @@ class Viewer:
         """Sends the draft to the browser once, and again when a setting changed."""
         if not self._browser_drafts:
             return
-        with self._state_lock:  # the settings, and the projection the draft's footprint is for
-            key = repr((self._options.replace(camera=None), self._view.orthographic))
+        # the settings, and the projection the draft's footprint is for (not the size: the
+        # browser draws the draft at any size and pixel ratio)
+        with self._state_lock:
+            settings = self._options.replace(camera=None, width=1, height=1, pixel_ratio=1.0)
+            key = repr((settings, self._view.orthographic))
         if key == getattr(self, "_draft_key", None):
             return
         try:
@@ -662,9 +717,7 @@ class Viewer:
         from toonmesh._viewer_draft import page
 
         spec, blob = self._draft()
-        text = page(spec, blob, self._camera_state(), self._moves(),
-                    (self._options.width, self._options.height),
-                    "toonmesh viewer")
+        text = page(spec, blob, self._camera_state(), self._moves(), self._layout.view_size(), "toonmesh viewer")
         with open(target, "w", encoding="utf-8") as out:
             out.write(text)
         return target
@@ -725,6 +778,9 @@ class Viewer:
             parts.append(f"smooth_iterations={self._smooth_iterations!r}")
         with self._state_lock:
             parts.append(f"camera={self._view.source()}")
+        parts += [f"width={self._options.width}", f"height={self._options.height}"]  # the frame's, in pixels
+        if self._options.pixel_ratio != 1.0:
+            parts.append(f"pixel_ratio={self._options.pixel_ratio!r}")
         for name in SETTINGS:
             if name in self._given:
                 parts.append(f"{name}={_source(self._given[name])}")
@@ -788,6 +844,9 @@ class Viewer:
             self._go_home()
         elif event == "axis":
             self._view_from(_axis(step.get("axis")))
+        elif event == "size":
+            self._layout.reported(step)
+            self._resized()
         elif event != "settle":
             raise ValueError(f"event: unknown front-end event {event!r}")
 
@@ -838,7 +897,9 @@ class Viewer:
         return bundle
 
     def __repr__(self) -> str:
-        size = f"{self._options.width}x{self._options.height}"
+        width, height = self._layout.view_size()
+        ratio = self._layout.pixel_ratio()
+        size = f"{width}x{height}" + ("" if ratio == 1.0 else f" at {ratio:g}x")
         if self._shared.closed:
             return f"toonmesh.Viewer({size}): closed"
         if self._widget is None:
@@ -884,6 +945,19 @@ def _release(shared: _Shared, uploads: List[SharedUpload], front: List[Any]) -> 
     for item in reversed(front):  # the controls (a ControlPanel: its box and every control), then the frame's widget
         item.close()
     front.clear()
+
+
+# The settings that size the view (``Layout``), by keyword and by the layout's field.
+_LAYOUT_FIELDS = {"width": "width", "height": "height", "pixel_ratio": "ratio"}
+_LAYOUT = tuple(_LAYOUT_FIELDS)
+
+
+def _layout_value(name: str, value: Any) -> Any:
+    """A view's width or height in layout pixels, or its pixel ratio, checked (None: fitted or
+    followed, as ``Layout`` says)."""
+    if value is None:
+        return None
+    return check_ratio(name, value) if name == "pixel_ratio" else check_side(name, value)
 
 
 def _mesh_source(vertices: Any, faces: Any) -> str:

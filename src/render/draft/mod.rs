@@ -138,9 +138,11 @@ pub struct DraftCamera {
     pub far: f64,
     pub eye: [f64; 3],
     pub forward: [f64; 3],
-    /// The output size the view block was written for.
+    /// The output size the view block was written for, and its pixel ratio (the ink's widths
+    /// in `pixel_widths` include it).
     pub width: u32,
     pub height: u32,
+    pub pixel_ratio: f64,
     /// The sphere around the scene (world): clip planes that enclose it.
     pub center: [f64; 3],
     pub radius: f64,
@@ -415,6 +417,7 @@ impl Renderer {
                 forward: to3(cam.forward),
                 width: frame.width,
                 height: frame.height,
+                pixel_ratio: frame.pixel_ratio,
                 center: to3(bounds.sphere.center),
                 radius: bounds.sphere.radius,
             },

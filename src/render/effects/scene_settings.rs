@@ -45,6 +45,13 @@ macro_rules! scene_effects {
                 }
             }
 
+            /// Each with its lengths in output pixels multiplied by `ratio`.
+            pub fn at_pixel_ratio(&self, ratio: f64) -> SceneEffects {
+                SceneEffects {
+                    $($name: self.$name.as_ref().map(|s| crate::render::settings::at_pixel_ratio(s, ratio)),)*
+                }
+            }
+
             /// Sets the keyword `field` (None where it is not one of theirs).
             pub fn set(&mut self, field: &str, value: Value) -> Option<Result<()>> {
                 match field {

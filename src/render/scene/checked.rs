@@ -38,7 +38,8 @@ pub struct CheckedScene {
 
 impl CheckedScene {
     /// Checks every setting of `scene` and `frame` (each error names its place in the scene)
-    /// and resolves what the frame's steps share. Meshes are checked by their renderer.
+    /// and resolves what the frame's steps share: the lengths the settings give in pixels are
+    /// scaled to the frame's pixel ratio once checked. Meshes are checked by their renderer.
     pub fn check(scene: Scene, frame: FrameSpec, limits: &DeviceLimits) -> Result<Self> {
         frame.validate(limits.max_texture_size, &limits.msaa_samples)?;
         for (i, item) in scene.items.iter().enumerate() {
@@ -55,6 +56,7 @@ impl CheckedScene {
             o.validate("outlines")?;
         }
         scene.effects.validate()?;
+        let scene = scene.at_pixel_ratio(frame.pixel_ratio);
         let caster = shadow_caster(&scene.lights).map(|(index, light, settings)| Caster {
             index,
             light: *light,

@@ -66,3 +66,19 @@ macro_rules! class_impls {
 }
 
 settings_classes!(class_impls);
+
+/// `Setting::at_pixel_ratio`: each class's value through `super::at_pixel_ratio`.
+macro_rules! setting_at_pixel_ratio {
+    ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {
+        impl Setting {
+            /// The value with its lengths in output pixels multiplied by `ratio`.
+            pub fn at_pixel_ratio(self, ratio: f64) -> Setting {
+                match self {
+                    $(Setting::$class(v) => Setting::$class(super::at_pixel_ratio(&v, ratio)),)*
+                }
+            }
+        }
+    };
+}
+
+settings_classes!(setting_at_pixel_ratio);

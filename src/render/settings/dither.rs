@@ -12,7 +12,7 @@ const FIELDS: &[Field] = &[
         "what the pattern is fixed to: the screen's pixels or the surface",
     ),
     Field::float("amount", 0.0, 2.0, "how far in L.n a pixel may move toward the neighbouring band, 0 to 2"),
-    Field::float("scale", 1.0, 64.0, "pixels a pattern cell covers, 1 to 64"),
+    Field::float("scale", 1.0, 64.0, "pixels a pattern cell covers, 1 to 64").pixels(),
 ];
 
 impl Described for Dither {

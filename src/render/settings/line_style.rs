@@ -11,7 +11,8 @@ const FIELDS: &[Field] = &[
         0.25,
         MAX_WIDTH as f64,
         "width in output pixels, the same at every resolution and supersampling factor",
-    ),
+    )
+    .pixels(),
 ];
 
 impl Described for LineStyle {

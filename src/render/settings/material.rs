@@ -28,8 +28,8 @@ const FIELDS: &[Field] = &[
     Field::new("values", Kind::Floats, "the bands' tones: one more than the thresholds, each >= 0").optional(),
     Field::new("table", Kind::Table, "a lookup table: (N,) grey or (N, 3) RGB factors, 1 <= N <= 256").optional(),
     Field::new("ink", Kind::Color, "hatch strokes' sRGB colour").optional(),
-    Field::float("spacing", 2.0, 256.0, "pixels between hatch strokes, 2 to 256").optional(),
-    Field::float("width", 0.25, 16.0, "hatch strokes' width in pixels, up to the spacing").optional(),
+    Field::float("spacing", 2.0, 256.0, "pixels between hatch strokes, 2 to 256").optional().pixels(),
+    Field::float("width", 0.25, 16.0, "hatch strokes' width in pixels, up to the spacing").optional().pixels(),
     Field::choice(
         "mode",
         HatchMode::NAMES,

@@ -102,12 +102,15 @@ pub struct Field {
     pub optional: bool,
     /// Set by the constructor that makes the value, not by `replace`.
     pub fixed: bool,
+    /// A length in output pixels (a width, a spacing, a cell's size): multiplied by the frame's
+    /// pixel ratio (`at_pixel_ratio`).
+    pub pixels: bool,
     pub help: &'static str,
 }
 
 impl Field {
     pub const fn new(name: &'static str, kind: Kind, help: &'static str) -> Field {
-        Field { name, kind, optional: false, fixed: false, help }
+        Field { name, kind, optional: false, fixed: false, pixels: false, help }
     }
 
     /// A real number within `min` and `max`.
@@ -126,6 +129,11 @@ impl Field {
 
     pub const fn fixed(self) -> Field {
         Field { fixed: true, ..self }
+    }
+
+    /// A length in output pixels, which the frame's pixel ratio scales.
+    pub const fn pixels(self) -> Field {
+        Field { pixels: true, ..self }
     }
 }
 
@@ -336,6 +344,26 @@ pub fn build<T: Described>(constructor: &str, mut args: Vec<(&'static str, Value
     Ok(value)
 }
 
+/// `value` with every length in output pixels (its fields marked `pixels`, and those of the
+/// settings its fields hold) multiplied by `ratio`: what a frame at `ratio` times the size
+/// needs to show the same picture, sharper (a screen's device pixel ratio). Not checked again:
+/// a width at its bound stays drawable at any ratio.
+pub fn at_pixel_ratio<T: Described>(value: &T, ratio: f64) -> T {
+    let mut out = value.clone();
+    if ratio == 1.0 {
+        return out;
+    }
+    for f in T::FIELDS {
+        let scaled = match value.get(f.name) {
+            Value::Float(x) if f.pixels => Value::Float(x * ratio),
+            Value::Setting(s) => Value::setting(s.at_pixel_ratio(ratio)),
+            _ => continue,
+        };
+        out.set(f.name, scaled).expect("a field takes back a value of its own kind");
+    }
+    out
+}
+
 /// A copy of `value` with the fields named changed (None: the field's default), checked.
 /// Checks that every real-number field of `value` lies within its described bounds, for the
 /// types whose bounds are the rule and not only a control's (`prefix` names the fields in
@@ -421,6 +449,7 @@ pub fn describe<T: Described>() -> Value {
         d.extend([
             ("optional", Value::Bool(f.optional)),
             ("fixed", Value::Bool(f.fixed)),
+            ("pixels", Value::Bool(f.pixels)),
             ("help", text(f.help)),
         ]);
         Value::Map(d.into_iter().chain(default.map(|v| ("default", v))).collect())

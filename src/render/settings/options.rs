@@ -6,7 +6,7 @@ use crate::render::effects::outlines::settings::Outlines;
 use crate::render::effects::scene_settings as effects;
 use crate::render::scene::options::RenderOptions;
 use crate::render::scene::up::Axis;
-use crate::render::scene::{Output, Outputs, MAX_SUPERSAMPLE};
+use crate::render::scene::{Output, Outputs, MAX_SUPERSAMPLE, PIXEL_RATIOS};
 
 const OWN_FIELDS: &[Field] = &[
     Field::new("material", Kind::Setting("Material"), "the material of meshes that name none"),
@@ -42,6 +42,12 @@ const OWN_FIELDS: &[Field] = &[
         Kind::Int { min: 1, max: MAX_SUPERSAMPLE as i64 },
         "render this many times larger in each direction and average down",
     ),
+    Field::float(
+        "pixel_ratio",
+        PIXEL_RATIOS.0,
+        PIXEL_RATIOS.1,
+        "output pixels per pixel of the widths, spacings and scales given in pixels: 2 with twice the width and height draws the same picture, sharper (a 2x screen)",
+    ),
     Field::new(
         "band_antialias",
         Kind::Bool,
@@ -72,6 +78,7 @@ const OWN_PARAMS: &[&str] = &[
     "outputs",
     "msaa",
     "supersample",
+    "pixel_ratio",
     "band_antialias",
     "outlines",
 ];
@@ -112,6 +119,7 @@ impl Described for RenderOptions {
             "outputs" => Value::Names(f.outputs.iter().map(|o| o.name().to_string()).collect()),
             "msaa" => Value::Int(f.msaa as i64),
             "supersample" => Value::Int(f.supersample as i64),
+            "pixel_ratio" => f.pixel_ratio.into(),
             "band_antialias" => f.band_antialias.into(),
             "outlines" => self.outlines.clone().map_or(Value::None, |o| Value::setting(Setting::Outlines(o))),
             other => self.effects.get(other).unwrap_or(Value::None),
@@ -136,6 +144,7 @@ impl Described for RenderOptions {
             }
             ("msaa", v) => f.msaa = count(field, v, 0, "")?,
             ("supersample", v) => f.supersample = count(field, v, 0, "")?,
+            ("pixel_ratio", v) => f.pixel_ratio = v.float(field)?,
             ("band_antialias", v) => f.band_antialias = v.bool(field)?,
             ("outputs", Value::Names(names)) => {
                 let mut o = Outputs::default();

@@ -43,14 +43,14 @@ const FIELDS: &[Field] = &[
     Field::float("normal_threshold", 0.0, 4.0, "the paper rule's Sobel threshold on normals"),
     Field::float("depth_threshold", 0.0, 4.0, "the paper rule's Sobel threshold on depth"),
     Field::float("depth_offset", 0.0, 8.0, "hidden-line removal's tolerance in pixel footprints"),
-    Field::float("taper", 0.0, 64.0, "pixels over which lines thin toward their ends (0: none)"),
+    Field::float("taper", 0.0, 64.0, "pixels over which lines thin toward their ends (0: none)").pixels(),
     Field::new("width_by_depth", Kind::Bool, "scale line widths by the scene centre's depth over the line's"),
     Field::new("join_kinds", Kind::Bool, "join strokes of different kinds that meet end to end"),
 ];
 
 const EXTRAS: &[Field] = &[
     Field::new("color", Kind::Color, "the common style's sRGB colour"),
-    Field::float("width", 0.25, MAX_WIDTH as f64, "the common style's width in output pixels"),
+    Field::float("width", 0.25, MAX_WIDTH as f64, "the common style's width in output pixels").pixels(),
     Field::new("crease", Kind::Style, "ridges and valleys together").optional(),
 ];
 

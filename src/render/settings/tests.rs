@@ -96,3 +96,53 @@ fn unknown_and_missing_arguments_are_named() {
     let e = check_arguments::<RenderOptions>(constructor::<RenderOptions>(""), &["widht"]).unwrap_err();
     assert!(e.to_string().starts_with("widht: not a render option; did you mean 'width'"), "{e}");
 }
+
+#[test]
+fn a_pixel_ratio_scales_every_length_in_pixels_and_nothing_else() {
+    let dither = Dither::construct("", vec![("scale", Value::Float(3.0))]).unwrap();
+    let material = Material::construct(
+        "hatching",
+        vec![
+            ("spacing", Value::Float(10.0)),
+            ("width", Value::Float(1.5)),
+            ("dither", Value::setting(Setting::Dither(dither))),
+        ],
+    )
+    .unwrap();
+    let outlines = Outlines::construct(
+        "",
+        vec![
+            ("width", Value::Float(2.0)),
+            ("taper", Value::Float(4.0)),
+            ("crease_angle", Value::Float(40.0)),
+        ],
+    )
+    .unwrap();
+    let options = RenderOptions::construct(
+        "",
+        vec![
+            ("material", Value::setting(Setting::Material(material.clone()))),
+            ("outlines", Value::setting(Setting::Outlines(outlines.clone()))),
+        ],
+    )
+    .unwrap();
+    let twice = at_pixel_ratio(&options, 2.0);
+    let m = &twice.material;
+    assert_eq!((m.get("spacing"), m.get("width")), (Value::Float(20.0), Value::Float(3.0)));
+    assert_eq!(m.effects.dither.map(|d| d.scale), Some(6.0));
+    let o = twice.outlines.as_ref().unwrap();
+    assert!(o.styles.iter().flatten().all(|s| s.width == 4.0), "{:?}", o.styles);
+    assert_eq!((o.stroke_width.taper, o.crease_angle), (8.0, 40.0));
+    // every other field as it was; the ratio 1 changes nothing
+    let back = at_pixel_ratio(&twice, 0.5);
+    assert_eq!(back, options);
+    assert_eq!(at_pixel_ratio(&options, 1.0), options);
+    // the paper's grain too, and nothing is marked that is not in pixels
+    use crate::render::effects::paper::settings::Paper;
+    let paper = Paper::construct("", vec![("scale", Value::Float(2.0))]).unwrap();
+    assert_eq!(at_pixel_ratio(&paper, 1.5).scale, 3.0);
+    assert!(
+        !parameter::<Outlines>("depth_jump").unwrap().pixels,
+        "pixel footprints are a tolerance, not a length"
+    );
+}

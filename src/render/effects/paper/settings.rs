@@ -63,7 +63,7 @@ const FIELDS: &[Field] = &[
         PaperSpace::NAMES,
         "what the grain is fixed to: the 'screen' or the scene's 'surface'",
     ),
-    Field::float("scale", 0.25, 64.0, "output pixels a grain texel covers, 0.25 to 64"),
+    Field::float("scale", 0.25, 64.0, "output pixels a grain texel covers, 0.25 to 64").pixels(),
     Field::float("strength", 0.0, 1.0, "how much pigment the grain's valleys refuse, 0 to 1"),
     Field::float("tone", 0.0, 1.0, "how much the blank paper's valleys darken it, 0 to 1"),
 ];
