@@ -127,8 +127,18 @@ def test_render_a_turntable_as_a_video(tmp_path, capsys, monkeypatch):
     assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "out" / "turn.mp4")) == (6, 0.5)
     in_process(capsys, "render", SPOT, "-o", "turn.webm", "--views", "6", "--fps", "12", *args)
     assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "turn.webm")) == (6, 0.5)
+    # --video: the same turntable, by default DEFAULT_SECONDS at --fps all the way round
+    r = in_process(capsys, "render", SPOT, "--video", "spin.gif", "--fps", "3", *args)
+    assert "wrote spin.gif (12 frames at 3 fps, 40x30)" in r.stdout, r.stdout
+    gif = Image.open(tmp_path / "spin.gif")
+    assert gif.n_frames == 12
+    gif.seek(3)  # a quarter turn: the view turned by 90 degrees, as --views 4's second frame
+    want = read_png(tmp_path / "frames" / "spot-001.png")[..., :3].astype(int)
+    assert np.abs(np.asarray(gif.convert("RGB")).astype(int) - want).mean() < 4.0
     for bad, words in [
-        (("-o", "x.gif"), ("-o", "--views N")),
+        (("-o", "x.gif", "--views", "1"), ("-o", "--views N with N >= 2")),
+        (("--video", "x.png"), ("--video", ".gif, .mp4, .webm")),
+        (("--video", "x.gif", "-o", "y.gif"), ("--video", "not allowed with")),
         (("-o", "x.gif", "--views", "3", "--outputs", "color,depth"), ("-o", "colour output only")),
         (("-o", "x.mp4", "--views", "3", "--size", "41x30"), ("--size", "even width and height")),
     ]:

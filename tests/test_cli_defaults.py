@@ -51,7 +51,7 @@ FROM_THE_DEMO = {
 DEMO_CHOICES = {"kind", "crease_angle"}
 #: Flags whose default is the command line's own (a file, a size, a word of its own), or nothing.
 OWN = {
-    ("render", "out"), ("edges", "out"), ("render", "size"), ("render", "style"), ("render", "color"), ("render", "dither"), ("render", "shadows"),
+    ("render", "out"), ("render", "video"), ("edges", "out"), ("render", "size"), ("render", "style"), ("render", "color"), ("render", "dither"), ("render", "shadows"),
     ("render", "rim"), ("render", "paper"),
     ("render", "outline_width"), ("render", "views"), ("render", "fps"), ("render", "up"), ("render", "smooth"),
     ("render", "smooth_method"), ("render", "normals"), ("render", "backend"),

@@ -17,6 +17,8 @@ from toonmesh._checks import flag
 VIDEO_SUFFIXES = (".gif", ".mp4", ".webm")
 #: Frames per second of a turntable video unless told.
 DEFAULT_FPS = 24
+#: How long a turntable video lasts unless told (seconds, all the way round).
+DEFAULT_SECONDS = 4.0
 #: The frame rates a video may have.
 FPS_RANGE = (1, 60)
 #: From this many frames on, writing shows a progress bar (where tqdm is installed).

@@ -1,6 +1,6 @@
 """The command line: ``toonmesh`` (console script) and ``python -m toonmesh``.
 
-    toonmesh render MESH... -o OUT [--size WxH] [--style S] [--normals MODE] [--views N [--fps N]] [--up x|y|z] ...
+    toonmesh render MESH... -o OUT|--video OUT [--size WxH] [--style S] [--normals MODE] [--views N [--fps N]] [--up x|y|z] ...
     toonmesh smooth IN -o OUT [--method M] [--iterations N] [--preset P] [--crease-angle DEG] [--weld]
     toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG] [--smooth-strokes PX]
     toonmesh bench smooth|edges|render|effects|viewer|all [--quick] [--json FILE]
@@ -42,7 +42,7 @@ from toonmesh.edges import feature_edges
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 from toonmesh._render import Mesh, RenderResult, gpu_info, render
 from toonmesh._scene import normal_mode
-from toonmesh._video import DEFAULT_FPS, VIDEO_SUFFIXES, check_fps, check_video_size, save_video, video_writer
+from toonmesh._video import DEFAULT_FPS, DEFAULT_SECONDS, VIDEO_SUFFIXES, check_fps, check_video_size, save_video, video_writer
 from toonmesh._views import check_views
 from toonmesh.batch import SMOOTH_METHODS as RENDER_SMOOTH_METHODS, render_views
 
@@ -253,20 +253,23 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     return options
 
 
-def _is_video(meshes: Sequence[str], out: str, views: int, outputs: List[str], size: Tuple[int, int]) -> bool:
-    """Whether ``out`` names a video (a turntable of one mesh's colour), its writer and size
-    checked before any render."""
+def _is_video(meshes: Sequence[str], out: str, views: int, outputs: List[str], size: Tuple[int, int],
+              who: str) -> bool:
+    """Whether ``out`` (given as ``who``: -o or --video) names a video (a turntable of one mesh's
+    colour), its writer and size checked before any render."""
     suffix = os.path.splitext(out)[1].lower()
     if suffix not in VIDEO_SUFFIXES:
+        if who == "--video":
+            raise CliError(f"--video: expected a {', '.join(VIDEO_SUFFIXES)} file name, got {out}")
         return False
     if len(meshes) != 1:
-        raise CliError(f"-o: a {suffix} video is the turntable of one mesh, got {len(meshes)} meshes")
+        raise CliError(f"{who}: a {suffix} video is the turntable of one mesh, got {len(meshes)} meshes")
     if views < 2:
-        raise CliError(f"-o: a {suffix} video needs --views N (N >= 2: the turntable's frames)")
+        raise CliError(f"{who}: a {suffix} video needs --views N with N >= 2 (the turntable's frames), got {views}")
     if outputs != ["color"]:
-        raise CliError(f"-o: a {suffix} video holds the colour output only, not {','.join(outputs)}")
+        raise CliError(f"{who}: a {suffix} video holds the colour output only, not {','.join(outputs)}")
     check_video_size(suffix, size[0], size[1], "--size")
-    video_writer(suffix, "-o")
+    video_writer(suffix, who)
     os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
     return True
 
@@ -275,11 +278,16 @@ def cmd_render(args: argparse.Namespace) -> int:
     """toonmesh render: mesh files to toon-shaded images, or one mesh's turntable as a video."""
     args.meshes = [mesh_file(m) for m in args.meshes]  # before any work: a typo in the last name costs nothing
     options = render_options(args)
-    if _is_video(args.meshes, args.out, args.views, args.outputs, args.size):
+    who = "--video" if args.video is not None else "-o"
+    args.out = args.video if args.video is not None else args.out
+    video = os.path.splitext(args.out)[1].lower() in VIDEO_SUFFIXES or who == "--video"
+    if args.views is None:  # one view, or a turntable of DEFAULT_SECONDS at --fps
+        args.views = max(2, round(DEFAULT_SECONDS * args.fps)) if video else 1
+    if _is_video(args.meshes, args.out, args.views, args.outputs, args.size, who):
         frames: List[np.ndarray] = []
         _render_to(args, options, [[args.out] * args.views], quiet=True,
                    save=lambda result, _: frames.append(result.color))
-        save_video(args.out, np.stack(frames), args.fps, progress=sys.stderr.isatty(), who="-o")
+        save_video(args.out, np.stack(frames), args.fps, progress=sys.stderr.isatty(), who=who)
         print(f"wrote {args.out} ({len(frames)} frames at {args.fps} fps, {args.size[0]}x{args.size[1]})")
         return 0
     return _render_to(args, options, _render_targets(args.meshes, args.out, args.views, args.outputs))
@@ -529,9 +537,13 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                                    "normal/depth outputs.")
     p.add_argument("meshes", nargs="+", metavar="MESH",
                    help="mesh files, or the name of a mesh shipped with toonmesh (bunny)")
-    p.add_argument("-o", "--out", required=True, metavar="OUT",
-                   help="an image file (.png, .npz) for one mesh and view, a video (.gif, .mp4, .webm) of one mesh's "
-                        "--views, else a folder")
+    out = p.add_mutually_exclusive_group(required=True)
+    out.add_argument("-o", "--out", metavar="OUT",
+                     help="an image file (.png, .npz) for one mesh and view, a video (.gif, .mp4, .webm) of one "
+                          "mesh's --views, else a folder")
+    out.add_argument("--video", metavar="OUT",
+                     help=f"one mesh's turntable as a video ({', '.join(VIDEO_SUFFIXES)}): --views frames all the way "
+                          f"round, by default {DEFAULT_SECONDS:g} seconds at --fps")
     _add_size_argument(p, "image size in pixels")
     p.add_argument("--style", choices=styles(Material), default=default_style(),
                    help="shading model: one of Material's constructors (default: %(default)s)")
@@ -575,11 +587,13 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                   metavar="X")
     add_described(p, "--depth-threshold", Outlines, "depth_threshold", default=DEMO_OUTLINES.depth_threshold,
                   metavar="X")
-    p.add_argument("--views", type=_views, default=1, metavar="N",
-                   help="a turntable of N views about the up axis (default %(default)s); with -o turn.gif or "
-                        "turn.mp4, its frames as a video")
+    p.add_argument("--views", type=_views, default=None, metavar="N",
+                   help="a turntable of N views about the up axis (default 1; for a video, "
+                        f"{DEFAULT_SECONDS:g} seconds at --fps); with --video or -o turn.gif|.mp4|.webm, its frames "
+                        "as a video")
     p.add_argument("--fps", type=_fps, default=DEFAULT_FPS, metavar="N",
-                   help="frames per second of a video written by -o turn.gif|turn.mp4 (default %(default)s)")
+                   help="frames per second of a video written by --video or -o turn.gif|.mp4|.webm "
+                        "(default %(default)s)")
     add_described(p, "--up", RenderOptions, "up", help_after=up_help)
     smooth_flag = p.add_argument("--smooth", type=int, default=_keyword_default(render_views, "smooth_iterations"),
                                  metavar="N", help="smoothing iterations before rendering (default %(default)s)")

@@ -47,7 +47,7 @@ from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
 from toonmesh._viewer_layout import Layout, check_ratio, check_side
 from toonmesh._viewer_uploads import SharedUpload, shared_upload
-from toonmesh._video import DEFAULT_FPS, check_fps, check_video_size, video_kind, video_writer
+from toonmesh._video import DEFAULT_FPS, DEFAULT_SECONDS, check_fps, check_video_size, video_kind, video_writer
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
@@ -734,7 +734,7 @@ class Viewer:
             self.render_count += 1
             return result
 
-    def turntable(self, path: "str | os.PathLike[str]", seconds: float = 4.0, fps: int = DEFAULT_FPS) -> str:
+    def turntable(self, path: "str | os.PathLike[str]", seconds: float = DEFAULT_SECONDS, fps: int = DEFAULT_FPS) -> str:
         """Writes a turn of the view about its target and the world's up (from the current view,
         all the way round, ``seconds`` long at ``fps`` frames per second: ``round(seconds * fps)``
         frames, at least one, at the viewer's size and settings) to ``path``, a ``.gif`` (Pillow),
