@@ -180,7 +180,9 @@ function projection(cam, aspect, near, far, scale) {
 // A draft renderer on `canvas` for the core's draft (`spec`, parsed JSON) and its bytes
 // (`blob`, an ArrayBuffer). Throws where WebGL2 or a program fails.
 function createDraft(canvas, spec, blob) {
-  const gl = canvas.getContext("webgl2", { antialias: false, depth: false, preserveDrawingBuffer: true });
+  // the canvas only shows each draft (`pixels` reads the draft's own target): the browser need
+  // not keep a copy of its drawing buffer
+  const gl = canvas.getContext("webgl2", { antialias: false, depth: false, preserveDrawingBuffer: false });
   if (!gl) throw new Error("WebGL2 is not available");
   // An sRGB canvas takes the colour target's bytes by a blit; without one (older browsers) they
   // are read back and copied into a plain texture first (slower: the read waits for the draw).
@@ -237,10 +239,11 @@ function createDraft(canvas, spec, blob) {
               normal: field(spec.draw_fields, "mesh.normal_matrix").offset / 4 };
 
   const wraps = { repeat: gl.REPEAT, clamp: gl.CLAMP_TO_EDGE, mirror: gl.MIRRORED_REPEAT };
-  const meshes = spec.meshes.map((m) => {
+  // a vertex array of a mesh's buffers (its own or its coarse copy's: the same layouts)
+  function vertexArray(m, own) {
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = { position: m.vertices, albedo: m.albedo };  // by the stage part that reads each
+    const buffers = { position: own.vertices, albedo: own.albedo };  // by the stage part that reads each
     for (const vb of m.vertex_buffers) {
       const b = gl.createBuffer();
       gl.bindBuffer(gl.ARRAY_BUFFER, b);
@@ -250,12 +253,19 @@ function createDraft(canvas, spec, blob) {
         gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, vb.stride, a.offset);
       }
     }
-    if (m.indices) {
+    if (own.indices) {
       const ib = gl.createBuffer();
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ib);
-      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, bytes(m.indices), gl.STATIC_DRAW);
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, bytes(own.indices), gl.STATIC_DRAW);
     }
     gl.bindVertexArray(null);
+    return { vao, indexed: !!own.indices, count: own.count };
+  }
+  const meshes = spec.meshes.map((m) => {
+    const full = vertexArray(m, m);
+    // the coarse copy: for drafts drawn smaller than the exact frame (far fewer vertices and
+    // triangles, where one would cover less than a pixel)
+    const coarse = m.coarse ? vertexArray(m, m.coarse) : full;
     const draw = bytes(m.draw).slice();
     const ubo = gl.createBuffer();
     gl.bindBuffer(gl.UNIFORM_BUFFER, ubo);
@@ -274,7 +284,7 @@ function createDraft(canvas, spec, blob) {
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wraps[t.wrap]);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wraps[t.wrap]);
     }
-    return { spec: m, vao, ubo, draw, f32: new Float32Array(draw.buffer), texture, program: programs[m.program] };
+    return { spec: m, full, coarse, ubo, draw, f32: new Float32Array(draw.buffer), texture, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();
 
@@ -379,6 +389,7 @@ function createDraft(canvas, spec, blob) {
     gl.clearBufferfv(gl.COLOR, 0, spec.background);
     if (targets.geometry) gl.clearBufferuiv(gl.COLOR, 1, spec.geometry_clear);
     gl.clearBufferfv(gl.DEPTH, 0, [1]);
+    const smaller = w * h < c.width * c.height;  // a draft while the view moves: the coarse copies
     for (const m of meshes) {
       const mv = mat4Mul(vn, m.spec.model);
       m.f32.set(mv, D.modelView);
@@ -388,9 +399,10 @@ function createDraft(canvas, spec, blob) {
       gl.bindBufferBase(gl.UNIFORM_BUFFER, 1, m.ubo);
       gl.useProgram(m.program);
       if (m.texture) { gl.activeTexture(gl.TEXTURE3); gl.bindTexture(gl.TEXTURE_2D, m.texture); }
-      gl.bindVertexArray(m.vao);
-      if (m.spec.indices) gl.drawElements(gl.TRIANGLES, m.spec.count, gl.UNSIGNED_INT, 0);
-      else gl.drawArrays(gl.TRIANGLES, 0, m.spec.count);
+      const v = smaller ? m.coarse : m.full;
+      gl.bindVertexArray(v.vao);
+      if (v.indexed) gl.drawElements(gl.TRIANGLES, v.count, gl.UNSIGNED_INT, 0);
+      else gl.drawArrays(gl.TRIANGLES, 0, v.count);
     }
     gl.disable(gl.DEPTH_TEST);
     gl.bindVertexArray(emptyVao);
@@ -454,9 +466,10 @@ function createDraft(canvas, spec, blob) {
 }
 
 // The size drafts are drawn at while the view moves, as a share of the full size: at most
-// `most` (the viewer's drag_scale), less while drafts come slower than every TARGET_MS (the
-// browser draws on the CPU: SwiftShader), so that the view keeps up with the pointer.
-const DRAFT_TARGET_MS = 40, DRAFT_LEAST_SCALE = 0.25;
+// `most` (the viewer's drag_scale), less while drafts come slower than every TARGET_MS (40 a
+// second; the browser may draw on the CPU: SwiftShader), so that the view keeps up with the
+// pointer.
+const DRAFT_TARGET_MS = 25, DRAFT_LEAST_SCALE = 0.25;
 function draftPacer(most) {
   let scale = most, last = 0;
   return {

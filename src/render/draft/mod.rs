@@ -8,10 +8,13 @@
 //! that the page rewrites only the camera's fields per frame; the meshes' vertex, index and
 //! colour buffers as the renderer uploaded them, with their layouts; the lights as they are
 //! before the view turns them; and the steps of the exact frame the draft leaves out (mesh-space
-//! lines, hatching, shadows, paper, multisampling, supersampling). The page's own code is
-//! plumbing: GL calls, and the camera's matrices from its eye, target and up.
+//! lines, hatching, shadows, paper, multisampling, supersampling); and, for a scene of more faces
+//! than a small draft has pixels, a coarse copy of its large meshes (`lod`) that the page draws
+//! while it draws smaller than the exact frame. The page's own code is plumbing: GL calls, and
+//! the camera's matrices from its eye, target and up.
 
 pub mod glsl;
+pub mod lod;
 
 use glam::DMat4;
 use serde::Serialize;
@@ -23,6 +26,8 @@ use crate::render::effects::outlines::ink::INK_OVER;
 use crate::render::effects::outlines::settings::ImageRule;
 use crate::render::effects::outlines::settings::INK_KINDS;
 use crate::render::effects::outlines::{edge_bits, edges};
+use crate::render::gpu_albedo;
+use crate::render::gpu_mesh::GpuMesh;
 use crate::render::graph::build::nearest_wins;
 use crate::render::graph::effect::FrameInputs;
 use crate::render::graph::mesh_stages::MeshStages;
@@ -98,6 +103,20 @@ pub struct DraftTexture {
     pub wrap: &'static str,
 }
 
+/// A mesh's coarse copy (`lod`): its vertex and albedo buffers, in the layouts of the mesh's
+/// own, and its u32 indices.
+#[derive(Clone, Debug, Serialize)]
+pub struct DraftCoarse {
+    pub vertices: Span,
+    pub albedo: Option<Span>,
+    pub indices: Span,
+    pub count: u32,
+}
+
+/// The output pixels a face of the coarse copies stands for: a draft at a quarter of the exact
+/// frame's width and height (the page's least) has about one face a pixel.
+const PIXELS_PER_COARSE_FACE: usize = 16;
+
 /// One mesh of the scene.
 #[derive(Clone, Debug, Serialize)]
 pub struct DraftMesh {
@@ -115,6 +134,9 @@ pub struct DraftMesh {
     /// times this.
     pub model: [f64; 16],
     pub texture: Option<DraftTexture>,
+    /// Its coarse copy, drawn instead while a draft is drawn smaller than the exact frame (None:
+    /// the mesh is small enough as it is).
+    pub coarse: Option<DraftCoarse>,
 }
 
 /// A light's slot as the view turns it: `world` lights turn with the view (in the lighting
@@ -277,6 +299,24 @@ fn vertex_buffers(stages: &MeshStages) -> Vec<VertexBuffer> {
     stages.buffers().into_iter().map(buffer).collect()
 }
 
+/// The coarse copy (`lod`) of a mesh as uploaded, with at most `most_faces` faces.
+fn coarse_copy(
+    vertices: &[u8],
+    indices: Option<&[u8]>,
+    albedo: Option<&[u8]>,
+    count: u32,
+    most_faces: usize,
+) -> Option<lod::Coarse> {
+    let layout = GpuMesh::vertex_layout();
+    let [position, normal] = [0, 1].map(|k| layout.attributes.get(k).map(|a| a.offset as usize));
+    let layout = lod::PositionLayout { stride: layout.array_stride as usize, position: position?, normal };
+    let indices: Option<Vec<u32>> =
+        indices.map(|b| b.chunks_exact(4).map(|x| u32::from_le_bytes([x[0], x[1], x[2], x[3]])).collect());
+    let albedo = albedo.map(|a| (a, gpu_albedo::vertex_layout().array_stride as usize));
+    let mesh = lod::Uploaded { vertices, layout, albedo, indices: indices.as_deref(), count: count as usize };
+    lod::coarse(&mesh, most_faces)
+}
+
 impl Renderer {
     /// The draft of `scene` from its camera (see the module's documentation), and the blob of
     /// bytes its spans point into.
@@ -289,6 +329,9 @@ impl Renderer {
         let mut programs: Vec<GlslProgram> = Vec::new();
         let mut keys: Vec<(MeshStages, Vec<(&'static str, f64)>)> = Vec::new();
         let mut meshes = Vec::new();
+        // the coarse copies' faces, shared among the meshes as their own faces are
+        let faces: usize = records.iter().map(|r| r.gpu.draw_count as usize / 3).sum();
+        let coarse_faces = (frame.width as usize * frame.height as usize) / PIXELS_PER_COARSE_FACE;
         for (item, rec) in scene.scene.items.iter().zip(&records) {
             let item = drafted(item);
             let g = &rec.gpu;
@@ -306,15 +349,36 @@ impl Renderer {
                     programs.len() - 1
                 }
             };
-            let vertices = blob.push(&read_buffer(self, &g.vertices)?);
-            let indices = match &g.indices {
-                Some(b) => Some(blob.push(&read_buffer(self, b)?)),
+            let vertex_bytes = read_buffer(self, &g.vertices)?;
+            let index_bytes = match &g.indices {
+                Some(b) => Some(read_buffer(self, b)?),
                 None => None,
             };
-            let albedo = match &g.albedo {
-                Some(a) if stages.albedo => Some(blob.push(&read_buffer(self, &a.vertices)?)),
+            let albedo_bytes = match &g.albedo {
+                Some(a) if stages.albedo => Some(read_buffer(self, &a.vertices)?),
                 _ => None,
             };
+            let coarse = if faces > coarse_faces.max(1) {
+                let share = coarse_faces * (g.draw_count as usize / 3) / faces;
+                coarse_copy(
+                    &vertex_bytes,
+                    index_bytes.as_deref(),
+                    albedo_bytes.as_deref(),
+                    g.draw_count,
+                    share,
+                )
+                .map(|c| DraftCoarse {
+                    vertices: blob.push(&c.vertices),
+                    albedo: c.albedo.as_deref().map(|a| blob.push(a)),
+                    count: c.indices.len() as u32,
+                    indices: blob.push(bytemuck::cast_slice(&c.indices)),
+                })
+            } else {
+                None
+            };
+            let vertices = blob.push(&vertex_bytes);
+            let indices = index_bytes.as_deref().map(|b| blob.push(b));
+            let albedo = albedo_bytes.as_deref().map(|b| blob.push(b));
             let texture =
                 g.albedo.as_ref().filter(|a| a.textured).and_then(|a| a.texture.as_ref()).map(|(t, s)| {
                     DraftTexture {
@@ -336,6 +400,7 @@ impl Renderer {
                 draw: blob.push(&draw_bytes(&item, &g.placement, &cam)),
                 model: cols(model),
                 texture,
+                coarse,
             });
         }
         let (mut edge_bits_program, mut edges_program) = (None, None);
