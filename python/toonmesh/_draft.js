@@ -287,6 +287,8 @@ function createDraft(canvas, spec, blob) {
     return { spec: m, full, coarse, ubo, draw, f32: new Float32Array(draw.buffer), texture, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();
+  const coarseFaces = meshes.reduce((n, m) => n + m.coarse.count / 3, 0);
+  let lastFaces = 0;  // the faces the last draft drew
 
   // the targets, made at the size drawn
   let size = null, targets = null;
@@ -389,7 +391,10 @@ function createDraft(canvas, spec, blob) {
     gl.clearBufferfv(gl.COLOR, 0, spec.background);
     if (targets.geometry) gl.clearBufferuiv(gl.COLOR, 1, spec.geometry_clear);
     gl.clearBufferfv(gl.DEPTH, 0, [1]);
-    const smaller = w * h < c.width * c.height;  // a draft while the view moves: the coarse copies
+    // the coarse copies while they still have a face for every few pixels of this draft (one
+    // drawn smaller than the frame they were made for: while the view moves)
+    const smaller = coarseFaces * spec.pixels_per_coarse_face > w * h;
+    lastFaces = 0;
     for (const m of meshes) {
       const mv = mat4Mul(vn, m.spec.model);
       m.f32.set(mv, D.modelView);
@@ -400,6 +405,7 @@ function createDraft(canvas, spec, blob) {
       gl.useProgram(m.program);
       if (m.texture) { gl.activeTexture(gl.TEXTURE3); gl.bindTexture(gl.TEXTURE_2D, m.texture); }
       const v = smaller ? m.coarse : m.full;
+      lastFaces += v.count / 3;
       gl.bindVertexArray(v.vao);
       if (v.indexed) gl.drawElements(gl.TRIANGLES, v.count, gl.UNSIGNED_INT, 0);
       else gl.drawArrays(gl.TRIANGLES, 0, v.count);
@@ -462,7 +468,7 @@ function createDraft(canvas, spec, blob) {
     return { width: w, height: h, data: out };
   }
 
-  return { draw, pixels, leftToExact: spec.left_to_exact, gl };
+  return { draw, pixels, leftToExact: spec.left_to_exact, gl, drawnFaces: () => lastFaces };
 }
 
 // The size drafts are drawn at while the view moves, as a share of the full size: at most

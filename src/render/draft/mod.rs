@@ -115,7 +115,7 @@ pub struct DraftCoarse {
 
 /// The output pixels a face of the coarse copies stands for: a draft at a quarter of the exact
 /// frame's width and height (the page's least) has about one face a pixel.
-const PIXELS_PER_COARSE_FACE: usize = 16;
+const PIXELS_PER_COARSE_FACE: usize = 8;
 
 /// One mesh of the scene.
 #[derive(Clone, Debug, Serialize)]
@@ -199,6 +199,9 @@ pub struct Draft {
     pub ink_blend: [&'static str; 2],
     /// What the exact frame draws that the draft leaves out.
     pub left_to_exact: Vec<String>,
+    /// The page draws the coarse copies while they have a face for at most this many of the
+    /// draft's pixels (a draft smaller than the frame they were made for).
+    pub pixels_per_coarse_face: usize,
 }
 
 fn fields(members: &Members) -> Vec<Field> {
@@ -495,6 +498,7 @@ impl Renderer {
             depth_compare: gl_compare(nearest_wins().and_then(|d| d.depth_compare)),
             ink_blend: [gl_factor(INK_OVER.color.src_factor), gl_factor(INK_OVER.color.dst_factor)],
             left_to_exact: left,
+            pixels_per_coarse_face: PIXELS_PER_COARSE_FACE,
         };
         Ok((draft, blob.0))
     }
