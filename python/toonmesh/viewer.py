@@ -724,8 +724,9 @@ class Viewer:
 
     def snapshot(self, **options: "Unpack[RenderKeywords]") -> RenderResult:
         """The current view rendered at full quality as a :class:`toonmesh.RenderResult`;
-        ``options`` override the viewer's settings for this render only (``width``, ``height``,
-        ``supersample``, ``outputs``, ...)."""
+        ``options`` override the viewer's settings for this render only (``width``, ``height``
+        in output pixels, ``supersample``, ``outputs``, ...; by default the frame's size and
+        pixel ratio, so ``pixel_ratio=1`` for widths as ``tm.render`` draws them)."""
         self._check_open()
         with self._render_lock:
             opts = self.options.replace(**options)
