@@ -126,18 +126,20 @@ def test_render_takes_the_effects_flags(tmp_path, capsys):
 
 
 def _options(parser: argparse.ArgumentParser):
+    """(command, action, required): required where the action, or one of its group, must be given."""
     for action in parser._actions:
         if isinstance(action, argparse._SubParsersAction):
             for name, sub in action.choices.items():
-                yield from ((name, a) for a in sub._actions)
+                one_of = {id(a) for g in sub._mutually_exclusive_groups if g.required for a in g._group_actions}
+                yield from ((name, a, a.required or id(a) in one_of) for a in sub._actions)
 
 
 def test_help_states_every_default():
     from toonmesh.cli import build_parser
 
     missing = []
-    for command, action in _options(build_parser()):
-        if not action.option_strings or action.required or command == "bench":
+    for command, action, required in _options(build_parser()):
+        if not action.option_strings or required or command == "bench":
             continue
         if isinstance(action, (argparse._HelpAction, argparse._VersionAction)):
             continue

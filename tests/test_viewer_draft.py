@@ -138,6 +138,28 @@ def test_a_small_draft_draws_a_coarse_copy_that_keeps_the_picture(browser, tmp_p
     assert share >= 0.93, f"{share:.1%} of the covered pixels agree within 8 levels and a pixel"
 
 
+def test_a_small_drafts_dither_cells_keep_their_size_on_screen(browser, tmp_path):
+    V, F = bunny()
+    material = tm.Material.bands("#d0a070", dither=tm.Dither("bayer4", scale=4.0))
+    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1], material=material)
+    try:
+        v.to_html(tmp_path / "page.html")
+        camera, view = v._camera_state(), v.camera
+    finally:
+        v.close()
+    page = _open(browser, tmp_path / "page.html")
+    w, h = SIZE[0] // 4, SIZE[1] // 4
+    pixels = page.evaluate("([c, w, h]) => { const d = window.toonmeshDraft.renderer; d.draw(c, w, h, 0.25);"
+                           " return Array.from(d.pixels().data); }", [camera, w, h])
+    page.close()
+    draft = np.asarray(pixels, np.uint8).reshape(h, w, 4)
+    # a quarter-size draft is the frame at a quarter of the pixel ratio: cells a quarter as many
+    # pixels wide, as large on screen (not the cells of the full-size frame, four times as large)
+    same = _agreement(draft, tm.render(V, F, material=material, camera=view, width=w, height=h, pixel_ratio=0.25).color)
+    other = _agreement(draft, tm.render(V, F, material=material, camera=view, width=w, height=h).color)
+    assert same > other + 0.05, (same, other)
+
+
 def _page_of(browser, tmp_path, name, **options):
     """The page of a bunny viewer with ``options``, opened; and the viewer's exact frame and camera."""
     V, F = bunny()

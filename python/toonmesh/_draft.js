@@ -284,7 +284,9 @@ function createDraft(canvas, spec, blob) {
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wraps[t.wrap]);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wraps[t.wrap]);
     }
-    return { spec: m, full, coarse, ubo, draw, f32: new Float32Array(draw.buffer), texture, program: programs[m.program] };
+    const f32 = new Float32Array(draw.buffer);
+    const lengths = spec.draw_pixel_lengths.map((offset) => [offset / 4, f32[offset / 4]]);  // the dither's cell
+    return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();
   const coarseFaces = meshes.reduce((n, m) => n + m.coarse.count / 3, 0);
@@ -399,6 +401,7 @@ function createDraft(canvas, spec, blob) {
       const mv = mat4Mul(vn, m.spec.model);
       m.f32.set(mv, D.modelView);
       m.f32.set(normalMatrix(mv), D.normal);
+      for (const [i, length] of m.lengths) m.f32[i] = length * perWidth;
       gl.bindBuffer(gl.UNIFORM_BUFFER, m.ubo);
       gl.bufferSubData(gl.UNIFORM_BUFFER, 0, m.draw);
       gl.bindBufferBase(gl.UNIFORM_BUFFER, 1, m.ubo);

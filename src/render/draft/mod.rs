@@ -186,6 +186,8 @@ pub struct Draft {
     /// The byte offsets in the frame's bytes of the f32s measured in output pixels (the ink's
     /// widths): a draft drawn smaller scales them.
     pub pixel_widths: Vec<usize>,
+    /// The same in each draw's bytes (the dither's cell).
+    pub draw_pixel_lengths: Vec<usize>,
     pub lights: Vec<DraftLight>,
     pub camera: DraftCamera,
     /// The colour target's clear value (linear RGBA) and the geometry target's (u32 bits).
@@ -465,6 +467,7 @@ impl Renderer {
             leave("multisampling");
         }
         let to3 = |v: glam::DVec3| v.to_array();
+        let draw_fields = fields(&draw_members());
         let draft = Draft {
             programs,
             edge_bits: edge_bits_program,
@@ -473,7 +476,12 @@ impl Renderer {
             frame: frame_span,
             frame_fields,
             pixel_widths,
-            draw_fields: fields(&draw_members()),
+            draw_pixel_lengths: draw_fields
+                .iter()
+                .filter(|f| f.name == "dither.cell")
+                .map(|f| f.offset)
+                .collect(),
+            draw_fields,
             lights,
             camera: DraftCamera {
                 scale: cam.scale,
