@@ -113,9 +113,11 @@ def test_a_draft_agrees_with_the_exact_frame_of_the_same_view(browser, tmp_path,
     assert "WebGL2" in title and "the draft draws everything" in title, title
 
 
-def test_a_small_draft_draws_a_coarse_copy_that_keeps_the_picture(browser, tmp_path):
+def _quarter_draft(browser, tmp_path, **options):
+    """A bunny viewer's page with ``options``: its draft at a quarter of the size (H, W, 4), the
+    faces that draft drew and those of the full-size draft, and the viewer's camera."""
     V, F = bunny()
-    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1])
+    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1], **options)
     try:
         v.to_html(tmp_path / "page.html")
         camera, view = v._camera_state(), v.camera
@@ -123,17 +125,21 @@ def test_a_small_draft_draws_a_coarse_copy_that_keeps_the_picture(browser, tmp_p
         v.close()
     page = _open(browser, tmp_path / "page.html")
     w, h = SIZE[0] // 4, SIZE[1] // 4
-    small = page.evaluate(
-        "([c, w, h]) => { const d = window.toonmeshDraft.renderer; d.draw(c, w, h, 0.25);"
-        " const p = d.pixels(); return [d.drawnFaces(), Array.from(p.data)]; }", [camera, w, h])
-    full = page.evaluate("([c, w, h]) => { const d = window.toonmeshDraft.renderer; d.draw(c, w, h, 1);"
-                         " return d.drawnFaces(); }", [camera, *SIZE])
+    drawn = "([c, w, h, r]) => { const d = window.toonmeshDraft.renderer; d.draw(c, w, h, r); return d.drawnFaces(); }"
+    full = page.evaluate(drawn, [camera, *SIZE, 1])
+    small = page.evaluate(drawn, [camera, w, h, 0.25])
+    pixels = page.evaluate("Array.from(window.toonmeshDraft.renderer.pixels().data)")
     page.close()
-    draft = np.asarray(small[1], np.uint8).reshape(h, w, 4)
-    exact = tm.render(V, F, camera=view, width=w, height=h).color
+    return np.asarray(pixels, np.uint8).reshape(h, w, 4), small, full, view
+
+
+def test_a_small_draft_draws_a_coarse_copy_that_keeps_the_picture(browser, tmp_path):
+    V, F = bunny()
+    draft, small, full, view = _quarter_draft(browser, tmp_path)
+    exact = tm.render(V, F, camera=view, width=draft.shape[1], height=draft.shape[0]).color
     # a quarter of the size: far fewer faces (about two a pixel), the same picture at that size
     # up to band borders and edges moved by a pixel (the copy's vertices are its clusters' means)
-    assert full == len(F) and small[0] < 0.25 * len(F), (small[0], full, len(F))
+    assert full == len(F) and small < 0.25 * len(F), (small, full, len(F))
     share = _agreement(draft, exact, reach=1)
     assert share >= 0.93, f"{share:.1%} of the covered pixels agree within 8 levels and a pixel"
 
@@ -141,18 +147,8 @@ def test_a_small_draft_draws_a_coarse_copy_that_keeps_the_picture(browser, tmp_p
 def test_a_small_drafts_dither_cells_keep_their_size_on_screen(browser, tmp_path):
     V, F = bunny()
     material = tm.Material.bands("#d0a070", dither=tm.Dither("bayer4", scale=4.0))
-    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1], material=material)
-    try:
-        v.to_html(tmp_path / "page.html")
-        camera, view = v._camera_state(), v.camera
-    finally:
-        v.close()
-    page = _open(browser, tmp_path / "page.html")
-    w, h = SIZE[0] // 4, SIZE[1] // 4
-    pixels = page.evaluate("([c, w, h]) => { const d = window.toonmeshDraft.renderer; d.draw(c, w, h, 0.25);"
-                           " return Array.from(d.pixels().data); }", [camera, w, h])
-    page.close()
-    draft = np.asarray(pixels, np.uint8).reshape(h, w, 4)
+    draft, _, _, view = _quarter_draft(browser, tmp_path, material=material)
+    h, w = draft.shape[:2]
     # a quarter-size draft is the frame at a quarter of the pixel ratio: cells a quarter as many
     # pixels wide, as large on screen (not the cells of the full-size frame, four times as large)
     same = _agreement(draft, tm.render(V, F, material=material, camera=view, width=w, height=h, pixel_ratio=0.25).color)

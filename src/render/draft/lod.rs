@@ -227,16 +227,15 @@ mod tests {
 
     const LAYOUT: PositionLayout = PositionLayout { stride: 24, position: 0, normal: Some(12) };
 
+    /// An indexed mesh of positions and normals, without albedo.
+    fn indexed<'a>(vertices: &'a [u8], indices: &'a [u32]) -> Uploaded<'a> {
+        Uploaded { vertices, layout: LAYOUT, albedo: None, indices: Some(indices), count: indices.len() }
+    }
+
     #[test]
     fn a_large_mesh_comes_down_to_the_faces_asked_for_and_keeps_its_shape() {
         let (vertices, indices) = sphere(120, 160);
-        let m = Uploaded {
-            vertices: &vertices,
-            layout: LAYOUT,
-            albedo: None,
-            indices: Some(&indices),
-            count: indices.len(),
-        };
+        let m = indexed(&vertices, &indices);
         let c = coarse(&m, 4000).expect("a coarse copy");
         let faces = c.indices.len() / 3;
         assert!(faces <= 4000 && faces > 1000, "{faces} faces");
@@ -254,13 +253,7 @@ mod tests {
     #[test]
     fn a_small_mesh_has_no_copy() {
         let (vertices, indices) = sphere(8, 8);
-        let m = Uploaded {
-            vertices: &vertices,
-            layout: LAYOUT,
-            albedo: None,
-            indices: Some(&indices),
-            count: indices.len(),
-        };
+        let m = indexed(&vertices, &indices);
         assert_eq!(coarse(&m, 10_000), None);
     }
 
