@@ -167,8 +167,9 @@ def test_snapshot_renders_the_view_at_any_size_and_outputs(viewer):
 
 
 def test_the_saved_notebook_keeps_a_still_frame(viewer):
-    bundle = viewer._repr_mimebundle_()
+    bundle, metadata = viewer._repr_mimebundle_()
     assert bundle["image/png"].startswith(b"\x89PNG")
+    assert metadata["image/png"] == {"width": SIZE, "height": SIZE}  # shown at the view's size
     assert "application/vnd.jupyter.widget-view+json" in bundle
     assert viewer.widget._frame_id >= 1 and len(viewer.widget._frame) > 0
 
@@ -178,7 +179,7 @@ def test_without_a_widget_front_end_the_viewer_says_how_to_get_one(mesh, monkeyp
 
     monkeypatch.setattr(tv, "_make_widget", lambda viewer: None)  # as without anywidget
     v = tm.Viewer(*mesh, width=64, height=64)
-    bundle = v._repr_mimebundle_()
+    bundle, _ = v._repr_mimebundle_()
     assert set(bundle) == {"image/png", "text/plain"}
     assert "toonmesh[notebook]" in bundle["text/plain"]
     v.orbit(10, 0)  # still works from Python
@@ -286,6 +287,10 @@ def test_a_view_without_a_width_fits_the_cell_at_the_screens_pixel_ratio(mesh):
     assert v.frame.shape == (180, 300, 4)  # the frame in output pixels; shown at 150 x 90
     assert v.widget._size == [150, 90] and v.widget._layout["ratio"] == 2.0
     assert v.options.width == 300 and v.options.pixel_ratio == 2.0 and "at 2x" in repr(v)
+    # the still frame a saved notebook keeps: the 2x PNG, shown at the view's size
+    bundle, metadata = v._repr_mimebundle_()
+    assert metadata["image/png"] == {"width": 150, "height": 90} and bundle["image/png"][16:24] == bytes(
+        [0, 0, 1, 44, 0, 0, 0, 180])  # the PNG's IHDR: 300 x 180
     # code() reproduces the frame, at its size and ratio
     code = v.code()
     assert "width=300" in code and "height=180" in code and "pixel_ratio=2.0" in code

@@ -881,9 +881,12 @@ class Viewer:
     def _repr_png_(self) -> Optional[bytes]:
         return None if self.frame is None else _core.encode_png_rgba(self.frame)
 
-    def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> Dict[str, Any]:
+    def _repr_mimebundle_(self, include: Any = None,
+                          exclude: Any = None) -> Tuple[Dict[str, Any], Dict[str, Any]]:
         """The widget where a front end shows widgets, and always the current frame as PNG (what
-        nbconvert, GitHub and an untrusted notebook show) with a line of text."""
+        nbconvert, GitHub and an untrusted notebook show) with a line of text; with the metadata
+        that shows the PNG at the view's size in layout pixels (sharp at a pixel ratio above 1,
+        as the live view is)."""
         bundle: Dict[str, Any] = {}
         shown = self._controls.widget if self._controls is not None else self._widget
         if shown is not None and not self._shared.closed:
@@ -892,10 +895,13 @@ class Viewer:
                 widget_bundle = widget_bundle[0]
             bundle.update(widget_bundle or {})
         png = self._repr_png_()
+        metadata: Dict[str, Any] = {}
         if png is not None:
             bundle["image/png"] = png
+            width, height = self._layout.view_size()
+            metadata["image/png"] = {"width": width, "height": height}
         bundle["text/plain"] = repr(self)
-        return bundle
+        return bundle, metadata
 
     def __repr__(self) -> str:
         width, height = self._layout.view_size()
