@@ -331,6 +331,10 @@ def test_a_given_width_and_ratio_stay_and_none_follows_again(mesh):
         with pytest.raises(error, match=next(iter(bad))):
             v.set(**bad)
     assert v.frame.shape == (75, 60, 4)
+    # a size the device cannot render is refused, and the viewer keeps what it had
+    with pytest.raises(ValueError, match="width"):
+        v.set(width=9000, pixel_ratio=4, outlines="mesh")
+    assert (v.width, v.pixel_ratio, v.outlines, v.options.width) == (40, 1.5, None, 60)
     # a report the viewer cannot read is answered with an error, and nothing changes
     count = v.render_count
     _report(v, 2, width="wide")

@@ -595,16 +595,29 @@ class Viewer:
         return self._options.replace(camera=self.camera)
 
     def set(self, **options: "Unpack[RenderKeywords]") -> None:
-        """Changes several render settings at once, then renders once."""
+        """Changes several render settings at once, then renders once; where the settings or
+        the render are refused, the viewer keeps the settings it had."""
         self._check_open()
         if "outputs" in options:
             raise TypeError("outputs: a Viewer shows the colour image; use snapshot(outputs=...) for others")
+        with self._state_lock:
+            before = (self._options, self._layout, dict(self._given), copy.deepcopy(self._view))
+        try:
+            self._set(dict(options))
+        except BaseException:
+            with self._state_lock:
+                self._options, self._layout, self._given, self._view = before
+            self._settings_shown()
+            raise
+
+    def _set(self, options: Dict[str, Any]) -> None:
         camera = options.pop("camera", None)
         sides = {k: _layout_value(k, options.pop(k)) for k in _LAYOUT if k in options}  # type: ignore[misc]
-        self._options = self._options.replace(**options)  # type: ignore[misc]
+        layout = copy.copy(self._layout)  # held once the options it makes are checked
         for name, value in sides.items():
-            setattr(self._layout, _LAYOUT_FIELDS[name], value)
-        self._resized()
+            setattr(layout, _LAYOUT_FIELDS[name], value)
+        self._options = self._options.replace(**options, **layout.frame())
+        self._layout = layout
         for k, v in options.items():
             if v is None:
                 self._given.pop(k, None)
