@@ -144,6 +144,18 @@ def test_a_small_draft_draws_a_coarse_copy_that_keeps_the_picture(browser, tmp_p
     assert share >= 0.93, f"{share:.1%} of the covered pixels agree within 8 levels and a pixel"
 
 
+def test_a_small_draft_keeps_its_ink_visible(browser, tmp_path):
+    draft, _, _, _ = _quarter_draft(browser, tmp_path, outlines="image")
+    rgb = draft[..., :3].astype(int)
+    covered = np.abs(rgb - 255).max(-1) > 0
+    inside = np.roll(covered, 1, 0) & np.roll(covered, -1, 0) & np.roll(covered, 1, 1) & np.roll(covered, -1, 1)
+    outline = int((covered & ~inside).sum())  # the pixels along the silhouette
+    dark = int((rgb.max(-1) < 110).sum())  # ink (the bands stay lighter: no ink, none is this dark)
+    # the ink a quarter as many pixels wide would be a faint fringe; at least the default line's
+    # width in the draft's pixels, it is a line along the silhouette and the creases
+    assert dark >= outline, (dark, outline)
+
+
 def test_a_small_drafts_dither_cells_keep_their_size_on_screen(browser, tmp_path):
     V, F = bunny()
     material = tm.Material.bands("#d0a070", dither=tm.Dither("bayer4", scale=4.0))

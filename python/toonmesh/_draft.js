@@ -368,7 +368,9 @@ function createDraft(canvas, spec, blob) {
     frameF32[F.footprint] = footprint[0] * zoom; frameF32[F.footprint + 1] = footprint[1] * zoom;
     frameF32[F.near] = near / scale;
     const perWidth = ratio === undefined ? h / c.height : ratio / c.pixel_ratio;
-    for (const [i, width] of widths) frameF32[i] = width * perWidth;
+    // a smaller draft keeps its lines: the ink at least the core's least width, in its pixels
+    const least = spec.least_ink_width;
+    for (const [i, width] of widths) frameF32[i] = Math.max(width * perWidth, Math.min(width, least));
     lights.forEach((l) => {
       let p = l.q.slice(0, 3);
       if (l.world) {

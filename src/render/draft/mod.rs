@@ -24,7 +24,7 @@ use crate::render::block::BlockLayout;
 use crate::render::effects::frame::{frame_bytes, frame_members};
 use crate::render::effects::outlines::ink::INK_OVER;
 use crate::render::effects::outlines::settings::ImageRule;
-use crate::render::effects::outlines::settings::INK_KINDS;
+use crate::render::effects::outlines::settings::{DEFAULT_WIDTH, INK_KINDS};
 use crate::render::effects::outlines::{edge_bits, edges};
 use crate::render::gpu_albedo;
 use crate::render::gpu_mesh::GpuMesh;
@@ -188,6 +188,9 @@ pub struct Draft {
     pub pixel_widths: Vec<usize>,
     /// The same in each draw's bytes (the dither's cell).
     pub draw_pixel_lengths: Vec<usize>,
+    /// A draft drawn smaller draws the ink at least this many of its pixels wide (or as wide as
+    /// the style, where that is less): the default line's width, so lines stay visible.
+    pub least_ink_width: f32,
     pub lights: Vec<DraftLight>,
     pub camera: DraftCamera,
     /// The colour target's clear value (linear RGBA) and the geometry target's (u32 bits).
@@ -476,6 +479,7 @@ impl Renderer {
             frame: frame_span,
             frame_fields,
             pixel_widths,
+            least_ink_width: DEFAULT_WIDTH,
             draw_pixel_lengths: draw_fields
                 .iter()
                 .filter(|f| f.name == "dither.cell")
