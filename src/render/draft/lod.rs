@@ -3,12 +3,13 @@
 //! triangles nobody sees: vertex clustering on a grid, the cell grown until the copy has at most
 //! the faces asked for.
 //!
-//! The vertices in one cell whose normals point to the same side (the axis of the normal's
-//! largest component, and its sign) and whose albedo (colour and texture coordinates, to an
-//! eighth) is the same become one vertex: at their mean position, with their mean normal, and
-//! the albedo of the one nearest that mean. A face whose corners meet in fewer than three
-//! vertices goes; so does a second face over the same three. Sides that face away from each
-//! other (the two sides of a thin sheet) and seams of the texture or the colours stay apart.
+//! The vertices in one cell that face the same way (their normals on the same side of the cell's
+//! mean normal) share one position and normal, their mean: so a smooth surface stays closed,
+//! whatever its curvature, while sides that face away from each other (the two sides of a thin
+//! sheet) stay apart. Among them, those whose albedo (colour and texture coordinates, to an
+//! eighth) is the same become one vertex, with the albedo of the one nearest the mean: seams of
+//! the texture or the colours stay seams, without a crack. A face whose corners meet in fewer
+//! than three vertices goes; so does a second face over the same three.
 //! The copy works on the buffers as uploaded, whatever else their vertices hold (copied from the
 //! nearest vertex).
 
@@ -50,19 +51,6 @@ fn vec3_at(bytes: &[u8], at: usize) -> [f64; 3] {
     [0, 4, 8].map(|k| f32_at(bytes, at + k) as f64)
 }
 
-/// Which side a normal faces: its largest component's axis and sign (0..6).
-fn side(n: [f64; 3]) -> u8 {
-    let a = n.map(f64::abs);
-    let axis = if a[0] >= a[1] && a[0] >= a[2] {
-        0
-    } else if a[1] >= a[2] {
-        1
-    } else {
-        2
-    };
-    axis * 2 + (n[axis as usize] < 0.0) as u8
-}
-
 /// A vertex's albedo to an eighth (colours and texture coordinates), hashed.
 fn albedo_key(record: &[u8]) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
@@ -74,26 +62,55 @@ fn albedo_key(record: &[u8]) -> u64 {
     h
 }
 
-/// The faces of the mesh over clusters of `cell`: each vertex's cluster, the cluster count and
-/// the faces kept.
-fn cluster(m: &Uploaded, faces: &[[u32; 3]], low: [f64; 3], cell: f64) -> (Vec<u32>, usize, Vec<[u32; 3]>) {
+/// The mesh's vertices over cells of `cell`: each vertex's cluster and the clusters' groups
+/// (the vertices of a cell that face the same way, which share a position).
+struct Clusters {
+    of: Vec<u32>,
+    group: Vec<u32>,
+    groups: usize,
+}
+
+/// The faces of the mesh over clusters of `cell`: the clusters and the faces kept.
+fn cluster(m: &Uploaded, faces: &[[u32; 3]], low: [f64; 3], cell: f64) -> (Clusters, Vec<[u32; 3]>) {
     let n = m.vertices.len() / m.layout.stride;
-    let mut ids: HashMap<([i64; 3], u8, u64), u32> = HashMap::new();
-    let mut of = vec![u32::MAX; n];
-    for f in faces {
-        for &v in f {
-            let v = v as usize;
-            if of[v] != u32::MAX {
-                continue;
-            }
-            let record = &m.vertices[v * m.layout.stride..];
-            let p = vec3_at(record, m.layout.position);
-            let c = [0, 1, 2].map(|k| ((p[k] - low[k]) / cell).floor() as i64);
-            let s = m.layout.normal.map_or(0, |at| side(vec3_at(record, at)));
-            let a = m.albedo.map_or(0, |(bytes, stride)| albedo_key(&bytes[v * stride..(v + 1) * stride]));
-            let next = ids.len() as u32;
-            of[v] = *ids.entry((c, s, a)).or_insert(next);
+    let record = |v: usize| &m.vertices[v * m.layout.stride..];
+    let cell_of = |v: usize| {
+        let p = vec3_at(record(v), m.layout.position);
+        [0, 1, 2].map(|k| ((p[k] - low[k]) / cell).floor() as i64)
+    };
+    let normal = |v: usize| m.layout.normal.map_or([0.0; 3], |at| vec3_at(record(v), at));
+    let used: Vec<usize> = {
+        let mut seen = vec![false; n];
+        faces
+            .iter()
+            .flatten()
+            .map(|&v| v as usize)
+            .filter(|&v| !std::mem::replace(&mut seen[v], true))
+            .collect()
+    };
+    // each cell's mean normal: the way its vertices face, mostly
+    let mut facing: HashMap<[i64; 3], [f64; 3]> = HashMap::new();
+    for &v in &used {
+        let (sum, nr) = (facing.entry(cell_of(v)).or_default(), normal(v));
+        for k in 0..3 {
+            sum[k] += nr[k];
         }
+    }
+    let mut groups: HashMap<([i64; 3], bool), u32> = HashMap::new();
+    let mut ids: HashMap<(u32, u64), u32> = HashMap::new();
+    let (mut of, mut group) = (vec![u32::MAX; n], Vec::new());
+    for &v in &used {
+        let c = cell_of(v);
+        let (mean, nr) = (facing[&c], normal(v));
+        let away = mean[0] * nr[0] + mean[1] * nr[1] + mean[2] * nr[2] < 0.0;
+        let next = groups.len() as u32;
+        let g = *groups.entry((c, away)).or_insert(next);
+        let a = m.albedo.map_or(0, |(bytes, stride)| albedo_key(&bytes[v * stride..(v + 1) * stride]));
+        let next = ids.len() as u32;
+        of[v] = *ids.entry((g, a)).or_insert_with(|| {
+            group.push(g);
+            next
+        });
     }
     let mut seen = HashSet::new();
     let mut kept = Vec::new();
@@ -108,7 +125,7 @@ fn cluster(m: &Uploaded, faces: &[[u32; 3]], low: [f64; 3], cell: f64) -> (Vec<u
             kept.push(g);
         }
     }
-    (of, ids.len(), kept)
+    (Clusters { of, group, groups: groups.len() }, kept)
 }
 
 /// The coarse copy of `m` with at most `most_faces` faces, or None where the mesh has no more
@@ -144,16 +161,19 @@ pub fn coarse(m: &Uploaded, most_faces: usize) -> Option<Coarse> {
     // a closed surface has about twice as many faces as vertices: cells of about the area a
     // vertex of the copy stands for, grown until the copy is small enough
     let mut cell = (2.0 * area / most_faces as f64).sqrt();
-    let (of, clusters, kept) = (0..16).find_map(|_| {
+    let (made, kept) = (0..16).find_map(|_| {
         let made = cluster(m, &faces, low, cell);
         cell *= 1.25;
-        (made.2.len() <= most_faces).then_some(made)
+        (made.1.len() <= most_faces).then_some(made)
     })?;
-    // each cluster: the mean position and normal, the rest from the vertex nearest the mean
-    let mut sum = vec![([0.0f64; 3], [0.0f64; 3], 0u32); clusters];
+    let Clusters { of, group, groups } = made;
+    let clusters = group.len();
+    // each group: the mean position and normal; each cluster its group's, and the rest from its
+    // vertex nearest that mean
+    let mut sum = vec![([0.0f64; 3], [0.0f64; 3], 0u32); groups];
     for (v, &c) in of.iter().enumerate().filter(|(_, &c)| c != u32::MAX) {
         let record = &m.vertices[v * stride..];
-        let s = &mut sum[c as usize];
+        let s = &mut sum[group[c as usize] as usize];
         let p = vec3_at(record, m.layout.position);
         let nr = m.layout.normal.map_or([0.0; 3], |at| vec3_at(record, at));
         for k in 0..3 {
@@ -162,7 +182,10 @@ pub fn coarse(m: &Uploaded, most_faces: usize) -> Option<Coarse> {
         }
         s.2 += 1;
     }
-    let mean = |c: usize| sum[c].0.map(|x| x / sum[c].2 as f64);
+    let mean = |c: usize| {
+        let g = group[c] as usize;
+        sum[g].0.map(|x| x / sum[g].2 as f64)
+    };
     let mut nearest = vec![(f64::INFINITY, 0usize); clusters];
     for (v, &c) in of.iter().enumerate().filter(|(_, &c)| c != u32::MAX) {
         let (p, q) = (vec3_at(&m.vertices[v * stride..], m.layout.position), mean(c as usize));
@@ -182,7 +205,7 @@ pub fn coarse(m: &Uploaded, most_faces: usize) -> Option<Coarse> {
         };
         put(&mut record, m.layout.position, mean(c));
         if let Some(at) = m.layout.normal {
-            let s = sum[c].1;
+            let s = sum[group[c] as usize].1;
             let len = (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt();
             if len > 0.0 {
                 put(&mut record, at, s.map(|x| x / len));
@@ -248,6 +271,22 @@ mod tests {
             let len = (nr[0] * nr[0] + nr[1] * nr[1] + nr[2] * nr[2]).sqrt();
             assert!((len - 1.0).abs() < 1e-4 && (p[0] * nr[0] + p[1] * nr[1] + p[2] * nr[2]) / r > 0.95);
         }
+    }
+
+    #[test]
+    fn a_smooth_closed_surface_stays_closed() {
+        // no crack where the normals turn across a cell: every edge of the copy has two faces
+        let (vertices, indices) = sphere(120, 160);
+        let c = coarse(&indexed(&vertices, &indices), 3000).expect("a coarse copy");
+        let mut edges: HashMap<(u32, u32), u32> = HashMap::new();
+        for f in c.indices.chunks_exact(3) {
+            for k in 0..3 {
+                let (a, b) = (f[k], f[(k + 1) % 3]);
+                *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+            }
+        }
+        let open = edges.values().filter(|&&n| n == 1).count();
+        assert_eq!(open, 0, "{open} of {} edges have one face", edges.len());
     }
 
     #[test]
