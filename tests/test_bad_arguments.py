@@ -37,6 +37,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
+from toonmesh._described import described
 from toonmesh import edges as te
 from toonmesh import testing
 from toonmesh.data import load_obj
@@ -989,6 +990,7 @@ NORMALS = Name(
 PIXELS = Integer(1, GPU["max_texture_size"])
 MSAA = Integer(1, 4, only=tuple(n for n in (1, 4) if n in GPU["msaa_samples"]))
 SUPERSAMPLE = Integer(1, 4)
+PIXEL_RATIO = Number(*(described(tm.RenderOptions, "pixel_ratio")[k] for k in ("min", "max")))  # the core's bounds
 
 PAPER = Array(
     (
@@ -1030,6 +1032,7 @@ FRAME = [
     Param("outputs", OUTPUTS, none=OK),
     Param("msaa", MSAA, none=OK),
     Param("supersample", SUPERSAMPLE, none=OK),
+    Param("pixel_ratio", PIXEL_RATIO, none=OK),
     Param("band_antialias", Flag(), none=OK),
     Param("outlines", OUTLINES, none=OK),
     Param("paper", PAPER, none=OK),
@@ -1044,7 +1047,7 @@ def _options_of(o: Any) -> Dict[str, Any]:
     """The keywords that make `o` again, read from its fields (a RenderOptions made from
     keywords renders as those keywords do)."""
     keys = ("material", "transform", "camera", "lights", "ambient", "background", "width", "height",
-            "outputs", "msaa", "supersample", "outlines")
+            "outputs", "msaa", "supersample", "pixel_ratio", "outlines")
     return {k: getattr(o, k) for k in keys}
 
 

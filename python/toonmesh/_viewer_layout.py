@@ -10,29 +10,42 @@ from __future__ import annotations
 import math
 from typing import Any, Dict, Optional, Tuple
 
-import numpy as np
-
+from toonmesh._checks import integer, number
 from toonmesh._core import RenderOptions
 from toonmesh._described import default, described
 
 # The view's size when none is given, until the browser says how wide the cell is.
 DEFAULT_WIDTH = int(default(RenderOptions, "", "width"))
 DEFAULT_HEIGHT = int(default(RenderOptions, "", "height"))
-_RATIO = described(RenderOptions, "pixel_ratio")
 # A cell narrower than this keeps this width (a view too small to drag in helps no one).
 MIN_FITTED_WIDTH = 64
+
+#: The viewer's keywords that size its view, each a field of ``Layout`` of the same name.
+KEYWORDS = ("width", "height", "pixel_ratio")
+
+
+def checked(name: str, value: Any) -> Any:
+    """A layout keyword's value (``KEYWORDS``) within the core's bounds for the render option of
+    the same name (None: fitted, the default or followed, as ``Layout`` says)."""
+    if value is None:
+        return None
+    bounds = described(RenderOptions, name)
+    if name == "pixel_ratio":
+        return number(name, value, bounds["min"], bounds["max"])
+    return integer(name, value, bounds["min"], bounds["max"])
 
 
 class Layout:
     """The view's size and pixel ratio: ``width`` None fits the cell's width (``cell_width``,
-    reported by the browser); ``height`` None is the default; ``ratio`` None follows the
+    reported by the browser); ``height`` None is the default; ``pixel_ratio`` None follows the
     screen's (``screen_ratio``); ``full`` the screen's size while the view is full screen (None
     otherwise)."""
 
-    def __init__(self, width: Optional[int], height: Optional[int], ratio: Optional[float]):
+    def __init__(self, width: Optional[int] = None, height: Optional[int] = None,
+                 pixel_ratio: Optional[float] = None):
         self.width = width
         self.height = height
-        self.ratio = ratio
+        self.pixel_ratio = pixel_ratio
         self.cell_width: Optional[int] = None
         self.screen_ratio = 1.0
         self.full: Optional[Tuple[int, int]] = None
@@ -44,14 +57,14 @@ class Layout:
         width = self.width if self.width is not None else (self.cell_width or DEFAULT_WIDTH)
         return width, DEFAULT_HEIGHT if self.height is None else self.height
 
-    def pixel_ratio(self) -> float:
+    def ratio(self) -> float:
         """Output pixels per layout pixel, as rendered now."""
-        return self.ratio if self.ratio is not None else self.screen_ratio
+        return self.pixel_ratio if self.pixel_ratio is not None else self.screen_ratio
 
     def frame(self) -> Dict[str, Any]:
         """The render options of a frame of the view: ``width``, ``height`` (output pixels) and
         ``pixel_ratio``."""
-        ratio = self.pixel_ratio()
+        ratio = self.ratio()
         w, h = self.view_size()
         return {"width": max(1, round(w * ratio)), "height": max(1, round(h * ratio)), "pixel_ratio": ratio}
 
@@ -64,7 +77,7 @@ class Layout:
             self.cell_width = max(MIN_FITTED_WIDTH, _whole("width", width))
         ratio = step.get("ratio")
         if ratio is not None:
-            self.screen_ratio = check_ratio("ratio", ratio)
+            self.screen_ratio = checked("pixel_ratio", ratio)
         full = step.get("full")
         if full is None:
             self.full = None
@@ -76,27 +89,7 @@ class Layout:
     def state(self) -> Dict[str, Any]:
         """What the browser needs to know: whether it reports the cell's width (``fit``) and the
         screen's ratio (``follow_screen``), and the ratio the frames are rendered at."""
-        return {"fit": self.width is None, "follow_screen": self.ratio is None, "ratio": self.pixel_ratio()}
-
-
-def check_ratio(name: str, value: Any) -> float:
-    """A pixel ratio within the core's bounds for ``RenderOptions.pixel_ratio``."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise TypeError(f"{name}: expected a number, got {type(value).__name__}")
-    lo, hi = _RATIO["min"], _RATIO["max"]
-    number = float(value)
-    if not (math.isfinite(number) and lo <= number <= hi):
-        raise ValueError(f"{name}: must be in [{lo:g}, {hi:g}], got {value}")
-    return number
-
-
-def check_side(name: str, value: Any) -> int:
-    """A view's side in layout pixels: an int of at least 1."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise TypeError(f"{name}: expected an int (pixels), got {type(value).__name__}")
-    if value < 1:
-        raise ValueError(f"{name}: must be at least 1 pixel, got {value}")
-    return int(value)
+        return {"fit": self.width is None, "follow_screen": self.pixel_ratio is None, "ratio": self.ratio()}
 
 
 def _whole(name: str, value: Any) -> int:

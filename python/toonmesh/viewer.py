@@ -45,7 +45,7 @@ from toonmesh._render import (PlacedMesh, Renderer, _core_items, draw, draw_view
                               scene_items, shared_renderer)
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
-from toonmesh._viewer_layout import Layout, check_ratio, check_side
+from toonmesh._viewer_layout import KEYWORDS as LAYOUT, Layout, checked
 from toonmesh._viewer_uploads import SharedUpload, shared_upload
 from toonmesh._video import DEFAULT_FPS, DEFAULT_SECONDS, check_fps, check_video_size, video_kind, video_writer
 
@@ -313,8 +313,7 @@ class Viewer:
             raise TypeError("vertices: expected the scene (arrays with faces, a trimesh, a file's path, a "
                             "trimesh.Scene, a toonmesh.Mesh or a list of meshes), got None")
         self._renderer = renderer if renderer is not None else shared_renderer(backend)
-        sides = {k: options.pop(k) for k in _LAYOUT if k in options}  # type: ignore[misc]
-        self._layout = Layout(*(_layout_value(k, sides.get(k)) for k in _LAYOUT))
+        self._layout = Layout(**{k: checked(k, options.pop(k)) for k in LAYOUT if k in options})  # type: ignore[misc]
         self._options = RenderOptions(**options, **self._layout.frame())  # checked before any upload
         self._given: Dict[str, Any] = {k: v for k, v in options.items() if k != "camera" and v is not None}
         self.image_format = _format(image_format)
@@ -379,7 +378,7 @@ class Viewer:
         the same, sharper): as given, or the screen's device pixel ratio as the browser reports
         it where none was given (1 until then). Set a number (0.25 to 8) to fix it, None to
         follow the screen again; either re-renders."""
-        return self._layout.pixel_ratio()
+        return self._layout.ratio()
 
     @pixel_ratio.setter
     def pixel_ratio(self, value: Optional[float]) -> None:
@@ -612,10 +611,10 @@ class Viewer:
 
     def _set(self, options: Dict[str, Any]) -> None:
         camera = options.pop("camera", None)
-        sides = {k: _layout_value(k, options.pop(k)) for k in _LAYOUT if k in options}  # type: ignore[misc]
+        sides = {k: checked(k, options.pop(k)) for k in LAYOUT if k in options}
         layout = copy.copy(self._layout)  # held once the options it makes are checked
         for name, value in sides.items():
-            setattr(layout, _LAYOUT_FIELDS[name], value)
+            setattr(layout, name, value)
         self._options = self._options.replace(**options, **layout.frame())
         self._layout = layout
         for k, v in options.items():
@@ -918,7 +917,7 @@ class Viewer:
 
     def __repr__(self) -> str:
         width, height = self._layout.view_size()
-        ratio = self._layout.pixel_ratio()
+        ratio = self._layout.ratio()
         size = f"{width}x{height}" + ("" if ratio == 1.0 else f" at {ratio:g}x")
         if self._shared.closed:
             return f"toonmesh.Viewer({size}): closed"
@@ -965,19 +964,6 @@ def _release(shared: _Shared, uploads: List[SharedUpload], front: List[Any]) -> 
     for item in reversed(front):  # the controls (a ControlPanel: its box and every control), then the frame's widget
         item.close()
     front.clear()
-
-
-# The settings that size the view (``Layout``), by keyword and by the layout's field.
-_LAYOUT_FIELDS = {"width": "width", "height": "height", "pixel_ratio": "ratio"}
-_LAYOUT = tuple(_LAYOUT_FIELDS)
-
-
-def _layout_value(name: str, value: Any) -> Any:
-    """A view's width or height in layout pixels, or its pixel ratio, checked (None: fitted or
-    followed, as ``Layout`` says)."""
-    if value is None:
-        return None
-    return check_ratio(name, value) if name == "pixel_ratio" else check_side(name, value)
 
 
 def _mesh_source(vertices: Any, faces: Any) -> str:

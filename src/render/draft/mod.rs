@@ -113,8 +113,8 @@ pub struct DraftCoarse {
     pub count: u32,
 }
 
-/// The output pixels a face of the coarse copies stands for: a draft at a quarter of the exact
-/// frame's width and height (the page's least) has about one face a pixel.
+/// The output pixels of the exact frame a face of the coarse copies stands for: a draft at a
+/// quarter of its width and height (the page's least) has about two faces a pixel.
 const PIXELS_PER_COARSE_FACE: usize = 8;
 
 /// One mesh of the scene.
