@@ -175,7 +175,7 @@ def test_the_saved_notebook_keeps_a_still_frame(viewer):
 
 
 def test_without_a_widget_front_end_the_viewer_says_how_to_get_one(mesh, monkeypatch):
-    import toonmesh.viewer as tv
+    import toonmesh.viewer._viewer as tv
 
     monkeypatch.setattr(tv, "_make_widget", lambda viewer: None)  # as without anywidget
     v = tm.Viewer(*mesh, width=64, height=64)

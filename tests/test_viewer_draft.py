@@ -281,7 +281,7 @@ def test_the_camera_the_placement_and_the_lights_follow_the_view_as_in_the_kerne
 def test_a_shader_the_browser_refuses_is_said_in_the_tooltip(browser, tmp_path):
     import json
 
-    from toonmesh._viewer_draft import page as draft_page
+    from toonmesh.viewer._draft import page as draft_page
 
     V, F = bunny()
     v = tm.Viewer(V, F, width=64, height=64)

@@ -2,7 +2,7 @@
 
 While the pointer moves, the browser draws draft frames itself in WebGL2 with toonmesh's own
 shaders (the core translates them to GLSL ES 3.00 and sends them with the uniform bytes and the
-mesh: ``toonmesh._viewer_draft``); when it stops, the kernel renders the exact frame with
+mesh: ``toonmesh.viewer._draft``); when it stops, the kernel renders the exact frame with
 toonmesh itself (toon bands, mesh-space lines, hatching, shadows) and sends it as a PNG or JPEG.
 Where the browser cannot draw the drafts, the kernel draws them too. The mesh is uploaded to
 the GPU once. The widget needs the ``notebook`` extra (``pip install
@@ -45,8 +45,8 @@ from toonmesh._render import (PlacedMesh, Renderer, _core_items, draw, draw_view
                               scene_items, shared_renderer)
 from toonmesh._results import RenderResult
 from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
-from toonmesh._viewer_layout import KEYWORDS as LAYOUT, Layout, checked
-from toonmesh._viewer_uploads import SharedUpload, shared_upload
+from toonmesh.viewer._layout import KEYWORDS as LAYOUT, Layout, checked
+from toonmesh.viewer._uploads import SharedUpload, shared_upload
 from toonmesh._video import DEFAULT_FPS, DEFAULT_SECONDS, check_fps, check_video_size, video_kind, video_writer
 
 if TYPE_CHECKING:
@@ -71,7 +71,7 @@ _POLE_MARGIN = math.radians(1.0)
 # view): the core's defaults, should the view be switched to that projection.
 _FOV_Y = float(default(Camera, "look_at", "fov_y"))
 _HEIGHT = float(default(Camera, "orthographic", "height"))
-# The moves as the browser's draft renderer makes them (_draft.js), from the constants above.
+# The moves as the browser's draft renderer makes them (moves.js), from the constants above.
 _MOVES = {"orbit_per_height": _ORBIT_PER_HEIGHT, "wheel_zoom": _WHEEL_ZOOM, "pole_margin": _POLE_MARGIN,
           "max_zoom": _MAX_ZOOM}
 #: The sides :meth:`Viewer.view_from` (and the toolbar's axis buttons) look from.
@@ -342,7 +342,7 @@ class Viewer:
         self._home = copy.deepcopy(self._view)
         self._show(draft=False)
         if controls and self._widget is not None:  # without the notebook extra: the still frame
-            from toonmesh._viewer_controls import ControlPanel
+            from toonmesh.viewer._controls import ControlPanel
 
             self._controls = ControlPanel(self)
             self._front.append(self._controls)
@@ -670,7 +670,7 @@ class Viewer:
     # -- drafts drawn in the browser ----------------------------------------------------------
 
     def _camera_state(self) -> Dict[str, Any]:
-        """The current view as the browser's draft renderer moves it (``_draft.js``)."""
+        """The current view as the browser's draft renderer moves it (``moves.js``)."""
         with self._state_lock:
             v = self._view
             return {"eye": v.eye.tolist(), "target": v.target.tolist(), "up": v.up.tolist(),
@@ -678,7 +678,7 @@ class Viewer:
 
     def _draft(self) -> Tuple[str, bytes]:
         """The core's draft of the scene with the viewer's settings from the current view: its
-        JSON and its bytes (see ``toonmesh._viewer_draft``)."""
+        JSON and its bytes (see ``toonmesh.viewer._draft``)."""
         with self._render_lock:
             self._check_open()
             with self._state_lock:
@@ -726,7 +726,7 @@ class Viewer:
         target = os.fspath(path) if isinstance(path, (str, os.PathLike)) else None
         if not isinstance(target, str):
             raise TypeError(f"path: expected a str or os.PathLike, got {type(path).__name__}")
-        from toonmesh._viewer_draft import page
+        from toonmesh.viewer._draft import page
 
         spec, blob = self._draft()
         text = page(spec, blob, self._camera_state(), self._moves(), self._layout.view_size(), "toonmesh viewer")
@@ -847,7 +847,7 @@ class Viewer:
             factor = float(np.clip(math.exp(-_WHEEL_ZOOM * wheel), 1.0 / _MAX_ZOOM, _MAX_ZOOM))
             self._move("zoom", factor, 0.0)
             # toward the cursor (x, y: its offset from the view's centre, pixels): the point under
-            # it at the target's depth stays under it (draftZoom in _draft.js moves the same way)
+            # it at the target's depth stays under it (draftZoom in moves.js moves the same way)
             x, y = (_pixels(k, float(step.get(k, 0))) for k in ("x", "y"))
             if x or y:
                 self._move("pan", -x * (factor - 1.0), -y * (factor - 1.0))
@@ -1068,7 +1068,7 @@ def _spellings(value: Any) -> List[str]:
 def _make_widget(viewer: Viewer) -> Any:
     """The anywidget front end, or None where anywidget is not installed."""
     try:
-        from toonmesh._viewer_widget import ViewerWidget
+        from toonmesh.viewer._widget import ViewerWidget
     except ImportError:
         return None
     widget = ViewerWidget()

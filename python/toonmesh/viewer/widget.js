@@ -1,19 +1,3 @@
-"""The browser side of :class:`toonmesh.Viewer`: an anywidget that draws drafts while the pointer
-moves (WebGL2, the core's draft: ``toonmesh._viewer_draft``), shows the frames the kernel sends,
-sends pointer events and toolbar clicks back, and paces them to the kernel's answers. Imported
-only where anywidget is installed."""
-
-from __future__ import annotations
-
-import weakref
-from typing import Any, Callable, Dict, Optional, Union
-
-import anywidget
-import traitlets
-
-from toonmesh._viewer_draft import draft_js
-
-_ESM = r"""
 // Shows the kernel's frames in an <img> under a toolbar; sends drags, wheel turns, double-clicks
 // and toolbar clicks as numbered views. Flow control: one view is in flight at a time; the
 // moves made meanwhile are merged into the next one, sent when the kernel answers (a frame or an
@@ -22,7 +6,7 @@ _ESM = r"""
 // released. The root element's data-frames-shown counts the frames shown, data-exact is "1"
 // while a full-size frame is shown ("0" for a draft), data-busy "1" while a full-size frame is
 // on its way, data-dropped counts stale frames dropped, data-views-sent the views sent.
-// While a WebGL2 draft renderer runs (_draft.js: the core's shaders in GLSL ES), drags are drawn
+// While a WebGL2 draft renderer runs (draft.js: the core's shaders in GLSL ES), drags are drawn
 // here, one draft per animation frame, and the moves go to the kernel only with the exact frame
 // asked for when the pointer stops (data-draft "webgl"); otherwise (no WebGL2, a program that
 // fails) the kernel draws the drafts as before (data-draft "kernel"), and the tooltip says why.
@@ -393,81 +377,3 @@ function render({ model, el }) {
 }
 
 export default { render };
-"""
-
-
-class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
-    """The widget a :class:`toonmesh.Viewer` displays: its last frame (PNG or JPEG bytes), the
-    frame's size on screen, its number, the number of the browser's view it was made for, whether
-    it is the full-size frame, and a count of the answers sent (frames and errors)."""
-
-    _esm = draft_js() + _ESM
-    _frame = traitlets.Bytes(b"").tag(sync=True)
-    _format = traitlets.Unicode("png").tag(sync=True)
-    _frame_id = traitlets.Int(0).tag(sync=True)
-    _view_id = traitlets.Int(0).tag(sync=True)
-    _exact = traitlets.Bool(True).tag(sync=True)
-    _size = traitlets.List([512, 512]).tag(sync=True)
-    _layout = traitlets.Dict({"fit": False, "follow_screen": False, "ratio": 1.0}).tag(sync=True)
-    _error = traitlets.Unicode("").tag(sync=True)
-    _answers = traitlets.Int(0).tag(sync=True)
-    _camera = traitlets.Dict({}).tag(sync=True)
-    _draft_spec = traitlets.Unicode("").tag(sync=True)
-    _draft_data = traitlets.Bytes(b"").tag(sync=True)
-    _moves = traitlets.Dict({}).tag(sync=True)
-
-    def attach(self, on_event: "Union[weakref.WeakMethod[Callable[[Dict[str, Any]], None]], Callable[[Dict[str, Any]], None]]") -> None:
-        """Sends the front end's messages (dicts, see ``Viewer._on_event``) to ``on_event``: a
-        callable, or a ``weakref.WeakMethod`` (the widget then does not keep its viewer alive;
-        messages after the viewer is gone are dropped)."""
-        def handle(_widget: Any, content: Dict[str, Any], _buffers: Any) -> None:
-            target: Optional[Callable[[Dict[str, Any]], None]] = on_event() if isinstance(on_event, weakref.WeakMethod) else on_event
-            if target is not None:
-                target(content)
-
-        self.on_msg(handle)
-
-    def show_frame(self, data: bytes, image_format: str, frame_id: int, width: int, height: int,
-                   view_id: int = 0, exact: bool = True, camera: Optional[Dict[str, Any]] = None,
-                   layout: Optional[Dict[str, Any]] = None) -> None:
-        """Sends a frame: encoded bytes shown at ``width`` x ``height`` CSS pixels, made for the
-        browser's view ``view_id`` (the browser drops it if it shows a later view's frame);
-        ``exact``: the full-size frame (False: a draft drawn while the pointer moves);
-        ``camera``: the view it shows, as the browser's draft renderer moves it; ``layout``:
-        whether the browser reports the cell's width (``fit``) and the screen's pixel ratio
-        (``follow_screen``), and the ratio the frames are rendered at (``ratio``)."""
-        with self.hold_sync():
-            if camera is not None:
-                self._camera = camera
-            if layout is not None:
-                self._layout = layout
-            self._frame = data
-            self._format = image_format
-            self._frame_id = frame_id
-            self._view_id = view_id
-            self._exact = bool(exact)
-            self._size = [width, height]
-            self._error = ""
-            self._answers += 1
-
-    def show_draft(self, spec: str, data: bytes, moves: Dict[str, float]) -> None:
-        """Sends the core's draft (its JSON and bytes; ``toonmesh._viewer_draft``) and the
-        constants of the viewer's moves, for the browser to draw drafts itself."""
-        with self.hold_sync():
-            self._draft_data = data
-            self._moves = moves
-            self._draft_spec = spec
-
-    def show_error(self, message: str, view_id: int = 0) -> None:
-        """Shows a render's error over the frame, answering the browser's view ``view_id``."""
-        with self.hold_sync():
-            self._error = message
-            self._view_id = max(self._view_id, view_id)
-            self._answers += 1
-
-    def close(self) -> None:
-        """Closes the widget (its views leave the notebook) and its layout widget."""
-        layout = self.layout
-        super().close()
-        if layout is not None:
-            layout.close()

@@ -1,19 +1,5 @@
-"""The draft renderer of :class:`toonmesh.Viewer`: what the browser needs to draw a view itself in
-WebGL2 while the pointer moves (the core's draft: GLSL ES 3.00 translated from toonmesh's own
-WGSL, the uniform bytes and their layout, the meshes as uploaded; ``Renderer._draft``), the
-script that draws it (``_draft.js``: WebGL calls and camera plumbing only), and a standalone page
-that orbits a scene with it (:meth:`toonmesh.Viewer.to_html`)."""
-
-from __future__ import annotations
-
-import base64
-import html
-import json
-from importlib import resources
-from typing import Any, Dict, Tuple
-
-#: The page's own controller: orbit, pan and zoom with the viewer's moves, one draft a frame.
-_PAGE_JS = r"""
+// The standalone page's own controller (Viewer.to_html): orbit, pan and zoom with the viewer's
+// moves, one draft a frame.
 const data = JSON.parse(document.getElementById("toonmesh-data").textContent);
 const blob = Uint8Array.from(atob(document.getElementById("toonmesh-blob").textContent), (c) => c.charCodeAt(0)).buffer;
 const root = document.querySelector(".toonmesh-viewer");
@@ -60,31 +46,3 @@ canvas.addEventListener("contextmenu", (e) => e.preventDefault());
 window.toonmeshDraft = { draw: (c) => { if (c) cam = draftCamera(c); moving = false; frame(); },
                          pixels: () => draft && draft.pixels(), camera: () => draftCamera(cam), renderer: draft };
 frame();
-"""
-
-
-def draft_js() -> str:
-    """The draft renderer's script (``_draft.js``)."""
-    return resources.files("toonmesh").joinpath("_draft.js").read_text(encoding="utf-8")
-
-
-def page(spec: str, blob: bytes, camera: Dict[str, Any], moves: Dict[str, float], size: Tuple[int, int],
-         title: str) -> str:
-    """A standalone HTML page that orbits the draft ``spec`` (the core's JSON) with its bytes
-    ``blob`` from ``camera`` (see :func:`camera_state`): everything inlined, nothing fetched."""
-    data = json.dumps({"spec": spec, "camera": camera, "moves": moves, "size": list(size)})
-    # JSON inside <script>: "</" would end the element
-    data = data.replace("</", "<\\/")
-    script = (draft_js() + _PAGE_JS).replace("</script", "<\\/script")
-    return (
-        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">"
-        f"<title>{html.escape(title)}</title>"
-        "<style>body { margin: 16px; font: 13px sans-serif } canvas { display: block; cursor: grab;"
-        " touch-action: none } .toonmesh-viewer { display: inline-block; border: 1px solid #c8c8c8 }</style>"
-        "</head><body>\n"
-        "<div class=\"toonmesh-viewer\" data-frames-shown=\"0\" data-exact=\"0\"><canvas></canvas></div>\n"
-        f"<script type=\"application/json\" id=\"toonmesh-data\">{data}</script>\n"
-        f"<script type=\"text/plain\" id=\"toonmesh-blob\">{base64.b64encode(blob).decode('ascii')}</script>\n"
-        f"<script type=\"module\">\n{script}\n</script>\n"
-        "</body></html>\n"
-    )

@@ -16,10 +16,10 @@ from typing import TYPE_CHECKING, Any, Callable, List, Tuple
 import ipywidgets as w  # type: ignore[import-untyped]
 
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
-from toonmesh._field_controls import Control, Panel, Source, controls_for
+from toonmesh.viewer._field_controls import Control, Panel, Source, controls_for
 
 if TYPE_CHECKING:
-    from toonmesh.viewer import Viewer
+    from toonmesh.viewer._viewer import Viewer
 
 # The render options that have a section of their own, and the view's size and pixel ratio,
 # which follow the cell and the screen or are set from Python (``v.width = 640``): a slider
