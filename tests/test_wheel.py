@@ -64,3 +64,16 @@ def test_the_wheel_installs_and_renders_without_rust(tmp_path):
     assert where.startswith(str(venv)), where  # the wheel's toonmesh, not the repository's
     assert "shade" in run.stdout, run.stdout  # print(r.passes)
     assert (tmp_path / "bunny.png").stat().st_size > 10_000
+
+
+def test_the_wheel_holds_the_viewers_browser_files():
+    """The viewer's .js, .css and .html files travel in the wheel beside its modules (the widget
+    and the standalone page read them at run time)."""
+    from toonmesh.viewer import _assets
+
+    folder = Path(_assets.__file__).parent
+    files = {p.name for p in folder.iterdir() if p.suffix in (".js", ".css", ".html")}
+    assert set(_assets.WIDGET) | set(_assets.PAGE) <= files, files  # every file the lists name exists
+    with zipfile.ZipFile(_wheel()) as z:
+        shipped = {Path(n).name for n in z.namelist() if n.startswith("toonmesh/viewer/")}
+    assert files <= shipped, sorted(files - shipped)
