@@ -10,6 +10,8 @@ from typing import Sequence
 
 #: The widget's ESM (``widget.js`` ends in its ``export default``).
 WIDGET = ("moves.js", "draft.js", "widget.js")
+#: The widget's styles (anywidget's ``_css``).
+WIDGET_CSS = "widget.css"
 #: The standalone page's module script (:meth:`toonmesh.Viewer.to_html`).
 PAGE = ("moves.js", "draft.js", "page.js")
 

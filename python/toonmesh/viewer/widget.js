@@ -24,44 +24,33 @@ function render({ model, el }) {
   root.setAttribute("data-lm-suppress-shortcuts", "");  // keys pressed here do not run notebook commands
   Object.assign(root.dataset, { framesShown: "0", exact: "0", busy: "0", dropped: "0", viewsSent: "0", draft: "kernel",
                                 spinning: "0" });
-  root.style.cssText = "position: relative; display: inline-block; line-height: 0; outline: none;"
-    + " background: #fff; border: " + BORDER + "; box-shadow: none";
+  root.style.border = BORDER;  // the rest of the look: widget.css
+  root.style.boxShadow = "none";
   const bar = document.createElement("div");
   bar.className = "toonmesh-toolbar";
-  bar.style.cssText = "display: flex; flex-wrap: wrap; gap: 3px; align-items: center; padding: 2px 3px; line-height: 1.3;"
-    + " font: 12px sans-serif; background: #f5f5f5; border-bottom: 1px solid #e0e0e0";
   function button(cls, label, title, onclick) {
     const b = document.createElement("button");
     b.type = "button";
     b.className = "toonmesh-button " + cls;
     b.textContent = label;
     b.title = title;
-    b.style.cssText = "font: 12px sans-serif; padding: 0 6px; cursor: pointer";
     b.addEventListener("click", (e) => { e.preventDefault(); onclick(b); });
     bar.appendChild(b);
     return b;
   }
   const stage = document.createElement("div");
-  stage.style.cssText = "position: relative";
+  stage.className = "toonmesh-stage";
   const img = document.createElement("img");
   img.draggable = false;
   img.alt = "toonmesh viewer";
-  img.style.cssText = "cursor: grab; touch-action: none; user-select: none; display: block";
+  img.className = "toonmesh-frame";
   const note = document.createElement("div");
   note.className = "toonmesh-note";
-  note.style.cssText = "position: absolute; left: 4px; bottom: 4px; font: 12px sans-serif; line-height: 1.2; color: #a00";
   const busy = document.createElement("div");
   busy.className = "toonmesh-busy";
   busy.title = "the full-size frame is on its way";
-  busy.style.cssText = "position: absolute; right: 6px; top: 6px; width: 10px; height: 10px; border-radius: 50%;"
-    + " border: 2px solid #1a73e8; border-right-color: transparent; visibility: hidden;"
-    + " animation: toonmesh-spin 0.8s linear infinite";
-  const style = document.createElement("style");
-  style.textContent = "@keyframes toonmesh-spin { to { transform: rotate(360deg) } }"
-    + " .toonmesh-viewer:fullscreen { display: flex; flex-direction: column; align-items: center; justify-content: center }";
   const canvas = document.createElement("canvas");
   canvas.className = "toonmesh-draft";
-  canvas.style.cssText = "position: absolute; left: 0; top: 0; visibility: hidden; pointer-events: none";
   stage.append(img, canvas, note, busy);
 
   // -- drafts drawn here ----------------------------------------------------------------------
@@ -263,7 +252,6 @@ function render({ model, el }) {
   const stats = document.createElement("span");
   stats.className = "toonmesh-stats";
   stats.title = "frames shown in the last second \u00b7 the last view's time to the kernel's answer";
-  stats.style.cssText = "margin-left: auto; padding-left: 8px; color: #555; white-space: nowrap";
   bar.appendChild(stats);
   function screenshot() {
     const f = exactFrame;
@@ -286,7 +274,7 @@ function render({ model, el }) {
       canvas.toBlob(save, "image/png");
     });
   }
-  root.append(style, bar, stage);
+  root.append(bar, stage);
   el.appendChild(root);
 
   // -- size -----------------------------------------------------------------------------------
