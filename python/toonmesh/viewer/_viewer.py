@@ -778,11 +778,11 @@ class Viewer:
         """Sends the draft to the browser once, and again when a setting changed."""
         if not self._browser_drafts:
             return
-        # the settings, and the projection the draft's footprint is for (not the size: the
-        # browser draws the draft at any size and pixel ratio)
+        # the settings, the projection the draft's footprint is for and the parts shown (not the
+        # size: the browser draws the draft at any size and pixel ratio)
         with self._state_lock:
             settings = self._options.replace(camera=None, width=1, height=1, pixel_ratio=1.0)
-            key = repr((settings, self._view.orthographic))
+            key = repr((settings, self._view.orthographic, self._shown))
         if key == getattr(self, "_draft_key", None):
             return
         try:
