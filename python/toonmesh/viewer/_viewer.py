@@ -181,7 +181,8 @@ def _view_of(result: RenderResult, camera: Camera, center: np.ndarray) -> _View:
     forward = -rotation[2]
     target = eye + forward * max(float(np.dot(center - eye, forward)), 1e-6)
     orthographic = camera.projection == "orthographic"
-    height = camera.height if camera.height is not None else 2.0 / float(result.projection[1, 1])
+    # a fitted orthographic view's height is the fit's (the camera holds only the default)
+    height = 2.0 / float(result.projection[1, 1]) if orthographic else _HEIGHT
     fov_y = camera.fov_y if camera.fov_y is not None else _FOV_Y
     up = camera.up if camera.up is not None else np.eye(3)["xyz".index(result.up)]  # the scene's up axis
     return _View(eye, target, up, orthographic, float(fov_y), float(height))

@@ -51,7 +51,11 @@ function render({ model, el }) {
   busy.title = "the full-size frame is on its way";
   const canvas = document.createElement("canvas");
   canvas.className = "toonmesh-draft";
-  stage.append(img, canvas, note, busy);
+  // the orientation triad, turned with each draft and frame; a label views from its axis
+  const triad = createTriad((axis) => add({ event: "axis", axis }, true));
+  const partsPanel = document.createElement("div");
+  partsPanel.className = "toonmesh-parts";
+  stage.append(img, canvas, note, busy, triad.element, partsPanel);
 
   // -- drafts drawn here ----------------------------------------------------------------------
   let draft = null, cam = null, drawWanted = false, lastEvent = 0, pacer = null;
@@ -104,6 +108,7 @@ function render({ model, el }) {
   function moveDraft(step) {
     if (!cam) cam = draftCamera(model.get("_camera"));
     draftStep(cam, step, model.get("_size")[1], model.get("_moves"));
+    triad.update(cam);
     if (!drawWanted) { drawWanted = true; requestAnimationFrame(drawDraft); }
   }
   // the delays of the last 200 drafts (ms), read by the benchmark and tests
@@ -198,6 +203,7 @@ function render({ model, el }) {
     for (const old of metas.keys()) { URL.revokeObjectURL(old); metas.delete(old); }  // superseded before shown
     root.dataset.frame = String(meta.id);
     root.dataset.exact = meta.exact ? "1" : "0";
+    if (meta.camera && meta.camera.eye) triad.update(meta.camera);  // the camera of the frame shown
     canvas.style.visibility = "hidden";
     img.style.opacity = "1";
     if (meta.exact) {
@@ -226,6 +232,44 @@ function render({ model, el }) {
     const b = button("toonmesh-axis", axis, "view from " + axis, () => add({ event: "axis", axis }, true));
     b.dataset.axis = axis;
   }
+  // perspective / orthographic: the kernel switches the camera keeping the framing
+  const projection = button("toonmesh-projection", "", "", () => {
+    const ortho = !!model.get("_camera").orthographic;
+    add({ event: "projection", projection: ortho ? "perspective" : "orthographic" }, true);
+  });
+  function showProjection() {
+    const ortho = !!model.get("_camera").orthographic;
+    projection.textContent = ortho ? "ortho" : "persp";
+    projection.title = (ortho ? "orthographic" : "perspective") + " projection (click for "
+      + (ortho ? "perspective" : "orthographic") + ")";
+    projection.dataset.projection = ortho ? "orthographic" : "perspective";
+  }
+  // the parts list (a scene of several meshes): a checkbox a part shows or hides it
+  const partsButton = button("toonmesh-parts-button", "parts \u25be", "show or hide the scene's parts", () => {
+    partsPanel.classList.toggle("toonmesh-open");
+    partsButton.classList.toggle("toonmesh-on", partsPanel.classList.contains("toonmesh-open"));
+  });
+  function showParts() {
+    const { names, visible } = model.get("_parts");
+    partsButton.style.display = names.length > 1 ? "" : "none";
+    if (partsPanel.childElementCount !== names.length) {
+      partsPanel.replaceChildren(...names.map((name, part) => {
+        const label = document.createElement("label");
+        const box = document.createElement("input");
+        box.type = "checkbox";
+        box.dataset.part = String(part);
+        box.addEventListener("change", () => add({ event: "part", part, visible: box.checked }, true));
+        label.append(box, " " + name);
+        return label;
+      }));
+    }
+    partsPanel.querySelectorAll("input").forEach((box, i) => { box.checked = !!visible[i]; });
+  }
+  model.on("change:_camera", showProjection);
+  model.on("change:_parts", showParts);
+  showProjection();
+  showParts();
+  if (model.get("_camera").eye) triad.update(model.get("_camera"));
   button("toonmesh-screenshot", "\u2913 PNG", "download the current full-size frame as PNG", screenshot);
   const full = button("toonmesh-fullscreen", "full", "full screen (again to leave)", () => {
     if (document.fullscreenElement === root) document.exitFullscreen();
