@@ -440,3 +440,18 @@ def test_the_parts_of_a_scene_are_its_geometries_and_code_reads_them_as_tm_rende
     exec(code, scope)
     np.testing.assert_array_equal(scope["r"].color, v.frame)
     v.close()
+
+
+@pytest.mark.parametrize("orthographic", [False, True])
+def test_a_fitted_camera_shows_what_tm_render_shows_and_so_do_the_axis_views(mesh, orthographic):
+    need("anywidget")
+    V, F = mesh
+    fit = tm.Camera.fit(orthographic=orthographic)
+    v = tm.Viewer(V, F, camera=fit, width=120, height=90)
+    # the fit's own height for an orthographic view (not the camera's default, a tenth of the size)
+    np.testing.assert_array_equal(v.frame, tm.render(V, F, camera=fit, width=120, height=90).color)
+    v.view_from("+z")
+    view = tm.render(V, F, camera=tm.Camera.fit((0, 0, 1), orthographic=orthographic), width=120, height=90).color
+    covered = lambda frame: float((frame[..., :3].min(-1) < 200).mean())  # noqa: E731
+    assert covered(v.frame) == pytest.approx(covered(view), abs=0.01), (covered(v.frame), covered(view))
+    v.close()
