@@ -267,11 +267,14 @@ class Viewer:
 
     In the browser: drag to orbit, wheel to zoom (once the view has focus: click it; otherwise
     the wheel scrolls the notebook), shift-drag or right-drag to pan, double-click to frame the
-    scene again; the toolbar has home (the first view), views from each axis, a PNG download of
-    the current full-size frame, full screen, and the frame rate and latency. From Python:
-    :meth:`orbit`, :meth:`zoom`, :meth:`pan`, :meth:`home`, :meth:`view_from` (each renders the
-    full-size frame before it returns), ``camera`` (read or set), and every render setting as an
-    attribute that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
+    scene again; the toolbar has home (the first view), views from each axis, the projection
+    (perspective or orthographic), the parts list (a scene of several meshes), a PNG download of
+    the current full-size frame, full screen, and the frame rate and latency; an orientation
+    triad in the view's corner turns with it (click a label to view from that axis). From
+    Python: :meth:`orbit`, :meth:`zoom`, :meth:`pan`, :meth:`home`, :meth:`view_from` (each
+    renders the full-size frame before it returns), ``camera`` (read or set), ``projection``,
+    ``parts`` and ``visible`` (show or hide parts), and every render setting as an attribute
+    that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
 
     Viewer options: ``controls=True`` shows ipywidgets controls beside the frame, one per field
     of the material, the first light, the outlines (and each line kind's style), the camera's
