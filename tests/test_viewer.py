@@ -455,3 +455,25 @@ def test_a_fitted_camera_shows_what_tm_render_shows_and_so_do_the_axis_views(mes
     covered = lambda frame: float((frame[..., :3].min(-1) < 200).mean())  # noqa: E731
     assert covered(v.frame) == pytest.approx(covered(view), abs=0.01), (covered(v.frame), covered(view))
     v.close()
+
+
+def test_the_parts_of_a_file_are_its_geometries_by_name_and_code_reads_the_file(mesh, tmp_path):
+    need("anywidget")
+    trimesh = need("trimesh")
+    V, F = mesh
+    scene = trimesh.Scene()
+    scene.add_geometry(trimesh.Trimesh(V, F, process=False), geom_name="ears")
+    scene.add_geometry(trimesh.Trimesh(V + [0.2, 0.0, 0.0], F, process=False), geom_name="tail")
+    path = str(tmp_path / "two.glb")
+    scene.export(path)
+    v = tm.Viewer(path, width=96, height=64)
+    assert sorted(v.parts) == ["ears", "tail"] and list(v.parts) == [m.name for m in tm.load(path)]
+    v.visible = {"tail": False}
+    code = v.code()
+    assert f"tm.load({path!r})" in code
+    scope = {}
+    exec(code, scope)
+    np.testing.assert_array_equal(scope["r"].color, v.frame)
+    kept = [m for m in tm.load(path) if m.name == "ears"]
+    np.testing.assert_array_equal(tm.render(kept, width=96, height=64, camera=v.camera).color, v.frame)
+    v.close()
