@@ -34,7 +34,7 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
     _draft_data = traitlets.Bytes(b"").tag(sync=True)
     _moves = traitlets.Dict({}).tag(sync=True)
     # the scene's parts for the toolbar's list: {"names": [...], "visible": [True or False, ...]}
-    _parts = traitlets.Dict({"names": [], "visible": []}).tag(sync=True)
+    _parts = traitlets.Dict({"names": list[str](), "visible": list[bool]()}).tag(sync=True)
 
     def attach(self, on_event: "Union[weakref.WeakMethod[Callable[[Dict[str, Any]], None]], Callable[[Dict[str, Any]], None]]") -> None:
         """Sends the front end's messages (dicts, see ``Viewer._on_event``) to ``on_event``: a
