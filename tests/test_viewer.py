@@ -340,3 +340,140 @@ def test_a_given_width_and_ratio_stay_and_none_follows_again(mesh):
     _report(v, 2, width="wide")
     assert "width" in v.widget._error and v.render_count == count and v.frame.shape == (75, 60, 4)
     v.close()
+
+
+def test_the_projection_switches_keeping_the_framing_and_its_frames_are_tm_renders(mesh):
+    need("anywidget")
+    V, F = mesh
+    v = tm.Viewer(V, F, outlines="mesh", width=SIZE, height=SIZE)
+    v.orbit(30, -10)
+    perspective = v.camera
+    before = v.frame.copy()
+    assert v.projection == "perspective"
+    v.projection = "orthographic"
+    camera = v.camera
+    assert camera.projection == "orthographic" and v.projection == "orthographic"
+    # the target's plane shows the height the perspective view saw there
+    assert camera.height == pytest.approx(2 * _distance(v) * np.tan(np.radians(perspective.fov_y) / 2), rel=1e-12)
+    np.testing.assert_array_equal(camera.eye, perspective.eye)
+    np.testing.assert_array_equal(v.frame, tm.render(V, F, outlines="mesh", width=SIZE, height=SIZE, camera=camera).color)
+    assert (np.abs(v.frame.astype(int) - before).max(axis=2) > 24).mean() > 0.02  # another picture
+    scope = {"V": V, "F": F}
+    exec(v.code(), scope)
+    assert "tm.Camera.orthographic(" in v.code()
+    np.testing.assert_array_equal(scope["r"].color, v.frame)
+    v.zoom(2)  # an orthographic zoom halves the height; back, the eye comes as near as that frames
+    v._on_event({"event": "projection", "projection": "perspective"})  # the toolbar's toggle
+    assert v._wait()
+    assert v.projection == "perspective" and v.camera.fov_y == perspective.fov_y
+    assert _distance(v) == pytest.approx(float(np.linalg.norm(np.subtract(perspective.eye, perspective.target))) / 2)
+    np.testing.assert_array_equal(v.frame, tm.render(V, F, outlines="mesh", width=SIZE, height=SIZE, camera=v.camera).color)
+    v.projection = "perspective"  # no change
+    with pytest.raises(ValueError, match="projection: expected 'perspective' or 'orthographic', got 'iso'"):
+        v.projection = "iso"
+    with pytest.raises(TypeError, match="projection: .* got bool"):
+        v.projection = True
+    assert v.projection == "perspective"
+    v.close()
+
+
+def test_parts_are_shown_and_hidden_and_the_frames_are_tm_renders_of_the_parts_shown(mesh):
+    need("anywidget")
+    V, F = mesh
+    shifted = np.eye(4)
+    shifted[0, 3] = 0.2
+    left = tm.Mesh(V, F, name="left", material=tm.Material.bands("#d05050"))
+    right = tm.Mesh(V, F, transform=shifted, material=tm.Material.bands("#50a050"))
+    meshes = [left, right, left]
+    v = tm.Viewer(meshes, width=96, height=64)
+    assert v.parts == ("left", "part 2", "left (2)")
+    assert v.widget._parts == {"names": list(v.parts), "visible": [True, True, True]}
+    v.visible = {"part 2": False, 2: False}
+    assert v.visible == {"left": True, "part 2": False, "left (2)": False}
+    assert v.widget._parts["visible"] == [True, False, False]
+    np.testing.assert_array_equal(v.frame, tm.render([left], width=96, height=64, camera=v.camera).color)
+    code = v.code()
+    assert "[meshes[i] for i in (0,)]" in code
+    scope = {"meshes": meshes}
+    exec(code, scope)
+    np.testing.assert_array_equal(scope["r"].color, v.frame)
+    np.testing.assert_array_equal(v.snapshot().color, v.frame)
+    # the toolbar's list: one part's box
+    v._on_event({"event": "view", "id": 1, "steps": [{"event": "part", "part": 1, "visible": True}], "exact": True})
+    assert v._wait()
+    assert v.visible == {"left": True, "part 2": True, "left (2)": False}
+    np.testing.assert_array_equal(v.frame, tm.render([left, right], width=96, height=64, camera=v.camera).color)
+    # the draft the browser draws from leaves the hidden parts out too: the core's draft of the parts shown
+    spec = __import__("json").loads(v.widget._draft_spec)
+    assert len(spec["meshes"]) == 2
+    v.visible = {0: False, 1: False}  # nothing shown: the background, and code() says so
+    assert (v.frame == v.frame[0, 0]).all()
+    assert "tm.render(\n    None,\n" in v.code()
+    with pytest.raises(TypeError, match="visible: expected a dict"):
+        v.visible = ["left"]
+    with pytest.raises(ValueError, match="visible: no part named 'wheel'"):
+        v.visible = {"wheel": False}
+    with pytest.raises(ValueError, match="visible: part 3 is out of range"):
+        v.visible = {3: False}
+    with pytest.raises(TypeError, match=r"visible\['left'\]: expected True or False, got int"):
+        v.visible = {"left": 1}
+    v.close()
+
+
+def test_the_parts_of_a_scene_are_its_geometries_and_code_reads_them_as_tm_render_does(mesh):
+    need("anywidget")
+    trimesh = need("trimesh")
+    V, F = mesh
+    scene = trimesh.Scene()
+    for i, name in enumerate(("body", "wheel")):
+        shifted = np.eye(4)
+        shifted[0, 3] = 0.2 * i
+        scene.add_geometry(trimesh.Trimesh(V, F, process=False), geom_name=name, transform=shifted)
+    v = tm.Viewer(scene, width=96, height=64)
+    assert v.parts == ("body", "wheel")
+    whole = v.frame.copy()
+    v.visible = {"wheel": False}
+    assert (v.frame != whole).any()
+    code = v.code()
+    assert "[m for i, m in enumerate(tm._load.scene_meshes(scene)) if i in (0,)]" in code
+    scope = {"scene": scene}
+    exec(code, scope)
+    np.testing.assert_array_equal(scope["r"].color, v.frame)
+    v.close()
+
+
+@pytest.mark.parametrize("orthographic", [False, True])
+def test_a_fitted_camera_shows_what_tm_render_shows_and_so_do_the_axis_views(mesh, orthographic):
+    need("anywidget")
+    V, F = mesh
+    fit = tm.Camera.fit(orthographic=orthographic)
+    v = tm.Viewer(V, F, camera=fit, width=120, height=90)
+    # the fit's own height for an orthographic view (not the camera's default, a tenth of the size)
+    np.testing.assert_array_equal(v.frame, tm.render(V, F, camera=fit, width=120, height=90).color)
+    v.view_from("+z")
+    view = tm.render(V, F, camera=tm.Camera.fit((0, 0, 1), orthographic=orthographic), width=120, height=90).color
+    covered = lambda frame: float((frame[..., :3].min(-1) < 200).mean())  # noqa: E731
+    assert covered(v.frame) == pytest.approx(covered(view), abs=0.01), (covered(v.frame), covered(view))
+    v.close()
+
+
+def test_the_parts_of_a_file_are_its_geometries_by_name_and_code_reads_the_file(mesh, tmp_path):
+    need("anywidget")
+    trimesh = need("trimesh")
+    V, F = mesh
+    scene = trimesh.Scene()
+    scene.add_geometry(trimesh.Trimesh(V, F, process=False), geom_name="ears")
+    scene.add_geometry(trimesh.Trimesh(V + [0.2, 0.0, 0.0], F, process=False), geom_name="tail")
+    path = str(tmp_path / "two.glb")
+    scene.export(path)
+    v = tm.Viewer(path, width=96, height=64)
+    assert sorted(v.parts) == ["ears", "tail"] and list(v.parts) == [m.name for m in tm.load(path)]
+    v.visible = {"tail": False}
+    code = v.code()
+    assert f"tm.load({path!r})" in code
+    scope = {}
+    exec(code, scope)
+    np.testing.assert_array_equal(scope["r"].color, v.frame)
+    kept = [m for m in tm.load(path) if m.name == "ears"]
+    np.testing.assert_array_equal(tm.render(kept, width=96, height=64, camera=v.camera).color, v.frame)
+    v.close()

@@ -17,6 +17,10 @@ compares it with the kernel's frame, goes full screen and back, turns the view w
 auto-rotate button and stops it (the exact frame shows the turned view), sends a frame made for an old
 view and checks that it is dropped, and closes the viewer: the view and its controls go, and
 using it raises an error that says it is closed.
+The toolbar's triad turns with the drag (its screenshot changes); the projection toggle shows an
+orthographic frame that differs from the perspective one, and toggled back the perspective one
+again; a triad label views from its axis. A second viewer, of two bunnies, lists its parts:
+unticking one removes its pixels from the frame (and from the draft drawn here).
 With TOONMESH_SCREENSHOT=1 it also writes the screenshot the viewer's page shows (docs/viewer.png:
 the viewer and its controls after the drag and the wheel turn).
 """
@@ -75,6 +79,12 @@ CELLS = [
     "    v.orbit(5, 0)\n"
     "except Exception as e:\n"
     "    print('error', type(e).__name__, e)",
+    # a scene of two parts: an orange bunny and a blue one beside it
+    "shifted = np.eye(4)\n"
+    "shifted[0, 3] = 0.17\n"
+    "w = tm.Viewer([tm.Mesh(V, F, name='bunny'), tm.Mesh(V, F, name='twin', transform=shifted, material=blue)],\n"
+    "              outlines='mesh', width=480, height=300)\n"
+    "w",
 ]
 
 
@@ -157,6 +167,8 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
                 "screenshot": viewer.locator(".toonmesh-screenshot").count(),
                 "fullscreen": viewer.locator(".toonmesh-fullscreen").count(),
                 "spin": viewer.locator(".toonmesh-spin").count(),
+                "projection": viewer.locator(".toonmesh-projection").get_attribute("data-projection"),
+                "parts": viewer.locator(".toonmesh-parts-button").is_visible(),  # one part: no list
                 "suppress": viewer.get_attribute("data-jp-suppress-context-menu"),
                 "tabindex": viewer.get_attribute("tabindex"),
             }
@@ -183,6 +195,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
 
             first_frame = int(viewer.get_attribute("data-frame"))
             shown = int(viewer.get_attribute("data-frames-shown"))
+            triad_before = _pixels(viewer.locator(".toonmesh-triad").screenshot())
             page.mouse.move(x, y)
             page.mouse.down()
             for i in range(1, DRAG_STEPS + 1):
@@ -196,6 +209,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             last_frame = int(viewer.get_attribute("data-frame"))
             views_sent = int(viewer.get_attribute("data-views-sent"))
             after = _pixels(img.screenshot())
+            triad_after = _pixels(viewer.locator(".toonmesh-triad").screenshot())
             sizes = page.evaluate("window.__sizes")
             draft_mode, title = viewer.get_attribute("data-draft"), viewer.get_attribute("title")
             # the last draft: not blank (its pixels vary), drawn smaller than the view while moving
@@ -241,9 +255,29 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             viewer.locator(".toonmesh-home").click()
             _wait_exact_after(page, shown)
             home = _run_cell(page, cells, 3, "home").split()[1]
+            perspective = _pixels(img.screenshot())
             with page.expect_download() as download:
                 viewer.locator(".toonmesh-screenshot").click()
             download.value.save_as(str(tmp_path / "screenshot.png"))
+
+            # the projection toggle: orthographic, then perspective again; a triad label: the view from +z
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            viewer.locator(".toonmesh-projection").click()
+            _wait_exact_after(page, shown)
+            page.wait_for_timeout(300)
+            orthographic = _pixels(img.screenshot())
+            toggled = viewer.locator(".toonmesh-projection").get_attribute("data-projection")
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            viewer.locator(".toonmesh-projection").click()
+            _wait_exact_after(page, shown)
+            page.wait_for_timeout(300)
+            perspective_again = _pixels(img.screenshot())
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            viewer.locator(".toonmesh-triad-z .toonmesh-triad-label").click()
+            _wait_exact_after(page, shown)
+            page.wait_for_timeout(300)
+            from_z = _pixels(img.screenshot())
+            triad_z = _pixels(viewer.locator(".toonmesh-triad").screenshot())
 
             viewer.locator(".toonmesh-fullscreen").click()
             page.wait_for_function("document.fullscreenElement === document.querySelector('.toonmesh-viewer')",
@@ -276,6 +310,38 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             closed_error = _run_cell(page, cells, 5, "error")
             page.wait_for_function("document.querySelectorAll('.toonmesh-viewer').length === 0", timeout=10_000)
             controls_left = page.locator(".toonmesh-outlines-kind").count()
+
+            # the parts list of a scene of two bunnies: unticking the blue one removes its pixels
+            cells.nth(6).locator(".jp-InputPrompt").click()
+            page.keyboard.press("Shift+Enter")
+            scene = page.locator(".toonmesh-viewer[data-frame]")
+            scene.wait_for(timeout=30_000)
+            page.wait_for_function("document.querySelector('.toonmesh-viewer img').naturalWidth > 0")
+            _wait_exact_after(page, 0)
+            both = _pixels(scene.locator("img").screenshot())
+            scene.locator(".toonmesh-parts-button").click()
+            names = scene.locator(".toonmesh-parts label").all_inner_texts()
+            shown = int(scene.get_attribute("data-frames-shown"))
+            scene.locator(".toonmesh-parts input[data-part='1']").uncheck()
+            _wait_exact_after(page, shown)
+            scene.locator(".toonmesh-parts-button").click()  # the list closed, off the picture
+            page.wait_for_timeout(300)
+            one = _pixels(scene.locator("img").screenshot())
+            # a drag: the draft drawn here leaves the blue bunny out too
+            box = scene.locator("img").bounding_box()
+            sx, sy = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+            shown = int(scene.get_attribute("data-frames-shown"))
+            page.mouse.move(sx, sy)
+            page.mouse.down()
+            for i in range(1, 6):
+                page.mouse.move(sx + 4 * i, sy)
+                page.wait_for_timeout(30)
+            draft_blue = scene.evaluate(
+                "r => { const p = r.toonmeshDraft.pixels(); let n = 0, m = 0;"
+                " for (let i = 0; i < p.data.length; i += 4) { if (p.data[i + 2] > p.data[i] + 60) n++;"
+                " if (p.data[i] > p.data[i + 2] + 60) m++; } return [n, m]; }")
+            page.mouse.up()
+            _wait_exact_after(page, shown)
         except Exception:
             page.screenshot(path=str(tmp_path / "failure.png"))
             raise
@@ -284,7 +350,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
 
     assert first["exact"] == "1" and first["busy"] == "0" and int(first["frames-shown"]) >= 1, first
     assert toolbar == {"home": 1, "axes": ["+x", "-x", "+y", "-y", "+z", "-z"], "screenshot": 1, "fullscreen": 1,
-                       "spin": 1, "suppress": "", "tabindex": "0"}, toolbar
+                       "spin": 1, "projection": "perspective", "parts": False, "suppress": "", "tabindex": "0"}, toolbar
     assert spinning == "1" and stopped == "0", (spinning, stopped)
     assert (np.abs(before_spin - after_spin).max(axis=2) > 24).mean() > 0.02  # it turned
     assert menu_prevented and jupyter_menus == 0, (menu_prevented, jupyter_menus)
@@ -327,3 +393,26 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     assert stale_shown == 0, stale_shown
     assert "ViewerClosedError" in closed_error and "closed" in closed_error.split("ViewerClosedError", 1)[1], closed_error
     assert controls_left == 0
+
+    def moved(a, b):  # the share of pixels that changed (inside: a screenshot's edge rows may catch the toolbar's)
+        return float((np.abs(a - b)[2:-2, 2:-2].max(axis=2) > 24).mean())
+
+    # the triad turned with the drag, and again to the view from +z
+    assert triad_before.shape == triad_after.shape and moved(triad_before, triad_after) > 0.02
+    assert moved(triad_after, triad_z) > 0.02
+    # the orthographic frame is another picture of the same framing; toggled back, the perspective one
+    assert toggled == "orthographic"
+    assert moved(perspective, orthographic) > 0.02, moved(perspective, orthographic)
+    assert moved(perspective, perspective_again) < 0.002, moved(perspective, perspective_again)
+    assert moved(perspective_again, from_z) > 0.02
+
+    def blue(picture):  # the blue bunny's pixels
+        return float((picture[..., 2] > picture[..., 0] + 60).mean())
+
+    def orange(picture):
+        return float((picture[..., 0] > picture[..., 2] + 60).mean())
+
+    assert [n.strip() for n in names] == ["bunny", "twin"], names
+    assert blue(both) > 0.1 and orange(both) > 0.1, (blue(both), orange(both))
+    assert blue(one) < 0.001 and orange(one) > 0.1, (blue(one), orange(one))
+    assert draft_blue[0] == 0 and draft_blue[1] > 1000, draft_blue

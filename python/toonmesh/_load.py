@@ -247,7 +247,8 @@ def under_own_colours(meshes: List[Any], material: Any) -> List[Any]:
 
 def _mesh_of(surface: Surface, transform: Optional[np.ndarray], up: Optional[str] = None) -> Mesh:
     """The one place a :class:`Surface` becomes a :class:`toonmesh.Mesh`."""
-    return Mesh(surface.vertices, surface.faces, transform=transform, normals=surface.normals, up=up, **surface.colors)
+    return Mesh(surface.vertices, surface.faces, transform=transform, normals=surface.normals, up=up,
+                name=surface.name, **surface.colors)
 
 
 def _file_normals(geom: Any, surface: Surface, path: str) -> Optional[np.ndarray]:

@@ -51,6 +51,8 @@ class Mesh:
     that is up for this mesh, ``"x"``, ``"y"`` or ``"z"`` (:func:`toonmesh.load` sets its file
     format's convention); None (default): the mesh names none. A render's fitted camera keeps
     the scene's up axis up: its ``up`` option, else its meshes' (which must agree), else y.
+    ``name``: what the mesh is called (default ``""``; :func:`toonmesh.load` gives each mesh its
+    geometry's name in the file); :class:`toonmesh.Viewer`'s parts list shows it.
 
     ``normals`` says how the surface is shaded between vertices:
 
@@ -103,8 +105,12 @@ class Mesh:
         transform: Optional[Any] = None,
         normals: Normals = None,
         up: Optional[str] = None,
+        name: str = "",
         **colors: "Unpack[MeshColors]",
     ):
+        if not isinstance(name, str):
+            raise TypeError(f"name: expected a str, got {type(name).__name__}")
+        self.name = name
         self.handle: Optional[MeshHandle] = vertices if isinstance(vertices, MeshHandle) else None
         if self.handle is not None:
             if faces is not None:

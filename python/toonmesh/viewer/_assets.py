@@ -9,7 +9,9 @@ from importlib import resources
 from typing import Sequence
 
 #: The widget's ESM (``widget.js`` ends in its ``export default``).
-WIDGET = ("moves.js", "draft.js", "widget.js")
+WIDGET = ("moves.js", "draft.js", "triad.js", "widget.js")
+#: The widget's styles (anywidget's ``_css``).
+WIDGET_CSS = "widget.css"
 #: The standalone page's module script (:meth:`toonmesh.Viewer.to_html`).
 PAGE = ("moves.js", "draft.js", "page.js")
 

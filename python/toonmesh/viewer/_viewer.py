@@ -76,6 +76,8 @@ _MOVES = {"orbit_per_height": _ORBIT_PER_HEIGHT, "wheel_zoom": _WHEEL_ZOOM, "pol
           "max_zoom": _MAX_ZOOM}
 #: The sides :meth:`Viewer.view_from` (and the toolbar's axis buttons) look from.
 AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
+#: The projections :attr:`Viewer.projection` (and the toolbar's toggle) switches between.
+PROJECTIONS = ("perspective", "orthographic")
 
 
 class ViewerClosedError(RuntimeError):
@@ -149,6 +151,21 @@ class _View:
         else:
             self.eye = self.target + (self.eye - self.target) / factor
 
+    def project(self, orthographic: bool) -> None:
+        """Switches the projection keeping the framing: the target's plane shows the same height
+        of the world. An orthographic view takes the height the perspective one saw at the
+        target's distance; back, the eye moves along the view axis to the distance at which the
+        field of view sees that height."""
+        if orthographic == self.orthographic:
+            return
+        half = math.tan(math.radians(self.fov_y) / 2.0)
+        if orthographic:
+            self.height = 2.0 * float(np.linalg.norm(self.target - self.eye)) * half
+        else:
+            forward = _unit(self.target - self.eye)
+            self.eye = self.target - forward * (self.height / (2.0 * half))
+        self.orthographic = orthographic
+
 
 def _rotate(v: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
     """``v`` turned by ``angle`` radians about the unit ``axis`` (Rodrigues)."""
@@ -164,7 +181,8 @@ def _view_of(result: RenderResult, camera: Camera, center: np.ndarray) -> _View:
     forward = -rotation[2]
     target = eye + forward * max(float(np.dot(center - eye, forward)), 1e-6)
     orthographic = camera.projection == "orthographic"
-    height = camera.height if camera.height is not None else 2.0 / float(result.projection[1, 1])
+    # a fitted orthographic view's height is the fit's (the camera holds only the default)
+    height = 2.0 / float(result.projection[1, 1]) if orthographic else _HEIGHT
     fov_y = camera.fov_y if camera.fov_y is not None else _FOV_Y
     up = camera.up if camera.up is not None else np.eye(3)["xyz".index(result.up)]  # the scene's up axis
     return _View(eye, target, up, orthographic, float(fov_y), float(height))
@@ -249,11 +267,14 @@ class Viewer:
 
     In the browser: drag to orbit, wheel to zoom (once the view has focus: click it; otherwise
     the wheel scrolls the notebook), shift-drag or right-drag to pan, double-click to frame the
-    scene again; the toolbar has home (the first view), views from each axis, a PNG download of
-    the current full-size frame, full screen, and the frame rate and latency. From Python:
-    :meth:`orbit`, :meth:`zoom`, :meth:`pan`, :meth:`home`, :meth:`view_from` (each renders the
-    full-size frame before it returns), ``camera`` (read or set), and every render setting as an
-    attribute that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
+    scene again; the toolbar has home (the first view), views from each axis, the projection
+    (perspective or orthographic), the parts list (a scene of several meshes), a PNG download of
+    the current full-size frame, full screen, and the frame rate and latency; an orientation
+    triad in the view's corner turns with it (click a label to view from that axis). From
+    Python: :meth:`orbit`, :meth:`zoom`, :meth:`pan`, :meth:`home`, :meth:`view_from` (each
+    renders the full-size frame before it returns), ``camera`` (read or set), ``projection``,
+    ``parts`` and ``visible`` (show or hide parts), and every render setting as an attribute
+    that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
 
     Viewer options: ``controls=True`` shows ipywidgets controls beside the frame, one per field
     of the material, the first light, the outlines (and each line kind's style), the camera's
@@ -337,6 +358,7 @@ class Viewer:
         self._widget: Any = _make_widget(self)
         if self._widget is not None:
             self._front.append(self._widget)
+            self._send_parts()
         self._controls: Any = None  # the on-screen controls (a ControlPanel), refreshed when a setting changes
         self._set_camera(options.get("camera"))
         self._home = copy.deepcopy(self._view)
@@ -418,6 +440,8 @@ class Viewer:
         meshes = [item if isinstance(item, Mesh) else Mesh(item) for item in items]  # a MeshHandle in a list
         upload = shared_upload(self._renderer, meshes, smooth_iterations, where="vertices")
         self._uploads.append(upload)
+        self._parts = _part_names(meshes)
+        self._shown = [True] * len(meshes)
         placed = upload.placed(meshes)
         try:
             own = own_colours(meshes, self._options, None)  # the same meshes, some under another material
@@ -450,8 +474,12 @@ class Viewer:
 
     def _scene(self) -> List[PlacedMesh]:
         """The placed meshes as a render with the viewer's settings draws them: with no material
-        given, those with colours of their own under tm.render's white material."""
-        return self._placed if "material" in self._given else self._placed_own
+        given, those with colours of their own under tm.render's white material; the hidden
+        parts left out."""
+        return self._shown_of(self._placed if "material" in self._given else self._placed_own)
+
+    def _shown_of(self, placed: List[PlacedMesh]) -> List[PlacedMesh]:
+        return [p for p, shown in zip(placed, self._shown) if shown]
 
     @property
     def closed(self) -> bool:
@@ -547,6 +575,64 @@ class Viewer:
         self._check_open()
         self._view_from(_axis(axis))
         self._show(draft=False)
+
+    @property
+    def projection(self) -> str:
+        """The camera's projection: ``"perspective"`` or ``"orthographic"`` (the toolbar's
+        toggle). Setting it switches the camera (:meth:`toonmesh.Camera.look_at` and
+        :meth:`toonmesh.Camera.orthographic`) keeping the view's framing: the orthographic
+        view's height is what the perspective view saw at the target's distance, and back, the
+        eye moves along the view axis so that the field of view sees that height again; the
+        field of view and the eye's direction are kept. Re-renders."""
+        with self._state_lock:
+            return PROJECTIONS[self._view.orthographic]
+
+    @projection.setter
+    def projection(self, value: str) -> None:
+        self._check_open()
+        self._project(_projection(value))
+        self._settings_shown()
+        self._show(draft=False)
+
+    def _project(self, projection: str) -> None:
+        with self._state_lock:
+            self._view.project(projection == "orthographic")
+
+    @property
+    def parts(self) -> Tuple[str, ...]:
+        """The names of the scene's parts, its meshes in order (a file's or a ``trimesh.Scene``'s
+        placed geometries, a list's items): each mesh's ``name``, ``"part N"`` (from 1) where it
+        has none, and ``" (2)"``, ``" (3)"``... after a name met again (instances of one
+        geometry). The toolbar lists them where there are several."""
+        return tuple(self._parts)
+
+    @property
+    def visible(self) -> Dict[str, bool]:
+        """Which parts are shown, ``{name: True or False}`` in the order of :attr:`parts` (all
+        shown at first). Set a dict of parts, each by name or by its index in :attr:`parts`, to
+        ``True`` or ``False`` to show or hide them (the parts not named stay as they are; the
+        toolbar's parts list does the same): the exact frame, the drafts, :meth:`snapshot`,
+        :meth:`turntable`, :meth:`to_html` and :meth:`code` leave the hidden ones out.
+        Re-renders."""
+        return dict(zip(self._parts, self._shown))
+
+    @visible.setter
+    def visible(self, value: Dict[Any, bool]) -> None:
+        self._check_open()
+        self._show_parts(_visible(value, self._parts))
+        self._show(draft=False)
+
+    def _show_parts(self, changes: Dict[int, bool]) -> None:
+        """Shows or hides parts (by index), and the toolbar's list follows (the caller renders)."""
+        shown = list(self._shown)
+        for i, on in changes.items():
+            shown[i] = on
+        self._shown = shown
+        self._send_parts()
+
+    def _send_parts(self) -> None:
+        if self._widget is not None:
+            self._widget._parts = {"names": list(self._parts), "visible": list(self._shown)}
 
     def _go_home(self) -> None:
         with self._state_lock:
@@ -696,11 +782,11 @@ class Viewer:
         """Sends the draft to the browser once, and again when a setting changed."""
         if not self._browser_drafts:
             return
-        # the settings, and the projection the draft's footprint is for (not the size: the
-        # browser draws the draft at any size and pixel ratio)
+        # the settings, the projection the draft's footprint is for and the parts shown (not the
+        # size: the browser draws the draft at any size and pixel ratio)
         with self._state_lock:
             settings = self._options.replace(camera=None, width=1, height=1, pixel_ratio=1.0)
-            key = repr((settings, self._view.orthographic))
+            key = repr((settings, self._view.orthographic, self._shown))
         if key == getattr(self, "_draft_key", None):
             return
         try:
@@ -743,6 +829,7 @@ class Viewer:
         with self._render_lock:
             opts = self.options.replace(**options)
             placed = self._placed if "material" in self._given or options.get("material") is not None else self._placed_own
+            placed = self._shown_of(placed)
             result = draw(self._renderer, placed, opts)
             self.render_count += 1
             return result
@@ -784,7 +871,7 @@ class Viewer:
         written in their pickled form. The scene is named as it was given: ``V, F``, ``mesh``
         (a trimesh or a :class:`toonmesh.Mesh`), ``scene`` (a trimesh.Scene), ``meshes`` (a
         list) or the file's path."""
-        parts = [self._mesh_source]
+        parts = [self._scene_source()]
         if self._normals is not None:
             parts.append("normals=normals" if own_normals(self._normals) else f"normals={self._normals!r}")
         if self._smooth_iterations:
@@ -800,6 +887,20 @@ class Viewer:
         arguments = "".join(f"    {p},\n" for p in parts)
         return ViewerCode(f"import toonmesh as tm\n\nr = tm.render(\n{arguments})\n")
 
+    def _scene_source(self) -> str:
+        """The scene as code() names it: as it was given, with only the parts shown."""
+        kept = tuple(i for i, shown in enumerate(self._shown) if shown)
+        if len(kept) == len(self._shown):
+            return self._mesh_source
+        if not kept:
+            return "None"  # an empty scene
+        if self._mesh_source == "meshes":
+            return f"[meshes[i] for i in {kept!r}]"
+        # a file or a trimesh.Scene, read as tm.render reads it (a single mesh is one part: all
+        # shown or none)
+        read = "tm._load.scene_meshes(scene)" if self._mesh_source == "scene" else f"tm.load({self._mesh_source})"
+        return f"[m for i, m in enumerate({read}) if i in {kept!r}]"
+
     # -- the front end's events and flow control ----------------------------------------------
 
     def _on_event(self, content: Dict[str, Any]) -> None:
@@ -809,7 +910,9 @@ class Viewer:
         ...}``, as below) and a frame of the result is asked for, full size when ``exact``, else
         a draft. A single step alone: ``orbit``/``pan``/``zoom`` with ``dx``, ``dy`` (a draft),
         ``settle`` (the full-size frame), ``frame`` (frame the scene again), ``home``, ``axis``
-        with ``axis`` (see :meth:`view_from`)."""
+        with ``axis`` (see :meth:`view_from`), ``projection`` with ``projection`` (see
+        :attr:`projection`), ``part`` with ``part`` (an index in :attr:`parts`) and ``visible``
+        (True or False; see :attr:`visible`)."""
         if self._shared.closed:
             return
         try:
@@ -857,6 +960,12 @@ class Viewer:
             self._go_home()
         elif event == "axis":
             self._view_from(_axis(step.get("axis")))
+        elif event == "projection":
+            self._project(_projection(step.get("projection")))
+            self._settings_shown()
+        elif event == "part":
+            part, on = step.get("part"), step.get("visible")
+            self._show_parts(_visible({part: on}, self._parts))
         elif event == "size":
             self._layout.reported(step)
             self._resized()
@@ -979,6 +1088,51 @@ def _mesh_source(vertices: Any, faces: Any) -> str:
     return "mesh"
 
 
+def _projection(projection: Any) -> str:
+    if not isinstance(projection, str):
+        raise TypeError(f"projection: expected 'perspective' or 'orthographic', got {type(projection).__name__}")
+    if projection not in PROJECTIONS:
+        raise ValueError(f"projection: expected 'perspective' or 'orthographic', got {projection!r}")
+    return projection
+
+
+def _part_names(meshes: List[Mesh]) -> List[str]:
+    """Each mesh's name, ``part N`` (from 1) where it has none; a name met again gets `` (2)``,
+    `` (3)``..."""
+    names: List[str] = []
+    for i, mesh in enumerate(meshes):
+        base = mesh.name or f"part {i + 1}"
+        name, n = base, 1
+        while name in names:
+            n += 1
+            name = f"{base} ({n})"
+        names.append(name)
+    return names
+
+
+def _visible(value: Any, parts: List[str]) -> Dict[int, bool]:
+    """``visible``'s dict of parts (names or indices in ``parts``) to True or False, by index."""
+    if not isinstance(value, dict):
+        raise TypeError(f"visible: expected a dict of parts (names or indices) to True or False, got "
+                        f"{type(value).__name__}")
+    out: Dict[int, bool] = {}
+    for part, on in value.items():
+        if isinstance(part, str):
+            if part not in parts:
+                raise ValueError(f"visible: no part named {part!r} (the parts: {', '.join(map(repr, parts))})")
+            index = parts.index(part)
+        elif isinstance(part, (int, np.integer)) and not isinstance(part, (bool, np.bool_)):
+            if not 0 <= part < len(parts):
+                raise ValueError(f"visible: part {part} is out of range (the scene has {len(parts)} parts)")
+            index = int(part)
+        else:
+            raise TypeError(f"visible: a part is a name or an index, got {type(part).__name__}")
+        if not isinstance(on, (bool, np.bool_)):
+            raise TypeError(f"visible[{part!r}]: expected True or False, got {type(on).__name__}")
+        out[index] = bool(on)
+    return out
+
+
 def _axis(axis: Any) -> str:
     if not isinstance(axis, str):
         raise TypeError(f"axis: expected one of {', '.join(AXES)}, got {type(axis).__name__}")
@@ -1077,4 +1231,4 @@ def _make_widget(viewer: Viewer) -> Any:
     return widget
 
 
-__all__ = ["AXES", "Viewer", "ViewerClosedError", "ViewerCode"]
+__all__ = ["AXES", "PROJECTIONS", "Viewer", "ViewerClosedError", "ViewerCode"]

@@ -11,7 +11,7 @@ from typing import Any, Callable, Dict, Optional, Union
 import anywidget
 import traitlets
 
-from toonmesh.viewer._assets import WIDGET, script
+from toonmesh.viewer._assets import WIDGET, WIDGET_CSS, script, text
 
 class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
     """The widget a :class:`toonmesh.Viewer` displays: its last frame (PNG or JPEG bytes), the
@@ -19,6 +19,7 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
     it is the full-size frame, and a count of the answers sent (frames and errors)."""
 
     _esm = script(WIDGET)
+    _css = text(WIDGET_CSS)
     _frame = traitlets.Bytes(b"").tag(sync=True)
     _format = traitlets.Unicode("png").tag(sync=True)
     _frame_id = traitlets.Int(0).tag(sync=True)
@@ -32,6 +33,8 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
     _draft_spec = traitlets.Unicode("").tag(sync=True)
     _draft_data = traitlets.Bytes(b"").tag(sync=True)
     _moves = traitlets.Dict({}).tag(sync=True)
+    # the scene's parts for the toolbar's list: {"names": [...], "visible": [True or False, ...]}
+    _parts = traitlets.Dict({"names": list[str](), "visible": list[bool]()}).tag(sync=True)
 
     def attach(self, on_event: "Union[weakref.WeakMethod[Callable[[Dict[str, Any]], None]], Callable[[Dict[str, Any]], None]]") -> None:
         """Sends the front end's messages (dicts, see ``Viewer._on_event``) to ``on_event``: a

@@ -24,45 +24,38 @@ function render({ model, el }) {
   root.setAttribute("data-lm-suppress-shortcuts", "");  // keys pressed here do not run notebook commands
   Object.assign(root.dataset, { framesShown: "0", exact: "0", busy: "0", dropped: "0", viewsSent: "0", draft: "kernel",
                                 spinning: "0" });
-  root.style.cssText = "position: relative; display: inline-block; line-height: 0; outline: none;"
-    + " background: #fff; border: " + BORDER + "; box-shadow: none";
+  root.style.border = BORDER;  // the rest of the look: widget.css
+  root.style.boxShadow = "none";
   const bar = document.createElement("div");
   bar.className = "toonmesh-toolbar";
-  bar.style.cssText = "display: flex; flex-wrap: wrap; gap: 3px; align-items: center; padding: 2px 3px; line-height: 1.3;"
-    + " font: 12px sans-serif; background: #f5f5f5; border-bottom: 1px solid #e0e0e0";
   function button(cls, label, title, onclick) {
     const b = document.createElement("button");
     b.type = "button";
     b.className = "toonmesh-button " + cls;
     b.textContent = label;
     b.title = title;
-    b.style.cssText = "font: 12px sans-serif; padding: 0 6px; cursor: pointer";
     b.addEventListener("click", (e) => { e.preventDefault(); onclick(b); });
     bar.appendChild(b);
     return b;
   }
   const stage = document.createElement("div");
-  stage.style.cssText = "position: relative";
+  stage.className = "toonmesh-stage";
   const img = document.createElement("img");
   img.draggable = false;
   img.alt = "toonmesh viewer";
-  img.style.cssText = "cursor: grab; touch-action: none; user-select: none; display: block";
+  img.className = "toonmesh-frame";
   const note = document.createElement("div");
   note.className = "toonmesh-note";
-  note.style.cssText = "position: absolute; left: 4px; bottom: 4px; font: 12px sans-serif; line-height: 1.2; color: #a00";
   const busy = document.createElement("div");
   busy.className = "toonmesh-busy";
   busy.title = "the full-size frame is on its way";
-  busy.style.cssText = "position: absolute; right: 6px; top: 6px; width: 10px; height: 10px; border-radius: 50%;"
-    + " border: 2px solid #1a73e8; border-right-color: transparent; visibility: hidden;"
-    + " animation: toonmesh-spin 0.8s linear infinite";
-  const style = document.createElement("style");
-  style.textContent = "@keyframes toonmesh-spin { to { transform: rotate(360deg) } }"
-    + " .toonmesh-viewer:fullscreen { display: flex; flex-direction: column; align-items: center; justify-content: center }";
   const canvas = document.createElement("canvas");
   canvas.className = "toonmesh-draft";
-  canvas.style.cssText = "position: absolute; left: 0; top: 0; visibility: hidden; pointer-events: none";
-  stage.append(img, canvas, note, busy);
+  // the orientation triad, turned with each draft and frame; a label views from its axis
+  const triad = createTriad((axis) => add({ event: "axis", axis }, true));
+  const partsPanel = document.createElement("div");
+  partsPanel.className = "toonmesh-parts";
+  stage.append(img, canvas, note, busy, triad.element, partsPanel);
 
   // -- drafts drawn here ----------------------------------------------------------------------
   let draft = null, cam = null, drawWanted = false, lastEvent = 0, pacer = null;
@@ -115,6 +108,7 @@ function render({ model, el }) {
   function moveDraft(step) {
     if (!cam) cam = draftCamera(model.get("_camera"));
     draftStep(cam, step, model.get("_size")[1], model.get("_moves"));
+    triad.update(cam);
     if (!drawWanted) { drawWanted = true; requestAnimationFrame(drawDraft); }
   }
   // the delays of the last 200 drafts (ms), read by the benchmark and tests
@@ -209,6 +203,7 @@ function render({ model, el }) {
     for (const old of metas.keys()) { URL.revokeObjectURL(old); metas.delete(old); }  // superseded before shown
     root.dataset.frame = String(meta.id);
     root.dataset.exact = meta.exact ? "1" : "0";
+    if (meta.camera && meta.camera.eye) triad.update(meta.camera);  // the camera of the frame shown
     canvas.style.visibility = "hidden";
     img.style.opacity = "1";
     if (meta.exact) {
@@ -237,6 +232,44 @@ function render({ model, el }) {
     const b = button("toonmesh-axis", axis, "view from " + axis, () => add({ event: "axis", axis }, true));
     b.dataset.axis = axis;
   }
+  // perspective / orthographic: the kernel switches the camera keeping the framing
+  const projection = button("toonmesh-projection", "", "", () => {
+    const ortho = !!model.get("_camera").orthographic;
+    add({ event: "projection", projection: ortho ? "perspective" : "orthographic" }, true);
+  });
+  function showProjection() {
+    const ortho = !!model.get("_camera").orthographic;
+    projection.textContent = ortho ? "ortho" : "persp";
+    projection.title = (ortho ? "orthographic" : "perspective") + " projection (click for "
+      + (ortho ? "perspective" : "orthographic") + ")";
+    projection.dataset.projection = ortho ? "orthographic" : "perspective";
+  }
+  // the parts list (a scene of several meshes): a checkbox a part shows or hides it
+  const partsButton = button("toonmesh-parts-button", "parts \u25be", "show or hide the scene's parts", () => {
+    partsPanel.classList.toggle("toonmesh-open");
+    partsButton.classList.toggle("toonmesh-on", partsPanel.classList.contains("toonmesh-open"));
+  });
+  function showParts() {
+    const { names, visible } = model.get("_parts");
+    partsButton.style.display = names.length > 1 ? "" : "none";
+    if (partsPanel.childElementCount !== names.length) {
+      partsPanel.replaceChildren(...names.map((name, part) => {
+        const label = document.createElement("label");
+        const box = document.createElement("input");
+        box.type = "checkbox";
+        box.dataset.part = String(part);
+        box.addEventListener("change", () => add({ event: "part", part, visible: box.checked }, true));
+        label.append(box, " " + name);
+        return label;
+      }));
+    }
+    partsPanel.querySelectorAll("input").forEach((box, i) => { box.checked = !!visible[i]; });
+  }
+  model.on("change:_camera", showProjection);
+  model.on("change:_parts", showParts);
+  showProjection();
+  showParts();
+  if (model.get("_camera").eye) triad.update(model.get("_camera"));
   button("toonmesh-screenshot", "\u2913 PNG", "download the current full-size frame as PNG", screenshot);
   const full = button("toonmesh-fullscreen", "full", "full screen (again to leave)", () => {
     if (document.fullscreenElement === root) document.exitFullscreen();
@@ -263,7 +296,6 @@ function render({ model, el }) {
   const stats = document.createElement("span");
   stats.className = "toonmesh-stats";
   stats.title = "frames shown in the last second \u00b7 the last view's time to the kernel's answer";
-  stats.style.cssText = "margin-left: auto; padding-left: 8px; color: #555; white-space: nowrap";
   bar.appendChild(stats);
   function screenshot() {
     const f = exactFrame;
@@ -286,7 +318,7 @@ function render({ model, el }) {
       canvas.toBlob(save, "image/png");
     });
   }
-  root.append(style, bar, stage);
+  root.append(bar, stage);
   el.appendChild(root);
 
   // -- size -----------------------------------------------------------------------------------
