@@ -33,7 +33,7 @@ from typing import Iterator, List
 import numpy as np
 import pytest
 
-from conftest import chromium, need
+from conftest import chromium, need, screen_shares, screenshot_mid_drag
 from toonmesh.bench._lab import open_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -50,7 +50,7 @@ CELLS = [
     "\n"
     "V, F = bunny()\n"
     "blue = tm.Material.bands('#4f8fd8')\n"
-    "v = tm.Viewer(V, F, material=blue, outlines='mesh', width=480, height=360, controls=True)\n"
+    "v = tm.Viewer(V, F, material=blue, outlines='both', width=480, height=360, controls=True)\n"
     "_show = v._show\n"
     "def slow(draft):  # frames slower than the pointer's moves\n"
     "    time.sleep(0.2)\n"
@@ -59,7 +59,7 @@ CELLS = [
     "v",
     # after the drag: the kernel's counts, and its camera against the whole drag at once
     "del v._show\n"
-    "same = tm.Viewer(V, F, material=blue, outlines='mesh', width=480, height=360)\n"
+    "same = tm.Viewer(V, F, material=blue, outlines='both', width=480, height=360)\n"
     f"same.orbit({DRAG_STEPS * DRAG_DX}, {DRAG_STEPS * DRAG_DY})\n"
     "off = float(np.abs(np.subtract(v.camera.eye, same.camera.eye)).max())\n"
     "same.close()\n"
@@ -188,6 +188,15 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             for i in range(1, DRAG_STEPS + 1):
                 page.mouse.move(x + DRAG_DX * i, y + DRAG_DY * i)
                 page.wait_for_timeout(30)
+                if i == DRAG_STEPS // 2:
+                    # what the screen shows mid-drag (the pointer held; a draft: the kernel's frame
+                    # is not shown until the pointer stops), then, the pointer still held, the
+                    # exact frame of the same view
+                    mid_drag = _pixels(screenshot_mid_drag(page, img, ".toonmesh-viewer img", x + DRAG_DX * i,
+                                                           y + DRAG_DY * i))
+                    mid_marks = (viewer.get_attribute("data-exact"), viewer.get_attribute("data-draft-scale"))
+                    _wait_exact_after(page, int(viewer.get_attribute("data-frames-shown")))
+                    held = _pixels(img.screenshot())
             page.mouse.up()
             # The full-size frame follows the release; wait until it has been shown.
             _wait_exact_after(page, shown)
@@ -258,6 +267,8 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             viewer.locator(".toonmesh-spin").click()
             page.wait_for_function("(n) => +document.querySelector('.toonmesh-viewer').dataset.framesShown > n + 5",
                                    arg=shown, timeout=20_000)
+            spin_shot = _pixels(img.screenshot())  # what the screen shows while it turns: a draft
+            spin_exact_mark = viewer.get_attribute("data-exact")
             spinning = viewer.get_attribute("data-spinning")
             viewer.locator(".toonmesh-spin").click()
             shown = int(viewer.get_attribute("data-frames-shown"))
@@ -286,6 +297,10 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     assert toolbar == {"home": 1, "axes": ["+x", "-x", "+y", "-y", "+z", "-z"], "screenshot": 1, "fullscreen": 1,
                        "spin": 1, "suppress": "", "tabindex": "0"}, toolbar
     assert spinning == "1" and stopped == "0", (spinning, stopped)
+    # the screen showed the turning view's drafts: the model and its ink as the exact frame of
+    # the view it stopped at (a few degrees on) shows them
+    spin_shares = screen_shares(spin_shot, after_spin)
+    assert spin_exact_mark == "0" and spin_shares[0] >= 0.8 and spin_shares[1] >= 0.5, (spin_exact_mark, spin_shares)
     assert (np.abs(before_spin - after_spin).max(axis=2) > 24).mean() > 0.02  # it turned
     assert menu_prevented and jupyter_menus == 0, (menu_prevented, jupyter_menus)
     assert unfocused_frames == 0 and unfocused_views == 0, (unfocused_frames, unfocused_views)
@@ -297,6 +312,11 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     # the drafts were drawn in the browser by WebGL2 (no kernel drafts: every kernel frame is full
     # size), saying what they leave to the exact frame (the mesh-space lines)
     assert draft_mode == "webgl" and drawn_here, (draft_mode, drawn_here, title)
+    # mid-drag the screen showed a draft (smaller than the view) with the model and its ink as
+    # the exact frame of the same view shows them
+    mid_shares = screen_shares(mid_drag, held)
+    assert mid_marks[0] == "0" and float(mid_marks[1]) < 1, mid_marks
+    assert mid_shares[0] >= 0.8 and mid_shares[1] >= 0.5, mid_shares
     assert "WebGL2" in title and "left to the exact frame: mesh-space lines" in title, title
     assert sizes and set(sizes) == {480}, sizes
     assert "0" in exact_marks and exact_marks[-1] == "1", exact_marks  # a draft shown, then the exact frame
