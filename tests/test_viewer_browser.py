@@ -297,10 +297,10 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     assert toolbar == {"home": 1, "axes": ["+x", "-x", "+y", "-y", "+z", "-z"], "screenshot": 1, "fullscreen": 1,
                        "spin": 1, "suppress": "", "tabindex": "0"}, toolbar
     assert spinning == "1" and stopped == "0", (spinning, stopped)
-    # the screen showed the turning view's drafts: the model and its ink as the exact frame of
-    # the view it stopped at (a few degrees on) shows them
+    # the screen showed the turning view's drafts: the model as the exact frame of the view it
+    # stopped at (a few degrees on) shows it (the outlines are off by then: no ink to compare)
     spin_shares = screen_shares(spin_shot, after_spin)
-    assert spin_exact_mark == "0" and spin_shares[0] >= 0.8 and spin_shares[1] >= 0.5, (spin_exact_mark, spin_shares)
+    assert spin_exact_mark == "0" and spin_shares[0] >= 0.8, (spin_exact_mark, spin_shares)
     assert (np.abs(before_spin - after_spin).max(axis=2) > 24).mean() > 0.02  # it turned
     assert menu_prevented and jupyter_menus == 0, (menu_prevented, jupyter_menus)
     assert unfocused_frames == 0 and unfocused_views == 0, (unfocused_frames, unfocused_views)

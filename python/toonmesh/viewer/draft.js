@@ -191,6 +191,9 @@ function createDraft(canvas, spec, blob) {
   }
   function free() {
     if (!targets) return;
+    // unbound first: Chromium, deleting the framebuffer still bound for reading (the last
+    // draft's blit source), loses track of the canvas's own, and shows it blank from then on
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     for (const t of [targets.color, targets.geometry, targets.edgeBits, targets.present]) if (t) gl.deleteTexture(t);
     for (const f of [targets.shade, targets.edgeBitsFbo, targets.ink, targets.presentFbo]) if (f) gl.deleteFramebuffer(f);
     gl.deleteRenderbuffer(targets.depth);
@@ -224,11 +227,13 @@ function createDraft(canvas, spec, blob) {
     };
   }
 
-  // Draws the view `cam` at w x h pixels into the canvas, whose drawing buffer takes that size
-  // (the page stretches it to the size it shows); `ratio`: its pixels per layout pixel (the
-  // lengths the settings give in pixels are drawn that many pixels long; by default as the
-  // kernel's frame of the same height would draw them).
-  function draw(cam, w, h, ratio) {
+  // Draws the view `cam` at w x h pixels and shows it on the canvas, scaled to its drawing
+  // buffer's size `shown` ([width, height], by default [w, h]; the page stretches that to the
+  // size it shows). A drag keeps `shown` (the full frame's pixels): the canvas is not resized
+  // while its drafts change size. `ratio`: the draft's pixels per layout pixel (the lengths the
+  // settings give in pixels are drawn that many pixels long; by default as the kernel's frame of
+  // the same height would draw them).
+  function draw(cam, w, h, ratio, shown) {
     resize(w, h);
     const c = spec.camera;
     // the camera's matrices, in the core's normalised view space (view space / scale)
@@ -314,16 +319,23 @@ function createDraft(canvas, spec, blob) {
       gl.drawArrays(gl.TRIANGLES, 0, 3);
       gl.disable(gl.BLEND);
     }
-    if (!canvasSize || canvasSize[0] !== w || canvasSize[1] !== h) {
-      canvasSize = [w, h];
-      canvas.width = w;
-      canvas.height = h;
-      if (srgbCanvas) gl.drawingBufferStorage(gl.SRGB8_ALPHA8, w, h);
+    present(w, h, shown || [w, h]);
+  }
+
+  // The draft (w x h, in the ink target) onto the canvas at W x H: pixel for pixel at its own
+  // size, else scaled with linear filtering.
+  function present(w, h, [W, H]) {
+    if (!canvasSize || canvasSize[0] !== W || canvasSize[1] !== H) {
+      canvasSize = [W, H];
+      canvas.width = W;
+      canvas.height = H;
+      if (srgbCanvas) gl.drawingBufferStorage(gl.SRGB8_ALPHA8, W, H);
     }
     // the targets hold the rows top first (the translated stages flip y), the canvas bottom first
-    const blit = () => gl.blitFramebuffer(0, 0, w, h, 0, h, w, 0, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+    const filter = w === W && h === H ? gl.NEAREST : gl.LINEAR;
+    const blit = () => gl.blitFramebuffer(0, 0, w, h, 0, H, W, 0, gl.COLOR_BUFFER_BIT, filter);
     gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
-    if (srgbCanvas) {  // sRGB to sRGB: the bytes as they are
+    if (srgbCanvas) {  // sRGB to sRGB: the bytes as they are (where scaled, filtered in linear light)
       gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.ink);
       blit();
       return;
@@ -352,6 +364,14 @@ function createDraft(canvas, spec, blob) {
   }
 
   return { draw, pixels, leftToExact: spec.left_to_exact, gl, drawnFaces: () => lastFaces };
+}
+
+// Watches `canvas`'s WebGL context: `lost()` when the browser takes it away (the draft renderer
+// on it is gone: draw as when WebGL2 fails), `restored()` when it gives it back (make the
+// renderer again, on the same canvas).
+function draftContextWatch(canvas, lost, restored) {
+  canvas.addEventListener("webglcontextlost", (e) => { e.preventDefault(); lost(); });  // else never restored
+  canvas.addEventListener("webglcontextrestored", () => restored());
 }
 
 // The size drafts are drawn at while the view moves, as a share of the full size: at most

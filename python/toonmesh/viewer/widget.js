@@ -94,9 +94,11 @@ function render({ model, el }) {
     canvas.style.width = w + "px";
     canvas.style.height = h + "px";
     if (!pacer) pacer = draftPacer(model.get("_moves").drag_scale);
-    // drawn smaller while moving, as the kernel's drafts, at the kernel frames' pixel ratio
-    const s = pacer.scale(), r = model.get("_layout").ratio * s;
-    draft.draw(cam, Math.max(1, Math.round(w * r)), Math.max(1, Math.round(h * r)), r);
+    // drawn smaller while moving, as the kernel's drafts, at the kernel frames' pixel ratio,
+    // and shown scaled on a canvas of the full frame's pixels (never resized during a drag)
+    const ratio = model.get("_layout").ratio, s = pacer.scale(), r = ratio * s;
+    const full = [Math.max(1, Math.round(w * ratio)), Math.max(1, Math.round(h * ratio))];
+    draft.draw(cam, Math.max(1, Math.round(w * r)), Math.max(1, Math.round(h * r)), r, full);
     pacer.shown(performance.now(), !!drag);
     canvas.style.visibility = "visible";
     img.style.opacity = "0";  // not composited under the draft (opacity keeps its pointer events)
@@ -121,6 +123,15 @@ function render({ model, el }) {
   Object.defineProperty(root, "toonmeshEventDelays", { get: () => eventDelays.slice() });
   Object.defineProperty(root, "toonmeshDraft", { get: () => draft });  // its pixels(), for tests
   model.on("change:_draft_spec", loadDraft);
+  // a lost WebGL context: the kernel draws the drafts until the browser gives it back
+  draftContextWatch(canvas, () => {
+    draft = null;
+    cam = null;  // the kernel's camera, where the next move starts
+    canvas.style.visibility = "hidden";
+    img.style.opacity = "1";
+    root.dataset.draft = "kernel";
+    root.title = KERNEL_DRAFTS + " (the WebGL context was lost)";
+  }, loadDraft);
   model.on("change:_moves", () => { pacer = null; });  // a new drag_scale paces the next drafts
   loadDraft();
 
