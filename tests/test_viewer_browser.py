@@ -277,6 +277,31 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             after_spin = _pixels(img.screenshot())
             stopped = viewer.get_attribute("data-spinning")
 
+            # a lost WebGL context: the kernel draws the drafts until the browser gives it back; then
+            # the drafts are drawn here again and reach the screen
+            viewer.evaluate("r => { window.__lose = r.toonmeshDraft.gl.getExtension('WEBGL_lose_context');"
+                            " window.__lose.loseContext(); }")
+            page.wait_for_function("document.querySelector('.toonmesh-viewer').dataset.draft === 'kernel'",
+                                   timeout=10_000)
+            lost_title = viewer.get_attribute("title")
+            page.evaluate("window.__lose.restoreContext()")
+            page.wait_for_function("document.querySelector('.toonmesh-viewer').dataset.draft === 'webgl'",
+                                   timeout=10_000)
+            img.scroll_into_view_if_needed()
+            box = img.bounding_box()
+            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+            page.mouse.move(x, y)
+            page.mouse.down()
+            for i in range(1, 5):
+                page.mouse.move(x - 10 * i, y)
+                page.wait_for_timeout(30)
+            restored_shot = _pixels(screenshot_mid_drag(page, img, ".toonmesh-viewer img", x - 40, y))
+            restored_mark = viewer.get_attribute("data-exact")
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            page.mouse.up()
+            _wait_exact_after(page, shown)
+            restored_shares = screen_shares(restored_shot, _pixels(img.screenshot()))
+
             # a frame made for an older view than the one shown is dropped
             shown = int(viewer.get_attribute("data-frames-shown"))
             _run_cell(page, cells, 4, "stale sent")
@@ -344,6 +369,8 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     shot = np.asarray(__import__("PIL.Image", fromlist=["Image"]).open(tmp_path / "screenshot.png"))
     np.testing.assert_array_equal(shot, np.load(work / "frame.npy"))  # the kernel's exact frame, as it is
 
+    assert "the WebGL context was lost" in lost_title, lost_title
+    assert restored_mark == "0" and restored_shares[0] >= 0.8, (restored_mark, restored_shares)
     assert stale_shown == 0, stale_shown
     assert "ViewerClosedError" in closed_error and "closed" in closed_error.split("ViewerClosedError", 1)[1], closed_error
     assert controls_left == 0

@@ -256,6 +256,27 @@ def test_the_page_shows_the_model_on_screen_during_and_after_a_drag(browser, tmp
     assert all(c >= 0.6 and i >= 0.3 for c, i in figures["during"] + [after]), figures
 
 
+def test_the_page_draws_again_once_a_lost_webgl_context_is_restored(browser, tmp_path):
+    page, exact, _ = _page_of(browser, tmp_path, "lost", outlines="image")
+    root, canvas = page.locator(".toonmesh-viewer"), page.locator("canvas")
+    page.evaluate("window.__lose = window.toonmeshDraft.renderer.gl.getExtension('WEBGL_lose_context');"
+                  " window.__lose.loseContext()")
+    page.wait_for_function("document.querySelector('.toonmesh-viewer').dataset.error !== undefined", timeout=10_000)
+    lost = (root.get_attribute("data-error"), root.get_attribute("title"))
+    shown = int(root.get_attribute("data-frames-shown"))
+    page.evaluate("window.__lose.restoreContext()")
+    page.wait_for_function("(n) => { const r = document.querySelector('.toonmesh-viewer');"
+                           " return r.dataset.error === undefined && +r.dataset.framesShown > n; }", arg=shown,
+                           timeout=10_000)
+    page.wait_for_timeout(200)
+    shares = screen_shares(screen_pixels(canvas.screenshot()), exact)
+    title = root.get_attribute("title")
+    page.close()
+    assert lost[0] == "the WebGL context was lost" and lost[1].startswith("WebGL2 drafts failed"), lost
+    assert "drafts drawn in WebGL2" in title, title
+    assert shares[0] >= 0.95 and shares[1] >= 0.9, shares  # the renderer made again: the view as before
+
+
 def test_to_html_refuses_a_path_that_is_not_one():
     V, F = bunny()
     v = tm.Viewer(V, F, width=64, height=64)
