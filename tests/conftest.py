@@ -150,55 +150,8 @@ def pytest_terminal_summary(terminalreporter: Any) -> None:
             terminalreporter.write_line(f"{backend}: " + (f"ran on {adapter}" if problem is None else f"SKIPPED: {problem}"))
 
 
-# ------------------------------------------------------------------------------------------------
-# What a view shows on screen, against the exact frame of the same view (the browser tests).
-
-
-def screen_pixels(png: bytes) -> np.ndarray:
-    """A screenshot (PNG bytes, Playwright's ``locator.screenshot()``) as (H, W, 3) int16."""
-    import io
-
-    from PIL import Image
-
-    return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
-
-
-def covered_pixels(picture: np.ndarray, background: np.ndarray) -> int:
-    """The pixels of ``picture`` that differ from ``background`` (an RGB colour) by more than 24
-    levels in a channel: the model, not the empty view."""
-    return int((np.abs(picture[..., :3].astype(np.int16) - background[:3].astype(np.int16)).max(-1) > 24).sum())
-
-
-def ink_pixels(picture: np.ndarray) -> int:
-    """The dark pixels of ``picture`` (every channel below 100): the ink (the default bands stay lighter)."""
-    return int((picture[..., :3].max(-1) < 100).sum())
-
-
-def screen_shares(shot: np.ndarray, exact: np.ndarray) -> "tuple[float, float]":
-    """What a screenshot of a view shows against the exact frame of the same view: its covered
-    pixels and its ink pixels, each as a share of the exact frame's. The background is the
-    commonest colour along the exact frame's edges (a screenshot may take in a border's row)."""
-    edges = np.concatenate([exact[0], exact[-1], exact[:, 0], exact[:, -1]])[:, :3].astype(np.int16)
-    colours, counts = np.unique(edges, axis=0, return_counts=True)
-    background = colours[counts.argmax()]
-    return (covered_pixels(shot, background) / max(covered_pixels(exact, background), 1),
-            ink_pixels(shot) / max(ink_pixels(exact), 1))
-
-
-def screenshot_mid_drag(page: Any, locator: Any, target: str, x: float, y: float) -> bytes:
-    """A screenshot of ``locator`` while a drag goes on: with the mouse held down at (x, y) on
-    the element that ``target`` (a CSS selector) selects, the page moves the pointer a pixel
-    right and back every 40 ms until the screenshot is taken, so that the view never settles
-    however long the screenshot takes, and ends where it was."""
-    page.evaluate("""([target, x, y]) => {
-      const el = document.querySelector(target);
-      const move = (to) => el.dispatchEvent(new PointerEvent('pointermove', { pointerId: 1, pointerType: 'mouse',
-        isPrimary: true, clientX: to, clientY: y, buttons: 1, bubbles: true, cancelable: true }));
-      let k = 0;
-      window.__wiggle = { stop: () => { clearInterval(t); if (k % 2 === 1) move(x); } };
-      const t = setInterval(() => move(x + (k++ % 2 === 0 ? 1 : 0)), 40);
-    }""", [target, x, y])
-    try:
-        return locator.screenshot()
-    finally:
-        page.evaluate("() => window.__wiggle.stop()")
+# What a view shows on screen against the exact frame of the same view, and screenshots taken
+# mid-drag (the browser tests; the viewer_browser benchmark reads the screen with the same).
+from toonmesh.bench._screen import pixels as screen_pixels  # noqa: E402,F401
+from toonmesh.bench._screen import screenshot_mid_drag  # noqa: E402,F401
+from toonmesh.bench._screen import shares as screen_shares  # noqa: E402,F401

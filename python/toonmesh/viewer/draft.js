@@ -323,7 +323,8 @@ function createDraft(canvas, spec, blob) {
   }
 
   // The draft (w x h, in the ink target) onto the canvas at W x H: pixel for pixel at its own
-  // size, else scaled with linear filtering.
+  // size (a blit), else scaled with linear filtering (a triangle over the canvas that samples
+  // it: SwiftShader scales by a blit several times slower).
   function present(w, h, [W, H]) {
     if (!canvasSize || canvasSize[0] !== W || canvasSize[1] !== H) {
       canvasSize = [W, H];
@@ -331,27 +332,50 @@ function createDraft(canvas, spec, blob) {
       canvas.height = H;
       if (srgbCanvas) gl.drawingBufferStorage(gl.SRGB8_ALPHA8, W, H);
     }
-    // the targets hold the rows top first (the translated stages flip y), the canvas bottom first
-    const filter = w === W && h === H ? gl.NEAREST : gl.LINEAR;
-    const blit = () => gl.blitFramebuffer(0, 0, w, h, 0, H, W, 0, gl.COLOR_BUFFER_BIT, filter);
-    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
-    if (srgbCanvas) {  // sRGB to sRGB: the bytes as they are (where scaled, filtered in linear light)
+    let source = targets.color;  // sRGB onto an sRGB canvas: the bytes as they are
+    if (!srgbCanvas) {  // onto a plain canvas: the sRGB bytes copied into a plain texture first
       gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.ink);
-      blit();
+      gl.bindBuffer(gl.PIXEL_PACK_BUFFER, targets.pbo);
+      gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, 0);
+      gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
+      gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, targets.pbo);
+      gl.bindTexture(gl.TEXTURE_2D, targets.present);
+      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, 0);
+      gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, null);
+      source = targets.present;
+    }
+    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+    if (w === W && h === H) {
+      // the targets hold the rows top first (the translated stages flip y), the canvas bottom first
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, srgbCanvas ? targets.ink : targets.presentFbo);
+      gl.blitFramebuffer(0, 0, w, h, 0, H, W, 0, gl.COLOR_BUFFER_BIT, gl.NEAREST);
       return;
     }
-    // onto a plain canvas: the sRGB bytes as they are (read, copied into a plain texture, blitted)
-    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.ink);
-    gl.bindBuffer(gl.PIXEL_PACK_BUFFER, targets.pbo);
-    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, 0);
-    gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
-    gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, targets.pbo);
-    gl.bindTexture(gl.TEXTURE_2D, targets.present);
-    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, 0);
-    gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, null);
-    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.presentFbo);
-    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
-    blit();
+    gl.viewport(0, 0, W, H);
+    gl.useProgram(scaler());
+    gl.bindVertexArray(emptyVao);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, source);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+  // the program that scales a draft onto the canvas (made on first use)
+  let scaleProgram = null;
+  function scaler() {
+    if (scaleProgram) return scaleProgram;
+    const prog = gl.createProgram();
+    // one triangle over the canvas; the source's rows top first, the canvas's bottom first
+    gl.attachShader(prog, shader(gl.VERTEX_SHADER, "#version 300 es\nout vec2 uv;\nvoid main() {\n"
+      + "  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);\n"
+      + "  uv = vec2(p.x + 1.0, 1.0 - p.y) * 0.5;\n  gl_Position = vec4(p, 0.0, 1.0);\n}\n", "scale (vertex)"));
+    gl.attachShader(prog, shader(gl.FRAGMENT_SHADER, "#version 300 es\nprecision mediump float;\n"
+      + "uniform sampler2D draft;\nin vec2 uv;\nout vec4 color;\n"
+      + "void main() { color = texture(draft, uv); }\n", "scale (fragment)"));
+    gl.linkProgram(prog);
+    if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) throw new Error("scale: " + gl.getProgramInfoLog(prog));
+    scaleProgram = prog;
+    return prog;  // its sampler on unit 0 (the default)
   }
 
   // The last draft's pixels: RGBA8 (sRGB), rows top first.
