@@ -17,13 +17,13 @@ and the time from the release to the exact frame (the viewer). Headless Chromium
 through SwiftShader on the CPU: on a machine with a GPU the browser draws at the display's rate.
 
 A frame counts only where it reached the screen. The page counts a frame of the viewer only
-while it is shown as the user sees it (``viewer_browser_watch.js``: a draft's canvas visible, laid
-out at the view's full size, its drawing buffer the full frame's pixels; a kernel's frame in the
-opaque image at full size), and after the timed drag a second drag checks what the screen shows:
-a screenshot of the view taken with the pointer held and moving, against a screenshot of the
-exact frame of the same view (for the plain program, its still frame after the release). Where
-that screenshot shows less than 80% of the covered pixels, the row's frames did not reach the
-screen: its rate is 0. The table gives that share ("on screen").
+while it is shown as the user sees it (``viewer_browser_watch.js``: a draft's canvas visible and
+laid out over the view at its full size; a kernel's frame in the opaque image at full size), and
+after the timed drag a second drag checks what the screen shows: a screenshot of the view taken
+with the pointer held and moving, against a screenshot of the exact frame of the same view (for
+the plain program, its still frame after the release). Where that screenshot shows less than 80%
+of the covered pixels, the row's frames did not reach the screen: its rate is 0. The table gives
+that share ("on screen") and the frames counted by the viewer but not shown ("not shown").
 """
 
 from __future__ import annotations

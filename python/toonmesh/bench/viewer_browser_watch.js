@@ -1,10 +1,10 @@
 // The viewer_browser benchmark's watch on viewer `i` of the page (an arrow function, evaluated
 // by Playwright): when each frame is shown (the viewer's data-frames-shown) and when the pointer
 // is released and the exact frame follows (data-exact, data-busy). A frame counts only where it
-// is on screen as the user sees it: a draft drawn here on its canvas, visible, laid out at the
-// view's full size, its drawing buffer the full frame's pixels (a canvas resized during the drag
-// showed nothing in headless Chromium); a frame from the kernel in the view's image, opaque and
-// at the view's full size. Frames that are not are counted apart (`hidden`).
+// is shown as the user sees it: a draft drawn here on its canvas, visible and laid out over the
+// view at its full size; a frame from the kernel in the view's image, opaque, at the view's full
+// size. Frames that are not are counted apart (`hidden`). Whether what is shown so reaches the
+// screen, screenshots tell (the benchmark's second drag).
 (i) => {
   const root = document.querySelectorAll('.toonmesh-viewer')[i];
   const img = root.querySelector('img'), canvas = root.querySelector('canvas');
@@ -16,7 +16,7 @@
   };
   function onScreen() {
     if (canvas && getComputedStyle(canvas).visibility === 'visible') {
-      return fullSize(canvas) && canvas.width === img.naturalWidth && canvas.height === img.naturalHeight;
+      return fullSize(canvas) && canvas.width > 0 && canvas.height > 0;
     }
     return getComputedStyle(img).opacity === '1' && fullSize(img) && img.complete && img.naturalWidth > 0;
   }

@@ -227,13 +227,11 @@ function createDraft(canvas, spec, blob) {
     };
   }
 
-  // Draws the view `cam` at w x h pixels and shows it on the canvas, scaled to its drawing
-  // buffer's size `shown` ([width, height], by default [w, h]; the page stretches that to the
-  // size it shows). A drag keeps `shown` (the full frame's pixels): the canvas is not resized
-  // while its drafts change size. `ratio`: the draft's pixels per layout pixel (the lengths the
-  // settings give in pixels are drawn that many pixels long; by default as the kernel's frame of
-  // the same height would draw them).
-  function draw(cam, w, h, ratio, shown) {
+  // Draws the view `cam` at w x h pixels into the canvas, whose drawing buffer takes that size
+  // (the page stretches it to the size it shows); `ratio`: its pixels per layout pixel (the
+  // lengths the settings give in pixels are drawn that many pixels long; by default as the
+  // kernel's frame of the same height would draw them).
+  function draw(cam, w, h, ratio) {
     resize(w, h);
     const c = spec.camera;
     // the camera's matrices, in the core's normalised view space (view space / scale)
@@ -319,63 +317,32 @@ function createDraft(canvas, spec, blob) {
       gl.drawArrays(gl.TRIANGLES, 0, 3);
       gl.disable(gl.BLEND);
     }
-    present(w, h, shown || [w, h]);
-  }
-
-  // The draft (w x h, in the ink target) onto the canvas at W x H: pixel for pixel at its own
-  // size (a blit), else scaled with linear filtering (a triangle over the canvas that samples
-  // it: SwiftShader scales by a blit several times slower).
-  function present(w, h, [W, H]) {
-    if (!canvasSize || canvasSize[0] !== W || canvasSize[1] !== H) {
-      canvasSize = [W, H];
-      canvas.width = W;
-      canvas.height = H;
-      if (srgbCanvas) gl.drawingBufferStorage(gl.SRGB8_ALPHA8, W, H);
+    if (!canvasSize || canvasSize[0] !== w || canvasSize[1] !== h) {
+      canvasSize = [w, h];
+      canvas.width = w;
+      canvas.height = h;
+      if (srgbCanvas) gl.drawingBufferStorage(gl.SRGB8_ALPHA8, w, h);
     }
-    let source = targets.color;  // sRGB onto an sRGB canvas: the bytes as they are
-    if (!srgbCanvas) {  // onto a plain canvas: the sRGB bytes copied into a plain texture first
-      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.ink);
-      gl.bindBuffer(gl.PIXEL_PACK_BUFFER, targets.pbo);
-      gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, 0);
-      gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
-      gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, targets.pbo);
-      gl.bindTexture(gl.TEXTURE_2D, targets.present);
-      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, 0);
-      gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, null);
-      source = targets.present;
-    }
+    // the targets hold the rows top first (the translated stages flip y), the canvas bottom first
+    const blit = () => gl.blitFramebuffer(0, 0, w, h, 0, h, w, 0, gl.COLOR_BUFFER_BIT, gl.NEAREST);
     gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
-    if (w === W && h === H) {
-      // the targets hold the rows top first (the translated stages flip y), the canvas bottom first
-      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, srgbCanvas ? targets.ink : targets.presentFbo);
-      gl.blitFramebuffer(0, 0, w, h, 0, H, W, 0, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+    if (srgbCanvas) {  // sRGB to sRGB: the bytes as they are
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.ink);
+      blit();
       return;
     }
-    gl.viewport(0, 0, W, H);
-    gl.useProgram(scaler());
-    gl.bindVertexArray(emptyVao);
-    gl.activeTexture(gl.TEXTURE0);
-    gl.bindTexture(gl.TEXTURE_2D, source);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
-  }
-  // the program that scales a draft onto the canvas (made on first use)
-  let scaleProgram = null;
-  function scaler() {
-    if (scaleProgram) return scaleProgram;
-    const prog = gl.createProgram();
-    // one triangle over the canvas; the source's rows top first, the canvas's bottom first
-    gl.attachShader(prog, shader(gl.VERTEX_SHADER, "#version 300 es\nout vec2 uv;\nvoid main() {\n"
-      + "  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);\n"
-      + "  uv = vec2(p.x + 1.0, 1.0 - p.y) * 0.5;\n  gl_Position = vec4(p, 0.0, 1.0);\n}\n", "scale (vertex)"));
-    gl.attachShader(prog, shader(gl.FRAGMENT_SHADER, "#version 300 es\nprecision mediump float;\n"
-      + "uniform sampler2D draft;\nin vec2 uv;\nout vec4 color;\n"
-      + "void main() { color = texture(draft, uv); }\n", "scale (fragment)"));
-    gl.linkProgram(prog);
-    if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) throw new Error("scale: " + gl.getProgramInfoLog(prog));
-    scaleProgram = prog;
-    return prog;  // its sampler on unit 0 (the default)
+    // onto a plain canvas: the sRGB bytes as they are (read, copied into a plain texture, blitted)
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.ink);
+    gl.bindBuffer(gl.PIXEL_PACK_BUFFER, targets.pbo);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, 0);
+    gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
+    gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, targets.pbo);
+    gl.bindTexture(gl.TEXTURE_2D, targets.present);
+    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, 0);
+    gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, null);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, targets.presentFbo);
+    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+    blit();
   }
 
   // The last draft's pixels: RGBA8 (sRGB), rows top first.

@@ -32,11 +32,9 @@ draftContextWatch(canvas, () => failed("the WebGL context was lost"), () => { lo
 function frame() {
   wanted = false;
   if (!draft) return;
-  // at the screen's pixel ratio (sharp on a 2x screen), smaller while moving, shown scaled on a
-  // canvas of the full size's pixels (never resized during a drag)
-  const ratio = window.devicePixelRatio || 1, r = ratio * (moving ? pacer.scale() : 1);
-  const full = [Math.max(1, Math.round(width * ratio)), Math.max(1, Math.round(height * ratio))];
-  draft.draw(cam, Math.max(1, Math.round(width * r)), Math.max(1, Math.round(height * r)), r, full);
+  // at the screen's pixel ratio (sharp on a 2x screen), smaller while moving
+  const r = (window.devicePixelRatio || 1) * (moving ? pacer.scale() : 1);
+  draft.draw(cam, Math.max(1, Math.round(width * r)), Math.max(1, Math.round(height * r)), r);
   pacer.shown(performance.now(), moving);
   root.dataset.framesShown = String(+root.dataset.framesShown + 1);
 }

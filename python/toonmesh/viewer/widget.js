@@ -94,11 +94,9 @@ function render({ model, el }) {
     canvas.style.width = w + "px";
     canvas.style.height = h + "px";
     if (!pacer) pacer = draftPacer(model.get("_moves").drag_scale);
-    // drawn smaller while moving, as the kernel's drafts, at the kernel frames' pixel ratio,
-    // and shown scaled on a canvas of the full frame's pixels (never resized during a drag)
-    const ratio = model.get("_layout").ratio, s = pacer.scale(), r = ratio * s;
-    const full = [Math.max(1, Math.round(w * ratio)), Math.max(1, Math.round(h * ratio))];
-    draft.draw(cam, Math.max(1, Math.round(w * r)), Math.max(1, Math.round(h * r)), r, full);
+    // drawn smaller while moving, as the kernel's drafts, at the kernel frames' pixel ratio
+    const s = pacer.scale(), r = model.get("_layout").ratio * s;
+    draft.draw(cam, Math.max(1, Math.round(w * r)), Math.max(1, Math.round(h * r)), r);
     pacer.shown(performance.now(), !!drag);
     canvas.style.visibility = "visible";
     img.style.opacity = "0";  // not composited under the draft (opacity keeps its pointer events)
