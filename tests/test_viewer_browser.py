@@ -1,8 +1,8 @@
 """toonmesh.Viewer in a real browser: a JupyterLab server and headless Chromium (Debian's
 ``chromium``, installed by scripts/system-deps.sh) driven through Playwright.
 
-The test opens a notebook that shows a viewer of the bunny (its renders slowed down by 0.2 s,
-so that pointer moves come faster than frames), runs it and checks the view's habits: the
+The test opens a notebook that shows a viewer of the bunny (ink of both kinds; its renders
+slowed down by 0.2 s, so that pointer moves come faster than frames), runs it and checks the view's habits: the
 context menu is suppressed, the wheel does nothing before the view has focus. It drags across
 the frame and checks that the picture changed, that the kernel sent new frames (the frame
 numbers come from the kernel), that the frames drawn while dragging were drafts drawn in the
@@ -14,9 +14,13 @@ kernel's camera is the whole drag's). Then it turns the wheel and checks that th
 switches the outlines off with the on-screen controls and checks that the ink went, presses
 the toolbar's +x and home buttons and checks the kernel's camera, downloads the screenshot and
 compares it with the kernel's frame, goes full screen and back, turns the view with the
-auto-rotate button and stops it (the exact frame shows the turned view), sends a frame made for an old
+auto-rotate button and stops it (the exact frame shows the turned view), loses the WebGL context
+(the kernel draws the drafts) and gets it back, sends a frame made for an old
 view and checks that it is dropped, and closes the viewer: the view and its controls go, and
 using it raises an error that says it is closed.
+What the screen shows is judged by screenshots of the view against the exact frame of the same
+view (covered and ink pixels): mid-drag (the pointer held; the exact frame then follows with it
+still held), while the view turns, and mid-drag once the lost context is back.
 With TOONMESH_SCREENSHOT=1 it also writes the screenshot the viewer's page shows (docs/viewer.png:
 the viewer and its controls after the drag and the wheel turn).
 """

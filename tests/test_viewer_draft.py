@@ -12,6 +12,8 @@ the page shows the draft's pixels as they are (a screenshot of the canvas), and 
 leaves to the exact frame is named in the page's tooltip. A draft at a quarter of the size draws
 the core's coarse copy of the mesh (a tenth of its faces) and keeps the picture: within 8
 levels of the exact frame at that size, up to a pixel, on at least 93% of the covered pixels.
+Screenshots of the page show the model and its ink during a drag (the pointer held) and after
+it, and the page draws again once a lost WebGL context is given back.
 """
 
 from __future__ import annotations
