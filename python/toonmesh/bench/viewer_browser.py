@@ -183,7 +183,7 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
                      ("plain banded WebGL2 program", plain_row)):
         size = "-" if r["scale"] is None else f"{round(SIZE * r['scale'])}"
         rows.append((label, size, round(r["fps"] or 0.0, 1), f"{100 * (r['fps'] or 0.0) / base:.0f}%",
-                     f"{100 * r['screen']:.0f}%", r["hidden"], fmt(r["delay"], " ms"), fmt(r["exact"], " ms")))
+                     f"{100 * (r['screen'] or 0.0):.0f}%", r["hidden"], fmt(r["delay"], " ms"), fmt(r["exact"], " ms")))
     title = (f"The viewer during a {DRAG_SECONDS:g} s drag at {HZ} Hz: the bunny ({len(F):,} faces) at "
              f"{SIZE}x{SIZE} with ink, JupyterLab in headless Chromium")
     print(table(("view", "drawn at", "fps", "of plain", "on screen", "not shown", "event to frame (median)",
