@@ -148,3 +148,10 @@ def pytest_terminal_summary(terminalreporter: Any) -> None:
         if backend in _BACKEND_STATE:
             problem, adapter = _BACKEND_STATE[backend]
             terminalreporter.write_line(f"{backend}: " + (f"ran on {adapter}" if problem is None else f"SKIPPED: {problem}"))
+
+
+# What a view shows on screen against the exact frame of the same view, and screenshots taken
+# mid-drag (the browser tests; the viewer_browser benchmark reads the screen with the same).
+from toonmesh.bench._screen import pixels as screen_pixels  # noqa: E402,F401
+from toonmesh.bench._screen import screenshot_mid_drag  # noqa: E402,F401
+from toonmesh.bench._screen import shares as screen_shares  # noqa: E402,F401

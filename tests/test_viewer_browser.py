@@ -1,8 +1,8 @@
 """toonmesh.Viewer in a real browser: a JupyterLab server and headless Chromium (Debian's
 ``chromium``, installed by scripts/system-deps.sh) driven through Playwright.
 
-The test opens a notebook that shows a viewer of the bunny (its renders slowed down by 0.2 s,
-so that pointer moves come faster than frames), runs it and checks the view's habits: the
+The test opens a notebook that shows a viewer of the bunny (ink of both kinds; its renders
+slowed down by 0.2 s, so that pointer moves come faster than frames), runs it and checks the view's habits: the
 context menu is suppressed, the wheel does nothing before the view has focus. It drags across
 the frame and checks that the picture changed, that the kernel sent new frames (the frame
 numbers come from the kernel), that the frames drawn while dragging were drafts drawn in the
@@ -14,13 +14,17 @@ kernel's camera is the whole drag's). Then it turns the wheel and checks that th
 switches the outlines off with the on-screen controls and checks that the ink went, presses
 the toolbar's +x and home buttons and checks the kernel's camera, downloads the screenshot and
 compares it with the kernel's frame, goes full screen and back, turns the view with the
-auto-rotate button and stops it (the exact frame shows the turned view), sends a frame made for an old
+auto-rotate button and stops it (the exact frame shows the turned view), loses the WebGL context
+(the kernel draws the drafts) and gets it back, sends a frame made for an old
 view and checks that it is dropped, and closes the viewer: the view and its controls go, and
 using it raises an error that says it is closed.
 The toolbar's triad turns with the drag (its screenshot changes); the projection toggle shows an
 orthographic frame that differs from the perspective one, and toggled back the perspective one
 again; a triad label views from its axis. A second viewer, of two bunnies, lists its parts:
 unticking one removes its pixels from the frame (and from the draft drawn here).
+What the screen shows is judged by screenshots of the view against the exact frame of the same
+view (covered and ink pixels): mid-drag (the pointer held; the exact frame then follows with it
+still held), while the view turns, and mid-drag once the lost context is back.
 With TOONMESH_SCREENSHOT=1 it also writes the screenshot the viewer's page shows (docs/viewer.png:
 the viewer and its controls after the drag and the wheel turn).
 """
@@ -37,7 +41,7 @@ from typing import Iterator, List
 import numpy as np
 import pytest
 
-from conftest import chromium, need
+from conftest import chromium, need, screen_shares, screenshot_mid_drag
 from toonmesh.bench._lab import open_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -54,7 +58,7 @@ CELLS = [
     "\n"
     "V, F = bunny()\n"
     "blue = tm.Material.bands('#4f8fd8')\n"
-    "v = tm.Viewer(V, F, material=blue, outlines='mesh', width=480, height=360, controls=True)\n"
+    "v = tm.Viewer(V, F, material=blue, outlines='both', width=480, height=360, controls=True)\n"
     "_show = v._show\n"
     "def slow(draft):  # frames slower than the pointer's moves\n"
     "    time.sleep(0.2)\n"
@@ -63,7 +67,7 @@ CELLS = [
     "v",
     # after the drag: the kernel's counts, and its camera against the whole drag at once
     "del v._show\n"
-    "same = tm.Viewer(V, F, material=blue, outlines='mesh', width=480, height=360)\n"
+    "same = tm.Viewer(V, F, material=blue, outlines='both', width=480, height=360)\n"
     f"same.orbit({DRAG_STEPS * DRAG_DX}, {DRAG_STEPS * DRAG_DY})\n"
     "off = float(np.abs(np.subtract(v.camera.eye, same.camera.eye)).max())\n"
     "same.close()\n"
@@ -201,6 +205,15 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             for i in range(1, DRAG_STEPS + 1):
                 page.mouse.move(x + DRAG_DX * i, y + DRAG_DY * i)
                 page.wait_for_timeout(30)
+                if i == DRAG_STEPS // 2:
+                    # what the screen shows mid-drag (the pointer held; a draft: the kernel's frame
+                    # is not shown until the pointer stops), then, the pointer still held, the
+                    # exact frame of the same view
+                    mid_drag = _pixels(screenshot_mid_drag(page, img, ".toonmesh-viewer img", x + DRAG_DX * i,
+                                                           y + DRAG_DY * i))
+                    mid_marks = (viewer.get_attribute("data-exact"), viewer.get_attribute("data-draft-scale"))
+                    _wait_exact_after(page, int(viewer.get_attribute("data-frames-shown")))
+                    held = _pixels(img.screenshot())
             page.mouse.up()
             # The full-size frame follows the release; wait until it has been shown.
             _wait_exact_after(page, shown)
@@ -292,6 +305,8 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             viewer.locator(".toonmesh-spin").click()
             page.wait_for_function("(n) => +document.querySelector('.toonmesh-viewer').dataset.framesShown > n + 5",
                                    arg=shown, timeout=20_000)
+            spin_shot = _pixels(img.screenshot())  # what the screen shows while it turns: a draft
+            spin_exact_mark = viewer.get_attribute("data-exact")
             spinning = viewer.get_attribute("data-spinning")
             viewer.locator(".toonmesh-spin").click()
             shown = int(viewer.get_attribute("data-frames-shown"))
@@ -299,6 +314,31 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             page.wait_for_timeout(300)
             after_spin = _pixels(img.screenshot())
             stopped = viewer.get_attribute("data-spinning")
+
+            # a lost WebGL context: the kernel draws the drafts until the browser gives it back; then
+            # the drafts are drawn here again and reach the screen
+            viewer.evaluate("r => { window.__lose = r.toonmeshDraft.gl.getExtension('WEBGL_lose_context');"
+                            " window.__lose.loseContext(); }")
+            page.wait_for_function("document.querySelector('.toonmesh-viewer').dataset.draft === 'kernel'",
+                                   timeout=10_000)
+            lost_title = viewer.get_attribute("title")
+            page.evaluate("window.__lose.restoreContext()")
+            page.wait_for_function("document.querySelector('.toonmesh-viewer').dataset.draft === 'webgl'",
+                                   timeout=10_000)
+            img.scroll_into_view_if_needed()
+            box = img.bounding_box()
+            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+            page.mouse.move(x, y)
+            page.mouse.down()
+            for i in range(1, 5):
+                page.mouse.move(x - 10 * i, y)
+                page.wait_for_timeout(30)
+            restored_shot = _pixels(screenshot_mid_drag(page, img, ".toonmesh-viewer img", x - 40, y))
+            restored_mark = viewer.get_attribute("data-exact")
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            page.mouse.up()
+            _wait_exact_after(page, shown)
+            restored_shares = screen_shares(restored_shot, _pixels(img.screenshot()))
 
             # a frame made for an older view than the one shown is dropped
             shown = int(viewer.get_attribute("data-frames-shown"))
@@ -352,6 +392,10 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     assert toolbar == {"home": 1, "axes": ["+x", "-x", "+y", "-y", "+z", "-z"], "screenshot": 1, "fullscreen": 1,
                        "spin": 1, "projection": "perspective", "parts": False, "suppress": "", "tabindex": "0"}, toolbar
     assert spinning == "1" and stopped == "0", (spinning, stopped)
+    # the screen showed the turning view's drafts: the model as the exact frame of the view it
+    # stopped at (a few degrees on) shows it (the outlines are off by then: no ink to compare)
+    spin_shares = screen_shares(spin_shot, after_spin)
+    assert spin_exact_mark == "0" and spin_shares[0] >= 0.8, (spin_exact_mark, spin_shares)
     assert (np.abs(before_spin - after_spin).max(axis=2) > 24).mean() > 0.02  # it turned
     assert menu_prevented and jupyter_menus == 0, (menu_prevented, jupyter_menus)
     assert unfocused_frames == 0 and unfocused_views == 0, (unfocused_frames, unfocused_views)
@@ -363,6 +407,11 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     # the drafts were drawn in the browser by WebGL2 (no kernel drafts: every kernel frame is full
     # size), saying what they leave to the exact frame (the mesh-space lines)
     assert draft_mode == "webgl" and drawn_here, (draft_mode, drawn_here, title)
+    # mid-drag the screen showed a draft (smaller than the view) with the model and its ink as
+    # the exact frame of the same view shows them
+    mid_shares = screen_shares(mid_drag, held)
+    assert mid_marks[0] == "0" and float(mid_marks[1]) < 1, mid_marks
+    assert mid_shares[0] >= 0.8 and mid_shares[1] >= 0.5, mid_shares
     assert "WebGL2" in title and "left to the exact frame: mesh-space lines" in title, title
     assert sizes and set(sizes) == {480}, sizes
     assert "0" in exact_marks and exact_marks[-1] == "1", exact_marks  # a draft shown, then the exact frame
@@ -390,6 +439,8 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     shot = np.asarray(__import__("PIL.Image", fromlist=["Image"]).open(tmp_path / "screenshot.png"))
     np.testing.assert_array_equal(shot, np.load(work / "frame.npy"))  # the kernel's exact frame, as it is
 
+    assert "the WebGL context was lost" in lost_title, lost_title
+    assert restored_mark == "0" and restored_shares[0] >= 0.8, (restored_mark, restored_shares)
     assert stale_shown == 0, stale_shown
     assert "ViewerClosedError" in closed_error and "closed" in closed_error.split("ViewerClosedError", 1)[1], closed_error
     assert controls_left == 0

@@ -12,6 +12,8 @@ the page shows the draft's pixels as they are (a screenshot of the canvas), and 
 leaves to the exact frame is named in the page's tooltip. A draft at a quarter of the size draws
 the core's coarse copy of the mesh (a tenth of its faces) and keeps the picture: within 8
 levels of the exact frame at that size, up to a pixel, on at least 93% of the covered pixels.
+Screenshots of the page show the model and its ink during a drag (the pointer held) and after
+it, and the page draws again once a lost WebGL context is given back.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
-from conftest import RENDER_BACKENDS, chromium, need
+from conftest import RENDER_BACKENDS, chromium, need, screen_pixels, screen_shares, screenshot_mid_drag
 from toonmesh.data import bunny
 
 SIZE = (320, 240)
@@ -223,6 +225,58 @@ def test_the_page_draws_orbits_and_names_what_the_draft_leaves_out(browser, tmp_
     moved = _draft(page)
     assert (np.abs(moved.astype(int) - first.astype(int)).max(-1) > 24).mean() > 0.02
     page.close()
+
+
+def test_the_page_shows_the_model_on_screen_during_and_after_a_drag(browser, tmp_path):
+    page, exact, _ = _page_of(browser, tmp_path, "screen", outlines="image")
+    canvas = page.locator("canvas")
+    loaded = screen_shares(screen_pixels(canvas.screenshot()), exact)
+    box = canvas.bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    during = []
+    for i in range(1, 13):  # the pointer held: a screenshot after every fourth move
+        page.mouse.move(x + 6 * i, y + 2 * i)
+        page.wait_for_timeout(30)
+        if i % 4 == 0:
+            shot = screen_pixels(screenshot_mid_drag(page, canvas, "canvas", x + 6 * i, y + 2 * i))
+            # a draft of the moving view (smaller than the view), shown at the view's size
+            small = page.evaluate("window.toonmeshDraft.renderer.pixels().width") < SIZE[0]
+            during.append((screen_shares(shot, exact), small, shot.shape[:2]))
+    page.mouse.up()
+    page.wait_for_timeout(500)  # settled: the full-size draft
+    full = page.evaluate("window.toonmeshDraft.renderer.pixels().width") == SIZE[0]
+    after = screen_shares(screen_pixels(canvas.screenshot()), exact)
+    page.close()
+    assert full
+    figures = {"loaded": loaded, "during": [d[0] for d in during], "after": after}  # (covered, ink) shares
+    assert loaded[0] >= 0.95, figures
+    for shares, small, shape in during:
+        assert small and shape == (SIZE[1], SIZE[0]), (small, shape)
+    # the view turned by a few degrees: most of the model and its ink in every screenshot
+    assert all(c >= 0.6 and i >= 0.3 for c, i in figures["during"] + [after]), figures
+
+
+def test_the_page_draws_again_once_a_lost_webgl_context_is_restored(browser, tmp_path):
+    page, exact, _ = _page_of(browser, tmp_path, "lost", outlines="image")
+    root, canvas = page.locator(".toonmesh-viewer"), page.locator("canvas")
+    page.evaluate("window.__lose = window.toonmeshDraft.renderer.gl.getExtension('WEBGL_lose_context');"
+                  " window.__lose.loseContext()")
+    page.wait_for_function("document.querySelector('.toonmesh-viewer').dataset.error !== undefined", timeout=10_000)
+    lost = (root.get_attribute("data-error"), root.get_attribute("title"))
+    shown = int(root.get_attribute("data-frames-shown"))
+    page.evaluate("window.__lose.restoreContext()")
+    page.wait_for_function("(n) => { const r = document.querySelector('.toonmesh-viewer');"
+                           " return r.dataset.error === undefined && +r.dataset.framesShown > n; }", arg=shown,
+                           timeout=10_000)
+    page.wait_for_timeout(200)
+    shares = screen_shares(screen_pixels(canvas.screenshot()), exact)
+    title = root.get_attribute("title")
+    page.close()
+    assert lost[0] == "the WebGL context was lost" and lost[1].startswith("WebGL2 drafts failed"), lost
+    assert "drafts drawn in WebGL2" in title, title
+    assert shares[0] >= 0.95 and shares[1] >= 0.9, shares  # the renderer made again: the view as before
 
 
 def test_to_html_refuses_a_path_that_is_not_one():

@@ -15,6 +15,15 @@ Each row: the frames shown per second during the drag, the share of the plain pr
 median delay from a pointer event to the frame that shows it (the drafts and the plain program),
 and the time from the release to the exact frame (the viewer). Headless Chromium draws WebGL2
 through SwiftShader on the CPU: on a machine with a GPU the browser draws at the display's rate.
+
+A frame counts only where it reached the screen. The page counts a frame of the viewer only
+while it is shown as the user sees it (``viewer_browser_watch.js``: a draft's canvas visible and
+laid out over the view at its full size; a kernel's frame in the opaque image at full size), and
+after the timed drag a second drag checks what the screen shows: a screenshot of the view taken
+with the pointer held and moving, against a screenshot of the exact frame of the same view (for
+the plain program, its still frame after the release). Where that screenshot shows less than 80%
+of the covered pixels, the row's frames did not reach the screen: its rate is 0. The table gives
+that share ("on screen") and the frames counted by the viewer but not shown ("not shown").
 """
 
 from __future__ import annotations
@@ -29,10 +38,12 @@ from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
+from toonmesh.bench._screen import pixels, screenshot_mid_drag, script, shares
 from toonmesh.bench._timing import table
 
 SIZE = 512
 DRAG_SECONDS, HZ = 2.0, 60
+ON_SCREEN = 0.8  # the least share of the exact frame's covered pixels a mid-drag screenshot shows
 
 CELL = (
     "import toonmesh as tm\n"
@@ -44,89 +55,6 @@ CELL = (
     f"k = KernelDrafts(V, F, outlines='both', width={SIZE}, height={SIZE})\n"
     "display(v, k)"
 )
-
-# Records, in the page, when each frame is shown and when the pointer is released and the exact
-# frame follows (the viewers' data-frames-shown and data-exact).
-_WATCH = """(i) => {
-  const root = document.querySelectorAll('.toonmesh-viewer')[i];
-  const w = window.__watch = { shown: [], up: null, exact: null };
-  new MutationObserver(() => {
-    const n = +root.dataset.framesShown, now = performance.now();
-    if (n !== w.last) { w.last = n; w.shown.push(now); }
-    if (w.up !== null && w.exact === null && root.dataset.exact === '1' && root.dataset.busy === '0') w.exact = now;
-  }).observe(root, { attributes: true });
-  root.addEventListener('pointerup', () => { w.up = performance.now(); }, true);
-}"""
-
-# The yardstick: the mesh drawn by a banded program written here, on a canvas over the viewers'
-# page (the same page, so that the browser composites as much for each), one draw per animation
-# frame with a move, counted as the viewer counts its frames.
-_PLAIN = """([size, positions, normals, faces]) => {
-const canvas = document.createElement('canvas');
-canvas.width = canvas.height = size;
-canvas.style.cssText = `position: fixed; left: 0; top: 0; z-index: 10000; width: ${size}px; height: ${size}px`;
-document.body.appendChild(canvas);
-const gl = canvas.getContext('webgl2', { antialias: false });
-const bytes = (s) => Uint8Array.from(atob(s), (c) => c.charCodeAt(0)).buffer;
-const P = new Float32Array(bytes(positions)), N = new Float32Array(bytes(normals));
-const I = new Uint32Array(bytes(faces));
-const vs = `#version 300 es
-layout(location = 0) in vec3 p; layout(location = 1) in vec3 n;
-uniform mat4 mvp; uniform mat3 nm; out vec3 vn;
-void main() { vn = nm * n; gl_Position = mvp * vec4(p, 1.0); }`;
-const fs = `#version 300 es
-precision highp float; in vec3 vn; out vec4 color;
-void main() {
-  float d = max(dot(normalize(vn), normalize(vec3(0.3, 0.5, 1.0))), 0.0);
-  float b = d > 0.7 ? 1.0 : d > 0.3 ? 0.7 : 0.4;
-  color = vec4(vec3(0.95, 0.55, 0.25) * b, 1.0);
-}`;
-function sh(t, s) { const x = gl.createShader(t); gl.shaderSource(x, s); gl.compileShader(x); return x; }
-const prog = gl.createProgram();
-gl.attachShader(prog, sh(gl.VERTEX_SHADER, vs)); gl.attachShader(prog, sh(gl.FRAGMENT_SHADER, fs));
-gl.linkProgram(prog); gl.useProgram(prog);
-for (const [loc, data] of [[0, P], [1, N]]) {
-  gl.bindBuffer(gl.ARRAY_BUFFER, gl.createBuffer()); gl.bufferData(gl.ARRAY_BUFFER, data, gl.STATIC_DRAW);
-  gl.enableVertexAttribArray(loc); gl.vertexAttribPointer(loc, 3, gl.FLOAT, false, 0, 0);
-}
-gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gl.createBuffer()); gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, I, gl.STATIC_DRAW);
-gl.enable(gl.DEPTH_TEST);
-let yaw = 0, pitch = 0.3, wanted = false, lastEvent = 0;
-const w = window.__watch = { shown: [], delays: [] };
-function draw() {
-  wanted = false;
-  const cy = Math.cos(yaw), sy = Math.sin(yaw), cp = Math.cos(pitch), sp = Math.sin(pitch);
-  const r = [cy, sy * sp, -sy * cp, 0, cp, sp, sy, -cy * sp, cy * cp];  // column-major rotation
-  // perspective (GL's depth) of the mesh 3 units in front of the eye, turned by r
-  const f = 1 / Math.tan(0.35), n = 1, far = 5, A = (far + n) / (n - far), B = 2 * far * n / (n - far);
-  const mvp = new Float32Array(16);
-  for (let c = 0; c < 3; c++) {
-    mvp[c * 4] = f * r[c * 3]; mvp[c * 4 + 1] = f * r[c * 3 + 1];
-    mvp[c * 4 + 2] = A * r[c * 3 + 2]; mvp[c * 4 + 3] = -r[c * 3 + 2];
-  }
-  mvp[14] = -3 * A + B; mvp[15] = 3;
-  gl.uniformMatrix4fv(gl.getUniformLocation(prog, 'mvp'), false, mvp);
-  gl.uniformMatrix3fv(gl.getUniformLocation(prog, 'nm'), false, new Float32Array(r));
-  gl.clearColor(1, 1, 1, 1); gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-  gl.drawElements(gl.TRIANGLES, I.length, gl.UNSIGNED_INT, 0);
-  const now = performance.now();
-  w.shown.push(now);
-  if (lastEvent) { const since = lastEvent; lastEvent = 0; requestAnimationFrame(() => w.delays.push(performance.now() - since)); }
-}
-let drag = null;
-canvas.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
-canvas.addEventListener('pointermove', (e) => {
-  if (!drag) return;
-  yaw += (e.clientX - drag[0]) * Math.PI / size; pitch += (e.clientY - drag[1]) * Math.PI / size;
-  drag = [e.clientX, e.clientY];
-  if (!lastEvent) lastEvent = e.timeStamp;
-  if (!wanted) { wanted = true; requestAnimationFrame(draw); }
-});
-canvas.addEventListener('pointerup', () => { drag = null; });
-draw();
-}
-"""
-
 
 def _plain_arguments(V: np.ndarray, F: np.ndarray) -> List[Any]:
     """The yardstick's mesh: centred and scaled into the unit sphere, smooth normals, base64."""
@@ -164,18 +92,59 @@ def _rate(shown: List[float], start: float) -> float:
     return len(during) / DRAG_SECONDS
 
 
+_EXACT_AFTER = ("([i, n]) => { const r = document.querySelectorAll('.toonmesh-viewer')[i];"
+                " return +r.dataset.framesShown > n && r.dataset.exact === '1' && r.dataset.busy === '0'; }")
+
+
+def _on_screen(page: Any, view: Any, target: str, index: int, x: float, y: float, still: Any) -> float:
+    """What the screen shows of a drag on ``view`` (a locator) from (x, y) on ``target`` (its
+    ``index``-th match): a screenshot with the pointer held and moving, as a share of the covered
+    pixels of a screenshot of the same view once it is still (``still()`` waits for it: the pointer
+    still held)."""
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for i in range(1, 9):
+        page.mouse.move(x + 5 * i, y)
+        page.wait_for_timeout(20)
+    moving = pixels(screenshot_mid_drag(page, view, target, x + 40, y, index))
+    still()
+    exact = pixels(view.screenshot())
+    page.mouse.up()
+    return shares(moving, exact)[0]
+
+
 def _viewer_row(page: Any, i: int) -> Dict[str, Optional[float]]:
     root = page.locator(".toonmesh-viewer").nth(i)
     root.scroll_into_view_if_needed()
-    box = root.locator("img").bounding_box()
-    page.evaluate(_WATCH, i)
+    img = root.locator("img")
+    box = img.bounding_box()
+    page.evaluate(script("viewer_browser_watch.js"), i)
     start = _drag(page, box["x"] + box["width"] / 2 - 75, box["y"] + box["height"] / 2)
     page.wait_for_function("window.__watch.exact !== null", timeout=30_000)
     w = page.evaluate("window.__watch")
     delays = root.evaluate("r => r.toonmeshEventDelays || []")
     scale = root.get_attribute("data-draft-scale")
-    return {"fps": _rate(w["shown"], start), "delay": statistics.median(delays) if delays else None,
-            "exact": w["exact"] - w["up"], "scale": None if scale is None else float(scale)}
+
+    def still() -> None:  # the exact frame of the view where the pointer stopped
+        page.wait_for_function(_EXACT_AFTER, arg=[i, int(root.get_attribute("data-frames-shown"))], timeout=30_000)
+
+    screen = _on_screen(page, img, ".toonmesh-viewer img", i, box["x"] + box["width"] / 2 - 20,
+                        box["y"] + box["height"] / 2, still)
+    page.wait_for_function(_EXACT_AFTER, arg=[i, -1], timeout=30_000)
+    return {"fps": _rate(w["shown"], start) if screen >= ON_SCREEN else 0.0, "hidden": w["hidden"],
+            "delay": statistics.median(delays) if delays else None, "exact": w["exact"] - w["up"],
+            "scale": None if scale is None else float(scale), "screen": screen}
+
+
+def _plain_row(page: Any, V: np.ndarray, F: np.ndarray) -> Dict[str, Optional[float]]:
+    page.evaluate(script("viewer_browser_plain.js"), _plain_arguments(V, F))
+    page.wait_for_timeout(500)
+    start = _drag(page, SIZE / 2 - 75, SIZE / 2)
+    w = page.evaluate("window.__watch")
+    screen = _on_screen(page, page.locator(".bench-plain"), ".bench-plain", 0, SIZE / 2 - 20, SIZE / 2,
+                        lambda: page.wait_for_timeout(300))
+    return {"fps": _rate(w["shown"], start) if screen >= ON_SCREEN else 0.0, "hidden": 0,
+            "delay": statistics.median(w["delays"]), "exact": None, "scale": 1.0, "screen": screen}
 
 
 def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
@@ -204,12 +173,7 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
             browser_drafts = _viewer_row(page, 0)
             page.wait_for_timeout(500)
             kernel_drafts = _viewer_row(page, 1)
-            page.evaluate(_PLAIN, _plain_arguments(V, F))
-            page.wait_for_timeout(500)
-            start = _drag(page, SIZE / 2 - 75, SIZE / 2)
-            w = page.evaluate("window.__watch")
-            plain_row = {"fps": _rate(w["shown"], start), "delay": statistics.median(w["delays"]), "exact": None,
-                         "scale": 1.0}
+            plain_row = _plain_row(page, V, F)
         finally:
             browser.close()
     base = plain_row["fps"] or float("nan")
@@ -219,10 +183,11 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
                      ("plain banded WebGL2 program", plain_row)):
         size = "-" if r["scale"] is None else f"{round(SIZE * r['scale'])}"
         rows.append((label, size, round(r["fps"] or 0.0, 1), f"{100 * (r['fps'] or 0.0) / base:.0f}%",
-                     fmt(r["delay"], " ms"), fmt(r["exact"], " ms")))
+                     f"{100 * (r['screen'] or 0.0):.0f}%", r["hidden"], fmt(r["delay"], " ms"), fmt(r["exact"], " ms")))
     title = (f"The viewer during a {DRAG_SECONDS:g} s drag at {HZ} Hz: the bunny ({len(F):,} faces) at "
              f"{SIZE}x{SIZE} with ink, JupyterLab in headless Chromium")
-    print(table(("view", "drawn at", "fps", "of plain", "event to frame (median)", "release to exact"), rows, title))
+    print(table(("view", "drawn at", "fps", "of plain", "on screen", "not shown", "event to frame (median)",
+                 "release to exact"), rows, title))
     ratio = (browser_drafts["fps"] or 0.0) / max(kernel_drafts["fps"] or 0.0, 1e-9)
     print(f"browser drafts / kernel drafts: {ratio:.1f}x")
 

@@ -191,6 +191,9 @@ function createDraft(canvas, spec, blob) {
   }
   function free() {
     if (!targets) return;
+    // unbound first: Chromium, deleting the framebuffer still bound for reading (the last
+    // draft's blit source), loses track of the canvas's own, and shows it blank from then on
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     for (const t of [targets.color, targets.geometry, targets.edgeBits, targets.present]) if (t) gl.deleteTexture(t);
     for (const f of [targets.shade, targets.edgeBitsFbo, targets.ink, targets.presentFbo]) if (f) gl.deleteFramebuffer(f);
     gl.deleteRenderbuffer(targets.depth);
@@ -352,6 +355,14 @@ function createDraft(canvas, spec, blob) {
   }
 
   return { draw, pixels, leftToExact: spec.left_to_exact, gl, drawnFaces: () => lastFaces };
+}
+
+// Watches `canvas`'s WebGL context: `lost()` when the browser takes it away (the draft renderer
+// on it is gone: draw as when WebGL2 fails), `restored()` when it gives it back (make the
+// renderer again, on the same canvas).
+function draftContextWatch(canvas, lost, restored) {
+  canvas.addEventListener("webglcontextlost", (e) => { e.preventDefault(); lost(); });  // else never restored
+  canvas.addEventListener("webglcontextrestored", () => restored());
 }
 
 // The size drafts are drawn at while the view moves, as a share of the full size: at most

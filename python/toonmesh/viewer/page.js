@@ -9,14 +9,25 @@ canvas.style.width = width + "px"; canvas.style.height = height + "px";
 const home = draftCamera(data.camera);
 let cam = draftCamera(home), draft = null, wanted = false, moving = false, settle = null;
 const pacer = draftPacer(data.moves.drag_scale);
-try {
-  draft = createDraft(canvas, JSON.parse(data.spec), blob);
-  root.title = "drag to orbit, shift-drag to pan, wheel or pinch to zoom, two fingers to pan, double-click for the first view; "
-    + "drafts drawn in WebGL2 from toonmesh's shaders; " + draftNote(draft.leftToExact);
-} catch (e) {
-  root.dataset.error = String(e.message || e);
-  root.title = "WebGL2 drafts failed: " + root.dataset.error;
+const TITLE = "drag to orbit, shift-drag to pan, wheel or pinch to zoom, two fingers to pan, double-click for the first view; ";
+function failed(why) {
+  draft = null;
+  root.dataset.error = why;
+  root.title = "WebGL2 drafts failed: " + why;
 }
+function load() {
+  try {
+    draft = createDraft(canvas, JSON.parse(data.spec), blob);
+    delete root.dataset.error;
+    root.title = TITLE + "drafts drawn in WebGL2 from toonmesh's shaders; " + draftNote(draft.leftToExact);
+  } catch (e) {
+    failed(String(e.message || e));
+  }
+  if (window.toonmeshDraft) window.toonmeshDraft.renderer = draft;
+}
+load();
+// a lost WebGL context: nothing drawn until the browser gives it back, then the renderer anew
+draftContextWatch(canvas, () => failed("the WebGL context was lost"), () => { load(); ask(); });
 // while the view moves, drafts at the viewer's drag_scale of the size; full size once it stops
 function frame() {
   wanted = false;

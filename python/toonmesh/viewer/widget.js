@@ -115,6 +115,15 @@ function render({ model, el }) {
   Object.defineProperty(root, "toonmeshEventDelays", { get: () => eventDelays.slice() });
   Object.defineProperty(root, "toonmeshDraft", { get: () => draft });  // its pixels(), for tests
   model.on("change:_draft_spec", loadDraft);
+  // a lost WebGL context: the kernel draws the drafts until the browser gives it back
+  draftContextWatch(canvas, () => {
+    draft = null;
+    cam = null;  // the kernel's camera, where the next move starts
+    canvas.style.visibility = "hidden";
+    img.style.opacity = "1";
+    root.dataset.draft = "kernel";
+    root.title = KERNEL_DRAFTS + " (the WebGL context was lost)";
+  }, loadDraft);
   model.on("change:_moves", () => { pacer = null; });  // a new drag_scale paces the next drafts
   loadDraft();
 
