@@ -187,15 +187,22 @@ def test_band_sliders_cannot_cross(mesh):
     v = _viewer(mesh, material=tm.Material.bands(thresholds=[0.2, 0.5, 0.7, 0.9]))
     panel = v._controls
     sliders = [panel.widgets[f"material.thresholds[{i}]"] for i in range(4)]
-    for a, b in zip(sliders, sliders[1:]):
-        assert a.max < b.value and b.min > a.value
-    sliders[0].value = 0.95  # past its neighbour: the slider stops short of it
+    bounds = [(s.min, s.max) for s in sliders]
+    assert set(bounds) == {(0.0, 1.0)}, bounds  # one fixed range: a 0.70 handle never sits left of a 0.55 one
+    sliders[0].value = 0.95  # past its neighbour: the handle stops a step short of it
+    assert v.material.thresholds[0] == pytest.approx(0.5 - sliders[0].step)
     sliders[3].value = 0.1
+    assert v.material.thresholds[3] == pytest.approx(0.7 + sliders[3].step)
+    sliders[1].value = 0.6  # between its neighbours: taken as it is
     thresholds = v.material.thresholds
+    assert thresholds == pytest.approx([0.49, 0.6, 0.7, 0.71]), thresholds
     assert all(x < y for x, y in zip(thresholds, thresholds[1:])), thresholds
-    assert thresholds[0] < 0.5 and thresholds[3] > 0.7
     assert [s.value for s in sliders] == pytest.approx(thresholds)
+    assert [(s.min, s.max) for s in sliders] == bounds  # the ranges stayed put
     assert panel.note.value == "" and v.widget._error == ""
+    # the render is valid: the frame shown is tm.render's of these settings
+    np.testing.assert_array_equal(v.frame, tm.render(*mesh, **{k: getattr(v.options, k) for k in (
+        "material", "camera", "width", "height", "lights", "outlines")}).color)
     v.close()
 
 
