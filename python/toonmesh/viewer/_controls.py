@@ -54,7 +54,8 @@ class ControlPanel(Panel):
         self.sections: List[Tuple[Any, List[Control]]] = []
         self.accordions: Dict[str, Any] = {}
         for title, cls, controls in self._sections():
-            section = w.Accordion([_group([c.box for c in controls])], titles=(title,), tooltip=cls.describe()["help"],
+            # (no tooltip: on an Accordion or a box it breaks the view in JupyterLab; each control has its own)
+            section = w.Accordion([_group([c.box for c in controls])], titles=(title,),
                                   selected_index=0 if not self.sections else None,  # the first (the material's) open
                                   layout=w.Layout(width=_SECTION_WIDTH, flex="0 0 auto"))
             section.add_class("toonmesh-section")
