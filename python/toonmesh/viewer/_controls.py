@@ -10,6 +10,7 @@ dragging one never queues renders. Imported only where ipywidgets is installed."
 
 from __future__ import annotations
 
+import functools
 import html
 import weakref
 from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Tuple
@@ -87,13 +88,14 @@ class ControlPanel(Panel):
                             controls_for(self, light, Light, name.removesuffix("s"), directions=("direction",))))
             elif kind == "setting":
                 cls = getattr(_core, field["class"])
-                source = Source.whole(lambda name=name: getattr(viewer.options, name),
-                                      lambda value, name=name: viewer.set(**{name: value}))
+                read = functools.partial(_option, viewer, name)
+                write = functools.partial(_set_option, viewer, name)
+                source = Source.whole(read, write)
                 if field["optional"] and not _named_by_choice(name, cls):
                     switch = control_for(self, render, field, name)
                     out.append((name, cls, [switch] if switch is not None else []))
                 else:
-                    whole = (lambda value, name=name: viewer.set(**{name: value})) if field["optional"] else None
+                    whole = write if field["optional"] else None
                     only = _CAMERA_FIELDS if cls is Camera else None
                     out.append((name, cls, controls_for(self, source, cls, name, only=only, whole=whole)))
             elif name not in _FRAME_SIZE:
@@ -168,6 +170,14 @@ class ControlPanel(Panel):
                    if getattr(before, f["name"]) != getattr(now, f["name"])}
         if changed:
             self.viewer.set(**changed)
+
+
+def _option(viewer: Any, name: str) -> Any:
+    return getattr(viewer.options, name)
+
+
+def _set_option(viewer: Any, name: str, value: Any) -> None:
+    viewer.set(**{name: value})
 
 
 def _named_by_choice(name: str, cls: Any) -> bool:

@@ -322,8 +322,10 @@ class Viewer:
 
     Viewer options: ``controls=True`` shows ipywidgets controls beside the frame, one per field
     of the material, the first light, the outlines (and each line kind's style), the camera's
-    field of view and the render options, each following the core's description of the field
-    (its kind, bounds and choices) and showing the settings as they are now;
+    field of view, the paper and the other render options, in collapsible sections (the
+    material's open), each following the core's description of the field (its kind, bounds and
+    choices) and showing the settings as they are now (``controls`` is that column as a widget,
+    to place yourself);
     ``image_format`` of the full-size frames, ``"png"`` (default) or ``"jpeg"``; ``drag_scale``,
     the size of the frames drawn while the pointer moves, as a fraction of the full size
     (0.05 to 1, default 0.5; the browser draws them smaller where it cannot keep up, the kernel's
@@ -340,7 +342,9 @@ class Viewer:
     standalone page that orbits the scene in a browser (WebGL2, no kernel);
     :meth:`code` gives the ``tm.render(...)`` call that reproduces the view.
     :meth:`close` frees the viewer's meshes, render thread and front end (so does dropping the
-    last reference to it); a closed viewer raises :class:`ViewerClosedError` when used.
+    last reference to it once no view of it is on the page: a viewer displayed from a function
+    lives while its output is shown); a closed viewer raises :class:`ViewerClosedError` when used.
+    The view takes the keys while it has focus; Escape gives them back to the notebook.
     """
 
     # The render settings, each re-rendering when set (see toonmesh.RenderOptions for what each
