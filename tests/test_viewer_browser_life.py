@@ -2,7 +2,8 @@
 from a function lives while its output is on the page and is freed when the output is cleared or
 its cell runs again; Escape and a click on another cell give the notebook its keys back; the
 controls sit in collapsible sections, only the material's open, and the column is far shorter
-than the flat list it was (2,372 px for this viewer's settings)."""
+than the flat list it was (2,372 px for this viewer's settings); a threshold's handle dragged
+past its neighbour stops at it and the view shows the new bands."""
 
 from __future__ import annotations
 
@@ -108,6 +109,28 @@ def test_a_shown_view_lives_while_on_the_page_and_gives_keys_back(tmp_path):
                                      " const h = c.scrollHeight; c.style.maxHeight = m; return h; }")
             column.screenshot(path=str(tmp_path / "controls.png"))
 
+            # the first threshold's handle dragged to the far right, past the second: it stops at it
+            # (the readouts say so), and the view shows the new bands
+            readouts = [page.locator(f".toonmesh-material-thresholds-{i} .widget-readout") for i in range(4)]
+            thresholds_before = [r.inner_text() for r in readouts]
+            handle = page.locator(".toonmesh-material-thresholds-0 .noUi-handle")
+            track = page.locator(".toonmesh-material-thresholds-0 .noUi-target").bounding_box()
+            handle.scroll_into_view_if_needed()
+            hb = handle.bounding_box()
+            shown = int(viewer.get_attribute("data-frames-shown"))
+            before_bands = _pixels(img.screenshot())
+            page.mouse.move(hb["x"] + hb["width"] / 2, hb["y"] + hb["height"] / 2)
+            page.mouse.down()
+            page.mouse.move(track["x"] + track["width"] + 40, hb["y"] + hb["height"] / 2, steps=8)
+            page.mouse.up()
+            page.wait_for_function(
+                "(n) => { const r = document.querySelector('.toonmesh-viewer');"
+                " return +r.dataset.framesShown > n && r.dataset.exact === '1' && r.dataset.busy === '0'; }",
+                arg=shown, timeout=30_000)
+            page.wait_for_timeout(500)
+            thresholds_after = [r.inner_text() for r in readouts]
+            after_bands = _pixels(img.screenshot())
+
             # keys: Escape leaves the view, and the notebook's command mode takes "b" (a cell below)
             count = cells.count()
             img.click()
@@ -163,6 +186,10 @@ def test_a_shown_view_lives_while_on_the_page_and_gives_keys_back(tmp_path):
     assert names[0] == "material" and {"light", "outlines", "camera", "options"} <= set(names), names
     assert [is_open for _, is_open in sections] == [True] + [False] * (len(sections) - 1), sections
     assert height < FLAT_HEIGHT / 2, height
+    assert thresholds_before == ["0.20", "0.50", "0.70", "0.90"], thresholds_before
+    assert thresholds_after == ["0.49", "0.50", "0.70", "0.90"], thresholds_after  # stopped a step short
+    assert (np.abs(before_bands - after_bands).max(axis=2) > 24).mean() > 0.01  # the bands moved
+    assert (after_bands.min(axis=2) < 200).mean() > 0.1  # and the bunny is still drawn
     print("controls column", height, "px; as a flat list", FLAT_HEIGHT, "px")
 
     assert focused and count_in_view == count, (focused, count_in_view, count)
