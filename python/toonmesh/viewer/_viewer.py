@@ -82,9 +82,6 @@ _MOVES = {"orbit_per_height": _ORBIT_PER_HEIGHT, "wheel_zoom": _WHEEL_ZOOM, "pol
           "max_zoom": _MAX_ZOOM}
 #: The sides :meth:`Viewer.view_from` (and the toolbar's axis buttons) look from.
 AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
-# Seconds a viewer displayed in a kernel is held for its first view to be drawn: a front end
-# that never draws it (nbconvert, a console) lets it go after this, once another viewer is shown.
-_FIRST_VIEW_S = 60.0
 
 
 class ViewerClosedError(RuntimeError):
@@ -235,6 +232,11 @@ class _Shared:
         self.answered = 0  # the number of the latest view a frame or an error answered
         self.views = 0  # the views the browser sent
         self.early = 0  # the views that came before the last one was answered (the browser waits: 0)
+
+
+# Seconds a viewer displayed in a kernel is held for its first view to be drawn: a front end
+# that never draws it (nbconvert, a console) lets it go after this, once another viewer is shown.
+_FIRST_VIEW_S = 60.0
 
 
 class _Shown:
@@ -898,11 +900,12 @@ class Viewer:
         ...}``, as below) and a frame of the result is asked for, full size when ``exact``, else
         a draft. A single step alone: ``orbit``/``pan``/``zoom`` with ``dx``, ``dy`` (a draft),
         ``settle`` (the full-size frame), ``frame`` (frame the scene again), ``home``, ``axis``
-        with ``axis`` (see :meth:`view_from`). ``{"event": "shown" | "gone", "view": token}``: a
-        view of the widget drawn on the page or removed (the page holds the viewer meanwhile)."""
+        with ``axis`` (see :meth:`view_from`)."""
         if self._shared.closed:
             return
-        if content.get("event") in ("shown", "gone"):  # a view drawn on the page, or removed
+        # {"event": "shown" | "gone", "view": token}: a view of the widget drawn on the page, or
+        # removed (the page holds the viewer meanwhile: _Shown)
+        if content.get("event") in ("shown", "gone"):
             _SHOWN.view(self, str(content.get("view")), content["event"] == "shown")
             return
         try:
