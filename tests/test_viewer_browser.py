@@ -11,7 +11,8 @@ lines as left to the exact frame), that the view was marked as a draft then exac
 that the browser sent a view only once the last was answered (the kernel counts the views that
 came early: none) and merged the moves meanwhile (fewer views than moves), losing none (the
 kernel's camera is the whole drag's). Then it turns the wheel and checks that the bunny grew,
-switches the outlines off with the on-screen controls and checks that the ink went, presses
+opens the outlines' section of the on-screen controls, switches the outlines off there and
+checks that the ink went, presses
 the toolbar's +x and home buttons and checks the kernel's camera, downloads the screenshot and
 compares it with the kernel's frame, goes full screen and back, turns the view with the
 auto-rotate button and stops it (the exact frame shows the turned view), loses the WebGL context
@@ -253,6 +254,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
 
             # a control: outlines off re-renders (the frame has fewer dark pixels)
             shown = int(viewer.get_attribute("data-frames-shown"))
+            page.locator(".toonmesh-section-outlines").get_by_text("outlines", exact=True).click()  # its section, closed at first
             page.locator(".toonmesh-outlines-kind select").select_option("none")  # the outlines' kind
             page.wait_for_function(
                 "(n) => +document.querySelector('.toonmesh-viewer').dataset.framesShown > n", arg=shown, timeout=20_000)

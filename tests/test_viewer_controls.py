@@ -187,15 +187,22 @@ def test_band_sliders_cannot_cross(mesh):
     v = _viewer(mesh, material=tm.Material.bands(thresholds=[0.2, 0.5, 0.7, 0.9]))
     panel = v._controls
     sliders = [panel.widgets[f"material.thresholds[{i}]"] for i in range(4)]
-    for a, b in zip(sliders, sliders[1:]):
-        assert a.max < b.value and b.min > a.value
-    sliders[0].value = 0.95  # past its neighbour: the slider stops short of it
+    bounds = [(s.min, s.max) for s in sliders]
+    assert set(bounds) == {(0.0, 1.0)}, bounds  # one fixed range: a 0.70 handle never sits left of a 0.55 one
+    sliders[0].value = 0.95  # past its neighbour: the handle stops a step short of it
+    assert v.material.thresholds[0] == pytest.approx(0.5 - sliders[0].step)
     sliders[3].value = 0.1
+    assert v.material.thresholds[3] == pytest.approx(0.7 + sliders[3].step)
+    sliders[1].value = 0.6  # between its neighbours: taken as it is
     thresholds = v.material.thresholds
+    assert thresholds == pytest.approx([0.49, 0.6, 0.7, 0.71]), thresholds
     assert all(x < y for x, y in zip(thresholds, thresholds[1:])), thresholds
-    assert thresholds[0] < 0.5 and thresholds[3] > 0.7
     assert [s.value for s in sliders] == pytest.approx(thresholds)
+    assert [(s.min, s.max) for s in sliders] == bounds  # the ranges stayed put
     assert panel.note.value == "" and v.widget._error == ""
+    # the render is valid: the frame shown is tm.render's of these settings
+    np.testing.assert_array_equal(v.frame, tm.render(*mesh, **{k: getattr(v.options, k) for k in (
+        "material", "camera", "width", "height", "lights", "outlines")}).color)
     v.close()
 
 
@@ -221,3 +228,42 @@ def test_the_controls_start_from_the_current_settings(mesh):
     v.camera = tm.Camera.look_at((0, 0.2, 0.6), (0, 0.1, 0), fov_y=30)
     assert panel.widgets["camera.fov_y"].value == 30
     v.close()
+
+
+def test_the_controls_are_in_sections_laid_out_by_the_settings_description(mesh):
+    v = _viewer(mesh, outlines="mesh")
+    panel = v._controls
+    titles = list(panel.accordions)
+    # a section per settings object among the render options (the lights: the first), then the rest
+    fields = tm.RenderOptions.describe()["fields"]
+    own = [f["name"].removesuffix("s") if f["kind"] == "lights" else f["name"] for f in fields if f["kind"] in ("setting", "lights")]
+    assert titles == [*own, "options"], titles
+    assert [a.selected_index for a in panel.accordions.values()] == [0] + [None] * (len(titles) - 1)  # the material's open
+    section_of = {id(c): title for title, (_, controls) in zip(titles, panel.sections) for c in controls}
+    assert section_of[id(next(c for c in panel.controls() if c.key == "outlines.crease_angle"))] == "outlines"
+    assert section_of[id(next(c for c in panel.controls() if c.key == "render.msaa"))] == "options"
+    # the paper, off, turns on by its switch in its own section
+    panel.widgets["paper"].value = True
+    assert v.options.paper == tm.Paper() and "paper.strength" in {c.key for c in panel.controls()}
+    v.close()
+
+
+def test_v_controls_is_the_column_to_place_anywhere(mesh):
+    need("ipywidgets")
+    need("anywidget")
+    import ipywidgets
+
+    v = _viewer(mesh)
+    assert isinstance(v.controls, ipywidgets.VBox) and v.controls is v._controls.column
+    assert v._controls.widget.children == (v.widget, v.controls)  # shown beside the frame
+    plain = tm.Viewer(*mesh, width=SIZE, height=SIZE)
+    column = plain.controls  # made on first read; displaying the viewer still shows the frame alone
+    assert column is plain.controls and plain._controls.widget is column
+    bundle, _ = plain._repr_mimebundle_()
+    assert bundle["application/vnd.jupyter.widget-view+json"]["model_id"] == plain.widget.model_id
+    plain.controls  # it drives the viewer as the column beside the frame does
+    plain._controls.widgets["material.thresholds[0]"].value = 0.1
+    assert plain.material.thresholds[0] == pytest.approx(0.1)
+    plain.close()
+    v.close()
+    assert column.comm is None and v.controls.comm is None  # closed with the viewer

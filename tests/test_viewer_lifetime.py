@@ -265,3 +265,73 @@ def test_a_turntable_is_written_as_a_gif_or_an_mp4_with_one_frame_per_view(mesh,
     with pytest.raises(ValueError, match="even"):
         v.turntable(tmp_path / "odd.mp4")
     v.close()
+
+
+def test_a_viewer_lives_while_a_view_of_it_is_on_the_page(mesh):
+    """The page holds a viewer nothing else refers to (``display(tm.Viewer(...))`` in a function)
+    while a view of it is drawn: the widget's views say when they are drawn and removed."""
+    need("anywidget")
+    renderer = tm.Renderer()
+    v = tm.Viewer(*mesh, renderer=renderer, width=64, height=64)
+    widget, ref = v.widget, weakref.ref(v)
+
+    def message(event: str, view: str) -> None:  # as the front end sends it
+        widget._handle_custom_msg({"event": event, "view": view}, [])
+
+    message("shown", "a")
+    message("shown", "b")  # the same viewer in two outputs
+    del v
+    gc.collect()
+    assert ref() is not None and renderer._engine.mesh_count == 1
+    ref().orbit(10, 0)  # still drawing
+    message("gone", "a")
+    gc.collect()
+    assert ref() is not None  # one view left
+    message("gone", "b")
+    gc.collect()
+    assert ref() is None and renderer._engine.mesh_count == 0 and widget.comm is None  # freed with its last view
+
+    # close() lets go at once, views or not; a late message holds nothing
+    v = tm.Viewer(*mesh, renderer=renderer, width=64, height=64)
+    widget, ref = v.widget, weakref.ref(v)
+    message("shown", "c")
+    v.close()
+    del v
+    gc.collect()
+    assert ref() is None and renderer._engine.mesh_count == 0
+
+
+def test_a_viewer_displayed_in_a_kernel_is_held_until_its_first_view_comes(mesh, monkeypatch):
+    """Between display() and the front end drawing the view, nothing else may refer to the
+    viewer: the kernel holds it meanwhile; where no view ever comes (no front end), only for
+    a while."""
+    need("anywidget")
+    import toonmesh.viewer._viewer as tv
+
+    monkeypatch.setattr(tv, "_in_kernel", lambda: True)
+    renderer = tm.Renderer()
+    v = tm.Viewer(*mesh, renderer=renderer, width=64, height=64)
+    widget, ref = v.widget, weakref.ref(v)
+    v._repr_mimebundle_()  # display(v)
+    del v
+    gc.collect()
+    assert ref() is not None  # waiting for its view
+    widget._handle_custom_msg({"event": "shown", "view": "a"}, [])
+    widget._handle_custom_msg({"event": "gone", "view": "a"}, [])
+    gc.collect()
+    assert ref() is None and renderer._engine.mesh_count == 0
+
+    # displayed where no view comes: let go once the wait is over (at the next display)
+    monkeypatch.setattr(tv, "_FIRST_VIEW_S", 0.0)
+    v = tm.Viewer(*mesh, renderer=renderer, width=64, height=64)
+    ref = weakref.ref(v)
+    v.widget._repr_mimebundle_()  # display(v.widget) holds it too
+    del v
+    gc.collect()
+    assert ref() is not None
+    time.sleep(0.01)
+    other = tm.Viewer(*mesh, renderer=renderer, width=64, height=64)
+    other._repr_mimebundle_()
+    gc.collect()
+    assert ref() is None
+    other.close()

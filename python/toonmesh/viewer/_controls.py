@@ -1,71 +1,112 @@
-"""On-screen controls of :class:`toonmesh.Viewer` (``controls=True``): a column beside the frame
-with a section per setting the viewer shows (material, the first light, outlines, the camera's
-field of view, and the render options), each made from the core's description of the setting's
-class (see _field_controls). A change from Python (``v.material = ...``, ``v.set(...)``)
-refreshes the controls; a control changes only its field, so ``code()`` sees it. A value the
-core refuses leaves the settings as they were: the control snaps back and a note above the
-controls says why. Sliders update when released, so dragging one never queues renders.
-Imported only where ipywidgets is installed."""
+"""On-screen controls of :class:`toonmesh.Viewer` (``controls=True``, or ``v.controls`` to place
+them yourself): a column of collapsible sections, one per settings object among the render
+options (the material, the first light, the outlines, the camera's field of view, the paper)
+and one for the other render options, each section made from the core's description of the
+setting's class (see _field_controls); only the material's is open at first. A change from
+Python (``v.material = ...``, ``v.set(...)``) refreshes the controls; a control changes only its
+field, so ``code()`` sees it. A value the core refuses leaves the settings as they were: the
+control snaps back and a note above the controls says why. Sliders update when released, so
+dragging one never queues renders. Imported only where ipywidgets is installed."""
 
 from __future__ import annotations
 
+import functools
 import html
 import weakref
-from typing import TYPE_CHECKING, Any, Callable, List, Tuple
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Tuple
 
 import ipywidgets as w  # type: ignore[import-untyped]
 
-from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
-from toonmesh.viewer._field_controls import Control, Panel, Source, controls_for
+from toonmesh import _core
+from toonmesh._core import Camera, Light, RenderOptions
+from toonmesh.viewer._field_controls import Control, Panel, Source, control_for, controls_for
 
 if TYPE_CHECKING:
     from toonmesh.viewer._viewer import Viewer
 
-# The render options that have a section of their own, and the view's size and pixel ratio,
-# which follow the cell and the screen or are set from Python (``v.width = 640``): a slider
-# would resize the view under the pointer.
-_OWN_SECTIONS = ("material", "lights", "outlines", "camera")
+# The view's size and pixel ratio follow the cell and the screen or are set from Python
+# (``v.width = 640``): a slider would resize the view under the pointer.
 _FRAME_SIZE = ("width", "height", "pixel_ratio")
+# The camera's fields the viewer's view keeps as it moves (its eye, target and up come from the
+# pointer; a fitted camera's margin and turn, and near and far, are not kept).
+_CAMERA_FIELDS = ("fov_y",)
+# The section of the render options that are no settings object of their own, and the key its
+# controls are registered under (``render.msaa``).
+_OPTIONS_TITLE, _OPTIONS_KEY = "options", "render"
 # The column is as high as the frame (scrolling beyond), but never shorter than this.
 _MIN_HEIGHT = 360
+_SECTION_WIDTH = "370px"
 
 
 class ControlPanel(Panel):
-    """The viewer's frame with the column of controls beside it (``widget``, an HBox); every
-    control's widget by key in ``widgets`` (``"material.thresholds[0]"``, ``"outlines.kind"``).
-    It holds the viewer through a weak reference (the widgets live in ipywidgets' registry until
-    closed), so the viewer is freed once nothing else refers to it."""
+    """The column of controls (``column``, a VBox of collapsible sections) and, where ``beside``,
+    the viewer's frame with the column beside it (``widget``, an HBox; else ``widget`` is the
+    column); every control's widget by key in ``widgets`` (``"material.thresholds[0]"``,
+    ``"outlines.kind"``), each section's by its title in ``accordions``. It holds the viewer
+    through a weak reference (the widgets live in ipywidgets' registry until closed), so the
+    viewer is freed once nothing else refers to it."""
 
-    def __init__(self, viewer: "Viewer"):
+    def __init__(self, viewer: "Viewer", beside: bool = True):
         super().__init__()
         viewer = weakref.proxy(viewer)
         self.viewer = viewer
+        self.beside = beside
         self.note = w.HTML("")
-        material = Source.whole(lambda: viewer.material, lambda m: viewer.set(material=m))
-        light = Source.whole(self._light, self._set_light)
-        outlines = Source.whole(lambda: viewer.outlines, lambda o: viewer.set(outlines=o))
-        camera = Source.whole(lambda: viewer.camera, lambda c: setattr(viewer, "camera", c))
-        render = Source(lambda: viewer.options, lambda name, value: viewer.set(**{name: value}))
-        rendering = [f["name"] for f in RenderOptions.describe()["fields"] if f["name"] not in _OWN_SECTIONS + _FRAME_SIZE]
-        self.sections: List[Tuple[Any, List[Control]]] = [
-            (_heading("material", Material), controls_for(self, material, Material, "material")),
-            (_heading("light", Light), controls_for(self, light, Light, "light", directions=("direction",))),
-            (_heading("outlines", Outlines), controls_for(self, outlines, Outlines, "outlines",
-                                                          whole=lambda o: viewer.set(outlines=o))),
-            (_heading("camera", Camera), controls_for(self, camera, Camera, "camera", only=("fov_y",))),
-            (_heading("render", RenderOptions), controls_for(self, render, RenderOptions, "render", only=rendering)),
-        ]
-        rows: List[Any] = [self.note]
-        for heading, controls in self.sections:
-            rows += [heading, *(c.box for c in controls)]
+        self.sections: List[Tuple[Any, List[Control]]] = []
+        self.accordions: Dict[str, Any] = {}
+        for title, cls, controls in self._sections():
+            # (no tooltip: on an Accordion or a box it breaks the view in JupyterLab; each control has its own)
+            section = w.Accordion([_group([c.box for c in controls])], titles=(title,),
+                                  selected_index=0 if not self.sections else None,  # the first (the material's) open
+                                  layout=w.Layout(width=_SECTION_WIDTH, flex="0 0 auto"))
+            section.add_class("toonmesh-section")
+            section.add_class("toonmesh-section-" + title)
+            self.accordions[title] = section
+            self.sections.append((section, controls))
+        rows: List[Any] = [self.note, *(section for section, _ in self.sections)]
         self.column = w.VBox(rows, layout=w.Layout(overflow="auto", flex="0 0 auto"))
-        self.widget = w.HBox([viewer.widget, self.column]) if viewer.widget is not None else self.column
+        self.column.add_class("toonmesh-controls")
+        self.widget = w.HBox([viewer.widget, self.column]) if beside and viewer.widget is not None else self.column
         self.refresh()
+
+    def _sections(self) -> List[Tuple[str, Any, List[Control]]]:
+        """The sections as the render options' description lays them out: a settings object
+        (a field naming its class; the lights: the first) has a section of its own, titled by
+        its field, with a control per field of its class; an optional one turns off by its
+        choice's "none" where the render options take a choice for the whole setting (the
+        outlines' kind: ``outlines="mesh"``), else by a switch (the paper); the other options
+        share the last section."""
+        viewer = self.viewer
+        render = Source(lambda: viewer.options, lambda name, value: viewer.set(**{name: value}))
+        out: List[Tuple[str, Any, List[Control]]] = []
+        others: List[str] = []
+        for field in RenderOptions.describe()["fields"]:
+            name, kind = field["name"], field["kind"]
+            if kind == "lights":  # a Light or a list: the first light's controls
+                light = Source.whole(self._light, self._set_light)
+                out.append((name.removesuffix("s"), Light,
+                            controls_for(self, light, Light, name.removesuffix("s"), directions=("direction",))))
+            elif kind == "setting":
+                cls = getattr(_core, field["class"])
+                read = functools.partial(_option, viewer, name)
+                write = functools.partial(_set_option, viewer, name)
+                source = Source.whole(read, write)
+                if field["optional"] and not _named_by_choice(name, cls):
+                    switch = control_for(self, render, field, name)
+                    out.append((name, cls, [switch] if switch is not None else []))
+                else:
+                    whole = write if field["optional"] else None
+                    only = _CAMERA_FIELDS if cls is Camera else None
+                    out.append((name, cls, controls_for(self, source, cls, name, only=only, whole=whole)))
+            elif name not in _FRAME_SIZE:
+                others.append(name)
+        out.append((_OPTIONS_TITLE, RenderOptions, controls_for(self, render, RenderOptions, _OPTIONS_KEY, only=others)))
+        return out
 
     def close(self) -> None:
         """Closes the column, the box around it and every control (they leave the notebook)."""
         seen = set()
-        stack = [self.widget, self.column, self.note, *self.widgets.values()]
+        stack = [self.widget, self.column, self.note, *self.accordions.values(), *self.widgets.values()]
         while stack:
             widget = stack.pop()
             if id(widget) in seen:
@@ -100,10 +141,10 @@ class ControlPanel(Panel):
         """Shows the viewer's current settings (and only the controls of fields they have)."""
         self.syncing = True
         try:
-            for heading, controls in self.sections:
+            for section, controls in self.sections:
                 for c in controls:
                     c.refresh()
-                heading.layout.display = None if any(c.box.layout.display != "none" for c in controls) else "none"
+                section.layout.display = None if any(c.box.layout.display != "none" for c in controls) else "none"
             self.column.layout.max_height = f"{max(self.viewer.height, _MIN_HEIGHT)}px"
         finally:
             self.syncing = False
@@ -131,5 +172,26 @@ class ControlPanel(Panel):
             self.viewer.set(**changed)
 
 
-def _heading(title: str, cls: Any) -> Any:
-    return w.HTML(f"<b>{html.escape(title)}</b>", tooltip=cls.describe()["help"])
+def _option(viewer: Any, name: str) -> Any:
+    return getattr(viewer.options, name)
+
+
+def _set_option(viewer: Any, name: str, value: Any) -> None:
+    viewer.set(**{name: value})
+
+
+def _named_by_choice(name: str, cls: Any) -> bool:
+    """Whether the render options take the first choice of ``cls``'s fields for the whole
+    setting ``name`` (``outlines="mesh"``): the core's check is the rule."""
+    choice = next((f for f in cls.describe()["fields"] if f["kind"] == "choice" and not f["fixed"]), None)
+    if choice is None:
+        return False
+    try:
+        RenderOptions(**{name: choice["choices"][0]})
+        return True
+    except (TypeError, ValueError):
+        return False
+
+
+def _group(children: List[Any]) -> Any:
+    return w.VBox(children, layout=w.Layout(flex="0 0 auto"))

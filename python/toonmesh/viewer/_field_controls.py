@@ -236,8 +236,9 @@ class Color(Control):
 
 
 class Sliders(Control):
-    """A list of numbers, a slider per entry. Where the core keeps the list strictly increasing
-    (bands' thresholds), each slider's ends follow its neighbours, so sliders cannot cross."""
+    """A list of numbers, a slider per entry, each over the same fixed range. Where the core
+    keeps the list strictly increasing (bands' thresholds), a handle moved past its neighbour
+    stops a step short of it, so the handles keep their order and their ranges stay put."""
 
     def __init__(self, *args: Any):
         super().__init__(*args)
@@ -273,17 +274,20 @@ class Sliders(Control):
         if len(values) != len(self.sliders):
             self._build(len(values))
         lo, hi = _LIST_RANGE
-        ordered = self._must_increase(values)
-        for i, (s, v) in enumerate(zip(self.sliders, values)):
-            below = values[i - 1] + s.step if ordered and i > 0 else lo
-            above = values[i + 1] - s.step if ordered and i + 1 < len(values) else hi
-            _place(s, v, below, above)
+        for s, v in zip(self.sliders, values):
+            _place(s, v, min(lo, *values), max(hi, *values))  # one range for all, holding every entry
 
     def leaves(self) -> List[Any]:
         return list(self.sliders)
 
     def move(self, i: int, value: float) -> None:
-        values = list(self.current())
+        values = [float(v) for v in self.current()]
+        if self._must_increase(values):  # stopped a step short of a neighbour it passed
+            step = self.sliders[i].step
+            if i > 0:
+                value = max(value, values[i - 1] + step)
+            if i + 1 < len(values):
+                value = min(value, values[i + 1] - step)
         values[i] = value
         self.change(values)
 

@@ -19,7 +19,11 @@ JPEG); when it stops (or is released) the full-size frame follows in ``image_for
 
 Lifetime: the render thread runs only while frames are wanted, and neither it nor the widget
 holds the viewer (weak references), so a viewer no longer referenced is freed with its uploaded
-meshes and its front end; :meth:`Viewer.close` frees them at once.
+meshes and its front end; :meth:`Viewer.close` frees them at once. A viewer shown on the page is
+referenced by the page itself: each of its views tells the kernel when it is drawn and when it
+is removed (``widget.js``), and ``_SHOWN`` holds the viewer while at least one view is on the
+page (``display(tm.Viewer(...))`` in a function or a loop keeps drawing), letting it go when the
+last one goes (its output cleared, its cell run again).
 """
 
 from __future__ import annotations
@@ -30,10 +34,12 @@ import json
 import math
 import os
 import re
+import sys
 import threading
+import time
 import types
 import weakref
-from typing import TYPE_CHECKING, Any, Dict, Generic, List, Optional, Tuple, TypeVar, overload
+from typing import TYPE_CHECKING, Any, Dict, Generic, List, Optional, Set, Tuple, TypeVar, overload
 
 import numpy as np
 
@@ -246,6 +252,67 @@ class _Shared:
         self.early = 0  # the views that came before the last one was answered (the browser waits: 0)
 
 
+# Seconds a viewer displayed in a kernel is held for its first view to be drawn: a front end
+# that never draws it (nbconvert, a console) lets it go after this, once another viewer is shown.
+_FIRST_VIEW_S = 60.0
+
+
+class _Shown:
+    """The viewers on the page: each held (strongly) while at least one of its views is drawn,
+    so that a viewer nothing else refers to (``display(tm.Viewer(...))`` in a function) keeps
+    drawing, and let go when its last view is removed, or when it is closed. A viewer displayed
+    in a kernel is held from then until its first view comes, for at most ``_FIRST_VIEW_S``."""
+
+    def __init__(self) -> None:
+        self.held: Dict[int, "Viewer"] = {}
+        self.views: Dict[int, Set[str]] = {}
+        self.waiting: Dict[int, float] = {}  # displayed, no view yet: since when (monotonic seconds)
+
+    def displayed(self, viewer: "Viewer") -> None:
+        self._expire()
+        key = id(viewer)
+        if not viewer.closed and not self.views.get(key):
+            self.held[key] = viewer
+            self.waiting[key] = time.monotonic()
+
+    def view(self, viewer: "Viewer", view: str, shown: bool) -> None:
+        """A view of ``viewer`` drawn (``shown``) or removed."""
+        self._expire()
+        key = id(viewer)
+        views = self.views.setdefault(key, set())
+        if shown:
+            views.add(view)
+            self.held[key] = viewer
+            self.waiting.pop(key, None)
+        else:
+            views.discard(view)
+            if not views and key not in self.waiting:
+                self.drop(viewer)
+
+    def drop(self, viewer: "Viewer") -> None:
+        key = id(viewer)
+        if self.held.get(key) is viewer:
+            del self.held[key]
+        self.views.pop(key, None)
+        self.waiting.pop(key, None)
+
+    def _expire(self) -> None:
+        now = time.monotonic()
+        for key, since in list(self.waiting.items()):
+            if now - since > _FIRST_VIEW_S:
+                self.drop(self.held[key])
+
+
+_SHOWN = _Shown()
+
+
+def _in_kernel() -> bool:
+    """Whether this runs in a Jupyter kernel (where a displayed viewer may get views)."""
+    ipython = sys.modules.get("IPython")
+    shell = ipython.get_ipython() if ipython is not None else None
+    return getattr(shell, "kernel", None) is not None
+
+
 class Viewer:
     """An interactive toon render of a mesh in Jupyter, rendered by toonmesh in the kernel.
 
@@ -278,8 +345,10 @@ class Viewer:
 
     Viewer options: ``controls=True`` shows ipywidgets controls beside the frame, one per field
     of the material, the first light, the outlines (and each line kind's style), the camera's
-    field of view and the render options, each following the core's description of the field
-    (its kind, bounds and choices) and showing the settings as they are now;
+    field of view, the paper and the other render options, in collapsible sections (the
+    material's open), each following the core's description of the field (its kind, bounds and
+    choices) and showing the settings as they are now (``controls`` is that column as a widget,
+    to place yourself);
     ``image_format`` of the full-size frames, ``"png"`` (default) or ``"jpeg"``; ``drag_scale``,
     the size of the frames drawn while the pointer moves, as a fraction of the full size
     (0.05 to 1, default 0.5; the browser draws them smaller where it cannot keep up, the kernel's
@@ -296,7 +365,9 @@ class Viewer:
     standalone page that orbits the scene in a browser (WebGL2, no kernel);
     :meth:`code` gives the ``tm.render(...)`` call that reproduces the view.
     :meth:`close` frees the viewer's meshes, render thread and front end (so does dropping the
-    last reference to it); a closed viewer raises :class:`ViewerClosedError` when used.
+    last reference to it once no view of it is on the page: a viewer displayed from a function
+    lives while its output is shown); a closed viewer raises :class:`ViewerClosedError` when used.
+    The view takes the keys while it has focus; Escape gives them back to the notebook.
     """
 
     # The render settings, each re-rendering when set (see toonmesh.RenderOptions for what each
@@ -364,10 +435,29 @@ class Viewer:
         self._home = copy.deepcopy(self._view)
         self._show(draft=False)
         if controls and self._widget is not None:  # without the notebook extra: the still frame
-            from toonmesh.viewer._controls import ControlPanel
+            self._make_controls(beside=True)
 
-            self._controls = ControlPanel(self)
-            self._front.append(self._controls)
+    def _make_controls(self, beside: bool) -> Any:
+        from toonmesh.viewer._controls import ControlPanel
+
+        self._controls = ControlPanel(self, beside=beside)
+        self._front.append(self._controls)
+        return self._controls
+
+    @property
+    def controls(self) -> Any:
+        """The on-screen controls as a widget, to place where you like (``ipywidgets.HBox([v.widget,
+        v.controls])``): an ``ipywidgets.VBox`` of collapsible sections (the material, the first
+        light, the outlines, the camera, the paper, the other options; the material's open), a
+        control per field of each, as ``controls=True`` shows them beside the frame. Made on first
+        read where the viewer was made without ``controls=True`` (displaying ``v`` then still shows
+        the frame alone); None without the notebook extra. Closed with the viewer."""
+        if self._controls is None:
+            if self._widget is None:
+                return None
+            self._check_open()
+            self._make_controls(beside=False)
+        return self._controls.column
 
     # -- the view's size ------------------------------------------------------------------------
 
@@ -496,6 +586,7 @@ class Viewer:
         MeshHandles it was given) and closes its widget and controls, which leave the notebook.
         Using the viewer afterwards raises :class:`ViewerClosedError`. Dropping the last
         reference to a viewer does the same. Closing twice does nothing."""
+        _SHOWN.drop(self)  # the page no longer holds it
         with self._render_lock:  # after the frame being drawn, if any
             self._release()
             self._placed = []
@@ -915,6 +1006,11 @@ class Viewer:
         (True or False; see :attr:`visible`)."""
         if self._shared.closed:
             return
+        # {"event": "shown" | "gone", "view": token}: a view of the widget drawn on the page, or
+        # removed (the page holds the viewer meanwhile: _Shown)
+        if content.get("event") in ("shown", "gone"):
+            _SHOWN.view(self, str(content.get("view")), content["event"] == "shown")
+            return
         try:
             if content.get("event") == "view":
                 steps = content.get("steps") or []
@@ -999,6 +1095,11 @@ class Viewer:
         """The Jupyter widget (an ``anywidget.AnyWidget``), or None without the notebook extra."""
         return self._widget
 
+    def _displayed(self) -> None:
+        """Shown in a kernel: held until its views are drawn (see ``_Shown``)."""
+        if self._widget is not None and _in_kernel():
+            _SHOWN.displayed(self)
+
     def _repr_png_(self) -> Optional[bytes]:
         return None if self.frame is None else _core.encode_png_rgba(self.frame)
 
@@ -1009,7 +1110,8 @@ class Viewer:
         that shows the PNG at the view's size in layout pixels (sharp at a pixel ratio above 1,
         as the live view is)."""
         bundle: Dict[str, Any] = {}
-        shown = self._controls.widget if self._controls is not None else self._widget
+        self._displayed()
+        shown = self._controls.widget if self._controls is not None and self._controls.beside else self._widget
         if shown is not None and not self._shared.closed:
             widget_bundle = shown._repr_mimebundle_(include=include, exclude=exclude)
             if isinstance(widget_bundle, tuple):
@@ -1227,7 +1329,7 @@ def _make_widget(viewer: Viewer) -> Any:
         return None
     widget = ViewerWidget()
     widget._moves = viewer._moves()  # for pinches, before any draft
-    widget.attach(weakref.WeakMethod(viewer._on_event))
+    widget.attach(weakref.WeakMethod(viewer._on_event), weakref.WeakMethod(viewer._displayed))
     return widget
 
 

@@ -36,16 +36,27 @@ class ViewerWidget(anywidget.AnyWidget):  # type: ignore[misc]
     # the scene's parts for the toolbar's list: {"names": [...], "visible": [True or False, ...]}
     _parts = traitlets.Dict({"names": list[str](), "visible": list[bool]()}).tag(sync=True)
 
-    def attach(self, on_event: "Union[weakref.WeakMethod[Callable[[Dict[str, Any]], None]], Callable[[Dict[str, Any]], None]]") -> None:
+    _on_display: Optional["weakref.WeakMethod[Callable[[], None]]"] = None
+
+    def attach(self, on_event: "Union[weakref.WeakMethod[Callable[[Dict[str, Any]], None]], Callable[[Dict[str, Any]], None]]",
+               on_display: "Optional[weakref.WeakMethod[Callable[[], None]]]" = None) -> None:
         """Sends the front end's messages (dicts, see ``Viewer._on_event``) to ``on_event``: a
         callable, or a ``weakref.WeakMethod`` (the widget then does not keep its viewer alive;
-        messages after the viewer is gone are dropped)."""
+        messages after the viewer is gone are dropped); calls ``on_display`` (weakly) when the
+        widget itself is displayed (``display(v.widget)``), as the viewer is when it is."""
         def handle(_widget: Any, content: Dict[str, Any], _buffers: Any) -> None:
             target: Optional[Callable[[Dict[str, Any]], None]] = on_event() if isinstance(on_event, weakref.WeakMethod) else on_event
             if target is not None:
                 target(content)
 
         self.on_msg(handle)
+        self._on_display = on_display
+
+    def _repr_mimebundle_(self, **kwargs: Any) -> Any:
+        displayed = self._on_display() if self._on_display is not None else None
+        if displayed is not None:
+            displayed()
+        return super()._repr_mimebundle_(**kwargs)
 
     def show_frame(self, data: bytes, image_format: str, frame_id: int, width: int, height: int,
                    view_id: int = 0, exact: bool = True, camera: Optional[Dict[str, Any]] = None,

@@ -15,6 +15,9 @@ const SPIN_PX = 2;  // auto-rotate: a drag of this many pixels a frame
 const ANSWER_TIMEOUT_MS = 10000;  // a view never answered (a kernel restarted) stops blocking
 const AXES = ["+x", "-x", "+y", "-y", "+z", "-z"];
 const BORDER = "1px solid #c8c8c8", FOCUSED = "1px solid #1a73e8";
+// A removed view tells the kernel this much later, so that a view drawn again at once (a cell
+// moved) is counted before the old one goes and the viewer is not let go in between.
+const GONE_DELAY_MS = 500;
 
 function render({ model, el }) {
   const root = document.createElement("div");
@@ -404,7 +407,23 @@ function render({ model, el }) {
   root.addEventListener("contextmenu", menu);
   root.addEventListener("focus", focus);
   root.addEventListener("blur", blur);
+  // Escape gives the keys back to the page (in JupyterLab, command mode: the notebook's keys)
+  function release() {
+    if (!root.contains(document.activeElement)) return;
+    let holder = root.parentElement;  // the nearest focusable element around the view (a cell)
+    while (holder && !(holder.tabIndex >= 0 || holder.hasAttribute("tabindex"))) holder = holder.parentElement;
+    if (holder) holder.focus({ preventScroll: true });
+    else document.activeElement.blur();
+  }
+  root.addEventListener("keydown", (e) => { if (e.key === "Escape") { e.preventDefault(); release(); } });
+
+  // the kernel holds the viewer while a view of it is on the page (a viewer displayed from a
+  // function keeps drawing) and lets it go when the last is removed (output cleared, cell re-run)
+  const viewToken = Math.random().toString(36).slice(2) + "-" + Date.now().toString(36);
+  model.send({ event: "shown", view: viewToken });
   return () => {
+    setTimeout(() => { try { model.send({ event: "gone", view: viewToken }); } catch (e) { /* the model closed */ } },
+               GONE_DELAY_MS);
     resizes.disconnect();
     window.removeEventListener("resize", laterSize);
     document.removeEventListener("fullscreenchange", laterSize);
