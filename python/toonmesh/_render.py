@@ -23,7 +23,8 @@ from typing import TYPE_CHECKING, Any, Dict, Iterator, List, NamedTuple, Optiona
 
 import numpy as np
 
-from toonmesh import _colors, _core, _load
+from toonmesh import _colors, _core
+from toonmesh.files import _load
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions, kang_table
 from toonmesh._input import mesh_arrays
 from toonmesh._results import RenderResult, RenderStack, stack_of

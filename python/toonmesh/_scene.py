@@ -1,7 +1,7 @@
 """The scene as Python describes it: :class:`Mesh` (geometry, material, transform, normals, up
 axis and colour), :class:`MeshHandle` (a mesh already on a renderer's device) and the normal modes.
 
-This is the bottom of the rendering layers: files (:mod:`toonmesh._load`) make meshes and the
+This is the bottom of the rendering layers: files (:mod:`toonmesh.files._load`) make meshes and the
 renderer (:mod:`toonmesh._render`) draws them; both take them from here, so that neither needs
 the other to describe a scene.
 """

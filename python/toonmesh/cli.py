@@ -32,12 +32,14 @@ from toonmesh import _core, _strokes, smooth
 from toonmesh._core import __version__
 from toonmesh._described import described
 from toonmesh._described_flags import CORE_DEFAULT, add_described, errors_as_flags, sets, styles
-from toonmesh._files import (
-    IMAGE_SUFFIXES, Part, check_distinct_names, check_writable, image_suffix, read_mesh, seam_normals, view_paths,
+from toonmesh.files._write import (
+    IMAGE_SUFFIXES, Part, check_distinct_names, check_writable, image_suffix, seam_normals, view_paths,
     write_parts,
 )
 from toonmesh._line_drawing import summary, view_lines, write_npz, write_svg
-from toonmesh._load import OWN_COLOURS_WHITE, Surface, file_up_axis, read_surfaces, up_conventions
+from toonmesh.files._load import (
+    OWN_COLOURS_WHITE, Surface, file_up_axis, read_mesh, read_surfaces, up_conventions,
+)
 from toonmesh.edges import feature_edges
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 from toonmesh._render import Mesh, RenderResult, gpu_info, render

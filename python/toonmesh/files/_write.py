@@ -1,6 +1,6 @@
-"""Mesh files in and images out, for the command line and batch renders.
+"""Mesh files and images written, for the command line and batch renders.
 
-Meshes are read and written through trimesh (``pip install toonmesh[io]``), which knows OBJ, PLY,
+Meshes are written through trimesh (``pip install toonmesh[io]``), which knows OBJ, PLY,
 STL, OFF and GLB/glTF among others. Renders are written as PNG (the colour image) or, when float
 outputs (normal, depth) are asked for, as NPZ with every output array and the camera used.
 """
@@ -15,34 +15,10 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._load import Surface, read_surfaces, trimesh_module
+from toonmesh.files._load import Surface, trimesh_module
 
 #: Suffixes written for a render: the colour image alone, or every output array.
 IMAGE_SUFFIXES = (".png", ".npz")
-
-def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
-    """(V, F) of a mesh file: (N, 3) float64 positions, (M, 3) int64 triangles, every placed
-    geometry of a scene (GLB, glTF) in one mesh with its world transform applied.
-
-    The file is read and checked as :func:`toonmesh.load` reads it (vertices as the file lists
-    them; an STL's corners merged by position).
-
-    Raises:
-        FileNotFoundError: no such file.
-        ImportError: trimesh is not installed.
-        ValueError: the file cannot be read as a triangle mesh (naming the file and the problem).
-    """
-    placed = read_surfaces(path)
-    if len(placed) == 1 and placed[0][1] is None:
-        return placed[0][0].vertices, placed[0][0].faces
-    Vs, Fs, n = [], [], 0
-    for surface, transform in placed:
-        V = surface.vertices if transform is None else surface.vertices @ transform[:3, :3].T + transform[:3, 3]
-        Vs.append(V)
-        Fs.append(surface.faces + n)
-        n += len(V)
-    return np.concatenate(Vs), np.concatenate(Fs)
-
 
 #: The format that holds several meshes and their placements (node transforms, one geometry
 #: placed several times); the others hold one mesh, written in world space.

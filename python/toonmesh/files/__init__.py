@@ -1,0 +1,13 @@
+"""Mesh files read and written: the one reading path of :func:`toonmesh.load`, the command line
+and batch renders.
+
+- :mod:`._load`: a file (or a ``trimesh.Scene``) into :class:`toonmesh.Mesh` objects, through
+  trimesh after the checks.
+- :mod:`._checks`: what trimesh does not check (OBJ lines, PLY header counts, glTF accessors,
+  the files a mesh file names), one layer beside the parser.
+- :mod:`._ply`: PLY triangle strips and float colours, where trimesh falls short.
+- :mod:`._archives`: zip and tar archives and compressed files, unpacked.
+- :mod:`._write`: meshes written back (``toonmesh smooth``) and renders saved.
+
+Users import :func:`toonmesh.load` from the package's front door; nothing here imports it.
+"""
