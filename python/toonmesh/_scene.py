@@ -126,6 +126,9 @@ class Mesh:
         n_vertices = self.handle.n_vertices if self.handle is not None else int(np.shape(self.vertices)[0] if np.ndim(self.vertices) else 0)
         self.normals: Normals = normal_mode(normals, n_vertices)
         self.up: Optional[str] = _core._up_axis(up)
+        #: The file the mesh was read from (set by :func:`toonmesh.load`; "" for none): the
+        #: warnings of its upload name it.
+        self.source = ""
 
 
 def normal_mode(normals: Any, n_vertices: int) -> Normals:

@@ -128,7 +128,10 @@ def load(path: "str | os.PathLike[str]", up: Optional[str] = None) -> List[Mesh]
             materials; ``up`` is not an axis name.
     """
     up = _core._up_axis(up) if up is not None else file_up_axis(path)
-    return [_mesh_of(s, t, up) for s, t in read_surfaces(path)]
+    meshes = [_mesh_of(s, t, up) for s, t in read_surfaces(path)]
+    for m in meshes:
+        m.source = os.fspath(path)  # type: ignore[assignment]
+    return meshes
 
 
 def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
