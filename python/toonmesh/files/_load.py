@@ -532,7 +532,7 @@ def _visual_into(surface: Surface, visual: Any, ignored: List[str], materials: b
     uv = getattr(visual, "uv", None)
     if uv is not None and len(uv) == len(surface.vertices):
         surface.uv = np.asarray(uv, dtype=np.float64)
-    if not materials:
+    if not materials or _colors._placeholder(material):  # trimesh's grey stand-in, not the file's
         return
     factor = getattr(material, "baseColorFactor", None)
     if factor is not None:  # glTF's factor is linear light: the colour as drawn is sRGB
