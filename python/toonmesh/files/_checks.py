@@ -93,7 +93,7 @@ def unlike(path: str, suffix: str, data: bytes) -> Optional[str]:
         if binary or what == "an ASCII STL file":
             return None
     elif suffix == ".obj":
-        if what.startswith("text") and any(line.split()[:1] in ([b"v"], [b"f"]) for line in data.split(b"\n")):
+        if what.startswith("text"):  # text of OBJ statements or comments: its own checks say what is wrong
             return None
     elif suffix == ".off":
         if data.lstrip()[:4].upper().startswith((b"OFF", b"COFF", b"NOFF", b"STOFF", b"4OFF")):
@@ -113,6 +113,7 @@ def check_obj(path: str, data: Optional[bytes] = None) -> Dict[str, Any]:
     finite coordinates. Returns counts: ``vertices``, ``texcoords``, ``faces``, ``normals``,
     ``materials`` (distinct ``usemtl`` names) and ``libraries`` (``mtllib`` statements); and
     what the reader must know: ``negative`` (a face counts back from the entries so far),
+    ``comments`` (a comment after a statement), ``polygons`` (a face of more than 3 corners),
     ``drop`` (the index columns, ``b"vt"`` or ``b"vn"``, that name entries the file lacks: they
     are left out, the positions kept) and ``notes`` (one line each about what is not read as
     written: those columns, the first vertex whose colour is not a number). Raises
@@ -159,9 +160,13 @@ def _check_obj_by_line(path: str, data: bytes) -> Dict[str, Any]:
     absent: Dict[bytes, Tuple[int, int, int]] = {}  # kind -> (line, index, entries then) of the first miss
     notes: List[str] = []
     colour_noted = False
+    coloured: List[int] = []  # the lines of vertices with a colour
+    comments = False  # a comment after a statement (trimesh reads it as part of the statement)
+    polygons = False  # a face of more than 3 corners
     lines = data.split(b"\n")
     for number, raw, words in _statements(lines):
         head = words[0]
+        comments = comments or b"#" in raw
         if head == b"v":
             if len(words) < 4:
                 raise MeshFileError(_obj_where(path, number, lines, f"a vertex needs 3 coordinates, got {len(words) - 1}"))
@@ -172,11 +177,14 @@ def _check_obj_by_line(path: str, data: bytes) -> Dict[str, Any]:
             counts[b"v"] += 1
             if not all(math.isfinite(x) for x in xyz):
                 raise MeshFileError(f"{path}: vertex {counts[b'v']} (line {number}) is not finite: {xyz}")
+            if len(words) > 4:
+                coloured.append(number)
             if len(words) > 4 and not colour_noted and not _finite_words(words[4:]):
                 colour_noted = True
                 notes.append(f"line {number}: vertex {counts[b'v']}'s colour is not a number "
                              f"({b' '.join(words[4:]).decode(errors='replace')}): drawn black")
         elif head == b"f":
+            polygons = polygons or len(words) > 4
             for kind, ints in zip(_KINDS, _face_columns(path, number, lines, raw, words)):
                 if not ints:
                     continue
@@ -204,12 +212,20 @@ def _check_obj_by_line(path: str, data: bytes) -> Dict[str, Any]:
                                     f"{_NAMES[kind]} in the file")
             if kind not in absent or number < absent[kind][0]:
                 absent[kind] = (number, i, counts[kind])
+    if coloured and len(coloured) < counts[b"v"]:
+        notes.append(partial_colours(len(coloured), counts[b"v"], coloured[0]))
     for kind, (number, i, n) in sorted(absent.items(), key=lambda item: item[1][0]):
         notes.append(f"line {number}: a face names {_ONE[kind]} {i}, of {n} listed: the file's {_NAMES[kind]} are "
                      "not read (positions kept)")
     return {"vertices": counts[b"v"], "texcoords": counts[b"vt"], "normals": counts[b"vn"], "faces": faces,
             "materials": len(materials), "libraries": libraries, "negative": negative,
-            "drop": tuple(sorted(absent)), "notes": notes}
+            "drop": tuple(sorted(absent)), "notes": notes, "comments": comments, "polygons": polygons}
+
+
+def partial_colours(coloured: int, vertices: int, line: int) -> str:
+    """The note on an OBJ whose vertices have colours only in part (trimesh drops them all)."""
+    return (f"vertex colours on {coloured:,} of the {vertices:,} vertices (the first on line {line}): not drawn, "
+            "as a colour is read only where every vertex has one")
 
 
 def _finite_words(words: List[bytes]) -> bool:
@@ -234,12 +250,15 @@ def _first_past(path: str, lines: List[bytes], kind: bytes, count: int) -> Tuple
 def obj_for_trimesh(data: bytes, drop: Sequence[bytes] = ()) -> bytes:
     """An OBJ's text as trimesh reads it right: each face's negative indices written as the
     positive ones they mean (counted back from the entries listed before the face; trimesh
-    counts from the end of the file, or fails) and the index columns of the kinds in ``drop``
-    (``b"vt"``, ``b"vn"``) left out. Other lines are kept as they are."""
+    counts from the end of the file, or fails), the index columns of the kinds in ``drop``
+    (``b"vt"``, ``b"vn"``) left out, and comments after statements cut off (trimesh reads them
+    as numbers). Other lines are kept as they are."""
     counts = {k: 0 for k in _KINDS}
     out = []
     for raw in data.split(b"\n"):
         words = (raw.split(b"#", 1)[0] if b"#" in raw else raw).split()
+        if words and b"#" in raw and words[0] not in (b"mtllib", b"usemtl", b"newmtl", b"g", b"o"):
+            raw = raw.split(b"#", 1)[0]  # a comment after a statement: cut off, as trimesh reads none
         if words and words[0] in counts:
             counts[words[0]] += 1
         elif words and words[0] == b"f":
@@ -301,6 +320,10 @@ def _obj_counts_at_once(data: bytes) -> Optional[Dict[str, Any]]:
     xyz = _numbers_of_lines(raw, line_bytes, v, word_starts[first_word[v]], float, numbers)
     if xyz is None or not np.all(np.isfinite(xyz)):  # colours too: the line scan names the first
         return None
+    notes = []
+    coloured = np.flatnonzero(numbers > 3)
+    if 0 < len(coloured) < len(v):
+        notes.append(partial_colours(len(coloured), len(v), int(v[coloured[0]]) + 1))
     negative = False
     # faces: 3 or more corners, all written one way (v, v/vt, v//vn or v/vt/vn)
     corners = per_line[faces] - 1
@@ -345,7 +368,7 @@ def _obj_counts_at_once(data: bytes) -> Optional[Dict[str, Any]]:
             libraries += 1
     return {"vertices": len(v), "texcoords": len(listed[b"vt"]), "normals": len(listed[b"vn"]),
             "faces": len(faces), "materials": len(materials), "libraries": libraries, "negative": negative,
-            "drop": (), "notes": []}
+            "drop": (), "notes": notes, "comments": False, "polygons": bool(len(faces) and corners.max() > 3)}
 
 
 def _numbers_of_lines(raw: np.ndarray, line_bytes: np.ndarray, lines: np.ndarray, keywords: np.ndarray, dtype: Any,
@@ -383,14 +406,34 @@ def asset_path(folder: str, name: str) -> Optional[str]:
     (the name, then without a leading ``/``, then its last part; percent-escapes decoded too),
     inside that folder; None where there is none."""
     root = os.path.realpath(folder)
-    names = (name, unquote(name))
-    for candidate in dict.fromkeys(c for n in names for c in (n.strip(), n.strip().lstrip("/"), os.path.basename(n))):
+    # as written, percent-escapes decoded, and with Windows' backslashes as slashes
+    names = [name, unquote(name), name.replace("\\", "/"), unquote(name).replace("\\", "/")]
+    candidates = [c for n in names for c in (n.strip(), n.strip().lstrip("/"), os.path.basename(n.strip()))]
+    for candidate in dict.fromkeys(candidates):
         if not candidate:
             continue
         full = os.path.realpath(os.path.join(root, candidate))
         if full.startswith(root + os.sep) and os.path.isfile(full):
             return full
+    for candidate in dict.fromkeys(candidates):  # then in another case (a file written on Windows or macOS)
+        found = _any_case(root, candidate)
+        if found is not None:
+            return found
     return None
+
+
+def _any_case(root: str, relative: str) -> Optional[str]:
+    """The file ``relative`` inside ``root`` whose path matches in any letter case, or None."""
+    here = root
+    for part in [p for p in relative.split("/") if p not in ("", ".")]:
+        if part == ".." or not os.path.isdir(here):
+            return None
+        match = [e for e in os.listdir(here) if e.lower() == part.lower()]
+        if not match:
+            return None
+        here = os.path.join(here, sorted(match)[0])
+    full = os.path.realpath(here)
+    return full if full.startswith(root + os.sep) and os.path.isfile(full) else None
 
 
 def _image_notes(folder: str, name: str, what: str) -> List[str]:
@@ -789,6 +832,37 @@ def gltf_colour_notes(path: str, doc: Dict[str, Any], data: bytes) -> List[str]:
     return notes
 
 
+_INDEX_TYPES = {5121: "<u1", 5123: "<u2", 5125: "<u4"}
+
+
+def gltf_accessor(path: str, doc: Dict[str, Any], index: Any, buffers: Dict[int, Optional[bytes]]
+                  ) -> Optional[np.ndarray]:
+    """The (count, components) values of an accessor of unsigned integers (indices) or floats,
+    or None (another kind, or not readable). ``buffers``: the buffers read so far, the file's
+    own bytes as ``buffers[-1]``."""
+    try:
+        accessor = doc["accessors"][index]
+        dtype = _INDEX_TYPES.get(accessor.get("componentType"))
+        if dtype is None:
+            return _float_accessor(path, doc, index, buffers)
+        if "bufferView" not in accessor or "sparse" in accessor:
+            return None
+        view = doc["bufferViews"][accessor["bufferView"]]
+        b = int(view.get("buffer", 0))
+        if b not in buffers:
+            buffers[b] = _gltf_buffer(path, doc, b, buffers)
+        data = buffers[b]
+        n = _COMPONENTS[accessor["type"]]
+        size = np.dtype(dtype).itemsize
+        stride = int(view.get("byteStride", 0)) or size * n
+        offset = int(view.get("byteOffset", 0)) + int(accessor.get("byteOffset", 0))
+        if data is None:
+            return None
+        return np.ndarray((int(accessor["count"]), n), dtype, data, offset, (stride, size)).copy()
+    except (LookupError, TypeError, ValueError):
+        return None
+
+
 def _float_accessor(path: str, doc: Dict[str, Any], index: Any, buffers: Dict[int, Optional[bytes]]
                     ) -> Optional[np.ndarray]:
     """The (count, components) values of a float accessor, or None (not one, or not readable:
@@ -843,7 +917,9 @@ def gltf_ignored(doc: Dict[str, Any]) -> List[str]:
     if any(p.get("targets") for m in doc.get("meshes") or [] for p in m.get("primitives") or []):
         out.append("morph targets")
     for ext in doc.get("extensionsUsed") or []:
-        if ext not in ("KHR_lights_punctual", "KHR_materials_unlit", "KHR_mesh_quantization"):
+        if ext == "KHR_materials_pbrSpecularGlossiness":  # its diffuse colour and texture are drawn
+            out.append("specular and glossiness")
+        elif ext not in ("KHR_lights_punctual", "KHR_materials_unlit", "KHR_mesh_quantization"):
             out.append(f"extension {ext}")
     for mat in doc.get("materials") or []:
         pbr = mat.get("pbrMetallicRoughness") or {}

@@ -23,7 +23,7 @@ from typing import Any, Dict, Iterator, List, Optional, Tuple, Type
 import numpy as np
 
 from toonmesh import _colors, _core
-from toonmesh.files import _archives, _ply
+from toonmesh.files import _archives, _gltf, _ply, _polygons
 from toonmesh.files._checks import (
     MeshFileError, asset_path, check_gltf_shape, check_gltf_sizes, check_kind, check_obj, check_ply, gltf_colour_notes, gltf_document,
     gltf_file_notes, gltf_ignored, obj_file_notes, obj_for_trimesh, ply_file_notes, ply_header, unlike,
@@ -346,8 +346,10 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
                                 f"most {MAX_MATERIALS:,} materials a file")
         notes, textured = obj_file_notes(path, data)
         said += counts["notes"] + notes
-        if counts["negative"] or counts["drop"]:
+        if counts["negative"] or counts["drop"] or counts["comments"]:
             data = obj_for_trimesh(data, counts["drop"])
+        if counts["polygons"]:  # trimesh splits each as a fan: a concave one is split by ear clipping
+            data = _polygons.split_obj(data)
         texcoords, normals = (counts[k] if kind not in counts["drop"] else 0 for k, kind in (("texcoords", b"vt"), ("normals", b"vn")))
         materials = counts["libraries"] > 0
         # positions as listed (not split at texture seams) unless the corners' normals (drawn) or
@@ -368,11 +370,16 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         check_gltf_sizes(path, doc, data)
         said += gltf_colour_notes(path, doc, data)
         ignored.extend(gltf_ignored(doc))
+        data = _gltf.readable(path, doc, data) or data  # fans as triangles, specular-glossiness as base colour
     try:
         loaded = trimesh.load(io.BytesIO(data), file_type=suffix[1:], process=False, resolver=_Beside(trimesh, path),
                               **extra)
     except MeshFileError:
         raise
+    except ModuleNotFoundError as exc:  # trimesh reads some formats (3MF) with packages of their own
+        name = exc.name or str(exc).rpartition("No module named ")[2].strip("'\"") or "more packages"
+        raise ImportError(f"{path}: reading {suffix or 'this'} files needs {name}: pip install "
+                          "'toonmesh[io]'") from None
     except Exception as exc:  # trimesh raises many kinds for files it cannot parse
         raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
     if suffix == ".stl" and hasattr(loaded, "merge_vertices") and np.isfinite(loaded.vertices).all():
