@@ -137,7 +137,7 @@ def _face_columns(path: str, number: int, lines: List[bytes], raw: bytes, words:
     try:
         return [[int(t) for t in texts if t] for texts in columns]
     except ValueError:
-        raise MeshFileError(_obj_where(path, number, lines, f"not an index in {raw.strip()[:60]!r}")) from None
+        raise MeshFileError(_obj_where(path, number, lines, f"not an index in {_text(raw)!r}")) from None
 
 
 def _statements(lines: List[bytes]) -> Iterator[Tuple[int, bytes, List[bytes]]]:
@@ -173,7 +173,7 @@ def _check_obj_by_line(path: str, data: bytes) -> Dict[str, Any]:
             try:
                 xyz = [float(w) for w in words[1:4]]
             except ValueError:
-                raise MeshFileError(_obj_where(path, number, lines, f"not a number in {raw.strip()[:60]!r}")) from None
+                raise MeshFileError(_obj_where(path, number, lines, f"not a number in {_text(raw)!r}")) from None
             counts[b"v"] += 1
             if not all(math.isfinite(x) for x in xyz):
                 raise MeshFileError(f"{path}: vertex {counts[b'v']} (line {number}) is not finite: {xyz}")
@@ -245,6 +245,27 @@ def _first_past(path: str, lines: List[bytes], kind: bytes, count: int) -> Tuple
             if past:
                 return number, past[0]
     raise AssertionError("no face past the entries")  # pragma: no cover: called only when one is
+
+
+def join_continued(data: bytes) -> bytes:
+    """An OBJ's text with each statement continued over lines (a line ending in a backslash) on
+    one line, the lines it took kept as empty ones after it, so that line numbers stay."""
+    if b"\\\n" not in data and b"\\\r\n" not in data:
+        return data
+    out: List[bytes] = []
+    carried: List[bytes] = []
+    for line in data.split(b"\n"):
+        text = line.rstrip(b"\r")
+        if text.endswith(b"\\"):
+            carried.append(text[:-1])
+            continue
+        out.append(b" ".join(carried + [line]))
+        out.extend([b""] * len(carried))
+        carried = []
+    if carried:
+        out.append(b" ".join(carried))
+        out.extend([b""] * (len(carried) - 1))
+    return b"\n".join(out)
 
 
 def obj_for_trimesh(data: bytes, drop: Sequence[bytes] = ()) -> bytes:
@@ -390,6 +411,11 @@ def _numbers_of_lines(raw: np.ndarray, line_bytes: np.ndarray, lines: np.ndarray
     except (ValueError, DeprecationWarning):
         return None
     return out if len(out) == int(expected.sum()) else None
+
+
+def _text(raw: bytes) -> str:
+    """A line of a file as text, for a message: its first 60 characters."""
+    return raw.strip()[:60].decode("utf-8", errors="replace")
 
 
 def _obj_where(path: str, number: int, lines: List[bytes], problem: str) -> str:
@@ -587,13 +613,13 @@ def ply_header(path: str, head: Optional[bytes] = None) -> PlyHeader:
                 if count < 0:
                     raise ValueError
             except (IndexError, ValueError):
-                raise MeshFileError(f"{path}: header line {number}: bad element count in {raw.strip()[:60]!r}") from None
+                raise MeshFileError(f"{path}: header line {number}: bad element count in {_text(raw)!r}") from None
             elements.append((words[1], count, []))
         elif words[0] == "property" and elements:
             prop = tuple(words[1:])
             types = prop[1:3] if prop[:1] == ("list",) else prop[:1]
             if not prop or any(t not in _PLY_SIZES for t in types):
-                raise MeshFileError(f"{path}: header line {number}: unknown property type in {raw.strip()[:60]!r}")
+                raise MeshFileError(f"{path}: header line {number}: unknown property type in {_text(raw)!r}")
             elements[-1][2].append(prop)
     if fmt not in ("ascii", "binary_little_endian", "binary_big_endian"):
         raise MeshFileError(f"{path}: unknown PLY format {fmt!r}")

@@ -26,7 +26,7 @@ from toonmesh import _colors, _core
 from toonmesh.files import _archives, _gltf, _ply, _polygons
 from toonmesh.files._checks import (
     MeshFileError, asset_path, check_gltf_shape, check_gltf_sizes, check_kind, check_obj, check_ply, gltf_colour_notes, gltf_document,
-    gltf_file_notes, gltf_ignored, obj_file_notes, obj_for_trimesh, ply_file_notes, ply_header, unlike,
+    gltf_file_notes, gltf_ignored, join_continued, obj_file_notes, obj_for_trimesh, ply_file_notes, ply_header, unlike,
 )
 from toonmesh._scene import Mesh, normal_mode
 
@@ -340,6 +340,7 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
     extra: Dict[str, Any] = {}
     materials = True
     if suffix == ".obj":
+        data = join_continued(data)  # statements continued over lines (a backslash at the end)
         counts = check_obj(path, data)
         if counts["materials"] > MAX_MATERIALS:
             raise MeshFileError(f"{path}: {counts['materials']:,} materials ('usemtl' names); toonmesh reads at "
