@@ -9,6 +9,9 @@ broken file never renders with holes and exit status 0.
 from __future__ import annotations
 
 import base64
+import contextlib
+import contextvars
+import io
 import json
 import math
 import os
@@ -22,6 +25,34 @@ import numpy as np
 
 class MeshFileError(ValueError):
     """A mesh file that cannot be read as it claims to be; the message names the file."""
+
+
+#: The bytes of the files opened while one mesh file is read (itself, its MTL, textures and
+#: buffers), by full path: each is opened once, by the checks or trimesh, whichever comes first.
+_OPENED: "contextvars.ContextVar[Optional[Dict[str, bytes]]]" = contextvars.ContextVar("opened", default=None)
+
+
+@contextlib.contextmanager
+def reading() -> Iterator[None]:
+    """While a mesh file is read: each file it names opened once (see :func:`file_bytes`)."""
+    token = _OPENED.set({})
+    try:
+        yield
+    finally:
+        _OPENED.reset(token)
+
+
+def file_bytes(path: str) -> bytes:
+    """The bytes of the file ``path``, opened once while a mesh file is read."""
+    opened = _OPENED.get()
+    full = os.path.realpath(path)
+    if opened is not None and full in opened:
+        return opened[full]
+    with open(full, "rb") as f:
+        data = f.read()
+    if opened is not None:
+        opened[full] = data
+    return data
 
 
 # ------------------------------------------------------------------------------------------------
@@ -472,7 +503,7 @@ def _image_notes(folder: str, name: str, what: str) -> List[str]:
     except ImportError:  # trimesh reads no image either; nothing to check it with
         return []
     try:
-        with Image.open(found) as image:
+        with Image.open(io.BytesIO(file_bytes(found))) as image:
             image.size
     except Exception as exc:  # PIL raises several kinds for what it cannot decode
         return [f"{what} {found} cannot be read as an image ({_one_line(exc)}): not drawn"]
@@ -493,8 +524,7 @@ def obj_file_notes(path: str, data: bytes) -> Tuple[List[str], bool]:
     found = asset_path(folder, name)
     if found is None:
         return [f"MTL file {os.path.join(folder, name)} not found: its materials (colours, textures) are not drawn"], False
-    with open(found, "rb") as f:
-        text = f.read().decode(errors="replace")
+    text = file_bytes(found).decode(errors="replace")
     notes: List[str] = []
     material = ""
     textured = False
@@ -927,8 +957,7 @@ def _gltf_buffer(path: str, doc: Dict[str, Any], index: int, buffers: Dict[int, 
     found = asset_path(os.path.dirname(os.path.abspath(path)), uri)
     if found is None:
         return None
-    with open(found, "rb") as f:
-        return f.read()
+    return file_bytes(found)
 
 
 def gltf_ignored(doc: Dict[str, Any]) -> List[str]:

@@ -25,8 +25,9 @@ import numpy as np
 from toonmesh import _colors, _core
 from toonmesh.files import _archives, _gltf, _ply, _polygons
 from toonmesh.files._checks import (
-    MeshFileError, asset_path, check_gltf_shape, check_gltf_sizes, check_kind, check_obj, check_ply, gltf_colour_notes, gltf_document,
-    gltf_file_notes, gltf_ignored, join_continued, obj_file_notes, obj_for_trimesh, ply_file_notes, ply_header, unlike,
+    MeshFileError, asset_path, check_gltf_shape, check_gltf_sizes, check_kind, check_obj, check_ply, file_bytes,
+    gltf_colour_notes, gltf_document, gltf_file_notes, gltf_ignored, join_continued, obj_file_notes, obj_for_trimesh,
+    ply_file_notes, ply_header, reading, unlike,
 )
 from toonmesh._scene import Mesh, normal_mode
 
@@ -202,7 +203,7 @@ def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, T
     data = b""
     try:
         data = _bytes(path)  # the one time the file is opened
-        with warnings.catch_warnings(record=True) as caught, _quiet_trimesh_log():
+        with warnings.catch_warnings(record=True) as caught, _quiet_trimesh_log(), reading():
             warnings.simplefilter("always")
             try:
                 scene, materials = _read(path, data, keep_seams, ignored, said)
@@ -398,8 +399,7 @@ def _Beside(trimesh: Any, path: str) -> Any:
             found = asset_path(self.parent, name)
             if found is None:
                 return super().get(name)  # type: ignore[no-any-return]
-            with open(found, "rb") as f:
-                return f.read()
+            return file_bytes(found)  # opened once: the checks may have read it
 
     return Beside(path)
 
