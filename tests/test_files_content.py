@@ -99,7 +99,7 @@ def test_a_concave_polygon_is_triangulated_without_overlap(tmp_path, shape):
         top = [[x, 1.0 if k % 2 == 0 else 0.2] for k, x in enumerate(np.linspace(4, 0, 9))]
         xy = np.array([[0, 0], [4, 0]] + [[4, 1.0]] + top[1:-1] + [[0, 1.0]], float)
     else:
-        xy = np.array([[1, 1], [2, 1], [2, 0], [0, 0], [0, 2], [1, 2]], float)  # the fan from a reflex corner
+        xy = np.array([[2, 1], [1, 1], [1, 2], [0, 2], [0, 0], [2, 0]], float)  # a fan from an arm's end crosses the notch
     (mesh,) = tm.load(polygon_obj(tmp_path / f"{shape}.obj", xy))
     assert len(mesh.faces) == len(xy) - 2
     assert covered(mesh) == pytest.approx(shoelace(xy), rel=0.02)
