@@ -737,12 +737,14 @@ def _json_kind(value: Any) -> str:
     return "an array" if isinstance(value, list) else "an object"
 
 
-#: What the glTF properties that toonmesh and trimesh read hold: "int" (an index or count),
-#: "num", "str", "obj", ("ints",) an array of indices, ("nums", n) an array of n numbers, and
-#: ("objs", KEY) an array of objects each checked by the schema of KEY (an object by KEY when
-#: written {KEY}). An index names an entry of the array given after it: ("int", "meshes").
+#: What the glTF properties that toonmesh and trimesh read hold, by the schema of the object they
+#: sit in: ("int", ARRAY) an integer 0 or more, an index into the document's ARRAY where one is
+#: named (a count or a scene's index where None); ("num",) a number; ("str",) a string;
+#: ("obj", SCHEMA) an object checked by SCHEMA; ("map", ARRAY) an object of indices into ARRAY;
+#: ("ints", ARRAY) an array of indices; ("strs",) an array of strings; ("nums", n) an array of
+#: n numbers; ("objs", SCHEMA) an array of objects, each checked by SCHEMA (None: not looked into).
 _GLTF: Dict[str, Dict[str, Any]] = {
-    "": {"scene": ("int", "scenes"), "scenes": ("objs", "scene"), "nodes": ("objs", "node"),
+    "": {"scene": ("int", None), "scenes": ("objs", "scene"), "nodes": ("objs", "node"),
          "meshes": ("objs", "mesh"), "accessors": ("objs", "accessor"), "bufferViews": ("objs", "bufferView"),
          "buffers": ("objs", "buffer"), "materials": ("objs", "material"), "textures": ("objs", "texture"),
          "images": ("objs", "image"), "samplers": ("objs", None), "cameras": ("objs", None),
@@ -764,7 +766,7 @@ _GLTF: Dict[str, Dict[str, Any]] = {
     "pbr": {"baseColorFactor": ("nums", 4), "baseColorTexture": ("obj", "texture info")},
     "specular-glossiness": {"diffuseFactor": ("nums", 4), "diffuseTexture": ("obj", "texture info")},
     "texture info": {"index": ("int", "textures"), "texCoord": ("int", None)},
-    "texture": {"source": ("int", "images"), "sampler": ("int", "samplers")},
+    "texture": {"source": ("int", "images"), "sampler": ("int", None)},
     "image": {"uri": ("str",), "bufferView": ("int", "bufferViews"), "mimeType": ("str",)},
 }
 
