@@ -232,3 +232,11 @@ def test_a_3mf_places_its_components_and_build_items(tmp_path):
     offsets = sorted(tuple(np.round(m.transform[:3, 3] if m.transform is not None else [0, 0, 0], 6))
                      for m in meshes)
     assert offsets == [(0, 0, 0), (0, 5, 0), (3, 0, 0)]
+
+
+def test_a_polygon_far_from_flat_keeps_its_fan(tmp_path):
+    need("trimesh")
+    path = tmp_path / "bent.obj"  # a square with a corner lifted far out of its plane (as trimesh's polygonfaces.obj)
+    path.write_text("v -1 0 1\nv 1 0 1\nv 1 0 -1\nv -1 0 -1\nv 0 1 -1\nf 1 2 3 4 5\n")
+    (mesh,) = tm.load(str(path))
+    assert mesh.faces.tolist() == [[0, 1, 2], [0, 2, 3], [0, 3, 4]]

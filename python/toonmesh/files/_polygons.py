@@ -3,7 +3,8 @@
 trimesh splits every polygon into a fan about its first corner, which is right for a convex
 polygon only: the fan of a concave one covers area outside it (an L-shaped or star-shaped face
 fills its notches). Here a polygon whose fan is wrong is split by ear clipping in the plane that
-fits it best (Newell's normal), so that its triangles cover it once; a convex one keeps its fan.
+fits it best (Newell's normal), so that its triangles cover it once; one whose fan is right (no
+fan triangle turned over: a convex polygon, or one seen from its first corner) keeps it.
 """
 
 from __future__ import annotations
@@ -12,8 +13,12 @@ from typing import List, Optional
 
 import numpy as np
 
-#: A fan is right when its triangles' areas sum to the polygon's own, to this share.
+#: A fan triangle counts as turned over when its area along the polygon's normal is below minus
+#: this share of the fan's.
 FAN_TOLERANCE = 1e-9
+#: A polygon whose corners lie further from their plane than this share of its size is not flat:
+#: it keeps trimesh's fan (no split of it is the right one).
+FLAT = 0.01
 
 
 def plane_coordinates(points: np.ndarray) -> np.ndarray:
@@ -37,15 +42,6 @@ def plane_coordinates(points: np.ndarray) -> np.ndarray:
 
 def _cross(o: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
     return float((a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]))
-
-
-def fan_is_right(xy: np.ndarray) -> bool:
-    """Whether the fan about the first corner covers the (counter-clockwise) polygon once."""
-    a, b, c = xy[0], xy[1:-1], xy[2:]
-    areas = (b[:, 0] - a[0]) * (c[:, 1] - a[1]) - (b[:, 1] - a[1]) * (c[:, 0] - a[0])
-    total = float(np.sum(xy[:, 0] * np.roll(xy[:, 1], -1) - np.roll(xy[:, 0], -1) * xy[:, 1]))
-    scale = max(float(np.abs(areas).sum()), 1e-300)
-    return bool(np.all(areas >= -FAN_TOLERANCE * scale) and abs(np.abs(areas).sum() - total) <= FAN_TOLERANCE * scale * 10)
 
 
 def ear_clip(xy: np.ndarray) -> Optional[List[List[int]]]:
@@ -94,27 +90,32 @@ def triangles(points: np.ndarray) -> List[List[int]]:
     fan = [[0, i, i + 1] for i in range(1, n - 1)]
     if n <= 3:
         return fan
-    xy = plane_coordinates(points)
-    if fan_is_right(xy):
+    if fans_are_right(np.asarray(points, dtype=np.float64)[None])[0]:
         return fan
-    clipped = ear_clip(xy)
+    clipped = ear_clip(plane_coordinates(points))
     return fan if clipped is None else clipped
 
 
 def fans_are_right(points: np.ndarray) -> np.ndarray:
-    """:func:`fan_is_right` of many polygons of n corners at once ((k, n, 3) corners): (k,) bool."""
+    """Whether the fan about the first corner covers each polygon once (none of its triangles
+    turned over), or the polygon is not flat (see :data:`FLAT`), for many polygons of n corners
+    at once ((k, n, 3) corners): (k,) bool."""
     p = np.asarray(points, dtype=np.float64)
     nxt = np.roll(p, -1, axis=1)
     normal = np.stack([np.sum((p[..., 1] - nxt[..., 1]) * (p[..., 2] + nxt[..., 2]), axis=1),
                        np.sum((p[..., 2] - nxt[..., 2]) * (p[..., 0] + nxt[..., 0]), axis=1),
                        np.sum((p[..., 0] - nxt[..., 0]) * (p[..., 1] + nxt[..., 1]), axis=1)], axis=1)
     a = p[:, :1]
-    # each fan triangle's area along the polygon's normal, and the polygon's own (Newell's length)
+    # each fan triangle's area along the polygon's normal: all of one sign, and the fan covers
+    # each point inside once (its winding number); one turned over covers what is outside
     areas = np.einsum("kij,kj->ki", np.cross(p[:, 1:-1] - a, p[:, 2:] - a), normal)
-    total = np.sum(normal * normal, axis=1)  # |N|^2: the areas are along N, unnormalised
     scale = np.maximum(np.abs(areas).sum(axis=1), 1e-300)
-    return np.all(areas >= -FAN_TOLERANCE * scale[:, None], axis=1) & (
-        np.abs(np.abs(areas).sum(axis=1) - total) <= FAN_TOLERANCE * 10 * scale)
+    # a polygon far from flat has no one right split: trimesh's fan is kept, as it was read
+    unit = normal / np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
+    height = np.ptp(np.einsum("kij,kj->ki", p, unit), axis=1)
+    size = np.linalg.norm(np.ptp(p, axis=1), axis=1)
+    bent = height > FLAT * size
+    return np.all(areas >= -FAN_TOLERANCE * scale[:, None], axis=1) | bent
 
 
 def split_obj(data: bytes) -> bytes:
