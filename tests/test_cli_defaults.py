@@ -56,7 +56,7 @@ OWN = {
     ("render", "outline_width"), ("render", "views"), ("render", "fps"), ("render", "up"), ("render", "smooth"),
     ("render", "smooth_method"), ("render", "normals"), ("render", "backend"),
     ("smooth", "out"), ("smooth", "method"), ("smooth", "iterations"), ("smooth", "preset"), ("smooth", "weights"),
-    ("smooth", "boundary"), ("smooth", "weld"), ("smooth", "crease_angle"),
+    ("smooth", "boundary"), ("smooth", "weld"), ("smooth", "crease_angle"), ("smooth", "force"),
     ("edges", "eye"), ("edges", "up"), ("edges", "size"), ("edges", "hidden"), ("edges", "smooth_strokes"),
     ("edges", "order"), ("edges", "simplify"), ("edges", "backend"),
     ("demo", "out"), ("demo", "width"), ("demo", "height"), ("demo", "backend"),

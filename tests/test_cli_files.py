@@ -257,7 +257,11 @@ def test_smooth_names_the_texture_after_the_output(tmp_path, capsys):
     out.mkdir()
     in_process(capsys, "smooth", red, "-o", str(out / "red.obj"))
     in_process(capsys, "smooth", blue, "-o", str(out / "blue.obj"))  # the same folder: nothing overwritten
-    in_process(capsys, "smooth", red, "-o", str(out / "red.ply"))
+    # red.ply's texture would be red.png, the OBJ's: refused, naming it, unless --force
+    one_line_error(in_process(capsys, "smooth", red, "-o", str(out / "red.ply"), check=False),
+                   f"would replace {out / 'red.png'}", "--force")
+    assert not (out / "red.ply").exists()
+    in_process(capsys, "smooth", red, "-o", str(out / "red.ply"), "--force")
     in_process(capsys, "smooth", red, "-o", str(out / "red2.ply"))
     assert sorted(p.name for p in out.iterdir()) == sorted(["blue.mtl", "blue.obj", "blue.png", "red.mtl", "red.obj",
                                                              "red.png", "red.ply", "red2.ply", "red2.png"])
@@ -265,6 +269,55 @@ def test_smooth_names_the_texture_after_the_output(tmp_path, capsys):
         ((colour, keys),) = drawn(out / name)
         assert keys == ["texture", "uv"] and np.allclose(colour * 255, rgb), (name, colour)
     assert "comment TextureFile red2.png" in (out / "red2.ply").read_bytes()[:300].decode(errors="replace")
+
+
+def test_smooth_never_replaces_its_input_or_a_file_it_did_not_write(tmp_path, capsys):
+    folder = tmp_path / "rifle"
+    folder.mkdir()
+    in_process(capsys, "smooth", textured_obj(tmp_path / "src", (200, 120, 40)), "-o", str(folder / "rifle.obj"))
+    files = lambda: {p.name: p.read_bytes() for p in folder.iterdir()}  # noqa: E731
+    before = files()
+    assert sorted(before) == ["rifle.mtl", "rifle.obj", "rifle.png"]
+    # over its input: refused, nothing written
+    rifle = str(folder / "rifle.obj")
+    one_line_error(in_process(capsys, "smooth", rifle, "-o", rifle, check=False), rifle, "file being read", "--force")
+    one_line_error(in_process(capsys, "smooth", rifle, rifle, check=False), "file being read")
+    assert files() == before
+    # beside files of another: an unrelated rifle2.mtl and rifle2.png are kept, naming them
+    (folder / "rifle2.mtl").write_text("newmtl mine\nKd 0 0 1\n")
+    (folder / "rifle2.png").write_bytes(before["rifle.png"][:-1] + b"\x00")
+    theirs = files()
+    line = one_line_error(in_process(capsys, "smooth", rifle, "-o", str(folder / "rifle2.obj"), check=False),
+                          str(folder / "rifle2.mtl"), str(folder / "rifle2.png"), "--force")
+    assert "not written by this run" in line
+    assert files() == theirs  # nothing written, nothing replaced, no temporary file left
+    # with --force: written, in place, through temporary files renamed (none left)
+    in_process(capsys, "smooth", rifle, "-o", rifle, "--iterations", "1", "--force")
+    assert sorted(files()) == sorted(theirs)
+    ((colour, keys),) = drawn(folder / "rifle.obj")
+    assert keys == ["texture", "uv"] and np.allclose(colour * 255, (200, 120, 40))
+
+
+def test_smooth_writes_no_texture_for_a_mesh_without_one(tmp_path, capsys):
+    header = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n{uv}"
+              "element face 2\nproperty list uchar int vertex_indices\nend_header\n")
+    rows = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.1]]
+    for uv in (False, True):
+        name = "uv" if uv else "plain"
+        text = header.format(uv="property float s\nproperty float t\n" if uv else "")
+        text += "".join(" ".join(map(str, r + ([r[0], r[1]] if uv else []))) + "\n" for r in rows)
+        src = tmp_path / f"{name}.ply"
+        src.write_text(text + "3 0 1 2\n3 0 2 3\n")
+        for suffix in (".obj", ".ply", ".glb"):
+            out = tmp_path / name / f"out{suffix}"
+            out.parent.mkdir(exist_ok=True)
+            in_process(capsys, "smooth", str(src), "-o", str(out), "--iterations", "1")
+            assert b"TextureFile" not in out.read_bytes()[:400] and b"mtllib" not in out.read_bytes()
+            ((colour, keys),) = drawn(out)
+            assert "texture" not in keys and np.allclose(colour, 1.0), (name, suffix, keys, colour)
+        assert sorted(p.name for p in (tmp_path / name).iterdir()) == ["out.glb", "out.obj", "out.ply"]
+    uvs = need("trimesh").load(str(tmp_path / "uv" / "out.obj"), process=False).visual.uv
+    assert uvs is not None and len(uvs) == 4  # the texture coordinates are kept
 
 
 def test_smooth_keeps_colours_uvs_and_materials_where_the_format_holds_them(tmp_path, capsys):
@@ -292,8 +345,9 @@ def test_smooth_keeps_colours_uvs_and_materials_where_the_format_holds_them(tmp_
         ((before, _),) = drawn(src)
         assert not np.allclose(before, 1.0), what  # each source has a colour of its own
         for suffix in (".obj", ".ply", ".glb", ".stl", ".off"):
-            out = tmp_path / "out" / f"{what.replace(' ', '-')}{suffix}"
-            out.parent.mkdir(exist_ok=True)
+            # a folder per format: an OBJ's and a PLY's texture would share a name (refused, see above)
+            out = tmp_path / "out" / suffix[1:] / f"{what.replace(' ', '-')}{suffix}"
+            out.parent.mkdir(parents=True, exist_ok=True)
             r = in_process(capsys, "smooth", src, "-o", str(out), "--iterations", "1", check=False)
             assert r.returncode == 0, r.stderr
             ((after, _),) = drawn(out)

@@ -15,7 +15,7 @@ import pytest
 
 import toonmesh as tm
 from conftest import need
-from toonmesh import _load
+from toonmesh.files import _load
 
 
 def box(size: float = 1.0):
@@ -413,7 +413,7 @@ def test_a_file_renders_in_its_own_colours_with_its_instances_uploaded_once(tmp_
 
 
 def test_the_whole_file_obj_check_agrees_with_the_line_scan(tmp_path):
-    from toonmesh import _file_checks
+    from toonmesh.files import _checks as _file_checks
 
     texts = [
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf -3//-1 -2//1 -1//1\n",

@@ -117,7 +117,7 @@ def find_cycle(graph: Dict[str, Set[str]]) -> Optional[List[str]]:
 
 def test_the_graph_is_read():
     graph = import_graph()
-    assert {f"{NAME}._render", f"{NAME}._load", f"{NAME}._scene", f"{NAME}.viewer", f"{NAME}.batch"} <= set(graph)
+    assert {f"{NAME}._render", f"{NAME}.files._load", f"{NAME}._scene", f"{NAME}.viewer", f"{NAME}.batch"} <= set(graph)
     assert f"{NAME}._core" in graph[f"{NAME}._scene"]  # an arrow found, so the others would be too
 
 
@@ -140,5 +140,5 @@ def test_no_module_imports_the_front_door():
 def test_the_scene_description_sits_below_files_and_rendering():
     graph = import_graph()
     scene = f"{NAME}._scene"
-    assert scene in graph[f"{NAME}._load"] and scene in graph[f"{NAME}._render"]
-    assert not graph[scene] & {f"{NAME}._load", f"{NAME}._render", NAME}, graph[scene]
+    assert scene in graph[f"{NAME}.files._load"] and scene in graph[f"{NAME}._render"]
+    assert not graph[scene] & {f"{NAME}.files._load", f"{NAME}._render", NAME}, graph[scene]

@@ -16,7 +16,7 @@ import numpy as np
 from PIL import Image
 
 import toonmesh as tm
-from toonmesh._files import read_mesh
+from toonmesh.files._load import read_mesh
 from toonmesh.bench.effects import SHADOW_SCENES
 from toonmesh.data import bunny
 

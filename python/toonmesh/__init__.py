@@ -39,7 +39,7 @@ from toonmesh._render import (
     render,
 )
 
-from toonmesh._load import load
+from toonmesh.files._load import load
 from toonmesh._render import __all__ as _rendering
 from toonmesh.viewer import Viewer, ViewerClosedError
 

@@ -84,7 +84,7 @@ def from_trimesh(mesh: Any) -> Dict[str, Any]:
     elif kind == "texture":
         material = getattr(visual, "material", None)
         uv = getattr(visual, "uv", None)
-        image, factor = None, None
+        image, factor, own_white = None, None, False
         if hasattr(material, "baseColorTexture"):  # a glTF (PBR) material
             image = material.baseColorTexture
             if material.baseColorFactor is not None:
@@ -101,11 +101,12 @@ def from_trimesh(mesh: Any) -> Dict[str, Any]:
             diffuse = getattr(material, "diffuse", None)
             if image is None and diffuse is not None and not np.array_equal(diffuse, _default_diffuse()):
                 factor = np.asarray(diffuse, dtype=np.float64) / 255.0
+                own_white = bool(np.all(factor == 1.0))  # a white Kd is the file's colour: drawn white
         if image is not None and uv is not None:
             found["texture"], found["uv"] = image, np.asarray(uv)
         elif image is not None:
             unused.append("its material's image (the mesh has no uv)")
-        if factor is not None and not np.all(factor == 1.0):
+        if factor is not None and (own_white or not np.all(factor == 1.0)):
             found["vertex_colors"] = np.tile(np.asarray(factor, dtype=np.float64)[:4], (len(mesh.vertices), 1))
     if unused:
         found["unused"] = unused

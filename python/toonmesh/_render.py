@@ -23,7 +23,8 @@ from typing import TYPE_CHECKING, Any, Dict, Iterator, List, NamedTuple, Optiona
 
 import numpy as np
 
-from toonmesh import _colors, _core, _load
+from toonmesh import _colors, _core
+from toonmesh.files import _load
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions, kang_table
 from toonmesh._input import mesh_arrays
 from toonmesh._results import RenderResult, RenderStack, stack_of
@@ -102,16 +103,18 @@ class Renderer:
         """
         return self._add(vertices, faces, normals, smooth_iterations, _colors.gather(vertices, colors, "add_mesh"))
 
-    def _add(self, vertices: Any, faces: Any, normals: Normals, smooth_iterations: int, colors: Dict[str, Any]) -> MeshHandle:
+    def _add(self, vertices: Any, faces: Any, normals: Normals, smooth_iterations: int, colors: Dict[str, Any],
+             source: str = "") -> MeshHandle:
         """Every upload goes through here (:meth:`add_mesh`, :func:`place_meshes`): ``colors``
-        are colour keywords already gathered."""
+        are colour keywords already gathered; ``source``, the file a mesh was read from, names
+        it in the upload's warnings."""
         iterations = _smoothing_iterations(smooth_iterations)
         V, F = mesh_arrays(vertices, faces)
         V = _smoothed(V, F, iterations)
         normals = after_smoothing(normals, iterations > 0, "smooth_iterations")
         mesh_id, normals, notes = self._engine.add_mesh(V, F, normals, **colors)
         for note in notes:
-            warnings.warn(note, UserWarning, stacklevel=3)
+            warnings.warn(f"{source}: {note}" if source else note, UserWarning, stacklevel=3)
         return MeshHandle(self, mesh_id, len(V), len(F), normals)
 
     def remove_mesh(self, mesh: MeshHandle) -> None:
@@ -187,7 +190,8 @@ def place_meshes(renderer: Renderer, meshes: Any, smooth_iterations: int = 0,
                 key = geometry_key(item)
                 handle = by_geometry.get(key)
                 if handle is None:
-                    handle = renderer._add(item.vertices, item.faces, item.normals, smooth_iterations, item.colors)
+                    handle = renderer._add(item.vertices, item.faces, item.normals, smooth_iterations, item.colors,
+                                          getattr(item, "source", ""))
                     by_geometry[key] = handle
                     uploaded.append(handle)
             elif handle.renderer is not renderer:

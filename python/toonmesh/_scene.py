@@ -1,7 +1,7 @@
 """The scene as Python describes it: :class:`Mesh` (geometry, material, transform, normals, up
 axis and colour), :class:`MeshHandle` (a mesh already on a renderer's device) and the normal modes.
 
-This is the bottom of the rendering layers: files (:mod:`toonmesh._load`) make meshes and the
+This is the bottom of the rendering layers: files (:mod:`toonmesh.files._load`) make meshes and the
 renderer (:mod:`toonmesh._render`) draws them; both take them from here, so that neither needs
 the other to describe a scene.
 """
@@ -132,6 +132,9 @@ class Mesh:
         n_vertices = self.handle.n_vertices if self.handle is not None else int(np.shape(self.vertices)[0] if np.ndim(self.vertices) else 0)
         self.normals: Normals = normal_mode(normals, n_vertices)
         self.up: Optional[str] = _core._up_axis(up)
+        #: The file the mesh was read from (set by :func:`toonmesh.load`; "" for none): the
+        #: warnings of its upload name it.
+        self.source = ""
 
 
 def normal_mode(normals: Any, n_vertices: int) -> Normals:

@@ -1,7 +1,7 @@
 """The command line: ``toonmesh`` (console script) and ``python -m toonmesh``.
 
     toonmesh render MESH... -o OUT|--video OUT [--size WxH] [--style S] [--normals MODE] [--views N [--fps N]] [--up x|y|z] ...
-    toonmesh smooth IN -o OUT [--method M] [--iterations N] [--preset P] [--crease-angle DEG] [--weld]
+    toonmesh smooth IN -o OUT [--method M] [--iterations N] [--preset P] [--crease-angle DEG] [--weld] [--force]
     toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG] [--smooth-strokes PX]
     toonmesh bench smooth|edges|render|effects|viewer|all [--quick] [--json FILE]
     toonmesh demo
@@ -32,12 +32,14 @@ from toonmesh import _core, _strokes, smooth
 from toonmesh._core import __version__
 from toonmesh._described import described
 from toonmesh._described_flags import CORE_DEFAULT, add_described, errors_as_flags, sets, styles
-from toonmesh._files import (
-    IMAGE_SUFFIXES, Part, check_distinct_names, check_writable, image_suffix, read_mesh, seam_normals, view_paths,
+from toonmesh.files._write import (
+    IMAGE_SUFFIXES, Part, check_distinct_names, check_not_input, check_writable, image_suffix, seam_normals, view_paths,
     write_parts,
 )
 from toonmesh._line_drawing import summary, view_lines, write_npz, write_svg
-from toonmesh._load import OWN_COLOURS_WHITE, Surface, file_up_axis, read_surfaces, up_conventions
+from toonmesh.files._load import (
+    OWN_COLOURS_WHITE, Surface, file_up_axis, read_mesh, read_surfaces, up_conventions,
+)
 from toonmesh.edges import feature_edges
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 from toonmesh._render import Mesh, RenderResult, gpu_info, render
@@ -362,7 +364,9 @@ def cmd_smooth(args: argparse.Namespace) -> int:
     coordinates, texture, colours, material colours, normal seams and parts."""
 
     out = _smooth_output(args)
-    placed = read_surfaces(mesh_file(args.input), keep_seams=True)
+    source = mesh_file(args.input)
+    check_not_input(out, source, args.force)
+    placed = read_surfaces(source, keep_seams=True)
     check_writable(out, len(placed), args.input)
     # each geometry once, with its placements; all smoothed together where the first one puts it
     grouped: Dict[int, Tuple[Surface, List[Any]]] = {}
@@ -395,7 +399,7 @@ def cmd_smooth(args: argparse.Namespace) -> int:
         local = surface.vertices + (moved if np.array_equal(R, np.eye(3)) else moved @ np.linalg.pinv(R).T)
         normals = None if surface.normals is None else seam_normals(local, surface.faces, surface.normals)
         parts.append(Part(surface, local, normals, transforms))
-    lost = write_parts(out, parts)
+    lost = write_parts(out, parts, force=args.force)
     if lost:
         warnings.warn(f"{out}: a {os.path.splitext(out)[1] or 'file without suffix'} file as written here holds no "
                       f"{', '.join(lost)}: not written", stacklevel=2)
@@ -640,6 +644,9 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     p.add_argument("--weld", action="store_true",
                    help="treat vertices at the same position as one (default: off, but always on for a file "
                         "whose texture coordinates or normals split its vertices)")
+    p.add_argument("--force", action="store_true",
+                   help="write over the input file, and over files beside OUT that this run did not write (its "
+                        "MTL, its texture); default: refuse, naming them")
     p.set_defaults(run=cmd_smooth)
 
     p = sub.add_parser("edges", help="outline edges of a mesh file as SVG or NPZ",

@@ -46,7 +46,7 @@ import numpy as np
 from toonmesh import _core
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
 from toonmesh._described import default
-from toonmesh._load import is_scene
+from toonmesh.files._load import is_scene
 from toonmesh._render import (PlacedMesh, Renderer, _core_items, draw, draw_views, own_colours,
                               scene_items, shared_renderer)
 from toonmesh._results import RenderResult

@@ -19,7 +19,7 @@ import tempfile
 import zipfile
 from typing import IO, Any, Callable, Dict, Iterator, List, Optional, Tuple
 
-from toonmesh._file_checks import MeshFileError
+from toonmesh.files._checks import MeshFileError
 
 #: The most bytes one archive or compressed file may unpack to.
 MAX_UNPACKED = 1 << 31

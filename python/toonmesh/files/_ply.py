@@ -9,18 +9,18 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
-from toonmesh._file_checks import PLY_TYPES, MeshFileError, ply_header, strip_triangles
+from toonmesh.files._checks import PLY_TYPES, MeshFileError, PlyHeader, strip_triangles
 
 
-def has_strips(path: str) -> bool:
+def has_strips(header: PlyHeader) -> bool:
     """Whether a PLY file's header declares a ``tristrips`` element."""
-    return any(name == "tristrips" for name, _, _ in ply_header(path)[1])
+    return any(name == "tristrips" for name, _, _ in header.elements)
 
 
-def read(path: str) -> Tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
+def read(path: str, header: PlyHeader, data: bytes) -> Tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
     """(V (N, 3) float64, F (M, 3) int64, vertex colours (N, 4) uint8 or None) of a PLY whose
-    faces are triangle strips (see :func:`toonmesh._file_checks.strip_triangles`)."""
-    values = _values(path)
+    faces are triangle strips (see :func:`toonmesh.files._checks.strip_triangles`)."""
+    values = _values(path, header, data)
     vertex = values.get("vertex", {})
     if not all(k in vertex for k in "xyz"):
         raise MeshFileError(f"{path}: no x, y, z vertex properties")
@@ -43,16 +43,16 @@ def read(path: str) -> Tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
 COLOUR_PROPERTIES = ("red", "green", "blue", "alpha")
 
 
-def colour_notes(path: str) -> List[str]:
+def colour_notes(path: str, header: PlyHeader, data: bytes) -> List[str]:
     """A note per element (vertex, face) whose float colours hold values that are not numbers
     (trimesh turns them into black, silently); the file is read only when its header declares
     float colours."""
-    floats = [name for name, _, props in ply_header(path)[1] if any(
+    floats = [name for name, _, props in header.elements if any(
         p[-1] in COLOUR_PROPERTIES and p[0] != "list" and PLY_TYPES[p[0]].startswith("f") for p in props)]
     if not floats:
         return []
     try:
-        values = _values(path)
+        values = _values(path, header, data)
     except MeshFileError:
         return []  # trimesh says what is wrong
     notes = []
@@ -64,12 +64,10 @@ def colour_notes(path: str) -> List[str]:
     return notes
 
 
-def _values(path: str) -> Dict[str, Dict[str, Any]]:
-    """Every element's properties by name, ASCII or binary."""
-    fmt, elements, header = ply_header(path)
-    with open(path, "rb") as f:
-        f.seek(header)
-        data = f.read()
+def _values(path: str, header: PlyHeader, data: bytes) -> Dict[str, Dict[str, Any]]:
+    """Every element's properties by name, ASCII or binary (``data``: the file's bytes)."""
+    fmt, elements = header.format, header.elements
+    data = data[header.size :]
     order = {"binary_little_endian": "<", "binary_big_endian": ">"}.get(fmt)
     words = data.split() if order is None else []
     pos = 0

@@ -1,7 +1,7 @@
 """Mesh files and trimesh scenes as lists of :class:`toonmesh.Mesh`: ``toonmesh.load(path)``.
 
 Files are read by trimesh (``pip install 'toonmesh[io]'``) after toonmesh's own checks
-(:mod:`toonmesh._file_checks`). A scene's node transforms are composed into each mesh's world
+(:mod:`toonmesh.files._checks`). A scene's node transforms are composed into each mesh's world
 transform; a geometry drawn by several nodes gives several meshes that share the same vertex and
 face arrays (a renderer uploads it once). What a mesh carries besides its triangles (texture
 coordinates, a texture, vertex or face colours, a base colour) is read into a :class:`Surface`
@@ -10,19 +10,24 @@ record first; :func:`_mesh_of` is the one place that turns it into a :class:`too
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import io
+import logging
 import os
+import struct
 import warnings
 from dataclasses import dataclass, field
-from typing import Any, Dict, List, Optional, Tuple, Type
+from typing import Any, Dict, Iterator, List, Optional, Tuple, Type
 
 import numpy as np
 
-from toonmesh import _archives, _colors, _core, _ply_strips
-from toonmesh._file_checks import (
-    MeshFileError, asset_path, check_gltf_sizes, check_obj, check_ply, gltf_colour_notes, gltf_document,
-    gltf_file_notes, gltf_ignored, obj_file_notes, obj_for_trimesh, ply_file_notes,
+from toonmesh import _colors, _core
+from toonmesh.files import _archives, _gltf, _ply, _polygons
+from toonmesh.files._checks import (
+    MeshFileError, asset_path, check_gltf_shape, check_gltf_sizes, check_kind, check_obj, check_ply, file_bytes,
+    gltf_colour_notes, gltf_document, gltf_file_notes, gltf_ignored, join_continued, obj_file_notes, obj_for_trimesh,
+    ply_file_notes, ply_header, reading, unlike,
 )
 from toonmesh._scene import Mesh, normal_mode
 
@@ -124,7 +129,34 @@ def load(path: "str | os.PathLike[str]", up: Optional[str] = None) -> List[Mesh]
             materials; ``up`` is not an axis name.
     """
     up = _core._up_axis(up) if up is not None else file_up_axis(path)
-    return [_mesh_of(s, t, up) for s, t in read_surfaces(path)]
+    meshes = [_mesh_of(s, t, up) for s, t in read_surfaces(path)]
+    for m in meshes:
+        m.source = os.fspath(path)  # type: ignore[assignment]
+    return meshes
+
+
+def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
+    """(V, F) of a mesh file: (N, 3) float64 positions, (M, 3) int64 triangles, every placed
+    geometry of a scene (GLB, glTF) in one mesh with its world transform applied.
+
+    The file is read and checked as :func:`toonmesh.load` reads it (vertices as the file lists
+    them; an STL's corners merged by position).
+
+    Raises:
+        FileNotFoundError: no such file.
+        ImportError: trimesh is not installed.
+        ValueError: the file cannot be read as a triangle mesh (naming the file and the problem).
+    """
+    placed = read_surfaces(path)
+    if len(placed) == 1 and placed[0][1] is None:
+        return placed[0][0].vertices, placed[0][0].faces
+    Vs, Fs, n = [], [], 0
+    for surface, transform in placed:
+        V = surface.vertices if transform is None else surface.vertices @ transform[:3, :3].T + transform[:3, 3]
+        Vs.append(V)
+        Fs.append(surface.faces + n)
+        n += len(V)
+    return np.concatenate(Vs), np.concatenate(Fs)
 
 
 def file_up_axis(path: Any) -> Optional[str]:
@@ -168,10 +200,22 @@ def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, T
     notes name it ``shown`` (a file in an archive: ``ARCHIVE:NAME``)."""
     ignored: List[str] = []
     said: List[str] = []
+    data = b""
     try:
-        with warnings.catch_warnings(record=True) as caught:
-            scene, materials = _read(path, keep_seams, ignored, said)
-            placed = _placed(scene, path, ignored, materials)
+        data = _bytes(path)  # the one time the file is opened
+        with warnings.catch_warnings(record=True) as caught, _quiet_trimesh_log(), reading():
+            warnings.simplefilter("always")
+            try:
+                scene, materials = _read(path, data, keep_seams, ignored, said)
+                placed = _placed(scene, path, ignored, materials)
+            except MeshFileError as exc:
+                if str(exc).endswith(("no triangles in the file", ")")) and not str(exc).endswith("claims)"):
+                    raise MeshFileError(unlike(path, _suffix(path), data) or str(exc)) from None
+                raise
+            except (LookupError, TypeError, ValueError, AttributeError, struct.error, OverflowError, MemoryError):
+                # a check tripped by a shape it does not expect: said in one line, not a traceback
+                raise MeshFileError(unlike(path, _suffix(path), data) or
+                                    f"{path}: cannot read a mesh: the file is malformed") from None
             geometries = _geometries(scene)
             for surface in {id(s): s for s, _ in placed}.values():
                 surface.normals = _file_normals(geometries.get(surface.name), surface, path)
@@ -182,6 +226,8 @@ def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, T
     for text in said:
         notes.append((f"{shown}: {text}", UserWarning))
     for w in caught:
+        if not _ours(w):
+            continue  # NumPy's and trimesh's: what they mean is checked and said above, in words
         text = str(w.message).replace(path, shown)
         notes.append((text if text.startswith(shown) else f"{shown}: {text}", w.category))
     if ignored:
@@ -285,57 +331,58 @@ def _path(path: Any) -> str:
     return path
 
 
-def _read(path: str, keep_seams: bool, ignored: List[str], said: List[str]) -> Tuple[Any, bool]:
-    """The file as trimesh reads it (a Trimesh, Scene or PointCloud), after the pre-scans, and
-    whether its materials are the file's (an OBJ without an MTL gets trimesh's placeholder).
-    What the pre-scans find and does not stop the reading goes to ``said``."""
+def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: List[str]) -> Tuple[Any, bool]:
+    """The file (its bytes ``data``, read once) as trimesh reads it (a Trimesh, Scene or
+    PointCloud), after the pre-scans, and whether its materials are the file's (an OBJ without
+    an MTL gets trimesh's placeholder). What the pre-scans find and does not stop the reading
+    goes to ``said``."""
     trimesh = trimesh_module()
     suffix = os.path.splitext(path)[1].lower()
+    check_kind(path, suffix, data)
     extra: Dict[str, Any] = {}
     materials = True
-    text: Optional[bytes] = None  # the text trimesh reads instead of the file's (an OBJ made right)
     if suffix == ".obj":
-        with open(path, "rb") as f:
-            data = f.read()
+        data = join_continued(data)  # statements continued over lines (a backslash at the end)
         counts = check_obj(path, data)
         if counts["materials"] > MAX_MATERIALS:
             raise MeshFileError(f"{path}: {counts['materials']:,} materials ('usemtl' names); toonmesh reads at "
                                 f"most {MAX_MATERIALS:,} materials a file")
-        said += counts["notes"] + obj_file_notes(path, data)
-        if counts["negative"] or counts["drop"]:
-            text = obj_for_trimesh(data, counts["drop"])
-        del data
+        notes, textured = obj_file_notes(path, data)
+        said += counts["notes"] + notes
+        if counts["negative"] or counts["drop"] or counts["comments"]:
+            data = obj_for_trimesh(data, counts["drop"])
+        if counts["polygons"]:  # trimesh splits each as a fan: a concave one is split by ear clipping
+            data = _polygons.split_obj(data)
         texcoords, normals = (counts[k] if kind not in counts["drop"] else 0 for k, kind in (("texcoords", b"vt"), ("normals", b"vn")))
-        # positions as listed (not split at texture seams) unless the corners' normals (drawn) or
-        # UVs (kept) matter: a vertex gets one of each
-        extra["maintain_order"] = not (normals or (keep_seams and texcoords))
         materials = counts["libraries"] > 0
+        # positions as listed (not split at texture seams) unless the corners' normals (drawn) or
+        # UVs (kept, or drawn with a texture) matter: a vertex gets one of each
+        extra["maintain_order"] = not (normals or (keep_seams and texcoords) or (materials and textured))
     elif suffix == ".ply":
-        check_ply(path)
-        said += ply_file_notes(path) + _ply_strips.colour_notes(path)
-        if _ply_strips.has_strips(path):  # trimesh reads strips as points, or not at all
-            V, F, colors = _ply_strips.read(path)
+        header = ply_header(path, data)  # parsed once, for every check below
+        check_ply(path, header, len(data))
+        said += ply_file_notes(path, header) + _ply.colour_notes(path, header, data)
+        if _ply.has_strips(header):  # trimesh reads strips as points, or not at all
+            V, F, colors = _ply.read(path, header, data)
             return trimesh.Trimesh(V, F, vertex_colors=colors, process=False), materials
-    doc = gltf_document(path) if suffix in (".glb", ".gltf") else None
+    doc = gltf_document(path, data) if suffix in (".glb", ".gltf") else None
     if doc is not None:
+        check_gltf_shape(path, doc)
         said += gltf_file_notes(path, doc)
         _check_gltf_counts(path, doc)
-        check_gltf_sizes(path, doc)
-        said += gltf_colour_notes(path, doc)
+        check_gltf_sizes(path, doc, data)
+        said += gltf_colour_notes(path, doc, data)
         ignored.extend(gltf_ignored(doc))
-
-    def read(**options: Any) -> Any:
-        resolver = _Beside(trimesh, path)
-        if text is None:
-            return trimesh.load(path, process=False, resolver=resolver, **options)
-        return trimesh.load(io.BytesIO(text), file_type=suffix[1:], process=False, resolver=resolver, **options)
-
+        data = _gltf.readable(path, doc, data) or data  # fans as triangles, specular-glossiness as base colour
     try:
-        loaded = read(**extra)
-        if suffix == ".obj" and extra.get("maintain_order") and materials and _has_texture(loaded):
-            loaded = read(maintain_order=False)  # a UV per vertex
+        loaded = trimesh.load(io.BytesIO(data), file_type=suffix[1:], process=False, resolver=_Beside(trimesh, path),
+                              **extra)
     except MeshFileError:
         raise
+    except ModuleNotFoundError as exc:  # trimesh reads some formats (3MF) with packages of their own
+        name = exc.name or str(exc).rpartition("No module named ")[2].strip("'\"") or "more packages"
+        raise ImportError(f"{path}: reading {suffix or 'this'} files needs {name}: pip install "
+                          "'toonmesh[io]'") from None
     except Exception as exc:  # trimesh raises many kinds for files it cannot parse
         raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
     if suffix == ".stl" and hasattr(loaded, "merge_vertices") and np.isfinite(loaded.vertices).all():
@@ -345,7 +392,7 @@ def _read(path: str, keep_seams: bool, ignored: List[str], said: List[str]) -> T
 
 def _Beside(trimesh: Any, path: str) -> Any:
     """trimesh's resolver of the files beside ``path``, finding them as
-    :func:`toonmesh._file_checks.asset_path` does (percent-escaped glTF names too), so that what
+    :func:`toonmesh.files._checks.asset_path` does (percent-escaped glTF names too), so that what
     the checks found is what trimesh reads."""
 
     class Beside(trimesh.resolvers.FilePathResolver):  # type: ignore[misc]
@@ -353,8 +400,7 @@ def _Beside(trimesh: Any, path: str) -> Any:
             found = asset_path(self.parent, name)
             if found is None:
                 return super().get(name)  # type: ignore[no-any-return]
-            with open(found, "rb") as f:
-                return f.read()
+            return file_bytes(found)  # opened once: the checks may have read it
 
     return Beside(path)
 
@@ -363,9 +409,38 @@ def _geometries(loaded: Any) -> Dict[str, Any]:
     return dict(loaded.geometry) if hasattr(loaded, "geometry") else {"": loaded}
 
 
-def _has_texture(loaded: Any) -> bool:
-    geoms = loaded.geometry.values() if hasattr(loaded, "geometry") else [loaded]
-    return any(getattr(getattr(getattr(g, "visual", None), "material", None), "image", None) is not None for g in geoms)
+_PACKAGE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def _ours(w: warnings.WarningMessage) -> bool:
+    """Whether a warning caught while reading is toonmesh's own (raised by its code)."""
+    return os.path.abspath(w.filename).startswith(_PACKAGE + os.sep) and issubclass(w.category, UserWarning)
+
+
+@contextlib.contextmanager
+def _quiet_trimesh_log() -> Iterator[None]:
+    """trimesh's log lines kept from the user while it reads (what they report is checked and
+    said by toonmesh, naming the file)."""
+    logger = logging.getLogger("trimesh")
+    handler = logging.NullHandler()
+    propagate, handlers = logger.propagate, logger.handlers[:]
+    logger.propagate, logger.handlers = False, [handler]
+    try:
+        yield
+    finally:
+        logger.propagate, logger.handlers = propagate, handlers
+
+
+def _suffix(path: str) -> str:
+    return os.path.splitext(path)[1].lower()
+
+
+def _bytes(path: str) -> bytes:
+    try:
+        with open(path, "rb") as f:
+            return f.read()
+    except OSError as exc:
+        raise MeshFileError(f"{path}: cannot be read ({exc.strerror or _one_line(exc)})") from None
 
 
 def _check_gltf_counts(path: str, doc: Dict[str, Any]) -> None:
@@ -466,7 +541,7 @@ def _visual_into(surface: Surface, visual: Any, ignored: List[str], materials: b
     uv = getattr(visual, "uv", None)
     if uv is not None and len(uv) == len(surface.vertices):
         surface.uv = np.asarray(uv, dtype=np.float64)
-    if not materials:
+    if not materials or _colors._placeholder(material):  # trimesh's grey stand-in, not the file's
         return
     factor = getattr(material, "baseColorFactor", None)
     if factor is not None:  # glTF's factor is linear light: the colour as drawn is sRGB

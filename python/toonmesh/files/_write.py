@@ -1,6 +1,6 @@
-"""Mesh files in and images out, for the command line and batch renders.
+"""Mesh files and images written, for the command line and batch renders.
 
-Meshes are read and written through trimesh (``pip install toonmesh[io]``), which knows OBJ, PLY,
+Meshes are written through trimesh (``pip install toonmesh[io]``), which knows OBJ, PLY,
 STL, OFF and GLB/glTF among others. Renders are written as PNG (the colour image) or, when float
 outputs (normal, depth) are asked for, as NPZ with every output array and the camera used.
 """
@@ -9,40 +9,17 @@ from __future__ import annotations
 
 import io
 import os
+import tempfile
 from dataclasses import dataclass
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._load import Surface, read_surfaces, trimesh_module
+from toonmesh.files._load import Surface, trimesh_module
 
 #: Suffixes written for a render: the colour image alone, or every output array.
 IMAGE_SUFFIXES = (".png", ".npz")
-
-def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
-    """(V, F) of a mesh file: (N, 3) float64 positions, (M, 3) int64 triangles, every placed
-    geometry of a scene (GLB, glTF) in one mesh with its world transform applied.
-
-    The file is read and checked as :func:`toonmesh.load` reads it (vertices as the file lists
-    them; an STL's corners merged by position).
-
-    Raises:
-        FileNotFoundError: no such file.
-        ImportError: trimesh is not installed.
-        ValueError: the file cannot be read as a triangle mesh (naming the file and the problem).
-    """
-    placed = read_surfaces(path)
-    if len(placed) == 1 and placed[0][1] is None:
-        return placed[0][0].vertices, placed[0][0].faces
-    Vs, Fs, n = [], [], 0
-    for surface, transform in placed:
-        V = surface.vertices if transform is None else surface.vertices @ transform[:3, :3].T + transform[:3, 3]
-        Vs.append(V)
-        Fs.append(surface.faces + n)
-        n += len(V)
-    return np.concatenate(Vs), np.concatenate(Fs)
-
 
 #: The format that holds several meshes and their placements (node transforms, one geometry
 #: placed several times); the others hold one mesh, written in world space.
@@ -81,14 +58,26 @@ def check_writable(path: str, placed: int, source: str) -> None:
                          f"(-o {os.path.splitext(path)[0]}{SCENE})")
 
 
-def write_parts(path: str, parts: List[Part]) -> List[str]:
+def check_not_input(path: str, source: str, force: bool = False) -> None:
+    """Refuses, before any work, to write over the file being read (unless ``force``)."""
+    if not force and os.path.exists(path) and os.path.exists(source) and os.path.samefile(path, source):
+        raise ValueError(f"-o: {path} is the file being read: writing it would replace it (give another -o, or "
+                         "--force to replace it)")
+
+
+def write_parts(path: str, parts: List[Part], force: bool = False) -> List[str]:
     """Writes the parts; the format follows the file name's suffix (.obj, .ply, .stl, .off,
     .glb, ...). Their texture coordinates, texture, material colour, vertex or face colours and
-    normals go along where the format holds them; an OBJ's or PLY's texture (and an OBJ's MTL)
-    is written beside the file, named after it (``OUT.png``, ``OUT.mtl``), so that two results
-    in one folder keep their own. A GLB holds several parts (their textures inside it) and keeps
-    their placements; the other formats hold one, written in world space. Returns what the
-    format does not hold (and so was not written), in words, for the caller's warning."""
+    normals go along where the format holds them; an OBJ's or PLY's texture (and an OBJ's MTL,
+    when it has a texture or a material colour) is written beside the file, named after it
+    (``OUT.png``, ``OUT.mtl``), so that two results in one folder keep their own; a mesh
+    without a texture gets none. A file beside it that is there already (not written by this
+    call: the input's MTL, another file's texture) is not replaced unless ``force``: a
+    ValueError names it, before anything is written. Each file is written to a temporary file
+    in its folder and renamed into place, so that an error leaves no file half written. A GLB
+    holds several parts (their textures inside it) and keeps their placements; the other
+    formats hold one, written in world space. Returns what the format does not hold (and so was
+    not written), in words, for the caller's warning."""
     trimesh = trimesh_module()
     suffix = os.path.splitext(path)[1].lower()
     stem = os.path.splitext(os.path.basename(path))[0]
@@ -120,18 +109,68 @@ def write_parts(path: str, parts: List[Part]) -> List[str]:
                 data, beside = trimesh.exchange.obj.export_obj(
                     mesh, include_normals=part.normals is not None, include_texture=mesh.visual.kind == "texture",
                     return_texture=True, mtl_name=stem + ".mtl", header=None)
+                if part.surface.texture is None:  # trimesh writes a grey placeholder texture: none is
+                    data, beside = _obj_without_texture(data, beside, _material_colour(part.surface))
             else:
                 data = mesh.export(file_type=suffix[1:])
                 if suffix == ".ply" and part.surface.texture is not None and mesh.visual.kind == "texture":
                     data, beside = _ply_with_texture(data, stem, part.surface.texture)
+                elif suffix == ".ply":  # trimesh names a texture for texture coordinates: none is written
+                    data = _without_lines(data, b"comment TextureFile")
     except Exception as exc:
         raise ValueError(f"{path}: cannot write this format ({_one_line(exc)})") from None
-    for name, blob in beside.items():
-        with open(os.path.join(folder, name), "wb") as f:
-            f.write(blob)
-    with open(path, "wb") as f:
-        f.write(data if isinstance(data, bytes) else data.encode())
+    there = [name for name in beside if os.path.exists(os.path.join(folder, name))]
+    if there and not force:
+        raise ValueError(f"-o: writing {path} would replace {', '.join(os.path.join(folder, n) for n in there)}, "
+                         "not written by this run (give another -o, or --force to replace)")
+    blobs = {os.path.join(folder, name): blob for name, blob in beside.items()}
+    blobs[os.path.abspath(path)] = data if isinstance(data, bytes) else data.encode()
+    _write_all(blobs)
     return list(dict.fromkeys(lost))
+
+
+def _write_all(blobs: Dict[str, bytes]) -> None:
+    """Writes each file through a temporary file in its folder, renamed into place once all
+    are written (an error leaves the files that were there as they were)."""
+    temporary: Dict[str, str] = {}
+    try:
+        for target, blob in blobs.items():
+            fd, temp = tempfile.mkstemp(prefix="." + os.path.basename(target) + ".", suffix=".tmp",
+                                        dir=os.path.dirname(target))
+            temporary[target] = temp
+            with os.fdopen(fd, "wb") as f:
+                f.write(blob)
+            mode = os.stat(target).st_mode & 0o777 if os.path.exists(target) else 0o666 & ~_umask()
+            os.chmod(temp, mode)
+        for target, temp in temporary.items():
+            os.replace(temp, target)
+    except BaseException:
+        for temp in temporary.values():
+            if os.path.exists(temp):
+                os.remove(temp)
+        raise
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def _without_lines(data: bytes, start: bytes) -> bytes:
+    """``data`` without its lines that start with ``start``."""
+    return b"".join(line for line in data.splitlines(keepends=True) if not line.startswith(start))
+
+
+def _obj_without_texture(data: Any, beside: Dict[str, bytes], coloured: bool) -> Tuple[Any, Dict[str, bytes]]:
+    """An OBJ that trimesh wrote for texture coordinates without a texture, as it should be:
+    no image, its MTL without ``map_Kd`` (and with no colour but the surface's), or no MTL at
+    all (its ``mtllib`` and ``usemtl`` lines dropped) where the surface has no material colour."""
+    text = data if isinstance(data, bytes) else data.encode()
+    mtl = {name: blob for name, blob in beside.items() if name.endswith(".mtl")}
+    if not coloured:
+        return _without_lines(_without_lines(text, b"mtllib"), b"usemtl"), {}
+    return text, {name: _without_lines(blob, b"map_Kd") for name, blob in mtl.items()}
 
 
 def _placed_copy(mesh: Any, transform: Optional[np.ndarray]) -> Any:
