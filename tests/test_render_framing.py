@@ -207,3 +207,49 @@ def test_an_empty_scene_is_framed_by_the_unit_sphere():
     for camera in (tm.Camera.fit(), tm.Camera.fit(orthographic=True), tm.Camera.fit((1.0, 0.0, 0.0), turn=30)):
         r = tm.render(None, camera=camera, width=8, height=8, outputs=("color", "depth"))
         assert np.isfinite(r.view_matrix).all() and np.isinf(r.depth).all()
+
+
+def plate(normal, width: float = 4.0, height: float = 3.0, thickness: float = 0.05, center=(0.0, 0.0, 0.0)):
+    """A closed rectangular plate (a thin box) whose faces look along ``normal``."""
+    n = np.asarray(normal, float) / np.linalg.norm(normal)
+    a = np.cross(n, [0.0, 0.0, 1.0] if abs(n[2]) < 0.9 else [1.0, 0.0, 0.0])
+    a /= np.linalg.norm(a)
+    b = np.cross(n, a)
+    corners = np.array([[x, y, z] for z in (-0.5, 0.5) for y in (-0.5, 0.5) for x in (-0.5, 0.5)])
+    V = np.asarray(center) + corners[:, :1] * width * a + corners[:, 1:2] * height * b + corners[:, 2:] * thickness * n
+    F = np.array([[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+                  [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]])
+    return V, F
+
+
+def _off_normal(r: tm.RenderResult, normal) -> float:
+    """Degrees between the view's direction and the plate's normal (either side)."""
+    back = np.linalg.inv(r.view_matrix)[:3, 2]  # the view's +z: from the scene toward the eye
+    return math.degrees(math.acos(min(1.0, abs(float(back @ normal)) / np.linalg.norm(normal))))
+
+
+@pytest.mark.parametrize("normal", [(1, 0, 0), (0, 1, 0), (0, 0, 1), (1, 0.2, -0.7), (0.3, 1, 0.2), (-1, 0.05, 0.4)],
+                         ids=["facing-x", "lying", "facing-front", "tilted", "tilted-lying", "standing-askew"])
+@pytest.mark.parametrize("scale", [0.01, 1.0, 1e4])
+def test_a_flat_part_is_seen_from_its_front(normal, scale):
+    """A plate or a sheet is never seen within 30 degrees of edge-on by default, at any size or
+    tilt: it is seen as the three-quarter view sees the front (about 38 degrees off its normal),
+    covering a good share of the frame. The usual view of a plate facing the front is kept."""
+    V, F = plate(normal)
+    r = tm.render(V * scale, F, width=400, height=300, outputs=("color", "depth"))
+    off = _off_normal(r, np.asarray(normal, float))
+    covered = float(np.isfinite(r.depth).mean())
+    assert off <= 60.0 + 1e-6, off
+    assert covered >= 0.15, covered
+    if normal == (0, 0, 1):  # facing the front: the three-quarter view as for any model
+        assert abs(off - math.degrees(math.acos(math.cos(math.radians(30)) * math.cos(math.radians(25))))) < 0.5, off
+
+
+def test_a_thick_part_keeps_the_three_quarter_view():
+    """A slab a fifth as thick as it is wide is no plate: lying down, it is seen from the usual
+    view, 25 degrees above the horizon (65 off its normal); as a plate, from 38 off it."""
+    up = np.array([0.0, 1.0, 0.0])
+    slab = tm.render(*plate(up, thickness=0.6), width=400, height=300, outputs=("depth",))
+    sheet = tm.render(*plate(up, thickness=0.05), width=400, height=300, outputs=("depth",))
+    assert abs(_off_normal(slab, up) - 65.0) < 0.5, _off_normal(slab, up)
+    assert abs(_off_normal(sheet, up) - 38.3) < 0.5, _off_normal(sheet, up)

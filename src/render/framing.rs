@@ -9,6 +9,7 @@ use rayon::prelude::*;
 
 use super::mesh_record::MeshRecord;
 use super::scene::camera::length_of;
+use super::scene::up::FLAT_THICKNESS;
 use super::scene::SceneItem;
 
 /// The most vertices one frame's framing visits (summed over the scene's placed meshes); the
@@ -103,4 +104,100 @@ pub fn scene_support<'a>(
         }
         best
     }
+}
+
+/// A mesh's used vertices' count, sum and sum of outer products, in stored coordinates (within
+/// the unit cube about its placement's origin, so the sums keep their precision), kept with it.
+#[derive(Default)]
+struct Moments(OnceLock<(f64, DVec3, DMat3)>);
+
+fn moments(rec: &MeshRecord) -> Arc<Moments> {
+    let moments = rec.derived(Moments::default);
+    moments.0.get_or_init(|| {
+        let points = used_points(rec);
+        let list = points.0.get().and_then(|l| l.as_deref()).unwrap_or(&rec.host.positions);
+        let add = |(n, sum, outer): (f64, DVec3, DMat3), s: &[f64; 3]| {
+            let s = DVec3::from_array(*s);
+            (n + 1.0, sum + s, outer + DMat3::from_cols(s * s.x, s * s.y, s * s.z))
+        };
+        let zero = || (0.0, DVec3::ZERO, DMat3::ZERO);
+        list.par_chunks(CHUNK)
+            .map(|chunk| chunk.iter().fold(zero(), add))
+            .reduce(zero, |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2))
+    });
+    moments
+}
+
+/// The unit normal of a flat scene (a plate, a sheet: no thicker along its least spread than
+/// `FLAT_THICKNESS` of its extent across its greatest, within its plane), or None: the spreads'
+/// directions are those of the covariance of the meshes' used vertices as placed (each mesh past `FRAMING_BUDGET` vertices
+/// stands for its box's corners); the thickness and extent are measured by `support`.
+pub fn flat_normal(
+    items: &[SceneItem],
+    records: &[Arc<MeshRecord>],
+    center: DVec3,
+    support: &dyn Fn([DVec3; 4]) -> [f64; 4],
+) -> Option<DVec3> {
+    let mut budget = FRAMING_BUDGET;
+    let (mut n, mut sum, mut outer) = (0.0, DVec3::ZERO, DMat3::ZERO);
+    for (item, rec) in items.iter().zip(records) {
+        let m = item.model_matrix();
+        let (a, t) = (DMat3::from_mat4(m), m.w_axis.truncate() - center);
+        // p = A (origin + scale s) + t = B s + c, about the scene's centre
+        let b = a * rec.gpu.placement.scale;
+        let c = a * DVec3::from_array(rec.gpu.placement.origin) + t;
+        let (k, s, ss) = if rec.host.positions.len() <= budget {
+            budget -= rec.host.positions.len();
+            *moments(rec).0.get().expect("made above")
+        } else {
+            // the box's corners, in stored coordinates
+            let [lo, hi] = rec.gpu.bounding_box();
+            let (o, scale) = (DVec3::from_array(rec.gpu.placement.origin), rec.gpu.placement.scale);
+            (0..8).fold((0.0, DVec3::ZERO, DMat3::ZERO), |(k, s, ss), i| {
+                let p = (DVec3::select(glam::BVec3::new(i & 1 == 1, i & 2 == 2, i & 4 == 4), hi, lo) - o) / scale;
+                (k + 1.0, s + p, ss + DMat3::from_cols(p * p.x, p * p.y, p * p.z))
+            })
+        };
+        let bs = b * s;
+        n += k;
+        sum += bs + c * k;
+        outer += b * ss * b.transpose()
+            + DMat3::from_cols(bs * c.x, bs * c.y, bs * c.z)
+            + DMat3::from_cols(c * bs.x, c * bs.y, c * bs.z)
+            + DMat3::from_cols(c * c.x, c * c.y, c * c.z) * k;
+    }
+    if n < 3.0 {
+        return None;
+    }
+    let mean = sum / n;
+    let cov = outer * (1.0 / n) - DMat3::from_cols(mean * mean.x, mean * mean.y, mean * mean.z);
+    let trace = cov.x_axis.x + cov.y_axis.y + cov.z_axis.z;
+    if !(trace > 0.0 && trace.is_finite()) {
+        return None;
+    }
+    // the least and the greatest spread's directions, and the one between (in the plate, across
+    // a strip: a rod is no plate)
+    let normal = greatest_spread(DMat3::from_diagonal(DVec3::splat(trace)) - cov)?;
+    let long = greatest_spread(cov)?;
+    let across = normal.cross(long - normal * normal.dot(long));
+    let across = if across.length() > 1e-9 { across.normalize() } else { normal.any_orthonormal_vector() };
+    let [a, b, c, d] = support([normal, -normal, across, -across]);
+    let (thickness, extent) = (a + b, c + d);
+    (thickness.is_finite() && extent > 0.0 && thickness <= FLAT_THICKNESS * extent).then_some(normal)
+}
+
+/// The unit direction along which the symmetric positive semi-definite `m` is greatest (its
+/// greatest eigenvalue's eigenvector), by power iteration; None where it is zero or not finite.
+fn greatest_spread(m: DMat3) -> Option<DVec3> {
+    // from its longest column: never at right angles to the greatest eigenvector
+    let mut v = [m.x_axis, m.y_axis, m.z_axis].into_iter().max_by(|a, b| a.length().total_cmp(&b.length()))?;
+    for _ in 0..200 {
+        let w = m * v;
+        let len = w.length();
+        if !(len > 0.0 && len.is_finite()) {
+            return None;
+        }
+        v = w / len;
+    }
+    Some(v)
 }

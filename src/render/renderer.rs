@@ -23,7 +23,7 @@ use super::culling::culls;
 use super::derived_vertices::derived_buffer;
 use super::device::{BackendChoice, GpuInfo};
 use super::effects::frame::{check as check_effects, frame_bytes};
-use super::framing::scene_support;
+use super::framing::{flat_normal, scene_support};
 use super::gpu_mesh::{GpuMesh, MeshNormals};
 use super::graph::effect::{FrameInputs, HostInputs, HostStep};
 use super::graph::report::FrameReport;
@@ -384,8 +384,11 @@ impl Renderer {
             .bounds(|id| Ok(self.mesh(id)?.gpu.sphere()), |id| Ok(self.mesh(id)?.gpu.bounding_box()))?;
         let frame = &scene.frame;
         let cam = {
-            let support = scene_support(&scene.scene.items, &records, bounds.sphere.center);
-            scene.scene.camera.resolve_with(&bounds, &support, frame.width as f64 / frame.height as f64)?
+            let (items, center) = (&scene.scene.items, bounds.sphere.center);
+            let support = scene_support(items, &records, center);
+            // only a fitted camera given no direction looks for a flat scene's front
+            let flat = scene.scene.camera.fits_by_default().then(|| flat_normal(items, &records, center, &support));
+            scene.scene.camera.resolve_with(&bounds, &support, flat.flatten(), frame.width as f64 / frame.height as f64)?
         };
         Ok((records, bounds, cam))
     }

@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 
-use super::up::{Axis, Frame};
+use super::up::{Axis, Frame, FLAT_MOST_OFF_NORMAL};
 use crate::error::field;
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -246,18 +246,26 @@ impl Camera {
         Ok(())
     }
 
+    /// Whether it is a fitted camera given no direction (whose view a flat scene changes).
+    pub fn fits_by_default(&self) -> bool {
+        matches!(self.placement, Placement::Fit { direction: None, .. })
+    }
+
     /// Matrices for an image of the given aspect ratio (width / height) showing `scene`, framed
     /// by its box and sphere.
     pub fn resolve(&self, scene: &SceneBounds, aspect: f64) -> Result<ResolvedCamera> {
-        self.resolve_with(scene, &|n| n.map(|n| scene.support(n)), aspect)
+        self.resolve_with(scene, &|n| n.map(|n| scene.support(n)), None, aspect)
     }
 
     /// `resolve`, framed by `support`: how far the scene reaches from its sphere's centre along
-    /// each of four directions (at most what its box and sphere reach, at least what it holds).
+    /// each of four directions (at most what its box and sphere reach, at least what it holds);
+    /// `flat`: the normal of a flat scene (`framing::flat_normal`), which a fitted camera given
+    /// no direction sees from its front.
     pub fn resolve_with(
         &self,
         scene: &SceneBounds,
         support: &dyn Fn([DVec3; 4]) -> [f64; 4],
+        flat: Option<DVec3>,
         aspect: f64,
     ) -> Result<ResolvedCamera> {
         let (eye, target, up, projection) = match self.placement {
@@ -265,7 +273,7 @@ impl Camera {
                 (DVec3::from_array(eye), DVec3::from_array(target), DVec3::from_array(up), self.projection)
             }
             Placement::Fit { direction, up, margin, turn } => {
-                let (dir, up) = fit_view(scene, direction, up, turn);
+                let (dir, up) = fit_view(scene, direction, up, turn, flat);
                 let (eye, projection) = fit(scene, support, dir, up, margin, aspect, self.projection);
                 let forward = -dir;
                 let depth = (scene.sphere.center - eye).dot(forward);
@@ -336,14 +344,16 @@ impl SceneBounds {
 }
 
 /// A fitted camera's direction (scene -> eye, unit) and image up: `direction` or the
-/// three-quarter view across the scene's longest horizontal extent, turned `turn` degrees about
-/// up; `up` or the scene's up axis (and where that is parallel to the direction, as a view from
-/// straight above, the canonical frame's back: its front at the image's bottom).
+/// three-quarter view across the scene's longest horizontal extent (a flat scene, of normal
+/// `flat`, seen from its front: `facing`), turned `turn` degrees about up; `up` or the scene's up
+/// axis (and where that is parallel to the direction, as a view from straight above, the
+/// canonical frame's back: its front at the image's bottom).
 fn fit_view(
     scene: &SceneBounds,
     direction: Option<[f64; 3]>,
     up: Option<[f64; 3]>,
     turn: f64,
+    flat: Option<DVec3>,
 ) -> (DVec3, DVec3) {
     let axis = scene.up.vector();
     let up_given = up.map(|u| direction_of(DVec3::from_array(u)));
@@ -352,10 +362,34 @@ fn fit_view(
         Some(_) => Frame::canonical(u),
         None => Frame::across(u, &scene.corners),
     };
-    let dir = direction.map_or_else(|| frame.three_quarter(), |d| direction_of(DVec3::from_array(d)));
+    let dir = direction.map_or_else(
+        || flat.map_or(frame.three_quarter(), |n| facing(frame.three_quarter(), n, frame)),
+        |d| direction_of(DVec3::from_array(d)),
+    );
     let dir = glam::DQuat::from_axis_angle(u, turn.to_radians()) * dir;
     let up = if up_given.is_none() && dir.cross(u).length() < 1e-9 { -Frame::canonical(u).front } else { u };
     (dir, up)
+}
+
+/// `dir` (unit, scene -> eye), or where it sees a flat scene of unit normal `normal` more than
+/// `FLAT_MOST_OFF_NORMAL` off its normal (within 30 degrees of edge-on), `dir` turned toward the
+/// normal on the side it looks from until it sees the scene as the three-quarter view sees the
+/// front (38 degrees off: a plate facing the front keeps the usual view). Edge-on exactly, the
+/// side is the one facing up, else the front of `frame`.
+fn facing(dir: DVec3, normal: DVec3, frame: Frame) -> DVec3 {
+    let side = [dir.dot(normal), frame.up.dot(normal), frame.front.dot(normal)]
+        .into_iter()
+        .find(|x| x.abs() > 1e-9)
+        .unwrap_or(1.0);
+    let n = normal * side.signum();
+    let cos = dir.dot(n);
+    if cos >= FLAT_MOST_OFF_NORMAL.to_radians().cos() {
+        return dir;
+    }
+    let along = dir - n * cos;
+    let along = if along.length() > 1e-9 { along.normalize() } else { frame.up - n * frame.up.dot(n) };
+    let angle = Frame::three_quarter_off_front();
+    direction_of(n * angle.cos() + direction_of(along) * angle.sin())
 }
 
 /// The eye that frames `scene` seen along -`dir` with `up` up, with `margin` room, and the

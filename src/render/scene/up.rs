@@ -43,6 +43,11 @@ pub const FILE_UP_AXES: &[(&str, Axis)] = &[
 pub const THREE_QUARTER_TURN: f64 = 30.0;
 pub const THREE_QUARTER_RISE: f64 = 25.0;
 
+/// A scene no thicker than this share of its extent is flat (a plate, a sheet): a fitted camera
+/// given no direction sees it from its front, never within 30 degrees of edge-on.
+pub const FLAT_THICKNESS: f64 = 0.1;
+pub const FLAT_MOST_OFF_NORMAL: f64 = 60.0;
+
 /// A horizontal extent counts as the longest only when it exceeds the front axis's own by this
 /// fraction: a scene about as wide as deep is seen from its canonical front.
 pub const LONGER_BY: f64 = 0.01;
@@ -102,6 +107,12 @@ impl Frame {
         } else {
             frame
         }
+    }
+
+    /// How far the three-quarter view looks from the front, in radians (38 degrees): a flat
+    /// scene seen too near edge-on is seen this far from its normal instead.
+    pub fn three_quarter_off_front() -> f64 {
+        (THREE_QUARTER_TURN.to_radians().cos() * THREE_QUARTER_RISE.to_radians().cos()).acos()
     }
 
     /// The unit direction from the scene toward the eye of the three-quarter view: from the
