@@ -435,7 +435,7 @@ def test_the_parts_of_a_scene_are_its_geometries_and_code_reads_them_as_tm_rende
     v.visible = {"wheel": False}
     assert (v.frame != whole).any()
     code = v.code()
-    assert "[m for i, m in enumerate(tm._load.scene_meshes(scene)) if i in (0,)]" in code
+    assert "[m for i, m in enumerate(tm.load(scene)) if i in (0,)]" in code
     scope = {"scene": scene}
     exec(code, scope)
     np.testing.assert_array_equal(scope["r"].color, v.frame)

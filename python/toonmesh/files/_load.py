@@ -82,8 +82,9 @@ class Surface:
     colors: Dict[str, Any] = field(default_factory=dict)
 
 
-def load(path: "str | os.PathLike[str]", up: Optional[str] = None) -> List[Mesh]:
-    """Reads a mesh file into a list of :class:`toonmesh.Mesh`, one per placed geometry.
+def load(path: "str | os.PathLike[str] | Any", up: Optional[str] = None) -> List[Mesh]:
+    """Reads a mesh file (or a ``trimesh.Scene`` already read) into a list of
+    :class:`toonmesh.Mesh`, one per placed geometry, as :func:`toonmesh.render` takes them.
 
     Formats: OBJ (with its MTL: diffuse colour ``Kd`` and texture ``map_Kd``), PLY (vertex and
     face colours; faces and triangle strips), STL, OFF, GLB and glTF (node transforms, mesh
@@ -110,7 +111,8 @@ def load(path: "str | os.PathLike[str]", up: Optional[str] = None) -> List[Mesh]
     without area. Warnings raised while reading (trimesh's, NumPy's) name the file.
 
     Args:
-        path: the file (str or os.PathLike).
+        path: the file (str or os.PathLike), or a ``trimesh.Scene`` (its geometries placed by
+            its graph, as ``tm.render(scene)`` draws them).
         up: the file's up axis, "x", "y" or "z"; None (default): its format's convention
             (:func:`file_up_axis`: z for STL, PLY and 3MF, y for glTF, GLB and OBJ), or none
             (the render's default, y) for other formats.
@@ -128,6 +130,8 @@ def load(path: "str | os.PathLike[str]", up: Optional[str] = None) -> List[Mesh]
             than :data:`MAX_INSTANCES` meshes or uses more than :data:`MAX_MATERIALS`
             materials; ``up`` is not an axis name.
     """
+    if is_scene(path):
+        return [_mesh_of(s, t, _core._up_axis(up) if up is not None else None) for s, t in scene_surfaces(path, "scene")]
     up = _core._up_axis(up) if up is not None else file_up_axis(path)
     meshes = [_mesh_of(s, t, up) for s, t in read_surfaces(path)]
     for m in meshes:

@@ -989,8 +989,7 @@ class Viewer:
             return f"[meshes[i] for i in {kept!r}]"
         # a file or a trimesh.Scene, read as tm.render reads it (a single mesh is one part: all
         # shown or none)
-        read = "tm._load.scene_meshes(scene)" if self._mesh_source == "scene" else f"tm.load({self._mesh_source})"
-        return f"[m for i, m in enumerate({read}) if i in {kept!r}]"
+        return f"[m for i, m in enumerate(tm.load({self._mesh_source})) if i in {kept!r}]"
 
     # -- the front end's events and flow control ----------------------------------------------
 
