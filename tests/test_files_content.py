@@ -106,6 +106,54 @@ def test_a_concave_polygon_is_triangulated_without_overlap(tmp_path, shape):
     assert covered(mesh) == pytest.approx(shoelace(xy), rel=0.02)
 
 
+def star64() -> np.ndarray:
+    """A 64-corner star (every other corner pulled in): its fan about the first corner covers
+    many times its area."""
+    t = np.linspace(0, 2 * np.pi, 64, endpoint=False)
+    return np.c_[np.cos(t), np.sin(t)] * np.where(np.arange(64) % 2, 0.3, 1.0)[:, None]
+
+
+def polygon_file(path, corners: np.ndarray, form: str, extra: bool = False) -> str:
+    """One face of the given (n, 2) corners, tilted out of the xy plane, as a PLY (ASCII or
+    binary) or an OFF; ``extra``: a triangle and a quad beside it (trimesh lays out such a mix
+    of polygons in its own order)."""
+    import struct
+
+    rot = np.array([[1, 0, 0], [0, np.cos(0.6), -np.sin(0.6)], [0, np.sin(0.6), np.cos(0.6)]])
+    V = np.c_[corners, np.zeros(len(corners))] @ rot.T + [3, -1, 2]
+    faces = [list(range(len(V)))]
+    if extra:
+        n = len(V)
+        V = np.r_[V, [[5, 5, 0], [6, 5, 0], [6, 6, 0], [5, 6, 0]]]
+        faces = [[n, n + 1, n + 2]] + faces + [[n, n + 1, n + 2, n + 3]]
+    if form == "off":
+        path.write_text(f"OFF\n{len(V)} {len(faces)} 0\n" + "".join(f"{x:.17g} {y:.17g} {z:.17g}\n" for x, y, z in V)
+                        + "".join(f"{len(f)} " + " ".join(map(str, f)) + "\n" for f in faces))
+        return str(path)
+    header = (f"ply\nformat {'ascii' if form == 'ply' else 'binary_little_endian'} 1.0\nelement vertex {len(V)}\n"
+              "property double x\nproperty double y\nproperty double z\n"
+              f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n")
+    if form == "ply":
+        body = "".join(f"{x:.17g} {y:.17g} {z:.17g}\n" for x, y, z in V) + "".join(
+            f"{len(f)} " + " ".join(map(str, f)) + "\n" for f in faces)
+        path.write_text(header + body)
+    else:
+        path.write_bytes(header.encode() + V.astype("<f8").tobytes() + b"".join(
+            struct.pack("<B", len(f)) + np.asarray(f, "<i4").tobytes() for f in faces))
+    return str(path)
+
+
+@pytest.mark.parametrize("form, extra", [("ply", False), ("ply", True), ("binary ply", False), ("off", False),
+                                         ("off", True)])
+def test_a_concave_polygon_in_ply_and_off_is_triangulated_without_overlap(tmp_path, form, extra):
+    need("trimesh")
+    xy = star64()
+    suffix = ".off" if form == "off" else ".ply"
+    (mesh,) = tm.load(polygon_file(tmp_path / f"star{suffix}", xy, form, extra))
+    assert len(mesh.faces) == len(xy) - 2 + (3 if extra else 0)
+    assert covered(mesh) == pytest.approx(shoelace(xy) + (1.5 if extra else 0), rel=0.02)
+
+
 def test_a_convex_polygon_keeps_its_fan(tmp_path):
     need("trimesh")
     t = np.linspace(0, 2 * np.pi, 12, endpoint=False)

@@ -358,13 +358,17 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         # positions as listed (not split at texture seams) unless the corners' normals (drawn) or
         # UVs (kept, or drawn with a texture) matter: a vertex gets one of each
         extra["maintain_order"] = not (normals or (keep_seams and texcoords) or (materials and textured))
-    elif suffix == ".ply":
+    header = None
+    if suffix == ".ply":
         header = ply_header(path, data)  # parsed once, for every check below
         check_ply(path, header, len(data))
         said += ply_file_notes(path, header) + _ply.colour_notes(path, header, data)
         if _ply.has_strips(header):  # trimesh reads strips as points, or not at all
             V, F, colors = _ply.read(path, header, data)
             return trimesh.Trimesh(V, F, vertex_colors=colors, process=False), materials
+    if suffix == ".off":  # polygons as triangles, as trimesh lays out their fans, a concave one's by ear clipping
+        text = trimesh.util.comment_strip(trimesh.util.decode_text(data))
+        data = (_polygons.off_for_trimesh(text) or text).encode()
     doc = gltf_document(path, data) if suffix in (".glb", ".gltf") else None
     if doc is not None:
         check_gltf_shape(path, doc)
@@ -387,7 +391,28 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
     if suffix == ".stl" and hasattr(loaded, "merge_vertices") and np.isfinite(loaded.vertices).all():
         loaded.merge_vertices()  # an STL stores every corner apart: connect the surface
+    if suffix == ".ply" and getattr(loaded, "faces", None) is not None:
+        _split_concave(loaded, data, header, path)
     return loaded, materials
+
+
+def _split_concave(loaded: Any, data: bytes, header: Any, path: str) -> None:
+    """A PLY's concave polygons, which trimesh splits as fans (covering what is outside them),
+    split by ear clipping instead (:func:`toonmesh.files._polygons.split_fans`). The polygons
+    are read again only where trimesh made more triangles than the file has faces."""
+    count = next((n for name, n, _ in header.elements if name == "face"), 0)
+    if len(loaded.faces) <= count:
+        return  # triangles only
+    try:
+        face = _ply.values(path, header, data).get("face", {})
+    except MeshFileError:
+        return
+    polygons = face.get("vertex_indices", face.get("vertex_index"))
+    if polygons is None or len(polygons) != count:
+        return
+    split = _polygons.split_fans(loaded.vertices, loaded.faces, polygons)
+    if split is not None:
+        loaded.faces = split
 
 
 def _Beside(trimesh: Any, path: str) -> Any:
