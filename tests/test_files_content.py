@@ -286,6 +286,74 @@ def test_a_3mf_places_its_components_and_build_items(tmp_path):
     assert offsets == [(0, 0, 0), (0, 5, 0), (3, 0, 0)]
 
 
+TETRAHEDRON_3MF = ('<mesh><vertices><vertex x="0" y="0" z="0"/><vertex x="1" y="0" z="0"/><vertex x="0" y="1" z="0"/>'
+                   '<vertex x="0" y="0" z="1"/></vertices><triangles><triangle v1="0" v2="2" v3="1"/>'
+                   '<triangle v1="0" v2="1" v3="3"/><triangle v1="1" v2="2" v3="3"/><triangle v1="0" v2="3" v3="2"/>'
+                   '</triangles></mesh>')
+CUBE_3MF = ("<mesh><vertices>" + "".join(f'<vertex x="{x}" y="{y}" z="{z}"/>' for x in (0, 2) for y in (0, 2)
+                                         for z in (0, 2))
+            + "</vertices><triangles>" + "".join(
+                f'<triangle v1="{a}" v2="{b}" v3="{c}"/><triangle v1="{a}" v2="{c}" v3="{d}"/>'
+                for a, b, c, d in [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)])
+            + "</triangles></mesh>")
+CORE_NS = "http://schemas.microsoft.com/3dmanufacturing/core/2015/02"
+PRODUCTION_NS = "http://schemas.microsoft.com/3dmanufacturing/production/2015/06"
+
+
+def production_3mf(path, items: int = 17, component_object: str = "2") -> str:
+    """A 3MF of the production extension: a root object (id 1, as the part's first object) of
+    two components that name objects 1 (a tetrahedron) and 2 (a cube, raised by 5) of another
+    model part, /3D/Objects/part.model, placed by ``items`` build items 10 apart along x."""
+    import zipfile
+
+    part = (f'<?xml version="1.0" encoding="UTF-8"?><model unit="millimeter" xmlns="{CORE_NS}" '
+            f'xmlns:p="{PRODUCTION_NS}"><resources><object id="1" type="model" p:UUID="a1">{TETRAHEDRON_3MF}</object>'
+            f'<object id="2" type="model" p:UUID="a2">{CUBE_3MF}</object></resources></model>')
+    build = "".join(f'<item objectid="1" transform="1 0 0 0 1 0 0 0 1 {10 * k} 0 0" p:UUID="b{k}"/>'
+                    for k in range(items))
+    root = (f'<?xml version="1.0" encoding="UTF-8"?><model unit="millimeter" xmlns="{CORE_NS}" '
+            f'xmlns:p="{PRODUCTION_NS}" requiredextensions="p"><resources><object id="1" type="model" p:UUID="c1">'
+            '<components><component p:path="/3D/Objects/part.model" objectid="1" p:UUID="d1"/>'
+            f'<component p:path="/3D/Objects/part.model" objectid="{component_object}" '
+            'transform="1 0 0 0 1 0 0 0 1 0 0 5" p:UUID="d2"/>'
+            f'</components></object></resources><build p:UUID="e1">{build}</build></model>')
+    rels = "http://schemas.openxmlformats.org/package/2006/relationships"
+    kind = "http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"
+    with zipfile.ZipFile(path, "w") as z:
+        z.writestr("[Content_Types].xml", '<?xml version="1.0"?><Types xmlns="http://schemas.openxmlformats.org/'
+                   'package/2006/content-types"><Default Extension="rels" ContentType="application/vnd.'
+                   'openxmlformats-package.relationships+xml"/><Default Extension="model" ContentType='
+                   '"application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>')
+        z.writestr("_rels/.rels", f'<?xml version="1.0"?><Relationships xmlns="{rels}"><Relationship '
+                   f'Target="/3D/3dmodel.model" Id="r0" Type="{kind}"/></Relationships>')
+        z.writestr("3D/_rels/3dmodel.model.rels", f'<?xml version="1.0"?><Relationships xmlns="{rels}">'
+                   f'<Relationship Target="/3D/Objects/part.model" Id="r1" Type="{kind}"/></Relationships>')
+        z.writestr("3D/3dmodel.model", root)
+        z.writestr("3D/Objects/part.model", part)
+    return str(path)
+
+
+def test_a_3mf_of_the_production_extension_places_its_parts(tmp_path):
+    need("trimesh")
+    meshes = tm.load(production_3mf(tmp_path / "production.3mf"))
+    # each of the 17 build items places both components, each with its own object of the part
+    placed = sorted((len(m.faces), tuple(np.round(m.transform[:3, 3], 6))) for m in meshes)
+    assert placed == sorted([(4, (10.0 * k, 0.0, 0.0)) for k in range(17)]
+                            + [(12, (10.0 * k, 0.0, 5.0)) for k in range(17)])
+    tetrahedra = [m for m in meshes if len(m.faces) == 4]
+    assert all(m.vertices is tetrahedra[0].vertices for m in tetrahedra)  # one geometry, placed 17 times
+    assert {m.up for m in meshes} == {"z"}
+
+
+def test_a_3mf_naming_an_object_its_part_lacks_is_refused_in_one_line(tmp_path):
+    need("trimesh")
+    path = production_3mf(tmp_path / "missing.3mf", items=2, component_object="7")
+    with pytest.raises(ValueError) as caught:
+        tm.load(path)
+    assert str(caught.value) == (f"{path}: component 2 of object 1 (/3D/3dmodel.model) names object 7 of "
+                                 "/3D/Objects/part.model, which it does not define")
+
+
 def test_a_polygon_far_from_flat_keeps_its_fan(tmp_path):
     need("trimesh")
     path = tmp_path / "bent.obj"  # a square with a corner lifted far out of its plane (as trimesh's polygonfaces.obj)

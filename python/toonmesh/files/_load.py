@@ -23,7 +23,7 @@ from typing import Any, Dict, Iterator, List, Optional, Tuple, Type
 import numpy as np
 
 from toonmesh import _colors, _core
-from toonmesh.files import _archives, _gltf, _ply, _polygons
+from toonmesh.files import _archives, _gltf, _ply, _polygons, _threemf
 from toonmesh.files._checks import (
     MeshFileError, asset_path, check_gltf_shape, check_gltf_sizes, check_kind, check_obj, check_ply, file_bytes,
     gltf_colour_notes, gltf_document, gltf_file_notes, gltf_ignored, join_continued, obj_file_notes, obj_for_trimesh,
@@ -366,6 +366,10 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         if _ply.has_strips(header):  # trimesh reads strips as points, or not at all
             V, F, colors = _ply.read(path, header, data)
             return trimesh.Trimesh(V, F, vertex_colors=colors, process=False), materials
+    if suffix == ".3mf":  # the production extension's parts, which trimesh places wrong: read here
+        produced = _threemf.read(path, data)
+        if produced is not None:
+            return _threemf_scene(trimesh, *produced), materials
     if suffix == ".off":  # polygons as triangles, as trimesh lays out their fans, a concave one's by ear clipping
         text = trimesh.util.comment_strip(trimesh.util.decode_text(data))
         data = (_polygons.off_for_trimesh(text) or text).encode()
@@ -394,6 +398,20 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
     if suffix == ".ply" and getattr(loaded, "faces", None) is not None:
         _split_concave(loaded, data, header, path)
     return loaded, materials
+
+
+def _threemf_scene(trimesh: Any, geometries: Dict[Any, Tuple[str, np.ndarray, np.ndarray]],
+                   placements: List[Tuple[Any, np.ndarray]]) -> Any:
+    """A ``trimesh.Scene`` of the geometries and placements :func:`toonmesh.files._threemf.read`
+    gives: one geometry per object, one node per placement."""
+    scene = trimesh.Scene()
+    for name, V, F in geometries.values():
+        scene.geometry[name] = trimesh.Trimesh(V, F, process=False)
+    for number, (key, transform) in enumerate(placements):
+        name = geometries[key][0]
+        scene.graph.update(frame_to=f"{name} {number}", frame_from=scene.graph.base_frame, matrix=transform,
+                           geometry=name)
+    return scene
 
 
 def _split_concave(loaded: Any, data: bytes, header: Any, path: str) -> None:

@@ -162,20 +162,20 @@ def fan_layout(polygons: Sequence[Any]) -> Tuple[np.ndarray, List[np.ndarray]]:
     rows: List[np.ndarray] = [np.empty(0, np.int64)] * len(polygons)
     fans: List[np.ndarray] = [np.empty((0, 3), np.int64)]
     at = 0
-    tri = np.flatnonzero(lengths == 3)
+    tri = np.flatnonzero(lengths == 3).tolist()
     if len(tri):
         fans.append(np.asarray([polygons[k] for k in tri], dtype=np.int64).reshape(-1, 3))
         for r, k in enumerate(tri):
             rows[k] = np.array([r])
         at = len(tri)
-    quad = np.flatnonzero(lengths == 4)
+    quad = np.flatnonzero(lengths == 4).tolist()
     if len(quad):
         q = np.asarray([polygons[k] for k in quad], dtype=np.int64).reshape(-1, 4)
         fans += [q[:, [0, 1, 2]], q[:, [2, 3, 0]]]
         for r, k in enumerate(quad):
             rows[k] = np.array([at + r, at + len(quad) + r])
         at += 2 * len(quad)
-    for k in np.flatnonzero(lengths > 4):
+    for k in np.flatnonzero(lengths > 4).tolist():
         p = np.asarray(polygons[k], dtype=np.int64)
         n = len(p)
         rows[k], at = np.arange(at, at + n - 2), at + n - 2
@@ -201,7 +201,7 @@ def _split(V: np.ndarray, fans: np.ndarray, rows: List[np.ndarray], polygons: Se
            lengths: np.ndarray) -> Optional[np.ndarray]:
     out = None
     for n in np.unique(lengths[lengths > 3]):
-        which = np.flatnonzero(lengths == n)
+        which = np.flatnonzero(lengths == n).tolist()
         index = np.asarray([polygons[k] for k in which], dtype=np.int64).reshape(len(which), n)
         if index.max() >= len(V) or index.min() < 0:
             return None  # said by the reader
