@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
+from toonmesh.files._load import carries_colour
 from conftest import need
 
 
@@ -360,3 +361,27 @@ def test_a_polygon_far_from_flat_keeps_its_fan(tmp_path):
     path.write_text("v -1 0 1\nv 1 0 1\nv 1 0 -1\nv -1 0 -1\nv 0 1 -1\nf 1 2 3 4 5\n")
     (mesh,) = tm.load(str(path))
     assert mesh.faces.tolist() == [[0, 1, 2], [0, 2, 3], [0, 3, 4]]
+
+
+@pytest.mark.parametrize("text", [
+    "v 0 0 0\nv 9 9 9\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 3 4\nf 5 4 3\n",  # a vertex no face names
+    "# made by hand\r\nv 0 0 0\r\nv 1e0 0 0\r\nv 0 1.00000000000000001 0\r\nf 1 2 3\r\nf 1 2 3",  # CRLF, no end
+])
+def test_an_obj_of_positions_and_triangles_reads_as_trimesh_reads_it(tmp_path, text):
+    trimesh = need("trimesh")
+    path = tmp_path / "plain.obj"
+    path.write_bytes(text.encode())
+    (mesh,) = tm.load(str(path))  # read once, by the checks' scan
+    ref = trimesh.load(str(path), process=False, maintain_order=True)
+    assert mesh.vertices.dtype == np.float64 and mesh.faces.dtype == np.int64
+    assert np.array_equal(mesh.vertices, ref.vertices) and np.array_equal(mesh.faces, ref.faces)
+    assert mesh.name == "" and mesh.normals == "auto" and not carries_colour(mesh)
+
+
+def test_the_meshes_of_the_tests_read_as_trimesh_reads_them():
+    trimesh = need("trimesh")
+    folder = os.path.join(os.path.dirname(__file__), "data", "meshes")
+    for name in ("cow.obj", "teapot.obj", "fandisk.obj"):  # positions and triangles alone
+        (mesh,) = tm.load(os.path.join(folder, name))
+        ref = trimesh.load(os.path.join(folder, name), process=False, maintain_order=True)
+        assert np.array_equal(mesh.vertices, ref.vertices) and np.array_equal(mesh.faces, ref.faces), name

@@ -349,6 +349,8 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
                                 f"most {MAX_MATERIALS:,} materials a file")
         notes, textured = obj_file_notes(path, data)
         said += counts["notes"] + notes
+        if "mesh" in counts:  # positions and triangles alone: the checks' scan read them (trimesh read them again)
+            return trimesh.Trimesh(*counts["mesh"], process=False), False
         if counts["negative"] or counts["drop"] or counts["comments"]:
             data = obj_for_trimesh(data, counts["drop"])
         if counts["polygons"]:  # trimesh splits each as a fan: a concave one is split by ear clipping
