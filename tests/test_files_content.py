@@ -385,3 +385,11 @@ def test_the_meshes_of_the_tests_read_as_trimesh_reads_them():
         (mesh,) = tm.load(os.path.join(folder, name))
         ref = trimesh.load(os.path.join(folder, name), process=False, maintain_order=True)
         assert np.array_equal(mesh.vertices, ref.vertices) and np.array_equal(mesh.faces, ref.faces), name
+
+
+def test_a_sparse_accessor_replaces_the_values_it_names():
+    need("trimesh")
+    path = os.path.join(os.path.dirname(__file__), "data", "corpus", "khronos", "SimpleSparseAccessor.gltf")
+    (mesh,) = tm.load(path)  # a strip of 14 vertices, three of them raised by the sparse accessor
+    assert mesh.vertices[[8, 10, 12]].tolist() == [[1, 2, 0], [3, 3, 0], [5, 4, 0]]
+    assert mesh.vertices.max(axis=0).tolist() == [6, 4, 0]  # the accessor's own max
