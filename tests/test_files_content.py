@@ -144,8 +144,8 @@ def polygon_file(path, corners: np.ndarray, form: str, extra: bool = False) -> s
     return str(path)
 
 
-@pytest.mark.parametrize("form, extra", [("ply", False), ("ply", True), ("binary ply", False), ("off", False),
-                                         ("off", True)])
+@pytest.mark.parametrize("form, extra", [("ply", False), ("ply", True), ("binary ply", False), ("binary ply", True),
+                                         ("off", False), ("off", True)])
 def test_a_concave_polygon_in_ply_and_off_is_triangulated_without_overlap(tmp_path, form, extra):
     need("trimesh")
     xy = star64()

@@ -394,7 +394,10 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         raise ImportError(f"{path}: reading {suffix or 'this'} files needs {name}: pip install "
                           "'toonmesh[io]'") from None
     except Exception as exc:  # trimesh raises many kinds for files it cannot parse
-        raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
+        ragged = _ragged_ply(trimesh, path, header, data) if header is not None else None
+        if ragged is None:
+            raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
+        loaded = ragged
     if suffix == ".stl" and hasattr(loaded, "merge_vertices") and np.isfinite(loaded.vertices).all():
         loaded.merge_vertices()  # an STL stores every corner apart: connect the surface
     if suffix == ".ply" and getattr(loaded, "faces", None) is not None:
@@ -414,6 +417,35 @@ def _threemf_scene(trimesh: Any, geometries: Dict[Any, Tuple[str, np.ndarray, np
         scene.graph.update(frame_to=f"{name} {number}", frame_from=scene.graph.base_frame, matrix=transform,
                            geometry=name)
     return scene
+
+
+def _ragged_ply(trimesh: Any, path: str, header: Any, data: bytes) -> Any:
+    """A binary PLY whose faces have different numbers of corners (trimesh reads every face
+    as long as the first, and refuses the file), read here: positions, vertex colours, and the
+    faces as trimesh lays out polygons (:func:`toonmesh.files._polygons.fan_layout`), a concave
+    one's by ear clipping; None for any other file trimesh refuses (its reason is then said)."""
+    if header.format == "ascii" or _ply.has_strips(header):
+        return None
+    try:
+        found = _ply.values(path, header, data)
+    except MeshFileError:
+        return None
+    vertex, face = found.get("vertex", {}), found.get("face", {})
+    polygons = face.get("vertex_indices", face.get("vertex_index"))
+    if polygons is None or not all(k in vertex for k in "xyz") or len({len(p) for p in polygons}) < 2:
+        return None
+    lengths = np.array([len(p) for p in polygons])
+    V = np.stack([np.asarray(vertex[k], dtype=np.float64) for k in "xyz"], axis=1)
+    if lengths.min() < 3 or any(len(p) and (np.min(p) < 0 or np.max(p) >= len(V)) for p in polygons):
+        return None
+    fans, rows = _polygons.fan_layout(polygons)
+    F = _polygons.split(V, fans, rows, polygons, lengths)
+    colors = None
+    if all(k in vertex for k in ("red", "green", "blue")):
+        rgb = [np.asarray(vertex[k]) for k in ("red", "green", "blue")]
+        alpha = np.asarray(vertex["alpha"]) if "alpha" in vertex else np.full(len(V), 255)
+        colors = np.stack(rgb + [alpha], axis=1).astype(np.uint8)
+    return trimesh.Trimesh(V, fans if F is None else F, vertex_colors=colors, process=False)
 
 
 def _split_concave(loaded: Any, data: bytes, header: Any, path: str) -> None:

@@ -194,11 +194,15 @@ def split_fans(vertices: np.ndarray, faces: np.ndarray, polygons: Sequence[Any])
     fans, rows = fan_layout(polygons)
     if not np.array_equal(fans, np.asarray(faces)):
         return None  # not the layout above: left as read
-    return _split(np.asarray(vertices, dtype=np.float64), fans, rows, polygons, lengths)
+    return split(np.asarray(vertices, dtype=np.float64), fans, rows, polygons, lengths)
 
 
-def _split(V: np.ndarray, fans: np.ndarray, rows: List[np.ndarray], polygons: Sequence[Any],
-           lengths: np.ndarray) -> Optional[np.ndarray]:
+def split(V: np.ndarray, fans: np.ndarray, rows: List[np.ndarray], polygons: Sequence[Any],
+          lengths: np.ndarray) -> Optional[np.ndarray]:
+    """``fans`` (laid out as :func:`fan_layout` says, each polygon's triangles in its ``rows``)
+    with each polygon whose fan is wrong split by ear clipping in the same rows; None where
+    none is (or a polygon names a vertex outside ``V``, (N, 3) positions). ``lengths``: each
+    polygon's corner count."""
     out = None
     for n in np.unique(lengths[lengths > 3]):
         which = np.flatnonzero(lengths == n).tolist()
@@ -236,7 +240,7 @@ def off_for_trimesh(text: str) -> Optional[str]:
         return None
     lengths = np.array([len(p) for p in polygons])
     fans, rows = fan_layout(polygons)
-    split = _split(V, fans, rows, polygons, lengths)
-    faces = fans if split is None else split
+    clipped = split(V, fans, rows, polygons, lengths)
+    faces = fans if clipped is None else clipped
     body = "\n".join(lines[1 : v + 1]) + "\n" + "\n".join(f"3 {a} {b} {c}" for a, b, c in faces.tolist())
     return f"{head}{kind}\n{v} {len(faces)} 0\n{body}\n"
