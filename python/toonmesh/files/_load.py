@@ -372,9 +372,10 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         produced = _threemf.read(path, data)
         if produced is not None:
             return _threemf_scene(trimesh, *produced), materials
-    if suffix == ".off":  # polygons as triangles, as trimesh lays out their fans, a concave one's by ear clipping
-        text = trimesh.util.comment_strip(trimesh.util.decode_text(data))
-        data = (_polygons.off_for_trimesh(text) or text).encode()
+    if suffix == ".off":  # read once, here, as trimesh reads it; a concave polygon by ear clipping
+        mesh = _polygons.off_mesh(trimesh.util.comment_strip(trimesh.util.decode_text(data)))
+        if mesh is not None:
+            return trimesh.Trimesh(*mesh, process=False), materials
     doc = gltf_document(path, data) if suffix in (".glb", ".gltf") else None
     if doc is not None:
         check_gltf_shape(path, doc)

@@ -219,28 +219,35 @@ def split(V: np.ndarray, fans: np.ndarray, rows: List[np.ndarray], polygons: Seq
     return out
 
 
-def off_for_trimesh(text: str) -> Optional[str]:
-    """An OFF file (its text, comments stripped, as trimesh reads it) with its polygons of
-    more than three corners written as triangles, laid out as trimesh lays out their fans
-    (:func:`fan_layout`), a concave polygon's by ear clipping; None where every face is a
-    triangle, or the file is too malformed for this (trimesh then says what is wrong). trimesh
-    itself fails on a file that mixes polygons of more than four corners with others."""
+def off_mesh(text: str) -> Optional[Tuple[np.ndarray, np.ndarray]]:
+    """(V (N, 3) float64, F (M, 3) int64) of an OFF file (its text, comments stripped), read as
+    trimesh reads it (each vertex line's first 3 numbers; each face line's corners), its
+    polygons as trimesh lays out their fans (:func:`fan_layout`), a concave one's by ear
+    clipping; None where the file is malformed or has no faces (trimesh then reads it and says
+    what is wrong). trimesh itself fails on a file that mixes polygons of more than four
+    corners with others."""
     try:
-        head, kind, raw = re.split("(COFF|OFF)", text, maxsplit=1)
+        _, _, raw = re.split("(COFF|OFF)", text, maxsplit=1)
         lines = [line.strip() for line in raw.splitlines()]
         lines = [line for line in lines if line]
         counts = lines[0].split()
         v, f = int(counts[0]), int(counts[1])
-        words = [line.split() for line in lines[v + 1 : v + f + 1]]
-        polygons = [[int(w) for w in line[1 : int(line[0]) + 1]] for line in words]
-        if not polygons or max(len(p) for p in polygons) <= 3 or min(len(p) for p in polygons) < 3:
-            return None
         V = np.array([line.split()[:3] for line in lines[1 : v + 1]], dtype=np.float64).reshape(v, 3)
-    except (ValueError, IndexError):
+        words = [line.split() for line in lines[v + 1 : v + f + 1]]
+        if not words:
+            return None
+        if all(len(w) == 4 and w[0] == "3" for w in words):  # triangles: one array at once
+            F = np.array([w[1:] for w in words], dtype=np.int64).reshape(-1, 3)
+        else:
+            polygons = [[int(w) for w in line[1 : int(line[0]) + 1]] for line in words]
+            lengths = np.array([len(p) for p in polygons])
+            if lengths.min() < 3:
+                return None
+            F, rows = fan_layout(polygons)
+            clipped = split(V, F, rows, polygons, lengths) if len(F) and F.max() < v else None
+            F = F if clipped is None else clipped
+    except (ValueError, IndexError, OverflowError):
         return None
-    lengths = np.array([len(p) for p in polygons])
-    fans, rows = fan_layout(polygons)
-    clipped = split(V, fans, rows, polygons, lengths)
-    faces = fans if clipped is None else clipped
-    body = "\n".join(lines[1 : v + 1]) + "\n" + "\n".join(f"3 {a} {b} {c}" for a, b, c in faces.tolist())
-    return f"{head}{kind}\n{v} {len(faces)} 0\n{body}\n"
+    if F.min() < 0 or F.max() >= v:
+        return None  # trimesh says so
+    return V, F
