@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import io
 import posixpath
+import re
 import xml.etree.ElementTree as ET
 import zipfile
 from typing import Dict, List, Optional, Tuple
@@ -48,7 +49,7 @@ def read(path: str, data: bytes) -> Optional[Tuple[Dict[Key, Tuple[str, np.ndarr
         package = zipfile.ZipFile(io.BytesIO(data))
         names = {n.lower().lstrip("/"): n for n in package.namelist()}
         root = _root_part(package, names)
-        if root is None or PRODUCTION.encode() not in package.read(names[root]):
+        if root is None or not _names_other_parts(package.read(names[root])):
             return None
         reader = _Reader(path, package, names, root)
         model = reader.model(root)
@@ -63,6 +64,14 @@ def read(path: str, data: bytes) -> Optional[Tuple[Dict[Key, Tuple[str, np.ndarr
     except zipfile.BadZipFile as exc:
         raise MeshFileError(f"{path}: not a readable 3MF package ({exc})") from None
     return reader.geometries, placements
+
+
+def _names_other_parts(model: bytes) -> bool:
+    """Whether a model part's bytes may hold the production extension's ``path`` attribute (its
+    namespace declared, and ``PREFIX:path`` written): found without parsing the XML, so that
+    other 3MF files cost trimesh's reading alone."""
+    prefixes = re.findall(rb'xmlns:([A-Za-z_][\w.-]*)\s*=\s*["\']' + re.escape(PRODUCTION.encode()), model)
+    return any(model.find(p + b":path") >= 0 for p in prefixes)
 
 
 def _root_part(package: zipfile.ZipFile, names: Dict[str, str]) -> Optional[str]:
