@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
+from toonmesh.files._load import carries_colour
 from conftest import need
 
 
@@ -104,6 +105,54 @@ def test_a_concave_polygon_is_triangulated_without_overlap(tmp_path, shape):
     (mesh,) = tm.load(polygon_obj(tmp_path / f"{shape}.obj", xy))
     assert len(mesh.faces) == len(xy) - 2
     assert covered(mesh) == pytest.approx(shoelace(xy), rel=0.02)
+
+
+def star64() -> np.ndarray:
+    """A 64-corner star (every other corner pulled in): its fan about the first corner covers
+    many times its area."""
+    t = np.linspace(0, 2 * np.pi, 64, endpoint=False)
+    return np.c_[np.cos(t), np.sin(t)] * np.where(np.arange(64) % 2, 0.3, 1.0)[:, None]
+
+
+def polygon_file(path, corners: np.ndarray, form: str, extra: bool = False) -> str:
+    """One face of the given (n, 2) corners, tilted out of the xy plane, as a PLY (ASCII or
+    binary) or an OFF; ``extra``: a triangle and a quad beside it (trimesh lays out such a mix
+    of polygons in its own order)."""
+    import struct
+
+    rot = np.array([[1, 0, 0], [0, np.cos(0.6), -np.sin(0.6)], [0, np.sin(0.6), np.cos(0.6)]])
+    V = np.c_[corners, np.zeros(len(corners))] @ rot.T + [3, -1, 2]
+    faces = [list(range(len(V)))]
+    if extra:
+        n = len(V)
+        V = np.r_[V, [[5, 5, 0], [6, 5, 0], [6, 6, 0], [5, 6, 0]]]
+        faces = [[n, n + 1, n + 2]] + faces + [[n, n + 1, n + 2, n + 3]]
+    if form == "off":
+        path.write_text(f"OFF\n{len(V)} {len(faces)} 0\n" + "".join(f"{x:.17g} {y:.17g} {z:.17g}\n" for x, y, z in V)
+                        + "".join(f"{len(f)} " + " ".join(map(str, f)) + "\n" for f in faces))
+        return str(path)
+    header = (f"ply\nformat {'ascii' if form == 'ply' else 'binary_little_endian'} 1.0\nelement vertex {len(V)}\n"
+              "property double x\nproperty double y\nproperty double z\n"
+              f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n")
+    if form == "ply":
+        body = "".join(f"{x:.17g} {y:.17g} {z:.17g}\n" for x, y, z in V) + "".join(
+            f"{len(f)} " + " ".join(map(str, f)) + "\n" for f in faces)
+        path.write_text(header + body)
+    else:
+        path.write_bytes(header.encode() + V.astype("<f8").tobytes() + b"".join(
+            struct.pack("<B", len(f)) + np.asarray(f, "<i4").tobytes() for f in faces))
+    return str(path)
+
+
+@pytest.mark.parametrize("form, extra", [("ply", False), ("ply", True), ("binary ply", False), ("binary ply", True),
+                                         ("off", False), ("off", True)])
+def test_a_concave_polygon_in_ply_and_off_is_triangulated_without_overlap(tmp_path, form, extra):
+    need("trimesh")
+    xy = star64()
+    suffix = ".off" if form == "off" else ".ply"
+    (mesh,) = tm.load(polygon_file(tmp_path / f"star{suffix}", xy, form, extra))
+    assert len(mesh.faces) == len(xy) - 2 + (3 if extra else 0)
+    assert covered(mesh) == pytest.approx(shoelace(xy) + (1.5 if extra else 0), rel=0.02)
 
 
 def test_a_convex_polygon_keeps_its_fan(tmp_path):
@@ -238,9 +287,109 @@ def test_a_3mf_places_its_components_and_build_items(tmp_path):
     assert offsets == [(0, 0, 0), (0, 5, 0), (3, 0, 0)]
 
 
+TETRAHEDRON_3MF = ('<mesh><vertices><vertex x="0" y="0" z="0"/><vertex x="1" y="0" z="0"/><vertex x="0" y="1" z="0"/>'
+                   '<vertex x="0" y="0" z="1"/></vertices><triangles><triangle v1="0" v2="2" v3="1"/>'
+                   '<triangle v1="0" v2="1" v3="3"/><triangle v1="1" v2="2" v3="3"/><triangle v1="0" v2="3" v3="2"/>'
+                   '</triangles></mesh>')
+CUBE_3MF = ("<mesh><vertices>" + "".join(f'<vertex x="{x}" y="{y}" z="{z}"/>' for x in (0, 2) for y in (0, 2)
+                                         for z in (0, 2))
+            + "</vertices><triangles>" + "".join(
+                f'<triangle v1="{a}" v2="{b}" v3="{c}"/><triangle v1="{a}" v2="{c}" v3="{d}"/>'
+                for a, b, c, d in [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)])
+            + "</triangles></mesh>")
+CORE_NS = "http://schemas.microsoft.com/3dmanufacturing/core/2015/02"
+PRODUCTION_NS = "http://schemas.microsoft.com/3dmanufacturing/production/2015/06"
+
+
+def production_3mf(path, items: int = 17, component_object: str = "2") -> str:
+    """A 3MF of the production extension: a root object (id 1, as the part's first object) of
+    two components that name objects 1 (a tetrahedron) and 2 (a cube, raised by 5) of another
+    model part, /3D/Objects/part.model, placed by ``items`` build items 10 apart along x."""
+    import zipfile
+
+    part = (f'<?xml version="1.0" encoding="UTF-8"?><model unit="millimeter" xmlns="{CORE_NS}" '
+            f'xmlns:p="{PRODUCTION_NS}"><resources><object id="1" type="model" p:UUID="a1">{TETRAHEDRON_3MF}</object>'
+            f'<object id="2" type="model" p:UUID="a2">{CUBE_3MF}</object></resources></model>')
+    build = "".join(f'<item objectid="1" transform="1 0 0 0 1 0 0 0 1 {10 * k} 0 0" p:UUID="b{k}"/>'
+                    for k in range(items))
+    root = (f'<?xml version="1.0" encoding="UTF-8"?><model unit="millimeter" xmlns="{CORE_NS}" '
+            f'xmlns:p="{PRODUCTION_NS}" requiredextensions="p"><resources><object id="1" type="model" p:UUID="c1">'
+            '<components><component p:path="/3D/Objects/part.model" objectid="1" p:UUID="d1"/>'
+            f'<component p:path="/3D/Objects/part.model" objectid="{component_object}" '
+            'transform="1 0 0 0 1 0 0 0 1 0 0 5" p:UUID="d2"/>'
+            f'</components></object></resources><build p:UUID="e1">{build}</build></model>')
+    rels = "http://schemas.openxmlformats.org/package/2006/relationships"
+    kind = "http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"
+    with zipfile.ZipFile(path, "w") as z:
+        z.writestr("[Content_Types].xml", '<?xml version="1.0"?><Types xmlns="http://schemas.openxmlformats.org/'
+                   'package/2006/content-types"><Default Extension="rels" ContentType="application/vnd.'
+                   'openxmlformats-package.relationships+xml"/><Default Extension="model" ContentType='
+                   '"application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>')
+        z.writestr("_rels/.rels", f'<?xml version="1.0"?><Relationships xmlns="{rels}"><Relationship '
+                   f'Target="/3D/3dmodel.model" Id="r0" Type="{kind}"/></Relationships>')
+        z.writestr("3D/_rels/3dmodel.model.rels", f'<?xml version="1.0"?><Relationships xmlns="{rels}">'
+                   f'<Relationship Target="/3D/Objects/part.model" Id="r1" Type="{kind}"/></Relationships>')
+        z.writestr("3D/3dmodel.model", root)
+        z.writestr("3D/Objects/part.model", part)
+    return str(path)
+
+
+def test_a_3mf_of_the_production_extension_places_its_parts(tmp_path):
+    need("trimesh")
+    meshes = tm.load(production_3mf(tmp_path / "production.3mf"))
+    # each of the 17 build items places both components, each with its own object of the part
+    placed = sorted((len(m.faces), tuple(np.round(m.transform[:3, 3], 6))) for m in meshes)
+    assert placed == sorted([(4, (10.0 * k, 0.0, 0.0)) for k in range(17)]
+                            + [(12, (10.0 * k, 0.0, 5.0)) for k in range(17)])
+    tetrahedra = [m for m in meshes if len(m.faces) == 4]
+    assert all(m.vertices is tetrahedra[0].vertices for m in tetrahedra)  # one geometry, placed 17 times
+    assert {m.up for m in meshes} == {"z"}
+
+
+def test_a_3mf_naming_an_object_its_part_lacks_is_refused_in_one_line(tmp_path):
+    need("trimesh")
+    path = production_3mf(tmp_path / "missing.3mf", items=2, component_object="7")
+    with pytest.raises(ValueError) as caught:
+        tm.load(path)
+    assert str(caught.value) == (f"{path}: component 2 of object 1 (/3D/3dmodel.model) names object 7 of "
+                                 "/3D/Objects/part.model, which it does not define")
+
+
 def test_a_polygon_far_from_flat_keeps_its_fan(tmp_path):
     need("trimesh")
     path = tmp_path / "bent.obj"  # a square with a corner lifted far out of its plane (as trimesh's polygonfaces.obj)
     path.write_text("v -1 0 1\nv 1 0 1\nv 1 0 -1\nv -1 0 -1\nv 0 1 -1\nf 1 2 3 4 5\n")
     (mesh,) = tm.load(str(path))
     assert mesh.faces.tolist() == [[0, 1, 2], [0, 2, 3], [0, 3, 4]]
+
+
+@pytest.mark.parametrize("text", [
+    "v 0 0 0\nv 9 9 9\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 3 4\nf 5 4 3\n",  # a vertex no face names
+    "# made by hand\r\nv 0 0 0\r\nv 1e0 0 0\r\nv 0 1.00000000000000001 0\r\nf 1 2 3\r\nf 1 2 3",  # CRLF, no end
+])
+def test_an_obj_of_positions_and_triangles_reads_as_trimesh_reads_it(tmp_path, text):
+    trimesh = need("trimesh")
+    path = tmp_path / "plain.obj"
+    path.write_bytes(text.encode())
+    (mesh,) = tm.load(str(path))  # read once, by the checks' scan
+    ref = trimesh.load(str(path), process=False, maintain_order=True)
+    assert mesh.vertices.dtype == np.float64 and mesh.faces.dtype == np.int64
+    assert np.array_equal(mesh.vertices, ref.vertices) and np.array_equal(mesh.faces, ref.faces)
+    assert mesh.name == "" and mesh.normals == "auto" and not carries_colour(mesh)
+
+
+def test_the_meshes_of_the_tests_read_as_trimesh_reads_them():
+    trimesh = need("trimesh")
+    folder = os.path.join(os.path.dirname(__file__), "data", "meshes")
+    for name in ("cow.obj", "teapot.obj", "fandisk.obj"):  # positions and triangles alone
+        (mesh,) = tm.load(os.path.join(folder, name))
+        ref = trimesh.load(os.path.join(folder, name), process=False, maintain_order=True)
+        assert np.array_equal(mesh.vertices, ref.vertices) and np.array_equal(mesh.faces, ref.faces), name
+
+
+def test_a_sparse_accessor_replaces_the_values_it_names():
+    need("trimesh")
+    path = os.path.join(os.path.dirname(__file__), "data", "corpus", "khronos", "SimpleSparseAccessor.gltf")
+    (mesh,) = tm.load(path)  # a strip of 14 vertices, three of them raised by the sparse accessor
+    assert mesh.vertices[[8, 10, 12]].tolist() == [[1, 2, 0], [3, 3, 0], [5, 4, 0]]
+    assert mesh.vertices.max(axis=0).tolist() == [6, 4, 0]  # the accessor's own max

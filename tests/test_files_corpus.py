@@ -36,6 +36,9 @@ EXPECTED = {
     "singlevn.obj": (1, 2), "soup.stl": (1, 100), "stl_empty_bin.stl": "no triangles in the file",
     "testplate.glb": (1, 264), "tet.ply": (1, 4), "textured_tetrahedron.obj": (1, 4), "two_objects.obj": (1, 16),
     "unit_cube.STL": (1, 12), "wallhole.obj": (1, 66), "whitespace.off": (1, 12),
+    # khronos/: glTF sample assets (cameras, morph targets and animations named as not drawn)
+    "Cameras.gltf": (1, 2), "SimpleMeshes.gltf": (2, 2), "SimpleMorph.gltf": (1, 1),
+    "SimpleSparseAccessor.gltf": (1, 12), "TriangleWithoutIndices.gltf": (1, 1),
 }
 
 FILES = sorted(p for p in CORPUS.rglob("*") if p.is_file() and not p.name.endswith(BESIDE))

@@ -43,6 +43,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(render::_transform, m)?,
         wrap_pyfunction!(render::gpu_info, m)?,
         wrap_pyfunction!(render::encode_png_rgba, m)?,
+        wrap_pyfunction!(render::decode_png, m)?,
         wrap_pyfunction!(settings::_restore, m)?,
         wrap_pyfunction!(settings::kang_table, m)?,
     ];

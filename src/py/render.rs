@@ -21,7 +21,7 @@ use crate::mesh::positions::on_positions;
 use crate::parallel::catching_panics;
 use crate::render::effects::shadows::raycast::mesh_shadow_truth;
 use crate::render::gpu_mesh::{MeshNormals, NormalMode};
-use crate::render::image_out::encode_png;
+use crate::render::image_out::{decode_png as decode_png_bytes, encode_png};
 use crate::render::scene::options::MeshSpec;
 use crate::render::scene::up::Axis;
 use crate::render::{BackendChoice, FrameReport, Image, Renderer, ViewImages};
@@ -264,6 +264,17 @@ pub(super) fn encode_png_rgba<'py>(
         array_values::<u8>("color", color, &["uint8"], (&[None, None, Some(4)], "(H, W, 4)"))?;
     let png = without_gil(py, || encode_png(shape[1] as u32, shape[0] as u32, &pixels))?;
     Ok(PyBytes::new(py, &png))
+}
+
+/// decode_png(data: bytes) -> uint8 (H, W, C)
+///
+/// The pixels of a PNG file's bytes, rows top first: C = 1 grey, 2 grey and alpha, 3 RGB, 4 RGBA,
+/// as the file stores them (16-bit and palette files as 8-bit). Raises ValueError for bytes that
+/// are not a readable PNG.
+#[pyfunction]
+pub(super) fn decode_png<'py>(py: Python<'py>, data: &[u8]) -> PyResult<Bound<'py, PyAny>> {
+    let (height, width, channels, pixels) = decode_png_bytes(data)?;
+    shaped_to_numpy(py, vec![height as usize, width as usize, channels], pixels)
 }
 
 /// _shadow_truth((vertices, faces), view_proj, shape, toward_light) -> (H, W) float32

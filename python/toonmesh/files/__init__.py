@@ -7,7 +7,10 @@ and batch renders.
 - :mod:`._checks`: what trimesh does not check (OBJ lines, PLY header counts, glTF accessors,
   the files a mesh file names), one layer beside the parser.
 - :mod:`._ply`: PLY triangle strips and float colours, where trimesh falls short.
-- :mod:`._polygons`: concave polygons split by ear clipping (trimesh splits every one as a fan).
+- :mod:`._polygons`: concave polygons (OBJ, PLY, OFF) split by ear clipping (trimesh splits every
+  one as a fan).
+- :mod:`._threemf`: 3MF files of the production extension (parts in other model files), which
+  trimesh places wrong.
 - :mod:`._gltf`: glTF triangle fans and specular-glossiness materials, made readable by trimesh.
 - :mod:`._archives`: zip and tar archives and compressed files, unpacked.
 - :mod:`._write`: meshes written back (``toonmesh smooth``) and renders saved.

@@ -3,6 +3,8 @@
 - Triangle fans (``mode`` 6), which trimesh refuses, are given an index accessor of the
   triangles they mean, (0, i, i + 1) of their vertices (or of their indices), in a buffer of
   their own, and read as triangles.
+- A sparse accessor of floats (positions, normals, ... some of whose values the file replaces),
+  whose replacements trimesh ignores, is given its values in full, in that buffer.
 - A ``KHR_materials_pbrSpecularGlossiness`` material is drawn by its diffuse texture and
   factor, given to trimesh as the base colour (or by the base colour the file also carries).
 
@@ -22,18 +24,33 @@ import numpy as np
 from toonmesh.files._checks import gltf_accessor
 
 _FANS = 6
+_FLOAT = 5126
 _SPEC_GLOSS = "KHR_materials_pbrSpecularGlossiness"
 
 
 def readable(path: str, doc: Dict[str, Any], data: bytes) -> Optional[bytes]:
-    """The file's bytes with its fans as triangles and its specular-glossiness materials as base
-    colours, or None where it has neither."""
+    """The file's bytes with its fans as triangles, its sparse float accessors in full and its
+    specular-glossiness materials as base colours, or None where it has none of them."""
     fans = [(m, p) for m, mesh in enumerate(doc.get("meshes") or [])
             for p, primitive in enumerate(mesh.get("primitives") or []) if primitive.get("mode") == _FANS]
     glossy = [i for i, mat in enumerate(doc.get("materials") or []) if _SPEC_GLOSS in (mat.get("extensions") or {})]
-    if not fans and not glossy:
+    sparse = [i for i, a in enumerate(doc.get("accessors") or [])
+              if isinstance(a, dict) and "sparse" in a and a.get("componentType") == _FLOAT]
+    if not fans and not glossy and not sparse:
         return None
     doc = copy.deepcopy(doc)
+    buffers: Dict[int, Optional[bytes]] = {-1: data}
+    blob = bytearray()
+    for i in sparse:
+        values = _dense(path, doc, i, buffers)
+        if values is None:
+            continue  # unreadable: trimesh reads it as it does
+        accessor = doc["accessors"][i]
+        doc.setdefault("bufferViews", []).append(
+            {"buffer": len(doc["buffers"]), "byteOffset": len(blob), "byteLength": values.nbytes})
+        accessor.pop("sparse")
+        accessor["bufferView"], accessor["byteOffset"] = len(doc["bufferViews"]) - 1, 0
+        blob += values.astype("<f4").tobytes()
     for i in glossy:
         material = doc["materials"][i]
         spec = material["extensions"].pop(_SPEC_GLOSS)
@@ -45,8 +62,6 @@ def readable(path: str, doc: Dict[str, Any], data: bytes) -> Optional[bytes]:
         if not material["extensions"]:
             del material["extensions"]
     if fans:
-        buffers: Dict[int, Optional[bytes]] = {-1: data}
-        blob = bytearray()
         for m, p in fans:
             primitive = doc["meshes"][m]["primitives"][p]
             if "indices" in primitive:
@@ -69,6 +84,7 @@ def readable(path: str, doc: Dict[str, Any], data: bytes) -> Optional[bytes]:
             primitive["indices"] = len(doc["accessors"]) - 1
             primitive["mode"] = 4
             blob += indices.tobytes()
+    if blob:
         doc.setdefault("buffers", []).append(
             {"byteLength": len(blob), "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(blob)).decode()})
     text = json.dumps(doc).encode()
@@ -79,3 +95,35 @@ def readable(path: str, doc: Dict[str, Any], data: bytes) -> Optional[bytes]:
     rest = data[20 + json_length :]  # the binary chunk, as it was
     body = struct.pack("<II", len(text), 0x4E4F534A) + text + rest
     return b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body
+
+
+def _dense(path: str, doc: Dict[str, Any], index: int, buffers: Dict[int, Optional[bytes]]) -> Optional[np.ndarray]:
+    """The (count, components) float32 values of sparse accessor ``index``: its buffer view's
+    values (zeros where it has none) with the sparse indices' values put in; None where a part
+    cannot be read."""
+    accessor = doc["accessors"][index]
+    try:
+        sparse = accessor["sparse"]
+        count = int(accessor["count"])
+        components = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}[accessor["type"]]
+        parts = [{k: v for k, v in accessor.items() if k != "sparse"},
+                 {"bufferView": sparse["indices"]["bufferView"], "byteOffset": sparse["indices"].get("byteOffset", 0),
+                  "componentType": sparse["indices"]["componentType"], "count": sparse["count"], "type": "SCALAR"},
+                 {"bufferView": sparse["values"]["bufferView"], "byteOffset": sparse["values"].get("byteOffset", 0),
+                  "componentType": _FLOAT, "count": sparse["count"], "type": accessor["type"]}]
+    except (LookupError, TypeError, ValueError):
+        return None
+    scratch = dict(doc, accessors=list(doc["accessors"]) + parts)  # read by the checks' accessor reader
+    first = len(doc["accessors"])
+    base = (gltf_accessor(path, scratch, first, buffers) if "bufferView" in accessor
+            else np.zeros((count, components), np.float32))
+    where = gltf_accessor(path, scratch, first + 1, buffers)
+    values = gltf_accessor(path, scratch, first + 2, buffers)
+    if base is None or where is None or values is None or base.shape != (count, components):
+        return None
+    where = where.reshape(-1).astype(np.int64)
+    if len(where) != len(values) or (len(where) and (where.min() < 0 or where.max() >= count)):
+        return None
+    out = np.array(base, dtype=np.float32)
+    out[where] = values
+    return out

@@ -23,7 +23,7 @@ from typing import Any, Dict, Iterator, List, Optional, Tuple, Type
 import numpy as np
 
 from toonmesh import _colors, _core
-from toonmesh.files import _archives, _gltf, _ply, _polygons
+from toonmesh.files import _archives, _gltf, _ply, _polygons, _threemf
 from toonmesh.files._checks import (
     MeshFileError, asset_path, check_gltf_shape, check_gltf_sizes, check_kind, check_obj, check_ply, file_bytes,
     gltf_colour_notes, gltf_document, gltf_file_notes, gltf_ignored, join_continued, obj_file_notes, obj_for_trimesh,
@@ -353,6 +353,8 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
                                 f"most {MAX_MATERIALS:,} materials a file")
         notes, textured = obj_file_notes(path, data)
         said += counts["notes"] + notes
+        if "mesh" in counts:  # positions and triangles alone: the checks' scan read them (trimesh read them again)
+            return trimesh.Trimesh(*counts["mesh"], process=False), False
         if counts["negative"] or counts["drop"] or counts["comments"]:
             data = obj_for_trimesh(data, counts["drop"])
         if counts["polygons"]:  # trimesh splits each as a fan: a concave one is split by ear clipping
@@ -362,13 +364,22 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         # positions as listed (not split at texture seams) unless the corners' normals (drawn) or
         # UVs (kept, or drawn with a texture) matter: a vertex gets one of each
         extra["maintain_order"] = not (normals or (keep_seams and texcoords) or (materials and textured))
-    elif suffix == ".ply":
+    header = None
+    if suffix == ".ply":
         header = ply_header(path, data)  # parsed once, for every check below
         check_ply(path, header, len(data))
         said += ply_file_notes(path, header) + _ply.colour_notes(path, header, data)
         if _ply.has_strips(header):  # trimesh reads strips as points, or not at all
             V, F, colors = _ply.read(path, header, data)
             return trimesh.Trimesh(V, F, vertex_colors=colors, process=False), materials
+    if suffix == ".3mf":  # the production extension's parts, which trimesh places wrong: read here
+        produced = _threemf.read(path, data)
+        if produced is not None:
+            return _threemf_scene(trimesh, *produced), materials
+    if suffix == ".off":  # read once, here, as trimesh reads it; a concave polygon by ear clipping
+        mesh = _polygons.off_mesh(trimesh.util.comment_strip(trimesh.util.decode_text(data)))
+        if mesh is not None:
+            return trimesh.Trimesh(*mesh, process=False), materials
     doc = gltf_document(path, data) if suffix in (".glb", ".gltf") else None
     if doc is not None:
         check_gltf_shape(path, doc)
@@ -388,10 +399,77 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         raise ImportError(f"{path}: reading {suffix or 'this'} files needs {name}: pip install "
                           "'toonmesh[io]'") from None
     except Exception as exc:  # trimesh raises many kinds for files it cannot parse
-        raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
+        ragged = _ragged_ply(trimesh, path, header, data) if header is not None else None
+        if ragged is None:
+            raise MeshFileError(f"{path}: cannot read a mesh ({_one_line(exc)})") from None
+        loaded = ragged
     if suffix == ".stl" and hasattr(loaded, "merge_vertices") and np.isfinite(loaded.vertices).all():
         loaded.merge_vertices()  # an STL stores every corner apart: connect the surface
+    if suffix == ".ply" and getattr(loaded, "faces", None) is not None:
+        _split_concave(loaded, data, header, path)
     return loaded, materials
+
+
+def _threemf_scene(trimesh: Any, geometries: Dict[Any, Tuple[str, np.ndarray, np.ndarray]],
+                   placements: List[Tuple[Any, np.ndarray]]) -> Any:
+    """A ``trimesh.Scene`` of the geometries and placements :func:`toonmesh.files._threemf.read`
+    gives: one geometry per object, one node per placement."""
+    scene = trimesh.Scene()
+    for name, V, F in geometries.values():
+        scene.geometry[name] = trimesh.Trimesh(V, F, process=False)
+    for number, (key, transform) in enumerate(placements):
+        name = geometries[key][0]
+        scene.graph.update(frame_to=f"{name} {number}", frame_from=scene.graph.base_frame, matrix=transform,
+                           geometry=name)
+    return scene
+
+
+def _ragged_ply(trimesh: Any, path: str, header: Any, data: bytes) -> Any:
+    """A binary PLY whose faces have different numbers of corners (trimesh reads every face
+    as long as the first, and refuses the file), read here: positions, vertex colours, and the
+    faces as trimesh lays out polygons (:func:`toonmesh.files._polygons.fan_layout`), a concave
+    one's by ear clipping; None for any other file trimesh refuses (its reason is then said)."""
+    if header.format == "ascii" or _ply.has_strips(header):
+        return None
+    try:
+        found = _ply.values(path, header, data)
+    except MeshFileError:
+        return None
+    vertex, face = found.get("vertex", {}), found.get("face", {})
+    polygons = face.get("vertex_indices", face.get("vertex_index"))
+    if polygons is None or not all(k in vertex for k in "xyz") or len({len(p) for p in polygons}) < 2:
+        return None
+    lengths = np.array([len(p) for p in polygons])
+    V = np.stack([np.asarray(vertex[k], dtype=np.float64) for k in "xyz"], axis=1)
+    if lengths.min() < 3 or any(len(p) and (np.min(p) < 0 or np.max(p) >= len(V)) for p in polygons):
+        return None
+    fans, rows = _polygons.fan_layout(polygons)
+    F = _polygons.split(V, fans, rows, polygons, lengths)
+    colors = None
+    if all(k in vertex for k in ("red", "green", "blue")):
+        rgb = [np.asarray(vertex[k]) for k in ("red", "green", "blue")]
+        alpha = np.asarray(vertex["alpha"]) if "alpha" in vertex else np.full(len(V), 255)
+        colors = np.stack(rgb + [alpha], axis=1).astype(np.uint8)
+    return trimesh.Trimesh(V, fans if F is None else F, vertex_colors=colors, process=False)
+
+
+def _split_concave(loaded: Any, data: bytes, header: Any, path: str) -> None:
+    """A PLY's concave polygons, which trimesh splits as fans (covering what is outside them),
+    split by ear clipping instead (:func:`toonmesh.files._polygons.split_fans`). The polygons
+    are read again only where trimesh made more triangles than the file has faces."""
+    count = next((n for name, n, _ in header.elements if name == "face"), 0)
+    if len(loaded.faces) <= count:
+        return  # triangles only
+    try:
+        face = _ply.values(path, header, data).get("face", {})
+    except MeshFileError:
+        return
+    polygons = face.get("vertex_indices", face.get("vertex_index"))
+    if polygons is None or len(polygons) != count:
+        return
+    split = _polygons.split_fans(loaded.vertices, loaded.faces, polygons)
+    if split is not None:
+        loaded.faces = split
 
 
 def _Beside(trimesh: Any, path: str) -> Any:

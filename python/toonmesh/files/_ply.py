@@ -20,12 +20,12 @@ def has_strips(header: PlyHeader) -> bool:
 def read(path: str, header: PlyHeader, data: bytes) -> Tuple[np.ndarray, np.ndarray, Optional[np.ndarray]]:
     """(V (N, 3) float64, F (M, 3) int64, vertex colours (N, 4) uint8 or None) of a PLY whose
     faces are triangle strips (see :func:`toonmesh.files._checks.strip_triangles`)."""
-    values = _values(path, header, data)
-    vertex = values.get("vertex", {})
+    found = values(path, header, data)
+    vertex = found.get("vertex", {})
     if not all(k in vertex for k in "xyz"):
         raise MeshFileError(f"{path}: no x, y, z vertex properties")
     V = np.stack([np.asarray(vertex[k], dtype=np.float64) for k in "xyz"], axis=1)
-    strips = values["tristrips"].get("vertex_indices")
+    strips = found["tristrips"].get("vertex_indices")
     if strips is None:
         raise MeshFileError(f"{path}: the tristrips element has no vertex_indices list")
     F = strip_triangles(strips)
@@ -52,19 +52,19 @@ def colour_notes(path: str, header: PlyHeader, data: bytes) -> List[str]:
     if not floats:
         return []
     try:
-        values = _values(path, header, data)
+        found = values(path, header, data)
     except MeshFileError:
         return []  # trimesh says what is wrong
     notes = []
     for name in floats:
-        columns = [np.asarray(values[name][k], dtype=np.float64) for k in COLOUR_PROPERTIES if k in values[name]]
+        columns = [np.asarray(found[name][k], dtype=np.float64) for k in COLOUR_PROPERTIES if k in found[name]]
         bad = np.flatnonzero(~np.isfinite(np.stack(columns, axis=1)).all(axis=1))
         if len(bad):
             notes.append(f"{len(bad):,} {name} colours are not numbers (the first of {name} {bad[0] + 1}): drawn black")
     return notes
 
 
-def _values(path: str, header: PlyHeader, data: bytes) -> Dict[str, Dict[str, Any]]:
+def values(path: str, header: PlyHeader, data: bytes) -> Dict[str, Dict[str, Any]]:
     """Every element's properties by name, ASCII or binary (``data``: the file's bytes)."""
     fmt, elements = header.format, header.elements
     data = data[header.size :]
