@@ -117,20 +117,26 @@ function createDraft(canvas, spec, blob) {
               normal: field(spec.draw_fields, "mesh.normal_matrix").offset / 4 };
 
   const wraps = { repeat: gl.REPEAT, clamp: gl.CLAMP_TO_EDGE, mirror: gl.MIRRORED_REPEAT };
+  // the attributes of vertex buffer `vb` (the core's layout) from `span`, one record a vertex
+  // or, with `divisor` 1, an instance
+  function attributes(vb, span, divisor) {
+    const b = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, b);
+    gl.bufferData(gl.ARRAY_BUFFER, bytes(span), gl.STATIC_DRAW);
+    for (const a of vb.attributes) {
+      gl.enableVertexAttribArray(a.location);
+      if (a.integer) gl.vertexAttribIPointer(a.location, a.components, gl.UNSIGNED_INT, vb.stride, a.offset);
+      else gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, vb.stride, a.offset);
+      gl.vertexAttribDivisor(a.location, divisor);
+    }
+  }
   // a vertex array of a mesh's buffers (its own or its coarse copy's: the same layouts)
   function vertexArray(m, own) {
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = { position: own.vertices, albedo: own.albedo };  // by the stage part that reads each
-    for (const vb of m.vertex_buffers) {
-      const b = gl.createBuffer();
-      gl.bindBuffer(gl.ARRAY_BUFFER, b);
-      gl.bufferData(gl.ARRAY_BUFFER, bytes(buffers[vb.buffer]), gl.STATIC_DRAW);
-      for (const a of vb.attributes) {
-        gl.enableVertexAttribArray(a.location);
-        gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, vb.stride, a.offset);
-      }
-    }
+    // by the stage part that reads each
+    const buffers = Object.assign({ position: own.vertices, albedo: own.albedo }, own.derived || {});
+    for (const vb of m.vertex_buffers) attributes(vb, buffers[vb.buffer], 0);
     if (own.indices) {
       const ib = gl.createBuffer();
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ib);
@@ -163,8 +169,19 @@ function createDraft(canvas, spec, blob) {
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wraps[t.wrap]);
     }
     const f32 = new Float32Array(draw.buffer);
-    const lengths = spec.draw_pixel_lengths.map((offset) => [offset / 4, f32[offset / 4]]);  // the dither's cell
-    return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, program: programs[m.program] };
+    const lengths = spec.draw_pixel_lengths.map((offset) => [offset / 4, f32[offset / 4]]);  // the dither's cell...
+    // the mesh-space lines (line instances, faces for smooth contours): a strip of 4 vertices
+    // per instance
+    const instanced = (set, layout) => {
+      if (!set) return null;
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      attributes(layout, set.instances, 1);
+      gl.bindVertexArray(null);
+      return { vao, count: set.count };
+    };
+    const lines = { lines: instanced(m.lines, spec.line_buffer), contours: instanced(m.contours, spec.contour_buffer) };
+    return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, lines, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();
   const coarseFaces = meshes.reduce((n, m) => n + m.coarse.count / 3, 0);
@@ -202,7 +219,7 @@ function createDraft(canvas, spec, blob) {
     free();
     size = [w, h];
     const color = texture(gl.SRGB8_ALPHA8, gl.RGBA, gl.UNSIGNED_BYTE, w, h);
-    const geometry = spec.geometry_clear ? texture(gl.RGBA32UI, gl.RGBA_INTEGER, gl.UNSIGNED_INT, w, h) : null;
+    const geometry = spec.geometry_format ? texture(gl[spec.geometry_format], null, null, w, h) : null;
     const edgeBits = spec.edge_bits !== null ? texture(gl.R8UI, gl.RED_INTEGER, gl.UNSIGNED_BYTE, w, h) : null;
     const depth = gl.createRenderbuffer();
     gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
@@ -312,6 +329,26 @@ function createDraft(canvas, spec, blob) {
       gl.activeTexture(gl.TEXTURE1);
       gl.bindTexture(gl.TEXTURE_2D, spec.edge_bits !== null ? targets.edgeBits : targets.geometry);
       gl.drawArrays(gl.TRIANGLES, 0, 3);
+      gl.disable(gl.BLEND);
+    }
+    // the mesh-space lines over the colour, hidden against the geometry target's depth: the
+    // lines, then the smooth contours
+    for (const set of ["lines", "contours"]) {
+      if (spec[set] === null) continue;
+      gl.bindFramebuffer(gl.FRAMEBUFFER, targets.ink);
+      gl.enable(gl.BLEND);
+      gl.blendFunc(gl[spec.ink_blend[0]], gl[spec.ink_blend[1]]);
+      gl.useProgram(programs[spec[set]]);
+      gl.activeTexture(gl.TEXTURE2);
+      gl.bindTexture(gl.TEXTURE_2D, targets.geometry);
+      for (const m of meshes) {
+        const drawn = m.lines[set];
+        if (!drawn) continue;
+        gl.bindBufferBase(gl.UNIFORM_BUFFER, 1, m.ubo);  // its draw block, as the shading wrote it
+        gl.bindVertexArray(drawn.vao);
+        gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, drawn.count);
+      }
+      gl.bindVertexArray(emptyVao);
       gl.disable(gl.BLEND);
     }
     if (!canvasSize || canvasSize[0] !== w || canvasSize[1] !== h) {
