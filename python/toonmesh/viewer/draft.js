@@ -117,17 +117,15 @@ function createDraft(canvas, spec, blob) {
               normal: field(spec.draw_fields, "mesh.normal_matrix").offset / 4 };
 
   const wraps = { repeat: gl.REPEAT, clamp: gl.CLAMP_TO_EDGE, mirror: gl.MIRRORED_REPEAT };
-  // the attributes of vertex buffer `vb` (the core's layout) from `span`, one record a vertex
-  // or, with `divisor` 1, an instance
-  function attributes(vb, span, divisor) {
+  // the attributes of vertex buffer `vb` (the core's layout) from `data`, one record a vertex
+  function attributes(vb, data) {
     const b = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, b);
-    gl.bufferData(gl.ARRAY_BUFFER, bytes(span), gl.STATIC_DRAW);
+    gl.bufferData(gl.ARRAY_BUFFER, data, gl.STATIC_DRAW);
     for (const a of vb.attributes) {
       gl.enableVertexAttribArray(a.location);
       if (a.integer) gl.vertexAttribIPointer(a.location, a.components, gl.UNSIGNED_INT, vb.stride, a.offset);
       else gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, vb.stride, a.offset);
-      gl.vertexAttribDivisor(a.location, divisor);
     }
   }
   // a vertex array of a mesh's buffers (its own or its coarse copy's: the same layouts)
@@ -136,7 +134,7 @@ function createDraft(canvas, spec, blob) {
     gl.bindVertexArray(vao);
     // by the stage part that reads each
     const buffers = Object.assign({ position: own.vertices, albedo: own.albedo }, own.derived || {});
-    for (const vb of m.vertex_buffers) attributes(vb, buffers[vb.buffer], 0);
+    for (const vb of m.vertex_buffers) attributes(vb, bytes(buffers[vb.buffer]));
     if (own.indices) {
       const ib = gl.createBuffer();
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ib);
@@ -170,17 +168,30 @@ function createDraft(canvas, spec, blob) {
     }
     const f32 = new Float32Array(draw.buffer);
     const lengths = spec.draw_pixel_lengths.map((offset) => [offset / 4, f32[offset / 4]]);  // the dither's cell...
-    // the mesh-space lines (line instances, faces for smooth contours): a strip of 4 vertices
-    // per instance
-    const instanced = (set, layout) => {
+    // the mesh-space lines (line records, faces for smooth contours): each record a strip of 4
+    // vertices, given to all 4 (the vertex stages take the corner from the vertex index's low
+    // bits) and drawn as two triangles, not as instances: a browser drawing on the CPU pays for
+    // every instance as for a draw
+    const strips = (set, layout) => {
       if (!set) return null;
+      const n = set.count, s = layout.stride, records = bytes(set.instances);
+      const data = new Uint8Array(n * 4 * s), index = new Uint32Array(n * 6);
+      for (let i = 0; i < n; i++) {
+        const r = records.subarray(i * s, (i + 1) * s);
+        for (let c = 0; c < 4; c++) data.set(r, (4 * i + c) * s);
+        const k = 6 * i, v = 4 * i;
+        index[k] = v; index[k + 1] = v + 1; index[k + 2] = v + 2;
+        index[k + 3] = v + 2; index[k + 4] = v + 1; index[k + 5] = v + 3;
+      }
       const vao = gl.createVertexArray();
       gl.bindVertexArray(vao);
-      attributes(layout, set.instances, 1);
+      attributes(layout, data);
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gl.createBuffer());
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, index, gl.STATIC_DRAW);
       gl.bindVertexArray(null);
-      return { vao, count: set.count };
+      return { vao, count: 6 * n };
     };
-    const lines = { lines: instanced(m.lines, spec.line_buffer), contours: instanced(m.contours, spec.contour_buffer) };
+    const lines = { lines: strips(m.lines, spec.line_buffer), contours: strips(m.contours, spec.contour_buffer) };
     return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, lines, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();
@@ -346,7 +357,7 @@ function createDraft(canvas, spec, blob) {
         if (!drawn) continue;
         gl.bindBufferBase(gl.UNIFORM_BUFFER, 1, m.ubo);  // its draw block, as the shading wrote it
         gl.bindVertexArray(drawn.vao);
-        gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, drawn.count);
+        gl.drawElements(gl.TRIANGLES, drawn.count, gl.UNSIGNED_INT, 0);
       }
       gl.bindVertexArray(emptyVao);
       gl.disable(gl.BLEND);

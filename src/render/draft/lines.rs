@@ -1,12 +1,12 @@
-//! The drafts' mesh-space lines: each mesh's lines as instance buffers the page draws with the
-//! exact frame's strips, colours and hidden-line rule (`lines.wgsl` around the outlines'
-//! `line_vertex` and `fs_color`). The view-independent lines (boundaries, creases, non-manifold
-//! edges: the exact frame's `MeshLines::statics`) are drawn in every view; the silhouettes are
-//! decided per view in the vertex stages, by the exact frame's rule for the mesh
-//! (`ContourRule`): face edges between a face toward the eye and one not, from the edges with
-//! both faces' normals (`drawn` is that rule on the CPU, `edges::silhouette`'s), or smooth
-//! contours through the faces of the mesh split at its drawn creases, with the face-edge rule on
-//! those creases (`contour_piece` on the CPU, `edges::zero_set`'s piece of a face).
+//! The drafts' mesh-space lines: each mesh's lines as buffers of one record per strip, which the
+//! page draws with the exact frame's strips, colours and hidden-line rule (`lines.wgsl` around the
+//! outlines' `line_vertex` and `fs_color`). The view-independent lines (boundaries, creases,
+//! non-manifold edges: the exact frame's `MeshLines::statics`) are drawn in every view; the
+//! silhouettes are decided per view in the vertex stages, by the exact frame's rule for the mesh
+//! (`ContourRule`): face edges between a face toward the eye and one not, from the edges with both
+//! faces' normals (`drawn` is that rule on the CPU, `edges::silhouette`'s), or smooth contours
+//! through the faces of the mesh split at its drawn creases, with the face-edge rule on those
+//! creases (`contour_piece` on the CPU, `edges::zero_set`'s piece of a face).
 
 use crate::edges::outlines::LineKind;
 use crate::edges::silhouette::{face_side, View};
@@ -38,7 +38,8 @@ pub struct ViewEdge {
     pub n1: [f32; 3],
 }
 
-/// The instance buffer's layout (the `LineInstance` attributes, then the two normals).
+/// The lines' buffer layout (the `LineInstance` attributes, then the two normals): one record
+/// per line, which the page gives to the 4 vertices of its strip.
 pub fn layout() -> wgpu::VertexBufferLayout<'static> {
     const ATTRS: [wgpu::VertexAttribute; 6] = [
         wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 0, shader_location: 0 },
@@ -50,7 +51,7 @@ pub fn layout() -> wgpu::VertexBufferLayout<'static> {
     ];
     wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<ViewEdge>() as u64,
-        step_mode: wgpu::VertexStepMode::Instance,
+        step_mode: wgpu::VertexStepMode::Vertex,
         attributes: &ATTRS,
     }
 }
@@ -78,14 +79,15 @@ pub struct FaceContour {
     pub n: [[f32; 3]; 3],
 }
 
-/// The face buffer's layout: the three positions, then the three normals.
+/// The faces' buffer layout (the three positions, then the three normals): one record per
+/// face, which the page gives to the 4 vertices of its strip.
 pub fn face_layout() -> wgpu::VertexBufferLayout<'static> {
     const ATTRS: [wgpu::VertexAttribute; 6] = wgpu::vertex_attr_array![
         0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Float32x3, 4 => Float32x3, 5 => Float32x3
     ];
     wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<FaceContour>() as u64,
-        step_mode: wgpu::VertexStepMode::Instance,
+        step_mode: wgpu::VertexStepMode::Vertex,
         attributes: &ATTRS,
     }
 }
@@ -114,7 +116,7 @@ pub fn contour_piece(f: &FaceContour, view: View) -> Option<[[f64; 3]; 2]> {
     (ends.len() == 2).then(|| [ends[0], ends[1]])
 }
 
-/// A mesh's lines for drafts: line instances, and faces for smooth contours.
+/// A mesh's lines for drafts: lines, and faces for smooth contours.
 #[derive(Debug, Default)]
 pub struct DraftMeshLines {
     pub edges: Vec<ViewEdge>,

@@ -5,7 +5,8 @@
 // a crease) is drawn in every view; another is a silhouette where one of its faces faces the
 // eye and the other does not (edges/silhouette.rs's rule: n . V < 0 faces it, V from the eye to
 // the face), and elsewhere collapses to a point outside the view. `lines::drawn` holds the
-// same rule on the CPU.
+// same rule on the CPU. The page gives each record to the 4 vertices of its strip (two
+// triangles), which take their corner from the vertex index's low bits.
 
 struct ViewEdgeIn {
     @location(0) a: vec3<f32>,
@@ -24,17 +25,20 @@ fn faces_eye(n: vec3<f32>, p: vec3<f32>) -> bool {
 
 @vertex
 fn vs_view_edge(@builtin(vertex_index) vi: u32, e: ViewEdgeIn) -> LineOut {
-    var l: LineIn;
-    l.a = e.a;
-    l.kind = e.kind;
-    l.b = e.b;
-    l.scale = e.scale;
-    var o = line_vertex(vi, l);
     let p = (draw.mesh.model_view * vec4<f32>(e.a, 1.0)).xyz;
     let m = mat3x3<f32>(draw.mesh.normal_matrix[0].xyz, draw.mesh.normal_matrix[1].xyz, draw.mesh.normal_matrix[2].xyz);
     let always = all(e.n0 == vec3<f32>(0.0)) && all(e.n1 == vec3<f32>(0.0));
-    let drawn = always || faces_eye(m * e.n0, p) != faces_eye(m * e.n1, p);
-    o.clip = select(vec4<f32>(-2.0, -2.0, 0.0, 1.0), o.clip, drawn);
+    var o: LineOut;
+    o.clip = vec4<f32>(-2.0, -2.0, 0.0, 1.0);
+    // a branch, not a select: most edges are not drawn, and the strip's work is then skipped
+    if (always || faces_eye(m * e.n0, p) != faces_eye(m * e.n1, p)) {
+        var l: LineIn;
+        l.a = e.a;
+        l.kind = e.kind;
+        l.b = e.b;
+        l.scale = e.scale;
+        o = line_vertex(vi & 3u, l);  // the page gives each record to 4 vertices
+    }
     return o;
 }
 
@@ -78,12 +82,15 @@ fn vs_face_contour(@builtin(vertex_index) vi: u32, f: FaceIn) -> LineOut {
             n += 1u;
         }
     }
-    var l: LineIn;
-    l.a = ends[0];
-    l.kind = SILHOUETTE;
-    l.b = ends[1];
-    l.scale = vec2<f32>(1.0);
-    var o = line_vertex(vi, l);
-    o.clip = select(vec4<f32>(-2.0, -2.0, 0.0, 1.0), o.clip, n == 2u);
+    var o: LineOut;
+    o.clip = vec4<f32>(-2.0, -2.0, 0.0, 1.0);
+    if (n == 2u) {
+        var l: LineIn;
+        l.a = ends[0];
+        l.kind = SILHOUETTE;
+        l.b = ends[1];
+        l.scale = vec2<f32>(1.0);
+        o = line_vertex(vi & 3u, l);  // the page gives each record to 4 vertices
+    }
     return o;
 }

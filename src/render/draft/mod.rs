@@ -92,7 +92,8 @@ pub struct Attribute {
 pub struct VertexBuffer {
     /// The stage part that reads it: "position" (positions and normals: the mesh's `vertices`),
     /// "albedo" (colour and texture coordinates), a part of `DraftMesh::derived` ("field": the
-    /// hatching's stripe values), or "lines" (`DraftLines`, one record per line instance).
+    /// hatching's stripe values), or "lines" and "contours" (`DraftLines`: one record per
+    /// strip).
     pub buffer: &'static str,
     pub stride: u64,
     pub attributes: Vec<Attribute>,
@@ -154,8 +155,8 @@ pub struct DraftMesh {
     pub contours: Option<DraftLines>,
 }
 
-/// Instances of a lines program: `lines::ViewEdge` or `lines::FaceContour` records, each a
-/// strip of 4 vertices.
+/// The records of a lines program: `lines::ViewEdge` or `lines::FaceContour`, each drawn as a
+/// strip of 4 vertices (two triangles) that all read it.
 #[derive(Clone, Debug, Serialize)]
 pub struct DraftLines {
     pub instances: Span,
