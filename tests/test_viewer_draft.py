@@ -159,6 +159,18 @@ def test_a_small_draft_keeps_its_ink_visible(browser, tmp_path):
     assert dark >= outline, (dark, outline)
 
 
+def test_a_small_draft_draws_the_smooth_contours_of_its_coarse_copy(browser, tmp_path):
+    V, F = bunny()
+    draft, _, _, view = _quarter_draft(browser, tmp_path, outlines="mesh")
+    h, w = draft.shape[:2]
+    exact = tm.render(V, F, outlines="mesh", camera=view, width=w, height=h).color
+    # the copy's contours where its surface is: the lines where the exact frame's are, none
+    # hidden by the copy's surface (its vertices are its clusters' means)
+    found, own = _ink_found(draft, exact), _ink_found(exact, draft)
+    assert _ink(exact).sum() > 100, _ink(exact).sum()
+    assert found >= 0.7 and own >= 0.7, (found, own)
+
+
 def test_a_small_drafts_dither_cells_keep_their_size_on_screen(browser, tmp_path):
     V, F = bunny()
     material = tm.Material.bands("#d0a070", dither=tm.Dither("bayer4", scale=4.0))

@@ -192,7 +192,9 @@ function createDraft(canvas, spec, blob) {
       return { vao, count: 6 * n };
     };
     const lines = { lines: strips(m.lines, spec.line_buffer), contours: strips(m.contours, spec.contour_buffer) };
-    return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, lines, program: programs[m.program] };
+    // the coarse copy's smooth contours, drawn with it
+    const coarseLines = { lines: lines.lines, contours: m.coarse && m.coarse.contours ? strips(m.coarse.contours, spec.contour_buffer) : lines.contours };
+    return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, lines, coarseLines, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();
   const coarseFaces = meshes.reduce((n, m) => n + m.coarse.count / 3, 0);
@@ -353,7 +355,7 @@ function createDraft(canvas, spec, blob) {
       gl.activeTexture(gl.TEXTURE2);
       gl.bindTexture(gl.TEXTURE_2D, targets.geometry);
       for (const m of meshes) {
-        const drawn = m.lines[set];
+        const drawn = (smaller ? m.coarseLines : m.lines)[set];
         if (!drawn) continue;
         gl.bindBufferBase(gl.UNIFORM_BUFFER, 1, m.ubo);  // its draw block, as the shading wrote it
         gl.bindVertexArray(drawn.vao);

@@ -14,7 +14,7 @@ use crate::error::Result;
 use crate::render::effects::outlines::lines as exact;
 use crate::render::effects::outlines::mesh_lines::MeshLines;
 use crate::render::effects::outlines::settings::{ContourRule, Outlines};
-use crate::render::gpu_mesh::NormalMode;
+use crate::render::gpu_mesh::{GpuMesh, NormalMode};
 use crate::render::mesh_record::MeshRecord;
 use crate::render::wgsl;
 
@@ -114,6 +114,30 @@ pub fn contour_piece(f: &FaceContour, view: View) -> Option<[[f64; 3]; 2]> {
         }
     }
     (ends.len() == 2).then(|| [ends[0], ends[1]])
+}
+
+/// The faces for smooth contours of a coarse copy (`lod`: its vertex buffer in the layout of
+/// `GpuMesh::vertex_layout`, its indices), with its normals made unit.
+pub fn coarse_faces(vertices: &[u8], indices: &[u32]) -> Vec<FaceContour> {
+    let layout = GpuMesh::vertex_layout();
+    let stride = layout.array_stride as usize;
+    let [position, normal] = [0, 1].map(|k| layout.attributes[k].offset as usize);
+    let vec3 = |at: usize| -> [f32; 3] { bytemuck::pod_read_unaligned(&vertices[at..at + 12]) };
+    let unit = |n: [f32; 3]| {
+        let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        if l > 0.0 {
+            n.map(|x| x / l)
+        } else {
+            n
+        }
+    };
+    indices
+        .chunks_exact(3)
+        .map(|f| FaceContour {
+            p: [0, 1, 2].map(|k| vec3(f[k] as usize * stride + position)),
+            n: [0, 1, 2].map(|k| unit(vec3(f[k] as usize * stride + normal))),
+        })
+        .collect()
 }
 
 /// A mesh's lines for drafts: lines, and faces for smooth contours.

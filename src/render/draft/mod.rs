@@ -119,6 +119,8 @@ pub struct DraftCoarse {
     pub albedo: Option<Span>,
     pub indices: Span,
     pub count: u32,
+    /// Its faces for smooth contours (`lines::coarse_faces`), where the mesh's are drawn.
+    pub contours: Option<DraftLines>,
 }
 
 /// The output pixels of the exact frame a face of the coarse copies stands for: a draft at a
@@ -349,6 +351,14 @@ fn gl_geometry_format(layout: GeometryLayout) -> &'static str {
     }
 }
 
+/// The lines' records in `blob` (None: none).
+fn line_records<T: bytemuck::Pod>(blob: &mut Blob, records: &[T]) -> Option<DraftLines> {
+    (!records.is_empty()).then(|| DraftLines {
+        instances: blob.push(bytemuck::cast_slice(records)),
+        count: records.len() as u32,
+    })
+}
+
 /// The coarse copy (`lod`) of a mesh as uploaded, with at most `most_faces` faces.
 fn coarse_copy(
     vertices: &[u8],
@@ -423,12 +433,6 @@ impl Renderer {
                     g.draw_count,
                     share,
                 )
-                .map(|c| DraftCoarse {
-                    vertices: blob.push(&c.vertices),
-                    albedo: c.albedo.as_deref().map(|a| blob.push(a)),
-                    count: c.indices.len() as u32,
-                    indices: blob.push(bytemuck::cast_slice(&c.indices)),
-                })
             } else {
                 None
             };
@@ -449,13 +453,23 @@ impl Renderer {
                 Some(o) => lines::mesh_lines(rec, o)?,
                 None => lines::DraftMeshLines::default(),
             };
-            let mut instances = |bytes: &[u8], count: usize| {
-                (count > 0).then(|| DraftLines { instances: blob.push(bytes), count: count as u32 })
-            };
-            let (contours, lines) = (
-                instances(bytemuck::cast_slice(&drawn.faces), drawn.faces.len()),
-                instances(bytemuck::cast_slice(&drawn.edges), drawn.edges.len()),
-            );
+            let contours = line_records(&mut blob, &drawn.faces);
+            let lines = line_records(&mut blob, &drawn.edges);
+            let coarse = coarse.map(|c| {
+                // smooth contours of the copy: as many faces fewer to test, and the lines where
+                // its surface is
+                let contours = match contours {
+                    Some(_) => line_records(&mut blob, &lines::coarse_faces(&c.vertices, &c.indices)),
+                    None => None,
+                };
+                DraftCoarse {
+                    vertices: blob.push(&c.vertices),
+                    albedo: c.albedo.as_deref().map(|a| blob.push(a)),
+                    count: c.indices.len() as u32,
+                    indices: blob.push(bytemuck::cast_slice(&c.indices)),
+                    contours,
+                }
+            });
             let model = model_matrix(item, &g.placement);
             meshes.push(DraftMesh {
                 program,
