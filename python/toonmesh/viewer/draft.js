@@ -172,9 +172,8 @@ function createDraft(canvas, spec, blob) {
     // vertices, given to all 4 (the vertex stages take the corner from the vertex index's low
     // bits) and drawn as two triangles, not as instances: a browser drawing on the CPU pays for
     // every instance as for a draw
-    const strips = (set, layout) => {
-      if (!set) return null;
-      const n = set.count, s = layout.stride, records = bytes(set.instances);
+    const strips = (records, n, layout) => {
+      const s = layout.stride;
       const data = new Uint8Array(n * 4 * s), index = new Uint32Array(n * 6);
       for (let i = 0; i < n; i++) {
         const r = records.subarray(i * s, (i + 1) * s);
@@ -191,9 +190,29 @@ function createDraft(canvas, spec, blob) {
       gl.bindVertexArray(null);
       return { vao, count: 6 * n };
     };
-    const lines = { lines: strips(m.lines, spec.line_buffer), contours: strips(m.contours, spec.contour_buffer) };
+    // smooth contours: each face's record (its corners' positions and normals, where
+    // `contour_buffer` puts them) gathered from a mesh's vertices (in `contour_vertices`' layout)
+    const contourStrips = (vertices, faces, n) => {
+      const from = spec.contour_vertices, to = spec.contour_buffer;
+      const at = (layout, location) => layout.attributes.find((a) => a.location === location).offset / 4;
+      const [p, nrm] = [at(from, 0), at(from, 1)], slots = [0, 1, 2, 3, 4, 5].map((l) => at(to, l));
+      const v = new Float32Array(blob, vertices.offset, vertices.length / 4), f = new Uint32Array(blob, faces.offset, 3 * n);
+      const [vs, rs] = [from.stride / 4, to.stride / 4];
+      const records = new Float32Array(n * rs);
+      for (let i = 0; i < n; i++) for (let c = 0; c < 3; c++) {
+        const k = f[3 * i + c] * vs;
+        records.set(v.subarray(k + p, k + p + 3), i * rs + slots[c]);
+        records.set(v.subarray(k + nrm, k + nrm + 3), i * rs + slots[3 + c]);
+      }
+      return strips(new Uint8Array(records.buffer), n, to);
+    };
+    const lines = {
+      lines: m.lines ? strips(bytes(m.lines.instances), m.lines.count, spec.line_buffer) : null,
+      contours: m.contours ? contourStrips(m.contours.vertices, m.contours.faces, m.contours.count) : null,
+    };
     // the coarse copy's smooth contours, drawn with it
-    const coarseLines = { lines: lines.lines, contours: m.coarse && m.coarse.contours ? strips(m.coarse.contours, spec.contour_buffer) : lines.contours };
+    const coarseLines = { lines: lines.lines, contours: m.coarse && m.coarse.contours
+      ? contourStrips(m.coarse.vertices, m.coarse.indices, m.coarse.count / 3) : lines.contours };
     return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, lines, coarseLines, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();

@@ -12,9 +12,12 @@ use crate::edges::outlines::LineKind;
 use crate::edges::silhouette::{face_side, View};
 use crate::error::Result;
 use crate::render::effects::outlines::lines as exact;
-use crate::render::effects::outlines::mesh_lines::MeshLines;
+use std::sync::Arc;
+
+use crate::edges::contours::ContourMesh;
+use crate::render::effects::outlines::mesh_lines::{MeshLines, SplitContours};
 use crate::render::effects::outlines::settings::{ContourRule, Outlines};
-use crate::render::gpu_mesh::{GpuMesh, NormalMode};
+use crate::render::gpu_mesh::{NormalMode, Vertex};
 use crate::render::mesh_record::MeshRecord;
 use crate::render::wgsl;
 
@@ -92,13 +95,24 @@ pub fn face_layout() -> wgpu::VertexBufferLayout<'static> {
     }
 }
 
+/// `n` made unit (a zero normal stays zero), as `vs_face_contour` does: the normals of a coarse
+/// copy are means.
+fn unit(n: [f32; 3]) -> [f32; 3] {
+    let l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    if l2 > 0.0 {
+        n.map(|x| x / l2.sqrt())
+    } else {
+        n
+    }
+}
+
 /// The piece of smooth contour `vs_face_contour` draws in face `f` in `view` (the mesh's
-/// stored coordinates): where n . (eye - p) (orthographic: -n . d), interpolated linearly
-/// between the corners, is zero.
+/// stored coordinates): where n . (eye - p) (orthographic: -n . d), n the unit normal,
+/// interpolated linearly between the corners, is zero.
 pub fn contour_piece(f: &FaceContour, view: View) -> Option<[[f64; 3]; 2]> {
     let p = f.p.map(|q| q.map(f64::from));
     let g: [f64; 3] = std::array::from_fn(|i| {
-        let n = f.n[i].map(f64::from);
+        let n = unit(f.n[i]).map(f64::from);
         let v = match view {
             View::Eye(e) => [e[0] - p[i][0], e[1] - p[i][1], e[2] - p[i][2]],
             View::Direction(d) => [-d[0], -d[1], -d[2]],
@@ -116,35 +130,22 @@ pub fn contour_piece(f: &FaceContour, view: View) -> Option<[[f64; 3]; 2]> {
     (ends.len() == 2).then(|| [ends[0], ends[1]])
 }
 
-/// The faces for smooth contours of a coarse copy (`lod`: its vertex buffer in the layout of
-/// `GpuMesh::vertex_layout`, its indices), with its normals made unit.
-pub fn coarse_faces(vertices: &[u8], indices: &[u32]) -> Vec<FaceContour> {
-    let layout = GpuMesh::vertex_layout();
-    let stride = layout.array_stride as usize;
-    let [position, normal] = [0, 1].map(|k| layout.attributes[k].offset as usize);
-    let vec3 = |at: usize| -> [f32; 3] { bytemuck::pod_read_unaligned(&vertices[at..at + 12]) };
-    let unit = |n: [f32; 3]| {
-        let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-        if l > 0.0 {
-            n.map(|x| x / l)
-        } else {
-            n
-        }
-    };
-    indices
-        .chunks_exact(3)
-        .map(|f| FaceContour {
-            p: [0, 1, 2].map(|k| vec3(f[k] as usize * stride + position)),
-            n: [0, 1, 2].map(|k| unit(vec3(f[k] as usize * stride + normal))),
-        })
-        .collect()
-}
-
-/// A mesh's lines for drafts: lines, and faces for smooth contours.
-#[derive(Debug, Default)]
+/// A mesh's lines for drafts: lines, and the mesh smooth contours are traced on (the mesh
+/// split at its drawn creases).
+#[derive(Default)]
 pub struct DraftMeshLines {
     pub edges: Vec<ViewEdge>,
-    pub faces: Vec<FaceContour>,
+    pub contours: Option<Arc<SplitContours>>,
+}
+
+/// The bytes of `mesh`'s vertices in the layout of `GpuMesh::vertex_layout` (a position and a
+/// normal each), appended to `out`; the page gathers each face's `FaceContour` from them.
+pub fn contour_vertices(mesh: &ContourMesh, out: &mut Vec<u8>) {
+    out.reserve_exact(mesh.positions().len() * std::mem::size_of::<Vertex>());
+    for (p, n) in mesh.positions().iter().zip(mesh.normals()) {
+        let v = Vertex { position: p.map(|x| x as f32), normal: n.map(|x| x as f32) };
+        out.extend_from_slice(bytemuck::bytes_of(&v));
+    }
 }
 
 /// A mesh's lines for drafts under `outlines`: the view-independent lines of the kinds it
@@ -175,7 +176,7 @@ pub fn mesh_lines(rec: &MeshRecord, outlines: &Outlines) -> Result<DraftMeshLine
         .filter(|(_, k)| draws(**k))
         .map(|(e, k)| edge(e, *k, [0.0; 3], [0.0; 3]))
         .collect();
-    let mut faces = Vec::new();
+    let mut contours = None;
     if draws(LineKind::Silhouette) {
         let flat = rec.gpu.normals == NormalMode::Flat;
         let split = match outlines.contours.resolve(flat) {
@@ -193,20 +194,8 @@ pub fn mesh_lines(rec: &MeshRecord, outlines: &Outlines) -> Result<DraftMeshLine
                 .map(|(e, f)| edge(e, LineKind::Silhouette, normal(f[0]), normal(f[1]))),
         );
         if let Some(s) = split {
-            let m = &s.mesh;
-            let at = |v: u32| (m.positions()[v as usize], m.normals()[v as usize]);
-            faces = m
-                .faces()
-                .iter()
-                .map(|f| {
-                    let corners = f.map(at);
-                    FaceContour {
-                        p: corners.map(|(p, _)| p.map(|x| x as f32)),
-                        n: corners.map(|(_, n)| n.map(|x| x as f32)),
-                    }
-                })
-                .collect();
+            contours = Some(s);
         }
     }
-    Ok(DraftMeshLines { edges, faces })
+    Ok(DraftMeshLines { edges, contours })
 }

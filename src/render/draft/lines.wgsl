@@ -70,7 +70,9 @@ fn vs_face_contour(@builtin(vertex_index) vi: u32, f: FaceIn) -> LineOut {
     let m = mat3x3<f32>(draw.mesh.normal_matrix[0].xyz, draw.mesh.normal_matrix[1].xyz, draw.mesh.normal_matrix[2].xyz);
     var g: array<f32, 3>;
     for (var i = 0u; i < 3u; i++) {
-        g[i] = toward_eye(m * ns[i], (draw.mesh.model_view * vec4<f32>(ps[i], 1.0)).xyz);
+        // unit in the mesh's coordinates, as the exact frame's (a coarse copy's are means)
+        let n = ns[i] * inverseSqrt(select(1.0, dot(ns[i], ns[i]), dot(ns[i], ns[i]) > 0.0));
+        g[i] = toward_eye(m * n, (draw.mesh.model_view * vec4<f32>(ps[i], 1.0)).xyz);
     }
     var ends: array<vec3<f32>, 2>;
     var n = 0u;

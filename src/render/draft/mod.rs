@@ -119,8 +119,9 @@ pub struct DraftCoarse {
     pub albedo: Option<Span>,
     pub indices: Span,
     pub count: u32,
-    /// Its faces for smooth contours (`lines::coarse_faces`), where the mesh's are drawn.
-    pub contours: Option<DraftLines>,
+    /// Whether its smooth contours are drawn (where the mesh's are): its own vertices and faces,
+    /// as `DraftContours`.
+    pub contours: bool,
 }
 
 /// The output pixels of the exact frame a face of the coarse copies stands for: a draft at a
@@ -151,10 +152,19 @@ pub struct DraftMesh {
     /// the mesh is small enough as it is, or its stages read derived data, which the copy has
     /// not).
     pub coarse: Option<DraftCoarse>,
-    /// Its mesh-space lines (`lines`), drawn with the `Draft::lines` program, and its faces
-    /// for smooth contours, drawn with `Draft::contours`.
+    /// Its mesh-space lines (`lines`), drawn with the `Draft::lines` program, and the mesh its
+    /// smooth contours are traced on, drawn with `Draft::contours`.
     pub lines: Option<DraftLines>,
-    pub contours: Option<DraftLines>,
+    pub contours: Option<DraftContours>,
+}
+
+/// A mesh for smooth contours (`lines::ContourFaces`): its vertices (`Draft::contour_vertices`)
+/// and its u32 faces, of which the page gathers each face's `lines::FaceContour` record.
+#[derive(Clone, Debug, Serialize)]
+pub struct DraftContours {
+    pub vertices: Span,
+    pub faces: Span,
+    pub count: u32,
 }
 
 /// The records of a lines program: `lines::ViewEdge` or `lines::FaceContour`, each drawn as a
@@ -209,10 +219,11 @@ pub struct Draft {
     /// silhouettes decided per view: `lines`), and the layout of each mesh's `DraftLines`.
     pub lines: Option<usize>,
     pub line_buffer: Option<VertexBuffer>,
-    /// The smooth contours' program (`vs_face_contour` with the lines' `fs_color`), and the
-    /// layout of each mesh's faces for it.
+    /// The smooth contours' program (`vs_face_contour` with the lines' `fs_color`), the layout
+    /// of its face records, and that of the vertices they are gathered from (the mesh's own).
     pub contours: Option<usize>,
     pub contour_buffer: Option<VertexBuffer>,
+    pub contour_vertices: Option<VertexBuffer>,
     pub meshes: Vec<DraftMesh>,
     pub frame: Span,
     pub frame_fields: Vec<Field>,
@@ -313,8 +324,22 @@ impl Blob {
             self.0.push(0);
         }
         let span = Span { offset: self.0.len(), length: bytes.len() };
+        // grown to what it holds, not doubled: a freed block of twice the size would raise the
+        // allocator's threshold for giving memory back (glibc's dynamic mmap threshold), and a
+        // kernel making drafts would keep more of its memory
+        self.0.reserve_exact(bytes.len());
         self.0.extend_from_slice(bytes);
         span
+    }
+
+    /// Appends what `write` appends (4-byte aligned), without a copy in between.
+    fn push_with(&mut self, write: impl FnOnce(&mut Vec<u8>)) -> Span {
+        while self.0.len() % 4 != 0 {
+            self.0.push(0);
+        }
+        let offset = self.0.len();
+        write(&mut self.0);
+        Span { offset, length: self.0.len() - offset }
     }
 }
 
@@ -453,22 +478,20 @@ impl Renderer {
                 Some(o) => lines::mesh_lines(rec, o)?,
                 None => lines::DraftMeshLines::default(),
             };
-            let contours = line_records(&mut blob, &drawn.faces);
+            let contours = drawn.contours.as_ref().map(|c| DraftContours {
+                vertices: blob.push_with(|out| lines::contour_vertices(&c.mesh, out)),
+                faces: blob.push(bytemuck::cast_slice(c.mesh.faces())),
+                count: c.mesh.faces().len() as u32,
+            });
             let lines = line_records(&mut blob, &drawn.edges);
-            let coarse = coarse.map(|c| {
+            let coarse = coarse.map(|c| DraftCoarse {
+                vertices: blob.push(&c.vertices),
+                albedo: c.albedo.as_deref().map(|a| blob.push(a)),
+                count: c.indices.len() as u32,
+                indices: blob.push(bytemuck::cast_slice(&c.indices)),
                 // smooth contours of the copy: as many faces fewer to test, and the lines where
                 // its surface is
-                let contours = match contours {
-                    Some(_) => line_records(&mut blob, &lines::coarse_faces(&c.vertices, &c.indices)),
-                    None => None,
-                };
-                DraftCoarse {
-                    vertices: blob.push(&c.vertices),
-                    albedo: c.albedo.as_deref().map(|a| blob.push(a)),
-                    count: c.indices.len() as u32,
-                    indices: blob.push(bytemuck::cast_slice(&c.indices)),
-                    contours,
-                }
+                contours: contours.is_some(),
             });
             let model = model_matrix(item, &g.placement);
             meshes.push(DraftMesh {
@@ -577,6 +600,7 @@ impl Renderer {
             line_buffer: lines_program.map(|_| vertex_buffer("lines", &lines::layout())),
             contours: contours_program,
             contour_buffer: contours_program.map(|_| vertex_buffer("contours", &lines::face_layout())),
+            contour_vertices: contours_program.map(|_| vertex_buffer("position", &GpuMesh::vertex_layout())),
             meshes,
             frame: frame_span,
             frame_fields,

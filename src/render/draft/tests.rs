@@ -107,7 +107,8 @@ fn the_drafts_smooth_contours_are_the_exact_frames() {
         }
         assert!(segments > 20, "{segments}");
         assert_eq!(pieces, segments);
-        assert!((drafted - traced).abs() < 1e-9 * traced, "{drafted} {traced}");
+        // up to the float32 normals made unit again
+        assert!((drafted - traced).abs() < 1e-6 * traced, "{drafted} {traced}");
     }
 }
 
