@@ -6,8 +6,8 @@ slowed down by 0.2 s, so that pointer moves come faster than frames), runs it an
 context menu is suppressed, the wheel does nothing before the view has focus. It drags across
 the frame and checks that the picture changed, that the kernel sent new frames (the frame
 numbers come from the kernel), that the frames drawn while dragging were drafts drawn in the
-browser by WebGL2 (every frame from the kernel is full size; the tooltip names the mesh-space
-lines as left to the exact frame), that the view was marked as a draft then exact, and busy meanwhile;
+browser by WebGL2 (every frame from the kernel is full size; the tooltip says that the drafts
+draw everything the exact frame does, the mesh-space lines included), that the view was marked as a draft then exact, and busy meanwhile;
 that the browser sent a view only once the last was answered (the kernel counts the views that
 came early: none) and merged the moves meanwhile (fewer views than moves), losing none (the
 kernel's camera is the whole drag's). Then it turns the wheel and checks that the bunny grew,
@@ -407,14 +407,14 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
     assert changed.mean() > 0.02, f"only {changed.mean():.1%} of the pixels changed"
     assert last_frame >= first_frame + 1, (first_frame, last_frame)  # the exact frame after the drafts
     # the drafts were drawn in the browser by WebGL2 (no kernel drafts: every kernel frame is full
-    # size), saying what they leave to the exact frame (the mesh-space lines)
+    # size), drawing everything the exact frame does (the mesh-space lines included)
     assert draft_mode == "webgl" and drawn_here, (draft_mode, drawn_here, title)
     # mid-drag the screen showed a draft (smaller than the view) with the model and its ink as
     # the exact frame of the same view shows them
     mid_shares = screen_shares(mid_drag, held)
     assert mid_marks[0] == "0" and float(mid_marks[1]) < 1, mid_marks
     assert mid_shares[0] >= 0.8 and mid_shares[1] >= 0.5, mid_shares
-    assert "WebGL2" in title and "left to the exact frame: mesh-space lines" in title, title
+    assert "WebGL2" in title and "the draft draws everything the exact frame does" in title, title
     assert sizes and set(sizes) == {480}, sizes
     assert "0" in exact_marks and exact_marks[-1] == "1", exact_marks  # a draft shown, then the exact frame
     assert "1" in busy_marks and busy_marks[-1] == "0", busy_marks

@@ -9,7 +9,10 @@ least 95% of the covered pixels within 8 levels, for the plain bunny, a coloured
 textured one and two bunnies (each its own draw and material), with Vulkan and GL kernels (shading without ink: the draft's ink is image-space
 only). The draft's image-space ink is drawn (dark pixels where the exact frame has its edges),
 the page shows the draft's pixels as they are (a screenshot of the canvas), and what the draft
-leaves to the exact frame is named in the page's tooltip. A draft at a quarter of the size draws
+leaves to the exact frame is named in the page's tooltip. The draft draws the mesh-space lines
+and the hatching as the exact frame does: with ``outlines="mesh"``, ``"both"`` and a hatched
+material, at least 95% of the covered pixels within 8 levels and at least 70% of the exact
+frame's ink within a pixel of the draft's. A draft at a quarter of the size draws
 the core's coarse copy of the mesh (a tenth of its faces) and keeps the picture: within 8
 levels of the exact frame at that size, up to a pixel, on at least 93% of the covered pixels.
 Screenshots of the page show the model and its ink during a drag (the pointer held) and after
@@ -158,6 +161,18 @@ def test_a_small_draft_keeps_its_ink_visible(browser, tmp_path):
     assert dark >= outline, (dark, outline)
 
 
+def test_a_small_draft_draws_the_smooth_contours_of_its_coarse_copy(browser, tmp_path):
+    V, F = bunny()
+    draft, _, _, view = _quarter_draft(browser, tmp_path, outlines="mesh")
+    h, w = draft.shape[:2]
+    exact = tm.render(V, F, outlines="mesh", camera=view, width=w, height=h).color
+    # the copy's contours where its surface is: the lines where the exact frame's are, none
+    # hidden by the copy's surface (its vertices are its clusters' means)
+    found, own = _ink_found(draft, exact), _ink_found(exact, draft)
+    assert _ink(exact).sum() > 100, _ink(exact).sum()
+    assert found >= 0.7 and own >= 0.7, (found, own)
+
+
 def test_a_small_drafts_dither_cells_keep_their_size_on_screen(browser, tmp_path):
     V, F = bunny()
     material = tm.Material.bands("#d0a070", dither=tm.Dither("bayer4", scale=4.0))
@@ -207,7 +222,8 @@ def test_the_page_draws_orbits_and_names_what_the_draft_leaves_out(browser, tmp_
     root = page.locator(".toonmesh-viewer")
     assert root.get_attribute("data-exact") == "0"
     title = root.get_attribute("title")
-    assert "left to the exact frame: mesh-space lines, multisampling" in title, title
+    # the lines and the image-space ink are drawn, the multisampling left out
+    assert title.endswith("left to the exact frame: multisampling"), title
     first = _draft(page, camera)
     assert first[..., :3].min() < 150 and first[..., :3].max() > 200, "the canvas is blank"
     # a synthetic drag: more frames, another picture
@@ -279,6 +295,55 @@ def test_the_page_draws_again_once_a_lost_webgl_context_is_restored(browser, tmp
     assert shares[0] >= 0.95 and shares[1] >= 0.9, shares  # the renderer made again: the view as before
 
 
+def _ink(img: np.ndarray) -> np.ndarray:
+    """The dark pixels: ink (lines, hatching strokes), the shading's bands all being lighter."""
+    return img[..., :3].max(-1) < 100
+
+
+def _ink_found(draft: np.ndarray, exact: np.ndarray, reach: int = 1) -> float:
+    """The share of the exact frame's ink within ``reach`` pixels of the draft's ink."""
+    d = np.pad(_ink(draft), reach)
+    h, w = draft.shape[:2]
+    steps = range(-reach, reach + 1)
+    near = np.any([d[reach + y:reach + y + h, reach + x:reach + x + w] for y in steps for x in steps], axis=0)
+    e = _ink(exact)
+    return float((e & near).sum() / max(e.sum(), 1))
+
+
+INKED = {
+    "mesh lines": {"outlines": "mesh"},
+    "face edges": {"outlines": tm.Outlines("mesh", contours="faces")},  # the face-edge rule
+    "hatched": {"material": tm.Material.hatching("#d08050")},
+    "both": {"outlines": "both"},
+}
+
+
+@pytest.mark.parametrize("kind", list(INKED))
+def test_a_draft_draws_the_lines_and_the_hatching_as_the_exact_frame_does(browser, tmp_path, kind):
+    options = INKED[kind]
+    V, F = bunny()
+    v = tm.Viewer(V, F, width=SIZE[0], height=SIZE[1], **options)
+    try:
+        v.orbit(70, -25)
+        v.to_html(tmp_path / "page.html")
+        camera = v._camera_state()
+        exact = tm.render(V, F, camera=v.camera, width=SIZE[0], height=SIZE[1], **options).color
+    finally:
+        v.close()
+    page = _open(browser, tmp_path / "page.html")
+    draft = _draft(page, camera)
+    title = page.locator(".toonmesh-viewer").get_attribute("title")
+    page.close()
+    assert "the draft draws everything the exact frame does" in title, title
+    share, found = _agreement(draft, exact), _ink_found(draft, exact)
+    print(f"{kind}: {share:.1%} of the covered pixels within 8 levels, {found:.1%} of the ink found")
+    assert _ink(exact).sum() > 1000, _ink(exact).sum()  # ink to find
+    assert share >= 0.95, f"{share:.1%} of the covered pixels agree within 8 levels"
+    assert found >= 0.70, f"{found:.1%} of the exact frame's ink within a pixel of the draft's"
+    # and the draft draws no ink of its own where the exact frame has none
+    assert _ink_found(exact, draft) >= 0.70
+
+
 def test_to_html_refuses_a_path_that_is_not_one():
     V, F = bunny()
     v = tm.Viewer(V, F, width=64, height=64)
@@ -292,7 +357,8 @@ def test_to_html_refuses_a_path_that_is_not_one():
 
 
 @pytest.mark.parametrize("options, left", [
-    ({"material": tm.Material.hatching("#d08050")}, "hatching"),
+    ({"material": tm.Material.hatching("#d08050")}, None),
+    ({"material": tm.Material.hatching("#d08050", mode="triplanar")}, None),
     ({"lights": [tm.Light.directional((-1, -1, -1), shadows=True)]}, "shadows"),
     ({"material": tm.Material.bands("#d08050", rim=tm.Rim(), dither="bayer4")}, None),
     ({"supersample": 2}, "supersampling"),
@@ -302,7 +368,7 @@ def test_effects_compile_in_the_browser_and_those_it_cannot_draw_are_named(brows
     title = page.locator(".toonmesh-viewer").get_attribute("title")
     draft = _draft(page, camera)
     page.close()
-    if left is None:  # a rim light and dithering: per-pixel effects the draft draws as the exact frame does
+    if left is None:  # per-pixel effects the draft draws as the exact frame does
         assert "the draft draws everything" in title, title
         assert _agreement(draft, exact) >= 0.95
     else:

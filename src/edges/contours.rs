@@ -121,6 +121,19 @@ impl ContourMesh {
         })
     }
 
+    /// Its vertices' positions and normals, and its faces.
+    pub fn positions(&self) -> &[[f64; 3]] {
+        &self.positions
+    }
+
+    pub fn normals(&self) -> &[[f64; 3]] {
+        &self.normals
+    }
+
+    pub fn faces(&self) -> &[[u32; 3]] {
+        &self.clusters.faces
+    }
+
     /// Smooth contours of one view.
     pub fn smooth(&self, view: View) -> Polylines {
         smooth_contours(&self.positions, &self.clusters, &self.normals, view)

@@ -127,6 +127,12 @@ impl EdgeIndex {
         e.into_iter().flat_map(move |e| self.table.uses(e))
     }
 
+    /// The edges with exactly two faces that both have normals, and those faces (the edges
+    /// `silhouette` tests against its faces, outside the non-manifold ones).
+    pub fn manifold(&self) -> (&[[u32; 2]], &[[u32; 2]]) {
+        (&self.manifold_edges, &self.manifold_faces)
+    }
+
     /// Indices of faces without a normal.
     pub fn degenerate_faces(&self) -> Vec<u32> {
         (0..self.normals.len() as u32).filter(|&f| self.normals[f as usize] == [0.0; 3]).collect()

@@ -74,7 +74,8 @@ pub fn derived_buffer(dev: &Device, rec: &MeshRecord, part: &'static Part) -> Re
     let buffer = Arc::new(dev.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some(part.name),
         contents: &bytes,
-        usage: wgpu::BufferUsages::VERTEX,
+        // COPY_SRC: drafts read it back (`render::draft`)
+        usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_SRC,
     }));
     buffers.insert(part.name, buffer.clone());
     Ok(buffer)

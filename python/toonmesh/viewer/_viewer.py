@@ -355,9 +355,10 @@ class Viewer:
     are sent as JPEG).
 
     While the pointer moves, the browser draws the drafts in WebGL2 from toonmesh's own shaders:
-    the bands, tones, colours and texture, dithering, rim light and image-space ink; it leaves
-    mesh-space lines, hatching, shadows, paper, multisampling and supersampling to the exact
-    frame that follows from the kernel, and the view's tooltip says which.
+    the bands, tones, colours and texture, dithering, rim light, hatching, image-space ink and
+    mesh-space lines (silhouettes along face edges); it leaves smooth and suggestive contours,
+    shadows, paper, multisampling and supersampling to the exact frame that follows from the
+    kernel, and the view's tooltip says which.
 
     ``frame`` is the last frame shown, (H, W, 4) uint8; ``render_count`` counts the renders;
     :meth:`snapshot` renders the current view at full quality (any size, any outputs);
@@ -893,8 +894,9 @@ class Viewer:
         """Writes a standalone HTML page to ``path`` that orbits the scene from the current view,
         drawn in the browser by WebGL2 with toonmesh's own shaders (translated to GLSL ES 3.00 by
         the core; the draft the viewer shows while the pointer moves: the toon shading, the
-        mesh's colours and texture, image-space ink; mesh-space lines, hatching, shadows, paper
-        and supersampling are left out, and the page's tooltip says which). Everything is
+        mesh's colours and texture, hatching, image-space ink and mesh-space lines; smooth
+        contours, shadows, paper and supersampling are left out, and the page's tooltip says
+        which). Everything is
         inlined (the script, the shaders, the mesh as base64): the page needs no kernel and no
         network. Drag to orbit, shift-drag to pan, wheel to zoom, double-click for the first
         view. The page's root element has the ``toonmesh-viewer`` class and counts the frames

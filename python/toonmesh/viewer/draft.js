@@ -117,20 +117,24 @@ function createDraft(canvas, spec, blob) {
               normal: field(spec.draw_fields, "mesh.normal_matrix").offset / 4 };
 
   const wraps = { repeat: gl.REPEAT, clamp: gl.CLAMP_TO_EDGE, mirror: gl.MIRRORED_REPEAT };
+  // the attributes of vertex buffer `vb` (the core's layout) from `data`, one record a vertex
+  function attributes(vb, data) {
+    const b = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, b);
+    gl.bufferData(gl.ARRAY_BUFFER, data, gl.STATIC_DRAW);
+    for (const a of vb.attributes) {
+      gl.enableVertexAttribArray(a.location);
+      if (a.integer) gl.vertexAttribIPointer(a.location, a.components, gl.UNSIGNED_INT, vb.stride, a.offset);
+      else gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, vb.stride, a.offset);
+    }
+  }
   // a vertex array of a mesh's buffers (its own or its coarse copy's: the same layouts)
   function vertexArray(m, own) {
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = { position: own.vertices, albedo: own.albedo };  // by the stage part that reads each
-    for (const vb of m.vertex_buffers) {
-      const b = gl.createBuffer();
-      gl.bindBuffer(gl.ARRAY_BUFFER, b);
-      gl.bufferData(gl.ARRAY_BUFFER, bytes(buffers[vb.buffer]), gl.STATIC_DRAW);
-      for (const a of vb.attributes) {
-        gl.enableVertexAttribArray(a.location);
-        gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, vb.stride, a.offset);
-      }
-    }
+    // by the stage part that reads each
+    const buffers = Object.assign({ position: own.vertices, albedo: own.albedo }, own.derived || {});
+    for (const vb of m.vertex_buffers) attributes(vb, bytes(buffers[vb.buffer]));
     if (own.indices) {
       const ib = gl.createBuffer();
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ib);
@@ -163,8 +167,53 @@ function createDraft(canvas, spec, blob) {
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wraps[t.wrap]);
     }
     const f32 = new Float32Array(draw.buffer);
-    const lengths = spec.draw_pixel_lengths.map((offset) => [offset / 4, f32[offset / 4]]);  // the dither's cell
-    return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, program: programs[m.program] };
+    const lengths = spec.draw_pixel_lengths.map((offset) => [offset / 4, f32[offset / 4]]);  // the dither's cell...
+    // the mesh-space lines (line records, faces for smooth contours): each record a strip of 4
+    // vertices, given to all 4 (the vertex stages take the corner from the vertex index's low
+    // bits) and drawn as two triangles, not as instances: a browser drawing on the CPU pays for
+    // every instance as for a draw
+    const strips = (records, n, layout) => {
+      const s = layout.stride;
+      const data = new Uint8Array(n * 4 * s), index = new Uint32Array(n * 6);
+      for (let i = 0; i < n; i++) {
+        const r = records.subarray(i * s, (i + 1) * s);
+        for (let c = 0; c < 4; c++) data.set(r, (4 * i + c) * s);
+        const k = 6 * i, v = 4 * i;
+        index[k] = v; index[k + 1] = v + 1; index[k + 2] = v + 2;
+        index[k + 3] = v + 2; index[k + 4] = v + 1; index[k + 5] = v + 3;
+      }
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      attributes(layout, data);
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gl.createBuffer());
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, index, gl.STATIC_DRAW);
+      gl.bindVertexArray(null);
+      return { vao, count: 6 * n };
+    };
+    // smooth contours: each face's record (its corners' positions and normals, where
+    // `contour_buffer` puts them) gathered from a mesh's vertices (in `contour_vertices`' layout)
+    const contourStrips = (vertices, faces, n) => {
+      const from = spec.contour_vertices, to = spec.contour_buffer;
+      const at = (layout, location) => layout.attributes.find((a) => a.location === location).offset / 4;
+      const [p, nrm] = [at(from, 0), at(from, 1)], slots = [0, 1, 2, 3, 4, 5].map((l) => at(to, l));
+      const v = new Float32Array(blob, vertices.offset, vertices.length / 4), f = new Uint32Array(blob, faces.offset, 3 * n);
+      const [vs, rs] = [from.stride / 4, to.stride / 4];
+      const records = new Float32Array(n * rs);
+      for (let i = 0; i < n; i++) for (let c = 0; c < 3; c++) {
+        const k = f[3 * i + c] * vs;
+        records.set(v.subarray(k + p, k + p + 3), i * rs + slots[c]);
+        records.set(v.subarray(k + nrm, k + nrm + 3), i * rs + slots[3 + c]);
+      }
+      return strips(new Uint8Array(records.buffer), n, to);
+    };
+    const lines = {
+      lines: m.lines ? strips(bytes(m.lines.instances), m.lines.count, spec.line_buffer) : null,
+      contours: m.contours ? contourStrips(m.contours.vertices, m.contours.faces, m.contours.count) : null,
+    };
+    // the coarse copy's smooth contours, drawn with it
+    const coarseLines = { lines: lines.lines, contours: m.coarse && m.coarse.contours
+      ? contourStrips(m.coarse.vertices, m.coarse.indices, m.coarse.count / 3) : lines.contours };
+    return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, lines, coarseLines, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();
   const coarseFaces = meshes.reduce((n, m) => n + m.coarse.count / 3, 0);
@@ -205,7 +254,7 @@ function createDraft(canvas, spec, blob) {
     free();
     size = [w, h];
     const color = texture(gl.SRGB8_ALPHA8, gl.RGBA, gl.UNSIGNED_BYTE, w, h);
-    const geometry = spec.geometry_clear ? texture(gl.RGBA32UI, gl.RGBA_INTEGER, gl.UNSIGNED_INT, w, h) : null;
+    const geometry = spec.geometry_format ? texture(gl[spec.geometry_format], null, null, w, h) : null;
     const edgeBits = spec.edge_bits !== null ? texture(gl.R8UI, gl.RED_INTEGER, gl.UNSIGNED_BYTE, w, h) : null;
     const depth = gl.createRenderbuffer();
     gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
@@ -315,6 +364,26 @@ function createDraft(canvas, spec, blob) {
       gl.activeTexture(gl.TEXTURE1);
       gl.bindTexture(gl.TEXTURE_2D, spec.edge_bits !== null ? targets.edgeBits : targets.geometry);
       gl.drawArrays(gl.TRIANGLES, 0, 3);
+      gl.disable(gl.BLEND);
+    }
+    // the mesh-space lines over the colour, hidden against the geometry target's depth: the
+    // lines, then the smooth contours
+    for (const set of ["lines", "contours"]) {
+      if (spec[set] === null) continue;
+      gl.bindFramebuffer(gl.FRAMEBUFFER, targets.ink);
+      gl.enable(gl.BLEND);
+      gl.blendFunc(gl[spec.ink_blend[0]], gl[spec.ink_blend[1]]);
+      gl.useProgram(programs[spec[set]]);
+      gl.activeTexture(gl.TEXTURE2);
+      gl.bindTexture(gl.TEXTURE_2D, targets.geometry);
+      for (const m of meshes) {
+        const drawn = (smaller ? m.coarseLines : m.lines)[set];
+        if (!drawn) continue;
+        gl.bindBufferBase(gl.UNIFORM_BUFFER, 1, m.ubo);  // its draw block, as the shading wrote it
+        gl.bindVertexArray(drawn.vao);
+        gl.drawElements(gl.TRIANGLES, drawn.count, gl.UNSIGNED_INT, 0);
+      }
+      gl.bindVertexArray(emptyVao);
       gl.disable(gl.BLEND);
     }
     if (!canvasSize || canvasSize[0] !== w || canvasSize[1] !== h) {

@@ -14,22 +14,27 @@
 //! the camera's matrices from its eye, target and up.
 
 pub mod glsl;
+pub mod lines;
 pub mod lod;
+
+use std::collections::BTreeMap;
 
 use glam::DMat4;
 use serde::Serialize;
 
+use crate::edges::outlines::LineKind;
 use crate::error::{Error, Result};
 use crate::render::block::BlockLayout;
+use crate::render::derived_vertices::derived_buffer;
 use crate::render::effects::frame::{frame_bytes, frame_members};
 use crate::render::effects::outlines::ink::INK_OVER;
 use crate::render::effects::outlines::settings::ImageRule;
 use crate::render::effects::outlines::settings::{DEFAULT_WIDTH, INK_KINDS};
-use crate::render::effects::outlines::{edge_bits, edges};
+use crate::render::effects::outlines::{edge_bits, edges, EFFECT as OUTLINES};
 use crate::render::gpu_albedo;
 use crate::render::gpu_mesh::GpuMesh;
 use crate::render::graph::build::nearest_wins;
-use crate::render::graph::effect::FrameInputs;
+use crate::render::graph::effect::{FrameEffect, FrameInputs};
 use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::graph::target::GeometryLayout;
 use crate::render::graph::{geometry_clear, mesh_pass_wgsl, module_wgsl};
@@ -38,7 +43,6 @@ use crate::render::plan::plan;
 use crate::render::renderer::{background_linear, Renderer};
 use crate::render::scene::checked::CheckedScene;
 use crate::render::scene::light::Space;
-use crate::render::scene::SceneItem;
 use crate::render::shader::preamble;
 use crate::render::stage_part::{Part, VertexData};
 use crate::render::uniforms::{draw_bytes, draw_members, lighting_block, model_matrix, LightSlot, Members};
@@ -46,12 +50,12 @@ use crate::render::uniforms::{draw_bytes, draw_members, lighting_block, model_ma
 use glsl::GlslProgram;
 
 /// The passes of the exact frame a draft draws too (or that give nothing to see).
-const DRAWN: &[&str] = &["shade", "edge_bits", "edges", "gbuffer", "clear_outline"];
+const DRAWN: &[&str] = &["shade", "edge_bits", "edges", "silhouettes", "lines", "gbuffer", "clear_outline"];
 
 /// What a step of the exact frame that a draft leaves out draws, in the words a tooltip uses.
 fn described(step: &str) -> &str {
     match step {
-        "silhouettes" | "lines" | "visible_lines" => "mesh-space lines",
+        "visible_lines" => "mesh-space lines",
         "shadow_map" | "shadow" => "shadows",
         "downsample" => "supersampling",
         other => other,
@@ -73,19 +77,23 @@ pub struct Span {
     pub length: usize,
 }
 
-/// A vertex attribute: its location, its float count, its byte offset in its buffer.
+/// A vertex attribute: its location, its component count (4-byte floats, or unsigned integers
+/// where `integer`), its byte offset in its buffer.
 #[derive(Clone, Debug, Serialize)]
 pub struct Attribute {
     pub location: u32,
     pub components: u32,
     pub offset: u64,
+    pub integer: bool,
 }
 
 /// A vertex buffer a program reads: which of the mesh's buffers, its stride, its attributes.
 #[derive(Clone, Debug, Serialize)]
 pub struct VertexBuffer {
-    /// The stage part that reads it: "position" (positions and normals: the mesh's `vertices`)
-    /// or "albedo" (colour and texture coordinates).
+    /// The stage part that reads it: "position" (positions and normals: the mesh's `vertices`),
+    /// "albedo" (colour and texture coordinates), a part of `DraftMesh::derived` ("field": the
+    /// hatching's stripe values), or "lines" and "contours" (`DraftLines`: one record per
+    /// strip).
     pub buffer: &'static str,
     pub stride: u64,
     pub attributes: Vec<Attribute>,
@@ -111,6 +119,9 @@ pub struct DraftCoarse {
     pub albedo: Option<Span>,
     pub indices: Span,
     pub count: u32,
+    /// Whether its smooth contours are drawn (where the mesh's are): its own vertices and faces,
+    /// as `DraftContours`.
+    pub contours: bool,
 }
 
 /// The output pixels of the exact frame a face of the coarse copies stands for: a draft at a
@@ -134,9 +145,34 @@ pub struct DraftMesh {
     /// times this.
     pub model: [f64; 16],
     pub texture: Option<DraftTexture>,
+    /// The vertex data its stages derive from it (the hatching field's stripe values), by the
+    /// stage part that reads each, per vertex of `vertices`.
+    pub derived: BTreeMap<&'static str, Span>,
     /// Its coarse copy, drawn instead while a draft is drawn smaller than the exact frame (None:
-    /// the mesh is small enough as it is).
+    /// the mesh is small enough as it is, or its stages read derived data, which the copy has
+    /// not).
     pub coarse: Option<DraftCoarse>,
+    /// Its mesh-space lines (`lines`), drawn with the `Draft::lines` program, and the mesh its
+    /// smooth contours are traced on, drawn with `Draft::contours`.
+    pub lines: Option<DraftLines>,
+    pub contours: Option<DraftContours>,
+}
+
+/// A mesh for smooth contours (`lines::ContourFaces`): its vertices (`Draft::contour_vertices`)
+/// and its u32 faces, of which the page gathers each face's `lines::FaceContour` record.
+#[derive(Clone, Debug, Serialize)]
+pub struct DraftContours {
+    pub vertices: Span,
+    pub faces: Span,
+    pub count: u32,
+}
+
+/// The records of a lines program: `lines::ViewEdge` or `lines::FaceContour`, each drawn as a
+/// strip of 4 vertices (two triangles) that all read it.
+#[derive(Clone, Debug, Serialize)]
+pub struct DraftLines {
+    pub instances: Span,
+    pub count: u32,
 }
 
 /// A light's slot as the view turns it: `world` lights turn with the view (in the lighting
@@ -179,6 +215,15 @@ pub struct Draft {
     /// paper's the edges read the geometry target directly (no `edge_bits`).
     pub edge_bits: Option<usize>,
     pub edges: Option<usize>,
+    /// The mesh-space lines' program in `programs` (the exact frame's `lines` pass, its
+    /// silhouettes decided per view: `lines`), and the layout of each mesh's `DraftLines`.
+    pub lines: Option<usize>,
+    pub line_buffer: Option<VertexBuffer>,
+    /// The smooth contours' program (`vs_face_contour` with the lines' `fs_color`), the layout
+    /// of its face records, and that of the vertices they are gathered from (the mesh's own).
+    pub contours: Option<usize>,
+    pub contour_buffer: Option<VertexBuffer>,
+    pub contour_vertices: Option<VertexBuffer>,
     pub meshes: Vec<DraftMesh>,
     pub frame: Span,
     pub frame_fields: Vec<Field>,
@@ -193,9 +238,11 @@ pub struct Draft {
     pub least_ink_width: f32,
     pub lights: Vec<DraftLight>,
     pub camera: DraftCamera,
-    /// The colour target's clear value (linear RGBA) and the geometry target's (u32 bits).
+    /// The colour target's clear value (linear RGBA) and the geometry target's (u32 bits), and
+    /// the geometry target's GL format (the shading pass writes it; the ink reads it).
     pub background: [f64; 4],
     pub geometry_clear: Option<[u32; 4]>,
+    pub geometry_format: Option<&'static str>,
     /// GL state the translated stages assume: the winding GL calls front (the y flip of
     /// `ADJUST_COORDINATE_SPACE` turns wgpu's counter-clockwise around) and the depth test.
     pub front_face: &'static str,
@@ -277,34 +324,64 @@ impl Blob {
             self.0.push(0);
         }
         let span = Span { offset: self.0.len(), length: bytes.len() };
+        // grown to what it holds, not doubled: a freed block of twice the size would raise the
+        // allocator's threshold for giving memory back (glibc's dynamic mmap threshold), and a
+        // kernel making drafts would keep more of its memory
+        self.0.reserve_exact(bytes.len());
         self.0.extend_from_slice(bytes);
         span
     }
+
+    /// Appends what `write` appends (4-byte aligned), without a copy in between.
+    fn push_with(&mut self, write: impl FnOnce(&mut Vec<u8>)) -> Span {
+        while self.0.len() % 4 != 0 {
+            self.0.push(0);
+        }
+        let offset = self.0.len();
+        write(&mut self.0);
+        Span { offset, length: self.0.len() - offset }
+    }
 }
 
-/// The item a draft draws: its material without the hatching (the field's strokes are left to
-/// the exact frame).
-fn drafted(item: &SceneItem) -> SceneItem {
-    let mut item = item.clone();
-    item.material.effects.hatching = None;
-    item
+/// The buffer `name` of `layout`, as the page reads it.
+fn vertex_buffer(name: &'static str, layout: &wgpu::VertexBufferLayout) -> VertexBuffer {
+    use wgpu::VertexFormat as V;
+    let attributes = layout
+        .attributes
+        .iter()
+        .map(|a| Attribute {
+            location: a.shader_location,
+            components: (a.format.size() / 4) as u32,
+            offset: a.offset,
+            integer: matches!(a.format, V::Uint32 | V::Uint32x2 | V::Uint32x3 | V::Uint32x4),
+        })
+        .collect();
+    VertexBuffer { buffer: name, stride: layout.array_stride, attributes }
 }
 
 fn vertex_buffers(stages: &MeshStages) -> Vec<VertexBuffer> {
-    let buffer = |(part, data): (&'static Part, &VertexData)| {
-        let layout = (data.layout)();
-        let attributes = layout
-            .attributes
-            .iter()
-            .map(|a| Attribute {
-                location: a.shader_location,
-                components: (a.format.size() / 4) as u32,
-                offset: a.offset,
-            })
-            .collect();
-        VertexBuffer { buffer: part.name, stride: layout.array_stride, attributes }
-    };
+    let buffer = |(part, data): (&'static Part, &VertexData)| vertex_buffer(part.name, &(data.layout)());
     stages.buffers().into_iter().map(buffer).collect()
+}
+
+/// The pixel lengths of a mesh's `Draw` (fields measured in output pixels), which a draft drawn
+/// smaller scales: the dither's cell, the hatching's spacing and stroke width.
+const DRAW_PIXEL_LENGTHS: &[&str] = &["dither.cell", "hatching.spacing", "hatching.width"];
+
+/// The geometry target's GL format.
+fn gl_geometry_format(layout: GeometryLayout) -> &'static str {
+    match layout.format() {
+        wgpu::TextureFormat::Rgba32Uint => "RGBA32UI",
+        _ => "R32UI",
+    }
+}
+
+/// The lines' records in `blob` (None: none).
+fn line_records<T: bytemuck::Pod>(blob: &mut Blob, records: &[T]) -> Option<DraftLines> {
+    (!records.is_empty()).then(|| DraftLines {
+        instances: blob.push(bytemuck::cast_slice(records)),
+        count: records.len() as u32,
+    })
 }
 
 /// The coarse copy (`lod`) of a mesh as uploaded, with at most `most_faces` faces.
@@ -332,7 +409,9 @@ impl Renderer {
         let (records, bounds, cam) = self.resolve(scene)?;
         let frame = &scene.frame;
         let image_edges = scene.scene.outlines.as_ref().filter(|o| o.draws_image_edges());
-        let geometry = image_edges.map(|_| GeometryLayout::NormalDepth);
+        let line_rules = scene.scene.outlines.as_ref().filter(|o| o.draws_mesh_lines());
+        // the exact frame's geometry target: what the ink passes read
+        let geometry = OUTLINES.geometry(scene);
         let mut blob = Blob::default();
         let mut programs: Vec<GlslProgram> = Vec::new();
         let mut keys: Vec<(MeshStages, Vec<(&'static str, f64)>)> = Vec::new();
@@ -341,7 +420,6 @@ impl Renderer {
         let faces: usize = records.iter().map(|r| r.gpu.draw_count as usize / 3).sum();
         let coarse_faces = (frame.width as usize * frame.height as usize) / PIXELS_PER_COARSE_FACE;
         for (item, rec) in scene.scene.items.iter().zip(&records) {
-            let item = drafted(item);
             let g = &rec.gpu;
             let shading = ShadingVariant::of(&item.material, g.albedo.as_ref());
             let stages = shading.stages(geometry);
@@ -366,7 +444,12 @@ impl Renderer {
                 Some(a) if stages.albedo => Some(read_buffer(self, &a.vertices)?),
                 _ => None,
             };
-            let coarse = if faces > coarse_faces.max(1) {
+            let mut derived = BTreeMap::new();
+            for part in shading.derived() {
+                let buffer = derived_buffer(self.context(), rec, part)?;
+                derived.insert(part.name, read_buffer(self, &buffer)?);
+            }
+            let coarse = if faces > coarse_faces.max(1) && derived.is_empty() {
                 let share = coarse_faces * (g.draw_count as usize / 3) / faces;
                 coarse_copy(
                     &vertex_bytes,
@@ -375,12 +458,6 @@ impl Renderer {
                     g.draw_count,
                     share,
                 )
-                .map(|c| DraftCoarse {
-                    vertices: blob.push(&c.vertices),
-                    albedo: c.albedo.as_deref().map(|a| blob.push(a)),
-                    count: c.indices.len() as u32,
-                    indices: blob.push(bytemuck::cast_slice(&c.indices)),
-                })
             } else {
                 None
             };
@@ -397,7 +474,26 @@ impl Renderer {
                         wrap: s.wrap.name(),
                     }
                 });
-            let model = model_matrix(&item, &g.placement);
+            let drawn = match line_rules {
+                Some(o) => lines::mesh_lines(rec, o)?,
+                None => lines::DraftMeshLines::default(),
+            };
+            let contours = drawn.contours.as_ref().map(|c| DraftContours {
+                vertices: blob.push_with(|out| lines::contour_vertices(&c.mesh, out)),
+                faces: blob.push(bytemuck::cast_slice(c.mesh.faces())),
+                count: c.mesh.faces().len() as u32,
+            });
+            let lines = line_records(&mut blob, &drawn.edges);
+            let coarse = coarse.map(|c| DraftCoarse {
+                vertices: blob.push(&c.vertices),
+                albedo: c.albedo.as_deref().map(|a| blob.push(a)),
+                count: c.indices.len() as u32,
+                indices: blob.push(bytemuck::cast_slice(&c.indices)),
+                // smooth contours of the copy: as many faces fewer to test, and the lines where
+                // its surface is
+                contours: contours.is_some(),
+            });
+            let model = model_matrix(item, &g.placement);
             meshes.push(DraftMesh {
                 program,
                 vertex_buffers: vertex_buffers(&stages),
@@ -405,10 +501,13 @@ impl Renderer {
                 albedo,
                 indices,
                 count: g.draw_count,
-                draw: blob.push(&draw_bytes(&item, &g.placement, &cam)),
+                draw: blob.push(&draw_bytes(item, &g.placement, &cam)),
                 model: cols(model),
                 texture,
+                derived: derived.into_iter().map(|(k, b)| (k, blob.push(&b))).collect(),
                 coarse,
+                lines,
+                contours,
             });
         }
         let (mut edge_bits_program, mut edges_program) = (None, None);
@@ -421,6 +520,19 @@ impl Renderer {
             let wgsl = module_wgsl(preamble(), edges::WGSL, None);
             programs.push(glsl::program("edges", &wgsl, "vs_fullscreen", "fs_color", &[])?);
             edges_program = Some(programs.len() - 1);
+        }
+        let (mut lines_program, mut contours_program) = (None, None);
+        if let (Some(_), Some(layout)) = (line_rules, geometry) {
+            let wgsl = module_wgsl(preamble(), &lines::module(), None);
+            let constants = [("DEPTH_COMPONENT", layout.depth_component() as f64)];
+            if meshes.iter().any(|m| m.lines.is_some()) {
+                programs.push(glsl::program("lines", &wgsl, "vs_view_edge", "fs_color", &constants)?);
+                lines_program = Some(programs.len() - 1);
+            }
+            if meshes.iter().any(|m| m.contours.is_some()) {
+                programs.push(glsl::program("contours", &wgsl, "vs_face_contour", "fs_color", &constants)?);
+                contours_program = Some(programs.len() - 1);
+            }
         }
         // the frame's bytes, the lights as an unturned view sees them (the page turns them)
         let mut bytes = frame_bytes(&FrameInputs { scene, cam: &cam, sphere: bounds.sphere });
@@ -463,8 +575,17 @@ impl Renderer {
                 leave(described(name));
             }
         }
-        if scene.scene.items.iter().any(|i| i.material.effects.hatching.is_some()) {
-            leave("hatching");
+        if let Some(o) = line_rules {
+            let draws = |k: LineKind| o.styles[k as usize].is_some();
+            if draws(LineKind::Suggestive) {
+                leave("suggestive contours");
+            }
+            if draws(LineKind::Material) && records.len() > 1 {
+                leave("borders between meshes");
+            }
+            if !o.stroke_width.is_constant() {
+                leave("taper and width by depth");
+            }
         }
         if frame.msaa > 1 {
             leave("multisampling");
@@ -475,6 +596,11 @@ impl Renderer {
             programs,
             edge_bits: edge_bits_program,
             edges: edges_program,
+            lines: lines_program,
+            line_buffer: lines_program.map(|_| vertex_buffer("lines", &lines::layout())),
+            contours: contours_program,
+            contour_buffer: contours_program.map(|_| vertex_buffer("contours", &lines::face_layout())),
+            contour_vertices: contours_program.map(|_| vertex_buffer("position", &GpuMesh::vertex_layout())),
             meshes,
             frame: frame_span,
             frame_fields,
@@ -482,7 +608,7 @@ impl Renderer {
             least_ink_width: DEFAULT_WIDTH,
             draw_pixel_lengths: draw_fields
                 .iter()
-                .filter(|f| f.name == "dither.cell")
+                .filter(|f| DRAW_PIXEL_LENGTHS.contains(&f.name.as_str()))
                 .map(|f| f.offset)
                 .collect(),
             draw_fields,
@@ -506,6 +632,7 @@ impl Renderer {
                 let c = geometry_clear(g);
                 [c.r, c.g, c.b, c.a].map(|x| x as u32)
             }),
+            geometry_format: geometry.map(gl_geometry_format),
             front_face: "CW",
             depth_compare: gl_compare(nearest_wins().and_then(|d| d.depth_compare)),
             ink_blend: [gl_factor(INK_OVER.color.src_factor), gl_factor(INK_OVER.color.dst_factor)],

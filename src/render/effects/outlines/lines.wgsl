@@ -41,6 +41,11 @@ fn to_pixels(v: vec3<f32>) -> vec2<f32> {
 
 @vertex
 fn vs_line(@builtin(vertex_index) vi: u32, l: LineIn) -> LineOut {
+    return line_vertex(vi, l);
+}
+
+// Corner `vi` of the strip around line `l` (shared with the drafts' lines, src/render/draft/).
+fn line_vertex(vi: u32, l: LineIn) -> LineOut {
     var o: LineOut;
     let kind = l.kind;
     o.kind = kind;

@@ -52,9 +52,9 @@ type SplitKey = (bool, u64, u64, u64);
 
 /// A mesh split at its drawn creases (smooth contours run between them) and those hard edges,
 /// sorted, with its non-manifold edges: where the face-edge rule draws the silhouette.
-struct SplitContours {
-    mesh: ContourMesh,
-    hard: Vec<[u32; 2]>,
+pub struct SplitContours {
+    pub mesh: ContourMesh,
+    pub hard: Vec<[u32; 2]>,
 }
 
 /// One view's lines of a mesh: edges with their kinds, and the lines traced through faces
@@ -141,6 +141,25 @@ impl MeshLines {
         Ok(s)
     }
 
+    /// The view-independent lines (boundaries, creases, non-manifold edges) under the crease
+    /// rule of `outlines`, found the first time and kept.
+    pub fn statics(&self, host: &HostMesh, outlines: &Outlines) -> Result<Arc<Outline>> {
+        let index = self.index(host, outlines.weld)?;
+        let (min_crease, max_turn) = (outlines.min_crease_length, outlines.max_crease_turn);
+        self.statics[outlines.weld as usize].at(outlines.crease_angle, min_crease, max_turn, || {
+            let mut fe = crate::parallel::install(|| index.feature_edges(outlines.crease_angle))?;
+            keep_drawn_creases(&mut fe, index.positions(), min_crease, max_turn);
+            Ok(fe)
+        })
+    }
+
+    /// What the smooth rule traces silhouettes on under `outlines` (`split`): the mesh split at
+    /// the creases drawn, and the hard edges, where the face-edge rule draws them.
+    pub fn split_contours(&self, host: &HostMesh, outlines: &Outlines) -> Result<Arc<SplitContours>> {
+        let statics = self.statics(host, outlines)?;
+        self.split(host, outlines, &statics)
+    }
+
     /// The lines of one view (`view` in the mesh's stored coordinates): silhouettes (face edges,
     /// or smooth contours between creases and face edges on them, as `outlines.contours` says
     /// for a mesh drawn with `flat` normals or not), then the cached view-independent lines, and
@@ -154,13 +173,7 @@ impl MeshLines {
     ) -> Result<MeshOutline> {
         let draws = |k: LineKind| outlines.styles[k as usize].is_some();
         let index = self.index(host, outlines.weld)?;
-        let (min_crease, max_turn) = (outlines.min_crease_length, outlines.max_crease_turn);
-        let statics =
-            self.statics[outlines.weld as usize].at(outlines.crease_angle, min_crease, max_turn, || {
-                let mut fe = crate::parallel::install(|| index.feature_edges(outlines.crease_angle))?;
-                keep_drawn_creases(&mut fe, index.positions(), min_crease, max_turn);
-                Ok(fe)
-            })?;
+        let statics = self.statics(host, outlines)?;
         let mut curves = Vec::new();
         let all = if !draws(LineKind::Silhouette) {
             (*statics).clone()
