@@ -6,6 +6,7 @@ from each axis; turntables."""
 
 from __future__ import annotations
 
+import ctypes
 import gc
 import threading
 import time
@@ -30,6 +31,13 @@ def mesh():
 
 
 def _rss_mb() -> float:
+    """The process's resident memory (MB), once the C allocator has handed back the free memory
+    it caches (glibc keeps freed blocks in per-thread arenas, the render threads' among them: a
+    count that moved by tens of MB from run to run with nothing kept alive)."""
+    try:
+        ctypes.CDLL("libc.so.6").malloc_trim(0)
+    except (OSError, AttributeError):  # not glibc: the count as it is
+        pass
     with open("/proc/self/status") as f:
         for line in f:
             if line.startswith("VmRSS:"):
