@@ -210,9 +210,9 @@ function createDraft(canvas, spec, blob) {
       lines: m.lines ? strips(bytes(m.lines.instances), m.lines.count, spec.line_buffer) : null,
       contours: m.contours ? contourStrips(m.contours.vertices, m.contours.faces, m.contours.count) : null,
     };
-    // the coarse copy's smooth contours, drawn with it
+    // the smooth contours drawn with the coarse copy (a coarser copy's)
     const coarseLines = { lines: lines.lines, contours: m.coarse && m.coarse.contours
-      ? contourStrips(m.coarse.vertices, m.coarse.indices, m.coarse.count / 3) : lines.contours };
+      ? contourStrips(m.coarse.contours.vertices, m.coarse.contours.faces, m.coarse.contours.count) : lines.contours };
     return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, lines, coarseLines, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();

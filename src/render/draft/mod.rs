@@ -119,14 +119,25 @@ pub struct DraftCoarse {
     pub albedo: Option<Span>,
     pub indices: Span,
     pub count: u32,
-    /// Whether its smooth contours are drawn (where the mesh's are): its own vertices and faces,
-    /// as `DraftContours`.
-    pub contours: bool,
+    /// The smooth contours drawn with it (where the mesh's are): those of a copy coarser still
+    /// (`CONTOUR_COARSENING`), its vertices in the layout of the mesh's own.
+    pub contours: Option<DraftContours>,
 }
 
+/// How many times fewer faces the copy whose smooth contours a smaller draft draws has than the
+/// coarse copy it shades: each contour face is a strip of four vertices whose stage traces the
+/// face's zero set, the costliest part of a small draft where the browser draws on the CPU
+/// (SwiftShader: a quarter-size 512x512 bunny with ink took 47 ms with the shaded copy's
+/// contours, 16 ms without them; 27 ms with a copy of a quarter of the faces, 18 ms without
+/// its contours), and a face per 64 pixels of the exact frame is still one per two pixels of a
+/// quarter-size draft's width.
+const CONTOUR_COARSENING: usize = 8;
+
 /// The output pixels of the exact frame a face of the coarse copies stands for: a draft at a
-/// quarter of its width and height (the page's least) has about two faces a pixel.
-const PIXELS_PER_COARSE_FACE: usize = 8;
+/// quarter of its width and height (the page's least) has about one and a third faces a pixel
+/// (at 8, two, the drafts that draw mesh lines kept 73% of a plain WebGL2 program's frame rate
+/// in the viewer's benchmark; at 12, 81-84%).
+const PIXELS_PER_COARSE_FACE: usize = 12;
 
 /// One mesh of the scene.
 #[derive(Clone, Debug, Serialize)]
@@ -449,8 +460,8 @@ impl Renderer {
                 let buffer = derived_buffer(self.context(), rec, part)?;
                 derived.insert(part.name, read_buffer(self, &buffer)?);
             }
+            let share = coarse_faces * (g.draw_count as usize / 3) / faces.max(1);
             let coarse = if faces > coarse_faces.max(1) && derived.is_empty() {
-                let share = coarse_faces * (g.draw_count as usize / 3) / faces;
                 coarse_copy(
                     &vertex_bytes,
                     index_bytes.as_deref(),
@@ -484,14 +495,28 @@ impl Renderer {
                 count: c.mesh.faces().len() as u32,
             });
             let lines = line_records(&mut blob, &drawn.edges);
+            // smooth contours of a coarser copy still: as many faces fewer to test, and the
+            // lines near where the shaded copy's surface is
+            let contour_copy = match (&coarse, &contours) {
+                (Some(_), Some(_)) => coarse_copy(
+                    &vertex_bytes,
+                    index_bytes.as_deref(),
+                    None,
+                    g.draw_count,
+                    (share / CONTOUR_COARSENING).max(1),
+                ),
+                _ => None,
+            };
             let coarse = coarse.map(|c| DraftCoarse {
                 vertices: blob.push(&c.vertices),
                 albedo: c.albedo.as_deref().map(|a| blob.push(a)),
                 count: c.indices.len() as u32,
                 indices: blob.push(bytemuck::cast_slice(&c.indices)),
-                // smooth contours of the copy: as many faces fewer to test, and the lines where
-                // its surface is
-                contours: contours.is_some(),
+                contours: contour_copy.map(|k| DraftContours {
+                    vertices: blob.push(&k.vertices),
+                    count: (k.indices.len() / 3) as u32,
+                    faces: blob.push(bytemuck::cast_slice(&k.indices)),
+                }),
             });
             let model = model_matrix(item, &g.placement);
             meshes.push(DraftMesh {
