@@ -92,8 +92,7 @@ def _rate(shown: List[float], start: float) -> float:
     return len(during) / DRAG_SECONDS
 
 
-_EXACT_AFTER = ("([i, n]) => { const r = document.querySelectorAll('.toonmesh-viewer')[i];"
-                " return +r.dataset.framesShown > n && r.dataset.exact === '1' && r.dataset.busy === '0'; }")
+_EXACT_AFTER = script("viewer_browser_exact_after.js")
 
 
 def _on_screen(page: Any, view: Any, target: str, index: int, x: float, y: float, still: Any) -> float:
