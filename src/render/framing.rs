@@ -154,7 +154,8 @@ pub fn flat_normal(
             let [lo, hi] = rec.gpu.bounding_box();
             let (o, scale) = (DVec3::from_array(rec.gpu.placement.origin), rec.gpu.placement.scale);
             (0..8).fold((0.0, DVec3::ZERO, DMat3::ZERO), |(k, s, ss), i| {
-                let p = (DVec3::select(glam::BVec3::new(i & 1 == 1, i & 2 == 2, i & 4 == 4), hi, lo) - o) / scale;
+                let p =
+                    (DVec3::select(glam::BVec3::new(i & 1 == 1, i & 2 == 2, i & 4 == 4), hi, lo) - o) / scale;
                 (k + 1.0, s + p, ss + DMat3::from_cols(p * p.x, p * p.y, p * p.z))
             })
         };
@@ -190,7 +191,8 @@ pub fn flat_normal(
 /// greatest eigenvalue's eigenvector), by power iteration; None where it is zero or not finite.
 fn greatest_spread(m: DMat3) -> Option<DVec3> {
     // from its longest column: never at right angles to the greatest eigenvector
-    let mut v = [m.x_axis, m.y_axis, m.z_axis].into_iter().max_by(|a, b| a.length().total_cmp(&b.length()))?;
+    let mut v =
+        [m.x_axis, m.y_axis, m.z_axis].into_iter().max_by(|a, b| a.length().total_cmp(&b.length()))?;
     for _ in 0..200 {
         let w = m * v;
         let len = w.length();

@@ -387,8 +387,14 @@ impl Renderer {
             let (items, center) = (&scene.scene.items, bounds.sphere.center);
             let support = scene_support(items, &records, center);
             // only a fitted camera given no direction looks for a flat scene's front
-            let flat = scene.scene.camera.fits_by_default().then(|| flat_normal(items, &records, center, &support));
-            scene.scene.camera.resolve_with(&bounds, &support, flat.flatten(), frame.width as f64 / frame.height as f64)?
+            let flat =
+                scene.scene.camera.fits_by_default().then(|| flat_normal(items, &records, center, &support));
+            scene.scene.camera.resolve_with(
+                &bounds,
+                &support,
+                flat.flatten(),
+                frame.width as f64 / frame.height as f64,
+            )?
         };
         Ok((records, bounds, cam))
     }

@@ -909,6 +909,7 @@ def gltf_colour_notes(path: str, doc: Dict[str, Any], data: bytes) -> List[str]:
 
 
 _INDEX_TYPES = {5121: "<u1", 5123: "<u2", 5125: "<u4"}
+_FLOAT_TYPES = {5126: "<f4"}
 
 
 def gltf_accessor(path: str, doc: Dict[str, Any], index: Any, buffers: Dict[int, Optional[bytes]]
@@ -916,12 +917,24 @@ def gltf_accessor(path: str, doc: Dict[str, Any], index: Any, buffers: Dict[int,
     """The (count, components) values of an accessor of unsigned integers (indices) or floats,
     or None (another kind, or not readable). ``buffers``: the buffers read so far, the file's
     own bytes as ``buffers[-1]``."""
+    return _accessor(path, doc, index, buffers, {**_INDEX_TYPES, **_FLOAT_TYPES})
+
+
+def _float_accessor(path: str, doc: Dict[str, Any], index: Any, buffers: Dict[int, Optional[bytes]]
+                    ) -> Optional[np.ndarray]:
+    """The (count, components) values of a float accessor, or None (not one, or not readable:
+    trimesh then says why)."""
+    return _accessor(path, doc, index, buffers, _FLOAT_TYPES)
+
+
+def _accessor(path: str, doc: Dict[str, Any], index: Any, buffers: Dict[int, Optional[bytes]],
+              types: Dict[int, str]) -> Optional[np.ndarray]:
+    """The (count, components) values of an accessor whose component type is one of ``types``
+    (glTF's component type -> NumPy dtype), or None (another, sparse, or not readable)."""
     try:
         accessor = doc["accessors"][index]
-        dtype = _INDEX_TYPES.get(accessor.get("componentType"))
-        if dtype is None:
-            return _float_accessor(path, doc, index, buffers)
-        if "bufferView" not in accessor or "sparse" in accessor:
+        dtype = types.get(accessor.get("componentType"))
+        if dtype is None or "bufferView" not in accessor or "sparse" in accessor:
             return None
         view = doc["bufferViews"][accessor["bufferView"]]
         b = int(view.get("buffer", 0))
@@ -935,29 +948,6 @@ def gltf_accessor(path: str, doc: Dict[str, Any], index: Any, buffers: Dict[int,
         if data is None:
             return None
         return np.ndarray((int(accessor["count"]), n), dtype, data, offset, (stride, size)).copy()
-    except (LookupError, TypeError, ValueError):
-        return None
-
-
-def _float_accessor(path: str, doc: Dict[str, Any], index: Any, buffers: Dict[int, Optional[bytes]]
-                    ) -> Optional[np.ndarray]:
-    """The (count, components) values of a float accessor, or None (not one, or not readable:
-    trimesh then says why)."""
-    try:
-        accessor = doc["accessors"][index]
-        if accessor.get("componentType") != 5126 or "bufferView" not in accessor or "sparse" in accessor:
-            return None
-        view = doc["bufferViews"][accessor["bufferView"]]
-        b = int(view.get("buffer", 0))
-        if b not in buffers:
-            buffers[b] = _gltf_buffer(path, doc, b, buffers)
-        data = buffers[b]
-        n = _COMPONENTS[accessor["type"]]
-        stride = int(view.get("byteStride", 0)) or 4 * n
-        offset = int(view.get("byteOffset", 0)) + int(accessor.get("byteOffset", 0))
-        if data is None:
-            return None
-        return np.ndarray((int(accessor["count"]), n), "<f4", data, offset, (stride, 4))
     except (LookupError, TypeError, ValueError):
         return None
 

@@ -386,10 +386,10 @@ fn facing(dir: DVec3, normal: DVec3, frame: Frame) -> DVec3 {
     if cos >= FLAT_MOST_OFF_NORMAL.to_radians().cos() {
         return dir;
     }
-    let along = dir - n * cos;
-    let along = if along.length() > 1e-9 { along.normalize() } else { frame.up - n * frame.up.dot(n) };
+    // at least 60 degrees off the normal here: `dir` has a part along the plate
+    let along = direction_of(dir - n * cos);
     let angle = Frame::three_quarter_off_front();
-    direction_of(n * angle.cos() + direction_of(along) * angle.sin())
+    direction_of(n * angle.cos() + along * angle.sin())
 }
 
 /// The eye that frames `scene` seen along -`dir` with `up` up, with `margin` room, and the
