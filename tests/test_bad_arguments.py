@@ -37,7 +37,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
-from toonmesh._described import described
+from toonmesh.arguments._described import described
 from toonmesh import edges as te
 from toonmesh import testing
 from toonmesh.data import load_obj

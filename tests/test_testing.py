@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
-from toonmesh import _drawings, _png
+from toonmesh.testing import _drawings, _png
 from toonmesh.data import bunny
 from toonmesh.testing import (
     IMAGE_LEVELS,

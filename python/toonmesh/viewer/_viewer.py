@@ -45,20 +45,20 @@ import numpy as np
 
 from toonmesh import _core
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
-from toonmesh._described import default
+from toonmesh.arguments._described import default
 from toonmesh.files._load import is_scene
-from toonmesh._render import (PlacedMesh, Renderer, _core_items, draw, draw_views, own_colours,
+from toonmesh.rendering._render import (PlacedMesh, Renderer, _core_items, draw, draw_views, own_colours,
                               scene_items, shared_renderer)
-from toonmesh._results import RenderResult
-from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
+from toonmesh.rendering._results import RenderResult
+from toonmesh.scene._scene import Mesh, MeshHandle, Normals, own_normals
 from toonmesh.viewer._layout import KEYWORDS as LAYOUT, Layout, checked
 from toonmesh.viewer._uploads import SharedUpload, shared_upload
-from toonmesh._video import DEFAULT_FPS, DEFAULT_SECONDS, check_fps, check_video_size, video_kind, video_writer
+from toonmesh.rendering._video import DEFAULT_FPS, DEFAULT_SECONDS, check_fps, check_video_size, video_kind, video_writer
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
 
-    from toonmesh._render import RenderKeywords
+    from toonmesh.rendering._render import RenderKeywords
 
 NOTEBOOK_EXTRA = "pip install 'toonmesh[notebook]'"
 
