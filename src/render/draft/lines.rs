@@ -12,10 +12,11 @@ use crate::edges::outlines::LineKind;
 use crate::edges::silhouette::{face_side, View};
 use crate::error::Result;
 use crate::render::effects::outlines::lines as exact;
+use std::mem::offset_of;
 use std::sync::Arc;
 
 use crate::edges::contours::ContourMesh;
-use crate::render::effects::outlines::mesh_lines::{MeshLines, SplitContours};
+use crate::render::effects::outlines::mesh_lines::{LineInstance, MeshLines, SplitContours};
 use crate::render::effects::outlines::settings::{ContourRule, Outlines};
 use crate::render::gpu_mesh::{NormalMode, Vertex};
 use crate::render::mesh_record::MeshRecord;
@@ -27,31 +28,40 @@ pub fn module() -> String {
     wgsl::constant_u32("SILHOUETTE", LineKind::Silhouette as u32) + exact::WGSL + include_str!("lines.wgsl")
 }
 
-/// One line of a draft: a `LineInstance` (its ends in the mesh's stored coordinates, its
-/// kind, its width factors) and the normals of the two faces on it (zero: drawn in every view).
+/// One line of a draft: the line as the exact frame's lines pass has it (its width factors 1:
+/// the draft draws constant widths) and the normals of the two faces on it (zero: drawn in every
+/// view).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct ViewEdge {
-    pub a: [f32; 3],
-    pub kind: u32,
-    pub b: [f32; 3],
-    pub pad: u32,
-    pub scale: [f32; 2],
+    pub line: LineInstance,
     pub n0: [f32; 3],
     pub n1: [f32; 3],
+}
+
+impl ViewEdge {
+    /// Edge `e` (indices into `positions`) as a line of `kind` between faces with normals `n0`
+    /// and `n1`.
+    pub fn new(positions: &[[f64; 3]], e: &[u32; 2], kind: LineKind, n0: [f32; 3], n1: [f32; 3]) -> Self {
+        let line = LineInstance::new(kind, positions[e[0] as usize], positions[e[1] as usize], [1.0; 2]);
+        ViewEdge { line, n0, n1 }
+    }
 }
 
 /// The lines' buffer layout (the `LineInstance` attributes, then the two normals): one record
 /// per line, which the page gives to the 4 vertices of its strip.
 pub fn layout() -> wgpu::VertexBufferLayout<'static> {
-    const ATTRS: [wgpu::VertexAttribute; 6] = [
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 0, shader_location: 0 },
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Uint32, offset: 12, shader_location: 1 },
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 16, shader_location: 2 },
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x2, offset: 32, shader_location: 3 },
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 40, shader_location: 4 },
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 52, shader_location: 5 },
-    ];
+    const fn normal(offset: usize, shader_location: u32) -> wgpu::VertexAttribute {
+        wgpu::VertexAttribute {
+            format: wgpu::VertexFormat::Float32x3,
+            offset: offset as u64,
+            shader_location,
+        }
+    }
+    const ATTRS: [wgpu::VertexAttribute; 6] = {
+        let [a, kind, b, scale] = LineInstance::ATTRIBUTES;
+        [a, kind, b, scale, normal(offset_of!(ViewEdge, n0), 4), normal(offset_of!(ViewEdge, n1), 5)]
+    };
     wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<ViewEdge>() as u64,
         step_mode: wgpu::VertexStepMode::Vertex,
@@ -65,7 +75,7 @@ pub fn drawn(e: &ViewEdge, view: View) -> bool {
     if e.n0 == [0.0; 3] && e.n1 == [0.0; 3] {
         return true;
     }
-    let a = e.a.map(f64::from);
+    let a = e.line.a.map(f64::from);
     let side = |n: [f32; 3]| {
         let n = n.map(f64::from);
         face_side(&n, n[0] * a[0] + n[1] * a[1] + n[2] * a[2], view)
@@ -159,16 +169,7 @@ pub fn mesh_lines(rec: &MeshRecord, outlines: &Outlines) -> Result<DraftMeshLine
     let statics = lines.statics(&rec.host, outlines)?;
     let draws = |k: LineKind| outlines.styles[k as usize].is_some();
     let positions = index.positions();
-    let point = |v: u32| positions[v as usize].map(|x| x as f32);
-    let edge = |e: &[u32; 2], kind: LineKind, n0, n1| ViewEdge {
-        a: point(e[0]),
-        kind: kind as u32,
-        b: point(e[1]),
-        pad: 0,
-        scale: [1.0; 2],
-        n0,
-        n1,
-    };
+    let edge = |e: &[u32; 2], kind, n0, n1| ViewEdge::new(positions, e, kind, n0, n1);
     let mut edges: Vec<ViewEdge> = statics
         .edges
         .iter()

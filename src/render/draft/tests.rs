@@ -117,20 +117,11 @@ fn candidates() -> (EdgeIndex, Vec<ViewEdge>) {
     let (v, f) = crate::mesh::shapes::icosphere(3, 0.1, 7).unwrap();
     let index = EdgeIndex::build(&v, &f, false).unwrap();
     let (edges, faces) = index.manifold();
-    let p = |k: u32| index.positions()[k as usize].map(|x| x as f32);
     let n = |k: u32| index.normals()[k as usize].map(|x| x as f32);
     let out = edges
         .iter()
         .zip(faces)
-        .map(|(e, f)| ViewEdge {
-            a: p(e[0]),
-            kind: LineKind::Silhouette as u32,
-            b: p(e[1]),
-            pad: 0,
-            scale: [1.0; 2],
-            n0: n(f[0]),
-            n1: n(f[1]),
-        })
+        .map(|(e, f)| ViewEdge::new(index.positions(), e, LineKind::Silhouette, n(f[0]), n(f[1])))
         .collect();
     (index, out)
 }

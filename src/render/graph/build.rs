@@ -1,11 +1,15 @@
 //! The two kinds of pipeline passes build: mesh draws (the camera's passes and the shadow map)
 //! and full-screen triangles (image passes), and the states they share.
 
+use std::sync::Arc;
+
+use crate::render::gpu_albedo::GpuAlbedo;
 use crate::render::pipelines::PipelineKey;
 
+use super::effect::ShadeHook;
 use super::mesh_stages::MeshStages;
 use super::target::DEPTH_FORMAT;
-use super::FrameCtx;
+use super::{DrawItem, FrameCtx};
 
 /// The depth test of every mesh draw (camera and shadow map): the nearest surface wins and is
 /// written.
@@ -90,17 +94,22 @@ pub fn mesh_pipeline(f: &FrameCtx<'_>, module: &wgpu::ShaderModule, d: MeshDraw<
     })
 }
 
-/// The pipeline of a depth pass's draw (one sample a pixel, no bind group but the frame's, the
-/// draw's and its stages' parts', no WGSL but its stages'): the geometry pass's and the shadow
-/// map's, cached under `label` with the stages, the cull mode and the constants; with its
-/// stages, for `FrameCtx::draw_meshes`.
+/// The pipeline of a depth pass's draw of `d` (one sample a pixel, no bind group but the
+/// frame's, the draw's and its stages' parts', no WGSL but its stages'): the geometry pass's and
+/// the shadow map's, cached under `label` with the stages, the cull mode and the constants; with
+/// its stages, for `FrameCtx::draw_meshes`. `stages(cut)` are the draw's stages; `cut`: the
+/// mesh's colour has an alpha cutoff (`DrawItem::cut_albedo`), so the draw reads its colour to
+/// drop the cut pixels.
 pub fn depth_pass_pipeline(
     f: &FrameCtx<'_>,
     label: &'static str,
-    stages: MeshStages,
-    constants: Vec<(&'static str, f64)>,
+    d: &DrawItem<'_>,
+    stages: impl FnOnce(bool) -> MeshStages,
     cull: Option<wgpu::Face>,
-) -> (std::sync::Arc<wgpu::RenderPipeline>, MeshStages) {
+) -> (Arc<wgpu::RenderPipeline>, MeshStages) {
+    let albedo = d.cut_albedo();
+    let stages = stages(albedo.is_some());
+    let constants = albedo.map_or(vec![], GpuAlbedo::constants);
     let key = PipelineKey::new(label, stages.bits() | cull_bits(cull) << 16).with(&constants);
     let pipeline = f.pipelines.get(key, || {
         let module = f.mesh_module(label, "", stages, None);
@@ -110,39 +119,44 @@ pub fn depth_pass_pipeline(
     (pipeline, stages)
 }
 
-/// A pipeline that covers the output with one triangle (`vs_fullscreen` in common.wgsl).
+/// The pipeline `label` that covers the output with one triangle (`vs_fullscreen` in
+/// common.wgsl) and runs entry `entry` of `wgsl` (with `hook`'s WGSL): built on first use, and
+/// cached under `label` and `variant`, which must tell apart whatever changes its groups,
+/// targets and constants.
 pub fn fullscreen_pipeline(
     f: &FrameCtx<'_>,
-    label: &'static str,
-    module: &wgpu::ShaderModule,
-    entry: &str,
+    (label, variant): (&'static str, u64),
+    (wgsl, entry, hook): (&'static str, &str, Option<&dyn ShadeHook>),
     groups: &[&wgpu::BindGroupLayout],
     targets: &[Option<wgpu::ColorTargetState>],
     constants: &[(&str, f64)],
-) -> wgpu::RenderPipeline {
-    let device = &f.dev.device;
-    let layout = f.pipelines.layout(device, label, groups);
-    let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(label),
-        layout: Some(&layout),
-        vertex: wgpu::VertexState {
-            module,
-            entry_point: Some("vs_fullscreen"),
-            compilation_options: options.clone(),
-            buffers: &[],
-        },
-        primitive: Default::default(),
-        depth_stencil: None,
-        multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState {
-            module,
-            entry_point: Some(entry),
-            compilation_options: options,
-            targets,
-        }),
-        multiview_mask: None,
-        cache: None,
+) -> Arc<wgpu::RenderPipeline> {
+    f.pipelines.get(PipelineKey::new(label, variant), || {
+        let module = &f.module(label, wgsl, hook);
+        let device = &f.dev.device;
+        let layout = f.pipelines.layout(device, label, groups);
+        let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(label),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module,
+                entry_point: Some("vs_fullscreen"),
+                compilation_options: options.clone(),
+                buffers: &[],
+            },
+            primitive: Default::default(),
+            depth_stencil: None,
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module,
+                entry_point: Some(entry),
+                compilation_options: options,
+                targets,
+            }),
+            multiview_mask: None,
+            cache: None,
+        })
     })
 }
 

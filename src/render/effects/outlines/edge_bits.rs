@@ -6,7 +6,7 @@ use crate::error::Result;
 use crate::render::graph::build::fullscreen_pipeline;
 use crate::render::graph::target::{Access, Target, Use, EDGE_BITS_FORMAT};
 use crate::render::graph::{cleared, FrameCtx, Pass, Recorder};
-use crate::render::pipelines::{target, PipelineKey};
+use crate::render::pipelines::target;
 
 pub const WGSL: &str = include_str!("edge_bits.wgsl");
 
@@ -24,18 +24,14 @@ impl Pass for EdgeBits {
 
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layouts = &f.pipelines.layouts;
-        let pipeline = f.pipelines.get(PipelineKey::new("edge_bits", 0), || {
-            let module = f.module("edge_bits", WGSL, None);
-            fullscreen_pipeline(
-                f,
-                "edge_bits",
-                &module,
-                "fs_edge_bits",
-                &[&layouts.frame, &layouts.uint_texture],
-                &[target(EDGE_BITS_FORMAT)],
-                &[],
-            )
-        });
+        let pipeline = fullscreen_pipeline(
+            f,
+            ("edge_bits", 0),
+            (WGSL, "fs_edge_bits", None),
+            &[&layouts.frame, &layouts.uint_texture],
+            &[target(EDGE_BITS_FORMAT)],
+            &[],
+        );
         let geometry = f.res.geometry_group(f);
         let attachments = [cleared(f.res.view(Target::EdgeBits), wgpu::Color::TRANSPARENT)];
         rec.fullscreen("edge_bits", &attachments, &pipeline, &[&f.res.uniforms.frame_group, &geometry]);

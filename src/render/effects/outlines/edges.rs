@@ -8,7 +8,6 @@ use crate::error::Result;
 use crate::render::graph::build::fullscreen_pipeline;
 use crate::render::graph::target::{Access, Target, Use};
 use crate::render::graph::{FrameCtx, Pass, Recorder};
-use crate::render::pipelines::PipelineKey;
 
 use super::ink::Ink;
 use super::settings::ImageRule;
@@ -46,18 +45,14 @@ impl Pass for Edges {
 
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layouts = &f.pipelines.layouts;
-        let pipeline = f.pipelines.get(PipelineKey::new("edges", self.ink.bits()), || {
-            let module = f.module("edges", WGSL, None);
-            fullscreen_pipeline(
-                f,
-                "edges",
-                &module,
-                self.ink.entry(),
-                &[&layouts.frame, &layouts.uint_texture],
-                &self.ink.targets(),
-                &[],
-            )
-        });
+        let pipeline = fullscreen_pipeline(
+            f,
+            ("edges", self.ink.bits()),
+            (WGSL, self.ink.entry(), None),
+            &[&layouts.frame, &layouts.uint_texture],
+            &self.ink.targets(),
+            &[],
+        );
         let source = match self.rule {
             ImageRule::Paper => f.res.geometry_group(f),
             ImageRule::Discontinuity => f.res.edge_bits_group(f),

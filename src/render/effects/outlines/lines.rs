@@ -23,17 +23,10 @@ pub struct Lines {
 }
 
 fn instance_layout() -> wgpu::VertexBufferLayout<'static> {
-    const ATTRS: [wgpu::VertexAttribute; 4] = [
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 0, shader_location: 0 },
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Uint32, offset: 12, shader_location: 1 },
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 16, shader_location: 2 },
-        // after the padding word: the width factors at both ends
-        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x2, offset: 32, shader_location: 3 },
-    ];
     wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<LineInstance>() as u64,
         step_mode: wgpu::VertexStepMode::Instance,
-        attributes: &ATTRS,
+        attributes: &LineInstance::ATTRIBUTES,
     }
 }
 

@@ -230,6 +230,21 @@ pub struct LineInstance {
 }
 
 impl LineInstance {
+    /// Its vertex attributes, shader locations 0 to 3 (`LineInstance` in `lines.wgsl`): the
+    /// padding word is skipped.
+    pub const ATTRIBUTES: [wgpu::VertexAttribute; 4] = [
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 0, shader_location: 0 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Uint32, offset: 12, shader_location: 1 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 16, shader_location: 2 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x2, offset: 32, shader_location: 3 },
+    ];
+
+    /// The line of `kind` from `a` to `b` (float64 points made float32), with the width factors
+    /// `scale` at its ends.
+    pub fn new(kind: LineKind, a: [f64; 3], b: [f64; 3], scale: [f32; 2]) -> Self {
+        LineInstance { a: a.map(|x| x as f32), kind: kind as u32, b: b.map(|x| x as f32), pad: 0, scale }
+    }
+
     /// The line as the lines pass draws it (its float32 points and width factors), projected.
     pub fn screen(&self, projector: &Projector) -> Option<ScreenLine> {
         let s = projector.project(self.a.map(|x| x as f64), self.b.map(|x| x as f64), self.kind as usize)?;
@@ -325,12 +340,13 @@ pub fn instances(
         if faded {
             factors.iter_mut().zip(&c.strength).for_each(|(f, &s)| *f *= strength_factor(s));
         }
-        out.extend((1..n).map(|i| LineInstance {
-            a: c.points[i - 1].map(|x| x as f32),
-            kind: c.kind as u32,
-            b: c.points[i].map(|x| x as f32),
-            pad: 0,
-            scale: [factors[i - 1] as f32, factors[i] as f32],
+        out.extend((1..n).map(|i| {
+            LineInstance::new(
+                c.kind,
+                c.points[i - 1],
+                c.points[i],
+                [factors[i - 1] as f32, factors[i] as f32],
+            )
         }));
     }
     out

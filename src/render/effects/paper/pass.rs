@@ -10,7 +10,7 @@ use crate::render::device::COLOR_FORMAT;
 use crate::render::graph::build::{fullscreen_pipeline, texture_group};
 use crate::render::graph::target::{Access, Target, Use};
 use crate::render::graph::{loaded, FrameCtx, Pass, Recorder};
-use crate::render::pipelines::{blended, PipelineKey};
+use crate::render::pipelines::blended;
 use crate::render::settings::GreyImage;
 
 pub const WGSL: &str = include_str!("paper.wgsl");
@@ -75,23 +75,20 @@ impl Pass for PaperPass {
 
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layouts = &f.pipelines.layouts;
-        let pipeline = f.pipelines.get(PipelineKey::new("paper", self.surface as u64), || {
-            let module = f.module("paper", WGSL, None);
-            let mut groups = vec![&layouts.frame, &layouts.float_texture];
-            if self.surface {
-                groups.push(&layouts.uint_texture);
-            }
-            let entry = if self.surface { "fs_surface" } else { "fs_screen" };
-            fullscreen_pipeline(
-                f,
-                "paper",
-                &module,
-                entry,
-                &groups,
-                &[blended(COLOR_FORMAT, PAPER_BLEND)],
-                &[],
-            )
-        });
+        let mut groups = vec![&layouts.frame, &layouts.float_texture];
+        if self.surface {
+            groups.push(&layouts.uint_texture);
+        }
+        let entry = if self.surface { "fs_surface" } else { "fs_screen" };
+        let targets = [blended(COLOR_FORMAT, PAPER_BLEND)];
+        let pipeline = fullscreen_pipeline(
+            f,
+            ("paper", self.surface as u64),
+            (WGSL, entry, None),
+            &groups,
+            &targets,
+            &[],
+        );
         let tile = texture_group(&f.dev.device, &layouts.float_texture, &self.tile(f));
         let geometry = self.surface.then(|| f.res.geometry_group(f));
         let mut groups = vec![&f.res.uniforms.frame_group, &tile];

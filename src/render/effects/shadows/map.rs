@@ -4,7 +4,6 @@
 //! shadow; the others need no fragment stage.
 
 use crate::error::Result;
-use crate::render::gpu_albedo::GpuAlbedo;
 use crate::render::graph::build::depth_pass_pipeline;
 use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::graph::target::{Access, Target, Use};
@@ -30,11 +29,7 @@ impl Pass for ShadowMap {
 
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let mut pass = rec.begin("shadow_map", &[], depth_buffer(f.res.view(Target::ShadowMap), true));
-        f.draw_meshes(&mut pass, |d| {
-            let albedo = d.cut_albedo();
-            let constants = albedo.map_or(vec![], GpuAlbedo::constants);
-            depth_pass_pipeline(f, "shadow_map", map_stages(albedo.is_some()), constants, d.light_cull)
-        });
+        f.draw_meshes(&mut pass, |d| depth_pass_pipeline(f, "shadow_map", d, map_stages, d.light_cull));
         Ok(())
     }
 }

@@ -8,7 +8,7 @@ use crate::render::graph::build::fullscreen_pipeline;
 use crate::render::graph::effect::ShadeHook;
 use crate::render::graph::target::{Access, Target, Use, SHADOW_FORMAT};
 use crate::render::graph::{bits_clear, cleared, FrameCtx, Pass, Recorder};
-use crate::render::pipelines::{target, PipelineKey};
+use crate::render::pipelines::target;
 
 use super::ShadowTest;
 
@@ -32,18 +32,14 @@ impl Pass for ShadowMask {
 
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layouts = &f.pipelines.layouts;
-        let pipeline = f.pipelines.get(PipelineKey::new("shadow", self.test.key()), || {
-            let module = f.module("shadow", WGSL, Some(self.test.as_ref()));
-            fullscreen_pipeline(
-                f,
-                "shadow",
-                &module,
-                "fs_shadow",
-                &[&layouts.frame, &layouts.uint_texture, self.test.layout(layouts)],
-                &[target(SHADOW_FORMAT)],
-                &self.test.constants(),
-            )
-        });
+        let pipeline = fullscreen_pipeline(
+            f,
+            ("shadow", self.test.key()),
+            (WGSL, "fs_shadow", Some(self.test.as_ref())),
+            &[&layouts.frame, &layouts.uint_texture, self.test.layout(layouts)],
+            &[target(SHADOW_FORMAT)],
+            &self.test.constants(),
+        );
         let geometry = f.res.geometry_group(f);
         let shadow = self.test.bind_group(f);
         let attachments = [cleared(f.res.view(Target::Shadow), bits_clear([1.0, 0.0, 0.0, 0.0]))];

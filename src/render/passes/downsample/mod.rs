@@ -6,7 +6,7 @@ use crate::render::device::COLOR_FORMAT;
 use crate::render::graph::build::{fullscreen_pipeline, texture_group};
 use crate::render::graph::target::{Access, Target, Use};
 use crate::render::graph::{cleared, FrameCtx, Pass, Recorder};
-use crate::render::pipelines::{target, PipelineKey};
+use crate::render::pipelines::target;
 
 pub const WGSL: &str = include_str!("downsample.wgsl");
 
@@ -26,18 +26,14 @@ impl Pass for Downsample {
 
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layouts = &f.pipelines.layouts;
-        let pipeline = f.pipelines.get(PipelineKey::new("downsample", self.factor as u64), || {
-            let module = f.module("downsample", WGSL, None);
-            fullscreen_pipeline(
-                f,
-                "downsample",
-                &module,
-                "fs_downsample",
-                &[&layouts.frame, &layouts.float_texture],
-                &[target(COLOR_FORMAT)],
-                &[("FACTOR", self.factor as f64)],
-            )
-        });
+        let pipeline = fullscreen_pipeline(
+            f,
+            ("downsample", self.factor as u64),
+            (WGSL, "fs_downsample", None),
+            &[&layouts.frame, &layouts.float_texture],
+            &[target(COLOR_FORMAT)],
+            &[("FACTOR", self.factor as f64)],
+        );
         let source = f.res.bind_group("downsample source", || {
             texture_group(&f.dev.device, &layouts.float_texture, f.res.view(Target::ColorHi))
         });

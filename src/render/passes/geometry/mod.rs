@@ -4,7 +4,6 @@
 //! no normal or depth is written where its pixels are cut.
 
 use crate::error::Result;
-use crate::render::gpu_albedo::GpuAlbedo;
 use crate::render::graph::build::depth_pass_pipeline;
 use crate::render::graph::mesh_stages::MeshStages;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
@@ -26,13 +25,8 @@ impl Pass for Geometry {
 
     fn encode(&self, f: &FrameCtx<'_>, rec: &mut Recorder<'_>) -> Result<()> {
         let layout = self.layout;
-        let pipeline = |d: &DrawItem<'_>| {
-            let albedo = d.cut_albedo();
-            let stages =
-                MeshStages { albedo: albedo.is_some(), geometry: Some(layout), ..Default::default() };
-            let constants = albedo.map_or(vec![], GpuAlbedo::constants);
-            depth_pass_pipeline(f, "gbuffer", stages, constants, d.cull)
-        };
+        let stages = |cut| MeshStages { albedo: cut, geometry: Some(layout), ..Default::default() };
+        let pipeline = |d: &DrawItem<'_>| depth_pass_pipeline(f, "gbuffer", d, stages, d.cull);
         let attachments = [cleared(f.res.view(Target::Geometry), geometry_clear(layout))];
         let mut pass =
             rec.begin("gbuffer", &attachments, depth_buffer(f.res.view(Target::GeometryDepth), false));
