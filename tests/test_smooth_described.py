@@ -110,3 +110,22 @@ def test_the_description_has_the_keys_front_ends_read():
             if k["kind"] == "choice":
                 assert k["choices"]
     assert [m["method"] for m in DESCRIPTION] == tm.smooth.__all__
+
+
+def test_the_guides_table_of_defaults_is_the_description():
+    """docs/smoothing.md's table of options gives the described defaults (without a preset)."""
+    from pathlib import Path
+    import re
+
+    text = (Path(__file__).resolve().parent.parent / "docs" / "smoothing.md").read_text()
+    checked = 0
+    for m in DESCRIPTION:
+        (row,) = [line for line in text.splitlines() if re.match(rf"\| (`\w+`, )*`{m['method']}`", line)]
+        given = dict(re.findall(r"(\w+)=([^,`\s]+)", row))
+        for k in m["keywords"]:
+            if k["name"] in given:
+                default = k["default"]
+                shown = f'"{default}"' if isinstance(default, str) else repr(default) if isinstance(default, float) else str(default)
+                assert given[k["name"]] == shown, (m["method"], k["name"], given[k["name"]], shown)
+                checked += 1
+    assert checked >= 15
