@@ -158,15 +158,18 @@ def smooth_keywords() -> str:
     described keywords, then `pinned` (the mesh's, not the method's)."""
     import toonmesh.smooth as smooth
 
-    blocks = []
+    blocks, seen = [], {}
     for method, d in smooth._DESCRIBED.items():
         name = method.capitalize() + "Options"
+        fields = [f"    {k['name']}: {smooth._annotation(k)}" for k in d["keywords"]]
+        fields.append(f"    {smooth._PINNED}: Optional[Any]")
+        same = seen.setdefault("\n".join(fields), name)
+        if same != name:  # the same keywords as an earlier method's (guided's are bilateral's)
+            blocks.append(f"{name} = {same}\n")
+            continue
         lines = [f"class {name}(TypedDict, total=False):"]
         lines += docstring(f"The keywords of :func:`{method}`, for type checkers (see its docstring).", "    ")
-        lines.append("")
-        lines += [f"    {k['name']}: {smooth._annotation(k)}" for k in d["keywords"]]
-        lines.append(f"    {smooth._PINNED}: Optional[Any]")
-        blocks.append("\n".join(lines) + "\n")
+        blocks.append("\n".join(lines + [""] + fields) + "\n")
     return "\n\n".join(blocks)
 
 

@@ -297,15 +297,7 @@ class BilateralOptions(TypedDict, total=False):
     pinned: Optional[Any]
 
 
-class GuidedOptions(TypedDict, total=False):
-    """The keywords of :func:`guided`, for type checkers (see its docstring)."""
-
-    iterations: Optional[int]
-    vertex_iterations: Optional[int]
-    sigma_s: Optional[float]
-    sigma_r: Optional[float]
-    weld: bool
-    pinned: Optional[Any]
+GuidedOptions = BilateralOptions
 # @end generated keywords
 
 

@@ -177,37 +177,25 @@ impl Keyword {
     }
 }
 
+/// Each kind's value out of a described default (an internal error naming the keyword if the
+/// description gave it another kind).
+macro_rules! value_as {
+    ($($f:ident: $variant:ident($t:ty), $what:literal;)*) => {$(
+        pub fn $f(self, name: &str) -> Result<$t> {
+            match self {
+                Value::$variant(x) => Ok(x),
+                _ => Err(Self::wrong(name, $what)),
+            }
+        }
+    )*};
+}
+
 impl Value {
-    pub fn int(self, name: &str) -> Result<i64> {
-        if let Value::Int(n) = self {
-            Ok(n)
-        } else {
-            Err(Self::wrong(name, "an int"))
-        }
-    }
-
-    pub fn float(self, name: &str) -> Result<f64> {
-        if let Value::Float(x) = self {
-            Ok(x)
-        } else {
-            Err(Self::wrong(name, "a float"))
-        }
-    }
-
-    pub fn name(self, name: &str) -> Result<&'static str> {
-        if let Value::Name(s) = self {
-            Ok(s)
-        } else {
-            Err(Self::wrong(name, "a name"))
-        }
-    }
-
-    pub fn flag(self, name: &str) -> Result<bool> {
-        if let Value::Bool(b) = self {
-            Ok(b)
-        } else {
-            Err(Self::wrong(name, "a bool"))
-        }
+    value_as! {
+        int: Int(i64), "an int";
+        float: Float(f64), "a float";
+        name: Name(&'static str), "a name";
+        flag: Bool(bool), "a bool";
     }
 
     fn wrong(name: &str, what: &str) -> Error {
@@ -357,8 +345,14 @@ const IMPLICIT: &[Keyword] = &[
         "solver iterations before toonmesh.ConvergenceError is raised",
     ),
     WEIGHTS,
-    Keyword::choice("boundary", &["fixed", "free"], Value::Name("fixed"), BOUNDARY_HELP)
-        .with_presets(&[(Trimesh, Value::Name("free"))]),
+    Keyword::choice(
+        "boundary",
+        &["fixed", "free"],
+        Value::Name("fixed"),
+        "what a vertex on a boundary edge (an edge with one face) does: stay put, or average like \
+         interior vertices",
+    )
+    .with_presets(&[(Trimesh, Value::Name("free"))]),
     VOLUME,
     preset(&["trimesh"]),
     WELD,

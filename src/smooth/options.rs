@@ -187,26 +187,32 @@ impl Keywords {
     }
 }
 
+/// The names of the fields of `Args` given (not None).
+macro_rules! given {
+    ($a:expr, $($field:ident),*) => {
+        [$((stringify!($field), $a.$field.is_some())),*].into_iter().filter_map(|(n, given)| given.then_some(n))
+    };
+}
+
 impl Args {
     /// The names of the keywords given.
     fn given(&self) -> impl Iterator<Item = &'static str> + '_ {
-        [
-            ("iterations", self.iterations.is_some()),
-            ("lamb", self.lamb.is_some()),
-            ("mu", self.mu.is_some()),
-            ("alpha", self.alpha.is_some()),
-            ("beta", self.beta.is_some()),
-            ("step", self.step.is_some()),
-            ("tol", self.tol.is_some()),
-            ("max_iter", self.max_iter.is_some()),
-            ("weights", self.weights.is_some()),
-            ("boundary", self.boundary.is_some()),
-            ("volume_constraint", self.volume_constraint.is_some()),
-            ("preset", self.preset.is_some()),
-            ("weld", self.weld.is_some()),
-        ]
-        .into_iter()
-        .filter_map(|(n, given)| given.then_some(n))
+        given!(
+            self,
+            iterations,
+            lamb,
+            mu,
+            alpha,
+            beta,
+            step,
+            tol,
+            max_iter,
+            weights,
+            boundary,
+            volume_constraint,
+            preset,
+            weld
+        )
     }
 }
 
