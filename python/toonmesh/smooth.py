@@ -428,6 +428,6 @@ for _f, _before, _after in (
     (bilateral, _NORMAL_FILTERING, _NORMAL_FILTERING_COMMON),
     (guided, _NORMAL_FILTERING, _NORMAL_FILTERING_COMMON),
 ):
-    _f.__signature__ = _signature(_f.__name__)  # type: ignore[attr-defined]
+    _f.__signature__ = _signature(_f.__name__)  # type: ignore[union-attr]
     _f.__doc__ = (_f.__doc__ or "") + _before + _parameters(_f.__name__) + _after
 del _f, _before, _after
