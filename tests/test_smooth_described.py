@@ -75,6 +75,11 @@ def test_another_value_gives_another_result(mesh, method):
         assert not np.array_equal(f(V, F, **{k["name"]: _another(k)}), f(V, F)), k["name"]
 
 
+def _shown(value: Any) -> str:
+    """A default as Python spells it: ``"uniform"``, ``0.5``, ``1.0``, ``10``, ``False``."""
+    return f'"{value}"' if isinstance(value, str) else repr(value) if isinstance(value, float) else str(value)
+
+
 @pytest.mark.parametrize("method", [m["method"] for m in DESCRIPTION])
 def test_signatures_and_docstrings_are_the_description(method):
     f = getattr(tm.smooth, method)
@@ -89,10 +94,9 @@ def test_signatures_and_docstrings_are_the_description(method):
         if k["default_words"]:
             assert k["default_words"] in " ".join(entry.split()), k["name"]
         else:
-            shown = f'"{default}"' if isinstance(default, str) else repr(default) if isinstance(default, float) else str(default)
-            assert f"default {shown}" in entry, (k["name"], shown)
+            assert f"default {_shown(default)}" in entry, (k["name"], default)
         for preset, value in k["presets"].items():
-            assert preset in entry and (repr(value) if isinstance(value, float) else str(value)) in entry, (k["name"], preset)
+            assert preset in entry and _shown(value) in entry, (k["name"], preset)
         for choice in k.get("choices", []):
             assert f'"{choice}"' in entry, (k["name"], choice)
         if k["kind"] in ("int", "float"):
@@ -124,8 +128,6 @@ def test_the_guides_table_of_defaults_is_the_description():
         given = dict(re.findall(r"(\w+)=([^,`\s]+)", row))
         for k in m["keywords"]:
             if k["name"] in given:
-                default = k["default"]
-                shown = f'"{default}"' if isinstance(default, str) else repr(default) if isinstance(default, float) else str(default)
-                assert given[k["name"]] == shown, (m["method"], k["name"], given[k["name"]], shown)
+                assert given[k["name"]] == _shown(k["default"]), (m["method"], k["name"], given[k["name"]])
                 checked += 1
     assert checked >= 15

@@ -1,7 +1,7 @@
 """The command line: ``toonmesh`` (console script) and ``python -m toonmesh``.
 
     toonmesh render MESH... -o OUT|--video OUT [--size WxH] [--style S] [--normals MODE] [--views N [--fps N]] [--up x|y|z] ...
-    toonmesh smooth IN -o OUT [--method M] [--iterations N] [--preset P] [--lamb X] [--mu X] ... [--crease-angle DEG] [--weld] [--force]
+    toonmesh smooth IN -o OUT [--method M] [--iterations N] [--preset P] [--lamb X] ... [--crease-angle DEG] [--weld]
     toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG] [--smooth-strokes PX]
     toonmesh bench smooth|edges|render|effects|viewer|all [--quick] [--json FILE]
     toonmesh demo
