@@ -44,22 +44,41 @@ pub enum Preset {
     Paper,
 }
 
-/// What the caller passed (None: use the preset's default).
-#[derive(Debug, Clone, Default)]
-pub struct Args {
-    pub iterations: Option<i64>,
-    pub lamb: Option<f64>,
-    pub mu: Option<f64>,
-    pub alpha: Option<f64>,
-    pub beta: Option<f64>,
-    pub step: Option<f64>,
-    pub tol: Option<f64>,
-    pub max_iter: Option<i64>,
-    pub weights: Option<String>,
-    pub boundary: Option<String>,
-    pub volume_constraint: Option<bool>,
-    pub preset: Option<String>,
-    pub weld: Option<bool>,
+/// Declares `Args`, what the caller passed (None: use the preset's default), and `Args::given`,
+/// the names of the keywords given, so that each name is written once.
+macro_rules! args {
+    ($($field:ident: $t:ty,)*) => {
+        /// What the caller passed (None: use the preset's default).
+        #[derive(Debug, Clone, Default)]
+        pub struct Args {
+            $(pub $field: Option<$t>,)*
+        }
+
+        impl Args {
+            /// The names of the keywords given.
+            fn given(&self) -> impl Iterator<Item = &'static str> + '_ {
+                [$((stringify!($field), self.$field.is_some())),*]
+                    .into_iter()
+                    .filter_map(|(name, given)| given.then_some(name))
+            }
+        }
+    };
+}
+
+args! {
+    iterations: i64,
+    lamb: f64,
+    mu: f64,
+    alpha: f64,
+    beta: f64,
+    step: f64,
+    tol: f64,
+    max_iter: i64,
+    weights: String,
+    boundary: String,
+    volume_constraint: bool,
+    preset: String,
+    weld: bool,
 }
 
 /// Fully resolved options.
@@ -184,35 +203,6 @@ impl Keywords {
             None => Ok(false),
             Some(k) => given.map_or_else(|| k.default_for(self.preset).flag(name), Ok),
         }
-    }
-}
-
-/// The names of the fields of `Args` given (not None).
-macro_rules! given {
-    ($a:expr, $($field:ident),*) => {
-        [$((stringify!($field), $a.$field.is_some())),*].into_iter().filter_map(|(n, given)| given.then_some(n))
-    };
-}
-
-impl Args {
-    /// The names of the keywords given.
-    fn given(&self) -> impl Iterator<Item = &'static str> + '_ {
-        given!(
-            self,
-            iterations,
-            lamb,
-            mu,
-            alpha,
-            beta,
-            step,
-            tol,
-            max_iter,
-            weights,
-            boundary,
-            volume_constraint,
-            preset,
-            weld
-        )
     }
 }
 
