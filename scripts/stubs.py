@@ -1,9 +1,12 @@
 """Writes the type stub of the compiled core, `python/toonmesh/_core.pyi`: the template
 `scripts/core_stub.pyi.in` with its settings classes generated from the core's description of
-them (`Class.describe()`), so that a field added to the core reaches the stub with no other edit.
+them (`Class.describe()`), so that a field added to the core reaches the stub with no other edit;
+and the smoothing functions' keyword TypedDicts (`LaplacianOptions`, ... for
+`**options: Unpack[...]`) between the markers of `python/toonmesh/smooth.py`, from the core's
+description of each method (`_core._smoothing_description()`).
 
-    python scripts/stubs.py            # writes the stub
-    python scripts/stubs.py --check    # exit 1 if the committed stub differs (tests run this)
+    python scripts/stubs.py            # writes the stub and the TypedDicts
+    python scripts/stubs.py --check    # exit 1 if either committed file differs (tests run this)
 """
 
 from __future__ import annotations
@@ -16,6 +19,9 @@ from typing import Any, Dict, List
 ROOT = Path(__file__).resolve().parent.parent
 TEMPLATE = ROOT / "scripts" / "core_stub.pyi.in"
 STUB = ROOT / "python" / "toonmesh" / "_core.pyi"
+SMOOTH = ROOT / "python" / "toonmesh" / "smooth.py"
+SMOOTH_BEGIN = "# @generated keywords: `python scripts/stubs.py` writes this block from the core's description\n"
+SMOOTH_END = "# @end generated keywords\n"
 MARK = "# @settings-classes\n"
 NAMES_MARK = "# @settings-class-names\n"
 
@@ -147,14 +153,44 @@ def generate() -> str:
     return text.replace(NAMES_MARK, names).replace(MARK, render_keywords() + "\n" + SETTINGS_BASE + "\n" + classes)
 
 
+def smooth_keywords() -> str:
+    """Each smoothing method's keywords as a TypedDict, for `**options: Unpack[...]`: the
+    described keywords, then `pinned` (the mesh's, not the method's)."""
+    import toonmesh.smooth as smooth
+
+    blocks, seen = [], {}
+    for method, d in smooth._DESCRIBED.items():
+        name = method.capitalize() + "Options"
+        fields = [f"    {k['name']}: {smooth._annotation(k)}" for k in d["keywords"]]
+        fields.append(f"    {smooth._PINNED}: Optional[Any]")
+        same = seen.setdefault("\n".join(fields), name)
+        if same != name:  # the same keywords as an earlier method's (guided's are bilateral's)
+            blocks.append(f"{name} = {same}\n")
+            continue
+        lines = [f"class {name}(TypedDict, total=False):"]
+        lines += docstring(f"The keywords of :func:`{method}`, for type checkers (see its docstring).", "    ")
+        blocks.append("\n".join(lines + [""] + fields) + "\n")
+    return "\n\n".join(blocks)
+
+
+def smooth_module() -> str:
+    """smooth.py with its generated block (between its markers) as the description says now."""
+    text = SMOOTH.read_text()
+    assert SMOOTH_BEGIN in text and SMOOTH_END in text, f"{SMOOTH} lacks its @generated markers"
+    before, rest = text.split(SMOOTH_BEGIN, 1)
+    _, after = rest.split(SMOOTH_END, 1)
+    return before + SMOOTH_BEGIN + smooth_keywords() + SMOOTH_END + after
+
+
 def main(argv: List[str]) -> int:
-    text = generate()
+    written = [(STUB, generate()), (SMOOTH, smooth_module())]
     if "--check" in argv:
-        if STUB.read_text() != text:
-            print(f"{STUB.relative_to(ROOT)} differs from what scripts/stubs.py writes: run `make stubs`")
-            return 1
-        return 0
-    STUB.write_text(text)
+        stale = [path for path, text in written if path.read_text() != text]
+        for path in stale:
+            print(f"{path.relative_to(ROOT)} differs from what scripts/stubs.py writes: run `make stubs`")
+        return 1 if stale else 0
+    for path, text in written:
+        path.write_text(text)
     return 0
 
 

@@ -216,6 +216,34 @@ def test_smooth_command_matches_the_api(tmp_path):
     assert np.array_equal(np.asarray(out.faces), F)
 
 
+def test_smooth_flags_of_a_methods_keywords_reach_it(tmp_path, capsys):
+    """--lamb, --mu, --step, ...: each keyword of the method, from the core's description, reaches
+    the function as given; a flag of another method's keyword, or a value out of the described
+    range, is a bad command line naming the flag."""
+    trimesh = need("trimesh")
+    V, F = tm.shapes.icosphere(3, noise=0.03, seed=0)
+    src = write_mesh(tmp_path / "noisy.obj", V, F)
+    V_obj = np.asarray(trimesh.load(src, process=False).vertices)
+    for flags, expected in [
+        (["--method", "taubin", "--lamb", "0.4", "--mu", "-0.45", "--iterations", "3"],
+         tm.smooth.taubin(V_obj, F, lamb=0.4, mu=-0.45, iterations=3)),
+        (["--method", "implicit", "--step", "2.5", "--tol", "1e-9", "--max-iter", "500", "--volume-constraint"],
+         tm.smooth.implicit(V_obj, F, step=2.5, tol=1e-9, max_iter=500, volume_constraint=True)),
+        (["--method", "hc", "--alpha", "0.2", "--beta", "0.7"], tm.smooth.hc(V_obj, F, alpha=0.2, beta=0.7)),
+    ]:
+        in_process(capsys, "smooth", src, "-o", str(tmp_path / "out.ply"), "--crease-angle", "180", "--force", *flags)
+        out = trimesh.load(tmp_path / "out.ply", process=False)
+        assert np.abs(np.asarray(out.vertices) - expected).max() < 1e-6, flags
+        assert not np.allclose(expected, V_obj), flags  # the flags made a difference a test can see
+    r = in_process(capsys, "smooth", src, "-o", str(tmp_path / "x.ply"), "--method", "laplacian", "--mu", "-0.5",
+                   check=False)
+    one_line_error(r, "--mu", "laplacian takes no such option", "--lamb")
+    r = in_process(capsys, "smooth", src, "-o", str(tmp_path / "x.ply"), "--method", "taubin", "--mu", "0.5",
+                   check=False)
+    one_line_error(r, "--mu", "[-1, 0]")
+    assert r.returncode == 2 and not (tmp_path / "x.ply").exists()
+
+
 def test_smooth_weld_passes_through_or_says_it_is_not_there_yet(tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)
     src = write_mesh(tmp_path / "m.obj", *tm.shapes.icosphere(1))

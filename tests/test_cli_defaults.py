@@ -11,7 +11,7 @@ from typing import Any, Dict, Iterator, Tuple
 import pytest
 
 from test_cli import in_process, one_line_error
-from toonmesh import _core, batch, cli
+from toonmesh import _core, batch, cli, smooth
 from toonmesh.arguments import _described_flags
 from toonmesh._core import Dither, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 
@@ -56,8 +56,7 @@ OWN = {
     ("render", "rim"), ("render", "paper"),
     ("render", "outline_width"), ("render", "views"), ("render", "fps"), ("render", "up"), ("render", "smooth"),
     ("render", "smooth_method"), ("render", "normals"), ("render", "backend"),
-    ("smooth", "out"), ("smooth", "method"), ("smooth", "iterations"), ("smooth", "preset"), ("smooth", "weights"),
-    ("smooth", "boundary"), ("smooth", "weld"), ("smooth", "crease_angle"), ("smooth", "force"),
+    ("smooth", "out"), ("smooth", "method"), ("smooth", "weld"), ("smooth", "crease_angle"), ("smooth", "force"),
     ("edges", "eye"), ("edges", "up"), ("edges", "size"), ("edges", "hidden"), ("edges", "smooth_strokes"),
     ("edges", "order"), ("edges", "simplify"), ("edges", "backend"),
     ("demo", "out"), ("demo", "width"), ("demo", "height"), ("demo", "backend"),
@@ -118,9 +117,22 @@ def formatted(value: Any) -> str:
     return f"{value:g}" if isinstance(value, float) else str(value)
 
 
+def smoothing_keywords() -> Dict[str, Dict[str, Dict[str, Any]]]:
+    """{keyword: {method: its description}} of the methods ``toonmesh smooth --method`` offers,
+    read from the core now; weld is the command line's own flag."""
+    by_name: Dict[str, Dict[str, Dict[str, Any]]] = {}
+    for method in _core._smoothing_description():
+        if method["method"] in _core.SMOOTH_METHODS:
+            for k in method["keywords"]:
+                if k["name"] != "weld":
+                    by_name.setdefault(k["name"], {})[method["method"]] = k
+    return by_name
+
+
 def test_every_flag_is_classified():
     found = {(command, dest) for command, dest, _ in flags(cli.build_parser())}
-    known = set(DESCRIBED) | {("render", d) for d in FROM_THE_DEMO} | OWN | set(core_choices())
+    smoothing = {("smooth", name) for name in smoothing_keywords()}
+    known = set(DESCRIBED) | {("render", d) for d in FROM_THE_DEMO} | OWN | set(core_choices()) | smoothing
     assert found - known == set(), "classify these flags in this test: described, the demo's or the CLI's own"
     assert known - found == set(), "flags this test expects that the command line lacks"
 
@@ -132,6 +144,36 @@ def test_described_defaults_are_the_cores_and_help_shows_them():
         assert action.default == param["default"], key
         assert f"default: {formatted(param['default'])})" in shown_default(action), key
         assert param["help"] in shown_default(action), key
+
+
+def test_smooth_has_a_flag_per_described_keyword_showing_each_methods_defaults():
+    """toonmesh smooth: a flag per keyword of the methods --method offers (--lamb, --max-iter, ...),
+    of the described kind and choices, None by default (the method's or preset's own), its help
+    the core's with every method's described default and each preset's that differs."""
+    by_key = {(command, dest): action for command, dest, action in flags(cli.build_parser())}
+    spelled = {int: "int", float: "float", str: "choice", None: "bool"}
+    for name, methods in smoothing_keywords().items():
+        action = by_key[("smooth", name)]
+        assert action.option_strings[0] == "--" + name.replace("_", "-")
+        assert action.default is None, name
+        kinds = {k["kind"] for k in methods.values()}
+        assert kinds == {spelled[action.type]}, name
+        if kinds == {"choice"}:
+            assert set(action.choices) == {c for k in methods.values() for c in k["choices"]}, name
+        shown = shown_default(action)
+        for method, k in methods.items():
+            if k["help"] in shown:
+                break
+        else:
+            raise AssertionError(f"{name}: no method's help in {shown!r}")
+        for method, k in methods.items():
+            for v in [k["default"], *k["presets"].values()]:
+                assert v is None or (repr(v) if isinstance(v, float) else str(v)) in shown, (name, method, v)
+            for preset in k["presets"]:
+                assert preset in shown, (name, method, preset)
+            defaults = {str((k["default"], k["presets"], k.get("preset_ranges"))) for k in methods.values()}
+            if len(defaults) > 1:  # the methods' defaults differ: each is named
+                assert method in shown, (name, method)
 
 
 def test_render_lines_are_the_demos_which_differ_from_the_core_only_where_it_chooses():
@@ -196,6 +238,12 @@ def test_flags_follow_the_core_when_it_changes(monkeypatch):
         return _changed(real(cls, name, constructor))
 
     monkeypatch.setattr(_described_flags, "described", changed)
+    described_smoothing = {
+        method: dict(d, keywords=[_changed(k) if k["name"] != "preset" else dict(k, choices=k["choices"][::-1])
+                                  for k in d["keywords"]])
+        for method, d in smooth._DESCRIBED.items()
+    }
+    monkeypatch.setattr(smooth, "_DESCRIBED", described_smoothing)
     for name in ("DITHER_PATTERNS", "HATCH_MODES", "OUTLINE_KINDS", "CONTOUR_RULES", "IMAGE_RULES", "SMOOTH_METHODS",
                  "SMOOTH_PRESETS", "SMOOTH_WEIGHTS", "SMOOTH_BOUNDARIES", "BACKENDS"):
         monkeypatch.setattr(_core, name, tuple(getattr(_core, name))[::-1])
@@ -214,8 +262,24 @@ def test_flags_follow_the_core_when_it_changes(monkeypatch):
     for dest, attribute in FROM_THE_DEMO.items():
         assert by_key[("render", dest)].default == getattr(demo, attribute), dest
     for key, names in core_choices().items():
-        if key not in (("render", "style"), ("render", "smooth_method")):  # those read the description, batch
+        # those read the description, batch, the smoothing methods' description
+        if key not in (("render", "style"), ("render", "smooth_method"), ("smooth", "preset"), ("smooth", "weights"),
+                       ("smooth", "boundary")):
             assert tuple(by_key[key].choices) == names, key
+    first = {}  # each smoothing keyword as the first method --method offers describes it
+    for method in _core.SMOOTH_METHODS:
+        for k in described_smoothing[method]["keywords"]:
+            first.setdefault(k["name"], k)
+    for name in ("preset", "weights", "boundary", "iterations", "lamb", "mu", "tol"):
+        action, k = by_key[("smooth", name)], first[name]
+        if k["kind"] == "choice":
+            assert list(action.choices)[: len(k["choices"])] == k["choices"], name
+        else:
+            assert _formatted_default(k) in shown_default(action), name
+
+
+def _formatted_default(k: Dict[str, Any]) -> str:
+    return repr(k["default"]) if k["kind"] == "float" else str(k["default"])
 
 
 @pytest.mark.parametrize(

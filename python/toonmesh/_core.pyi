@@ -62,6 +62,7 @@ __all__ = [
     "_srgb_from_linear",
     "_transform",
     "_smooth",
+    "_smoothing_description",
     "_sobel",
     "_svg_document",
     "_vertex_count",
@@ -118,6 +119,10 @@ def icosphere(subdivisions: int, noise: float, seed: int) -> Tuple[npt.NDArray[n
 def grid(n: int, noise: float, seed: int) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
 # the keywords of toonmesh.smooth's functions (their signatures are the documentation)
 def _smooth(method_name: str, mesh: _Mesh, **options: Any) -> npt.NDArray[np.floating[Any]]: ...
+def _smoothing_description() -> List[Dict[str, Any]]:
+    """Every smoothing method as the core describes it (src/smooth/described.rs): a list of
+    {"method", "help", "keywords", "presets"}, each keyword a dict of name, kind, min/max/exclusive
+    or choices, optional, default, default_words, presets, preset_ranges and help."""
 
 # --- rendering (src/py/scene.rs, src/py/render.rs); its Python side is toonmesh.rendering._render ---
 

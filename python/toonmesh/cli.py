@@ -1,7 +1,7 @@
 """The command line: ``toonmesh`` (console script) and ``python -m toonmesh``.
 
     toonmesh render MESH... -o OUT|--video OUT [--size WxH] [--style S] [--normals MODE] [--views N [--fps N]] [--up x|y|z] ...
-    toonmesh smooth IN -o OUT [--method M] [--iterations N] [--preset P] [--crease-angle DEG] [--weld] [--force]
+    toonmesh smooth IN -o OUT [--method M] [--iterations N] [--preset P] [--lamb X] ... [--crease-angle DEG] [--weld]
     toonmesh edges MESH -o lines.svg|lines.npz [--eye X Y Z] [--crease-angle DEG] [--smooth-strokes PX]
     toonmesh bench smooth|edges|render|effects|viewer|all [--quick] [--json FILE]
     toonmesh demo
@@ -32,7 +32,9 @@ from toonmesh import _core, smooth
 from toonmesh.rendering import _strokes
 from toonmesh._core import __version__
 from toonmesh.arguments._described import described
-from toonmesh.arguments._described_flags import CORE_DEFAULT, add_described, errors_as_flags, sets, styles
+from toonmesh.arguments._described_flags import (
+    CORE_DEFAULT, FLAGS_BY_SETTING, add_described, add_param, errors_as_flags, sets, styles,
+)
 from toonmesh.files._write import (
     IMAGE_SUFFIXES, Part, check_distinct_names, check_not_input, check_writable, image_suffix, seam_normals, view_paths,
     write_parts,
@@ -65,6 +67,8 @@ SMOOTH_METHOD = "taubin"
 #: is otherwise rounded into a blob), while the noise of a scan, folding its faces by less, is
 #: smoothed (at 30 degrees, the renderer's crease, strong noise is kept as creases).
 SMOOTH_CREASE_ANGLE = 60.0
+#: The metavar of ``toonmesh smooth``'s flags of numbers (--iterations N, --lamb X).
+SMOOTH_METAVARS = {"int": "N", "float": "X"}
 #: A smoothing whose largest vertex move is more than this share of the model's bounding-box
 #: diagonal is named in a warning: the shape itself changed.
 SMOOTH_MOVE_WARNING = 0.05
@@ -360,6 +364,45 @@ def _smooth_output(args: argparse.Namespace) -> str:
     return str(out)
 
 
+def smoothing_keywords() -> Dict[str, List[Tuple[str, Dict[str, Any]]]]:
+    """Each keyword of the methods ``toonmesh smooth --method`` offers, as the core describes
+    them: ``{keyword: [(method, its description of the keyword), ...]}``, in the order the
+    methods list them; a flag each (``--max-iter`` for ``max_iter``), but --weld, the command
+    line's own (on for a file split at seams)."""
+    by_name: Dict[str, List[Tuple[str, Dict[str, Any]]]] = {}
+    for method in _core.SMOOTH_METHODS:
+        for k in smooth._DESCRIBED[method]["keywords"]:
+            if k["name"] != "weld":
+                by_name.setdefault(k["name"], []).append((method, k))
+    return by_name
+
+
+def _smoothing_defaults(uses: List[Tuple[str, Dict[str, Any]]]) -> str:
+    """A smoothing flag's default in words, each method's with its presets' where they differ:
+    ``laplacian: 0.5 (paper, pymeshlab presets: 1.0); taubin: 0.5``; just the default where every
+    method's is the same."""
+    by_text: Dict[str, List[str]] = {}
+    for method, k in uses:
+        presets = smooth._presets_in_words(k)
+        text = smooth._default_in_words(k).replace("default ", "", 1) + (f" ({presets})" if presets else "")
+        by_text.setdefault(text, []).append(method)
+    if len(by_text) == 1 and len(uses) == len(_core.SMOOTH_METHODS):
+        return next(iter(by_text))
+    return "; ".join(f"{', '.join(methods)}: {text}" for text, methods in by_text.items())
+
+
+def _check_smoothing_flags(args: argparse.Namespace, fn: Callable[..., Any], options: Dict[str, Any]) -> None:
+    """A flag of a keyword the chosen method does not take is a bad command line naming it and
+    the flags the method does take."""
+    takes = inspect.signature(fn).parameters
+    for name in options:
+        if name not in takes:
+            flags = [f"--{k.replace('_', '-')}" for k in smoothing_keywords() if k in takes]
+            action = getattr(args, FLAGS_BY_SETTING)[(smooth.__name__, name)]
+            raise argparse.ArgumentError(action, f"--method {args.method} takes no such option (its own: "
+                                                 f"{', '.join(flags)})")
+
+
 def cmd_smooth(args: argparse.Namespace) -> int:
     """toonmesh smooth: smooth a mesh file and write the result, keeping its texture
     coordinates, texture, colours, material colours, normal seams and parts."""
@@ -380,7 +423,8 @@ def cmd_smooth(args: argparse.Namespace) -> int:
     V = np.concatenate(world)
     F = np.concatenate([s.faces + start for s, start in zip(surfaces, starts)])
     fn = getattr(smooth, args.method)
-    options = {k: getattr(args, k) for k in ("iterations", "preset", "weights", "boundary") if getattr(args, k) is not None}
+    options = {k: getattr(args, k) for k in smoothing_keywords() if getattr(args, k) is not None}
+    _check_smoothing_flags(args, fn, options)
     # a file split at UV or normal seams, or into parts, is one surface: smooth it welded, or the seams crack
     if args.weld or len(surfaces) > 1 or any(s.normals is not None or s.uv is not None for s in surfaces):
         options.update(pass_through(fn, "weld", True, "--weld"))
@@ -634,14 +678,13 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                                  "a CAD part keeps its edges and corners; 180 moves them too (default: "
                                  f"{SMOOTH_CREASE_ANGLE:g}, or 180 with --preset: the peer's filter as it is)")
     sets(p, crease, (feature_edges, "crease_angle"))
-    for flag, help_text in (
-        (p.add_argument("--iterations", type=int, default=None, metavar="N"), "the method's (or preset's)"),
-        (p.add_argument("--preset", choices=_core.SMOOTH_PRESETS, default=None), None),
-        (p.add_argument("--weights", choices=_core.SMOOTH_WEIGHTS, default=None), "the method's (or preset's)"),
-        (p.add_argument("--boundary", choices=_core.SMOOTH_BOUNDARIES, default=None), "the method's (or preset's)"),
-    ):
-        flag.help = f"default: {help_text}" if help_text else "reproduce a peer library's filter (see docs/smoothing.md; default: none)"
-        sets(p, flag, (smooth, flag.dest))
+    for name, uses in smoothing_keywords().items():
+        param = dict(uses[0][1], default=None)
+        if param["kind"] == "choice":  # each name once, in the order the methods list them
+            param["choices"] = list(dict.fromkeys(c for _, k in uses for c in k["choices"]))
+        flag = add_param(p, "--" + name.replace("_", "-"), param, shown_default=_smoothing_defaults(uses),
+                         **({"metavar": SMOOTH_METAVARS[param["kind"]]} if param["kind"] in SMOOTH_METAVARS else {}))
+        sets(p, flag, (smooth, name))
     p.add_argument("--weld", action="store_true",
                    help="treat vertices at the same position as one (default: off, but always on for a file "
                         "whose texture coordinates or normals split its vertices)")

@@ -16,12 +16,17 @@ included:
     directed half-edges, so boundary and duplicate-face vertices drift toward the origin as they
     do there; volume constraint on by default; Taubin counts passes, not pairs).
 ``preset="pymeshlab"``
-    pymeshlab's ``apply_coord_laplacian_smoothing`` (cotangent weights and 3 steps by default),
-    ``apply_coord_taubin_smoothing`` and ``apply_coord_hc_laplacian_smoothing`` (one step per
-    iteration; the default is 1, like one call).
+    pymeshlab's ``apply_coord_laplacian_smoothing`` (cotangent weights and pymeshlab's step
+    count by default), ``apply_coord_taubin_smoothing`` and ``apply_coord_hc_laplacian_smoothing``
+    (one step per iteration, and one iteration by default, like one call).
 ``preset="paper"``
     Al-Rousan et al. 2016: every vertex moves to the plain mean of its neighbours
-    (``laplacian`` only; ``lamb=1``, boundaries free).
+    (``laplacian`` only; a full step, boundaries free).
+
+Each function's keywords, their ranges and their defaults (with each preset's own) are the
+core's description of the method (``toonmesh._core._smoothing_description()``), from which the
+functions' signatures, the "Parameters" lines of their docstrings, the ``...Options`` TypedDicts
+below and the ``toonmesh smooth`` command's flags are made.
 
 An argument a preset does not have (say ``boundary`` with ``preset="trimesh"``) raises
 ``ValueError`` instead of being ignored. ``weld=True`` works with every preset: the preset's
@@ -48,7 +53,8 @@ a mesh of size 1 placed at 1e10 is smoothed to about 1e-6.
 from __future__ import annotations
 
 import inspect
-from typing import TYPE_CHECKING, Any, Callable, Mapping, Optional, TypedDict, get_type_hints
+import textwrap
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Mapping, Optional, TypedDict
 
 import numpy as np
 import numpy.typing as npt
@@ -64,6 +70,16 @@ __all__ = ["laplacian", "taubin", "hc", "implicit", "bilateral", "guided"]
 #: What every smoothing function returns: new positions, of the input's float dtype.
 Positions = npt.NDArray[np.floating[Any]]
 
+#: Each smoothing method as the core describes it, by name: its help, its keywords (name, kind,
+#: range or choices, default, the presets' defaults, help) and its presets.
+_DESCRIBED: Dict[str, Dict[str, Any]] = {m["method"]: m for m in _core._smoothing_description()}
+
+#: The Python type of each kind of keyword.
+_TYPES = {"int": int, "float": float, "choice": str, "bool": bool}
+
+#: The keyword every function takes besides the described ones: it is the mesh's, not the method's.
+_PINNED = "pinned"
+
 _COMMON = """
     Parameters shared by every smoothing function
     ----------------------------------------------
@@ -73,15 +89,8 @@ _COMMON = """
         Triangles as vertex indices. Degenerate, duplicate, flipped and non-manifold faces are
         allowed; vertices no face uses stay where they are (except under ``preset="trimesh"``).
     pinned : 1-D array of vertex indices (any integer dtype), or (N,) bool mask, optional
-        Vertices that must not move (a list or tuple works too; an empty one pins nothing).
-    preset : None, "trimesh", "pymeshlab" or "paper"
-        Reproduce another library's filter (see the module docs). Default None.
-    weld : bool, default False
-        Smooth the welded mesh: vertices at exactly the same position (UV seams, split
-        normals, an STL's per-face copies) are one vertex, so seams neither open into cracks
-        nor count as boundaries, and every copy gets the same result, its position's. A
-        position is pinned when any of its copies is. The result keeps the input's rows (each
-        copy its own). With a preset, the preset's algorithm runs on the welded mesh.
+        Vertices that must not move (a list or tuple works too; an empty one pins nothing). With
+        ``weld=True``, a position is pinned when any of its copies is.
 
     Returns
     -------
@@ -106,38 +115,108 @@ _COMMON = """
 """
 
 
-class Options(TypedDict, total=False):
-    """The keywords every smoothing function takes (each function's own are in its
-    ``...Options``). A keyword left out, or None, is the function's default."""
-
-    iterations: Optional[int]
-    pinned: Optional[Any]
-    weld: bool
+def _annotation(keyword: Mapping[str, Any]) -> str:
+    """The type of a described keyword as a TypedDict or stub writes it: ``Optional[float]``, or
+    ``bool`` for a flag that takes no None (``weld``)."""
+    t = _TYPES[keyword["kind"]].__name__
+    return f"Optional[{t}]" if keyword["optional"] else t
 
 
-class LaplacianFamilyOptions(Options, total=False):
-    """The keywords of the Laplacian family (:func:`laplacian`, :func:`taubin`, :func:`hc`,
-    :func:`implicit`): the operator's weights, the boundary's rule and the preset."""
-
-    weights: Optional[str]
-    boundary: Optional[str]
-    preset: Optional[str]
+def _number(x: float) -> str:
+    """A described bound or default as the docs write it: ``0``, ``-0.53``, ``1e-10``, ``1e+12``."""
+    if float(x).is_integer() and abs(x) < 1e9:
+        return str(int(x))
+    return repr(x) if 1e-4 <= abs(x) < 1e9 else f"{x:g}"
 
 
-def _signature(options: type) -> inspect.Signature:
+def _value(keyword: Mapping[str, Any], v: Any) -> str:
+    """A described value as Python spells it."""
+    if isinstance(v, bool) or v is None:
+        return str(v)
+    if isinstance(v, str):
+        return f'"{v}"'
+    return repr(float(v)) if keyword["kind"] == "float" and float(v).is_integer() else _number(v)
+
+
+def _allowed(rule: Mapping[str, Any]) -> str:
+    """A described range in words: ``in [0, 1]``, ``in (0, 1)``, ``> 0``, ``>= 0``."""
+    lo, hi = rule["exclusive"]
+    if rule["max"] == float("inf"):
+        return f"{'>' if lo else '>='} {_number(rule['min'])}"
+    return f"in {'[('[lo]}{_number(rule['min'])}, {_number(rule['max'])}{'])'[hi]}"
+
+
+def _kind_in_words(keyword: Mapping[str, Any]) -> str:
+    """What a keyword takes, as a NumPy-style docstring's type: ``float in [0, 1]``, or its
+    choices."""
+    if keyword["kind"] == "choice":
+        names = [f'"{c}"' for c in keyword["choices"]]
+        return ", ".join(names[:-1]) + f" or {names[-1]}" if len(names) > 1 else names[0]
+    if keyword["kind"] == "bool":
+        return "bool"
+    return f"{keyword['kind']} {_allowed(keyword)}"
+
+
+def _default_in_words(keyword: Mapping[str, Any]) -> str:
+    """A keyword's default without a preset: ``default 0.5``, or ``optional`` where it is
+    measured (its words then follow the help, :func:`_parameters`)."""
+    return "optional" if keyword.get("default_words") else f"default {_value(keyword, keyword['default'])}"
+
+
+def _presets_in_words(keyword: Mapping[str, Any]) -> str:
+    """The presets whose default or range differs, grouped by value:
+    ``paper, pymeshlab presets: 1.0; trimesh preset: in [-1000000, 1000000]`` ("" for none)."""
+    by_value: Dict[str, List[str]] = {}
+    for preset, v in keyword["presets"].items():
+        by_value.setdefault(_value(keyword, v), []).append(preset)
+    for preset, rule in keyword.get("preset_ranges", {}).items():
+        by_value.setdefault(_allowed(rule), []).append(preset)
+    return "; ".join(f"{', '.join(names)} preset{'s' if len(names) > 1 else ''}: {v}" for v, names in by_value.items())
+
+
+def _sentence(text: str) -> str:
+    """``text`` as a sentence: its first letter upper case, a full stop at the end."""
+    return f"{text[0].upper()}{text[1:]}."
+
+
+def _parameters(method: str) -> str:
+    """The "Parameters" section of ``method``'s docstring, a keyword per entry, from its
+    description: the type and range, the default (the presets' own in brackets, or on the
+    first line of the text where the line would be too long), then the help."""
+    lines = ["", "    Parameters", "    ----------"]
+    for k in _DESCRIBED[method]["keywords"]:
+        header, text = f"    {k['name']} : {_kind_in_words(k)}, {_default_in_words(k)}", _sentence(k["help"])
+        presets = _presets_in_words(k)
+        if presets and len(header) + len(presets) + 3 <= 96:
+            header += f" ({presets})"
+        elif presets:
+            text = f"{_sentence(presets)} {text}"
+        if k.get("default_words"):
+            text += f" By default {k['default_words']}."
+        lines.append(header)
+        lines += textwrap.wrap(text, 96, initial_indent=" " * 8, subsequent_indent=" " * 8)
+    return "\n".join(lines) + "\n"
+
+
+def _signature(method: str) -> inspect.Signature:
     """A smoothing function's signature, as ``help()``, the command line and the API docs read
-    it: the mesh, then each keyword of ``options`` (a TypedDict), None by default (the
-    function's own default), or False for a flag that takes no None (``weld``)."""
+    it: the mesh, then each described keyword of ``method``, None by default (the method's or
+    preset's own default), or its default for a flag that takes no None (``weld``); then
+    ``pinned``."""
     mesh = [
         inspect.Parameter("vertices", inspect.Parameter.POSITIONAL_OR_KEYWORD, annotation=Any),
         inspect.Parameter("faces", inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None, annotation=Any),
     ]
     keywords = [
-        inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=False if hint is bool else None,
-                          annotation=hint)
-        for name, hint in get_type_hints(options).items()
+        inspect.Parameter(
+            k["name"], inspect.Parameter.KEYWORD_ONLY,
+            default=None if k["optional"] else k["default"],
+            annotation=Optional[_TYPES[k["kind"]]] if k["optional"] else _TYPES[k["kind"]],
+        )
+        for k in _DESCRIBED[method]["keywords"]
     ]
-    return inspect.Signature(mesh + keywords, return_annotation=Positions)
+    pinned = inspect.Parameter(_PINNED, inspect.Parameter.KEYWORD_ONLY, default=None, annotation=Optional[Any])
+    return inspect.Signature(mesh + keywords + [pinned], return_annotation=Positions)
 
 
 def _call(smoother: Callable[..., Positions], vertices: Any, faces: Any, options: Mapping[str, Any]) -> Positions:
@@ -152,45 +231,83 @@ def _call(smoother: Callable[..., Positions], vertices: Any, faces: Any, options
     return _core._smooth(smoother.__name__, (V, F), **options)  # type: ignore[no-any-return]
 
 
-class LaplacianOptions(LaplacianFamilyOptions, total=False):
+# @generated keywords: `python scripts/stubs.py` writes this block from the core's description
+class LaplacianOptions(TypedDict, total=False):
     """The keywords of :func:`laplacian`, for type checkers (see its docstring)."""
 
+    iterations: Optional[int]
     lamb: Optional[float]
+    weights: Optional[str]
+    boundary: Optional[str]
     volume_constraint: Optional[bool]
+    preset: Optional[str]
+    weld: bool
+    pinned: Optional[Any]
+
+
+class TaubinOptions(TypedDict, total=False):
+    """The keywords of :func:`taubin`, for type checkers (see its docstring)."""
+
+    iterations: Optional[int]
+    lamb: Optional[float]
+    mu: Optional[float]
+    weights: Optional[str]
+    boundary: Optional[str]
+    preset: Optional[str]
+    weld: bool
+    pinned: Optional[Any]
+
+
+class HcOptions(TypedDict, total=False):
+    """The keywords of :func:`hc`, for type checkers (see its docstring)."""
+
+    iterations: Optional[int]
+    alpha: Optional[float]
+    beta: Optional[float]
+    weights: Optional[str]
+    boundary: Optional[str]
+    preset: Optional[str]
+    weld: bool
+    pinned: Optional[Any]
+
+
+class ImplicitOptions(TypedDict, total=False):
+    """The keywords of :func:`implicit`, for type checkers (see its docstring)."""
+
+    step: Optional[float]
+    iterations: Optional[int]
+    tol: Optional[float]
+    max_iter: Optional[int]
+    weights: Optional[str]
+    boundary: Optional[str]
+    volume_constraint: Optional[bool]
+    preset: Optional[str]
+    weld: bool
+    pinned: Optional[Any]
+
+
+class BilateralOptions(TypedDict, total=False):
+    """The keywords of :func:`bilateral`, for type checkers (see its docstring)."""
+
+    iterations: Optional[int]
+    vertex_iterations: Optional[int]
+    sigma_s: Optional[float]
+    sigma_r: Optional[float]
+    weld: bool
+    pinned: Optional[Any]
+
+
+GuidedOptions = BilateralOptions
+# @end generated keywords
 
 
 def laplacian(vertices: Any, faces: Any = None, **options: Unpack[LaplacianOptions]) -> Positions:
     """Explicit Laplacian smoothing: ``x <- x + lamb * (A x - x)``, repeated.
 
-    ``A x`` is the weighted mean of each vertex's neighbours.
-
-    Parameters
-    ----------
-    iterations : int, default 10 (pymeshlab preset: 3)
-        Number of steps (>= 0).
-    lamb : float in [0, 1], default 0.5 (paper preset: 1.0)
-        Step size; 1 moves each vertex all the way to its neighbours' mean. Not used by the
-        pymeshlab preset, whose update is ``(x + S) / (C + 1)``.
-    weights : "uniform", "cotangent" or "distance", default "uniform" (pymeshlab: "cotangent")
-        Neighbour weights. Cotangent and inverse-distance weights are recomputed from the
-        current positions at each step (trimesh's inverse-distance weights are computed once,
-        as trimesh does).
-    boundary : "fixed", "free" or "slide", default "fixed" (pymeshlab: "slide")
-        What vertices on a boundary edge (an edge with one face) do: stay put, average like
-        interior vertices, or average only with their boundary neighbours (sliding along the
-        boundary; pymeshlab's ``boundary=True``).
-    volume_constraint : bool, default False (trimesh preset: True)
-        After each step, rescale about the initial centre of mass to restore the enclosed
-        volume. Skipped on meshes that enclose no volume.
+    ``A x`` is the weighted mean of each vertex's neighbours. The pymeshlab preset takes no
+    ``lamb``: its update is ``(x + S) / (C + 1)``, a full step.
     """
     return _call(laplacian, vertices, faces, options)
-
-
-class TaubinOptions(LaplacianFamilyOptions, total=False):
-    """The keywords of :func:`taubin`, for type checkers (see its docstring)."""
-
-    lamb: Optional[float]
-    mu: Optional[float]
 
 
 def taubin(vertices: Any, faces: Any = None, **options: Unpack[TaubinOptions]) -> Positions:
@@ -199,25 +316,10 @@ def taubin(vertices: Any, faces: Any = None, **options: Unpack[TaubinOptions]) -
     Each iteration is a shrink step ``x += lamb (A x - x)`` then an inflate step
     ``x += mu (A x - x)`` (so 10 iterations are 20 passes, as in pymeshlab and open3d). With
     ``preset="trimesh"``, ``iterations`` counts passes instead: even passes shrink, odd passes
-    inflate, and ``mu`` defaults to -0.5 (trimesh's ``nu=0.5``).
-
-    Parameters
-    ----------
-    iterations : int, default 10
-    lamb : float in [0, 1], default 0.5
-    mu : float in [-1, 0], default -0.53 (trimesh preset: -0.5)
-        Inflate factor; pymeshlab stores both factors as float32, and so does its preset.
-    weights, boundary
-        As in :func:`laplacian` (pymeshlab and trimesh presets: uniform only).
+    inflate, and ``mu`` is trimesh's ``-nu``. The pymeshlab and trimesh presets take uniform
+    weights only.
     """
     return _call(taubin, vertices, faces, options)
-
-
-class HcOptions(LaplacianFamilyOptions, total=False):
-    """The keywords of :func:`hc`, for type checkers (see its docstring)."""
-
-    alpha: Optional[float]
-    beta: Optional[float]
 
 
 def hc(vertices: Any, faces: Any = None, **options: Unpack[HcOptions]) -> Positions:
@@ -231,29 +333,10 @@ def hc(vertices: Any, faces: Any = None, **options: Unpack[HcOptions]) -> Positi
         x <- p - (beta b + (1 - beta) A b)
 
     ``preset="pymeshlab"`` reproduces ``apply_coord_hc_laplacian_smoothing`` instead (no alpha,
-    beta fixed at 0.5, ``x <- q - beta (q - x) + (1 - beta) A (q - x)`` with ``q = A x``; one
-    iteration is one call, and the default is 1).
-
-    Parameters
-    ----------
-    iterations : int, default 10 (pymeshlab preset: 1)
-    alpha : float in [0, 1], default 0.1
-        Pull toward the original positions.
-    beta : float in [0, 1], default 0.5
-        How much of the correction is the vertex's own versus its neighbours' mean.
-    weights, boundary
-        As in :func:`laplacian`.
+    beta fixed at its default, ``x <- q - beta (q - x) + (1 - beta) A (q - x)`` with ``q = A x``;
+    one iteration is one call).
     """
     return _call(hc, vertices, faces, options)
-
-
-class ImplicitOptions(LaplacianFamilyOptions, total=False):
-    """The keywords of :func:`implicit`, for type checkers (see its docstring)."""
-
-    step: Optional[float]
-    tol: Optional[float]
-    max_iter: Optional[int]
-    volume_constraint: Optional[bool]
 
 
 def implicit(vertices: Any, faces: Any = None, **options: Unpack[ImplicitOptions]) -> Positions:
@@ -262,20 +345,8 @@ def implicit(vertices: Any, faces: Any = None, **options: Unpack[ImplicitOptions
     Stable for any step size, so one large step replaces many explicit ones (Desbrun et al.
     1999). The sparse system is solved in parallel by Jacobi-preconditioned BiCGSTAB to a
     relative residual ``tol``; the operator is rebuilt from the current positions at each
-    iteration when the weights depend on them.
-
-    Parameters
-    ----------
-    step : float >= 0, default 1.0 (trimesh preset: 0.5, its ``lamb``)
-        Time step, in units of one explicit step with ``lamb=1``.
-    iterations : int, default 1 (trimesh preset: 10)
-    tol : float in (0, 1), default 1e-10
-        Relative residual at which the solve stops.
-    max_iter : int, default 10000
-        Solver iterations before :class:`toonmesh.ConvergenceError` is raised.
-    weights : "uniform", "cotangent" or "distance", default "uniform"
-    boundary : "fixed" or "free", default "fixed"
-    volume_constraint : bool, default False (trimesh preset: True)
+    iteration when the weights depend on them. The trimesh preset's ``step`` is trimesh's
+    ``lamb``.
     """
     return _call(implicit, vertices, faces, options)
 
@@ -285,36 +356,24 @@ _NORMAL_FILTERING = """
     each face's normal becomes the normalised sum, over the faces sharing a vertex with it
     (itself included), of ``area * exp(-d^2 / (2 sigma_s^2)) * exp(-r^2 / (2 sigma_r^2)) *
     normal``, with ``d`` the distance between face centroids and ``r`` the distance between
-    the two faces' (guidance) normals; ``guided`` also compares the faces' own normals, with
-    0.3 of that weight at the measured width (which they keep even where ``sigma_r`` is given).
-    Faces across a crease have distant normals, so they do not average, and the crease stays
-    sharp. Then the vertices are moved ``vertex_iterations``
-    times to fit the filtered normals (Sun et al. 2007: each vertex moves by the mean of its
-    offsets to its faces' planes); a move that would turn a face against its filtered normal
-    is undone, so no face flips.
+    the two faces' (guidance) normals; ``guided`` also compares the faces' own normals, with a
+    small share of that weight at the measured width (which they keep even where ``sigma_r`` is
+    given). Faces across a crease have distant normals, so they do not average, and the crease
+    stays sharp. Then the vertices are moved ``vertex_iterations`` times to fit the filtered
+    normals (Sun et al. 2007: each vertex moves by the mean of its offsets to its faces'
+    planes); a move that would turn a face against its filtered normal is undone, so no face
+    flips. Boundaries, degenerate and non-manifold faces are allowed: a face with no area has
+    no normal and no weight, and its vertices fit their other faces. The work runs in parallel
+    outside the GIL and gives the same bits for any thread count.
+"""
 
-    Parameters
-    ----------
-    iterations : int >= 0, default 20
-        Passes of normal filtering: more removes stronger noise, at a cost linear in the count.
-    vertex_iterations : int >= 0, default 20
-        Vertex-fitting steps after the normals are filtered (0 returns the input unchanged).
-    sigma_s : float > 0, default 1.0
-        Width of the spatial kernel, in mean edge lengths of the input mesh (so the default
-        works at any scale and resolution).
-    sigma_r : float > 0, optional
-        Width of the range kernel, a distance between unit normals (``2 sin(angle / 2)``: 0.35
-        is about 20 degrees). By default it is measured from the mesh: 0.35 times the 90th
-        percentile, over pairs of faces sharing an edge, of the distance between their normals
-        (which on a noisy part is the noise, creases being a minority of the pairs), clamped to
-        [0.05, 0.6]. Smaller
-        keeps more detail (and noise); larger smooths more (and rounds weaker creases).
+_NORMAL_FILTERING_COMMON = """
+    Parameters shared by both filters
+    ---------------------------------
+    vertices, faces
+        As in :func:`laplacian`.
     pinned : 1-D array of vertex indices, or (N,) bool mask, optional
         Vertices that must not move; they come back bit for bit.
-    weld : bool, default False
-        Filter the welded mesh (vertices at exactly the same position are one vertex), as in
-        the Laplacian smoothers: seams of a textured or flat-shaded mesh neither open nor count
-        as boundaries.
 
     Returns
     -------
@@ -332,22 +391,10 @@ _NORMAL_FILTERING = """
         A face or pinned index outside ``[0, N)``.
     KeyboardInterrupt
         Ctrl-C stops the work between two passes.
-
-    Boundaries, degenerate and non-manifold faces are allowed: a face with no area has no
-    normal and no weight, and its vertices fit their other faces. The work runs in parallel
-    outside the GIL and gives the same bits for any thread count.
 """
 
 
-class NormalFilterOptions(Options, total=False):
-    """The keywords of the normal filters (:func:`bilateral` and :func:`guided`)."""
-
-    vertex_iterations: Optional[int]
-    sigma_s: Optional[float]
-    sigma_r: Optional[float]
-
-
-def bilateral(vertices: Any, faces: Any = None, **options: Unpack[NormalFilterOptions]) -> Positions:
+def bilateral(vertices: Any, faces: Any = None, **options: Unpack[BilateralOptions]) -> Positions:
     """Feature-preserving smoothing by bilateral normal filtering (Zheng et al. 2011).
 
     Removes noise from flat and smoothly curved regions while keeping creases sharp: the range
@@ -358,7 +405,7 @@ def bilateral(vertices: Any, faces: Any = None, **options: Unpack[NormalFilterOp
     return _call(bilateral, vertices, faces, options)
 
 
-def guided(vertices: Any, faces: Any = None, **options: Unpack[NormalFilterOptions]) -> Positions:
+def guided(vertices: Any, faces: Any = None, **options: Unpack[GuidedOptions]) -> Positions:
     """Feature-preserving smoothing by guided normal filtering (Zhang et al. 2015).
 
     As :func:`bilateral`, but the range weights compare guidance normals: at every pass, each
@@ -371,16 +418,16 @@ def guided(vertices: Any, faces: Any = None, **options: Unpack[NormalFilterOptio
     return _call(guided, vertices, faces, options)
 
 
-# each function's keywords, as callers see them (signature), and the documentation of those
-# it shares with its family
-for _f, _options, _shared in (
-    (laplacian, LaplacianOptions, _COMMON),
-    (taubin, TaubinOptions, _COMMON),
-    (hc, HcOptions, _COMMON),
-    (implicit, ImplicitOptions, _COMMON),
-    (bilateral, NormalFilterOptions, _NORMAL_FILTERING),
-    (guided, NormalFilterOptions, _NORMAL_FILTERING),
+# each function's keywords, as callers see them (signature), their lines of its docstring
+# (from the core's description), and the documentation of what it shares with its family
+for _f, _before, _after in (
+    (laplacian, "", _COMMON),
+    (taubin, "", _COMMON),
+    (hc, "", _COMMON),
+    (implicit, "", _COMMON),
+    (bilateral, _NORMAL_FILTERING, _NORMAL_FILTERING_COMMON),
+    (guided, _NORMAL_FILTERING, _NORMAL_FILTERING_COMMON),
 ):
-    _f.__signature__ = _signature(_options)  # type: ignore[union-attr]
-    _f.__doc__ = (_f.__doc__ or "") + _shared
-del _f, _options, _shared
+    _f.__signature__ = _signature(_f.__name__)  # type: ignore[union-attr]
+    _f.__doc__ = (_f.__doc__ or "") + _before + _parameters(_f.__name__) + _after
+del _f, _before, _after

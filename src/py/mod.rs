@@ -33,6 +33,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(shapes::icosphere, m)?,
         wrap_pyfunction!(shapes::grid, m)?,
         wrap_pyfunction!(smooth::_smooth, m)?,
+        wrap_pyfunction!(smooth::_smoothing_description, m)?,
         wrap_pyfunction!(strokes::_pen_strokes, m)?,
         wrap_pyfunction!(strokes::_plotter_order, m)?,
         wrap_pyfunction!(strokes::_svg_document, m)?,

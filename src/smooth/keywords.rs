@@ -1,30 +1,12 @@
-//! The keywords of the smoothing methods described once: each one's name and what it holds, in
-//! the order they are checked, so that a front end reads them by name and hands them over
-//! without listing them again. A keyword not given is the method's default (see `resolve` and
-//! `denoise::resolve`, where each default and range lives).
+//! The keywords of a smoothing method as a front end hands them over: read by the kinds the
+//! method's description (`described`) gives, by name, without listing them again. A keyword not
+//! given is the method's described default (see `resolve` and `denoise::resolve`).
 
 use super::denoise::{self, Filter};
+pub use super::described::{Keyword, Kind};
 use super::options::{self, Args, Method};
-use super::Run;
+use super::{described, Run};
 use crate::error::{Error, Result};
-
-/// What a keyword holds, and so how a front end reads it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
-    Int,
-    Float,
-    Name,
-    Bool,
-}
-
-/// One keyword of a smoothing method.
-#[derive(Clone, Copy, Debug)]
-pub struct Keyword {
-    pub name: &'static str,
-    pub kind: Kind,
-    /// None means the default. `weld` takes no None: it is always given (False by default).
-    pub takes_none: bool,
-}
 
 /// A keyword's value as a front end read it.
 #[derive(Clone, Debug, PartialEq)]
@@ -34,37 +16,6 @@ pub enum Given {
     Name(String),
     Bool(bool),
 }
-
-const fn keyword(name: &'static str, kind: Kind) -> Keyword {
-    Keyword { name, kind, takes_none: true }
-}
-
-const ITERATIONS: Keyword = keyword("iterations", Kind::Int);
-const WELD: Keyword = Keyword { name: "weld", kind: Kind::Bool, takes_none: false };
-
-const LAPLACIAN: &[Keyword] = &[
-    ITERATIONS,
-    WELD,
-    keyword("lamb", Kind::Float),
-    keyword("mu", Kind::Float),
-    keyword("alpha", Kind::Float),
-    keyword("beta", Kind::Float),
-    keyword("step", Kind::Float),
-    keyword("tol", Kind::Float),
-    keyword("max_iter", Kind::Int),
-    keyword("weights", Kind::Name),
-    keyword("boundary", Kind::Name),
-    keyword("volume_constraint", Kind::Bool),
-    keyword("preset", Kind::Name),
-];
-
-const NORMAL_FILTERS: &[Keyword] = &[
-    ITERATIONS,
-    WELD,
-    keyword("vertex_iterations", Kind::Int),
-    keyword("sigma_s", Kind::Float),
-    keyword("sigma_r", Kind::Float),
-];
 
 /// A smoothing method by name: one of the Laplacian family or a normal filter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -81,12 +32,17 @@ impl Smoother {
         }
     }
 
+    /// This method's name as the API spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Smoother::Laplacian(m) => options::name(m),
+            Smoother::Normals(f) => f.name(),
+        }
+    }
+
     /// The keywords this method takes, in the order they are checked.
     pub fn keywords(self) -> &'static [Keyword] {
-        match self {
-            Smoother::Laplacian(_) => LAPLACIAN,
-            Smoother::Normals(_) => NORMAL_FILTERS,
-        }
+        described::method(self.name()).map_or(&[], |d| d.keywords)
     }
 
     /// How this method runs with the keywords `given` (those left out take their defaults),

@@ -10,6 +10,7 @@
 pub mod bicgstab;
 pub mod clean;
 pub mod denoise;
+pub mod described;
 pub mod keywords;
 pub mod meshlab;
 pub mod operator;

@@ -1,9 +1,11 @@
 //! Smoothing options: the names users pass, and the presets that pick defaults and rules.
 //!
 //! Every argument is optional at this level; `resolve` fills what the caller left out with the
-//! chosen preset's default and refuses combinations the preset does not have, naming the
+//! chosen preset's default, checks each value against its range (both read from the method's
+//! description, `described`) and refuses combinations the preset does not have, naming the
 //! argument, so a preset never silently computes something its library would not.
 
+use super::described::{self, Described, Keyword, Value};
 use crate::error::{Error, Result};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -42,22 +44,41 @@ pub enum Preset {
     Paper,
 }
 
-/// What the caller passed (None: use the preset's default).
-#[derive(Debug, Clone, Default)]
-pub struct Args {
-    pub iterations: Option<i64>,
-    pub lamb: Option<f64>,
-    pub mu: Option<f64>,
-    pub alpha: Option<f64>,
-    pub beta: Option<f64>,
-    pub step: Option<f64>,
-    pub tol: Option<f64>,
-    pub max_iter: Option<i64>,
-    pub weights: Option<String>,
-    pub boundary: Option<String>,
-    pub volume_constraint: Option<bool>,
-    pub preset: Option<String>,
-    pub weld: Option<bool>,
+/// Declares `Args`, what the caller passed (None: use the preset's default), and `Args::given`,
+/// the names of the keywords given, so that each name is written once.
+macro_rules! args {
+    ($($field:ident: $t:ty,)*) => {
+        /// What the caller passed (None: use the preset's default).
+        #[derive(Debug, Clone, Default)]
+        pub struct Args {
+            $(pub $field: Option<$t>,)*
+        }
+
+        impl Args {
+            /// The names of the keywords given.
+            fn given(&self) -> impl Iterator<Item = &'static str> + '_ {
+                [$((stringify!($field), self.$field.is_some())),*]
+                    .into_iter()
+                    .filter_map(|(name, given)| given.then_some(name))
+            }
+        }
+    };
+}
+
+args! {
+    iterations: i64,
+    lamb: f64,
+    mu: f64,
+    alpha: f64,
+    beta: f64,
+    step: f64,
+    tol: f64,
+    max_iter: i64,
+    weights: String,
+    boundary: String,
+    volume_constraint: bool,
+    preset: String,
+    weld: bool,
 }
 
 /// Fully resolved options.
@@ -120,28 +141,79 @@ pub fn parse_method(s: &str) -> Result<Method> {
     parse("method", s, &METHODS)
 }
 
-fn name(m: Method) -> &'static str {
+pub fn name(m: Method) -> &'static str {
     METHODS.iter().find(|(_, x)| *x == m).map_or("?", |(n, _)| n)
 }
 
-fn preset_name(p: Preset) -> &'static str {
-    match p {
-        Preset::Clean => "None",
-        Preset::Trimesh => "'trimesh'",
-        Preset::Pymeshlab => "'pymeshlab'",
-        Preset::Paper => "'paper'",
+fn preset_name(p: Preset) -> String {
+    described::preset_name(p).map_or("None".into(), |n| format!("'{n}'"))
+}
+
+/// Why a method lacks a preset.
+fn lacks(preset: Preset, method: Method) -> String {
+    match preset {
+        Preset::Paper => "the paper describes only the plain Laplacian".into(),
+        _ => format!("{} has no {} smoothing", described::preset_name(preset).unwrap_or("?"), name(method)),
     }
 }
 
-fn finite(arg: &str, v: f64, lo: f64, hi: f64) -> Result<f64> {
-    if v.is_finite() && v >= lo && v <= hi {
-        Ok(v)
-    } else {
-        Err(Error::invalid(arg, format!("must be a finite number in [{lo}, {hi}], got {v}")))
+/// A method's keywords under a preset: each given value checked against its described range,
+/// or the described default. A number the method does not take (never given: `resolve`
+/// refuses it) is read from the first method of the family that does, so that every field of
+/// a `Plan` holds a described value; a flag it does not take is off.
+struct Keywords {
+    method: &'static Described,
+    preset: Preset,
+}
+
+impl Keywords {
+    fn keyword(&self, name: &str) -> Result<&'static Keyword> {
+        let family = METHODS.iter().filter_map(|(n, _)| described::method(n));
+        self.method
+            .keyword(name)
+            .or_else(|| family.into_iter().find_map(|m| m.keyword(name)))
+            .ok_or_else(|| Error::Internal(format!("{name}: no smoothing method describes it")))
+    }
+
+    fn default(&self, name: &str) -> Result<Value> {
+        Ok(self.keyword(name)?.default_for(self.preset))
+    }
+
+    fn int(&self, name: &str, given: Option<i64>) -> Result<i64> {
+        let k = self.keyword(name)?;
+        k.check_int(self.preset, given.map_or_else(|| k.default_for(self.preset).int(name), Ok)?)
+    }
+
+    fn float(&self, name: &str, given: Option<f64>) -> Result<f64> {
+        let k = self.keyword(name)?;
+        k.check_float(self.preset, given.map_or_else(|| k.default_for(self.preset).float(name), Ok)?)
+    }
+
+    fn choice(&self, name: &str, given: &Option<String>) -> Result<&'static str> {
+        let k = self.keyword(name)?;
+        match given {
+            Some(s) => k.choose(s),
+            None => k.default_for(self.preset).name(name),
+        }
+    }
+
+    /// A flag's value: off where the method does not take it.
+    fn flag(&self, name: &str, given: Option<bool>) -> Result<bool> {
+        match self.method.keyword(name) {
+            None => Ok(false),
+            Some(k) => given.map_or_else(|| k.default_for(self.preset).flag(name), Ok),
+        }
     }
 }
 
+/// The plan of `method` with the keywords `a` gives, the others at their described defaults
+/// (`described`), each checked against its described range.
 pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
+    let described = described::method(name(method))
+        .ok_or_else(|| Error::Internal(format!("{}: not described", name(method))))?;
+    if let Some(k) = a.given().find(|k| described.keyword(k).is_none()) {
+        return Err(Error::wrong_type(k, format!("not an option of {}", name(method))));
+    }
     let preset = match &a.preset {
         None => Preset::Clean,
         Some(s) => parse_preset(s)?,
@@ -149,53 +221,17 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
     let unsupported = |arg: &str, why: &str| {
         Error::invalid(arg, format!("{}(preset={}) {why}", name(method), preset_name(preset)))
     };
+    if !described.has(preset) {
+        return Err(unsupported("preset", &format!("does not exist: {}", lacks(preset, method))));
+    }
     use Method::*;
     use Preset::*;
-    match (method, preset) {
-        (Taubin | Hc | Implicit, Paper) => {
-            return Err(unsupported("preset", "does not exist: the paper describes only the plain Laplacian"))
-        }
-        (Implicit, Pymeshlab) => {
-            return Err(unsupported("preset", "does not exist: pymeshlab has no implicit smoothing"))
-        }
-        _ => {}
-    }
+    let k = Keywords { method: described, preset };
 
-    // Defaults per preset.
-    let iterations_default = match (method, preset) {
-        (Laplacian, Pymeshlab) => 3,
-        (Hc, Pymeshlab) => 1,
-        (Implicit, Clean) => 1,
-        _ => 10,
-    };
-    let lamb_default = match (method, preset) {
-        // VCG's update (x + S) / (C + 1) is a full step to its average.
-        (Laplacian, Paper | Pymeshlab) => 1.0,
-        _ => 0.5,
-    };
-    let mu_default = if preset == Trimesh { -0.5 } else { -0.53 };
-    let weights_default =
-        if (method, preset) == (Laplacian, Pymeshlab) { Weights::Cotangent } else { Weights::Uniform };
-    let boundary_default = match preset {
-        Pymeshlab => Boundary::Slide,
-        Paper | Trimesh => Boundary::Free,
-        Clean => Boundary::Fixed,
-    };
-    let volume_default = preset == Trimesh && matches!(method, Laplacian | Implicit);
-
-    let iterations = a.iterations.unwrap_or(iterations_default);
-    if !(0..=1_000_000).contains(&iterations) {
-        return Err(Error::invalid("iterations", format!("must be in [0, 1000000], got {iterations}")));
-    }
-    let weights = match &a.weights {
-        None => weights_default,
-        Some(s) => parse_weights(s)?,
-    };
-    let boundary = match &a.boundary {
-        None => boundary_default,
-        Some(s) => parse_boundary(s)?,
-    };
-    let volume_constraint = a.volume_constraint.unwrap_or(volume_default);
+    let iterations = k.int("iterations", a.iterations)?;
+    let weights = parse_weights(k.choice("weights", &a.weights)?)?;
+    let boundary = parse_boundary(k.choice("boundary", &a.boundary)?)?;
+    let volume_constraint = k.flag("volume_constraint", a.volume_constraint)?;
 
     // What each preset does not have.
     match preset {
@@ -230,8 +266,13 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
                     "supports 'slide' (boundary=True) and, for laplacian, 'free' (boundary=False)",
                 ));
             }
-            if method == Hc && (a.alpha.is_some() || a.beta.is_some_and(|b| b != 0.5)) {
-                return Err(unsupported("alpha", "has no alpha, and beta is fixed at 0.5"));
+            // VCG's HC has no alpha and a fixed beta: the default
+            let fixed_beta = k.default("beta")?.float("beta")?;
+            if method == Hc && (a.alpha.is_some() || a.beta.is_some_and(|b| b != fixed_beta)) {
+                return Err(unsupported(
+                    "alpha",
+                    &format!("has no alpha, and beta is fixed at {fixed_beta}"),
+                ));
             }
         }
         Paper => {
@@ -239,36 +280,19 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
                 return Err(unsupported("weights", "uses the plain neighbour mean (uniform)"));
             }
         }
-        Clean => {
-            if method == Implicit && boundary == Boundary::Slide {
-                return Err(unsupported("boundary", "supports 'fixed' and 'free'"));
-            }
-        }
-    }
-    if volume_constraint && !matches!(method, Laplacian | Implicit) {
-        return Err(unsupported("volume_constraint", "is only available for laplacian and implicit"));
+        Clean => {}
     }
     if volume_constraint && matches!(preset, Pymeshlab | Paper) {
         return Err(unsupported("volume_constraint", "has no volume constraint"));
     }
 
-    let lamb = match method {
-        Laplacian if preset == Trimesh => finite("lamb", a.lamb.unwrap_or(lamb_default), -1e6, 1e6)?,
-        _ => finite("lamb", a.lamb.unwrap_or(lamb_default), 0.0, 1.0)?,
-    };
-    let mu = finite("mu", a.mu.unwrap_or(mu_default), -1.0, 0.0)?;
-    let alpha = finite("alpha", a.alpha.unwrap_or(0.1), 0.0, 1.0)?;
-    let beta = finite("beta", a.beta.unwrap_or(0.5), 0.0, 1.0)?;
-    let step_default = if preset == Trimesh { lamb } else { 1.0 };
-    let step = finite("step", a.step.unwrap_or(step_default), 0.0, 1e12)?;
-    let tol = a.tol.unwrap_or(1e-10);
-    if !(tol.is_finite() && tol > 0.0 && tol < 1.0) {
-        return Err(Error::invalid("tol", format!("must be in (0, 1), got {tol}")));
-    }
-    let max_iter = a.max_iter.unwrap_or(10_000);
-    if !(1..=10_000_000).contains(&max_iter) {
-        return Err(Error::invalid("max_iter", format!("must be in [1, 10000000], got {max_iter}")));
-    }
+    let lamb = k.float("lamb", a.lamb)?;
+    let mu = k.float("mu", a.mu)?;
+    let alpha = k.float("alpha", a.alpha)?;
+    let beta = k.float("beta", a.beta)?;
+    let step = k.float("step", a.step)?;
+    let tol = k.float("tol", a.tol)?;
+    let max_iter = k.int("max_iter", a.max_iter)?;
     let (lamb, mu) = if preset == Pymeshlab && method == Taubin {
         // VCG stores both factors as float32.
         (lamb as f32 as f64, mu as f32 as f64)
@@ -289,7 +313,7 @@ pub fn resolve(method: Method, a: &Args) -> Result<Plan> {
         weights,
         boundary,
         volume_constraint,
-        weld: a.weld.unwrap_or(false),
+        weld: k.flag("weld", a.weld)?,
     })
 }
 

@@ -1,7 +1,8 @@
 """Command-line flags made from the core's description of its settings.
 
 A flag that sets a described setting takes its type, choices, default and help from the class's
-``describe()``, so the core stays the one place where they are written. Ranges are the core's
+``describe()`` (or, for ``toonmesh smooth``, from the smoothing methods' description), so the
+core stays the one place where they are written. Ranges are the core's
 to check: an error it raises naming the setting (its message starts ``name:``) is reported as
 an error of the flag that set it (:func:`errors_as_flags`), as argparse reports its own.
 """
@@ -36,9 +37,15 @@ def styles(cls: Any) -> Tuple[str, ...]:
     return tuple(c["name"].replace("_", "-") for c in cls.describe()["constructors"] if c["name"])
 
 
-def setting_help(param: Dict[str, Any], before: str = "", after: str = "") -> str:
-    """The described help with the default argparse fills in (``%`` escaped for it)."""
-    shown = "%(default)g" if param.get("kind") == "float" and isinstance(param.get("default"), float) else "%(default)s"
+def setting_help(param: Dict[str, Any], before: str = "", after: str = "", shown: str = "") -> str:
+    """The described help with the default argparse fills in (``%`` escaped for it), or with
+    ``shown`` where the default is told in words (one per method, say)."""
+    if shown:
+        shown = shown.replace("%", "%%")
+    elif param.get("kind") == "float" and isinstance(param.get("default"), float):
+        shown = "%(default)g"
+    else:
+        shown = "%(default)s"
     return f"{before}{param['help'].replace('%', '%%')}{after} (default: {shown})"
 
 
@@ -50,21 +57,39 @@ def add_described(
     *,
     constructor: str = "",
     default: Any = CORE_DEFAULT,
-    extra_choices: Sequence[str] = (),
-    help_before: str = "",
-    help_after: str = "",
     also_sets: Sequence[Tuple[Any, str]] = (),
-    **argparse_options: Any,
+    **options: Any,
 ) -> argparse.Action:
-    """Adds ``flag`` for the described parameter ``name`` of ``cls``: its type from the kind
-    (a bool is ``--flag/--no-flag`` unless ``action`` says otherwise), its choices (after
-    ``extra_choices``, the command line's own words such as ``none``), its default (the
-    described one unless ``default`` is given) and its help. ``also_sets``: more
+    """Adds ``flag`` for the described parameter ``name`` of ``cls`` (see :func:`add_param`;
+    its default the described one unless ``default`` is given). ``also_sets``: more
     ``(class, setting)`` pairs the flag's value reaches, for :func:`errors_as_flags`."""
     param = described(cls, name, constructor)
     if default is not CORE_DEFAULT:
         param["default"] = default
-    options: Dict[str, Any] = dict(default=param["default"], help=setting_help(param, help_before, help_after))
+    action = add_param(parser, flag, param, **options)
+    sets(parser, action, (cls, name), *also_sets)
+    return action
+
+
+def add_param(
+    parser: argparse.ArgumentParser,
+    flag: str,
+    param: Dict[str, Any],
+    *,
+    extra_choices: Sequence[str] = (),
+    help_before: str = "",
+    help_after: str = "",
+    shown_default: str = "",
+    **argparse_options: Any,
+) -> argparse.Action:
+    """Adds ``flag`` for a parameter as the core describes it (a dict of ``kind``, ``choices``,
+    ``default`` and ``help``): its type from the kind (a bool is ``--flag/--no-flag`` unless
+    ``action`` says otherwise), its choices (after ``extra_choices``, the command line's own
+    words such as ``none``), its default and its help (the default shown as ``shown_default``
+    says, if given)."""
+    options: Dict[str, Any] = dict(
+        default=param["default"], help=setting_help(param, help_before, help_after, shown_default)
+    )
     kind = param["kind"]
     if kind == "bool":
         options["action"] = argparse.BooleanOptionalAction
@@ -73,9 +98,7 @@ def add_described(
     if param.get("choices"):
         options["choices"] = tuple(extra_choices) + tuple(param["choices"])
     options.update(argparse_options)
-    action = parser.add_argument(flag, **options)
-    sets(parser, action, (cls, name), *also_sets)
-    return action
+    return parser.add_argument(flag, **options)
 
 
 def sets(parser: argparse.ArgumentParser, action: argparse.Action, *settings: Tuple[Any, str]) -> None:

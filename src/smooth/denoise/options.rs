@@ -4,6 +4,8 @@
 //! measured noise (`noise`), so the defaults need no tuning across scales and noise levels.
 
 use crate::error::{Error, Result};
+use crate::smooth::described::{self, Value};
+use crate::smooth::options::Preset;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Filter {
@@ -16,10 +18,14 @@ pub enum Filter {
 impl Filter {
     /// The normal filter a smoothing method names (None: a method of the Laplacian family).
     pub fn of_method(method: &str) -> Option<Filter> {
-        match method {
-            "bilateral" => Some(Filter::Bilateral),
-            "guided" => Some(Filter::Guided),
-            _ => None,
+        [Filter::Bilateral, Filter::Guided].into_iter().find(|f| f.name() == method)
+    }
+
+    /// The smoothing method's name of this filter.
+    pub fn name(self) -> &'static str {
+        match self {
+            Filter::Bilateral => "bilateral",
+            Filter::Guided => "guided",
         }
     }
 }
@@ -48,9 +54,6 @@ pub struct Options {
     pub weld: bool,
 }
 
-pub const DEFAULT_ITERATIONS: u32 = 20;
-pub const DEFAULT_VERTEX_ITERATIONS: u32 = 20;
-pub const DEFAULT_SIGMA_S: f64 = 1.0;
 /// The range width is this many times the measured normal noise (`noise`: the 90th percentile
 /// of |n_i - n_j| over neighbouring faces), within [SIGMA_R_MIN, SIGMA_R_MAX].
 pub const SIGMA_R_PER_NOISE: f64 = 0.35;
@@ -66,33 +69,32 @@ pub const SIGMA_R_MAX: f64 = 0.6;
 /// `sigma_r` narrows the guidance's weight alone.
 pub const GUIDED_OWN_NORMALS: f64 = 0.3;
 
-/// The most passes or steps accepted: far beyond any useful count, low enough to refuse typos.
-const MAX_ITERATIONS: i64 = 1_000_000;
-
-fn count(name: &str, v: Option<i64>, default: u32) -> Result<u32> {
-    match v {
-        None => Ok(default),
-        Some(n) if (0..=MAX_ITERATIONS).contains(&n) => Ok(n as u32),
-        Some(n) => Err(Error::invalid(name, format!("must be in [0, {MAX_ITERATIONS}], got {n}"))),
-    }
-}
-
-fn positive(name: &str, v: Option<f64>) -> Result<Option<f64>> {
-    match v {
-        Some(x) if !(x > 0.0 && x.is_finite()) => {
-            Err(Error::invalid(name, format!("must be a finite number > 0, got {x}")))
-        }
-        _ => Ok(v),
-    }
-}
-
+/// The options of `filter` with the keywords `a` gives, the others at their described
+/// defaults (`described`), each checked against its described range.
 pub fn resolve(filter: Filter, a: &Args) -> Result<Options> {
+    let name = filter.name();
+    let described =
+        described::method(name).ok_or_else(|| Error::Internal(format!("{name}: not described")))?;
+    let keyword =
+        |k: &str| described.keyword(k).ok_or_else(|| Error::Internal(format!("{name}.{k}: not described")));
+    let count = |k: &str, given: Option<i64>| -> Result<u32> {
+        let kw = keyword(k)?;
+        Ok(kw.check_int(Preset::Clean, given.map_or_else(|| kw.default.int(k), Ok)?)? as u32)
+    };
+    let width = |k: &str, given: Option<f64>| -> Result<Option<f64>> {
+        let kw = keyword(k)?;
+        match (given, kw.default) {
+            (Some(x), _) => kw.check_float(Preset::Clean, x).map(Some),
+            (None, Value::Measured(_)) => Ok(None),
+            (None, d) => d.float(k).map(Some),
+        }
+    };
     Ok(Options {
         filter,
-        iterations: count("iterations", a.iterations, DEFAULT_ITERATIONS)?,
-        vertex_iterations: count("vertex_iterations", a.vertex_iterations, DEFAULT_VERTEX_ITERATIONS)?,
-        sigma_s: positive("sigma_s", a.sigma_s)?.unwrap_or(DEFAULT_SIGMA_S),
-        sigma_r: positive("sigma_r", a.sigma_r)?,
+        iterations: count("iterations", a.iterations)?,
+        vertex_iterations: count("vertex_iterations", a.vertex_iterations)?,
+        sigma_s: width("sigma_s", a.sigma_s)?.ok_or_else(|| Error::Internal("sigma_s: measured".into()))?,
+        sigma_r: width("sigma_r", a.sigma_r)?,
         weld: a.weld,
     })
 }
