@@ -6,6 +6,7 @@ committed stub is what scripts/stubs.py writes from the description."""
 from __future__ import annotations
 
 import copy
+import math
 import pickle
 import subprocess
 import sys
@@ -82,7 +83,7 @@ def _another(field: Dict[str, Any], now: Any) -> Any:
     if kind == "bool":
         return not now
     if kind in ("float", "int"):
-        lo, hi = field["min"], field["max"]
+        lo, hi = field["slider"]
         new = lo + 0.37 * (hi - lo) if kind == "float" else int(lo + (hi - lo) // 3)
         return new if new != now else None
     if kind == "choice":
@@ -149,6 +150,10 @@ def test_the_description_is_the_class(cls):
         assert f["help"] and f["kind"], f
         if f["kind"] in ("float", "int"):
             assert f["min"] < f["max"], f
+            # a control spans finite numbers within the rule
+            lo, hi = f["slider"]
+            assert math.isfinite(lo) and math.isfinite(hi) and f["min"] <= lo < hi <= f["max"], f
+            assert len(f["exclusive"]) == 2 and all(isinstance(e, bool) for e in f["exclusive"]), f
 
 
 def test_every_settings_class_is_the_cores_and_exported():

@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyTuple};
 
 use crate::error::{Error, Result};
-use crate::render::settings::{self as described, Described, Setting, Value};
+use crate::render::settings::{self as described, Declared, Described, Setting, Value};
 
 pub use classes::{kang_table, Camera as PyCamera, Material as PyMaterial, RenderOptions as PyRenderOptions};
 
