@@ -8,8 +8,8 @@ use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::effects::shadows::settings::Shadows;
 
 use crate::error::field;
-use crate::render::settings::declare::declared_fields;
-use crate::render::settings::{mismatch, named, not_here, Constructor, Described, FieldValue, Value};
+use crate::render::settings::declare::{declared_fields, value_field};
+use crate::render::settings::{mismatch, named, not_here, Constructor, Described, Value};
 
 /// Most lights one scene may have (the shader's fixed-size array).
 pub const MAX_LIGHTS: usize = 8;
@@ -79,18 +79,9 @@ declared_fields! {
     }
 }
 
-/// A field of lights (`RenderOptions.lights`).
-impl FieldValue for Vec<Light> {
-    fn to_value(&self) -> Value {
-        Value::Lights(self.clone())
-    }
-
-    fn from_value(field: &str, value: Value) -> Result<Self> {
-        match value {
-            Value::Lights(l) => Ok(l),
-            other => Err(mismatch(field, &other)),
-        }
-    }
+// a field of lights (`RenderOptions.lights`)
+value_field! {
+    Vec<Light> => Lights,
 }
 
 /// The fields that live in the kind.

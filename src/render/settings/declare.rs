@@ -88,14 +88,31 @@ impl FieldValue for u32 {
     }
 }
 
-impl FieldValue for bool {
-    fn to_value(&self) -> Value {
-        Value::Bool(*self)
-    }
+/// `FieldValue` for a type that one variant of `Value` holds as it is.
+macro_rules! value_field {
+    ($($ty:ty => $variant:ident,)*) => {$(
+        impl $crate::render::settings::FieldValue for $ty {
+            fn to_value(&self) -> $crate::render::settings::Value {
+                $crate::render::settings::Value::$variant(self.clone())
+            }
 
-    fn from_value(field: &str, value: Value) -> Result<Self> {
-        value.bool(field)
-    }
+            fn from_value(field: &str, value: $crate::render::settings::Value) -> $crate::error::Result<Self> {
+                match value {
+                    $crate::render::settings::Value::$variant(x) => Ok(x),
+                    other => Err($crate::render::settings::mismatch(field, &other)),
+                }
+            }
+        }
+    )*};
+}
+pub(crate) use value_field;
+
+value_field! {
+    bool => Bool,
+    // a colour or a point
+    [f64; 3] => Triple,
+    GreyImage => Image,
+    [[f64; 4]; 4] => Matrix,
 }
 
 /// A field whose accessors take any form of its value (a flag or a name for a setting).
@@ -106,30 +123,6 @@ impl FieldValue for Value {
 
     fn from_value(_: &str, value: Value) -> Result<Self> {
         Ok(value)
-    }
-}
-
-/// A colour or a point.
-impl FieldValue for [f64; 3] {
-    fn to_value(&self) -> Value {
-        Value::Triple(*self)
-    }
-
-    fn from_value(field: &str, value: Value) -> Result<Self> {
-        value.triple(field)
-    }
-}
-
-impl FieldValue for GreyImage {
-    fn to_value(&self) -> Value {
-        Value::Image(self.clone())
-    }
-
-    fn from_value(field: &str, value: Value) -> Result<Self> {
-        match value {
-            Value::Image(g) => Ok(g),
-            other => Err(mismatch(field, &other)),
-        }
     }
 }
 
@@ -152,6 +145,42 @@ impl<T: FieldValue> FieldValue for Option<T> {
 
     fn from_value(field: &str, value: Value) -> Result<Self> {
         T::from_optional(field, value)
+    }
+}
+
+/// A colour with alpha, kept as f32 (read back as its shortest decimal).
+impl FieldValue for [f32; 4] {
+    fn to_value(&self) -> Value {
+        Value::Rgba(self.map(|c| format!("{c}").parse().unwrap_or(c as f64)))
+    }
+
+    fn from_value(field: &str, value: Value) -> Result<Self> {
+        match value {
+            Value::Rgba(c) => Ok(c.map(|x| x as f32)),
+            other => Err(mismatch(field, &other)),
+        }
+    }
+}
+
+/// A name.
+impl FieldValue for String {
+    fn to_value(&self) -> Value {
+        Value::Text(self.clone())
+    }
+
+    fn from_value(field: &str, value: Value) -> Result<Self> {
+        value.text(field)
+    }
+}
+
+/// A name written by the constructor (a light's kind): read only.
+impl FieldValue for &'static str {
+    fn to_value(&self) -> Value {
+        Value::Text(self.to_string())
+    }
+
+    fn from_value(field: &str, _: Value) -> Result<Self> {
+        Err(Error::invalid(field, "is set by the constructor that makes the value"))
     }
 }
 
@@ -284,56 +313,6 @@ macro_rules! described {
 }
 pub(crate) use described;
 
-/// A 4x4 matrix.
-impl FieldValue for [[f64; 4]; 4] {
-    fn to_value(&self) -> Value {
-        Value::Matrix(*self)
-    }
-
-    fn from_value(field: &str, value: Value) -> Result<Self> {
-        match value {
-            Value::Matrix(m) => Ok(m),
-            other => Err(mismatch(field, &other)),
-        }
-    }
-}
-
-/// A colour with alpha, kept as f32 (read back as its shortest decimal).
-impl FieldValue for [f32; 4] {
-    fn to_value(&self) -> Value {
-        Value::Rgba(self.map(|c| format!("{c}").parse().unwrap_or(c as f64)))
-    }
-
-    fn from_value(field: &str, value: Value) -> Result<Self> {
-        match value {
-            Value::Rgba(c) => Ok(c.map(|x| x as f32)),
-            other => Err(mismatch(field, &other)),
-        }
-    }
-}
-
-/// A name.
-impl FieldValue for String {
-    fn to_value(&self) -> Value {
-        Value::Text(self.clone())
-    }
-
-    fn from_value(field: &str, value: Value) -> Result<Self> {
-        value.text(field)
-    }
-}
-
-/// A name written by the constructor (a light's kind): read only.
-impl FieldValue for &'static str {
-    fn to_value(&self) -> Value {
-        Value::Text(self.to_string())
-    }
-
-    fn from_value(field: &str, _: Value) -> Result<Self> {
-        Err(Error::invalid(field, "is set by the constructor that makes the value"))
-    }
-}
-
 /// `Declared` for a type whose fields are not all stored as they are described (a light's
 /// direction lives in its kind): each field's line gives its type, how it is reached, its kind,
 /// help and flags, as `settings!`'s lines do:
@@ -342,7 +321,7 @@ impl FieldValue for &'static str {
 /// declared_fields! {
 ///     Light {
 ///         kind: &'static str [get kind_name] => choice(&["directional", "point"]), "...", fixed;
-///         direction: Option<[f64; 3]> [get direction, set set_direction] => vec3(), "...", optional;
+///         direction: Option<[f64; 3]> [get placed, set set_placed] => vec3(), "...", optional;
 ///         color: Srgb [.color] => color(), "the light's sRGB colour";
 ///     }
 /// }

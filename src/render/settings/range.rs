@@ -95,11 +95,17 @@ impl Range {
         }
     }
 
-    /// Why `x` is refused.
+    /// Why `x` is refused by the range.
     pub fn refusal(&self, x: f64) -> String {
+        format!("must be {}, got {x}", self.text())
+    }
+
+    /// Why `x` is refused by the whole rule ("must be a power of two in [64, 8192]"), for the
+    /// `validate` that checks its part that is not a range.
+    pub fn rule_refusal(&self, x: f64) -> String {
         match self.rule {
-            Some(rule) => format!("must be {} ({rule}), got {x}", self.text()),
-            None => format!("must be {}, got {x}", self.text()),
+            Some(rule) => format!("must be {rule} {}, got {x}", self.text()),
+            None => self.refusal(x),
         }
     }
 
@@ -132,7 +138,8 @@ mod tests {
         assert!(!Range::finite().contains(f64::NAN) && Range::finite().contains(-1e300));
         assert_eq!(Range::above(0.0).refusal(0.0), "must be finite and > 0, got 0");
         let size = Range::closed(64.0, 8192.0).rule("a power of two");
-        assert_eq!(size.refusal(32.0), "must be in [64, 8192] (a power of two), got 32");
+        assert_eq!(size.refusal(32.0), "must be in [64, 8192], got 32");
+        assert_eq!(size.rule_refusal(1000.0), "must be a power of two in [64, 8192], got 1000");
         assert_eq!(Range::at_least(0.0).slider(0.0, 8.0).slider_bounds(), [0.0, 8.0]);
     }
 }

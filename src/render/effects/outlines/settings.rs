@@ -23,8 +23,6 @@ use super::stroke_width::{StrokeWidth, MAX_TAPER};
 
 /// Width of lines in output pixels when none is given.
 pub const DEFAULT_WIDTH: f32 = 1.5;
-/// Ink colour when none is given (sRGB).
-pub const DEFAULT_INK: Srgb = [0.0, 0.0, 0.0];
 /// Widest line, in output pixels.
 pub const MAX_WIDTH: f32 = 64.0;
 /// Hidden-line offset in pixel footprints (see `Outlines::depth_offset`).
@@ -87,7 +85,8 @@ settings! {
     /// How one kind of line is drawn.
     #[derive(Clone, Copy, Debug, PartialEq)]
     pub struct LineStyle {
-        pub color: Srgb = DEFAULT_INK => color(), "the ink's sRGB colour";
+        /// Black when none is given.
+        pub color: Srgb = [0.0; 3] => color(), "the ink's sRGB colour";
         /// Full width in output pixels (the same at every resolution and supersampling factor).
         /// Image-space edges are one pixel wide whatever this says.
         pub width: f32 = DEFAULT_WIDTH => float(WIDTH_RULE),

@@ -62,7 +62,7 @@ impl Shadows {
     pub fn validate(&self, prefix: &str) -> Result<()> {
         check_bounds(self, prefix)?;
         if !self.size.is_power_of_two() {
-            return Err(Error::invalid(field(prefix, "size"), SIZE_RULE.refusal(self.size as f64)));
+            return Err(Error::invalid(field(prefix, "size"), SIZE_RULE.rule_refusal(self.size as f64)));
         }
         Ok(())
     }
