@@ -180,3 +180,34 @@ def test_unknown_and_misplaced_arguments_are_named():
 def test_the_stub_is_what_the_generator_writes():
     r = subprocess.run([sys.executable, str(ROOT / "scripts" / "stubs.py"), "--check"], capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr
+
+
+def test_a_field_the_constructor_does_not_take_is_written_as_a_replace():
+    for changed in (dict(ambient="#111111"), dict(specular="#222222"), dict(ambient="#111111", specular="#333333")):
+        m = tm.Material.bands("#888888").replace(**changed)
+        text = repr(m)
+        assert text.startswith("Material.bands(") and ".replace(" in text, text
+        assert eval(text, vars(tm)) == m
+    # a value its constructor makes as it is needs no replace
+    assert ".replace(" not in repr(tm.Material.bands("#888888"))
+
+
+def test_every_number_field_is_refused_outside_its_rule_naming_it():
+    for cls in CLASSES:
+        for f in cls.describe()["fields"]:
+            if f["kind"] != "float" or f["fixed"]:
+                continue
+            for c in cls.describe()["constructors"]:
+                make = cls if not c["name"] else getattr(cls, c["name"])
+                value = make(*[(0.0, 0.0, 5.0)] * c["required"])
+                if getattr(value, f["name"]) is None and not f["optional"]:
+                    continue
+                try:
+                    value.replace(**{f["name"]: f["slider"][0]})
+                except ValueError:
+                    continue  # this value has no such field (a fitted camera's fov_y on an orthographic one)
+                for bad in (float("nan"), f["max"] if f["exclusive"][1] else f["max"] + 1.0):
+                    if math.isinf(bad) and not f["exclusive"][1]:
+                        continue
+                    with pytest.raises(ValueError, match=f["name"]):
+                        value.replace(**{f["name"]: bad})
