@@ -15,9 +15,15 @@ pub fn listed<S: AsRef<str>>(items: &[S]) -> String {
     }
 }
 
+/// An enum whose values go by name (`named_enum!`), for code that takes any of them.
+pub trait Named: Copy + Sized + 'static {
+    fn name(self) -> &'static str;
+    fn parse(arg: &str, s: &str) -> crate::error::Result<Self>;
+}
+
 /// An enum whose variants have names: `NAMES` (in variant order), `name()`, and
-/// `parse(arg, name)`, whose error names the argument and the names it takes. Serialised by
-/// name.
+/// `parse(arg, name)`, whose error names the argument and the names it takes (and `Named`).
+/// Serialised by name.
 #[macro_export]
 macro_rules! named_enum {
     ($(#[$meta:meta])* pub enum $enum:ident { $($(#[$vmeta:meta])* $variant:ident = $name:literal,)* }) => {
@@ -42,6 +48,16 @@ macro_rules! named_enum {
                         format!("must be {}, got {other:?}", $crate::names::one_of(Self::NAMES)),
                     )),
                 }
+            }
+        }
+
+        impl $crate::names::Named for $enum {
+            fn name(self) -> &'static str {
+                $enum::name(self)
+            }
+
+            fn parse(arg: &str, s: &str) -> $crate::error::Result<Self> {
+                $enum::parse(arg, s)
             }
         }
     };

@@ -6,6 +6,7 @@ committed stub is what scripts/stubs.py writes from the description."""
 from __future__ import annotations
 
 import copy
+import math
 import pickle
 import subprocess
 import sys
@@ -82,7 +83,7 @@ def _another(field: Dict[str, Any], now: Any) -> Any:
     if kind == "bool":
         return not now
     if kind in ("float", "int"):
-        lo, hi = field["min"], field["max"]
+        lo, hi = field["slider"]
         new = lo + 0.37 * (hi - lo) if kind == "float" else int(lo + (hi - lo) // 3)
         return new if new != now else None
     if kind == "choice":
@@ -149,6 +150,10 @@ def test_the_description_is_the_class(cls):
         assert f["help"] and f["kind"], f
         if f["kind"] in ("float", "int"):
             assert f["min"] < f["max"], f
+            # a control spans finite numbers within the rule
+            lo, hi = f["slider"]
+            assert math.isfinite(lo) and math.isfinite(hi) and f["min"] <= lo < hi <= f["max"], f
+            assert len(f["exclusive"]) == 2 and all(isinstance(e, bool) for e in f["exclusive"]), f
 
 
 def test_every_settings_class_is_the_cores_and_exported():
@@ -175,3 +180,34 @@ def test_unknown_and_misplaced_arguments_are_named():
 def test_the_stub_is_what_the_generator_writes():
     r = subprocess.run([sys.executable, str(ROOT / "scripts" / "stubs.py"), "--check"], capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr
+
+
+def test_a_field_the_constructor_does_not_take_is_written_as_a_replace():
+    for changed in (dict(ambient="#111111"), dict(specular="#222222"), dict(ambient="#111111", specular="#333333")):
+        m = tm.Material.bands("#888888").replace(**changed)
+        text = repr(m)
+        assert text.startswith("Material.bands(") and ".replace(" in text, text
+        assert eval(text, vars(tm)) == m
+    # a value its constructor makes as it is needs no replace
+    assert ".replace(" not in repr(tm.Material.bands("#888888"))
+
+
+def test_every_number_field_is_refused_outside_its_rule_naming_it():
+    for cls in CLASSES:
+        for f in cls.describe()["fields"]:
+            if f["kind"] != "float" or f["fixed"]:
+                continue
+            for c in cls.describe()["constructors"]:
+                make = cls if not c["name"] else getattr(cls, c["name"])
+                value = make(*[(0.0, 0.0, 5.0)] * c["required"])
+                if getattr(value, f["name"]) is None and not f["optional"]:
+                    continue
+                try:
+                    value.replace(**{f["name"]: f["slider"][0]})
+                except ValueError:
+                    continue  # this value has no such field (a fitted camera's fov_y on an orthographic one)
+                for bad in (float("nan"), f["max"] if f["exclusive"][1] else f["max"] + 1.0):
+                    if math.isinf(bad) and not f["exclusive"][1]:
+                        continue
+                    with pytest.raises(ValueError, match=f["name"]):
+                        value.replace(**{f["name"]: bad})

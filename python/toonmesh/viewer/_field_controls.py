@@ -162,7 +162,8 @@ def _group(children: List[Any], margin: str = "0") -> Any:
 
 def _place(slider: Any, value: Any, lo: float, hi: float) -> None:
     """Sets a slider's range and value at once; the range widens to hold a value outside it
-    (the description's bounds are a control's, the core's check is the rule)."""
+    (the description's ``slider`` is what a control spans; its rule, ``min`` and ``max``, may
+    be wider or unbounded)."""
     with slider.hold_trait_notifications():
         slider.min = min(lo, value)
         slider.max = max(hi, value)
@@ -181,11 +182,10 @@ class Toggle(Control):
 class Slider(Control):
     def __init__(self, *args: Any):
         super().__init__(*args)
-        self.box = self.own(_slider(self.field["kind"], label(self.name), self.field["min"], self.field["max"],
-                                    self.field["help"]))
+        self.box = self.own(_slider(self.field["kind"], label(self.name), *self.field["slider"], self.field["help"]))
 
     def show(self, value: Any) -> None:
-        _place(self.box, value, self.field["min"], self.field["max"])
+        _place(self.box, value, *self.field["slider"])
 
 
 class Choice(Control):

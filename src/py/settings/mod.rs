@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyTuple};
 
 use crate::error::{Error, Result};
-use crate::render::settings::{self as described, Described, Setting, Value};
+use crate::render::settings::{self as described, Declared, Described, Setting, Value};
 
 pub use classes::{kang_table, Camera as PyCamera, Material as PyMaterial, RenderOptions as PyRenderOptions};
 
@@ -84,8 +84,9 @@ macro_rules! python_classes {
                 $crate::py::settings::replace(&self.inner, changes).map(|inner| $class { inner })
             }
 
-            /// The class described for front ends: its fields (name, kind, bounds or choices,
-            /// help) and constructors (their parameters, with the default of each).
+            /// The class described for front ends: its fields (name, kind, choices or a
+            /// number's rule: min, max, exclusive, slider and rule; help) and constructors
+            /// (their parameters, with the default of each).
             #[staticmethod]
             fn describe(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
                 $crate::py::settings::values::to_py(py, &$crate::render::settings::describe::<$core>())

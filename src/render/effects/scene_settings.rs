@@ -5,9 +5,10 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
-use crate::render::settings::{Field, Kind, Setting, Value};
+use crate::render::settings::declare::declared_fields;
+use crate::render::settings::Kind;
 
-/// Writes `SceneEffects` and its description from the list: each effect's field (its render
+/// Writes `SceneEffects` and its fields' declaration from the list: each effect's field (its render
 /// keyword), its settings type, that type's name among the settings classes, and the keyword's
 /// one line of help.
 macro_rules! scene_effects {
@@ -18,11 +19,6 @@ macro_rules! scene_effects {
         pub struct SceneEffects {
             $(pub $name: Option<$settings>,)*
         }
-
-        /// Their render keywords, described.
-        pub const FIELDS: &[Field] = &[$(Field::new(stringify!($name), Kind::Setting(stringify!($class)), $help).optional(),)*];
-        /// Their names, in the order of `FIELDS`.
-        pub const NAMES: &[&str] = &[$(stringify!($name)),*];
 
         // (an empty list leaves the arguments unused)
         #[allow(unused_variables)]
@@ -35,38 +31,18 @@ macro_rules! scene_effects {
                 Ok(())
             }
 
-            /// The value of the keyword `field` (None where it is not one of theirs).
-            pub fn get(&self, field: &str) -> Option<Value> {
-                match field {
-                    $(stringify!($name) => Some(
-                        self.$name.clone().map_or(Value::None, |s| Value::setting(Setting::$class(s))),
-                    ),)*
-                    _ => None,
-                }
-            }
-
             /// Each with its lengths in output pixels multiplied by `ratio`.
             pub fn at_pixel_ratio(&self, ratio: f64) -> SceneEffects {
                 SceneEffects {
                     $($name: self.$name.as_ref().map(|s| crate::render::settings::at_pixel_ratio(s, ratio)),)*
                 }
             }
+        }
 
-            /// Sets the keyword `field` (None where it is not one of theirs).
-            pub fn set(&mut self, field: &str, value: Value) -> Option<Result<()>> {
-                match field {
-                    $(stringify!($name) => Some((|| {
-                        self.$name = match value {
-                            Value::None => None,
-                            other => match other.into_setting(field)? {
-                                Setting::$class(s) => Some(s),
-                                other => return Err(crate::render::settings::mismatch(field, &Value::setting(other))),
-                            },
-                        };
-                        Ok(())
-                    })()),)*
-                    _ => None,
-                }
+        // each a field of `RenderOptions` (`..effects`): None or the effect's settings
+        declared_fields! {
+            SceneEffects {
+                $($name: Option<$settings> [.$name] => Kind::Setting(stringify!($class)), $help, optional;)*
             }
         }
     };

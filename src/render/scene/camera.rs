@@ -11,6 +11,8 @@ use crate::error::{Error, Result};
 
 use super::up::{Axis, Frame, FLAT_MOST_OFF_NORMAL};
 use crate::error::field;
+use crate::render::settings::declare::declared_fields;
+use crate::render::settings::{mismatch, named, not_here, Constructor, Described, Field, Kind, Range, Value};
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -66,6 +68,191 @@ impl Default for Camera {
             near: None,
             far: None,
         }
+    }
+}
+
+declared_fields! {
+    Camera {
+        kind: &'static str [get kind_name] => choice(&["fit", "look_at"]),
+            "framed to fit the scene, or looking at a point", fixed;
+        projection: &'static str [get projection_name] => choice(&["perspective", "orthographic"]),
+            "the projection", fixed;
+        eye: Option<[f64; 3]> [get look_at, set set_look_at] => vec3(), "a look-at camera's position", optional;
+        target: Option<[f64; 3]> [get look_at, set set_look_at] => vec3(),
+            "the point a look-at camera looks at", optional;
+        up: Option<[f64; 3]> [get up, set set_up] => vec3(),
+            "the direction that is up in the image (a fitted camera's None: the scene's up axis)", optional;
+        direction: Option<[f64; 3]> [get fit_direction, set set_fit_direction] => vec3(),
+            "a fitted camera's direction from the scene toward the eye (None: a three-quarter view about the up axis, across the scene's longest horizontal extent)", optional;
+        margin: Option<f64> [get fit_number, set set_fit_number] => float(above(0.0).slider(0.5, 4.0)),
+            "a fitted camera's room around the scene (1: touching)", optional;
+        turn: Option<f64> [get fit_number, set set_fit_number] => float(finite().slider(-360.0, 360.0)),
+            "degrees a fitted camera's view turns about the up axis, counter-clockwise seen from above (a turntable's views)", optional;
+        fov_y: Option<f64> [get lens, set set_lens] => float(open(0.0, 180.0).slider(1.0, 179.0)),
+            "vertical field of view in degrees, in (0, 180)", optional;
+        height: Option<f64> [get lens, set set_lens] => float(above(0.0).slider(0.01, 100.0)),
+            "height of an orthographic view in world units, > 0", optional;
+        near: Option<f64> [.near] => float(CLIP.slider(0.0, 100.0)),
+            "near clip distance (None: from the scene's bounds)", optional;
+        far: Option<f64> [.far] => float(CLIP.slider(0.0, 1000.0)),
+            "far clip distance (None: from the scene's bounds)", optional;
+    }
+}
+
+/// A clip distance's rule: `Camera::validate` checks the sign, which depends on the projection.
+const CLIP: Range = Range::finite().rule("> 0 for a perspective camera");
+
+/// The fields that live in the placement and the projection: None where this camera has none.
+impl Camera {
+    fn kind_name(&self, _: &str) -> &'static str {
+        match self.placement {
+            Placement::Fit { .. } => "fit",
+            Placement::LookAt { .. } => "look_at",
+        }
+    }
+
+    fn projection_name(&self, _: &str) -> &'static str {
+        match self.projection {
+            Projection::Perspective { .. } => "perspective",
+            Projection::Orthographic { .. } => "orthographic",
+        }
+    }
+
+    fn look_at(&self, field: &str) -> Option<[f64; 3]> {
+        match self.placement {
+            Placement::LookAt { eye, target, .. } => Some(if field == "eye" { eye } else { target }),
+            Placement::Fit { .. } => None,
+        }
+    }
+
+    fn set_look_at(&mut self, field: &str, value: Option<[f64; 3]>) -> Result<()> {
+        let Placement::LookAt { eye, target, .. } = &mut self.placement else {
+            return Err(not_here(field, "a look-at camera"));
+        };
+        *(if field == "eye" { eye } else { target }) = value.ok_or_else(|| mismatch(field, &Value::None))?;
+        Ok(())
+    }
+
+    fn up(&self, _: &str) -> Option<[f64; 3]> {
+        match self.placement {
+            Placement::LookAt { up, .. } => Some(up),
+            Placement::Fit { up, .. } => up,
+        }
+    }
+
+    fn set_up(&mut self, field: &str, value: Option<[f64; 3]>) -> Result<()> {
+        match &mut self.placement {
+            Placement::LookAt { up, .. } => *up = value.ok_or_else(|| mismatch(field, &Value::None))?,
+            Placement::Fit { up, .. } => *up = value,
+        }
+        Ok(())
+    }
+
+    fn fit_direction(&self, _: &str) -> Option<[f64; 3]> {
+        match self.placement {
+            Placement::Fit { direction, .. } => direction,
+            Placement::LookAt { .. } => None,
+        }
+    }
+
+    fn set_fit_direction(&mut self, field: &str, value: Option<[f64; 3]>) -> Result<()> {
+        let Placement::Fit { direction, .. } = &mut self.placement else {
+            return Err(not_here(field, "a fitted camera"));
+        };
+        *direction = value;
+        Ok(())
+    }
+
+    /// `margin` or `turn`.
+    fn fit_number(&self, field: &str) -> Option<f64> {
+        match self.placement {
+            Placement::Fit { margin, turn, .. } => Some(if field == "margin" { margin } else { turn }),
+            Placement::LookAt { .. } => None,
+        }
+    }
+
+    fn set_fit_number(&mut self, field: &str, value: Option<f64>) -> Result<()> {
+        let Placement::Fit { margin, turn, .. } = &mut self.placement else {
+            return Err(not_here(field, "a fitted camera"));
+        };
+        *(if field == "margin" { margin } else { turn }) =
+            value.ok_or_else(|| mismatch(field, &Value::None))?;
+        Ok(())
+    }
+
+    /// `fov_y` or `height`, whichever the projection has.
+    fn lens(&self, field: &str) -> Option<f64> {
+        match (field, self.projection) {
+            ("fov_y", Projection::Perspective { fov_y_deg }) => Some(fov_y_deg),
+            ("height", Projection::Orthographic { height }) => Some(height),
+            _ => None,
+        }
+    }
+
+    fn set_lens(&mut self, field: &str, value: Option<f64>) -> Result<()> {
+        let lens = match (field, &mut self.projection) {
+            ("fov_y", Projection::Perspective { fov_y_deg }) => fov_y_deg,
+            ("height", Projection::Orthographic { height }) => height,
+            ("fov_y", _) => return Err(not_here(field, "a perspective camera")),
+            _ => return Err(not_here(field, "an orthographic camera")),
+        };
+        *lens = value.ok_or_else(|| mismatch(field, &Value::None))?;
+        Ok(())
+    }
+}
+
+const EXTRAS: &[Field] =
+    &[Field::new("orthographic", Kind::Bool, "a fitted camera with an orthographic projection")];
+
+const CONSTRUCTORS: &[Constructor] = &[
+    named!("Camera", "fit", ["direction", "up", "fov_y", "margin", "turn", "orthographic"], 1, 0),
+    named!("Camera", "look_at", ["eye", "target", "up", "fov_y", "near", "far"], 2, 1),
+    named!("Camera", "orthographic", ["eye", "target", "up", "height", "near", "far"], 2, 1),
+];
+
+impl Described for Camera {
+    const EXTRAS: &'static [Field] = EXTRAS;
+
+    const CONSTRUCTORS: &'static [Constructor] = CONSTRUCTORS;
+
+    fn start(constructor: &str) -> Self {
+        let placement = Placement::LookAt { eye: [0.0, 0.0, 1.0], target: [0.0; 3], up: DEFAULT_UP };
+        let projection = match constructor {
+            "fit" => return Camera::default(),
+            "orthographic" => Projection::Orthographic { height: DEFAULT_HEIGHT },
+            _ => Projection::Perspective { fov_y_deg: DEFAULT_FOV_Y },
+        };
+        Camera { placement, projection, near: None, far: None }
+    }
+
+    fn made_by(&self) -> &'static str {
+        match (self.placement, self.projection) {
+            (Placement::Fit { .. }, _) => "fit",
+            (_, Projection::Perspective { .. }) => "look_at",
+            _ => "orthographic",
+        }
+    }
+
+    fn apply(&mut self, constructor: &str, param: &str, value: Value) -> Result<()> {
+        if param == "orthographic" {
+            if value.bool(param)? {
+                self.projection = Projection::Orthographic { height: DEFAULT_HEIGHT };
+            }
+            return Ok(());
+        }
+        let _ = constructor;
+        self.set(param, value)
+    }
+
+    fn read(&self, _: &str, param: &str) -> Option<Value> {
+        match param {
+            "orthographic" => Some(matches!(self.projection, Projection::Orthographic { .. }).into()),
+            _ => Some(self.get(param)),
+        }
+    }
+
+    fn check(&self) -> Result<()> {
+        self.validate("")
     }
 }
 
@@ -178,18 +365,8 @@ impl Camera {
     /// Checks the camera; `prefix` names it in errors ("" when it is being made).
     pub fn validate(&self, prefix: &str) -> Result<()> {
         let f = |name| field(prefix, name);
-        match self.projection {
-            Projection::Perspective { fov_y_deg } if !(fov_y_deg > 0.0 && fov_y_deg < 180.0) => {
-                return Err(Error::invalid(
-                    f("fov_y"),
-                    format!("must be in (0, 180) degrees, got {fov_y_deg}"),
-                ))
-            }
-            Projection::Orthographic { height } if !(height > 0.0 && height.is_finite()) => {
-                return Err(Error::invalid(f("height"), format!("must be finite and > 0, got {height}")))
-            }
-            _ => {}
-        }
+        // fov_y, height, margin, turn and the clip distances' finiteness: the description's bounds
+        crate::render::settings::check_bounds(self, prefix)?;
         match self.placement {
             Placement::LookAt { eye, target, up } => {
                 let (e, t) = (vec3(&f("eye"), eye)?, vec3(&f("target"), target)?);
@@ -205,7 +382,7 @@ impl Camera {
                     return Err(Error::invalid(f("up"), "must not be parallel to the viewing direction"));
                 }
             }
-            Placement::Fit { direction, up, margin, turn } => {
+            Placement::Fit { direction, up, .. } => {
                 let d = direction.map(|d| unit(&f("direction"), d)).transpose()?;
                 let u = up.map(|u| unit(&f("up"), u)).transpose()?;
                 if let (Some(d), Some(u)) = (d, u) {
@@ -216,18 +393,11 @@ impl Camera {
                         ));
                     }
                 }
-                if !(margin > 0.0 && margin.is_finite()) {
-                    return Err(Error::invalid(f("margin"), format!("must be finite and > 0, got {margin}")));
-                }
-                if !turn.is_finite() {
-                    return Err(Error::invalid(f("turn"), format!("must be finite, got {turn}")));
-                }
             }
         }
         for (arg, v) in [(f("near"), self.near), (f("far"), self.far)] {
             if let Some(x) = v {
-                if !(x.is_finite() && (x > 0.0 || matches!(self.projection, Projection::Orthographic { .. })))
-                {
+                if !(x > 0.0 || matches!(self.projection, Projection::Orthographic { .. })) {
                     return Err(Error::invalid(
                         arg,
                         format!("must be finite (and > 0 for a perspective camera), got {x}"),

@@ -8,6 +8,8 @@ use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::effects::shadows::settings::Shadows;
 
 use crate::error::field;
+use crate::render::settings::declare::{declared_fields, value_field};
+use crate::render::settings::{mismatch, named, not_here, Constructor, Described, Value};
 
 /// Most lights one scene may have (the shader's fixed-size array).
 pub const MAX_LIGHTS: usize = 8;
@@ -62,6 +64,87 @@ pub enum ViewLight {
     At(DVec3),
 }
 
+declared_fields! {
+    Light {
+        kind: &'static str [get kind_name] => choice(&["directional", "point"]), "directional (sun-like) or point", fixed;
+        direction: Option<[f64; 3]> [get placed, set set_placed] => vec3(),
+            "a directional light's direction, from the light toward the scene", optional;
+        position: Option<[f64; 3]> [get placed, set set_placed] => vec3(), "a point light's position", optional;
+        color: Srgb [.color] => color(), "sRGB colour";
+        intensity: f64 [.intensity] => float(at_least(0.0).slider(0.0, 4.0)), "factor on the colour, >= 0";
+        space: Space [.space] => choice(Space::NAMES),
+            "'world', or 'camera': fixed to the view (x right, y up, -z forward)";
+        shadows: Option<Shadows> [.shadows] => setting("Shadows"),
+            "a directional light's shadows: True (the default Shadows), False or None (none), or a Shadows", optional;
+    }
+}
+
+// a field of lights (`RenderOptions.lights`)
+value_field! {
+    Vec<Light> => Lights,
+}
+
+/// The fields that live in the kind.
+impl Light {
+    fn kind_name(&self, _: &str) -> &'static str {
+        match self.kind {
+            LightKind::Directional { .. } => "directional",
+            LightKind::Point { .. } => "point",
+        }
+    }
+
+    /// A directional light's `direction` or a point light's `position`: None on the other.
+    fn placed(&self, field: &str) -> Option<[f64; 3]> {
+        match (field, self.kind) {
+            ("direction", LightKind::Directional { direction }) => Some(direction),
+            ("position", LightKind::Point { position }) => Some(position),
+            _ => None,
+        }
+    }
+
+    fn set_placed(&mut self, field: &str, value: Option<[f64; 3]>) -> Result<()> {
+        let place = match (field, &mut self.kind) {
+            ("direction", LightKind::Directional { direction }) => direction,
+            ("position", LightKind::Point { position }) => position,
+            ("direction", _) => return Err(not_here(field, "a directional light")),
+            _ => return Err(not_here(field, "a point light")),
+        };
+        *place = value.ok_or_else(|| mismatch(field, &Value::None))?;
+        Ok(())
+    }
+}
+
+const CONSTRUCTORS: &[Constructor] = &[
+    named!("Light", "directional", ["direction", "color", "intensity", "space", "shadows"], 1, 1),
+    named!("Light", "point", ["position", "color", "intensity", "space"], 1, 1),
+    named!("Light", "key", [], 0, 0),
+];
+
+impl Described for Light {
+    const CONSTRUCTORS: &'static [Constructor] = CONSTRUCTORS;
+
+    fn start(constructor: &str) -> Self {
+        let kind = match constructor {
+            "key" => return Light::default(),
+            "point" => LightKind::Point { position: [0.0; 3] },
+            _ => LightKind::Directional { direction: [0.0, 0.0, -1.0] },
+        };
+        Light { kind, space: Space::World, color: [1.0; 3], intensity: 1.0, shadows: None }
+    }
+
+    fn made_by(&self) -> &'static str {
+        match self.kind {
+            _ if *self == Light::default() => "key",
+            LightKind::Directional { .. } => "directional",
+            LightKind::Point { .. } => "point",
+        }
+    }
+
+    fn check(&self) -> Result<()> {
+        self.validate("")
+    }
+}
+
 impl Light {
     /// Checks the light; `prefix` names it in errors ("" while it is being made).
     pub fn validate(&self, prefix: &str) -> Result<()> {
@@ -86,12 +169,7 @@ impl Light {
             }
         }
         check_unit(&arg("color"), &self.color)?;
-        if !(self.intensity.is_finite() && self.intensity >= 0.0) {
-            return Err(Error::invalid(
-                arg("intensity"),
-                format!("must be finite and >= 0, got {}", self.intensity),
-            ));
-        }
+        crate::render::settings::check_bounds(self, prefix)?;
         if let Some(s) = &self.shadows {
             if !matches!(self.kind, LightKind::Directional { .. }) {
                 return Err(Error::invalid(arg("shadows"), "only directional lights cast shadows"));

@@ -101,24 +101,8 @@ impl Model {
     pub fn validate(&self, prefix: &str) -> Result<()> {
         match self {
             Model::Lambert => {}
-            Model::Phong { shininess } => {
-                if !(shininess.is_finite() && *shininess > 0.0) {
-                    return Err(Error::invalid(
-                        field(prefix, "shininess"),
-                        format!("must be finite and > 0, got {shininess}"),
-                    ));
-                }
-            }
-            Model::ThresholdedPhong { t_h, t_s, .. } => {
-                for (name, t) in [("t_h", t_h), ("t_s", t_s)] {
-                    if !(t.is_finite() && (-1.0..=1.0).contains(t)) {
-                        return Err(Error::invalid(
-                            field(prefix, name),
-                            format!("must be in [-1, 1], got {t}"),
-                        ));
-                    }
-                }
-            }
+            // shininess, t_h and t_s: their bounds are Material's description's
+            Model::Phong { .. } | Model::ThresholdedPhong { .. } => {}
             Model::Bands { thresholds, values } => {
                 if thresholds.is_empty() || thresholds.len() > MAX_BANDS {
                     return Err(Error::invalid(

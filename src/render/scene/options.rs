@@ -10,10 +10,12 @@ use super::camera::Camera;
 use super::light::Light;
 use super::material::Material;
 use super::up::{scene_up, Axis};
-use super::{FrameSpec, MeshId, Scene, SceneItem, IDENTITY};
+use super::{FrameSpec, MeshId, Output, Outputs, Scene, SceneItem, IDENTITY, MAX_SUPERSAMPLE, PIXEL_RATIOS};
 use crate::error::Result;
 use crate::render::effects::outlines::settings::Outlines;
 use crate::render::effects::scene_settings::SceneEffects;
+use crate::render::settings::declare::declared_fields;
+use crate::render::settings::{check_bounds, field_names, Constructor, Declared, Described, Kind, Range};
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -53,6 +55,60 @@ impl Default for RenderOptions {
             frame: FrameSpec::default(),
             up: None,
         }
+    }
+}
+
+declared_fields! {
+    RenderOptions {
+        material: Material [.material] => setting("Material"), "the material of meshes that name none";
+        transform: [[f64; 4]; 4] [.transform] => Kind::Matrix,
+            "a 4x4 affine model -> world matrix (row-major, applied to column vectors) for meshes that give none";
+        camera: Camera [.camera] => setting("Camera"),
+            "the camera (Camera.fit(): the scene framed from a three-quarter view about its up axis)";
+        up: Option<Axis> [.up] => choice(Axis::NAMES),
+            "the scene's up axis, which a fitted camera keeps up in the image and turns about (None: its meshes' own, as toonmesh.load reads a file's convention, else y)", optional;
+        lights: Vec<Light> [.lights] => Kind::Lights, "a Light or a list of up to 8";
+        ambient: Srgb [.ambient] => color(), "the ambient light's sRGB colour";
+        background: [f32; 4] [.frame.background] => Kind::Rgba, "sRGB or sRGBA where no mesh is";
+        width: u32 [.frame.width] => int(SIDE), "the image's width in pixels, 1 to the device's limit";
+        height: u32 [.frame.height] => int(SIDE), "the image's height in pixels, 1 to the device's limit";
+        outputs: Outputs [.frame.outputs] => Kind::Names(&Output::NAMES),
+            "the outputs computed and read back, and only those ('outline' and 'lines' need outlines, 'shadow' a light with shadows)";
+        msaa: u32 [.frame.msaa] => int(closed(1.0, 4.0).rule("1 or 4")), "samples per pixel: 1 or 4";
+        supersample: u32 [.frame.supersample] => int(closed(1.0, MAX_SUPERSAMPLE as f64)),
+            "render this many times larger in each direction and average down";
+        pixel_ratio: f64 [.frame.pixel_ratio] => float(closed(PIXEL_RATIOS.0, PIXEL_RATIOS.1)),
+            "output pixels per pixel of the widths, spacings and scales given in pixels: 2 with twice the width and height draws the same picture, sharper (a 2x screen)";
+        band_antialias: bool [.frame.band_antialias] => boolean(),
+            "blend across each band border over about one pixel, from the screen-space change of the shading term: smooth tone borders at no extra samples (False: the papers' hard borders)";
+        outlines: Option<Outlines> [.outlines] => setting("Outlines"),
+            "ink outlines: None, 'mesh', 'image', 'both' or an Outlines", optional;
+        // then the frame effects' (`effects::scene_settings`)
+        ..effects: SceneEffects;
+    }
+}
+
+/// An image's side in pixels: the device's limit is checked when it renders; a control spans
+/// the common limit.
+const SIDE: Range = Range::count(1.0).slider(1.0, 16384.0);
+
+/// `RenderOptions(...)`: every field by keyword.
+impl Described for RenderOptions {
+    const PARAMETER: Option<&'static str> = Some("a render option");
+
+    const CONSTRUCTORS: &'static [Constructor] = &[Constructor::only(
+        &field_names::<{ <RenderOptions as Declared>::FIELDS.len() }>(<RenderOptions as Declared>::FIELDS),
+        0,
+    )];
+
+    fn start(_: &str) -> Self {
+        RenderOptions::default()
+    }
+
+    /// The numbers' bounds; sizes, samples and outputs are checked against the device when it
+    /// renders.
+    fn check(&self) -> Result<()> {
+        check_bounds(self, "")
     }
 }
 

@@ -134,3 +134,24 @@ impl TryFrom<Vec<String>> for Outputs {
         Ok(s)
     }
 }
+
+/// A field of names (`RenderOptions.outputs`): at least one.
+impl crate::render::settings::FieldValue for Outputs {
+    fn to_value(&self) -> crate::render::settings::Value {
+        crate::render::settings::Value::Names(Vec::from(*self))
+    }
+
+    fn from_value(field: &str, value: crate::render::settings::Value) -> Result<Self> {
+        match value {
+            crate::render::settings::Value::Names(names) => {
+                let mut o = Outputs::default();
+                for n in &names {
+                    o.insert(Output::parse(field, n)?);
+                }
+                o.validate()?;
+                Ok(o)
+            }
+            other => Err(crate::render::settings::mismatch(field, &other)),
+        }
+    }
+}

@@ -82,3 +82,35 @@ macro_rules! setting_at_pixel_ratio {
 }
 
 settings_classes!(setting_at_pixel_ratio);
+
+/// `FieldValue` for each class: a field that holds a settings value. True is the class's
+/// default and False none (a light's `shadows=True`); another form is the class's `shorthand`.
+macro_rules! setting_field_values {
+    ($($class:ident($docs:literal) = $core:path { $($ctors:tt)* })*) => {$(
+        impl super::FieldValue for $core {
+            fn to_value(&self) -> super::Value {
+                super::Value::setting(Setting::$class(self.clone()))
+            }
+
+            fn from_value(field: &str, value: super::Value) -> crate::error::Result<Self> {
+                match value {
+                    super::Value::Setting(s) => match *s {
+                        Setting::$class(v) => Ok(v),
+                        other => Err(super::mismatch(field, &super::Value::setting(other))),
+                    },
+                    super::Value::Bool(true) => Ok(Self::default()),
+                    other => <$core as super::Described>::shorthand(field, other),
+                }
+            }
+
+            fn from_optional(field: &str, value: super::Value) -> crate::error::Result<Option<Self>> {
+                match value {
+                    super::Value::None | super::Value::Bool(false) => Ok(None),
+                    other => Self::from_value(field, other).map(Some),
+                }
+            }
+        }
+    )*};
+}
+
+settings_classes!(setting_field_values);

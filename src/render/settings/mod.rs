@@ -1,26 +1,24 @@
-//! The scene's settings described once: each settings type lists its fields (name, kind,
-//! one-line help), its constructors (which parameters each takes, in order) and how a field is
-//! read and written. Everything a front end needs is derived from this description: the Python
-//! classes (keyword constructors, getters, `replace`, a `repr` that evaluates back to an equal
-//! value), the type stub, the viewer's controls and the command line's flags. Defaults are not
-//! written here: a field's default is what its constructor makes when the field is not given.
+//! The machinery of the scene's settings, each described once: a settings type declares each
+//! field on one line beside the field (`declare`: its kind and rule, default, help and flags),
+//! and lists its constructors (which parameters each takes, in order). Everything a front end
+//! needs is derived from this description: the Python classes (keyword constructors, getters,
+//! `replace`, a `repr` that evaluates back to an equal value), the type stub, the viewer's
+//! controls and the command line's flags. A field's default is what its constructor makes when
+//! the field is not given.
 
-mod camera;
 mod classes;
-mod dither;
+pub mod declare;
 mod grey_image;
-mod light;
-mod line_style;
-mod material;
-mod options;
-mod outlines;
-mod shadows;
+mod range;
 pub mod state;
 mod value;
 
 pub(crate) use classes::settings_classes;
 pub use classes::{Class, Setting, CLASSES};
+pub(crate) use declare::settings;
+pub use declare::{Declared, FieldValue};
 pub use grey_image::{GreyImage, MAX_IMAGE_SIDE};
+pub use range::Range;
 pub use value::Value;
 
 use serde::de::DeserializeOwned;
@@ -32,16 +30,10 @@ use crate::error::{closest, Error, Result};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Kind {
     Bool,
-    /// An integer; `min` and `max` bound a control (the core's check is the rule).
-    Int {
-        min: i64,
-        max: i64,
-    },
-    /// A real number; `min` and `max` bound a control or a slider.
-    Float {
-        min: f64,
-        max: f64,
-    },
+    /// An integer within its rule (`check_bounds` checks it).
+    Int(Range),
+    /// A real number within its rule (`check_bounds` checks it).
+    Float(Range),
     /// One of these names.
     Choice(&'static [&'static str]),
     /// An sRGB colour: '#rrggbb' or three numbers in [0, 1].
@@ -75,8 +67,8 @@ impl Kind {
     pub fn name(self) -> &'static str {
         match self {
             Kind::Bool => "bool",
-            Kind::Int { .. } => "int",
-            Kind::Float { .. } => "float",
+            Kind::Int(_) => "int",
+            Kind::Float(_) => "float",
             Kind::Choice(_) => "choice",
             Kind::Names(_) => "names",
             Kind::Setting(_) => "setting",
@@ -113,9 +105,9 @@ impl Field {
         Field { name, kind, optional: false, fixed: false, pixels: false, help }
     }
 
-    /// A real number within `min` and `max`.
-    pub const fn float(name: &'static str, min: f64, max: f64, help: &'static str) -> Field {
-        Field::new(name, Kind::Float { min, max }, help)
+    /// A real number within `range`.
+    pub const fn float(name: &'static str, range: Range, help: &'static str) -> Field {
+        Field::new(name, Kind::Float(range), help)
     }
 
     /// One of the names `choices`.
@@ -151,7 +143,7 @@ pub struct Constructor {
 }
 
 /// A named constructor of a class, `named!("Class", "name", [params...], positional, required)`,
-/// its docstring the file `docs/Class.name.md`.
+/// its docstring the file `src/render/settings/docs/Class.name.md`.
 macro_rules! named {
     ($class:literal, $name:literal, [$($param:literal),* $(,)?], $positional:expr, $required:expr) => {
         $crate::render::settings::Constructor {
@@ -159,7 +151,9 @@ macro_rules! named {
             params: &[$($param),*],
             positional: $positional,
             required: $required,
-            help: include_str!(concat!("docs/", $class, ".", $name, ".md")),
+            help: include_str!(concat!(
+                env!("CARGO_MANIFEST_DIR"), "/src/render/settings/docs/", $class, ".", $name, ".md"
+            )),
         }
     };
 }
@@ -170,8 +164,7 @@ pub(crate) use named;
 /// `positional` of them by position; a value starts from the type's default; and its check is
 /// the type's `validate`, which names the fields as the constructor's arguments.
 macro_rules! one_constructor {
-    ($fields:ident, positional: $positional:expr) => {
-        const FIELDS: &'static [$crate::render::settings::Field] = $fields;
+    ($fields:expr, positional: $positional:expr) => {
         const CONSTRUCTORS: &'static [$crate::render::settings::Constructor] =
             &[$crate::render::settings::Constructor::only(
                 &$crate::render::settings::field_names::<{ $fields.len() }>($fields),
@@ -223,11 +216,10 @@ impl Constructor {
 
 /// A settings type described for front ends (its class's name and docstring are its `Class`,
 /// from `settings_classes!`).
-pub trait Described: Class + Clone + PartialEq + Serialize + DeserializeOwned {
+pub trait Described: Class + Declared + Clone + PartialEq + Serialize + DeserializeOwned {
     /// What an unknown keyword is not, where "a parameter of Class.constructor" is not the
     /// best word ("a render option").
     const PARAMETER: Option<&'static str> = None;
-    const FIELDS: &'static [Field];
     /// Constructor-only parameters.
     const EXTRAS: &'static [Field] = &[];
     const CONSTRUCTORS: &'static [Constructor];
@@ -238,9 +230,13 @@ pub trait Described: Class + Clone + PartialEq + Serialize + DeserializeOwned {
         ""
     }
     /// A field's value (None where this value has no such field: a Phong exponent of bands).
-    fn get(&self, field: &str) -> Value;
+    fn get(&self, field: &str) -> Value {
+        self.field(field).unwrap_or(Value::None)
+    }
     /// Sets a field from a value of its kind; range checks are `check`'s.
-    fn set(&mut self, field: &str, value: Value) -> Result<()>;
+    fn set(&mut self, field: &str, value: Value) -> Result<()> {
+        self.set_field(field, value)
+    }
     /// A parameter of `constructor` applied while making a value; fields by default.
     fn apply(&mut self, _constructor: &str, param: &str, value: Value) -> Result<()> {
         self.set(param, value)
@@ -252,6 +248,11 @@ pub trait Described: Class + Clone + PartialEq + Serialize + DeserializeOwned {
     }
     /// The core's checks, naming fields as constructor arguments.
     fn check(&self) -> Result<()>;
+    /// A field's value of this type given in a shorter form (a name for a Dither); by default
+    /// none is taken.
+    fn shorthand(field: &str, value: Value) -> Result<Self> {
+        Err(mismatch(field, &value))
+    }
     /// `constructor` applied to the arguments (`build`, unless a type's parameters depend on
     /// each other in more than their order).
     fn construct(constructor: &str, args: Vec<(&'static str, Value)>) -> Result<Self> {
@@ -276,7 +277,7 @@ fn title<T: Described>(c: &Constructor) -> String {
     }
 }
 
-fn unknown(name: &str, known: &[&str], what: &str) -> Error {
+pub(crate) fn unknown(name: &str, known: &[&str], what: &str) -> Error {
     let hint = closest(name, known).map_or(String::new(), |k| format!("; did you mean '{k}'?"));
     Error::wrong_type(name, format!("not {what}{hint} (they are: {})", known.join(", ")))
 }
@@ -364,22 +365,26 @@ pub fn at_pixel_ratio<T: Described>(value: &T, ratio: f64) -> T {
     out
 }
 
-/// A copy of `value` with the fields named changed (None: the field's default), checked.
-/// Checks that every real-number field of `value` lies within its described bounds, for the
-/// types whose bounds are the rule and not only a control's (`prefix` names the fields in
-/// errors).
+/// Checks that every number of `value` (its int and float fields) keeps its field's rule
+/// (`prefix` names the fields in errors). A settings type's `validate` starts with it, and
+/// keeps for itself only the rules between fields and those that are not a range.
 pub fn check_bounds<T: Described>(value: &T, prefix: &str) -> Result<()> {
     for f in T::FIELDS {
-        if let (Kind::Float { min, max }, Value::Float(x)) = (f.kind, value.get(f.name)) {
-            if !(x.is_finite() && (min..=max).contains(&x)) {
-                let name = crate::error::field(prefix, f.name);
-                return Err(Error::invalid(name, format!("must be in [{min}, {max}], got {x}")));
-            }
+        let (Kind::Int(range) | Kind::Float(range)) = f.kind else { continue };
+        let x = match value.get(f.name) {
+            Value::Float(x) => x,
+            Value::Int(i) => i as f64,
+            _ => continue,
+        };
+        if !range.contains(x) {
+            let name = crate::error::field(prefix, f.name);
+            return Err(Error::invalid(name, range.refusal(x)));
         }
     }
     Ok(())
 }
 
+/// A copy of `value` with the fields named changed (None: the field's default), checked.
 pub fn replace<T: Described>(value: &T, changes: Vec<(String, Option<Value>)>) -> Result<T> {
     let mut out = value.clone();
     let base = T::start(value.made_by());
@@ -412,8 +417,29 @@ pub fn arguments<T: Described>(value: &T) -> (&'static Constructor, Vec<(&'stati
     (ctor, args)
 }
 
-/// The call that makes `value` again, `Class.constructor(required, ..., name=value, ...)`, each
-/// value as `write` spells it (in a front end's own syntax).
+/// The fields that the constructor's `args` do not make as `value` has them (a field the
+/// constructor does not take, such as a band material's ambient coefficient), with their
+/// values: what `replace` must change after the call.
+pub fn replaced<T: Described>(
+    value: &T,
+    ctor: &Constructor,
+    args: &[(&'static str, Value)],
+) -> Vec<(&'static str, Value)> {
+    // a value that its own arguments do not make again prints as its constructor's start
+    let made = T::construct(ctor.name, args.to_vec()).unwrap_or_else(|_| T::start(ctor.name));
+    T::FIELDS
+        .iter()
+        .filter(|f| !f.fixed)
+        .filter_map(|f| {
+            let v = value.get(f.name);
+            (v != made.get(f.name)).then_some((f.name, v))
+        })
+        .collect()
+}
+
+/// The call that makes `value` again, `Class.constructor(required, ..., name=value, ...)`,
+/// followed by `.replace(name=value, ...)` for the fields that the constructor does not make
+/// as `value` has them; each value as `write` spells it (in a front end's own syntax).
 pub fn call<T: Described, E>(
     value: &T,
     mut write: impl FnMut(&Value) -> std::result::Result<String, E>,
@@ -426,7 +452,16 @@ pub fn call<T: Described, E>(
         parts.push(if by_position { text } else { format!("{name}={text}") });
     }
     let dot = if ctor.name.is_empty() { "" } else { "." };
-    Ok(format!("{}{dot}{}({})", T::CLASS, ctor.name, parts.join(", ")))
+    let mut out = format!("{}{dot}{}({})", T::CLASS, ctor.name, parts.join(", "));
+    let changes = replaced(value, ctor, &args);
+    if !changes.is_empty() {
+        let mut parts = Vec::with_capacity(changes.len());
+        for (name, v) in &changes {
+            parts.push(format!("{name}={}", write(v)?));
+        }
+        out += &format!(".replace({})", parts.join(", "));
+    }
+    Ok(out)
 }
 
 /// `T` described for front ends: its class, help, fields (each with its name, kind, bounds,
@@ -438,8 +473,8 @@ pub fn describe<T: Described>() -> Value {
     let field = |f: &Field, default: Option<Value>| {
         let mut d = vec![("name", text(f.name)), ("kind", text(f.kind.name()))];
         match f.kind {
-            Kind::Int { min, max } => d.extend([("min", Value::Int(min)), ("max", Value::Int(max))]),
-            Kind::Float { min, max } => d.extend([("min", Value::Float(min)), ("max", Value::Float(max))]),
+            Kind::Int(r) => d.extend(r.describe(true)),
+            Kind::Float(r) => d.extend(r.describe(false)),
             Kind::Choice(c) | Kind::Names(c) => {
                 d.push(("choices", Value::Names(c.iter().map(|n| n.to_string()).collect())))
             }

@@ -55,6 +55,17 @@ fn a_base_colour_is_printed_as_the_coefficients_it_set() {
 }
 
 #[test]
+fn a_field_the_constructor_does_not_take_is_replaced_after_the_call() {
+    let b: Material = Material::construct("bands", vec![("color", Value::Triple([0.5; 3]))]).unwrap();
+    let dark = replace(&b, vec![("ambient".into(), Some(Value::Triple([0.1; 3])))]).unwrap();
+    let (ctor, args) = arguments(&dark);
+    assert_eq!(replaced(&dark, ctor, &args), vec![("ambient", Value::Triple([0.1; 3]))]);
+    let text = call(&dark, |v| Ok::<_, ()>(format!("{v:?}"))).unwrap();
+    assert!(text.starts_with("Material.bands(") && text.contains(").replace(ambient="), "{text}");
+    assert!(replaced(&b, ctor, &arguments(&b).1).is_empty());
+}
+
+#[test]
 fn replace_changes_only_the_field_named_and_checks_it() {
     let o = Outlines::default();
     let r = replace(&o, vec![("crease_angle".into(), Some(Value::Float(45.0)))]).unwrap();
@@ -145,4 +156,34 @@ fn a_pixel_ratio_scales_every_length_in_pixels_and_nothing_else() {
         !parameter::<Outlines>("depth_jump").unwrap().pixels,
         "pixel footprints are a tolerance, not a length"
     );
+}
+
+#[test]
+fn a_declared_field_missing_from_a_state_takes_its_default_and_an_unknown_name_is_refused() {
+    // a state saved before `strength` existed
+    let old: Shadows = serde_json::from_str(r#"{"size": 1024, "bias": 2.0, "filter": "none"}"#).unwrap();
+    assert_eq!(old, Shadows { size: 1024, bias: 2.0, strength: Shadows::default().strength, ..old });
+    let mut s = Shadows::default();
+    let e = s.set("strenght", Value::Float(0.5)).unwrap_err();
+    assert!(e.to_string().contains("did you mean 'strength'"), "{e}");
+    let mut light = Light::default();
+    assert!(light.set("position", Value::Triple([0.0; 3])).unwrap_err().to_string().starts_with("position"));
+}
+
+#[test]
+fn every_number_is_checked_against_its_described_rule() {
+    fn refuses<T: Described>(field: &str, x: f64) {
+        let mut v = T::start(T::CONSTRUCTORS[0].name);
+        v.set(field, Value::Float(x)).unwrap();
+        let e = v.check().unwrap_err();
+        assert!(e.to_string().starts_with(field), "{}.{field}: {e}", T::CLASS);
+    }
+    refuses::<Shadows>("bias", -1.0);
+    refuses::<Shadows>("bias", f64::INFINITY);
+    refuses::<Camera>("margin", 0.0);
+    refuses::<Camera>("turn", f64::NAN);
+    refuses::<Light>("intensity", -0.5);
+    refuses::<Outlines>("depth_jump", -1.0);
+    refuses::<LineStyle>("width", 0.0);
+    refuses::<RenderOptions>("pixel_ratio", 100.0);
 }

@@ -3,18 +3,14 @@
 //! the two bands. A per-pixel surface effect: `dither.wgsl` moves L.n through the `jitter` hook;
 //! `DitherPattern::threshold` is its CPU reference.
 
-use serde::{Deserialize, Serialize};
-
 use crate::error::field;
 use crate::error::{Error, Result};
 use crate::render::block::Block;
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
-use crate::render::settings::check_bounds;
+use crate::render::settings::{check_bounds, settings};
 use crate::render::stage_part::ANCHORS;
 use crate::render::wgsl;
 
-/// How far (in L.n) dithering moves a pixel toward the neighbouring band, when none is given.
-pub const DEFAULT_DITHER_AMOUNT: f64 = 0.15;
 /// The R2 sequence's steps along x and y (Roberts): 1/g and 1/g^2, g the plastic number.
 pub const R2_STEPS: [f64; 2] = [0.754_877_666_246_692_7, 0.569_840_290_998_053_2];
 
@@ -69,30 +65,30 @@ crate::named_enum! {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Dither {
-    pub pattern: DitherPattern,
-    pub space: DitherSpace,
-    /// How far in L.n a pixel may move toward the neighbouring band: L.n + (t - 1/2) amount is
-    /// banded, t the pattern's threshold.
-    pub amount: f64,
-    /// Pixels a pattern cell covers.
-    pub scale: f64,
-}
-
-impl Default for Dither {
-    fn default() -> Self {
-        Dither::new(DitherPattern::Bayer4)
+settings! {
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct Dither {
+        pub pattern: DitherPattern = DitherPattern::Bayer4 => choice(DitherPattern::NAMES), "the threshold pattern";
+        pub space: DitherSpace = DitherSpace::Screen => choice(DitherSpace::NAMES),
+            "what the pattern is fixed to: the screen's pixels or the surface";
+        /// How far in L.n a pixel may move toward the neighbouring band: L.n + (t - 1/2) amount is
+        /// banded, t the pattern's threshold.
+        pub amount: f64 = 0.15 => float(closed(0.0, 2.0)),
+            "how far in L.n a pixel may move toward the neighbouring band, 0 to 2";
+        /// Pixels a pattern cell covers.
+        pub scale: f64 = 1.0 => float(closed(1.0, 64.0)), "pixels a pattern cell covers, 1 to 64", pixels;
     }
+    described(positional: 1);
 }
 
 impl Dither {
+    /// The default settings with `pattern`.
     pub fn new(pattern: DitherPattern) -> Self {
-        Dither { pattern, space: DitherSpace::Screen, amount: DEFAULT_DITHER_AMOUNT, scale: 1.0 }
+        Dither { pattern, ..Dither::default() }
     }
 
     /// Checks the settings; `prefix` names them in errors ("" while they are being made). Its
-    /// numbers' bounds are its description's (`settings::dither`).
+    /// numbers' bounds are its declaration's.
     pub fn validate(&self, prefix: &str) -> Result<()> {
         check_bounds(self, prefix)
     }

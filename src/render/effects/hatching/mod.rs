@@ -97,13 +97,8 @@ impl Hatching {
     /// Checks the settings; `prefix` names them in errors ("" while they are being made).
     pub fn validate(&self, prefix: &str) -> Result<()> {
         check_unit(&field(prefix, "ink"), &self.ink)?;
-        if !(self.spacing.is_finite() && (2.0..=256.0).contains(&self.spacing)) {
-            return Err(Error::invalid(
-                field(prefix, "spacing"),
-                format!("must be in [2, 256] pixels, got {}", self.spacing),
-            ));
-        }
-        if !(self.width.is_finite() && self.width > 0.0 && self.width <= self.spacing) {
+        // the spacing's and width's bounds are Material's description's
+        if !(self.width <= self.spacing) {
             return Err(Error::invalid(
                 field(prefix, "width"),
                 format!("must be in (0, spacing] pixels, got {}", self.width),

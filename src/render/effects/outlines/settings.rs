@@ -5,8 +5,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::edges::contours::{check_smoothing, check_threshold, DEFAULT_SUGGESTIVE_THRESHOLD};
-use crate::edges::crooked_creases::{check_max_crease_turn, DEFAULT_MAX_CREASE_TURN};
+use crate::edges::contours::DEFAULT_SUGGESTIVE_THRESHOLD;
+use crate::edges::crooked_creases::DEFAULT_MAX_CREASE_TURN;
 use crate::edges::detect::{DEFAULT_DEPTH_THRESHOLD, DEFAULT_NORMAL_THRESHOLD};
 use crate::edges::outlines::LineKind;
 use crate::edges::short_creases::DEFAULT_MIN_CREASE_LENGTH;
@@ -14,13 +14,15 @@ use crate::edges::DEFAULT_CREASE_ANGLE;
 use crate::error::field;
 use crate::error::{Error, Result};
 use crate::render::color::{check_unit, Srgb};
+use crate::render::settings::declare::declared_fields;
+use crate::render::settings::{
+    build, check_bounds, settings, Constructor, Described, Field, FieldValue, Kind, Range, Setting, Value,
+};
 
-use super::stroke_width::StrokeWidth;
+use super::stroke_width::{StrokeWidth, MAX_TAPER};
 
 /// Width of lines in output pixels when none is given.
 pub const DEFAULT_WIDTH: f32 = 1.5;
-/// Ink colour when none is given (sRGB).
-pub const DEFAULT_INK: Srgb = [0.0, 0.0, 0.0];
 /// Widest line, in output pixels.
 pub const MAX_WIDTH: f32 = 64.0;
 /// Hidden-line offset in pixel footprints (see `Outlines::depth_offset`).
@@ -79,32 +81,28 @@ pub const DEFAULT_DEPTH_JUMP: f32 = 3.0;
 pub const IMAGE_KIND: usize = LineKind::COUNT;
 pub const INK_KINDS: usize = LineKind::COUNT + 1;
 
-/// How one kind of line is drawn.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct LineStyle {
-    pub color: Srgb,
-    /// Full width in output pixels (the same at every resolution and supersampling factor).
-    /// Image-space edges are one pixel wide whatever this says.
-    pub width: f32,
+settings! {
+    /// How one kind of line is drawn.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct LineStyle {
+        /// Black when none is given.
+        pub color: Srgb = [0.0; 3] => color(), "the ink's sRGB colour";
+        /// Full width in output pixels (the same at every resolution and supersampling factor).
+        /// Image-space edges are one pixel wide whatever this says.
+        pub width: f32 = DEFAULT_WIDTH => float(WIDTH_RULE),
+            "width in output pixels, the same at every resolution and supersampling factor", pixels;
+    }
+    described(positional: 2);
 }
 
-impl Default for LineStyle {
-    fn default() -> Self {
-        LineStyle { color: DEFAULT_INK, width: DEFAULT_WIDTH }
-    }
-}
+/// A line's width in output pixels: more than 0, at most `MAX_WIDTH`.
+pub const WIDTH_RULE: Range = Range::above_up_to(0.0, MAX_WIDTH as f64).slider(0.25, MAX_WIDTH as f64);
 
 impl LineStyle {
     /// Checks the style; `prefix` names it in errors ("" while it is being made).
     pub fn validate(&self, prefix: &str) -> Result<()> {
         check_unit(&field(prefix, "color"), &self.color)?;
-        if !(self.width > 0.0 && self.width <= MAX_WIDTH) {
-            return Err(Error::invalid(
-                field(prefix, "width"),
-                format!("must be in (0, {MAX_WIDTH}] pixels, got {}", self.width),
-            ));
-        }
-        Ok(())
+        check_bounds(self, prefix)
     }
 }
 
@@ -254,35 +252,201 @@ impl Outlines {
                 s.validate(&field(prefix, name))?;
             }
         }
-        // angles between normals, by the crease angle's rule
-        let in_degrees = |name: &str, a: f64| {
-            crate::edges::feature::check_crease_angle(a).map_err(|_| {
-                Error::invalid(field(prefix, name), format!("must be in [0, 180] degrees, got {a}"))
-            })
-        };
-        in_degrees("crease_angle", self.crease_angle)?;
-        in_degrees("normal_angle", self.normal_angle as f64)?;
-        check_max_crease_turn(&field(prefix, "max_crease_turn"), self.max_crease_turn)?;
-        // finite and >= 0, in the unit each is measured in
-        for (name, t, unit) in [
-            ("normal_threshold", self.normal_threshold as f64, ""),
-            ("depth_threshold", self.depth_threshold as f64, ""),
-            ("depth_jump", self.depth_jump as f64, " pixel footprints"),
-            ("min_crease_length", self.min_crease_length, " (a fraction of the diagonal)"),
-            ("depth_offset", self.depth_offset as f64, " pixels"),
-        ] {
-            if !(t.is_finite() && t >= 0.0) {
-                return Err(Error::invalid(
-                    field(prefix, name),
-                    format!("must be finite and >= 0{unit}, got {t}"),
-                ));
+        // every number's bounds (the angles, thresholds, lengths and the taper): the description's
+        check_bounds(self, prefix)
+    }
+}
+
+/// An angle in degrees between 0 and 180.
+const DEGREES: Range = Range::closed(0.0, 180.0);
+/// A tolerance or threshold: finite and >= 0.
+const NON_NEGATIVE: Range = Range::at_least(0.0);
+
+const STYLE_HELP: &str = "True (the common style), False (not drawn), a LineStyle or a colour";
+
+// each ink kind's style is a field (`style`): True, False, a LineStyle or a colour
+declared_fields! {
+    Outlines {
+        kind: String [get kind_text, set set_kind] => choice(&Outlines::KINDS),
+            "lines found on the mesh, edges found in the image, or both";
+        silhouette: Value [get style, set set_style] => Kind::Style, STYLE_HELP, optional;
+        boundary: Value [get style, set set_style] => Kind::Style, STYLE_HELP, optional;
+        nonmanifold: Value [get style, set set_style] => Kind::Style, STYLE_HELP, optional;
+        ridge: Value [get style, set set_style] => Kind::Style, STYLE_HELP, optional;
+        valley: Value [get style, set set_style] => Kind::Style, STYLE_HELP, optional;
+        suggestive: Value [get style, set set_style] => Kind::Style,
+            "suggestive contours (DeCarlo et al.): drawn only when asked for", optional;
+        material: Value [get style, set set_style] => Kind::Style,
+            "borders between scene items that meet edge to edge", optional;
+        image: Value [get style, set set_style] => Kind::Style, "image-space edges", optional;
+        crease_angle: f64 [.crease_angle] => float(DEGREES),
+            "dihedral angle in degrees above which an edge is a crease";
+        weld: bool [.weld] => boolean(),
+            "merge vertices at equal positions first, so seams are not drawn as boundaries";
+        contours: ContourRule [.contours] => choice(ContourRule::NAMES),
+            "how silhouettes are found: 'faces', 'smooth' or 'auto'";
+        suggestive_threshold: f64 [.suggestive_threshold] => float(NON_NEGATIVE.slider(0.0, 0.2)),
+            "the suggestive contours' derivative test, relative to the mesh's feature size";
+        curvature_smoothing: Option<f64> [.curvature_smoothing] => float(NON_NEGATIVE.slider(0.0, 8.0)),
+            "width in mean edge lengths over which suggestive contours' curvature is averaged (None: 2, at most 1% of the diagonal)", optional;
+        min_crease_length: f64 [.min_crease_length] => float(NON_NEGATIVE.slider(0.0, 0.2)),
+            "crease pieces shorter than this fraction of the bounding-box diagonal are not drawn";
+        max_crease_turn: f64 [.max_crease_turn] => float(DEGREES),
+            "crease pieces turning by more than this many degrees on average are not drawn (180: all)";
+        image_rule: ImageRule [.image_rule] => choice(ImageRule::NAMES), "how image-space edges are found";
+        normal_angle: f32 [.normal_angle] => float(DEGREES), "degrees of normal turn between pixels drawn as an edge";
+        depth_jump: f32 [.depth_jump] => float(NON_NEGATIVE.slider(0.0, 20.0)),
+            "depth jump between pixels drawn as an edge, in pixel footprints";
+        normal_threshold: f32 [.normal_threshold] => float(NON_NEGATIVE.slider(0.0, 4.0)),
+            "the paper rule's Sobel threshold on normals";
+        depth_threshold: f32 [.depth_threshold] => float(NON_NEGATIVE.slider(0.0, 4.0)),
+            "the paper rule's Sobel threshold on depth";
+        depth_offset: f32 [.depth_offset] => float(NON_NEGATIVE.slider(0.0, 8.0)),
+            "hidden-line removal's tolerance in pixel footprints";
+        taper: f64 [.stroke_width.taper] => float(closed(0.0, MAX_TAPER).slider(0.0, 64.0)),
+            "pixels over which lines thin toward their ends (0: none)", pixels;
+        width_by_depth: bool [.stroke_width.by_depth] => boolean(),
+            "scale line widths by the scene centre's depth over the line's";
+        join_kinds: bool [.join_kinds] => boolean(), "join strokes of different kinds that meet end to end";
+    }
+}
+
+/// The fields that are not stored as they are described.
+impl Outlines {
+    fn kind_text(&self, _: &str) -> String {
+        self.kind_name().to_string()
+    }
+
+    fn set_kind(&mut self, field: &str, kind: String) -> Result<()> {
+        (self.mesh, self.image) = Outlines::parse_kind(field, &kind)?;
+        Ok(())
+    }
+
+    /// An ink kind's style: a LineStyle, or False where the kind is not drawn.
+    fn style(&self, field: &str) -> Value {
+        let style = slot(field).and_then(|k| self.styles[k]);
+        style.map_or(Value::Bool(false), |s| Value::setting(Setting::LineStyle(s)))
+    }
+
+    fn set_style(&mut self, field: &str, value: Value) -> Result<()> {
+        let k = slot(field).expect("a style field is an ink kind");
+        self.styles[k] = FieldValue::from_value(field, in_style(value, LineStyle::default()))?;
+        Ok(())
+    }
+}
+
+const EXTRAS: &[Field] = &[
+    Field::new("color", Kind::Color, "the common style's sRGB colour"),
+    Field::float("width", WIDTH_RULE, "the common style's width in output pixels").pixels(),
+    Field::new("crease", Kind::Style, "ridges and valleys together").optional(),
+];
+
+const PARAMS: &[&str] = &[
+    "kind",
+    "color",
+    "width",
+    "silhouette",
+    "boundary",
+    "crease",
+    "ridge",
+    "valley",
+    "nonmanifold",
+    "suggestive",
+    "material",
+    "image",
+    "crease_angle",
+    "weld",
+    "normal_threshold",
+    "depth_threshold",
+    "depth_offset",
+    "contours",
+    "suggestive_threshold",
+    "curvature_smoothing",
+    "min_crease_length",
+    "max_crease_turn",
+    "image_rule",
+    "normal_angle",
+    "depth_jump",
+    "taper",
+    "width_by_depth",
+    "join_kinds",
+];
+
+fn slot(name: &str) -> Option<usize> {
+    kind_names().iter().position(|k| *k == name)
+}
+
+/// A kind's style given as True or as a colour, in the common style.
+fn in_style(v: Value, common: LineStyle) -> Value {
+    match v {
+        Value::Bool(true) => Value::setting(Setting::LineStyle(common)),
+        Value::Triple(color) => Value::setting(Setting::LineStyle(LineStyle { color, ..common })),
+        other => other,
+    }
+}
+
+/// `Outlines(...)`: the common style and each kind's, then the rules.
+impl Described for Outlines {
+    const EXTRAS: &'static [Field] = EXTRAS;
+
+    const CONSTRUCTORS: &'static [Constructor] = &[Constructor::only(PARAMS, 1)];
+
+    fn start(_: &str) -> Self {
+        Outlines::default()
+    }
+
+    /// `'mesh'`, `'image'` or `'both'`: those lines in the default styles.
+    fn shorthand(field: &str, value: Value) -> Result<Self> {
+        let (mesh, image) = Outlines::parse_kind(field, &value.text(field)?)?;
+        Ok(Outlines::new(mesh, image))
+    }
+
+    /// The common style first (every kind drawn by default takes it), then each kind in it.
+    fn construct(constructor: &str, args: Vec<(&'static str, Value)>) -> Result<Self> {
+        let mut common = LineStyle::default();
+        let mut rest = Vec::with_capacity(args.len());
+        let mut crease = None;
+        for (name, v) in args {
+            match name {
+                "color" => common.color = v.triple(name)?,
+                "width" => common.width = v.float(name)? as f32,
+                "crease" => crease = Some(v),
+                _ => rest.push((name, v)),
             }
         }
-        check_threshold(&field(prefix, "suggestive_threshold"), self.suggestive_threshold)?;
-        if let Some(s) = self.curvature_smoothing {
-            check_smoothing(&field(prefix, "curvature_smoothing"), s)?;
+        let mut with_common = Vec::with_capacity(rest.len() + 8);
+        for (k, name) in kind_names().iter().enumerate() {
+            if k != LineKind::Suggestive as usize {
+                with_common.push((*name, Value::setting(Setting::LineStyle(common))));
+            }
         }
-        self.stroke_width.validate(prefix)
+        if let Some(c) = crease {
+            for name in ["ridge", "valley"] {
+                with_common.push((name, in_style(c.clone(), common)));
+            }
+        }
+        with_common.extend(
+            rest.into_iter().map(|(n, v)| (n, if slot(n).is_some() { in_style(v, common) } else { v })),
+        );
+        // later entries of the same kind win: `build` sorts stably by parameter
+        let mut seen = std::collections::HashMap::new();
+        for (i, (n, _)) in with_common.iter().enumerate() {
+            seen.insert(*n, i);
+        }
+        let args =
+            with_common.into_iter().enumerate().filter(|(i, (n, _))| seen[n] == *i).map(|(_, a)| a).collect();
+        build(constructor, args)
+    }
+
+    fn read(&self, _: &str, param: &str) -> Option<Value> {
+        match param {
+            "color" | "width" | "crease" => None,
+            _ => Some(self.get(param)),
+        }
+    }
+
+    fn check(&self) -> Result<()> {
+        self.validate("")
     }
 }
 
@@ -302,6 +466,9 @@ mod tests {
         let mut bad = o.clone();
         bad.depth_threshold = -1.0;
         assert!(bad.validate("outlines").is_err());
+        let mut bad = o.clone();
+        bad.stroke_width.taper = -1.0;
+        assert!(bad.validate("outlines").unwrap_err().to_string().starts_with("outlines.taper"));
         assert_eq!(kind_names()[IMAGE_KIND], "image");
     }
 }

@@ -8,9 +8,6 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::field;
-use crate::error::{Error, Result};
-
 /// The thinnest a tapered end gets, as a factor of the width (a round dot, not nothing).
 pub const TAPER_FLOOR: f64 = 0.2;
 /// Depth scaling never goes beyond these factors (a line at the camera would be infinitely wide).
@@ -33,16 +30,6 @@ pub struct StrokeWidth {
 }
 
 impl StrokeWidth {
-    pub fn validate(&self, prefix: &str) -> Result<()> {
-        if !(self.taper.is_finite() && (0.0..=MAX_TAPER).contains(&self.taper)) {
-            return Err(Error::invalid(
-                field(prefix, "taper"),
-                format!("must be in [0, {MAX_TAPER}] pixels, got {}", self.taper),
-            ));
-        }
-        Ok(())
-    }
-
     /// Whether every factor is 1.
     pub fn is_constant(&self) -> bool {
         self.taper == 0.0 && !self.by_depth
@@ -87,7 +74,6 @@ mod tests {
         assert!(taper.factors(&along, &depths, true, 2.0).iter().all(|&f| f == 1.0), "a loop has no ends");
         let depth = StrokeWidth { taper: 0.0, by_depth: true };
         assert_eq!(depth.factors(&[0.0, 1.0, 2.0], &[1.0, 2.0, 100.0], false, 2.0), vec![2.0, 1.0, 0.25]);
-        assert!(StrokeWidth { taper: -1.0, by_depth: false }.validate("o").is_err());
         assert!(StrokeWidth::default().is_constant());
     }
 }

@@ -7,9 +7,6 @@
 
 #[cfg(test)]
 mod gpu_tests;
-mod settings;
-
-use serde::{Deserialize, Serialize};
 
 use crate::error::field;
 use crate::error::Result;
@@ -17,7 +14,7 @@ use crate::render::block::Block;
 use crate::render::color::{check_unit, to_linear, Srgb};
 use crate::render::effects::surface_effect::{Hook, Surface, SurfaceEffect, Variant};
 use crate::render::scene::model::step_aa;
-use crate::render::settings::check_bounds;
+use crate::render::settings::{check_bounds, settings};
 
 crate::named_enum! {
     /// Which side of the surface the rim shows on.
@@ -41,36 +38,28 @@ crate::named_enum! {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Rim {
-    /// sRGB.
-    pub color: Srgb,
-    /// The rim covers the surface where n.v < width (0 at the silhouette, 1 facing the viewer).
-    pub width: f64,
-    /// How far in n.v the rim's border fades (0: a hard border, blended over a pixel only).
-    pub softness: f64,
-    /// The share of the rim's colour at full coverage.
-    pub strength: f64,
-    pub side: RimSide,
-    pub blend: RimBlend,
-}
-
-impl Default for Rim {
-    fn default() -> Self {
-        Rim {
-            color: [1.0; 3],
-            width: 0.3,
-            softness: 0.0,
-            strength: 0.6,
-            side: RimSide::Both,
-            blend: RimBlend::Add,
-        }
+settings! {
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct Rim {
+        pub color: Srgb = [1.0; 3] => color(), "the rim's sRGB colour";
+        /// The rim covers the surface where n.v < width (0 at the silhouette, 1 facing the viewer).
+        pub width: f64 = 0.3 => float(closed(0.0, 1.0)), "the rim covers the surface where n.v < width, 0 to 1";
+        /// How far in n.v the rim's border fades (0: a hard border, blended over a pixel only).
+        pub softness: f64 = 0.0 => float(closed(0.0, 1.0)),
+            "how far in n.v its border fades, 0 (a hard border) to 1";
+        /// The share of the rim's colour at full coverage.
+        pub strength: f64 = 0.6 => float(closed(0.0, 1.0)), "the share of its colour at full coverage, 0 to 1";
+        pub side: RimSide = RimSide::Both => choice(RimSide::NAMES),
+            "where it shows: 'both' sides, the 'lit' side or the 'shadowed' side";
+        pub blend: RimBlend = RimBlend::Add => choice(RimBlend::NAMES),
+            "'add' (as light) or 'mix' (painted over, as a colour)";
     }
+    described(positional: 1);
 }
 
 impl Rim {
     /// Checks the settings; `prefix` names them in errors ("" while they are being made). Its
-    /// numbers' bounds are its description's (`settings.rs`).
+    /// numbers' bounds are its declaration's.
     pub fn validate(&self, prefix: &str) -> Result<()> {
         check_unit(&field(prefix, "color"), &self.color)?;
         check_bounds(self, prefix)

@@ -1,19 +1,15 @@
 //! Shadow settings of a light (Kang, Kim and Yoon's shadow z-buffer): the shadow map's size,
 //! the depth bias that keeps lit surfaces from shadowing themselves, and the filter.
 
-use serde::{Deserialize, Serialize};
-
 use crate::error::field;
 use crate::error::{Error, Result};
+use crate::render::settings::{check_bounds, settings, Range};
 
-/// The shadow map's side when none is given, in texels.
-pub const DEFAULT_SHADOW_SIZE: u32 = 2048;
-/// The depth bias when none is given, in shadow-map texels per unit of receiver slope.
-pub const DEFAULT_SHADOW_BIAS: f64 = 1.0;
-/// The share of its light a shadow takes away when none is given: all of it.
-pub const DEFAULT_SHADOW_STRENGTH: f64 = 1.0;
 /// Sides a shadow map may have.
 pub const SHADOW_SIZES: std::ops::RangeInclusive<u32> = 64..=8192;
+/// The size's rule.
+const SIZE_RULE: Range =
+    Range::closed(*SHADOW_SIZES.start() as f64, *SHADOW_SIZES.end() as f64).rule("a power of two");
 /// Receiver slopes (tangent of the angle to the light) beyond this get this slope's bias:
 /// surfaces that graze the light would otherwise get a bias without bound.
 pub const MAX_BIAS_SLOPE: f64 = 8.0;
@@ -40,61 +36,33 @@ impl ShadowFilter {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Shadows {
-    /// Side of the square shadow map in texels: a power of two in `SHADOW_SIZES`.
-    pub size: u32,
-    /// Depth bias in texels per unit of receiver slope (>= 0).
-    pub bias: f64,
-    pub filter: ShadowFilter,
-    /// The share of the light a shadow takes away, in [0, 1]: 1 a full shadow, less a lighter
-    /// one (the shadowed side keeps 1 - strength of the light). Surfaces facing away from the
-    /// light get none of it whatever this is.
-    #[serde(default = "full_strength")]
-    pub strength: f64,
-}
-
-/// Settings saved before the strength existed load with full shadows.
-fn full_strength() -> f64 {
-    DEFAULT_SHADOW_STRENGTH
-}
-
-impl Default for Shadows {
-    fn default() -> Self {
-        Shadows {
-            size: DEFAULT_SHADOW_SIZE,
-            bias: DEFAULT_SHADOW_BIAS,
-            filter: ShadowFilter::Pcf,
-            strength: DEFAULT_SHADOW_STRENGTH,
-        }
+settings! {
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct Shadows {
+        /// Side of the square shadow map in texels: a power of two in `SHADOW_SIZES`.
+        pub size: u32 = 2048
+            => int(SIZE_RULE), "the shadow map's side in texels, a power of two";
+        /// Depth bias in texels per unit of receiver slope.
+        pub bias: f64 = 1.0 => float(at_least(0.0).slider(0.0, 8.0)),
+            "depth bias in texels per unit of receiver slope, >= 0";
+        pub filter: ShadowFilter = ShadowFilter::Pcf => choice(ShadowFilter::NAMES),
+            "how the map is read: 'pcf' (soft edges) or 'none'";
+        /// The share of the light a shadow takes away: 1 a full shadow, less a lighter one (the
+        /// shadowed side keeps 1 - strength of the light). Surfaces facing away from the light
+        /// get none of it whatever this is. Settings saved before it existed load at full.
+        pub strength: f64 = 1.0 => float(closed(0.0, 1.0)),
+            "the share of the light a shadow takes away: 1 a full shadow, 0.5 a half-tone one";
     }
+    described(positional: 3);
 }
 
 impl Shadows {
-    /// Checks the settings; `prefix` names them in errors ("" while they are being made).
+    /// Checks the settings; `prefix` names them in errors ("" while they are being made): the
+    /// bounds of their description, and the size's power of two.
     pub fn validate(&self, prefix: &str) -> Result<()> {
-        if !(SHADOW_SIZES.contains(&self.size) && self.size.is_power_of_two()) {
-            return Err(Error::invalid(
-                field(prefix, "size"),
-                format!(
-                    "must be a power of two from {} to {}, got {}",
-                    SHADOW_SIZES.start(),
-                    SHADOW_SIZES.end(),
-                    self.size
-                ),
-            ));
-        }
-        if !(self.bias.is_finite() && self.bias >= 0.0) {
-            return Err(Error::invalid(
-                field(prefix, "bias"),
-                format!("must be finite and >= 0, got {}", self.bias),
-            ));
-        }
-        if !(0.0..=1.0).contains(&self.strength) {
-            return Err(Error::invalid(
-                field(prefix, "strength"),
-                format!("must be in [0, 1], got {}", self.strength),
-            ));
+        check_bounds(self, prefix)?;
+        if !self.size.is_power_of_two() {
+            return Err(Error::invalid(field(prefix, "size"), SIZE_RULE.rule_refusal(self.size as f64)));
         }
         Ok(())
     }
