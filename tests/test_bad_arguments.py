@@ -1,27 +1,19 @@
-"""Every public function and class parameter against bad values, generated where the core
-describes the parameter and from one hand-written table where it cannot.
+"""Every public function and class parameter against bad values. The settings classes'
+constructors and ``replace``, the render keywords (``RenderOptions``' fields) and the smoothing
+keywords are generated from the core's descriptions (tests/descriptions.py): a number gives the
+probes of its rule's bounds, a choice its names, unknown ones and those the same parameter takes
+elsewhere, a flag its bools. Written here is only what a description cannot say: the probes of
+arrays, colours and other compound kinds, a rule that is not a range, rules between parameters,
+the device's limits, how a setting is rendered, and the functions no description covers.
 
-The settings classes' constructors and ``replace``, the render keywords (``RenderOptions``'
-fields) and the smoothing functions' keywords are generated from the core's descriptions
-(tests/descriptions.py): a described number gives the probes of its rule's bounds (in and out
-of range, at an excluded end, NaN, inf, wrong types), a choice its names and unknown ones (and
-the names the same parameter takes elsewhere), a flag its bools. What a description cannot say
-is written here: arrays, colours and the other compound kinds' probes, a rule that is not a
-range, rules between parameters, the device's limits, how a setting is rendered.
-
-Each probe's outcome follows the documented rules:
-
-- a legal value gives a result with finite floats (a non-finite probe may give non-finite
-  floats only where a filter passes them through, as Sobel does);
-- anything else raises TypeError, ValueError or IndexError whose message starts with the
-  parameter's name ("name: ...", "name[i]: ..." for an element, "a, b: ..." for arguments that
-  only make sense together, or "owner.name: ..." for a field of a compound argument, such as
-  "meshes[0].transform"); some refusals must also give a hint (colours above 1: "divide by
-  255"); a legal value may also raise a documented domain exception such as ConvergenceError;
-- nothing crashes or hangs, and the next valid call gives the same result as before.
-
-The renderer's probes render 16x16 images with one shared Renderer; a scene setting that its
-constructor accepts must also render. To cover another function, add a `Case` to `CASES`.
+Each probe's outcome follows the documented rules: a legal value gives a result with finite
+floats (a filter such as Sobel may pass non-finite pixels through) or a documented domain error
+(ConvergenceError); anything else raises TypeError, ValueError or IndexError whose message starts
+with the parameter's name ("name: ...", "name[i]: ..." for an element, "a, b: ..." for arguments
+that go together, "owner.name: ..." for a field of a compound argument such as
+"meshes[0].transform"), some with a hint (colours above 1: "divide by 255"); nothing crashes or
+hangs, and the next valid call gives the same result as before. The renderer's probes render
+16x16 images with one shared Renderer; a setting its constructor accepts must also render.
 """
 
 from __future__ import annotations
@@ -47,9 +39,10 @@ from toonmesh import testing
 from toonmesh.data import load_obj
 
 # ------------------------------------------------------------------------------------------------
-# What a parameter takes
+# What a parameter takes, and its probes: (label, value, expected outcome)
 
 OK = "ok"  # the outcome of a legal value
+Probes = List[Tuple[str, Any, Any]]
 
 
 @dataclass(frozen=True)
@@ -59,8 +52,8 @@ class Flag:
 
 @dataclass(frozen=True)
 class Number:
-    """An int or float (or NumPy number) in [lo, hi] (open ends where asked); never NaN.
-    Probing values above ``slow_above`` would take long (they are legal, so they would run)."""
+    """An int or float (or NumPy number) in [lo, hi] (open ends where asked), never NaN; legal
+    values above ``slow_above`` would take long, so they are not probed."""
 
     lo: float
     hi: float
@@ -94,7 +87,7 @@ class Integer:
 @dataclass(frozen=True)
 class Name:
     """A str from `valid` (case-insensitively where `any_case`); `invalid`: names that exist
-    elsewhere but not here; `more`: (label, value, outcome) probes of other forms it takes."""
+    elsewhere but not here; `more`: probes of other forms it takes (an Outlines object)."""
 
     valid: Tuple[str, ...]
     invalid: Tuple[str, ...] = ()
@@ -105,7 +98,7 @@ class Name:
 
 @dataclass(frozen=True)
 class Array:
-    """An array (or other compound) argument; `probes` lists (label, value, expected outcome)."""
+    """An array or other compound argument, by its probes."""
 
     probes: Tuple[Tuple[str, Any, Any], ...]
 
@@ -123,13 +116,13 @@ class Param:
     name: str
     kind: Any
     none: Any = TypeError  # what None gives: OK (the default) or an exception
-    also: Tuple[type, ...] = ()  # extra legal outcomes (e.g. ConvergenceError for a tiny max_iter)
+    also: Tuple[type, ...] = ()  # extra legal outcomes (a GPU that is not there)
 
 
 @dataclass
 class Case:
-    """One public function or method: `call(**kwargs)` with `base` kwargs being a valid call;
-    `also`: exceptions a legal probe may raise (documented domain errors)."""
+    """One public function or method: `call(**base)` is a valid call; `also`: documented domain
+    errors a legal probe may raise."""
 
     name: str
     call: Callable[..., Any]
@@ -138,166 +131,107 @@ class Case:
     also: Tuple[type, ...] = ()
 
 
-# ------------------------------------------------------------------------------------------------
-# Probes per kind
-
-
-def in_range(value: float, kind: Any) -> Any:
-    """What a value of the right type gives: OK within the kind's range, ValueError outside it;
-    None (left out) for a legal value that would take long (above ``kind.slow_above``)."""
-    legal = kind.legal(value)
-    if legal and value > kind.slow_above:
-        return None
-    return OK if legal else ValueError
-
-
-def number_probes(p: Param) -> List[Tuple[str, Any, Any]]:
-    k: Number = p.kind
-    finite_lo = k.lo if math.isfinite(k.lo) else -1e3
-    finite_hi = k.hi if math.isfinite(k.hi) else 1e3
-    mid = 0.5 * (finite_lo + finite_hi)
-    values: List[Tuple[str, Any]] = [
-        ("nan", float("nan")), ("inf", float("inf")), ("-inf", float("-inf")), ("negative", -1.0), ("zero", 0.0),
-        ("int zero", 0), ("lo", k.lo), ("hi", k.hi), ("mid", mid), ("huge float", 1e308), ("huge int", 2**63),
-        ("int beyond float", 10**400), ("numpy float32", np.float32(mid)),
-        ("numpy int", np.int64(round(max(min(mid, 1e18), -1e18)))), ("numpy nan", np.float64("nan")),
-    ]
-    out: List[Tuple[str, Any, Any]] = []
+def _ranged(k: Any, values: List[Tuple[str, Any]]) -> Probes:
+    """Values of the right type: OK within the kind's range, ValueError outside it (and for an
+    int beyond a float, or beyond 64 bits); a legal value above ``k.slow_above`` is left out."""
+    out: Probes = []
     for label, v in values:
-        fv = float("inf") if isinstance(v, int) and abs(v) > 1e308 else float(v)
-        if not math.isfinite(fv) and not math.isnan(fv) and isinstance(v, int):
-            out.append((label, v, ValueError))  # an int too large for a float
-            continue
-        outcome = in_range(fv, k)
-        if outcome is not None:
-            out.append((label, v, outcome))
-    out += [
-        ("bool", True, TypeError), ("numpy bool", np.True_, TypeError), ("string", "1", TypeError),
-        ("list", [mid], TypeError), ("complex", 1 + 0j, TypeError), ("none", None, p.none),
-    ]
-    return out
-
-
-def integer_probes(p: Param) -> List[Tuple[str, Any, Any]]:
-    k: Integer = p.kind
-    out: List[Tuple[str, Any, Any]] = []
-    for label, v in [
-        ("zero", 0), ("negative", -1), ("lo", k.lo), ("hi", k.hi), ("above hi", k.hi + 1), ("below lo", k.lo - 1),
-        ("2**63", 2**63), ("-2**63-1", -(2**63) - 1), ("2**64", 2**64),
-        ("numpy int8", np.int8(min(max(k.lo, 0), 100))), ("numpy uint64 max", np.uint64(2**64 - 1)),
-        *([(str(v), v) for v in range(k.lo + 1, k.hi)] if k.hi - k.lo <= 8 else []),
-    ]:
-        iv = int(v)
-        if not k.representable(iv):
+        integer = isinstance(k, Integer)
+        if not k.representable(int(v)) if integer else isinstance(v, int) and abs(v) > 1e308:
             out.append((label, v, ValueError))
             continue
-        outcome = in_range(iv, k)
-        if outcome is not None:
-            out.append((label, v, outcome))
-    out += [
-        ("float", 2.5, TypeError), ("integral float", 2.0, TypeError), ("nan", float("nan"), TypeError),
-        ("bool", True, TypeError), ("numpy bool", np.False_, TypeError), ("string", "3", TypeError),
-        ("none", None, p.none),
-    ]
+        x = int(v) if integer else float(v)
+        if not (k.legal(x) and x > k.slow_above):
+            out.append((label, v, OK if k.legal(x) else ValueError))
     return out
 
 
-def flag_probes(p: Param) -> List[Tuple[str, Any, Any]]:
-    return [
-        ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK), ("numpy False", np.bool_(False), OK),
-        ("one", 1, TypeError), ("zero", 0, TypeError), ("string no", "no", TypeError),
-        ("empty string", "", TypeError), ("list", [True], TypeError), ("0-d array", np.array(True), TypeError),
-        ("none", None, p.none),
-    ]
-
-
-def name_probes(p: Param) -> List[Tuple[str, Any, Any]]:
-    k: Name = p.kind
-    out: List[Tuple[str, Any, Any]] = [(v, v, OK) for v in k.valid]
-    out += [(f"{v} (not here)", v, ValueError) for v in k.invalid]
-    out += list(k.more)
-    out += [
-        ("upper case", k.valid[0].upper(), OK if k.any_case else ValueError), ("unknown", "bogus", ValueError),
-        ("empty", "", k.empty), ("int", 3, TypeError), ("bytes", k.valid[0].encode(), TypeError),
-        ("list", [k.valid[0]], TypeError), ("none", None, p.none),
-    ]
-    return out
-
-
-def probes(p: Param) -> List[Tuple[str, Any, Any]]:
-    kind = p.kind
-    if isinstance(kind, Number):
-        return number_probes(p)
-    if isinstance(kind, Integer):
-        return integer_probes(p)
-    if isinstance(kind, Flag):
-        return flag_probes(p)
-    if isinstance(kind, Name):
-        return name_probes(p)
-    return list(kind.probes) + [("none", None, p.none)]
+def probes(p: Param) -> Probes:
+    k, none = p.kind, [("none", None, p.none)]
+    if isinstance(k, Number):
+        mid = 0.5 * ((k.lo if math.isfinite(k.lo) else -1e3) + (k.hi if math.isfinite(k.hi) else 1e3))
+        return _ranged(k, [
+            ("nan", float("nan")), ("inf", float("inf")), ("-inf", float("-inf")), ("negative", -1.0), ("zero", 0.0),
+            ("int zero", 0), ("lo", k.lo), ("hi", k.hi), ("mid", mid), ("huge float", 1e308), ("huge int", 2**63),
+            ("int beyond float", 10**400), ("numpy float32", np.float32(mid)),
+            ("numpy int", np.int64(round(max(min(mid, 1e18), -1e18)))), ("numpy nan", np.float64("nan")),
+        ]) + [("bool", True, TypeError), ("numpy bool", np.True_, TypeError), ("string", "1", TypeError),
+              ("list", [mid], TypeError), ("complex", 1 + 0j, TypeError)] + none
+    if isinstance(k, Integer):
+        return _ranged(k, [
+            ("zero", 0), ("negative", -1), ("lo", k.lo), ("hi", k.hi), ("above hi", k.hi + 1), ("below lo", k.lo - 1),
+            ("2**63", 2**63), ("-2**63-1", -(2**63) - 1), ("2**64", 2**64),
+            ("numpy int8", np.int8(min(max(k.lo, 0), 100))), ("numpy uint64 max", np.uint64(2**64 - 1)),
+            *([(str(v), v) for v in range(k.lo + 1, k.hi)] if k.hi - k.lo <= 8 else []),
+        ]) + [("float", 2.5, TypeError), ("integral float", 2.0, TypeError), ("nan", float("nan"), TypeError),
+              ("bool", True, TypeError), ("numpy bool", np.False_, TypeError), ("string", "3", TypeError)] + none
+    if isinstance(k, Flag):
+        return [("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
+                ("numpy False", np.bool_(False), OK), ("one", 1, TypeError), ("zero", 0, TypeError),
+                ("string no", "no", TypeError), ("empty string", "", TypeError), ("list", [True], TypeError),
+                ("0-d array", np.array(True), TypeError)] + none
+    if isinstance(k, Name):
+        return [(v, v, OK) for v in k.valid] + [(f"{v} (not here)", v, ValueError) for v in k.invalid] + [
+            *k.more, ("upper case", k.valid[0].upper(), OK if k.any_case else ValueError),
+            ("unknown", "bogus", ValueError), ("empty", "", k.empty), ("int", 3, TypeError),
+            ("bytes", k.valid[0].encode(), TypeError), ("list", [k.valid[0]], TypeError)] + none
+    return list(k.probes) + none
 
 
 # ------------------------------------------------------------------------------------------------
 # Array probes
 
-
 V, F = tm.shapes.icosphere(1, noise=0.05, seed=2)  # 42 vertices, 80 faces
 N = len(V)
 
 
-def _with(a: np.ndarray, where: Tuple[int, int], value: float) -> np.ndarray:
+def _with(a: np.ndarray, where: Tuple[int, ...], value: float) -> np.ndarray:
     b = a.copy()
     b[where] = value
     return b
 
 
-VERTICES = Array(
-    (
-        ("float64", V, OK), ("float32", V.astype(np.float32), OK), ("big-endian float64", V.astype(">f8"), OK),
-        ("big-endian float32", V.astype(">f4"), OK), ("fortran order", np.asfortranarray(V), OK),
-        ("strided view", np.repeat(V, 2, axis=1)[:, ::2], OK), ("nested list", V.tolist(), OK),
-        ("huge but finite", V * 1e307, OK), ("tiny", V * 1e-310, OK), ("int64", V.astype(np.int64), TypeError),
-        ("float16", V.astype(np.float16), TypeError), ("complex", V.astype(complex), TypeError),
-        ("bool", V > 0, TypeError), ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError),
-        ("a string", "vertices", TypeError), ("nan", _with(V, (3, 1), np.nan), ValueError),
-        ("inf", _with(V, (3, 1), np.inf), ValueError), ("-inf", _with(V, (0, 0), -np.inf), ValueError),
-        ("shape (N, 2)", V[:, :2].copy(), ValueError), ("shape (N, 4)", np.hstack([V, V[:, :1]]), ValueError),
-        ("shape (N, 3, 1)", V[:, :, None].copy(), ValueError), ("flat", V.ravel().copy(), ValueError),
-        ("empty", np.zeros((0, 3)), ValueError), ("scalar", np.float64(1.0), ValueError),
-        ("ragged list", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
-    )
-)
+VERTICES = Array((
+    ("float64", V, OK), ("float32", V.astype(np.float32), OK), ("big-endian float64", V.astype(">f8"), OK),
+    ("big-endian float32", V.astype(">f4"), OK), ("fortran order", np.asfortranarray(V), OK),
+    ("strided view", np.repeat(V, 2, axis=1)[:, ::2], OK), ("nested list", V.tolist(), OK),
+    ("huge but finite", V * 1e307, OK), ("tiny", V * 1e-310, OK), ("int64", V.astype(np.int64), TypeError),
+    ("float16", V.astype(np.float16), TypeError), ("complex", V.astype(complex), TypeError),
+    ("bool", V > 0, TypeError), ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError),
+    ("a string", "vertices", TypeError), ("nan", _with(V, (3, 1), np.nan), ValueError),
+    ("inf", _with(V, (3, 1), np.inf), ValueError), ("-inf", _with(V, (0, 0), -np.inf), ValueError),
+    ("shape (N, 2)", V[:, :2].copy(), ValueError), ("shape (N, 4)", np.hstack([V, V[:, :1]]), ValueError),
+    ("shape (N, 3, 1)", V[:, :, None].copy(), ValueError), ("flat", V.ravel().copy(), ValueError),
+    ("empty", np.zeros((0, 3)), ValueError), ("scalar", np.float64(1.0), ValueError),
+    ("ragged list", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
+))
 
-FACES = Array(
-    (
-        ("int64", F, OK), ("int32", F.astype(np.int32), OK), ("uint32", F.astype(np.uint32), OK),
-        ("uint64", F.astype(np.uint64), OK), ("big-endian int32", F.astype(">i4"), OK),
-        ("big-endian uint64", F.astype(">u8"), OK), ("fortran order", np.asfortranarray(F), OK),
-        ("nested list", F.tolist(), OK), ("one face", F[:1].copy(), OK),
-        ("repeated index", np.vstack([F, [[0, 0, 1]]]), OK), ("int8", F.astype(np.int8), TypeError),
-        ("float", F.astype(float), TypeError), ("bool", F > 0, TypeError), ("strings", F.astype(str), TypeError),
-        ("negative index", _with(F, (5, 2), -1), IndexError), ("index N", _with(F, (5, 2), N), IndexError),
-        ("index 2**40", _with(F, (5, 2), 2**40), IndexError),
-        ("uint64 2**63", _with(F.astype(np.uint64), (0, 0), 2**63), IndexError),
-        ("shape (M, 4)", np.hstack([F, F[:, :1]]), ValueError), ("shape (M, 2)", F[:, :2].copy(), ValueError),
-        ("flat", F.ravel().copy(), ValueError), ("empty", np.zeros((0, 3), np.int64), ValueError),
-        ("a string", "faces", TypeError),
-    )
-)
+FACES = Array((
+    ("int64", F, OK), ("int32", F.astype(np.int32), OK), ("uint32", F.astype(np.uint32), OK),
+    ("uint64", F.astype(np.uint64), OK), ("big-endian int32", F.astype(">i4"), OK),
+    ("big-endian uint64", F.astype(">u8"), OK), ("fortran order", np.asfortranarray(F), OK),
+    ("nested list", F.tolist(), OK), ("one face", F[:1].copy(), OK),
+    ("repeated index", np.vstack([F, [[0, 0, 1]]]), OK), ("int8", F.astype(np.int8), TypeError),
+    ("float", F.astype(float), TypeError), ("bool", F > 0, TypeError), ("strings", F.astype(str), TypeError),
+    ("negative index", _with(F, (5, 2), -1), IndexError), ("index N", _with(F, (5, 2), N), IndexError),
+    ("index 2**40", _with(F, (5, 2), 2**40), IndexError),
+    ("uint64 2**63", _with(F.astype(np.uint64), (0, 0), 2**63), IndexError),
+    ("shape (M, 4)", np.hstack([F, F[:, :1]]), ValueError), ("shape (M, 2)", F[:, :2].copy(), ValueError),
+    ("flat", F.ravel().copy(), ValueError), ("empty", np.zeros((0, 3), np.int64), ValueError),
+    ("a string", "faces", TypeError),
+))
 
-PINNED = Array(
-    (
-        ("indices", np.array([0, 5]), OK), ("list", [0, 5], OK),
-        ("tuple of bools", tuple(i < 3 for i in range(N)), OK), ("bool mask", np.arange(N) < 3, OK),
-        ("int8", np.array([1], np.int8), OK), ("uint16", np.array([1], np.uint16), OK),
-        ("big-endian int32", np.array([1, 2], ">i4"), OK), ("uint64", np.array([1], np.uint64), OK),
-        ("empty list", [], OK), ("empty float array", np.array([]), OK), ("all", np.arange(N), OK),
-        ("negative", np.array([-1]), IndexError), ("index N", np.array([N]), IndexError),
-        ("uint64 max", np.array([2**64 - 1], np.uint64), IndexError), ("float", np.array([1.0]), TypeError),
-        ("strings", np.array(["1"]), TypeError), ("mask too short", np.ones(N - 1, bool), ValueError),
-        ("2-D array", np.array([[0, 1]]), ValueError), ("2-D list", [[0, 1]], TypeError), ("scalar", 3, TypeError),
-    )
-)
+PINNED = Array((
+    ("indices", np.array([0, 5]), OK), ("list", [0, 5], OK),
+    ("tuple of bools", tuple(i < 3 for i in range(N)), OK), ("bool mask", np.arange(N) < 3, OK),
+    ("int8", np.array([1], np.int8), OK), ("uint16", np.array([1], np.uint16), OK),
+    ("big-endian int32", np.array([1, 2], ">i4"), OK), ("uint64", np.array([1], np.uint64), OK),
+    ("empty list", [], OK), ("empty float array", np.array([]), OK), ("all", np.arange(N), OK),
+    ("negative", np.array([-1]), IndexError), ("index N", np.array([N]), IndexError),
+    ("uint64 max", np.array([2**64 - 1], np.uint64), IndexError), ("float", np.array([1.0]), TypeError),
+    ("strings", np.array(["1"]), TypeError), ("mask too short", np.ones(N - 1, bool), ValueError),
+    ("2-D array", np.array([[0, 1]]), ValueError), ("2-D list", [[0, 1]], TypeError), ("scalar", 3, TypeError),
+))
 
 
 def vec3(name: str, zero: Any) -> Array:
@@ -321,63 +255,53 @@ def vec3(name: str, zero: Any) -> Array:
 
 EDGE_PAIRS = np.array([[0, 1], [1, 2], [2, 0], [3, 4]])
 
-EDGES = Array(
-    (
-        ("int64", EDGE_PAIRS, OK), ("int32", EDGE_PAIRS.astype(np.int32), OK),
-        ("uint8", EDGE_PAIRS.astype(np.uint8), OK), ("big-endian", EDGE_PAIRS.astype(">i8"), OK),
-        ("list", EDGE_PAIRS.tolist(), OK), ("empty", np.zeros((0, 2), np.int64), OK), ("empty list", [], OK),
-        ("float", EDGE_PAIRS.astype(float), TypeError), ("bool", EDGE_PAIRS > 1, TypeError),
-        ("negative", np.array([[0, -1]]), IndexError), ("huge", np.array([[0, 2**40]]), IndexError),
-        ("shape (K, 3)", np.array([[0, 1, 2]]), ValueError), ("flat", np.array([0, 1]), ValueError),
-        ("a string", "edges", TypeError),
-    )
-)
+EDGES = Array((
+    ("int64", EDGE_PAIRS, OK), ("int32", EDGE_PAIRS.astype(np.int32), OK),
+    ("uint8", EDGE_PAIRS.astype(np.uint8), OK), ("big-endian", EDGE_PAIRS.astype(">i8"), OK),
+    ("list", EDGE_PAIRS.tolist(), OK), ("empty", np.zeros((0, 2), np.int64), OK), ("empty list", [], OK),
+    ("float", EDGE_PAIRS.astype(float), TypeError), ("bool", EDGE_PAIRS > 1, TypeError),
+    ("negative", np.array([[0, -1]]), IndexError), ("huge", np.array([[0, 2**40]]), IndexError),
+    ("shape (K, 3)", np.array([[0, 1, 2]]), ValueError), ("flat", np.array([0, 1]), ValueError),
+    ("a string", "edges", TypeError),
+))
 
 # segments: an index past the vertices is out of range too
 SEGMENT_EDGES = Array(EDGES.probes + (("index N", np.array([[0, N]]), IndexError),))
 
 IMG = np.random.default_rng(3).random((9, 11))
 
-IMAGES = Array(
-    (
-        ("float64", IMG, OK), ("float32", IMG.astype(np.float32), OK), ("float16", IMG.astype(np.float16), OK),
-        ("big-endian", IMG.astype(">f8"), OK), ("uint8", (IMG * 255).astype(np.uint8), OK),
-        ("int16", (IMG * 1000).astype(np.int16), OK), ("bool", IMG > 0.5, OK),
-        ("channels", np.dstack([IMG, IMG, IMG]), OK), ("fortran order", np.asfortranarray(IMG), OK),
-        ("list", IMG.tolist(), OK), ("one pixel", IMG[:1, :1].copy(), OK), ("huge values", IMG * 1e300, OK),
-        ("tiny values", IMG * 1e-300, OK), ("nan pixel", _with(IMG, (2, 2), np.nan), "nonfinite ok"),
-        ("inf pixel", _with(IMG, (2, 2), np.inf), "nonfinite ok"), ("complex", IMG.astype(complex), TypeError),
-        ("strings", IMG.astype(str), TypeError), ("object", IMG.astype(object), TypeError),
-        ("1-D", IMG[0].copy(), ValueError), ("4-D", IMG[None, :, :, None].copy(), ValueError),
-        ("empty", np.zeros((0, 4)), ValueError), ("a string", "image", TypeError),
-    )
-)
+IMAGES = Array((
+    ("float64", IMG, OK), ("float32", IMG.astype(np.float32), OK), ("float16", IMG.astype(np.float16), OK),
+    ("big-endian", IMG.astype(">f8"), OK), ("uint8", (IMG * 255).astype(np.uint8), OK),
+    ("int16", (IMG * 1000).astype(np.int16), OK), ("bool", IMG > 0.5, OK),
+    ("channels", np.dstack([IMG, IMG, IMG]), OK), ("fortran order", np.asfortranarray(IMG), OK),
+    ("list", IMG.tolist(), OK), ("one pixel", IMG[:1, :1].copy(), OK), ("huge values", IMG * 1e300, OK),
+    ("tiny values", IMG * 1e-300, OK), ("nan pixel", _with(IMG, (2, 2), np.nan), "nonfinite ok"),
+    ("inf pixel", _with(IMG, (2, 2), np.inf), "nonfinite ok"), ("complex", IMG.astype(complex), TypeError),
+    ("strings", IMG.astype(str), TypeError), ("object", IMG.astype(object), TypeError),
+    ("1-D", IMG[0].copy(), ValueError), ("4-D", IMG[None, :, :, None].copy(), ValueError),
+    ("empty", np.zeros((0, 4)), ValueError), ("a string", "image", TypeError),
+))
 
-MASKS = Array(
-    (
-        ("bool", IMG > 0.3, OK), ("uint8", (IMG > 0.3).astype(np.uint8), OK),
-        ("wrong shape", np.ones((3, 3), bool), ValueError), ("strings", (IMG > 0.3).astype(str), TypeError),
-        ("a string", "mask", TypeError),
-    )
-)
+MASKS = Array((
+    ("bool", IMG > 0.3, OK), ("uint8", (IMG > 0.3).astype(np.uint8), OK),
+    ("wrong shape", np.ones((3, 3), bool), ValueError), ("strings", (IMG > 0.3).astype(str), TypeError),
+    ("a string", "mask", TypeError),
+))
 
-PROFILES = Array(  # shapes.lathe: (radius, height) points, poles only at the ends
-    (
-        ("list of pairs", [(0, 0), (1, 0.5), (0, 1)], OK), ("open ends", [(1.0, 0.0), (1.0, 1.0)], OK),
-        ("int", np.array([[0, 0], [2, 1], [0, 2]]), OK),
-        ("float32", np.array([[0, 0], [1, 1], [0, 2]], np.float32), OK),
-        ("big-endian", np.array([[0, 0], [1, 1], [0, 2]], ">f8"), OK), ("one point", [(0.0, 0.0)], ValueError),
-        ("empty", np.zeros((0, 2)), ValueError), ("three columns", np.ones((3, 3)), ValueError),
-        ("flat", [0.0, 1.0, 2.0], ValueError), ("nan", [(0, 0), (np.nan, 1), (0, 2)], ValueError),
-        ("inf", [(0, 0), (1, np.inf), (0, 2)], ValueError),
-        ("negative radius", [(0, 0), (-1, 1), (0, 2)], ValueError),
-        ("pole inside", [(1, 0), (0, 1), (1, 2)], ValueError),
-        ("a point twice", [(0, 0), (1, 1), (1, 1), (0, 2)], ValueError), ("two poles", [(0, 0), (0, 1)], ValueError),
-        ("bools", np.array([[False, False], [True, True]]), TypeError),
-        ("complex", np.array([[0, 0], [1j, 1], [0, 2]]), TypeError), ("strings", [("a", "b"), ("c", "d")], TypeError),
-        ("ragged", [(0, 0), (1,), (0, 2)], TypeError), ("a string", "profile", TypeError),
-    )
-)
+PROFILES = Array((  # shapes.lathe: (radius, height) points, poles only at the ends
+    ("list of pairs", [(0, 0), (1, 0.5), (0, 1)], OK), ("open ends", [(1.0, 0.0), (1.0, 1.0)], OK),
+    ("int", np.array([[0, 0], [2, 1], [0, 2]]), OK), ("float32", np.array([[0, 0], [1, 1], [0, 2]], np.float32), OK),
+    ("big-endian", np.array([[0, 0], [1, 1], [0, 2]], ">f8"), OK), ("one point", [(0.0, 0.0)], ValueError),
+    ("empty", np.zeros((0, 2)), ValueError), ("three columns", np.ones((3, 3)), ValueError),
+    ("flat", [0.0, 1.0, 2.0], ValueError), ("nan", [(0, 0), (np.nan, 1), (0, 2)], ValueError),
+    ("inf", [(0, 0), (1, np.inf), (0, 2)], ValueError), ("negative radius", [(0, 0), (-1, 1), (0, 2)], ValueError),
+    ("pole inside", [(1, 0), (0, 1), (1, 2)], ValueError),
+    ("a point twice", [(0, 0), (1, 1), (1, 1), (0, 2)], ValueError), ("two poles", [(0, 0), (0, 1)], ValueError),
+    ("bools", np.array([[False, False], [True, True]]), TypeError),
+    ("complex", np.array([[0, 0], [1j, 1], [0, 2]]), TypeError), ("strings", [("a", "b"), ("c", "d")], TypeError),
+    ("ragged", [(0, 0), (1,), (0, 2)], TypeError), ("a string", "profile", TypeError),
+))
 
 NORMAL_BUF = np.dstack([IMG, 1 - IMG, np.ones_like(IMG)]).astype(np.float32)
 DEPTH_BUF = 1.0 + IMG
@@ -559,28 +483,25 @@ def colours(alpha: bool) -> Array:
     """An sRGB colour ('#rrggbb' or 3 numbers in [0, 1]; with alpha, '#rrggbbaa' or 4 numbers too)."""
     four = OK if alpha else ValueError
     above_one = Refused(ValueError, "divide by 255")  # 0-255 codes get a hint
-    return Array(
-        (
-            ("hex", "#ff8040", OK), ("hex without #", "ff8040", OK), ("hex upper case", "#FF8040", OK),
-            ("bytes", b"\x00\x00\x01", TypeError), ("bytearray", bytearray(b"\x00\x00\x01"), TypeError),
-            ("hex with alpha", "#ff804080", four), ("tuple", (1.0, 0.5, 0.25), OK), ("ints", (1, 0, 0), OK),
-            ("black", (0, 0, 0), OK), ("list", [0.2, 0.4, 0.6], OK), ("array", np.array([1.0, 0.5, 0.25]), OK),
-            ("float32 array", np.array([1.0, 0.5, 0.25], np.float32), OK),
-            ("big-endian array", np.array([1.0, 0.5, 0.25], ">f8"), OK),
-            ("numpy scalars", (np.float32(1.0), np.int64(0), np.float64(0.5)), OK),
-            ("four numbers", (1.0, 0.5, 0.25, 0.5), four), ("0-255 codes", (255, 128, 0), above_one),
-            ("uint8 codes", np.array([255, 128, 0], np.uint8), above_one),
-            ("just above 1", (1.0001, 0.0, 0.0), above_one), ("huge", (1e300, 0.0, 0.0), above_one),
-            ("negative", (-0.1, 0.0, 0.0), ValueError), ("nan", (float("nan"), 0.0, 0.0), ValueError),
-            ("inf", (0.0, float("inf"), 0.0), ValueError), ("int beyond float", (10**400, 0, 0), ValueError),
-            ("two numbers", (1.0, 0.0), ValueError), ("five numbers", (1.0, 0.0, 0.0, 1.0, 0.0), ValueError),
-            ("empty tuple", (), ValueError), ("short hex", "#fff", ValueError), ("bad hex", "#gg0000", ValueError),
-            ("colour name", "white", ValueError), ("empty string", "", ValueError),
-            ("bools", (True, False, True), TypeError), ("strings", ("1", "0", "0"), TypeError),
-            ("nested", [[1.0, 0.0, 0.0]], TypeError), ("complex", (1j, 0.0, 0.0), TypeError),
-            ("scalar", 0.5, TypeError),
-        )
-    )
+    return Array((
+        ("hex", "#ff8040", OK), ("hex without #", "ff8040", OK), ("hex upper case", "#FF8040", OK),
+        ("bytes", b"\x00\x00\x01", TypeError), ("bytearray", bytearray(b"\x00\x00\x01"), TypeError),
+        ("hex with alpha", "#ff804080", four), ("tuple", (1.0, 0.5, 0.25), OK), ("ints", (1, 0, 0), OK),
+        ("black", (0, 0, 0), OK), ("list", [0.2, 0.4, 0.6], OK), ("array", np.array([1.0, 0.5, 0.25]), OK),
+        ("float32 array", np.array([1.0, 0.5, 0.25], np.float32), OK),
+        ("big-endian array", np.array([1.0, 0.5, 0.25], ">f8"), OK),
+        ("numpy scalars", (np.float32(1.0), np.int64(0), np.float64(0.5)), OK),
+        ("four numbers", (1.0, 0.5, 0.25, 0.5), four), ("0-255 codes", (255, 128, 0), above_one),
+        ("uint8 codes", np.array([255, 128, 0], np.uint8), above_one),
+        ("just above 1", (1.0001, 0.0, 0.0), above_one), ("huge", (1e300, 0.0, 0.0), above_one),
+        ("negative", (-0.1, 0.0, 0.0), ValueError), ("nan", (float("nan"), 0.0, 0.0), ValueError),
+        ("inf", (0.0, float("inf"), 0.0), ValueError), ("int beyond float", (10**400, 0, 0), ValueError),
+        ("two numbers", (1.0, 0.0), ValueError), ("five numbers", (1.0, 0.0, 0.0, 1.0, 0.0), ValueError),
+        ("empty tuple", (), ValueError), ("short hex", "#fff", ValueError), ("bad hex", "#gg0000", ValueError),
+        ("colour name", "white", ValueError), ("empty string", "", ValueError),
+        ("bools", (True, False, True), TypeError), ("strings", ("1", "0", "0"), TypeError),
+        ("nested", [[1.0, 0.0, 0.0]], TypeError), ("complex", (1j, 0.0, 0.0), TypeError), ("scalar", 0.5, TypeError),
+    ))
 
 
 COLOUR = colours(alpha=False)
@@ -588,44 +509,38 @@ COLOUR_ALPHA = colours(alpha=True)
 
 # A mesh's 4x4 affine model -> world matrix.
 _TURN = np.array([[0.0, -1.0, 0.0, 0.5], [1.0, 0.0, 0.0, -2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
-TRANSFORMS = Array(
-    (
-        ("identity", np.eye(4), OK), ("nested list", np.eye(4).tolist(), OK),
-        ("float32", np.eye(4, dtype=np.float32), OK), ("int", np.eye(4, dtype=np.int64), OK),
-        ("big-endian", np.eye(4).astype(">f8"), OK), ("fortran order", np.asfortranarray(_TURN), OK),
-        ("turn, move and scale", np.diag([1e3, 1e3, 1e3, 1.0]) @ _TURN, OK),
-        ("tiny scale", np.diag([1e-3, 1e-3, 1e-3, 1.0]), OK), ("mirror", np.diag([-1.0, 1.0, 1.0, 1.0]), OK),
-        ("singular", np.zeros((4, 4)), ValueError), ("flattening", np.diag([1.0, 1.0, 0.0, 1.0]), ValueError),
-        ("projective", _with(np.eye(4), (3, 2), 0.5), ValueError),
-        ("nan", _with(np.eye(4), (0, 3), np.nan), ValueError), ("inf", _with(np.eye(4), (1, 1), np.inf), ValueError),
-        ("3x3", np.eye(3), ValueError), ("4x3", np.eye(4)[:, :3].copy(), ValueError),
-        ("flat", np.eye(4).ravel(), (TypeError, ValueError)), ("bool", np.eye(4) > 0, TypeError),
-        ("complex", np.eye(4) * (1 + 1j), TypeError), ("strings", np.eye(4).astype(str), TypeError),
-        ("object", np.eye(4).astype(object), TypeError),
-        ("ragged", [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], TypeError), ("a string", "identity", TypeError),
-    )
-)
+TRANSFORMS = Array((
+    ("identity", np.eye(4), OK), ("nested list", np.eye(4).tolist(), OK),
+    ("float32", np.eye(4, dtype=np.float32), OK), ("int", np.eye(4, dtype=np.int64), OK),
+    ("big-endian", np.eye(4).astype(">f8"), OK), ("fortran order", np.asfortranarray(_TURN), OK),
+    ("turn, move and scale", np.diag([1e3, 1e3, 1e3, 1.0]) @ _TURN, OK),
+    ("tiny scale", np.diag([1e-3, 1e-3, 1e-3, 1.0]), OK), ("mirror", np.diag([-1.0, 1.0, 1.0, 1.0]), OK),
+    ("singular", np.zeros((4, 4)), ValueError), ("flattening", np.diag([1.0, 1.0, 0.0, 1.0]), ValueError),
+    ("projective", _with(np.eye(4), (3, 2), 0.5), ValueError),
+    ("nan", _with(np.eye(4), (0, 3), np.nan), ValueError), ("inf", _with(np.eye(4), (1, 1), np.inf), ValueError),
+    ("3x3", np.eye(3), ValueError), ("4x3", np.eye(4)[:, :3].copy(), ValueError),
+    ("flat", np.eye(4).ravel(), (TypeError, ValueError)), ("bool", np.eye(4) > 0, TypeError),
+    ("complex", np.eye(4) * (1 + 1j), TypeError), ("strings", np.eye(4).astype(str), TypeError),
+    ("object", np.eye(4).astype(object), TypeError),
+    ("ragged", [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], TypeError), ("a string", "identity", TypeError),
+))
 
 # Outputs with outlines drawn ("outline" and "lines" need them).
-OUTPUTS = Array(
-    (
-        ("color", ("color",), OK), ("a name", "depth", OK), ("list", ["color", "normal"], OK),
-        ("every output", ("color", "normal", "depth", "outline", "lines"), OK), ("set", {"normal"}, OK),
-        ("numpy strings", np.array(["color", "depth"]), OK), ("repeated", ("color", "color"), OK),
-        ("outline", ("outline",), OK), ("lines", ("lines",), OK), ("empty", (), ValueError),
-        ("unknown", ("colour",), ValueError), ("upper case", ("COLOR",), ValueError),
-        ("empty name", ("",), ValueError), ("int", 5, TypeError), ("int in list", ("color", 3), TypeError),
-        ("bytes", b"color", TypeError), ("nested", [["color"]], TypeError),
-    )
-)
+OUTPUTS = Array((
+    ("color", ("color",), OK), ("a name", "depth", OK), ("list", ["color", "normal"], OK),
+    ("every output", ("color", "normal", "depth", "outline", "lines"), OK), ("set", {"normal"}, OK),
+    ("numpy strings", np.array(["color", "depth"]), OK), ("repeated", ("color", "color"), OK),
+    ("outline", ("outline",), OK), ("lines", ("lines",), OK), ("empty", (), ValueError),
+    ("unknown", ("colour",), ValueError), ("upper case", ("COLOR",), ValueError),
+    ("empty name", ("",), ValueError), ("int", 5, TypeError), ("int in list", ("color", 3), TypeError),
+    ("bytes", b"color", TypeError), ("nested", [["color"]], TypeError),
+))
 
 # Outputs of a render without outlines.
-OUTPUTS_WITHOUT_OUTLINES = Array(
-    (
-        ("color", ("color",), OK), ("normal and depth", ("normal", "depth"), OK),
-        ("outline", ("outline",), ValueError), ("lines", ("color", "lines"), ValueError),
-    )
-)
+OUTPUTS_WITHOUT_OUTLINES = Array((
+    ("color", ("color",), OK), ("normal and depth", ("normal", "depth"), OK),
+    ("outline", ("outline",), ValueError), ("lines", ("color", "lines"), ValueError),
+))
 
 OUTLINES = Name(
     ("mesh", "image", "both"),
@@ -636,57 +551,46 @@ OUTLINES = Name(
     ),
 )
 
-MATERIALS = Array(
-    (
-        ("bands", tm.Material.bands(), OK), ("lambert", tm.Material.lambert("#80c0ff"), OK),
-        ("phong", tm.Material.phong(shininess=8), OK),
-        ("thresholded phong", tm.Material.thresholded_phong(per_vertex=True), OK), ("lut", tm.Material.lut(), OK),
-        ("a name", "bands", TypeError), ("the class", tm.Material, TypeError), ("a light", tm.Light.key(), TypeError),
-        ("a dict", {"model": "bands"}, TypeError),
-    )
-)
+MATERIALS = Array((
+    ("bands", tm.Material.bands(), OK), ("lambert", tm.Material.lambert("#80c0ff"), OK),
+    ("phong", tm.Material.phong(shininess=8), OK),
+    ("thresholded phong", tm.Material.thresholded_phong(per_vertex=True), OK), ("lut", tm.Material.lut(), OK),
+    ("a name", "bands", TypeError), ("the class", tm.Material, TypeError), ("a light", tm.Light.key(), TypeError),
+    ("a dict", {"model": "bands"}, TypeError),
+))
 
-CAMERAS_ONE = Array(
-    (
-        ("fit", tm.Camera.fit(), OK),
-        ("fit orthographic", tm.Camera.fit((0.0, 1.0, 0.0), up=(0.0, 0.0, 1.0), orthographic=True), OK),
-        ("look_at", tm.Camera.look_at((0.3, 0.2, 5.0), fov_y=20.0), OK),
-        ("orthographic", tm.Camera.orthographic((0.3, 0.2, 5.0), height=3.0), OK), ("a name", "front", TypeError),
-        ("a list", [tm.Camera.fit()], TypeError), ("a light", tm.Light.key(), TypeError), ("an int", 1, TypeError),
-    )
-)
+CAMERAS_ONE = Array((
+    ("fit", tm.Camera.fit(), OK),
+    ("fit orthographic", tm.Camera.fit((0.0, 1.0, 0.0), up=(0.0, 0.0, 1.0), orthographic=True), OK),
+    ("look_at", tm.Camera.look_at((0.3, 0.2, 5.0), fov_y=20.0), OK),
+    ("orthographic", tm.Camera.orthographic((0.3, 0.2, 5.0), height=3.0), OK), ("a name", "front", TypeError),
+    ("a list", [tm.Camera.fit()], TypeError), ("a light", tm.Light.key(), TypeError), ("an int", 1, TypeError),
+))
 
-CAMERAS = Array(
-    (
-        ("two", [tm.Camera.fit(), tm.Camera.look_at((0.3, 0.2, 5.0))], OK),
-        ("tuple", (tm.Camera.fit((1.0, 0.0, 0.0)),), OK), ("none", [], OK), ("a camera", tm.Camera.fit(), TypeError),
-        ("a string in the list", [tm.Camera.fit(), "front"], TypeError), ("a string", "front", TypeError),
-        ("an int", 2, TypeError),
-    )
-)
+CAMERAS = Array((
+    ("two", [tm.Camera.fit(), tm.Camera.look_at((0.3, 0.2, 5.0))], OK),
+    ("tuple", (tm.Camera.fit((1.0, 0.0, 0.0)),), OK), ("none", [], OK), ("a camera", tm.Camera.fit(), TypeError),
+    ("a string in the list", [tm.Camera.fit(), "front"], TypeError), ("a string", "front", TypeError),
+    ("an int", 2, TypeError),
+))
 
 _LIGHTS = [tm.Light.key(), tm.Light.directional((1.0, -1.0, -1.0)), tm.Light.point((2.0, 2.0, 2.0), space="camera")]
-LIGHTS = Array(
-    (
-        ("a light", tm.Light.key(), OK), ("a list", _LIGHTS, OK), ("a tuple", tuple(_LIGHTS), OK), ("none", [], OK),
-        ("eight", [tm.Light.key()] * 8, OK), ("nine", [tm.Light.key()] * 9, ValueError),
-        ("a string", "sun", TypeError), ("a string in the list", [tm.Light.key(), "sun"], TypeError),
-        ("None in the list", [None], TypeError), ("an int", 1, TypeError),
-        ("a material", tm.Material.bands(), TypeError),
-    )
-)
+LIGHTS = Array((
+    ("a light", tm.Light.key(), OK), ("a list", _LIGHTS, OK), ("a tuple", tuple(_LIGHTS), OK), ("none", [], OK),
+    ("eight", [tm.Light.key()] * 8, OK), ("nine", [tm.Light.key()] * 9, ValueError),
+    ("a string", "sun", TypeError), ("a string in the list", [tm.Light.key(), "sun"], TypeError),
+    ("None in the list", [None], TypeError), ("an int", 1, TypeError), ("a material", tm.Material.bands(), TypeError),
+))
 
 _MESH = tm.Mesh(V, F, material=tm.Material.lambert(), transform=_TURN, normals="flat")
-MESHES = Array(
-    (
-        ("a handle", HANDLE, OK), ("a list", [HANDLE, HANDLE], OK), ("a tuple", (HANDLE,), OK),
-        ("a Mesh", tm.Mesh(V, F), OK), ("a Mesh of a handle", tm.Mesh(HANDLE, transform=_TURN), OK),
-        ("a Mesh with its own settings", _MESH, OK), ("handles and Meshes", [HANDLE, _MESH], OK), ("empty", [], OK),
-        ("a handle of another renderer", OTHER_HANDLE, ValueError), ("a removed handle", REMOVED_HANDLE, ValueError),
-        ("arrays", V, TypeError), ("a (V, F) pair", (V, F), TypeError), ("a string", "bunny", TypeError),
-        ("None in the list", [HANDLE, None], TypeError), ("a mesh id", HANDLE.id, TypeError),
-    )
-)
+MESHES = Array((
+    ("a handle", HANDLE, OK), ("a list", [HANDLE, HANDLE], OK), ("a tuple", (HANDLE,), OK),
+    ("a Mesh", tm.Mesh(V, F), OK), ("a Mesh of a handle", tm.Mesh(HANDLE, transform=_TURN), OK),
+    ("a Mesh with its own settings", _MESH, OK), ("handles and Meshes", [HANDLE, _MESH], OK), ("empty", [], OK),
+    ("a handle of another renderer", OTHER_HANDLE, ValueError), ("a removed handle", REMOVED_HANDLE, ValueError),
+    ("arrays", V, TypeError), ("a (V, F) pair", (V, F), TypeError), ("a string", "bunny", TypeError),
+    ("None in the list", [HANDLE, None], TypeError), ("a mesh id", HANDLE.id, TypeError),
+))
 
 BACKEND = Name(
     ("auto", "vulkan", "gl", "vk", "opengl", "gles", "egl", " vulkan "), any_case=True, empty=OK
@@ -709,24 +613,20 @@ NORMALS = Name(
     ),
 )
 
-PAPER = Array(
-    (
-        ("a Paper", tm.Paper(), OK),
-        ("a Paper on the surface, of an image", tm.Paper(np.eye(3), space="surface"), OK), ("True", True, TypeError),
-        ("a name", "paper", TypeError), ("a Rim", tm.Rim(), TypeError),
-    )
-)
+PAPER = Array((
+    ("a Paper", tm.Paper(), OK),
+    ("a Paper on the surface, of an image", tm.Paper(np.eye(3), space="surface"), OK), ("True", True, TypeError),
+    ("a name", "paper", TypeError), ("a Rim", tm.Rim(), TypeError),
+))
 
-GRAIN = Array(
-    (
-        ("a grey uint8 image", np.arange(12, dtype=np.uint8).reshape(3, 4), OK),
-        ("an RGBA float image", np.full((2, 3, 4), 0.25), OK), ("a 1x1 image", np.ones((1, 1)), OK),
-        ("a list", [[0.0, 1.0]], TypeError), ("a string", "rough", TypeError), ("1-D", np.zeros(4), ValueError),
-        ("empty", np.zeros((0, 4)), ValueError), ("5 channels", np.zeros((2, 2, 5)), ValueError),
-        ("NaN", np.array([[np.nan, 0.0]]), ValueError), ("above 1", np.array([[1.5]]), ValueError),
-        ("negative", np.array([[-1, 0]], np.int16), ValueError), ("complex", np.zeros((2, 2), complex), TypeError),
-    )
-)
+GRAIN = Array((
+    ("a grey uint8 image", np.arange(12, dtype=np.uint8).reshape(3, 4), OK),
+    ("an RGBA float image", np.full((2, 3, 4), 0.25), OK), ("a 1x1 image", np.ones((1, 1)), OK),
+    ("a list", [[0.0, 1.0]], TypeError), ("a string", "rough", TypeError), ("1-D", np.zeros(4), ValueError),
+    ("empty", np.zeros((0, 4)), ValueError), ("5 channels", np.zeros((2, 2, 5)), ValueError),
+    ("NaN", np.array([[np.nan, 0.0]]), ValueError), ("above 1", np.array([[1.5]]), ValueError),
+    ("negative", np.array([[-1, 0]], np.int16), ValueError), ("complex", np.zeros((2, 2), complex), TypeError),
+))
 
 
 def _frame(**kw: Any) -> Dict[str, Any]:
@@ -777,36 +677,32 @@ def _removed(mesh: Any) -> None:
 def mesh_colours(n: int) -> Array:
     """Colours of n vertices or faces: (n, 3) or (n, 4) sRGB, uint8 codes or floats in [0, 1]."""
     base = np.linspace(0.0, 1.0, n * 3).reshape(n, 3)
-    return Array(
-        (
-            ("float64 rgb", base, OK),
-            ("float32 rgba", np.concatenate([base, np.ones((n, 1))], 1).astype(np.float32), OK),
-            ("uint8", (base * 255).astype(np.uint8), OK), ("big-endian", base.astype(">f8"), OK),
-            ("fortran order", np.asfortranarray(base), OK), ("nested list", base.tolist(), OK),
-            ("one too few", base[:-1], ValueError), ("two channels", base[:, :2], ValueError),
-            ("five channels", np.ones((n, 5)), ValueError), ("flat", base.ravel(), ValueError),
-            ("empty", np.zeros((0, 3)), ValueError), ("nan", _with(base, (0, 0), np.nan), ValueError),
-            ("inf", _with(base, (0, 1), np.inf), ValueError), ("negative", _with(base, (1, 1), -0.1), ValueError),
-            ("0-255 floats", base * 255, Refused(ValueError, "uint8")),  # codes get a hint
-            ("int64", (base * 255).astype(np.int64), TypeError), ("float16", base.astype(np.float16), TypeError),
-            ("string", "red", TypeError),
-        )
-    )
+    return Array((
+        ("float64 rgb", base, OK),
+        ("float32 rgba", np.concatenate([base, np.ones((n, 1))], 1).astype(np.float32), OK),
+        ("uint8", (base * 255).astype(np.uint8), OK), ("big-endian", base.astype(">f8"), OK),
+        ("fortran order", np.asfortranarray(base), OK), ("nested list", base.tolist(), OK),
+        ("one too few", base[:-1], ValueError), ("two channels", base[:, :2], ValueError),
+        ("five channels", np.ones((n, 5)), ValueError), ("flat", base.ravel(), ValueError),
+        ("empty", np.zeros((0, 3)), ValueError), ("nan", _with(base, (0, 0), np.nan), ValueError),
+        ("inf", _with(base, (0, 1), np.inf), ValueError), ("negative", _with(base, (1, 1), -0.1), ValueError),
+        ("0-255 floats", base * 255, Refused(ValueError, "uint8")),  # codes get a hint
+        ("int64", (base * 255).astype(np.int64), TypeError), ("float16", base.astype(np.float16), TypeError),
+        ("string", "red", TypeError),
+    ))
 
 
 UV = (V[:, :2] + 1.5) / 3.0
 TEXTURE = (np.arange(4 * 4 * 3) * 5).astype(np.uint8).reshape(4, 4, 3)
-UVS = Array(
-    (
-        ("float64", UV, OK), ("float32", UV.astype(np.float32), OK), ("big-endian", UV.astype(">f8"), OK),
-        ("nested list", UV.tolist(), OK),
-        ("beyond [0, 1]", UV * 7 - 3, OK),  # wrapped
-        ("nan", _with(UV, (0, 0), np.nan), ValueError), ("inf", _with(UV, (1, 1), np.inf), ValueError),
-        ("beyond float32", _with(UV, (0, 1), 1e300), ValueError), ("one too few", UV[:-1], ValueError),
-        ("three columns", V, ValueError), ("flat", UV.ravel(), ValueError), ("int64", UV.astype(np.int64), TypeError),
-        ("string", "uv", TypeError),
-    )
-)
+UVS = Array((
+    ("float64", UV, OK), ("float32", UV.astype(np.float32), OK), ("big-endian", UV.astype(">f8"), OK),
+    ("nested list", UV.tolist(), OK),
+    ("beyond [0, 1]", UV * 7 - 3, OK),  # wrapped
+    ("nan", _with(UV, (0, 0), np.nan), ValueError), ("inf", _with(UV, (1, 1), np.inf), ValueError),
+    ("beyond float32", _with(UV, (0, 1), 1e300), ValueError), ("one too few", UV[:-1], ValueError),
+    ("three columns", V, ValueError), ("flat", UV.ravel(), ValueError), ("int64", UV.astype(np.int64), TypeError),
+    ("string", "uv", TypeError),
+))
 
 
 def _pil(a: np.ndarray) -> Any:
@@ -815,20 +711,16 @@ def _pil(a: np.ndarray) -> Any:
     return Image.fromarray(a)
 
 
-TEXTURES = Array(
-    (
-        ("uint8 rgb", TEXTURE, OK),
-        ("uint8 rgba", np.concatenate([TEXTURE, np.full((4, 4, 1), 200, np.uint8)], -1), OK),
-        ("float64", TEXTURE / 255.0, OK), ("float32", (TEXTURE / 255.0).astype(np.float32), OK),
-        ("big-endian float", (TEXTURE / 255.0).astype(">f8"), OK), ("fortran order", np.asfortranarray(TEXTURE), OK),
-        ("one pixel", TEXTURE[:1, :1], OK), ("PIL image", _pil(TEXTURE), OK),
-        ("two channels", TEXTURE[..., :2], ValueError), ("grey (H, W)", TEXTURE[..., 0], ValueError),
-        ("empty", np.zeros((0, 4, 3), np.uint8), ValueError),
-        ("nan", _with(TEXTURE / 255.0, (0, 0), np.nan), ValueError),
-        ("0-255 floats", TEXTURE.astype(np.float64) + 1, Refused(ValueError, "uint8")),
-        ("int64", TEXTURE.astype(np.int64), TypeError), ("a file name", "checker.png", TypeError),
-    )
-)
+TEXTURES = Array((
+    ("uint8 rgb", TEXTURE, OK), ("uint8 rgba", np.concatenate([TEXTURE, np.full((4, 4, 1), 200, np.uint8)], -1), OK),
+    ("float64", TEXTURE / 255.0, OK), ("float32", (TEXTURE / 255.0).astype(np.float32), OK),
+    ("big-endian float", (TEXTURE / 255.0).astype(">f8"), OK), ("fortran order", np.asfortranarray(TEXTURE), OK),
+    ("one pixel", TEXTURE[:1, :1], OK), ("PIL image", _pil(TEXTURE), OK),
+    ("two channels", TEXTURE[..., :2], ValueError), ("grey (H, W)", TEXTURE[..., 0], ValueError),
+    ("empty", np.zeros((0, 4, 3), np.uint8), ValueError), ("nan", _with(TEXTURE / 255.0, (0, 0), np.nan), ValueError),
+    ("0-255 floats", TEXTURE.astype(np.float64) + 1, Refused(ValueError, "uint8")),
+    ("int64", TEXTURE.astype(np.int64), TypeError), ("a file name", "checker.png", TypeError),
+))
 TEXTURED = dict(uv=UV, texture=TEXTURE, texture_filter=None, texture_wrap=None, alpha_cutoff=None)
 TEXTURE_PARAMS = [
     Param("uv", UVS, none=ValueError),  # a texture needs uv
@@ -842,88 +734,71 @@ BOTH_COLOURS = Array((("with vertex colours too", np.zeros((len(F), 3)), ValueEr
 MESH_COLOURS = [Param("vertex_colors", mesh_colours(N), none=OK), Param("face_colors", mesh_colours(len(F)), none=OK)]
 
 
-STYLE = Array(
-    (
-        ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
-        ("a LineStyle", tm.LineStyle("#ff0000", 3.0), OK), ("a colour", "#00ff00", OK),
-        ("colour numbers", (0.0, 0.0, 1.0), OK), ("0-255 codes", (0, 0, 255), Refused(ValueError, "divide by 255")),
-        ("a word", "thick", ValueError), ("an int", 3, TypeError), ("a list of a bool", [True], TypeError),
-        ("an Outlines", tm.Outlines(), TypeError),
-    )
-)
+STYLE = Array((
+    ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
+    ("a LineStyle", tm.LineStyle("#ff0000", 3.0), OK), ("a colour", "#00ff00", OK),
+    ("colour numbers", (0.0, 0.0, 1.0), OK), ("0-255 codes", (0, 0, 255), Refused(ValueError, "divide by 255")),
+    ("a word", "thick", ValueError), ("an int", 3, TypeError), ("a list of a bool", [True], TypeError),
+    ("an Outlines", tm.Outlines(), TypeError),
+))
 
-DITHER = Array(
-    (
-        ("a pattern name", "bayer8", OK), ("blue", "blue", OK), ("a Dither", tm.Dither("bayer2", space="object"), OK),
-        ("an unknown name", "noise", ValueError), ("upper case", "BAYER4", ValueError), ("True", True, TypeError),
-        ("an int", 4, TypeError), ("a list", ["bayer4"], TypeError), ("an Outlines", tm.Outlines(), TypeError),
-    )
-)
+DITHER = Array((
+    ("a pattern name", "bayer8", OK), ("blue", "blue", OK), ("a Dither", tm.Dither("bayer2", space="object"), OK),
+    ("an unknown name", "noise", ValueError), ("upper case", "BAYER4", ValueError), ("True", True, TypeError),
+    ("an int", 4, TypeError), ("a list", ["bayer4"], TypeError), ("an Outlines", tm.Outlines(), TypeError),
+))
 
-RIM = Array(
-    (
-        ("a Rim", tm.Rim(), OK),
-        ("a coloured, lit-side Rim", tm.Rim("#3366ff", width=0.5, side="lit", blend="mix"), OK),
-        ("True", True, TypeError), ("a name", "rim", TypeError), ("a colour", (1.0, 1.0, 1.0), TypeError),
-        ("a Dither", tm.Dither(), TypeError),
-    )
-)
+RIM = Array((
+    ("a Rim", tm.Rim(), OK), ("a coloured, lit-side Rim", tm.Rim("#3366ff", width=0.5, side="lit", blend="mix"), OK),
+    ("True", True, TypeError), ("a name", "rim", TypeError), ("a colour", (1.0, 1.0, 1.0), TypeError),
+    ("a Dither", tm.Dither(), TypeError),
+))
 
-SHADOWS = Array(
-    (
-        ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
-        ("a Shadows", tm.Shadows(size=512, filter="none"), OK), ("a word", "yes", TypeError),
-        ("an int", 1, TypeError), ("a list of a bool", [True], TypeError), ("an Outlines", tm.Outlines(), TypeError),
-    )
-)
+SHADOWS = Array((
+    ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
+    ("a Shadows", tm.Shadows(size=512, filter="none"), OK), ("a word", "yes", TypeError),
+    ("an int", 1, TypeError), ("a list of a bool", [True], TypeError), ("an Outlines", tm.Outlines(), TypeError),
+))
 
-UP = Array(
-    (
-        ("y", (0.0, 1.0, 0.0), OK), ("ints", (1, 1, 0), OK), ("array", np.array([0.2, 1.0, 0.1]), OK),
-        ("float32 array", np.array([0.0, 1.0, 0.0], np.float32), OK), ("long", (0.0, 1e300, 0.0), OK),
-        ("short", (0.0, 1e-300, 0.0), OK), ("along the view", (0.3, 0.2, 5.0), ValueError),
-        ("against the view", (-0.6, -0.4, -10.0), ValueError), ("zero", (0, 0, 0), ValueError),
-        ("nan", (0.0, float("nan"), 0.0), ValueError), ("inf", (0.0, float("inf"), 0.0), ValueError),
-        ("two numbers", (0.0, 1.0), ValueError), ("bools", (False, True, False), TypeError),
-        ("a string", "up", TypeError),
-    )
-)
+UP = Array((
+    ("y", (0.0, 1.0, 0.0), OK), ("ints", (1, 1, 0), OK), ("array", np.array([0.2, 1.0, 0.1]), OK),
+    ("float32 array", np.array([0.0, 1.0, 0.0], np.float32), OK), ("long", (0.0, 1e300, 0.0), OK),
+    ("short", (0.0, 1e-300, 0.0), OK), ("along the view", (0.3, 0.2, 5.0), ValueError),
+    ("against the view", (-0.6, -0.4, -10.0), ValueError), ("zero", (0, 0, 0), ValueError),
+    ("nan", (0.0, float("nan"), 0.0), ValueError), ("inf", (0.0, float("inf"), 0.0), ValueError),
+    ("two numbers", (0.0, 1.0), ValueError), ("bools", (False, True, False), TypeError),
+    ("a string", "up", TypeError),
+))
 
-LUT = Array(
-    (
-        ("kang_table", tm.kang_table(), OK), ("list", [0.2, 0.6, 1.0], OK), ("one entry", [1.0], OK),
-        ("rgb rows", np.array([[0.2, 0.1, 0.0], [1.0, 0.9, 0.8]]), OK),
-        ("float32", np.linspace(0, 1, 8, dtype=np.float32), OK), ("256 entries", np.ones(256), OK),
-        ("factors above 1", [0.5, 2.0], OK), ("257 entries", np.ones(257), ValueError), ("empty", [], ValueError),
-        ("negative", [0.5, -0.1], ValueError), ("nan", [0.5, float("nan")], ValueError),
-        ("inf", [float("inf")], ValueError), ("beyond float32", [1e39], ValueError),
-        ("rows of 2", [[1.0, 0.5]], ValueError), ("rows of 4", np.ones((2, 4)), ValueError),
-        ("bools", [True, False], TypeError), ("strings", ["0.5"], TypeError), ("a string", "ramp", TypeError),
-        ("bytes", b"\x01\x02", TypeError), ("a number", 0.5, TypeError),
-    )
-)
+LUT = Array((
+    ("kang_table", tm.kang_table(), OK), ("list", [0.2, 0.6, 1.0], OK), ("one entry", [1.0], OK),
+    ("rgb rows", np.array([[0.2, 0.1, 0.0], [1.0, 0.9, 0.8]]), OK),
+    ("float32", np.linspace(0, 1, 8, dtype=np.float32), OK), ("256 entries", np.ones(256), OK),
+    ("factors above 1", [0.5, 2.0], OK), ("257 entries", np.ones(257), ValueError), ("empty", [], ValueError),
+    ("negative", [0.5, -0.1], ValueError), ("nan", [0.5, float("nan")], ValueError),
+    ("inf", [float("inf")], ValueError), ("beyond float32", [1e39], ValueError),
+    ("rows of 2", [[1.0, 0.5]], ValueError), ("rows of 4", np.ones((2, 4)), ValueError),
+    ("bools", [True, False], TypeError), ("strings", ["0.5"], TypeError), ("a string", "ramp", TypeError),
+    ("bytes", b"\x01\x02", TypeError), ("a number", 0.5, TypeError),
+))
 
-THRESHOLDS = Array(
-    (
-        ("paper's", (0.2, 0.5, 0.7, 0.9), OK), ("array", np.array([-0.5, 0.0, 0.5, 0.99]), OK),
-        ("float32", np.array([0.1, 0.2, 0.3, 0.4], np.float32), OK), ("beyond [-1, 1]", (-5.0, 0.0, 1.0, 5.0), OK),
-        ("decreasing", (0.9, 0.7, 0.5, 0.2), ValueError), ("three, for five values", (0.2, 0.5, 0.9), ValueError),
-        ("bytes", b"\x01\x02\x03\x04", TypeError), ("repeated", (0.2, 0.5, 0.5, 0.9), ValueError),
-        ("nan", (0.2, float("nan"), 0.7, 0.9), ValueError), ("inf", (0.2, 0.5, 0.7, float("inf")), ValueError),
-        ("strings", ("0.2", "0.5", "0.7", "0.9"), TypeError), ("a string", "0.5", TypeError),
-        ("a number", 0.5, TypeError),
-    )
-)
+THRESHOLDS = Array((
+    ("paper's", (0.2, 0.5, 0.7, 0.9), OK), ("array", np.array([-0.5, 0.0, 0.5, 0.99]), OK),
+    ("float32", np.array([0.1, 0.2, 0.3, 0.4], np.float32), OK), ("beyond [-1, 1]", (-5.0, 0.0, 1.0, 5.0), OK),
+    ("decreasing", (0.9, 0.7, 0.5, 0.2), ValueError), ("three, for five values", (0.2, 0.5, 0.9), ValueError),
+    ("bytes", b"\x01\x02\x03\x04", TypeError), ("repeated", (0.2, 0.5, 0.5, 0.9), ValueError),
+    ("nan", (0.2, float("nan"), 0.7, 0.9), ValueError), ("inf", (0.2, 0.5, 0.7, float("inf")), ValueError),
+    ("strings", ("0.2", "0.5", "0.7", "0.9"), TypeError), ("a string", "0.5", TypeError),
+    ("a number", 0.5, TypeError),
+))
 
-VALUES = Array(
-    (
-        ("paper's", (0.0, 0.2, 0.7, 0.9, 1.0), OK), ("above 1", (0.0, 0.5, 1.0, 2.0, 4.0), OK),
-        ("array", np.linspace(0, 1, 5), OK), ("negative", (-0.1, 0.2, 0.7, 0.9, 1.0), ValueError),
-        ("nan", (0.0, 0.2, float("nan"), 0.9, 1.0), ValueError),
-        ("beyond float32", (0.0, 0.2, 0.7, 0.9, 1e39), ValueError), ("two", (0.0, 1.0), ValueError),
-        ("bools", (False, True, True, True, True), TypeError), ("a number", 1.0, TypeError),
-    )
-)
+VALUES = Array((
+    ("paper's", (0.0, 0.2, 0.7, 0.9, 1.0), OK), ("above 1", (0.0, 0.5, 1.0, 2.0, 4.0), OK),
+    ("array", np.linspace(0, 1, 5), OK), ("negative", (-0.1, 0.2, 0.7, 0.9, 1.0), ValueError),
+    ("nan", (0.0, 0.2, float("nan"), 0.9, 1.0), ValueError),
+    ("beyond float32", (0.0, 0.2, 0.7, 0.9, 1e39), ValueError), ("two", (0.0, 1.0), ValueError),
+    ("bools", (False, True, True, True, True), TypeError), ("a number", 1.0, TypeError),
+))
 
 
 # The probes of each kind (or settings class, or parameter name) a description cannot enumerate.
@@ -1059,17 +934,10 @@ atexit.register(shutil.rmtree, TURNTABLES, ignore_errors=True)
 VIEWER_SETTINGS = [p for p in FRAME if p.name != "outputs"]  # a viewer shows the colour image
 
 CASES += [
-    Case(
-        "Viewer",
-        _viewer,
-        dict(vertices=V, faces=F, normals="smooth", image_format="png", drag_scale=0.5, controls=False, **SMALL),
-        [
-            Param("vertices", VERTICES), Param("faces", FACES),
-            Param("normals", NORMALS, none=OK),  # None: the default
-            Param("image_format", Name(("png", "jpeg"))), Param("drag_scale", Number(0.05, 1.0)),
-            Param("controls", Flag()),
-        ],
-    ),
+    Case("Viewer", _viewer,
+         dict(vertices=V, faces=F, normals="smooth", image_format="png", drag_scale=0.5, controls=False, **SMALL),
+         [Param("vertices", VERTICES), Param("faces", FACES), NORMALS_PARAM, Param("image_format", Name(("png", "jpeg"))),
+          Param("drag_scale", Number(0.05, 1.0)), Param("controls", Flag())]),
     Case("Viewer.orbit", _viewer_call("orbit"), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)]),
     Case("Viewer.pan", _viewer_call("pan"), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)]),
     Case("Viewer.zoom", _viewer_call("zoom"), dict(factor=1.5), [Param("factor", Number(1e-3, 1e3))]),
@@ -1093,16 +961,12 @@ CASES += [
 # A render's strokes and SVG: a small render's lines, tapered so that their widths vary.
 
 LINES = tm.render(V, F, outlines=tm.Outlines("mesh", taper=5.0), outputs=("lines",), width=64, height=64)
-STROKE_PARAMS = [Param("smooth", Number(0.0, 4096.0)), Param("simplify", Number(0.0, math.inf, open_hi=True))]
+STROKE_PARAMS = [Param("smooth", Number(0.0, 4096.0)), Param("simplify", POSITIVE)]
 
 CASES += [
     Case("RenderResult.strokes", LINES.strokes, dict(smooth=1.0, simplify=0.25), STROKE_PARAMS),
-    Case(
-        "RenderResult.svg",
-        LINES.svg,
-        dict(order="drawing", simplify=0.25, smooth=1.0, widths="auto"),
-        STROKE_PARAMS + [Param("order", Name(("drawing", "plotter"))), Param("widths", Name(("auto", "kind", "point")))],
-    ),
+    Case("RenderResult.svg", LINES.svg, dict(order="drawing", simplify=0.25, smooth=1.0, widths="auto"),
+         STROKE_PARAMS + [Param("order", Name(("drawing", "plotter"))), Param("widths", Name(("auto", "kind", "point")))]),
 ]
 
 
@@ -1114,62 +978,56 @@ CASES += [
 def mesh_arguments(fewer: Any) -> Array:
     """A mesh to compare: a (vertices, faces) pair, positions alone, or a Trimesh-like object;
     ``fewer`` is what a mesh with fewer vertices gives."""
-    return Array(
-        (
-            ("pair", (V, F), OK), ("list pair", [V, F], OK), ("positions alone", V, OK),
-            ("float32 positions", (V.astype(np.float32), F), OK),
-            ("int positions", (np.round(V * 100).astype(np.int64), F), OK),
-            ("big-endian", (V.astype(">f8"), F.astype(">i4")), OK), ("nested lists", (V.tolist(), F.tolist()), OK),
-            ("uint32 faces", (V, F.astype(np.uint32)), OK), ("moved", (V + 0.1, F), OK),
-            ("faces turned and reordered", (V, np.roll(F[::-1], 1, axis=1)), OK),
-            ("a face flipped", (V, np.vstack([F[:1, ::-1], F[1:]])), OK), ("fewer faces", (V, F[1:]), OK),
-            ("fewer vertices", V[1:], fewer), ("complex", V.astype(complex), TypeError), ("bool", V > 0, TypeError),
-            ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError),
-            ("a string", "mesh", TypeError), ("ragged", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
-            ("float faces", (V, F.astype(float)), TypeError), ("nan", (_with(V, (3, 1), np.nan), F), ValueError),
-            ("inf", (_with(V, (0, 0), np.inf), F), ValueError), ("shape (N, 2)", V[:, :2].copy(), ValueError),
-            ("flat", V.ravel().copy(), ValueError), ("empty", np.zeros((0, 3)), ValueError),
-            ("scalar", 1.0, ValueError), ("faces (M, 4)", (V, np.hstack([F, F[:, :1]])), ValueError),
-            ("negative face index", (V, _with(F, (5, 2), -1)), IndexError),
-            ("face index N", (V, _with(F, (5, 2), N)), IndexError),
-        )
-    )
+    return Array((
+        ("pair", (V, F), OK), ("list pair", [V, F], OK), ("positions alone", V, OK),
+        ("float32 positions", (V.astype(np.float32), F), OK),
+        ("int positions", (np.round(V * 100).astype(np.int64), F), OK),
+        ("big-endian", (V.astype(">f8"), F.astype(">i4")), OK), ("nested lists", (V.tolist(), F.tolist()), OK),
+        ("uint32 faces", (V, F.astype(np.uint32)), OK), ("moved", (V + 0.1, F), OK),
+        ("faces turned and reordered", (V, np.roll(F[::-1], 1, axis=1)), OK),
+        ("a face flipped", (V, np.vstack([F[:1, ::-1], F[1:]])), OK), ("fewer faces", (V, F[1:]), OK),
+        ("fewer vertices", V[1:], fewer), ("complex", V.astype(complex), TypeError), ("bool", V > 0, TypeError),
+        ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError),
+        ("a string", "mesh", TypeError), ("ragged", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
+        ("float faces", (V, F.astype(float)), TypeError), ("nan", (_with(V, (3, 1), np.nan), F), ValueError),
+        ("inf", (_with(V, (0, 0), np.inf), F), ValueError), ("shape (N, 2)", V[:, :2].copy(), ValueError),
+        ("flat", V.ravel().copy(), ValueError), ("empty", np.zeros((0, 3)), ValueError),
+        ("scalar", 1.0, ValueError), ("faces (M, 4)", (V, np.hstack([F, F[:, :1]])), ValueError),
+        ("negative face index", (V, _with(F, (5, 2), -1)), IndexError),
+        ("face index N", (V, _with(F, (5, 2), N)), IndexError),
+    ))
 
 
 IMG8 = (np.random.default_rng(5).random((9, 11, 4)) * 255).astype(np.uint8)
 COLOUR_AND_LINES = tm.render(V, F, outlines="mesh", outputs=("color", "lines"), width=11, height=9)
 DEPTH_ONLY = tm.render(V, F, outputs=("depth",), width=11, height=9)
 
-IMAGES_TO_COMPARE = Array(
-    (
-        ("uint8 RGBA", IMG8, OK), ("floats in [0, 1]", IMG8 / 255.0, OK),
-        ("float32", (IMG8 / 255.0).astype(np.float32), OK), ("int16 levels", IMG8.astype(np.int16), OK),
-        ("bool", IMG8 > 100, OK), ("grey", IMG8[..., 0].copy(), OK), ("RGB", IMG8[..., :3].copy(), OK),
-        ("a render", COLOUR_AND_LINES, OK), ("another size", IMG8[:5], OK), ("nested list", IMG8.tolist(), OK),
-        ("fortran order", np.asfortranarray(IMG8), OK), ("a render without colour", DEPTH_ONLY, ValueError),
-        ("floats above 1", IMG8 * 1.0, ValueError), ("nan", _with(IMG8 / 255.0, (2, 2, 0), np.nan), ValueError),
-        ("negative levels", IMG8.astype(np.int16) - 300, ValueError),
-        ("levels above 255", IMG8.astype(np.int16) + 300, ValueError), ("1-D", IMG8[0, :, 0].copy(), ValueError),
-        ("5 channels", np.zeros((9, 11, 5), np.uint8), ValueError), ("4-D", IMG8[None], ValueError),
-        ("empty", np.zeros((0, 4), np.uint8), ValueError), ("complex", IMG8.astype(complex), TypeError),
-        ("strings", IMG8.astype(str), TypeError), ("object", IMG8.astype(object), TypeError),
-        ("a string", "image.png", TypeError), ("bytes", b"\x89PNG", TypeError),
-    )
-)
+IMAGES_TO_COMPARE = Array((
+    ("uint8 RGBA", IMG8, OK), ("floats in [0, 1]", IMG8 / 255.0, OK),
+    ("float32", (IMG8 / 255.0).astype(np.float32), OK), ("int16 levels", IMG8.astype(np.int16), OK),
+    ("bool", IMG8 > 100, OK), ("grey", IMG8[..., 0].copy(), OK), ("RGB", IMG8[..., :3].copy(), OK),
+    ("a render", COLOUR_AND_LINES, OK), ("another size", IMG8[:5], OK), ("nested list", IMG8.tolist(), OK),
+    ("fortran order", np.asfortranarray(IMG8), OK), ("a render without colour", DEPTH_ONLY, ValueError),
+    ("floats above 1", IMG8 * 1.0, ValueError), ("nan", _with(IMG8 / 255.0, (2, 2, 0), np.nan), ValueError),
+    ("negative levels", IMG8.astype(np.int16) - 300, ValueError),
+    ("levels above 255", IMG8.astype(np.int16) + 300, ValueError), ("1-D", IMG8[0, :, 0].copy(), ValueError),
+    ("5 channels", np.zeros((9, 11, 5), np.uint8), ValueError), ("4-D", IMG8[None], ValueError),
+    ("empty", np.zeros((0, 4), np.uint8), ValueError), ("complex", IMG8.astype(complex), TypeError),
+    ("strings", IMG8.astype(str), TypeError), ("object", IMG8.astype(object), TypeError),
+    ("a string", "image.png", TypeError), ("bytes", b"\x89PNG", TypeError),
+))
 
-DRAWINGS = Array(
-    (
-        ("a render", LINES, OK), ("its SVG", LINES.svg(), OK), ("its filled SVG", LINES.svg(widths="point"), OK),
-        ("a list of lines", list(LINES.lines), OK), ("a tuple of lines", tuple(LINES.lines), OK),
-        ("no lines", [], OK), ("a single point", [np.array([[3.0, 4.0]])], OK),
-        ("int lines", [np.array([[0, 0], [5, 5]])], OK), ("a render without lines", DEPTH_ONLY, ValueError),
-        ("not SVG", "lines", ValueError), ("broken SVG", "<svg", ValueError), ("other XML", "<html/>", ValueError),
-        ("a line (K, 3)", [np.zeros((3, 3))], ValueError), ("an empty line", [np.zeros((0, 2))], ValueError),
-        ("a nan point", [np.array([[0.0, 0.0], [np.nan, 1.0]])], ValueError),
-        ("string points", [np.array([["a", "b"]])], TypeError), ("an array", np.zeros((4, 2)), TypeError),
-        ("bytes", b"<svg/>", TypeError), ("an int", 3, TypeError),
-    )
-)
+DRAWINGS = Array((
+    ("a render", LINES, OK), ("its SVG", LINES.svg(), OK), ("its filled SVG", LINES.svg(widths="point"), OK),
+    ("a list of lines", list(LINES.lines), OK), ("a tuple of lines", tuple(LINES.lines), OK),
+    ("no lines", [], OK), ("a single point", [np.array([[3.0, 4.0]])], OK),
+    ("int lines", [np.array([[0, 0], [5, 5]])], OK), ("a render without lines", DEPTH_ONLY, ValueError),
+    ("not SVG", "lines", ValueError), ("broken SVG", "<svg", ValueError), ("other XML", "<html/>", ValueError),
+    ("a line (K, 3)", [np.zeros((3, 3))], ValueError), ("an empty line", [np.zeros((0, 2))], ValueError),
+    ("a nan point", [np.array([[0.0, 0.0], [np.nan, 1.0]])], ValueError),
+    ("string points", [np.array([["a", "b"]])], TypeError), ("an array", np.zeros((4, 2)), TypeError),
+    ("bytes", b"<svg/>", TypeError), ("an int", 3, TypeError),
+))
 
 # A mesh every peer smooths as toonmesh does: the vertex and face probes but those the peers
 # themselves cannot take (trimesh raises on unreferenced vertices after the largest face index;
@@ -1196,107 +1054,53 @@ def _snapshot_call(**kw: Any) -> Any:
 SHARE = Param("share", Number(0.0, 1.0))
 COMPARED_MESHES = [Param("actual", mesh_arguments(OK)), Param("expected", mesh_arguments(OK))]
 
+POSITIVE_TOLERANCE = Number(0.0, math.inf, open_hi=True)
+SNAPSHOT_VALUES = (("a render", COLOUR_AND_LINES, OK), ("an image", IMG8, OK), ("an SVG", LINES.svg(), OK),
+                   ("lines", list(LINES.lines), OK), ("not SVG", "x", ValueError), ("an int", 3, TypeError))
+# The peers each smooth the methods whose presets name them (the others of the family are refused).
+FAMILY = {m["method"]: next(k["choices"] for k in m["keywords"] if k["name"] == "preset")
+          for m in SMOOTHING if any(k["name"] == "preset" for k in m["keywords"])}
+PEERS = {peer: tuple(m for m, presets in FAMILY.items() if peer in presets) for peer in ("trimesh", "pymeshlab")}
+
 CASES += [
-    Case(
-        "testing.assert_mesh_close",
-        testing.assert_mesh_close,
-        dict(actual=(V, F), expected=(V, F), rtol=1e-6, atol=0.0, check_faces=True),
-        COMPARED_MESHES + [
-            Param("rtol", Number(0.0, math.inf, open_hi=True)), Param("atol", Number(0.0, math.inf, open_hi=True)),
-            Param("check_faces", Flag()),
-        ],
-        also=(AssertionError,),
-    ),
-    Case(
-        "testing.mesh_difference",
-        testing.mesh_difference,
-        dict(actual=(V, F), expected=(V, F)),
-        [Param("actual", mesh_arguments(ValueError)), Param("expected", mesh_arguments(ValueError))],
-    ),
-    *[
-        Case(
-            f"testing.{name}",
-            getattr(testing, name),
-            dict(actual=IMG8, expected=IMG8, levels=8, **extra),
-            [Param("actual", IMAGES_TO_COMPARE), Param("expected", IMAGES_TO_COMPARE),
-             Param("levels", Integer(0, 255))] + ([SHARE] if extra else []),
-            also=(AssertionError,),  # images of other sizes, or that differ
-        )
-        for name, extra in (("assert_images_close", {"share": 0.001}), ("image_difference", {}))
-    ],
-    *[
-        Case(
-            f"testing.{name}",
-            getattr(testing, name),
-            dict(actual=LINES, expected=LINES, pixels=1.0, **extra),
-            [Param("actual", DRAWINGS), Param("expected", DRAWINGS), Param("pixels", Number(0.0, 1e6))]
-            + ([SHARE] if extra else []),
-            also=(AssertionError,),
-        )
-        for name, extra in (("assert_drawings_close", {"share": 0.005}), ("drawing_difference", {}))
-    ],
-    Case(
-        "testing.Snapshot",
-        _snapshot,
-        dict(directory=SNAPSHOTS, test_name="probe", update=False, written=None),
-        [
-            Param("directory", Array((("a str", SNAPSHOTS, OK), ("a Path", Path(SNAPSHOTS), OK),
-                                      ("an int", 3, TypeError), ("bytes", SNAPSHOTS.encode(), TypeError)))),
-            Param("test_name", Array((("a name", "test_x[gl]", OK), ("odd characters", "a/b c:d", OK),
-                                      ("empty", "", ValueError), ("an int", 3, TypeError)))),
-            Param("update", Flag()),
-            Param("written", Array((("a list", [], OK), ("a tuple", (), TypeError))), none=OK),
-        ],
-    ),
-    Case(
-        "testing.Snapshot(call)",
-        _snapshot_call,
-        dict(value=COLOUR_AND_LINES, name=None, kind="auto", levels=8, pixels=1.0, share=None),
-        [
-            Param("value", Array((("a render", COLOUR_AND_LINES, OK), ("an image", IMG8, OK),
-                                  ("an SVG", LINES.svg(), OK), ("lines", list(LINES.lines), OK),
-                                  ("not SVG", "x", ValueError), ("an int", 3, TypeError)))),
-            Param("name", Array((("a name", "other", OK), ("empty", "", ValueError), ("an int", 3, TypeError))),
-                  none=OK),
-            Param("kind", Name(("auto", "image", "drawing"))), Param("levels", Integer(0, 255)),
-            Param("pixels", Number(0.0, 1e6)), Param("share", Number(0.0, 1.0), none=OK),
-        ],
-    ),
-    *[
-        Case(
-            f"testing.smoothing_vs_{peer}",
-            getattr(testing, f"smoothing_vs_{peer}"),
-            dict(vertices=V, faces=F, method="laplacian", iterations=3),
-            [
-                Param("vertices", PEER_VERTICES), Param("faces", PEER_FACES, none=TypeError),
-                Param("method", Name(methods, invalid=invalid)),
-                PEER_ITERATIONS,
-            ],
-        )
-        for peer, methods, invalid in (
-            ("trimesh", ("laplacian", "taubin", "hc", "implicit"), ()),
-            ("pymeshlab", ("laplacian", "taubin", "hc"), ("implicit",)),
-        )
-    ],
-    Case(
-        "testing.curvature_vs_libigl",
-        testing.curvature_vs_libigl,
-        dict(vertices=V, faces=F, radius=2, smoothing=0.0),
-        [
-            Param("vertices", PEER_VERTICES), Param("faces", PEER_FACES), Param("radius", Integer(1, 10)),
-            Param("smoothing", Number(0.0, math.inf, open_hi=True)),
-        ],
-    ),
-    Case(
-        "testing.sobel_vs_skimage",
-        testing.sobel_vs_skimage,
-        dict(image=IMG, mask=None, which="sobel"),
-        [
-            # values near float64's limit overflow in scikit-image's filter (not in toonmesh's)
-            Param("image", Array(tuple(p for p in IMAGES.probes if p[0] != "huge values"))),
-            Param("mask", MASKS, none=OK), Param("which", Name(("sobel", "sobel_h", "sobel_v"))),
-        ],
-    ),
+    Case("testing.assert_mesh_close", testing.assert_mesh_close,
+         dict(actual=(V, F), expected=(V, F), rtol=1e-6, atol=0.0, check_faces=True),
+         COMPARED_MESHES + [Param("rtol", POSITIVE_TOLERANCE), Param("atol", POSITIVE_TOLERANCE),
+                            Param("check_faces", Flag())], also=(AssertionError,)),
+    Case("testing.mesh_difference", testing.mesh_difference, dict(actual=(V, F), expected=(V, F)),
+         [Param("actual", mesh_arguments(ValueError)), Param("expected", mesh_arguments(ValueError))]),
+    *[Case(f"testing.{name}", getattr(testing, name), dict(actual=IMG8, expected=IMG8, levels=8, **extra),
+           [Param("actual", IMAGES_TO_COMPARE), Param("expected", IMAGES_TO_COMPARE), Param("levels", Integer(0, 255))]
+           + ([SHARE] if extra else []), also=(AssertionError,))  # images of other sizes, or that differ
+      for name, extra in (("assert_images_close", {"share": 0.001}), ("image_difference", {}))],
+    *[Case(f"testing.{name}", getattr(testing, name), dict(actual=LINES, expected=LINES, pixels=1.0, **extra),
+           [Param("actual", DRAWINGS), Param("expected", DRAWINGS), Param("pixels", Number(0.0, 1e6))]
+           + ([SHARE] if extra else []), also=(AssertionError,))
+      for name, extra in (("assert_drawings_close", {"share": 0.005}), ("drawing_difference", {}))],
+    Case("testing.Snapshot", _snapshot, dict(directory=SNAPSHOTS, test_name="probe", update=False, written=None),
+         [Param("directory", Array((("a str", SNAPSHOTS, OK), ("a Path", Path(SNAPSHOTS), OK),
+                                    ("an int", 3, TypeError), ("bytes", SNAPSHOTS.encode(), TypeError)))),
+          Param("test_name", Array((("a name", "test_x[gl]", OK), ("odd characters", "a/b c:d", OK),
+                                    ("empty", "", ValueError), ("an int", 3, TypeError)))),
+          Param("update", Flag()), Param("written", Array((("a list", [], OK), ("a tuple", (), TypeError))), none=OK)]),
+    Case("testing.Snapshot(call)", _snapshot_call,
+         dict(value=COLOUR_AND_LINES, name=None, kind="auto", levels=8, pixels=1.0, share=None),
+         [Param("value", Array(SNAPSHOT_VALUES)),
+          Param("name", Array((("a name", "other", OK), ("empty", "", ValueError), ("an int", 3, TypeError))), none=OK),
+          Param("kind", Name(("auto", "image", "drawing"))), Param("levels", Integer(0, 255)),
+          Param("pixels", Number(0.0, 1e6)), Param("share", Number(0.0, 1.0), none=OK)]),
+    *[Case(f"testing.smoothing_vs_{peer}", getattr(testing, f"smoothing_vs_{peer}"),
+           dict(vertices=V, faces=F, method="laplacian", iterations=3),
+           [Param("vertices", PEER_VERTICES), Param("faces", PEER_FACES),
+            Param("method", Name(methods, invalid=tuple(m for m in FAMILY if m not in methods))), PEER_ITERATIONS])
+      for peer, methods in PEERS.items()],
+    Case("testing.curvature_vs_libigl", testing.curvature_vs_libigl, dict(vertices=V, faces=F, radius=2, smoothing=0.0),
+         [Param("vertices", PEER_VERTICES), Param("faces", PEER_FACES), Param("radius", Integer(1, 10)),
+          Param("smoothing", POSITIVE)]),
+    # values near float64's limit overflow in scikit-image's filter (not in toonmesh's)
+    Case("testing.sobel_vs_skimage", testing.sobel_vs_skimage, dict(image=IMG, mask=None, which="sobel"),
+         [Param("image", Array(tuple(p for p in IMAGES.probes if p[0] != "huge values"))),
+          Param("mask", MASKS, none=OK), Param("which", Name(("sobel", "sobel_h", "sobel_v")))]),
 ]
 
 
