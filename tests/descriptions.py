@@ -12,13 +12,17 @@ from typing import Any, Dict, List, Tuple
 
 import toonmesh as tm
 
-NEEDED = {"int": ("min", "max", "exclusive", "slider"), "float": ("min", "max", "exclusive", "slider"),
-          "choice": ("choices",), "names": ("choices",), "setting": ("class",)}
+NEEDED = {"int": ("min", "max", "exclusive"), "float": ("min", "max", "exclusive"), "choice": ("choices",),
+          "names": ("choices",), "setting": ("class",)}
+SLIDER = ("slider",)  # a settings number's control range (the smoothing keywords have none)
 
 
-def checked(entry: Dict[str, Any], where: str) -> Dict[str, Any]:
-    """``entry`` (a field, parameter or keyword) once it has every key its kind needs."""
-    missing = [k for k in ("name", "kind", "optional", *NEEDED.get(entry.get("kind", ""), ())) if k not in entry]
+def checked(entry: Dict[str, Any], where: str, more: Tuple[str, ...] = ()) -> Dict[str, Any]:
+    """``entry`` (a field, parameter or keyword) once it has every key its kind needs (and, for
+    a number, the keys ``more``)."""
+    needed = NEEDED.get(entry.get("kind", ""), ())
+    needed += more if entry.get("kind") in ("int", "float") else ()
+    missing = [k for k in ("name", "kind", "optional", *needed) if k not in entry]
     if missing:
         raise KeyError(f"{where}.{entry.get('name')}: the core's description has no {missing} ({sorted(entry)})")
     return entry
@@ -30,7 +34,7 @@ def settings_classes() -> List[Any]:
 
 
 def fields(cls: Any) -> List[Dict[str, Any]]:
-    return [checked(f, cls.__name__) for f in cls.describe()["fields"]]
+    return [checked(f, cls.__name__, SLIDER) for f in cls.describe()["fields"]]
 
 
 def constructors(cls: Any) -> List[Tuple[str, Any, int, List[Dict[str, Any]]]]:
@@ -40,7 +44,7 @@ def constructors(cls: Any) -> List[Tuple[str, Any, int, List[Dict[str, Any]]]]:
     for c in cls.describe()["constructors"]:
         name = f"{cls.__name__}.{c['name']}" if c["name"] else cls.__name__
         make = getattr(cls, c["name"]) if c["name"] else cls
-        out.append((name, make, c["required"], [checked(p, name) for p in c["params"]]))
+        out.append((name, make, c["required"], [checked(p, name, SLIDER) for p in c["params"]]))
     return out
 
 
