@@ -824,10 +824,6 @@ FRAME = described_params("RenderOptions", 0, [p for p in OPTIONS if p["name"] !=
 CAMERA = described_params("RenderOptions", 0, [p for p in OPTIONS if p["name"] == "camera"])
 
 
-def _frame(**kw: Any) -> Dict[str, Any]:
-    return dict(SMALL, outputs=("color", "normal", "depth"), outlines="mesh", msaa=1, supersample=1, **kw)
-
-
 def _options_of(o: Any) -> Dict[str, Any]:
     """The keywords that make `o` again, read from its fields (a RenderOptions made from
     keywords renders as those keywords do)."""
