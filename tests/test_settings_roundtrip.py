@@ -1,7 +1,7 @@
 """Every settings object describes itself after any change: for each settings class, each of
-its constructors and each of its parameters that is a (non-fixed) field, a value made by the
-constructor from drawn arguments and changed by ``replace`` to a drawn value evaluates back from
-its repr to an equal value, and pickles round trip.
+its constructors and each (non-fixed) field its values have, a value made by the constructor
+from drawn arguments and changed by ``replace`` to a drawn value evaluates back from its repr to
+an equal value with the same hash and repr, and pickles round trip.
 
 The values are drawn from the core's description (tests/descriptions.py): a number within its
 rule's bounds or its slider's range, a choice from its choices, colours, 3-vectors, lists of
