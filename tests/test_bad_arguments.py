@@ -359,7 +359,9 @@ for _params in [m["keywords"] for m in SMOOTHING] + [c[3] for cs in SETTINGS.val
 
 
 def _integer(bound: float, excluded: bool, step: int) -> int:
-    return (int(bound) + step if excluded else int(bound)) if math.isfinite(bound) else step * (2**63 - 1)
+    """An integer range's end: the next integer inward where ``bound`` is excluded, the 64-bit
+    limit where it is infinite."""
+    return (int(bound) + step if excluded else int(bound)) if math.isfinite(bound) else (2**63 - 1 if bound > 0 else -(2**63))
 
 
 def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str, Any],
