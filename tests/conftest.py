@@ -152,6 +152,7 @@ def pytest_terminal_summary(terminalreporter: Any) -> None:
 
 # What a view shows on screen against the exact frame of the same view, and screenshots taken
 # mid-drag (the browser tests; the viewer_browser benchmark reads the screen with the same).
+from toonmesh.bench._screen import centre, press_and_move  # noqa: E402,F401
 from toonmesh.bench._screen import pixels as screen_pixels  # noqa: E402,F401
 from toonmesh.bench._screen import screenshot_mid_drag  # noqa: E402,F401
 from toonmesh.bench._screen import shares as screen_shares  # noqa: E402,F401

@@ -11,7 +11,8 @@ from typing import Any, Dict, Iterator, Tuple
 import pytest
 
 from test_cli import in_process, one_line_error
-from toonmesh import _core, _described_flags, batch, cli
+from toonmesh import _core, batch, cli
+from toonmesh.arguments import _described_flags
 from toonmesh._core import Dither, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 
 #: (command, dest) -> (class, constructor, parameter): flags whose default is the described one.

@@ -156,7 +156,7 @@ def test_a_scene_and_a_path_render_like_the_merged_mesh_and_upload_once(tmp_path
     merged = scene.to_mesh()
     # a fixed camera: a fit one frames the union of the meshes' bounding spheres, not the merged mesh's
     camera = tm.Camera.look_at((3.0, 3.0, 8.0), (3.0, 0.0, 0.0))
-    renderer = tm._render.shared_renderer(None)
+    renderer = tm.rendering._render.shared_renderer(None)
     uploads = []
     real = type(renderer)._add  # every upload goes through it
     monkeypatch.setattr(type(renderer), "_add", lambda self, *a, **k: uploads.append(1) or real(self, *a, **k))
@@ -398,7 +398,7 @@ def test_a_file_renders_in_its_own_colours_with_its_instances_uploaded_once(tmp_
     reds = [m for m in meshes if "vertex_colors" in m.colors]
     assert len(reds) == 2 and reds[0].colors["vertex_colors"] is reds[1].colors["vertex_colors"]
     assert sum("texture" in m.colors for m in meshes) == 1
-    renderer = tm._render.shared_renderer(None)
+    renderer = tm.rendering._render.shared_renderer(None)
     uploads = []
     real = type(renderer)._add
     monkeypatch.setattr(type(renderer), "_add", lambda self, *a, **k: uploads.append(1) or real(self, *a, **k))

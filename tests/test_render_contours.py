@@ -164,7 +164,7 @@ def _segment_distance(p, a, b):
 
 
 def test_svg_for_a_pen_plotter():
-    from toonmesh import _strokes
+    from toonmesh.rendering import _strokes
 
     V, F = tm.shapes.icosphere(4, noise=0.01, seed=3)
     res = tm.render(V, F, outputs=("lines",), width=300, height=300,

@@ -28,7 +28,7 @@ def test_the_testing_helpers_type_check_as_a_users_tests_see_them(tmp_path):
     package = Path(__file__).resolve().parent.parent / "python" / "toonmesh"
     r = subprocess.run(
         [sys.executable, "-m", "mypy", "--strict", "--follow-imports=silent", "--cache-dir", str(tmp_path),
-         str(package / "testing.py"), str(package / "pytest_plugin.py")],
+         str(package / "testing" / "__init__.py"), str(package / "pytest_plugin.py")],
         capture_output=True,
         text=True,
         cwd=package.parent,

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
-from toonmesh import _strokes
+from toonmesh.rendering import _strokes
 from toonmesh.bench.render import stroke_stats
 from toonmesh.data import bunny
 

@@ -33,7 +33,6 @@ the viewer and its controls after the drag and the wheel turn).
 from __future__ import annotations
 
 import contextlib
-import io
 import os
 import re
 from pathlib import Path
@@ -42,7 +41,8 @@ from typing import Iterator, List
 import numpy as np
 import pytest
 
-from conftest import chromium, need, screen_shares, screenshot_mid_drag
+from conftest import centre, chromium, need, press_and_move, screen_shares, screenshot_mid_drag
+from conftest import screen_pixels as _pixels
 from toonmesh.bench._lab import open_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -113,12 +113,6 @@ def jupyter_lab(tmp_path):
         yield url
 
 
-def _pixels(png: bytes) -> np.ndarray:
-    from PIL import Image
-
-    return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
-
-
 def _run_cell(page, cells, i: int, text: str, timeout: int = 30_000) -> str:
     """Runs cell ``i`` and returns the text of its output that contains ``text``."""
     cell = cells.nth(i)
@@ -181,8 +175,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             menu_prevented = img.evaluate(
                 "img => !img.dispatchEvent(new MouseEvent('contextmenu', { bubbles: true, cancelable: true, button: 2 }))")
             before = _pixels(img.screenshot())
-            box = img.bounding_box()
-            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+            x, y = centre(img)
             shown = int(viewer.get_attribute("data-frames-shown"))
             page.mouse.click(x, y, button="right")  # a pan of no length: the full-size frame again
             _wait_exact_after(page, shown)
@@ -239,8 +232,7 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             # from the user zooms in
             shown = int(viewer.get_attribute("data-frames-shown"))
             img.scroll_into_view_if_needed()  # the output of the cell run moved it
-            box = img.bounding_box()
-            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+            x, y = centre(img)
             page.mouse.click(x, y)
             _wait_exact_after(page, shown)
             shown = int(viewer.get_attribute("data-frames-shown"))
@@ -328,13 +320,8 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             page.wait_for_function("document.querySelector('.toonmesh-viewer').dataset.draft === 'webgl'",
                                    timeout=10_000)
             img.scroll_into_view_if_needed()
-            box = img.bounding_box()
-            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-            page.mouse.move(x, y)
-            page.mouse.down()
-            for i in range(1, 5):
-                page.mouse.move(x - 10 * i, y)
-                page.wait_for_timeout(30)
+            x, y = centre(img)
+            press_and_move(page, x, y, 4, -10)
             restored_shot = _pixels(screenshot_mid_drag(page, img, ".toonmesh-viewer img", x - 40, y))
             restored_mark = viewer.get_attribute("data-exact")
             shown = int(viewer.get_attribute("data-frames-shown"))
@@ -370,14 +357,8 @@ def test_the_viewer_in_chromium(jupyter_lab, tmp_path):
             page.wait_for_timeout(300)
             one = _pixels(scene.locator("img").screenshot())
             # a drag: the draft drawn here leaves the blue bunny out too
-            box = scene.locator("img").bounding_box()
-            sx, sy = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
             shown = int(scene.get_attribute("data-frames-shown"))
-            page.mouse.move(sx, sy)
-            page.mouse.down()
-            for i in range(1, 6):
-                page.mouse.move(sx + 4 * i, sy)
-                page.wait_for_timeout(30)
+            press_and_move(page, *centre(scene.locator("img")), 5, 4)
             draft_blue = scene.evaluate(
                 "r => { const p = r.toonmeshDraft.pixels(); let n = 0, m = 0;"
                 " for (let i = 0; i < p.data.length; i += 4) { if (p.data[i + 2] > p.data[i] + 60) n++;"

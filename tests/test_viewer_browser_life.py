@@ -7,11 +7,11 @@ past its neighbour stops at it and the view shows the new bands."""
 
 from __future__ import annotations
 
-import io
 
 import numpy as np
 
-from conftest import chromium, need
+from conftest import centre, chromium, need, press_and_move
+from conftest import screen_pixels as _pixels
 from test_viewer_browser import notebook_server, _run_cell
 from toonmesh.bench._lab import open_notebook
 
@@ -35,12 +35,6 @@ CELLS = [
 ]
 # The controls column's full height (px) for the viewer above as a flat list, before sections.
 FLAT_HEIGHT = 2372
-
-
-def _pixels(png: bytes) -> np.ndarray:
-    from PIL import Image
-
-    return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(np.int16)
 
 
 _checks = [0]
@@ -85,13 +79,7 @@ def test_a_shown_view_lives_while_on_the_page_and_gives_keys_back(tmp_path):
             before = _pixels(img.screenshot())
             shown = int(viewer.get_attribute("data-frames-shown"))
             img.scroll_into_view_if_needed()
-            box = img.bounding_box()
-            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-            page.mouse.move(x, y)
-            page.mouse.down()
-            for i in range(1, 9):
-                page.mouse.move(x + 12 * i, y + 2 * i)
-                page.wait_for_timeout(30)
+            press_and_move(page, *centre(img), 8, 12, 2)
             page.mouse.up()
             page.wait_for_function(
                 "(n) => { const r = document.querySelector('.toonmesh-viewer');"

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import pytest
 
-from conftest import chromium, need
+from conftest import centre, chromium, need, press_and_move
 from test_viewer_browser import _run_cell, _wait_exact_after, notebook_server
 from toonmesh.bench._lab import open_notebook
 
@@ -72,14 +72,8 @@ def test_a_viewer_fits_the_cell_at_the_screens_pixel_ratio(jupyter_lab, tmp_path
             # a drag: the drafts are drawn at the screen's ratio times the draft scale
             img = viewer.locator("img")
             img.scroll_into_view_if_needed()
-            box = img.bounding_box()
-            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
             shown = int(viewer.get_attribute("data-frames-shown"))
-            page.mouse.move(x, y)
-            page.mouse.down()
-            for i in range(1, 8):
-                page.mouse.move(x + 10 * i, y)
-                page.wait_for_timeout(30)
+            press_and_move(page, *centre(img), 7, 10)
             draft = viewer.evaluate("r => { const p = r.toonmeshDraft.pixels();"
                                     " return [p.width, p.height, +r.dataset.draftScale, r.dataset.draft]; }")
             page.mouse.up()

@@ -27,7 +27,8 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
-from conftest import RENDER_BACKENDS, chromium, need, screen_pixels, screen_shares, screenshot_mid_drag
+from conftest import (RENDER_BACKENDS, centre, chromium, need, press_and_move, screen_pixels, screen_shares,
+                      screenshot_mid_drag)
 from toonmesh.data import bunny
 
 SIZE = (320, 240)
@@ -230,13 +231,7 @@ def test_the_page_draws_orbits_and_names_what_the_draft_leaves_out(browser, tmp_
     assert first[..., :3].min() < 150 and first[..., :3].max() > 200, "the canvas is blank"
     # a synthetic drag: more frames, another picture
     shown = int(root.get_attribute("data-frames-shown"))
-    box = page.locator("canvas").bounding_box()
-    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-    page.mouse.move(x, y)
-    page.mouse.down()
-    for i in range(1, 11):
-        page.mouse.move(x + 8 * i, y + 2 * i)
-        page.wait_for_timeout(20)
+    press_and_move(page, *centre(page.locator("canvas")), 10, 8, 2, pause_ms=20)
     page.mouse.up()
     page.wait_for_function("(n) => +document.querySelector('.toonmesh-viewer').dataset.framesShown >= n + 3",
                            arg=shown, timeout=20_000)
@@ -249,8 +244,7 @@ def test_the_page_shows_the_model_on_screen_during_and_after_a_drag(browser, tmp
     page, exact, _ = _page_of(browser, tmp_path, "screen", outlines="image")
     canvas = page.locator("canvas")
     loaded = screen_shares(screen_pixels(canvas.screenshot()), exact)
-    box = canvas.bounding_box()
-    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    x, y = centre(canvas)
     page.mouse.move(x, y)
     page.mouse.down()
     during = []

@@ -66,7 +66,7 @@ def test_ten_dropped_viewers_leave_threads_meshes_widgets_and_memory_as_they_wer
         need("ipywidgets")
     from ipywidgets.widgets.widget import _instances
 
-    renderer = tm._render.shared_renderer(None)
+    renderer = tm.rendering._render.shared_renderer(None)
     _views(mesh, 2, controls)  # first-use allocations (pipelines, caches) out of the count
     gc.collect()
     threads, meshes, widgets, rss = threading.active_count(), renderer._engine.mesh_count, len(_instances), _rss_mb()
@@ -86,7 +86,7 @@ def test_ten_kept_viewers_of_one_mesh_share_its_upload_as_re_runs_kept_in_out_do
     IPython's ``Out``: viewers of the same meshes (the same contents, as a file read again
     gives) share one upload, freed with the last of them."""
     need("anywidget")
-    renderer = tm._render.shared_renderer(None)
+    renderer = tm.rendering._render.shared_renderer(None)
     first = tm.Viewer(*mesh, outlines="mesh", width=512, height=512)  # first-use allocations out of the count
     gc.collect()
     threads, meshes, rss = threading.active_count(), renderer._engine.mesh_count, _rss_mb()

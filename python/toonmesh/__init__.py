@@ -1,6 +1,6 @@
 """toonmesh: mesh smoothing, outline extraction and headless toon rendering, on NumPy arrays."""
 
-from toonmesh._runtime_dir import ensure_runtime_dir
+from toonmesh.rendering._runtime_dir import ensure_runtime_dir
 
 ensure_runtime_dir()  # before any GPU device is made: keeps Mesa's Wayland probe quiet
 
@@ -27,7 +27,7 @@ from toonmesh._core import (
     Rim,
     Shadows,
 )
-from toonmesh._render import (
+from toonmesh.rendering._render import (
     Mesh,
     MeshHandle,
     Renderer,
@@ -40,7 +40,7 @@ from toonmesh._render import (
 )
 
 from toonmesh.files._load import load
-from toonmesh._render import __all__ as _rendering
+from toonmesh.rendering._render import __all__ as _rendering
 from toonmesh.viewer import Viewer, ViewerClosedError
 
 __all__ = [

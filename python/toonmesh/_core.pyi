@@ -119,7 +119,7 @@ def grid(n: int, noise: float, seed: int) -> Tuple[npt.NDArray[np.float64], npt.
 # the keywords of toonmesh.smooth's functions (their signatures are the documentation)
 def _smooth(method_name: str, mesh: _Mesh, **options: Any) -> npt.NDArray[np.floating[Any]]: ...
 
-# --- rendering (src/py/scene.rs, src/py/render.rs); the public API is toonmesh._render ---
+# --- rendering (src/py/scene.rs, src/py/render.rs); its Python side is toonmesh.rendering._render ---
 
 _Color = Any  # '#rrggbb' or 3 numbers in [0, 1]
 _Vec3 = Tuple[float, float, float]

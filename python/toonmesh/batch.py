@@ -27,9 +27,9 @@ import numpy as np
 from toonmesh import _core, smooth
 from toonmesh.files._write import check_distinct_names, image_suffix, save_result, view_paths
 from toonmesh.files._load import load, under_own_colours
-from toonmesh._render import RenderOptions, after_smoothing, draw, place_meshes, remove_meshes, shared_renderer
-from toonmesh._scene import Mesh, Normals, normal_mode
-from toonmesh._views import check_views, turntable
+from toonmesh.rendering._render import RenderOptions, after_smoothing, draw, place_meshes, remove_meshes, shared_renderer
+from toonmesh.scene._scene import Mesh, Normals, normal_mode
+from toonmesh.rendering._views import check_views, turntable
 
 __all__ = ["render_file", "render_files"]
 

@@ -28,24 +28,25 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from toonmesh import _core, _strokes, smooth
+from toonmesh import _core, smooth
+from toonmesh.rendering import _strokes
 from toonmesh._core import __version__
-from toonmesh._described import described
-from toonmesh._described_flags import CORE_DEFAULT, add_described, errors_as_flags, sets, styles
+from toonmesh.arguments._described import described
+from toonmesh.arguments._described_flags import CORE_DEFAULT, add_described, errors_as_flags, sets, styles
 from toonmesh.files._write import (
     IMAGE_SUFFIXES, Part, check_distinct_names, check_not_input, check_writable, image_suffix, seam_normals, view_paths,
     write_parts,
 )
-from toonmesh._line_drawing import summary, view_lines, write_npz, write_svg
+from toonmesh.edges._line_drawing import summary, view_lines, write_npz, write_svg
 from toonmesh.files._load import (
     OWN_COLOURS_WHITE, Surface, file_up_axis, read_mesh, read_surfaces, up_conventions,
 )
 from toonmesh.edges import feature_edges
 from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
-from toonmesh._render import Mesh, RenderResult, gpu_info, render
-from toonmesh._scene import normal_mode
-from toonmesh._video import DEFAULT_FPS, DEFAULT_SECONDS, VIDEO_SUFFIXES, check_fps, check_video_size, save_video, video_writer
-from toonmesh._views import check_views
+from toonmesh.rendering._render import Mesh, RenderResult, gpu_info, render
+from toonmesh.scene._scene import normal_mode
+from toonmesh.rendering._video import DEFAULT_FPS, DEFAULT_SECONDS, VIDEO_SUFFIXES, check_fps, check_video_size, save_video, video_writer
+from toonmesh.rendering._views import check_views
 from toonmesh.batch import SMOOTH_METHODS as RENDER_SMOOTH_METHODS, render_views
 
 __all__ = ["main"]

@@ -54,7 +54,7 @@ import numpy as np
 import numpy.typing as npt
 
 from toonmesh import _core
-from toonmesh._input import mesh_arrays
+from toonmesh.arguments._input import mesh_arrays
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack

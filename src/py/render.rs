@@ -152,7 +152,7 @@ fn report_dict<'py>(py: Python<'py>, report: FrameReport) -> PyResult<Bound<'py,
     Ok(d)
 }
 
-/// The device-side half of `toonmesh.Renderer` (see python/toonmesh/_render.py).
+/// The device-side half of `toonmesh.Renderer` (see python/toonmesh/rendering/_render.py).
 #[pyclass(name = "Renderer", module = "toonmesh._core", frozen)]
 pub(super) struct PyRenderer {
     pub(super) inner: Renderer,

@@ -1,5 +1,5 @@
 //! Python bindings for `crate::render::effects::outlines::pen`: the strokes of a line drawing as
-//! a pen draws them, called by `toonmesh/_strokes.py`.
+//! a pen draws them, called by `toonmesh/rendering/_strokes.py`.
 
 use pyo3::prelude::*;
 use pyo3::types::PyList;

@@ -50,6 +50,23 @@ def shares(shot: np.ndarray, exact: np.ndarray) -> Tuple[float, float]:
     return covered(shot, bg) / max(covered(exact, bg), 1), ink(shot) / max(ink(exact), 1)
 
 
+def centre(locator: Any) -> Tuple[float, float]:
+    """The middle of ``locator``'s box on the page, in CSS pixels."""
+    box = locator.bounding_box()
+    return box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+
+
+def press_and_move(page: Any, x: float, y: float, steps: int, dx: float, dy: float = 0.0, pause_ms: int = 30) -> None:
+    """The start of a drag as a hand makes it: the mouse pressed at (x, y), then moved ``steps``
+    times by (dx, dy), ``pause_ms`` after each move, so that the page sees every move. The
+    button stays down: ``page.mouse.up()`` ends the drag (a screenshot may come first)."""
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for i in range(1, steps + 1):
+        page.mouse.move(x + dx * i, y + dy * i)
+        page.wait_for_timeout(pause_ms)
+
+
 def screenshot_mid_drag(page: Any, locator: Any, target: str, x: float, y: float, index: int = 0) -> bytes:
     """A screenshot of ``locator`` while a drag goes on: with the mouse held down at (x, y) on
     the element that ``target`` (a CSS selector; its ``index``-th match) selects, the page moves

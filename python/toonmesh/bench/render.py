@@ -429,7 +429,7 @@ def _line_settings(size: int, repeat: int) -> List[Sequence[Any]]:
     """The raw bunny's silhouette strokes under each line setting, and the frame's time: what
     each costs and how clean the strokes come out (after the SVG's quarter-pixel simplification)."""
     import toonmesh as tm
-    from toonmesh import _strokes
+    from toonmesh.rendering import _strokes
     from toonmesh.data import bunny
 
     V, F = bunny()
@@ -458,7 +458,7 @@ def _stroke_smoothing(size: int, repeat: int) -> List[Sequence[Any]]:
     :meth:`RenderResult.strokes`, after the SVG's quarter-pixel simplification: how much they
     turn per 100 px, the farthest any point moved (at most the radius), and the time it took."""
     import toonmesh as tm
-    from toonmesh import _strokes
+    from toonmesh.rendering import _strokes
     from toonmesh.data import bunny
 
     V, F = bunny()
@@ -485,7 +485,7 @@ def _pen_strokes(size: int, n_random: int, repeat: int) -> List[Sequence[Any]]:
     plotter's order of ``n_random`` random short strokes (greedy nearest neighbour, about
     n log n)."""
     import toonmesh as tm
-    from toonmesh import _strokes
+    from toonmesh.rendering import _strokes
     from toonmesh.data import bunny
 
     V, F = bunny()

@@ -51,7 +51,7 @@ def rows(count: int, faces: int, size: int, repeat: int) -> List[Sequence[Any]]:
     kw: Dict[str, Any] = dict(camera=camera, width=size, height=size, outlines=None)
     scene = [tm.Mesh(*mesh, transform=T) for T in transforms]
     uploads: List[int] = []
-    renderer = tm._render.shared_renderer(None)
+    renderer = tm.rendering._render.shared_renderer(None)
     real = renderer._add  # every upload goes through it
 
     def counting(*a: Any, **k: Any) -> Any:

@@ -38,7 +38,7 @@ from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
-from toonmesh.bench._screen import pixels, screenshot_mid_drag, script, shares
+from toonmesh.bench._screen import pixels, press_and_move, screenshot_mid_drag, script, shares
 from toonmesh.bench._timing import table
 
 SIZE = 512
@@ -100,11 +100,7 @@ def _on_screen(page: Any, view: Any, target: str, index: int, x: float, y: float
     ``index``-th match): a screenshot with the pointer held and moving, as a share of the covered
     pixels of a screenshot of the same view once it is still (``still()`` waits for it: the pointer
     still held)."""
-    page.mouse.move(x, y)
-    page.mouse.down()
-    for i in range(1, 9):
-        page.mouse.move(x + 5 * i, y)
-        page.wait_for_timeout(20)
+    press_and_move(page, x, y, 8, 5, pause_ms=20)
     moving = pixels(screenshot_mid_drag(page, view, target, x + 40, y, index))
     still()
     exact = pixels(view.screenshot())

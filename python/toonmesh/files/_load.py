@@ -22,14 +22,15 @@ from typing import Any, Dict, Iterator, List, Optional, Tuple, Type
 
 import numpy as np
 
-from toonmesh import _colors, _core
+from toonmesh import _core
+from toonmesh.scene import _colors
 from toonmesh.files import _archives, _gltf, _ply, _polygons, _threemf
 from toonmesh.files._checks import (
     MeshFileError, asset_path, check_gltf_shape, check_gltf_sizes, check_kind, check_obj, check_ply, file_bytes,
     gltf_colour_notes, gltf_document, gltf_file_notes, gltf_ignored, join_continued, obj_file_notes, obj_for_trimesh,
     ply_file_notes, ply_header, reading, unlike,
 )
-from toonmesh._scene import Mesh, normal_mode
+from toonmesh.scene._scene import Mesh, normal_mode
 
 #: The most mesh instances (scene nodes with geometry) one file or scene may place.
 MAX_INSTANCES = 65_536
@@ -66,7 +67,7 @@ class Surface:
     ``nx ny nz``; read from files only, never computed).
     Any of them may be None: these are what ``toonmesh smooth`` writes back. ``colors``: the
     colour keywords of :class:`toonmesh.Mesh` that draw the geometry (its albedo, by the
-    renderer's own rule in :mod:`toonmesh._colors`), made once per geometry so that its
+    renderer's own rule in :mod:`toonmesh.scene._colors`), made once per geometry so that its
     instances share them.
     """
 

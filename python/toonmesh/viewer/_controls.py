@@ -13,7 +13,7 @@ from __future__ import annotations
 import functools
 import html
 import weakref
-from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Tuple
+from typing import Any, Callable, Dict, List, Optional, Protocol, Sequence, Tuple
 
 import ipywidgets as w  # type: ignore[import-untyped]
 
@@ -21,8 +21,25 @@ from toonmesh import _core
 from toonmesh._core import Camera, Light, RenderOptions
 from toonmesh.viewer._field_controls import Control, Panel, Source, control_for, controls_for
 
-if TYPE_CHECKING:
-    from toonmesh.viewer._viewer import Viewer
+
+class Viewed(Protocol):
+    """What the controls use of the viewer they set (a :class:`toonmesh.Viewer`): named here so
+    that this module needs nothing of the viewer's, which imports it."""
+
+    @property
+    def widget(self) -> Any: ...
+
+    @property
+    def options(self) -> RenderOptions: ...
+
+    @property
+    def lights(self) -> Sequence[Light]: ...
+
+    @property
+    def height(self) -> int: ...
+
+    @property
+    def set(self) -> Callable[..., None]: ...  # set(**render_keywords)
 
 # The view's size and pixel ratio follow the cell and the screen or are set from Python
 # (``v.width = 640``): a slider would resize the view under the pointer.
@@ -46,7 +63,7 @@ class ControlPanel(Panel):
     through a weak reference (the widgets live in ipywidgets' registry until closed), so the
     viewer is freed once nothing else refers to it."""
 
-    def __init__(self, viewer: "Viewer", beside: bool = True):
+    def __init__(self, viewer: Viewed, beside: bool = True):
         super().__init__()
         viewer = weakref.proxy(viewer)
         self.viewer = viewer

@@ -10,9 +10,9 @@ from __future__ import annotations
 import math
 from typing import Any, Dict, Optional, Tuple
 
-from toonmesh._checks import integer, number
+from toonmesh.arguments._checks import integer, number
 from toonmesh._core import RenderOptions
-from toonmesh._described import default, described
+from toonmesh.arguments._described import default, described
 
 # The view's size when none is given, until the browser says how wide the cell is.
 DEFAULT_WIDTH = int(default(RenderOptions, "", "width"))

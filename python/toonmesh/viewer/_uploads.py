@@ -15,8 +15,8 @@ from typing import Any, List, Tuple
 
 import numpy as np
 
-from toonmesh._render import PlacedMesh, Renderer, place_meshes, remove_meshes
-from toonmesh._scene import Mesh, own_normals
+from toonmesh.rendering._render import PlacedMesh, Renderer, place_meshes, remove_meshes
+from toonmesh.scene._scene import Mesh, own_normals
 
 
 def _digest(value: Any) -> Tuple[Any, ...]:

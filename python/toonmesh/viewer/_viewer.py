@@ -39,26 +39,26 @@ import threading
 import time
 import types
 import weakref
-from typing import TYPE_CHECKING, Any, Dict, Generic, List, Optional, Set, Tuple, TypeVar, overload
+from typing import TYPE_CHECKING, Any, Callable, Dict, Generic, List, Optional, Set, Tuple, TypeVar, overload
 
 import numpy as np
 
 from toonmesh import _core
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
-from toonmesh._described import default
+from toonmesh.arguments._described import default
 from toonmesh.files._load import is_scene
-from toonmesh._render import (PlacedMesh, Renderer, _core_items, draw, draw_views, own_colours,
+from toonmesh.rendering._render import (PlacedMesh, Renderer, _core_items, draw, draw_views, own_colours,
                               scene_items, shared_renderer)
-from toonmesh._results import RenderResult
-from toonmesh._scene import Mesh, MeshHandle, Normals, own_normals
+from toonmesh.rendering._results import RenderResult
+from toonmesh.scene._scene import Mesh, MeshHandle, Normals, own_normals
 from toonmesh.viewer._layout import KEYWORDS as LAYOUT, Layout, checked
 from toonmesh.viewer._uploads import SharedUpload, shared_upload
-from toonmesh._video import DEFAULT_FPS, DEFAULT_SECONDS, check_fps, check_video_size, video_kind, video_writer
+from toonmesh.rendering._video import DEFAULT_FPS, DEFAULT_SECONDS, check_fps, check_video_size, video_kind, video_writer
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
 
-    from toonmesh._render import RenderKeywords
+    from toonmesh.rendering._render import RenderKeywords
 
 NOTEBOOK_EXTRA = "pip install 'toonmesh[notebook]'"
 
@@ -213,7 +213,14 @@ T = TypeVar("T")
 class _Setting(Generic[T]):
     """A render setting as a viewer attribute: reads the viewer's :class:`RenderOptions` (so it
     reads back as the core holds it: ``v.outlines = "mesh"`` reads an :class:`Outlines`);
-    setting it (to anything ``RenderOptions`` takes) re-renders."""
+    setting it (to anything ``RenderOptions`` takes) re-renders. A setting of the view's layout
+    (its size, its pixel ratio) reads what the view shows now instead (``shown``, from the
+    viewer's :class:`Layout`: the cell's width or the screen's ratio where none was given)."""
+
+    def __init__(self, shown: Optional[Callable[[Layout], T]] = None, doc: Optional[str] = None) -> None:
+        self.shown = shown
+        if doc is not None:
+            self.__doc__ = doc
 
     def __set_name__(self, owner: type, name: str) -> None:
         self.name = name
@@ -223,7 +230,9 @@ class _Setting(Generic[T]):
     @overload
     def __get__(self, viewer: "Viewer", owner: type) -> T: ...
     def __get__(self, viewer: Optional["Viewer"], owner: type) -> Any:
-        return self if viewer is None else getattr(viewer._options, self.name)
+        if viewer is None:
+            return self
+        return getattr(viewer._options, self.name) if self.shown is None else self.shown(viewer._layout)
 
     def __set__(self, viewer: "Viewer", value: Any) -> None:
         viewer.set(**{self.name: value})
@@ -462,40 +471,26 @@ class Viewer:
 
     # -- the view's size ------------------------------------------------------------------------
 
-    @property
-    def width(self) -> int:
+    width: _Setting[int] = _Setting(
+        lambda layout: layout.view_size()[0],
         """The view's width in layout (CSS) pixels, as shown now: as given, or the notebook
         cell's width where none was given (512 until the browser reports it; it follows the
         cell as the window changes). Set an int to fix it, None to fit the cell again; either
-        re-renders. A frame is ``width * pixel_ratio`` output pixels wide."""
-        return self._layout.view_size()[0]
-
-    @width.setter
-    def width(self, value: Optional[int]) -> None:
-        self.set(width=value)
-
-    @property
-    def height(self) -> int:
+        re-renders. A frame is ``width * pixel_ratio`` output pixels wide.""",
+    )
+    height: _Setting[int] = _Setting(
+        lambda layout: layout.view_size()[1],
         """The view's height in layout (CSS) pixels (default 512; None sets the default);
-        setting it re-renders. A frame is ``height * pixel_ratio`` output pixels high."""
-        return self._layout.view_size()[1]
-
-    @height.setter
-    def height(self, value: Optional[int]) -> None:
-        self.set(height=value)
-
-    @property
-    def pixel_ratio(self) -> float:
+        setting it re-renders. A frame is ``height * pixel_ratio`` output pixels high.""",
+    )
+    pixel_ratio: _Setting[float] = _Setting(
+        Layout.ratio,
         """Output pixels per layout pixel of the frames (:class:`toonmesh.RenderOptions`'
         ``pixel_ratio``: the lengths the settings give in pixels scale with it, so the picture is
         the same, sharper): as given, or the screen's device pixel ratio as the browser reports
         it where none was given (1 until then). Set a number (0.25 to 8) to fix it, None to
-        follow the screen again; either re-renders."""
-        return self._layout.ratio()
-
-    @pixel_ratio.setter
-    def pixel_ratio(self, value: Optional[float]) -> None:
-        self.set(pixel_ratio=value)
+        follow the screen again; either re-renders.""",
+    )
 
     def _resized(self) -> None:
         """The render options follow the view's size and pixel ratio (the caller renders)."""
@@ -1191,12 +1186,18 @@ def _mesh_source(vertices: Any, faces: Any) -> str:
     return "mesh"
 
 
+def _one_of(name: str, value: Any, choices: Tuple[str, ...], expected: str) -> str:
+    """``value``, one of ``choices``: else TypeError (not a string) or ValueError (another one),
+    each naming ``name`` and what it ``expected``."""
+    if not isinstance(value, str):
+        raise TypeError(f"{name}: expected {expected}, got {type(value).__name__}")
+    if value not in choices:
+        raise ValueError(f"{name}: expected {expected}, got {value!r}")
+    return value
+
+
 def _projection(projection: Any) -> str:
-    if not isinstance(projection, str):
-        raise TypeError(f"projection: expected 'perspective' or 'orthographic', got {type(projection).__name__}")
-    if projection not in PROJECTIONS:
-        raise ValueError(f"projection: expected 'perspective' or 'orthographic', got {projection!r}")
-    return projection
+    return _one_of("projection", projection, PROJECTIONS, " or ".join(map(repr, PROJECTIONS)))
 
 
 def _part_names(meshes: List[Mesh]) -> List[str]:
@@ -1237,15 +1238,12 @@ def _visible(value: Any, parts: List[str]) -> Dict[int, bool]:
 
 
 def _axis(axis: Any) -> str:
-    if not isinstance(axis, str):
-        raise TypeError(f"axis: expected one of {', '.join(AXES)}, got {type(axis).__name__}")
-    if axis not in AXES:
-        raise ValueError(f"axis: expected one of {', '.join(AXES)}, got {axis!r}")
-    return axis
+    return _one_of("axis", axis, AXES, "one of " + ", ".join(AXES))
 
 
-#: The render settings a viewer holds as attributes, in the order code() writes them.
-SETTINGS = tuple(name for name, value in vars(Viewer).items() if isinstance(value, _Setting))
+#: The render settings a viewer holds as attributes, in the order code() writes them (not those
+#: of the view's layout, read as shown: code() writes the frame's size and ratio instead).
+SETTINGS = tuple(name for name, value in vars(Viewer).items() if isinstance(value, _Setting) and value.shown is None)
 
 
 def _number(name: str, value: Any, lo: float, hi: float) -> float:

@@ -23,17 +23,18 @@ from typing import TYPE_CHECKING, Any, Dict, Iterator, List, NamedTuple, Optiona
 
 import numpy as np
 
-from toonmesh import _colors, _core
+from toonmesh import _core
+from toonmesh.scene import _colors
 from toonmesh.files import _load
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions, kang_table
-from toonmesh._input import mesh_arrays
-from toonmesh._results import RenderResult, RenderStack, stack_of
-from toonmesh._scene import Mesh, MeshHandle, Normals, geometry_key, normal_mode, own_normals
+from toonmesh.arguments._input import mesh_arrays
+from toonmesh.rendering._results import RenderResult, RenderStack, stack_of
+from toonmesh.scene._scene import Mesh, MeshHandle, Normals, geometry_key, normal_mode, own_normals
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
 
-    from toonmesh._colors import MeshColors
+    from toonmesh.scene._colors import MeshColors
 
 
 #: The keywords of :class:`RenderOptions` (a TypedDict made and documented by the core).

@@ -34,9 +34,11 @@ from typing import Any, Dict, List, NamedTuple, Optional, Tuple, Union
 
 import numpy as np
 
-from toonmesh import _drawings, _png, _strokes, edges, smooth
-from toonmesh._checks import number
-from toonmesh._results import RenderResult
+from toonmesh import edges, smooth
+from toonmesh.rendering import _strokes
+from toonmesh.testing import _drawings, _png
+from toonmesh.arguments._checks import number
+from toonmesh.rendering._results import RenderResult
 
 __all__ = [
     "IMAGE_LEVELS",

@@ -12,9 +12,10 @@ from typing import Any, Dict, List, Optional
 
 import numpy as np
 
-from toonmesh import _strokes, edges
+from toonmesh import edges
+from toonmesh.rendering import _strokes
 from toonmesh._core import Outlines
-from toonmesh._render import render
+from toonmesh.rendering._render import render
 
 #: Depth offset (in pixel footprints) that lets every line through: no hidden-line removal.
 _SHOW_ALL = 1e30

@@ -11,7 +11,7 @@ import numpy as np
 import numpy.typing as npt
 
 #: Newell's data: the control points, then the patches.
-_DATA = Path(__file__).resolve().parent / "data" / "teapot.txt"
+_DATA = Path(__file__).resolve().parents[1] / "data" / "teapot.txt"
 
 
 def _data() -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:

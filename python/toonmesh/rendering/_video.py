@@ -11,7 +11,7 @@ from typing import Any, Callable, Iterable
 
 import numpy as np
 
-from toonmesh._checks import flag
+from toonmesh.arguments._checks import flag
 
 #: The video formats written, by file suffix.
 VIDEO_SUFFIXES = (".gif", ".mp4", ".webm")

@@ -37,7 +37,7 @@ from typing import Any, List, NamedTuple, Optional, Tuple
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._input import _as_array, mesh_arrays
+from toonmesh.arguments._input import _as_array, mesh_arrays
 
 __all__ = [
     "Curvature",

@@ -2,7 +2,7 @@
 axis and colour), :class:`MeshHandle` (a mesh already on a renderer's device) and the normal modes.
 
 This is the bottom of the rendering layers: files (:mod:`toonmesh.files._load`) make meshes and the
-renderer (:mod:`toonmesh._render`) draws them; both take them from here, so that neither needs
+renderer (:mod:`toonmesh.rendering._render`) draws them; both take them from here, so that neither needs
 the other to describe a scene.
 """
 
@@ -12,14 +12,15 @@ from typing import TYPE_CHECKING, Any, Dict, Optional, Tuple, Union
 
 import numpy as np
 
-from toonmesh import _colors, _core
+from toonmesh import _core
+from toonmesh.scene import _colors
 from toonmesh._core import Material
-from toonmesh._input import mesh_arrays
+from toonmesh.arguments._input import mesh_arrays
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
 
-    from toonmesh._colors import MeshColors
+    from toonmesh.scene._colors import MeshColors
 
 #: Normals: a mode, ``"smooth"``, ``"flat"``, ``"auto"`` or ``("auto", crease angle in degrees)``;
 #: the mesh's own, an (N, 3) float array; or None, the core's default (``"auto"``).

@@ -12,7 +12,7 @@ import argparse
 from contextlib import contextmanager
 from typing import Any, Dict, Iterator, Optional, Sequence, Tuple
 
-from toonmesh._described import described
+from toonmesh.arguments._described import described
 
 #: The namespace attribute where a subcommand keeps which flag sets which setting:
 #: ``{(class name, setting name): argparse.Action}``.

@@ -10,9 +10,10 @@ from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Sequence,
 
 import numpy as np
 
-from toonmesh import _core, _strokes
+from toonmesh import _core
+from toonmesh.rendering import _strokes
 from toonmesh._core import LineStyle, Outlines
-from toonmesh._video import DEFAULT_FPS, save_video
+from toonmesh.rendering._video import DEFAULT_FPS, save_video
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack

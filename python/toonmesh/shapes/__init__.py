@@ -15,8 +15,8 @@ import numpy as np
 import numpy.typing as npt
 
 from toonmesh import _core
-from toonmesh._checks import integer, number
-from toonmesh._teapot import teapot_mesh
+from toonmesh.arguments._checks import integer, number
+from toonmesh.shapes._teapot import teapot_mesh
 
 __all__ = ["icosphere", "grid", "torus", "lathe", "pawn", "uv_sphere", "teapot"]
 
