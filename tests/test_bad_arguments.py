@@ -31,6 +31,7 @@ from typing import Any, Callable, Dict, List, Optional, Set, Tuple
 
 import numpy as np
 import pytest
+from PIL import Image
 
 import descriptions
 import toonmesh as tm
@@ -39,10 +40,12 @@ from toonmesh import testing
 from toonmesh.data import load_obj
 
 # ------------------------------------------------------------------------------------------------
-# What a parameter takes, and its probes: (label, value, expected outcome)
+# What a parameter takes, and its probes: (label, value, expected outcome). A compound argument
+# (an array, a colour, a settings object) takes a tuple of such probes, written out below.
 
 OK = "ok"  # the outcome of a legal value
 Probes = List[Tuple[str, Any, Any]]
+Table = Tuple[Tuple[str, Any, Any], ...]  # a compound argument's probes
 
 
 @dataclass(frozen=True)
@@ -97,13 +100,6 @@ class Name:
 
 
 @dataclass(frozen=True)
-class Array:
-    """An array or other compound argument, by its probes."""
-
-    probes: Tuple[Tuple[str, Any, Any], ...]
-
-
-@dataclass(frozen=True)
 class Refused:
     """A refusal whose message must also contain `hint`."""
 
@@ -114,7 +110,7 @@ class Refused:
 @dataclass
 class Param:
     name: str
-    kind: Any
+    kind: Any  # Flag, Number, Integer, Name or a compound argument's probes
     none: Any = TypeError  # what None gives: OK (the default) or an exception
     also: Tuple[type, ...] = ()  # extra legal outcomes (a GPU that is not there)
 
@@ -175,7 +171,7 @@ def probes(p: Param) -> Probes:
             *k.more, ("upper case", k.valid[0].upper(), OK if k.any_case else ValueError),
             ("unknown", "bogus", ValueError), ("empty", "", k.empty), ("int", 3, TypeError),
             ("bytes", k.valid[0].encode(), TypeError), ("list", [k.valid[0]], TypeError)] + none
-    return list(k.probes) + none
+    return list(k) + none
 
 
 # ------------------------------------------------------------------------------------------------
@@ -191,22 +187,21 @@ def _with(a: np.ndarray, where: Tuple[int, ...], value: float) -> np.ndarray:
     return b
 
 
-VERTICES = Array((
+VERTICES = (
     ("float64", V, OK), ("float32", V.astype(np.float32), OK), ("big-endian float64", V.astype(">f8"), OK),
     ("big-endian float32", V.astype(">f4"), OK), ("fortran order", np.asfortranarray(V), OK),
     ("strided view", np.repeat(V, 2, axis=1)[:, ::2], OK), ("nested list", V.tolist(), OK),
     ("huge but finite", V * 1e307, OK), ("tiny", V * 1e-310, OK), ("int64", V.astype(np.int64), TypeError),
-    ("float16", V.astype(np.float16), TypeError), ("complex", V.astype(complex), TypeError),
-    ("bool", V > 0, TypeError), ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError),
-    ("a string", "vertices", TypeError), ("nan", _with(V, (3, 1), np.nan), ValueError),
-    ("inf", _with(V, (3, 1), np.inf), ValueError), ("-inf", _with(V, (0, 0), -np.inf), ValueError),
-    ("shape (N, 2)", V[:, :2].copy(), ValueError), ("shape (N, 4)", np.hstack([V, V[:, :1]]), ValueError),
-    ("shape (N, 3, 1)", V[:, :, None].copy(), ValueError), ("flat", V.ravel().copy(), ValueError),
-    ("empty", np.zeros((0, 3)), ValueError), ("scalar", np.float64(1.0), ValueError),
-    ("ragged list", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
-))
+    ("float16", V.astype(np.float16), TypeError), ("complex", V.astype(complex), TypeError), ("bool", V > 0, TypeError),
+    ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError), ("a string", "vertices", TypeError),
+    ("nan", _with(V, (3, 1), np.nan), ValueError), ("inf", _with(V, (3, 1), np.inf), ValueError),
+    ("-inf", _with(V, (0, 0), -np.inf), ValueError), ("shape (N, 2)", V[:, :2].copy(), ValueError),
+    ("shape (N, 4)", np.hstack([V, V[:, :1]]), ValueError), ("shape (N, 3, 1)", V[:, :, None].copy(), ValueError),
+    ("flat", V.ravel().copy(), ValueError), ("empty", np.zeros((0, 3)), ValueError),
+    ("scalar", np.float64(1.0), ValueError), ("ragged list", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
+)
 
-FACES = Array((
+FACES = (
     ("int64", F, OK), ("int32", F.astype(np.int32), OK), ("uint32", F.astype(np.uint32), OK),
     ("uint64", F.astype(np.uint64), OK), ("big-endian int32", F.astype(">i4"), OK),
     ("big-endian uint64", F.astype(">u8"), OK), ("fortran order", np.asfortranarray(F), OK),
@@ -219,77 +214,73 @@ FACES = Array((
     ("shape (M, 4)", np.hstack([F, F[:, :1]]), ValueError), ("shape (M, 2)", F[:, :2].copy(), ValueError),
     ("flat", F.ravel().copy(), ValueError), ("empty", np.zeros((0, 3), np.int64), ValueError),
     ("a string", "faces", TypeError),
-))
+)
 
-PINNED = Array((
-    ("indices", np.array([0, 5]), OK), ("list", [0, 5], OK),
-    ("tuple of bools", tuple(i < 3 for i in range(N)), OK), ("bool mask", np.arange(N) < 3, OK),
-    ("int8", np.array([1], np.int8), OK), ("uint16", np.array([1], np.uint16), OK),
-    ("big-endian int32", np.array([1, 2], ">i4"), OK), ("uint64", np.array([1], np.uint64), OK),
-    ("empty list", [], OK), ("empty float array", np.array([]), OK), ("all", np.arange(N), OK),
-    ("negative", np.array([-1]), IndexError), ("index N", np.array([N]), IndexError),
-    ("uint64 max", np.array([2**64 - 1], np.uint64), IndexError), ("float", np.array([1.0]), TypeError),
-    ("strings", np.array(["1"]), TypeError), ("mask too short", np.ones(N - 1, bool), ValueError),
-    ("2-D array", np.array([[0, 1]]), ValueError), ("2-D list", [[0, 1]], TypeError), ("scalar", 3, TypeError),
-))
+PINNED = (
+    ("indices", np.array([0, 5]), OK), ("list", [0, 5], OK), ("tuple of bools", tuple(i < 3 for i in range(N)), OK),
+    ("bool mask", np.arange(N) < 3, OK), ("int8", np.array([1], np.int8), OK), ("uint16", np.array([1], np.uint16), OK),
+    ("big-endian int32", np.array([1, 2], ">i4"), OK), ("uint64", np.array([1], np.uint64), OK), ("empty list", [], OK),
+    ("empty float array", np.array([]), OK), ("all", np.arange(N), OK), ("negative", np.array([-1]), IndexError),
+    ("index N", np.array([N]), IndexError), ("uint64 max", np.array([2**64 - 1], np.uint64), IndexError),
+    ("float", np.array([1.0]), TypeError), ("strings", np.array(["1"]), TypeError),
+    ("mask too short", np.ones(N - 1, bool), ValueError), ("2-D array", np.array([[0, 1]]), ValueError),
+    ("2-D list", [[0, 1]], TypeError), ("scalar", 3, TypeError),
+)
 
 
-def vec3(name: str, zero: Any) -> Array:
+def vec3(zero: Any) -> Table:
     """Three numbers; `zero` is what (0, 0, 0) gives (None: not probed here)."""
-    return Array(
-        tuple(p for p in (
-            ("tuple", (0.3, 0.2, 5.0), OK), ("ints", (0, 0, 5), OK), ("array", np.array([0.3, 0.2, 5.0]), OK),
-            ("float32 array", np.array([0.3, 0.2, 5.0], np.float32), OK), ("bytes", b"abc", TypeError),
-            ("big-endian array", np.array([0.3, 0.2, 5.0], ">f8"), OK),
-            ("numpy scalars", (np.float32(0.3), np.int64(0), np.float64(5)), OK), ("huge", (1e300, 0.0, 5.0), OK),
-            ("zero", (0, 0, 0), zero), ("nan", (0.0, float("nan"), 5.0), ValueError),
-            ("inf", (0.0, 0.0, float("inf")), ValueError), ("two numbers", (0.0, 5.0), ValueError),
-            ("four numbers", (0.0, 0.0, 5.0, 1.0), ValueError),
-            ("shape (1, 3)", np.array([[0.0, 0.0, 5.0]]), (TypeError, ValueError)),
-            ("bools", (True, False, True), TypeError), ("strings", ("0", "0", "5"), TypeError),
-            ("a string", "abc", TypeError), ("bool array", np.array([True, False, True]), TypeError),
-            ("scalar", 5.0, TypeError),
-        ) if p[2] is not None)
-    )
+    return tuple(p for p in (
+        ("tuple", (0.3, 0.2, 5.0), OK), ("ints", (0, 0, 5), OK), ("array", np.array([0.3, 0.2, 5.0]), OK),
+        ("float32 array", np.array([0.3, 0.2, 5.0], np.float32), OK), ("bytes", b"abc", TypeError),
+        ("big-endian array", np.array([0.3, 0.2, 5.0], ">f8"), OK),
+        ("numpy scalars", (np.float32(0.3), np.int64(0), np.float64(5)), OK), ("huge", (1e300, 0.0, 5.0), OK),
+        ("zero", (0, 0, 0), zero), ("nan", (0.0, float("nan"), 5.0), ValueError),
+        ("inf", (0.0, 0.0, float("inf")), ValueError), ("two numbers", (0.0, 5.0), ValueError),
+        ("four numbers", (0.0, 0.0, 5.0, 1.0), ValueError),
+        ("shape (1, 3)", np.array([[0.0, 0.0, 5.0]]), (TypeError, ValueError)),
+        ("bools", (True, False, True), TypeError), ("strings", ("0", "0", "5"), TypeError),
+        ("a string", "abc", TypeError), ("bool array", np.array([True, False, True]), TypeError),
+        ("scalar", 5.0, TypeError),
+    ) if p[2] is not None)
 
 
 EDGE_PAIRS = np.array([[0, 1], [1, 2], [2, 0], [3, 4]])
 
-EDGES = Array((
-    ("int64", EDGE_PAIRS, OK), ("int32", EDGE_PAIRS.astype(np.int32), OK),
-    ("uint8", EDGE_PAIRS.astype(np.uint8), OK), ("big-endian", EDGE_PAIRS.astype(">i8"), OK),
-    ("list", EDGE_PAIRS.tolist(), OK), ("empty", np.zeros((0, 2), np.int64), OK), ("empty list", [], OK),
-    ("float", EDGE_PAIRS.astype(float), TypeError), ("bool", EDGE_PAIRS > 1, TypeError),
-    ("negative", np.array([[0, -1]]), IndexError), ("huge", np.array([[0, 2**40]]), IndexError),
-    ("shape (K, 3)", np.array([[0, 1, 2]]), ValueError), ("flat", np.array([0, 1]), ValueError),
-    ("a string", "edges", TypeError),
-))
+EDGES = (
+    ("int64", EDGE_PAIRS, OK), ("int32", EDGE_PAIRS.astype(np.int32), OK), ("uint8", EDGE_PAIRS.astype(np.uint8), OK),
+    ("big-endian", EDGE_PAIRS.astype(">i8"), OK), ("list", EDGE_PAIRS.tolist(), OK),
+    ("empty", np.zeros((0, 2), np.int64), OK), ("empty list", [], OK), ("float", EDGE_PAIRS.astype(float), TypeError),
+    ("bool", EDGE_PAIRS > 1, TypeError), ("negative", np.array([[0, -1]]), IndexError),
+    ("huge", np.array([[0, 2**40]]), IndexError), ("shape (K, 3)", np.array([[0, 1, 2]]), ValueError),
+    ("flat", np.array([0, 1]), ValueError), ("a string", "edges", TypeError),
+)
 
 # segments: an index past the vertices is out of range too
-SEGMENT_EDGES = Array(EDGES.probes + (("index N", np.array([[0, N]]), IndexError),))
+SEGMENT_EDGES = (EDGES + (("index N", np.array([[0, N]]), IndexError),))
 
 IMG = np.random.default_rng(3).random((9, 11))
 
-IMAGES = Array((
+IMAGES = (
     ("float64", IMG, OK), ("float32", IMG.astype(np.float32), OK), ("float16", IMG.astype(np.float16), OK),
     ("big-endian", IMG.astype(">f8"), OK), ("uint8", (IMG * 255).astype(np.uint8), OK),
-    ("int16", (IMG * 1000).astype(np.int16), OK), ("bool", IMG > 0.5, OK),
-    ("channels", np.dstack([IMG, IMG, IMG]), OK), ("fortran order", np.asfortranarray(IMG), OK),
-    ("list", IMG.tolist(), OK), ("one pixel", IMG[:1, :1].copy(), OK), ("huge values", IMG * 1e300, OK),
-    ("tiny values", IMG * 1e-300, OK), ("nan pixel", _with(IMG, (2, 2), np.nan), "nonfinite ok"),
+    ("int16", (IMG * 1000).astype(np.int16), OK), ("bool", IMG > 0.5, OK), ("channels", np.dstack([IMG, IMG, IMG]), OK),
+    ("fortran order", np.asfortranarray(IMG), OK), ("list", IMG.tolist(), OK), ("one pixel", IMG[:1, :1].copy(), OK),
+    ("huge values", IMG * 1e300, OK), ("tiny values", IMG * 1e-300, OK),
+    ("nan pixel", _with(IMG, (2, 2), np.nan), "nonfinite ok"),
     ("inf pixel", _with(IMG, (2, 2), np.inf), "nonfinite ok"), ("complex", IMG.astype(complex), TypeError),
     ("strings", IMG.astype(str), TypeError), ("object", IMG.astype(object), TypeError),
     ("1-D", IMG[0].copy(), ValueError), ("4-D", IMG[None, :, :, None].copy(), ValueError),
     ("empty", np.zeros((0, 4)), ValueError), ("a string", "image", TypeError),
-))
+)
 
-MASKS = Array((
+MASKS = (
     ("bool", IMG > 0.3, OK), ("uint8", (IMG > 0.3).astype(np.uint8), OK),
     ("wrong shape", np.ones((3, 3), bool), ValueError), ("strings", (IMG > 0.3).astype(str), TypeError),
     ("a string", "mask", TypeError),
-))
+)
 
-PROFILES = Array((  # shapes.lathe: (radius, height) points, poles only at the ends
+PROFILES = (  # shapes.lathe: (radius, height) points, poles only at the ends
     ("list of pairs", [(0, 0), (1, 0.5), (0, 1)], OK), ("open ends", [(1.0, 0.0), (1.0, 1.0)], OK),
     ("int", np.array([[0, 0], [2, 1], [0, 2]]), OK), ("float32", np.array([[0, 0], [1, 1], [0, 2]], np.float32), OK),
     ("big-endian", np.array([[0, 0], [1, 1], [0, 2]], ">f8"), OK), ("one point", [(0.0, 0.0)], ValueError),
@@ -301,26 +292,20 @@ PROFILES = Array((  # shapes.lathe: (radius, height) points, poles only at the e
     ("bools", np.array([[False, False], [True, True]]), TypeError),
     ("complex", np.array([[0, 0], [1j, 1], [0, 2]]), TypeError), ("strings", [("a", "b"), ("c", "d")], TypeError),
     ("ragged", [(0, 0), (1,), (0, 2)], TypeError), ("a string", "profile", TypeError),
-))
+)
 
 NORMAL_BUF = np.dstack([IMG, 1 - IMG, np.ones_like(IMG)]).astype(np.float32)
 DEPTH_BUF = 1.0 + IMG
 
 
-def buffers(name: str, good: np.ndarray) -> Array:
-    bg = good.copy()
-    bg[0, 0] = np.inf
-    # A depth buffer of another size than the normal buffer is refused naming depth.
-    mismatch = (("wrong size", good[:4], ValueError),) if name == "depth" else ()
-    return Array(
-        mismatch
-        + (
-            ("float64", good.astype(np.float64), OK), ("float32", good.astype(np.float32), OK),
-            ("big-endian", good.astype(">f8"), OK), ("int", (good * 10).astype(np.int32), OK),
-            ("inf background", bg, "nonfinite ok"), ("complex", good.astype(complex), TypeError),
-            ("strings", good.astype(str), TypeError), ("empty", good[:0], ValueError),
-            ("1-D", good.ravel()[:5].copy(), ValueError), ("a string", name, TypeError),
-        )
+def buffers(name: str, good: np.ndarray) -> Table:
+    """A buffer of detect_edges; a depth buffer of another size than the normal one is refused naming depth."""
+    return (("wrong size", good[:4], ValueError),) * (name == "depth") + (
+        ("float64", good.astype(np.float64), OK), ("float32", good.astype(np.float32), OK),
+        ("big-endian", good.astype(">f8"), OK), ("int", (good * 10).astype(np.int32), OK),
+        ("inf background", _with(good, (0, 0), np.inf), "nonfinite ok"), ("complex", good.astype(complex), TypeError),
+        ("strings", good.astype(str), TypeError), ("empty", good[:0], ValueError),
+        ("1-D", good.ravel()[:5].copy(), ValueError), ("a string", name, TypeError),
     )
 
 
@@ -409,15 +394,15 @@ CASES: List[Case] = [
 
 EDGE_INDEX = te.EdgeIndex(V, F)
 # Vertices for the curvature: a mesh 1e-310 across has curvature beyond float64's range, refused.
-CURVED_VERTICES = Array(tuple((n, v, ValueError if n == "tiny" else e) for n, v, e in VERTICES.probes))
+CURVED_VERTICES = tuple((n, v, ValueError if n == "tiny" else e) for n, v, e in VERTICES)
 MESH_PARAMS = [Param("vertices", VERTICES), Param("faces", FACES)]
 CREASE = Param("crease_angle", Number(0.0, 180.0), none=OK)  # None: the core's default
 POSITIVE = Number(0.0, math.inf, open_hi=True)
 NOISE_AND_SEED = [Param("noise", POSITIVE), Param("seed", Integer(0, 2**64 - 1))]  # relative noise
 # The view the edge functions take: an eye point (the origin is one) or a view direction (never
 # zero), and a valid one of each.
-EYE = Param("eye", vec3("eye", OK), none=ValueError)
-DIRECTION = Param("direction", vec3("direction", ValueError), none=ValueError)
+EYE = Param("eye", vec3(OK), none=ValueError)
+DIRECTION = Param("direction", vec3(ValueError), none=ValueError)
 AN_EYE, A_DIRECTION = dict(eye=(0.3, 0.2, 5.0)), dict(direction=(0.3, 0.2, -1.0))
 # Suggestive contours' derivative threshold and curvature smoothing (None: their defaults).
 SUGGESTIVE = [Param("threshold", POSITIVE, none=OK), Param("smoothing", POSITIVE, none=OK)]
@@ -472,7 +457,6 @@ CASES += [
 # ------------------------------------------------------------------------------------------------
 # The renderer's table: 16x16 images, one shared Renderer
 
-
 RENDERER = tm.Renderer()
 HANDLE = RENDERER.add_mesh(V, F)
 OTHER_HANDLE = tm.Renderer().add_mesh(V, F)  # a mesh of another renderer
@@ -481,11 +465,11 @@ RENDERER.remove_mesh(REMOVED_HANDLE)
 SMALL = dict(width=16, height=16)
 
 
-def colours(alpha: bool) -> Array:
+def colours(alpha: bool) -> Table:
     """An sRGB colour ('#rrggbb' or 3 numbers in [0, 1]; with alpha, '#rrggbbaa' or 4 numbers too)."""
     four = OK if alpha else ValueError
     above_one = Refused(ValueError, "divide by 255")  # 0-255 codes get a hint
-    return Array((
+    return (
         ("hex", "#ff8040", OK), ("hex without #", "ff8040", OK), ("hex upper case", "#FF8040", OK),
         ("bytes", b"\x00\x00\x01", TypeError), ("bytearray", bytearray(b"\x00\x00\x01"), TypeError),
         ("hex with alpha", "#ff804080", four), ("tuple", (1.0, 0.5, 0.25), OK), ("ints", (1, 0, 0), OK),
@@ -494,109 +478,168 @@ def colours(alpha: bool) -> Array:
         ("big-endian array", np.array([1.0, 0.5, 0.25], ">f8"), OK),
         ("numpy scalars", (np.float32(1.0), np.int64(0), np.float64(0.5)), OK),
         ("four numbers", (1.0, 0.5, 0.25, 0.5), four), ("0-255 codes", (255, 128, 0), above_one),
-        ("uint8 codes", np.array([255, 128, 0], np.uint8), above_one),
-        ("just above 1", (1.0001, 0.0, 0.0), above_one), ("huge", (1e300, 0.0, 0.0), above_one),
-        ("negative", (-0.1, 0.0, 0.0), ValueError), ("nan", (float("nan"), 0.0, 0.0), ValueError),
-        ("inf", (0.0, float("inf"), 0.0), ValueError), ("int beyond float", (10**400, 0, 0), ValueError),
-        ("two numbers", (1.0, 0.0), ValueError), ("five numbers", (1.0, 0.0, 0.0, 1.0, 0.0), ValueError),
-        ("empty tuple", (), ValueError), ("short hex", "#fff", ValueError), ("bad hex", "#gg0000", ValueError),
-        ("colour name", "white", ValueError), ("empty string", "", ValueError),
-        ("bools", (True, False, True), TypeError), ("strings", ("1", "0", "0"), TypeError),
-        ("nested", [[1.0, 0.0, 0.0]], TypeError), ("complex", (1j, 0.0, 0.0), TypeError), ("scalar", 0.5, TypeError),
-    ))
+        ("uint8 codes", np.array([255, 128, 0], np.uint8), above_one), ("just above 1", (1.0001, 0.0, 0.0), above_one),
+        ("huge", (1e300, 0.0, 0.0), above_one), ("negative", (-0.1, 0.0, 0.0), ValueError),
+        ("nan", (float("nan"), 0.0, 0.0), ValueError), ("inf", (0.0, float("inf"), 0.0), ValueError),
+        ("int beyond float", (10**400, 0, 0), ValueError), ("two numbers", (1.0, 0.0), ValueError),
+        ("five numbers", (1.0, 0.0, 0.0, 1.0, 0.0), ValueError), ("empty tuple", (), ValueError),
+        ("short hex", "#fff", ValueError), ("bad hex", "#gg0000", ValueError), ("colour name", "white", ValueError),
+        ("empty string", "", ValueError), ("bools", (True, False, True), TypeError),
+        ("strings", ("1", "0", "0"), TypeError), ("nested", [[1.0, 0.0, 0.0]], TypeError),
+        ("complex", (1j, 0.0, 0.0), TypeError), ("scalar", 0.5, TypeError),
+    )
 
 
-COLOUR = colours(alpha=False)
-COLOUR_ALPHA = colours(alpha=True)
-
-# A mesh's 4x4 affine model -> world matrix.
 _TURN = np.array([[0.0, -1.0, 0.0, 0.5], [1.0, 0.0, 0.0, -2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
-TRANSFORMS = Array((
-    ("identity", np.eye(4), OK), ("nested list", np.eye(4).tolist(), OK),
-    ("float32", np.eye(4, dtype=np.float32), OK), ("int", np.eye(4, dtype=np.int64), OK),
-    ("big-endian", np.eye(4).astype(">f8"), OK), ("fortran order", np.asfortranarray(_TURN), OK),
-    ("turn, move and scale", np.diag([1e3, 1e3, 1e3, 1.0]) @ _TURN, OK),
-    ("tiny scale", np.diag([1e-3, 1e-3, 1e-3, 1.0]), OK), ("mirror", np.diag([-1.0, 1.0, 1.0, 1.0]), OK),
-    ("singular", np.zeros((4, 4)), ValueError), ("flattening", np.diag([1.0, 1.0, 0.0, 1.0]), ValueError),
-    ("projective", _with(np.eye(4), (3, 2), 0.5), ValueError),
-    ("nan", _with(np.eye(4), (0, 3), np.nan), ValueError), ("inf", _with(np.eye(4), (1, 1), np.inf), ValueError),
-    ("3x3", np.eye(3), ValueError), ("4x3", np.eye(4)[:, :3].copy(), ValueError),
-    ("flat", np.eye(4).ravel(), (TypeError, ValueError)), ("bool", np.eye(4) > 0, TypeError),
-    ("complex", np.eye(4) * (1 + 1j), TypeError), ("strings", np.eye(4).astype(str), TypeError),
-    ("object", np.eye(4).astype(object), TypeError),
-    ("ragged", [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], TypeError), ("a string", "identity", TypeError),
-))
-
-# Outputs with outlines drawn ("outline" and "lines" need them).
-OUTPUTS = Array((
-    ("color", ("color",), OK), ("a name", "depth", OK), ("list", ["color", "normal"], OK),
-    ("every output", ("color", "normal", "depth", "outline", "lines"), OK), ("set", {"normal"}, OK),
-    ("numpy strings", np.array(["color", "depth"]), OK), ("repeated", ("color", "color"), OK),
-    ("outline", ("outline",), OK), ("lines", ("lines",), OK), ("empty", (), ValueError),
-    ("unknown", ("colour",), ValueError), ("upper case", ("COLOR",), ValueError),
-    ("empty name", ("",), ValueError), ("int", 5, TypeError), ("int in list", ("color", 3), TypeError),
-    ("bytes", b"color", TypeError), ("nested", [["color"]], TypeError),
-))
-
-# Outputs of a render without outlines.
-OUTPUTS_WITHOUT_OUTLINES = Array((
-    ("color", ("color",), OK), ("normal and depth", ("normal", "depth"), OK),
-    ("outline", ("outline",), ValueError), ("lines", ("color", "lines"), ValueError),
-))
-
-OUTLINES = Name(
-    ("mesh", "image", "both"),
-    more=(
-        ("Outlines()", tm.Outlines(), OK),
-        ("Outlines('image')", tm.Outlines("image", color="#204080", width=3.0), OK), ("True", True, TypeError),
-        ("a LineStyle", tm.LineStyle(), TypeError),
+_LIGHTS = [tm.Light.key(), tm.Light.directional((1.0, -1.0, -1.0)), tm.Light.point((2.0, 2.0, 2.0), space="camera")]
+# The probes of each kind a description cannot enumerate, in one place: by the field's kind, by
+# its settings class for a setting, and by its name where the rule depends on what the numbers
+# mean (a vec3's zero, an up vector against the view, thresholds against values).
+KINDS: Dict[str, Any] = {
+    "color": colours(alpha=False), "rgba": colours(alpha=True),
+    "matrix": (  # a mesh's 4x4 affine model -> world matrix
+        ("identity", np.eye(4), OK), ("nested list", np.eye(4).tolist(), OK),
+        ("float32", np.eye(4, dtype=np.float32), OK), ("int", np.eye(4, dtype=np.int64), OK),
+        ("big-endian", np.eye(4).astype(">f8"), OK), ("fortran order", np.asfortranarray(_TURN), OK),
+        ("turn, move and scale", np.diag([1e3, 1e3, 1e3, 1.0]) @ _TURN, OK),
+        ("tiny scale", np.diag([1e-3, 1e-3, 1e-3, 1.0]), OK), ("mirror", np.diag([-1.0, 1.0, 1.0, 1.0]), OK),
+        ("singular", np.zeros((4, 4)), ValueError), ("flattening", np.diag([1.0, 1.0, 0.0, 1.0]), ValueError),
+        ("projective", _with(np.eye(4), (3, 2), 0.5), ValueError),
+        ("nan", _with(np.eye(4), (0, 3), np.nan), ValueError), ("inf", _with(np.eye(4), (1, 1), np.inf), ValueError),
+        ("3x3", np.eye(3), ValueError), ("4x3", np.eye(4)[:, :3].copy(), ValueError),
+        ("flat", np.eye(4).ravel(), (TypeError, ValueError)), ("bool", np.eye(4) > 0, TypeError),
+        ("complex", np.eye(4) * (1 + 1j), TypeError), ("strings", np.eye(4).astype(str), TypeError),
+        ("object", np.eye(4).astype(object), TypeError), ("ragged", [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], TypeError),
+        ("a string", "identity", TypeError),
     ),
+    "names": (  # the outputs of a render with outlines drawn ("outline" and "lines" need them)
+        ("color", ("color",), OK), ("a name", "depth", OK), ("list", ["color", "normal"], OK),
+        ("every output", ("color", "normal", "depth", "outline", "lines"), OK), ("set", {"normal"}, OK),
+        ("numpy strings", np.array(["color", "depth"]), OK), ("repeated", ("color", "color"), OK),
+        ("outline", ("outline",), OK), ("lines", ("lines",), OK), ("empty", (), ValueError),
+        ("unknown", ("colour",), ValueError), ("upper case", ("COLOR",), ValueError), ("empty name", ("",), ValueError),
+        ("int", 5, TypeError), ("int in list", ("color", 3), TypeError), ("bytes", b"color", TypeError),
+        ("nested", [["color"]], TypeError),
+    ),
+    "lights": (  # up to 8 lights
+        ("a light", tm.Light.key(), OK), ("a list", _LIGHTS, OK), ("a tuple", tuple(_LIGHTS), OK), ("none", [], OK),
+        ("eight", [tm.Light.key()] * 8, OK), ("nine", [tm.Light.key()] * 9, ValueError), ("a string", "sun", TypeError),
+        ("a string in the list", [tm.Light.key(), "sun"], TypeError), ("None in the list", [None], TypeError),
+        ("an int", 1, TypeError), ("a material", tm.Material.bands(), TypeError),
+    ),
+    "style": (  # one kind of outline: drawn or not, its LineStyle, or its colour
+        ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
+        ("a LineStyle", tm.LineStyle("#ff0000", 3.0), OK), ("a colour", "#00ff00", OK),
+        ("colour numbers", (0.0, 0.0, 1.0), OK), ("0-255 codes", (0, 0, 255), Refused(ValueError, "divide by 255")),
+        ("a word", "thick", ValueError), ("an int", 3, TypeError), ("a list of a bool", [True], TypeError),
+        ("an Outlines", tm.Outlines(), TypeError),
+    ),
+    "table": (  # a LUT material's factors or rgb rows, at most 256, finite in float32
+        ("kang_table", tm.kang_table(), OK), ("list", [0.2, 0.6, 1.0], OK), ("one entry", [1.0], OK),
+        ("rgb rows", np.array([[0.2, 0.1, 0.0], [1.0, 0.9, 0.8]]), OK),
+        ("float32", np.linspace(0, 1, 8, dtype=np.float32), OK), ("256 entries", np.ones(256), OK),
+        ("factors above 1", [0.5, 2.0], OK), ("257 entries", np.ones(257), ValueError), ("empty", [], ValueError),
+        ("negative", [0.5, -0.1], ValueError), ("nan", [0.5, float("nan")], ValueError),
+        ("inf", [float("inf")], ValueError), ("beyond float32", [1e39], ValueError),
+        ("rows of 2", [[1.0, 0.5]], ValueError), ("rows of 4", np.ones((2, 4)), ValueError),
+        ("bools", [True, False], TypeError), ("strings", ["0.5"], TypeError), ("a string", "ramp", TypeError),
+        ("bytes", b"\x01\x02", TypeError), ("a number", 0.5, TypeError),
+    ),
+    "image": (  # the paper's grain: grey, RGB or RGBA in [0, 1] or uint8
+        ("a grey uint8 image", np.arange(12, dtype=np.uint8).reshape(3, 4), OK),
+        ("an RGBA float image", np.full((2, 3, 4), 0.25), OK), ("a 1x1 image", np.ones((1, 1)), OK),
+        ("a list", [[0.0, 1.0]], TypeError), ("a string", "rough", TypeError), ("1-D", np.zeros(4), ValueError),
+        ("empty", np.zeros((0, 4)), ValueError), ("5 channels", np.zeros((2, 2, 5)), ValueError),
+        ("NaN", np.array([[np.nan, 0.0]]), ValueError), ("above 1", np.array([[1.5]]), ValueError),
+        ("negative", np.array([[-1, 0]], np.int16), ValueError), ("complex", np.zeros((2, 2), complex), TypeError),
+    ),
+    "thresholds": (  # the bands' thresholds: increasing, one fewer than the values
+        ("paper's", (0.2, 0.5, 0.7, 0.9), OK), ("array", np.array([-0.5, 0.0, 0.5, 0.99]), OK),
+        ("float32", np.array([0.1, 0.2, 0.3, 0.4], np.float32), OK), ("beyond [-1, 1]", (-5.0, 0.0, 1.0, 5.0), OK),
+        ("decreasing", (0.9, 0.7, 0.5, 0.2), ValueError), ("three, for five values", (0.2, 0.5, 0.9), ValueError),
+        ("bytes", b"\x01\x02\x03\x04", TypeError), ("repeated", (0.2, 0.5, 0.5, 0.9), ValueError),
+        ("nan", (0.2, float("nan"), 0.7, 0.9), ValueError), ("inf", (0.2, 0.5, 0.7, float("inf")), ValueError),
+        ("strings", ("0.2", "0.5", "0.7", "0.9"), TypeError), ("a string", "0.5", TypeError),
+        ("a number", 0.5, TypeError),
+    ),
+    "values": (
+        ("paper's", (0.0, 0.2, 0.7, 0.9, 1.0), OK), ("above 1", (0.0, 0.5, 1.0, 2.0, 4.0), OK),
+        ("array", np.linspace(0, 1, 5), OK), ("negative", (-0.1, 0.2, 0.7, 0.9, 1.0), ValueError),
+        ("nan", (0.0, 0.2, float("nan"), 0.9, 1.0), ValueError),
+        ("beyond float32", (0.0, 0.2, 0.7, 0.9, 1e39), ValueError), ("two", (0.0, 1.0), ValueError),
+        ("bools", (False, True, True, True, True), TypeError), ("a number", 1.0, TypeError),
+    ),
+    "up": (  # the view runs along (0.3, 0.2, 5): see BASES
+        ("y", (0.0, 1.0, 0.0), OK), ("ints", (1, 1, 0), OK), ("array", np.array([0.2, 1.0, 0.1]), OK),
+        ("float32 array", np.array([0.0, 1.0, 0.0], np.float32), OK), ("long", (0.0, 1e300, 0.0), OK),
+        ("short", (0.0, 1e-300, 0.0), OK), ("along the view", (0.3, 0.2, 5.0), ValueError),
+        ("against the view", (-0.6, -0.4, -10.0), ValueError), ("zero", (0, 0, 0), ValueError),
+        ("nan", (0.0, float("nan"), 0.0), ValueError), ("inf", (0.0, float("inf"), 0.0), ValueError),
+        ("two numbers", (0.0, 1.0), ValueError), ("bools", (False, True, False), TypeError),
+        ("a string", "up", TypeError),
+    ),
+    "direction": vec3(ValueError), "position": vec3(OK), "target": vec3(OK),
+    "eye": vec3(None),  # an eye on the target: test_render_errors.py
+    "Material": (
+        ("bands", tm.Material.bands(), OK), ("lambert", tm.Material.lambert("#80c0ff"), OK),
+        ("phong", tm.Material.phong(shininess=8), OK),
+        ("thresholded phong", tm.Material.thresholded_phong(per_vertex=True), OK), ("lut", tm.Material.lut(), OK),
+        ("a name", "bands", TypeError), ("the class", tm.Material, TypeError), ("a light", tm.Light.key(), TypeError),
+        ("a dict", {"model": "bands"}, TypeError),
+    ),
+    "Camera": (
+        ("fit", tm.Camera.fit(), OK),
+        ("fit orthographic", tm.Camera.fit((0.0, 1.0, 0.0), up=(0.0, 0.0, 1.0), orthographic=True), OK),
+        ("look_at", tm.Camera.look_at((0.3, 0.2, 5.0), fov_y=20.0), OK),
+        ("orthographic", tm.Camera.orthographic((0.3, 0.2, 5.0), height=3.0), OK), ("a name", "front", TypeError),
+        ("a list", [tm.Camera.fit()], TypeError), ("a light", tm.Light.key(), TypeError), ("an int", 1, TypeError),
+    ),
+    "Outlines": Name(("mesh", "image", "both"), more=(
+        ("Outlines()", tm.Outlines(), OK), ("Outlines('image')", tm.Outlines("image", color="#204080", width=3.0), OK),
+        ("True", True, TypeError), ("a LineStyle", tm.LineStyle(), TypeError),
+    )),
+    "Paper": (
+        ("a Paper", tm.Paper(), OK), ("a Paper on the surface, of an image", tm.Paper(np.eye(3), space="surface"), OK),
+        ("True", True, TypeError), ("a name", "paper", TypeError), ("a Rim", tm.Rim(), TypeError),
+    ),
+    "Rim": (
+        ("a Rim", tm.Rim(), OK),
+        ("a coloured, lit-side Rim", tm.Rim("#3366ff", width=0.5, side="lit", blend="mix"), OK),
+        ("True", True, TypeError), ("a name", "rim", TypeError), ("a colour", (1.0, 1.0, 1.0), TypeError),
+        ("a Dither", tm.Dither(), TypeError),
+    ),
+    "Dither": (
+        ("a pattern name", "bayer8", OK), ("blue", "blue", OK), ("a Dither", tm.Dither("bayer2", space="object"), OK),
+        ("an unknown name", "noise", ValueError), ("upper case", "BAYER4", ValueError), ("True", True, TypeError),
+        ("an int", 4, TypeError), ("a list", ["bayer4"], TypeError), ("an Outlines", tm.Outlines(), TypeError),
+    ),
+    "Shadows": (
+        ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
+        ("a Shadows", tm.Shadows(size=512, filter="none"), OK), ("a word", "yes", TypeError), ("an int", 1, TypeError),
+        ("a list of a bool", [True], TypeError), ("an Outlines", tm.Outlines(), TypeError),
+    ),
+}
+# What only the renderer's own functions take: meshes, cameras, a backend, normals, a mesh's colours and texture.
+OUTPUTS_WITHOUT_OUTLINES = (  # the outputs of a render without outlines
+    ("color", ("color",), OK), ("normal and depth", ("normal", "depth"), OK), ("outline", ("outline",), ValueError),
+    ("lines", ("color", "lines"), ValueError),
 )
-
-MATERIALS = Array((
-    ("bands", tm.Material.bands(), OK), ("lambert", tm.Material.lambert("#80c0ff"), OK),
-    ("phong", tm.Material.phong(shininess=8), OK),
-    ("thresholded phong", tm.Material.thresholded_phong(per_vertex=True), OK), ("lut", tm.Material.lut(), OK),
-    ("a name", "bands", TypeError), ("the class", tm.Material, TypeError), ("a light", tm.Light.key(), TypeError),
-    ("a dict", {"model": "bands"}, TypeError),
-))
-
-CAMERAS_ONE = Array((
-    ("fit", tm.Camera.fit(), OK),
-    ("fit orthographic", tm.Camera.fit((0.0, 1.0, 0.0), up=(0.0, 0.0, 1.0), orthographic=True), OK),
-    ("look_at", tm.Camera.look_at((0.3, 0.2, 5.0), fov_y=20.0), OK),
-    ("orthographic", tm.Camera.orthographic((0.3, 0.2, 5.0), height=3.0), OK), ("a name", "front", TypeError),
-    ("a list", [tm.Camera.fit()], TypeError), ("a light", tm.Light.key(), TypeError), ("an int", 1, TypeError),
-))
-
-CAMERAS = Array((
+CAMERAS = (
     ("two", [tm.Camera.fit(), tm.Camera.look_at((0.3, 0.2, 5.0))], OK),
     ("tuple", (tm.Camera.fit((1.0, 0.0, 0.0)),), OK), ("none", [], OK), ("a camera", tm.Camera.fit(), TypeError),
     ("a string in the list", [tm.Camera.fit(), "front"], TypeError), ("a string", "front", TypeError),
     ("an int", 2, TypeError),
-))
-
-_LIGHTS = [tm.Light.key(), tm.Light.directional((1.0, -1.0, -1.0)), tm.Light.point((2.0, 2.0, 2.0), space="camera")]
-LIGHTS = Array((
-    ("a light", tm.Light.key(), OK), ("a list", _LIGHTS, OK), ("a tuple", tuple(_LIGHTS), OK), ("none", [], OK),
-    ("eight", [tm.Light.key()] * 8, OK), ("nine", [tm.Light.key()] * 9, ValueError),
-    ("a string", "sun", TypeError), ("a string in the list", [tm.Light.key(), "sun"], TypeError),
-    ("None in the list", [None], TypeError), ("an int", 1, TypeError), ("a material", tm.Material.bands(), TypeError),
-))
-
+)
 _MESH = tm.Mesh(V, F, material=tm.Material.lambert(), transform=_TURN, normals="flat")
-MESHES = Array((
+MESHES = (
     ("a handle", HANDLE, OK), ("a list", [HANDLE, HANDLE], OK), ("a tuple", (HANDLE,), OK),
     ("a Mesh", tm.Mesh(V, F), OK), ("a Mesh of a handle", tm.Mesh(HANDLE, transform=_TURN), OK),
     ("a Mesh with its own settings", _MESH, OK), ("handles and Meshes", [HANDLE, _MESH], OK), ("empty", [], OK),
     ("a handle of another renderer", OTHER_HANDLE, ValueError), ("a removed handle", REMOVED_HANDLE, ValueError),
     ("arrays", V, TypeError), ("a (V, F) pair", (V, F), TypeError), ("a string", "bunny", TypeError),
     ("None in the list", [HANDLE, None], TypeError), ("a mesh id", HANDLE.id, TypeError),
-))
-
-BACKEND = Name(
-    ("auto", "vulkan", "gl", "vk", "opengl", "gles", "egl", " vulkan "), any_case=True, empty=OK
 )
+BACKEND = Name(("auto", "vulkan", "gl", "vk", "opengl", "gles", "egl", " vulkan "), any_case=True, empty=OK)
 NORMALS = Name(
     ("smooth", "flat", "auto"),
     more=(
@@ -608,27 +651,62 @@ NORMALS = Name(
         ("auto bool angle", ("auto", True), TypeError), ("auto none angle", ("auto", None), TypeError),
         ("auto alone", ("auto",), TypeError), ("auto three", ("auto", 30, 1), TypeError),
         ("auto list", ["auto", 45], TypeError), ("own, one short", np.ones((len(V) - 1, 3)), ValueError),
-        ("own, two columns", np.ones((len(V), 2)), ValueError),
-        ("own, a zero row", np.zeros((len(V), 3)), ValueError),
+        ("own, two columns", np.ones((len(V), 2)), ValueError), ("own, a zero row", np.zeros((len(V), 3)), ValueError),
         ("own, integers", np.ones((len(V), 3), dtype=np.int64), TypeError),
         ("own, a list", np.ones((len(V), 3)).tolist(), TypeError),
     ),
 )
+UV = (V[:, :2] + 1.5) / 3.0
+TEXTURE = (np.arange(4 * 4 * 3) * 5).astype(np.uint8).reshape(4, 4, 3)
+UVS = (
+    ("float64", UV, OK), ("float32", UV.astype(np.float32), OK), ("big-endian", UV.astype(">f8"), OK),
+    ("nested list", UV.tolist(), OK),
+    ("beyond [0, 1]", UV * 7 - 3, OK),  # wrapped
+    ("nan", _with(UV, (0, 0), np.nan), ValueError), ("inf", _with(UV, (1, 1), np.inf), ValueError),
+    ("beyond float32", _with(UV, (0, 1), 1e300), ValueError), ("one too few", UV[:-1], ValueError),
+    ("three columns", V, ValueError), ("flat", UV.ravel(), ValueError), ("int64", UV.astype(np.int64), TypeError),
+    ("string", "uv", TypeError),
+)
+TEXTURES = (
+    ("uint8 rgb", TEXTURE, OK), ("uint8 rgba", np.concatenate([TEXTURE, np.full((4, 4, 1), 200, np.uint8)], -1), OK),
+    ("float64", TEXTURE / 255.0, OK), ("float32", (TEXTURE / 255.0).astype(np.float32), OK),
+    ("big-endian float", (TEXTURE / 255.0).astype(">f8"), OK), ("fortran order", np.asfortranarray(TEXTURE), OK),
+    ("one pixel", TEXTURE[:1, :1], OK), ("PIL image", Image.fromarray(TEXTURE), OK),
+    ("two channels", TEXTURE[..., :2], ValueError), ("grey (H, W)", TEXTURE[..., 0], ValueError),
+    ("empty", np.zeros((0, 4, 3), np.uint8), ValueError), ("nan", _with(TEXTURE / 255.0, (0, 0), np.nan), ValueError),
+    ("0-255 floats", TEXTURE.astype(np.float64) + 1, Refused(ValueError, "uint8")),
+    ("int64", TEXTURE.astype(np.int64), TypeError), ("a file name", "checker.png", TypeError),
+)
+TEXTURED = dict(uv=UV, texture=TEXTURE, texture_filter=None, texture_wrap=None, alpha_cutoff=None)
+TEXTURE_PARAMS = [
+    Param("uv", UVS, none=ValueError),  # a texture needs uv
+    Param("texture", TEXTURES, none=ValueError),  # and uv a texture
+    Param("texture_filter", Name(("linear", "nearest")), none=OK),
+    Param("texture_wrap", Name(("repeat", "clamp", "mirror")), none=OK),
+    Param("alpha_cutoff", Number(0.0, 1.0), none=OK),
+]
 
-PAPER = Array((
-    ("a Paper", tm.Paper(), OK),
-    ("a Paper on the surface, of an image", tm.Paper(np.eye(3), space="surface"), OK), ("True", True, TypeError),
-    ("a name", "paper", TypeError), ("a Rim", tm.Rim(), TypeError),
-))
 
-GRAIN = Array((
-    ("a grey uint8 image", np.arange(12, dtype=np.uint8).reshape(3, 4), OK),
-    ("an RGBA float image", np.full((2, 3, 4), 0.25), OK), ("a 1x1 image", np.ones((1, 1)), OK),
-    ("a list", [[0.0, 1.0]], TypeError), ("a string", "rough", TypeError), ("1-D", np.zeros(4), ValueError),
-    ("empty", np.zeros((0, 4)), ValueError), ("5 channels", np.zeros((2, 2, 5)), ValueError),
-    ("NaN", np.array([[np.nan, 0.0]]), ValueError), ("above 1", np.array([[1.5]]), ValueError),
-    ("negative", np.array([[-1, 0]], np.int16), ValueError), ("complex", np.zeros((2, 2), complex), TypeError),
-))
+def mesh_colours(n: int) -> Table:
+    """Colours of n vertices or faces: (n, 3) or (n, 4) sRGB, uint8 codes or floats in [0, 1]."""
+    base = np.linspace(0.0, 1.0, n * 3).reshape(n, 3)
+    return (
+        ("float64 rgb", base, OK), ("float32 rgba", np.concatenate([base, np.ones((n, 1))], 1).astype(np.float32), OK),
+        ("uint8", (base * 255).astype(np.uint8), OK), ("big-endian", base.astype(">f8"), OK),
+        ("fortran order", np.asfortranarray(base), OK), ("nested list", base.tolist(), OK),
+        ("one too few", base[:-1], ValueError), ("two channels", base[:, :2], ValueError),
+        ("five channels", np.ones((n, 5)), ValueError), ("flat", base.ravel(), ValueError),
+        ("empty", np.zeros((0, 3)), ValueError), ("nan", _with(base, (0, 0), np.nan), ValueError),
+        ("inf", _with(base, (0, 1), np.inf), ValueError), ("negative", _with(base, (1, 1), -0.1), ValueError),
+        ("0-255 floats", base * 255, Refused(ValueError, "uint8")),  # codes get a hint
+        ("int64", (base * 255).astype(np.int64), TypeError), ("float16", base.astype(np.float16), TypeError),
+        ("string", "red", TypeError),
+    )
+
+
+BOTH_COLOURS = (("with vertex colours too", np.zeros((len(F), 3)), ValueError),)
+# Colours by vertex or by face (each None by default: not both).
+MESH_COLOURS = [Param("vertex_colors", mesh_colours(N), none=OK), Param("face_colors", mesh_colours(len(F)), none=OK)]
 
 
 def _frame(**kw: Any) -> Dict[str, Any]:
@@ -676,148 +754,10 @@ def _removed(mesh: Any) -> None:
     RENDERER.remove_mesh(RENDERER.add_mesh(V, F) if mesh is HANDLE else mesh)
 
 
-def mesh_colours(n: int) -> Array:
-    """Colours of n vertices or faces: (n, 3) or (n, 4) sRGB, uint8 codes or floats in [0, 1]."""
-    base = np.linspace(0.0, 1.0, n * 3).reshape(n, 3)
-    return Array((
-        ("float64 rgb", base, OK),
-        ("float32 rgba", np.concatenate([base, np.ones((n, 1))], 1).astype(np.float32), OK),
-        ("uint8", (base * 255).astype(np.uint8), OK), ("big-endian", base.astype(">f8"), OK),
-        ("fortran order", np.asfortranarray(base), OK), ("nested list", base.tolist(), OK),
-        ("one too few", base[:-1], ValueError), ("two channels", base[:, :2], ValueError),
-        ("five channels", np.ones((n, 5)), ValueError), ("flat", base.ravel(), ValueError),
-        ("empty", np.zeros((0, 3)), ValueError), ("nan", _with(base, (0, 0), np.nan), ValueError),
-        ("inf", _with(base, (0, 1), np.inf), ValueError), ("negative", _with(base, (1, 1), -0.1), ValueError),
-        ("0-255 floats", base * 255, Refused(ValueError, "uint8")),  # codes get a hint
-        ("int64", (base * 255).astype(np.int64), TypeError), ("float16", base.astype(np.float16), TypeError),
-        ("string", "red", TypeError),
-    ))
-
-
-UV = (V[:, :2] + 1.5) / 3.0
-TEXTURE = (np.arange(4 * 4 * 3) * 5).astype(np.uint8).reshape(4, 4, 3)
-UVS = Array((
-    ("float64", UV, OK), ("float32", UV.astype(np.float32), OK), ("big-endian", UV.astype(">f8"), OK),
-    ("nested list", UV.tolist(), OK),
-    ("beyond [0, 1]", UV * 7 - 3, OK),  # wrapped
-    ("nan", _with(UV, (0, 0), np.nan), ValueError), ("inf", _with(UV, (1, 1), np.inf), ValueError),
-    ("beyond float32", _with(UV, (0, 1), 1e300), ValueError), ("one too few", UV[:-1], ValueError),
-    ("three columns", V, ValueError), ("flat", UV.ravel(), ValueError), ("int64", UV.astype(np.int64), TypeError),
-    ("string", "uv", TypeError),
-))
-
-
-def _pil(a: np.ndarray) -> Any:
-    from PIL import Image
-
-    return Image.fromarray(a)
-
-
-TEXTURES = Array((
-    ("uint8 rgb", TEXTURE, OK), ("uint8 rgba", np.concatenate([TEXTURE, np.full((4, 4, 1), 200, np.uint8)], -1), OK),
-    ("float64", TEXTURE / 255.0, OK), ("float32", (TEXTURE / 255.0).astype(np.float32), OK),
-    ("big-endian float", (TEXTURE / 255.0).astype(">f8"), OK), ("fortran order", np.asfortranarray(TEXTURE), OK),
-    ("one pixel", TEXTURE[:1, :1], OK), ("PIL image", _pil(TEXTURE), OK),
-    ("two channels", TEXTURE[..., :2], ValueError), ("grey (H, W)", TEXTURE[..., 0], ValueError),
-    ("empty", np.zeros((0, 4, 3), np.uint8), ValueError), ("nan", _with(TEXTURE / 255.0, (0, 0), np.nan), ValueError),
-    ("0-255 floats", TEXTURE.astype(np.float64) + 1, Refused(ValueError, "uint8")),
-    ("int64", TEXTURE.astype(np.int64), TypeError), ("a file name", "checker.png", TypeError),
-))
-TEXTURED = dict(uv=UV, texture=TEXTURE, texture_filter=None, texture_wrap=None, alpha_cutoff=None)
-TEXTURE_PARAMS = [
-    Param("uv", UVS, none=ValueError),  # a texture needs uv
-    Param("texture", TEXTURES, none=ValueError),  # and uv a texture
-    Param("texture_filter", Name(("linear", "nearest")), none=OK),
-    Param("texture_wrap", Name(("repeat", "clamp", "mirror")), none=OK),
-    Param("alpha_cutoff", Number(0.0, 1.0), none=OK),
-]
-BOTH_COLOURS = Array((("with vertex colours too", np.zeros((len(F), 3)), ValueError),))
-# Colours by vertex or by face (each None by default: not both).
-MESH_COLOURS = [Param("vertex_colors", mesh_colours(N), none=OK), Param("face_colors", mesh_colours(len(F)), none=OK)]
-
-
-STYLE = Array((
-    ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
-    ("a LineStyle", tm.LineStyle("#ff0000", 3.0), OK), ("a colour", "#00ff00", OK),
-    ("colour numbers", (0.0, 0.0, 1.0), OK), ("0-255 codes", (0, 0, 255), Refused(ValueError, "divide by 255")),
-    ("a word", "thick", ValueError), ("an int", 3, TypeError), ("a list of a bool", [True], TypeError),
-    ("an Outlines", tm.Outlines(), TypeError),
-))
-
-DITHER = Array((
-    ("a pattern name", "bayer8", OK), ("blue", "blue", OK), ("a Dither", tm.Dither("bayer2", space="object"), OK),
-    ("an unknown name", "noise", ValueError), ("upper case", "BAYER4", ValueError), ("True", True, TypeError),
-    ("an int", 4, TypeError), ("a list", ["bayer4"], TypeError), ("an Outlines", tm.Outlines(), TypeError),
-))
-
-RIM = Array((
-    ("a Rim", tm.Rim(), OK), ("a coloured, lit-side Rim", tm.Rim("#3366ff", width=0.5, side="lit", blend="mix"), OK),
-    ("True", True, TypeError), ("a name", "rim", TypeError), ("a colour", (1.0, 1.0, 1.0), TypeError),
-    ("a Dither", tm.Dither(), TypeError),
-))
-
-SHADOWS = Array((
-    ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
-    ("a Shadows", tm.Shadows(size=512, filter="none"), OK), ("a word", "yes", TypeError),
-    ("an int", 1, TypeError), ("a list of a bool", [True], TypeError), ("an Outlines", tm.Outlines(), TypeError),
-))
-
-UP = Array((
-    ("y", (0.0, 1.0, 0.0), OK), ("ints", (1, 1, 0), OK), ("array", np.array([0.2, 1.0, 0.1]), OK),
-    ("float32 array", np.array([0.0, 1.0, 0.0], np.float32), OK), ("long", (0.0, 1e300, 0.0), OK),
-    ("short", (0.0, 1e-300, 0.0), OK), ("along the view", (0.3, 0.2, 5.0), ValueError),
-    ("against the view", (-0.6, -0.4, -10.0), ValueError), ("zero", (0, 0, 0), ValueError),
-    ("nan", (0.0, float("nan"), 0.0), ValueError), ("inf", (0.0, float("inf"), 0.0), ValueError),
-    ("two numbers", (0.0, 1.0), ValueError), ("bools", (False, True, False), TypeError),
-    ("a string", "up", TypeError),
-))
-
-LUT = Array((
-    ("kang_table", tm.kang_table(), OK), ("list", [0.2, 0.6, 1.0], OK), ("one entry", [1.0], OK),
-    ("rgb rows", np.array([[0.2, 0.1, 0.0], [1.0, 0.9, 0.8]]), OK),
-    ("float32", np.linspace(0, 1, 8, dtype=np.float32), OK), ("256 entries", np.ones(256), OK),
-    ("factors above 1", [0.5, 2.0], OK), ("257 entries", np.ones(257), ValueError), ("empty", [], ValueError),
-    ("negative", [0.5, -0.1], ValueError), ("nan", [0.5, float("nan")], ValueError),
-    ("inf", [float("inf")], ValueError), ("beyond float32", [1e39], ValueError),
-    ("rows of 2", [[1.0, 0.5]], ValueError), ("rows of 4", np.ones((2, 4)), ValueError),
-    ("bools", [True, False], TypeError), ("strings", ["0.5"], TypeError), ("a string", "ramp", TypeError),
-    ("bytes", b"\x01\x02", TypeError), ("a number", 0.5, TypeError),
-))
-
-THRESHOLDS = Array((
-    ("paper's", (0.2, 0.5, 0.7, 0.9), OK), ("array", np.array([-0.5, 0.0, 0.5, 0.99]), OK),
-    ("float32", np.array([0.1, 0.2, 0.3, 0.4], np.float32), OK), ("beyond [-1, 1]", (-5.0, 0.0, 1.0, 5.0), OK),
-    ("decreasing", (0.9, 0.7, 0.5, 0.2), ValueError), ("three, for five values", (0.2, 0.5, 0.9), ValueError),
-    ("bytes", b"\x01\x02\x03\x04", TypeError), ("repeated", (0.2, 0.5, 0.5, 0.9), ValueError),
-    ("nan", (0.2, float("nan"), 0.7, 0.9), ValueError), ("inf", (0.2, 0.5, 0.7, float("inf")), ValueError),
-    ("strings", ("0.2", "0.5", "0.7", "0.9"), TypeError), ("a string", "0.5", TypeError),
-    ("a number", 0.5, TypeError),
-))
-
-VALUES = Array((
-    ("paper's", (0.0, 0.2, 0.7, 0.9, 1.0), OK), ("above 1", (0.0, 0.5, 1.0, 2.0, 4.0), OK),
-    ("array", np.linspace(0, 1, 5), OK), ("negative", (-0.1, 0.2, 0.7, 0.9, 1.0), ValueError),
-    ("nan", (0.0, 0.2, float("nan"), 0.9, 1.0), ValueError),
-    ("beyond float32", (0.0, 0.2, 0.7, 0.9, 1e39), ValueError), ("two", (0.0, 1.0), ValueError),
-    ("bools", (False, True, True, True, True), TypeError), ("a number", 1.0, TypeError),
-))
-
-
-# The probes of each kind (or settings class, or parameter name) a description cannot enumerate.
-COMPOUND: Dict[str, Any] = {
-    "color": COLOUR, "rgba": COLOUR_ALPHA, "matrix": TRANSFORMS, "lights": LIGHTS, "names": OUTPUTS, "style": STYLE,
-    "table": LUT, "image": GRAIN, "Material": MATERIALS, "Camera": CAMERAS_ONE, "Outlines": OUTLINES, "Paper": PAPER,
-    "Rim": RIM, "Dither": DITHER, "Shadows": SHADOWS, "thresholds": THRESHOLDS, "values": VALUES, "up": UP,
-    "direction": vec3("direction", ValueError), "position": vec3("position", OK), "target": vec3("target", OK),
-    "eye": vec3("eye", None),  # an eye on the target: test_render_errors.py
-}
-
-
 def described_params(name: str, required: int, params: List[Dict[str, Any]]) -> List[Param]:
     """A settings constructor's parameters: None is the default of each but the required ones."""
     defaults = {p["name"]: p["default"] for p in params}
-    return [described_param(name, p, TypeError if i < required else OK, COMPOUND, defaults)
-            for i, p in enumerate(params)]
+    return [described_param(name, p, TypeError if i < required else OK, KINDS, defaults) for i, p in enumerate(params)]
 
 
 # The render keywords: RenderOptions' fields (None: the core's default, for every one).
@@ -888,17 +828,16 @@ CASES += SETTING_CASES + [_replace_case(c) for c in SETTING_CASES] + [
          [Param("vertices", VERTICES), Param("faces", FACES), NORMALS_PARAM, SMOOTH_ITERATIONS, *MESH_COLOURS]),
     Case("Renderer.add_mesh(textured)", _added, dict(vertices=V, faces=F, **TEXTURED), TEXTURE_PARAMS),
     Case("Renderer.remove_mesh", _removed, dict(mesh=HANDLE),
-         [Param("mesh", Array((("a handle", HANDLE, OK), ("a removed handle", REMOVED_HANDLE, OK),
+         [Param("mesh", ((("a handle", HANDLE, OK), ("a removed handle", REMOVED_HANDLE, OK),
                                ("a handle of another renderer", OTHER_HANDLE, ValueError),
                                ("a mesh id", HANDLE.id, TypeError), ("a Mesh", tm.Mesh(V, F), TypeError))))]),
     Case("Mesh", _mesh_rendered, dict(vertices=V, faces=F, material=None, transform=None, normals="smooth"),
-         [Param("vertices", VERTICES), Param("faces", FACES), Param("material", MATERIALS, none=OK),
-          Param("transform", TRANSFORMS, none=OK), NORMALS_PARAM, *MESH_COLOURS]),
+         [Param("vertices", VERTICES), Param("faces", FACES), Param("material", KINDS["Material"], none=OK),
+          Param("transform", KINDS["matrix"], none=OK), NORMALS_PARAM, *MESH_COLOURS]),
     Case("Mesh(textured)", _mesh_rendered, dict(vertices=V, faces=F, **TEXTURED), TEXTURE_PARAMS),
     Case("Mesh(vertex colours)", _mesh_rendered, dict(vertices=V, faces=F, vertex_colors=np.ones((N, 3))),
          [Param("face_colors", BOTH_COLOURS, none=OK)]),
 ]
-
 
 
 # ------------------------------------------------------------------------------------------------
@@ -973,10 +912,10 @@ CASES += [
 # A legal value that makes two things differ gives AssertionError, the comparison's outcome.
 
 
-def mesh_arguments(fewer: Any) -> Array:
+def mesh_arguments(fewer: Any) -> Table:
     """A mesh to compare: a (vertices, faces) pair, positions alone, or a Trimesh-like object;
     ``fewer`` is what a mesh with fewer vertices gives."""
-    return Array((
+    return (
         ("pair", (V, F), OK), ("list pair", [V, F], OK), ("positions alone", V, OK),
         ("float32 positions", (V.astype(np.float32), F), OK),
         ("int positions", (np.round(V * 100).astype(np.int64), F), OK),
@@ -985,22 +924,22 @@ def mesh_arguments(fewer: Any) -> Array:
         ("faces turned and reordered", (V, np.roll(F[::-1], 1, axis=1)), OK),
         ("a face flipped", (V, np.vstack([F[:1, ::-1], F[1:]])), OK), ("fewer faces", (V, F[1:]), OK),
         ("fewer vertices", V[1:], fewer), ("complex", V.astype(complex), TypeError), ("bool", V > 0, TypeError),
-        ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError),
-        ("a string", "mesh", TypeError), ("ragged", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
-        ("float faces", (V, F.astype(float)), TypeError), ("nan", (_with(V, (3, 1), np.nan), F), ValueError),
-        ("inf", (_with(V, (0, 0), np.inf), F), ValueError), ("shape (N, 2)", V[:, :2].copy(), ValueError),
-        ("flat", V.ravel().copy(), ValueError), ("empty", np.zeros((0, 3)), ValueError),
-        ("scalar", 1.0, ValueError), ("faces (M, 4)", (V, np.hstack([F, F[:, :1]])), ValueError),
+        ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError), ("a string", "mesh", TypeError),
+        ("ragged", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError), ("float faces", (V, F.astype(float)), TypeError),
+        ("nan", (_with(V, (3, 1), np.nan), F), ValueError), ("inf", (_with(V, (0, 0), np.inf), F), ValueError),
+        ("shape (N, 2)", V[:, :2].copy(), ValueError), ("flat", V.ravel().copy(), ValueError),
+        ("empty", np.zeros((0, 3)), ValueError), ("scalar", 1.0, ValueError),
+        ("faces (M, 4)", (V, np.hstack([F, F[:, :1]])), ValueError),
         ("negative face index", (V, _with(F, (5, 2), -1)), IndexError),
         ("face index N", (V, _with(F, (5, 2), N)), IndexError),
-    ))
+    )
 
 
 IMG8 = (np.random.default_rng(5).random((9, 11, 4)) * 255).astype(np.uint8)
 COLOUR_AND_LINES = tm.render(V, F, outlines="mesh", outputs=("color", "lines"), width=11, height=9)
 DEPTH_ONLY = tm.render(V, F, outputs=("depth",), width=11, height=9)
 
-IMAGES_TO_COMPARE = Array((
+IMAGES_TO_COMPARE = (
     ("uint8 RGBA", IMG8, OK), ("floats in [0, 1]", IMG8 / 255.0, OK),
     ("float32", (IMG8 / 255.0).astype(np.float32), OK), ("int16 levels", IMG8.astype(np.int16), OK),
     ("bool", IMG8 > 100, OK), ("grey", IMG8[..., 0].copy(), OK), ("RGB", IMG8[..., :3].copy(), OK),
@@ -1013,25 +952,25 @@ IMAGES_TO_COMPARE = Array((
     ("empty", np.zeros((0, 4), np.uint8), ValueError), ("complex", IMG8.astype(complex), TypeError),
     ("strings", IMG8.astype(str), TypeError), ("object", IMG8.astype(object), TypeError),
     ("a string", "image.png", TypeError), ("bytes", b"\x89PNG", TypeError),
-))
+)
 
-DRAWINGS = Array((
+DRAWINGS = (
     ("a render", LINES, OK), ("its SVG", LINES.svg(), OK), ("its filled SVG", LINES.svg(widths="point"), OK),
-    ("a list of lines", list(LINES.lines), OK), ("a tuple of lines", tuple(LINES.lines), OK),
-    ("no lines", [], OK), ("a single point", [np.array([[3.0, 4.0]])], OK),
-    ("int lines", [np.array([[0, 0], [5, 5]])], OK), ("a render without lines", DEPTH_ONLY, ValueError),
-    ("not SVG", "lines", ValueError), ("broken SVG", "<svg", ValueError), ("other XML", "<html/>", ValueError),
+    ("a list of lines", list(LINES.lines), OK), ("a tuple of lines", tuple(LINES.lines), OK), ("no lines", [], OK),
+    ("a single point", [np.array([[3.0, 4.0]])], OK), ("int lines", [np.array([[0, 0], [5, 5]])], OK),
+    ("a render without lines", DEPTH_ONLY, ValueError), ("not SVG", "lines", ValueError),
+    ("broken SVG", "<svg", ValueError), ("other XML", "<html/>", ValueError),
     ("a line (K, 3)", [np.zeros((3, 3))], ValueError), ("an empty line", [np.zeros((0, 2))], ValueError),
     ("a nan point", [np.array([[0.0, 0.0], [np.nan, 1.0]])], ValueError),
     ("string points", [np.array([["a", "b"]])], TypeError), ("an array", np.zeros((4, 2)), TypeError),
     ("bytes", b"<svg/>", TypeError), ("an int", 3, TypeError),
-))
+)
 
 # A mesh every peer smooths as toonmesh does: the vertex and face probes but those the peers
 # themselves cannot take (trimesh raises on unreferenced vertices after the largest face index;
 # values near float64's limits overflow inside the peers).
-PEER_VERTICES = Array(tuple(p for p in VERTICES.probes if p[0] not in ("huge but finite", "tiny")))
-PEER_FACES = Array(tuple(p for p in FACES.probes if p[0] not in ("one face",)))
+PEER_VERTICES = tuple(p for p in VERTICES if p[0] not in ("huge but finite", "tiny"))
+PEER_FACES = tuple(p for p in FACES if p[0] not in ("one face",))
 PEER_ITERATIONS = Param("iterations", Integer(0, 10**6, slow_above=20), none=OK)
 
 SNAPSHOTS = tempfile.mkdtemp(prefix="toonmesh-bad-arguments-")
@@ -1076,15 +1015,15 @@ CASES += [
            + ([SHARE] if extra else []), also=(AssertionError,))
       for name, extra in (("assert_drawings_close", {"share": 0.005}), ("drawing_difference", {}))],
     Case("testing.Snapshot", _snapshot, dict(directory=SNAPSHOTS, test_name="probe", update=False, written=None),
-         [Param("directory", Array((("a str", SNAPSHOTS, OK), ("a Path", Path(SNAPSHOTS), OK),
+         [Param("directory", ((("a str", SNAPSHOTS, OK), ("a Path", Path(SNAPSHOTS), OK),
                                     ("an int", 3, TypeError), ("bytes", SNAPSHOTS.encode(), TypeError)))),
-          Param("test_name", Array((("a name", "test_x[gl]", OK), ("odd characters", "a/b c:d", OK),
+          Param("test_name", ((("a name", "test_x[gl]", OK), ("odd characters", "a/b c:d", OK),
                                     ("empty", "", ValueError), ("an int", 3, TypeError)))),
-          Param("update", Flag()), Param("written", Array((("a list", [], OK), ("a tuple", (), TypeError))), none=OK)]),
+          Param("update", Flag()), Param("written", ((("a list", [], OK), ("a tuple", (), TypeError))), none=OK)]),
     Case("testing.Snapshot(call)", _snapshot_call,
          dict(value=COLOUR_AND_LINES, name=None, kind="auto", levels=8, pixels=1.0, share=None),
-         [Param("value", Array(SNAPSHOT_VALUES)),
-          Param("name", Array((("a name", "other", OK), ("empty", "", ValueError), ("an int", 3, TypeError))), none=OK),
+         [Param("value", SNAPSHOT_VALUES),
+          Param("name", ((("a name", "other", OK), ("empty", "", ValueError), ("an int", 3, TypeError))), none=OK),
           Param("kind", Name(("auto", "image", "drawing"))), Param("levels", Integer(0, 255)),
           Param("pixels", Number(0.0, 1e6)), Param("share", Number(0.0, 1.0), none=OK)]),
     *[Case(f"testing.smoothing_vs_{peer}", getattr(testing, f"smoothing_vs_{peer}"),
@@ -1097,7 +1036,7 @@ CASES += [
           Param("smoothing", POSITIVE)]),
     # values near float64's limit overflow in scikit-image's filter (not in toonmesh's)
     Case("testing.sobel_vs_skimage", testing.sobel_vs_skimage, dict(image=IMG, mask=None, which="sobel"),
-         [Param("image", Array(tuple(p for p in IMAGES.probes if p[0] != "huge values"))),
+         [Param("image", tuple(p for p in IMAGES if p[0] != "huge values")),
           Param("mask", MASKS, none=OK), Param("which", Name(("sobel", "sobel_h", "sobel_v")))]),
 ]
 
