@@ -309,13 +309,6 @@ def buffers(name: str, good: np.ndarray) -> Table:
     )
 
 
-def _obj_file(tmp: str, text: str) -> str:
-    path = os.path.join(tmp, f"mesh{abs(hash(text))}.obj")
-    with open(path, "w") as f:
-        f.write(text)
-    return path
-
-
 # ------------------------------------------------------------------------------------------------
 # Parameters generated from the core's descriptions, with what a description cannot say
 
@@ -1044,41 +1037,35 @@ CASES += [
 # ------------------------------------------------------------------------------------------------
 # Running the probes
 
-
 SCENE_SETTINGS = (tm.Material, tm.Light, tm.Camera, tm.LineStyle, tm.Outlines)
-
-
-def _fields(x: Any) -> Dict[str, Any]:
-    """A scene setting's read-only fields."""
-    return {k: getattr(x, k) for k in dir(type(x)) if not k.startswith("_") and not callable(getattr(x, k))}
 
 
 def _finite_floats(result: Any) -> bool:
     """Every float inside `result` (tuples, lists, dicts, dataclasses, an EdgeIndex, a render's
-    images and a scene setting's fields) is finite; a render's depth is +inf where no mesh is."""
-    if isinstance(result, te.EdgeIndex):
-        return _finite_floats(result.features) and _finite_floats(result.face_normals)
+    images and a scene setting's read-only fields) is finite; a render's depth is +inf where no
+    mesh is."""
     if isinstance(result, tm.RenderResult):
         depth = result.depth
         if depth is not None and not np.all(np.isfinite(depth) | (depth == np.inf)):
             return False
-        return _finite_floats([result.color, result.normal, result.outline, result.lines or [],
-                               result.view_matrix, result.projection, result.near, result.far])
-    if isinstance(result, tm.RenderStack):
-        return _finite_floats(list(result))
-    if isinstance(result, SCENE_SETTINGS):
-        return _finite_floats(list(_fields(result).values()))
-    if isinstance(result, np.ndarray):
+        result = [result.color, result.normal, result.outline, result.lines or [], result.view_matrix,
+                  result.projection, result.near, result.far]
+    if isinstance(result, te.EdgeIndex):
+        result = [result.features, result.face_normals]
+    elif isinstance(result, tm.RenderStack):
+        result = list(result)
+    elif isinstance(result, SCENE_SETTINGS):
+        result = [getattr(result, k) for k in dir(type(result))
+                  if not k.startswith("_") and not callable(getattr(result, k))]
+    elif isinstance(result, np.ndarray):
         return result.dtype.kind != "f" or bool(np.isfinite(result).all())
-    if isinstance(result, float):
+    elif isinstance(result, float):
         return math.isfinite(result)
-    if isinstance(result, dict):
-        return _finite_floats(list(result.values()))
-    if isinstance(result, (tuple, list)):
-        return all(_finite_floats(r) for r in result)
-    if hasattr(result, "__dataclass_fields__"):
-        return all(_finite_floats(getattr(result, k)) for k in result.__dataclass_fields__)
-    return True
+    elif isinstance(result, dict):
+        result = list(result.values())
+    elif hasattr(result, "__dataclass_fields__"):
+        result = [getattr(result, k) for k in result.__dataclass_fields__]
+    return not isinstance(result, (tuple, list)) or all(_finite_floats(r) for r in result)
 
 
 def _same(a: Any, b: Any) -> bool:
@@ -1102,36 +1089,24 @@ def _same(a: Any, b: Any) -> bool:
     return bool(a == b) if a is not None else b is None
 
 
-ALL_PROBES = [
-    pytest.param(case, p, label, value, expected, id=f"{case.name}:{p.name}={label}")
-    for case in CASES
-    for p in case.params
-    for label, value, expected in probes(p)
-]
-
-_REFERENCE: Dict[str, Any] = {}
-
-
-def _reference(case: Case) -> Any:
-    if case.name not in _REFERENCE:
-        _REFERENCE[case.name] = case.call(**case.base)
-    return _REFERENCE[case.name]
-
-
 def _named(message: str) -> List[str]:
     """The arguments a message starts with: "name: ...", "name[i]: ..." or "name[i, j]: ..." for
     an element, "a, b: ..." for arguments that go together, "owner.name: ..." or
     "owner[i].name: ..." for a field of a compound argument (both owner and name count)."""
-    names = []
-    for n in re.sub(r"\[[^\]]*\]", "", message.split(":")[0]).split(", "):
-        parts = n.split(".")
-        names += [parts[0], parts[-1]]
-    return names
+    parts = [n.split(".") for n in re.sub(r"\[[^\]]*\]", "", message.split(":")[0]).split(", ")]
+    return [n for p in parts for n in (p[0], p[-1])]
+
+
+ALL_PROBES = [pytest.param(case, p, label, value, expected, id=f"{case.name}:{p.name}={label}")
+              for case in CASES for p in case.params for label, value, expected in probes(p)]
+_REFERENCE: Dict[str, Any] = {}  # each case's valid call's result, before its probes
 
 
 @pytest.mark.parametrize("case, param, label, value, expected", ALL_PROBES)
 def test_bad_argument(case: Case, param: Param, label: str, value: Any, expected: Any) -> None:
-    reference = _reference(case)
+    if case.name not in _REFERENCE:
+        _REFERENCE[case.name] = case.call(**case.base)
+    reference = _REFERENCE[case.name]
     kwargs = dict(case.base, **{param.name: value})
     legal_errors = tuple(param.also) + tuple(case.also)
     refused = expected.exc if isinstance(expected, Refused) else expected
@@ -1169,95 +1144,77 @@ def test_every_public_callable_is_in_the_table() -> None:
     """A new public function, class or method must get its row in CASES (or be listed here as
     taking no arguments worth probing)."""
     covered = {c.name.split("(")[0] for c in CASES} | {"data.load_obj", "load"}  # they read files: see below
-    no_arguments = {"get_num_threads", "data.bunny", "edges.FeatureEdges", "edges.EdgeDetection"}
-    no_arguments |= {"edges.Curvature"}  # what curvature() returns
-    no_arguments |= {"kang_table", "Light.key", "MeshHandle", "RenderStack"}
-    # what each settings class is made of, for front ends
-    no_arguments |= {f"{c}.describe" for c in SETTINGS}
-    # a TypedDict of the render keywords, for type checkers (RenderOptions takes them)
-    no_arguments |= {"RenderKeywords"}
-    # Made by their static methods only (which have rows).
-    no_arguments |= {"Camera", "Light", "Material"}
+    no_arguments = {"get_num_threads", "data.bunny", "edges.FeatureEdges", "edges.EdgeDetection", "edges.Curvature",
+                    "kang_table", "Light.key", "MeshHandle", "RenderStack", "RenderKeywords"}  # (a TypedDict)
+    no_arguments |= {f"{c}.describe" for c in SETTINGS}  # what each settings class is made of, for front ends
+    no_arguments |= {"Camera", "Light", "Material"}  # made by their static methods only (which have rows)
     # A render's result: its methods write its images out (test_render.py, test_render_outlines.py).
     no_arguments |= {"RenderResult"} | _methods(tm.RenderResult)
-    # The viewer's methods without arguments: tests/test_viewer.py.
-    no_arguments |= {"Viewer.close", "Viewer.code", "Viewer.reframe", "Viewer.home"}
-    public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
-    public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny"}
+    no_arguments |= {"Viewer.close", "Viewer.code", "Viewer.reframe", "Viewer.home"}  # tests/test_viewer.py
     # toonmesh.testing: what its comparisons return, and need_peer (tests/test_testing.py: it
     # imports a module by name, skips or raises)
     no_arguments |= {"testing.MeshDifference", "testing.ImageDifference", "testing.DrawingDifference",
                      "testing.CurvatureAgreement", "testing.SobelDifference", "testing.PeerMissingError",
                      "testing.need_peer"}
+    public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
+    public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny", "data.load_obj"}
     public |= {f"testing.{n}" for n in testing.__all__ if callable(getattr(testing, n))}
-    public |= {"edges.EdgeIndex.feature_edges", "edges.EdgeIndex.silhouette", "edges.EdgeIndex.outlines",
-               "edges.EdgeIndex.segments", "edges.EdgeIndex.contours", "edges.EdgeIndex.suggestive_contours",
-               "data.load_obj"}
+    public |= {f"edges.EdgeIndex.{n}" for n in ("feature_edges", "silhouette", "outlines", "segments", "contours",
+                                                "suggestive_contours")}
     # The renderer: every function and class at the top level, and each class's methods.
     for name in tm.__all__:
         obj = getattr(tm, name)
         if not callable(obj) or (isinstance(obj, type) and issubclass(obj, BaseException)):
             continue  # modules (above), __version__, exceptions
-        public.add(name)
-        if isinstance(obj, type):
-            public |= _methods(obj)
+        public |= {name} | (_methods(obj) if isinstance(obj, type) else set())
     assert {"render", "Renderer.render", "Renderer.render_many", "Renderer.add_mesh", "Material.lut",
             "Camera.look_at", "Light.point", "Outlines", "LineStyle"} <= public  # the walk finds them
     missing = public - covered - no_arguments
     assert missing == set(), f"no bad-argument rows for {sorted(missing)}"
 
 
-# load_obj reads files, so it gets its own probes.
+# The functions that read files get their own probes: a bad argument names ``path``; a bad file
+# (toonmesh.load) names the file.
+GOOD_OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+PATHS = [("int", 3, TypeError), ("none", None, TypeError), ("list", ["a.obj"], TypeError),
+         ("bytes", b"a.obj", TypeError), ("missing file", "no/such/file.obj", FileNotFoundError),
+         ("not an obj", "BAD", ValueError), ("short vertex line", "v 1 2\nf 1 2 3\n", ValueError),
+         ("a good obj", GOOD_OBJ, OK)]
 
 
-@pytest.mark.parametrize(
-    "label, path, expected",
-    [
-        ("int", 3, TypeError), ("none", None, TypeError), ("list", ["a.obj"], TypeError),
-        ("missing file", "no/such/file.obj", FileNotFoundError), ("not an obj", "BAD", ValueError),
-        ("short vertex line", "v 1 2\nf 1 2 3\n", ValueError),
-        ("a good obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", OK),
-    ],
-)
-def test_load_obj_arguments(tmp_path: Any, label: str, path: Any, expected: Any) -> None:
+def _read(read: Callable[[Any], Any], tmp_path: Any, path: Any, expected: Any) -> Any:
+    """``read(path)`` (an OBJ text written to a file first) when legal, else its exception."""
     if isinstance(path, str) and path.startswith(("v ", "BAD")):
-        path = _obj_file(str(tmp_path), path.replace("BAD", "this is not an obj file\nf a b c\n"))
+        (tmp_path / "mesh.obj").write_text(path.replace("BAD", "this is not an obj file\nf a b c\n"))
+        path = str(tmp_path / "mesh.obj")
     if expected == OK:
-        V2, F2 = load_obj(path)
-        assert V2.shape == (3, 3) and F2.tolist() == [[0, 1, 2]]
-        return
+        return read(path)
     with pytest.raises(expected) as info:
-        load_obj(path)
-    if expected is not FileNotFoundError:
-        assert str(info.value).startswith("path:")
+        read(path)
+    return path, str(info.value)
+
+
+@pytest.mark.parametrize("label, path, expected", [p for p in PATHS if p[0] != "bytes"])
+def test_load_obj_arguments(tmp_path: Any, label: str, path: Any, expected: Any) -> None:
+    result = _read(load_obj, tmp_path, path, expected)
+    if expected == OK:
+        V2, F2 = result
+        assert V2.shape == (3, 3) and F2.tolist() == [[0, 1, 2]]
+    elif expected is not FileNotFoundError:
+        assert result[1].startswith("path:")
     assert load_obj.__module__ == "toonmesh.data"
 
 
-# toonmesh.load reads files too: a bad argument names ``path``; a bad file names the file.
-
-
-@pytest.mark.parametrize(
-    "label, path, expected",
-    [
-        ("int", 3, TypeError), ("none", None, TypeError), ("list", ["a.obj"], TypeError),
-        ("bytes", b"a.obj", TypeError), ("missing file", "no/such/file.obj", FileNotFoundError),
-        ("not an obj", "BAD", ValueError), ("short vertex line", "v 1 2\nf 1 2 3\n", ValueError),
-        ("a good obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", OK),
-    ],
-)
+@pytest.mark.parametrize("label, path, expected", PATHS)
 def test_load_arguments(tmp_path: Any, label: str, path: Any, expected: Any) -> None:
     from conftest import need
 
     need("trimesh")  # toonmesh.load reads through trimesh
-    if isinstance(path, str) and path.startswith(("v ", "BAD")):
-        path = _obj_file(str(tmp_path), path.replace("BAD", "this is not an obj file\nf a b c\n"))
+    result = _read(tm.load, tmp_path, path, expected)
     if expected == OK:
-        (mesh,) = tm.load(path)
+        (mesh,) = result
         assert mesh.vertices.shape == (3, 3) and mesh.faces.tolist() == [[0, 1, 2]]
-        return
-    with pytest.raises(expected) as info:
-        tm.load(path)
-    if expected is TypeError:
-        assert str(info.value).startswith("path:")
+    elif expected is TypeError:
+        assert result[1].startswith("path:")
     elif isinstance(path, str):
-        assert str(info.value).startswith(path)  # the file, then what is wrong with it
+        assert result[1].startswith(result[0])  # the file, then what is wrong with it
