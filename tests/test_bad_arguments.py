@@ -835,36 +835,29 @@ CASES += SETTING_CASES + [_replace_case(c) for c in SETTING_CASES] + [
 
 # ------------------------------------------------------------------------------------------------
 # The viewer (toonmesh.Viewer): each call on a fresh 16x16 viewer of the shared handle; the result
-# is its frame (or the snapshot).
+# is its frame (or the snapshot). A render's strokes and SVG: a small render's tapered lines.
 
 
-def _viewer(**kw: Any) -> Any:
-    v = tm.Viewer(renderer=RENDERER, **kw)
-    try:
-        return v.frame
-    finally:
-        v.close()
-
-
-def _viewer_call(method: str) -> Callable[..., Any]:
+def _viewer_call(method: str = "") -> Callable[..., Any]:
+    """``method`` on a fresh viewer (its constructor where "")."""
     def call(**kw: Any) -> Any:
-        v = tm.Viewer(HANDLE, renderer=RENDERER, **SMALL)
+        v = tm.Viewer(HANDLE, renderer=RENDERER, **SMALL) if method else tm.Viewer(renderer=RENDERER, **kw)
         try:
-            result = getattr(v, method)(**kw)
+            result = getattr(v, method)(**kw) if method else None
             return v.frame if result is None else result
         finally:
             v.close()
-
     return call
 
 
 DRAG = Number(-1e6, 1e6)
+LINES = tm.render(V, F, outlines=tm.Outlines("mesh", taper=5.0), outputs=("lines",), width=64, height=64)
+STROKE_PARAMS = [Param("smooth", Number(0.0, 4096.0)), Param("simplify", POSITIVE)]
 TURNTABLES = tempfile.mkdtemp(prefix="toonmesh-bad-arguments-turntable-")
 atexit.register(shutil.rmtree, TURNTABLES, ignore_errors=True)
 VIEWER_SETTINGS = [p for p in FRAME if p.name != "outputs"]  # a viewer shows the colour image
-
 CASES += [
-    Case("Viewer", _viewer,
+    Case("Viewer", _viewer_call(),
          dict(vertices=V, faces=F, normals="smooth", image_format="png", drag_scale=0.5, controls=False, **SMALL),
          [Param("vertices", VERTICES), Param("faces", FACES), NORMALS_PARAM, Param("image_format", Name(("png", "jpeg"))),
           Param("drag_scale", Number(0.05, 1.0)), Param("controls", Flag())]),
@@ -874,26 +867,15 @@ CASES += [
     Case("Viewer.set", _viewer_call("set"), dict(SMALL, outlines="mesh", msaa=1, supersample=1), VIEWER_SETTINGS),
     Case("Viewer.snapshot", _viewer_call("snapshot"), _frame(), FRAME),
     Case("Viewer.view_from", _viewer_call("view_from"), dict(axis="+x"), [Param("axis", Name(tm.viewer.AXES))]),
-    # the path's checks: tests/test_viewer_lifetime.py
-    Case("Viewer.turntable", _viewer_call("turntable"),
+    Case("Viewer.turntable", _viewer_call("turntable"),  # the path's checks: tests/test_viewer_lifetime.py
          dict(path=os.path.join(TURNTABLES, "turn.gif"), seconds=0.5, fps=4),
          [Param("seconds", Number(0, 600, open_lo=True, slow_above=2)), Param("fps", Integer(1, 60))]),
-    # the path's checks: tests/test_render_many.py
-    Case("RenderStack.save", RENDERER.render_many(HANDLE, [tm.Camera.fit(), tm.Camera.fit(turn=90)], **SMALL).save,
+    Case("RenderStack.save",  # the path's checks: tests/test_render_many.py
+         RENDERER.render_many(HANDLE, [tm.Camera.fit(), tm.Camera.fit(turn=90)], **SMALL).save,
          dict(path=os.path.join(TURNTABLES, "stack.gif"), fps=4, progress=False),
          [Param("fps", Integer(1, 60)), Param("progress", Flag())]),
     # its only argument is the path: tests/test_viewer_draft.py checks it
     Case("Viewer.to_html", _viewer_call("to_html"), dict(path=os.path.join(TURNTABLES, "page.html")), []),
-]
-
-
-# ------------------------------------------------------------------------------------------------
-# A render's strokes and SVG: a small render's lines, tapered so that their widths vary.
-
-LINES = tm.render(V, F, outlines=tm.Outlines("mesh", taper=5.0), outputs=("lines",), width=64, height=64)
-STROKE_PARAMS = [Param("smooth", Number(0.0, 4096.0)), Param("simplify", POSITIVE)]
-
-CASES += [
     Case("RenderResult.strokes", LINES.strokes, dict(smooth=1.0, simplify=0.25), STROKE_PARAMS),
     Case("RenderResult.svg", LINES.svg, dict(order="drawing", simplify=0.25, smooth=1.0, widths="auto"),
          STROKE_PARAMS + [Param("order", Name(("drawing", "plotter"))), Param("widths", Name(("auto", "kind", "point")))]),
@@ -931,7 +913,6 @@ def mesh_arguments(fewer: Any) -> Table:
 IMG8 = (np.random.default_rng(5).random((9, 11, 4)) * 255).astype(np.uint8)
 COLOUR_AND_LINES = tm.render(V, F, outlines="mesh", outputs=("color", "lines"), width=11, height=9)
 DEPTH_ONLY = tm.render(V, F, outputs=("depth",), width=11, height=9)
-
 IMAGES_TO_COMPARE = (
     ("uint8 RGBA", IMG8, OK), ("floats in [0, 1]", IMG8 / 255.0, OK),
     ("float32", (IMG8 / 255.0).astype(np.float32), OK), ("int16 levels", IMG8.astype(np.int16), OK),
@@ -946,7 +927,6 @@ IMAGES_TO_COMPARE = (
     ("strings", IMG8.astype(str), TypeError), ("object", IMG8.astype(object), TypeError),
     ("a string", "image.png", TypeError), ("bytes", b"\x89PNG", TypeError),
 )
-
 DRAWINGS = (
     ("a render", LINES, OK), ("its SVG", LINES.svg(), OK), ("its filled SVG", LINES.svg(widths="point"), OK),
     ("a list of lines", list(LINES.lines), OK), ("a tuple of lines", tuple(LINES.lines), OK), ("no lines", [], OK),
@@ -965,7 +945,6 @@ DRAWINGS = (
 PEER_VERTICES = tuple(p for p in VERTICES if p[0] not in ("huge but finite", "tiny"))
 PEER_FACES = tuple(p for p in FACES if p[0] not in ("one face",))
 PEER_ITERATIONS = Param("iterations", Integer(0, 10**6, slow_above=20), none=OK)
-
 SNAPSHOTS = tempfile.mkdtemp(prefix="toonmesh-bad-arguments-")
 atexit.register(shutil.rmtree, SNAPSHOTS, ignore_errors=True)
 
@@ -983,7 +962,6 @@ def _snapshot_call(**kw: Any) -> Any:
 
 SHARE = Param("share", Number(0.0, 1.0))
 COMPARED_MESHES = [Param("actual", mesh_arguments(OK)), Param("expected", mesh_arguments(OK))]
-
 POSITIVE_TOLERANCE = Number(0.0, math.inf, open_hi=True)
 SNAPSHOT_VALUES = (("a render", COLOUR_AND_LINES, OK), ("an image", IMG8, OK), ("an SVG", LINES.svg(), OK),
                    ("lines", list(LINES.lines), OK), ("not SVG", "x", ValueError), ("an int", 3, TypeError))
@@ -991,7 +969,6 @@ SNAPSHOT_VALUES = (("a render", COLOUR_AND_LINES, OK), ("an image", IMG8, OK), (
 FAMILY = {m["method"]: next(k["choices"] for k in m["keywords"] if k["name"] == "preset")
           for m in SMOOTHING if any(k["name"] == "preset" for k in m["keywords"])}
 PEERS = {peer: tuple(m for m, presets in FAMILY.items() if peer in presets) for peer in ("trimesh", "pymeshlab")}
-
 CASES += [
     Case("testing.assert_mesh_close", testing.assert_mesh_close,
          dict(actual=(V, F), expected=(V, F), rtol=1e-6, atol=0.0, check_faces=True),
@@ -1008,10 +985,10 @@ CASES += [
            + ([SHARE] if extra else []), also=(AssertionError,))
       for name, extra in (("assert_drawings_close", {"share": 0.005}), ("drawing_difference", {}))],
     Case("testing.Snapshot", _snapshot, dict(directory=SNAPSHOTS, test_name="probe", update=False, written=None),
-         [Param("directory", ((("a str", SNAPSHOTS, OK), ("a Path", Path(SNAPSHOTS), OK),
-                                    ("an int", 3, TypeError), ("bytes", SNAPSHOTS.encode(), TypeError)))),
-          Param("test_name", ((("a name", "test_x[gl]", OK), ("odd characters", "a/b c:d", OK),
-                                    ("empty", "", ValueError), ("an int", 3, TypeError)))),
+         [Param("directory", (("a str", SNAPSHOTS, OK), ("a Path", Path(SNAPSHOTS), OK), ("an int", 3, TypeError),
+                              ("bytes", SNAPSHOTS.encode(), TypeError))),
+          Param("test_name", (("a name", "test_x[gl]", OK), ("odd characters", "a/b c:d", OK),
+                              ("empty", "", ValueError), ("an int", 3, TypeError))),
           Param("update", Flag()), Param("written", ((("a list", [], OK), ("a tuple", (), TypeError))), none=OK)]),
     Case("testing.Snapshot(call)", _snapshot_call,
          dict(value=COLOUR_AND_LINES, name=None, kind="auto", levels=8, pixels=1.0, share=None),
