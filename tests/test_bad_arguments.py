@@ -27,7 +27,7 @@ import tempfile
 import time
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any, Callable, Dict, List, Optional, Set, Tuple
+from typing import Any, Callable, Dict, List, NamedTuple, Optional, Set, Tuple
 
 import numpy as np
 import pytest
@@ -48,16 +48,13 @@ Probes = List[Tuple[str, Any, Any]]
 Table = Tuple[Tuple[str, Any, Any], ...]  # a compound argument's probes
 
 
-@dataclass(frozen=True)
-class Flag:
-    """True/False or a NumPy bool."""
+FLAG = "flag"  # True/False or a NumPy bool
 
 
 @dataclass(frozen=True)
 class Number:
     """An int or float (or NumPy number) in [lo, hi] (open ends where asked), never NaN; legal
     values above ``slow_above`` would take long, so they are not probed."""
-
     lo: float
     hi: float
     open_lo: bool = False
@@ -73,7 +70,6 @@ class Number:
 class Integer:
     """An int (or NumPy integer) in [lo, hi] (and in `only` where given); an int beyond 64 bits
     is refused with ValueError."""
-
     lo: int
     hi: int
     slow_above: float = math.inf
@@ -91,7 +87,6 @@ class Integer:
 class Name:
     """A str from `valid` (case-insensitively where `any_case`); `invalid`: names that exist
     elsewhere but not here; `more`: probes of other forms it takes (an Outlines object)."""
-
     valid: Tuple[str, ...]
     invalid: Tuple[str, ...] = ()
     any_case: bool = False
@@ -99,18 +94,13 @@ class Name:
     more: Tuple[Tuple[str, Any, Any], ...] = ()
 
 
-@dataclass(frozen=True)
-class Refused:
-    """A refusal whose message must also contain `hint`."""
-
-    exc: Any
-    hint: str
+Refused = NamedTuple("Refused", [("exc", Any), ("hint", str)])  # a refusal whose message also contains `hint`
 
 
 @dataclass
 class Param:
     name: str
-    kind: Any  # Flag, Number, Integer, Name or a compound argument's probes
+    kind: Any  # FLAG, Number, Integer, Name or a compound argument's probes
     none: Any = TypeError  # what None gives: OK (the default) or an exception
     also: Tuple[type, ...] = ()  # extra legal outcomes (a GPU that is not there)
 
@@ -119,7 +109,6 @@ class Param:
 class Case:
     """One public function or method: `call(**base)` is a valid call; `also`: documented domain
     errors a legal probe may raise."""
-
     name: str
     call: Callable[..., Any]
     base: Dict[str, Any]
@@ -161,7 +150,7 @@ def probes(p: Param) -> Probes:
             *([(str(v), v) for v in range(k.lo + 1, k.hi)] if k.hi - k.lo <= 8 else []),
         ]) + [("float", 2.5, TypeError), ("integral float", 2.0, TypeError), ("nan", float("nan"), TypeError),
               ("bool", True, TypeError), ("numpy bool", np.False_, TypeError), ("string", "3", TypeError)] + none
-    if isinstance(k, Flag):
+    if k == FLAG:
         return [("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
                 ("numpy False", np.bool_(False), OK), ("one", 1, TypeError), ("zero", 0, TypeError),
                 ("string no", "no", TypeError), ("empty string", "", TypeError), ("list", [True], TypeError),
@@ -179,6 +168,7 @@ def probes(p: Param) -> Probes:
 
 V, F = tm.shapes.icosphere(1, noise=0.05, seed=2)  # 42 vertices, 80 faces
 N = len(V)
+MESH = dict(vertices=V, faces=F)
 
 
 def _with(a: np.ndarray, where: Tuple[int, ...], value: float) -> np.ndarray:
@@ -200,7 +190,6 @@ VERTICES = (
     ("flat", V.ravel().copy(), ValueError), ("empty", np.zeros((0, 3)), ValueError),
     ("scalar", np.float64(1.0), ValueError), ("ragged list", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
 )
-
 FACES = (
     ("int64", F, OK), ("int32", F.astype(np.int32), OK), ("uint32", F.astype(np.uint32), OK),
     ("uint64", F.astype(np.uint64), OK), ("big-endian int32", F.astype(">i4"), OK),
@@ -215,7 +204,6 @@ FACES = (
     ("flat", F.ravel().copy(), ValueError), ("empty", np.zeros((0, 3), np.int64), ValueError),
     ("a string", "faces", TypeError),
 )
-
 PINNED = (
     ("indices", np.array([0, 5]), OK), ("list", [0, 5], OK), ("tuple of bools", tuple(i < 3 for i in range(N)), OK),
     ("bool mask", np.arange(N) < 3, OK), ("int8", np.array([1], np.int8), OK), ("uint16", np.array([1], np.uint16), OK),
@@ -246,7 +234,6 @@ def vec3(zero: Any) -> Table:
 
 
 EDGE_PAIRS = np.array([[0, 1], [1, 2], [2, 0], [3, 4]])
-
 EDGES = (
     ("int64", EDGE_PAIRS, OK), ("int32", EDGE_PAIRS.astype(np.int32), OK), ("uint8", EDGE_PAIRS.astype(np.uint8), OK),
     ("big-endian", EDGE_PAIRS.astype(">i8"), OK), ("list", EDGE_PAIRS.tolist(), OK),
@@ -255,12 +242,9 @@ EDGES = (
     ("huge", np.array([[0, 2**40]]), IndexError), ("shape (K, 3)", np.array([[0, 1, 2]]), ValueError),
     ("flat", np.array([0, 1]), ValueError), ("a string", "edges", TypeError),
 )
-
 # segments: an index past the vertices is out of range too
 SEGMENT_EDGES = (EDGES + (("index N", np.array([[0, N]]), IndexError),))
-
 IMG = np.random.default_rng(3).random((9, 11))
-
 IMAGES = (
     ("float64", IMG, OK), ("float32", IMG.astype(np.float32), OK), ("float16", IMG.astype(np.float16), OK),
     ("big-endian", IMG.astype(">f8"), OK), ("uint8", (IMG * 255).astype(np.uint8), OK),
@@ -273,13 +257,11 @@ IMAGES = (
     ("1-D", IMG[0].copy(), ValueError), ("4-D", IMG[None, :, :, None].copy(), ValueError),
     ("empty", np.zeros((0, 4)), ValueError), ("a string", "image", TypeError),
 )
-
 MASKS = (
     ("bool", IMG > 0.3, OK), ("uint8", (IMG > 0.3).astype(np.uint8), OK),
     ("wrong shape", np.ones((3, 3), bool), ValueError), ("strings", (IMG > 0.3).astype(str), TypeError),
     ("a string", "mask", TypeError),
 )
-
 PROFILES = (  # shapes.lathe: (radius, height) points, poles only at the ends
     ("list of pairs", [(0, 0), (1, 0.5), (0, 1)], OK), ("open ends", [(1.0, 0.0), (1.0, 1.0)], OK),
     ("int", np.array([[0, 0], [2, 1], [0, 2]]), OK), ("float32", np.array([[0, 0], [1, 1], [0, 2]], np.float32), OK),
@@ -293,7 +275,6 @@ PROFILES = (  # shapes.lathe: (radius, height) points, poles only at the ends
     ("complex", np.array([[0, 0], [1j, 1], [0, 2]]), TypeError), ("strings", [("a", "b"), ("c", "d")], TypeError),
     ("ragged", [(0, 0), (1,), (0, 2)], TypeError), ("a string", "profile", TypeError),
 )
-
 NORMAL_BUF = np.dstack([IMG, 1 - IMG, np.ones_like(IMG)]).astype(np.float32)
 DEPTH_BUF = 1.0 + IMG
 
@@ -311,7 +292,6 @@ def buffers(name: str, good: np.ndarray) -> Table:
 
 # ------------------------------------------------------------------------------------------------
 # Parameters generated from the core's descriptions, with what a description cannot say
-
 # A described rule that is not a range, as the values it allows (a rule the sweep does not know
 # fails the collection: add it here).
 GPU = tm.gpu_info()
@@ -339,7 +319,9 @@ for _params in [m["keywords"] for m in SMOOTHING] + [c[3] for cs in SETTINGS.val
 def _integer(bound: float, excluded: bool, step: int) -> int:
     """An integer range's end: the next integer inward where ``bound`` is excluded, the 64-bit
     limit where it is infinite."""
-    return (int(bound) + step if excluded else int(bound)) if math.isfinite(bound) else (2**63 - 1 if bound > 0 else -(2**63))
+    if not math.isfinite(bound):
+        return 2**63 - 1 if bound > 0 else -(2**63)
+    return int(bound) + step if excluded else int(bound)
 
 
 def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str, Any],
@@ -359,7 +341,7 @@ def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str
         return Param(name, Integer(_integer(lo, open_lo, 1), _integer(hi, open_hi, -1), slow, RULES.get(rule)),
                      none=none)
     if kind == "bool":
-        return Param(name, Flag(), none=none)
+        return Param(name, FLAG, none=none)
     if kind == "choice":
         invalid = tuple(sorted(CHOICES[name] - set(d["choices"])))
         return Param(name, Name(tuple(d["choices"]), invalid, any_case=owner.startswith(ANY_CASE)), none=none)
@@ -368,19 +350,16 @@ def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str
     return Param(name, probes, none=none)
 
 
-def _mesh(**kw: Any) -> Dict[str, Any]:
-    return dict(vertices=V, faces=F, **kw)
-
-
 # The smoothing functions: the mesh and the pinned vertices here, every keyword described.
 CASES: List[Case] = [
-    Case(f"smooth.{m['method']}", getattr(tm.smooth, m["method"]), _mesh(),
+    Case(f"smooth.{m['method']}", getattr(tm.smooth, m["method"]), MESH,
          [Param("vertices", VERTICES), Param("faces", FACES), Param("pinned", PINNED, none=OK)]
          + [described_param(f"smooth.{m['method']}", k, OK if k["optional"] else TypeError, {},
                             {k2["name"]: k2["default"] for k2 in m["keywords"]}) for k in m["keywords"]],
          also=(tm.ConvergenceError,) if m["method"] == "implicit" else ())
     for m in SMOOTHING
 ]
+
 
 # ------------------------------------------------------------------------------------------------
 # Hand-written: the edges, shapes and threads
@@ -399,26 +378,25 @@ DIRECTION = Param("direction", vec3(ValueError), none=ValueError)
 AN_EYE, A_DIRECTION = dict(eye=(0.3, 0.2, 5.0)), dict(direction=(0.3, 0.2, -1.0))
 # Suggestive contours' derivative threshold and curvature smoothing (None: their defaults).
 SUGGESTIVE = [Param("threshold", POSITIVE, none=OK), Param("smoothing", POSITIVE, none=OK)]
-WELD = Param("weld", Flag())
+WELD = Param("weld", FLAG)
 SEGMENTS = Param("segments", Integer(3, 4096, slow_above=64))
-
 CASES += [
-    *[Case(name, call, _mesh(crease_angle=20.0, weld=False), [*MESH_PARAMS, CREASE, WELD])
+    *[Case(name, call, dict(MESH, crease_angle=20.0, weld=False), [*MESH_PARAMS, CREASE, WELD])
       for name, call in (("edges.feature_edges", te.feature_edges), ("edges.EdgeIndex", te.EdgeIndex))],
-    *[Case(name, call, _mesh(**AN_EYE, weld=False), [*MESH_PARAMS, EYE, WELD])
+    *[Case(name, call, dict(MESH, **AN_EYE, weld=False), [*MESH_PARAMS, EYE, WELD])
       for name, call in (("edges.silhouette", te.silhouette), ("edges.contours", te.contours))],
-    Case("edges.silhouette(direction=)", te.silhouette, _mesh(**A_DIRECTION), [DIRECTION]),
+    Case("edges.silhouette(direction=)", te.silhouette, dict(MESH, **A_DIRECTION), [DIRECTION]),
     Case("edges.EdgeIndex.feature_edges", EDGE_INDEX.feature_edges, dict(crease_angle=20.0), [CREASE]),
     *[Case(f"edges.EdgeIndex.{name}", getattr(EDGE_INDEX, name), AN_EYE, [EYE]) for name in ("silhouette", "contours")],
     Case("edges.EdgeIndex.outlines", EDGE_INDEX.outlines, dict(**A_DIRECTION, kinds=False),
-         [DIRECTION, Param("kinds", Flag())]),
+         [DIRECTION, Param("kinds", FLAG)]),
     Case("edges.EdgeIndex.suggestive_contours", EDGE_INDEX.suggestive_contours,
          dict(**A_DIRECTION, threshold=0.01, smoothing=1.0), [DIRECTION, *SUGGESTIVE]),
     Case("edges.EdgeIndex.segments", EDGE_INDEX.segments, dict(edges=EDGE_PAIRS), [Param("edges", SEGMENT_EDGES)]),
-    Case("edges.curvature", te.curvature, _mesh(smoothing=1.0),
+    Case("edges.curvature", te.curvature, dict(MESH, smoothing=1.0),
          [Param("vertices", CURVED_VERTICES), Param("faces", FACES), Param("smoothing", POSITIVE)]),
     Case("edges.suggestive_contours", te.suggestive_contours,
-         _mesh(**A_DIRECTION, threshold=0.01, smoothing=1.0, weld=True),
+         dict(MESH, **A_DIRECTION, threshold=0.01, smoothing=1.0, weld=True),
          [Param("vertices", CURVED_VERTICES), Param("faces", FACES), DIRECTION, *SUGGESTIVE, WELD]),
     Case("edges.chains", te.chains, dict(edges=EDGE_PAIRS), [Param("edges", EDGES)]),
     Case("edges.segments", te.segments, dict(vertices=V, edges=EDGE_PAIRS),
@@ -456,6 +434,7 @@ OTHER_HANDLE = tm.Renderer().add_mesh(V, F)  # a mesh of another renderer
 REMOVED_HANDLE = RENDERER.add_mesh(V, F)
 RENDERER.remove_mesh(REMOVED_HANDLE)
 SMALL = dict(width=16, height=16)
+FRAMED = dict(SMALL, outputs=("color", "normal", "depth"), outlines="mesh", msaa=1, supersample=1)
 
 
 def colours(alpha: bool) -> Table:
@@ -671,13 +650,10 @@ TEXTURES = (
     ("int64", TEXTURE.astype(np.int64), TypeError), ("a file name", "checker.png", TypeError),
 )
 TEXTURED = dict(uv=UV, texture=TEXTURE, texture_filter=None, texture_wrap=None, alpha_cutoff=None)
-TEXTURE_PARAMS = [
-    Param("uv", UVS, none=ValueError),  # a texture needs uv
-    Param("texture", TEXTURES, none=ValueError),  # and uv a texture
-    Param("texture_filter", Name(("linear", "nearest")), none=OK),
-    Param("texture_wrap", Name(("repeat", "clamp", "mirror")), none=OK),
-    Param("alpha_cutoff", Number(0.0, 1.0), none=OK),
-]
+TEXTURE_PARAMS = [  # a texture needs uv, and uv a texture
+    Param("uv", UVS, none=ValueError), Param("texture", TEXTURES, none=ValueError),
+    Param("texture_filter", Name(("linear", "nearest")), none=OK), Param("alpha_cutoff", Number(0.0, 1.0), none=OK),
+    Param("texture_wrap", Name(("repeat", "clamp", "mirror")), none=OK)]
 
 
 def mesh_colours(n: int) -> Table:
@@ -702,17 +678,10 @@ BOTH_COLOURS = (("with vertex colours too", np.zeros((len(F), 3)), ValueError),)
 MESH_COLOURS = [Param("vertex_colors", mesh_colours(N), none=OK), Param("face_colors", mesh_colours(len(F)), none=OK)]
 
 
-def _frame(**kw: Any) -> Dict[str, Any]:
-    return dict(SMALL, outputs=("color", "normal", "depth"), outlines="mesh", msaa=1, supersample=1, **kw)
-
-
 def _rendered(make: Callable[..., Any], use: Callable[[Any], Dict[str, Any]]) -> Callable[..., Any]:
     """`make(**kw)`, and a render that uses what it made: what a constructor accepts must render.
-
     A camera is checked for itself when made, and for the scene when used: settings that give
-    it non-finite matrices for this scene (a margin of 1e308, say) are refused then, naming it.
-    """
-
+    it non-finite matrices for this scene (a margin of 1e308, say) are refused then, naming it."""
     def call(**kw: Any) -> Any:
         made = make(**kw)
         try:
@@ -721,16 +690,13 @@ def _rendered(make: Callable[..., Any], use: Callable[[Any], Dict[str, Any]]) ->
             if isinstance(made, tm.Camera) and str(exc).startswith("camera: ") and "non-finite" in str(exc):
                 return made, str(exc)
             raise
-
     call.make, call.use = make, use  # type: ignore[attr-defined]
     return call
 
 
-# Huge or tiny meshes render, but their depths leave float32: no "depth" in these renders.
-
-
 def _added(**kw: Any) -> Any:
-    """Renderer.add_mesh, then a render of the mesh (which is removed after it)."""
+    """Renderer.add_mesh, then a render of the mesh (which is removed after it). Huge or tiny
+    meshes render, but their depths leave float32: no "depth" in these renders."""
     handle = RENDERER.add_mesh(**kw)
     try:
         return handle, RENDERER.render(handle, **SMALL, outputs=("color", "normal"))
@@ -740,11 +706,6 @@ def _added(**kw: Any) -> Any:
 
 def _mesh_rendered(**kw: Any) -> Any:
     return RENDERER.render(tm.Mesh(**kw), **SMALL, outputs=("color", "normal"))
-
-
-def _removed(mesh: Any) -> None:
-    """Renderer.remove_mesh on a freshly added mesh, or on `mesh` when it is not a handle of it."""
-    RENDERER.remove_mesh(RENDERER.add_mesh(V, F) if mesh is HANDLE else mesh)
 
 
 def described_params(name: str, required: int, params: List[Dict[str, Any]]) -> List[Param]:
@@ -760,8 +721,7 @@ CAMERA = described_params("RenderOptions", 0, [p for p in OPTIONS if p["name"] =
 
 
 def _options_of(o: Any) -> Dict[str, Any]:
-    """The keywords that make `o` again, read from its fields (a RenderOptions made from
-    keywords renders as those keywords do)."""
+    """The keywords that make `o` again, read from its fields."""
     return {p["name"]: getattr(o, p["name"]) for p in OPTIONS}
 
 
@@ -800,27 +760,29 @@ BACKEND_PARAM = Param("backend", BACKEND, none=OK, also=(tm.GpuUnavailableError,
 NORMALS_PARAM = Param("normals", NORMALS, none=OK)  # None: the default
 SMOOTH_ITERATIONS = Param("smooth_iterations", Integer(0, 10**6, slow_above=3))
 CASES += SETTING_CASES + [_replace_case(c) for c in SETTING_CASES] + [
-    Case("render", tm.render, dict(vertices=V, faces=F, **dict(_frame(), outputs=("color", "normal"))),
+    Case("render", tm.render, dict(vertices=V, faces=F, **dict(FRAMED, outputs=("color", "normal"))),
          [Param("vertices", VERTICES, none=OK), Param("faces", FACES), NORMALS_PARAM,  # no "depth": see _added
           SMOOTH_ITERATIONS, *CAMERA, BACKEND_PARAM, *FRAME]),
-    Case("render(no outlines)", tm.render, dict(vertices=V, faces=F, **dict(_frame(), outlines=None)),
+    Case("render(no outlines)", tm.render, dict(vertices=V, faces=F, **dict(FRAMED, outlines=None)),
          [Param("outputs", OUTPUTS_WITHOUT_OUTLINES, none=OK)]),
     Case("Renderer", tm.Renderer, dict(backend=None), [BACKEND_PARAM]),
     Case("gpu_info", tm.gpu_info, dict(backend=None), [BACKEND_PARAM]),
-    Case("Renderer.render", RENDERER.render, dict(meshes=HANDLE, **_frame()),
+    Case("Renderer.render", RENDERER.render, dict(meshes=HANDLE, **FRAMED),
          [Param("meshes", MESHES, none=OK), *CAMERA, *FRAME]),
     Case("Renderer.render_many", RENDERER.render_many,
-         dict(meshes=HANDLE, cameras=[tm.Camera.fit(), tm.Camera.fit((1.0, 0.0, 0.0))], **_frame()),
+         dict(meshes=HANDLE, cameras=[tm.Camera.fit(), tm.Camera.fit((1.0, 0.0, 0.0))], **FRAMED),
          [Param("meshes", MESHES, none=OK), Param("cameras", CAMERAS), *FRAME]),
     Case("RenderOptions", lambda **kw: RENDERER.render(HANDLE, **_options_of(tm.RenderOptions(**kw))),
-         _frame(), [*CAMERA, *FRAME]),
+         FRAMED, [*CAMERA, *FRAME]),
     Case("RenderOptions.replace",
          lambda **kw: RENDERER.render(HANDLE, **_options_of(tm.RenderOptions(width=8).replace(**kw))),
-         _frame(), [*CAMERA, *FRAME]),
+         FRAMED, [*CAMERA, *FRAME]),
     Case("Renderer.add_mesh", _added, dict(vertices=V, faces=F, normals="smooth", smooth_iterations=0),
          [Param("vertices", VERTICES), Param("faces", FACES), NORMALS_PARAM, SMOOTH_ITERATIONS, *MESH_COLOURS]),
     Case("Renderer.add_mesh(textured)", _added, dict(vertices=V, faces=F, **TEXTURED), TEXTURE_PARAMS),
-    Case("Renderer.remove_mesh", _removed, dict(mesh=HANDLE),
+    # on a freshly added mesh, or on `mesh` when it is not a handle of it
+    Case("Renderer.remove_mesh", lambda mesh: RENDERER.remove_mesh(RENDERER.add_mesh(V, F) if mesh is HANDLE else mesh),
+         dict(mesh=HANDLE),
          [Param("mesh", ((("a handle", HANDLE, OK), ("a removed handle", REMOVED_HANDLE, OK),
                                ("a handle of another renderer", OTHER_HANDLE, ValueError),
                                ("a mesh id", HANDLE.id, TypeError), ("a Mesh", tm.Mesh(V, F), TypeError))))]),
@@ -860,12 +822,12 @@ CASES += [
     Case("Viewer", _viewer_call(),
          dict(vertices=V, faces=F, normals="smooth", image_format="png", drag_scale=0.5, controls=False, **SMALL),
          [Param("vertices", VERTICES), Param("faces", FACES), NORMALS_PARAM, Param("image_format", Name(("png", "jpeg"))),
-          Param("drag_scale", Number(0.05, 1.0)), Param("controls", Flag())]),
+          Param("drag_scale", Number(0.05, 1.0)), Param("controls", FLAG)]),
     Case("Viewer.orbit", _viewer_call("orbit"), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)]),
     Case("Viewer.pan", _viewer_call("pan"), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)]),
     Case("Viewer.zoom", _viewer_call("zoom"), dict(factor=1.5), [Param("factor", Number(1e-3, 1e3))]),
     Case("Viewer.set", _viewer_call("set"), dict(SMALL, outlines="mesh", msaa=1, supersample=1), VIEWER_SETTINGS),
-    Case("Viewer.snapshot", _viewer_call("snapshot"), _frame(), FRAME),
+    Case("Viewer.snapshot", _viewer_call("snapshot"), FRAMED, FRAME),
     Case("Viewer.view_from", _viewer_call("view_from"), dict(axis="+x"), [Param("axis", Name(tm.viewer.AXES))]),
     Case("Viewer.turntable", _viewer_call("turntable"),  # the path's checks: tests/test_viewer_lifetime.py
          dict(path=os.path.join(TURNTABLES, "turn.gif"), seconds=0.5, fps=4),
@@ -873,7 +835,7 @@ CASES += [
     Case("RenderStack.save",  # the path's checks: tests/test_render_many.py
          RENDERER.render_many(HANDLE, [tm.Camera.fit(), tm.Camera.fit(turn=90)], **SMALL).save,
          dict(path=os.path.join(TURNTABLES, "stack.gif"), fps=4, progress=False),
-         [Param("fps", Integer(1, 60)), Param("progress", Flag())]),
+         [Param("fps", Integer(1, 60)), Param("progress", FLAG)]),
     # its only argument is the path: tests/test_viewer_draft.py checks it
     Case("Viewer.to_html", _viewer_call("to_html"), dict(path=os.path.join(TURNTABLES, "page.html")), []),
     Case("RenderResult.strokes", LINES.strokes, dict(smooth=1.0, simplify=0.25), STROKE_PARAMS),
@@ -938,7 +900,6 @@ DRAWINGS = (
     ("string points", [np.array([["a", "b"]])], TypeError), ("an array", np.zeros((4, 2)), TypeError),
     ("bytes", b"<svg/>", TypeError), ("an int", 3, TypeError),
 )
-
 # A mesh every peer smooths as toonmesh does: the vertex and face probes but those the peers
 # themselves cannot take (trimesh raises on unreferenced vertices after the largest face index;
 # values near float64's limits overflow inside the peers).
@@ -947,17 +908,6 @@ PEER_FACES = tuple(p for p in FACES if p[0] not in ("one face",))
 PEER_ITERATIONS = Param("iterations", Integer(0, 10**6, slow_above=20), none=OK)
 SNAPSHOTS = tempfile.mkdtemp(prefix="toonmesh-bad-arguments-")
 atexit.register(shutil.rmtree, SNAPSHOTS, ignore_errors=True)
-
-
-def _snapshot(**kw: Any) -> Any:
-    """A Snapshot, as what it holds."""
-    s = testing.Snapshot(**kw)
-    return (s.directory, s.test_name, s.update)
-
-
-def _snapshot_call(**kw: Any) -> Any:
-    """A Snapshot called with ``kw``, writing its references (``update``): the reference's name."""
-    return testing.Snapshot(SNAPSHOTS, "probe", update=True)(**kw).name
 
 
 SHARE = Param("share", Number(0.0, 1.0))
@@ -973,7 +923,7 @@ CASES += [
     Case("testing.assert_mesh_close", testing.assert_mesh_close,
          dict(actual=(V, F), expected=(V, F), rtol=1e-6, atol=0.0, check_faces=True),
          COMPARED_MESHES + [Param("rtol", POSITIVE_TOLERANCE), Param("atol", POSITIVE_TOLERANCE),
-                            Param("check_faces", Flag())], also=(AssertionError,)),
+                            Param("check_faces", FLAG)], also=(AssertionError,)),
     Case("testing.mesh_difference", testing.mesh_difference, dict(actual=(V, F), expected=(V, F)),
          [Param("actual", mesh_arguments(ValueError)), Param("expected", mesh_arguments(ValueError))]),
     *[Case(f"testing.{name}", getattr(testing, name), dict(actual=IMG8, expected=IMG8, levels=8, **extra),
@@ -984,13 +934,15 @@ CASES += [
            [Param("actual", DRAWINGS), Param("expected", DRAWINGS), Param("pixels", Number(0.0, 1e6))]
            + ([SHARE] if extra else []), also=(AssertionError,))
       for name, extra in (("assert_drawings_close", {"share": 0.005}), ("drawing_difference", {}))],
-    Case("testing.Snapshot", _snapshot, dict(directory=SNAPSHOTS, test_name="probe", update=False, written=None),
+    Case("testing.Snapshot", lambda **kw: (lambda s: (s.directory, s.test_name, s.update))(testing.Snapshot(**kw)),
+         dict(directory=SNAPSHOTS, test_name="probe", update=False, written=None),
          [Param("directory", (("a str", SNAPSHOTS, OK), ("a Path", Path(SNAPSHOTS), OK), ("an int", 3, TypeError),
                               ("bytes", SNAPSHOTS.encode(), TypeError))),
           Param("test_name", (("a name", "test_x[gl]", OK), ("odd characters", "a/b c:d", OK),
                               ("empty", "", ValueError), ("an int", 3, TypeError))),
-          Param("update", Flag()), Param("written", ((("a list", [], OK), ("a tuple", (), TypeError))), none=OK)]),
-    Case("testing.Snapshot(call)", _snapshot_call,
+          Param("update", FLAG), Param("written", ((("a list", [], OK), ("a tuple", (), TypeError))), none=OK)]),
+    # a Snapshot writing its references (update): the reference's name
+    Case("testing.Snapshot(call)", lambda **kw: testing.Snapshot(SNAPSHOTS, "probe", update=True)(**kw).name,
          dict(value=COLOUR_AND_LINES, name=None, kind="auto", levels=8, pixels=1.0, share=None),
          [Param("value", SNAPSHOT_VALUES),
           Param("name", ((("a name", "other", OK), ("empty", "", ValueError), ("an int", 3, TypeError))), none=OK),
@@ -1052,7 +1004,7 @@ def _same(a: Any, b: Any) -> bool:
     if isinstance(a, tm.RenderStack):
         return isinstance(b, tm.RenderStack) and _same(list(a), list(b))
     if isinstance(a, tm.MeshHandle):  # a new upload: another id, the same mesh
-        return isinstance(b, tm.MeshHandle) and (a.n_vertices, a.n_faces, a.normals) == (b.n_vertices, b.n_faces, b.normals)
+        return isinstance(b, tm.MeshHandle) and all(getattr(a, k) == getattr(b, k) for k in ("n_vertices", "n_faces", "normals"))
     if isinstance(a, tm.Renderer):
         return isinstance(b, tm.Renderer) and a.backend == b.backend
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
