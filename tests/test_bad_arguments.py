@@ -177,43 +177,39 @@ def _with(a: np.ndarray, where: Tuple[int, ...], value: float) -> np.ndarray:
     return b
 
 
-VERTICES = (
-    ("float64", V, OK), ("float32", V.astype(np.float32), OK), ("big-endian float64", V.astype(">f8"), OK),
-    ("big-endian float32", V.astype(">f4"), OK), ("fortran order", np.asfortranarray(V), OK),
-    ("strided view", np.repeat(V, 2, axis=1)[:, ::2], OK), ("nested list", V.tolist(), OK),
-    ("huge but finite", V * 1e307, OK), ("tiny", V * 1e-310, OK), ("int64", V.astype(np.int64), TypeError),
-    ("float16", V.astype(np.float16), TypeError), ("complex", V.astype(complex), TypeError), ("bool", V > 0, TypeError),
-    ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError), ("a string", "vertices", TypeError),
-    ("nan", _with(V, (3, 1), np.nan), ValueError), ("inf", _with(V, (3, 1), np.inf), ValueError),
-    ("-inf", _with(V, (0, 0), -np.inf), ValueError), ("shape (N, 2)", V[:, :2].copy(), ValueError),
-    ("shape (N, 4)", np.hstack([V, V[:, :1]]), ValueError), ("shape (N, 3, 1)", V[:, :, None].copy(), ValueError),
-    ("flat", V.ravel().copy(), ValueError), ("empty", np.zeros((0, 3)), ValueError),
-    ("scalar", np.float64(1.0), ValueError), ("ragged list", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
-)
-FACES = (
-    ("int64", F, OK), ("int32", F.astype(np.int32), OK), ("uint32", F.astype(np.uint32), OK),
-    ("uint64", F.astype(np.uint64), OK), ("big-endian int32", F.astype(">i4"), OK),
-    ("big-endian uint64", F.astype(">u8"), OK), ("fortran order", np.asfortranarray(F), OK),
-    ("nested list", F.tolist(), OK), ("one face", F[:1].copy(), OK),
-    ("repeated index", np.vstack([F, [[0, 0, 1]]]), OK), ("int8", F.astype(np.int8), TypeError),
-    ("float", F.astype(float), TypeError), ("bool", F > 0, TypeError), ("strings", F.astype(str), TypeError),
-    ("negative index", _with(F, (5, 2), -1), IndexError), ("index N", _with(F, (5, 2), N), IndexError),
-    ("index 2**40", _with(F, (5, 2), 2**40), IndexError),
-    ("uint64 2**63", _with(F.astype(np.uint64), (0, 0), 2**63), IndexError),
-    ("shape (M, 4)", np.hstack([F, F[:, :1]]), ValueError), ("shape (M, 2)", F[:, :2].copy(), ValueError),
-    ("flat", F.ravel().copy(), ValueError), ("empty", np.zeros((0, 3), np.int64), ValueError),
-    ("a string", "faces", TypeError),
-)
-PINNED = (
-    ("indices", np.array([0, 5]), OK), ("list", [0, 5], OK), ("tuple of bools", tuple(i < 3 for i in range(N)), OK),
-    ("bool mask", np.arange(N) < 3, OK), ("int8", np.array([1], np.int8), OK), ("uint16", np.array([1], np.uint16), OK),
-    ("big-endian int32", np.array([1, 2], ">i4"), OK), ("uint64", np.array([1], np.uint64), OK), ("empty list", [], OK),
-    ("empty float array", np.array([]), OK), ("all", np.arange(N), OK), ("negative", np.array([-1]), IndexError),
-    ("index N", np.array([N]), IndexError), ("uint64 max", np.array([2**64 - 1], np.uint64), IndexError),
-    ("float", np.array([1.0]), TypeError), ("strings", np.array(["1"]), TypeError),
-    ("mask too short", np.ones(N - 1, bool), ValueError), ("2-D array", np.array([[0, 1]]), ValueError),
-    ("2-D list", [[0, 1]], TypeError), ("scalar", 3, TypeError),
-)
+VERTICES = (("float64", V, OK), ("float32", V.astype(np.float32), OK), ("big-endian float64", V.astype(">f8"), OK),
+            ("big-endian float32", V.astype(">f4"), OK), ("fortran order", np.asfortranarray(V), OK),
+            ("strided view", np.repeat(V, 2, axis=1)[:, ::2], OK), ("nested list", V.tolist(), OK),
+            ("huge but finite", V * 1e307, OK), ("tiny", V * 1e-310, OK), ("int64", V.astype(np.int64), TypeError),
+            ("float16", V.astype(np.float16), TypeError), ("complex", V.astype(complex), TypeError),
+            ("bool", V > 0, TypeError), ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError),
+            ("a string", "vertices", TypeError), ("nan", _with(V, (3, 1), np.nan), ValueError),
+            ("inf", _with(V, (3, 1), np.inf), ValueError), ("-inf", _with(V, (0, 0), -np.inf), ValueError),
+            ("shape (N, 2)", V[:, :2].copy(), ValueError), ("shape (N, 4)", np.hstack([V, V[:, :1]]), ValueError),
+            ("shape (N, 3, 1)", V[:, :, None].copy(), ValueError), ("flat", V.ravel().copy(), ValueError),
+            ("empty", np.zeros((0, 3)), ValueError), ("scalar", np.float64(1.0), ValueError),
+            ("ragged list", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError))
+FACES = (("int64", F, OK), ("int32", F.astype(np.int32), OK), ("uint32", F.astype(np.uint32), OK),
+         ("uint64", F.astype(np.uint64), OK), ("big-endian int32", F.astype(">i4"), OK),
+         ("big-endian uint64", F.astype(">u8"), OK), ("fortran order", np.asfortranarray(F), OK),
+         ("nested list", F.tolist(), OK), ("one face", F[:1].copy(), OK),
+         ("repeated index", np.vstack([F, [[0, 0, 1]]]), OK), ("int8", F.astype(np.int8), TypeError),
+         ("float", F.astype(float), TypeError), ("bool", F > 0, TypeError), ("strings", F.astype(str), TypeError),
+         ("negative index", _with(F, (5, 2), -1), IndexError), ("index N", _with(F, (5, 2), N), IndexError),
+         ("index 2**40", _with(F, (5, 2), 2**40), IndexError),
+         ("uint64 2**63", _with(F.astype(np.uint64), (0, 0), 2**63), IndexError),
+         ("shape (M, 4)", np.hstack([F, F[:, :1]]), ValueError), ("shape (M, 2)", F[:, :2].copy(), ValueError),
+         ("flat", F.ravel().copy(), ValueError), ("empty", np.zeros((0, 3), np.int64), ValueError),
+         ("a string", "faces", TypeError))
+PINNED = (("indices", np.array([0, 5]), OK), ("list", [0, 5], OK),
+          ("tuple of bools", tuple(i < 3 for i in range(N)), OK), ("bool mask", np.arange(N) < 3, OK),
+          ("int8", np.array([1], np.int8), OK), ("uint16", np.array([1], np.uint16), OK),
+          ("big-endian int32", np.array([1, 2], ">i4"), OK), ("uint64", np.array([1], np.uint64), OK),
+          ("empty list", [], OK), ("empty float array", np.array([]), OK), ("all", np.arange(N), OK),
+          ("negative", np.array([-1]), IndexError), ("index N", np.array([N]), IndexError),
+          ("uint64 max", np.array([2**64 - 1], np.uint64), IndexError), ("float", np.array([1.0]), TypeError),
+          ("strings", np.array(["1"]), TypeError), ("mask too short", np.ones(N - 1, bool), ValueError),
+          ("2-D array", np.array([[0, 1]]), ValueError), ("2-D list", [[0, 1]], TypeError), ("scalar", 3, TypeError))
 
 
 def vec3(zero: Any) -> Table:
@@ -234,47 +230,44 @@ def vec3(zero: Any) -> Table:
 
 
 EDGE_PAIRS = np.array([[0, 1], [1, 2], [2, 0], [3, 4]])
-EDGES = (
-    ("int64", EDGE_PAIRS, OK), ("int32", EDGE_PAIRS.astype(np.int32), OK), ("uint8", EDGE_PAIRS.astype(np.uint8), OK),
-    ("big-endian", EDGE_PAIRS.astype(">i8"), OK), ("list", EDGE_PAIRS.tolist(), OK),
-    ("empty", np.zeros((0, 2), np.int64), OK), ("empty list", [], OK), ("float", EDGE_PAIRS.astype(float), TypeError),
-    ("bool", EDGE_PAIRS > 1, TypeError), ("negative", np.array([[0, -1]]), IndexError),
-    ("huge", np.array([[0, 2**40]]), IndexError), ("shape (K, 3)", np.array([[0, 1, 2]]), ValueError),
-    ("flat", np.array([0, 1]), ValueError), ("a string", "edges", TypeError),
-)
+EDGES = (("int64", EDGE_PAIRS, OK), ("int32", EDGE_PAIRS.astype(np.int32), OK),
+         ("uint8", EDGE_PAIRS.astype(np.uint8), OK), ("big-endian", EDGE_PAIRS.astype(">i8"), OK),
+         ("list", EDGE_PAIRS.tolist(), OK), ("empty", np.zeros((0, 2), np.int64), OK), ("empty list", [], OK),
+         ("float", EDGE_PAIRS.astype(float), TypeError), ("bool", EDGE_PAIRS > 1, TypeError),
+         ("negative", np.array([[0, -1]]), IndexError), ("huge", np.array([[0, 2**40]]), IndexError),
+         ("shape (K, 3)", np.array([[0, 1, 2]]), ValueError), ("flat", np.array([0, 1]), ValueError),
+         ("a string", "edges", TypeError))
 # segments: an index past the vertices is out of range too
 SEGMENT_EDGES = (EDGES + (("index N", np.array([[0, N]]), IndexError),))
 IMG = np.random.default_rng(3).random((9, 11))
-IMAGES = (
-    ("float64", IMG, OK), ("float32", IMG.astype(np.float32), OK), ("float16", IMG.astype(np.float16), OK),
-    ("big-endian", IMG.astype(">f8"), OK), ("uint8", (IMG * 255).astype(np.uint8), OK),
-    ("int16", (IMG * 1000).astype(np.int16), OK), ("bool", IMG > 0.5, OK), ("channels", np.dstack([IMG, IMG, IMG]), OK),
-    ("fortran order", np.asfortranarray(IMG), OK), ("list", IMG.tolist(), OK), ("one pixel", IMG[:1, :1].copy(), OK),
-    ("huge values", IMG * 1e300, OK), ("tiny values", IMG * 1e-300, OK),
-    ("nan pixel", _with(IMG, (2, 2), np.nan), "nonfinite ok"),
-    ("inf pixel", _with(IMG, (2, 2), np.inf), "nonfinite ok"), ("complex", IMG.astype(complex), TypeError),
-    ("strings", IMG.astype(str), TypeError), ("object", IMG.astype(object), TypeError),
-    ("1-D", IMG[0].copy(), ValueError), ("4-D", IMG[None, :, :, None].copy(), ValueError),
-    ("empty", np.zeros((0, 4)), ValueError), ("a string", "image", TypeError),
-)
-MASKS = (
-    ("bool", IMG > 0.3, OK), ("uint8", (IMG > 0.3).astype(np.uint8), OK),
-    ("wrong shape", np.ones((3, 3), bool), ValueError), ("strings", (IMG > 0.3).astype(str), TypeError),
-    ("a string", "mask", TypeError),
-)
-PROFILES = (  # shapes.lathe: (radius, height) points, poles only at the ends
-    ("list of pairs", [(0, 0), (1, 0.5), (0, 1)], OK), ("open ends", [(1.0, 0.0), (1.0, 1.0)], OK),
-    ("int", np.array([[0, 0], [2, 1], [0, 2]]), OK), ("float32", np.array([[0, 0], [1, 1], [0, 2]], np.float32), OK),
-    ("big-endian", np.array([[0, 0], [1, 1], [0, 2]], ">f8"), OK), ("one point", [(0.0, 0.0)], ValueError),
-    ("empty", np.zeros((0, 2)), ValueError), ("three columns", np.ones((3, 3)), ValueError),
-    ("flat", [0.0, 1.0, 2.0], ValueError), ("nan", [(0, 0), (np.nan, 1), (0, 2)], ValueError),
-    ("inf", [(0, 0), (1, np.inf), (0, 2)], ValueError), ("negative radius", [(0, 0), (-1, 1), (0, 2)], ValueError),
-    ("pole inside", [(1, 0), (0, 1), (1, 2)], ValueError),
-    ("a point twice", [(0, 0), (1, 1), (1, 1), (0, 2)], ValueError), ("two poles", [(0, 0), (0, 1)], ValueError),
-    ("bools", np.array([[False, False], [True, True]]), TypeError),
-    ("complex", np.array([[0, 0], [1j, 1], [0, 2]]), TypeError), ("strings", [("a", "b"), ("c", "d")], TypeError),
-    ("ragged", [(0, 0), (1,), (0, 2)], TypeError), ("a string", "profile", TypeError),
-)
+IMAGES = (("float64", IMG, OK), ("float32", IMG.astype(np.float32), OK), ("float16", IMG.astype(np.float16), OK),
+          ("big-endian", IMG.astype(">f8"), OK), ("uint8", (IMG * 255).astype(np.uint8), OK),
+          ("int16", (IMG * 1000).astype(np.int16), OK), ("bool", IMG > 0.5, OK),
+          ("channels", np.dstack([IMG, IMG, IMG]), OK), ("fortran order", np.asfortranarray(IMG), OK),
+          ("list", IMG.tolist(), OK), ("one pixel", IMG[:1, :1].copy(), OK), ("huge values", IMG * 1e300, OK),
+          ("tiny values", IMG * 1e-300, OK), ("nan pixel", _with(IMG, (2, 2), np.nan), "nonfinite ok"),
+          ("inf pixel", _with(IMG, (2, 2), np.inf), "nonfinite ok"), ("complex", IMG.astype(complex), TypeError),
+          ("strings", IMG.astype(str), TypeError), ("object", IMG.astype(object), TypeError),
+          ("1-D", IMG[0].copy(), ValueError), ("4-D", IMG[None, :, :, None].copy(), ValueError),
+          ("empty", np.zeros((0, 4)), ValueError), ("a string", "image", TypeError))
+MASKS = (("bool", IMG > 0.3, OK), ("uint8", (IMG > 0.3).astype(np.uint8), OK),
+         ("wrong shape", np.ones((3, 3), bool), ValueError), ("strings", (IMG > 0.3).astype(str), TypeError),
+         ("a string", "mask", TypeError))
+# shapes.lathe: (radius, height) points, poles only at the ends
+PROFILES = (("list of pairs", [(0, 0), (1, 0.5), (0, 1)], OK), ("open ends", [(1.0, 0.0), (1.0, 1.0)], OK),
+            ("int", np.array([[0, 0], [2, 1], [0, 2]]), OK),
+            ("float32", np.array([[0, 0], [1, 1], [0, 2]], np.float32), OK),
+            ("big-endian", np.array([[0, 0], [1, 1], [0, 2]], ">f8"), OK), ("one point", [(0.0, 0.0)], ValueError),
+            ("empty", np.zeros((0, 2)), ValueError), ("three columns", np.ones((3, 3)), ValueError),
+            ("flat", [0.0, 1.0, 2.0], ValueError), ("nan", [(0, 0), (np.nan, 1), (0, 2)], ValueError),
+            ("inf", [(0, 0), (1, np.inf), (0, 2)], ValueError),
+            ("negative radius", [(0, 0), (-1, 1), (0, 2)], ValueError),
+            ("pole inside", [(1, 0), (0, 1), (1, 2)], ValueError),
+            ("a point twice", [(0, 0), (1, 1), (1, 1), (0, 2)], ValueError),
+            ("two poles", [(0, 0), (0, 1)], ValueError), ("bools", np.array([[False, False], [True, True]]), TypeError),
+            ("complex", np.array([[0, 0], [1j, 1], [0, 2]]), TypeError),
+            ("strings", [("a", "b"), ("c", "d")], TypeError), ("ragged", [(0, 0), (1,), (0, 2)], TypeError),
+            ("a string", "profile", TypeError))
 NORMAL_BUF = np.dstack([IMG, 1 - IMG, np.ones_like(IMG)]).astype(np.float32)
 DEPTH_BUF = 1.0 + IMG
 
@@ -286,8 +279,7 @@ def buffers(name: str, good: np.ndarray) -> Table:
         ("big-endian", good.astype(">f8"), OK), ("int", (good * 10).astype(np.int32), OK),
         ("inf background", _with(good, (0, 0), np.inf), "nonfinite ok"), ("complex", good.astype(complex), TypeError),
         ("strings", good.astype(str), TypeError), ("empty", good[:0], ValueError),
-        ("1-D", good.ravel()[:5].copy(), ValueError), ("a string", name, TypeError),
-    )
+        ("1-D", good.ravel()[:5].copy(), ValueError), ("a string", name, TypeError))
 
 
 # ------------------------------------------------------------------------------------------------
@@ -441,25 +433,24 @@ def colours(alpha: bool) -> Table:
     """An sRGB colour ('#rrggbb' or 3 numbers in [0, 1]; with alpha, '#rrggbbaa' or 4 numbers too)."""
     four = OK if alpha else ValueError
     above_one = Refused(ValueError, "divide by 255")  # 0-255 codes get a hint
-    return (
-        ("hex", "#ff8040", OK), ("hex without #", "ff8040", OK), ("hex upper case", "#FF8040", OK),
-        ("bytes", b"\x00\x00\x01", TypeError), ("bytearray", bytearray(b"\x00\x00\x01"), TypeError),
-        ("hex with alpha", "#ff804080", four), ("tuple", (1.0, 0.5, 0.25), OK), ("ints", (1, 0, 0), OK),
-        ("black", (0, 0, 0), OK), ("list", [0.2, 0.4, 0.6], OK), ("array", np.array([1.0, 0.5, 0.25]), OK),
-        ("float32 array", np.array([1.0, 0.5, 0.25], np.float32), OK),
-        ("big-endian array", np.array([1.0, 0.5, 0.25], ">f8"), OK),
-        ("numpy scalars", (np.float32(1.0), np.int64(0), np.float64(0.5)), OK),
-        ("four numbers", (1.0, 0.5, 0.25, 0.5), four), ("0-255 codes", (255, 128, 0), above_one),
-        ("uint8 codes", np.array([255, 128, 0], np.uint8), above_one), ("just above 1", (1.0001, 0.0, 0.0), above_one),
-        ("huge", (1e300, 0.0, 0.0), above_one), ("negative", (-0.1, 0.0, 0.0), ValueError),
-        ("nan", (float("nan"), 0.0, 0.0), ValueError), ("inf", (0.0, float("inf"), 0.0), ValueError),
-        ("int beyond float", (10**400, 0, 0), ValueError), ("two numbers", (1.0, 0.0), ValueError),
-        ("five numbers", (1.0, 0.0, 0.0, 1.0, 0.0), ValueError), ("empty tuple", (), ValueError),
-        ("short hex", "#fff", ValueError), ("bad hex", "#gg0000", ValueError), ("colour name", "white", ValueError),
-        ("empty string", "", ValueError), ("bools", (True, False, True), TypeError),
-        ("strings", ("1", "0", "0"), TypeError), ("nested", [[1.0, 0.0, 0.0]], TypeError),
-        ("complex", (1j, 0.0, 0.0), TypeError), ("scalar", 0.5, TypeError),
-    )
+    return (("hex", "#ff8040", OK), ("hex without #", "ff8040", OK), ("hex upper case", "#FF8040", OK),
+            ("bytes", b"\x00\x00\x01", TypeError), ("bytearray", bytearray(b"\x00\x00\x01"), TypeError),
+            ("hex with alpha", "#ff804080", four), ("tuple", (1.0, 0.5, 0.25), OK), ("ints", (1, 0, 0), OK),
+            ("black", (0, 0, 0), OK), ("list", [0.2, 0.4, 0.6], OK), ("array", np.array([1.0, 0.5, 0.25]), OK),
+            ("float32 array", np.array([1.0, 0.5, 0.25], np.float32), OK),
+            ("big-endian array", np.array([1.0, 0.5, 0.25], ">f8"), OK),
+            ("numpy scalars", (np.float32(1.0), np.int64(0), np.float64(0.5)), OK),
+            ("four numbers", (1.0, 0.5, 0.25, 0.5), four), ("0-255 codes", (255, 128, 0), above_one),
+            ("uint8 codes", np.array([255, 128, 0], np.uint8), above_one),
+            ("just above 1", (1.0001, 0.0, 0.0), above_one), ("huge", (1e300, 0.0, 0.0), above_one),
+            ("negative", (-0.1, 0.0, 0.0), ValueError), ("nan", (float("nan"), 0.0, 0.0), ValueError),
+            ("inf", (0.0, float("inf"), 0.0), ValueError), ("int beyond float", (10**400, 0, 0), ValueError),
+            ("two numbers", (1.0, 0.0), ValueError), ("five numbers", (1.0, 0.0, 0.0, 1.0, 0.0), ValueError),
+            ("empty tuple", (), ValueError), ("short hex", "#fff", ValueError), ("bad hex", "#gg0000", ValueError),
+            ("colour name", "white", ValueError), ("empty string", "", ValueError),
+            ("bools", (True, False, True), TypeError), ("strings", ("1", "0", "0"), TypeError),
+            ("nested", [[1.0, 0.0, 0.0]], TypeError), ("complex", (1j, 0.0, 0.0), TypeError),
+            ("scalar", 0.5, TypeError))
 
 
 _TURN = np.array([[0.0, -1.0, 0.0, 0.5], [1.0, 0.0, 0.0, -2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
@@ -469,164 +460,143 @@ _LIGHTS = [tm.Light.key(), tm.Light.directional((1.0, -1.0, -1.0)), tm.Light.poi
 # mean (a vec3's zero, an up vector against the view, thresholds against values).
 KINDS: Dict[str, Any] = {
     "color": colours(alpha=False), "rgba": colours(alpha=True),
-    "matrix": (  # a mesh's 4x4 affine model -> world matrix
-        ("identity", np.eye(4), OK), ("nested list", np.eye(4).tolist(), OK),
-        ("float32", np.eye(4, dtype=np.float32), OK), ("int", np.eye(4, dtype=np.int64), OK),
-        ("big-endian", np.eye(4).astype(">f8"), OK), ("fortran order", np.asfortranarray(_TURN), OK),
-        ("turn, move and scale", np.diag([1e3, 1e3, 1e3, 1.0]) @ _TURN, OK),
-        ("tiny scale", np.diag([1e-3, 1e-3, 1e-3, 1.0]), OK), ("mirror", np.diag([-1.0, 1.0, 1.0, 1.0]), OK),
-        ("singular", np.zeros((4, 4)), ValueError), ("flattening", np.diag([1.0, 1.0, 0.0, 1.0]), ValueError),
-        ("projective", _with(np.eye(4), (3, 2), 0.5), ValueError),
-        ("nan", _with(np.eye(4), (0, 3), np.nan), ValueError), ("inf", _with(np.eye(4), (1, 1), np.inf), ValueError),
-        ("3x3", np.eye(3), ValueError), ("4x3", np.eye(4)[:, :3].copy(), ValueError),
-        ("flat", np.eye(4).ravel(), (TypeError, ValueError)), ("bool", np.eye(4) > 0, TypeError),
-        ("complex", np.eye(4) * (1 + 1j), TypeError), ("strings", np.eye(4).astype(str), TypeError),
-        ("object", np.eye(4).astype(object), TypeError), ("ragged", [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], TypeError),
-        ("a string", "identity", TypeError),
-    ),
-    "names": (  # the outputs of a render with outlines drawn ("outline" and "lines" need them)
-        ("color", ("color",), OK), ("a name", "depth", OK), ("list", ["color", "normal"], OK),
-        ("every output", ("color", "normal", "depth", "outline", "lines"), OK), ("set", {"normal"}, OK),
-        ("numpy strings", np.array(["color", "depth"]), OK), ("repeated", ("color", "color"), OK),
-        ("outline", ("outline",), OK), ("lines", ("lines",), OK), ("empty", (), ValueError),
-        ("unknown", ("colour",), ValueError), ("upper case", ("COLOR",), ValueError), ("empty name", ("",), ValueError),
-        ("int", 5, TypeError), ("int in list", ("color", 3), TypeError), ("bytes", b"color", TypeError),
-        ("nested", [["color"]], TypeError),
-    ),
-    "lights": (  # up to 8 lights
-        ("a light", tm.Light.key(), OK), ("a list", _LIGHTS, OK), ("a tuple", tuple(_LIGHTS), OK), ("none", [], OK),
-        ("eight", [tm.Light.key()] * 8, OK), ("nine", [tm.Light.key()] * 9, ValueError), ("a string", "sun", TypeError),
-        ("a string in the list", [tm.Light.key(), "sun"], TypeError), ("None in the list", [None], TypeError),
-        ("an int", 1, TypeError), ("a material", tm.Material.bands(), TypeError),
-    ),
-    "style": (  # one kind of outline: drawn or not, its LineStyle, or its colour
-        ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
-        ("a LineStyle", tm.LineStyle("#ff0000", 3.0), OK), ("a colour", "#00ff00", OK),
-        ("colour numbers", (0.0, 0.0, 1.0), OK), ("0-255 codes", (0, 0, 255), Refused(ValueError, "divide by 255")),
-        ("a word", "thick", ValueError), ("an int", 3, TypeError), ("a list of a bool", [True], TypeError),
-        ("an Outlines", tm.Outlines(), TypeError),
-    ),
-    "table": (  # a LUT material's factors or rgb rows, at most 256, finite in float32
-        ("kang_table", tm.kang_table(), OK), ("list", [0.2, 0.6, 1.0], OK), ("one entry", [1.0], OK),
-        ("rgb rows", np.array([[0.2, 0.1, 0.0], [1.0, 0.9, 0.8]]), OK),
-        ("float32", np.linspace(0, 1, 8, dtype=np.float32), OK), ("256 entries", np.ones(256), OK),
-        ("factors above 1", [0.5, 2.0], OK), ("257 entries", np.ones(257), ValueError), ("empty", [], ValueError),
-        ("negative", [0.5, -0.1], ValueError), ("nan", [0.5, float("nan")], ValueError),
-        ("inf", [float("inf")], ValueError), ("beyond float32", [1e39], ValueError),
-        ("rows of 2", [[1.0, 0.5]], ValueError), ("rows of 4", np.ones((2, 4)), ValueError),
-        ("bools", [True, False], TypeError), ("strings", ["0.5"], TypeError), ("a string", "ramp", TypeError),
-        ("bytes", b"\x01\x02", TypeError), ("a number", 0.5, TypeError),
-    ),
-    "image": (  # the paper's grain: grey, RGB or RGBA in [0, 1] or uint8
-        ("a grey uint8 image", np.arange(12, dtype=np.uint8).reshape(3, 4), OK),
-        ("an RGBA float image", np.full((2, 3, 4), 0.25), OK), ("a 1x1 image", np.ones((1, 1)), OK),
-        ("a list", [[0.0, 1.0]], TypeError), ("a string", "rough", TypeError), ("1-D", np.zeros(4), ValueError),
-        ("empty", np.zeros((0, 4)), ValueError), ("5 channels", np.zeros((2, 2, 5)), ValueError),
-        ("NaN", np.array([[np.nan, 0.0]]), ValueError), ("above 1", np.array([[1.5]]), ValueError),
-        ("negative", np.array([[-1, 0]], np.int16), ValueError), ("complex", np.zeros((2, 2), complex), TypeError),
-    ),
-    "thresholds": (  # the bands' thresholds: increasing, one fewer than the values
-        ("paper's", (0.2, 0.5, 0.7, 0.9), OK), ("array", np.array([-0.5, 0.0, 0.5, 0.99]), OK),
-        ("float32", np.array([0.1, 0.2, 0.3, 0.4], np.float32), OK), ("beyond [-1, 1]", (-5.0, 0.0, 1.0, 5.0), OK),
-        ("decreasing", (0.9, 0.7, 0.5, 0.2), ValueError), ("three, for five values", (0.2, 0.5, 0.9), ValueError),
-        ("bytes", b"\x01\x02\x03\x04", TypeError), ("repeated", (0.2, 0.5, 0.5, 0.9), ValueError),
-        ("nan", (0.2, float("nan"), 0.7, 0.9), ValueError), ("inf", (0.2, 0.5, 0.7, float("inf")), ValueError),
-        ("strings", ("0.2", "0.5", "0.7", "0.9"), TypeError), ("a string", "0.5", TypeError),
-        ("a number", 0.5, TypeError),
-    ),
-    "values": (
-        ("paper's", (0.0, 0.2, 0.7, 0.9, 1.0), OK), ("above 1", (0.0, 0.5, 1.0, 2.0, 4.0), OK),
-        ("array", np.linspace(0, 1, 5), OK), ("negative", (-0.1, 0.2, 0.7, 0.9, 1.0), ValueError),
-        ("nan", (0.0, 0.2, float("nan"), 0.9, 1.0), ValueError),
-        ("beyond float32", (0.0, 0.2, 0.7, 0.9, 1e39), ValueError), ("two", (0.0, 1.0), ValueError),
-        ("bools", (False, True, True, True, True), TypeError), ("a number", 1.0, TypeError),
-    ),
-    "up": (  # the view runs along (0.3, 0.2, 5): see BASES
-        ("y", (0.0, 1.0, 0.0), OK), ("ints", (1, 1, 0), OK), ("array", np.array([0.2, 1.0, 0.1]), OK),
-        ("float32 array", np.array([0.0, 1.0, 0.0], np.float32), OK), ("long", (0.0, 1e300, 0.0), OK),
-        ("short", (0.0, 1e-300, 0.0), OK), ("along the view", (0.3, 0.2, 5.0), ValueError),
-        ("against the view", (-0.6, -0.4, -10.0), ValueError), ("zero", (0, 0, 0), ValueError),
-        ("nan", (0.0, float("nan"), 0.0), ValueError), ("inf", (0.0, float("inf"), 0.0), ValueError),
-        ("two numbers", (0.0, 1.0), ValueError), ("bools", (False, True, False), TypeError),
-        ("a string", "up", TypeError),
-    ),
+    # a mesh's 4x4 affine model -> world matrix
+    "matrix": (("identity", np.eye(4), OK), ("nested list", np.eye(4).tolist(), OK),
+               ("float32", np.eye(4, dtype=np.float32), OK), ("int", np.eye(4, dtype=np.int64), OK),
+               ("big-endian", np.eye(4).astype(">f8"), OK), ("fortran order", np.asfortranarray(_TURN), OK),
+               ("turn, move and scale", np.diag([1e3, 1e3, 1e3, 1.0]) @ _TURN, OK),
+               ("tiny scale", np.diag([1e-3, 1e-3, 1e-3, 1.0]), OK), ("mirror", np.diag([-1.0, 1.0, 1.0, 1.0]), OK),
+               ("singular", np.zeros((4, 4)), ValueError), ("flattening", np.diag([1.0, 1.0, 0.0, 1.0]), ValueError),
+               ("projective", _with(np.eye(4), (3, 2), 0.5), ValueError),
+               ("nan", _with(np.eye(4), (0, 3), np.nan), ValueError),
+               ("inf", _with(np.eye(4), (1, 1), np.inf), ValueError), ("3x3", np.eye(3), ValueError),
+               ("4x3", np.eye(4)[:, :3].copy(), ValueError), ("flat", np.eye(4).ravel(), (TypeError, ValueError)),
+               ("bool", np.eye(4) > 0, TypeError), ("complex", np.eye(4) * (1 + 1j), TypeError),
+               ("strings", np.eye(4).astype(str), TypeError), ("object", np.eye(4).astype(object), TypeError),
+               ("ragged", [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], TypeError), ("a string", "identity", TypeError)),
+    # the outputs of a render with outlines drawn ("outline" and "lines" need them)
+    "names": (("color", ("color",), OK), ("a name", "depth", OK), ("list", ["color", "normal"], OK),
+              ("every output", ("color", "normal", "depth", "outline", "lines"), OK), ("set", {"normal"}, OK),
+              ("numpy strings", np.array(["color", "depth"]), OK), ("repeated", ("color", "color"), OK),
+              ("outline", ("outline",), OK), ("lines", ("lines",), OK), ("empty", (), ValueError),
+              ("unknown", ("colour",), ValueError), ("upper case", ("COLOR",), ValueError),
+              ("empty name", ("",), ValueError), ("int", 5, TypeError), ("int in list", ("color", 3), TypeError),
+              ("bytes", b"color", TypeError), ("nested", [["color"]], TypeError)),
+    # up to 8 lights
+    "lights": (("a light", tm.Light.key(), OK), ("a list", _LIGHTS, OK), ("a tuple", tuple(_LIGHTS), OK),
+               ("none", [], OK), ("eight", [tm.Light.key()] * 8, OK), ("nine", [tm.Light.key()] * 9, ValueError),
+               ("a string", "sun", TypeError), ("a string in the list", [tm.Light.key(), "sun"], TypeError),
+               ("None in the list", [None], TypeError), ("an int", 1, TypeError),
+               ("a material", tm.Material.bands(), TypeError)),
+    # one kind of outline: drawn or not, its LineStyle, or its colour
+    "style": (("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
+              ("a LineStyle", tm.LineStyle("#ff0000", 3.0), OK), ("a colour", "#00ff00", OK),
+              ("colour numbers", (0.0, 0.0, 1.0), OK),
+              ("0-255 codes", (0, 0, 255), Refused(ValueError, "divide by 255")), ("a word", "thick", ValueError),
+              ("an int", 3, TypeError), ("a list of a bool", [True], TypeError),
+              ("an Outlines", tm.Outlines(), TypeError)),
+    # a LUT material's factors or rgb rows, at most 256, finite in float32
+    "table": (("kang_table", tm.kang_table(), OK), ("list", [0.2, 0.6, 1.0], OK), ("one entry", [1.0], OK),
+              ("rgb rows", np.array([[0.2, 0.1, 0.0], [1.0, 0.9, 0.8]]), OK),
+              ("float32", np.linspace(0, 1, 8, dtype=np.float32), OK), ("256 entries", np.ones(256), OK),
+              ("factors above 1", [0.5, 2.0], OK), ("257 entries", np.ones(257), ValueError), ("empty", [], ValueError),
+              ("negative", [0.5, -0.1], ValueError), ("nan", [0.5, float("nan")], ValueError),
+              ("inf", [float("inf")], ValueError), ("beyond float32", [1e39], ValueError),
+              ("rows of 2", [[1.0, 0.5]], ValueError), ("rows of 4", np.ones((2, 4)), ValueError),
+              ("bools", [True, False], TypeError), ("strings", ["0.5"], TypeError), ("a string", "ramp", TypeError),
+              ("bytes", b"\x01\x02", TypeError), ("a number", 0.5, TypeError)),
+    # the paper's grain: grey, RGB or RGBA in [0, 1] or uint8
+    "image": (("a grey uint8 image", np.arange(12, dtype=np.uint8).reshape(3, 4), OK),
+              ("an RGBA float image", np.full((2, 3, 4), 0.25), OK), ("a 1x1 image", np.ones((1, 1)), OK),
+              ("a list", [[0.0, 1.0]], TypeError), ("a string", "rough", TypeError), ("1-D", np.zeros(4), ValueError),
+              ("empty", np.zeros((0, 4)), ValueError), ("5 channels", np.zeros((2, 2, 5)), ValueError),
+              ("NaN", np.array([[np.nan, 0.0]]), ValueError), ("above 1", np.array([[1.5]]), ValueError),
+              ("negative", np.array([[-1, 0]], np.int16), ValueError),
+              ("complex", np.zeros((2, 2), complex), TypeError)),
+    # the bands' thresholds: increasing, one fewer than the values
+    "thresholds": (("paper's", (0.2, 0.5, 0.7, 0.9), OK), ("array", np.array([-0.5, 0.0, 0.5, 0.99]), OK),
+                   ("float32", np.array([0.1, 0.2, 0.3, 0.4], np.float32), OK),
+                   ("beyond [-1, 1]", (-5.0, 0.0, 1.0, 5.0), OK), ("decreasing", (0.9, 0.7, 0.5, 0.2), ValueError),
+                   ("three, for five values", (0.2, 0.5, 0.9), ValueError), ("bytes", b"\x01\x02\x03\x04", TypeError),
+                   ("repeated", (0.2, 0.5, 0.5, 0.9), ValueError), ("nan", (0.2, float("nan"), 0.7, 0.9), ValueError),
+                   ("inf", (0.2, 0.5, 0.7, float("inf")), ValueError),
+                   ("strings", ("0.2", "0.5", "0.7", "0.9"), TypeError), ("a string", "0.5", TypeError),
+                   ("a number", 0.5, TypeError)),
+    "values": (("paper's", (0.0, 0.2, 0.7, 0.9, 1.0), OK), ("above 1", (0.0, 0.5, 1.0, 2.0, 4.0), OK),
+               ("array", np.linspace(0, 1, 5), OK), ("negative", (-0.1, 0.2, 0.7, 0.9, 1.0), ValueError),
+               ("nan", (0.0, 0.2, float("nan"), 0.9, 1.0), ValueError),
+               ("beyond float32", (0.0, 0.2, 0.7, 0.9, 1e39), ValueError), ("two", (0.0, 1.0), ValueError),
+               ("bools", (False, True, True, True, True), TypeError), ("a number", 1.0, TypeError)),
+    # the view runs along (0.3, 0.2, 5): see BASES
+    "up": (("y", (0.0, 1.0, 0.0), OK), ("ints", (1, 1, 0), OK), ("array", np.array([0.2, 1.0, 0.1]), OK),
+           ("float32 array", np.array([0.0, 1.0, 0.0], np.float32), OK), ("long", (0.0, 1e300, 0.0), OK),
+           ("short", (0.0, 1e-300, 0.0), OK), ("along the view", (0.3, 0.2, 5.0), ValueError),
+           ("against the view", (-0.6, -0.4, -10.0), ValueError), ("zero", (0, 0, 0), ValueError),
+           ("nan", (0.0, float("nan"), 0.0), ValueError), ("inf", (0.0, float("inf"), 0.0), ValueError),
+           ("two numbers", (0.0, 1.0), ValueError), ("bools", (False, True, False), TypeError),
+           ("a string", "up", TypeError)),
     "direction": vec3(ValueError), "position": vec3(OK), "target": vec3(OK),
     "eye": vec3(None),  # an eye on the target: test_render_errors.py
-    "Material": (
-        ("bands", tm.Material.bands(), OK), ("lambert", tm.Material.lambert("#80c0ff"), OK),
-        ("phong", tm.Material.phong(shininess=8), OK),
-        ("thresholded phong", tm.Material.thresholded_phong(per_vertex=True), OK), ("lut", tm.Material.lut(), OK),
-        ("a name", "bands", TypeError), ("the class", tm.Material, TypeError), ("a light", tm.Light.key(), TypeError),
-        ("a dict", {"model": "bands"}, TypeError),
-    ),
-    "Camera": (
-        ("fit", tm.Camera.fit(), OK),
-        ("fit orthographic", tm.Camera.fit((0.0, 1.0, 0.0), up=(0.0, 0.0, 1.0), orthographic=True), OK),
-        ("look_at", tm.Camera.look_at((0.3, 0.2, 5.0), fov_y=20.0), OK),
-        ("orthographic", tm.Camera.orthographic((0.3, 0.2, 5.0), height=3.0), OK), ("a name", "front", TypeError),
-        ("a list", [tm.Camera.fit()], TypeError), ("a light", tm.Light.key(), TypeError), ("an int", 1, TypeError),
-    ),
+    "Material": (("bands", tm.Material.bands(), OK), ("lambert", tm.Material.lambert("#80c0ff"), OK),
+                 ("phong", tm.Material.phong(shininess=8), OK),
+                 ("thresholded phong", tm.Material.thresholded_phong(per_vertex=True), OK),
+                 ("lut", tm.Material.lut(), OK), ("a name", "bands", TypeError), ("the class", tm.Material, TypeError),
+                 ("a light", tm.Light.key(), TypeError), ("a dict", {"model": "bands"}, TypeError)),
+    "Camera": (("fit", tm.Camera.fit(), OK),
+               ("fit orthographic", tm.Camera.fit((0.0, 1.0, 0.0), up=(0.0, 0.0, 1.0), orthographic=True), OK),
+               ("look_at", tm.Camera.look_at((0.3, 0.2, 5.0), fov_y=20.0), OK),
+               ("orthographic", tm.Camera.orthographic((0.3, 0.2, 5.0), height=3.0), OK),
+               ("a name", "front", TypeError), ("a list", [tm.Camera.fit()], TypeError),
+               ("a light", tm.Light.key(), TypeError), ("an int", 1, TypeError)),
     "Outlines": Name(("mesh", "image", "both"), more=(
         ("Outlines()", tm.Outlines(), OK), ("Outlines('image')", tm.Outlines("image", color="#204080", width=3.0), OK),
-        ("True", True, TypeError), ("a LineStyle", tm.LineStyle(), TypeError),
-    )),
-    "Paper": (
-        ("a Paper", tm.Paper(), OK), ("a Paper on the surface, of an image", tm.Paper(np.eye(3), space="surface"), OK),
-        ("True", True, TypeError), ("a name", "paper", TypeError), ("a Rim", tm.Rim(), TypeError),
-    ),
-    "Rim": (
-        ("a Rim", tm.Rim(), OK),
-        ("a coloured, lit-side Rim", tm.Rim("#3366ff", width=0.5, side="lit", blend="mix"), OK),
-        ("True", True, TypeError), ("a name", "rim", TypeError), ("a colour", (1.0, 1.0, 1.0), TypeError),
-        ("a Dither", tm.Dither(), TypeError),
-    ),
-    "Dither": (
-        ("a pattern name", "bayer8", OK), ("blue", "blue", OK), ("a Dither", tm.Dither("bayer2", space="object"), OK),
-        ("an unknown name", "noise", ValueError), ("upper case", "BAYER4", ValueError), ("True", True, TypeError),
-        ("an int", 4, TypeError), ("a list", ["bayer4"], TypeError), ("an Outlines", tm.Outlines(), TypeError),
-    ),
-    "Shadows": (
-        ("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
-        ("a Shadows", tm.Shadows(size=512, filter="none"), OK), ("a word", "yes", TypeError), ("an int", 1, TypeError),
-        ("a list of a bool", [True], TypeError), ("an Outlines", tm.Outlines(), TypeError),
-    ),
+        ("True", True, TypeError), ("a LineStyle", tm.LineStyle(), TypeError))),
+    "Paper": (("a Paper", tm.Paper(), OK),
+              ("a Paper on the surface, of an image", tm.Paper(np.eye(3), space="surface"), OK),
+              ("True", True, TypeError), ("a name", "paper", TypeError), ("a Rim", tm.Rim(), TypeError)),
+    "Rim": (("a Rim", tm.Rim(), OK),
+            ("a coloured, lit-side Rim", tm.Rim("#3366ff", width=0.5, side="lit", blend="mix"), OK),
+            ("True", True, TypeError), ("a name", "rim", TypeError), ("a colour", (1.0, 1.0, 1.0), TypeError),
+            ("a Dither", tm.Dither(), TypeError)),
+    "Dither": (("a pattern name", "bayer8", OK), ("blue", "blue", OK),
+               ("a Dither", tm.Dither("bayer2", space="object"), OK), ("an unknown name", "noise", ValueError),
+               ("upper case", "BAYER4", ValueError), ("True", True, TypeError), ("an int", 4, TypeError),
+               ("a list", ["bayer4"], TypeError), ("an Outlines", tm.Outlines(), TypeError)),
+    "Shadows": (("True", True, OK), ("False", False, OK), ("numpy True", np.True_, OK),
+                ("a Shadows", tm.Shadows(size=512, filter="none"), OK), ("a word", "yes", TypeError),
+                ("an int", 1, TypeError), ("a list of a bool", [True], TypeError),
+                ("an Outlines", tm.Outlines(), TypeError)),
 }
 # What only the renderer's own functions take: meshes, cameras, a backend, normals, a mesh's colours and texture.
-OUTPUTS_WITHOUT_OUTLINES = (  # the outputs of a render without outlines
-    ("color", ("color",), OK), ("normal and depth", ("normal", "depth"), OK), ("outline", ("outline",), ValueError),
-    ("lines", ("color", "lines"), ValueError),
-)
-CAMERAS = (
-    ("two", [tm.Camera.fit(), tm.Camera.look_at((0.3, 0.2, 5.0))], OK),
-    ("tuple", (tm.Camera.fit((1.0, 0.0, 0.0)),), OK), ("none", [], OK), ("a camera", tm.Camera.fit(), TypeError),
-    ("a string in the list", [tm.Camera.fit(), "front"], TypeError), ("a string", "front", TypeError),
-    ("an int", 2, TypeError),
-)
+# the outputs of a render without outlines
+OUTPUTS_WITHOUT_OUTLINES = (("color", ("color",), OK), ("normal and depth", ("normal", "depth"), OK),
+                            ("outline", ("outline",), ValueError), ("lines", ("color", "lines"), ValueError))
+CAMERAS = (("two", [tm.Camera.fit(), tm.Camera.look_at((0.3, 0.2, 5.0))], OK),
+           ("tuple", (tm.Camera.fit((1.0, 0.0, 0.0)),), OK), ("none", [], OK), ("a camera", tm.Camera.fit(), TypeError),
+           ("a string in the list", [tm.Camera.fit(), "front"], TypeError), ("a string", "front", TypeError),
+           ("an int", 2, TypeError))
 _MESH = tm.Mesh(V, F, material=tm.Material.lambert(), transform=_TURN, normals="flat")
-MESHES = (
-    ("a handle", HANDLE, OK), ("a list", [HANDLE, HANDLE], OK), ("a tuple", (HANDLE,), OK),
-    ("a Mesh", tm.Mesh(V, F), OK), ("a Mesh of a handle", tm.Mesh(HANDLE, transform=_TURN), OK),
-    ("a Mesh with its own settings", _MESH, OK), ("handles and Meshes", [HANDLE, _MESH], OK), ("empty", [], OK),
-    ("a handle of another renderer", OTHER_HANDLE, ValueError), ("a removed handle", REMOVED_HANDLE, ValueError),
-    ("arrays", V, TypeError), ("a (V, F) pair", (V, F), TypeError), ("a string", "bunny", TypeError),
-    ("None in the list", [HANDLE, None], TypeError), ("a mesh id", HANDLE.id, TypeError),
-)
+MESHES = (("a handle", HANDLE, OK), ("a list", [HANDLE, HANDLE], OK), ("a tuple", (HANDLE,), OK),
+          ("a Mesh", tm.Mesh(V, F), OK), ("a Mesh of a handle", tm.Mesh(HANDLE, transform=_TURN), OK),
+          ("a Mesh with its own settings", _MESH, OK), ("handles and Meshes", [HANDLE, _MESH], OK), ("empty", [], OK),
+          ("a handle of another renderer", OTHER_HANDLE, ValueError), ("a removed handle", REMOVED_HANDLE, ValueError),
+          ("arrays", V, TypeError), ("a (V, F) pair", (V, F), TypeError), ("a string", "bunny", TypeError),
+          ("None in the list", [HANDLE, None], TypeError), ("a mesh id", HANDLE.id, TypeError))
 BACKEND = Name(("auto", "vulkan", "gl", "vk", "opengl", "gles", "egl", " vulkan "), any_case=True, empty=OK)
 NORMALS = Name(
     ("smooth", "flat", "auto"),
-    more=(
-        ("auto 45", ("auto", 45), OK), ("auto 0", ("auto", 0), OK), ("auto 180", ("auto", 180.0), OK),
-        ("auto numpy", ("auto", np.float32(20)), OK), ("auto -1", ("auto", -1), ValueError),
-        ("auto 181", ("auto", 181), ValueError), ("auto nan", ("auto", float("nan")), ValueError),
-        ("auto inf", ("auto", float("inf")), ValueError), ("auto huge int", ("auto", 10**400), ValueError),
-        ("smooth with an angle", ("smooth", 30), ValueError), ("auto string angle", ("auto", "45"), TypeError),
-        ("auto bool angle", ("auto", True), TypeError), ("auto none angle", ("auto", None), TypeError),
-        ("auto alone", ("auto",), TypeError), ("auto three", ("auto", 30, 1), TypeError),
-        ("auto list", ["auto", 45], TypeError), ("own, one short", np.ones((len(V) - 1, 3)), ValueError),
-        ("own, two columns", np.ones((len(V), 2)), ValueError), ("own, a zero row", np.zeros((len(V), 3)), ValueError),
-        ("own, integers", np.ones((len(V), 3), dtype=np.int64), TypeError),
-        ("own, a list", np.ones((len(V), 3)).tolist(), TypeError),
-    ),
+    more=(("auto 45", ("auto", 45), OK), ("auto 0", ("auto", 0), OK), ("auto 180", ("auto", 180.0), OK),
+          ("auto numpy", ("auto", np.float32(20)), OK), ("auto -1", ("auto", -1), ValueError),
+          ("auto 181", ("auto", 181), ValueError), ("auto nan", ("auto", float("nan")), ValueError),
+          ("auto inf", ("auto", float("inf")), ValueError), ("auto huge int", ("auto", 10**400), ValueError),
+          ("smooth with an angle", ("smooth", 30), ValueError), ("auto string angle", ("auto", "45"), TypeError),
+          ("auto bool angle", ("auto", True), TypeError), ("auto none angle", ("auto", None), TypeError),
+          ("auto alone", ("auto",), TypeError), ("auto three", ("auto", 30, 1), TypeError),
+          ("auto list", ["auto", 45], TypeError), ("own, one short", np.ones((len(V) - 1, 3)), ValueError),
+          ("own, two columns", np.ones((len(V), 2)), ValueError),
+          ("own, a zero row", np.zeros((len(V), 3)), ValueError),
+          ("own, integers", np.ones((len(V), 3), dtype=np.int64), TypeError),
+          ("own, a list", np.ones((len(V), 3)).tolist(), TypeError)),
 )
 UV = (V[:, :2] + 1.5) / 3.0
 TEXTURE = (np.arange(4 * 4 * 3) * 5).astype(np.uint8).reshape(4, 4, 3)
@@ -639,16 +609,16 @@ UVS = (
     ("three columns", V, ValueError), ("flat", UV.ravel(), ValueError), ("int64", UV.astype(np.int64), TypeError),
     ("string", "uv", TypeError),
 )
-TEXTURES = (
-    ("uint8 rgb", TEXTURE, OK), ("uint8 rgba", np.concatenate([TEXTURE, np.full((4, 4, 1), 200, np.uint8)], -1), OK),
-    ("float64", TEXTURE / 255.0, OK), ("float32", (TEXTURE / 255.0).astype(np.float32), OK),
-    ("big-endian float", (TEXTURE / 255.0).astype(">f8"), OK), ("fortran order", np.asfortranarray(TEXTURE), OK),
-    ("one pixel", TEXTURE[:1, :1], OK), ("PIL image", Image.fromarray(TEXTURE), OK),
-    ("two channels", TEXTURE[..., :2], ValueError), ("grey (H, W)", TEXTURE[..., 0], ValueError),
-    ("empty", np.zeros((0, 4, 3), np.uint8), ValueError), ("nan", _with(TEXTURE / 255.0, (0, 0), np.nan), ValueError),
-    ("0-255 floats", TEXTURE.astype(np.float64) + 1, Refused(ValueError, "uint8")),
-    ("int64", TEXTURE.astype(np.int64), TypeError), ("a file name", "checker.png", TypeError),
-)
+TEXTURES = (("uint8 rgb", TEXTURE, OK),
+            ("uint8 rgba", np.concatenate([TEXTURE, np.full((4, 4, 1), 200, np.uint8)], -1), OK),
+            ("float64", TEXTURE / 255.0, OK), ("float32", (TEXTURE / 255.0).astype(np.float32), OK),
+            ("big-endian float", (TEXTURE / 255.0).astype(">f8"), OK),
+            ("fortran order", np.asfortranarray(TEXTURE), OK), ("one pixel", TEXTURE[:1, :1], OK),
+            ("PIL image", Image.fromarray(TEXTURE), OK), ("two channels", TEXTURE[..., :2], ValueError),
+            ("grey (H, W)", TEXTURE[..., 0], ValueError), ("empty", np.zeros((0, 4, 3), np.uint8), ValueError),
+            ("nan", _with(TEXTURE / 255.0, (0, 0), np.nan), ValueError),
+            ("0-255 floats", TEXTURE.astype(np.float64) + 1, Refused(ValueError, "uint8")),
+            ("int64", TEXTURE.astype(np.int64), TypeError), ("a file name", "checker.png", TypeError))
 TEXTURED = dict(uv=UV, texture=TEXTURE, texture_filter=None, texture_wrap=None, alpha_cutoff=None)
 TEXTURE_PARAMS = [  # a texture needs uv, and uv a texture
     Param("uv", UVS, none=ValueError), Param("texture", TEXTURES, none=ValueError),
@@ -852,54 +822,50 @@ CASES += [
 def mesh_arguments(fewer: Any) -> Table:
     """A mesh to compare: a (vertices, faces) pair, positions alone, or a Trimesh-like object;
     ``fewer`` is what a mesh with fewer vertices gives."""
-    return (
-        ("pair", (V, F), OK), ("list pair", [V, F], OK), ("positions alone", V, OK),
-        ("float32 positions", (V.astype(np.float32), F), OK),
-        ("int positions", (np.round(V * 100).astype(np.int64), F), OK),
-        ("big-endian", (V.astype(">f8"), F.astype(">i4")), OK), ("nested lists", (V.tolist(), F.tolist()), OK),
-        ("uint32 faces", (V, F.astype(np.uint32)), OK), ("moved", (V + 0.1, F), OK),
-        ("faces turned and reordered", (V, np.roll(F[::-1], 1, axis=1)), OK),
-        ("a face flipped", (V, np.vstack([F[:1, ::-1], F[1:]])), OK), ("fewer faces", (V, F[1:]), OK),
-        ("fewer vertices", V[1:], fewer), ("complex", V.astype(complex), TypeError), ("bool", V > 0, TypeError),
-        ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError), ("a string", "mesh", TypeError),
-        ("ragged", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError), ("float faces", (V, F.astype(float)), TypeError),
-        ("nan", (_with(V, (3, 1), np.nan), F), ValueError), ("inf", (_with(V, (0, 0), np.inf), F), ValueError),
-        ("shape (N, 2)", V[:, :2].copy(), ValueError), ("flat", V.ravel().copy(), ValueError),
-        ("empty", np.zeros((0, 3)), ValueError), ("scalar", 1.0, ValueError),
-        ("faces (M, 4)", (V, np.hstack([F, F[:, :1]])), ValueError),
-        ("negative face index", (V, _with(F, (5, 2), -1)), IndexError),
-        ("face index N", (V, _with(F, (5, 2), N)), IndexError),
-    )
+    return (("pair", (V, F), OK), ("list pair", [V, F], OK), ("positions alone", V, OK),
+            ("float32 positions", (V.astype(np.float32), F), OK),
+            ("int positions", (np.round(V * 100).astype(np.int64), F), OK),
+            ("big-endian", (V.astype(">f8"), F.astype(">i4")), OK), ("nested lists", (V.tolist(), F.tolist()), OK),
+            ("uint32 faces", (V, F.astype(np.uint32)), OK), ("moved", (V + 0.1, F), OK),
+            ("faces turned and reordered", (V, np.roll(F[::-1], 1, axis=1)), OK),
+            ("a face flipped", (V, np.vstack([F[:1, ::-1], F[1:]])), OK), ("fewer faces", (V, F[1:]), OK),
+            ("fewer vertices", V[1:], fewer), ("complex", V.astype(complex), TypeError), ("bool", V > 0, TypeError),
+            ("strings", V.astype(str), TypeError), ("object", V.astype(object), TypeError),
+            ("a string", "mesh", TypeError), ("ragged", [[0.0, 0.0, 0.0], [1.0, 0.0]], TypeError),
+            ("float faces", (V, F.astype(float)), TypeError), ("nan", (_with(V, (3, 1), np.nan), F), ValueError),
+            ("inf", (_with(V, (0, 0), np.inf), F), ValueError), ("shape (N, 2)", V[:, :2].copy(), ValueError),
+            ("flat", V.ravel().copy(), ValueError), ("empty", np.zeros((0, 3)), ValueError),
+            ("scalar", 1.0, ValueError), ("faces (M, 4)", (V, np.hstack([F, F[:, :1]])), ValueError),
+            ("negative face index", (V, _with(F, (5, 2), -1)), IndexError),
+            ("face index N", (V, _with(F, (5, 2), N)), IndexError))
 
 
 IMG8 = (np.random.default_rng(5).random((9, 11, 4)) * 255).astype(np.uint8)
 COLOUR_AND_LINES = tm.render(V, F, outlines="mesh", outputs=("color", "lines"), width=11, height=9)
 DEPTH_ONLY = tm.render(V, F, outputs=("depth",), width=11, height=9)
-IMAGES_TO_COMPARE = (
-    ("uint8 RGBA", IMG8, OK), ("floats in [0, 1]", IMG8 / 255.0, OK),
-    ("float32", (IMG8 / 255.0).astype(np.float32), OK), ("int16 levels", IMG8.astype(np.int16), OK),
-    ("bool", IMG8 > 100, OK), ("grey", IMG8[..., 0].copy(), OK), ("RGB", IMG8[..., :3].copy(), OK),
-    ("a render", COLOUR_AND_LINES, OK), ("another size", IMG8[:5], OK), ("nested list", IMG8.tolist(), OK),
-    ("fortran order", np.asfortranarray(IMG8), OK), ("a render without colour", DEPTH_ONLY, ValueError),
-    ("floats above 1", IMG8 * 1.0, ValueError), ("nan", _with(IMG8 / 255.0, (2, 2, 0), np.nan), ValueError),
-    ("negative levels", IMG8.astype(np.int16) - 300, ValueError),
-    ("levels above 255", IMG8.astype(np.int16) + 300, ValueError), ("1-D", IMG8[0, :, 0].copy(), ValueError),
-    ("5 channels", np.zeros((9, 11, 5), np.uint8), ValueError), ("4-D", IMG8[None], ValueError),
-    ("empty", np.zeros((0, 4), np.uint8), ValueError), ("complex", IMG8.astype(complex), TypeError),
-    ("strings", IMG8.astype(str), TypeError), ("object", IMG8.astype(object), TypeError),
-    ("a string", "image.png", TypeError), ("bytes", b"\x89PNG", TypeError),
-)
-DRAWINGS = (
-    ("a render", LINES, OK), ("its SVG", LINES.svg(), OK), ("its filled SVG", LINES.svg(widths="point"), OK),
-    ("a list of lines", list(LINES.lines), OK), ("a tuple of lines", tuple(LINES.lines), OK), ("no lines", [], OK),
-    ("a single point", [np.array([[3.0, 4.0]])], OK), ("int lines", [np.array([[0, 0], [5, 5]])], OK),
-    ("a render without lines", DEPTH_ONLY, ValueError), ("not SVG", "lines", ValueError),
-    ("broken SVG", "<svg", ValueError), ("other XML", "<html/>", ValueError),
-    ("a line (K, 3)", [np.zeros((3, 3))], ValueError), ("an empty line", [np.zeros((0, 2))], ValueError),
-    ("a nan point", [np.array([[0.0, 0.0], [np.nan, 1.0]])], ValueError),
-    ("string points", [np.array([["a", "b"]])], TypeError), ("an array", np.zeros((4, 2)), TypeError),
-    ("bytes", b"<svg/>", TypeError), ("an int", 3, TypeError),
-)
+IMAGES_TO_COMPARE = (("uint8 RGBA", IMG8, OK), ("floats in [0, 1]", IMG8 / 255.0, OK),
+                     ("float32", (IMG8 / 255.0).astype(np.float32), OK), ("int16 levels", IMG8.astype(np.int16), OK),
+                     ("bool", IMG8 > 100, OK), ("grey", IMG8[..., 0].copy(), OK), ("RGB", IMG8[..., :3].copy(), OK),
+                     ("a render", COLOUR_AND_LINES, OK), ("another size", IMG8[:5], OK),
+                     ("nested list", IMG8.tolist(), OK), ("fortran order", np.asfortranarray(IMG8), OK),
+                     ("a render without colour", DEPTH_ONLY, ValueError), ("floats above 1", IMG8 * 1.0, ValueError),
+                     ("nan", _with(IMG8 / 255.0, (2, 2, 0), np.nan), ValueError),
+                     ("negative levels", IMG8.astype(np.int16) - 300, ValueError),
+                     ("levels above 255", IMG8.astype(np.int16) + 300, ValueError),
+                     ("1-D", IMG8[0, :, 0].copy(), ValueError),
+                     ("5 channels", np.zeros((9, 11, 5), np.uint8), ValueError), ("4-D", IMG8[None], ValueError),
+                     ("empty", np.zeros((0, 4), np.uint8), ValueError), ("complex", IMG8.astype(complex), TypeError),
+                     ("strings", IMG8.astype(str), TypeError), ("object", IMG8.astype(object), TypeError),
+                     ("a string", "image.png", TypeError), ("bytes", b"\x89PNG", TypeError))
+DRAWINGS = (("a render", LINES, OK), ("its SVG", LINES.svg(), OK), ("its filled SVG", LINES.svg(widths="point"), OK),
+            ("a list of lines", list(LINES.lines), OK), ("a tuple of lines", tuple(LINES.lines), OK),
+            ("no lines", [], OK), ("a single point", [np.array([[3.0, 4.0]])], OK),
+            ("int lines", [np.array([[0, 0], [5, 5]])], OK), ("a render without lines", DEPTH_ONLY, ValueError),
+            ("not SVG", "lines", ValueError), ("broken SVG", "<svg", ValueError), ("other XML", "<html/>", ValueError),
+            ("a line (K, 3)", [np.zeros((3, 3))], ValueError), ("an empty line", [np.zeros((0, 2))], ValueError),
+            ("a nan point", [np.array([[0.0, 0.0], [np.nan, 1.0]])], ValueError),
+            ("string points", [np.array([["a", "b"]])], TypeError), ("an array", np.zeros((4, 2)), TypeError),
+            ("bytes", b"<svg/>", TypeError), ("an int", 3, TypeError))
 # A mesh every peer smooths as toonmesh does: the vertex and face probes but those the peers
 # themselves cannot take (trimesh raises on unreferenced vertices after the largest face index;
 # values near float64's limits overflow inside the peers).
