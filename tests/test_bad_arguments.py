@@ -25,9 +25,10 @@ import re
 import shutil
 import tempfile
 import time
-from dataclasses import dataclass, replace
+from collections import namedtuple
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable, Dict, List, NamedTuple, Optional, Set, Tuple
+from typing import Any, Callable, Dict, List, Optional, Set, Tuple
 
 import numpy as np
 import pytest
@@ -44,11 +45,9 @@ from toonmesh.data import load_obj
 # (an array, a colour, a settings object) takes a tuple of such probes, written out below.
 
 OK = "ok"  # the outcome of a legal value
+FLAG = "flag"  # a parameter that takes True/False or a NumPy bool
 Probes = List[Tuple[str, Any, Any]]
 Table = Tuple[Tuple[str, Any, Any], ...]  # a compound argument's probes
-
-
-FLAG = "flag"  # True/False or a NumPy bool
 
 
 @dataclass(frozen=True)
@@ -83,37 +82,16 @@ class Integer:
         return 0 <= v < 2**64 if self.lo >= 0 and self.hi >= 2**63 else -(2**63) <= v < 2**63
 
 
-@dataclass(frozen=True)
-class Name:
-    """A str from `valid` (case-insensitively where `any_case`); `invalid`: names that exist
-    elsewhere but not here; `more`: probes of other forms it takes (an Outlines object)."""
-    valid: Tuple[str, ...]
-    invalid: Tuple[str, ...] = ()
-    any_case: bool = False
-    empty: Any = ValueError  # what "" gives
-    more: Tuple[Tuple[str, Any, Any], ...] = ()
-
-
-Refused = NamedTuple("Refused", [("exc", Any), ("hint", str)])  # a refusal whose message also contains `hint`
-
-
-@dataclass
-class Param:
-    name: str
-    kind: Any  # FLAG, Number, Integer, Name or a compound argument's probes
-    none: Any = TypeError  # what None gives: OK (the default) or an exception
-    also: Tuple[type, ...] = ()  # extra legal outcomes (a GPU that is not there)
-
-
-@dataclass
-class Case:
-    """One public function or method: `call(**base)` is a valid call; `also`: documented domain
-    errors a legal probe may raise."""
-    name: str
-    call: Callable[..., Any]
-    base: Dict[str, Any]
-    params: List[Param]
-    also: Tuple[type, ...] = ()
+# A str from `valid` (case-insensitively where `any_case`); `invalid`: names that exist elsewhere
+# but not here; `empty`: what "" gives; `more`: probes of other forms it takes (an Outlines object).
+Name = namedtuple("Name", "valid invalid any_case empty more", defaults=((), False, ValueError, ()))
+Refused = namedtuple("Refused", "exc hint")  # a refusal whose message also contains `hint`
+# A parameter by name and kind (FLAG, Number, Integer, Name or a compound argument's probes);
+# `none`: what None gives (OK where it is the default); `also`: extra legal outcomes (no GPU).
+Param = namedtuple("Param", "name kind none also", defaults=(TypeError, ()))
+# One public function or method: `call(**base)` is a valid call; `also`: documented domain errors
+# a legal probe may raise.
+Case = namedtuple("Case", "name call base params also", defaults=((),))
 
 
 def _ranged(k: Any, values: List[Tuple[str, Any]]) -> Probes:
@@ -407,7 +385,7 @@ CASES += [
          [Param("n", Integer(2, 4096, slow_above=64)), *NOISE_AND_SEED]),
     Case("shapes.torus", tm.shapes.torus, dict(major=1.0, minor=0.4, segments=5, tube_segments=4),
          [Param("major", Number(0.4, math.inf, open_lo=True, open_hi=True)),
-          Param("minor", Number(0.0, 1.0, open_lo=True, open_hi=True)), SEGMENTS, replace(SEGMENTS, name="tube_segments")]),
+          Param("minor", Number(0.0, 1.0, open_lo=True, open_hi=True)), SEGMENTS, SEGMENTS._replace(name="tube_segments")]),
     Case("shapes.lathe", tm.shapes.lathe, dict(profile=[(0.0, 0.0), (1.0, 0.5), (0.0, 1.0)], segments=5),
          [Param("profile", PROFILES), SEGMENTS]),
     Case("shapes.pawn", tm.shapes.pawn, dict(segments=5), [SEGMENTS]),
@@ -720,7 +698,7 @@ def _replace_case(case: Case) -> Case:
     cls_name, _, ctor = case.name.partition(".")
     fields = {f["name"] for f in descriptions.fields(getattr(tm, cls_name)) if not f["fixed"]}
     made = case.call.make(**case.base)  # type: ignore[attr-defined]
-    params = [replace(p, none=OK) for p in case.params if p.name in fields]
+    params = [p._replace(none=OK) for p in case.params if p.name in fields]
     return Case(f"{cls_name}.replace({ctor or cls_name})", _rendered(made.replace, case.call.use), {}, params)  # type: ignore[attr-defined]
 
 
