@@ -142,7 +142,69 @@ def probes(p: Param) -> Probes:
 
 
 # ------------------------------------------------------------------------------------------------
-# Array probes
+# Parameters generated from the core's descriptions, with what a description cannot say
+
+# A described rule that is not a range, as the values it allows (a rule the sweep does not know
+# fails the collection: add it here).
+GPU = tm.gpu_info()
+RULES: Dict[Tuple[str, str], Tuple[int, ...]] = {
+    ("Shadows", "size"): tuple(2**k for k in range(6, 14)),
+    ("RenderOptions", "msaa"): tuple(n for n in (1, 4) if n in GPU["msaa_samples"]),  # and the device's
+}
+# Legal values above these take long: not probed.
+SLOW = {"iterations": 1000, "vertex_iterations": 1000, "smooth.implicit.iterations": 20, "Shadows.size": 2048}
+# Rules between parameters: this parameter's maximum is that one's default.
+BETWEEN = {"Material.hatching.width": "spacing"}
+# The device's limits: an image's side.
+DEVICE_MAX = {"RenderOptions.width": GPU["max_texture_size"], "RenderOptions.height": GPU["max_texture_size"]}
+ANY_CASE = ("smooth.",)  # the smoothing functions' names are case-insensitive
+# Every choice a parameter of each name takes anywhere, for the names it does not take here.
+SMOOTHING = descriptions.smoothing()
+SETTINGS = {cls.__name__: descriptions.constructors(cls) for cls in descriptions.settings_classes()}
+CHOICES: Dict[str, Set[str]] = {}
+for _params in [m["keywords"] for m in SMOOTHING] + [c[3] for cs in SETTINGS.values() for c in cs]:
+    for _p in _params:
+        if _p["kind"] == "choice":
+            CHOICES.setdefault(_p["name"], set()).update(_p["choices"])
+
+
+def _integer(bound: float, excluded: bool, step: int) -> int:
+    """An integer range's end: the next integer inward where ``bound`` is excluded, the 64-bit
+    limit where it is infinite."""
+    if not math.isfinite(bound):
+        return 2**63 - 1 if bound > 0 else -(2**63)
+    return int(bound) + step if excluded else int(bound)
+
+
+def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str, Any],
+                    defaults: Dict[str, Any]) -> Param:
+    """The probes of the described parameter ``d`` of ``owner`` ("Class.constructor" or
+    "smooth.method"); ``compound``: the probes of each kind a description cannot enumerate."""
+    name, kind, key = d["name"], d["kind"], f"{owner}.{d['name']}"
+    slow = SLOW.get(key, SLOW.get(name, math.inf))
+    if kind in ("int", "float"):
+        lo, hi, (open_lo, open_hi) = d["min"], min(d["max"], DEVICE_MAX.get(key, math.inf)), d["exclusive"]
+        if key in BETWEEN:
+            hi = min(hi, defaults[BETWEEN[key]])
+        if kind == "float":
+            return Param(name, Number(lo, hi, open_lo, open_hi, slow_above=slow), none=none)
+        rule = (owner.split(".")[0], name)
+        assert "rule" not in d or rule in RULES, f"{key}: a rule the sweep does not know: {d['rule']!r}"
+        return Param(name, Integer(_integer(lo, open_lo, 1), _integer(hi, open_hi, -1), slow, RULES.get(rule)),
+                     none=none)
+    if kind == "bool":
+        return Param(name, FLAG, none=none)
+    if kind == "choice":
+        invalid = tuple(sorted(CHOICES[name] - set(d["choices"])))
+        return Param(name, Name(tuple(d["choices"]), invalid, any_case=owner.startswith(ANY_CASE)), none=none)
+    probes = compound.get(d.get("class", kind), compound.get(name))
+    assert probes is not None, f"{key}: no probes for a {kind} (add them to the compound kinds)"
+    return Param(name, probes, none=none)
+
+
+# ------------------------------------------------------------------------------------------------
+# The meshes, images and other arrays, and the functions no description covers: the smoothing
+# functions' arrays, the edges, shapes and threads
 
 V, F = tm.shapes.icosphere(1, noise=0.05, seed=2)  # 42 vertices, 80 faces
 N = len(V)
@@ -259,68 +321,6 @@ def buffers(name: str, good: np.ndarray) -> Table:
         ("inf background", _with(good, (0, 0), np.inf), "nonfinite ok"), ("complex", good.astype(complex), TypeError),
         ("strings", good.astype(str), TypeError), ("empty", good[:0], ValueError),
         ("1-D", good.ravel()[:5].copy(), ValueError), ("a string", name, TypeError))
-
-
-# ------------------------------------------------------------------------------------------------
-# Parameters generated from the core's descriptions, with what a description cannot say
-# A described rule that is not a range, as the values it allows (a rule the sweep does not know
-# fails the collection: add it here).
-GPU = tm.gpu_info()
-RULES: Dict[Tuple[str, str], Tuple[int, ...]] = {
-    ("Shadows", "size"): tuple(2**k for k in range(6, 14)),
-    ("RenderOptions", "msaa"): tuple(n for n in (1, 4) if n in GPU["msaa_samples"]),  # and the device's
-}
-# Legal values above these take long: not probed.
-SLOW = {"iterations": 1000, "vertex_iterations": 1000, "smooth.implicit.iterations": 20, "Shadows.size": 2048}
-# Rules between parameters: this parameter's maximum is that one's default.
-BETWEEN = {"Material.hatching.width": "spacing"}
-# The device's limits: an image's side.
-DEVICE_MAX = {"RenderOptions.width": GPU["max_texture_size"], "RenderOptions.height": GPU["max_texture_size"]}
-ANY_CASE = ("smooth.",)  # the smoothing functions' names are case-insensitive
-# Every choice a parameter of each name takes anywhere, for the names it does not take here.
-SMOOTHING = descriptions.smoothing()
-SETTINGS = {cls.__name__: descriptions.constructors(cls) for cls in descriptions.settings_classes()}
-CHOICES: Dict[str, Set[str]] = {}
-for _params in [m["keywords"] for m in SMOOTHING] + [c[3] for cs in SETTINGS.values() for c in cs]:
-    for _p in _params:
-        if _p["kind"] == "choice":
-            CHOICES.setdefault(_p["name"], set()).update(_p["choices"])
-
-
-def _integer(bound: float, excluded: bool, step: int) -> int:
-    """An integer range's end: the next integer inward where ``bound`` is excluded, the 64-bit
-    limit where it is infinite."""
-    if not math.isfinite(bound):
-        return 2**63 - 1 if bound > 0 else -(2**63)
-    return int(bound) + step if excluded else int(bound)
-
-
-def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str, Any],
-                    defaults: Dict[str, Any]) -> Param:
-    """The probes of the described parameter ``d`` of ``owner`` ("Class.constructor" or
-    "smooth.method"); ``compound``: the probes of each kind a description cannot enumerate."""
-    name, kind, key = d["name"], d["kind"], f"{owner}.{d['name']}"
-    slow = SLOW.get(key, SLOW.get(name, math.inf))
-    if kind in ("int", "float"):
-        lo, hi, (open_lo, open_hi) = d["min"], min(d["max"], DEVICE_MAX.get(key, math.inf)), d["exclusive"]
-        if key in BETWEEN:
-            hi = min(hi, defaults[BETWEEN[key]])
-        if kind == "float":
-            return Param(name, Number(lo, hi, open_lo, open_hi, slow_above=slow), none=none)
-        rule = (owner.split(".")[0], name)
-        assert "rule" not in d or rule in RULES, f"{key}: a rule the sweep does not know: {d['rule']!r}"
-        return Param(name, Integer(_integer(lo, open_lo, 1), _integer(hi, open_hi, -1), slow, RULES.get(rule)),
-                     none=none)
-    if kind == "bool":
-        return Param(name, FLAG, none=none)
-    if kind == "choice":
-        invalid = tuple(sorted(CHOICES[name] - set(d["choices"])))
-        return Param(name, Name(tuple(d["choices"]), invalid, any_case=owner.startswith(ANY_CASE)), none=none)
-    probes = compound.get(d.get("class", kind), compound.get(name))
-    assert probes is not None, f"{key}: no probes for a {kind} (add them to the compound kinds)"
-    return Param(name, probes, none=none)
-
-
 # The smoothing functions: the mesh and the pinned vertices here, every keyword described.
 CASES: List[Case] = [
     Case(f"smooth.{m['method']}", getattr(tm.smooth, m["method"]), MESH,
@@ -330,11 +330,6 @@ CASES: List[Case] = [
          also=(tm.ConvergenceError,) if m["method"] == "implicit" else ())
     for m in SMOOTHING
 ]
-
-
-# ------------------------------------------------------------------------------------------------
-# Hand-written: the edges, shapes and threads
-
 EDGE_INDEX = te.EdgeIndex(V, F)
 # Vertices for the curvature: a mesh 1e-310 across has curvature beyond float64's range, refused.
 CURVED_VERTICES = _but(VERTICES, {"tiny": ValueError})
@@ -741,13 +736,10 @@ CASES += SETTING_CASES + [_replace_case(c) for c in SETTING_CASES] + [
 ]
 
 
-# ------------------------------------------------------------------------------------------------
-# The viewer (toonmesh.Viewer): each call on a fresh 16x16 viewer of the shared handle; the result
-# is its frame (or the snapshot). A render's strokes and SVG: a small render's tapered lines.
-
 
 def _viewer_call(method: str = "") -> Callable[..., Any]:
-    """``method`` on a fresh viewer (its constructor where "")."""
+    """``method`` on a fresh 16x16 viewer of the shared handle (its constructor where ""): its
+    frame, or what the method returns (a snapshot). A render's strokes and SVG: below."""
     def call(**kw: Any) -> Any:
         v = tm.Viewer(HANDLE, renderer=RENDERER, **SMALL) if method else tm.Viewer(renderer=RENDERER, **kw)
         try:
