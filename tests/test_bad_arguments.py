@@ -35,6 +35,7 @@ import pytest
 from PIL import Image
 
 import descriptions
+from conftest import need
 import toonmesh as tm
 from toonmesh import edges as te
 from toonmesh import testing
@@ -162,18 +163,9 @@ ANY_CASE = ("smooth.",)  # the smoothing functions' names are case-insensitive
 SMOOTHING = descriptions.smoothing()
 SETTINGS = {cls.__name__: descriptions.constructors(cls) for cls in descriptions.settings_classes()}
 CHOICES: Dict[str, Set[str]] = {}
-for _params in [m["keywords"] for m in SMOOTHING] + [c[3] for cs in SETTINGS.values() for c in cs]:
-    for _p in _params:
-        if _p["kind"] == "choice":
-            CHOICES.setdefault(_p["name"], set()).update(_p["choices"])
-
-
-def _integer(bound: float, excluded: bool, step: int) -> int:
-    """An integer range's end: the next integer inward where ``bound`` is excluded, the 64-bit
-    limit where it is infinite."""
-    if not math.isfinite(bound):
-        return 2**63 - 1 if bound > 0 else -(2**63)
-    return int(bound) + step if excluded else int(bound)
+for _p in [k for m in SMOOTHING for k in m["keywords"]] + [p for cs in SETTINGS.values() for c in cs for p in c[3]]:
+    if _p["kind"] == "choice":
+        CHOICES.setdefault(_p["name"], set()).update(_p["choices"])
 
 
 def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str, Any],
@@ -190,8 +182,10 @@ def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str
             return Param(name, Number(lo, hi, open_lo, open_hi, slow_above=slow), none=none)
         rule = (owner.split(".")[0], name)
         assert "rule" not in d or rule in RULES, f"{key}: a rule the sweep does not know: {d['rule']!r}"
-        return Param(name, Integer(_integer(lo, open_lo, 1), _integer(hi, open_hi, -1), slow, RULES.get(rule)),
-                     none=none)
+        # an integer range's ends: the next integer inward where excluded, the 64-bit limits where infinite
+        ends = [(int(b) + step * x if math.isfinite(b) else (2**63 - 1 if b > 0 else -(2**63)))
+                for b, x, step in ((lo, open_lo, 1), (hi, open_hi, -1))]
+        return Param(name, Integer(*ends, slow, RULES.get(rule)), none=none)
     if kind == "bool":
         return Param(name, FLAG, none=none)
     if kind == "choice":
@@ -899,35 +893,29 @@ CASES += [
 # ------------------------------------------------------------------------------------------------
 # Running the probes
 
-SCENE_SETTINGS = (tm.Material, tm.Light, tm.Camera, tm.LineStyle, tm.Outlines)
-
-
 def _finite_floats(result: Any) -> bool:
     """Every float inside `result` (tuples, lists, dicts, dataclasses, an EdgeIndex, a render's
     images and a scene setting's read-only fields) is finite; a render's depth is +inf where no
     mesh is."""
-    if isinstance(result, tm.RenderResult):
-        depth = result.depth
-        if depth is not None and not np.all(np.isfinite(depth) | (depth == np.inf)):
-            return False
-        result = [result.color, result.normal, result.outline, result.lines or [], result.view_matrix,
-                  result.projection, result.near, result.far]
-    if isinstance(result, te.EdgeIndex):
-        result = [result.features, result.face_normals]
-    elif isinstance(result, tm.RenderStack):
-        result = list(result)
-    elif isinstance(result, SCENE_SETTINGS):
-        result = [getattr(result, k) for k in dir(type(result))
-                  if not k.startswith("_") and not callable(getattr(result, k))]
-    elif isinstance(result, np.ndarray):
+    if isinstance(result, np.ndarray):
         return result.dtype.kind != "f" or bool(np.isfinite(result).all())
-    elif isinstance(result, float):
+    if isinstance(result, float):
         return math.isfinite(result)
-    elif isinstance(result, dict):
-        result = list(result.values())
-    elif hasattr(result, "__dataclass_fields__"):
-        result = [getattr(result, k) for k in result.__dataclass_fields__]
-    return not isinstance(result, (tuple, list)) or all(_finite_floats(r) for r in result)
+    if isinstance(result, tm.RenderResult):
+        if result.depth is not None and not np.all(np.isfinite(result.depth) | (result.depth == np.inf)):
+            return False
+        parts = [result.color, result.normal, result.outline, result.lines or [], result.view_matrix,
+                 result.projection, result.near, result.far]
+    elif isinstance(result, te.EdgeIndex):
+        parts = [result.features, result.face_normals]
+    elif isinstance(result, (tm.Material, tm.Light, tm.Camera, tm.LineStyle, tm.Outlines)):
+        parts = [getattr(result, k) for k in dir(type(result))
+                 if not k.startswith("_") and not callable(getattr(result, k))]
+    elif isinstance(result, (dict, tuple, list, tm.RenderStack)):
+        parts = list(result.values() if isinstance(result, dict) else result)
+    else:
+        parts = [getattr(result, k) for k in getattr(result, "__dataclass_fields__", ())]
+    return all(_finite_floats(p) for p in parts)
 
 
 def _same(a: Any, b: Any) -> bool:
@@ -997,14 +985,11 @@ def test_bad_argument(case: Case, param: Param, label: str, value: Any, expected
     assert _same(case.call(**case.base), reference)
 
 
-def _methods(cls: type) -> Set[str]:
-    """A class's own public methods (static ones too), as "Class.method"."""
-    return {f"{cls.__name__}.{n}" for n in vars(cls) if not n.startswith("_") and callable(getattr(cls, n))}
-
-
 def test_every_public_callable_is_in_the_table() -> None:
     """A new public function, class or method must get its row in CASES (or be listed here as
     taking no arguments worth probing)."""
+    def _methods(cls: type) -> Set[str]:  # a class's own public methods (static ones too), as "Class.method"
+        return {f"{cls.__name__}.{n}" for n in vars(cls) if not n.startswith("_") and callable(getattr(cls, n))}
     covered = {c.name.split("(")[0] for c in CASES} | {"data.load_obj", "load"}  # they read files: see below
     no_arguments = {"get_num_threads", "data.bunny", "edges.FeatureEdges", "edges.EdgeDetection", "edges.Curvature",
                     "kang_table", "Light.key", "MeshHandle", "RenderStack", "RenderKeywords"}  # (a TypedDict)
@@ -1069,8 +1054,6 @@ def test_load_obj_arguments(tmp_path: Any, label: str, path: Any, expected: Any)
 
 @pytest.mark.parametrize("label, path, expected", PATHS)
 def test_load_arguments(tmp_path: Any, label: str, path: Any, expected: Any) -> None:
-    from conftest import need
-
     need("trimesh")  # toonmesh.load reads through trimesh
     result = _read(tm.load, tmp_path, path, expected)
     if expected == OK:
