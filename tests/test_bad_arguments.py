@@ -548,32 +548,27 @@ MESHES = (("a handle", HANDLE, OK), ("a list", [HANDLE, HANDLE], OK), ("a tuple"
           ("arrays", V, TypeError), ("a (V, F) pair", (V, F), TypeError), ("a string", "bunny", TypeError),
           ("None in the list", [HANDLE, None], TypeError), ("a mesh id", HANDLE.id, TypeError))
 BACKEND = Name(("auto", "vulkan", "gl", "vk", "opengl", "gles", "egl", " vulkan "), any_case=True, empty=OK)
-NORMALS = Name(
-    ("smooth", "flat", "auto"),
-    more=(("auto 45", ("auto", 45), OK), ("auto 0", ("auto", 0), OK), ("auto 180", ("auto", 180.0), OK),
-          ("auto numpy", ("auto", np.float32(20)), OK), ("auto -1", ("auto", -1), ValueError),
-          ("auto 181", ("auto", 181), ValueError), ("auto nan", ("auto", float("nan")), ValueError),
-          ("auto inf", ("auto", float("inf")), ValueError), ("auto huge int", ("auto", 10**400), ValueError),
-          ("smooth with an angle", ("smooth", 30), ValueError), ("auto string angle", ("auto", "45"), TypeError),
-          ("auto bool angle", ("auto", True), TypeError), ("auto none angle", ("auto", None), TypeError),
-          ("auto alone", ("auto",), TypeError), ("auto three", ("auto", 30, 1), TypeError),
-          ("auto list", ["auto", 45], TypeError), ("own, one short", np.ones((len(V) - 1, 3)), ValueError),
-          ("own, two columns", np.ones((len(V), 2)), ValueError),
-          ("own, a zero row", np.zeros((len(V), 3)), ValueError),
-          ("own, integers", np.ones((len(V), 3), dtype=np.int64), TypeError),
-          ("own, a list", np.ones((len(V), 3)).tolist(), TypeError)),
-)
+NORMALS = Name(("smooth", "flat", "auto"), more=(
+    ("auto 45", ("auto", 45), OK), ("auto 0", ("auto", 0), OK), ("auto 180", ("auto", 180.0), OK),
+    ("auto numpy", ("auto", np.float32(20)), OK), ("auto -1", ("auto", -1), ValueError),
+    ("auto 181", ("auto", 181), ValueError), ("auto nan", ("auto", float("nan")), ValueError),
+    ("auto inf", ("auto", float("inf")), ValueError), ("auto huge int", ("auto", 10**400), ValueError),
+    ("smooth with an angle", ("smooth", 30), ValueError), ("auto string angle", ("auto", "45"), TypeError),
+    ("auto bool angle", ("auto", True), TypeError), ("auto none angle", ("auto", None), TypeError),
+    ("auto alone", ("auto",), TypeError), ("auto three", ("auto", 30, 1), TypeError),
+    ("auto list", ["auto", 45], TypeError), ("own, one short", np.ones((len(V) - 1, 3)), ValueError),
+    ("own, two columns", np.ones((len(V), 2)), ValueError), ("own, a zero row", np.zeros((len(V), 3)), ValueError),
+    ("own, integers", np.ones((len(V), 3), dtype=np.int64), TypeError),
+    ("own, a list", np.ones((len(V), 3)).tolist(), TypeError)))
 UV = (V[:, :2] + 1.5) / 3.0
 TEXTURE = (np.arange(4 * 4 * 3) * 5).astype(np.uint8).reshape(4, 4, 3)
-UVS = (
-    ("float64", UV, OK), ("float32", UV.astype(np.float32), OK), ("big-endian", UV.astype(">f8"), OK),
-    ("nested list", UV.tolist(), OK),
-    ("beyond [0, 1]", UV * 7 - 3, OK),  # wrapped
-    ("nan", _with(UV, (0, 0), np.nan), ValueError), ("inf", _with(UV, (1, 1), np.inf), ValueError),
-    ("beyond float32", _with(UV, (0, 1), 1e300), ValueError), ("one too few", UV[:-1], ValueError),
-    ("three columns", V, ValueError), ("flat", UV.ravel(), ValueError), ("int64", UV.astype(np.int64), TypeError),
-    ("string", "uv", TypeError),
-)
+# beyond [0, 1]: wrapped
+UVS = (("float64", UV, OK), ("float32", UV.astype(np.float32), OK), ("big-endian", UV.astype(">f8"), OK),
+       ("nested list", UV.tolist(), OK), ("beyond [0, 1]", UV * 7 - 3, OK),
+       ("nan", _with(UV, (0, 0), np.nan), ValueError), ("inf", _with(UV, (1, 1), np.inf), ValueError),
+       ("beyond float32", _with(UV, (0, 1), 1e300), ValueError), ("one too few", UV[:-1], ValueError),
+       ("three columns", V, ValueError), ("flat", UV.ravel(), ValueError), ("int64", UV.astype(np.int64), TypeError),
+       ("string", "uv", TypeError))
 TEXTURES = (("uint8 rgb", TEXTURE, OK),
             ("uint8 rgba", np.concatenate([TEXTURE, np.full((4, 4, 1), 200, np.uint8)], -1), OK),
             ("float64", TEXTURE / 255.0, OK), ("float32", (TEXTURE / 255.0).astype(np.float32), OK),
@@ -592,20 +587,20 @@ TEXTURE_PARAMS = [  # a texture needs uv, and uv a texture
 
 
 def mesh_colours(n: int) -> Table:
-    """Colours of n vertices or faces: (n, 3) or (n, 4) sRGB, uint8 codes or floats in [0, 1]."""
+    """Colours of n vertices or faces: (n, 3) or (n, 4) sRGB, uint8 codes or floats in [0, 1]
+    (0-255 floats get a hint)."""
     base = np.linspace(0.0, 1.0, n * 3).reshape(n, 3)
-    return (
-        ("float64 rgb", base, OK), ("float32 rgba", np.concatenate([base, np.ones((n, 1))], 1).astype(np.float32), OK),
-        ("uint8", (base * 255).astype(np.uint8), OK), ("big-endian", base.astype(">f8"), OK),
-        ("fortran order", np.asfortranarray(base), OK), ("nested list", base.tolist(), OK),
-        ("one too few", base[:-1], ValueError), ("two channels", base[:, :2], ValueError),
-        ("five channels", np.ones((n, 5)), ValueError), ("flat", base.ravel(), ValueError),
-        ("empty", np.zeros((0, 3)), ValueError), ("nan", _with(base, (0, 0), np.nan), ValueError),
-        ("inf", _with(base, (0, 1), np.inf), ValueError), ("negative", _with(base, (1, 1), -0.1), ValueError),
-        ("0-255 floats", base * 255, Refused(ValueError, "uint8")),  # codes get a hint
-        ("int64", (base * 255).astype(np.int64), TypeError), ("float16", base.astype(np.float16), TypeError),
-        ("string", "red", TypeError),
-    )
+    return (("float64 rgb", base, OK),
+            ("float32 rgba", np.concatenate([base, np.ones((n, 1))], 1).astype(np.float32), OK),
+            ("uint8", (base * 255).astype(np.uint8), OK), ("big-endian", base.astype(">f8"), OK),
+            ("fortran order", np.asfortranarray(base), OK), ("nested list", base.tolist(), OK),
+            ("one too few", base[:-1], ValueError), ("two channels", base[:, :2], ValueError),
+            ("five channels", np.ones((n, 5)), ValueError), ("flat", base.ravel(), ValueError),
+            ("empty", np.zeros((0, 3)), ValueError), ("nan", _with(base, (0, 0), np.nan), ValueError),
+            ("inf", _with(base, (0, 1), np.inf), ValueError), ("negative", _with(base, (1, 1), -0.1), ValueError),
+            ("0-255 floats", base * 255, Refused(ValueError, "uint8")),
+            ("int64", (base * 255).astype(np.int64), TypeError), ("float16", base.astype(np.float16), TypeError),
+            ("string", "red", TypeError))
 
 
 BOTH_COLOURS = (("with vertex colours too", np.zeros((len(F), 3)), ValueError),)
