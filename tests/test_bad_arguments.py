@@ -26,7 +26,6 @@ import shutil
 import tempfile
 import time
 from collections import namedtuple
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable, Dict, List, Optional, Set, Tuple
 
@@ -44,45 +43,17 @@ from toonmesh.data import load_obj
 # ------------------------------------------------------------------------------------------------
 # What a parameter takes, and its probes: (label, value, expected outcome). A compound argument
 # (an array, a colour, a settings object) takes a tuple of such probes, written out below.
-
 OK = "ok"  # the outcome of a legal value
 FLAG = "flag"  # a parameter that takes True/False or a NumPy bool
 Probes = List[Tuple[str, Any, Any]]
 Table = Tuple[Tuple[str, Any, Any], ...]  # a compound argument's probes
 
 
-@dataclass(frozen=True)
-class Number:
-    """An int or float (or NumPy number) in [lo, hi] (open ends where asked), never NaN; legal
-    values above ``slow_above`` would take long, so they are not probed."""
-    lo: float
-    hi: float
-    open_lo: bool = False
-    open_hi: bool = False
-    slow_above: float = math.inf
-
-    def legal(self, v: float) -> bool:
-        above = v > self.lo if self.open_lo else v >= self.lo
-        return not math.isnan(v) and above and (v < self.hi if self.open_hi else v <= self.hi)
-
-
-@dataclass(frozen=True)
-class Integer:
-    """An int (or NumPy integer) in [lo, hi] (and in `only` where given); an int beyond 64 bits
-    is refused with ValueError."""
-    lo: int
-    hi: int
-    slow_above: float = math.inf
-    only: Optional[Tuple[int, ...]] = None
-
-    def legal(self, v: int) -> bool:
-        return self.lo <= v <= self.hi and (self.only is None or v in self.only)
-
-    def representable(self, v: int) -> bool:
-        # an unsigned 64-bit parameter (a seed) takes [0, 2**64), a signed one [-2**63, 2**63)
-        return 0 <= v < 2**64 if self.lo >= 0 and self.hi >= 2**63 else -(2**63) <= v < 2**63
-
-
+# A number in [lo, hi] (open ends where asked), never NaN: an int or float (or NumPy number). An
+# Integer: an int (or NumPy integer), and in `only` where given. Legal values above `slow_above`
+# would take long: they are not probed.
+Number = namedtuple("Number", "lo hi open_lo open_hi slow_above", defaults=(False, False, math.inf))
+Integer = namedtuple("Integer", "lo hi slow_above only", defaults=(math.inf, None))
 # A str from `valid` (case-insensitively where `any_case`); `invalid`: names that exist elsewhere
 # but not here; `empty`: what "" gives; `more`: probes of other forms it takes (an Outlines object).
 Name = namedtuple("Name", "valid invalid any_case empty more", defaults=((), False, ValueError, ()))
@@ -96,17 +67,23 @@ Case = namedtuple("Case", "name call base params also", defaults=((),))
 
 
 def _ranged(k: Any, values: List[Tuple[str, Any]]) -> Probes:
-    """Values of the right type: OK within the kind's range, ValueError outside it (and for an
-    int beyond a float, or beyond 64 bits); a legal value above ``k.slow_above`` is left out."""
+    """Values of the right type: OK within the kind's range, ValueError outside it and beyond what
+    the parameter holds (a float: an int beyond a float; an int: beyond 64 bits, [0, 2**64) for an
+    unsigned one such as a seed, else [-2**63, 2**63)); a legal value above ``k.slow_above`` is
+    left out."""
     out: Probes = []
     for label, v in values:
-        integer = isinstance(k, Integer)
-        if not k.representable(int(v)) if integer else isinstance(v, int) and abs(v) > 1e308:
-            out.append((label, v, ValueError))
-            continue
-        x = int(v) if integer else float(v)
-        if not (k.legal(x) and x > k.slow_above):
-            out.append((label, v, OK if k.legal(x) else ValueError))
+        if isinstance(k, Integer):
+            x = int(v)
+            held = 0 <= x < 2**64 if k.lo >= 0 and k.hi >= 2**63 else -(2**63) <= x < 2**63
+            legal = held and k.lo <= x <= k.hi and (k.only is None or x in k.only)
+        else:
+            held = not (isinstance(v, int) and abs(v) > 1e308)
+            x = float(v) if held else math.inf
+            above, below = (x > k.lo if k.open_lo else x >= k.lo), (x < k.hi if k.open_hi else x <= k.hi)
+            legal = held and not math.isnan(x) and above and below
+        if not (legal and x > k.slow_above):
+            out.append((label, v, OK if legal else ValueError))
     return out
 
 
@@ -199,7 +176,6 @@ def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str
 # ------------------------------------------------------------------------------------------------
 # The meshes, images and other arrays, and the functions no description covers: the smoothing
 # functions' arrays, the edges, shapes and threads
-
 V, F = tm.shapes.icosphere(1, noise=0.05, seed=2)  # 42 vertices, 80 faces
 N = len(V)
 MESH = dict(vertices=V, faces=F)
@@ -384,10 +360,8 @@ CASES += [
     Case("set_num_threads", tm.set_num_threads, dict(n=0), [Param("n", Integer(0, 1024, slow_above=8))]),
 ]
 
-
 # ------------------------------------------------------------------------------------------------
 # The renderer's table: 16x16 images, one shared Renderer
-
 RENDERER = tm.Renderer()
 HANDLE = RENDERER.add_mesh(V, F)
 OTHER_HANDLE = tm.Renderer().add_mesh(V, F)  # a mesh of another renderer
@@ -750,8 +724,8 @@ CASES += [
          dict(vertices=V, faces=F, normals="smooth", image_format="png", drag_scale=0.5, controls=False, **SMALL),
          [Param("vertices", VERTICES), Param("faces", FACES), NORMALS_PARAM, Param("image_format", Name(("png", "jpeg"))),
           Param("drag_scale", Number(0.05, 1.0)), Param("controls", FLAG)]),
-    Case("Viewer.orbit", _viewer_call("orbit"), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)]),
-    Case("Viewer.pan", _viewer_call("pan"), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)]),
+    *[Case(f"Viewer.{m}", _viewer_call(m), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)])
+      for m in ("orbit", "pan")],
     Case("Viewer.zoom", _viewer_call("zoom"), dict(factor=1.5), [Param("factor", Number(1e-3, 1e3))]),
     Case("Viewer.set", _viewer_call("set"), dict(SMALL, outlines="mesh", msaa=1, supersample=1), VIEWER_SETTINGS),
     Case("Viewer.snapshot", _viewer_call("snapshot"), FRAMED, FRAME),
@@ -770,11 +744,9 @@ CASES += [
          STROKE_PARAMS + [Param("order", Name(("drawing", "plotter"))), Param("widths", Name(("auto", "kind", "point")))]),
 ]
 
-
 # ------------------------------------------------------------------------------------------------
 # toonmesh.testing: comparisons of meshes, images and drawings, snapshots, and the cross-checks.
 # A legal value that makes two things differ gives AssertionError, the comparison's outcome.
-
 
 # A mesh to compare: a (vertices, faces) pair, positions alone, or a Trimesh-like object.
 COMPARED = (("pair", (V, F), OK), ("list pair", [V, F], OK), ("positions alone", V, OK),
@@ -884,9 +856,9 @@ CASES += [
           Param("mask", MASKS, none=OK), Param("which", Name(("sobel", "sobel_h", "sobel_v")))]),
 ]
 
-
 # ------------------------------------------------------------------------------------------------
 # Running the probes
+
 
 def _finite_floats(result: Any) -> bool:
     """Every float inside `result` (tuples, lists, dicts, dataclasses, an EdgeIndex, a render's
