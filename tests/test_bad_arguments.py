@@ -1,19 +1,17 @@
-"""Every public function and class parameter against bad values. The settings classes'
-constructors and ``replace``, the render keywords (``RenderOptions``' fields) and the smoothing
-keywords are generated from the core's descriptions (tests/descriptions.py): a number gives the
-probes of its rule's bounds, a choice its names, unknown ones and those the same parameter takes
-elsewhere, a flag its bools. Written here is only what a description cannot say: the probes of
-arrays, colours and other compound kinds, a rule that is not a range, rules between parameters,
-the device's limits, how a setting is rendered, and the functions no description covers.
+"""Every public function and class parameter against bad values. Generated from the core's
+descriptions (tests/descriptions.py): the settings classes' constructors and ``replace``, the render
+keywords (``RenderOptions``' fields) and the smoothing keywords; a number gives the probes of its
+rule's bounds, a choice its names, unknown ones and those the same parameter takes elsewhere, a flag
+its bools. Written here only what a description cannot say: the probes of each compound kind
+(KINDS), a rule that is not a range, rules between parameters, the device's limits, how a setting
+is rendered, and the functions no description covers.
 
-Each probe's outcome follows the documented rules: a legal value gives a result with finite
-floats (a filter such as Sobel may pass non-finite pixels through) or a documented domain error
-(ConvergenceError); anything else raises TypeError, ValueError or IndexError whose message starts
-with the parameter's name ("name: ...", "name[i]: ..." for an element, "a, b: ..." for arguments
-that go together, "owner.name: ..." for a field of a compound argument such as
-"meshes[0].transform"), some with a hint (colours above 1: "divide by 255"); nothing crashes or
-hangs, and the next valid call gives the same result as before. The renderer's probes render
-16x16 images with one shared Renderer; a setting its constructor accepts must also render.
+A legal value gives a result with finite floats (a filter such as Sobel may pass non-finite pixels
+through) or a documented domain error (ConvergenceError); anything else raises TypeError,
+ValueError or IndexError whose message starts with the parameter's name (see _named), some with a
+hint (colours above 1: "divide by 255"); nothing crashes or hangs, and the next valid call gives
+the same result as before. The renderer's probes render 16x16 images with one shared Renderer; a
+setting its constructor accepts must also render.
 """
 
 from __future__ import annotations
@@ -47,8 +45,6 @@ OK = "ok"  # the outcome of a legal value
 FLAG = "flag"  # a parameter that takes True/False or a NumPy bool
 Probes = List[Tuple[str, Any, Any]]
 Table = Tuple[Tuple[str, Any, Any], ...]  # a compound argument's probes
-
-
 # A number in [lo, hi] (open ends where asked), never NaN: an int or float (or NumPy number). An
 # Integer: an int (or NumPy integer), and in `only` where given. Legal values above `slow_above`
 # would take long: they are not probed.
@@ -121,7 +117,6 @@ def probes(p: Param) -> Probes:
 
 # ------------------------------------------------------------------------------------------------
 # Parameters generated from the core's descriptions, with what a description cannot say
-
 # A described rule that is not a range, as the values it allows (a rule the sweep does not know
 # fails the collection: add it here).
 GPU = tm.gpu_info()
@@ -131,8 +126,7 @@ RULES: Dict[Tuple[str, str], Tuple[int, ...]] = {
 }
 # Legal values above these take long: not probed.
 SLOW = {"iterations": 1000, "vertex_iterations": 1000, "smooth.implicit.iterations": 20, "Shadows.size": 2048}
-# Rules between parameters: this parameter's maximum is that one's default.
-BETWEEN = {"Material.hatching.width": "spacing"}
+BETWEEN = {"Material.hatching.width": "spacing"}  # a rule between parameters: a maximum that is another's default
 # The device's limits: an image's side.
 DEVICE_MAX = {"RenderOptions.width": GPU["max_texture_size"], "RenderOptions.height": GPU["max_texture_size"]}
 ANY_CASE = ("smooth.",)  # the smoothing functions' names are case-insensitive
@@ -225,8 +219,6 @@ PINNED = (("indices", np.array([0, 5]), OK), ("list", [0, 5], OK),
           ("uint64 max", np.array([2**64 - 1], np.uint64), IndexError), ("float", np.array([1.0]), TypeError),
           ("strings", np.array(["1"]), TypeError), ("mask too short", np.ones(N - 1, bool), ValueError),
           ("2-D array", np.array([[0, 1]]), ValueError), ("2-D list", [[0, 1]], TypeError), ("scalar", 3, TypeError))
-
-
 # three numbers: a point (a direction refuses zero)
 VEC3 = (("tuple", (0.3, 0.2, 5.0), OK), ("ints", (0, 0, 5), OK), ("array", np.array([0.3, 0.2, 5.0]), OK),
         ("float32 array", np.array([0.3, 0.2, 5.0], np.float32), OK), ("bytes", b"abc", TypeError),
@@ -291,6 +283,8 @@ def buffers(name: str, good: np.ndarray) -> Table:
         ("inf background", _with(good, (0, 0), np.inf), "nonfinite ok"), ("complex", good.astype(complex), TypeError),
         ("strings", good.astype(str), TypeError), ("empty", good[:0], ValueError),
         ("1-D", good.ravel()[:5].copy(), ValueError), ("a string", name, TypeError))
+
+
 # The smoothing functions: the mesh and the pinned vertices here, every keyword described.
 CASES: List[Case] = [
     Case(f"smooth.{m['method']}", getattr(tm.smooth, m["method"]), MESH,
@@ -368,9 +362,9 @@ OTHER_HANDLE = tm.Renderer().add_mesh(V, F)  # a mesh of another renderer
 REMOVED_HANDLE = RENDERER.add_mesh(V, F)
 RENDERER.remove_mesh(REMOVED_HANDLE)
 SMALL = dict(width=16, height=16)
+SNAPSHOTS = TURNTABLES = tempfile.mkdtemp(prefix="toonmesh-bad-arguments-")  # what the probes write
+atexit.register(shutil.rmtree, SNAPSHOTS, ignore_errors=True)
 FRAMED = dict(SMALL, outputs=("color", "normal", "depth"), outlines="mesh", msaa=1, supersample=1)
-
-
 BYTE_CODES = Refused(ValueError, "divide by 255")  # 0-255 codes get a hint
 # an sRGB colour: '#rrggbb' or 3 numbers in [0, 1] (with alpha, '#rrggbbaa' or 4 numbers too)
 COLOUR = (("hex", "#ff8040", OK), ("hex without #", "ff8040", OK), ("hex upper case", "#FF8040", OK),
@@ -390,8 +384,6 @@ COLOUR = (("hex", "#ff8040", OK), ("hex without #", "ff8040", OK), ("hex upper c
           ("colour name", "white", ValueError), ("empty string", "", ValueError),
           ("bools", (True, False, True), TypeError), ("strings", ("1", "0", "0"), TypeError),
           ("nested", [[1.0, 0.0, 0.0]], TypeError), ("complex", (1j, 0.0, 0.0), TypeError), ("scalar", 0.5, TypeError))
-
-
 _TURN = np.array([[0.0, -1.0, 0.0, 0.5], [1.0, 0.0, 0.0, -2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
 _LIGHTS = [tm.Light.key(), tm.Light.directional((1.0, -1.0, -1.0)), tm.Light.point((2.0, 2.0, 2.0), space="camera")]
 # The probes of each kind a description cannot enumerate, in one place: by the field's kind, by
@@ -507,7 +499,6 @@ KINDS: Dict[str, Any] = {
                 ("an Outlines", tm.Outlines(), TypeError)),
 }
 # What only the renderer's own functions take: meshes, cameras, a backend, normals, a mesh's colours and texture.
-# the outputs of a render without outlines
 OUTPUTS_WITHOUT_OUTLINES = (("color", ("color",), OK), ("normal and depth", ("normal", "depth"), OK),
                             ("outline", ("outline",), ValueError), ("lines", ("color", "lines"), ValueError))
 CAMERAS = (("two", [tm.Camera.fit(), tm.Camera.look_at((0.3, 0.2, 5.0))], OK),
@@ -699,7 +690,6 @@ CASES += SETTING_CASES + [_replace_case(c) for c in SETTING_CASES] + [
 ]
 
 
-
 def _viewer_call(method: str = "") -> Callable[..., Any]:
     """``method`` on a fresh 16x16 viewer of the shared handle (its constructor where ""): its
     frame, or what the method returns (a snapshot). A render's strokes and SVG: below."""
@@ -716,8 +706,6 @@ def _viewer_call(method: str = "") -> Callable[..., Any]:
 DRAG = Number(-1e6, 1e6)
 LINES = tm.render(V, F, outlines=tm.Outlines("mesh", taper=5.0), outputs=("lines",), width=64, height=64)
 STROKE_PARAMS = [Param("smooth", Number(0.0, 4096.0)), Param("simplify", POSITIVE)]
-TURNTABLES = tempfile.mkdtemp(prefix="toonmesh-bad-arguments-turntable-")
-atexit.register(shutil.rmtree, TURNTABLES, ignore_errors=True)
 VIEWER_SETTINGS = [p for p in FRAME if p.name != "outputs"]  # a viewer shows the colour image
 CASES += [
     Case("Viewer", _viewer_call(),
@@ -747,7 +735,6 @@ CASES += [
 # ------------------------------------------------------------------------------------------------
 # toonmesh.testing: comparisons of meshes, images and drawings, snapshots, and the cross-checks.
 # A legal value that makes two things differ gives AssertionError, the comparison's outcome.
-
 # A mesh to compare: a (vertices, faces) pair, positions alone, or a Trimesh-like object.
 COMPARED = (("pair", (V, F), OK), ("list pair", [V, F], OK), ("positions alone", V, OK),
             ("float32 positions", (V.astype(np.float32), F), OK),
@@ -765,9 +752,6 @@ COMPARED = (("pair", (V, F), OK), ("list pair", [V, F], OK), ("positions alone",
             ("scalar", 1.0, ValueError), ("faces (M, 4)", (V, np.hstack([F, F[:, :1]])), ValueError),
             ("negative face index", (V, _with(F, (5, 2), -1)), IndexError),
             ("face index N", (V, _with(F, (5, 2), N)), IndexError))
-
-
-
 IMG8 = (np.random.default_rng(5).random((9, 11, 4)) * 255).astype(np.uint8)
 COLOUR_AND_LINES = tm.render(V, F, outlines="mesh", outputs=("color", "lines"), width=11, height=9)
 DEPTH_ONLY = tm.render(V, F, outputs=("depth",), width=11, height=9)
@@ -800,10 +784,6 @@ DRAWINGS = (("a render", LINES, OK), ("its SVG", LINES.svg(), OK), ("its filled 
 PEER_VERTICES = _but(VERTICES, {"huge but finite": None, "tiny": None})
 PEER_FACES = _but(FACES, {"one face": None})
 PEER_ITERATIONS = Param("iterations", Integer(0, 10**6, slow_above=20), none=OK)
-SNAPSHOTS = tempfile.mkdtemp(prefix="toonmesh-bad-arguments-")
-atexit.register(shutil.rmtree, SNAPSHOTS, ignore_errors=True)
-
-
 SHARE = Param("share", Number(0.0, 1.0))
 COMPARED_MESHES = [Param("actual", COMPARED), Param("expected", COMPARED)]
 POSITIVE_TOLERANCE = Number(0.0, math.inf, open_hi=True)
@@ -892,7 +872,8 @@ def _same(a: Any, b: Any) -> bool:
     if isinstance(a, tm.RenderStack):
         return isinstance(b, tm.RenderStack) and _same(list(a), list(b))
     if isinstance(a, tm.MeshHandle):  # a new upload: another id, the same mesh
-        return isinstance(b, tm.MeshHandle) and all(getattr(a, k) == getattr(b, k) for k in ("n_vertices", "n_faces", "normals"))
+        return isinstance(b, tm.MeshHandle) and all(getattr(a, k) == getattr(b, k) for k in ("n_vertices", "n_faces",
+                                                                                            "normals"))
     if isinstance(a, tm.Renderer):
         return isinstance(b, tm.Renderer) and a.backend == b.backend
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
@@ -962,19 +943,16 @@ def test_every_public_callable_is_in_the_table() -> None:
                     "kang_table", "Light.key", "MeshHandle", "RenderStack", "RenderKeywords"}  # (a TypedDict)
     no_arguments |= {f"{c}.describe" for c in SETTINGS}  # what each settings class is made of, for front ends
     no_arguments |= {"Camera", "Light", "Material"}  # made by their static methods only (which have rows)
-    # A render's result: its methods write its images out (test_render.py, test_render_outlines.py).
-    no_arguments |= {"RenderResult"} | _methods(tm.RenderResult)
+    no_arguments |= {"RenderResult"} | _methods(tm.RenderResult)  # they write its images: test_render*.py
     no_arguments |= {"Viewer.close", "Viewer.code", "Viewer.reframe", "Viewer.home"}  # tests/test_viewer.py
-    # toonmesh.testing: what its comparisons return, and need_peer (tests/test_testing.py: it
-    # imports a module by name, skips or raises)
+    # toonmesh.testing: what its comparisons return, and need_peer (test_testing.py: it imports a peer)
     no_arguments |= {"testing.MeshDifference", "testing.ImageDifference", "testing.DrawingDifference",
                      "testing.CurvatureAgreement", "testing.SobelDifference", "testing.PeerMissingError",
                      "testing.need_peer"}
     public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
     public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny", "data.load_obj"}
     public |= {f"testing.{n}" for n in testing.__all__ if callable(getattr(testing, n))}
-    public |= {f"edges.EdgeIndex.{n}" for n in ("feature_edges", "silhouette", "outlines", "segments", "contours",
-                                                "suggestive_contours")}
+    public |= {f"edges.{m}" for m in _methods(te.EdgeIndex)}
     # The renderer: every function and class at the top level, and each class's methods.
     for name in tm.__all__:
         obj = getattr(tm, name)
@@ -989,11 +967,10 @@ def test_every_public_callable_is_in_the_table() -> None:
 
 # The functions that read files get their own probes: a bad argument names ``path``; a bad file
 # (toonmesh.load) names the file.
-GOOD_OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
 PATHS = [("int", 3, TypeError), ("none", None, TypeError), ("list", ["a.obj"], TypeError),
          ("bytes", b"a.obj", TypeError), ("missing file", "no/such/file.obj", FileNotFoundError),
          ("not an obj", "BAD", ValueError), ("short vertex line", "v 1 2\nf 1 2 3\n", ValueError),
-         ("a good obj", GOOD_OBJ, OK)]
+         ("a good obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", OK)]
 
 
 def _read(read: Callable[[Any], Any], tmp_path: Any, path: Any, expected: Any) -> Any:
