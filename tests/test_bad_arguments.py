@@ -117,8 +117,7 @@ def probes(p: Param) -> Probes:
 
 # ------------------------------------------------------------------------------------------------
 # Parameters generated from the core's descriptions, with what a description cannot say
-# A described rule that is not a range, as the values it allows (a rule the sweep does not know
-# fails the collection: add it here).
+# A described rule that is not a range, as the values it allows (an unknown one fails the collection).
 GPU = tm.gpu_info()
 RULES: Dict[Tuple[str, str], Tuple[int, ...]] = {
     ("Shadows", "size"): tuple(2**k for k in range(6, 14)),
@@ -295,14 +294,12 @@ CASES: List[Case] = [
     for m in SMOOTHING
 ]
 EDGE_INDEX = te.EdgeIndex(V, F)
-# Vertices for the curvature: a mesh 1e-310 across has curvature beyond float64's range, refused.
-CURVED_VERTICES = _but(VERTICES, {"tiny": ValueError})
+CURVED_VERTICES = _but(VERTICES, {"tiny": ValueError})  # a mesh 1e-310 across: its curvature is beyond float64
 MESH_PARAMS = [Param("vertices", VERTICES), Param("faces", FACES)]
 CREASE = Param("crease_angle", Number(0.0, 180.0), none=OK)  # None: the core's default
 POSITIVE = Number(0.0, math.inf, open_hi=True)
 NOISE_AND_SEED = [Param("noise", POSITIVE), Param("seed", Integer(0, 2**64 - 1))]  # relative noise
-# The view the edge functions take: an eye point (the origin is one) or a view direction (never
-# zero), and a valid one of each.
+# The edge functions' view: an eye point (the origin is one) or a direction (never zero); a valid one of each.
 EYE = Param("eye", VEC3, none=ValueError)
 DIRECTION = Param("direction", NONZERO_VEC3, none=ValueError)
 AN_EYE, A_DIRECTION = dict(eye=(0.3, 0.2, 5.0)), dict(direction=(0.3, 0.2, -1.0))
@@ -386,9 +383,8 @@ COLOUR = (("hex", "#ff8040", OK), ("hex without #", "ff8040", OK), ("hex upper c
           ("nested", [[1.0, 0.0, 0.0]], TypeError), ("complex", (1j, 0.0, 0.0), TypeError), ("scalar", 0.5, TypeError))
 _TURN = np.array([[0.0, -1.0, 0.0, 0.5], [1.0, 0.0, 0.0, -2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
 _LIGHTS = [tm.Light.key(), tm.Light.directional((1.0, -1.0, -1.0)), tm.Light.point((2.0, 2.0, 2.0), space="camera")]
-# The probes of each kind a description cannot enumerate, in one place: by the field's kind, by
-# its settings class for a setting, and by its name where the rule depends on what the numbers
-# mean (a vec3's zero, an up vector against the view, thresholds against values).
+# The probes of each kind a description cannot enumerate, in one place: by the field's kind, its settings class
+# for a setting, or its name where the rule depends on what the numbers mean (a vec3's zero, thresholds, up).
 KINDS: Dict[str, Any] = {
     "color": COLOUR, "rgba": _but(COLOUR, {"hex with alpha": OK, "four numbers": OK}),
     # a mesh's 4x4 affine model -> world matrix
@@ -552,8 +548,7 @@ TEXTURE_PARAMS = [  # a texture needs uv, and uv a texture
 
 
 def mesh_colours(n: int) -> Table:
-    """Colours of n vertices or faces: (n, 3) or (n, 4) sRGB, uint8 codes or floats in [0, 1]
-    (0-255 floats get a hint)."""
+    """Colours of n vertices or faces: (n, 3) or (n, 4) sRGB, uint8 or in [0, 1] (0-255 floats: a hint)."""
     base = np.linspace(0.0, 1.0, n * 3).reshape(n, 3)
     return (("float64 rgb", base, OK),
             ("float32 rgba", np.concatenate([base, np.ones((n, 1))], 1).astype(np.float32), OK),
@@ -574,9 +569,8 @@ MESH_COLOURS = [Param("vertex_colors", mesh_colours(N), none=OK), Param("face_co
 
 
 def _rendered(make: Callable[..., Any], use: Callable[[Any], Dict[str, Any]]) -> Callable[..., Any]:
-    """`make(**kw)`, and a render that uses what it made: what a constructor accepts must render.
-    A camera is checked for itself when made, and for the scene when used: settings that give
-    it non-finite matrices for this scene (a margin of 1e308, say) are refused then, naming it."""
+    """`make(**kw)` and a render that uses what it made: what a constructor accepts must render. A camera is
+    checked for the scene when used too: one with non-finite matrices here (margin=1e308) is refused, naming it."""
     def call(**kw: Any) -> Any:
         made = make(**kw)
         try:
@@ -590,8 +584,7 @@ def _rendered(make: Callable[..., Any], use: Callable[[Any], Dict[str, Any]]) ->
 
 
 def _added(**kw: Any) -> Any:
-    """Renderer.add_mesh, then a render of the mesh (which is removed after it). Huge or tiny
-    meshes render, but their depths leave float32: no "depth" in these renders."""
+    """add_mesh, a render of the mesh (no "depth": a huge or tiny one's leaves float32), then remove_mesh."""
     handle = RENDERER.add_mesh(**kw)
     try:
         return handle, RENDERER.render(handle, **SMALL, outputs=("color", "normal"))
@@ -778,9 +771,8 @@ DRAWINGS = (("a render", LINES, OK), ("its SVG", LINES.svg(), OK), ("its filled 
             ("a nan point", [np.array([[0.0, 0.0], [np.nan, 1.0]])], ValueError),
             ("string points", [np.array([["a", "b"]])], TypeError), ("an array", np.zeros((4, 2)), TypeError),
             ("bytes", b"<svg/>", TypeError), ("an int", 3, TypeError))
-# A mesh every peer smooths as toonmesh does: the vertex and face probes but those the peers
-# themselves cannot take (trimesh raises on unreferenced vertices after the largest face index;
-# values near float64's limits overflow inside the peers).
+# A mesh every peer smooths as toonmesh does: the vertex and face probes but those the peers cannot take
+# (trimesh raises on unreferenced vertices after the last face index; values near float64's limits overflow).
 PEER_VERTICES = _but(VERTICES, {"huge but finite": None, "tiny": None})
 PEER_FACES = _but(FACES, {"one face": None})
 PEER_ITERATIONS = Param("iterations", Integer(0, 10**6, slow_above=20), none=OK)
@@ -841,9 +833,8 @@ CASES += [
 
 
 def _finite_floats(result: Any) -> bool:
-    """Every float inside `result` (tuples, lists, dicts, dataclasses, an EdgeIndex, a render's
-    images and a scene setting's read-only fields) is finite; a render's depth is +inf where no
-    mesh is."""
+    """Every float inside `result` (tuples, lists, dicts, dataclasses, an EdgeIndex, a render's images,
+    a scene setting's read-only fields) is finite; a render's depth is +inf where no mesh is."""
     if isinstance(result, np.ndarray):
         return result.dtype.kind != "f" or bool(np.isfinite(result).all())
     if isinstance(result, float):
