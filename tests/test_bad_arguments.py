@@ -340,14 +340,14 @@ CASES += [
     Case("shapes.grid", tm.shapes.grid, dict(n=5, noise=0.1, seed=0),
          [Param("n", Integer(2, 4096, slow_above=64)), *NOISE_AND_SEED]),
     Case("shapes.torus", tm.shapes.torus, dict(major=1.0, minor=0.4, segments=5, tube_segments=4),
-         [Param("major", Number(0.4, math.inf, open_lo=True, open_hi=True)),
-          Param("minor", Number(0.0, 1.0, open_lo=True, open_hi=True)), SEGMENTS, SEGMENTS._replace(name="tube_segments")]),
+         [Param("major", Number(0.4, math.inf, open_lo=True, open_hi=True)), SEGMENTS,
+          Param("minor", Number(0.0, 1.0, open_lo=True, open_hi=True)), SEGMENTS._replace(name="tube_segments")]),
     Case("shapes.lathe", tm.shapes.lathe, dict(profile=[(0.0, 0.0), (1.0, 0.5), (0.0, 1.0)], segments=5),
          [Param("profile", PROFILES), SEGMENTS]),
     Case("shapes.pawn", tm.shapes.pawn, dict(segments=5), [SEGMENTS]),
     Case("shapes.uv_sphere", tm.shapes.uv_sphere, dict(segments=5, rings=4),
          [SEGMENTS, Param("rings", Integer(2, 4096, slow_above=64))]),
-    Case("shapes.teapot", tm.shapes.teapot, dict(subdivisions=2), [Param("subdivisions", Integer(2, 64, slow_above=8))]),
+    Case("shapes.teapot", tm.shapes.teapot, {"subdivisions": 2}, [Param("subdivisions", Integer(2, 64, slow_above=8))]),
     Case("set_num_threads", tm.set_num_threads, dict(n=0), [Param("n", Integer(0, 1024, slow_above=8))]),
 ]
 
@@ -639,9 +639,9 @@ def _replace_case(case: Case) -> Case:
     parameters that is a field: `replace` checks as the constructor does (None: the default)."""
     cls_name, _, ctor = case.name.partition(".")
     fields = {f["name"] for f in descriptions.fields(getattr(tm, cls_name)) if not f["fixed"]}
-    made = case.call.make(**case.base)  # type: ignore[attr-defined]
+    make, use = case.call.make, case.call.use  # type: ignore[attr-defined]
     params = [p._replace(none=OK) for p in case.params if p.name in fields]
-    return Case(f"{cls_name}.replace({ctor or cls_name})", _rendered(made.replace, case.call.use), {}, params)  # type: ignore[attr-defined]
+    return Case(f"{cls_name}.replace({ctor or cls_name})", _rendered(make(**case.base).replace, use), {}, params)
 
 
 BACKEND_PARAM = Param("backend", BACKEND, none=OK, also=(tm.GpuUnavailableError,))
@@ -703,8 +703,8 @@ VIEWER_SETTINGS = [p for p in FRAME if p.name != "outputs"]  # a viewer shows th
 CASES += [
     Case("Viewer", _viewer_call(),
          dict(vertices=V, faces=F, normals="smooth", image_format="png", drag_scale=0.5, controls=False, **SMALL),
-         [Param("vertices", VERTICES), Param("faces", FACES), NORMALS_PARAM, Param("image_format", Name(("png", "jpeg"))),
-          Param("drag_scale", Number(0.05, 1.0)), Param("controls", FLAG)]),
+         [Param("vertices", VERTICES), Param("faces", FACES), Param("image_format", Name(("png", "jpeg"))),
+          NORMALS_PARAM, Param("drag_scale", Number(0.05, 1.0)), Param("controls", FLAG)]),
     *[Case(f"Viewer.{m}", _viewer_call(m), dict(dx=10.0, dy=-5.0), [Param("dx", DRAG), Param("dy", DRAG)])
       for m in ("orbit", "pan")],
     Case("Viewer.zoom", _viewer_call("zoom"), dict(factor=1.5), [Param("factor", Number(1e-3, 1e3))]),
@@ -721,8 +721,8 @@ CASES += [
     # its only argument is the path: tests/test_viewer_draft.py checks it
     Case("Viewer.to_html", _viewer_call("to_html"), dict(path=os.path.join(TURNTABLES, "page.html")), []),
     Case("RenderResult.strokes", LINES.strokes, dict(smooth=1.0, simplify=0.25), STROKE_PARAMS),
-    Case("RenderResult.svg", LINES.svg, dict(order="drawing", simplify=0.25, smooth=1.0, widths="auto"),
-         STROKE_PARAMS + [Param("order", Name(("drawing", "plotter"))), Param("widths", Name(("auto", "kind", "point")))]),
+    Case("RenderResult.svg", LINES.svg, dict(order="drawing", simplify=0.25, smooth=1.0, widths="auto"), STROKE_PARAMS
+         + [Param("order", Name(("drawing", "plotter"))), Param("widths", Name(("auto", "kind", "point")))]),
 ]
 
 # ------------------------------------------------------------------------------------------------
