@@ -70,7 +70,7 @@ def _ranged(k: Any, values: List[Tuple[str, Any]]) -> Probes:
     out: Probes = []
     for label, v in values:
         if isinstance(k, Integer):
-            x = int(v)
+            x: float = int(v)
             held = 0 <= x < 2**64 if k.lo >= 0 and k.hi >= 2**63 else -(2**63) <= x < 2**63
             legal = held and k.lo <= x <= k.hi and (k.only is None or x in k.only)
         else:
@@ -155,7 +155,7 @@ def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str
         # an integer range's ends: the next integer inward where excluded, the 64-bit limits where infinite
         ends = [(int(b) + step * x if math.isfinite(b) else (2**63 - 1 if b > 0 else -(2**63)))
                 for b, x, step in ((lo, open_lo, 1), (hi, open_hi, -1))]
-        return Param(name, Integer(*ends, slow, RULES.get(rule)), none=none)
+        return Param(name, Integer(ends[0], ends[1], slow, RULES.get(rule)), none=none)
     if kind == "bool":
         return Param(name, FLAG, none=none)
     if kind == "choice":
@@ -842,8 +842,8 @@ def _finite_floats(result: Any) -> bool:
     if isinstance(result, tm.RenderResult):
         if result.depth is not None and not np.all(np.isfinite(result.depth) | (result.depth == np.inf)):
             return False
-        parts = [result.color, result.normal, result.outline, result.lines or [], result.view_matrix,
-                 result.projection, result.near, result.far]
+        parts: List[Any] = [result.color, result.normal, result.outline, result.lines or [], result.view_matrix,
+                            result.projection, result.near, result.far]
     elif isinstance(result, te.EdgeIndex):
         parts = [result.features, result.face_normals]
     elif isinstance(result, (tm.Material, tm.Light, tm.Camera, tm.LineStyle, tm.Outlines)):
