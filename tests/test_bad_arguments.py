@@ -117,16 +117,16 @@ def probes(p: Param) -> Probes:
 
 # ------------------------------------------------------------------------------------------------
 # Parameters generated from the core's descriptions, with what a description cannot say
-# A described rule that is not a range, as the values it allows (an unknown one fails the collection).
+# Described rules that are not ranges, by (owner, name): an integer's values, a float's minimum (excluded) or None.
 GPU = tm.gpu_info()
-RULES: Dict[Tuple[str, str], Tuple[int, ...]] = {
+RULES: Dict[Tuple[str, str], Any] = {
     ("Shadows", "size"): tuple(2**k for k in range(6, 14)),
     ("RenderOptions", "msaa"): tuple(n for n in (1, 4) if n in GPU["msaa_samples"]),  # and the device's
-}
-# Legal values above these take long: not probed.
+    ("Camera.look_at", "near"): 0.0, ("Camera.look_at", "far"): 0.0,  # "> 0 for a perspective camera"
+    ("Camera.orthographic", "near"): None, ("Camera.orthographic", "far"): None}  # (not an orthographic one)
+# Legal values above SLOW take long: not probed. DEVICE_MAX: the device's limits (an image's side).
 SLOW = {"iterations": 1000, "vertex_iterations": 1000, "smooth.implicit.iterations": 20, "Shadows.size": 2048}
 BETWEEN = {"Material.hatching.width": "spacing"}  # a rule between parameters: a maximum that is another's default
-# The device's limits: an image's side.
 DEVICE_MAX = {"RenderOptions.width": GPU["max_texture_size"], "RenderOptions.height": GPU["max_texture_size"]}
 ANY_CASE = ("smooth.",)  # the smoothing functions' names are case-insensitive
 # Every choice a parameter of each name takes anywhere, for the names it does not take here.
@@ -148,14 +148,15 @@ def described_param(owner: str, d: Dict[str, Any], none: Any, compound: Dict[str
         lo, hi, (open_lo, open_hi) = d["min"], min(d["max"], DEVICE_MAX.get(key, math.inf)), d["exclusive"]
         if key in BETWEEN:
             hi = min(hi, defaults[BETWEEN[key]])
+        rule = RULES.get((owner, name), RULES.get((owner.split(".")[0], name), KeyError))
+        assert not d.get("rule") or rule is not KeyError or key in BETWEEN, f"{key}: an unknown rule: {d['rule']!r}"
         if kind == "float":
+            lo, open_lo = (max(lo, rule), True) if isinstance(rule, float) and d.get("rule") else (lo, open_lo)
             return Param(name, Number(lo, hi, open_lo, open_hi, slow_above=slow), none=none)
-        rule = (owner.split(".")[0], name)
-        assert "rule" not in d or rule in RULES, f"{key}: a rule the sweep does not know: {d['rule']!r}"
         # an integer range's ends: the next integer inward where excluded, the 64-bit limits where infinite
         ends = [(int(b) + step * x if math.isfinite(b) else (2**63 - 1 if b > 0 else -(2**63)))
                 for b, x, step in ((lo, open_lo, 1), (hi, open_hi, -1))]
-        return Param(name, Integer(ends[0], ends[1], slow, RULES.get(rule)), none=none)
+        return Param(name, Integer(ends[0], ends[1], slow, rule if isinstance(rule, tuple) else None), none=none)
     if kind == "bool":
         return Param(name, FLAG, none=none)
     if kind == "choice":
@@ -980,8 +981,7 @@ def _read(read: Callable[[Any], Any], tmp_path: Any, path: Any, expected: Any) -
 def test_load_obj_arguments(tmp_path: Any, label: str, path: Any, expected: Any) -> None:
     result = _read(load_obj, tmp_path, path, expected)
     if expected == OK:
-        V2, F2 = result
-        assert V2.shape == (3, 3) and F2.tolist() == [[0, 1, 2]]
+        assert result[0].shape == (3, 3) and result[1].tolist() == [[0, 1, 2]]  # (vertices, faces)
     elif expected is not FileNotFoundError:
         assert result[1].startswith("path:")
     assert load_obj.__module__ == "toonmesh.data"
