@@ -155,21 +155,28 @@ def generate() -> str:
 
 def smooth_keywords() -> str:
     """Each smoothing method's keywords as a TypedDict, for `**options: Unpack[...]`: the
-    described keywords, then `pinned` (the mesh's, not the method's)."""
+    keywords every method takes (and `pinned`, the mesh's, not a method's) in a base that each
+    method's class extends with its own."""
     import toonmesh.smooth as smooth
 
-    blocks, seen = [], {}
-    for method, d in smooth._DESCRIBED.items():
+    lines_of = {method: [f"    {k['name']}: {smooth._annotation(k)}" for k in d["keywords"]]
+                for method, d in smooth._DESCRIBED.items()}
+    shared = [line for line in next(iter(lines_of.values())) if all(line in ls for ls in lines_of.values())]
+    base = "SmoothingOptions"
+    blocks = ["\n".join([f"class {base}(TypedDict, total=False):",
+                          *docstring("The keywords every smoothing function takes, for type checkers.", "    "),
+                          "", *shared, f"    {smooth._PINNED}: Optional[Any]"]) + "\n"]
+    seen: Dict[str, str] = {}
+    for method, lines in lines_of.items():
         name = method.capitalize() + "Options"
-        fields = [f"    {k['name']}: {smooth._annotation(k)}" for k in d["keywords"]]
-        fields.append(f"    {smooth._PINNED}: Optional[Any]")
-        same = seen.setdefault("\n".join(fields), name)
+        own = [line for line in lines if line not in shared]
+        same = seen.setdefault("\n".join(own), name)
         if same != name:  # the same keywords as an earlier method's (guided's are bilateral's)
             blocks.append(f"{name} = {same}\n")
             continue
-        lines = [f"class {name}(TypedDict, total=False):"]
-        lines += docstring(f"The keywords of :func:`{method}`, for type checkers (see its docstring).", "    ")
-        blocks.append("\n".join(lines + [""] + fields) + "\n")
+        head = [f"class {name}({base}, total=False):"]
+        head += docstring(f"The keywords of :func:`{method}`, for type checkers (see its docstring).", "    ")
+        blocks.append("\n".join(head + [""] + own) + "\n")
     return "\n\n".join(blocks)
 
 

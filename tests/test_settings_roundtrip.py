@@ -42,7 +42,7 @@ def number(d: Dict[str, Any]) -> st.SearchStrategy:
     values among the slider's ends and the default that it allows (the core says which)."""
     (lo, hi), (open_lo, open_hi), slider = (d["min"], d["max"]), d["exclusive"], d["slider"]
     if "rule" in d:
-        return st.sampled_from(sorted({*slider, *([d["default"]] if "default" in d else [])}))
+        return st.sampled_from(sorted({*slider, *([d["default"]] if d.get("default") is not None else [])}))
     if d["kind"] == "int":
         lo = lo + 1 if open_lo else lo
         hi = hi - 1 if open_hi else hi

@@ -232,69 +232,62 @@ def _call(smoother: Callable[..., Positions], vertices: Any, faces: Any, options
 
 
 # @generated keywords: `python scripts/stubs.py` writes this block from the core's description
-class LaplacianOptions(TypedDict, total=False):
-    """The keywords of :func:`laplacian`, for type checkers (see its docstring)."""
+class SmoothingOptions(TypedDict, total=False):
+    """The keywords every smoothing function takes, for type checkers."""
 
     iterations: Optional[int]
+    weld: bool
+    pinned: Optional[Any]
+
+
+class LaplacianOptions(SmoothingOptions, total=False):
+    """The keywords of :func:`laplacian`, for type checkers (see its docstring)."""
+
     lamb: Optional[float]
     weights: Optional[str]
     boundary: Optional[str]
     volume_constraint: Optional[bool]
     preset: Optional[str]
-    weld: bool
-    pinned: Optional[Any]
 
 
-class TaubinOptions(TypedDict, total=False):
+class TaubinOptions(SmoothingOptions, total=False):
     """The keywords of :func:`taubin`, for type checkers (see its docstring)."""
 
-    iterations: Optional[int]
     lamb: Optional[float]
     mu: Optional[float]
     weights: Optional[str]
     boundary: Optional[str]
     preset: Optional[str]
-    weld: bool
-    pinned: Optional[Any]
 
 
-class HcOptions(TypedDict, total=False):
+class HcOptions(SmoothingOptions, total=False):
     """The keywords of :func:`hc`, for type checkers (see its docstring)."""
 
-    iterations: Optional[int]
     alpha: Optional[float]
     beta: Optional[float]
     weights: Optional[str]
     boundary: Optional[str]
     preset: Optional[str]
-    weld: bool
-    pinned: Optional[Any]
 
 
-class ImplicitOptions(TypedDict, total=False):
+class ImplicitOptions(SmoothingOptions, total=False):
     """The keywords of :func:`implicit`, for type checkers (see its docstring)."""
 
     step: Optional[float]
-    iterations: Optional[int]
     tol: Optional[float]
     max_iter: Optional[int]
     weights: Optional[str]
     boundary: Optional[str]
     volume_constraint: Optional[bool]
     preset: Optional[str]
-    weld: bool
-    pinned: Optional[Any]
 
 
-class BilateralOptions(TypedDict, total=False):
+class BilateralOptions(SmoothingOptions, total=False):
     """The keywords of :func:`bilateral`, for type checkers (see its docstring)."""
 
-    iterations: Optional[int]
     vertex_iterations: Optional[int]
     sigma_s: Optional[float]
     sigma_r: Optional[float]
-    weld: bool
-    pinned: Optional[Any]
 
 
 GuidedOptions = BilateralOptions

@@ -149,7 +149,22 @@ pub fn dir<T: Described>(obj: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
 
 /// `Class.constructor(required, ..., name=value, ...)`: what makes the value again.
 pub fn repr<T: Described>(py: Python<'_>, value: &T) -> PyResult<String> {
-    described::call(value, |v| Ok(values::to_py(py, v)?.repr()?.to_string()))
+    described::call(value, |v| {
+        let obj = values::to_py(py, v)?;
+        if !matches!(v, Value::Image(_)) {
+            return Ok(obj.repr()?.to_string());
+        }
+        // an image's numbers in full (NumPy prints 8 digits, which do not make its float32s again)
+        let options = py.import("numpy")?.call_method(
+            "printoptions",
+            (),
+            Some(&[("floatmode", "unique")].into_py_dict(py)?),
+        )?;
+        options.call_method0("__enter__")?;
+        let text = obj.repr().map(|r| r.to_string());
+        options.call_method1("__exit__", (py.None(), py.None(), py.None()))?;
+        text
+    })
 }
 
 /// _restore(cls, state): a pickled setting, checked again.

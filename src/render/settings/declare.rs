@@ -45,6 +45,8 @@ pub fn not_a_field<T: Declared>(name: &str) -> Error {
 
 /// A Rust type a field holds, read into and out of a `Value`: implemented once per type.
 pub trait FieldValue: Sized {
+    /// The largest finite number the type holds (a number field's rule ends there).
+    const LARGEST: f64 = f64::MAX;
     fn to_value(&self) -> Value;
     fn from_value(field: &str, value: Value) -> Result<Self>;
     /// The value of a field where None is a value too.
@@ -68,6 +70,8 @@ impl FieldValue for f64 {
 
 /// Kept as its shortest decimal, so that a repr reads 0.3 and not 0.30000001192092896.
 impl FieldValue for f32 {
+    const LARGEST: f64 = f32::MAX as f64;
+
     fn to_value(&self) -> Value {
         f32_value(*self)
     }
@@ -139,6 +143,8 @@ impl<T: Named> FieldValue for T {
 
 /// None is a value.
 impl<T: FieldValue> FieldValue for Option<T> {
+    const LARGEST: f64 = T::LARGEST;
+
     fn to_value(&self) -> Value {
         self.as_ref().map_or(Value::None, T::to_value)
     }
@@ -253,10 +259,11 @@ pub mod kinds {
 /// A field's description from its declaration: its kind written with `kinds`, its flags as
 /// `Field`'s builders.
 macro_rules! declared_field {
-    ($name:ident, $kind:expr, $help:expr $(, $flag:ident)*) => {{
+    ($name:ident: $ty:ty, $kind:expr, $help:expr $(, $flag:ident)*) => {{
         #[allow(unused_imports)]
         use $crate::render::settings::declare::kinds::*;
-        $crate::render::settings::Field::new(stringify!($name), $kind, $help) $(.$flag())*
+        let kind = $kind.within(<$ty as $crate::render::settings::declare::FieldValue>::LARGEST);
+        $crate::render::settings::Field::new(stringify!($name), kind, $help) $(.$flag())*
     }};
 }
 pub(crate) use declared_field;
@@ -341,7 +348,7 @@ macro_rules! declared_fields {
             const NAME: &'static str = stringify!($type);
             const FIELDS: &'static [$crate::render::settings::Field] = {
                 const OWN: &[$crate::render::settings::Field] = &[
-                    $($crate::render::settings::declare::declared_field!($field, $kind, $help $(, $flag)*),)*
+                    $($crate::render::settings::declare::declared_field!($field: $ty, $kind, $help $(, $flag)*),)*
                 ];
                 const PART: &[$crate::render::settings::Field] =
                     $crate::render::settings::declare::part_fields!($($part_type)?);

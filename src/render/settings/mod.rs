@@ -63,6 +63,14 @@ pub enum Kind {
 }
 
 impl Kind {
+    /// A real number's rule within plus or minus `largest`, what the field's type holds.
+    pub const fn within(self, largest: f64) -> Kind {
+        match self {
+            Kind::Float(range) => Kind::Float(range.within(largest)),
+            other => other,
+        }
+    }
+
     /// The kind's name, for front ends.
     pub fn name(self) -> &'static str {
         match self {

@@ -59,6 +59,14 @@ impl Range {
         Range::closed(min, u32::MAX as f64)
     }
 
+    /// The same, within plus or minus `largest` (a field stored as a 32-bit float holds no
+    /// larger finite number).
+    pub const fn within(self, largest: f64) -> Range {
+        let low = if self.min < -largest { (-largest, false) } else { (self.min, self.exclusive[0]) };
+        let high = if self.max > largest { (largest, false) } else { (self.max, self.exclusive[1]) };
+        Range { min: low.0, max: high.0, exclusive: [low.1, high.1], ..self }
+    }
+
     /// A control spans `lo` to `hi` (within the rule).
     pub const fn slider(self, lo: f64, hi: f64) -> Range {
         Range { slider: Some([lo, hi]), ..self }

@@ -12,11 +12,23 @@ pub fn state<T: Serialize>(x: &T) -> String {
     serde_json::to_string(x).expect("settings serialise")
 }
 
-/// A hash of the state: equal values hash alike.
+/// A hash of the state: equal values hash alike (-0.0 as 0.0, which it equals).
 pub fn hash<T: Serialize>(x: &T) -> u64 {
+    let mut value = serde_json::to_value(x).expect("settings serialise");
+    unsigned_zeros(&mut value);
     let mut h = std::collections::hash_map::DefaultHasher::new();
-    state(x).hash(&mut h);
+    value.to_string().hash(&mut h);
     h.finish()
+}
+
+fn unsigned_zeros(value: &mut serde_json::Value) {
+    use serde_json::Value as J;
+    match value {
+        J::Number(n) if n.as_f64() == Some(0.0) => *value = J::from(0.0),
+        J::Array(items) => items.iter_mut().for_each(unsigned_zeros),
+        J::Object(fields) => fields.values_mut().for_each(unsigned_zeros),
+        _ => {}
+    }
 }
 
 fn restored<T: Described>(state: &str) -> Result<T> {
@@ -52,5 +64,13 @@ mod tests {
         assert_eq!(Setting::restore("Paper", &state(&paper)).unwrap(), Setting::Paper(paper));
         assert!(Setting::restore("Nope", "{}").unwrap_err().to_string().starts_with("cls:"));
         assert!(Setting::restore("Paper", "{").unwrap_err().to_string().starts_with("state:"));
+    }
+
+    #[test]
+    fn equal_values_hash_alike() {
+        let (plus, minus) =
+            (Paper { strength: 0.0, ..Paper::default() }, Paper { strength: -0.0, ..Paper::default() });
+        assert_eq!(plus, minus);
+        assert_eq!(hash(&plus), hash(&minus));
     }
 }
