@@ -113,6 +113,20 @@ def test_screen_dither_follows_the_bayer_matrix(backend, n, pattern):
     assert np.array_equal(up, expected), f"{(up != expected).sum()} pixels differ"
 
 
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_turned_dither_turns_the_matrix(backend):
+    # at 90 degrees counter-clockwise as seen, pixel (x, y) reads the cell (-(y + 1), x) (its centre
+    # turned), so the rows of the matrix become its columns
+    amount, below, n = 0.2, 0.04, 4
+    mat = tm.Material.bands(color=(1.0, 1.0, 1.0), dither=tm.Dither("bayer4", amount=amount, angle=90))
+    up = square(mat, 0.7 - below, backend, size=64).color[..., 0] > 240
+    y, x = np.mgrid[0:64, 0:64]
+    expected = bayer(n)[x % n, (-(y + 1)) % n] >= 0.5 + below / amount
+    assert np.array_equal(up, expected), f"{(up != expected).sum()} pixels differ"
+    plain = tm.Material.bands(color=(1.0, 1.0, 1.0), dither=tm.Dither("bayer4", amount=amount))
+    assert not np.array_equal(up, square(plain, 0.7 - below, backend, size=64).color[..., 0] > 240)
+
+
 def test_blue_noise_dithers_without_a_grid():
     mat = tm.Material.bands(color=(1.0, 1.0, 1.0), dither=tm.Dither("blue", amount=0.2))
     up = square(mat, 0.66, size=64).color[..., 0] > 240

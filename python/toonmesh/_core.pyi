@@ -166,14 +166,16 @@ class Dither(_Settings):
 
     Fields: pattern: the threshold pattern; space: what the pattern is fixed to: the screen's
     pixels or the surface; amount: how far in L.n a pixel may move toward the neighbouring band,
-    0 to 2; scale: pixels a pattern cell covers, 1 to 64.
+    0 to 2; scale: pixels a pattern cell covers, 1 to 64; angle: degrees the pattern turns,
+    counter-clockwise as seen, -90 to 90 (45: a print's screen angle).
     """
-    def __new__(cls, pattern: Optional[Literal['bayer2', 'bayer4', 'bayer8', 'blue']] = ..., *, space: Optional[Literal['screen', 'object']] = ..., amount: Optional[float] = ..., scale: Optional[float] = ...) -> Dither: ...
+    def __new__(cls, pattern: Optional[Literal['bayer2', 'bayer4', 'bayer8', 'blue']] = ..., *, space: Optional[Literal['screen', 'object']] = ..., amount: Optional[float] = ..., scale: Optional[float] = ..., angle: Optional[float] = ...) -> Dither: ...
     pattern: Final[str]
     space: Final[str]
     amount: Final[float]
     scale: Final[float]
-    def replace(self, *, pattern: Optional[Literal['bayer2', 'bayer4', 'bayer8', 'blue']] = ..., space: Optional[Literal['screen', 'object']] = ..., amount: Optional[float] = ..., scale: Optional[float] = ...) -> Dither: ...
+    angle: Final[float]
+    def replace(self, *, pattern: Optional[Literal['bayer2', 'bayer4', 'bayer8', 'blue']] = ..., space: Optional[Literal['screen', 'object']] = ..., amount: Optional[float] = ..., scale: Optional[float] = ..., angle: Optional[float] = ...) -> Dither: ...
 
 @final
 class Rim(_Settings):

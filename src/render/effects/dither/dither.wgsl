@@ -2,10 +2,10 @@
 // (t - 1/2) amount before banding, t the pattern's threshold at this pixel's cell.
 
 struct DitherBlock {
-    amount: f32,   // in L.n; 0 where the material does not dither
-    cell: f32,     // pixels a pattern cell covers
-    _pad0: f32,
-    _pad1: f32,
+    amount: f32,      // in L.n; 0 where the material does not dither
+    cell: f32,        // pixels a pattern cell covers
+    cos_angle: f32,   // the pattern's turn
+    sin_angle: f32,
 };
 
 // The pattern (0 none, else `DitherPattern`'s id) and whether it is anchored to the surface.
@@ -33,6 +33,14 @@ fn planar(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
     return select(select(p.xy, p.zx, a.y >= a.z), p.yz, a.x >= a.y && a.x >= a.z);
 }
 
+// `p` turned by the pattern's angle: counter-clockwise as seen, the pixels' y pointing down (at
+// angle 0, `p` itself: cos 1 and sin 0 are exact).
+fn turned(p: vec2<f32>) -> vec2<f32> {
+    let c = draw.dither.cos_angle;
+    let s = draw.dither.sin_angle;
+    return vec2<f32>(c * p.x - s * p.y, s * p.x + c * p.y);
+}
+
 // The `jitter` hook: how far this pixel moves L.n before banding.
 fn dither_jitter(f: Fragment) -> f32 {
     if (DITHER == 0u) {
@@ -45,9 +53,9 @@ fn dither_jitter(f: Fragment) -> f32 {
         let q = planar(f.object_pos, f.object_normal);
         let w = max(fwidth(q.x), fwidth(q.y));
         let k = exp2(floor(log2(1.0 / max(scale * w, 1e-30))));
-        cell = floor(q * k);
+        cell = floor(turned(q) * k);
     } else {
-        cell = floor(f.clip.xy / scale);
+        cell = floor(turned(f.clip.xy) / scale);
     }
     return (dither_threshold(bitcast<vec2<u32>>(vec2<i32>(cell))) - 0.5) * draw.dither.amount;
 }

@@ -77,6 +77,10 @@ settings! {
             "how far in L.n a pixel may move toward the neighbouring band, 0 to 2";
         /// Pixels a pattern cell covers.
         pub scale: f64 = 1.0 => float(closed(1.0, 64.0)), "pixels a pattern cell covers, 1 to 64", pixels;
+        /// The pattern's turn, counter-clockwise as seen: a print's screen at 45 degrees hides
+        /// its grid from the eye.
+        pub angle: f64 = 0.0 => float(closed(-90.0, 90.0)),
+            "degrees the pattern turns, counter-clockwise as seen, -90 to 90 (45: a print's screen angle)";
     }
     described(positional: 1);
 }
@@ -101,8 +105,9 @@ crate::uniform_block! {
         pub amount: f32,
         /// Pixels a pattern cell covers.
         pub cell: f32,
-        pub _pad0: f32,
-        pub _pad1: f32,
+        /// The cosine and sine of the pattern's turn.
+        pub cos_angle: f32,
+        pub sin_angle: f32,
     }
 }
 
@@ -140,7 +145,8 @@ impl SurfaceEffect for Dither {
         DitherBlock {
             amount: dither.map_or(0.0, |d| d.amount as f32),
             cell: dither.map_or(1.0, |d| d.scale as f32),
-            ..bytemuck::Zeroable::zeroed()
+            cos_angle: dither.map_or(1.0, |d| d.angle.to_radians().cos() as f32),
+            sin_angle: dither.map_or(0.0, |d| d.angle.to_radians().sin() as f32),
         }
         .bytes()
     }
