@@ -4,18 +4,11 @@
 
 use super::denoise::{self, Filter};
 pub use super::described::{Keyword, Kind};
+use super::given::ByName;
+pub use super::given::Given;
 use super::options::{self, Args, Method};
 use super::{described, Run};
-use crate::error::{Error, Result};
-
-/// A keyword's value as a front end read it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Given {
-    Int(i64),
-    Float(f64),
-    Name(String),
-    Bool(bool),
-}
+use crate::error::Result;
 
 /// A smoothing method by name: one of the Laplacian family or a normal filter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -60,55 +53,10 @@ impl Smoother {
                     weld: given.get("weld")?.unwrap_or(false),
                 },
             )?),
-            Smoother::Laplacian(method) => Run::Laplacian(options::resolve(
-                method,
-                &Args {
-                    iterations: given.get("iterations")?,
-                    lamb: given.get("lamb")?,
-                    mu: given.get("mu")?,
-                    alpha: given.get("alpha")?,
-                    beta: given.get("beta")?,
-                    step: given.get("step")?,
-                    tol: given.get("tol")?,
-                    max_iter: given.get("max_iter")?,
-                    weights: given.get("weights")?,
-                    boundary: given.get("boundary")?,
-                    volume_constraint: given.get("volume_constraint")?,
-                    preset: given.get("preset")?,
-                    weld: given.get("weld")?,
-                },
-            )?),
-        })
-    }
-}
-
-/// Each kind's value out of a `Given` (the `Given` back when it is of another kind).
-macro_rules! given_as {
-    ($($kind:ident($t:ty)),*) => {$(
-        impl TryFrom<Given> for $t {
-            type Error = Given;
-            fn try_from(g: Given) -> std::result::Result<$t, Given> {
-                match g {
-                    Given::$kind(x) => Ok(x),
-                    other => Err(other),
-                }
+            Smoother::Laplacian(method) => {
+                Run::Laplacian(options::resolve(method, &Args::take(&mut given)?)?)
             }
-        }
-    )*};
-}
-given_as!(Int(i64), Float(f64), Name(String), Bool(bool));
-
-/// The keywords given, taken out by name.
-struct ByName<'a>(Vec<(&'a str, Given)>);
-
-impl ByName<'_> {
-    /// The value given for `name` (None: not given).
-    fn get<T: TryFrom<Given, Error = Given>>(&mut self, name: &str) -> Result<Option<T>> {
-        let Some(i) = self.0.iter().position(|(n, _)| *n == name) else { return Ok(None) };
-        // a value of another kind than the keyword's is a front end's bug, not the user's
-        T::try_from(self.0.swap_remove(i).1)
-            .map(Some)
-            .map_err(|v| Error::wrong_type(name, format!("cannot take {v:?}")))
+        })
     }
 }
 

@@ -11,6 +11,7 @@ pub mod bicgstab;
 pub mod clean;
 pub mod denoise;
 pub mod described;
+pub mod given;
 pub mod keywords;
 pub mod meshlab;
 pub mod operator;

@@ -6,6 +6,7 @@
 //! argument, so a preset never silently computes something its library would not.
 
 use super::described::{self, Described, Keyword, Value};
+use super::given::ByName;
 use crate::error::{Error, Result};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -44,8 +45,9 @@ pub enum Preset {
     Paper,
 }
 
-/// Declares `Args`, what the caller passed (None: use the preset's default), and `Args::given`,
-/// the names of the keywords given, so that each name is written once.
+/// Declares `Args`, what the caller passed (None: use the preset's default), `Args::take`, which
+/// reads it from the keywords given, and `Args::given`, their names, so that each name is written
+/// once.
 macro_rules! args {
     ($($field:ident: $t:ty,)*) => {
         /// What the caller passed (None: use the preset's default).
@@ -55,6 +57,11 @@ macro_rules! args {
         }
 
         impl Args {
+            /// The keywords of these names taken out of `given` (those not there: None).
+            pub fn take(given: &mut ByName<'_>) -> Result<Args> {
+                Ok(Args { $($field: given.get(stringify!($field))?,)* })
+            }
+
             /// The names of the keywords given.
             fn given(&self) -> impl Iterator<Item = &'static str> + '_ {
                 [$((stringify!($field), self.$field.is_some())),*]

@@ -1,0 +1,43 @@
+//! A smoothing keyword's value as a front end hands it over, and the keywords given, taken out
+//! by name (`keywords::Smoother::plan`, `options::Args::take`).
+
+use crate::error::{Error, Result};
+
+/// A keyword's value as a front end read it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Given {
+    Int(i64),
+    Float(f64),
+    Name(String),
+    Bool(bool),
+}
+
+/// Each kind's value out of a `Given` (the `Given` back when it is of another kind).
+macro_rules! given_as {
+    ($($kind:ident($t:ty)),*) => {$(
+        impl TryFrom<Given> for $t {
+            type Error = Given;
+            fn try_from(g: Given) -> std::result::Result<$t, Given> {
+                match g {
+                    Given::$kind(x) => Ok(x),
+                    other => Err(other),
+                }
+            }
+        }
+    )*};
+}
+given_as!(Int(i64), Float(f64), Name(String), Bool(bool));
+
+/// The keywords given, taken out by name.
+pub struct ByName<'a>(pub Vec<(&'a str, Given)>);
+
+impl ByName<'_> {
+    /// The value given for `name` (None: not given).
+    pub fn get<T: TryFrom<Given, Error = Given>>(&mut self, name: &str) -> Result<Option<T>> {
+        let Some(i) = self.0.iter().position(|(n, _)| *n == name) else { return Ok(None) };
+        // a value of another kind than the keyword's is a front end's bug, not the user's
+        T::try_from(self.0.swap_remove(i).1)
+            .map(Some)
+            .map_err(|v| Error::wrong_type(name, format!("cannot take {v:?}")))
+    }
+}
