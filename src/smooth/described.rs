@@ -5,9 +5,14 @@
 //! ends (the Python signatures, docstrings and TypedDicts, the command line's flags) are made
 //! from it, so that none of them is written twice.
 
-use super::denoise::options::{SIGMA_R_MAX, SIGMA_R_MIN, SIGMA_R_PER_NOISE};
-use super::options::{Preset, PRESETS};
+use super::preset::{Preset, PRESETS};
 use crate::error::{Error, Result};
+
+/// sigma_r's measured default: the range width is this many times the measured normal noise (`noise`: the 90th percentile
+/// of |n_i - n_j| over neighbouring faces), within [SIGMA_R_MIN, SIGMA_R_MAX].
+pub const SIGMA_R_PER_NOISE: f64 = 0.35;
+pub const SIGMA_R_MIN: f64 = 0.05;
+pub const SIGMA_R_MAX: f64 = 0.6;
 
 /// What a keyword holds, and so how a front end reads it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

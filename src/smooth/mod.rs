@@ -16,6 +16,7 @@ pub mod keywords;
 pub mod meshlab;
 pub mod operator;
 pub mod options;
+pub mod preset;
 pub mod range;
 pub mod trimesh;
 pub mod volume;

@@ -7,6 +7,7 @@
 
 use super::described::{self, Described, Keyword, Value};
 use super::given::ByName;
+pub use super::preset::{Preset, PRESETS};
 use crate::error::{Error, Result};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -33,16 +34,6 @@ pub enum Boundary {
     /// Boundary vertices are averaged with their boundary neighbours only, so they slide along
     /// the boundary curve.
     Slide,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Preset {
-    /// No preset: distinct neighbours, rows that sum to one, boundaries as asked.
-    Clean,
-    Trimesh,
-    Pymeshlab,
-    /// Al-Rousan et al.: every vertex moves to the plain mean of its neighbours.
-    Paper,
 }
 
 /// Declares `Args`, what the caller passed (None: use the preset's default), `Args::take`, which
@@ -123,8 +114,6 @@ pub const WEIGHTS: [(&str, Weights); 3] =
     [("uniform", Weights::Uniform), ("cotangent", Weights::Cotangent), ("distance", Weights::Distance)];
 pub const BOUNDARIES: [(&str, Boundary); 3] =
     [("fixed", Boundary::Fixed), ("free", Boundary::Free), ("slide", Boundary::Slide)];
-pub const PRESETS: [(&str, Preset); 3] =
-    [("trimesh", Preset::Trimesh), ("pymeshlab", Preset::Pymeshlab), ("paper", Preset::Paper)];
 pub const METHODS: [(&str, Method); 4] = [
     ("laplacian", Method::Laplacian),
     ("taubin", Method::Taubin),

@@ -208,7 +208,7 @@ const FIELDS: &[Field] = &[
     Field::new("ambient", Kind::Color, "the ambient coefficient a_m, sRGB"),
     Field::new("specular", Kind::Color, "the highlight coefficient S_m, sRGB"),
     Field::new("per_vertex", Kind::Bool, "shade the vertices and interpolate (Gouraud) instead of every pixel"),
-    Field::float("shininess", Range::above(0.0).within(f32::MAX as f64).slider(1.0, 256.0), "Phong's exponent, > 0").optional(),
+    Field::float("shininess", Range::above(0.0).within(<f32 as FieldValue>::LARGEST).slider(1.0, 256.0), "Phong's exponent, > 0").optional(),
     Field::float("t_h", Range::closed(-1.0, 1.0), "the thresholded Phong model's diffuse threshold on L.n").optional(),
     Field::float("t_s", Range::closed(-1.0, 1.0), "the thresholded Phong model's highlight threshold").optional(),
     Field::choice(

@@ -45,8 +45,9 @@ pub fn not_a_field<T: Declared>(name: &str) -> Error {
 
 /// A Rust type a field holds, read into and out of a `Value`: implemented once per type.
 pub trait FieldValue: Sized {
-    /// The largest finite number the type holds (a number field's rule ends there).
-    const LARGEST: f64 = f64::MAX;
+    /// The largest number the type holds as a field reads it back (a number field's rule ends
+    /// there; infinite: the rule's own bounds).
+    const LARGEST: f64 = f64::INFINITY;
     fn to_value(&self) -> Value;
     fn from_value(field: &str, value: Value) -> Result<Self>;
     /// The value of a field where None is a value too.
@@ -70,7 +71,9 @@ impl FieldValue for f64 {
 
 /// Kept as its shortest decimal, so that a repr reads 0.3 and not 0.30000001192092896.
 impl FieldValue for f32 {
-    const LARGEST: f64 = f32::MAX as f64;
+    // float32's largest as its shortest decimal reads back (3.4028235e38, a little above
+    // f32::MAX as f64, and still stored as f32::MAX)
+    const LARGEST: f64 = 3.4028235e38;
 
     fn to_value(&self) -> Value {
         f32_value(*self)

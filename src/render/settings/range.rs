@@ -92,27 +92,28 @@ impl Range {
     /// The range in words: "in [0, 1]", "finite and >= 0", "finite".
     pub fn text(&self) -> String {
         let [open_min, open_max] = self.exclusive;
+        let (min, max) = (written(self.min), written(self.max));
         match (self.min.is_finite(), self.max.is_finite()) {
             (true, true) => {
                 let (l, r) = (if open_min { '(' } else { '[' }, if open_max { ')' } else { ']' });
-                format!("in {l}{}, {}{r}", self.min, self.max)
+                format!("in {l}{min}, {max}{r}")
             }
-            (true, false) => format!("finite and {} {}", if open_min { ">" } else { ">=" }, self.min),
-            (false, true) => format!("finite and {} {}", if open_max { "<" } else { "<=" }, self.max),
+            (true, false) => format!("finite and {} {min}", if open_min { ">" } else { ">=" }),
+            (false, true) => format!("finite and {} {max}", if open_max { "<" } else { "<=" }),
             (false, false) => "finite".to_string(),
         }
     }
 
     /// Why `x` is refused by the range.
     pub fn refusal(&self, x: f64) -> String {
-        format!("must be {}, got {x}", self.text())
+        format!("must be {}, got {}", self.text(), written(x))
     }
 
     /// Why `x` is refused by the whole rule ("must be a power of two in [64, 8192]"), for the
     /// `validate` that checks its part that is not a range.
     pub fn rule_refusal(&self, x: f64) -> String {
         match self.rule {
-            Some(rule) => format!("must be {rule} {}, got {x}", self.text()),
+            Some(rule) => format!("must be {rule} {}, got {}", self.text(), written(x)),
             None => self.refusal(x),
         }
     }
@@ -135,6 +136,16 @@ impl Range {
     }
 }
 
+/// A number as an error writes it: with an exponent where it is huge (3.4028235e38, not 39
+/// digits).
+fn written(x: f64) -> String {
+    if x.abs() >= 1e16 {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -148,6 +159,11 @@ mod tests {
         let size = Range::closed(64.0, 8192.0).rule("a power of two");
         assert_eq!(size.refusal(32.0), "must be in [64, 8192], got 32");
         assert_eq!(size.rule_refusal(1000.0), "must be a power of two in [64, 8192], got 1000");
+        assert_eq!(
+            Range::at_least(0.0).within(f32::MAX as f64).refusal(1e300),
+            "must be in [0, 3.4028234663852886e38], got 1e300"
+        );
+        assert_eq!(Range::at_least(0.0).within(f64::INFINITY), Range::at_least(0.0));
         assert_eq!(Range::at_least(0.0).slider(0.0, 8.0).slider_bounds(), [0.0, 8.0]);
     }
 }

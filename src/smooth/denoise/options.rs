@@ -4,8 +4,8 @@
 //! measured noise (`noise`), so the defaults need no tuning across scales and noise levels.
 
 use crate::error::{Error, Result};
-use crate::smooth::described::{self, Value};
-use crate::smooth::options::Preset;
+use crate::smooth::described::{self, Value, SIGMA_R_MAX, SIGMA_R_MIN, SIGMA_R_PER_NOISE};
+use crate::smooth::preset::Preset;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Filter {
@@ -54,11 +54,6 @@ pub struct Options {
     pub weld: bool,
 }
 
-/// The range width is this many times the measured normal noise (`noise`: the 90th percentile
-/// of |n_i - n_j| over neighbouring faces), within [SIGMA_R_MIN, SIGMA_R_MAX].
-pub const SIGMA_R_PER_NOISE: f64 = 0.35;
-pub const SIGMA_R_MIN: f64 = 0.05;
-pub const SIGMA_R_MAX: f64 = 0.6;
 /// The guided filter's range weight also compares two faces' own normals, with a width of the
 /// measured range width (as `sigma_r` defaults to) over the square root of this share
 /// (dimensionless): at the defaults, their squared distance adds at this share to that between

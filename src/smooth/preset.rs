@@ -1,0 +1,16 @@
+//! The presets of the Laplacian family: another library's filter reproduced, quirks included
+//! (`options::resolve`), each with its name (`described` lists which method has which).
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Preset {
+    /// No preset: distinct neighbours, rows that sum to one, boundaries as asked.
+    Clean,
+    Trimesh,
+    Pymeshlab,
+    /// Al-Rousan et al.: every vertex moves to the plain mean of its neighbours.
+    Paper,
+}
+
+/// The presets by the name the API spells.
+pub const PRESETS: [(&str, Preset); 3] =
+    [("trimesh", Preset::Trimesh), ("pymeshlab", Preset::Pymeshlab), ("paper", Preset::Paper)];
