@@ -1,5 +1,6 @@
 //! A smoothing keyword's value as a front end hands it over, and the keywords given, taken out
-//! by name (`keywords::Smoother::plan`, `options::Args::take`).
+//! by name (`keywords::Smoother::plan`), and the `Args` of a family of methods declared from
+//! them (`args!`).
 
 use crate::error::{Error, Result};
 
@@ -41,3 +42,31 @@ impl ByName<'_> {
             .map_err(|v| Error::wrong_type(name, format!("cannot take {v:?}")))
     }
 }
+
+/// Declares `Args`, what the caller passed (None: use the preset's default), `Args::take`, which
+/// reads it from the keywords given, and `Args::given`, their names, so that each name is written
+/// once.
+macro_rules! args {
+    ($($field:ident: $t:ty,)*) => {
+        /// What the caller passed (None: the method's default, or its preset's).
+        #[derive(Debug, Clone, Default)]
+        pub struct Args {
+            $(pub $field: Option<$t>,)*
+        }
+
+        impl Args {
+            /// The keywords of these names taken out of `given` (those not there: None).
+            pub fn take(given: &mut $crate::smooth::given::ByName<'_>) -> $crate::error::Result<Args> {
+                Ok(Args { $($field: given.get(stringify!($field))?,)* })
+            }
+
+            /// The names of the keywords given.
+            pub fn given(&self) -> impl Iterator<Item = &'static str> + '_ {
+                [$((stringify!($field), self.$field.is_some())),*]
+                    .into_iter()
+                    .filter_map(|(name, given)| given.then_some(name))
+            }
+        }
+    };
+}
+pub(crate) use args;

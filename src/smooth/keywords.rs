@@ -43,16 +43,9 @@ impl Smoother {
     pub fn plan(self, given: Vec<(&str, Given)>) -> Result<Run> {
         let mut given = ByName(given);
         Ok(match self {
-            Smoother::Normals(filter) => Run::Normals(denoise::resolve(
-                filter,
-                &denoise::Args {
-                    iterations: given.get("iterations")?,
-                    vertex_iterations: given.get("vertex_iterations")?,
-                    sigma_s: given.get("sigma_s")?,
-                    sigma_r: given.get("sigma_r")?,
-                    weld: given.get("weld")?.unwrap_or(false),
-                },
-            )?),
+            Smoother::Normals(filter) => {
+                Run::Normals(denoise::resolve(filter, &denoise::Args::take(&mut given)?)?)
+            }
             Smoother::Laplacian(method) => {
                 Run::Laplacian(options::resolve(method, &Args::take(&mut given)?)?)
             }

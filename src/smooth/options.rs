@@ -6,7 +6,7 @@
 //! argument, so a preset never silently computes something its library would not.
 
 use super::described::{self, Described, Keyword, Value};
-use super::given::ByName;
+use super::given::args;
 pub use super::preset::{Preset, PRESETS};
 use crate::error::{Error, Result};
 
@@ -34,33 +34,6 @@ pub enum Boundary {
     /// Boundary vertices are averaged with their boundary neighbours only, so they slide along
     /// the boundary curve.
     Slide,
-}
-
-/// Declares `Args`, what the caller passed (None: use the preset's default), `Args::take`, which
-/// reads it from the keywords given, and `Args::given`, their names, so that each name is written
-/// once.
-macro_rules! args {
-    ($($field:ident: $t:ty,)*) => {
-        /// What the caller passed (None: use the preset's default).
-        #[derive(Debug, Clone, Default)]
-        pub struct Args {
-            $(pub $field: Option<$t>,)*
-        }
-
-        impl Args {
-            /// The keywords of these names taken out of `given` (those not there: None).
-            pub fn take(given: &mut ByName<'_>) -> Result<Args> {
-                Ok(Args { $($field: given.get(stringify!($field))?,)* })
-            }
-
-            /// The names of the keywords given.
-            fn given(&self) -> impl Iterator<Item = &'static str> + '_ {
-                [$((stringify!($field), self.$field.is_some())),*]
-                    .into_iter()
-                    .filter_map(|(name, given)| given.then_some(name))
-            }
-        }
-    };
 }
 
 args! {

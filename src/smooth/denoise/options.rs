@@ -5,6 +5,7 @@
 
 use crate::error::{Error, Result};
 use crate::smooth::described::{self, Value, SIGMA_R_MAX, SIGMA_R_MIN, SIGMA_R_PER_NOISE};
+use crate::smooth::given::args;
 use crate::smooth::preset::Preset;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -30,14 +31,12 @@ impl Filter {
     }
 }
 
-/// What the caller passed (None: the default).
-#[derive(Debug, Clone, Default)]
-pub struct Args {
-    pub iterations: Option<i64>,
-    pub vertex_iterations: Option<i64>,
-    pub sigma_s: Option<f64>,
-    pub sigma_r: Option<f64>,
-    pub weld: bool,
+args! {
+    iterations: i64,
+    vertex_iterations: i64,
+    sigma_s: f64,
+    sigma_r: f64,
+    weld: bool,
 }
 
 /// Resolved options; `sigma_r` None means "from the noise estimate".
@@ -72,6 +71,9 @@ pub fn resolve(filter: Filter, a: &Args) -> Result<Options> {
         described::method(name).ok_or_else(|| Error::Internal(format!("{name}: not described")))?;
     let keyword =
         |k: &str| described.keyword(k).ok_or_else(|| Error::Internal(format!("{name}.{k}: not described")));
+    if let Some(k) = a.given().find(|k| described.keyword(k).is_none()) {
+        return Err(Error::wrong_type(k, format!("not an option of {name}")));
+    }
     let count = |k: &str, given: Option<i64>| -> Result<u32> {
         let kw = keyword(k)?;
         Ok(kw.check_int(Preset::Clean, given.map_or_else(|| kw.default.int(k), Ok)?)? as u32)
@@ -90,7 +92,10 @@ pub fn resolve(filter: Filter, a: &Args) -> Result<Options> {
         vertex_iterations: count("vertex_iterations", a.vertex_iterations)?,
         sigma_s: width("sigma_s", a.sigma_s)?.ok_or_else(|| Error::Internal("sigma_s: measured".into()))?,
         sigma_r: width("sigma_r", a.sigma_r)?,
-        weld: a.weld,
+        weld: match a.weld {
+            Some(weld) => weld,
+            None => keyword("weld")?.default.flag("weld")?,
+        },
     })
 }
 
