@@ -76,7 +76,8 @@ fn sub<const N: usize>(a: [f64; N], b: [f64; N]) -> [f64; N] {
 fn combinations() -> Vec<(String, SurfaceSettings)> {
     let dithers = [
         ("no dither", None),
-        ("screen dither", Some(Dither { amount: 0.3, ..Dither::new(DitherPattern::Bayer4) })),
+        // turned: the pattern's angle held by the reference too
+        ("screen dither", Some(Dither { amount: 0.3, angle: 30.0, ..Dither::new(DitherPattern::Bayer4) })),
         (
             "surface dither",
             Some(Dither {
@@ -261,7 +262,7 @@ fn reference_pixel(
     let n = view.transform_vector3(glam::DVec3::from(s.n).normalize()).as_vec3();
     let jitter = e.dither.map_or(0.0, |d| {
         let cell = match d.space {
-            DitherSpace::Screen => centre.map(|c| (c / d.scale).floor()),
+            DitherSpace::Screen => d.turned(centre).map(|c| (c / d.scale).floor()),
             DitherSpace::Object => {
                 // the octave whose cells are about `scale` pixels, on the plane the normal faces;
                 // each pixel of the 2x2 quad picks its own plane, and the change across the pixel
@@ -286,7 +287,7 @@ fn reference_pixel(
                 let qy = sub(q_at(x, y0 + 1), q_at(x, y0));
                 let w = (qx[0].abs() + qy[0].abs()).max(qx[1].abs() + qy[1].abs());
                 let k = (1.0 / (d.scale * w).max(1e-30)).log2().floor().exp2();
-                q.map(|c| (c * k).floor())
+                d.turned(q).map(|c| (c * k).floor())
             }
         };
         let [cx, cy] = cell.map(|c| c as i32 as u32);

@@ -12,7 +12,7 @@ use crate::error::{Error, Result};
 use super::up::{Axis, Frame, FLAT_MOST_OFF_NORMAL};
 use crate::error::field;
 use crate::render::settings::declare::declared_fields;
-use crate::render::settings::{mismatch, named, not_here, Constructor, Described, Field, Kind, Range, Value};
+use crate::render::settings::{named, not_here, required, Constructor, Described, Field, Kind, Range, Value};
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -129,7 +129,7 @@ impl Camera {
         let Placement::LookAt { eye, target, .. } = &mut self.placement else {
             return Err(not_here(field, "a look-at camera"));
         };
-        *(if field == "eye" { eye } else { target }) = value.ok_or_else(|| mismatch(field, &Value::None))?;
+        *(if field == "eye" { eye } else { target }) = required(field, value)?;
         Ok(())
     }
 
@@ -142,7 +142,7 @@ impl Camera {
 
     fn set_up(&mut self, field: &str, value: Option<[f64; 3]>) -> Result<()> {
         match &mut self.placement {
-            Placement::LookAt { up, .. } => *up = value.ok_or_else(|| mismatch(field, &Value::None))?,
+            Placement::LookAt { up, .. } => *up = required(field, value)?,
             Placement::Fit { up, .. } => *up = value,
         }
         Ok(())
@@ -175,8 +175,7 @@ impl Camera {
         let Placement::Fit { margin, turn, .. } = &mut self.placement else {
             return Err(not_here(field, "a fitted camera"));
         };
-        *(if field == "margin" { margin } else { turn }) =
-            value.ok_or_else(|| mismatch(field, &Value::None))?;
+        *(if field == "margin" { margin } else { turn }) = required(field, value)?;
         Ok(())
     }
 
@@ -196,7 +195,7 @@ impl Camera {
             ("fov_y", _) => return Err(not_here(field, "a perspective camera")),
             _ => return Err(not_here(field, "an orthographic camera")),
         };
-        *lens = value.ok_or_else(|| mismatch(field, &Value::None))?;
+        *lens = required(field, value)?;
         Ok(())
     }
 }

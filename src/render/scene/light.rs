@@ -9,7 +9,7 @@ use crate::render::effects::shadows::settings::Shadows;
 
 use crate::error::field;
 use crate::render::settings::declare::{declared_fields, value_field};
-use crate::render::settings::{mismatch, named, not_here, Constructor, Described, Value};
+use crate::render::settings::{named, not_here, required, Constructor, Described, Value};
 
 /// Most lights one scene may have (the shader's fixed-size array).
 pub const MAX_LIGHTS: usize = 8;
@@ -109,7 +109,7 @@ impl Light {
             ("direction", _) => return Err(not_here(field, "a directional light")),
             _ => return Err(not_here(field, "a point light")),
         };
-        *place = value.ok_or_else(|| mismatch(field, &Value::None))?;
+        *place = required(field, value)?;
         Ok(())
     }
 }

@@ -15,8 +15,8 @@ use crate::render::effects::surface::SurfaceSettings;
 use crate::render::effects::surface_effect::Surface;
 use crate::render::settings::declare::not_a_field;
 use crate::render::settings::{
-    f32_value, f32s_value, named, not_here, Constructor, Declared, Described, Field, FieldValue, Kind, Range,
-    Value,
+    f32_value, f32s_value, named, not_here, shortest, Constructor, Declared, Described, Field, FieldValue,
+    Kind, Range, Value,
 };
 
 use super::model::{
@@ -298,9 +298,7 @@ impl Declared for Material {
             ("highlight", Model::ThresholdedPhong { highlight, .. }) => highlight.name().into(),
             ("thresholds", Model::Bands { thresholds, .. }) => f32s_value(thresholds),
             ("values", Model::Bands { values, .. }) => f32s_value(values),
-            ("table", Model::Lut { table }) => Value::Rows(
-                table.iter().map(|r| r.map(|x| format!("{x}").parse().unwrap_or(x as f64))).collect(),
-            ),
+            ("table", Model::Lut { table }) => Value::Rows(table.iter().map(|r| r.map(shortest)).collect()),
             ("ink", _) if h.is_some() => h.map(|h| h.ink).into(),
             ("spacing", _) => h.map(|h| h.spacing).into(),
             ("width", _) => h.map(|h| h.width).into(),

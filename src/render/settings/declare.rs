@@ -22,7 +22,7 @@
 //! `check_bounds`, which the type's `validate` starts with; `validate` keeps only the rules
 //! between fields and those that are not a range.
 
-use super::{f32_value, mismatch, unknown, Field, GreyImage, Range, Value};
+use super::{f32_value, mismatch, shortest, unknown, Field, GreyImage, Range, Value};
 use crate::error::{Error, Result};
 use crate::names::Named;
 
@@ -160,7 +160,7 @@ impl<T: FieldValue> FieldValue for Option<T> {
 /// A colour with alpha, kept as f32 (read back as its shortest decimal).
 impl FieldValue for [f32; 4] {
     fn to_value(&self) -> Value {
-        Value::Rgba(self.map(|c| format!("{c}").parse().unwrap_or(c as f64)))
+        Value::Rgba(self.map(shortest))
     }
 
     fn from_value(field: &str, value: Value) -> Result<Self> {

@@ -525,19 +525,31 @@ pub fn defaults<T: Described>(constructor: &str) -> Vec<(&'static Field, Value)>
     T::FIELDS.iter().map(|f| (f, start.get(f.name))).collect()
 }
 
+/// An f32 as the f64 of its shortest decimal, so that a repr reads 0.3 and not
+/// 0.30000001192092896.
+pub fn shortest(x: f32) -> f64 {
+    format!("{x}").parse().unwrap_or(x as f64)
+}
+
 /// Converts between a field's value and the core's numbers (f32 fields keep their shortest
-/// decimal, so that a repr reads 0.3 and not 0.30000001192092896).
+/// decimal).
 pub fn f32_value(x: f32) -> Value {
-    Value::Float(format!("{x}").parse().unwrap_or(x as f64))
+    Value::Float(shortest(x))
 }
 
 pub fn f32s_value(xs: &[f32]) -> Value {
-    Value::Floats(xs.iter().map(|&x| format!("{x}").parse().unwrap_or(x as f64)).collect())
+    Value::Floats(xs.iter().map(|&x| shortest(x)).collect())
 }
 
 /// The value of a field that this variant of the type lacks, as an error.
 pub fn not_here(field: &str, what: &str) -> Error {
     Error::invalid(field, format!("only {what} has it"))
+}
+
+/// The value of a field that every value having it holds (a variant's field, read as an
+/// Option by its accessors): None is not one.
+pub fn required<T>(field: &str, value: Option<T>) -> Result<T> {
+    value.ok_or_else(|| mismatch(field, &Value::None))
 }
 
 /// A value of the wrong variant for the field: a bug of a front end, not of the user.

@@ -91,6 +91,19 @@ impl Dither {
         Dither { pattern, ..Dither::default() }
     }
 
+    /// The cosine and sine of the pattern's turn, as the block carries them.
+    fn turn(&self) -> [f32; 2] {
+        let a = self.angle.to_radians();
+        [a.cos() as f32, a.sin() as f32]
+    }
+
+    /// `p` turned by the pattern's angle, counter-clockwise as seen (the pixels' y pointing
+    /// down): the CPU reference of `turned` in `dither.wgsl`.
+    pub fn turned(&self, p: [f64; 2]) -> [f64; 2] {
+        let [c, s] = self.turn().map(f64::from);
+        [c * p[0] - s * p[1], s * p[0] + c * p[1]]
+    }
+
     /// Checks the settings; `prefix` names them in errors ("" while they are being made). Its
     /// numbers' bounds are its declaration's.
     pub fn validate(&self, prefix: &str) -> Result<()> {
@@ -142,11 +155,12 @@ impl SurfaceEffect for Dither {
     }
 
     fn block_bytes(dither: Option<&Dither>) -> Vec<u8> {
+        let [cos_angle, sin_angle] = dither.map_or([1.0, 0.0], Dither::turn);
         DitherBlock {
             amount: dither.map_or(0.0, |d| d.amount as f32),
             cell: dither.map_or(1.0, |d| d.scale as f32),
-            cos_angle: dither.map_or(1.0, |d| d.angle.to_radians().cos() as f32),
-            sin_angle: dither.map_or(0.0, |d| d.angle.to_radians().sin() as f32),
+            cos_angle,
+            sin_angle,
         }
         .bytes()
     }
