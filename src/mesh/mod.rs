@@ -6,6 +6,7 @@ pub mod adjacency;
 pub mod back_to_back;
 pub mod bounds;
 pub mod buckets;
+pub mod bvh;
 pub mod crease_normals;
 pub mod curvature;
 pub mod diffuse;
