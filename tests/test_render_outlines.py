@@ -30,14 +30,15 @@ CORNER = tm.Camera.orthographic((3.0, 2.5, 2.0), height=4.0)
 
 
 def _expected_passes(outlines, outputs, msaa, supersample, casting=False):
-    """The plan rules (src/render/plan.rs), restated."""
+    """The plan rules (src/render/plan.rs), restated, for the default (exact) visibility: vector
+    lines are cut on the host and need no depth."""
     mesh = outlines in ("mesh", "both")
     image = outlines in ("image", "both")
     color, normal, depth, outline, lines, shadow = (
         n in outputs for n in ("color", "normal", "depth", "outline", "lines", "shadow"))
     ink = color or outline
     draw_image, draw_lines, vector = image and ink, mesh and ink, mesh and lines
-    geometry = "nd" if (normal or draw_image or shadow) else ("d" if (depth or draw_lines or vector) else None)
+    geometry = "nd" if (normal or draw_image or shadow) else ("d" if (depth or draw_lines) else None)
     single = msaa == 1 and supersample == 1
     passes = []
     if mesh and (draw_lines or vector):
@@ -58,7 +59,7 @@ def _expected_passes(outlines, outputs, msaa, supersample, casting=False):
         passes.append("lines")
     if color:
         passes.append("readback_color")
-    want_depth = depth or vector
+    want_depth = depth
     if normal and want_depth:
         passes.append("readback_normal_depth")
     elif normal:

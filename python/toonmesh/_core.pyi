@@ -324,12 +324,14 @@ class LineStyle(_Settings):
     pixels (default 1.5; the same at every resolution and supersampling factor).
 
     Fields: color: the ink's sRGB colour; width: width in output pixels, the same at every
-    resolution and supersampling factor.
+    resolution and supersampling factor; dash: dash length in output pixels, gaps as long (0:
+    solid).
     """
-    def __new__(cls, color: Optional[_Color] = ..., width: Optional[float] = ...) -> LineStyle: ...
+    def __new__(cls, color: Optional[_Color] = ..., width: Optional[float] = ..., *, dash: Optional[float] = ...) -> LineStyle: ...
     color: Final[_Vec3]
     width: Final[float]
-    def replace(self, *, color: Optional[_Color] = ..., width: Optional[float] = ...) -> LineStyle: ...
+    dash: Final[float]
+    def replace(self, *, color: Optional[_Color] = ..., width: Optional[float] = ..., dash: Optional[float] = ...) -> LineStyle: ...
 
 @final
 class Outlines(_Settings):
@@ -406,24 +408,27 @@ class Outlines(_Settings):
     False (not drawn), a LineStyle or a colour; ridge: True (the common style), False (not
     drawn), a LineStyle or a colour; valley: True (the common style), False (not drawn), a
     LineStyle or a colour; suggestive: suggestive contours (DeCarlo et al.): drawn only when
-    asked for; material: borders between scene items that meet edge to edge; image: image-space
-    edges; crease_angle: dihedral angle in degrees above which an edge is a crease; weld: merge
-    vertices at equal positions first, so seams are not drawn as boundaries; contours: how
-    silhouettes are found: 'faces', 'smooth' or 'auto'; suggestive_threshold: the suggestive
-    contours' derivative test, relative to the mesh's feature size; curvature_smoothing: width
-    in mean edge lengths over which suggestive contours' curvature is averaged (None: 2, at most
-    1% of the diagonal); min_crease_length: crease pieces shorter than this fraction of the
-    bounding-box diagonal are not drawn; max_crease_turn: crease pieces turning by more than
-    this many degrees on average are not drawn (180: all); image_rule: how image-space edges are
-    found; normal_angle: degrees of normal turn between pixels drawn as an edge; depth_jump:
-    depth jump between pixels drawn as an edge, in pixel footprints; normal_threshold: the paper
-    rule's Sobel threshold on normals; depth_threshold: the paper rule's Sobel threshold on
-    depth; depth_offset: hidden-line removal's tolerance in pixel footprints; taper: pixels over
-    which lines thin toward their ends (0: none); width_by_depth: scale line widths by the scene
-    centre's depth over the line's; join_kinds: join strokes of different kinds that meet end to
-    end.
+    asked for; material: borders between scene items that meet edge to edge; intersection: where
+    the surfaces of two scene items cross; image: image-space edges; hidden: lines behind
+    surfaces (True: grey, thinner, dashed): off unless asked for; crease_angle: dihedral angle
+    in degrees above which an edge is a crease; weld: merge vertices at equal positions first,
+    so seams are not drawn as boundaries; contours: how silhouettes are found: 'faces', 'smooth'
+    or 'auto'; suggestive_threshold: the suggestive contours' derivative test, relative to the
+    mesh's feature size; curvature_smoothing: width in mean edge lengths over which suggestive
+    contours' curvature is averaged (None: 2, at most 1% of the diagonal); min_crease_length:
+    crease pieces shorter than this fraction of the bounding-box diagonal are not drawn;
+    max_crease_turn: crease pieces turning by more than this many degrees on average are not
+    drawn (180: all); image_rule: how image-space edges are found; normal_angle: degrees of
+    normal turn between pixels drawn as an edge; depth_jump: depth jump between pixels drawn as
+    an edge, in pixel footprints; normal_threshold: the paper rule's Sobel threshold on normals;
+    depth_threshold: the paper rule's Sobel threshold on depth; depth_offset: the depth rule's
+    tolerance in pixel footprints; visibility: how lines behind surfaces are found: 'exact'
+    (against the surfaces) or 'depth' (the depth image); max_occlusion: hidden lines are drawn
+    behind at most this many surfaces (None: any number); taper: pixels over which lines thin
+    toward their ends (0: none); width_by_depth: scale line widths by the scene centre's depth
+    over the line's; join_kinds: join strokes of different kinds that meet end to end.
     """
-    def __new__(cls, kind: Optional[Literal['mesh', 'image', 'both']] = ..., *, color: Optional[_Color] = ..., width: Optional[float] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., crease: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
+    def __new__(cls, kind: Optional[Literal['mesh', 'image', 'both']] = ..., *, color: Optional[_Color] = ..., width: Optional[float] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., crease: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., intersection: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., hidden: Optional[Union[bool, LineStyle, _Color]] = ..., max_occlusion: Optional[int] = ..., visibility: Optional[Literal['exact', 'depth']] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
     kind: Final[str]
     silhouette: Final[Optional[Union[LineStyle, bool]]]
     boundary: Final[Optional[Union[LineStyle, bool]]]
@@ -432,7 +437,9 @@ class Outlines(_Settings):
     valley: Final[Optional[Union[LineStyle, bool]]]
     suggestive: Final[Optional[Union[LineStyle, bool]]]
     material: Final[Optional[Union[LineStyle, bool]]]
+    intersection: Final[Optional[Union[LineStyle, bool]]]
     image: Final[Optional[Union[LineStyle, bool]]]
+    hidden: Final[Optional[Union[LineStyle, bool]]]
     crease_angle: Final[float]
     weld: Final[bool]
     contours: Final[str]
@@ -446,11 +453,13 @@ class Outlines(_Settings):
     normal_threshold: Final[float]
     depth_threshold: Final[float]
     depth_offset: Final[float]
+    visibility: Final[str]
+    max_occlusion: Final[Optional[int]]
     taper: Final[float]
     width_by_depth: Final[bool]
     join_kinds: Final[bool]
     styles: Final[Dict[str, Optional[LineStyle]]]
-    def replace(self, *, kind: Optional[Literal['mesh', 'image', 'both']] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
+    def replace(self, *, kind: Optional[Literal['mesh', 'image', 'both']] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., intersection: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., hidden: Optional[Union[bool, LineStyle, _Color]] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., visibility: Optional[Literal['exact', 'depth']] = ..., max_occlusion: Optional[int] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
 
 @final
 class Material(_Settings):

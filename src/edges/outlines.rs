@@ -26,10 +26,13 @@ pub enum LineKind {
     /// materials): a boundary edge of one that lies on a boundary edge of another, as Blender's
     /// Line Art draws material borders. Found per scene (`outlines::shared_borders`).
     Material = 6,
+    /// Where the surfaces of two scene items cross (`edges::intersections`): found per scene,
+    /// through the faces, never an edge.
+    Intersection = 7,
 }
 
 impl LineKind {
-    pub const COUNT: usize = 7;
+    pub const COUNT: usize = 8;
     pub const ALL: [LineKind; LineKind::COUNT] = [
         LineKind::Silhouette,
         LineKind::Boundary,
@@ -38,6 +41,7 @@ impl LineKind {
         LineKind::Valley,
         LineKind::Suggestive,
         LineKind::Material,
+        LineKind::Intersection,
     ];
 
     /// Kinds that run along an object's outline, where background next to a line point does
@@ -60,6 +64,7 @@ impl LineKind {
             LineKind::Valley => "valley",
             LineKind::Suggestive => "suggestive",
             LineKind::Material => "material",
+            LineKind::Intersection => "intersection",
         }
     }
 }

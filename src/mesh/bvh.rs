@@ -142,8 +142,9 @@ impl Bvh {
     }
 
     /// Calls `hit(triangle, t)` for every triangle the ray `o + t d` meets with `t0 < t < t1`
-    /// (both sides of a triangle; a ray through a shared edge may meet both triangles).
-    pub fn ray(&self, o: DVec3, d: DVec3, t0: f64, t1: f64, mut hit: impl FnMut(u32, f64)) {
+    /// (both sides of a triangle; a ray through a shared edge may meet both triangles), until
+    /// `hit` returns true.
+    pub fn ray(&self, o: DVec3, d: DVec3, t0: f64, t1: f64, mut hit: impl FnMut(u32, f64) -> bool) {
         if self.is_empty() {
             return;
         }
@@ -162,8 +163,8 @@ impl Bvh {
             }
             for slot in node.first as usize..(node.first + node.count) as usize {
                 if let Some(t) = ray_triangle(o, d, &self.corners[slot]) {
-                    if t > t0 && t < t1 {
-                        hit(self.order[slot], t);
+                    if t > t0 && t < t1 && hit(self.order[slot], t) {
+                        return;
                     }
                 }
             }
@@ -343,7 +344,10 @@ mod tests {
         for r in &rays {
             let (o, d) = (r[0], r[1] - r[0]);
             let mut got = Vec::new();
-            bvh.ray(o, d, 0.0, 1.0, |t, _| got.push(t));
+            bvh.ray(o, d, 0.0, 1.0, |t, _| {
+                got.push(t);
+                false
+            });
             got.sort_unstable();
             let want: Vec<u32> = (0..tris.len() as u32)
                 .filter(|&i| ray_triangle(o, d, &tris[i as usize]).is_some_and(|t| t > 0.0 && t < 1.0))

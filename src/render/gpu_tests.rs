@@ -311,7 +311,9 @@ fn screen_lines(
     frame: &FrameSpec,
 ) -> (Vec<super::effects::outlines::projection::ScreenLine>, super::scene::camera::ResolvedCamera) {
     use super::effects::outlines::mesh_lines::{chains, instances, reference_depth, scene_outlines};
+    use super::effects::outlines::occluded::cut;
     use super::effects::outlines::projection::Projector;
+    use super::effects::outlines::settings::VisibilityRule;
     let checked = r.check(scene.clone(), *frame).unwrap();
     let mut report = Default::default();
     let p = r.prepare(checked, &mut report).unwrap();
@@ -319,27 +321,45 @@ fn screen_lines(
     let mut lines = Vec::new();
     let reference = reference_depth(&scene.items, &p.records, &p.cam);
     let outlines_of = scene_outlines(&scene.items, &p.records, &p.cam, outlines).unwrap();
-    for ((item, rec), outline) in scene.items.iter().zip(&p.records).zip(&outlines_of) {
-        let projector = Projector::of(item, &rec.gpu.placement, &p.cam, frame.width, frame.height);
-        let drawn =
-            instances(&chains(&outline, &rec.host.positions), &projector, &outlines.stroke_width, reference);
-        lines.extend(drawn.iter().filter_map(|l| l.screen(&projector)));
+    let projectors: Vec<Projector> = scene
+        .items
+        .iter()
+        .zip(&p.records)
+        .map(|(item, rec)| Projector::of(item, &rec.gpu.placement, &p.cam, frame.width, frame.height))
+        .collect();
+    let mut found: Vec<_> =
+        outlines_of.iter().zip(&p.records).map(|(o, rec)| chains(o, &rec.host.positions)).collect();
+    if outlines.visibility == VisibilityRule::Exact {
+        found = cut(found, &p.records, &projectors, p.cam.orthographic, outlines).unwrap();
+    }
+    for (projector, of_item) in projectors.iter().zip(&found) {
+        let drawn = instances(of_item, projector, &outlines.stroke_width, reference);
+        lines.extend(drawn.iter().filter_map(|l| l.screen(projector)));
     }
     (lines, p.cam)
 }
 
 #[test]
 fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
-    use super::effects::outlines::settings::ContourRule;
     use super::effects::outlines::settings::INK_KINDS;
+    use super::effects::outlines::settings::{ContourRule, LineStyle, VisibilityRule, HIDDEN_KIND};
     use super::effects::outlines::stroke_width::StrokeWidth;
     use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
-    let faces = Outlines { crease_angle: 25.0, contours: ContourRule::Faces, ..Outlines::new(true, false) };
+    let faces = Outlines {
+        crease_angle: 25.0,
+        contours: ContourRule::Faces,
+        visibility: VisibilityRule::Depth,
+        ..Outlines::new(true, false)
+    };
     // smooth contours: lines through the faces, drawn by the same pass
     let smooth = Outlines { contours: ContourRule::Smooth, ..faces.clone() };
     // strokes tapered at their ends and wider where nearer
     let shaped = Outlines { stroke_width: StrokeWidth { taper: 40.0, by_depth: true }, ..faces.clone() };
-    let all = [faces, smooth, shaped];
+    // the exact rule (lines cut on the host, drawn without the depth test), with hidden lines
+    // dashed
+    let mut exact = Outlines { visibility: VisibilityRule::Exact, ..smooth.clone() };
+    exact.styles[HIDDEN_KIND] = Some(LineStyle::hidden(LineStyle::default()));
+    let all = [faces, smooth, shaped, exact];
     for (backend, outlines) in backends().into_iter().flat_map(|b| all.clone().map(|o| (b, o))) {
         let r = open(backend).unwrap();
         let scene = two_spheres(&r, outlines.clone());
@@ -356,12 +376,24 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
         let img = DepthImage { depth: &depth, width: 240, height: 180 };
         let rule = Visibility::of(outlines.depth_offset, &cam, frame.height);
         let widths: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.width)).collect();
-        let want = coverage_image(&lines, &widths, false, &img, rule);
+        let dashes: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.dash)).collect();
+        let want = coverage_image(&lines, (&widths, &dashes), false, &img, rule);
         let inked = want.iter().filter(|&&c| c > 0.0).count();
         assert!(inked > 500, "{backend:?}: the reference inks {inked} pixels");
         assert_coverage_close(out.floats(Output::Outline).unwrap(), &want, &format!("{backend:?}"));
+        if outlines.visibility == VisibilityRule::Exact {
+            // hidden lines drawn, dashed: some partly inked pixels along them
+            let hidden: Vec<_> = lines.iter().filter(|l| l.kind == HIDDEN_KIND).copied().collect();
+            assert!(
+                hidden.len() > 20 && hidden.iter().all(|l| l.exact),
+                "{backend:?}: {} hidden",
+                hidden.len()
+            );
+            continue;
+        }
         // the rule hides something here: with an infinite offset every line would show
-        let all = coverage_image(&lines, &widths, false, &img, Visibility { offset: 1e30, ..rule });
+        let all =
+            coverage_image(&lines, (&widths, &dashes), false, &img, Visibility { offset: 1e30, ..rule });
         let shown = all.iter().filter(|&&c| c > 0.0).count();
         assert!(shown > inked + 200, "{backend:?}: hidden-line removal hid only {} pixels", shown - inked);
     }
@@ -405,7 +437,7 @@ fn image_lines_match_the_cpu_discontinuity_rule_on_both_backends() {
     for (width, flat) in [(1.5f32, false), (4.0, true)] {
         let mut outlines = Outlines::new(false, true);
         outlines.styles[IMAGE_KIND] =
-            Some(super::effects::outlines::settings::LineStyle { color: [0.0; 3], width });
+            Some(super::effects::outlines::settings::LineStyle { color: [0.0; 3], width, dash: 0.0 });
         for backend in backends() {
             let r = open(backend).unwrap();
             let mut scene = two_spheres(&r, outlines.clone());

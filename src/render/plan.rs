@@ -307,9 +307,19 @@ mod tests {
             names(both(), outputs(&[Output::Outline])),
             ["silhouettes", "gbuffer", "edge_bits", "edges", "lines", "readback_outline"]
         );
-        // vector lines read depth back without returning it
+        // vector lines cut by the exact rule need no depth; by the depth rule they read it
+        // back without returning it
+        let lines = outputs(&[Output::Color, Output::Lines]);
         assert_eq!(
-            names(scene(Some(Outlines::new(true, false)), false), outputs(&[Output::Color, Output::Lines])),
+            names(scene(Some(Outlines::new(true, false)), false), lines),
+            ["silhouettes", "shade", "lines", "readback_color", "visible_lines"]
+        );
+        let by_depth = Outlines {
+            visibility: crate::render::effects::outlines::settings::VisibilityRule::Depth,
+            ..Outlines::new(true, false)
+        };
+        assert_eq!(
+            names(scene(Some(by_depth), false), lines),
             ["silhouettes", "shade", "lines", "readback_color", "readback_depth", "visible_lines"]
         );
         // outlines that draw nothing still give an empty coverage

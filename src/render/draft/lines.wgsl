@@ -37,6 +37,8 @@ fn vs_view_edge(@builtin(vertex_index) vi: u32, e: ViewEdgeIn) -> LineOut {
         l.kind = e.kind;
         l.b = e.b;
         l.scale = e.scale;
+        l.flags = 0u;  // the drafts' lines are tested against the depth
+        l.along = vec2<f32>(0.0);
         o = line_vertex(vi & 3u, l);  // the page gives each record to 4 vertices
     }
     return o;
@@ -92,6 +94,8 @@ fn vs_face_contour(@builtin(vertex_index) vi: u32, f: FaceIn) -> LineOut {
         l.kind = SILHOUETTE;
         l.b = ends[1];
         l.scale = vec2<f32>(1.0);
+        l.flags = 0u;
+        l.along = vec2<f32>(0.0);
         o = line_vertex(vi & 3u, l);  // the page gives each record to 4 vertices
     }
     return o;

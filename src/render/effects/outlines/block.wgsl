@@ -9,4 +9,5 @@ struct OutlinesBlock {
     depth_jump: f32,                   // the depth jump in pixel footprints
     _pad0: f32,
     _pad1: f32,
+    dashes: array<vec4<f32>, DASH_ROWS>, // per ink kind, four to a row: dash length in pixels (0: solid)
 };

@@ -1,7 +1,8 @@
 //! Mesh-space outlines (Kang, Kim and Yoon): the silhouettes of the view and the mesh's
 //! boundaries, creases and non-manifold edges, drawn as antialiased screen-space strips over the
-//! colour and/or into the outline coverage, with hidden lines removed against the geometry
-//! target's depth. `visibility.rs` holds the same rules on the CPU.
+//! colour and/or into the outline coverage: lines cut on the host by the exact rule
+//! (`occluded`) as they are, others with hidden lines removed against the geometry target's
+//! depth; dashed where their ink says. `visibility.rs` holds the same rules on the CPU.
 
 use crate::error::Result;
 use crate::render::graph::target::{GeometryLayout, Use};
@@ -9,7 +10,7 @@ use crate::render::graph::{FrameCtx, Pass, Recorder};
 use crate::render::pipelines::PipelineKey;
 
 use super::ink::Ink;
-use super::mesh_lines::{LineInstance, ViewSlot};
+use super::mesh_lines::{FrameLine, ViewSlot};
 
 pub const WGSL: &str = concat!(include_str!("inked.wgsl"), include_str!("lines.wgsl"));
 
@@ -24,9 +25,9 @@ pub struct Lines {
 
 fn instance_layout() -> wgpu::VertexBufferLayout<'static> {
     wgpu::VertexBufferLayout {
-        array_stride: std::mem::size_of::<LineInstance>() as u64,
+        array_stride: std::mem::size_of::<FrameLine>() as u64,
         step_mode: wgpu::VertexStepMode::Instance,
-        attributes: &LineInstance::ATTRIBUTES,
+        attributes: &FrameLine::ATTRIBUTES,
     }
 }
 

@@ -9,7 +9,9 @@
 // A line of a rim kind (`LineKind::RIM_BITS`: silhouette, boundary, material border) with background
 // among those pixels is on the rim and shows; other
 // lines are tested against the surface pixels only (a crease behind the rim stays hidden).
-// `visibility.rs` holds the same rule on the CPU.
+// A line whose visibility the host decided (`flags` has EXACT: the exact rule, occluded.rs)
+// is drawn as it is. A kind with a dash length is inked in dashes along its stroke.
+// `visibility.rs` holds the same rules on the CPU.
 
 @group(2) @binding(0) var geometry: texture_2d<u32>;
 
@@ -18,6 +20,8 @@ struct LineIn {
     @location(1) kind: u32,
     @location(2) b: vec3<f32>,
     @location(3) scale: vec2<f32>,   // the width's factors at a and b (stroke_width.rs)
+    @location(4) flags: u32,         // EXACT: visibility decided on the host
+    @location(5) along: vec2<f32>,   // pixels along the stroke at a and b (dashes)
 };
 
 
@@ -31,6 +35,8 @@ struct LineOut {
     @location(2) @interpolate(flat) depths: vec2<f32>,
     @location(3) @interpolate(flat) kind: u32,
     @location(4) @interpolate(flat) scale: vec2<f32>,
+    @location(5) @interpolate(flat) flags: u32,
+    @location(6) @interpolate(flat) along: vec2<f32>,
 };
 
 fn to_pixels(v: vec3<f32>) -> vec2<f32> {
@@ -65,6 +71,8 @@ fn line_vertex(vi: u32, l: LineIn) -> LineOut {
     let sa = to_pixels(pa);
     let sb = to_pixels(pb);
     o.scale = l.scale;
+    o.flags = l.flags;
+    o.along = l.along;
     let half = frame.outlines.ink[kind].w * max(l.scale.x, l.scale.y) * 0.5 + 1.0;
     let ab = sb - sa;
     let len = length(ab);
@@ -121,6 +129,15 @@ fn visible(c: vec2<f32>, z: f32, kind: u32) -> bool {
     return !surface || z <= far + tolerance;
 }
 
+// How much of a line dashed `dash` pixels on and off is inked `along` pixels along its stroke
+// (1 where `dash` is 0): `visibility::dashed`.
+fn dashed(along: f32, dash: f32) -> f32 {
+    let period = 2.0 * dash;
+    let c = along - dash * 0.5;
+    let w = c - period * floor(c / max(period, 1e-30) + 0.5);
+    return select(1.0, clamp(dash * 0.5 + 0.5 - abs(w), 0.0, 1.0), dash > 0.0);
+}
+
 // Ink coverage of this pixel by the line, 0 where it is hidden.
 fn coverage(o: LineOut) -> f32 {
     let pos = o.clip;  // in the fragment stage: the pixel centre
@@ -132,7 +149,8 @@ fn coverage(o: LineOut) -> f32 {
     }
     let c = o.sa + ab * t;
     let width = frame.outlines.ink[o.kind].w * mix(o.scale.x, o.scale.y, t);
-    let cov = clamp(width * 0.5 + 0.5 - length(pos.xy - c), 0.0, 1.0);
+    let dash = frame.outlines.dashes[o.kind / 4u][o.kind % 4u];
+    let cov = clamp(width * 0.5 + 0.5 - length(pos.xy - c), 0.0, 1.0) * dashed(mix(o.along.x, o.along.y, t), dash);
     if (cov <= 0.0) {
         return 0.0;
     }
@@ -142,7 +160,7 @@ fn coverage(o: LineOut) -> f32 {
         1.0 / mix(1.0 / o.depths.x, 1.0 / o.depths.y, t),
         frame.view.orthographic == 0u,
     );
-    return select(0.0, cov, visible(c, z, o.kind));
+    return select(0.0, cov, (o.flags & EXACT) != 0u || visible(c, z, o.kind));
 }
 
 @fragment

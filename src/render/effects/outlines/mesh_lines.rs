@@ -19,6 +19,7 @@ use crate::edges::zero_set::Polylines;
 use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
 use crate::mesh::back_to_back::without_back_to_back;
+use crate::mesh::bvh::Bvh;
 use crate::render::gpu_mesh::{GpuMesh, HostMesh, NormalMode};
 use crate::render::graph::effect::{HostInputs, HostStep};
 use crate::render::graph::report::FrameReport;
@@ -26,8 +27,9 @@ use crate::render::mesh_record::MeshRecord;
 use crate::render::scene::camera::{direction_of, ResolvedCamera};
 use crate::render::scene::SceneItem;
 
+use super::occluded;
 use super::projection::{Projector, ScreenLine};
-use super::settings::{ContourRule, Outlines};
+use super::settings::{ContourRule, Outlines, VisibilityRule, HIDDEN_KIND};
 use super::shared_borders::shared_borders;
 use super::stroke_width::{strength_factor, StrokeWidth};
 
@@ -44,6 +46,9 @@ pub struct MeshLines {
     /// With welding, the faces less those back to back with another (`back_to_back::without_back_to_back`;
     /// None: all of them), decided with the welded index.
     back_to_back: OnceLock<Option<Vec<[u32; 3]>>>,
+    /// The hierarchy of every face, in the stored coordinates: what exact visibility casts
+    /// its rays against and intersection lines pair faces with.
+    bvh: OnceLock<Bvh>,
 }
 
 /// Welding, then the bits of the crease angle, the shortest crease piece and the largest mean
@@ -69,6 +74,11 @@ impl MeshLines {
     /// The analysis kept with `rec`.
     pub fn of(rec: &MeshRecord) -> Arc<MeshLines> {
         rec.derived(MeshLines::default)
+    }
+
+    /// The hierarchy of the mesh's faces (built on the first call, in parallel).
+    pub fn bvh(&self, host: &HostMesh) -> &Bvh {
+        self.bvh.get_or_init(|| crate::parallel::install(|| Bvh::build(&host.positions, &host.faces)))
     }
 
     /// The index of the faces lines are found on (`faces`).
@@ -223,15 +233,21 @@ pub fn stored_view(cam: &ResolvedCamera, model: DMat4, mesh: &GpuMesh) -> View {
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct LineInstance {
     pub a: [f32; 3],
+    /// The ink kind (`settings::kind_names`).
     pub kind: u32,
     pub b: [f32; 3],
-    pub pad: u32,
+    /// `EXACT` where visibility was decided on the host (the frame's lines); 0 for the drafts.
+    pub flags: u32,
     pub scale: [f32; 2],
 }
 
+/// `LineInstance::flags`: the line is known to be visible (or drawn as hidden), so the lines
+/// pass draws it without its depth test.
+pub const EXACT: u32 = 1;
+
 impl LineInstance {
-    /// Its vertex attributes, shader locations 0 to 3 (`LineInstance` in `lines.wgsl`): the
-    /// padding word is skipped.
+    /// Its vertex attributes, shader locations 0 to 3 (`LineIn` in `lines.wgsl`): the flags
+    /// are the frame's (`FrameLine`).
     pub const ATTRIBUTES: [wgpu::VertexAttribute; 4] = [
         wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 0, shader_location: 0 },
         wgpu::VertexAttribute { format: wgpu::VertexFormat::Uint32, offset: 12, shader_location: 1 },
@@ -242,13 +258,58 @@ impl LineInstance {
     /// The line of `kind` from `a` to `b` (float64 points made float32), with the width factors
     /// `scale` at its ends.
     pub fn new(kind: LineKind, a: [f64; 3], b: [f64; 3], scale: [f32; 2]) -> Self {
-        LineInstance { a: a.map(|x| x as f32), kind: kind as u32, b: b.map(|x| x as f32), pad: 0, scale }
+        LineInstance::of_ink(kind as usize, a, b, scale)
     }
 
-    /// The line as the lines pass draws it (its float32 points and width factors), projected.
+    /// The line of ink kind `ink` (`settings::kind_names`).
+    pub fn of_ink(ink: usize, a: [f64; 3], b: [f64; 3], scale: [f32; 2]) -> Self {
+        LineInstance { a: a.map(|x| x as f32), kind: ink as u32, b: b.map(|x| x as f32), flags: 0, scale }
+    }
+}
+
+/// One line of a frame: the line, and the distance along its stroke on screen at both ends
+/// (output pixels at the frame's pixel ratio), where its dashes are measured from.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct FrameLine {
+    pub line: LineInstance,
+    pub along: [f32; 2],
+}
+
+impl FrameLine {
+    /// Its vertex attributes: the line's, then the flags and the distances along
+    /// (`LineIn` in `lines.wgsl`, locations 4 and 5).
+    pub const ATTRIBUTES: [wgpu::VertexAttribute; 6] = {
+        let [a, kind, b, scale] = LineInstance::ATTRIBUTES;
+        [
+            a,
+            kind,
+            b,
+            scale,
+            wgpu::VertexAttribute {
+                format: wgpu::VertexFormat::Uint32,
+                offset: std::mem::offset_of!(LineInstance, flags) as u64,
+                shader_location: 4,
+            },
+            wgpu::VertexAttribute {
+                format: wgpu::VertexFormat::Float32x2,
+                offset: std::mem::offset_of!(FrameLine, along) as u64,
+                shader_location: 5,
+            },
+        ]
+    };
+
+    /// The line as the lines pass draws it (its float32 points, width factors and distances
+    /// along), projected.
     pub fn screen(&self, projector: &Projector) -> Option<ScreenLine> {
-        let s = projector.project(self.a.map(|x| x as f64), self.b.map(|x| x as f64), self.kind as usize)?;
-        Some(ScreenLine { scale: self.scale.map(|x| x as f64), ..s })
+        let l = &self.line;
+        let s = projector.project(l.a.map(|x| x as f64), l.b.map(|x| x as f64), l.kind as usize)?;
+        Some(ScreenLine {
+            scale: l.scale.map(|x| x as f64),
+            along: self.along.map(|x| x as f64),
+            exact: l.flags & EXACT != 0,
+            ..s
+        })
     }
 }
 
@@ -268,6 +329,21 @@ pub struct Chain {
     /// How strongly the line is there at each point, in [0, 1] (a suggestive contour fades in
     /// past its threshold); empty: fully.
     pub strength: Vec<f64>,
+    /// Traced through faces (a contour), not along edges.
+    pub traced: bool,
+    /// How many surfaces hide it, where the exact rule decided (`occluded`); None: the lines
+    /// pass decides against the frame's depth.
+    pub occlusion: Option<u32>,
+}
+
+impl Chain {
+    /// Its ink kind: its line kind, or hidden lines' where surfaces hide it.
+    pub fn ink(&self) -> usize {
+        match self.occlusion {
+            Some(q) if q > 0 => HIDDEN_KIND,
+            _ => self.kind as usize,
+        }
+    }
 }
 
 /// The lines of one view: each scene item's chains, as the lines pass draws them (instances and
@@ -275,7 +351,7 @@ pub struct Chain {
 #[derive(Debug, Default)]
 pub struct ViewLines {
     pub chains: Vec<Vec<Chain>>,
-    pub instances: Vec<LineInstance>,
+    pub instances: Vec<FrameLine>,
     pub draws: Vec<LineDraw>,
 }
 
@@ -296,7 +372,7 @@ pub fn chains(outline: &MeshOutline, positions: &[[f64; 3]]) -> Vec<Chain> {
         let (flat, starts) = chain_edges(&of_kind);
         for w in starts.windows(2) {
             let points = flat[w[0] as usize..w[1] as usize].iter().map(|&v| positions[v as usize]).collect();
-            out.push(Chain { kind, points, strength: Vec::new() });
+            out.push(Chain { kind, points, strength: Vec::new(), traced: false, occlusion: None });
         }
     }
     for (kind, curves) in &outline.curves {
@@ -304,6 +380,8 @@ pub fn chains(outline: &MeshOutline, positions: &[[f64; 3]]) -> Vec<Chain> {
             kind: *kind,
             points: curves.line(i).to_vec(),
             strength: curves.line_strength(i).to_vec(),
+            traced: true,
+            occlusion: None,
         }));
     }
     out
@@ -317,22 +395,20 @@ pub fn instances(
     projector: &Projector,
     rule: &StrokeWidth,
     reference: f64,
-) -> Vec<LineInstance> {
+) -> Vec<FrameLine> {
     let mut out = Vec::new();
     for c in chains {
         let n = c.points.len();
         let (mut along, mut depths) = (vec![0.0; n], vec![0.0; n]);
         let faded = c.strength.len() == n;
-        if !rule.is_constant() {
-            for i in 1..n {
-                let seen = projector.project(c.points[i - 1], c.points[i], 0);
-                let (l, za, zb) = seen.map_or((0.0, 0.0, 0.0), |l| (l.length(), l.za, l.zb));
-                along[i] = along[i - 1] + l;
-                if i == 1 {
-                    depths[0] = za;
-                }
-                depths[i] = zb;
+        for i in 1..n {
+            let seen = projector.project(c.points[i - 1], c.points[i], 0);
+            let (l, za, zb) = seen.map_or((0.0, 0.0, 0.0), |l| (l.length(), l.za, l.zb));
+            along[i] = along[i - 1] + l;
+            if i == 1 {
+                depths[0] = za;
             }
+            depths[i] = zb;
         }
         let closed = n > 2 && c.points[0] == c.points[n - 1];
         let mut factors =
@@ -340,13 +416,12 @@ pub fn instances(
         if faded {
             factors.iter_mut().zip(&c.strength).for_each(|(f, &s)| *f *= strength_factor(s));
         }
+        let flags = if c.occlusion.is_some() { EXACT } else { 0 };
         out.extend((1..n).map(|i| {
-            LineInstance::new(
-                c.kind,
-                c.points[i - 1],
-                c.points[i],
-                [factors[i - 1] as f32, factors[i] as f32],
-            )
+            let scale = [factors[i - 1] as f32, factors[i] as f32];
+            let line =
+                LineInstance { flags, ..LineInstance::of_ink(c.ink(), c.points[i - 1], c.points[i], scale) };
+            FrameLine { line, along: [along[i - 1] as f32, along[i] as f32] }
         }));
     }
     out
@@ -420,11 +495,19 @@ impl HostStep for Silhouettes {
         let by_depth = self.outlines.stroke_width.by_depth;
         let reference = if by_depth { reference_depth(items, cx.records, cx.cam) } else { 1.0 };
         let outlines = scene_outlines(items, cx.records, cx.cam, &self.outlines)?;
-        for (i, ((item, rec), outline)) in items.iter().zip(cx.records).zip(outlines).enumerate() {
-            let chains = chains(&outline, &rec.host.positions);
-            let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
+        let mut found: Vec<Vec<Chain>> =
+            outlines.iter().zip(cx.records).map(|(o, rec)| chains(o, &rec.host.positions)).collect();
+        let projectors: Vec<Projector> = items
+            .iter()
+            .zip(cx.records)
+            .map(|(item, rec)| Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height))
+            .collect();
+        if self.outlines.visibility == VisibilityRule::Exact {
+            found = occluded::cut(found, cx.records, &projectors, cx.cam.orthographic, &self.outlines)?;
+        }
+        for (i, (chains, projector)) in found.into_iter().zip(&projectors).enumerate() {
             let first = lines.instances.len() as u32;
-            lines.instances.extend(instances(&chains, &projector, &self.outlines.stroke_width, reference));
+            lines.instances.extend(instances(&chains, projector, &self.outlines.stroke_width, reference));
             lines.draws.push(LineDraw { item: i, instances: first..lines.instances.len() as u32 });
             lines.chains.push(chains);
         }

@@ -9,6 +9,7 @@ pub mod edges_reference;
 pub mod ink;
 pub mod lines;
 pub mod mesh_lines;
+pub mod occluded;
 pub mod pen;
 pub mod projection;
 pub mod settings;
@@ -50,12 +51,23 @@ crate::uniform_block! {
         pub depth_jump: f32,
         pub _pad0: f32,
         pub _pad1: f32,
+        /// Per ink kind, four to a row: the dash length in output pixels (0: solid).
+        pub dashes: [[f32; 4]; DASH_ROWS],
     }
 }
+
+/// Rows of `OutlinesBlock::dashes`.
+pub const DASH_ROWS: usize = INK_KINDS.div_ceil(4);
 
 pub struct OutlinesEffect;
 
 pub static EFFECT: OutlinesEffect = OutlinesEffect;
+
+/// Whether the scene's mesh-space lines are cut on the host (`VisibilityRule::Exact`), not
+/// against the frame's depth.
+fn exact(scene: &CheckedScene) -> bool {
+    scene.scene.outlines.as_ref().is_some_and(|o| o.visibility == settings::VisibilityRule::Exact)
+}
 
 /// What the scene's outlines draw: mesh-space lines, image-space edges.
 fn draws(scene: &CheckedScene) -> (bool, bool) {
@@ -70,6 +82,8 @@ impl FrameEffect for OutlinesEffect {
     fn block_wgsl(&self) -> String {
         let mut s = wgsl::constant_u32("INK_KINDS", INK_KINDS as u32);
         s += &wgsl::constant_u32("IMAGE_KIND", IMAGE_KIND as u32);
+        s += &wgsl::constant_u32("DASH_ROWS", DASH_ROWS as u32);
+        s += &wgsl::constant_u32("EXACT", mesh_lines::EXACT);
         s += &wgsl::constant_u32("RIM_KINDS", LineKind::RIM_BITS);
         s += &wgsl::constant_f32("DEPTH_EPSILON", visibility::DEPTH_EPSILON);
         s += &wgsl::constant_u32("IMAGE_RULE_PAPER", settings::ImageRule::Paper as u32);
@@ -88,6 +102,9 @@ impl FrameEffect for OutlinesEffect {
                     let c = to_linear(s.color);
                     *slot = [c[0], c[1], c[2], s.width];
                 }
+            }
+            for (k, style) in o.styles.iter().enumerate() {
+                b.dashes[k / 4][k % 4] = style.map_or(0.0, |s| s.dash);
             }
             b.depth_offset = o.depth_offset;
             b.normal_threshold = o.normal_threshold;
@@ -122,7 +139,7 @@ impl FrameEffect for OutlinesEffect {
         let (mesh, image) = draws(scene);
         if image && ink {
             Some(GeometryLayout::NormalDepth)
-        } else if mesh && (ink || o.has(Output::Lines)) {
+        } else if mesh && (ink || (o.has(Output::Lines) && !exact(scene))) {
             Some(GeometryLayout::Depth)
         } else {
             None
@@ -160,12 +177,14 @@ impl FrameEffect for OutlinesEffect {
                 steps.after.push(Box::new(lines::Lines { ink, layout, view: Arc::clone(&view) }));
             }
             if visible {
-                steps.host_depth = true;
+                let exact = exact(cx.scene);
+                steps.host_depth |= !exact;
                 steps.host_after.push(Box::new(visibility::VisibleLines {
                     depth_offset: outlines.depth_offset,
                     gaps: strokes::gaps(outlines),
                     widths: strokes::widths(outlines),
                     join_kinds: outlines.join_kinds,
+                    exact,
                     view,
                 }));
             }

@@ -19,6 +19,10 @@ pub struct ScreenLine {
     pub zb: f64,
     pub kind: usize,
     pub scale: [f64; 2],
+    /// The distance along its stroke at both ends, in pixels (where dashes are measured from).
+    pub along: [f64; 2],
+    /// Visibility was decided on the host (`mesh_lines::EXACT`): no depth test.
+    pub exact: bool,
 }
 
 impl ScreenLine {
@@ -36,6 +40,11 @@ impl ScreenLine {
     /// The factor of the kind's width at parameter t (linear on screen, as the line pass has it).
     pub fn factor(&self, t: f64) -> f64 {
         self.scale[0] + (self.scale[1] - self.scale[0]) * t
+    }
+
+    /// The distance along the stroke at parameter t (linear on screen).
+    pub fn along_at(&self, t: f64) -> f64 {
+        self.along[0] + (self.along[1] - self.along[0]) * t
     }
 
     pub fn length(&self) -> f64 {
@@ -101,6 +110,8 @@ impl Projector {
             zb: -pb.z,
             kind,
             scale: [1.0; 2],
+            along: [0.0; 2],
+            exact: false,
         })
     }
 }

@@ -57,6 +57,21 @@ impl ContourRule {
 }
 
 crate::named_enum! {
+    /// How mesh-space lines behind surfaces are removed.
+    pub enum VisibilityRule {
+        /// Against the scene's surfaces themselves (`edges::occlusion`): a ray from each point
+        /// of a line toward the camera counts the surfaces it crosses, and lines are cut where
+        /// that count changes. A line under a surface never shows through it, however thin the
+        /// gap; hidden lines (`hidden`) can be drawn.
+        Exact = "exact",
+        /// Against the frame's depth image, with `depth_offset` pixel footprints of tolerance:
+        /// the earlier rule, decided per pixel on the GPU; a line within the tolerance of a
+        /// surface in front of it shows.
+        Depth = "depth",
+    }
+}
+
+crate::named_enum! {
     /// How image-space edges are found and drawn.
     pub enum ImageRule {
         /// Between neighbouring pixels whose normals turn by more than `normal_angle`, or whose
@@ -77,9 +92,18 @@ pub const DEFAULT_NORMAL_ANGLE: f32 = 25.0;
 /// footprints beyond the surface's slope, when none is given.
 pub const DEFAULT_DEPTH_JUMP: f32 = 3.0;
 
-/// The kinds of ink: the mesh-space kinds of `edges::outlines::LineKind`, then image-space edges.
+/// The kinds of ink: the mesh-space kinds of `edges::outlines::LineKind`, then image-space
+/// edges, then the mesh-space lines behind surfaces (`Outlines(hidden=...)`).
 pub const IMAGE_KIND: usize = LineKind::COUNT;
-pub const INK_KINDS: usize = LineKind::COUNT + 1;
+pub const HIDDEN_KIND: usize = LineKind::COUNT + 1;
+pub const INK_KINDS: usize = LineKind::COUNT + 2;
+
+/// Hidden lines' default ink: grey, ...
+pub const HIDDEN_GREY: f64 = 0.5;
+/// ... two thirds of the common width, ...
+pub const HIDDEN_WIDTH: f32 = 2.0 / 3.0;
+/// ... in dashes (and gaps) of this many times the common width.
+pub const HIDDEN_DASH: f32 = 3.0;
 
 settings! {
     /// How one kind of line is drawn.
@@ -91,6 +115,9 @@ settings! {
         /// Image-space edges are one pixel wide whatever this says.
         pub width: f32 = DEFAULT_WIDTH => float(WIDTH_RULE),
             "width in output pixels, the same at every resolution and supersampling factor", pixels;
+        /// Dashes this many output pixels long with gaps as long; 0: a solid line.
+        pub dash: f32 = 0.0 => float(NON_NEGATIVE.slider(0.0, 32.0)),
+            "dash length in output pixels, gaps as long (0: solid)", pixels;
     }
     described(positional: 2);
 }
@@ -99,6 +126,13 @@ settings! {
 pub const WIDTH_RULE: Range = Range::above_up_to(0.0, MAX_WIDTH as f64).slider(0.25, MAX_WIDTH as f64);
 
 impl LineStyle {
+    /// The style of hidden lines asked for with True, from the common style: grey, thinner,
+    /// dashed.
+    pub fn hidden(common: LineStyle) -> LineStyle {
+        let width = (common.width * HIDDEN_WIDTH).max(WIDTH_RULE.slider_bounds()[0] as f32);
+        LineStyle { color: [HIDDEN_GREY; 3], width, dash: common.width * HIDDEN_DASH }
+    }
+
     /// Checks the style; `prefix` names it in errors ("" while it is being made).
     pub fn validate(&self, prefix: &str) -> Result<()> {
         check_unit(&field(prefix, "color"), &self.color)?;
@@ -112,6 +146,7 @@ pub fn kind_names() -> [&'static str; INK_KINDS] {
     for k in LineKind::ALL {
         names[k as usize] = k.name();
     }
+    names[HIDDEN_KIND] = "hidden";
     names
 }
 
@@ -165,6 +200,19 @@ pub struct Outlines {
     /// into a crease) into one stroke, of the kind of its longest part (`strokes::join_runs`).
     #[serde(default)]
     pub join_kinds: bool,
+    /// How lines behind surfaces are found.
+    #[serde(default)]
+    pub visibility: VisibilityRule,
+    /// Hidden lines are drawn (in `styles[HIDDEN_KIND]`) behind at most this many surfaces;
+    /// None: behind any number.
+    #[serde(default)]
+    pub max_occlusion: Option<u32>,
+}
+
+impl Default for VisibilityRule {
+    fn default() -> Self {
+        VisibilityRule::Exact
+    }
 }
 
 /// Settings saved before the turn rule existed load with it at its default.
@@ -183,6 +231,7 @@ impl Outlines {
     pub fn new(mesh: bool, image: bool) -> Self {
         let mut styles = [Some(LineStyle::default()); INK_KINDS];
         styles[LineKind::Suggestive as usize] = None;
+        styles[HIDDEN_KIND] = None;
         Outlines {
             mesh,
             image,
@@ -202,7 +251,14 @@ impl Outlines {
             depth_offset: DEFAULT_DEPTH_OFFSET,
             stroke_width: StrokeWidth::default(),
             join_kinds: false,
+            visibility: VisibilityRule::Exact,
+            max_occlusion: None,
         }
+    }
+
+    /// Whether lines behind surfaces are drawn (the exact rule finds them).
+    pub fn draws_hidden(&self) -> bool {
+        self.styles[HIDDEN_KIND].is_some()
     }
 
     /// The names `Outlines(kind)` takes.
@@ -241,6 +297,12 @@ impl Outlines {
             return Err(Error::invalid(field(prefix, "kind"), "must draw mesh lines, image edges or both"));
         }
         // the other mesh kinds are on by default; suggestive contours are asked for
+        if self.draws_hidden() && self.visibility != VisibilityRule::Exact {
+            return Err(Error::invalid(
+                field(prefix, "hidden"),
+                "hidden lines are found by the exact rule: not with visibility='depth'",
+            ));
+        }
         if !self.mesh && self.styles[LineKind::Suggestive as usize].is_some() {
             return Err(Error::invalid(
                 field(prefix, "suggestive"),
@@ -278,7 +340,11 @@ declared_fields! {
             "suggestive contours (DeCarlo et al.): drawn only when asked for", optional;
         material: Value [get style, set set_style] => Kind::Style,
             "borders between scene items that meet edge to edge", optional;
+        intersection: Value [get style, set set_style] => Kind::Style,
+            "where the surfaces of two scene items cross", optional;
         image: Value [get style, set set_style] => Kind::Style, "image-space edges", optional;
+        hidden: Value [get style, set set_style] => Kind::Style,
+            "lines behind surfaces (True: grey, thinner, dashed): off unless asked for", optional;
         crease_angle: f64 [.crease_angle] => float(DEGREES),
             "dihedral angle in degrees above which an edge is a crease";
         weld: bool [.weld] => boolean(),
@@ -302,7 +368,11 @@ declared_fields! {
         depth_threshold: f32 [.depth_threshold] => float(NON_NEGATIVE.slider(0.0, 4.0)),
             "the paper rule's Sobel threshold on depth";
         depth_offset: f32 [.depth_offset] => float(NON_NEGATIVE.slider(0.0, 8.0)),
-            "hidden-line removal's tolerance in pixel footprints";
+            "the depth rule's tolerance in pixel footprints";
+        visibility: VisibilityRule [.visibility] => choice(VisibilityRule::NAMES),
+            "how lines behind surfaces are found: 'exact' (against the surfaces) or 'depth' (the depth image)";
+        max_occlusion: Option<u32> [.max_occlusion] => int(Range::count(1.0).slider(1.0, 8.0)),
+            "hidden lines are drawn behind at most this many surfaces (None: any number)", optional;
         taper: f64 [.stroke_width.taper] => float(closed(0.0, MAX_TAPER).slider(0.0, 64.0)),
             "pixels over which lines thin toward their ends (0: none)", pixels;
         width_by_depth: bool [.stroke_width.by_depth] => boolean(),
@@ -330,7 +400,8 @@ impl Outlines {
 
     fn set_style(&mut self, field: &str, value: Value) -> Result<()> {
         let k = slot(field).expect("a style field is an ink kind");
-        self.styles[k] = FieldValue::from_value(field, in_style(value, LineStyle::default()))?;
+        self.styles[k] =
+            FieldValue::from_value(field, in_style(value, default_style(k, LineStyle::default())))?;
         Ok(())
     }
 }
@@ -353,7 +424,11 @@ const PARAMS: &[&str] = &[
     "nonmanifold",
     "suggestive",
     "material",
+    "intersection",
     "image",
+    "hidden",
+    "max_occlusion",
+    "visibility",
     "crease_angle",
     "weld",
     "normal_threshold",
@@ -371,6 +446,16 @@ const PARAMS: &[&str] = &[
     "width_by_depth",
     "join_kinds",
 ];
+
+/// The style True gives ink kind `k`: the common style, or for hidden lines theirs
+/// (`LineStyle::hidden`).
+fn default_style(k: usize, common: LineStyle) -> LineStyle {
+    if k == HIDDEN_KIND {
+        LineStyle::hidden(common)
+    } else {
+        common
+    }
+}
 
 fn slot(name: &str) -> Option<usize> {
     kind_names().iter().position(|k| *k == name)
@@ -416,7 +501,7 @@ impl Described for Outlines {
         }
         let mut with_common = Vec::with_capacity(rest.len() + 8);
         for (k, name) in kind_names().iter().enumerate() {
-            if k != LineKind::Suggestive as usize {
+            if k != LineKind::Suggestive as usize && k != HIDDEN_KIND {
                 with_common.push((*name, Value::setting(Setting::LineStyle(common))));
             }
         }
@@ -425,9 +510,10 @@ impl Described for Outlines {
                 with_common.push((name, in_style(c.clone(), common)));
             }
         }
-        with_common.extend(
-            rest.into_iter().map(|(n, v)| (n, if slot(n).is_some() { in_style(v, common) } else { v })),
-        );
+        with_common.extend(rest.into_iter().map(|(n, v)| match slot(n) {
+            Some(k) => (n, in_style(v, default_style(k, common))),
+            None => (n, v),
+        }));
         // later entries of the same kind win: `build` sorts stably by parameter
         let mut seen = std::collections::HashMap::new();
         for (i, (n, _)) in with_common.iter().enumerate() {
@@ -461,7 +547,8 @@ mod tests {
         assert_eq!(o.crease_angle, DEFAULT_CREASE_ANGLE);
         assert_eq!(o.normal_threshold as f64, DEFAULT_NORMAL_THRESHOLD);
         let mut bad = o.clone();
-        bad.styles[LineKind::Silhouette as usize] = Some(LineStyle { color: [0.0; 3], width: f32::NAN });
+        bad.styles[LineKind::Silhouette as usize] =
+            Some(LineStyle { color: [0.0; 3], width: f32::NAN, dash: 0.0 });
         assert!(bad.validate("outlines").unwrap_err().to_string().starts_with("outlines.silhouette.width"));
         let mut bad = o.clone();
         bad.depth_threshold = -1.0;

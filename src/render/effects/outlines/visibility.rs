@@ -68,11 +68,25 @@ impl Visibility {
     }
 }
 
-/// Ink coverage of every pixel by `lines` (widths in pixels per kind), 0 where hidden: what the
-/// line pass writes into the outline output.
+/// How much of a dashed line is inked at `along` pixels along its stroke, with dashes `dash`
+/// pixels long and gaps as long, the first dash from 0: 1 on a dash, 0 in a gap, antialiased
+/// over a pixel at their ends; 1 everywhere where `dash` is 0. `lines.wgsl`'s `dashed`.
+pub fn dashed(along: f64, dash: f64) -> f64 {
+    if dash <= 0.0 {
+        return 1.0;
+    }
+    let period = 2.0 * dash;
+    let c = along - dash / 2.0;
+    let w = c - period * (c / period + 0.5).floor();
+    (dash / 2.0 + 0.5 - w.abs()).clamp(0.0, 1.0)
+}
+
+/// Ink coverage of every pixel by `lines` (widths and dash lengths in pixels per kind), 0 where
+/// hidden (lines decided on the host, `ScreenLine::exact`, are not tested): what the line pass
+/// writes into the outline output.
 pub fn coverage_image(
     lines: &[ScreenLine],
-    widths: &[f32],
+    (widths, dashes): (&[f32], &[f32]),
     orthographic: bool,
     img: &DepthImage<'_>,
     rule: Visibility,
@@ -98,8 +112,9 @@ pub fn coverage_image(
                 };
                 let (c, z) = l.at(t, orthographic);
                 let here = width * l.factor(t);
-                let cov = (here / 2.0 + 0.5 - (p[0] - c[0]).hypot(p[1] - c[1])).clamp(0.0, 1.0);
-                if cov > 0.0 && rule.visible(img, c, z, l.kind) {
+                let cov = (here / 2.0 + 0.5 - (p[0] - c[0]).hypot(p[1] - c[1])).clamp(0.0, 1.0)
+                    * dashed(l.along_at(t), dashes[l.kind] as f64);
+                if cov > 0.0 && (l.exact || rule.visible(img, c, z, l.kind)) {
                     let o = &mut out[y * w + x];
                     *o = o.max(cov as f32);
                 }
@@ -115,7 +130,8 @@ pub const MIN_RUN: f64 = 1.0;
 
 /// The visible parts of a chain of lines (each starting where the last ended) as polylines in
 /// pixel coordinates, with the ink's width at each point (`width` pixels times the line's factor
-/// there, as `coverage_image` draws it): visibility is sampled every half pixel, a run keeps the
+/// there, as `coverage_image` draws it): visibility is sampled every half pixel (lines decided
+/// on the host, `ScreenLine::exact`, are visible wherever they are on the image), a run keeps the
 /// points where it starts and stops and the ends of the lines it passes, runs are cut to the
 /// image, and runs shorter than `MIN_RUN` pixels are left out.
 pub fn visible_runs(
@@ -160,7 +176,7 @@ pub fn visible_runs(
             let (p, z) = l.at(t, orthographic);
             let inside = (0.0..=w).contains(&p[0]) && (0.0..=h).contains(&p[1]);
             let here = (p, l.factor(t));
-            if inside && z > 0.0 && rule.visible(img, p, z, l.kind) {
+            if inside && z > 0.0 && (l.exact || rule.visible(img, p, z, l.kind)) {
                 if current.points.is_empty() || s == n {
                     push(&mut current, here);
                 }
@@ -190,6 +206,8 @@ pub struct VisibleLines {
     pub widths: [f64; INK_KINDS],
     /// Join strokes of different kinds too (`Outlines::join_kinds`).
     pub join_kinds: bool,
+    /// The lines were cut on the host (`VisibilityRule::Exact`): the frame's depth is not read.
+    pub exact: bool,
     pub view: ViewSlot,
 }
 
@@ -200,8 +218,18 @@ impl HostStep for VisibleLines {
 
     fn run(&self, cx: &HostInputs<'_>, report: &mut FrameReport) -> Result<()> {
         let frame = &cx.scene.frame;
-        let depth =
-            cx.depth.ok_or_else(|| Error::Internal("visible lines without the frame's depth".into()))?;
+        // lines decided on the host never read it
+        let none = [];
+        let depth = cx.depth.map_or_else(
+            || {
+                if self.exact {
+                    Ok(&none[..])
+                } else {
+                    Err(Error::Internal("visible lines without the frame's depth".into()))
+                }
+            },
+            Ok,
+        )?;
         let view = self
             .view
             .get()
@@ -217,14 +245,15 @@ impl HostStep for VisibleLines {
                 view.instances[draw.instances.start as usize..draw.instances.end as usize].iter();
             let mut runs = Vec::new();
             for c in chains {
-                let kind = c.kind as usize;
+                let kind = c.ink();
                 let screen: Vec<_> = c
                     .points
                     .windows(2)
                     .zip(instances.by_ref())
                     .filter_map(|(s, line)| {
                         let seen = projector.project(s[0], s[1], kind)?;
-                        Some(ScreenLine { scale: line.scale.map(f64::from), ..seen })
+                        let exact = c.occlusion.is_some();
+                        Some(ScreenLine { scale: line.line.scale.map(f64::from), exact, ..seen })
                     })
                     .collect();
                 runs.extend(visible_runs(&screen, cx.cam.orthographic, &img, rule, self.widths[kind]));
@@ -256,12 +285,28 @@ mod tests {
         let rim_img = DepthImage { depth: &rim, width: 16, height: 16 };
         assert!(rule.visible(&rim_img, [8.0, 8.0], 3.0, LineKind::Silhouette as usize));
         assert!(!rule.visible(&rim_img, [8.0, 8.0], 3.0, LineKind::Ridge as usize));
-        let line = ScreenLine { a: [2.0, 8.5], b: [14.0, 8.5], za: 2.0, zb: 2.0, kind: 0, scale: [1.0; 2] };
-        let cov = coverage_image(&[line], &[1.5], false, &img, rule);
+        let line = ScreenLine {
+            a: [2.0, 8.5],
+            b: [14.0, 8.5],
+            za: 2.0,
+            zb: 2.0,
+            kind: 0,
+            scale: [1.0; 2],
+            along: [0.0, 12.0],
+            exact: false,
+        };
+        let cov = coverage_image(&[line], (&[1.5], &[0.0]), false, &img, rule);
         assert_eq!(cov[8 * 16 + 8], 1.0);
         assert!(cov[7 * 16 + 8] > 0.0 && cov[5 * 16 + 8] == 0.0);
         let hidden = ScreenLine { za: 3.0, zb: 3.0, ..line };
-        assert!(coverage_image(&[hidden], &[1.5], false, &img, rule).iter().all(|&c| c == 0.0));
+        assert!(coverage_image(&[hidden], (&[1.5], &[0.0]), false, &img, rule).iter().all(|&c| c == 0.0));
+        // decided on the host: drawn whatever the depth says
+        let decided = ScreenLine { exact: true, ..hidden };
+        assert_eq!(coverage_image(&[decided], (&[1.5], &[0.0]), false, &img, rule), cov);
+        // dashed 3 pixels on, 3 off from x = 2: ink at x = 3.5, none at 6.5, ink at 9.5
+        let dashes = coverage_image(&[line], (&[1.5], &[3.0]), false, &img, rule);
+        assert_eq!([dashes[8 * 16 + 3], dashes[8 * 16 + 6], dashes[8 * 16 + 9]], [1.0, 0.0, 1.0]);
+        assert!((dashed(1.5, 3.0) - 1.0).abs() < 1e-12 && dashed(4.5, 3.0) == 0.0 && dashed(3.0, 3.0) == 0.5);
         let runs = visible_runs(&[line], false, &img, rule, 1.5);
         assert_eq!(runs.len(), 1);
         assert_eq!(runs[0].points.first(), Some(&[2.0, 8.5]));

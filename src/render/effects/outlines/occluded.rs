@@ -1,0 +1,106 @@
+//! The exact rule in a frame (`VisibilityRule::Exact`): every item's lines cut where the
+//! scene's surfaces hide them (`edges::occlusion`, against each mesh's hierarchy, kept with it),
+//! the visible pieces drawn without the line pass's depth test and, where hidden lines are
+//! asked for, the hidden ones in their own ink.
+
+use std::sync::Arc;
+
+use glam::DVec3;
+use rayon::prelude::*;
+
+use crate::edges::occlusion::{Occluders, Surface};
+use crate::error::Result;
+use crate::mesh::bvh::Bvh;
+use crate::render::mesh_record::MeshRecord;
+
+use super::mesh_lines::{Chain, MeshLines};
+use super::projection::Projector;
+use super::settings::Outlines;
+
+/// Visibility is sampled every this many pixels along a line on screen, and bisected between.
+pub const SAMPLE_SPACING: f64 = 1.0;
+/// Pieces cut shorter than this many pixels are left out (a line grazing past an occluder's
+/// corner between two samples).
+pub const MIN_PIECE: f64 = 0.5;
+
+/// `chains` (each item's, in its stored coordinates) cut into visible pieces and, where
+/// `outlines` draws hidden lines, hidden ones (within `max_occlusion`), hidden first; each
+/// piece keeps its kind and strength and carries its occlusion.
+pub fn cut(
+    chains: Vec<Vec<Chain>>,
+    records: &[Arc<MeshRecord>],
+    projectors: &[Projector],
+    orthographic: bool,
+    outlines: &Outlines,
+) -> Result<Vec<Vec<Chain>>> {
+    let hidden = outlines.draws_hidden();
+    let limit = if hidden { outlines.max_occlusion.map_or(u32::MAX, |m| m.saturating_add(1)) } else { 1 };
+    let lines: Vec<Arc<MeshLines>> = records.iter().map(|r| MeshLines::of(r)).collect();
+    let bvhs: Vec<_> = crate::parallel::install(|| {
+        lines.par_iter().zip(records).map(|(l, r)| l.bvh(&r.host)).collect::<Vec<_>>()
+    });
+    let surfaces = bvhs
+        .iter()
+        .zip(projectors)
+        .map(|(bvh, p)| Surface { bvh, from_view: p.model_view.inverse() })
+        .collect();
+    let near = projectors.first().map_or(0.0, |p| p.near);
+    let occluders = Occluders::new(surfaces, orthographic, near, scene_size(&bvhs, projectors));
+    let cut_one = |item: usize, c: &Chain| -> Vec<Chain> {
+        let p = &projectors[item];
+        let view: Vec<DVec3> =
+            c.points.iter().map(|q| p.model_view.transform_point3(DVec3::from_array(*q))).collect();
+        let on_screen = |s: usize| p.project(c.points[s], c.points[s + 1], 0).map_or(0.0, |l| l.length());
+        let samples = |s: usize| (on_screen(s) / SAMPLE_SPACING).ceil() as usize;
+        let runs = occluders.runs(&view, item, c.traced, limit, samples);
+        let whole = runs.len() == 1;
+        runs.iter()
+            .filter(|r| r.occlusion == 0 || (hidden && r.occlusion < limit))
+            .map(|r| Chain {
+                kind: c.kind,
+                points: r.points(&c.points),
+                strength: if c.strength.is_empty() {
+                    Vec::new()
+                } else {
+                    r.values(&c.strength, |a, b, t| a + (b - a) * t)
+                },
+                traced: c.traced,
+                occlusion: Some(r.occlusion),
+            })
+            .filter(|piece| whole || screen_length(p, &piece.points) >= MIN_PIECE)
+            .collect()
+    };
+    let out = crate::parallel::install(|| {
+        chains
+            .par_iter()
+            .enumerate()
+            .map(|(item, of_item)| {
+                let mut pieces: Vec<Chain> = of_item.par_iter().flat_map_iter(|c| cut_one(item, c)).collect();
+                // hidden lines under the visible ones
+                pieces.sort_by_key(|c| c.occlusion == Some(0));
+                pieces
+            })
+            .collect()
+    });
+    Ok(out)
+}
+
+fn screen_length(p: &Projector, points: &[[f64; 3]]) -> f64 {
+    points.windows(2).map(|w| p.project(w[0], w[1], 0).map_or(0.0, |l| l.length())).sum()
+}
+
+/// The scene's size in view units: the largest diagonal of an item's box (its hierarchy's,
+/// in the stored coordinates, stretched by the map to the view).
+fn scene_size(bvhs: &[&Bvh], projectors: &[Projector]) -> f64 {
+    bvhs.iter()
+        .zip(projectors)
+        .filter(|(b, _)| !b.is_empty())
+        .map(|(b, p)| {
+            let m = p.model_view;
+            let stretch =
+                [m.x_axis, m.y_axis, m.z_axis].iter().map(|a| a.truncate().length()).fold(0.0, f64::max);
+            let bounds = b.bounds();
+            (bounds.hi - bounds.lo).length() * stretch
+        })
+        .fold(0.0, f64::max)
+}
