@@ -255,7 +255,7 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
                 args.outlines, width=args.outline_width, crease_angle=args.crease_angle, contours=args.contours,
                 join_kinds=args.join_kinds, taper=args.taper, width_by_depth=args.width_by_depth,
                 suggestive=args.suggestive or None, curvature_smoothing=args.curvature_smoothing,
-                image_rule=args.image_rule, normal_angle=args.normal_angle, depth_jump=args.depth_jump,
+                **_visibility_options(args), image_rule=args.image_rule, normal_angle=args.normal_angle, depth_jump=args.depth_jump,
                 normal_threshold=args.normal_threshold, depth_threshold=args.depth_threshold)
     return options
 
@@ -486,6 +486,23 @@ def _add_contour_arguments(p: argparse.ArgumentParser, base: Optional[Outlines] 
     add_described(p, "--curvature-smoothing", Outlines, "curvature_smoothing", default=default("curvature_smoothing"),
                   metavar="EDGES")
     add_described(p, "--join-kinds", Outlines, "join_kinds", default=default("join_kinds"))
+    add_described(p, "--visibility", Outlines, "visibility", default=default("visibility"))
+    add_described(p, "--hidden", Outlines, "hidden", action="store_true",
+                  help_before="draw the lines behind surfaces too (grey, thinner, dashed). ")
+    add_described(p, "--max-occlusion", Outlines, "max_occlusion", default=default("max_occlusion"), metavar="N")
+    add_described(p, "--no-intersection", Outlines, "intersection", action="store_false", dest="intersection",
+                  help_before="leave out the lines where the surfaces of two meshes cross. ")
+
+
+def _visibility_options(args: argparse.Namespace) -> Dict[str, Any]:
+    """The keywords of :class:`Outlines` that the visibility flags give (the core's defaults
+    where a flag is not given)."""
+    options: Dict[str, Any] = {"visibility": args.visibility, "max_occlusion": args.max_occlusion}
+    if args.hidden:
+        options["hidden"] = True
+    if not args.intersection:
+        options["intersection"] = False
+    return {k: v for k, v in options.items() if v is not CORE_DEFAULT}
 
 
 def cmd_edges(args: argparse.Namespace) -> int:
@@ -498,14 +515,14 @@ def cmd_edges(args: argparse.Namespace) -> int:
     with errors_as_flags(args, Outlines):
         outlines = Outlines("mesh", width=args.stroke_width, crease_angle=args.crease_angle, weld=args.weld,
                             contours=args.contours, suggestive=args.suggestive or None, join_kinds=args.join_kinds,
-                            curvature_smoothing=args.curvature_smoothing)
+                            curvature_smoothing=args.curvature_smoothing, **_visibility_options(args))
     path = mesh_file(args.mesh)
     V, F = read_mesh(path)
     with errors_as_flags(args, Camera):
         camera = Camera.fit(args.eye, orthographic=True) if args.eye is not None else Camera.fit()
     w, h = args.size
     up = args.up if args.up is not None else file_up_axis(path)
-    lines = view_lines(V, F, camera, outlines, width=w, height=h, hidden=args.hidden, backend=args.backend, up=up)
+    lines = view_lines(V, F, camera, outlines, width=w, height=h, backend=args.backend, up=up)
     if suffix == ".svg":
         write_svg(args.out, lines, smooth=args.smooth_strokes, order=args.order, simplify=args.simplify)
     else:
@@ -708,7 +725,6 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                   help_before="keep vertices at the same position apart (seams then show as boundaries). "
                               "Welding, on unless this flag is given: ")
     _add_size_argument(p, "drawing size")
-    p.add_argument("--hidden", action="store_true", help="draw hidden lines too (dashed; default: off)")
     _add_contour_arguments(p)
     add_described(p, "--stroke-width", LineStyle, "width", metavar="PX", also_sets=[(Outlines, "width")])
     p.add_argument("--smooth-strokes", type=float, default=_keyword_default(RenderResult.svg_groups, "smooth"), metavar="PX",

@@ -1,9 +1,9 @@
 """Mesh-space outlines seen by a camera, as SVG line art or NPZ arrays (``toonmesh edges``).
 
 The lines are the renderer's own ``lines`` output (silhouettes of the view, boundaries, creases,
-non-manifold edges, with hidden lines removed against its depth buffer), so they fall exactly
-where a render with that camera draws the mesh. Hidden lines are those of the same render with
-hidden-line removal turned off, less the visible ones.
+non-manifold edges, with the lines behind surfaces found exactly), so they fall exactly where a
+render with that camera draws the mesh; with ``Outlines(hidden=True)`` the hidden lines come
+as the kind ``hidden``, in their own dashed style.
 """
 
 from __future__ import annotations
@@ -17,12 +17,6 @@ from toonmesh.rendering import _strokes
 from toonmesh._core import Outlines
 from toonmesh.rendering._render import render
 
-#: Depth offset (in pixel footprints) that lets every line through: no hidden-line removal.
-_SHOW_ALL = 1e30
-#: Hidden lines in the SVG: grey, dashes of 4 pixels with gaps of 3.
-_HIDDEN_COLOR = "#9a9a9a"
-_HIDDEN_DASHES = (4.0, 3.0)
-
 
 def view_lines(
     vertices: np.ndarray,
@@ -32,20 +26,17 @@ def view_lines(
     *,
     width: int,
     height: int,
-    hidden: bool = False,
     backend: Optional[str] = None,
     up: Optional[str] = None,
 ) -> Dict[str, Any]:
-    """The visible (and, with ``hidden``, every) polyline of one view that ``outlines`` (mesh
-    lines) draws, and the mesh's feature edges at its crease angle; see :func:`write_npz` for
-    the arrays. ``up``: the scene's up axis (None: y), which a fitted ``camera`` keeps up."""
+    """The polylines of one view that ``outlines`` (mesh lines) draws (the visible ones, and
+    the hidden ones where it asks for them), and the mesh's feature edges at its crease angle;
+    see :func:`write_npz` for the arrays. ``up``: the scene's up axis (None: y), which a fitted
+    ``camera`` keeps up."""
     kw = dict(camera=camera, width=width, height=height, outputs=("lines",), backend=backend, up=up)
     seen = render(vertices, faces, outlines=outlines, **kw)
-    everything = None
-    if hidden:
-        everything = render(vertices, faces, outlines=outlines.replace(depth_offset=_SHOW_ALL), **kw)
     features = edges.feature_edges(vertices, faces, outlines.crease_angle, weld=outlines.weld)
-    return {"seen": seen, "everything": everything, "features": features}
+    return {"seen": seen, "features": features}
 
 
 def _length(lines: List[np.ndarray]) -> float:
@@ -56,25 +47,21 @@ def summary(lines: Dict[str, Any]) -> str:
     """Counts of polylines per kind, and how much of the drawing is hidden."""
     seen = lines["seen"]
     kinds = seen.line_kinds or []
-    counts = ", ".join(f"{kinds.count(k):,} {k}" for k in sorted(set(kinds))) or "no lines"
-    text = f"{len(kinds):,} visible polylines ({counts})"
-    if lines["everything"] is not None:
-        total = _length(lines["everything"].lines)
-        text += f"; {100 * (1 - _length(seen.lines) / total) if total else 0:.0f}% of the line length is hidden"
+    visible = [k for k in kinds if k != "hidden"]
+    counts = ", ".join(f"{visible.count(k):,} {k}" for k in sorted(set(visible))) or "no lines"
+    text = f"{len(visible):,} visible polylines ({counts})"
+    if seen.outlines is not None and seen.outlines.hidden:
+        polylines = seen.lines or []
+        hidden = _length([p for p, k in zip(polylines, kinds) if k == "hidden"])
+        total = _length(polylines)
+        text += f"; {100 * hidden / total if total else 0:.0f}% of the line length is hidden"
     return text
 
 
 def write_svg(path: str, lines: Dict[str, Any], **svg_options: Any) -> None:
-    """Writes the visible lines as SVG (the render's :meth:`RenderResult.svg` with
-    ``svg_options``, its defaults where left out); with hidden lines, those go underneath,
-    dashed and grey."""
-    seen, everything = lines["seen"], lines["everything"]
-    groups = seen.svg_groups(**svg_options)
-    if everything is not None:
-        groups.insert(0, ("hidden", _HIDDEN_COLOR, 1.0, _HIDDEN_DASHES, [(p, None) for p in everything.lines]))
-    svg = _strokes.svg_document(seen.width, seen.height, groups)
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(svg)
+    """Writes the lines as SVG (the render's :meth:`RenderResult.svg` with ``svg_options``, its
+    defaults where left out): hidden lines, where drawn, go underneath in their dashed style."""
+    lines["seen"].save_svg(path, **svg_options)
 
 
 def write_npz(path: str, lines: Dict[str, Any]) -> None:

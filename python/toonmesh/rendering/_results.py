@@ -166,7 +166,7 @@ class RenderResult:
         widths: str = "auto",
     ) -> List["_strokes.SvgGroup"]:
         """The groups of :meth:`svg`'s document (the same arguments; their defaults are these),
-        one per kind in name order:
+        hidden lines first (underneath), then one per kind in name order:
         ``(kind, colour, width or None for filled outlines, dashes, [(points, widths), ...])``,
         for a caller that adds groups of its own (the command line's hidden lines) before
         writing the document with the same writer."""
@@ -180,10 +180,12 @@ class RenderResult:
         filled = lambda kind: widths == "point" or (widths == "auto" and kind in uneven)  # noqa: E731
         strokes = self._drawn_strokes(smooth, simplify, by_width=filled)
         groups: List[_strokes.SvgGroup] = []
-        for kind in sorted({k for _, _, k in strokes}):
+        # hidden lines underneath, then the kinds in name order
+        for kind in sorted({k for _, _, k in strokes}, key=lambda k: (k != "hidden", k)):
             style = styles.get(kind) or LineStyle()
             group = _strokes.in_order([(p, w) for p, w, k in strokes if k == kind], order)
-            groups.append((kind, style.color, None if filled(kind) else style.width, None, group))
+            dashes = (style.dash, style.dash) if style.dash > 0 else None
+            groups.append((kind, style.color, None if filled(kind) and not dashes else style.width, dashes, group))
         return groups
 
     def save_svg(self, path: Any, **options: "Unpack[SvgOptions]") -> None:

@@ -611,6 +611,15 @@ impl Renderer {
             if !o.stroke_width.is_constant() {
                 leave("taper and width by depth");
             }
+            if o.draws_hidden() {
+                leave("hidden lines");
+            }
+            if draws(LineKind::Intersection) && records.len() > 1 {
+                leave("intersection lines");
+            }
+            if o.styles.iter().flatten().any(|s| s.dash > 0.0) {
+                leave("dashed lines");
+            }
         }
         if frame.msaa > 1 {
             leave("multisampling");
