@@ -62,12 +62,23 @@ impl Aabb {
     }
 
     /// The ray parameters `o + t d` inside the box, cut to `[t0, t1]`; None when they are none.
+    /// `inv` is `1 / d`: infinite along an axis the ray runs parallel to, where the ray is in
+    /// the slab or not (a ray along one of the box's faces is in it).
     fn clip(&self, o: DVec3, inv: DVec3, t0: f64, t1: f64) -> Option<(f64, f64)> {
-        let a = (self.lo - o) * inv;
-        let b = (self.hi - o) * inv;
-        // f64::min and max skip the NaN of 0 * inf (a ray along a face of the box)
-        let near = a.x.min(b.x).max(a.y.min(b.y)).max(a.z.min(b.z)).max(t0);
-        let far = a.x.max(b.x).min(a.y.max(b.y)).min(a.z.max(b.z)).min(t1);
+        let (mut near, mut far) = (t0, t1);
+        for k in 0..3 {
+            if inv[k].is_infinite() {
+                // rounding's room, as the triangle test's SLACK gives it
+                let pad = SLACK * (self.hi[k].abs() + self.lo[k].abs());
+                if o[k] < self.lo[k] - pad || o[k] > self.hi[k] + pad {
+                    return None;
+                }
+                continue;
+            }
+            let (a, b) = ((self.lo[k] - o[k]) * inv[k], (self.hi[k] - o[k]) * inv[k]);
+            near = near.max(a.min(b));
+            far = far.min(a.max(b));
+        }
         (near <= far).then_some((near, far))
     }
 }
@@ -354,6 +365,19 @@ mod tests {
                 .collect();
             assert_eq!(got, want);
         }
+    }
+
+    #[test]
+    fn a_ray_along_a_box_s_face_meets_what_lies_on_it() {
+        // a unit square at z = 1 and a ray up the plane x = 1 (its edge), from below
+        let sq = [DVec3::new(0.0, 0.0, 1.0), DVec3::new(1.0, 0.0, 1.0), DVec3::new(1.0, 1.0, 1.0)];
+        let bvh = Bvh::of_triangles(vec![sq, [sq[0], sq[2], DVec3::new(0.0, 1.0, 1.0)]]);
+        let mut hits = 0;
+        bvh.ray(DVec3::new(1.0, 0.5, -1.0), DVec3::Z, 0.0, 10.0, |_, _| {
+            hits += 1;
+            false
+        });
+        assert_eq!(hits, 1);
     }
 
     #[test]
