@@ -140,8 +140,11 @@ pub fn among(
 }
 
 /// Segments joined into polylines where their ends are the same point (to the bit, as the rule
-/// makes shared ends): chained as `chains::chain_edges` chains edges; a closed loop repeats its
-/// first point at the end.
+/// makes shared ends), chained as `chains::chain_edges` chains edges; a closed loop repeats its
+/// first point at the end. Where an edge of one mesh crosses an edge of the other, the two
+/// segments meeting there compute that point from different edges and planes: an end that
+/// meets no other end is joined to the nearest such end within `WELD` of its coordinates'
+/// magnitude (not of its own segment).
 pub fn chain(crossings: &[Crossing]) -> Vec<Vec<[f64; 3]>> {
     let mut ids: HashMap<[u64; 3], u32> = HashMap::new();
     let mut points: Vec<[f64; 3]> = Vec::new();
@@ -152,12 +155,67 @@ pub fn chain(crossings: &[Crossing]) -> Vec<Vec<[f64; 3]>> {
             points.len() as u32 - 1
         })
     };
-    let edges: Vec<[u32; 2]> = crossings.iter().map(|c| [id(c.ends[0]), id(c.ends[1])]).collect();
+    let mut edges: Vec<[u32; 2]> = crossings.iter().map(|c| [id(c.ends[0]), id(c.ends[1])]).collect();
+    let to = welded_ends(&points, &edges);
+    for e in &mut edges {
+        *e = e.map(|i| to[i as usize]);
+    }
     let (flat, offsets) = chain_edges(&edges);
     offsets
         .windows(2)
         .map(|w| flat[w[0] as usize..w[1] as usize].iter().map(|&i| points[i as usize]).collect())
         .collect()
+}
+
+/// Ends of the segments `edges` (between `points`) closer than this, relative to the largest
+/// coordinate magnitude of the two, are one point (a few units in the last place: what rounding
+/// leaves between two computations of one point).
+const WELD: f64 = 16.0 * f64::EPSILON;
+
+/// Each point's representative: an end that no other segment shares is joined to the nearest
+/// such end within `WELD`, of another segment.
+fn welded_ends(points: &[[f64; 3]], edges: &[[u32; 2]]) -> Vec<u32> {
+    let mut degree = vec![0u32; points.len()];
+    let mut edge_of = vec![0usize; points.len()];
+    for (k, e) in edges.iter().enumerate() {
+        for &i in e {
+            degree[i as usize] += 1;
+            edge_of[i as usize] = k;
+        }
+    }
+    let mut open: Vec<u32> = (0..points.len() as u32).filter(|&i| degree[i as usize] == 1).collect();
+    open.sort_by(|&i, &j| points[i as usize][0].total_cmp(&points[j as usize][0]));
+    let magnitude = |p: [f64; 3]| p.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let mut to: Vec<u32> = (0..points.len() as u32).collect();
+    let mut taken = vec![false; open.len()];
+    for k in 0..open.len() {
+        if taken[k] {
+            continue;
+        }
+        let (i, p) = (open[k], points[open[k] as usize]);
+        let mut best: Option<(f64, usize)> = None;
+        for (l, &j) in open.iter().enumerate().skip(k + 1) {
+            let q = points[j as usize];
+            // sorted by x: nothing further on is near
+            if q[0] - p[0] > 2.0 * WELD * magnitude(p) {
+                break;
+            }
+            let d = (0..3).fold(0.0f64, |m, a| m.max((p[a] - q[a]).abs()));
+            let near = d <= WELD * magnitude(p).max(magnitude(q));
+            if near
+                && !taken[l]
+                && edge_of[i as usize] != edge_of[j as usize]
+                && best.is_none_or(|(b, _)| d < b)
+            {
+                best = Some((d, l));
+            }
+        }
+        if let Some((_, l)) = best {
+            taken[l] = true;
+            to[open[l] as usize] = i;
+        }
+    }
+    to
 }
 
 fn share_vertex(f: [u32; 3], g: [u32; 3]) -> bool {
@@ -401,10 +459,14 @@ mod tests {
         let (p, q, r) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0]);
         assert_eq!(chain(&[c(p, q), c(r, q)]), vec![vec![p, q, r]]);
         assert_eq!(chain(&[c(p, q), c(q, r), c(r, p)]), vec![vec![p, q, r, p]]);
-        // -0.0 is 0.0; a point one bit away is another point
-        let next = [f64::from_bits(1.0f64.to_bits() + 1), 0.0, 0.0];
+        // -0.0 is 0.0; an end a few bits away from another end is that end, one 1e-12 away is not
         assert_eq!(chain(&[c([-0.0, 0.0, 0.0], q), c(p, r)]).len(), 1);
-        assert_eq!(chain(&[c(p, q), c(next, r)]).len(), 2);
+        let bits = |x: f64, k: u64| f64::from_bits(x.to_bits() + k);
+        let next = [bits(1.0, 3), bits(0.0, 1), 0.0];
+        assert_eq!(chain(&[c(p, q), c(next, r)]), vec![vec![p, q, r]]);
+        assert_eq!(chain(&[c(p, q), c([1.0 + 1e-12, 0.0, 0.0], r)]).len(), 2);
+        // nor are a short segment's own two ends
+        assert_eq!(chain(&[c(q, next)]), vec![vec![q, next]]);
         assert!(chain(&[]).is_empty());
     }
 

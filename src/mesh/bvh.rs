@@ -103,9 +103,7 @@ enum Tree {
 impl Bvh {
     /// The hierarchy of `faces` over `positions` (indices checked by the caller), in f64.
     pub fn build<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Bvh {
-        let p = |i: u32| DVec3::from_array(positions[i as usize].map(<T as Real>::to_f64));
-        let corners: Vec<[DVec3; 3]> = faces.par_iter().map(|f| f.map(p)).collect();
-        Bvh::of_triangles(corners)
+        Bvh::of_triangles(triangles(positions, faces))
     }
 
     /// The hierarchy of triangles given by their corners.
@@ -284,6 +282,12 @@ enum Step {
     Leaves,
     /// Go on with these pairs of nodes.
     Into([(usize, usize); 2]),
+}
+
+/// Each face's corners in f64, in face order (indices checked by the caller).
+pub fn triangles<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<[DVec3; 3]> {
+    let p = |i: u32| DVec3::from_array(positions[i as usize].map(<T as Real>::to_f64));
+    faces.par_iter().map(|f| f.map(p)).collect()
 }
 
 /// Möller-Trumbore: the ray parameter where `o + t d` meets the triangle (either side), with
