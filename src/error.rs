@@ -53,6 +53,18 @@ impl Error {
         Error::WrongType { arg: arg.into(), reason: reason.into() }
     }
 
+    /// The same error placed in item `place` of a list argument: the argument `vertices`
+    /// becomes `meshes[2].vertices`, and `mesh` (the item itself) `meshes[2]`.
+    pub fn in_item(self, place: &str) -> Self {
+        let name = |arg: String| if arg == "mesh" { place.to_string() } else { format!("{place}.{arg}") };
+        match self {
+            Error::InvalidValue { arg, reason } => Error::invalid(name(arg), reason),
+            Error::IndexOutOfRange { arg, reason } => Error::out_of_range(name(arg), reason),
+            Error::WrongType { arg, reason } => Error::wrong_type(name(arg), reason),
+            other => other,
+        }
+    }
+
     /// The same error naming the argument `from` as `to`, where a caller passes its own
     /// argument on under another name (the renderer's `smooth_iterations` as `iterations`).
     pub fn renamed(self, from: &str, to: &str) -> Self {

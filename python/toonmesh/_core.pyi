@@ -51,6 +51,8 @@ __all__ = [
     "_chains",
     "_curvature",
     "_feature_edges",
+    "_intersection_lines",
+    "_intersections",
     "_normal_mode",
     "_up_axis",
     "_paper_edges",
@@ -716,6 +718,8 @@ def _view_lines(
     smoothing: Optional[float] = None,
 ) -> _Polylines: ...
 def _chains(edges: Any) -> Tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
+def _intersections(meshes: Sequence[_Mesh], self_intersections: bool, brute_force: bool) -> npt.NDArray[np.float64]: ...
+def _intersection_lines(meshes: Sequence[_Mesh], self_intersections: bool) -> _Polylines: ...
 def _curvature(mesh: _Mesh, smoothing: float) -> Tuple[
     npt.NDArray[np.float64],
     npt.NDArray[np.float64],

@@ -9,6 +9,7 @@ pub mod detect;
 pub mod face_clusters;
 pub mod feature;
 pub mod index;
+pub mod intersections;
 pub mod occlusion;
 pub mod outlines;
 pub mod short_creases;

@@ -4,6 +4,9 @@
 //! frame the corners are given (a mesh keeps its hierarchy in its stored coordinates).
 
 use glam::{DMat4, DVec3};
+use rayon::prelude::*;
+
+use crate::real::{Real, Vec3};
 
 /// Triangles per leaf at most.
 const LEAF: usize = 4;
@@ -11,6 +14,8 @@ const LEAF: usize = 4;
 const BINS: usize = 12;
 /// Subtrees with more triangles than this are built on two threads.
 const PARALLEL: usize = 4096;
+/// Pairs of nodes `par_pairs` splits its traversal into, at least, where the trees allow.
+const PAIR_TASKS: usize = 256;
 /// Barycentric slack of the ray test, so that a ray through an edge shared by two triangles
 /// meets at least one of them (rounding never opens a crack).
 const SLACK: f64 = 1e-12;
@@ -107,16 +112,13 @@ enum Tree {
 }
 
 impl Bvh {
-    /// The hierarchy of `faces` over `positions` (indices checked by the caller).
-    pub fn build(positions: &[[f64; 3]], faces: &[[u32; 3]]) -> Bvh {
-        let p = |i: u32| DVec3::from_array(positions[i as usize]);
-        let corners: Vec<[DVec3; 3]> = faces.iter().map(|f| f.map(p)).collect();
-        Bvh::of_triangles(corners)
+    /// The hierarchy of `faces` over `positions` (indices checked by the caller), in f64.
+    pub fn build<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Bvh {
+        Bvh::of_triangles(triangles(positions, faces))
     }
 
     /// The hierarchy of triangles given by their corners.
     pub fn of_triangles(corners: Vec<[DVec3; 3]>) -> Bvh {
-        use rayon::prelude::*;
         let boxes: Vec<Aabb> = corners.par_iter().map(|c| Aabb::of(c)).collect();
         let centres: Vec<DVec3> = boxes.par_iter().map(|b| (b.lo + b.hi) * 0.5).collect();
         let ids: Vec<u32> = (0..corners.len() as u32).collect();
@@ -186,19 +188,88 @@ impl Bvh {
     /// `other` whose boxes overlap, `other`'s corners moved by `other_to_self` first (None: the
     /// same frame). Boxes of moved nodes are the boxes around their moved corners, so no pair
     /// whose triangles touch is missed.
-    pub fn pairs(&self, other: &Bvh, other_to_self: Option<&DMat4>, mut pair: impl FnMut(usize, usize)) {
+    pub fn pairs(&self, other: &Bvh, other_to_self: Option<&DMat4>, pair: impl FnMut(usize, usize)) {
         if self.is_empty() || other.is_empty() {
             return;
         }
-        let moved = |b: &Aabb| other_to_self.map_or(*b, |m| b.transformed(m));
-        let mut stack = vec![(0usize, 0usize)];
-        while let Some((a, b)) = stack.pop() {
-            let (na, nb) = (self.nodes[a], other.nodes[b]);
-            if !na.bounds.overlaps(&moved(&nb.bounds)) {
-                continue;
+        self.walk(other, other_to_self, (0, 0), pair);
+    }
+
+    /// `pairs` in parallel (rayon, in the caller's pool): what `pair(slot_a, slot_b)` returns
+    /// for each pair of overlapping boxes, Nones left out, in an order that depends only on the
+    /// two trees.
+    pub fn par_pairs<R: Send>(
+        &self,
+        other: &Bvh,
+        other_to_self: Option<&DMat4>,
+        pair: impl Fn(usize, usize) -> Option<R> + Sync,
+    ) -> Vec<R> {
+        if self.is_empty() || other.is_empty() {
+            return Vec::new();
+        }
+        // breadth first until there are enough pairs of nodes to share out
+        let mut tasks = vec![(0usize, 0usize)];
+        loop {
+            let mut next = Vec::with_capacity(2 * tasks.len());
+            let mut split = false;
+            for &(a, b) in &tasks {
+                match self.step(other, other_to_self, a, b) {
+                    Step::Apart => {}
+                    Step::Leaves => next.push((a, b)),
+                    Step::Into(children) => {
+                        next.extend(children);
+                        split = true;
+                    }
+                }
             }
-            match (na.count == 0, nb.count == 0) {
-                (false, false) => {
+            tasks = next;
+            if !split || tasks.len() >= PAIR_TASKS {
+                break;
+            }
+        }
+        let found: Vec<Vec<R>> = tasks
+            .par_iter()
+            .map(|&start| {
+                let mut out = Vec::new();
+                self.walk(other, other_to_self, start, |sa, sb| out.extend(pair(sa, sb)));
+                out
+            })
+            .collect();
+        found.into_iter().flatten().collect()
+    }
+
+    /// What the traversal does with the pair of nodes `a` (of `self`) and `b` (of `other`).
+    fn step(&self, other: &Bvh, other_to_self: Option<&DMat4>, a: usize, b: usize) -> Step {
+        let (na, nb) = (self.nodes[a], other.nodes[b]);
+        let moved = other_to_self.map_or(nb.bounds, |m| nb.bounds.transformed(m));
+        if !na.bounds.overlaps(&moved) {
+            return Step::Apart;
+        }
+        let (fa, fb) = (na.first as usize, nb.first as usize);
+        match (na.count == 0, nb.count == 0) {
+            (false, false) => Step::Leaves,
+            // descend the larger box first, so both trees shrink together
+            (true, true) if na.bounds.area() >= nb.bounds.area() => Step::Into([(fa, b), (fa + 1, b)]),
+            (true, false) => Step::Into([(fa, b), (fa + 1, b)]),
+            _ => Step::Into([(a, fb), (a, fb + 1)]),
+        }
+    }
+
+    /// The pairs below the pair of nodes `start` (see `pairs`), one after another.
+    fn walk(
+        &self,
+        other: &Bvh,
+        other_to_self: Option<&DMat4>,
+        start: (usize, usize),
+        mut pair: impl FnMut(usize, usize),
+    ) {
+        let mut stack = vec![start];
+        while let Some((a, b)) = stack.pop() {
+            match self.step(other, other_to_self, a, b) {
+                Step::Apart => {}
+                Step::Into(children) => stack.extend(children),
+                Step::Leaves => {
+                    let (na, nb) = (self.nodes[a], other.nodes[b]);
                     for sa in na.first as usize..(na.first + na.count) as usize {
                         let ba = Aabb::of(&self.corners[sa]);
                         for sb in nb.first as usize..(nb.first + nb.count) as usize {
@@ -210,17 +281,25 @@ impl Bvh {
                         }
                     }
                 }
-                // descend the larger box first, so both trees shrink together
-                (true, true) if na.bounds.area() >= nb.bounds.area() => {
-                    stack.extend([(na.first as usize, b), (na.first as usize + 1, b)]);
-                }
-                (true, _) if nb.count != 0 => {
-                    stack.extend([(na.first as usize, b), (na.first as usize + 1, b)]);
-                }
-                _ => stack.extend([(a, nb.first as usize), (a, nb.first as usize + 1)]),
             }
         }
     }
+}
+
+/// One move of the traversal of two trees.
+enum Step {
+    /// The boxes do not overlap.
+    Apart,
+    /// Two leaves: their triangles are compared.
+    Leaves,
+    /// Go on with these pairs of nodes.
+    Into([(usize, usize); 2]),
+}
+
+/// Each face's corners in f64, in face order (indices checked by the caller).
+pub fn triangles<T: Real>(positions: &[Vec3<T>], faces: &[[u32; 3]]) -> Vec<[DVec3; 3]> {
+    let p = |i: u32| DVec3::from_array(positions[i as usize].map(<T as Real>::to_f64));
+    faces.par_iter().map(|f| f.map(p)).collect()
 }
 
 /// Möller-Trumbore: the ray parameter where `o + t d` meets the triangle (either side), with
@@ -399,5 +478,20 @@ mod tests {
         }
         assert!(!want.is_empty());
         assert_eq!(got, want);
+    }
+
+    #[test]
+    fn parallel_pairs_are_the_serial_pairs() {
+        let (a, b) = (random_triangles(3000, 3, 1.0), random_triangles(2500, 4, 1.0));
+        let m = DMat4::from_rotation_x(0.7) * DMat4::from_translation(DVec3::splat(0.2));
+        let (ba, bb) = (Bvh::of_triangles(a), Bvh::of_triangles(b));
+        let mut serial = Vec::new();
+        ba.pairs(&bb, Some(&m), |sa, sb| serial.push((sa, sb)));
+        let mut parallel = ba.par_pairs(&bb, Some(&m), |sa, sb| Some((sa, sb)));
+        assert!(serial.len() > 1000);
+        serial.sort_unstable();
+        parallel.sort_unstable();
+        assert_eq!(parallel, serial);
+        assert!(ba.par_pairs(&Bvh::of_triangles(Vec::new()), None, |_, _| Some(())).is_empty());
     }
 }

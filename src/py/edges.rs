@@ -6,18 +6,21 @@ use pyo3::prelude::*;
 
 use super::args;
 use super::convert::{array_values, by_dtype, native_order, rows, shaped_to_numpy, ToPython};
-use super::mesh_input::{on_mesh, PositionsIn};
+use super::mesh_input::{on_mesh, MeshInput, PositionsIn};
 use super::runtime::{detached, detached_cancellable};
 use crate::edges::chains::{chain_edges, vertex_pairs};
 use crate::edges::contours::check_smoothing;
 use crate::edges::detect::{paper_gradient, threshold_mask};
 use crate::edges::feature::FeatureEdges;
+use crate::edges::intersections::{among, chain, Crossing};
 use crate::edges::sobel::{sobel, Convention, Output};
 use crate::edges::views::{MeshLines, Query};
 use crate::edges::{find_feature_edges, View};
 use crate::error::{Error, Result};
+use crate::mesh::bvh::triangles;
 use crate::mesh::curvature::curvature;
 use crate::mesh::dihedral::check_crease_angle;
+use crate::mesh::positions::on_positions;
 
 type Out<'py> = PyResult<Bound<'py, PyAny>>;
 
@@ -165,6 +168,67 @@ pub(super) fn _chains<'py>(py: Python<'py>, edges: &Bound<'py, PyAny>) -> Out<'p
     let x: Vec<[i64; 2]> = rows(&array_values("edges", edges, &["int64"], (&[None, Some(2)], "(K, 2)"))?.0);
     let e = vertex_pairs("edges", x.into_iter())?;
     detached(py, || Ok(chain_edges(&e)))?.to_python(py)
+}
+
+/// Every crossing among `meshes` (a list of (vertices, faces), all in one frame; see
+/// `intersections::among`), with the GIL released; errors name the mesh (`meshes[2].faces`).
+fn crossings(
+    py: Python<'_>,
+    meshes: &Bound<'_, PyAny>,
+    self_intersections: &Bound<'_, PyAny>,
+    brute_force: bool,
+) -> PyResult<Vec<Crossing>> {
+    let with_self = args::flag("self_intersections", self_intersections)?;
+    let place = |i: usize| format!("meshes[{i}]");
+    let inputs = args::items("meshes", meshes, "a list of meshes, each (vertices, faces)")?
+        .iter()
+        .enumerate()
+        .map(|(i, m)| MeshInput::of(m).map_err(|e| e.in_item(&place(i))))
+        .collect::<Result<Vec<_>>>()?;
+    let parts: Vec<_> = inputs.iter().map(|m| (m.parts(), m.vertices.count())).collect();
+    detached_cancellable(py, |cancel| {
+        let faces = parts
+            .iter()
+            .enumerate()
+            .map(|(i, ((_, f), n))| f.checked("faces", *n).map_err(|e| e.in_item(&place(i))))
+            .collect::<Result<Vec<_>>>()?;
+        let meshes = parts
+            .iter()
+            .zip(&faces)
+            .map(|(((p, _), _), f)| (on_positions!(*p, v => triangles(v, f)), &f[..]));
+        among(meshes.collect(), with_self, brute_force, cancel)
+    })
+}
+
+/// (N, 2, 3) float64: the segments where the surfaces of `meshes` cross (see `crossings`);
+/// `brute_force` compares every pair of triangles (the reference the tests hold it to).
+#[pyfunction]
+pub(super) fn _intersections<'py>(
+    py: Python<'py>,
+    meshes: &Bound<'py, PyAny>,
+    self_intersections: &Bound<'py, PyAny>,
+    brute_force: bool,
+) -> Out<'py> {
+    let found = crossings(py, meshes, self_intersections, brute_force)?;
+    let flat: Vec<f64> = found.iter().flat_map(|c| c.ends.into_iter().flatten()).collect();
+    Ok(shaped_to_numpy(py, vec![found.len(), 2, 3], flat)?)
+}
+
+/// The segments of `_intersections` chained into polylines: their flat (P, 3) float64 points
+/// and int64 starts.
+#[pyfunction]
+pub(super) fn _intersection_lines<'py>(
+    py: Python<'py>,
+    meshes: &Bound<'py, PyAny>,
+    self_intersections: &Bound<'py, PyAny>,
+) -> Out<'py> {
+    let found = crossings(py, meshes, self_intersections, false)?;
+    let lines = detached(py, || Ok(chain(&found)))?;
+    let mut starts = vec![0u32];
+    for line in &lines {
+        starts.push(starts[starts.len() - 1] + line.len() as u32);
+    }
+    (lines.into_iter().flatten().collect::<Vec<_>>(), starts).to_python(py)
 }
 
 /// The number of `vertices`, checked as every mesh function checks them.

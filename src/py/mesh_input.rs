@@ -123,6 +123,12 @@ impl<'py> MeshInput<'py> {
         Ok(MeshInput { vertices, faces })
     }
 
+    /// The positions and the faces as borrowed (the faces' indices not yet checked: see
+    /// `FacesRef::checked`), to work on several meshes with the GIL released at once.
+    pub fn parts(&self) -> (PositionsRef<'_>, FacesRef<'_>) {
+        (self.vertices.get(), self.faces.faces().expect("an integer dtype"))
+    }
+
     /// Runs `work` on the mesh with the GIL released, stopping on Ctrl-C when `work` checks its
     /// `Cancel` (see `runtime::detached_cancellable`). The faces are converted to u32 inside, in
     /// parallel, each index checked against the vertices.

@@ -25,6 +25,8 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(edges::_curvature, m)?,
         wrap_pyfunction!(edges::_view_lines, m)?,
         wrap_pyfunction!(edges::_chains, m)?,
+        wrap_pyfunction!(edges::_intersections, m)?,
+        wrap_pyfunction!(edges::_intersection_lines, m)?,
         wrap_pyfunction!(edges::_sobel, m)?,
         wrap_pyfunction!(edges::_paper_edges, m)?,
         wrap_pyfunction!(edges::_vertex_count, m)?,

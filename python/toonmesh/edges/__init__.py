@@ -49,6 +49,8 @@ __all__ = [
     "curvature",
     "detect_edges",
     "feature_edges",
+    "intersection_lines",
+    "intersections",
     "segments",
     "silhouette",
     "sobel",
@@ -503,6 +505,63 @@ def segments(vertices: Any, edges: Any) -> np.ndarray:
         k = outside[0]
         raise IndexError(f"edges: edge {k} ({E[k, 0]}, {E[k, 1]}) refers to a vertex outside [0, {n})")
     return np.asarray(V, dtype=V.dtype.newbyteorder("="))[E]  # native byte order, as the core reads it
+
+
+def _mesh_list(meshes: Any) -> List[Tuple[np.ndarray, np.ndarray]]:
+    """Each of ``meshes`` as (V, F) (see :func:`intersections`), an error naming its place."""
+    if (hasattr(meshes, "vertices") and hasattr(meshes, "faces")) or isinstance(meshes, (str, bytes, np.ndarray)) \
+            or not hasattr(meshes, "__iter__"):
+        raise TypeError("meshes: expected a list of meshes, each (vertices, faces) or a trimesh.Trimesh, "
+                        f"got {type(meshes).__name__}")
+    out = []
+    for i, mesh in enumerate(meshes):
+        try:
+            pair = isinstance(mesh, (tuple, list)) and len(mesh) == 2
+            out.append(mesh_arrays(*mesh) if pair else mesh_arrays(mesh, None))
+        except (TypeError, ValueError) as exc:
+            raise type(exc)(f"meshes[{i}]: {exc}") from None
+    return out
+
+
+def intersections(meshes: Any, *, self_intersections: bool = False) -> np.ndarray:
+    """Intersection lines: where the surfaces of different meshes cross (a pin through a plate,
+    two crossing pipes), as one segment per pair of crossing triangles, found through a
+    bounding-volume hierarchy per mesh, in parallel with the GIL released.
+
+    The rule for two triangles: the overlap of where each crosses the other's plane, computed in
+    float64. Each end point is where an edge of one triangle crosses the other's plane, computed
+    the same way for both triangles on that edge, so neighbouring segments share their ends
+    exactly (:func:`intersection_lines` joins them). Coplanar triangles give no segment, nor
+    degenerate ones, nor triangles touching only at a point; a corner within rounding of the
+    other plane (relative to the triangles' size and coordinates, so at any scale or offset) lies
+    on it and counts as on the side its normal points to, so an edge lying in the other surface
+    is given once and two outward-facing meshes that only rest on each other give nothing.
+    Triangles at shared positions (two meshes sharing a seam) only touch there.
+
+    Args:
+        meshes: a list of meshes in one frame, each ``(vertices, faces)`` (as
+            :func:`feature_edges` takes them) or a ``trimesh.Trimesh``.
+        self_intersections: also each mesh's crossings with itself, between faces that share
+            no vertex. Default False.
+
+    Returns:
+        (N, 2, 3) float64 segment end points, in the meshes' coordinates and units: for each
+        pair of meshes i < j in order, its segments sorted by the face of mesh i, then of mesh
+        j; then, with ``self_intersections``, each mesh's own. Fewer than two meshes without
+        ``self_intersections``: an empty (0, 2, 3) array (the meshes are still checked).
+
+    Raises:
+        TypeError, ValueError, IndexError: bad input, naming the mesh (``meshes[2].faces: ...``).
+    """
+    return _core._intersections(_mesh_list(meshes), self_intersections, False)
+
+
+def intersection_lines(meshes: Any, *, self_intersections: bool = False) -> List[np.ndarray]:
+    """The segments of :func:`intersections` joined into polylines where their ends meet, as
+    :func:`chains` joins edges: a list of (K, 3) float64 polylines in the meshes' coordinates; a
+    closed one (a pin through a plate gives one per face of the plate it crosses) repeats its
+    first point at the end. Arguments as :func:`intersections`."""
+    return _polylines(*_core._intersection_lines(_mesh_list(meshes), self_intersections))
 
 
 # ---------------------------------------------------------------------------------------------
