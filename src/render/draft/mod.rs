@@ -58,6 +58,7 @@ fn described(step: &str) -> &str {
         "visible_lines" => "mesh-space lines",
         "shadow_map" | "shadow" => "shadows",
         "downsample" => "supersampling",
+        "intersections" => "intersection lines",
         other => other,
     }
 }
@@ -613,9 +614,6 @@ impl Renderer {
             }
             if o.draws_hidden() {
                 leave("hidden lines");
-            }
-            if draws(LineKind::Intersection) && records.len() > 1 {
-                leave("intersection lines");
             }
             if o.styles.iter().flatten().any(|s| s.dash > 0.0) {
                 leave("dashed lines");

@@ -27,6 +27,7 @@ use crate::render::mesh_record::MeshRecord;
 use crate::render::scene::camera::{direction_of, ResolvedCamera};
 use crate::render::scene::SceneItem;
 
+use super::intersection_lines::IntersectionSlot;
 use super::occluded;
 use super::projection::{Projector, ScreenLine};
 use super::settings::{ContourRule, Outlines, VisibilityRule, HIDDEN_KIND};
@@ -481,6 +482,8 @@ pub fn scene_outlines(
 pub struct Silhouettes {
     pub outlines: Outlines,
     pub view: ViewSlot,
+    /// The `intersections` step's lines, where it runs.
+    pub intersections: Option<IntersectionSlot>,
 }
 
 impl HostStep for Silhouettes {
@@ -497,6 +500,11 @@ impl HostStep for Silhouettes {
         let outlines = scene_outlines(items, cx.records, cx.cam, &self.outlines)?;
         let mut found: Vec<Vec<Chain>> =
             outlines.iter().zip(cx.records).map(|(o, rec)| chains(o, &rec.host.positions)).collect();
+        if let Some(crossing) = self.intersections.as_ref().and_then(|slot| slot.get()) {
+            for (of_item, lines) in found.iter_mut().zip(crossing) {
+                of_item.extend(lines.iter().cloned());
+            }
+        }
         let projectors: Vec<Projector> = items
             .iter()
             .zip(cx.records)

@@ -7,6 +7,7 @@ pub mod edge_bits;
 pub mod edges;
 pub mod edges_reference;
 pub mod ink;
+pub mod intersection_lines;
 pub mod lines;
 pub mod mesh_lines;
 pub mod occluded;
@@ -167,9 +168,19 @@ impl FrameEffect for OutlinesEffect {
         let visible = mesh && o.has(Output::Lines);
         if lines || visible {
             let view = Arc::default();
+            let crossing =
+                outlines.styles[LineKind::Intersection as usize].is_some() && cx.scene.scene.items.len() > 1;
+            let intersections = crossing.then(|| {
+                let found = intersection_lines::IntersectionSlot::default();
+                steps
+                    .host_before
+                    .push(Box::new(intersection_lines::Intersections { found: Arc::clone(&found) }));
+                found
+            });
             steps.host_before.push(Box::new(mesh_lines::Silhouettes {
                 outlines: outlines.clone(),
                 view: Arc::clone(&view),
+                intersections,
             }));
             if lines {
                 let layout = cx.geometry.expect("mesh-space lines are tested against the frame's depth");
