@@ -1,7 +1,8 @@
-"""Exact visibility of mesh-space lines and hidden lines drawn on request: lines under a thin
-sheet stay hidden (the depth rule lets them through), a cube's three hidden edges come back
-dashed in the picture, in ``lines`` and in the SVG, ``max_occlusion`` chooses how deep, and the
-command line has the flags."""
+"""Exact visibility of mesh-space lines, hidden lines drawn on request and intersection lines:
+lines under a thin sheet stay hidden (the depth rule lets them through), a cube's three hidden
+edges come back dashed in the picture, in ``lines`` and in the SVG, ``max_occlusion`` chooses how
+deep, crossing pipes get their intersection curves, and the command line has the flags. (The
+scenes are the ``lines`` benchmark's.)"""
 
 from __future__ import annotations
 
@@ -13,20 +14,12 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
+from toonmesh.bench.lines import pipe, sheet_over_beams, slab
 
 BACKENDS = ["vulkan", "gl"]
 # Seen from a corner: the cube's corner (-1, -1, -1) and its three edges are behind it.
 CORNER = tm.Camera.orthographic((3.0, 2.5, 2.0), height=4.0)
 HIDDEN_CORNER = np.array([-1.0, -1.0, -1.0])
-
-
-def box(lo, hi):
-    """A box from corner ``lo`` to ``hi``, faces wound outward."""
-    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
-    V = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
-    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
-                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
-    return V, F
 
 
 def to_pixels(res, points):
@@ -40,17 +33,9 @@ def length(polylines):
     return float(sum(np.linalg.norm(np.diff(p, axis=0), axis=1).sum() for p in polylines))
 
 
-def sheet_and_beams(gaps):
-    """A 2 m sheet (5 mm thick, its top at y = 0) and a beam under it at each gap (metres)."""
-    sheet = tm.Mesh(*box((-1, -0.005, -1), (1, 0.0, 1)), normals="flat")
-    beams = [tm.Mesh(*box((-0.9 + 0.6 * i, -0.1 - g, -0.9), (-0.8 + 0.6 * i, -0.005 - g, 0.9)), normals="flat")
-             for i, g in enumerate(gaps)]
-    return sheet, beams
-
-
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_beams_under_a_thin_sheet_stay_hidden(backend):
-    sheet, beams = sheet_and_beams((0.001, 0.003, 0.005))
+    sheet, *beams = [tm.Mesh(*m, normals="flat") for m in sheet_over_beams((0.001, 0.005))]
     r = tm.Renderer(backend)
     cam = tm.Camera.look_at((0.3, 3.0, 0.6), (0, 0, 0), fov_y=45)
     kw = dict(camera=cam, width=400, height=300, outputs=("color", "outline", "lines"))
@@ -69,7 +54,7 @@ def test_beams_under_a_thin_sheet_stay_hidden(backend):
 
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_a_cube_s_hidden_edges_come_back_dashed(backend):
-    V, F = box((-1, -1, -1), (1, 1, 1))
+    V, F = slab((-1, -1, -1), (1, 1, 1))
     o = tm.Outlines("mesh", hidden=True)
     assert o.hidden.dash > 0 and o.hidden.width < o.silhouette.width and o.hidden.color != o.silhouette.color
     res = tm.render(V, F, normals="flat", camera=CORNER, width=300, height=300, outlines=o,
@@ -106,7 +91,7 @@ def test_a_cube_s_hidden_edges_come_back_dashed(backend):
 
 def test_max_occlusion_chooses_how_deep_hidden_lines_go():
     # two boxes one behind the other: the back box's far edges sit behind four faces
-    front, back = box((-1, -1, 1), (1, 1, 2)), box((-1.2, -1.2, -3), (1.2, 1.2, -2))
+    front, back = slab((-1, -1, 1), (1, 1, 2)), slab((-1.2, -1.2, -3), (1.2, 1.2, -2))
     cam = tm.Camera.look_at((0.2, 0.3, 8.0), (0, 0, 0), fov_y=40)
     meshes = [tm.Mesh(*front, normals="flat"), tm.Mesh(*back, normals="flat")]
     depth = {}
@@ -123,7 +108,7 @@ def test_max_occlusion_chooses_how_deep_hidden_lines_go():
 
 
 def test_the_command_line_draws_hidden_lines(tmp_path):
-    V, F = box((-1, -1, -1), (1, 1, 1))
+    V, F = slab((-1, -1, -1), (1, 1, 1))
     path = tmp_path / "cube.obj"
     path.write_text("".join(f"v {x} {y} {z}\n" for x, y, z in V) + "".join(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in F))
     out = tmp_path / "cube.svg"
@@ -138,21 +123,8 @@ def test_the_command_line_draws_hidden_lines(tmp_path):
     assert run.returncode != 0 and "--max-occlusion" in run.stderr
 
 
-def cylinder(axis, radius=1.0, half_length=2.0, sections=96):
-    """A closed cylinder about ``axis`` (0, 1 or 2) through the origin."""
-    a = np.linspace(0, 2 * np.pi, sections, endpoint=False)
-    ring = np.c_[radius * np.cos(a), radius * np.sin(a)]
-    V = np.vstack([np.c_[ring, np.full(sections, -half_length)], np.c_[ring, np.full(sections, half_length)],
-                   [[0, 0, -half_length], [0, 0, half_length]]])
-    i, j = np.arange(sections), (np.arange(sections) + 1) % sections
-    F = np.vstack([np.c_[i, j, j + sections], np.c_[i, j + sections, i + sections],
-                   np.c_[np.full(sections, 2 * sections), j, i], np.c_[np.full(sections, 2 * sections + 1), i + sections, j + sections]])
-    V = np.roll(V, axis + 1, axis=1)  # the cylinder's z to the axis asked for
-    return V, F
-
-
 def test_crossing_pipes_get_intersection_lines_in_the_picture_and_the_svg():
-    pipes = [tm.Mesh(*cylinder(0), normals="auto"), tm.Mesh(*cylinder(1), normals="auto")]
+    pipes = [tm.Mesh(*pipe(0), normals="auto"), tm.Mesh(*pipe(1), normals="auto")]
     cam = tm.Camera.look_at((4.0, 3.0, 6.0), (0, 0, 0), fov_y=40)
     kw = dict(camera=cam, width=320, height=240, outputs=("color", "lines"))
     res = tm.render(pipes, outlines="mesh", **kw)
@@ -166,6 +138,6 @@ def test_crossing_pipes_get_intersection_lines_in_the_picture_and_the_svg():
     # asked away, or a single mesh: no step, no line
     off = tm.render(pipes, outlines=tm.Outlines("mesh", intersection=False), **kw)
     assert "intersections" not in off.passes and "intersection" not in off.line_kinds
-    assert "intersections" not in tm.render(*cylinder(0), outlines="mesh", **kw).passes
+    assert "intersections" not in tm.render(*pipe(0), outlines="mesh", **kw).passes
     # the ink differs from the render without them only along the curves
     assert int(np.any(res.color != off.color, axis=-1).sum()) > 150
