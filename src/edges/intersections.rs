@@ -96,12 +96,15 @@ fn all_pairs(
         .collect()
 }
 
+/// A mesh as `among` takes it: each face's corners, in face order, and the faces.
+pub type Triangles<'a> = (Vec<[DVec3; 3]>, &'a [[u32; 3]]);
+
 /// Every crossing among a scene's meshes, all given in one frame as each face's corners (in
 /// face order) and the faces: each pair of meshes (i < j, in order), then with `with_self`
 /// each mesh with itself. `brute_force` compares every pair of triangles instead of building
 /// hierarchies (the reference).
 pub fn among(
-    meshes: Vec<(Vec<[DVec3; 3]>, &[[u32; 3]])>,
+    meshes: Vec<Triangles<'_>>,
     with_self: bool,
     brute_force: bool,
     cancel: &Cancel,
