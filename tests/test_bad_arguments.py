@@ -295,6 +295,15 @@ CASES: List[Case] = [
     for m in SMOOTHING
 ]
 EDGE_INDEX = te.EdgeIndex(V, F)
+# Two crossing meshes, and lists of meshes: an error names the mesh ("meshes[1].faces: ...")
+CROSSING = [(V, F), (V + 0.3, F)]
+MESH_LISTS = (("two meshes", CROSSING, OK), ("a tuple of them", tuple(CROSSING), OK), ("one mesh", CROSSING[:1], OK),
+              ("no mesh", [], OK), ("float32 and float64", [(V.astype(np.float32), F), CROSSING[1]], OK),
+              ("a mesh, not a list", CROSSING[0], TypeError), ("an item not a mesh", [CROSSING[0], 3], TypeError),
+              ("an item of vertices alone", [CROSSING[0], (V,)], TypeError),
+              ("a NaN vertex", [CROSSING[0], (_with(V, (2, 1), np.nan), F)], ValueError),
+              ("a face out of range", [CROSSING[0], (V, F + N)], IndexError),
+              ("float faces", [(V, F.astype(float)), CROSSING[1]], TypeError), ("a string", "meshes", TypeError))
 CURVED_VERTICES = _but(VERTICES, {"tiny": ValueError})  # a mesh 1e-310 across: its curvature is beyond float64
 MESH_PARAMS = [Param("vertices", VERTICES), Param("faces", FACES)]
 CREASE = Param("crease_angle", Number(0.0, 180.0), none=OK)  # None: the core's default
@@ -329,6 +338,9 @@ CASES += [
     Case("edges.chains", te.chains, dict(edges=EDGE_PAIRS), [Param("edges", EDGES)]),
     Case("edges.segments", te.segments, dict(vertices=V, edges=EDGE_PAIRS),
          [Param("vertices", VERTICES), Param("edges", SEGMENT_EDGES)]),
+    *[Case(f"edges.{f.__name__}", f, dict(meshes=CROSSING, self_intersections=False),
+           [Param("meshes", MESH_LISTS), Param("self_intersections", FLAG)])
+      for f in (te.intersections, te.intersection_lines)],
     *[Case(f"edges.{f.__name__}", f, dict(image=IMG, mask=None, convention="skimage"),
            [Param("image", IMAGES), Param("mask", MASKS, none=OK), Param("convention", Name(("skimage", "opencv")))])
       for f in (te.sobel, te.sobel_h, te.sobel_v)],

@@ -102,6 +102,12 @@ def test_crossing_cylinders_follow_the_analytic_curves():
     analytic = 2 * np.mean(np.sqrt(2 * np.sin(t) ** 2 + np.cos(t) ** 2)) * 2 * np.pi
     length = np.linalg.norm(segments[:, 1] - segments[:, 0], axis=1).sum()
     assert 0.97 < length / analytic < 1.03, (length, analytic)
+    # joined into closed loops, even where an edge of one tube crosses an edge of the other (at
+    # every section on the ellipse x = -y: the two tubes have their edges at the same angles)
+    lines = intersection_lines([along_x, along_y])
+    assert len(lines) <= 4 and all((line[0] == line[-1]).all() for line in lines)
+    assert sum(len(line) - 1 for line in lines) == len(segments)
+    assert np.linalg.norm(segments[:, 1] - segments[:, 0], axis=1).min() > 1e-6
 
 
 def test_a_pin_through_a_plate_gives_two_closed_loops():

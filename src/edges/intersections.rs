@@ -96,12 +96,15 @@ fn all_pairs(
         .collect()
 }
 
+/// A mesh as `among` takes it: each face's corners, in face order, and the faces.
+pub type Triangles<'a> = (Vec<[DVec3; 3]>, &'a [[u32; 3]]);
+
 /// Every crossing among a scene's meshes, all given in one frame as each face's corners (in
 /// face order) and the faces: each pair of meshes (i < j, in order), then with `with_self`
 /// each mesh with itself. `brute_force` compares every pair of triangles instead of building
 /// hierarchies (the reference).
 pub fn among(
-    meshes: Vec<(Vec<[DVec3; 3]>, &[[u32; 3]])>,
+    meshes: Vec<Triangles<'_>>,
     with_self: bool,
     brute_force: bool,
     cancel: &Cancel,
@@ -111,7 +114,7 @@ pub fn among(
         Tree(Bvh, &'a [[u32; 3]]),
     }
     let held: Vec<Held<'_>> = meshes
-        .into_iter()
+        .into_par_iter()
         .map(|(corners, faces)| match brute_force {
             true => Held::Corners(corners, faces),
             false => Held::Tree(Bvh::of_triangles(corners), faces),
@@ -141,10 +144,9 @@ pub fn among(
 
 /// Segments joined into polylines where their ends are the same point (to the bit, as the rule
 /// makes shared ends), chained as `chains::chain_edges` chains edges; a closed loop repeats its
-/// first point at the end. Where an edge of one mesh crosses an edge of the other, the two
-/// segments meeting there compute that point from different edges and planes: an end that
-/// meets no other end is joined to the nearest such end within `WELD` of its coordinates'
-/// magnitude (not of its own segment).
+/// first point at the end. Where an edge of one mesh crosses an edge of the other, the segments
+/// meeting there compute that point from different edges and planes: an end that meets no
+/// other end is joined to the nearest such end of another segment within `WELD`.
 pub fn chain(crossings: &[Crossing]) -> Vec<Vec<[f64; 3]>> {
     let mut ids: HashMap<[u64; 3], u32> = HashMap::new();
     let mut points: Vec<[f64; 3]> = Vec::new();
@@ -155,11 +157,8 @@ pub fn chain(crossings: &[Crossing]) -> Vec<Vec<[f64; 3]>> {
             points.len() as u32 - 1
         })
     };
-    let mut edges: Vec<[u32; 2]> = crossings.iter().map(|c| [id(c.ends[0]), id(c.ends[1])]).collect();
-    let to = welded_ends(&points, &edges);
-    for e in &mut edges {
-        *e = e.map(|i| to[i as usize]);
-    }
+    let edges: Vec<[u32; 2]> = crossings.iter().map(|c| [id(c.ends[0]), id(c.ends[1])]).collect();
+    let edges = welded(&points, edges);
     let (flat, offsets) = chain_edges(&edges);
     offsets
         .windows(2)
@@ -167,14 +166,20 @@ pub fn chain(crossings: &[Crossing]) -> Vec<Vec<[f64; 3]>> {
         .collect()
 }
 
-/// Ends of the segments `edges` (between `points`) closer than this, relative to the largest
-/// coordinate magnitude of the two, are one point (a few units in the last place: what rounding
-/// leaves between two computations of one point).
+/// How far apart two computations of one point may be, relative to the larger coordinate
+/// magnitude of the two (a few units in the last place).
 const WELD: f64 = 16.0 * f64::EPSILON;
 
-/// Each point's representative: an end that no other segment shares is joined to the nearest
-/// such end within `WELD`, of another segment.
-fn welded_ends(points: &[[f64; 3]], edges: &[[u32; 2]]) -> Vec<u32> {
+/// How far apart `p` and `q` are (the largest coordinate difference), where that is within `WELD`.
+fn near(p: [f64; 3], q: [f64; 3]) -> Option<f64> {
+    let magnitude = |p: [f64; 3]| p.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let d = (0..3).fold(0.0f64, |m, a| m.max((p[a] - q[a]).abs()));
+    (d <= WELD * magnitude(p).max(magnitude(q))).then_some(d)
+}
+
+/// `edges` between `points` with each end that no other edge shares joined to the nearest such
+/// end of another edge within `WELD` (the smaller index standing for both).
+fn welded(points: &[[f64; 3]], edges: Vec<[u32; 2]>) -> Vec<[u32; 2]> {
     let mut degree = vec![0u32; points.len()];
     let mut edge_of = vec![0usize; points.len()];
     for (k, e) in edges.iter().enumerate() {
@@ -184,8 +189,7 @@ fn welded_ends(points: &[[f64; 3]], edges: &[[u32; 2]]) -> Vec<u32> {
         }
     }
     let mut open: Vec<u32> = (0..points.len() as u32).filter(|&i| degree[i as usize] == 1).collect();
-    open.sort_by(|&i, &j| points[i as usize][0].total_cmp(&points[j as usize][0]));
-    let magnitude = |p: [f64; 3]| p.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    open.sort_by(|&i, &j| points[i as usize][0].total_cmp(&points[j as usize][0]).then(i.cmp(&j)));
     let mut to: Vec<u32> = (0..points.len() as u32).collect();
     let mut taken = vec![false; open.len()];
     for k in 0..open.len() {
@@ -197,25 +201,21 @@ fn welded_ends(points: &[[f64; 3]], edges: &[[u32; 2]]) -> Vec<u32> {
         for (l, &j) in open.iter().enumerate().skip(k + 1) {
             let q = points[j as usize];
             // sorted by x: nothing further on is near
-            if q[0] - p[0] > 2.0 * WELD * magnitude(p) {
+            if q[0] - p[0] > 2.0 * WELD * p.iter().fold(0.0f64, |m, c| m.max(c.abs())) {
                 break;
             }
-            let d = (0..3).fold(0.0f64, |m, a| m.max((p[a] - q[a]).abs()));
-            let near = d <= WELD * magnitude(p).max(magnitude(q));
-            if near
-                && !taken[l]
-                && edge_of[i as usize] != edge_of[j as usize]
-                && best.is_none_or(|(b, _)| d < b)
-            {
+            let d = near(p, q).filter(|_| !taken[l] && edge_of[i as usize] != edge_of[j as usize]);
+            if let Some(d) = d.filter(|&d| best.is_none_or(|(b, _)| d < b)) {
                 best = Some((d, l));
             }
         }
         if let Some((_, l)) = best {
             taken[l] = true;
-            to[open[l] as usize] = i;
+            to[open[l] as usize] = i.min(open[l]);
+            to[i as usize] = i.min(open[l]);
         }
     }
-    to
+    edges.into_iter().map(|e| e.map(|i| to[i as usize])).collect()
 }
 
 fn share_vertex(f: [u32; 3], g: [u32; 3]) -> bool {
@@ -242,7 +242,10 @@ pub fn crossing(t: &[DVec3; 3], u: &[DVec3; 3]) -> Option<[[f64; 3]; 2]> {
     }
     let start = if b[0][axis] > a[0][axis] { b[0] } else { a[0] };
     let end = if b[1][axis] < a[1][axis] { b[1] } else { a[1] };
-    (start[axis] < end[axis]).then(|| [start.to_array(), end.to_array()])
+    let (start, end) = (start.to_array(), end.to_array());
+    // shorter than rounding: the cuts only touch (a few units in the last place long, where an
+    // edge of one triangle crosses an edge of the other)
+    (start[axis] < end[axis] && near(start, end).is_none()).then_some([start, end])
 }
 
 /// A triangle's plane as the rule reads it.
@@ -399,6 +402,15 @@ mod tests {
         let behind = front.map(|p| p * v(1.0, 1.0, -1.0));
         assert_eq!(crossing(&floor(), &front), None);
         assert_eq!(crossing(&floor(), &behind), Some([[-0.5, 0.25, 0.0], [0.5, 0.25, 0.0]]));
+    }
+
+    #[test]
+    fn a_crossing_shorter_than_rounding_is_none() {
+        // a wall along x + y = -2 + e, past the floor's corner (-1, -1) by e
+        let wall = |e: f64| [v(-2.0, e, -1.0), v(0.0, -2.0 + e, -1.0), v(-1.0, -1.0 + e, 1.0)];
+        assert_eq!(crossing(&floor(), &wall(2f64.powi(-50))), None);
+        let [p, q] = crossing(&floor(), &wall(2f64.powi(-30))).unwrap();
+        assert_eq!([p, q], [[-1.0, -1.0 + 2f64.powi(-30), 0.0], [-1.0 + 2f64.powi(-30), -1.0, 0.0]]);
     }
 
     #[test]

@@ -211,7 +211,7 @@ pub(super) fn _intersections<'py>(
 ) -> Out<'py> {
     let found = crossings(py, meshes, self_intersections, brute_force)?;
     let flat: Vec<f64> = found.iter().flat_map(|c| c.ends.into_iter().flatten()).collect();
-    Ok(shaped_to_numpy(py, vec![found.len(), 2, 3], flat)?)
+    shaped_to_numpy(py, vec![found.len(), 2, 3], flat)
 }
 
 /// The segments of `_intersections` chained into polylines: their flat (P, 3) float64 points

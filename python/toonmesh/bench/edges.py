@@ -201,6 +201,29 @@ def smoothing_rows(subdivisions: int, noise: float, repeat: int) -> List[Sequenc
     return rows
 
 
+def intersection_rows(brute_sizes: Sequence[int], size: int, repeat: int) -> List[Sequence[Any]]:
+    """Intersection lines of two unit icospheres half a radius apart: the hierarchy (built on
+    every call, as ``edges.intersections`` does) against the all-pairs reference on the sizes
+    where that runs, then the hierarchy alone at ``size``. Time per million triangles of both
+    meshes together."""
+    rows: List[Sequence[Any]] = []
+    for subdivisions in list(brute_sizes) + [size]:
+        a = _core.icosphere(subdivisions, 0.0, 0)
+        b = (a[0] + [0.5, 0.0, 0.0], a[1])
+        triangles = 2 * len(a[1])
+        ours = median_time(lambda: te.intersections([a, b]), repeat)
+        label = f"2 x icosphere({subdivisions}): {triangles:,} triangles, {len(te.intersections([a, b])):,} segments"
+        per_million = f"{ours / triangles * 1e9:.1f} ms"
+        if subdivisions in brute_sizes:
+            from toonmesh.edges import _mesh_list
+
+            peer = median_time(lambda: _core._intersections(_mesh_list([a, b]), False, True), max(1, repeat - 2))
+            rows.append([label, per_million, ms(ours), ms(peer), _ratio(peer, ours)])
+        else:
+            rows.append([label, per_million, ms(ours), "-", "-"])
+    return rows
+
+
 def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
     """Prints the outline benchmark tables (Markdown). ``quick`` uses a small mesh and image."""
     subdivisions = 5 if quick else 8
@@ -211,6 +234,9 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
     rows = mesh_rows(subdivisions, 0.0002, repeat) + mesh_rows(subdivisions, 0.002, repeat, with_index=False)
     print(table(["case", "call", "toonmesh", "peer", "speed-up"], rows, title="Mesh-space outlines"))
     print(table(["case", "call", "toonmesh", "peer", "speed-up"], sobel_rows(size, repeat), title="Sobel"))
+    crossing = intersection_rows((2, 3) if quick else (2, 3, 4), 5 if quick else 7, repeat)
+    print(table(["case", "per million triangles", "intersections", "all pairs (reference)", "speed-up"], crossing,
+                title="Intersection lines: bounding-volume hierarchy against every pair of triangles"))
     curv = curvature_rows(4 if quick else 8, repeat)
     print(table(["case", "estimator", "time", "mean curvature error (median)", "toonmesh's speed-up"], curv, title="Principal curvature"))
     smooth = smoothing_rows(4 if quick else 7, 0.003 if quick else 0.002, repeat)
