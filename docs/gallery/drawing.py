@@ -23,21 +23,21 @@ from toonmesh.bench.lines import pipe, slab
 PAPER = tm.Material.bands("#ffffff", thresholds=(2.0,), values=(1.0, 1.0))
 
 
-def moved(mesh, offset, normals="auto"):
+def part(mesh, name, offset=(0, 0, 0)):
     """A part of the assembly: ``mesh`` (vertices, faces) moved by ``offset`` (mm)."""
     V, F = mesh
-    return tm.Mesh(V + np.asarray(offset, float), F, normals=normals)
+    return tm.Mesh(V + np.asarray(offset, float), F, name=name)
 
 
 def assembly():
     """The parts, in millimetres, y up: plate, bearing block, shaft, pulley and two pins."""
     return [
-        tm.Mesh(*slab((-70, 0, -40), (70, 10, 40)), name="plate"),
-        tm.Mesh(*slab((-22, 10, -22), (22, 56, 22)), name="block"),
-        moved(pipe(0, radius=8, half_length=55), (0, 36, 0)),                 # the shaft, along x
-        moved(pipe(0, radius=22, half_length=4), (48, 36, 0)),                # the pulley on its end
-        moved(pipe(1, radius=5, half_length=12, sections=48), (-50, 5, 22)),  # the pins, along y
-        moved(pipe(1, radius=5, half_length=12, sections=48), (50, 5, -22)),
+        part(slab((-70, 0, -40), (70, 10, 40)), "plate"),
+        part(slab((-22, 10, -22), (22, 56, 22)), "block"),
+        part(pipe(0, radius=8, half_length=55), "shaft", (0, 36, 0)),    # along x, through the block
+        part(pipe(0, radius=22, half_length=4), "pulley", (48, 36, 0)),  # on the shaft's end
+        part(pipe(1, radius=5, half_length=12, sections=48), "pin", (-50, 5, 22)),  # along y, through the plate
+        part(pipe(1, radius=5, half_length=12, sections=48), "pin", (50, 5, -22)),
     ]
 
 
