@@ -167,9 +167,10 @@ class RenderResult:
     ) -> List["_strokes.SvgGroup"]:
         """The groups of :meth:`svg`'s document (the same arguments; their defaults are these),
         hidden lines first (underneath), then one per kind in name order:
-        ``(kind, colour, width or None for filled outlines, dashes, [(points, widths), ...])``,
-        for a caller that adds groups of its own (the command line's hidden lines) before
-        writing the document with the same writer."""
+        ``(kind, colour, width or None for filled outlines, dashes, [(points, widths), ...])``
+        (dashes: None for solid lines, else (dash, gap) in pixels from the kind's
+        :class:`LineStyle`), for a caller that adds groups of its own before writing the document
+        with the same writer."""
         _strokes.check(order, simplify, smooth, widths)
         styles = self.outlines.styles if self.outlines is not None else {}
         if self.line_kinds is None or self.line_widths is None:
