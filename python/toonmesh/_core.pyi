@@ -343,14 +343,29 @@ class Outlines(_Settings):
     frame's normal and depth buffers, by ``image_rule`` below) or "both" (default). color and
     width: the common style of every kind (default black, 1.5 output pixels). Each kind can be
     styled on its own with a keyword: silhouette, boundary, crease (both ridge and valley),
-    ridge, valley, nonmanifold, suggestive, material, image; each takes None or True (the common
-    style), False (not drawn), a :class:`LineStyle`, or a colour (image edges take the width
-    under the discontinuity rule; under the paper rule they are whole pixels). Suggestive
-    contours (DeCarlo et al., see :func:`toonmesh.edges.suggestive_contours`) are drawn only
-    when asked for (suggestive=True, a style or a colour; default None: not drawn). Material
-    borders are drawn where a boundary edge of one scene item lies on a boundary edge of another
-    (the parts of a file with different materials, meshes that meet edge to edge), in place of
-    those boundaries.
+    ridge, valley, nonmanifold, suggestive, material, intersection, image, hidden; each takes
+    None or True (the common style), False (not drawn), a :class:`LineStyle` (whose ``dash``
+    draws it dashed), or a colour (image edges take the width under the discontinuity rule;
+    under the paper rule they are whole pixels). Suggestive contours (DeCarlo et al., see
+    :func:`toonmesh.edges.suggestive_contours`) are drawn only when asked for (suggestive=True,
+    a style or a colour; default None: not drawn). Material borders are drawn where a boundary
+    edge of one scene item lies on a boundary edge of another (the parts of a file with
+    different materials, meshes that meet edge to edge), in place of those boundaries.
+    Intersection lines are drawn where the surfaces of two scene items cross (a pin through a
+    plate; on by default, in a scene of several meshes; items that only meet along an edge or
+    rest on each other give none).
+
+    visibility: how lines behind surfaces are found. "exact" (default): each line is cut where
+    the scene's surfaces hide it, by rays from its points toward the camera counting the
+    surfaces they cross (its quantitative invisibility), against a bounding-volume hierarchy of
+    each mesh kept with it; a line under a surface never shows through it however thin the gap.
+    "depth": against the frame's depth image with ``depth_offset`` pixel footprints of
+    tolerance, per pixel on the GPU (the earlier rule: a line within the tolerance of a surface
+    in front of it shows). hidden: the lines behind surfaces, drawn in their own style (True:
+    grey, two thirds of the common width, dashed 3 widths on and off; off by default; needs the
+    exact rule), as the kind "hidden" in ``RenderResult.lines`` and ``<g id="hidden">`` in the
+    SVG. max_occlusion: hidden lines are drawn behind at most this many surfaces (each surface
+    crossed counts: a closed part in front counts 2; default None: any number).
 
     contours: how silhouettes are found: "faces" (face edges between front- and back-facing
     faces, Kang et al.'s rule, exact for flat shading), "smooth" (the smooth contour n . v = 0
@@ -398,11 +413,11 @@ class Outlines(_Settings):
     or where the surface meets the background; drawn as lines width pixels wide centred on those
     boundaries, antialiased. "paper": Borquez and Yepez's thresholded Sobel, whole edge pixels,
     with normal_threshold (default 1.0) and depth_threshold (default 0.1, in world depth units
-    times 4): the rule of :func:`toonmesh.edges.detect_edges`. depth_offset: hidden-line removal
-    keeps a point of a line when its depth is at most the largest surface depth in the 3x3
-    pixels around it plus this many pixel footprints (the world size of one pixel at that depth;
-    default 1.0); a silhouette or boundary with background among those pixels is on the rim and
-    always shows.
+    times 4): the rule of :func:`toonmesh.edges.detect_edges`. depth_offset: the depth rule
+    (``visibility="depth"``) keeps a point of a line when its depth is at most the largest
+    surface depth in the 3x3 pixels around it plus this many pixel footprints (the world size of
+    one pixel at that depth; default 1.0); a silhouette or boundary with background among those
+    pixels is on the rim and always shows.
 
     Fields: kind: lines found on the mesh, edges found in the image, or both; silhouette: True
     (the common style), False (not drawn), a LineStyle or a colour; boundary: True (the common
@@ -412,7 +427,7 @@ class Outlines(_Settings):
     LineStyle or a colour; suggestive: suggestive contours (DeCarlo et al.): drawn only when
     asked for; material: borders between scene items that meet edge to edge; intersection: where
     the surfaces of two scene items cross; image: image-space edges; hidden: lines behind
-    surfaces (True: grey, thinner, dashed): off unless asked for; crease_angle: dihedral angle
+    surfaces (True: grey, thinner, dashed; off unless asked for); crease_angle: dihedral angle
     in degrees above which an edge is a crease; weld: merge vertices at equal positions first,
     so seams are not drawn as boundaries; contours: how silhouettes are found: 'faces', 'smooth'
     or 'auto'; suggestive_threshold: the suggestive contours' derivative test, relative to the

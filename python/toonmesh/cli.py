@@ -487,11 +487,10 @@ def _add_contour_arguments(p: argparse.ArgumentParser, base: Optional[Outlines] 
                   metavar="EDGES")
     add_described(p, "--join-kinds", Outlines, "join_kinds", default=default("join_kinds"))
     add_described(p, "--visibility", Outlines, "visibility", default=default("visibility"))
-    add_described(p, "--hidden", Outlines, "hidden", action="store_true",
-                  help_before="draw the lines behind surfaces too (grey, thinner, dashed). ")
+    add_described(p, "--hidden", Outlines, "hidden", action="store_true", help_before="draw ")
     add_described(p, "--max-occlusion", Outlines, "max_occlusion", default=default("max_occlusion"), metavar="N")
     add_described(p, "--no-intersection", Outlines, "intersection", action="store_false", dest="intersection",
-                  help_before="leave out the lines where the surfaces of two meshes cross. ")
+                  help_before="leave out the lines ", shown_default="drawn")
 
 
 def _visibility_options(args: argparse.Namespace) -> Dict[str, Any]:

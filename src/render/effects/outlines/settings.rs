@@ -344,7 +344,7 @@ declared_fields! {
             "where the surfaces of two scene items cross", optional;
         image: Value [get style, set set_style] => Kind::Style, "image-space edges", optional;
         hidden: Value [get style, set set_style] => Kind::Style,
-            "lines behind surfaces (True: grey, thinner, dashed): off unless asked for", optional;
+            "lines behind surfaces (True: grey, thinner, dashed; off unless asked for)", optional;
         crease_angle: f64 [.crease_angle] => float(DEGREES),
             "dihedral angle in degrees above which an edge is a crease";
         weld: bool [.weld] => boolean(),
