@@ -40,6 +40,12 @@ DESCRIBED = {
     ("edges", "curvature_smoothing"): (Outlines, "", "curvature_smoothing"),
     ("edges", "join_kinds"): (Outlines, "", "join_kinds"),
     ("edges", "stroke_width"): (LineStyle, "", "width"),
+    ("render", "hidden"): (Outlines, "", "hidden"),
+    ("render", "intersection"): (Outlines, "", "intersection"),
+    ("edges", "hidden"): (Outlines, "", "hidden"),
+    ("edges", "intersection"): (Outlines, "", "intersection"),
+    ("edges", "visibility"): (Outlines, "", "visibility"),
+    ("edges", "max_occlusion"): (Outlines, "", "max_occlusion"),
 }
 #: render's ink lines start from toonmesh demo's: dest -> the Outlines attribute it starts from.
 FROM_THE_DEMO = {
@@ -47,6 +53,7 @@ FROM_THE_DEMO = {
     "contours": "contours", "curvature_smoothing": "curvature_smoothing", "join_kinds": "join_kinds",
     "image_rule": "image_rule", "normal_angle": "normal_angle", "depth_jump": "depth_jump",
     "normal_threshold": "normal_threshold", "depth_threshold": "depth_threshold",
+    "visibility": "visibility", "max_occlusion": "max_occlusion",
 }
 #: What toonmesh demo's lines choose differently from the core's defaults.
 DEMO_CHOICES = {"kind", "crease_angle"}
@@ -57,7 +64,7 @@ OWN = {
     ("render", "outline_width"), ("render", "views"), ("render", "fps"), ("render", "up"), ("render", "smooth"),
     ("render", "smooth_method"), ("render", "normals"), ("render", "backend"),
     ("smooth", "out"), ("smooth", "method"), ("smooth", "weld"), ("smooth", "crease_angle"), ("smooth", "force"),
-    ("edges", "eye"), ("edges", "up"), ("edges", "size"), ("edges", "hidden"), ("edges", "smooth_strokes"),
+    ("edges", "eye"), ("edges", "up"), ("edges", "size"), ("edges", "smooth_strokes"),
     ("edges", "order"), ("edges", "simplify"), ("edges", "backend"),
     ("demo", "out"), ("demo", "width"), ("demo", "height"), ("demo", "backend"),
 }
@@ -113,7 +120,9 @@ def shown_default(action: argparse.Action) -> str:
     return (action.help or "") % dict(vars(action), prog="toonmesh")
 
 
-def formatted(value: Any) -> str:
+def formatted(value: Any, kind: str = "") -> str:
+    if kind == "style":  # a kind of line: drawn by default or not
+        return "off" if value in (None, False) else "drawn"
     return f"{value:g}" if isinstance(value, float) else str(value)
 
 
@@ -142,7 +151,7 @@ def test_described_defaults_are_the_cores_and_help_shows_them():
     for key, (cls, constructor, name) in DESCRIBED.items():
         param, action = core_param(cls, constructor, name), by_key[key]
         assert action.default == param["default"], key
-        assert f"default: {formatted(param['default'])})" in shown_default(action), key
+        assert f"default: {formatted(param['default'], param['kind'])})" in shown_default(action), key
         assert param["help"] in shown_default(action), key
 
 
@@ -221,7 +230,7 @@ def _changed(param: Dict[str, Any]) -> Dict[str, Any]:
     if kind == "float":
         param["default"] = (default or 0.0) + 0.5
     elif kind == "int":
-        param["default"] = default + 1
+        param["default"] = (default or 0) + 1
     elif kind == "bool":
         param["default"] = not default
     elif kind == "choice":

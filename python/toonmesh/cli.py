@@ -490,7 +490,7 @@ def _add_contour_arguments(p: argparse.ArgumentParser, base: Optional[Outlines] 
     add_described(p, "--hidden", Outlines, "hidden", action="store_true", help_before="draw ")
     add_described(p, "--max-occlusion", Outlines, "max_occlusion", default=default("max_occlusion"), metavar="N")
     add_described(p, "--no-intersection", Outlines, "intersection", action="store_false", dest="intersection",
-                  help_before="leave out the lines ", shown_default="drawn")
+                  help_before="leave out the lines ")
 
 
 def _visibility_options(args: argparse.Namespace) -> Dict[str, Any]:

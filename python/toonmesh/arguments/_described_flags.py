@@ -39,9 +39,12 @@ def styles(cls: Any) -> Tuple[str, ...]:
 
 def setting_help(param: Dict[str, Any], before: str = "", after: str = "", shown: str = "") -> str:
     """The described help with the default argparse fills in (``%`` escaped for it), or with
-    ``shown`` where the default is told in words (one per method, say)."""
+    ``shown`` where the default is told in words (one per method, say); a kind of line's style
+    is "drawn" or "off" by default."""
     if shown:
         shown = shown.replace("%", "%%")
+    elif param.get("kind") == "style":
+        shown = "off" if param.get("default") in (None, False) else "drawn"
     elif param.get("kind") == "float" and isinstance(param.get("default"), float):
         shown = "%(default)g"
     else:
