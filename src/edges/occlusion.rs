@@ -118,17 +118,17 @@ impl<'a> Occluders<'a> {
     }
 
     /// The runs of the polyline `points` (view coordinates, on mesh `item`) by occlusion, each
-    /// to `limit` at most: the occlusion is sampled `samples(a, b)` times along each segment
-    /// (`s`: the segment from point s; the caller's spacing on screen) and each change is
-    /// found by bisection. `traced`: the
-    /// line runs through faces (`TRACED_SLACK`).
+    /// to `limit` at most: the occlusion is sampled every `spacing` along the line as it is
+    /// seen (`lengths`: each segment's length on screen, in the unit of `spacing`; a segment
+    /// seen end on has none), at its ends too, and each change is found by bisection.
+    /// `traced`: the line runs through faces (`TRACED_SLACK`).
     pub fn runs(
         &self,
         points: &[DVec3],
         item: usize,
         traced: bool,
         limit: u32,
-        samples: impl Fn(usize) -> usize,
+        (lengths, spacing): (&[f64], f64),
     ) -> Vec<Run> {
         if points.len() < 2 {
             return Vec::new();
@@ -143,33 +143,47 @@ impl<'a> Occluders<'a> {
                 (item, TRACED_SLACK * around)
             })
         };
-        let at = |s: usize, t: f64| self.occlusion(points[s].lerp(points[s + 1], t), limit, own(s));
+        // the distance along the line on screen at each point
+        let mut along = Vec::with_capacity(n + 1);
+        along.push(0.0);
+        for l in &lengths[..n] {
+            along.push(along[along.len() - 1] + l.max(0.0));
+        }
+        let total = along[n];
+        // the segment and its parameter at a distance along the line
+        let place = |u: f64| -> (usize, f64) {
+            let s = along.partition_point(|&a| a <= u).clamp(1, n) - 1;
+            let l = along[s + 1] - along[s];
+            (s, if l > 0.0 { ((u - along[s]) / l).clamp(0.0, 1.0) } else { 1.0 })
+        };
+        let at = |u: f64| {
+            let (s, t) = place(u);
+            self.occlusion(points[s].lerp(points[s + 1], t), limit, own(s))
+        };
+        let k = (total / spacing).ceil().max(1.0) as usize;
         let mut runs = Vec::new();
         let mut start = (0usize, 0.0f64);
-        let mut before = at(0, 0.0);
-        for s in 0..n {
-            let k = samples(s).max(1);
-            let mut t_before = 0.0;
-            for j in 1..=k {
-                let t = j as f64 / k as f64;
-                let q = at(s, t);
-                if q != before {
-                    let (mut lo, mut hi) = (t_before, t);
-                    for _ in 0..BISECTIONS {
-                        let mid = 0.5 * (lo + hi);
-                        if at(s, mid) == before {
-                            lo = mid;
-                        } else {
-                            hi = mid;
-                        }
+        let mut before = at(0.0);
+        let mut u_before = 0.0;
+        for j in 1..=k {
+            let u = total * j as f64 / k as f64;
+            let q = at(u);
+            if q != before {
+                let (mut lo, mut hi) = (u_before, u);
+                for _ in 0..BISECTIONS {
+                    let mid = 0.5 * (lo + hi);
+                    if at(mid) == before {
+                        lo = mid;
+                    } else {
+                        hi = mid;
                     }
-                    let cut = (s, 0.5 * (lo + hi));
-                    runs.push(Run { occlusion: before, from: start, to: cut });
-                    start = cut;
-                    before = q;
                 }
-                t_before = t;
+                let cut = place(0.5 * (lo + hi));
+                runs.push(Run { occlusion: before, from: start, to: cut });
+                start = cut;
+                before = q;
             }
+            u_before = u;
         }
         runs.push(Run { occlusion: before, from: start, to: (n - 1, 1.0) });
         runs
@@ -192,15 +206,15 @@ mod tests {
         let sheet = Bvh::of_triangles(square(-10.0, 1.0));
         let occ = Occluders::new(vec![Surface { bvh: &sheet, from_view: DMat4::IDENTITY }], true, 0.1, 2.0);
         let under = [DVec3::new(-2.0, 0.0, -10.0001), DVec3::new(2.0, 0.0, -10.0001)];
-        let runs = occ.runs(&under, 1, false, 4, |_| 40);
+        let runs = occ.runs(&under, 1, false, 4, (&[4.0], 0.1));
         assert_eq!(runs.len(), 3, "{runs:?}");
         assert_eq!(runs.iter().map(|r| r.occlusion).collect::<Vec<_>>(), vec![0, 1, 0]);
         // the sheet's edges cut it at x = -1 and 1: a quarter and three quarters of the way
         assert!((runs[0].to.1 - 0.25).abs() < 1e-3 && (runs[1].to.1 - 0.75).abs() < 1e-3, "{runs:?}");
         // the sheet's own diagonal edge and a line on it: visible throughout
         let on = [DVec3::new(-1.0, -1.0, -10.0), DVec3::new(1.0, 1.0, -10.0)];
-        assert_eq!(occ.runs(&on, 0, false, 4, |_| 40).len(), 1);
-        assert_eq!(occ.runs(&on, 0, false, 4, |_| 40)[0].occlusion, 0);
+        assert_eq!(occ.runs(&on, 0, false, 4, (&[4.0], 0.1)).len(), 1);
+        assert_eq!(occ.runs(&on, 0, false, 4, (&[4.0], 0.1))[0].occlusion, 0);
         // two sheets above a point (perspective): two, counted once each across their diagonal
         let upper = Bvh::of_triangles(square(-5.0, 1.0));
         let two = Occluders::new(

@@ -9,7 +9,7 @@ use crate::render::effects::shadows::settings::Shadows;
 
 use crate::error::field;
 use crate::render::settings::declare::{declared_fields, value_field};
-use crate::render::settings::{named, not_here, required, Constructor, Described, Value};
+use crate::render::settings::{named, not_here, required, Constructor, Described};
 
 /// Most lights one scene may have (the shader's fixed-size array).
 pub const MAX_LIGHTS: usize = 8;

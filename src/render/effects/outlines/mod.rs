@@ -15,6 +15,7 @@ pub mod pen;
 pub mod projection;
 pub mod settings;
 pub mod shared_borders;
+pub mod silhouettes;
 pub mod stroke_width;
 pub mod strokes;
 pub mod visibility;
@@ -177,7 +178,7 @@ impl FrameEffect for OutlinesEffect {
                     .push(Box::new(intersection_lines::Intersections { found: Arc::clone(&found) }));
                 found
             });
-            steps.host_before.push(Box::new(mesh_lines::Silhouettes {
+            steps.host_before.push(Box::new(silhouettes::Silhouettes {
                 outlines: outlines.clone(),
                 view: Arc::clone(&view),
                 intersections,

@@ -17,7 +17,8 @@ use super::mesh_lines::{Chain, MeshLines};
 use super::projection::Projector;
 use super::settings::Outlines;
 
-/// Visibility is sampled every this many pixels along a line on screen, and bisected between.
+/// Visibility is sampled every this many pixels along a line on screen (whatever its
+/// segments' lengths), and bisected between.
 pub const SAMPLE_SPACING: f64 = 1.0;
 /// Pieces cut shorter than this many pixels are left out (a line grazing past an occluder's
 /// corner between two samples).
@@ -50,9 +51,9 @@ pub fn cut(
         let p = &projectors[item];
         let view: Vec<DVec3> =
             c.points.iter().map(|q| p.model_view.transform_point3(DVec3::from_array(*q))).collect();
-        let on_screen = |s: usize| p.project(c.points[s], c.points[s + 1], 0).map_or(0.0, |l| l.length());
-        let samples = |s: usize| (on_screen(s) / SAMPLE_SPACING).ceil() as usize;
-        let runs = occluders.runs(&view, item, c.traced, limit, samples);
+        let lengths: Vec<f64> =
+            c.points.windows(2).map(|w| p.project(w[0], w[1], 0).map_or(0.0, |l| l.length())).collect();
+        let runs = occluders.runs(&view, item, c.traced, limit, (&lengths, SAMPLE_SPACING));
         let whole = runs.len() == 1;
         runs.iter()
             .filter(|r| r.occlusion == 0 || (hidden && r.occlusion < limit))
