@@ -14,8 +14,8 @@ use crate::mesh::bvh::Bvh;
 /// Rays start this far (relative to the scene's size) from the point they test: the surfaces
 /// a line lies on meet its ray at the point itself, a rounding error away.
 pub const START: f64 = 1e-9;
-/// Halvings of a sample interval where the occlusion changes: a thousandth of it.
-const BISECTIONS: usize = 10;
+/// Halvings of a sample interval where the occlusion changes: to a 64th of it.
+const BISECTIONS: usize = 6;
 /// A line traced through faces (a smooth contour) lies on the interpolated surface, up to a
 /// face away from the faceted one, which may hide it near the point: its own mesh's surfaces
 /// within this many of the line's segment lengths of the point are passed over.

@@ -17,8 +17,9 @@ use super::mesh_lines::{Chain, MeshLines};
 use super::projection::Projector;
 use super::settings::Outlines;
 
-/// Visibility is sampled every this many pixels along a line on screen (whatever its
-/// segments' lengths), and bisected between.
+/// Visibility is sampled along a line on screen (whatever its segments' lengths) every line
+/// width, and at least every this many pixels, and bisected between: a hidden stretch shorter
+/// than the line is wide lies under the round ends of the ink on either side of it anyway.
 pub const SAMPLE_SPACING: f64 = 1.0;
 /// Pieces cut shorter than this many pixels are left out (a line grazing past an occluder's
 /// corner between two samples).
@@ -53,7 +54,8 @@ pub fn cut(
             c.points.iter().map(|q| p.model_view.transform_point3(DVec3::from_array(*q))).collect();
         let lengths: Vec<f64> =
             c.points.windows(2).map(|w| p.project(w[0], w[1], 0).map_or(0.0, |l| l.length())).collect();
-        let runs = occluders.runs(&view, item, c.traced, limit, (&lengths, SAMPLE_SPACING));
+        let width = outlines.styles[c.kind as usize].map_or(0.0, |s| s.width as f64);
+        let runs = occluders.runs(&view, item, c.traced, limit, (&lengths, width.max(SAMPLE_SPACING)));
         let whole = runs.len() == 1;
         runs.iter()
             .filter(|r| r.occlusion == 0 || (hidden && r.occlusion < limit))
