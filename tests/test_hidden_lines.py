@@ -141,3 +141,28 @@ def test_crossing_pipes_get_intersection_lines_in_the_picture_and_the_svg():
     assert "intersections" not in tm.render(*pipe(0), outlines="mesh", **kw).passes
     # the ink differs from the render without them only along the curves
     assert int(np.any(res.color != off.color, axis=-1).sum()) > 150
+
+
+@pytest.mark.parametrize("scale, offset", [(1e-3, 0.0), (1e4, 0.0), (1.0, 1e6)])
+def test_exactness_holds_at_any_scale_and_far_from_the_origin(scale, offset):
+    # the sheet and the beams (1 mm and 5 mm under it at scale 1) shrunk, grown or moved far
+    # away: nothing shows through, the sheet's own lines stay whole, the cube's hidden edges
+    # keep their length
+    moved = np.diag([scale, scale, scale, 1.0])
+    moved[:3, 3] = offset
+    sheet, *beams = [tm.Mesh(*m, normals="flat", transform=moved) for m in sheet_over_beams((0.001, 0.005))]
+    eye = np.array([0.3, 3.0, 0.6]) * scale + offset
+    cam = tm.Camera.look_at(eye, (offset, offset, offset), fov_y=45)
+    kw = dict(camera=cam, width=400, height=300, outputs=("outline", "lines"), outlines=tm.Outlines("mesh", hidden=True))
+    alone, under = tm.render([sheet], **kw), tm.render([sheet] + beams, **kw)
+    seen = lambda res: [p for p, k in zip(res.lines, res.line_kinds) if k != "hidden"]  # noqa: E731
+    assert np.isfinite(np.concatenate(under.lines)).all()
+    assert length(seen(under)) == pytest.approx(length(seen(alone)), abs=2.0)
+    assert length(seen(alone)) > 500
+    # the same drawing as at scale 1 at the origin
+    plain = [tm.Mesh(*sheet_over_beams((0.001, 0.005))[0], normals="flat")]
+    at_one = tm.render(plain, **dict(kw, camera=tm.Camera.look_at((0.3, 3.0, 0.6), (0, 0, 0), fov_y=45)))
+    assert length(seen(alone)) == pytest.approx(length(seen(at_one)), abs=1.0)
+    # the beams are there, behind the sheet: as hidden lines
+    hidden = [p for p, k in zip(under.lines, under.line_kinds) if k == "hidden"]
+    assert length(hidden) > length([p for p, k in zip(alone.lines, alone.line_kinds) if k == "hidden"]) + 500
