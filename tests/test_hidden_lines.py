@@ -141,6 +141,21 @@ def test_crossing_pipes_get_intersection_lines_in_the_picture_and_the_svg():
     assert "intersections" not in tm.render(*pipe(0), outlines="mesh", **kw).passes
     # the ink differs from the render without them only along the curves
     assert int(np.any(res.color != off.color, axis=-1).sum()) > 150
+    # one renderer, the pipes kept: the lines follow a pipe that moves (kept lines are keyed by
+    # the pipes' placement) and stay while only the camera does
+    r = tm.Renderer()
+    a, b = r.add_mesh(*pipe(0)), r.add_mesh(*pipe(1))
+    shifted = np.eye(4)
+    shifted[2, 3] = 0.5
+    views = {}
+    for name, transform, camera in (("first", None, cam), ("again", None, cam), ("moved", shifted, cam),
+                                    ("back", None, cam)):
+        out = r.render([tm.Mesh(a), tm.Mesh(b, transform=transform)], outlines="mesh",
+                       **dict(kw, camera=camera))
+        views[name] = [p for p, k in zip(out.lines, out.line_kinds) if k == "intersection"]
+    assert length(views["first"]) == pytest.approx(length(views["again"]), abs=1e-9)
+    assert length(views["back"]) == pytest.approx(length(views["first"]), abs=1e-9)
+    assert abs(length(views["moved"]) - length(views["first"])) > 5.0
 
 
 @pytest.mark.parametrize("scale, offset", [(1e-3, 0.0), (1e4, 0.0), (1.0, 1e6)])

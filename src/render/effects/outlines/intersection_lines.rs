@@ -14,9 +14,10 @@ use glam::DVec3;
 use crate::edges::intersections::{between, chain, Crossing};
 use crate::edges::outlines::LineKind;
 use crate::error::{Error, Result};
+use crate::render::gpu_mesh::HostMesh;
 use crate::render::graph::effect::{HostInputs, HostStep};
 use crate::render::graph::report::FrameReport;
-use crate::render::uniforms::model_view;
+use crate::render::uniforms::model_matrix;
 
 use super::mesh_lines::{Chain, MeshLines};
 
@@ -45,32 +46,31 @@ impl HostStep for Intersections {
             use rayon::prelude::*;
             lines.par_iter().zip(cx.records).map(|(l, r)| l.bvh(&r.host)).collect::<Vec<_>>()
         });
-        // each item's stored coordinates -> the view's (the camera cancels out between two)
-        let to_view: Vec<_> = items
-            .iter()
-            .zip(cx.records)
-            .map(|(item, rec)| model_view(item, &rec.gpu.placement, cx.cam))
-            .collect();
+        // each item's stored coordinates -> the world's: the camera plays no part, so a still
+        // scene's lines are found once (`MeshLines::crossings_with`)
+        let to_world: Vec<_> =
+            items.iter().zip(cx.records).map(|(item, rec)| model_matrix(item, &rec.gpu.placement)).collect();
         let mut found: Vec<Vec<Chain>> = vec![Vec::new(); items.len()];
         for i in 0..items.len() {
-            let from_view = to_view[i].inverse();
+            let from_world = to_world[i].inverse();
             for j in i + 1..items.len() {
-                let j_to_i = from_view * to_view[j];
-                let (a, b) = (&cx.records[i].host, &cx.records[j].host);
-                let corners = |h: &crate::render::gpu_mesh::HostMesh, f: u32| {
-                    h.faces[f as usize].map(|v| DVec3::from_array(h.positions[v as usize]))
+                let j_to_i = from_world * to_world[j];
+                let find = || {
+                    let (a, b) = (&cx.records[i].host, &cx.records[j].host);
+                    let crossings: Vec<Crossing> =
+                        crate::parallel::install(|| between(bvhs[i], bvhs[j], Some(&j_to_i)))
+                            .into_iter()
+                            .filter(|c| {
+                                let tb = corners(b, c.faces[1]).map(|p| j_to_i.transform_point3(p));
+                                !meets(c, &corners(a, c.faces[0]), &tb)
+                            })
+                            .collect();
+                    chain(&crossings)
                 };
-                let crossings: Vec<Crossing> =
-                    crate::parallel::install(|| between(bvhs[i], bvhs[j], Some(&j_to_i)))
-                        .into_iter()
-                        .filter(|c| {
-                            let tb = corners(b, c.faces[1]).map(|p| j_to_i.transform_point3(p));
-                            !meets(c, &corners(a, c.faces[0]), &tb)
-                        })
-                        .collect();
-                found[i].extend(chain(&crossings).into_iter().map(|points| Chain {
+                let lines = lines[i].crossings_with(&cx.records[j], &j_to_i, find);
+                found[i].extend(lines.iter().map(|points| Chain {
                     kind: LineKind::Intersection,
-                    points,
+                    points: points.clone(),
                     strength: Vec::new(),
                     traced: false,
                     occlusion: None,
@@ -79,6 +79,11 @@ impl HostStep for Intersections {
         }
         self.found.set(found).map_err(|_| Error::Internal("intersection lines found twice in a frame".into()))
     }
+}
+
+/// The corners of face `f` of `mesh`.
+fn corners(mesh: &HostMesh, f: u32) -> [DVec3; 3] {
+    mesh.faces[f as usize].map(|v| DVec3::from_array(mesh.positions[v as usize]))
 }
 
 /// Whether crossing `c` of triangles `ta` and `tb` (one frame) is where they only meet: a point,

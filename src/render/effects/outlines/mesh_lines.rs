@@ -6,7 +6,7 @@
 
 use std::collections::HashMap;
 use std::ops::Range;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock, Weak};
 
 use glam::{DMat4, DVec3};
 
@@ -46,6 +46,20 @@ pub struct MeshLines {
     /// The hierarchy of every face, in the stored coordinates: what exact visibility casts
     /// its rays against and intersection lines pair faces with.
     bvh: OnceLock<Bvh>,
+    /// The last few intersection lines found with other meshes (`crossings_with`).
+    crossings: Mutex<Vec<KeptCrossings>>,
+}
+
+/// Intersection lines kept beyond this many (other mesh, placement) pairs are forgotten, the
+/// oldest first.
+const KEPT_CROSSINGS: usize = 8;
+
+/// Intersection lines with another mesh placed by `other_to_self` (its stored coordinates into
+/// this mesh's, as bits: the camera plays no part), chained, in this mesh's stored coordinates.
+struct KeptCrossings {
+    other: Weak<MeshRecord>,
+    other_to_self: [u64; 16],
+    lines: Arc<Vec<Vec<[f64; 3]>>>,
 }
 
 /// Welding, then the bits of the crease angle, the shortest crease piece and the largest mean
@@ -76,6 +90,32 @@ impl MeshLines {
     /// The hierarchy of the mesh's faces (built on the first call, in parallel).
     pub fn bvh(&self, host: &HostMesh) -> &Bvh {
         self.bvh.get_or_init(|| crate::parallel::install(|| Bvh::build(&host.positions, &host.faces)))
+    }
+
+    /// The intersection lines with `other` placed by `other_to_self`, found by `find` the first
+    /// time (and again once forgotten: `KEPT_CROSSINGS`), so a still scene seen from many
+    /// views finds them once.
+    pub fn crossings_with(
+        &self,
+        other: &Arc<MeshRecord>,
+        other_to_self: &DMat4,
+        find: impl FnOnce() -> Vec<Vec<[f64; 3]>>,
+    ) -> Arc<Vec<Vec<[f64; 3]>>> {
+        let key = other_to_self.to_cols_array().map(f64::to_bits);
+        let mine = |k: &KeptCrossings| {
+            k.other_to_self == key && k.other.upgrade().is_some_and(|o| Arc::ptr_eq(&o, other))
+        };
+        if let Some(k) = self.crossings.lock().unwrap_or_else(|e| e.into_inner()).iter().find(|k| mine(k)) {
+            return k.lines.clone();
+        }
+        let lines = Arc::new(find());
+        let mut kept = self.crossings.lock().unwrap_or_else(|e| e.into_inner());
+        kept.retain(|k| k.other.strong_count() > 0);
+        if kept.len() >= KEPT_CROSSINGS {
+            kept.remove(0);
+        }
+        kept.push(KeptCrossings { other: Arc::downgrade(other), other_to_self: key, lines: lines.clone() });
+        lines
     }
 
     /// The index of the faces lines are found on (`faces`).
