@@ -18,7 +18,10 @@
 //!   other's plane at a vertex only (no segment has zero length).
 //! - Triangles with two corners at the same positions (an edge shared, by index or by position)
 //!   give nothing; a corner at the position of one of the other triangle's corners lies exactly
-//!   on its plane, so triangles touching only there give nothing either.
+//!   on its plane, so triangles touching only there give nothing either. Where the positions are
+//!   the same only to within rounding (meshes kept in coordinates of their own and moved into
+//!   one frame, a part stored as pieces), a segment within `SEAM` of their size of an edge of
+//!   each triangle is where they meet, not where they cross: nothing either.
 
 use std::collections::HashMap;
 
@@ -33,6 +36,9 @@ use crate::mesh::normals::DEGENERATE_RELATIVE_AREA;
 
 /// Rounding allowance of a corner's side of a plane, in units of the rounding of its terms.
 const SNAP: f64 = 32.0 * f64::EPSILON;
+/// A segment within this fraction of its triangles' longest edge of an edge of each is where
+/// they meet, not where they cross: rounding's room, well above it.
+pub const SEAM: f64 = 1e-7;
 
 /// One segment where face `faces[0]` of the first mesh meets face `faces[1]` of the second, in
 /// the first mesh's frame.
@@ -245,7 +251,29 @@ pub fn crossing(t: &[DVec3; 3], u: &[DVec3; 3]) -> Option<[[f64; 3]; 2]> {
     let (start, end) = (start.to_array(), end.to_array());
     // shorter than rounding: the cuts only touch (a few units in the last place long, where an
     // edge of one triangle crosses an edge of the other)
-    (start[axis] < end[axis] && near(start, end).is_none()).then_some([start, end])
+    let crosses = start[axis] < end[axis] && near(start, end).is_none();
+    (crosses && !only_meet(t, u, DVec3::from_array(start), DVec3::from_array(end))).then_some([start, end])
+}
+
+/// Whether the segment p-q of triangles `t` and `u` is where they only meet: along an edge of
+/// each (`SEAM`).
+fn only_meet(t: &[DVec3; 3], u: &[DVec3; 3], p: DVec3, q: DVec3) -> bool {
+    let longest = |t: &[DVec3; 3]| (0..3).map(|k| t[k].distance(t[(k + 1) % 3])).fold(0.0, f64::max);
+    let eps = SEAM * longest(t).max(longest(u));
+    let on_an_edge = |t: &[DVec3; 3]| {
+        (0..3).any(|k| {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            distance_to_segment(p, a, b) <= eps && distance_to_segment(q, a, b) <= eps
+        })
+    };
+    on_an_edge(t) && on_an_edge(u)
+}
+
+fn distance_to_segment(p: DVec3, a: DVec3, b: DVec3) -> f64 {
+    let ab = b - a;
+    let t =
+        if ab.length_squared() > 0.0 { ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
+    p.distance(a + ab * t)
 }
 
 /// A triangle's plane as the rule reads it.
@@ -338,6 +366,21 @@ fn lexicographic(a: DVec3, b: DVec3) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_seam_or_a_touch_within_rounding_is_no_crossing_and_a_triangle_through_another_is() {
+        let v = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
+        // two plates folded along x = 0 .. 1 (y = z = 0), the second a rounding away
+        let ta = [v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0), v(1.0, 1.0, 0.0)];
+        let tb = [v(0.0, 1e-17, 0.0), v(0.0, 0.0, -1.0), v(1.0, 0.0, 1e-17)];
+        assert!(only_meet(&ta, &tb, v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0)));
+        assert!(only_meet(&ta, &tb, v(0.5, 0.0, 0.0), v(0.5, 1e-18, 0.0)));
+        assert_eq!(crossing(&ta, &tb), None);
+        // a triangle through the middle of another: a crossing
+        let tc = [v(0.2, 0.5, -1.0), v(0.9, 0.5, -1.0), v(0.6, 0.5, 1.0)];
+        assert!(!only_meet(&ta, &tc, v(0.5, 0.5, 0.0), v(0.75, 0.5, 0.0)));
+        assert!(crossing(&ta, &tc).is_some());
+    }
 
     fn v(x: f64, y: f64, z: f64) -> DVec3 {
         DVec3::new(x, y, z)

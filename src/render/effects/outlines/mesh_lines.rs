@@ -92,6 +92,19 @@ impl MeshLines {
         self.bvh.get_or_init(|| crate::parallel::install(|| Bvh::build(&host.positions, &host.faces)))
     }
 
+    /// Every record's analysis with its hierarchy built (the meshes side by side, the first
+    /// time): what the exact rule and the intersection lines read with `bvh`.
+    pub fn with_hierarchies(records: &[Arc<MeshRecord>]) -> Vec<Arc<MeshLines>> {
+        use rayon::prelude::*;
+        let lines: Vec<Arc<MeshLines>> = records.iter().map(|r| MeshLines::of(r)).collect();
+        crate::parallel::install(|| {
+            lines.par_iter().zip(records).for_each(|(l, r)| {
+                l.bvh(&r.host);
+            })
+        });
+        lines
+    }
+
     /// The intersection lines with `other` placed by `other_to_self`, found by `find` the first
     /// time (and again once forgotten: `KEPT_CROSSINGS`), so a still scene seen from many
     /// views finds them once.
@@ -473,13 +486,17 @@ pub fn reference_depth(items: &[SceneItem], records: &[Arc<MeshRecord>], cam: &R
         let m = item.model_matrix();
         let c = m.transform_point3(sphere.center);
         // the transform's largest stretch bounds the sphere's radius in the world
-        let stretch =
-            [m.x_axis, m.y_axis, m.z_axis].iter().map(|a| a.truncate().length()).fold(0.0, f64::max);
+        let stretch = largest_stretch(&m);
         lo = lo.min(c - sphere.radius * stretch);
         hi = hi.max(c + sphere.radius * stretch);
     }
     let centre = (lo + hi) * 0.5;
     -(cam.normalized_view().transform_point3(centre)).z
+}
+
+/// The most the affine `m` lengthens a vector, bounded by its longest column.
+pub fn largest_stretch(m: &DMat4) -> f64 {
+    [m.x_axis, m.y_axis, m.z_axis].iter().map(|a| a.truncate().length()).fold(0.0, f64::max)
 }
 
 /// Every item's lines of the view of `cam`, with the borders between items resolved

@@ -13,7 +13,7 @@ use crate::error::Result;
 use crate::mesh::bvh::Bvh;
 use crate::render::mesh_record::MeshRecord;
 
-use super::mesh_lines::{Chain, MeshLines};
+use super::mesh_lines::{largest_stretch, Chain, MeshLines};
 use super::projection::Projector;
 use super::settings::Outlines;
 
@@ -37,10 +37,8 @@ pub fn cut(
 ) -> Result<Vec<Vec<Chain>>> {
     let hidden = outlines.draws_hidden();
     let limit = if hidden { outlines.max_occlusion.map_or(u32::MAX, |m| m.saturating_add(1)) } else { 1 };
-    let lines: Vec<Arc<MeshLines>> = records.iter().map(|r| MeshLines::of(r)).collect();
-    let bvhs: Vec<_> = crate::parallel::install(|| {
-        lines.par_iter().zip(records).map(|(l, r)| l.bvh(&r.host)).collect::<Vec<_>>()
-    });
+    let lines = MeshLines::with_hierarchies(records);
+    let bvhs: Vec<_> = lines.iter().zip(records).map(|(l, r)| l.bvh(&r.host)).collect();
     let surfaces = bvhs
         .iter()
         .zip(projectors)
@@ -57,8 +55,15 @@ pub fn cut(
         let width = outlines.styles[c.kind as usize].map_or(0.0, |s| s.width as f64);
         let runs = occluders.runs(&view, item, c.traced, limit, (&lengths, width.max(SAMPLE_SPACING)));
         let whole = runs.len() == 1;
+        // a run's length on screen, from the segments' (as `runs` measures along the line)
+        let mut along = vec![0.0];
+        for l in &lengths {
+            along.push(along[along.len() - 1] + l);
+        }
+        let at = |(s, t): (usize, f64)| along[s] + t * lengths[s];
         runs.iter()
             .filter(|r| r.occlusion == 0 || (hidden && r.occlusion < limit))
+            .filter(|r| whole || at(r.to) - at(r.from) >= MIN_PIECE)
             .map(|r| Chain {
                 kind: c.kind,
                 points: r.points(&c.points),
@@ -70,7 +75,6 @@ pub fn cut(
                 traced: c.traced,
                 occlusion: Some(r.occlusion),
             })
-            .filter(|piece| whole || screen_length(p, &piece.points) >= MIN_PIECE)
             .collect()
     };
     let out = crate::parallel::install(|| {
@@ -88,10 +92,6 @@ pub fn cut(
     Ok(out)
 }
 
-fn screen_length(p: &Projector, points: &[[f64; 3]]) -> f64 {
-    points.windows(2).map(|w| p.project(w[0], w[1], 0).map_or(0.0, |l| l.length())).sum()
-}
-
 /// The scene's size in view units: the largest diagonal of an item's box (its hierarchy's,
 /// in the stored coordinates, stretched by the map to the view).
 fn scene_size(bvhs: &[&Bvh], projectors: &[Projector]) -> f64 {
@@ -99,11 +99,8 @@ fn scene_size(bvhs: &[&Bvh], projectors: &[Projector]) -> f64 {
         .zip(projectors)
         .filter(|(b, _)| !b.is_empty())
         .map(|(b, p)| {
-            let m = p.model_view;
-            let stretch =
-                [m.x_axis, m.y_axis, m.z_axis].iter().map(|a| a.truncate().length()).fold(0.0, f64::max);
             let bounds = b.bounds();
-            (bounds.hi - bounds.lo).length() * stretch
+            (bounds.hi - bounds.lo).length() * largest_stretch(&p.model_view)
         })
         .fold(0.0, f64::max)
 }
