@@ -40,11 +40,14 @@ from toonmesh.rendering._render import (
 )
 
 from toonmesh.files._load import load
+from toonmesh.scene._points import Lines, Points
 from toonmesh.rendering._render import __all__ as _rendering
 from toonmesh.viewer import Viewer, ViewerClosedError
 
 __all__ = [
     *_rendering,
+    "Lines",
+    "Points",
     "Camera",
     "Dither",
     "Light",
