@@ -323,7 +323,11 @@ def test_load_refuses_what_is_not_a_mesh_file(tmp_path):
     points = tmp_path / "points.ply"
     points.write_text("ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
                       "property float z\nend_header\n0 0 0\n1 1 1\n")
-    with pytest.raises(ValueError, match="points.ply: no triangles in the file"):
+    (cloud,) = tm.load(str(points))  # points alone are points, not a refusal
+    assert isinstance(cloud, tm.Points) and cloud.positions.tolist() == [[0, 0, 0], [1, 1, 1]]
+    points.write_text("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+                      "property float z\nend_header\n")
+    with pytest.raises(ValueError, match=r"points.ply: no triangles in the file \(nor points or lines\)"):
         tm.load(str(points))
     bad = tmp_path / "bad.glb"
     bad.write_bytes(b"not a glb at all, really")

@@ -5,6 +5,8 @@
   their own, and read as triangles.
 - A sparse accessor of floats (positions, normals, ... some of whose values the file replaces),
   whose replacements trimesh ignores, is given its values in full, in that buffer.
+- Primitives of points and lines (modes 0 to 3), read by toonmesh
+  (:mod:`toonmesh.files._points_lines`), are left out: trimesh would misread or drop them.
 - A ``KHR_materials_pbrSpecularGlossiness`` material is drawn by its diffuse texture and
   factor, given to trimesh as the base colour (or by the base colour the file also carries).
 
@@ -24,19 +26,24 @@ import numpy as np
 from toonmesh.files._checks import gltf_accessor
 
 _FANS = 6
+#: The primitive modes of points and lines (POINTS, LINES, LINE_LOOP, LINE_STRIP).
+POINTS_AND_LINES = (0, 1, 2, 3)
 _FLOAT = 5126
 _SPEC_GLOSS = "KHR_materials_pbrSpecularGlossiness"
 
 
 def readable(path: str, doc: Dict[str, Any], data: bytes) -> Optional[bytes]:
-    """The file's bytes with its fans as triangles, its sparse float accessors in full and its
-    specular-glossiness materials as base colours, or None where it has none of them."""
+    """The file's bytes with its fans as triangles, its sparse float accessors in full, its
+    specular-glossiness materials as base colours and its points and lines left out, or None
+    where it has none of them."""
     fans = [(m, p) for m, mesh in enumerate(doc.get("meshes") or [])
             for p, primitive in enumerate(mesh.get("primitives") or []) if primitive.get("mode") == _FANS]
     glossy = [i for i, mat in enumerate(doc.get("materials") or []) if _SPEC_GLOSS in (mat.get("extensions") or {})]
     sparse = [i for i, a in enumerate(doc.get("accessors") or [])
               if isinstance(a, dict) and "sparse" in a and a.get("componentType") == _FLOAT]
-    if not fans and not glossy and not sparse:
+    read_here = any(p.get("mode", 4) in POINTS_AND_LINES for mesh in doc.get("meshes") or []
+                    for p in mesh.get("primitives") or [])
+    if not fans and not glossy and not sparse and not read_here:
         return None
     doc = copy.deepcopy(doc)
     buffers: Dict[int, Optional[bytes]] = {-1: data}
@@ -84,6 +91,9 @@ def readable(path: str, doc: Dict[str, Any], data: bytes) -> Optional[bytes]:
             primitive["indices"] = len(doc["accessors"]) - 1
             primitive["mode"] = 4
             blob += indices.tobytes()
+    for mesh in doc.get("meshes") or []:
+        if "primitives" in mesh:
+            mesh["primitives"] = [p for p in mesh["primitives"] if p.get("mode", 4) not in POINTS_AND_LINES]
     if blob:
         doc.setdefault("buffers", []).append(
             {"byteLength": len(blob), "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(blob)).decode()})

@@ -24,13 +24,17 @@ import numpy as np
 
 from toonmesh import _core
 from toonmesh.scene import _colors
-from toonmesh.files import _archives, _gltf, _ply, _polygons, _threemf
+from toonmesh.files import _archives, _gltf, _ply, _points_lines, _polygons, _threemf
 from toonmesh.files._checks import (
     MeshFileError, asset_path, check_gltf_shape, check_gltf_sizes, check_kind, check_obj, check_ply, file_bytes,
     gltf_colour_notes, gltf_document, gltf_file_notes, gltf_ignored, join_continued, obj_file_notes, obj_for_trimesh,
     ply_file_notes, ply_header, reading, unlike,
 )
+from toonmesh.scene._points import Lines, Points
 from toonmesh.scene._scene import Mesh, normal_mode
+
+#: Why a file of which nothing is drawn is refused.
+NOTHING_DRAWN = "no triangles in the file (nor points or lines)"
 
 #: The most mesh instances (scene nodes with geometry) one file or scene may place.
 MAX_INSTANCES = 65_536
@@ -83,7 +87,7 @@ class Surface:
     colors: Dict[str, Any] = field(default_factory=dict)
 
 
-def load(path: "str | os.PathLike[str] | Any", up: Optional[str] = None) -> List[Mesh]:
+def load(path: "str | os.PathLike[str] | Any", up: Optional[str] = None) -> "List[Mesh | Points | Lines]":
     """Reads a mesh file (or a ``trimesh.Scene`` already read) into a list of
     :class:`toonmesh.Mesh`, one per placed geometry, as :func:`toonmesh.render` takes them.
 
@@ -134,10 +138,13 @@ def load(path: "str | os.PathLike[str] | Any", up: Optional[str] = None) -> List
     if is_scene(path):
         return [_mesh_of(s, t, _core._up_axis(up) if up is not None else None) for s, t in scene_surfaces(path, "scene")]
     up = _core._up_axis(up) if up is not None else file_up_axis(path)
-    meshes = [_mesh_of(s, t, up) for s, t in read_surfaces(path)]
-    for m in meshes:
-        m.source = os.fspath(path)  # type: ignore[assignment]
-    return meshes
+    placed, others = _read_items(path, False, stacklevel=3)
+    items: List["Mesh | Points | Lines"] = [_mesh_of(s, t, up) for s, t in placed]
+    for item in others:
+        item.up = up
+    for item in items + others:
+        item.source = os.fspath(path)  # type: ignore[assignment]
+    return items + others
 
 
 def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
@@ -187,21 +194,38 @@ def read_surfaces(path: Any, *, keep_seams: bool = False) -> List[Tuple[Surface,
     normals; see :func:`load`. ``keep_seams``: read an OBJ with texture coordinates split per
     corner (each vertex one UV), as the file means them, even without a texture (one with
     normals is always read so). Warnings raised while reading (toonmesh's, trimesh's, NumPy's)
-    are given again naming the file."""
-    path = _path(path)
-    notes: List[Tuple[str, Type[Warning]]] = []
-    if _archives.kind(path):
-        placed = _read_archive(path, keep_seams, notes)
-    else:
-        placed = _read_file(path, path, keep_seams, notes)
-    for text, category in dict.fromkeys(notes):
-        warnings.warn(text, category, stacklevel=3)
+    are given again naming the file. A file of points or lines alone is refused (no triangles)."""
+    placed, others = _read_items(path, keep_seams, stacklevel=4)
+    if not placed:
+        held = ", ".join(f"{len(o):,} {'points' if isinstance(o, Points) else 'segments'}" for o in others[:3])
+        raise MeshFileError(f"{os.fspath(path)}: no triangles in the file (it holds {held})")
     return placed
 
 
+def read_items(path: Any, *, keep_seams: bool = False,
+               ) -> Tuple[List[Tuple[Surface, Optional[np.ndarray]]], List["Points | Lines"]]:
+    """:func:`read_surfaces` and the file's points and lines (:class:`toonmesh.Points` and
+    :class:`toonmesh.Lines`, each with its world transform; see :func:`load`). Raises
+    :class:`MeshFileError` where the file holds none of them."""
+    return _read_items(path, keep_seams, stacklevel=4)
+
+
+def _read_items(path: Any, keep_seams: bool, stacklevel: int,
+                ) -> Tuple[List[Tuple[Surface, Optional[np.ndarray]]], List["Points | Lines"]]:
+    path = _path(path)
+    notes: List[Tuple[str, Type[Warning]]] = []
+    if _archives.kind(path):
+        placed, others = _read_archive(path, keep_seams, notes)
+    else:
+        placed, others = _read_file(path, path, keep_seams, notes)
+    for text, category in dict.fromkeys(notes):
+        warnings.warn(text, category, stacklevel=stacklevel)
+    return placed, others
+
+
 def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, Type[Warning]]],
-               ) -> List[Tuple[Surface, Optional[np.ndarray]]]:
-    """:func:`read_surfaces` of one plain file; its warnings go to ``notes`` and its errors and
+               ) -> Tuple[List[Tuple[Surface, Optional[np.ndarray]]], List["Points | Lines"]]:
+    """:func:`read_items` of one plain file; its warnings go to ``notes`` and its errors and
     notes name it ``shown`` (a file in an archive: ``ARCHIVE:NAME``)."""
     ignored: List[str] = []
     said: List[str] = []
@@ -211,8 +235,10 @@ def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, T
         with warnings.catch_warnings(record=True) as caught, _quiet_trimesh_log(), reading():
             warnings.simplefilter("always")
             try:
-                scene, materials = _read(path, data, keep_seams, ignored, said)
-                placed = _placed(scene, path, ignored, materials)
+                scene, materials, others = _read(path, data, keep_seams, ignored, said)
+                placed = [] if scene is None else _placed(scene, path, ignored, materials, needed=not others)
+                if scene is None and not others:
+                    raise MeshFileError(f"{path}: {NOTHING_DRAWN}")
             except MeshFileError as exc:
                 if str(exc).endswith(("no triangles in the file", ")")) and not str(exc).endswith("claims)"):
                     raise MeshFileError(unlike(path, _suffix(path), data) or str(exc)) from None
@@ -221,7 +247,7 @@ def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, T
                 # a check tripped by a shape it does not expect: said in one line, not a traceback
                 raise MeshFileError(unlike(path, _suffix(path), data) or
                                     f"{path}: cannot read a mesh: the file is malformed") from None
-            geometries = _geometries(scene)
+            geometries = _geometries(scene) if scene is not None else {}
             for surface in {id(s): s for s, _ in placed}.values():
                 surface.normals = _file_normals(geometries.get(surface.name), surface, path)
     except MeshFileError as exc:
@@ -237,22 +263,25 @@ def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, T
         notes.append((text if text.startswith(shown) else f"{shown}: {text}", w.category))
     if ignored:
         notes.append((f"{shown}: not drawn: {', '.join(dict.fromkeys(ignored))}", UserWarning))
-    return placed
+    return placed, others
 
 
 def _read_archive(path: str, keep_seams: bool, notes: List[Tuple[str, Type[Warning]]],
-                  ) -> List[Tuple[Surface, Optional[np.ndarray]]]:
+                  ) -> Tuple[List[Tuple[Surface, Optional[np.ndarray]]], List["Points | Lines"]]:
     """Every mesh file in a zip or tar archive or compressed file, each read as the plain file."""
     formats = set(trimesh_module().available_formats())
     placed: List[Tuple[Surface, Optional[np.ndarray]]] = []
+    others: List["Points | Lines"] = []
     with _archives.unpacked(path) as (folder, names):
         meshes = [n for n in names if not _archives.kind(n) and os.path.splitext(n)[1].lower().lstrip(".") in formats]
         if not meshes:
             held = ", ".join(names[:8]) + (", ..." if len(names) > 8 else "") if names else "nothing"
             raise MeshFileError(f"{path}: no mesh file inside (it holds {held})")
         for name in meshes:
-            placed += _read_file(os.path.join(folder, name), f"{path}:{name}", keep_seams, notes)
-    return placed
+            more, also = _read_file(os.path.join(folder, name), f"{path}:{name}", keep_seams, notes)
+            placed += more
+            others += also
+    return placed, others
 
 
 def scene_surfaces(scene: Any, source: str = "scene") -> List[Tuple[Surface, Optional[np.ndarray]]]:
@@ -336,16 +365,21 @@ def _path(path: Any) -> str:
     return path
 
 
-def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: List[str]) -> Tuple[Any, bool]:
-    """The file (its bytes ``data``, read once) as trimesh reads it (a Trimesh, Scene or
-    PointCloud), after the pre-scans, and whether its materials are the file's (an OBJ without
-    an MTL gets trimesh's placeholder). What the pre-scans find and does not stop the reading
-    goes to ``said``."""
+def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: List[str],
+          ) -> Tuple[Any, bool, List["Points | Lines"]]:
+    """The file (its bytes ``data``, read once) as trimesh reads it (a Trimesh or Scene; None
+    for a file of points or lines alone), after the pre-scans; whether its materials are the
+    file's (an OBJ without an MTL gets trimesh's placeholder); and its points and lines, read
+    by toonmesh (:mod:`toonmesh.files._points_lines`). What the pre-scans find and does not
+    stop the reading goes to ``said``."""
     trimesh = trimesh_module()
     suffix = os.path.splitext(path)[1].lower()
     check_kind(path, suffix, data)
     extra: Dict[str, Any] = {}
     materials = True
+    others: List["Points | Lines"] = []
+    if suffix == ".xyz":  # points alone, one a row
+        return None, materials, _points_lines.xyz_items(path, data)
     if suffix == ".obj":
         data = join_continued(data)  # statements continued over lines (a backslash at the end)
         counts = check_obj(path, data)
@@ -355,7 +389,11 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         notes, textured = obj_file_notes(path, data)
         said += counts["notes"] + notes
         if "mesh" in counts:  # positions and triangles alone: the checks' scan read them (trimesh read them again)
-            return trimesh.Trimesh(*counts["mesh"], process=False), False
+            return trimesh.Trimesh(*counts["mesh"], process=False), False, others
+        if not counts["faces"] or _points_lines.obj_has_points_or_lines(data):
+            others = _points_lines.obj_items(path, data, counts["faces"])
+            if not counts["faces"]:
+                return None, False, others
         if counts["negative"] or counts["drop"] or counts["comments"]:
             data = obj_for_trimesh(data, counts["drop"])
         if counts["polygons"]:  # trimesh splits each as a fan: a concave one is split by ear clipping
@@ -372,15 +410,17 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         said += ply_file_notes(path, header) + _ply.colour_notes(path, header, data)
         if _ply.has_strips(header):  # trimesh reads strips as points, or not at all
             V, F, colors = _ply.read(path, header, data)
-            return trimesh.Trimesh(V, F, vertex_colors=colors, process=False), materials
+            return trimesh.Trimesh(V, F, vertex_colors=colors, process=False), materials, others
+        if _points_lines.ply_drawn_as_points(header):  # no faces: points (or edges), read here
+            return None, materials, _points_lines.ply_items(path, header, data)
     if suffix == ".3mf":  # the production extension's parts, which trimesh places wrong: read here
         produced = _threemf.read(path, data)
         if produced is not None:
-            return _threemf_scene(trimesh, *produced), materials
+            return _threemf_scene(trimesh, *produced), materials, others
     if suffix == ".off":  # read once, here, as trimesh reads it; a concave polygon by ear clipping
         mesh = _polygons.off_mesh(trimesh.util.comment_strip(trimesh.util.decode_text(data)))
         if mesh is not None:
-            return trimesh.Trimesh(*mesh, process=False), materials
+            return trimesh.Trimesh(*mesh, process=False), materials, others
     doc = gltf_document(path, data) if suffix in (".glb", ".gltf") else None
     if doc is not None:
         check_gltf_shape(path, doc)
@@ -389,7 +429,11 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         check_gltf_sizes(path, doc, data)
         said += gltf_colour_notes(path, doc, data)
         ignored.extend(gltf_ignored(doc))
-        data = _gltf.readable(path, doc, data) or data  # fans as triangles, specular-glossiness as base colour
+        others = _points_lines.gltf_items(path, doc, data)  # points and lines, read here
+        if others and not _points_lines.gltf_has_triangles(doc):
+            return None, materials, others
+        # fans as triangles, specular-glossiness as base colour, points and lines left out
+        data = _gltf.readable(path, doc, data) or data
     try:
         loaded = trimesh.load(io.BytesIO(data), file_type=suffix[1:], process=False, resolver=_Beside(trimesh, path),
                               **extra)
@@ -408,7 +452,7 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         loaded.merge_vertices()  # an STL stores every corner apart: connect the surface
     if suffix == ".ply" and getattr(loaded, "faces", None) is not None:
         _split_concave(loaded, data, header, path)
-    return loaded, materials
+    return loaded, materials, others
 
 
 def _threemf_scene(trimesh: Any, geometries: Dict[Any, Tuple[str, np.ndarray, np.ndarray]],
@@ -537,12 +581,15 @@ def _check_gltf_counts(path: str, doc: Dict[str, Any]) -> None:
             raise MeshFileError(f"{path}: {n:,} {key}; toonmesh reads at most {MAX_MATERIALS:,} materials a file")
 
 
-def _placed(loaded: Any, source: str, ignored: List[str], materials: bool = True,
+def _placed(loaded: Any, source: str, ignored: List[str], materials: bool = True, needed: bool = True,
             ) -> List[Tuple[Surface, Optional[np.ndarray]]]:
-    """Every drawn geometry with its world transform; one Surface per geometry, shared."""
+    """Every drawn geometry with its world transform; one Surface per geometry, shared. A scene
+    without one is refused unless ``needed`` is False (the file has points or lines)."""
     if not hasattr(loaded, "graph"):  # a single mesh (or point cloud)
         surface = _surface(loaded, source, "", ignored, materials)
         if surface is None:
+            if not needed:
+                return []
             raise MeshFileError(f"{source}: no triangles in the file")
         return [(surface, None)]
     nodes = list(loaded.graph.nodes_geometry)
@@ -563,7 +610,7 @@ def _placed(loaded: Any, source: str, ignored: List[str], materials: bool = True
         surface = surfaces[name]
         if surface is not None:
             out.append((surface, np.asarray(transform, dtype=np.float64)))
-    if not out:
+    if not out and needed:
         raise MeshFileError(f"{source}: no triangles in the file")
     return out
 
