@@ -3,8 +3,9 @@
 The corpus of the tests (``tests/data/corpus``): mesh files from trimesh's own test suite, many
 of them deliberately odd (comments, negative indices, no indices, nested nodes, a concave
 polygon, a binary PLY, mixed-case suffixes), each drawn with the defaults, side by side and
-named; the files refused (empty ones, points only, a face of 2 corners) are listed below the
-pictures with their one-line reasons, as ``tm.load`` gives them. Needs trimesh (and, for 3MF,
+named (point clouds and line files among them); the files refused (empty ones, a face of 2
+corners) are listed below the pictures with their one-line reasons, as ``tm.load`` (or the
+render) gives them. Needs trimesh (and, for 3MF,
 networkx and lxml: ``pip install 'toonmesh[io]'``).
 """
 
@@ -29,10 +30,11 @@ def main() -> None:
             warnings.simplefilter("ignore")  # each file's warnings are the tests' business
             try:
                 tm.load(str(path))
+                image = Image.fromarray(tm.render(str(path), width=TILE, height=TILE, supersample=2).color)
             except (ValueError, ImportError) as exc:
                 refused.append(str(exc).replace(str(path.parent) + "/", ""))
                 continue
-            image = Image.fromarray(tm.render(str(path), width=TILE, height=TILE, supersample=2).color).convert("RGB")
+            image = image.convert("RGB")
         ImageDraw.Draw(image).text((4, TILE - 14), path.name[:24], fill=(0, 0, 0))
         tiles.append(np.asarray(image))
     rows = -(-len(tiles) // COLUMNS)

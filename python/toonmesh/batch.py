@@ -53,6 +53,9 @@ def _prepared(meshes: List[Mesh], normals: Normals, method: str, iterations: int
     smoothed: Dict[Tuple[int, int], np.ndarray] = {}
     out = []
     for m in meshes:
+        if not isinstance(m, Mesh):  # points and lines: drawn as read
+            out.append(m)
+            continue
         m = copy.copy(m)
         assert m.vertices is not None and m.faces is not None  # read from a file: arrays, not a MeshHandle
         if normals is not None:
