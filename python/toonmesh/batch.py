@@ -46,10 +46,10 @@ def _smoothed(V: np.ndarray, F: np.ndarray, method: str, iterations: int) -> np.
     return getattr(smooth, method)(V, F, iterations=iterations)  # type: ignore[no-any-return]
 
 
-def _prepared(meshes: List[Mesh], normals: Normals, method: str, iterations: int) -> List[Mesh]:
+def _prepared(meshes: List[Any], normals: Normals, method: str, iterations: int) -> List[Any]:
     """The file's meshes in ``normals`` (None: their own, else the default), smoothed by
     ``method`` (once per geometry: its instances share the smoothed arrays, and so one upload).
-    "paper" is left to the upload."""
+    "paper" is left to the upload. Its points and lines are kept as read."""
     smoothed: Dict[Tuple[int, int], np.ndarray] = {}
     out = []
     for m in meshes:

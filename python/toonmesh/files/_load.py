@@ -89,7 +89,14 @@ class Surface:
 
 def load(path: "str | os.PathLike[str] | Any", up: Optional[str] = None) -> "List[Mesh | Points | Lines]":
     """Reads a mesh file (or a ``trimesh.Scene`` already read) into a list of
-    :class:`toonmesh.Mesh`, one per placed geometry, as :func:`toonmesh.render` takes them.
+    :class:`toonmesh.Mesh`, one per placed geometry, as :func:`toonmesh.render` takes them,
+    followed by the file's points and lines as :class:`toonmesh.Points` and
+    :class:`toonmesh.Lines` (read by toonmesh, :mod:`toonmesh.files._points_lines`: a PLY
+    without faces, with ``nx ny nz`` normals and ``red green blue [alpha]`` colours, and its
+    ``edge`` element; OBJ ``l`` polylines and ``p`` points, or the ``v`` lines of an OBJ without
+    faces, with ``v x y z r g b`` colours and one ``vn`` per point; ``.xyz`` rows; glTF
+    primitives of modes POINTS, LINES, LINE_LOOP and LINE_STRIP), each with its world
+    ``transform``, the file as ``source``, its ``name`` and ``up`` as meshes get them.
 
     Formats: OBJ (with its MTL: diffuse colour ``Kd`` and texture ``map_Kd``), PLY (vertex and
     face colours; faces and triangle strips), STL, OFF, GLB and glTF (node transforms, mesh
@@ -123,15 +130,17 @@ def load(path: "str | os.PathLike[str] | Any", up: Optional[str] = None) -> "Lis
             (the render's default, y) for other formats.
 
     Returns:
-        A list of :class:`toonmesh.Mesh` (never empty).
+        A list of :class:`toonmesh.Mesh`, then :class:`toonmesh.Points` and
+        :class:`toonmesh.Lines` (never empty; a file of points or lines alone gives no mesh).
 
     Raises:
         TypeError: ``path`` is not a str or os.PathLike.
         FileNotFoundError: no such file. IsADirectoryError: ``path`` is a folder.
         ImportError: trimesh is not installed.
-        ValueError: the file cannot be read as triangles, naming the file and what is wrong
-            (1-based line numbers in OBJ, 1-based vertices when not finite, element counts in
-            PLY, a glTF buffer file that is not there with the path tried); or it places more
+        ValueError: the file cannot be read, naming the file and what is wrong (1-based line
+            numbers in OBJ and .xyz, 1-based vertices when not finite, element counts and
+            1-based edges in PLY, the mesh and primitive of a glTF, a glTF buffer file that is
+            not there with the path tried); it holds no triangles, points or lines; or it places more
             than :data:`MAX_INSTANCES` meshes or uses more than :data:`MAX_MATERIALS`
             materials; ``up`` is not an axis name.
     """
@@ -140,11 +149,12 @@ def load(path: "str | os.PathLike[str] | Any", up: Optional[str] = None) -> "Lis
     up = _core._up_axis(up) if up is not None else file_up_axis(path)
     placed, others = _read_items(path, False, stacklevel=3)
     items: List["Mesh | Points | Lines"] = [_mesh_of(s, t, up) for s, t in placed]
-    for item in others:
-        item.up = up
-    for item in items + others:
+    for other in others:
+        other.up = up
+    items += others
+    for item in items:
         item.source = os.fspath(path)  # type: ignore[assignment]
-    return items + others
+    return items
 
 
 def read_mesh(path: str) -> Tuple[np.ndarray, np.ndarray]:
