@@ -367,3 +367,17 @@ def test_a_gltf_with_triangles_and_points_gives_both_without_a_warning(tmp_path)
         warnings.simplefilter("error")  # no "not drawn: points"
         items = tm.load(path)
     assert kinds(items) == ["Mesh", "Points"] and len(items[0].faces) == 1 and len(items[1]) == 4
+
+
+def test_a_gltf_material_colours_its_lines_and_points(tmp_path):
+    need("trimesh")
+    path = gltf(tmp_path / "m.gltf", [{"attributes": {"POSITION": 0}, "mode": 3, "material": 0},
+                                      {"attributes": {"POSITION": 0}, "mode": 0, "material": 0}], [{"mesh": 0}],
+                [(XYZ, 5126, "VEC3", False)])
+    doc = json.loads(Path(path).read_text())
+    doc["materials"] = [{"pbrMetallicRoughness": {"baseColorFactor": [1.0, 0.214041, 0.0, 1.0]}}]
+    Path(path).write_text(json.dumps(doc))
+    lines, points = tm.load(path, up="z")
+    assert np.allclose(lines.color, (1.0, 0.5, 0.0), atol=1e-3)  # linear 0.214 is sRGB 0.5, as a mesh's base colour
+    assert np.allclose(points.colors, [(1.0, 0.5, 0.0)] * 4, atol=1e-3)
+    assert lines.up == points.up == "z"

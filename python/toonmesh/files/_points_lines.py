@@ -360,6 +360,10 @@ def _primitive(path: str, doc: Dict[str, Any], m: int, p: int, buffers: Dict[int
             colors = np.clip(np.nan_to_num(read(attributes["COLOR_0"], "colours")), 0, 1)[chosen]
             # taken as the codes they are, as a mesh's vertex colours are
             colors = np.ascontiguousarray(colors) if colors.shape[1] in (3, 4) else None
+        base = _base_colour(doc, primitive)
+        if base is not None:  # multiplies the points' colours, as a mesh's base colour does
+            colors = np.ones((len(chosen), 3)) if colors is None else colors
+            colors[:, :3] *= base
         return points_item(path, V[chosen], normals, colors, name, f" ({where})")
     if mode == LINES:
         if len(order) % 2:
@@ -372,7 +376,22 @@ def _primitive(path: str, doc: Dict[str, Any], m: int, p: int, buffers: Dict[int
         segments = np.stack([ends[:-1], ends[1:]], axis=1)
     if not len(segments):
         return None
-    return lines_item(V, segments, name)
+    lines = lines_item(V, segments, name)
+    base = _base_colour(doc, primitive)
+    if base is not None:  # the material's colour is the ink's
+        lines.color = tuple(float(c) for c in base)
+    return lines
+
+
+def _base_colour(doc: Dict[str, Any], primitive: Dict[str, Any]) -> Optional[np.ndarray]:
+    """The sRGB (3,) colour of a primitive's material (its ``baseColorFactor``, linear light, as
+    drawn), or None where it names none."""
+    try:
+        factor = doc["materials"][primitive["material"]]["pbrMetallicRoughness"]["baseColorFactor"]
+    except (LookupError, TypeError):
+        return None
+    rgb = np.clip(np.asarray(factor, dtype=np.float64)[:3], 0, 1)
+    return np.clip(_core._srgb_from_linear(np.ascontiguousarray(rgb)).reshape(3), 0, 1)
 
 
 def node_transforms(doc: Dict[str, Any]) -> List[Tuple[int, np.ndarray]]:
