@@ -381,3 +381,20 @@ def test_a_gltf_material_colours_its_lines_and_points(tmp_path):
     assert np.allclose(lines.color, (1.0, 0.5, 0.0), atol=1e-3)  # linear 0.214 is sRGB 0.5, as a mesh's base colour
     assert np.allclose(points.colors, [(1.0, 0.5, 0.0)] * 4, atol=1e-3)
     assert lines.up == points.up == "z"
+
+
+def test_points_and_lines_in_an_archive(tmp_path):
+    need("trimesh")
+    import zipfile
+
+    path = tmp_path / "scan.zip"
+    with zipfile.ZipFile(path, "w") as z:
+        z.writestr("cloud.xyz", "0 0 0\n1 1 1\n")
+        z.writestr("wire.obj", SQUARE + "l 1 2 3 4 1\n")
+    items = tm.load(path)
+    assert sorted(kinds(items)) == ["Lines", "Points"] and all(i.source == str(path) for i in items)
+    assert len(next(i for i in items if isinstance(i, tm.Lines))) == 4
+    with zipfile.ZipFile(path, "w") as z:
+        z.writestr("cloud.xyz", "0 0 0\n1 1\n")
+    with pytest.raises(ValueError, match=r"scan\.zip:cloud\.xyz: line 2: 2 numbers"):  # named inside the archive
+        tm.load(path)
