@@ -87,13 +87,13 @@ def _ascii_element(words: List[bytes], pos: int, count: int,
                    props: List[Tuple[str, ...]]) -> Tuple[Dict[str, Any], int]:
     """The element's values from ``words[pos:]``, and where the next element starts: numbers
     converted by NumPy a block at a time, as ``float()`` and ``int()`` read them (list counts
-    and items are integers)."""
+    and items are integers); an element of fixed rows as float64 arrays, one per property."""
     if all(p[0] != "list" for p in props):  # fixed rows: one block
         block = words[pos : pos + count * len(props)]
         if len(block) < count * len(props):
             raise ValueError("cut off")
         rows = np.array(block or [b"0"]).astype(np.float64)[: len(block)].reshape(count, len(props))
-        return {p[-1]: rows[:, i].tolist() for i, p in enumerate(props)}, pos + len(block)
+        return {p[-1]: rows[:, i] for i, p in enumerate(props)}, pos + len(block)
     out: Dict[str, List[Any]] = {p[-1]: [] for p in props}
     for _ in range(count):
         for p in props:

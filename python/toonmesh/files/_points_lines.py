@@ -214,38 +214,22 @@ def xyz_items(path: str, data: bytes) -> List[Item]:
     6 ``x y z nx ny nz`` where every row's last three are a unit vector (within 1%), else
     ``x y z r g b``; 7 ``x y z r g b a``; 9 ``x y z nx ny nz r g b``; 10 ``x y z nx ny nz r g b
     a``. Colours are floats in [0, 1] where none is above 1, else 0 to 255 codes."""
-    rows: List[List[bytes]] = []
-    lines: List[int] = []
-    for number, raw in enumerate(data.split(b"\n"), start=1):
-        text = raw.strip()
-        if not text or text.startswith((b"#", b"//")):
-            continue
-        words = text.replace(b",", b" ").split()
-        if rows and len(words) != len(rows[0]):
-            raise MeshFileError(f"{path}: line {number}: {len(words)} numbers, but the rows before have "
-                                f"{len(rows[0])}")
-        rows.append(words)
-        lines.append(number)
-    if not rows:
+    values = _xyz_at_once(data)
+    lines: Optional[np.ndarray] = None
+    if values is None:
+        values, lines = _xyz_by_line(path, data)
+    if not len(values):
         return []
-    width = len(rows[0])
+    width = values.shape[1]
     if width not in (3, 4, 6, 7, 9, 10):
-        raise MeshFileError(f"{path}: line {lines[0]}: {width} numbers a row; an .xyz row has 3 (x y z), 4 (and "
+        first = 1 if lines is None else int(lines[0])
+        raise MeshFileError(f"{path}: line {first}: {width} numbers a row; an .xyz row has 3 (x y z), 4 (and "
                             "intensity), 6 (and normals or r g b), 7 (and r g b a), 9 or 10 (normals and colours)")
-    try:
-        values = np.array(rows, dtype=np.float64)
-    except ValueError:
-        for number, words in zip(lines, rows):
-            for w in words:
-                try:
-                    float(w)
-                except ValueError:
-                    raise MeshFileError(f"{path}: line {number}: not a number: "
-                                        f"{w[:30].decode('utf-8', 'replace')!r}") from None
-        raise
     bad = ~np.isfinite(values[:, :3]).all(axis=1)
     if bad.any():
         i = int(np.argmax(bad))
+        if lines is None:
+            lines = _xyz_by_line(path, data)[1]
         raise MeshFileError(f"{path}: line {lines[i]}: point {i + 1} is not finite: {values[i, :3].tolist()}")
     normals = colors = None
     if width == 6:
@@ -261,6 +245,65 @@ def xyz_items(path: str, data: bytes) -> List[Item]:
     if colors is not None:
         colors = _colour_codes(colors, False)
     return [points_item(path, values[:, :3], normals, colors)]
+
+
+#: The bytes that separate an .xyz row's numbers: blanks and commas.
+_SEPARATORS = np.zeros(256, bool)
+_SEPARATORS[list(b" \t\r\x0b\x0c,")] = True
+
+
+def _xyz_at_once(data: bytes) -> Optional[np.ndarray]:
+    """An .xyz file's (rows, numbers) float64 values, parsed by NumPy in one call, for a file
+    without comments whose rows all have as many numbers; None for any other (the line scan
+    then reads it and names the line that is wrong)."""
+    if b"#" in data or b"//" in data:
+        return None
+    raw = np.frombuffer(data, np.uint8)
+    newline = raw == ord("\n")
+    gap = _SEPARATORS[raw] | newline
+    starts = np.flatnonzero(~gap & np.concatenate([[True], gap[:-1]]))  # each number's first byte
+    per_line = np.bincount(np.cumsum(newline)[starts], minlength=1) if len(starts) else np.zeros(0, np.int64)
+    widths = per_line[per_line > 0]
+    if not len(widths):
+        return np.zeros((0, 3))
+    if np.any(widths != widths[0]):
+        return None
+    text = np.where(_SEPARATORS[raw], ord(" "), raw).astype(np.uint8).tobytes()
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # NumPy warns (later raises) where a word is not a number
+            values = np.fromstring(text, dtype=np.float64, sep=" ")
+    except (ValueError, DeprecationWarning):
+        return None
+    if len(values) != int(widths.sum()):
+        return None
+    return values.reshape(len(widths), int(widths[0]))
+
+
+def _xyz_by_line(path: str, data: bytes) -> Tuple[np.ndarray, np.ndarray]:
+    """An .xyz file's values and the 1-based line of each row, read a line at a time; the
+    first row that is wrong is named by its line."""
+    rows: List[List[bytes]] = []
+    lines: List[int] = []
+    for number, raw in enumerate(data.split(b"\n"), start=1):
+        text = raw.strip()
+        if not text or text.startswith((b"#", b"//")):
+            continue
+        words = text.replace(b",", b" ").split()
+        if rows and len(words) != len(rows[0]):
+            raise MeshFileError(f"{path}: line {number}: {len(words)} numbers, but the rows before have "
+                                f"{len(rows[0])}")
+        for w in words:
+            try:
+                float(w)
+            except ValueError:
+                raise MeshFileError(f"{path}: line {number}: not a number: "
+                                    f"{w[:30].decode('utf-8', 'replace')!r}") from None
+        rows.append(words)
+        lines.append(number)
+    if not rows:
+        return np.zeros((0, 3)), np.zeros(0, np.int64)
+    return np.array([[float(w) for w in r] for r in rows], dtype=np.float64), np.array(lines)
 
 
 # ------------------------------------------------------------------------------------------------
