@@ -188,7 +188,8 @@ def test_ply_edges_are_lines_and_checked(tmp_path):
 
 def test_a_ply_cut_short_or_not_finite_is_refused(tmp_path):
     need("trimesh")
-    path = ply_file(tmp_path / "nan.ply", "ascii", [(0, 0, 0), (1, float("nan"), 0)], POINT_PROPS[:2] + [("float", "z")])
+    xyz = POINT_PROPS[:2] + [("float", "z")]
+    path = ply_file(tmp_path / "nan.ply", "ascii", [(0, 0, 0), (1, float("nan"), 0)], xyz)
     with pytest.raises(ValueError, match=r"nan\.ply: vertex 2 is not finite"):
         tm.load(path)
     path = tmp_path / "cut.ply"

@@ -212,16 +212,11 @@ def read_surfaces(path: Any, *, keep_seams: bool = False) -> List[Tuple[Surface,
     return placed
 
 
-def read_items(path: Any, *, keep_seams: bool = False,
-               ) -> Tuple[List[Tuple[Surface, Optional[np.ndarray]]], List["Points | Lines"]]:
-    """:func:`read_surfaces` and the file's points and lines (:class:`toonmesh.Points` and
-    :class:`toonmesh.Lines`, each with its world transform; see :func:`load`). Raises
-    :class:`MeshFileError` where the file holds none of them."""
-    return _read_items(path, keep_seams, stacklevel=4)
-
-
 def _read_items(path: Any, keep_seams: bool, stacklevel: int,
                 ) -> Tuple[List[Tuple[Surface, Optional[np.ndarray]]], List["Points | Lines"]]:
+    """:func:`read_surfaces` and the file's points and lines (:class:`toonmesh.Points` and
+    :class:`toonmesh.Lines`, each with its world transform; see :func:`load`); refuses a file
+    that holds none of them. Its warnings are given ``stacklevel`` frames up."""
     path = _path(path)
     notes: List[Tuple[str, Type[Warning]]] = []
     if _archives.kind(path):
@@ -235,7 +230,7 @@ def _read_items(path: Any, keep_seams: bool, stacklevel: int,
 
 def _read_file(path: str, shown: str, keep_seams: bool, notes: List[Tuple[str, Type[Warning]]],
                ) -> Tuple[List[Tuple[Surface, Optional[np.ndarray]]], List["Points | Lines"]]:
-    """:func:`read_items` of one plain file; its warnings go to ``notes`` and its errors and
+    """:func:`_read_items` of one plain file; its warnings go to ``notes`` and its errors and
     notes name it ``shown`` (a file in an archive: ``ARCHIVE:NAME``)."""
     ignored: List[str] = []
     said: List[str] = []
