@@ -460,3 +460,14 @@ def test_the_default_smoothing_keeps_a_cad_part_and_a_large_move_is_named(tmp_pa
         assert 0.05 < share < most, (mesh, share)
     one_line_error(in_process(capsys, "smooth", src, "-o", str(tmp_path / "x.stl"), "--crease-angle", "200",
                               check=False), "--crease-angle", "180")
+
+
+def test_smooth_and_edges_of_points_or_lines_alone_say_so_in_one_line(tmp_path, capsys):
+    need("trimesh")
+    corpus = Path(__file__).resolve().parent / "data" / "corpus" / "trimesh"
+    cloud, wire = str(corpus / "points_agisoft.xyz"), str(corpus / "obj_wireframe.obj")
+    r = in_process(capsys, "smooth", cloud, "-o", str(tmp_path / "s.ply"), check=False)
+    one_line_error(r, "points_agisoft.xyz: no triangles in the file (it holds 100 points)")
+    r = in_process(capsys, "edges", wire, "-o", str(tmp_path / "e.svg"), check=False)
+    one_line_error(r, "obj_wireframe.obj: no triangles in the file (it holds 12 segments)")
+    assert not (tmp_path / "s.ply").exists() and not (tmp_path / "e.svg").exists()
