@@ -186,6 +186,17 @@ def test_ply_edges_are_lines_and_checked(tmp_path):
         tm.load(path)
 
 
+def test_a_ply_with_faces_and_edges_gives_a_mesh_and_lines(tmp_path):
+    need("trimesh")
+    path = tmp_path / "fe.ply"
+    path.write_text("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face 1\nproperty list uchar int vertex_indices\n"
+                    "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n"
+                    "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n0 3\n")
+    mesh, lines = tm.load(path)
+    assert len(mesh.faces) == 1 and segment_ends(lines) == {((0, 0, 0), (0, 0, 1))} and lines.up == "z"
+
+
 def test_a_ply_cut_short_or_not_finite_is_refused(tmp_path):
     need("trimesh")
     xyz = POINT_PROPS[:2] + [("float", "z")]
@@ -399,3 +410,19 @@ def test_points_and_lines_in_an_archive(tmp_path):
         z.writestr("cloud.xyz", "0 0 0\n1 1\n")
     with pytest.raises(ValueError, match=r"scan\.zip:cloud\.xyz: line 2: 2 numbers"):  # named inside the archive
         tm.load(path)
+
+
+def test_glb_lines_read_from_the_binary_chunk(tmp_path):
+    need("trimesh")
+    doc = json.loads(Path(gltf(tmp_path / "l.gltf", [{"attributes": {"POSITION": 0}, "mode": 2}],
+                               [{"mesh": 0, "matrix": [2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 1, 2, 3, 1]}],
+                               [(XYZ, 5126, "VEC3", False)])).read_text())
+    blob = base64.b64decode(doc["buffers"][0].pop("uri").split(",", 1)[1])
+    text = json.dumps(doc).encode()
+    text += b" " * (-len(text) % 4)
+    body = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(blob), 0x004E4942) + blob
+    path = tmp_path / "l.glb"
+    path.write_bytes(b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body)
+    (loop,) = tm.load(path)
+    assert len(loop) == 4 and np.allclose(loop.positions, XYZ)  # a closed loop of the 4 vertices
+    assert np.allclose(loop.transform, [[2, 0, 0, 1], [0, 2, 0, 2], [0, 0, 2, 3], [0, 0, 0, 1]])  # column-major

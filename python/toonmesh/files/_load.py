@@ -457,6 +457,8 @@ def _read(path: str, data: bytes, keep_seams: bool, ignored: List[str], said: Li
         loaded.merge_vertices()  # an STL stores every corner apart: connect the surface
     if suffix == ".ply" and getattr(loaded, "faces", None) is not None:
         _split_concave(loaded, data, header, path)
+    if header is not None and _points_lines.ply_has_edges(header):  # a mesh with edges of its own: lines too
+        others = _points_lines.ply_items(path, header, data, points=False)
     return loaded, materials, others
 
 

@@ -86,10 +86,16 @@ def ply_drawn_as_points(header: PlyHeader) -> bool:
     return not any(name in ("face", "tristrips") and count > 0 for name, count, _ in header.elements)
 
 
-def ply_items(path: str, header: PlyHeader, data: bytes) -> List[Item]:
-    """The points (vertices) and lines (``edge`` elements) of a PLY without faces."""
+def ply_has_edges(header: PlyHeader) -> bool:
+    """Whether a PLY declares edges (an ``edge`` element of 1 or more)."""
+    return any(name == "edge" and count > 0 for name, count, _ in header.elements)
+
+
+def ply_items(path: str, header: PlyHeader, data: bytes, points: bool = True) -> List[Item]:
+    """The lines (``edge`` elements, ``vertex1 vertex2``) of a PLY, and, where it has none and
+    ``points`` (a PLY without faces), its vertices as points."""
     counts = {name: count for name, count, _ in header.elements}
-    if not counts.get("vertex") and not counts.get("edge"):
+    if not counts.get("edge") and not (points and counts.get("vertex")):
         return []
     found = _ply.values(path, header, data)
     vertex = found.get("vertex", {})
@@ -111,7 +117,7 @@ def ply_items(path: str, header: PlyHeader, data: bytes) -> List[Item]:
                                 f"{segments[i].tolist()}")
         items.append(lines_item(V, segments))
         return items  # the vertices are the lines' ends, not points of their own
-    if not len(V):
+    if not len(V) or not points:
         return items
     normals = None
     if all(k in vertex for k in ("nx", "ny", "nz")):
