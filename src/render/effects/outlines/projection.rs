@@ -72,8 +72,13 @@ impl Projector {
         width: u32,
         height: u32,
     ) -> Self {
+        Projector { model_view: model_view(item, placement, cam), ..Projector::in_view(cam, width, height) }
+    }
+
+    /// Projects lines already in normalised view coordinates (`Lines` items').
+    pub fn in_view(cam: &ResolvedCamera, width: u32, height: u32) -> Self {
         Projector {
-            model_view: model_view(item, placement, cam),
+            model_view: DMat4::IDENTITY,
             proj: cam.normalized_proj(),
             width: width as f64,
             height: height as f64,
