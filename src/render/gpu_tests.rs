@@ -310,7 +310,9 @@ fn screen_lines(
     scene: &Scene,
     frame: &FrameSpec,
 ) -> (Vec<super::effects::outlines::projection::ScreenLine>, super::scene::camera::ResolvedCamera) {
-    use super::effects::outlines::mesh_lines::{chains, instances, reference_depth, scene_outlines};
+    use super::effects::outlines::mesh_lines::{
+        chains, instances, reference_depth, scene_outlines, set_chains,
+    };
     use super::effects::outlines::occluded::cut;
     use super::effects::outlines::projection::Projector;
     use super::effects::outlines::settings::VisibilityRule;
@@ -329,6 +331,13 @@ fn screen_lines(
         .collect();
     let mut found: Vec<_> =
         outlines_of.iter().zip(&p.records).map(|(o, rec)| chains(o, &rec.host.positions)).collect();
+    // the `Lines` items after the meshes, in view coordinates (their ink resolved by the check)
+    let checked = r.check(scene.clone(), *frame).unwrap();
+    found.extend(set_chains(&checked.scene.lines, &p.cam));
+    let projectors: Vec<Projector> = projectors
+        .into_iter()
+        .chain(scene.lines.iter().map(|_| Projector::in_view(&p.cam, frame.width, frame.height)))
+        .collect();
     if outlines.visibility == VisibilityRule::Exact {
         found = cut(found, &p.records, &projectors, p.cam.orthographic, outlines).unwrap();
     }
@@ -396,6 +405,65 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
             coverage_image(&lines, (&widths, &dashes), false, &img, Visibility { offset: 1e30, ..rule });
         let shown = all.iter().filter(|&&c| c > 0.0).count();
         assert!(shown > inked + 200, "{backend:?}: hidden-line removal hid only {} pixels", shown - inked);
+    }
+}
+
+#[test]
+fn lines_items_match_the_cpu_visibility_reference_on_both_backends() {
+    use super::effects::outlines::settings::{LineStyle, VisibilityRule, HIDDEN_KIND, INK_KINDS};
+    use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
+    use super::scene::lines::LineSet;
+    // a wire in front of the large sphere and behind the small one, and a bent one beside them
+    let wire = LineSet {
+        positions: vec![
+            [-1.5, 0.2, 1.1],
+            [1.5, 0.25, 1.1],
+            [0.4, -1.4, 0.0],
+            [1.4, -1.2, 0.5],
+            [1.6, 0.8, 0.5],
+        ],
+        segments: vec![[0, 1], [2, 3], [3, 4]],
+        transform: IDENTITY,
+        color: Some([1.0, 0.0, 0.0]),
+        width: Some(3.0),
+    };
+    let depth = Outlines { visibility: VisibilityRule::Depth, ..Outlines::new(true, false) };
+    let mut exact = Outlines::new(true, false);
+    exact.styles[HIDDEN_KIND] = Some(LineStyle::hidden(LineStyle::default()));
+    for (backend, outlines) in backends().into_iter().flat_map(|b| [(b, depth.clone()), (b, exact.clone())]) {
+        let r = open(backend).unwrap();
+        let scene = Scene { lines: vec![wire.clone()], ..two_spheres(&r, outlines.clone()) };
+        let frame = FrameSpec {
+            width: 240,
+            height: 180,
+            outputs: Outputs::of(&[Output::Outline, Output::Depth]),
+            ..Default::default()
+        };
+        let out = r.render(&scene, &frame).unwrap();
+        let (lines, cam) = screen_lines(&r, &scene, &frame);
+        let own: Vec<_> = lines.iter().filter(|l| l.own_width == Some(3.0)).copied().collect();
+        assert!(own.len() >= 3, "{backend:?}: {} of the wire's lines", own.len());
+        let depth: Vec<f32> =
+            out.floats(Output::Depth).unwrap().iter().map(|d| d / cam.scale as f32).collect();
+        let img = DepthImage { depth: &depth, width: 240, height: 180 };
+        let rule = Visibility::of(outlines.depth_offset, &cam, frame.height);
+        let widths: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.width)).collect();
+        let dashes: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.dash)).collect();
+        let want = coverage_image(&lines, (&widths, &dashes), false, &img, rule);
+        assert_coverage_close(out.floats(Output::Outline).unwrap(), &want, &format!("{backend:?}"));
+        // the small sphere hides part of the wire: less of its ink than with nothing in front
+        let wire_only = coverage_image(&own, (&widths, &dashes), false, &img, rule);
+        let unhidden =
+            coverage_image(&own, (&widths, &dashes), false, &img, Visibility { offset: 1e30, ..rule });
+        let count = |c: &[f32]| c.iter().filter(|&&c| c > 0.0).count();
+        if outlines.visibility == VisibilityRule::Exact {
+            // cut on the host: the hidden piece is drawn as a hidden line, in its own ink
+            assert!(own.iter().all(|l| l.exact), "{backend:?}");
+            assert!(lines.iter().any(|l| l.kind == HIDDEN_KIND && l.own_width.is_none()), "{backend:?}");
+            assert!(count(&wire_only) > 300, "{backend:?}: {}", count(&wire_only));
+        } else {
+            assert!(count(&unhidden) > count(&wire_only) + 20, "{backend:?}: the depth test hid nothing");
+        }
     }
 }
 

@@ -110,11 +110,11 @@ fn surface_depth(p: vec2<i32>) -> u32 {
 }
 
 // Whether the line point at pixel position `c` with depth `z` and kind `kind` is visible
-// (`own`: a `Lines` item's, never on a rim).
-fn visible(c: vec2<f32>, z: f32, kind: u32, own: bool) -> bool {
+// (`own_ink`: a `Lines` item's, never on a rim).
+fn visible(c: vec2<f32>, z: f32, kind: u32, own_ink: bool) -> bool {
     let size = vec2<i32>(textureDimensions(geometry));
     let q = vec2<i32>(floor(c));
-    let rim = ((RIM_KINDS >> kind) & 1u) == 1u && !own;
+    let rim = ((RIM_KINDS >> kind) & 1u) == 1u && !own_ink;
     let tolerance = frame.outlines.depth_offset * (z * frame.view.footprint.x + frame.view.footprint.y) + z * DEPTH_EPSILON;
     // the pixel itself usually decides: in front of (or on) its surface, the largest depth
     // around can only agree

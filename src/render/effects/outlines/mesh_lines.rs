@@ -20,9 +20,11 @@ use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
 use crate::mesh::back_to_back::without_back_to_back;
 use crate::mesh::bvh::Bvh;
+use crate::render::color::to_linear;
 use crate::render::gpu_mesh::{GpuMesh, HostMesh, NormalMode};
 use crate::render::mesh_record::MeshRecord;
 use crate::render::scene::camera::{direction_of, ResolvedCamera};
+use crate::render::scene::lines::LineSet;
 use crate::render::scene::SceneItem;
 
 use super::projection::{Projector, ScreenLine};
@@ -372,6 +374,7 @@ impl FrameLine {
             scale: l.scale.map(|x| x as f64),
             along: self.along.map(|x| x as f64),
             exact: l.flags & EXACT != 0,
+            own_width: (l.flags & OWN_INK != 0).then_some(self.ink[3] as f64),
             ..s
         })
     }
@@ -416,36 +419,42 @@ impl Chain {
 
     /// Its ink's width in pixels under `outlines` where it is visible.
     pub fn width(&self, outlines: &Outlines) -> f64 {
-        self.own.map_or_else(
-            || outlines.styles[self.kind as usize].map_or(0.0, |s| s.width as f64),
-            |o| o[3] as f64,
-        )
+        match self.own {
+            Some(_) => self.own_width(),
+            None => outlines.styles[self.kind as usize].map_or(0.0, |s| s.width as f64),
+        }
     }
 
     /// A `Lines` item's ink width in pixels (0 for a mesh's line).
-    pub fn width_where_visible(&self) -> f64 {
+    pub fn own_width(&self) -> f64 {
         self.own.map_or(0.0, |o| o[3] as f64)
     }
+}
 
-    /// The polylines of a `Lines` item placed by `model_view` (its coordinates to normalised
-    /// view ones), inked `ink`.
-    pub fn of_set(polylines: Vec<Vec<[f64; 3]>>, model_view: &DMat4, ink: [f32; 4]) -> Vec<Chain> {
-        polylines
-            .into_iter()
-            .map(|points| Chain {
-                // a kind off the rim: the line is held against surfaces only
-                kind: LineKind::Ridge,
-                points: points
-                    .iter()
-                    .map(|&p| model_view.transform_point3(DVec3::from_array(p)).to_array())
-                    .collect(),
-                strength: Vec::new(),
-                traced: false,
-                occlusion: None,
-                own: Some(ink),
-            })
-            .collect()
-    }
+/// Each `Lines` item's polylines seen by `cam` (in normalised view coordinates, as the lines
+/// pass draws them), in its ink (resolved when the scene was checked).
+pub fn set_chains(sets: &[LineSet], cam: &ResolvedCamera) -> Vec<Vec<Chain>> {
+    let view = cam.normalized_view();
+    sets.iter()
+        .map(|set| {
+            let ink = set.ink(None);
+            let [r, g, b] = to_linear(ink.color);
+            let model_view = view * set.model_matrix();
+            let seen = |p: &[f64; 3]| model_view.transform_point3(DVec3::from_array(*p)).to_array();
+            set.polylines()
+                .iter()
+                .map(|points| Chain {
+                    // a kind off the rim: the line is held against surfaces only
+                    kind: LineKind::Ridge,
+                    points: points.iter().map(seen).collect(),
+                    strength: Vec::new(),
+                    traced: false,
+                    occlusion: None,
+                    own: Some([r, g, b, ink.width]),
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// The lines of one view: each scene item's chains, as the lines pass draws them (instances and

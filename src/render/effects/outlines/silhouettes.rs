@@ -5,13 +5,12 @@
 //! as `item_lines`.
 
 use crate::error::Result;
-use crate::render::color::to_linear;
 use crate::render::graph::effect::{HostInputs, HostStep};
 use crate::render::graph::report::FrameReport;
 
 use super::intersection_lines::IntersectionSlot;
 use super::mesh_lines::{
-    chains, instances, reference_depth, scene_outlines, Chain, LineDraw, ViewLines, ViewSlot,
+    chains, instances, reference_depth, scene_outlines, set_chains, Chain, LineDraw, ViewLines, ViewSlot,
 };
 use super::occluded;
 use super::projection::Projector;
@@ -57,13 +56,9 @@ impl HostStep for Silhouettes {
             .zip(cx.records)
             .map(|(item, rec)| Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height))
             .collect();
-        // the `Lines` items' lines, in view coordinates (as the lines pass draws them)
-        let view = cx.cam.normalized_view();
-        for set in &cx.scene.scene.lines {
-            let ink = set.ink(None);
-            let c = to_linear(ink.color);
-            let own = [c[0], c[1], c[2], ink.width];
-            found.push(Chain::of_set(set.polylines(), &(view * set.model_matrix()), own));
+        // the `Lines` items' lines, in view coordinates
+        for set in set_chains(&cx.scene.scene.lines, cx.cam) {
+            found.push(set);
             projectors.push(Projector::in_view(cx.cam, frame.width, frame.height));
         }
         if self.outlines.visibility == VisibilityRule::Exact {

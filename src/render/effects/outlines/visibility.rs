@@ -81,9 +81,9 @@ pub fn dashed(along: f64, dash: f64) -> f64 {
     (dash / 2.0 + 0.5 - w.abs()).clamp(0.0, 1.0)
 }
 
-/// Ink coverage of every pixel by `lines` (widths and dash lengths in pixels per kind), 0 where
-/// hidden (lines decided on the host, `ScreenLine::exact`, are not tested): what the line pass
-/// writes into the outline output.
+/// Ink coverage of every pixel by `lines` (widths and dash lengths in pixels per kind; a
+/// `Lines` item's own width, solid), 0 where hidden (lines decided on the host,
+/// `ScreenLine::exact`, are not tested): what the line pass writes into the outline output.
 pub fn coverage_image(
     lines: &[ScreenLine],
     (widths, dashes): (&[f32], &[f32]),
@@ -94,7 +94,8 @@ pub fn coverage_image(
     let (w, h) = (img.width, img.height);
     let mut out = vec![0.0f32; w * h];
     for l in lines {
-        let width = widths[l.kind] as f64;
+        let width = l.own_width.unwrap_or(widths[l.kind] as f64);
+        let dash = if l.own_width.is_some() { 0.0 } else { dashes[l.kind] as f64 };
         let reach = width * l.scale[0].max(l.scale[1]) / 2.0 + 1.0;
         let x0 = (l.a[0].min(l.b[0]) - reach).floor().max(0.0) as usize;
         let y0 = (l.a[1].min(l.b[1]) - reach).floor().max(0.0) as usize;
@@ -113,7 +114,7 @@ pub fn coverage_image(
                 let (c, z) = l.at(t, orthographic);
                 let here = width * l.factor(t);
                 let cov = (here / 2.0 + 0.5 - (p[0] - c[0]).hypot(p[1] - c[1])).clamp(0.0, 1.0)
-                    * dashed(l.along_at(t), dashes[l.kind] as f64);
+                    * dashed(l.along_at(t), dash);
                 if cov > 0.0 && (l.exact || rule.visible(img, c, z, l.kind)) {
                     let o = &mut out[y * w + x];
                     *o = o.max(cov as f32);
@@ -263,7 +264,7 @@ impl HostStep for VisibleLines {
                         Some(ScreenLine { scale: line.line.scale.map(f64::from), exact, ..seen })
                     })
                     .collect();
-                let width = if kind == LINES_KIND { c.width_where_visible() } else { self.widths[kind] };
+                let width = if kind == LINES_KIND { c.own_width() } else { self.widths[kind] };
                 runs.extend(visible_runs(&screen, cx.cam.orthographic, &img, rule, width));
             }
             let strokes = match set {
@@ -278,7 +279,7 @@ impl HostStep for VisibleLines {
                 }
                 // the user's own lines are drawn whole: joined where they meet, never dropped
                 Some(_) => {
-                    let own = chains.first().map_or(0.0, Chain::width_where_visible);
+                    let own = chains.first().map_or(0.0, Chain::own_width);
                     let gap = |k: usize| if k == LINES_KIND { own.max(MIN_JOIN_GAP) } else { self.gaps[k] };
                     join_runs(runs, true, gap)
                 }
@@ -320,6 +321,7 @@ mod tests {
             scale: [1.0; 2],
             along: [0.0, 12.0],
             exact: false,
+            own_width: None,
         };
         let cov = coverage_image(&[line], (&[1.5], &[0.0]), false, &img, rule);
         assert_eq!(cov[8 * 16 + 8], 1.0);
