@@ -149,6 +149,11 @@ def test_a_scene_of_lines_alone_is_drawn_and_framed(backend):
         dark = res.color[ink][:, :3]
         assert dark.min() < 20
         assert np.allclose(res.line_widths[0], tm.LineStyle().width)
+    # beside a mesh at the origin, the fitted camera frames both
+    box = tm.Mesh(*slab((-1, -1, -1), (1, 1, 1)), normals="flat")
+    both = r.render([box, far], width=160, height=120, outputs=("color",))
+    corners = to_pixels(both, SQUARE + [100.0, 50.0, 0.0])
+    assert (corners >= 0).all() and (corners[:, 0] <= 160).all() and (corners[:, 1] <= 120).all()
     # no Lines item: no line step
     plain = r.render(None, width=64, height=64, outputs=("color",))
     assert "item_lines" not in plain.passes and "lines" not in plain.passes
