@@ -14,6 +14,7 @@ __all__ = [
     "HIGHLIGHTS",
     "IMAGE_OUTPUTS",
     "INK_KINDS",
+    "ITEM_INKS",
     "LINE_KINDS",
     "MODELS",
     "OUTLINE_KINDS",
@@ -85,6 +86,7 @@ OUTPUTS: Tuple[str, ...]
 IMAGE_OUTPUTS: Tuple[str, ...]
 LINE_KINDS: Tuple[str, ...]
 INK_KINDS: Tuple[str, ...]
+ITEM_INKS: Tuple[str, ...]
 OUTLINE_KINDS: Tuple[str, ...]
 CONTOUR_RULES: Tuple[str, ...]
 IMAGE_RULES: Tuple[str, ...]
@@ -690,7 +692,7 @@ class Renderer:
     ) -> Tuple[int, Any, List[str]]: ...
     def remove_mesh(self, mesh: int) -> bool: ...
     def render(
-        self, items: Any, options: RenderOptions, *cameras: Any
+        self, items: Any, options: RenderOptions, *cameras: Any, lines: Optional[Any] = ...
     ) -> Tuple[Dict[str, Any], List[Dict[str, Any]]]: ...
     # the draft of a scene for a WebGL2 page: its JSON (render::draft) and the bytes it points into
     def _draft(self, items: Any, options: RenderOptions) -> Tuple[str, bytes]: ...

@@ -22,7 +22,8 @@ use crate::parallel::catching_panics;
 use crate::render::effects::shadows::raycast::mesh_shadow_truth;
 use crate::render::gpu_mesh::{MeshNormals, NormalMode};
 use crate::render::image_out::{decode_png as decode_png_bytes, encode_png};
-use crate::render::scene::options::MeshSpec;
+use crate::render::scene::lines::LineSet;
+use crate::render::scene::options::{LineSpec, MeshSpec};
 use crate::render::scene::up::Axis;
 use crate::render::{BackendChoice, FrameReport, Image, Renderer, ViewImages};
 
@@ -129,6 +130,43 @@ pub(super) fn mesh_specs(items: &Bound<'_, PyAny>) -> Result<Vec<MeshSpec>> {
     args::items("meshes", items, "a list of meshes")?.iter().enumerate().map(read).collect()
 }
 
+/// The line sets of a render as the Python layer makes them: [(positions (N, 3) float64,
+/// segments (K, 2) int64, 4x4 transform or None, sRGB colour or None, width in pixels or None,
+/// up axis or None)]; the core checks them in the scene (errors name `lines[i]`).
+pub(super) fn line_specs(items: &Bound<'_, PyAny>) -> Result<Vec<LineSpec>> {
+    type Item<'py> = (
+        Bound<'py, PyAny>,
+        Bound<'py, PyAny>,
+        Option<[[f64; 4]; 4]>,
+        Option<[f64; 3]>,
+        Option<f32>,
+        Option<String>,
+    );
+    let expected =
+        "expected (positions, segments, transform or None, colour or None, width or None, up or None)";
+    let read = |(i, item): (usize, &Bound<'_, PyAny>)| {
+        let (positions, segments, transform, color, width, up): Item<'_> =
+            item.extract().map_err(|_| Error::wrong_type(format!("lines[{i}]"), expected))?;
+        let at = |field: &str| format!("lines[{i}].{field}");
+        let positions =
+            array_values::<f64>(&at("positions"), &positions, &["float64"], (&[None, Some(3)], "(N, 3)"))?.0;
+        let segments =
+            array_values::<i64>(&at("segments"), &segments, &["int64"], (&[None, Some(2)], "(K, 2)"))?.0;
+        let segments =
+            crate::edges::chains::vertex_pairs(&at("segments"), segments.chunks(2).map(|s| [s[0], s[1]]))?;
+        let set = LineSet {
+            positions: positions.chunks(3).map(|p| [p[0], p[1], p[2]]).collect(),
+            segments,
+            transform: crate::render::scene::IDENTITY,
+            color,
+            width,
+        };
+        let up = up.map(|u| Axis::parse(&at("up"), &u)).transpose()?;
+        Ok((set, transform, up))
+    };
+    args::items("lines", items, "a list of line sets")?.iter().enumerate().map(read).collect()
+}
+
 /// The image outputs as the dict `toonmesh.RenderResult` reads: each output's array, None where
 /// it was not asked for.
 fn image_dict(py: Python<'_>, images: ViewImages) -> PyResult<Bound<'_, PyDict>> {
@@ -205,14 +243,16 @@ impl PyRenderer {
 
     /// items: [(mesh id, Material or None, 4x4 transform or None)], seen from the cameras of the
     /// one optional argument after `options` (none given: the options' camera, images without a
-    /// leading axis), frames in flight: (images, reports).
-    #[pyo3(signature = (items, options, *cameras))]
+    /// leading axis), frames in flight: (images, reports). `lines`: the line sets drawn as ink
+    /// (`line_specs`).
+    #[pyo3(signature = (items, options, *cameras, lines = None))]
     fn render<'py>(
         &self,
         py: Python<'py>,
         items: &Bound<'py, PyAny>,
         options: &PyRenderOptions,
         cameras: &Bound<'py, PyTuple>,
+        lines: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<(Bound<'py, PyDict>, Vec<Bound<'py, PyDict>>)> {
         let o = &options.inner;
         let read = |c: &Bound<'_, PyAny>| c.cast::<PyCamera>().ok().map(|c| c.get().inner);
@@ -221,7 +261,8 @@ impl PyRenderer {
             .next()
             .map(|c| each(&c, "cameras", "a list of toonmesh.Camera", "a toonmesh.Camera", read));
         let cams = cams.transpose()?;
-        let scene = self.inner.check(o.scene(&mesh_specs(items)?)?, o.frame)?;
+        let sets = lines.map(line_specs).transpose()?.unwrap_or_default();
+        let scene = self.inner.check(o.scene_with_lines(&mesh_specs(items)?, sets)?, o.frame)?;
         let (frame, views, inner) = (o.frame, cams.as_ref().map(Vec::len), &self.inner);
         // the images are made and filled without the GIL, and handed to NumPy as they are
         let render = |cancel: &Cancel| {

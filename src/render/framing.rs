@@ -9,6 +9,7 @@ use rayon::prelude::*;
 
 use super::mesh_record::MeshRecord;
 use super::scene::camera::length_of;
+use super::scene::lines::LineSet;
 use super::scene::up::FLAT_THICKNESS;
 use super::scene::SceneItem;
 
@@ -103,6 +104,29 @@ pub fn scene_support<'a>(
             best = std::array::from_fn(|k| best[k].max(reach[k]));
         }
         best
+    }
+}
+
+/// `support` (the meshes' reach) widened to the points of the line sets `sets` as placed (the
+/// points their segments join), so that a fitted camera frames them too.
+pub fn with_lines<'a>(
+    support: impl Fn([DVec3; 4]) -> [f64; 4] + 'a,
+    sets: &[LineSet],
+    center: DVec3,
+) -> impl Fn([DVec3; 4]) -> [f64; 4] + 'a {
+    let points: Vec<DVec3> = sets
+        .iter()
+        .flat_map(|set| {
+            let m = set.model_matrix();
+            set.segments
+                .iter()
+                .flatten()
+                .map(move |&i| m.transform_point3(DVec3::from_array(set.positions[i as usize])))
+        })
+        .collect();
+    move |normals: [DVec3; 4]| {
+        let meshes = support(normals);
+        std::array::from_fn(|k| points.iter().fold(meshes[k], |r, p| r.max(normals[k].dot(*p - center))))
     }
 }
 

@@ -310,7 +310,9 @@ fn screen_lines(
     scene: &Scene,
     frame: &FrameSpec,
 ) -> (Vec<super::effects::outlines::projection::ScreenLine>, super::scene::camera::ResolvedCamera) {
-    use super::effects::outlines::mesh_lines::{chains, instances, reference_depth, scene_outlines};
+    use super::effects::outlines::mesh_lines::{
+        chains, instances, reference_depth, scene_outlines, set_chains,
+    };
     use super::effects::outlines::occluded::cut;
     use super::effects::outlines::projection::Projector;
     use super::effects::outlines::settings::VisibilityRule;
@@ -329,6 +331,13 @@ fn screen_lines(
         .collect();
     let mut found: Vec<_> =
         outlines_of.iter().zip(&p.records).map(|(o, rec)| chains(o, &rec.host.positions)).collect();
+    // the `Lines` items after the meshes, in view coordinates (their ink resolved by the check)
+    let checked = r.check(scene.clone(), *frame).unwrap();
+    found.extend(set_chains(&checked.scene.lines, &p.cam));
+    let projectors: Vec<Projector> = projectors
+        .into_iter()
+        .chain(scene.lines.iter().map(|_| Projector::in_view(&p.cam, frame.width, frame.height)))
+        .collect();
     if outlines.visibility == VisibilityRule::Exact {
         found = cut(found, &p.records, &projectors, p.cam.orthographic, outlines).unwrap();
     }
@@ -339,12 +348,57 @@ fn screen_lines(
     (lines, p.cam)
 }
 
+/// A 240 x 180 frame of `scene` (drawn with `outlines`) against the CPU reference: the lines it
+/// draws as the reference sees them, the frame's outline coverage, and the reference's coverage
+/// of any of those lines under the frame's depth and a rule (`offset`: its depth offset, None:
+/// the outlines').
+struct LinesFrame {
+    lines: Vec<super::effects::outlines::projection::ScreenLine>,
+    outline: Vec<f32>,
+    depth: Vec<f32>,
+    cam: super::scene::camera::ResolvedCamera,
+    outlines: Outlines,
+}
+
+impl LinesFrame {
+    fn of(r: &Renderer, scene: &Scene) -> Self {
+        let frame = FrameSpec {
+            width: 240,
+            height: 180,
+            outputs: Outputs::of(&[Output::Outline, Output::Depth]),
+            ..Default::default()
+        };
+        let out = r.render(scene, &frame).unwrap();
+        let (lines, cam) = screen_lines(r, scene, &frame);
+        let depth = out.floats(Output::Depth).unwrap().iter().map(|d| d / cam.scale as f32).collect();
+        let outline = out.floats(Output::Outline).unwrap().to_vec();
+        LinesFrame { lines, outline, depth, cam, outlines: scene.outlines.clone().unwrap() }
+    }
+
+    fn coverage(
+        &self,
+        lines: &[super::effects::outlines::projection::ScreenLine],
+        offset: Option<f32>,
+    ) -> Vec<f32> {
+        use super::effects::outlines::settings::INK_KINDS;
+        use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
+        let o = &self.outlines;
+        let img = DepthImage { depth: &self.depth, width: 240, height: 180 };
+        let rule = Visibility::of(offset.unwrap_or(o.depth_offset), &self.cam, 180);
+        let widths: Vec<f32> = (0..INK_KINDS).map(|k| o.styles[k].map_or(0.0, |s| s.width)).collect();
+        let dashes: Vec<f32> = (0..INK_KINDS).map(|k| o.styles[k].map_or(0.0, |s| s.dash)).collect();
+        coverage_image(lines, (&widths, &dashes), false, &img, rule)
+    }
+}
+
+fn inked(coverage: &[f32]) -> usize {
+    coverage.iter().filter(|&&c| c > 0.0).count()
+}
+
 #[test]
 fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
-    use super::effects::outlines::settings::INK_KINDS;
     use super::effects::outlines::settings::{ContourRule, LineStyle, VisibilityRule, HIDDEN_KIND};
     use super::effects::outlines::stroke_width::StrokeWidth;
-    use super::effects::outlines::visibility::{coverage_image, DepthImage, Visibility};
     let faces = Outlines {
         crease_angle: 25.0,
         contours: ContourRule::Faces,
@@ -362,28 +416,14 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
     let all = [faces, smooth, shaped, exact];
     for (backend, outlines) in backends().into_iter().flat_map(|b| all.clone().map(|o| (b, o))) {
         let r = open(backend).unwrap();
-        let scene = two_spheres(&r, outlines.clone());
-        let frame = FrameSpec {
-            width: 240,
-            height: 180,
-            outputs: Outputs::of(&[Output::Outline, Output::Depth]),
-            ..Default::default()
-        };
-        let out = r.render(&scene, &frame).unwrap();
-        let (lines, cam) = screen_lines(&r, &scene, &frame);
-        let depth: Vec<f32> =
-            out.floats(Output::Depth).unwrap().iter().map(|d| d / cam.scale as f32).collect();
-        let img = DepthImage { depth: &depth, width: 240, height: 180 };
-        let rule = Visibility::of(outlines.depth_offset, &cam, frame.height);
-        let widths: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.width)).collect();
-        let dashes: Vec<f32> = (0..INK_KINDS).map(|k| outlines.styles[k].map_or(0.0, |s| s.dash)).collect();
-        let want = coverage_image(&lines, (&widths, &dashes), false, &img, rule);
-        let inked = want.iter().filter(|&&c| c > 0.0).count();
-        assert!(inked > 500, "{backend:?}: the reference inks {inked} pixels");
-        assert_coverage_close(out.floats(Output::Outline).unwrap(), &want, &format!("{backend:?}"));
+        let f = LinesFrame::of(&r, &two_spheres(&r, outlines.clone()));
+        let want = f.coverage(&f.lines, None);
+        let shown = inked(&want);
+        assert!(shown > 500, "{backend:?}: the reference inks {shown} pixels");
+        assert_coverage_close(&f.outline, &want, &format!("{backend:?}"));
         if outlines.visibility == VisibilityRule::Exact {
             // hidden lines drawn, dashed: some partly inked pixels along them
-            let hidden: Vec<_> = lines.iter().filter(|l| l.kind == HIDDEN_KIND).copied().collect();
+            let hidden: Vec<_> = f.lines.iter().filter(|l| l.kind == HIDDEN_KIND).copied().collect();
             assert!(
                 hidden.len() > 20 && hidden.iter().all(|l| l.exact),
                 "{backend:?}: {} hidden",
@@ -392,10 +432,48 @@ fn mesh_lines_match_the_cpu_visibility_reference_on_both_backends() {
             continue;
         }
         // the rule hides something here: with an infinite offset every line would show
-        let all =
-            coverage_image(&lines, (&widths, &dashes), false, &img, Visibility { offset: 1e30, ..rule });
-        let shown = all.iter().filter(|&&c| c > 0.0).count();
-        assert!(shown > inked + 200, "{backend:?}: hidden-line removal hid only {} pixels", shown - inked);
+        let all = inked(&f.coverage(&f.lines, Some(1e30)));
+        assert!(all > shown + 200, "{backend:?}: hidden-line removal hid only {} pixels", all - shown);
+    }
+}
+
+#[test]
+fn lines_items_match_the_cpu_visibility_reference_on_both_backends() {
+    use super::effects::outlines::settings::{LineStyle, VisibilityRule, HIDDEN_KIND};
+    use super::scene::lines::LineSet;
+    // a wire through the small sphere in front of the large one, and a bent one beside them
+    let wire = LineSet {
+        positions: vec![
+            [-1.5, 0.2, 1.1],
+            [1.5, 0.25, 1.1],
+            [0.4, -1.4, 0.0],
+            [1.4, -1.2, 0.5],
+            [1.6, 0.8, 0.5],
+        ],
+        segments: vec![[0, 1], [2, 3], [3, 4]],
+        transform: IDENTITY,
+        color: Some([1.0, 0.0, 0.0]),
+        width: Some(3.0),
+    };
+    let depth = Outlines { visibility: VisibilityRule::Depth, ..Outlines::new(true, false) };
+    let mut exact = Outlines::new(true, false);
+    exact.styles[HIDDEN_KIND] = Some(LineStyle::hidden(LineStyle::default()));
+    for (backend, outlines) in backends().into_iter().flat_map(|b| [(b, depth.clone()), (b, exact.clone())]) {
+        let r = open(backend).unwrap();
+        let f = LinesFrame::of(&r, &Scene { lines: vec![wire.clone()], ..two_spheres(&r, outlines.clone()) });
+        let own: Vec<_> = f.lines.iter().filter(|l| l.own_width == Some(3.0)).copied().collect();
+        assert!(own.len() >= 3, "{backend:?}: {} of the wire's lines", own.len());
+        assert_coverage_close(&f.outline, &f.coverage(&f.lines, None), &format!("{backend:?}"));
+        // the small sphere hides part of the wire
+        let (drawn, unhidden) = (inked(&f.coverage(&own, None)), inked(&f.coverage(&own, Some(1e30))));
+        if outlines.visibility == VisibilityRule::Exact {
+            // cut on the host: the hidden piece is drawn as a hidden line, in the hidden ink
+            assert!(own.iter().all(|l| l.exact), "{backend:?}");
+            assert!(f.lines.iter().any(|l| l.kind == HIDDEN_KIND && l.own_width.is_none()), "{backend:?}");
+            assert!(drawn > 300, "{backend:?}: {drawn}");
+        } else {
+            assert!(unhidden > drawn + 20, "{backend:?}: the depth test hid nothing");
+        }
     }
 }
 

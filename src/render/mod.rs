@@ -49,7 +49,7 @@ pub fn accepted_names() -> Vec<(&'static str, Vec<&'static str>)> {
     use crate::edges::outlines::LineKind;
     use crate::smooth::options as smooth;
     use effects::dither::{DitherPattern, DitherSpace};
-    use effects::outlines::settings::{kind_names, ContourRule, ImageRule, Outlines};
+    use effects::outlines::settings::{ink_name, kind_names, ContourRule, ImageRule, Outlines, LINES_KIND};
     use effects::shadows::settings::ShadowFilter;
     use scene::model::{Highlight, Model};
     use scene::Output;
@@ -59,6 +59,8 @@ pub fn accepted_names() -> Vec<(&'static str, Vec<&'static str>)> {
         ("IMAGE_OUTPUTS", images),
         ("LINE_KINDS", LineKind::ALL.map(|k| k.name()).to_vec()),
         ("INK_KINDS", kind_names().to_vec()),
+        // the ink of `Lines` items, which `RenderResult.line_kinds` and the SVG name
+        ("ITEM_INKS", vec![ink_name(LINES_KIND)]),
         ("OUTLINE_KINDS", Outlines::KINDS.to_vec()),
         ("CONTOUR_RULES", ContourRule::NAMES.to_vec()),
         ("IMAGE_RULES", ImageRule::NAMES.to_vec()),

@@ -23,7 +23,7 @@ use super::culling::culls;
 use super::derived_vertices::derived_buffer;
 use super::device::{BackendChoice, GpuInfo};
 use super::effects::frame::{check as check_effects, frame_bytes};
-use super::framing::{flat_normal, scene_support};
+use super::framing::{flat_normal, scene_support, with_lines};
 use super::gpu_mesh::{GpuMesh, MeshNormals};
 use super::graph::effect::{FrameInputs, HostInputs, HostStep};
 use super::graph::report::FrameReport;
@@ -385,7 +385,7 @@ impl Renderer {
         let frame = &scene.frame;
         let cam = {
             let (items, center) = (&scene.scene.items, bounds.sphere.center);
-            let support = scene_support(items, &records, center);
+            let support = with_lines(scene_support(items, &records, center), &scene.scene.lines, center);
             // only a fitted camera given no direction looks for a flat scene's front
             let flat =
                 scene.scene.camera.fits_by_default().then(|| flat_normal(items, &records, center, &support));

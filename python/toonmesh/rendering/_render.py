@@ -29,6 +29,7 @@ from toonmesh.files import _load
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions, kang_table
 from toonmesh.arguments._input import mesh_arrays
 from toonmesh.rendering._results import RenderResult, RenderStack, stack_of
+from toonmesh.scene._points import Lines
 from toonmesh.scene._scene import Mesh, MeshHandle, Normals, geometry_key, normal_mode, own_normals
 
 if TYPE_CHECKING:
@@ -127,14 +128,15 @@ class Renderer:
         self._engine.remove_mesh(mesh.id)
 
     def render(self, meshes: Any = None, **options: "Unpack[RenderKeywords]") -> RenderResult:
-        """Renders ``meshes`` (a MeshHandle, a :class:`Mesh`, or a list of them; None or [] for an
-        empty scene) with ``options``: the keywords of :class:`RenderOptions` (``width``,
+        """Renders ``meshes`` (a MeshHandle, a :class:`Mesh`, a :class:`Lines` drawn as ink, or a
+        list of them; None or [] for an empty scene) with ``options``: the keywords of :class:`RenderOptions` (``width``,
         ``height``, ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...), each
         defaulting as that class says. Only the outputs asked for are computed and read back.
         """
         opts = RenderOptions(**options)
+        meshes, lines = split_lines(meshes)
         with meshes_on_device(self, meshes) as placed:
-            return draw(self, placed, opts)
+            return draw(self, placed, opts, lines)
 
     def render_many(self, meshes: Any, cameras: Sequence[Camera], **options: "Unpack[RenderKeywords]") -> "RenderStack":
         """Renders the same scene from each of ``cameras`` (a turntable, a dataset sweep),
@@ -146,8 +148,9 @@ class Renderer:
         if "camera" in options:
             raise TypeError("camera: render_many takes cameras=, a list of them")
         opts = RenderOptions(**options)
+        meshes, lines = split_lines(meshes)
         with meshes_on_device(self, meshes) as placed:
-            return draw_views(self, placed, cameras, opts)
+            return draw_views(self, placed, cameras, opts, lines)
 
 
 def after_smoothing(normals: Normals, smoothed: bool, how: str) -> Normals:
@@ -224,16 +227,34 @@ def _core_items(placed: List[PlacedMesh]) -> List[Tuple[int, Optional[Material],
     return [(p.handle.id, p.material, p.transform, p.up) for p in placed]
 
 
-def draw(renderer: Renderer, placed: List[PlacedMesh], options: RenderOptions) -> RenderResult:
-    """One view of meshes already on ``renderer``'s device (see :func:`place_meshes`)."""
-    images, (report,) = renderer._engine.render(_core_items(placed), options)
+def split_lines(items: Any) -> Tuple[Any, List[Lines]]:
+    """A scene's items (as :meth:`Renderer.render` takes them) parted into its meshes (a list
+    where ``items`` was one, as given otherwise) and its :class:`Lines` items, in order."""
+    if isinstance(items, Lines):
+        return [], [items]
+    if not isinstance(items, (list, tuple)):
+        return items, []
+    return [x for x in items if not isinstance(x, Lines)], [x for x in items if isinstance(x, Lines)]
+
+
+def _core_lines(lines: Sequence[Lines]) -> List[Tuple[Any, ...]]:
+    """The :class:`Lines` items as the core reads them (its checks name ``lines[i]``)."""
+    return [(np.asarray(l.positions, np.float64), l.segments, l.transform, l.color, l.width, l.up) for l in lines]
+
+
+def draw(renderer: Renderer, placed: List[PlacedMesh], options: RenderOptions,
+         lines: Sequence[Lines] = ()) -> RenderResult:
+    """One view of meshes already on ``renderer``'s device (see :func:`place_meshes`), with
+    ``lines`` drawn as ink."""
+    images, (report,) = renderer._engine.render(_core_items(placed), options, lines=_core_lines(lines))
     return RenderResult(dict(report, **images), renderer.backend, options.outlines)
 
 
 def draw_views(renderer: Renderer, placed: List[PlacedMesh], cameras: Sequence[Camera],
-               options: RenderOptions) -> RenderStack:
-    """The views of meshes already on ``renderer``'s device from each of ``cameras``."""
-    images, reports = renderer._engine.render(_core_items(placed), options, cameras)
+               options: RenderOptions, lines: Sequence[Lines] = ()) -> RenderStack:
+    """The views of meshes already on ``renderer``'s device from each of ``cameras``, with
+    ``lines`` drawn as ink."""
+    images, reports = renderer._engine.render(_core_items(placed), options, cameras, lines=_core_lines(lines))
     return stack_of(images, reports, renderer.backend, options.outlines)
 
 
@@ -279,8 +300,9 @@ def render(
     ``vertices``: (N, 3) float32/float64 with ``faces`` (M, 3) int32/int64/uint32; or a
     ``trimesh.Trimesh``; or a ``trimesh.Scene`` or a mesh file's path (str or os.PathLike),
     read as :func:`toonmesh.load` reads them (every node, its transform and colours); or a
-    :class:`Mesh` or list of them (each with its own material and transform); None for an
-    empty scene. With no ``material`` given, meshes that carry colours or a texture and name no
+    :class:`Mesh` or list of them (each with its own material and transform), where
+    :class:`Lines` items may stand beside the meshes (segments drawn as ink, hidden by the
+    surfaces in front of them); None for an empty scene. With no ``material`` given, meshes that carry colours or a texture and name no
     material of their own are drawn under the default shading model in white, so their colours
     show as they are, however they were given. Inputs are never modified. Meshes that share their vertex and face arrays (the
     instances of one geometry) are uploaded once.
@@ -302,9 +324,10 @@ def render(
     iterations = _smoothing_iterations(smooth_iterations)
     opts = RenderOptions(**options)  # checked before any upload
     items = own_colours(scene_items(vertices, faces, normals), opts, options.get("material"))
+    meshes, lines = split_lines(items)
     renderer = shared_renderer(backend)
-    with meshes_on_device(renderer, items, iterations) as placed:
-        return draw(renderer, placed, opts)
+    with meshes_on_device(renderer, meshes, iterations) as placed:
+        return draw(renderer, placed, opts, lines)
 
 
 def scene_items(vertices: Any, faces: Any = None, normals: Normals = None) -> List[Any]:
@@ -318,6 +341,8 @@ def scene_items(vertices: Any, faces: Any = None, normals: Normals = None) -> Li
         return [Mesh(x, normals=normals) if _is_trimesh(x) else _given_normals(x, normals) for x in vertices]
     if vertices is None:
         return []
+    if isinstance(vertices, Lines):
+        return [vertices]
     if isinstance(vertices, (Mesh, MeshHandle)):
         return [_given_normals(vertices, normals)]
     if faces is None and (isinstance(vertices, (str, os.PathLike)) or _load.is_scene(vertices)):

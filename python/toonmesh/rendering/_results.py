@@ -15,6 +15,9 @@ from toonmesh.rendering import _strokes
 from toonmesh._core import LineStyle, Outlines
 from toonmesh.rendering._video import DEFAULT_FPS, save_video
 
+#: The kind of the lines of :class:`toonmesh.Lines` items (the core names it).
+LINES: str = _core.ITEM_INKS[0]
+
 if TYPE_CHECKING:
     from typing_extensions import Unpack
 
@@ -45,7 +48,10 @@ class RenderResult:
       ``line_kinds`` naming each one's kind ("silhouette", "boundary", ...) and
       ``line_widths`` the width of its ink at each point, a (K,) float32 array of pixels (the
       kind's width, times the outlines' taper and width by depth where they are used and a
-      suggestive contour's strength, as the ink is drawn);
+      suggestive contour's strength, as the ink is drawn); the visible parts of
+      :class:`toonmesh.Lines` items are among them, of kind ``"lines"``, with ``line_items``
+      giving each line's item (its index among the scene's Lines items; None for a mesh's
+      line) and ``line_inks`` each item's ``(sRGB colour, width in pixels)`` as drawn;
     - ``passes``: every step that ran, in order; ``timings``: seconds per step, with ``frame``
       the whole render; GPU passes are timed on the GPU when ``timing_source`` is ``"gpu"``,
       otherwise only the frame as a whole (``"wall"``);
@@ -66,6 +72,9 @@ class RenderResult:
         self.lines: Optional[List[np.ndarray]] = None
         self.line_kinds: Optional[List[str]] = raw["line_kinds"]
         self.line_widths: Optional[List[np.ndarray]] = None
+        self.line_items: Optional[List[Optional[int]]] = raw["line_items"]
+        self.line_inks: List[Tuple[Tuple[float, float, float], float]] = [
+            (tuple(c), float(w)) for c, w in raw["line_inks"]]
         if raw["lines"] is not None:  # every point, where each line starts, every point's width
             points, starts, widths = raw["lines"]
             self.lines = [points[a:b] for a, b in zip(starts[:-1], starts[1:])]
@@ -166,7 +175,9 @@ class RenderResult:
         widths: str = "auto",
     ) -> List["_strokes.SvgGroup"]:
         """The groups of :meth:`svg`'s document (the same arguments; their defaults are these),
-        hidden lines first (underneath), then one per kind in name order:
+        hidden lines first (underneath), then one per kind in name order, then one per
+        :class:`toonmesh.Lines` item on top, in the scene's order (``"lines"``; ``"lines-0"``,
+        ``"lines-1"``, ... where there are several), in its own colour and width:
         ``(kind, colour, width or None for filled outlines, dashes, [(points, widths), ...])``
         (dashes: None for solid lines, else (dash, gap) in pixels from the kind's
         :class:`LineStyle`), for a caller that adds groups of its own before writing the document
@@ -182,11 +193,18 @@ class RenderResult:
         strokes = self._drawn_strokes(smooth, simplify, by_width=filled)
         groups: List[_strokes.SvgGroup] = []
         # hidden lines underneath, then the kinds in name order
-        for kind in sorted({k for _, _, k in strokes}, key=lambda k: (k != "hidden", k)):
+        for kind in sorted({k for _, _, k in strokes} - {LINES}, key=lambda k: (k != "hidden", k)):
             style = styles.get(kind) or LineStyle()
             group = _strokes.in_order([(p, w) for p, w, k in strokes if k == kind], order)
             dashes = (style.dash, style.dash) if style.dash > 0 else None
             groups.append((kind, style.color, None if filled(kind) and not dashes else style.width, dashes, group))
+        # the Lines items on top, each in its own ink
+        items = self.line_items or [None] * len(strokes)
+        for i, (color, width) in enumerate(self.line_inks):
+            group = _strokes.in_order([(p, w) for (p, w, k), item in zip(strokes, items) if k == LINES and item == i],
+                                      order)
+            gid = LINES if len(self.line_inks) == 1 else f"{LINES}-{i}"
+            groups.append((gid, color, width, None, group))
         return groups
 
     def save_svg(self, path: Any, **options: "Unpack[SvgOptions]") -> None:

@@ -1,6 +1,7 @@
 //! What a render reports besides its images.
 
-use crate::render::effects::outlines::settings::kind_names;
+use crate::render::color::Srgb;
+use crate::render::effects::outlines::settings::ink_name;
 
 /// One visible mesh-space polyline in pixel coordinates, its kind, and the width of its ink at
 /// each point in pixels (its kind's width times the factors of `stroke_width`, as the line pass
@@ -37,14 +38,18 @@ pub struct FrameReport {
     /// The visible mesh-space lines, when asked for.
     #[serde(rename = "line_kinds", serialize_with = "kind_names_of")]
     pub lines: Option<Vec<Polyline>>,
+    /// Per line of `lines`, the `Lines` item it belongs to (its index among the scene's), None
+    /// for a mesh's line.
+    pub line_items: Option<Vec<Option<usize>>>,
+    /// Each `Lines` item's ink as drawn: its sRGB colour and width in output pixels.
+    pub line_inks: Vec<(Srgb, f32)>,
     /// Per mesh, whether the camera's passes skipped its inner sides (`render::culling`).
     pub culled: Vec<bool>,
 }
 
 /// Each line's kind by name (None without lines).
 fn kind_names_of<S: serde::Serializer>(lines: &Option<Vec<Polyline>>, s: S) -> Result<S::Ok, S::Error> {
-    let names = kind_names();
-    let kinds = lines.as_ref().map(|all| all.iter().map(|l| names[l.kind]).collect::<Vec<_>>());
+    let kinds = lines.as_ref().map(|all| all.iter().map(|l| ink_name(l.kind)).collect::<Vec<_>>());
     serde::Serialize::serialize(&kinds, s)
 }
 

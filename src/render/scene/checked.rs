@@ -56,6 +56,13 @@ impl CheckedScene {
             o.validate("outlines")?;
         }
         scene.effects.validate()?;
+        let mut scene = scene;
+        for (i, set) in scene.lines.iter_mut().enumerate() {
+            set.validate(&format!("lines[{i}]"))?;
+            // the outlines' ink where the set has none, scaled to the pixel ratio with its own
+            let ink = set.ink(scene.outlines.as_ref());
+            (set.color, set.width) = (Some(ink.color), Some(ink.width));
+        }
         let scene = scene.at_pixel_ratio(frame.pixel_ratio);
         let caster = shadow_caster(&scene.lights).map(|(index, light, settings)| Caster {
             index,
@@ -87,6 +94,11 @@ impl CheckedScene {
         let mut c = self.clone();
         c.scene.camera = camera;
         c
+    }
+
+    /// Each line set's ink (its colour and width resolved when the scene was checked).
+    pub fn line_inks(&self) -> Vec<crate::render::effects::outlines::settings::LineStyle> {
+        self.scene.lines.iter().map(|set| set.ink(None)).collect()
     }
 
     /// The shadow caster, when the scene has something to cast shadows onto.

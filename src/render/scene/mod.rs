@@ -9,6 +9,7 @@
 pub mod camera;
 pub mod checked;
 pub mod light;
+pub mod lines;
 pub mod material;
 pub mod model;
 pub mod options;
@@ -158,6 +159,9 @@ impl Scene {
             item.material = at_pixel_ratio(&item.material, ratio);
         }
         self.outlines = self.outlines.map(|o| at_pixel_ratio(&o, ratio));
+        for set in &mut self.lines {
+            set.width = set.width.map(|w| (w as f64 * ratio) as f32);
+        }
         self.effects = self.effects.at_pixel_ratio(ratio);
         self
     }
@@ -201,6 +205,8 @@ pub struct Scene {
     pub effects: SceneEffects,
     /// The up axis fitted cameras keep up and turn about (`up::scene_up` decides it).
     pub up: up::Axis,
+    /// Line segments drawn as ink (`toonmesh.Lines`), after the meshes.
+    pub lines: Vec<lines::LineSet>,
 }
 
 impl Default for Scene {
@@ -214,12 +220,13 @@ impl Default for Scene {
             outlines: None,
             effects: SceneEffects::default(),
             up: up::DEFAULT_UP,
+            lines: Vec::new(),
         }
     }
 }
 
 impl Scene {
-    /// A sphere around every mesh as placed (a unit sphere at the origin for an empty scene),
+    /// A sphere around every mesh and line set as placed (a unit sphere at the origin for an empty scene),
     /// given each mesh's own bounding sphere.
     pub fn bounding_sphere(&self, mesh_sphere: impl Fn(MeshId) -> Result<Sphere>) -> Result<Sphere> {
         let mut all: Option<Sphere> = None;
@@ -230,6 +237,13 @@ impl Scene {
                 center: m.transform_point3(own.center),
                 radius: own.radius * largest_stretch(DMat3::from_mat4(m)),
             };
+            all = Some(match all {
+                None => s,
+                Some(a) => merge(a, s),
+            });
+        }
+        for [lo, hi] in self.lines.iter().filter_map(lines::LineSet::world_box) {
+            let s = Sphere { center: (lo + hi) * 0.5, radius: camera::length_of(hi - lo) * 0.5 };
             all = Some(match all {
                 None => s,
                 Some(a) => merge(a, s),
@@ -249,7 +263,7 @@ impl Scene {
 
 impl Scene {
     /// What a fitted camera frames: the bounding sphere, the world box around every mesh's own
-    /// box as placed (`mesh_box`: its min and max corners), and the up axis. An empty scene's box
+    /// box as placed and every line set's points (`mesh_box`: its min and max corners), and the up axis. An empty scene's box
     /// is its sphere's cube.
     pub fn bounds(
         &self,
@@ -270,6 +284,9 @@ impl Scene {
                 let p = m.transform_point3(corner);
                 (lo, hi) = (lo.min(p), hi.max(p));
             }
+        }
+        for [a, b] in self.lines.iter().filter_map(lines::LineSet::world_box) {
+            (lo, hi) = (lo.min(a), hi.max(b));
         }
         if !(lo.is_finite() && hi.is_finite()) {
             return Ok(SceneBounds::of_sphere(sphere, self.up));

@@ -8,6 +8,7 @@ use crate::render::color::Srgb;
 
 use super::camera::Camera;
 use super::light::Light;
+use super::lines::LineSet;
 use super::material::Material;
 use super::up::{scene_up, Axis};
 use super::{FrameSpec, MeshId, Output, Outputs, Scene, SceneItem, IDENTITY, MAX_SUPERSAMPLE, PIXEL_RATIOS};
@@ -112,6 +113,10 @@ impl Described for RenderOptions {
     }
 }
 
+/// A line set of a render, with its own transform and up axis where it has them (the set's
+/// `transform` is replaced).
+pub type LineSpec = (LineSet, Option<[[f64; 4]; 4]>, Option<Axis>);
+
 /// A mesh of a render, with its own material, transform and up axis where it has them.
 pub type MeshSpec = (MeshId, Option<Material>, Option<[[f64; 4]; 4]>, Option<Axis>);
 
@@ -119,7 +124,18 @@ impl RenderOptions {
     /// The scene of `meshes` with these options; refused when the meshes name different up
     /// axes and the options none.
     pub fn scene(&self, meshes: &[MeshSpec]) -> Result<Scene> {
-        let up = scene_up(self.up, meshes.iter().map(|m| m.3))?;
+        self.scene_with_lines(meshes, Vec::new())
+    }
+
+    /// The scene of `meshes` and the line sets `lines` (each with its up axis where it has
+    /// one; a set without its own transform takes the options'), with these options.
+    pub fn scene_with_lines(&self, meshes: &[MeshSpec], lines: Vec<LineSpec>) -> Result<Scene> {
+        let ups = meshes.iter().map(|m| m.3).chain(lines.iter().map(|l| l.2));
+        let up = scene_up(self.up, ups)?;
+        let lines = lines
+            .into_iter()
+            .map(|(set, transform, _)| LineSet { transform: transform.unwrap_or(self.transform), ..set })
+            .collect();
         Ok(Scene {
             items: meshes
                 .iter()
@@ -135,6 +151,7 @@ impl RenderOptions {
             outlines: self.outlines.clone(),
             effects: self.effects.clone(),
             up,
+            lines,
         })
     }
 }

@@ -9,8 +9,13 @@ struct Both {
 
 // Ink of kind `kind` at coverage `a`; no fragment where the pixel is not inked.
 fn inked(kind: u32, a: f32) -> Both {
+    return inked_rgb(frame.outlines.ink[kind].rgb, a);
+}
+
+// Ink of linear colour `rgb` at coverage `a`; no fragment where the pixel is not inked.
+fn inked_rgb(rgb: vec3<f32>, a: f32) -> Both {
     if (a <= 0.0) {
         discard;
     }
-    return Both(vec4<f32>(frame.outlines.ink[kind].rgb * a, a), vec4<f32>(a));
+    return Both(vec4<f32>(rgb * a, a), vec4<f32>(a));
 }

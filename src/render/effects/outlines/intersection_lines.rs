@@ -51,6 +51,7 @@ impl HostStep for Intersections {
                     strength: Vec::new(),
                     traced: false,
                     occlusion: None,
+                    own: None,
                 }));
             }
         }

@@ -10,7 +10,9 @@
 // among those pixels is on the rim and shows; other
 // lines are tested against the surface pixels only (a crease behind the rim stays hidden).
 // A line whose visibility the host decided (`flags` has EXACT: the exact rule, occluded.rs)
-// is drawn as it is. A kind with a dash length is inked in dashes along its stroke.
+// is drawn as it is. A kind with a dash length is inked in dashes along its stroke. A line with
+// OWN_INK (a `Lines` item's) is inked solid in its own colour and width, held against the
+// surfaces only; with IN_VIEW its points are in view coordinates already.
 // `visibility.rs` holds the same rules on the CPU.
 
 @group(2) @binding(0) var geometry: texture_2d<u32>;
@@ -22,6 +24,7 @@ struct LineIn {
     @location(3) scale: vec2<f32>,   // the width's factors at a and b (stroke_width.rs)
     @location(4) flags: u32,         // EXACT: visibility decided on the host
     @location(5) along: vec2<f32>,   // pixels along the stroke at a and b (dashes)
+    @location(6) ink: vec4<f32>,     // OWN_INK: linear rgb, width in pixels
 };
 
 
@@ -37,7 +40,13 @@ struct LineOut {
     @location(4) @interpolate(flat) scale: vec2<f32>,
     @location(5) @interpolate(flat) flags: u32,
     @location(6) @interpolate(flat) along: vec2<f32>,
+    @location(7) @interpolate(flat) ink: vec4<f32>,
 };
+
+// The line's ink: its kind's (linear rgb, width in pixels), or its own (OWN_INK).
+fn ink_of(kind: u32, flags: u32, own: vec4<f32>) -> vec4<f32> {
+    return select(frame.outlines.ink[kind], own, (flags & OWN_INK) != 0u);
+}
 
 fn to_pixels(v: vec3<f32>) -> vec2<f32> {
     let c = frame.view.proj * vec4<f32>(v, 1.0);
@@ -55,8 +64,9 @@ fn line_vertex(vi: u32, l: LineIn) -> LineOut {
     var o: LineOut;
     let kind = l.kind;
     o.kind = kind;
-    var pa = (draw.mesh.model_view * vec4<f32>(l.a, 1.0)).xyz;
-    var pb = (draw.mesh.model_view * vec4<f32>(l.b, 1.0)).xyz;
+    let in_view = (l.flags & IN_VIEW) != 0u;
+    var pa = select((draw.mesh.model_view * vec4<f32>(l.a, 1.0)).xyz, l.a, in_view);
+    var pb = select((draw.mesh.model_view * vec4<f32>(l.b, 1.0)).xyz, l.b, in_view);
     // Keep the part in front of the near plane (perspective only). No branch tests uniforms
     // alone: for such branches lavapipe (Mesa 22) compiles a shader variant at every draw and
     // never frees it.
@@ -73,7 +83,8 @@ fn line_vertex(vi: u32, l: LineIn) -> LineOut {
     o.scale = l.scale;
     o.flags = l.flags;
     o.along = l.along;
-    let half = frame.outlines.ink[kind].w * max(l.scale.x, l.scale.y) * 0.5 + 1.0;
+    o.ink = l.ink;
+    let half = ink_of(kind, l.flags, l.ink).w * max(l.scale.x, l.scale.y) * 0.5 + 1.0;
     let ab = sb - sa;
     let len = length(ab);
     var dir = vec2<f32>(1.0, 0.0);
@@ -98,11 +109,12 @@ fn surface_depth(p: vec2<i32>) -> u32 {
     return textureLoad(geometry, p, 0)[DEPTH_COMPONENT];
 }
 
-// Whether the line point at pixel position `c` with depth `z` and kind `kind` is visible.
-fn visible(c: vec2<f32>, z: f32, kind: u32) -> bool {
+// Whether the line point at pixel position `c` with depth `z` and kind `kind` is visible
+// (`own_ink`: a `Lines` item's, never on a rim).
+fn visible(c: vec2<f32>, z: f32, kind: u32, own_ink: bool) -> bool {
     let size = vec2<i32>(textureDimensions(geometry));
     let q = vec2<i32>(floor(c));
-    let rim = ((RIM_KINDS >> kind) & 1u) == 1u;
+    let rim = ((RIM_KINDS >> kind) & 1u) == 1u && !own_ink;
     let tolerance = frame.outlines.depth_offset * (z * frame.view.footprint.x + frame.view.footprint.y) + z * DEPTH_EPSILON;
     // the pixel itself usually decides: in front of (or on) its surface, the largest depth
     // around can only agree
@@ -148,8 +160,9 @@ fn coverage(o: LineOut) -> f32 {
         t = clamp(dot(pos.xy - o.sa, ab) / l2, 0.0, 1.0);
     }
     let c = o.sa + ab * t;
-    let width = frame.outlines.ink[o.kind].w * mix(o.scale.x, o.scale.y, t);
-    let dash = frame.outlines.dashes[o.kind / 4u][o.kind % 4u];
+    let own = (o.flags & OWN_INK) != 0u;
+    let width = ink_of(o.kind, o.flags, o.ink).w * mix(o.scale.x, o.scale.y, t);
+    let dash = select(frame.outlines.dashes[o.kind / 4u][o.kind % 4u], 0.0, own);
     let cov = clamp(width * 0.5 + 0.5 - length(pos.xy - c), 0.0, 1.0) * dashed(mix(o.along.x, o.along.y, t), dash);
     if (cov <= 0.0) {
         return 0.0;
@@ -160,20 +173,25 @@ fn coverage(o: LineOut) -> f32 {
         1.0 / mix(1.0 / o.depths.x, 1.0 / o.depths.y, t),
         frame.view.orthographic == 0u,
     );
-    return select(0.0, cov, (o.flags & EXACT) != 0u || visible(c, z, o.kind));
+    return select(0.0, cov, (o.flags & EXACT) != 0u || visible(c, z, o.kind, own));
+}
+
+// The line's ink at this pixel.
+fn line_ink(o: LineOut) -> Both {
+    return inked_rgb(ink_of(o.kind, o.flags, o.ink).rgb, coverage(o));
 }
 
 @fragment
 fn fs_color(o: LineOut) -> @location(0) vec4<f32> {
-    return inked(o.kind, coverage(o)).color;
+    return line_ink(o).color;
 }
 
 @fragment
 fn fs_outline(o: LineOut) -> @location(0) vec4<f32> {
-    return inked(o.kind, coverage(o)).outline;
+    return line_ink(o).outline;
 }
 
 @fragment
 fn fs_both(o: LineOut) -> Both {
-    return inked(o.kind, coverage(o));
+    return line_ink(o);
 }

@@ -20,13 +20,15 @@ use crate::edges::{EdgeIndex, View};
 use crate::error::Result;
 use crate::mesh::back_to_back::without_back_to_back;
 use crate::mesh::bvh::Bvh;
+use crate::render::color::to_linear;
 use crate::render::gpu_mesh::{GpuMesh, HostMesh, NormalMode};
 use crate::render::mesh_record::MeshRecord;
 use crate::render::scene::camera::{direction_of, ResolvedCamera};
+use crate::render::scene::lines::LineSet;
 use crate::render::scene::SceneItem;
 
 use super::projection::{Projector, ScreenLine};
-use super::settings::{ContourRule, Outlines, HIDDEN_KIND};
+use super::settings::{ContourRule, Outlines, HIDDEN_KIND, LINES_KIND};
 use super::shared_borders::shared_borders;
 use super::stroke_width::{strength_factor, StrokeWidth};
 
@@ -294,6 +296,12 @@ pub struct LineInstance {
 /// `LineInstance::flags`: the line is known to be visible (or drawn as hidden), so the lines
 /// pass draws it without its depth test.
 pub const EXACT: u32 = 1;
+/// `LineInstance::flags`: the line is inked in its own colour and width (`FrameLine::ink`), solid,
+/// and held against the surfaces only (a `Lines` item's, not a rim of a mesh).
+pub const OWN_INK: u32 = 2;
+/// `LineInstance::flags`: its points are in normalised view coordinates already (a `Lines`
+/// item's), not a mesh's stored ones.
+pub const IN_VIEW: u32 = 4;
 
 impl LineInstance {
     /// Its vertex attributes, shader locations 0 to 3 (`LineIn` in `lines.wgsl`): the flags
@@ -317,19 +325,22 @@ impl LineInstance {
     }
 }
 
-/// One line of a frame: the line, and the distance along its stroke on screen at both ends
-/// (output pixels at the frame's pixel ratio), where its dashes are measured from.
+/// One line of a frame: the line, the distance along its stroke on screen at both ends
+/// (output pixels at the frame's pixel ratio), where its dashes are measured from, and its own
+/// ink where `OWN_INK` says so.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct FrameLine {
     pub line: LineInstance,
     pub along: [f32; 2],
+    /// Linear rgb and the width in output pixels (`OWN_INK`); zeros otherwise.
+    pub ink: [f32; 4],
 }
 
 impl FrameLine {
-    /// Its vertex attributes: the line's, then the flags and the distances along
-    /// (`LineIn` in `lines.wgsl`, locations 4 and 5).
-    pub const ATTRIBUTES: [wgpu::VertexAttribute; 6] = {
+    /// Its vertex attributes: the line's, then the flags, the distances along and the own ink
+    /// (`LineIn` in `lines.wgsl`, locations 4 to 6).
+    pub const ATTRIBUTES: [wgpu::VertexAttribute; 7] = {
         let [a, kind, b, scale] = LineInstance::ATTRIBUTES;
         [
             a,
@@ -346,6 +357,11 @@ impl FrameLine {
                 offset: std::mem::offset_of!(FrameLine, along) as u64,
                 shader_location: 5,
             },
+            wgpu::VertexAttribute {
+                format: wgpu::VertexFormat::Float32x4,
+                offset: std::mem::offset_of!(FrameLine, ink) as u64,
+                shader_location: 6,
+            },
         ]
     };
 
@@ -358,6 +374,7 @@ impl FrameLine {
             scale: l.scale.map(|x| x as f64),
             along: self.along.map(|x| x as f64),
             exact: l.flags & EXACT != 0,
+            own_width: (l.flags & OWN_INK != 0).then_some(self.ink[3] as f64),
             ..s
         })
     }
@@ -384,16 +401,60 @@ pub struct Chain {
     /// How many surfaces hide it, where the exact rule decided (`occluded`); None: the lines
     /// pass decides against the frame's depth.
     pub occlusion: Option<u32>,
+    /// A `Lines` item's line: its ink (linear rgb, width in pixels), its points in normalised
+    /// view coordinates. None: a mesh's line, in its stored coordinates.
+    pub own: Option<[f32; 4]>,
 }
 
 impl Chain {
-    /// Its ink kind: its line kind, or hidden lines' where surfaces hide it.
+    /// Its ink kind: its line kind (`LINES_KIND` for a `Lines` item's), or hidden lines' where
+    /// surfaces hide it.
     pub fn ink(&self) -> usize {
         match self.occlusion {
             Some(q) if q > 0 => HIDDEN_KIND,
+            _ if self.own.is_some() => LINES_KIND,
             _ => self.kind as usize,
         }
     }
+
+    /// Its ink's width in pixels under `outlines` where it is visible.
+    pub fn width(&self, outlines: &Outlines) -> f64 {
+        match self.own {
+            Some(_) => self.own_width(),
+            None => outlines.styles[self.kind as usize].map_or(0.0, |s| s.width as f64),
+        }
+    }
+
+    /// A `Lines` item's ink width in pixels (0 for a mesh's line).
+    pub fn own_width(&self) -> f64 {
+        self.own.map_or(0.0, |o| o[3] as f64)
+    }
+}
+
+/// Each `Lines` item's polylines seen by `cam` (in normalised view coordinates, as the lines
+/// pass draws them), in its ink (resolved when the scene was checked).
+pub fn set_chains(sets: &[LineSet], cam: &ResolvedCamera) -> Vec<Vec<Chain>> {
+    let view = cam.normalized_view();
+    sets.iter()
+        .map(|set| {
+            let ink = set.ink(None);
+            let [r, g, b] = to_linear(ink.color);
+            let model_view = view * set.model_matrix();
+            let seen = |p: &[f64; 3]| model_view.transform_point3(DVec3::from_array(*p)).to_array();
+            set.polylines()
+                .iter()
+                .map(|points| Chain {
+                    // a kind off the rim: the line is held against surfaces only
+                    kind: LineKind::Ridge,
+                    points: points.iter().map(seen).collect(),
+                    strength: Vec::new(),
+                    traced: false,
+                    occlusion: None,
+                    own: Some([r, g, b, ink.width]),
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// The lines of one view: each scene item's chains, as the lines pass draws them (instances and
@@ -422,7 +483,7 @@ pub fn chains(outline: &MeshOutline, positions: &[[f64; 3]]) -> Vec<Chain> {
         let (flat, starts) = chain_edges(&of_kind);
         for w in starts.windows(2) {
             let points = flat[w[0] as usize..w[1] as usize].iter().map(|&v| positions[v as usize]).collect();
-            out.push(Chain { kind, points, strength: Vec::new(), traced: false, occlusion: None });
+            out.push(Chain { kind, points, strength: Vec::new(), traced: false, occlusion: None, own: None });
         }
     }
     for (kind, curves) in &outline.curves {
@@ -432,6 +493,7 @@ pub fn chains(outline: &MeshOutline, positions: &[[f64; 3]]) -> Vec<Chain> {
             strength: curves.line_strength(i).to_vec(),
             traced: true,
             occlusion: None,
+            own: None,
         }));
     }
     out
@@ -461,17 +523,27 @@ pub fn instances(
             depths[i] = zb;
         }
         let closed = n > 2 && c.points[0] == c.points[n - 1];
-        let mut factors =
-            if rule.is_constant() { vec![1.0; n] } else { rule.factors(&along, &depths, closed, reference) };
+        // a `Lines` item's ink keeps its width
+        let mut factors = if rule.is_constant() || c.own.is_some() {
+            vec![1.0; n]
+        } else {
+            rule.factors(&along, &depths, closed, reference)
+        };
         if faded {
             factors.iter_mut().zip(&c.strength).for_each(|(f, &s)| *f *= strength_factor(s));
         }
-        let flags = if c.occlusion.is_some() { EXACT } else { 0 };
+        let ink = c.ink();
+        let own = c.own.filter(|_| ink == LINES_KIND);
+        let flags = if c.occlusion.is_some() { EXACT } else { 0 }
+            | if c.own.is_some() { IN_VIEW } else { 0 }
+            | if own.is_some() { OWN_INK } else { 0 };
+        // the ink table has no row for a `Lines` item's own ink
+        let kind = if own.is_some() { HIDDEN_KIND } else { ink };
         out.extend((1..n).map(|i| {
             let scale = [factors[i - 1] as f32, factors[i] as f32];
             let line =
-                LineInstance { flags, ..LineInstance::of_ink(c.ink(), c.points[i - 1], c.points[i], scale) };
-            FrameLine { line, along: [along[i - 1] as f32, along[i] as f32] }
+                LineInstance { flags, ..LineInstance::of_ink(kind, c.points[i - 1], c.points[i], scale) };
+            FrameLine { line, along: [along[i - 1] as f32, along[i] as f32], ink: own.unwrap_or_default() }
         }));
     }
     out

@@ -65,15 +65,33 @@ pub struct OutlinesEffect;
 
 pub static EFFECT: OutlinesEffect = OutlinesEffect;
 
-/// Whether the scene's mesh-space lines are cut on the host (`VisibilityRule::Exact`), not
-/// against the frame's depth.
-fn exact(scene: &CheckedScene) -> bool {
-    scene.scene.outlines.as_ref().is_some_and(|o| o.visibility == settings::VisibilityRule::Exact)
+/// The rules the line steps run under: the scene's outlines where they draw mesh-space lines;
+/// for a scene with `Lines` items and no such outlines, its outlines' rules (visibility, hidden
+/// lines; else the defaults) drawing no kind of mesh-space line, so that only the items' lines
+/// are drawn; None: no line is drawn.
+fn line_rules(scene: &CheckedScene) -> Option<settings::Outlines> {
+    let outlines = scene.scene.outlines.as_ref();
+    if outlines.is_some_and(settings::Outlines::draws_mesh_lines) {
+        return outlines.cloned();
+    }
+    if scene.scene.lines.is_empty() {
+        return None;
+    }
+    let mut rules = outlines.cloned().unwrap_or_default();
+    rules.styles[..LineKind::COUNT].fill(None);
+    Some(rules)
 }
 
-/// What the scene's outlines draw: mesh-space lines, image-space edges.
+/// Whether the scene's lines are cut on the host (`VisibilityRule::Exact`), not against the
+/// frame's depth.
+fn exact(scene: &CheckedScene) -> bool {
+    line_rules(scene).is_some_and(|o| o.visibility == settings::VisibilityRule::Exact)
+}
+
+/// What the scene draws: lines (mesh-space lines or `Lines` items), image-space edges.
 fn draws(scene: &CheckedScene) -> (bool, bool) {
-    scene.scene.outlines.as_ref().map_or((false, false), |o| (o.draws_mesh_lines(), o.draws_image_edges()))
+    let image = scene.scene.outlines.as_ref().is_some_and(|o| o.draws_image_edges());
+    (line_rules(scene).is_some(), image)
 }
 
 impl FrameEffect for OutlinesEffect {
@@ -86,6 +104,8 @@ impl FrameEffect for OutlinesEffect {
         s += &wgsl::constant_u32("IMAGE_KIND", IMAGE_KIND as u32);
         s += &wgsl::constant_u32("DASH_ROWS", DASH_ROWS as u32);
         s += &wgsl::constant_u32("EXACT", mesh_lines::EXACT);
+        s += &wgsl::constant_u32("OWN_INK", mesh_lines::OWN_INK);
+        s += &wgsl::constant_u32("IN_VIEW", mesh_lines::IN_VIEW);
         s += &wgsl::constant_u32("RIM_KINDS", LineKind::RIM_BITS);
         s += &wgsl::constant_f32("DEPTH_EPSILON", visibility::DEPTH_EPSILON);
         s += &wgsl::constant_u32("IMAGE_RULE_PAPER", settings::ImageRule::Paper as u32);
@@ -129,7 +149,8 @@ impl FrameEffect for OutlinesEffect {
         if o.has(Output::Lines) && !draws(scene).0 {
             return Err(Error::invalid(
                 "outputs",
-                "'lines' needs mesh-space outlines (outlines='mesh' or 'both', with some kind of line drawn)",
+                "'lines' needs mesh-space outlines (outlines='mesh' or 'both', with some kind of line drawn) \
+                 or a toonmesh.Lines item",
             ));
         }
         Ok(())
@@ -149,7 +170,8 @@ impl FrameEffect for OutlinesEffect {
     }
 
     fn plan(&self, cx: &PlanInputs<'_>, steps: &mut Steps) {
-        let Some(outlines) = &cx.scene.scene.outlines else { return };
+        let rules = line_rules(cx.scene);
+        let Some(outlines) = cx.scene.scene.outlines.as_ref().or(rules.as_ref()) else { return };
         let o = cx.scene.frame.outputs;
         let (color, outline) = (o.has(Output::Color), o.has(Output::Outline));
         let (mesh, image) = draws(cx.scene);
@@ -167,7 +189,7 @@ impl FrameEffect for OutlinesEffect {
         }
         let lines = mesh && (color || outline);
         let visible = mesh && o.has(Output::Lines);
-        if lines || visible {
+        if let Some(outlines) = rules.as_ref().filter(|_| lines || visible) {
             let view = Arc::default();
             let crossing =
                 outlines.styles[LineKind::Intersection as usize].is_some() && cx.scene.scene.items.len() > 1;

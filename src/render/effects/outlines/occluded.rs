@@ -25,7 +25,8 @@ pub const SAMPLE_SPACING: f64 = 1.0;
 /// corner between two samples).
 pub const MIN_PIECE: f64 = 0.5;
 
-/// `chains` (each item's, in its stored coordinates) cut into visible pieces and, where
+/// `chains` (each item's, in its stored coordinates; then each `Lines` item's, seen by the
+/// projectors after the meshes') cut into visible pieces and, where
 /// `outlines` draws hidden lines, hidden ones (within `max_occlusion`), hidden first; each
 /// piece keeps its kind and strength and carries its occlusion.
 pub fn cut(
@@ -52,7 +53,7 @@ pub fn cut(
             c.points.iter().map(|q| p.model_view.transform_point3(DVec3::from_array(*q))).collect();
         let lengths: Vec<f64> =
             c.points.windows(2).map(|w| p.project(w[0], w[1], 0).map_or(0.0, |l| l.length())).collect();
-        let width = outlines.styles[c.kind as usize].map_or(0.0, |s| s.width as f64);
+        let width = c.width(outlines);
         let runs = occluders.runs(&view, item, c.traced, limit, (&lengths, width.max(SAMPLE_SPACING)));
         let whole = runs.len() == 1;
         // a run's length on screen, from the segments' (as `runs` measures along the line)
@@ -74,6 +75,7 @@ pub fn cut(
                 },
                 traced: c.traced,
                 occlusion: Some(r.occlusion),
+                own: c.own,
             })
             .collect()
     };

@@ -23,6 +23,9 @@ pub struct ScreenLine {
     pub along: [f64; 2],
     /// Visibility was decided on the host (`mesh_lines::EXACT`): no depth test.
     pub exact: bool,
+    /// A `Lines` item's own width in pixels (`mesh_lines::OWN_INK`): solid, in place of its
+    /// kind's width and dashes.
+    pub own_width: Option<f64>,
 }
 
 impl ScreenLine {
@@ -72,8 +75,13 @@ impl Projector {
         width: u32,
         height: u32,
     ) -> Self {
+        Projector { model_view: model_view(item, placement, cam), ..Projector::in_view(cam, width, height) }
+    }
+
+    /// Projects lines already in normalised view coordinates (`Lines` items').
+    pub fn in_view(cam: &ResolvedCamera, width: u32, height: u32) -> Self {
         Projector {
-            model_view: model_view(item, placement, cam),
+            model_view: DMat4::IDENTITY,
             proj: cam.normalized_proj(),
             width: width as f64,
             height: height as f64,
@@ -112,6 +120,7 @@ impl Projector {
             scale: [1.0; 2],
             along: [0.0; 2],
             exact: false,
+            own_width: None,
         })
     }
 }

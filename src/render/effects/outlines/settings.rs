@@ -97,6 +97,14 @@ pub const DEFAULT_DEPTH_JUMP: f32 = 3.0;
 pub const IMAGE_KIND: usize = LineKind::COUNT;
 pub const HIDDEN_KIND: usize = LineKind::COUNT + 1;
 pub const INK_KINDS: usize = LineKind::COUNT + 2;
+/// The ink of `Lines` items (`scene::lines`): each set's own colour and width, no style of the
+/// outlines, so past the table of kinds; named "lines" (`ink_name`).
+pub const LINES_KIND: usize = INK_KINDS;
+
+/// The name of ink kind `k`: `kind_names`, or "lines" for `LINES_KIND`.
+pub fn ink_name(k: usize) -> &'static str {
+    kind_names().get(k).copied().unwrap_or("lines")
+}
 
 /// Hidden lines' default ink: grey, ...
 pub const HIDDEN_GREY: f64 = 0.5;

@@ -10,10 +10,10 @@ use crate::render::graph::report::{FrameReport, Polyline};
 use crate::render::scene::camera::ResolvedCamera;
 use crate::render::uniforms::footprint;
 
-use super::mesh_lines::ViewSlot;
+use super::mesh_lines::{Chain, ViewSlot};
 use super::projection::{Projector, ScreenLine};
-use super::settings::INK_KINDS;
-use super::strokes::{drop_covered, join_runs};
+use super::settings::{INK_KINDS, LINES_KIND};
+use super::strokes::{drop_covered, join_runs, MIN_JOIN_GAP};
 
 /// The relative depth tolerance of the visibility test (float rounding of the line's own depth).
 pub const DEPTH_EPSILON: f64 = 1e-5;
@@ -81,9 +81,9 @@ pub fn dashed(along: f64, dash: f64) -> f64 {
     (dash / 2.0 + 0.5 - w.abs()).clamp(0.0, 1.0)
 }
 
-/// Ink coverage of every pixel by `lines` (widths and dash lengths in pixels per kind), 0 where
-/// hidden (lines decided on the host, `ScreenLine::exact`, are not tested): what the line pass
-/// writes into the outline output.
+/// Ink coverage of every pixel by `lines` (widths and dash lengths in pixels per kind; a
+/// `Lines` item's own width, solid), 0 where hidden (lines decided on the host,
+/// `ScreenLine::exact`, are not tested): what the line pass writes into the outline output.
 pub fn coverage_image(
     lines: &[ScreenLine],
     (widths, dashes): (&[f32], &[f32]),
@@ -94,7 +94,8 @@ pub fn coverage_image(
     let (w, h) = (img.width, img.height);
     let mut out = vec![0.0f32; w * h];
     for l in lines {
-        let width = widths[l.kind] as f64;
+        let width = l.own_width.unwrap_or(widths[l.kind] as f64);
+        let dash = if l.own_width.is_some() { 0.0 } else { dashes[l.kind] as f64 };
         let reach = width * l.scale[0].max(l.scale[1]) / 2.0 + 1.0;
         let x0 = (l.a[0].min(l.b[0]) - reach).floor().max(0.0) as usize;
         let y0 = (l.a[1].min(l.b[1]) - reach).floor().max(0.0) as usize;
@@ -113,7 +114,7 @@ pub fn coverage_image(
                 let (c, z) = l.at(t, orthographic);
                 let here = width * l.factor(t);
                 let cov = (here / 2.0 + 0.5 - (p[0] - c[0]).hypot(p[1] - c[1])).clamp(0.0, 1.0)
-                    * dashed(l.along_at(t), dashes[l.kind] as f64);
+                    * dashed(l.along_at(t), dash);
                 if cov > 0.0 && (l.exact || rule.visible(img, c, z, l.kind)) {
                     let o = &mut out[y * w + x];
                     *o = o.max(cov as f32);
@@ -236,10 +237,17 @@ impl HostStep for VisibleLines {
             .ok_or_else(|| Error::Internal("visible lines without the view's lines".into()))?;
         let rule = Visibility::of(self.depth_offset, cx.cam, frame.height);
         let img = DepthImage { depth, width: frame.width as usize, height: frame.height as usize };
-        let mut out = Vec::new();
-        let items = cx.scene.scene.items.iter().zip(cx.records);
-        for (((item, rec), chains), draw) in items.zip(&view.chains).zip(&view.draws) {
-            let projector = Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height);
+        let (mut out, mut of_item) = (Vec::new(), Vec::new());
+        let items = &cx.scene.scene.items;
+        for (i, (chains, draw)) in view.chains.iter().zip(&view.draws).enumerate() {
+            // the meshes' lines, then each `Lines` item's (in view coordinates)
+            let set = i.checked_sub(items.len());
+            let projector = match set {
+                None => {
+                    Projector::of(&items[i], &cx.records[i].gpu.placement, cx.cam, frame.width, frame.height)
+                }
+                Some(_) => Projector::in_view(cx.cam, frame.width, frame.height),
+            };
             // each chain's segments, in order, are the item's line instances (with their widths)
             let mut instances =
                 view.instances[draw.instances.start as usize..draw.instances.end as usize].iter();
@@ -256,13 +264,32 @@ impl HostStep for VisibleLines {
                         Some(ScreenLine { scale: line.line.scale.map(f64::from), exact, ..seen })
                     })
                     .collect();
-                runs.extend(visible_runs(&screen, cx.cam.orthographic, &img, rule, self.widths[kind]));
+                let width = if kind == LINES_KIND { c.own_width() } else { self.widths[kind] };
+                runs.extend(visible_runs(&screen, cx.cam.orthographic, &img, rule, width));
             }
-            let gap = |k: usize| self.gaps[k];
-            let strokes = drop_covered(join_runs(runs, true, gap), gap);
-            out.extend(if self.join_kinds { join_runs(strokes, false, gap) } else { strokes });
+            let strokes = match set {
+                None => {
+                    let gap = |k: usize| self.gaps[k];
+                    let strokes = drop_covered(join_runs(runs, true, gap), gap);
+                    if self.join_kinds {
+                        join_runs(strokes, false, gap)
+                    } else {
+                        strokes
+                    }
+                }
+                // the user's own lines are drawn whole: joined where they meet, never dropped
+                Some(_) => {
+                    let own = chains.first().map_or(0.0, Chain::own_width);
+                    let gap = |k: usize| if k == LINES_KIND { own.max(MIN_JOIN_GAP) } else { self.gaps[k] };
+                    join_runs(runs, true, gap)
+                }
+            };
+            of_item.extend(strokes.iter().map(|_| set));
+            out.extend(strokes);
         }
         report.lines = Some(out);
+        report.line_items = Some(of_item);
+        report.line_inks = cx.scene.line_inks().iter().map(|s| (s.color, s.width)).collect();
         Ok(())
     }
 }
@@ -294,6 +321,7 @@ mod tests {
             scale: [1.0; 2],
             along: [0.0, 12.0],
             exact: false,
+            own_width: None,
         };
         let cov = coverage_image(&[line], (&[1.5], &[0.0]), false, &img, rule);
         assert_eq!(cov[8 * 16 + 8], 1.0);
