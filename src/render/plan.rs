@@ -21,6 +21,7 @@ use crate::render::graph::target::{GeometryLayout, Shape, Target};
 use crate::render::graph::Pass;
 use crate::render::passes::downsample::Downsample;
 use crate::render::passes::geometry::Geometry;
+use crate::render::passes::glass;
 use crate::render::passes::readback::{Readback, Region};
 use crate::render::passes::shade::Shade;
 use crate::render::scene::checked::CheckedScene;
@@ -96,6 +97,11 @@ pub fn plan(scene: &CheckedScene) -> Plan {
     for e in FRAME {
         geometry = wider(geometry, e.geometry(scene));
     }
+    // glass is peeled against the opaque surfaces' depth
+    let glass = scene.has_glass();
+    if glass {
+        geometry = wider(geometry, Some(GeometryLayout::Depth));
+    }
     let color = o.has(Output::Color);
     let single = frame.msaa == 1 && frame.supersample == 1;
     let in_shade = color && single && geometry.is_some();
@@ -111,8 +117,16 @@ pub fn plan(scene: &CheckedScene) -> Plan {
         ..Default::default()
     };
     let cx = PlanInputs { scene, geometry };
+    let mut glass_at = None;
     for e in FRAME {
+        if e.over_glass() && glass_at.is_none() {
+            glass_at = Some(steps.after.len());
+        }
         e.plan(&cx, &mut steps);
+    }
+    if glass {
+        let at = glass_at.unwrap_or(steps.after.len());
+        steps.after.splice(at..at, glass::passes(frame.glass_layers));
     }
     let mut passes = std::mem::take(&mut steps.before);
     if color {

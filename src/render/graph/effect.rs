@@ -110,4 +110,9 @@ pub trait FrameEffect: Sync {
     fn geometry(&self, scene: &CheckedScene) -> Option<GeometryLayout>;
     /// Its steps for the frame.
     fn plan(&self, cx: &PlanInputs<'_>, steps: &mut Steps);
+    /// Whether its passes after shading lay over the glass (`passes::glass`) rather than under
+    /// it, as ink does.
+    fn over_glass(&self) -> bool {
+        false
+    }
 }

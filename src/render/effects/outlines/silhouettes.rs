@@ -48,7 +48,13 @@ impl HostStep for Silhouettes {
             .map(|(item, rec)| Projector::of(item, &rec.gpu.placement, cx.cam, frame.width, frame.height))
             .collect();
         if self.outlines.visibility == VisibilityRule::Exact {
-            found = occluded::cut(found, cx.records, &projectors, cx.cam.orthographic, &self.outlines)?;
+            found = occluded::cut(
+                found,
+                (cx.records, &cx.scene.glass),
+                &projectors,
+                cx.cam.orthographic,
+                &self.outlines,
+            )?;
         }
         for (i, (chains, projector)) in found.into_iter().zip(&projectors).enumerate() {
             let first = lines.instances.len() as u32;
