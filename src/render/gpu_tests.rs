@@ -237,6 +237,7 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
                 specular: [0.5, 0.5, 0.5],
                 per_vertex: false,
                 effects: Default::default(),
+                opacity: 1.0,
             };
             let scene = sphere_scene(&r, material, NormalMode::Smooth);
             let hard = FrameSpec { band_antialias: false, ..all_outputs(161, 97) };

@@ -10,6 +10,8 @@
 //! Each layer costs a draw of the glass meshes and a full-screen pass; glass casts no shadow and
 //! receives none.
 
+#[cfg(test)]
+mod gpu_tests;
 pub mod reference;
 
 use std::sync::Arc;
