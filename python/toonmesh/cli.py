@@ -618,7 +618,7 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                                 "(default: the style's, and white under a file's own colours, so that they show "
                                 "as they are)")
     sets(p, color, (Material, "color"))
-    add_described(p, "--opacity", Material, "opacity", metavar="A")
+    add_described(p, "--opacity", Material, "opacity", constructor=default_style(), metavar="A")
     add_described(p, "--glass-layers", RenderOptions, "glass_layers", metavar="N")
     add_described(p, "--dither", Dither, "pattern", default=NONE, extra_choices=(NONE,),
                   help_before="dither between neighbouring bands; ", also_sets=[(Material, "dither")])
