@@ -331,7 +331,7 @@ fn screen_lines(
     let mut found: Vec<_> =
         outlines_of.iter().zip(&p.records).map(|(o, rec)| chains(o, &rec.host.positions)).collect();
     if outlines.visibility == VisibilityRule::Exact {
-        found = cut(found, &p.records, &projectors, p.cam.orthographic, outlines).unwrap();
+        found = cut(found, (&p.records, &p.scene.glass), &projectors, p.cam.orthographic, outlines).unwrap();
     }
     for (projector, of_item) in projectors.iter().zip(&found) {
         let drawn = instances(of_item, projector, &outlines.stroke_width, reference);

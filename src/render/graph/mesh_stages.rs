@@ -160,8 +160,15 @@ pub static GLASS: Part = Part {
     }),
     module: glass::PEEL_WGSL,
     vertex: &[],
-    fragment: &["var opacity = draw.material.opacity;"],
-    after: &["if (!in_layer(i.clip.xy, depth_bits(f))) {", "    discard;", "}"],
+    // outside the layer before shading: most fragments of a later layer are (a discard demotes
+    // the pixel to a helper, so the shading's derivatives still have their quad)
+    fragment: &[
+        "if (!in_layer(i.clip.xy, depth_bits(f))) {",
+        "    discard;",
+        "}",
+        "var opacity = draw.material.opacity;",
+    ],
+    after: &[],
 };
 
 /// A glass mesh's colour alpha, where it counts (glTF's alpha blend).

@@ -77,7 +77,8 @@ fn peeled_glass_is_the_cpu_twin_in_any_order_on_both_backends() {
             }
             layered += (frags.len() == 2) as usize;
             let want = peeled(&frags, 5.0, linear(&at(&c_red)), frame.glass_layers);
-            assert_eq!(want, over(&frags, 5.0, linear(&at(&c_red))), "4 layers peel 2 exactly");
+            let exact = over(&frags, 5.0, linear(&at(&c_red)));
+            assert!(want.iter().zip(exact).all(|(a, b)| (a - b).abs() < 1e-6), "4 layers peel 2 exactly");
             let want = want.map(|c| linear_to_srgb8(c as f64));
             for img in &images {
                 for (g, w) in at(img).iter().zip(want) {
@@ -86,7 +87,7 @@ fn peeled_glass_is_the_cpu_twin_in_any_order_on_both_backends() {
             }
             // the orders agree within a level
             for img in &images[1..] {
-                assert!(at(img).iter().zip(at(&images[0])).all(|(a, b)| (*a as i32 - *b as i32).abs() <= 1));
+                assert!(at(img).iter().zip(at(&images[0])).all(|(a, b)| (*a as i32 - b as i32).abs() <= 1));
             }
         }
         assert!(layered > 100, "{backend:?}: {layered} pixels behind two glass squares");
