@@ -201,3 +201,16 @@ def test_bad_opacity_and_alpha_blend_are_refused():
         tm.RenderOptions(glass_layers=0)
     assert tm.Material.lambert(opacity=0.25).opacity == 0.25
     assert tm.Material.lambert().opacity == 1.0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_glass_over_multisampled_and_supersampled_frames(backend):
+    r = tm.Renderer(backend=backend)
+    centre = (slice(S // 2 - 6, S // 2 + 6),) * 2
+    single = r.render(layers(), outputs=("color", "depth"), **HEAD_ON)
+    for more in (dict(msaa=4), dict(supersample=2)):
+        res = r.render(layers(), outputs=("color", "depth"), **HEAD_ON, **more)
+        assert "gbuffer" in res.passes and res.passes.count("glass_peel") == 4
+        assert np.abs(rgb(res)[centre] - rgb(single)[centre]).max() <= 1
+    # the depth output holds the opaque surface only: the red square at z = 0, 10 from the eye
+    assert np.allclose(single.depth[centre], 10.0, atol=1e-4)
