@@ -370,6 +370,21 @@ mod tests {
     }
 
     #[test]
+    fn glass_runs_its_passes_only_when_colour_is_asked_for() {
+        let mut glass = scene(None, false);
+        glass.items[0].material.opacity = 0.5;
+        let f = FrameSpec { glass_layers: 2, ..Default::default() };
+        let layers = ["glass_peel", "glass_under", "glass_peel", "glass_under"];
+        let want: Vec<&str> =
+            [&["shade", "glass_clear"][..], &layers, &["glass_composite", "readback_color"]].concat();
+        assert_eq!(names(glass.clone(), f), want);
+        // peeled against the opaque surfaces' depth, which the shading pass writes
+        assert_eq!(plan(&checked(glass.clone(), f)).shape.geometry, Some(GeometryLayout::Depth));
+        assert_eq!(names(glass, outputs(&[Output::Depth])), ["gbuffer", "readback_depth"]);
+        assert_eq!(names(scene(None, false), f), ["shade", "readback_color"]);
+    }
+
+    #[test]
     fn targets_get_the_usages_their_passes_declare() {
         let f = FrameSpec { supersample: 2, ..Default::default() };
         let key = plan(&checked(scene(Some(Outlines::new(true, false)), false), f)).resource_key(true);
