@@ -214,3 +214,18 @@ def test_glass_over_multisampled_and_supersampled_frames(backend):
         assert np.abs(rgb(res)[centre] - rgb(single)[centre]).max() <= 1
     # the depth output holds the opaque surface only: the red square at z = 0, 10 from the eye
     assert np.allclose(single.depth[centre], 10.0, atol=1e-4)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_the_glass_own_ink_is_drawn_over_it(backend):
+    r = tm.Renderer(backend=backend)
+    box = tm.Mesh(*_box(), material=tm.Material.lambert((0.9, 0.9, 0.9), opacity=0.8), normals="flat")
+    view = dict(camera=tm.Camera.look_at((2.0, 1.5, 4.0), target=(0.0, 0.0, 0.0)), width=128, height=128,
+                outlines=tm.Outlines("mesh"), outputs=("color", "outline"))
+    res = r.render(box, **view)
+    assert res.passes.index("glass_lines") > res.passes.index("glass_composite") > res.passes.index("lines")
+    ink = res.outline > 0.5
+    assert ink.sum() > 200
+    # its silhouette and creases, the hidden back edges too (glass hides no line): dark, not
+    # lightened by the glass they lie on
+    assert (rgb(res).max(axis=-1) < 100)[ink].mean() >= 0.8

@@ -126,7 +126,9 @@ pub fn plan(scene: &CheckedScene) -> Plan {
     }
     if glass {
         let at = glass_at.unwrap_or(steps.after.len());
-        steps.after.splice(at..at, glass::passes(frame.glass_layers));
+        let mut passes = glass::passes(frame.glass_layers);
+        passes.append(&mut steps.over_glass);
+        steps.after.splice(at..at, passes);
     }
     let mut passes = std::mem::take(&mut steps.before);
     if color {
@@ -382,6 +384,24 @@ mod tests {
         assert_eq!(plan(&checked(glass.clone(), f)).shape.geometry, Some(GeometryLayout::Depth));
         assert_eq!(names(glass, outputs(&[Output::Depth])), ["gbuffer", "readback_depth"]);
         assert_eq!(names(scene(None, false), f), ["shade", "readback_color"]);
+        // the opaque items' ink under the glass, the glass's own over it
+        let mut inked = scene(Some(Outlines::new(true, false)), false);
+        inked.items[0].material.opacity = 0.5;
+        let one = FrameSpec { glass_layers: 1, ..f };
+        assert_eq!(
+            names(inked, one),
+            [
+                "silhouettes",
+                "shade",
+                "lines",
+                "glass_clear",
+                "glass_peel",
+                "glass_under",
+                "glass_composite",
+                "glass_lines",
+                "readback_color"
+            ]
+        );
     }
 
     #[test]

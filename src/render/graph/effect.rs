@@ -93,6 +93,9 @@ pub struct Steps {
     pub host_depth: bool,
     /// Whether a pass already wrote (and so cleared) the outline coverage.
     pub outline_written: bool,
+    /// Passes right after the glass is composited, where the frame has glass (the glass's own
+    /// ink, drawn over it).
+    pub over_glass: Vec<Box<dyn Pass>>,
 }
 
 pub trait FrameEffect: Sync {

@@ -1,6 +1,7 @@
 //! Glass: exact, order-independent compositing of the meshes that let light through
 //! (`scene::checked::is_glass`), by depth peeling. The opaque meshes are drawn as in a frame
-//! without glass (every other pass skips glass: `FrameCtx::draw_meshes`), their ink included;
+//! without glass (every other pass skips glass: `FrameCtx::draw_meshes`), their ink included
+//! (the glass's own ink is drawn over the composite: `Steps::over_glass`);
 //! then `layers` peels each find, per pixel, the nearest glass fragment strictly behind the
 //! last layer's and in front of the opaque surface (the geometry target's linear depth), shade
 //! it with its opacity, and add it under the layers before (front to back); a last pass lays
