@@ -224,8 +224,10 @@ def test_the_glass_own_ink_is_drawn_over_it(backend):
                 outlines=tm.Outlines("mesh"), outputs=("color", "outline"))
     res = r.render(box, **view)
     assert res.passes.index("glass_lines") > res.passes.index("glass_composite") > res.passes.index("lines")
-    ink = res.outline > 0.5
+    opaque = r.render(tm.Mesh(*_box(), material=tm.Material.lambert((0.9, 0.9, 0.9)), normals="flat"), **view)
+    # the back edges too: glass hides no line
+    assert (res.outline > 0.5).sum() > 1.2 * (opaque.outline > 0.5).sum()
+    # its silhouette and creases are dark where fully inked, not lightened by the glass they lie on
+    ink = res.outline > 0.99
     assert ink.sum() > 200
-    # its silhouette and creases, the hidden back edges too (glass hides no line): dark, not
-    # lightened by the glass they lie on
-    assert (rgb(res).max(axis=-1) < 100)[ink].mean() >= 0.8
+    assert (rgb(res).max(axis=-1) < 100)[ink].mean() >= 0.95
