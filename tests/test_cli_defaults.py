@@ -33,6 +33,8 @@ DESCRIBED = {
     ("render", "msaa"): (RenderOptions, "", "msaa"),
     ("render", "supersample"): (RenderOptions, "", "supersample"),
     ("render", "pixel_ratio"): (RenderOptions, "", "pixel_ratio"),
+    ("render", "glass_layers"): (RenderOptions, "", "glass_layers"),
+    ("render", "opacity"): (Material, "bands", "opacity"),
     ("edges", "crease_angle"): (Outlines, "", "crease_angle"),
     ("edges", "weld"): (Outlines, "", "weld"),
     ("edges", "contours"): (Outlines, "", "contours"),

@@ -150,6 +150,7 @@ class _RenderKeywords(TypedDict, total=False):
     supersample: Optional[int]
     pixel_ratio: Optional[float]
     band_antialias: Optional[bool]
+    glass_layers: Optional[int]
     outlines: Optional[Union[str, Outlines]]
     paper: Optional[Paper]
 
@@ -492,22 +493,32 @@ class Material(_Settings):
     are shaded and the colours interpolated (Gouraud, as Al-Rousan et al. colour vertices);
     otherwise every pixel is shaded.
 
+    ``opacity`` (every constructor, default 1) is how much of what lies behind the surface it
+    hides. Below 1 the mesh is glass: it is shaded as any mesh, then composited over what lies
+    behind it, in depth order whatever the order of the meshes (depth peeling, exact up to
+    ``RenderOptions.glass_layers`` glass surfaces a pixel; see the rendering guide's "Glass"). A
+    mesh's colour alpha joins in with its ``alpha_blend`` keyword (glTF's alpha blend, MTL
+    ``d``). Glass casts no shadow and receives none, and hides no ink: lines behind it show
+    through it.
+
     Fields: model: the shading model (hatching is 'bands' with hatch strokes); diffuse: the
     diffuse coefficient d_m, sRGB; ambient: the ambient coefficient a_m, sRGB; specular: the
     highlight coefficient S_m, sRGB; per_vertex: shade the vertices and interpolate (Gouraud)
-    instead of every pixel; shininess: Phong's exponent, > 0; t_h: the thresholded Phong model's
-    diffuse threshold on L.n; t_s: the thresholded Phong model's highlight threshold; highlight:
-    the highlight term: 'blinn' (n . h) or 'paper' (L . v, as the paper writes it); thresholds:
-    the bands' thresholds on L.n: 1 to 8, strictly increasing; values: the bands' tones: one
-    more than the thresholds, each >= 0; table: a lookup table: (N,) grey or (N, 3) RGB factors,
-    1 <= N <= 256; ink: hatch strokes' sRGB colour; spacing: pixels between hatch strokes, 2 to
-    256; width: hatch strokes' width in pixels, up to the spacing; mode: how hatch strokes are
-    laid: along the principal directions ('field') or straight on the axis planes ('triplanar');
-    dither: dithering between bands: None, a pattern name or a Dither (needs per-pixel shading);
-    rim: a rim light along the silhouette: None or a Rim.
+    instead of every pixel; opacity: how much of what lies behind it the surface hides: below 1
+    it is glass, composited in depth order over what lies behind it; shininess: Phong's
+    exponent, > 0; t_h: the thresholded Phong model's diffuse threshold on L.n; t_s: the
+    thresholded Phong model's highlight threshold; highlight: the highlight term: 'blinn' (n .
+    h) or 'paper' (L . v, as the paper writes it); thresholds: the bands' thresholds on L.n: 1
+    to 8, strictly increasing; values: the bands' tones: one more than the thresholds, each >=
+    0; table: a lookup table: (N,) grey or (N, 3) RGB factors, 1 <= N <= 256; ink: hatch
+    strokes' sRGB colour; spacing: pixels between hatch strokes, 2 to 256; width: hatch strokes'
+    width in pixels, up to the spacing; mode: how hatch strokes are laid: along the principal
+    directions ('field') or straight on the axis planes ('triplanar'); dither: dithering between
+    bands: None, a pattern name or a Dither (needs per-pixel shading); rim: a rim light along
+    the silhouette: None or a Rim.
     """
     @staticmethod
-    def lambert(color: Optional[_Color] = ..., *, ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., rim: Optional[Rim] = ...) -> Material:
+    def lambert(color: Optional[_Color] = ..., *, ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., opacity: Optional[float] = ..., rim: Optional[Rim] = ...) -> Material:
         """Plain Lambert: f = max(L.n, 0), no highlight.
 
         color: base colour (default (0.95, 0.55, 0.25)); the diffuse coefficient is 90% of it
@@ -515,7 +526,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def phong(color: Optional[_Color] = ..., *, specular: Optional[_Color] = ..., shininess: Optional[float] = ..., ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., rim: Optional[Rim] = ...) -> Material:
+    def phong(color: Optional[_Color] = ..., *, specular: Optional[_Color] = ..., shininess: Optional[float] = ..., ambient: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., opacity: Optional[float] = ..., rim: Optional[Rim] = ...) -> Material:
         """Plain Phong: f = max(L.n, 0), s = max(R.v, 0)^shininess on lit points (R: L reflected).
 
         color as in :meth:`lambert`; specular: highlight colour (default (0.5, 0.5, 0.5));
@@ -523,7 +534,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def thresholded_phong(color: Optional[_Color] = ..., *, t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
+    def thresholded_phong(color: Optional[_Color] = ..., *, t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., diffuse: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., opacity: Optional[float] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
         """Al-Rousan et al.'s toon model: C = a_l a_m + thresh(L.n, t_h) d_l d_m + thresh(h, t_s)
         S_l S_m.
 
@@ -535,7 +546,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def bands(color: Optional[_Color] = ..., *, thresholds: Optional[Sequence[float]] = ..., preset: Optional[Literal['paper']] = ..., values: Optional[Sequence[float]] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
+    def bands(color: Optional[_Color] = ..., *, thresholds: Optional[Sequence[float]] = ..., preset: Optional[Literal['paper']] = ..., values: Optional[Sequence[float]] = ..., per_vertex: Optional[bool] = ..., opacity: Optional[float] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
         """Borquez and Yepez's toon bands: f = values[k], k = number of thresholds t with L.n >= t.
 
         Thresholds default to the paper's (0.2, 0.5, 0.7, 0.9). Values default to (0.3, 0.45,
@@ -549,7 +560,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def hatching(color: Optional[_Color] = ..., *, ink: Optional[_Color] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
+    def hatching(color: Optional[_Color] = ..., *, ink: Optional[_Color] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., per_vertex: Optional[bool] = ..., opacity: Optional[float] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
         """Cross-hatching (Borquez and Yepez): the bands' tone (their value times the light, as
         :meth:`bands` computes it) picks how many layers of ink strokes cover the paper: none
         where the tone is above 0.8, then one layer below 0.8, two below 0.6 (cross-hatching),
@@ -576,7 +587,7 @@ class Material(_Settings):
         """
         ...
     @staticmethod
-    def lut(table: Optional[Any] = ..., color: Optional[_Color] = ..., *, per_vertex: Optional[bool] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
+    def lut(table: Optional[Any] = ..., color: Optional[_Color] = ..., *, per_vertex: Optional[bool] = ..., opacity: Optional[float] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material:
         """A lookup table (gradient map): f = table[min(floor(clamp(L.n, 0, 1) N), N - 1)].
 
         table: (N,) grey factors or (N, 3) RGB factors (linear, >= 0, 1 <= N <= 256) applied to
@@ -588,6 +599,7 @@ class Material(_Settings):
     ambient: Final[_Vec3]
     specular: Final[_Vec3]
     per_vertex: Final[bool]
+    opacity: Final[float]
     shininess: Final[Optional[float]]
     t_h: Final[Optional[float]]
     t_s: Final[Optional[float]]
@@ -602,7 +614,7 @@ class Material(_Settings):
     dither: Final[Optional[Dither]]
     rim: Final[Optional[Rim]]
     hatch_style: Final[Optional[Dict[str, Any]]]
-    def replace(self, *, diffuse: Optional[_Color] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., shininess: Optional[float] = ..., t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., table: Optional[Any] = ..., ink: Optional[_Color] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material: ...
+    def replace(self, *, diffuse: Optional[_Color] = ..., ambient: Optional[_Color] = ..., specular: Optional[_Color] = ..., per_vertex: Optional[bool] = ..., opacity: Optional[float] = ..., shininess: Optional[float] = ..., t_h: Optional[float] = ..., t_s: Optional[float] = ..., highlight: Optional[Literal['paper', 'blinn']] = ..., thresholds: Optional[Sequence[float]] = ..., values: Optional[Sequence[float]] = ..., table: Optional[Any] = ..., ink: Optional[_Color] = ..., spacing: Optional[float] = ..., width: Optional[float] = ..., mode: Optional[Literal['field', 'triplanar']] = ..., dither: Optional[Union[str, Dither]] = ..., rim: Optional[Rim] = ...) -> Material: ...
 
 @final
 class Paper(_Settings):
@@ -652,10 +664,12 @@ class RenderOptions(_Settings):
     in pixels: 2 with twice the width and height draws the same picture, sharper (a 2x screen);
     band_antialias: blend across each band border over about one pixel, from the screen-space
     change of the shading term: smooth tone borders at no extra samples (False: the papers' hard
-    borders); outlines: ink outlines: None, 'mesh', 'image', 'both' or an Outlines; paper: paper
-    grain over the image: None or a Paper.
+    borders); glass_layers: the most glass surfaces (meshes with opacity below 1) one pixel
+    composites, nearest first: each layer costs one more draw of the glass meshes and one full-
+    screen pass; opaque scenes pay nothing; outlines: ink outlines: None, 'mesh', 'image',
+    'both' or an Outlines; paper: paper grain over the image: None or a Paper.
     """
-    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., glass_layers: Optional[int] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
     material: Final[Material]
     transform: Final[List[List[float]]]
     camera: Final[Camera]
@@ -670,9 +684,10 @@ class RenderOptions(_Settings):
     supersample: Final[int]
     pixel_ratio: Final[float]
     band_antialias: Final[bool]
+    glass_layers: Final[int]
     outlines: Final[Optional[Outlines]]
     paper: Final[Optional[Paper]]
-    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., glass_layers: Optional[int] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
 
 def _restore(cls: str, state: str) -> Any: ...
 def kang_table() -> npt.NDArray[np.float64]: ...
@@ -688,7 +703,7 @@ class Renderer:
         vertices: Any,
         faces: Any,
         normals: Any,  # a mode, None or an (N, 3) float array
-        **colors: Any,  # vertex_colors, face_colors, uv, texture, texture_filter, texture_wrap, alpha_cutoff
+        **colors: Any,  # vertex_colors, face_colors, uv, texture, texture_filter, texture_wrap, alpha_cutoff, alpha_blend
     ) -> Tuple[int, Any, List[str]]: ...
     def remove_mesh(self, mesh: int) -> bool: ...
     def render(

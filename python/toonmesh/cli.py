@@ -221,6 +221,7 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     material_kw: Dict[str, Any] = {}
     if args.color is not None:
         material_kw["color"] = args.color
+    material_kw["opacity"] = args.opacity
     if args.dither != NONE:
         with errors_as_flags(args, Dither):
             material_kw["dither"] = Dither(args.dither, amount=args.dither_amount)
@@ -239,7 +240,7 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
         width=args.size[0], height=args.size[1], material=material, outputs=args.outputs,
         own_colors_material=own_colors_material,
         msaa=args.msaa, supersample=args.supersample, pixel_ratio=args.pixel_ratio,
-        band_antialias=args.band_antialias,
+        band_antialias=args.band_antialias, glass_layers=args.glass_layers,
     )
     if args.paper != NONE:
         with errors_as_flags(args, Paper):
@@ -617,6 +618,8 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
                                 "(default: the style's, and white under a file's own colours, so that they show "
                                 "as they are)")
     sets(p, color, (Material, "color"))
+    add_described(p, "--opacity", Material, "opacity", constructor=default_style(), metavar="A")
+    add_described(p, "--glass-layers", RenderOptions, "glass_layers", metavar="N")
     add_described(p, "--dither", Dither, "pattern", default=NONE, extra_choices=(NONE,),
                   help_before="dither between neighbouring bands; ", also_sets=[(Material, "dither")])
     add_described(p, "--dither-amount", Dither, "amount", metavar="X")

@@ -25,6 +25,8 @@ pub const TRACED_SLACK: f64 = 3.0;
 pub struct Surface<'a> {
     pub bvh: &'a Bvh,
     pub from_view: DMat4,
+    /// Whether it hides what lies behind it (glass does not: lines show through it).
+    pub hides: bool,
 }
 
 /// The surfaces that hide lines, and the camera they are seen from.
@@ -93,7 +95,7 @@ impl<'a> Occluders<'a> {
         let length = d.length();
         let t0 = self.start / length;
         let mut hits: Vec<f64> = Vec::new();
-        for (i, s) in self.surfaces.iter().enumerate() {
+        for (i, s) in self.surfaces.iter().enumerate().filter(|(_, s)| s.hides) {
             let skip = own.and_then(|(m, reach)| (m == i).then_some(reach / length)).unwrap_or(0.0);
             let (o, dir) = (s.from_view.transform_point3(p), s.from_view.transform_vector3(d));
             let mut stop = false;
@@ -204,7 +206,12 @@ mod tests {
     fn a_line_just_under_a_sheet_is_hidden_and_one_on_it_is_not() {
         // looking down from z = 0 on a sheet at z = -10 (half-size 1); a line 1e-4 under it
         let sheet = Bvh::of_triangles(square(-10.0, 1.0));
-        let occ = Occluders::new(vec![Surface { bvh: &sheet, from_view: DMat4::IDENTITY }], true, 0.1, 2.0);
+        let occ = Occluders::new(
+            vec![Surface { bvh: &sheet, from_view: DMat4::IDENTITY, hides: true }],
+            true,
+            0.1,
+            2.0,
+        );
         let under = [DVec3::new(-2.0, 0.0, -10.0001), DVec3::new(2.0, 0.0, -10.0001)];
         let runs = occ.runs(&under, 1, false, 4, (&[4.0], 0.1));
         assert_eq!(runs.len(), 3, "{runs:?}");
@@ -219,8 +226,8 @@ mod tests {
         let upper = Bvh::of_triangles(square(-5.0, 1.0));
         let two = Occluders::new(
             vec![
-                Surface { bvh: &sheet, from_view: DMat4::IDENTITY },
-                Surface { bvh: &upper, from_view: DMat4::IDENTITY },
+                Surface { bvh: &sheet, from_view: DMat4::IDENTITY, hides: true },
+                Surface { bvh: &upper, from_view: DMat4::IDENTITY, hides: true },
             ],
             false,
             0.1,

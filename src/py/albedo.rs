@@ -6,7 +6,7 @@ use numpy::{PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use super::args::{number, text};
+use super::args::{flag, number, text};
 use super::convert::{array_values, by_dtype, dtype_name, native_order, rows, untyped, ToPython, FLOATS};
 use crate::error::{Error, Result};
 use crate::render::albedo::given::{Channels, Given, Values};
@@ -39,14 +39,14 @@ fn uv(obj: &Bound<'_, PyAny>) -> Result<Vec<[f32; 2]>> {
 /// The colour keywords of `Renderer.add_mesh` (`Given::KEYWORDS`; None or absent: not given),
 /// read into an `Albedo` (None: no colour).
 pub fn albedo(keywords: Option<&Bound<'_, PyDict>>) -> Result<Option<Albedo>> {
-    let mut given: [Option<Bound<'_, PyAny>>; 7] = Default::default();
+    let mut given: [Option<Bound<'_, PyAny>>; 8] = Default::default();
     for (k, v) in keywords.into_iter().flat_map(|d| d.iter()) {
         let k = k.to_string();
         let i = Given::KEYWORDS.iter().position(|n| *n == k);
         let i = i.ok_or_else(|| Error::wrong_type(&k, "not a keyword of Renderer.add_mesh"))?;
         given[i] = (!v.is_none()).then_some(v);
     }
-    let [vertex_colors, face_colors, uv_obj, texture, filter, wrap, alpha_cutoff] = given;
+    let [vertex_colors, face_colors, uv_obj, texture, filter, wrap, alpha_cutoff, alpha_blend] = given;
     let read = |arg, obj: Option<Bound<'_, PyAny>>| obj.map(|o| channels(arg, &o)).transpose();
     Given {
         vertex_colors: read("vertex_colors", vertex_colors)?,
@@ -56,6 +56,7 @@ pub fn albedo(keywords: Option<&Bound<'_, PyDict>>) -> Result<Option<Albedo>> {
         texture_filter: filter.map(|f| text("texture_filter", &f)).transpose()?,
         texture_wrap: wrap.map(|w| text("texture_wrap", &w)).transpose()?,
         alpha_cutoff: alpha_cutoff.map(|c| number("alpha_cutoff", &c)).transpose()?,
+        alpha_blend: alpha_blend.map(|b| flag("alpha_blend", &b)).transpose()?,
     }
     .albedo()
 }

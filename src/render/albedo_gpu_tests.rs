@@ -181,7 +181,7 @@ fn compare(dev: &Device, tex: &Texture, s: &Sampling, v: &View) -> (i32, f64) {
 #[test]
 fn texture_sampling_matches_the_cpu_reference_on_both_backends() {
     let tex = test_texture(16, 8);
-    let s = |filter, wrap| Sampling { filter, wrap, alpha_cutoff: None };
+    let s = |filter, wrap| Sampling { filter, wrap, alpha_cutoff: None, alpha_blend: false };
     // (label, sampling, view, most codes off, share of channels more than one code off)
     let cases = [
         // magnified: texel edges (nearest) and bilinear blends, outside [0, 1] too

@@ -112,6 +112,8 @@ pub struct GpuAlbedo {
     /// Whether the shader samples the texture (a mesh with colours only binds a white texel).
     pub textured: bool,
     pub alpha_cutoff: Option<f32>,
+    /// Its alpha multiplies the material's opacity: the mesh is glass (`passes::glass`).
+    pub alpha_blend: bool,
     /// The colour and texture's fingerprint (`Albedo::look`): meshes that meet edge to edge
     /// with the same look and material are one surface to the lines.
     pub look: u64,
@@ -126,6 +128,7 @@ impl GpuAlbedo {
         vec![
             ("TEXTURED", self.textured as u32 as f64),
             ("ALPHA_CUTOFF", self.alpha_cutoff.map_or(-1.0, f64::from)),
+            ("ALPHA_BLEND", self.alpha_blend as u32 as f64),
         ]
     }
 
@@ -172,6 +175,7 @@ impl GpuAlbedo {
             group,
             textured: albedo.texture.is_some(),
             alpha_cutoff: albedo.sampling.alpha_cutoff,
+            alpha_blend: albedo.sampling.alpha_blend,
             look: albedo.look(),
             texture: albedo.texture.as_ref().map(|t| (std::sync::Arc::new(t.clone()), albedo.sampling)),
         }

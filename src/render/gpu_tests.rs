@@ -237,6 +237,7 @@ fn every_model_matches_the_cpu_reference_on_both_backends() {
                 specular: [0.5, 0.5, 0.5],
                 per_vertex: false,
                 effects: Default::default(),
+                opacity: 1.0,
             };
             let scene = sphere_scene(&r, material, NormalMode::Smooth);
             let hard = FrameSpec { band_antialias: false, ..all_outputs(161, 97) };
@@ -339,7 +340,7 @@ fn screen_lines(
         .chain(scene.lines.iter().map(|_| Projector::in_view(&p.cam, frame.width, frame.height)))
         .collect();
     if outlines.visibility == VisibilityRule::Exact {
-        found = cut(found, &p.records, &projectors, p.cam.orthographic, outlines).unwrap();
+        found = cut(found, (&p.records, &p.scene.glass), &projectors, p.cam.orthographic, outlines).unwrap();
     }
     for (projector, of_item) in projectors.iter().zip(&found) {
         let drawn = instances(of_item, projector, &outlines.stroke_width, reference);

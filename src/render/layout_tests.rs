@@ -9,7 +9,7 @@ use crate::render::effects::shadows::{map, mask, ShadowTest};
 use crate::render::effects::surface;
 use crate::render::graph::effect::ShadeHook;
 use crate::render::graph::mesh_stages::MeshStages;
-use crate::render::passes::{downsample, shade};
+use crate::render::passes::{downsample, glass, shade};
 use crate::render::shader::preamble;
 use crate::render::uniforms::{draw_members, LightingBlock, MaterialBlock, Members, MeshBlock, ViewBlock};
 use crate::render::wgsl::{compose, DEFAULT_HOOKS};
@@ -23,8 +23,10 @@ fn parse(src: &str) -> naga::Module {
 fn modules() -> Vec<String> {
     let shadowed = ShadowTest { filter: crate::render::effects::shadows::settings::ShadowFilter::Pcf };
     let p = preamble();
-    let mut all: Vec<String> =
-        [downsample::WGSL, edges::WGSL, lines::WGSL].iter().map(|w| compose(p, DEFAULT_HOOKS, w)).collect();
+    let mut all: Vec<String> = [downsample::WGSL, glass::WGSL, edges::WGSL, lines::WGSL]
+        .iter()
+        .map(|w| compose(p, DEFAULT_HOOKS, w))
+        .collect();
     all.push(compose(p, shadowed.wgsl(), mask::WGSL));
     for cut in [false, true] {
         all.push(compose(p, DEFAULT_HOOKS, &map::map_stages(cut).wgsl()));
@@ -34,7 +36,8 @@ fn modules() -> Vec<String> {
         for hooks in [DEFAULT_HOOKS, shadowed.wgsl()] {
             all.push(compose(p, hooks, &format!("{}\n{written}", shade::WGSL)));
         }
-        if !stages.color {
+        // the geometry pass's and the shadow map's draws have no shading; a layer of glass has
+        if !stages.color && !stages.glass {
             all.push(compose(p, DEFAULT_HOOKS, &written));
         }
     }

@@ -21,6 +21,7 @@ use crate::render::graph::target::{GeometryLayout, Shape, Target};
 use crate::render::graph::Pass;
 use crate::render::passes::downsample::Downsample;
 use crate::render::passes::geometry::Geometry;
+use crate::render::passes::glass;
 use crate::render::passes::readback::{Readback, Region};
 use crate::render::passes::shade::Shade;
 use crate::render::scene::checked::CheckedScene;
@@ -96,6 +97,11 @@ pub fn plan(scene: &CheckedScene) -> Plan {
     for e in FRAME {
         geometry = wider(geometry, e.geometry(scene));
     }
+    // glass is peeled against the opaque surfaces' depth
+    let glass = scene.has_glass();
+    if glass {
+        geometry = wider(geometry, Some(GeometryLayout::Depth));
+    }
     let color = o.has(Output::Color);
     let single = frame.msaa == 1 && frame.supersample == 1;
     let in_shade = color && single && geometry.is_some();
@@ -111,8 +117,18 @@ pub fn plan(scene: &CheckedScene) -> Plan {
         ..Default::default()
     };
     let cx = PlanInputs { scene, geometry };
+    let mut glass_at = None;
     for e in FRAME {
+        if e.over_glass() && glass_at.is_none() {
+            glass_at = Some(steps.after.len());
+        }
         e.plan(&cx, &mut steps);
+    }
+    if glass {
+        let at = glass_at.unwrap_or(steps.after.len());
+        let mut passes = glass::passes(frame.glass_layers);
+        passes.append(&mut steps.over_glass);
+        steps.after.splice(at..at, passes);
     }
     let mut passes = std::mem::take(&mut steps.before);
     if color {
@@ -353,6 +369,39 @@ mod tests {
         let key = plan(&checked(lit(), f)).resource_key(false);
         let map = key.textures.iter().find(|x| x.0 == Target::ShadowMap).expect("a shadow map");
         assert_eq!(map.1.size, (1024, 1024));
+    }
+
+    #[test]
+    fn glass_runs_its_passes_only_when_colour_is_asked_for() {
+        let mut glass = scene(None, false);
+        glass.items[0].material.opacity = 0.5;
+        let f = FrameSpec { glass_layers: 2, ..Default::default() };
+        let layers = ["glass_peel", "glass_under", "glass_peel", "glass_under"];
+        let want: Vec<&str> =
+            [&["shade", "glass_clear"][..], &layers, &["glass_composite", "readback_color"]].concat();
+        assert_eq!(names(glass.clone(), f), want);
+        // peeled against the opaque surfaces' depth, which the shading pass writes
+        assert_eq!(plan(&checked(glass.clone(), f)).shape.geometry, Some(GeometryLayout::Depth));
+        assert_eq!(names(glass, outputs(&[Output::Depth])), ["gbuffer", "readback_depth"]);
+        assert_eq!(names(scene(None, false), f), ["shade", "readback_color"]);
+        // the opaque items' ink under the glass, the glass's own over it
+        let mut inked = scene(Some(Outlines::new(true, false)), false);
+        inked.items[0].material.opacity = 0.5;
+        let one = FrameSpec { glass_layers: 1, ..f };
+        assert_eq!(
+            names(inked, one),
+            [
+                "silhouettes",
+                "shade",
+                "lines",
+                "glass_clear",
+                "glass_peel",
+                "glass_under",
+                "glass_composite",
+                "glass_lines",
+                "readback_color"
+            ]
+        );
     }
 
     #[test]

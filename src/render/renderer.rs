@@ -401,8 +401,9 @@ impl Renderer {
 
     /// Everything a frame needs before the GPU: the meshes, the camera, the plan, and its host
     /// steps before the frame (timed into `report`).
-    pub(crate) fn prepare(&self, scene: CheckedScene, report: &mut FrameReport) -> Result<Prepared> {
+    pub(crate) fn prepare(&self, mut scene: CheckedScene, report: &mut FrameReport) -> Result<Prepared> {
         let (records, bounds, cam) = self.resolve(&scene)?;
+        scene.mark_blended(|i| records[i].gpu.albedo.as_ref().is_some_and(|a| a.alpha_blend));
         let frame = &scene.frame;
         if frame.outputs.has(Output::Depth) && !DEPTH_SCALE_RANGE.contains(&cam.scale) {
             return Err(Error::invalid(
@@ -535,6 +536,7 @@ impl Renderer {
                 cull,
                 light_cull,
                 derived: &p.derived[i],
+                glass: scene.glass[i],
             })
             .collect();
         let [r, g, b, a] = background_linear(&scene.frame);

@@ -80,7 +80,8 @@ crate::uniform_block! {
         pub blinn: u32,
         pub band_count: u32,
         pub table_size: u32,
-        pub _pad0: u32,
+        /// The material's opacity (`Material::opacity`), read by the glass stage only.
+        pub opacity: f32,
         pub _pad1: u32,
         pub thresholds: [[f32; 4]; 2],
         pub values: [[f32; 4]; 3],
@@ -160,6 +161,7 @@ pub fn material_block(m: &Material) -> MaterialBlock {
     b.ambient = vec4(m.ambient_linear());
     b.diffuse = vec4(m.diffuse_linear());
     b.specular = vec4(m.specular_linear());
+    b.opacity = m.opacity;
     match &m.model {
         Model::Lambert => {}
         Model::Phong { shininess } => b.shininess = *shininess,

@@ -1,5 +1,5 @@
-"""Shadows, hatching, dithering, rim light, paper grain and colour (vertex and face colours,
-textures): what each costs, and what the shadow map's size and filter buy in accuracy
+"""Shadows, hatching, dithering, rim light, paper grain, colour (vertex and face colours,
+textures) and glass: what each costs, and what the shadow map's size and filter buy in accuracy
 (intersection over union of the shadowed pixels with a CPU ray cast).
 
     python -m toonmesh.bench effects [--quick] [--accuracy] [--repeat N] [--json FILE]
@@ -198,6 +198,44 @@ def _colour_table(subdivisions: int, size: int, texture_size: int, repeat: int) 
             for name, t in times.items()]
 
 
+def glass_scenes(teapot_subdivisions: int = 3) -> Dict[str, List[Tuple[Mesh, Any]]]:
+    """Name -> meshes with their glass materials: three squares in a row (opaque red under green
+    and blue of opacity 0.4 and 0.5), and a teapot inside a box of opacity 0.3 (two glass layers
+    over most of the teapot, four beside it)."""
+    def square(half: float, z: float) -> Mesh:
+        V = np.array([[-half, -half, z], [half, -half, z], [half, half, z], [-half, half, z]])
+        return V, np.array([[0, 1, 2], [0, 2, 3]])
+
+    V, F = tm.shapes.teapot(teapot_subdivisions)
+    V = (V - V.mean(axis=0)) / np.abs(V - V.mean(axis=0)).max()
+    return {
+        "3 squares": [(square(2.0, 0.0), tm.Material.lambert("#e62619")),
+                      (square(0.6, 0.5), tm.Material.lambert("#19cc33", opacity=0.4)),
+                      (square(0.4, 1.0), tm.Material.lambert("#1933e6", opacity=0.5))],
+        "teapot in a glass box": [((V, F), tm.Material.bands()),
+                                  (box((0.0, 0.0, 0.0), 1.3), tm.Material.bands("#a0c8ff", opacity=0.3))],
+    }
+
+
+def _glass_table(size: int, repeat: int, backends: Sequence[str] = ("vulkan", "gl")) -> List[Sequence[Any]]:
+    """Frame times of each glass scene against the same scene all opaque, on each backend,
+    the two in turns (medians of the runs)."""
+    rows = []
+    for backend in backends:
+        r = tm.Renderer(backend=backend)
+        for name, items in glass_scenes().items():
+            glass = [tm.Mesh(V, F, material=m) for (V, F), m in items]
+            opaque = [tm.Mesh(V, F, material=m.replace(opacity=1.0)) for (V, F), m in items]
+            times: Dict[str, List[float]] = {}
+            for _ in range(max(1, repeat)):
+                for kind, meshes in (("opaque", opaque), ("glass", glass)):
+                    t = median_time(lambda: r.render(meshes, width=size, height=size, outlines="mesh"), 1)
+                    times.setdefault(kind, []).append(t)
+            o, g = (float(np.median(times[k])) for k in ("opaque", "glass"))
+            rows.append((backend, name, f"{size}x{size}", o * 1e3, g * 1e3, g / o))
+    return rows
+
+
 def accuracy(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
     size = 128 if quick else 256
     print(table(("shadow map", "filter", "IoU (worst scene)", "IoU (mean)", "frame ms (torus)"),
@@ -217,3 +255,6 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
     print(table(("mesh", "faces", "size", "frame ms", "x untextured"),
                 _colour_table(sub, size, 256 if quick else 1024, repeat),
                 "What colour costs (target: textured within 1.2x of untextured; medians of runs in turns)"))
+    print(table(("backend", "scene", "size", "opaque ms", "glass ms", "x opaque"),
+                _glass_table(256 if quick else 512, repeat),
+                "What glass costs (4 layers, mesh outlines; the same scene all opaque; medians of runs in turns)"))

@@ -996,6 +996,4 @@ def gltf_ignored(doc: Dict[str, Any]) -> List[str]:
                 out.append(what)
         if any(mat.get("emissiveFactor") or []):
             out.append("emissive colour")
-        if mat.get("alphaMode") == "BLEND":  # MASK is drawn (alpha_cutoff)
-            out.append("alpha blending")
     return sorted(set(out), key=out.index)

@@ -98,13 +98,14 @@ def load(path: "str | os.PathLike[str] | Any", up: Optional[str] = None) -> "Lis
     primitives of modes POINTS, LINES, LINE_LOOP and LINE_STRIP), each with its world
     ``transform``, the file as ``source``, its ``name`` and ``up`` as meshes get them.
 
-    Formats: OBJ (with its MTL: diffuse colour ``Kd`` and texture ``map_Kd``), PLY (vertex and
+    Formats: OBJ (with its MTL: diffuse colour ``Kd``, alpha ``d`` or ``Tr`` and texture ``map_Kd``), PLY (vertex and
     face colours; faces and triangle strips), STL, OFF, GLB and glTF (node transforms, mesh
     instances, PBR ``baseColorFactor`` and ``baseColorTexture``, vertex colours ``COLOR_0``),
     and whatever else trimesh reads. Each mesh has its world ``transform`` (4x4 float64, the
     scene's node transforms composed; None for a single mesh) and its colour as
     :class:`toonmesh.Mesh` takes it (``vertex_colors`` or ``face_colors``, or ``uv`` and
-    ``texture``, the base colour factor folded in, ``alpha_cutoff`` for a glTF alpha mask), as a
+    ``texture``, the base colour factor folded in, ``alpha_cutoff`` for a glTF alpha mask,
+    ``alpha_blend`` for a glTF alpha blend or an MTL alpha below 1), as a
     ``trimesh.Trimesh`` brings it; ``material`` is None (the render's). Meshes of one geometry
     placed by several nodes share their vertex, face and colour arrays, so a renderer uploads
     them once. Each mesh has the file's own vertex normals as ``normals`` where it holds them

@@ -100,7 +100,7 @@ class Renderer:
         mesh's own (N, 3) vertex normals; see :class:`Mesh`. ``smooth_iterations``: Laplacian smoothing
         first (each vertex to the mean of its neighbours, n times), as in Al-Rousan et al.
         ``vertex_colors``, ``face_colors``, ``uv``, ``texture``, ``texture_filter``,
-        ``texture_wrap``, ``alpha_cutoff``: the mesh's colour, as :class:`Mesh` describes (a
+        ``texture_wrap``, ``alpha_cutoff``, ``alpha_blend``: the mesh's colour, as :class:`Mesh` describes (a
         trimesh brings its own).
         """
         return self._add(vertices, faces, normals, smooth_iterations, _colors.gather(vertices, colors, "add_mesh"))

@@ -1,6 +1,7 @@
 """Colour on a mesh: the keywords of :class:`toonmesh.Mesh` and :meth:`toonmesh.Renderer.add_mesh`
 about it, and what a ``trimesh.Trimesh`` brings by itself (its vertex or face colours, or its
-texture: uv and the material's image, with a glTF material's base colour factor and alpha mask).
+texture: uv and the material's image, with a glTF material's base colour factor, alpha mask and
+alpha blend, and an MTL material's ``d`` or ``Tr``).
 
 Arrays are checked by the core (shape, dtype, range, NaN: errors name the argument); this module
 only gathers them and warns about whatever is given but not used.
@@ -27,6 +28,7 @@ class MeshColors(TypedDict, total=False):
     texture_filter: Optional[str]
     texture_wrap: Optional[str]
     alpha_cutoff: Optional[float]
+    alpha_blend: Optional[bool]
 
 
 #: Their names.
@@ -69,6 +71,21 @@ def _default_diffuse() -> Any:
     return SimpleMaterial().diffuse
 
 
+def _mtl_alpha(material: Any) -> Optional[float]:
+    """An MTL material's alpha: ``d`` (dissolve), else 1 - ``Tr``; None when it gives neither
+    (or not as a number)."""
+    extra = getattr(material, "kwargs", None) or {}
+    for key, to_alpha in (("d", lambda v: v), ("tr", lambda v: 1.0 - v)):
+        words = extra.get(key)
+        try:
+            value = float(words[0] if isinstance(words, (list, tuple)) else words)
+        except (TypeError, ValueError, IndexError):
+            continue
+        if np.isfinite(value):
+            return float(np.clip(to_alpha(value), 0.0, 1.0))
+    return None
+
+
 def from_trimesh(mesh: Any) -> Dict[str, Any]:
     """The colour keywords a trimesh carries (empty when it has none), and "unused": notes on
     what it carries that is not drawn. Texture coordinates without an image of the file's
@@ -94,6 +111,8 @@ def from_trimesh(mesh: Any) -> Dict[str, Any]:
             if getattr(material, "alphaMode", None) == "MASK":
                 cutoff = getattr(material, "alphaCutoff", None)
                 found["alpha_cutoff"] = 0.5 if cutoff is None else float(cutoff)  # glTF's default
+            elif getattr(material, "alphaMode", None) == "BLEND":
+                found["alpha_blend"] = True  # the factor's and the texture's alpha count
             unused += [n for n in _PBR_UNUSED if getattr(material, n, None) is not None]
         elif material is not None and not _placeholder(material):
             # trimesh's SimpleMaterial (OBJ files): the image, else Kd unless it is trimesh's default
@@ -102,6 +121,12 @@ def from_trimesh(mesh: Any) -> Dict[str, Any]:
             if image is None and diffuse is not None and not np.array_equal(diffuse, _default_diffuse()):
                 factor = np.asarray(diffuse, dtype=np.float64) / 255.0
                 own_white = bool(np.all(factor == 1.0))  # a white Kd is the file's colour: drawn white
+            alpha = _mtl_alpha(material)
+            if alpha is not None and alpha < 1.0:
+                if factor is None:
+                    factor = np.ones(4) if image is not None else np.asarray(diffuse, dtype=np.float64) / 255.0
+                factor = np.append(np.asarray(factor, dtype=np.float64)[:3], alpha)
+                found["alpha_blend"] = True
         if image is not None and uv is not None:
             found["texture"], found["uv"] = image, np.asarray(uv)
         elif image is not None:
@@ -142,8 +167,10 @@ def gather(source: Any, colors: Mapping[str, Any], where: str, stacklevel: int =
     for k in ("texture_filter", "texture_wrap"):
         if k in chosen and not textured:
             notes.append(f"{k}: not used, the mesh has no texture")
-    if "alpha_cutoff" in chosen and not any(k in chosen for k in ("vertex_colors", "face_colors", "texture")):
-        notes.append("alpha_cutoff: not used, the mesh has no colours or texture")
+    uncoloured = not any(c in chosen for c in ("vertex_colors", "face_colors", "texture"))
+    for k in ("alpha_cutoff", "alpha_blend"):
+        if uncoloured and k in chosen and chosen[k] is not False:
+            notes.append(f"{k}: not used, the mesh has no colours or texture")
     for n in notes:
         warnings.warn(n, UserWarning, stacklevel=stacklevel)
     if "texture" in chosen:

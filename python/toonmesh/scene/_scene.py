@@ -90,10 +90,14 @@ class Mesh:
       ``texture_wrap``: ``"repeat"`` (default), ``"clamp"`` or ``"mirror"`` (glTF's sampler).
     - ``alpha_cutoff``: in [0, 1]: pixels whose alpha (colour alpha times texture alpha) is
       below it are not drawn (glTF's alpha mask); default None: alpha is ignored.
+    - ``alpha_blend``: bool, default False. True: a pixel's opacity is the material's
+      ``opacity`` times its alpha (colour alpha times texture alpha), and the mesh is drawn as
+      glass, composited in depth order over what lies behind it (glTF's alpha blend; an MTL
+      material's ``d`` or ``Tr``).
 
     A ``trimesh.Trimesh`` brings its own colour: vertex or face colours, or its texture (uv and
-    the material's image; for a glTF material, its base colour texture, base colour factor and
-    alpha mask). Colour keywords given replace it. Whatever is given or carried but not drawn
+    the material's image; for a glTF material, its base colour texture, base colour factor,
+    alpha mask and alpha blend; for an MTL material, its ``d`` or ``Tr``). Colour keywords given replace it. Whatever is given or carried but not drawn
     is named in a ``UserWarning``.
     """
 

@@ -69,12 +69,21 @@ pub struct Given {
     pub texture_filter: Option<String>,
     pub texture_wrap: Option<String>,
     pub alpha_cutoff: Option<f64>,
+    pub alpha_blend: Option<bool>,
 }
 
 impl Given {
     /// The keywords, in the order they are checked.
-    pub const KEYWORDS: [&str; 7] =
-        ["vertex_colors", "face_colors", "uv", "texture", "texture_filter", "texture_wrap", "alpha_cutoff"];
+    pub const KEYWORDS: [&str; 8] = [
+        "vertex_colors",
+        "face_colors",
+        "uv",
+        "texture",
+        "texture_filter",
+        "texture_wrap",
+        "alpha_cutoff",
+        "alpha_blend",
+    ];
 
     /// The albedo of what was given (None: no colour).
     pub fn albedo(self) -> Result<Option<Albedo>> {
@@ -82,6 +91,7 @@ impl Given {
             filter: named("texture_filter", self.texture_filter, Filter::parse)?,
             wrap: named("texture_wrap", self.texture_wrap, Wrap::parse)?,
             alpha_cutoff: self.alpha_cutoff.map(|c| c as f32),
+            alpha_blend: self.alpha_blend.unwrap_or(false),
         };
         sampling.check()?;
         let colors = match (self.vertex_colors, self.face_colors) {
@@ -112,6 +122,7 @@ mod tests {
             texture_filter: None,
             texture_wrap: Some("clamp".into()),
             alpha_cutoff: None,
+            alpha_blend: None,
         }
     }
 

@@ -87,6 +87,10 @@ pub struct Sampling {
     /// glTF's alpha mask: pixels whose alpha (colour alpha x texture alpha) is below this are
     /// not drawn. None: alpha is ignored (glTF's OPAQUE).
     pub alpha_cutoff: Option<f32>,
+    /// glTF's alpha blend: the alpha (colour alpha x texture alpha) multiplies the material's
+    /// opacity, and the mesh is drawn as glass (`passes::glass`).
+    #[serde(default)]
+    pub alpha_blend: bool,
 }
 
 impl Sampling {

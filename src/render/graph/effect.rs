@@ -93,6 +93,9 @@ pub struct Steps {
     pub host_depth: bool,
     /// Whether a pass already wrote (and so cleared) the outline coverage.
     pub outline_written: bool,
+    /// Passes right after the glass is composited, where the frame has glass (the glass's own
+    /// ink, drawn over it).
+    pub over_glass: Vec<Box<dyn Pass>>,
 }
 
 pub trait FrameEffect: Sync {
@@ -110,4 +113,9 @@ pub trait FrameEffect: Sync {
     fn geometry(&self, scene: &CheckedScene) -> Option<GeometryLayout>;
     /// Its steps for the frame.
     fn plan(&self, cx: &PlanInputs<'_>, steps: &mut Steps);
+    /// Whether its passes after shading lay over the glass (`passes::glass`) rather than under
+    /// it, as ink does.
+    fn over_glass(&self) -> bool {
+        false
+    }
 }

@@ -12,6 +12,7 @@ use crate::render::device::COLOR_FORMAT;
 use crate::render::effects::surface;
 use crate::render::gpu_albedo;
 use crate::render::gpu_mesh::GpuMesh;
+use crate::render::passes::glass;
 use crate::render::pipelines::target;
 use crate::render::stage_part::{Bindings, Part, VertexData, ANCHORS};
 
@@ -32,6 +33,10 @@ pub struct MeshStages {
     /// The matrix from normalised view space to where the vertices are drawn, when not the
     /// camera's projection (`frame.view.proj`): the shadow-casting light's, for the shadow map.
     pub clip: Option<&'static str>,
+    /// Writes one layer of glass (`passes::glass`): the nearest fragment behind the layer
+    /// peeled before and in front of the opaque surface, as premultiplied colour and the depth
+    /// the next peel starts from, instead of the colour and geometry targets.
+    pub glass: bool,
 }
 
 /// The first bind group the parts' bindings take: after the frame's (0), the draw's (1) and a
@@ -144,6 +149,40 @@ static ALBEDO_GOURAUD: Part = Part {
     after: &[],
 };
 
+/// A layer of glass: what it peels and how opaque it is (`passes::glass`).
+pub static GLASS: Part = Part {
+    name: "glass",
+    varyings: &[],
+    buffer: None,
+    bindings: Some(Bindings {
+        vars: &[("opaque_depth", "texture_2d<u32>"), ("peeled_depth", "texture_2d<u32>")],
+        layout: glass::peel_layout,
+    }),
+    module: glass::PEEL_WGSL,
+    vertex: &[],
+    // outside the layer before shading: most fragments of a later layer are (a discard demotes
+    // the pixel to a helper, so the shading's derivatives still have their quad)
+    fragment: &[
+        "if (!in_layer(i.clip.xy, depth_bits(f))) {",
+        "    discard;",
+        "}",
+        "var opacity = draw.material.opacity;",
+    ],
+    after: &[],
+};
+
+/// A glass mesh's colour alpha, where it counts (glTF's alpha blend).
+static GLASS_ALBEDO: Part = Part {
+    name: "glass_albedo",
+    varyings: &[],
+    buffer: None,
+    bindings: None,
+    module: "",
+    vertex: &[],
+    fragment: &["opacity *= select(1.0, a.a, ALPHA_BLEND);"],
+    after: &[],
+};
+
 /// A target the fragment stage writes: its member of `MeshTargets`, its WGSL type, its value.
 struct Output {
     name: &'static str,
@@ -154,6 +193,12 @@ struct Output {
 const COLOR: Output = Output { name: "color", ty: "vec4<f32>", value: "shaded_color(f, lit, front_facing)" };
 const NORMAL_DEPTH: Output = Output { name: "geometry", ty: "vec4<u32>", value: "normal_depth_bits(f)" };
 const DEPTH: Output = Output { name: "geometry", ty: "u32", value: "depth_bits(f)" };
+const LAYER: Output = Output {
+    name: "layer",
+    ty: "vec4<f32>",
+    value: "layer_color(shaded_color(f, lit, front_facing), opacity)",
+};
+const PEELED: Output = Output { name: "peeled", ty: "u32", value: "depth_bits(f)" };
 
 /// The WGSL type of a vertex attribute.
 fn attribute_type(format: wgpu::VertexFormat) -> &'static str {
@@ -184,10 +229,19 @@ impl MeshStages {
                 parts.push(&ALBEDO_GOURAUD);
             }
         }
+        if self.glass {
+            parts.push(&GLASS);
+            if self.albedo {
+                parts.push(&GLASS_ALBEDO);
+            }
+        }
         parts
     }
 
     fn outputs(&self) -> Vec<&'static Output> {
+        if self.glass {
+            return vec![&LAYER, &PEELED];
+        }
         let mut outputs = Vec::new();
         if self.color {
             outputs.push(&COLOR);
@@ -211,6 +265,9 @@ impl MeshStages {
     pub fn name(&self) -> String {
         let parts: Vec<_> = self.parts().iter().map(|p| p.name).collect();
         let mut targets: Vec<&str> = if self.color { vec!["color"] } else { vec![] };
+        if self.glass {
+            targets = vec!["glass layer"];
+        }
         targets.extend(self.geometry.map(|g| match g {
             GeometryLayout::NormalDepth => "normal_depth",
             GeometryLayout::Depth => "depth",
@@ -219,9 +276,10 @@ impl MeshStages {
         format!("{}{clip} -> {}", parts.join(" + "), targets.join(" + "))
     }
 
-    /// A pipeline-cache key's bits for it (13 of them).
+    /// A pipeline-cache key's bits for it (14 of them).
     pub fn bits(&self) -> u64 {
-        self.albedo as u64
+        (self.glass as u64) << 13
+            | self.albedo as u64
             | (self.color as u64) << 1
             | self.geometry.map_or(0, |g| 1 + g as u64) << 2
             | (self.clip.is_some() as u64) << 4
@@ -242,6 +300,9 @@ impl MeshStages {
 
     /// The formats of the targets it writes, in order.
     pub fn targets(&self) -> Vec<Option<wgpu::ColorTargetState>> {
+        if self.glass {
+            return vec![target(glass::LAYER_FORMAT), target(glass::PEELED_FORMAT)];
+        }
         let mut targets = Vec::new();
         if self.color {
             targets.push(target(COLOR_FORMAT));
@@ -328,7 +389,7 @@ impl MeshStages {
     }
 
     /// Every combination: the mesh's colour or none, every set of the parts a material may ask
-    /// for, and every set of targets a pass writes.
+    /// for, and every set of targets a pass writes (a layer of glass among them).
     pub fn all() -> Vec<MeshStages> {
         let targets = [
             (true, None),
@@ -341,8 +402,9 @@ impl MeshStages {
         for albedo in [false, true] {
             for parts in PartSet::all() {
                 for (color, geometry) in targets {
-                    all.push(MeshStages { albedo, parts, color, geometry, clip: None });
+                    all.push(MeshStages { albedo, parts, color, geometry, ..Default::default() });
                 }
+                all.push(MeshStages { albedo, parts, glass: true, ..Default::default() });
             }
         }
         all
@@ -379,7 +441,7 @@ mod tests {
         let bits: std::collections::HashSet<_> = all.iter().map(MeshStages::bits).collect();
         assert_eq!(names.len(), all.len());
         assert_eq!(bits.len(), all.len());
-        assert!(all.iter().all(|s| s.bits() < 1 << 13));
+        assert!(all.iter().all(|s| s.bits() < 1 << 14));
     }
 
     #[test]

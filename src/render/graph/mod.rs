@@ -94,6 +94,8 @@ pub struct DrawItem<'a> {
     /// The vertex buffers its shading derives from the mesh, each with its slot
     /// (`render::derived_vertices`).
     pub derived: &'a [(u32, std::sync::Arc<wgpu::Buffer>)],
+    /// The mesh is glass (`scene::checked::is_glass`): only the glass stage draws it.
+    pub glass: bool,
 }
 
 impl<'a> DrawItem<'a> {
@@ -165,24 +167,46 @@ impl FrameCtx<'_> {
         self.pipelines.module(&self.dev.device, key, || module_wgsl(self.preamble, &pass(), hook))
     }
 
-    /// Draws every mesh with the pipeline `pipeline_for` gives it, switching pipelines only
-    /// when the variant changes, and binds what the pipeline's stages read: the mesh's
-    /// positions, its colour (vertex buffer and texture group) where the stages have the albedo
-    /// part, and the vertex data derived for its shading.
+    /// Draws every opaque mesh (glass is the glass stage's: `draw_glass`) with the pipeline
+    /// `pipeline_for` gives it, switching pipelines only when the variant changes, and binds
+    /// what the pipeline's stages read: the mesh's positions, its colour (vertex buffer and
+    /// texture group) where the stages have the albedo part, and the vertex data derived for its
+    /// shading.
     pub fn draw_meshes(
         &self,
         pass: &mut wgpu::RenderPass<'_>,
         pipeline_for: impl Fn(&DrawItem<'_>) -> (Arc<wgpu::RenderPipeline>, MeshStages),
     ) {
+        self.draw_items(pass, false, pipeline_for, |_, _| {});
+    }
+
+    /// `draw_meshes` for the glass meshes, with `bind` binding what else their stages read.
+    pub fn draw_glass(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        pipeline_for: impl Fn(&DrawItem<'_>) -> (Arc<wgpu::RenderPipeline>, MeshStages),
+        bind: impl Fn(&mut wgpu::RenderPass<'_>, MeshStages),
+    ) {
+        self.draw_items(pass, true, pipeline_for, bind);
+    }
+
+    fn draw_items(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        glass: bool,
+        pipeline_for: impl Fn(&DrawItem<'_>) -> (Arc<wgpu::RenderPipeline>, MeshStages),
+        bind: impl Fn(&mut wgpu::RenderPass<'_>, MeshStages),
+    ) {
         pass.set_bind_group(0, &self.res.uniforms.frame_group, &[]);
         let mut current: Option<Arc<wgpu::RenderPipeline>> = None;
-        for d in self.draws {
+        for d in self.draws.iter().filter(|d| d.glass == glass) {
             let (p, stages) = pipeline_for(d);
             if current.as_ref().is_none_or(|c| !Arc::ptr_eq(c, &p)) {
                 pass.set_pipeline(&p);
                 current = Some(p);
             }
             pass.set_bind_group(1, &self.res.uniforms.draw_group, &[d.uniform_offset]);
+            bind(pass, stages);
             pass.set_vertex_buffer(0, d.mesh.vertices.slice(..));
             if let (Some(group), Some(a)) = (stages.group_of(&ALBEDO), &d.mesh.albedo) {
                 pass.set_vertex_buffer(gpu_albedo::SLOT, a.vertices.slice(..));

@@ -3,6 +3,7 @@
 //! flags every declaring pass needs and nothing else.
 
 use crate::render::device::COLOR_FORMAT;
+use crate::render::passes::glass;
 
 /// The depth buffer used for visibility.
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
@@ -67,6 +68,13 @@ pub enum Target {
     Shadow,
     /// The image-space edges between pixels at the output size (`EDGE_BITS_FORMAT`).
     EdgeBits,
+    /// One peeled layer of glass, premultiplied (`passes::glass`), at the output size.
+    GlassLayer,
+    /// The glass layers so far, added front to back, premultiplied.
+    GlassSum,
+    /// The depths of the layers peeled, as f32 bits: one peel writes one while the next reads
+    /// the other.
+    Peeled(u8),
 }
 
 /// Everything the frame's textures depend on.
@@ -108,6 +116,8 @@ impl Target {
             }
             Target::Shadow => (out, 1, SHADOW_FORMAT),
             Target::EdgeBits => (out, 1, EDGE_BITS_FORMAT),
+            Target::GlassLayer | Target::GlassSum => (out, 1, glass::LAYER_FORMAT),
+            Target::Peeled(_) => (out, 1, glass::PEELED_FORMAT),
         };
         TextureDesc { size, samples, format }
     }

@@ -7,5 +7,6 @@
 pub mod clear;
 pub mod downsample;
 pub mod geometry;
+pub mod glass;
 pub mod readback;
 pub mod shade;

@@ -34,6 +34,15 @@ pub struct CheckedScene {
     pub shader_lights: Vec<Light>,
     /// Bit k set when `shader_lights[k]` is a point light.
     pub point_lights: u32,
+    /// Whether each item is glass (`is_glass`): from its material, and once its mesh is known,
+    /// from the mesh's colour (`mark_blended`).
+    pub glass: Vec<bool>,
+}
+
+/// Whether a mesh lets light through: its material's opacity is below 1, or its colour's alpha
+/// counts (`alpha_blend`).
+pub fn is_glass(opacity: f32, alpha_blend: bool) -> bool {
+    opacity < 1.0 || alpha_blend
 }
 
 impl CheckedScene {
@@ -86,7 +95,20 @@ impl CheckedScene {
             .enumerate()
             .filter(|(_, l)| matches!(l.kind, LightKind::Point { .. }))
             .fold(0, |bits, (k, _)| bits | 1 << k);
-        Ok(CheckedScene { scene, frame, caster, shader_lights, point_lights })
+        let glass = scene.items.iter().map(|i| is_glass(i.material.opacity, false)).collect();
+        Ok(CheckedScene { scene, frame, caster, shader_lights, point_lights, glass })
+    }
+
+    /// Marks as glass the items whose mesh's colour alpha counts (`blended(i)` for item i).
+    pub fn mark_blended(&mut self, blended: impl Fn(usize) -> bool) {
+        for (i, g) in self.glass.iter_mut().enumerate() {
+            *g = *g || is_glass(1.0, blended(i));
+        }
+    }
+
+    /// Whether the frame composites glass: some item is glass, and colour is asked for.
+    pub fn has_glass(&self) -> bool {
+        self.frame.outputs.has(super::Output::Color) && self.glass.iter().any(|&g| g)
     }
 
     /// The same scene and frame seen through another camera (checked when it was made).

@@ -52,6 +52,14 @@ pub struct Material {
     pub per_vertex: bool,
     /// The per-pixel effects on top of the shading (hatching, dithering).
     pub effects: SurfaceSettings,
+    /// How much of what lies behind the surface it hides, in [0, 1]: below 1 the mesh is glass,
+    /// composited over what lies behind it (`passes::glass`).
+    #[serde(default = "opaque")]
+    pub opacity: f32,
+}
+
+fn opaque() -> f32 {
+    1.0
 }
 
 impl Default for Material {
@@ -69,8 +77,8 @@ impl Material {
         specular: Srgb,
         per_vertex: bool,
     ) -> Result<Self> {
-        let m =
-            Material { model, ambient, diffuse, specular, per_vertex, effects: SurfaceSettings::default() };
+        let effects = SurfaceSettings::default();
+        let m = Material { model, ambient, diffuse, specular, per_vertex, effects, opacity: opaque() };
         m.validate("")?;
         Ok(m)
     }
@@ -208,6 +216,11 @@ const FIELDS: &[Field] = &[
     Field::new("ambient", Kind::Color, "the ambient coefficient a_m, sRGB"),
     Field::new("specular", Kind::Color, "the highlight coefficient S_m, sRGB"),
     Field::new("per_vertex", Kind::Bool, "shade the vertices and interpolate (Gouraud) instead of every pixel"),
+    Field::float(
+        "opacity",
+        Range::closed(0.0, 1.0),
+        "how much of what lies behind it the surface hides: below 1 it is glass, composited in depth order over what lies behind it",
+    ),
     Field::float("shininess", Range::above(0.0).within(<f32 as FieldValue>::LARGEST).slider(1.0, 256.0), "Phong's exponent, > 0").optional(),
     Field::float("t_h", Range::closed(-1.0, 1.0), "the thresholded Phong model's diffuse threshold on L.n").optional(),
     Field::float("t_s", Range::closed(-1.0, 1.0), "the thresholded Phong model's highlight threshold").optional(),
@@ -258,19 +271,43 @@ macro_rules! model {
 }
 
 const CONSTRUCTORS: &[Constructor] = &[
-    model!("lambert", ["color", "ambient", "diffuse", "per_vertex", "rim"]),
-    model!("phong", ["color", "specular", "shininess", "ambient", "diffuse", "per_vertex", "rim"]),
+    model!("lambert", ["color", "ambient", "diffuse", "per_vertex", "opacity", "rim"]),
+    model!("phong", ["color", "specular", "shininess", "ambient", "diffuse", "per_vertex", "opacity", "rim"]),
     model!(
         "thresholded_phong",
-        ["color", "t_h", "t_s", "highlight", "ambient", "specular", "diffuse", "per_vertex", "dither", "rim"]
+        [
+            "color",
+            "t_h",
+            "t_s",
+            "highlight",
+            "ambient",
+            "specular",
+            "diffuse",
+            "per_vertex",
+            "opacity",
+            "dither",
+            "rim"
+        ]
     ),
-    model!("bands", ["color", "thresholds", "preset", "values", "per_vertex", "dither", "rim"]),
+    model!("bands", ["color", "thresholds", "preset", "values", "per_vertex", "opacity", "dither", "rim"]),
     model!(
         "hatching",
-        ["color", "ink", "thresholds", "values", "spacing", "width", "mode", "per_vertex", "dither", "rim"]
+        [
+            "color",
+            "ink",
+            "thresholds",
+            "values",
+            "spacing",
+            "width",
+            "mode",
+            "per_vertex",
+            "opacity",
+            "dither",
+            "rim"
+        ]
     ),
     // the table comes first, and may be given by position too
-    named!("Material", "lut", ["table", "color", "per_vertex", "dither", "rim"], 2, 0),
+    named!("Material", "lut", ["table", "color", "per_vertex", "opacity", "dither", "rim"], 2, 0),
 ];
 
 fn hatching(m: &Material) -> Option<&Hatching> {
@@ -292,6 +329,7 @@ impl Declared for Material {
             ("ambient", _) => self.ambient.into(),
             ("specular", _) => self.specular.into(),
             ("per_vertex", _) => self.per_vertex.into(),
+            ("opacity", _) => f32_value(self.opacity),
             ("shininess", Model::Phong { shininess }) => f32_value(*shininess),
             ("t_h", Model::ThresholdedPhong { t_h, .. }) => f32_value(*t_h),
             ("t_s", Model::ThresholdedPhong { t_s, .. }) => f32_value(*t_s),
@@ -317,6 +355,7 @@ impl Declared for Material {
             ("ambient", ..) => self.ambient = v.triple(field)?,
             ("specular", ..) => self.specular = v.triple(field)?,
             ("per_vertex", ..) => self.per_vertex = v.bool(field)?,
+            ("opacity", ..) => self.opacity = v.float(field)? as f32,
             ("shininess", Model::Phong { shininess }, _) => *shininess = v.float(field)? as f32,
             ("t_h", Model::ThresholdedPhong { t_h, .. }, _) => *t_h = v.float(field)? as f32,
             ("t_s", Model::ThresholdedPhong { t_s, .. }, _) => *t_s = v.float(field)? as f32,

@@ -53,10 +53,21 @@ pub struct FrameSpec {
     /// sharper (for a screen with two device pixels per layout pixel).
     #[serde(default = "unit_ratio")]
     pub pixel_ratio: f64,
+    /// The most glass surfaces one pixel composites (`passes::glass`): each costs a draw of the
+    /// glass meshes and a full-screen pass.
+    #[serde(default = "default_glass_layers")]
+    pub glass_layers: u32,
 }
 
 fn unit_ratio() -> f64 {
     1.0
+}
+
+/// `FrameSpec::glass_layers` by default.
+pub const GLASS_LAYERS: u32 = 4;
+
+fn default_glass_layers() -> u32 {
+    GLASS_LAYERS
 }
 
 /// The range of `FrameSpec::pixel_ratio`.
@@ -73,6 +84,7 @@ impl Default for FrameSpec {
             band_antialias: true,
             background: [1.0, 1.0, 1.0, 1.0],
             pixel_ratio: 1.0,
+            glass_layers: GLASS_LAYERS,
         }
     }
 }

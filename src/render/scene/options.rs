@@ -82,6 +82,8 @@ declared_fields! {
             "output pixels per pixel of the widths, spacings and scales given in pixels: 2 with twice the width and height draws the same picture, sharper (a 2x screen)";
         band_antialias: bool [.frame.band_antialias] => boolean(),
             "blend across each band border over about one pixel, from the screen-space change of the shading term: smooth tone borders at no extra samples (False: the papers' hard borders)";
+        glass_layers: u32 [.frame.glass_layers] => int(closed(1.0, 16.0)),
+            "the most glass surfaces (meshes with opacity below 1) one pixel composites, nearest first: each layer costs one more draw of the glass meshes and one full-screen pass; opaque scenes pay nothing";
         outlines: Option<Outlines> [.outlines] => setting("Outlines"),
             "ink outlines: None, 'mesh', 'image', 'both' or an Outlines", optional;
         // then the frame effects' (`effects::scene_settings`)

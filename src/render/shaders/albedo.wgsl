@@ -11,6 +11,8 @@
 override TEXTURED: bool = false;
 // glTF's alpha mask: pixels whose alpha is below it are not drawn; negative: opaque.
 override ALPHA_CUTOFF: f32 = -1.0;
+// glTF's alpha blend: the alpha multiplies the material's opacity (read by the glass stage).
+override ALPHA_BLEND: bool = false;
 
 // The albedo's alpha at a pixel: colour alpha times texture alpha.
 fn albedo_sample(color: vec4<f32>, uv: vec2<f32>) -> vec4<f32> {

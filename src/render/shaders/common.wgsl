@@ -47,7 +47,7 @@ struct MaterialBlock {
     blinn: u32,            // the highlight: 1 blinn (n.h), 0 the paper's (L.v)
     band_count: u32,       // thresholds of the bands
     table_size: u32,       // entries of the lookup table
-    _pad0: u32,
+    opacity: f32,          // read by the glass stage only (src/render/passes/glass)
     _pad1: u32,
     thresholds: array<vec4<f32>, 2>,
     values: array<vec4<f32>, 3>,

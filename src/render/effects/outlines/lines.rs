@@ -21,6 +21,10 @@ pub struct Lines {
     pub layout: GeometryLayout,
     /// The view's lines, found by the `silhouettes` step before the frame is recorded.
     pub view: ViewSlot,
+    /// The items whose lines it draws: all (None), or only those that are glass or only those
+    /// that are not (a frame with glass draws the opaque items' ink under the glass and the
+    /// glass's own over it).
+    pub glass: Option<bool>,
 }
 
 fn instance_layout() -> wgpu::VertexBufferLayout<'static> {
@@ -33,7 +37,11 @@ fn instance_layout() -> wgpu::VertexBufferLayout<'static> {
 
 impl Pass for Lines {
     fn name(&self) -> &'static str {
-        "lines"
+        if self.glass == Some(true) {
+            "glass_lines"
+        } else {
+            "lines"
+        }
     }
 
     fn uses(&self) -> Vec<Use> {
@@ -80,13 +88,14 @@ impl Pass for Lines {
         let view = self.view.get().expect("the silhouettes step ran before the frame was recorded");
         let buffer = f.res.vertices(f.dev, "line instances", bytemuck::cast_slice(&view.instances));
         let attachments = self.ink.attachments(f);
-        let mut pass = rec.begin("lines", &attachments, None);
+        let mut pass = rec.begin(self.name(), &attachments, None);
         if let Some(buffer) = buffer {
             pass.set_pipeline(&pipeline);
             pass.set_bind_group(0, &f.res.uniforms.frame_group, &[]);
             pass.set_bind_group(2, &geometry, &[]);
             pass.set_vertex_buffer(0, buffer.slice(..));
-            for d in view.draws.iter().filter(|d| !d.instances.is_empty()) {
+            let drawn = |item: usize| self.glass.is_none_or(|g| f.draws[item].glass == g);
+            for d in view.draws.iter().filter(|d| !d.instances.is_empty() && drawn(d.item)) {
                 pass.set_bind_group(1, &f.res.uniforms.draw_group, &[f.res.draw_offset(d.item)]);
                 pass.draw(0..4, d.instances.clone());
             }

@@ -207,8 +207,18 @@ impl FrameEffect for OutlinesEffect {
             }));
             if lines {
                 let layout = cx.geometry.expect("mesh-space lines are tested against the frame's depth");
-                let ink = ink(steps);
-                steps.after.push(Box::new(lines::Lines { ink, layout, view: Arc::clone(&view) }));
+                let under = ink(steps);
+                let view = Arc::clone(&view);
+                if cx.scene.has_glass() {
+                    // the opaque items' ink under the glass, the glass's own over it
+                    let over = ink(steps);
+                    let glass =
+                        lines::Lines { ink: over, layout, view: Arc::clone(&view), glass: Some(true) };
+                    steps.after.push(Box::new(lines::Lines { ink: under, layout, view, glass: Some(false) }));
+                    steps.over_glass.push(Box::new(glass));
+                } else {
+                    steps.after.push(Box::new(lines::Lines { ink: under, layout, view, glass: None }));
+                }
             }
             if visible {
                 let exact = exact(cx.scene);

@@ -28,10 +28,11 @@ pub const MIN_PIECE: f64 = 0.5;
 /// `chains` (each item's, in its stored coordinates; then each `Lines` item's, seen by the
 /// projectors after the meshes') cut into visible pieces and, where
 /// `outlines` draws hidden lines, hidden ones (within `max_occlusion`), hidden first; each
-/// piece keeps its kind and strength and carries its occlusion.
+/// piece keeps its kind and strength and carries its occlusion. Items that are `glass` hide
+/// nothing.
 pub fn cut(
     chains: Vec<Vec<Chain>>,
-    records: &[Arc<MeshRecord>],
+    (records, glass): (&[Arc<MeshRecord>], &[bool]),
     projectors: &[Projector],
     orthographic: bool,
     outlines: &Outlines,
@@ -43,7 +44,8 @@ pub fn cut(
     let surfaces = bvhs
         .iter()
         .zip(projectors)
-        .map(|(bvh, p)| Surface { bvh, from_view: p.model_view.inverse() })
+        .zip(glass)
+        .map(|((bvh, p), &glass)| Surface { bvh, from_view: p.model_view.inverse(), hides: !glass })
         .collect();
     let near = projectors.first().map_or(0.0, |p| p.near);
     let occluders = Occluders::new(surfaces, orthographic, near, scene_size(&bvhs, projectors));

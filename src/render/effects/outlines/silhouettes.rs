@@ -62,7 +62,13 @@ impl HostStep for Silhouettes {
             projectors.push(Projector::in_view(cx.cam, frame.width, frame.height));
         }
         if self.outlines.visibility == VisibilityRule::Exact {
-            found = occluded::cut(found, cx.records, &projectors, cx.cam.orthographic, &self.outlines)?;
+            found = occluded::cut(
+                found,
+                (cx.records, &cx.scene.glass),
+                &projectors,
+                cx.cam.orthographic,
+                &self.outlines,
+            )?;
         }
         for (i, (chains, projector)) in found.into_iter().zip(&projectors).enumerate() {
             let first = lines.instances.len() as u32;

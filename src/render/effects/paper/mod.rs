@@ -82,6 +82,11 @@ impl FrameEffect for PaperEffect {
         "paper"
     }
 
+    /// The grain lies on the whole picture, glass included.
+    fn over_glass(&self) -> bool {
+        true
+    }
+
     fn block_wgsl(&self) -> String {
         include_str!("block.wgsl").to_string()
     }

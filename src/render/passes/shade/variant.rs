@@ -48,6 +48,6 @@ impl ShadingVariant {
     /// The shading pass's stages for it, writing the colour and, where given, the geometry
     /// target.
     pub fn stages(&self, geometry: Option<GeometryLayout>) -> MeshStages {
-        MeshStages { albedo: self.albedo, parts: self.parts, color: true, geometry, clip: None }
+        MeshStages { albedo: self.albedo, parts: self.parts, color: true, geometry, ..Default::default() }
     }
 }
