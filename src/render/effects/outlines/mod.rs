@@ -71,9 +71,15 @@ fn exact(scene: &CheckedScene) -> bool {
     scene.scene.outlines.as_ref().is_some_and(|o| o.visibility == settings::VisibilityRule::Exact)
 }
 
-/// What the scene's outlines draw: mesh-space lines, image-space edges.
+/// What the scene's outlines draw: mesh-space lines, image-space edges. A point cloud's ink is
+/// the image-space edges': a scene with one gets them even where the outlines name mesh-space
+/// lines only (which its meshes keep).
 fn draws(scene: &CheckedScene) -> (bool, bool) {
-    scene.scene.outlines.as_ref().map_or((false, false), |o| (o.draws_mesh_lines(), o.draws_image_edges()))
+    let splats = scene.scene.items.iter().any(|item| item.splats);
+    scene.scene.outlines.as_ref().map_or((false, false), |o| {
+        let mesh = o.draws_mesh_lines();
+        (mesh, o.draws_image_edges() || (mesh && splats))
+    })
 }
 
 impl FrameEffect for OutlinesEffect {
@@ -169,8 +175,8 @@ impl FrameEffect for OutlinesEffect {
         let visible = mesh && o.has(Output::Lines);
         if lines || visible {
             let view = Arc::default();
-            let crossing =
-                outlines.styles[LineKind::Intersection as usize].is_some() && cx.scene.scene.items.len() > 1;
+            let crossing = outlines.styles[LineKind::Intersection as usize].is_some()
+                && cx.scene.scene.items.iter().filter(|item| !item.splats).count() > 1;
             let intersections = crossing.then(|| {
                 let found = intersection_lines::IntersectionSlot::default();
                 steps
