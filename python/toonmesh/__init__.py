@@ -4,7 +4,7 @@ from toonmesh.rendering._runtime_dir import ensure_runtime_dir
 
 ensure_runtime_dir()  # before any GPU device is made: keeps Mesa's Wayland probe quiet
 
-from toonmesh import edges, shapes, smooth
+from toonmesh import edges, points, shapes, smooth
 from toonmesh._core import (
     ConvergenceError,
     GpuError,
