@@ -18,6 +18,7 @@ from toonmesh._core import (
 from toonmesh._core import (
     Camera,
     Dither,
+    EyeDome,
     Light,
     LineStyle,
     Material,
@@ -50,6 +51,7 @@ __all__ = [
     "Points",
     "Camera",
     "Dither",
+    "EyeDome",
     "Light",
     "LineStyle",
     "Material",

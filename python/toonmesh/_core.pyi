@@ -41,6 +41,7 @@ __all__ = [
     "Outlines",
     "Material",
     "Paper",
+    "EyeDome",
     "RenderOptions",
     "ConvergenceError",
     "GpuError",
@@ -151,6 +152,7 @@ class _RenderKeywords(TypedDict, total=False):
     band_antialias: Optional[bool]
     outlines: Optional[Union[str, Outlines]]
     paper: Optional[Paper]
+    eye_dome: Optional[EyeDome]
 
 class _Settings:
     @staticmethod
@@ -631,6 +633,25 @@ class Paper(_Settings):
     def replace(self, *, grain: Optional[npt.ArrayLike] = ..., space: Optional[Literal['screen', 'surface']] = ..., scale: Optional[float] = ..., strength: Optional[float] = ..., tone: Optional[float] = ...) -> Paper: ...
 
 @final
+class EyeDome(_Settings):
+    """Eye-dome lighting (Boucheny's EDL, as CloudCompare and Potree draw point clouds): each pixel
+    is darkened by how far its log-depth lies behind its neighbours', so depth steps (a point
+    cloud's silhouettes and creases) show without normals. Over the surfaces after shading,
+    before the ink; the background is left as it is. With d the log2 of a pixel's linear depth
+    and d_k its eight neighbours' at ``radius`` pixels (those on the background left out), the
+    pixel's colour is multiplied by ``exp(-300 * strength * sum(max(0, d - d_k)) / 8)`` in
+    linear light. strength: 0 to 10 (default 1). radius: 0.5 to 16 output pixels (default 1.4).
+    Give it to a render: ``render(..., eye_dome=EyeDome())``.
+
+    Fields: strength: how strongly a pixel behind its neighbours darkens, 0 to 10; radius: how
+    far its neighbours lie, 0.5 to 16 output pixels.
+    """
+    def __new__(cls, *, strength: Optional[float] = ..., radius: Optional[float] = ...) -> EyeDome: ...
+    strength: Final[float]
+    radius: Final[float]
+    def replace(self, *, strength: Optional[float] = ..., radius: Optional[float] = ...) -> EyeDome: ...
+
+@final
 class RenderOptions(_Settings):
     """Every render setting besides the meshes, checked, with the core's defaults: made from the
     keywords of :class:`RenderKeywords` (``RenderOptions(width=640, outlines="mesh")``), which
@@ -652,9 +673,10 @@ class RenderOptions(_Settings):
     band_antialias: blend across each band border over about one pixel, from the screen-space
     change of the shading term: smooth tone borders at no extra samples (False: the papers' hard
     borders); outlines: ink outlines: None, 'mesh', 'image', 'both' or an Outlines; paper: paper
-    grain over the image: None or a Paper.
+    grain over the image: None or a Paper; eye_dome: eye-dome lighting (surfaces darkened where
+    they lie behind their neighbours, as point-cloud viewers draw): None or an EyeDome.
     """
-    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ..., eye_dome: Optional[EyeDome] = ...) -> RenderOptions: ...
     material: Final[Material]
     transform: Final[List[List[float]]]
     camera: Final[Camera]
@@ -671,7 +693,8 @@ class RenderOptions(_Settings):
     band_antialias: Final[bool]
     outlines: Final[Optional[Outlines]]
     paper: Final[Optional[Paper]]
-    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    eye_dome: Final[Optional[EyeDome]]
+    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ..., eye_dome: Optional[EyeDome] = ...) -> RenderOptions: ...
 
 def _restore(cls: str, state: str) -> Any: ...
 def kang_table() -> npt.NDArray[np.float64]: ...
