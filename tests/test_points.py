@@ -146,3 +146,18 @@ def test_bad_input_names_the_argument():
         tm.Points(np.zeros((5, 3)), radius=-1.0)
     with pytest.raises(TypeError, match=r"meshes\[0\]"):
         tm.Renderer().render([object()])
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_eye_dome_lighting_runs_only_when_asked_for_and_darkens_depth_steps(backend):
+    cloud = tm.Points(_sphere_points(20000))
+    off = tm.render(cloud, backend=backend, outputs=("color",), **_front())
+    assert "eye_dome" not in off.passes
+    on = tm.render(cloud, backend=backend, outputs=("color",), eye_dome=tm.EyeDome(strength=2.0), **_front())
+    assert "eye_dome" in on.passes
+    a, b = (x.color[..., :3].astype(int) for x in (on, off))
+    assert (a <= b + 1).all()  # it only darkens
+    assert (a.sum(axis=-1) < b.sum(axis=-1) - 30).sum() > 200  # toward the silhouette, most
+    assert tm.EyeDome().strength > 0 and tm.EyeDome(radius=3).radius == 3
+    with pytest.raises(ValueError, match="radius"):
+        tm.EyeDome(radius=-1)
