@@ -254,7 +254,10 @@ impl Renderer {
             None => None,
         };
         // a sheet stored double-sided is drawn once, or its shared vertices' normals cancel
-        let (faces, albedo) = match crate::parallel::install(|| back_to_back_faces(&faces, None))? {
+        // (splats share no vertices and carry their own normals: nothing to look for)
+        let twins =
+            if splats { None } else { crate::parallel::install(|| back_to_back_faces(&faces, None))? };
+        let (faces, albedo) = match twins {
             Some(keep) => {
                 let twins = keep.iter().filter(|k| !**k).count();
                 notes.push(format!(
