@@ -26,6 +26,8 @@ def normals(positions: Any, k: Optional[int] = None) -> np.ndarray:
     direction from the centroid (else +z) where every neighbour coincides with the point
     (duplicates, one point). A cloud of fewer than k + 1 points uses all its points.
     """
+    if isinstance(positions, (list, tuple)):  # nested lists of numbers, as NumPy reads them
+        positions = np.asarray(positions)
     return _core._point_normals(positions, k)  # type: ignore[no-any-return]
 
 
