@@ -6,7 +6,7 @@ use crate::render::device::COLOR_FORMAT;
 use crate::render::graph::build::fullscreen_pipeline;
 use crate::render::graph::target::{Access, GeometryLayout, Target, Use};
 use crate::render::graph::{loaded, FrameCtx, Pass, Recorder};
-use crate::render::pipelines::blended;
+use crate::render::pipelines::{blended, KEEP};
 
 pub const WGSL: &str = include_str!("eye_dome.wgsl");
 
@@ -17,11 +17,7 @@ pub const SHADE_BLEND: wgpu::BlendState = wgpu::BlendState {
         dst_factor: wgpu::BlendFactor::Src,
         operation: wgpu::BlendOperation::Add,
     },
-    alpha: wgpu::BlendComponent {
-        src_factor: wgpu::BlendFactor::Zero,
-        dst_factor: wgpu::BlendFactor::One,
-        operation: wgpu::BlendOperation::Add,
-    },
+    alpha: KEEP,
 };
 
 #[derive(Debug)]
