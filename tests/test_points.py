@@ -79,14 +79,18 @@ def test_scale_free(backend):
 
 def test_mesh_and_points_in_one_scene_keep_their_own_ink():
     V, F = tm.shapes.icosphere(3)
-    box = tm.Mesh(V * 0.5, F, transform=np.diag([1.0, 1.0, 1.0, 1.0]) + np.eye(4, k=3) * 0)
-    cloud = tm.Points(_sphere_points(5000) * 0.5 + [1.5, 0.0, 0.0])
-    r = tm.render([box, cloud], outlines="mesh", outputs=("color", "lines"), **_front())
+    ball = tm.Mesh(V * 0.5, F)
+    shift = np.eye(4)
+    shift[0, 3] = 1.5  # the cloud beside the ball, by its transform
+    cloud = tm.Points(_sphere_points(5000) * 0.5, transform=shift)
+    r = tm.render([ball, cloud], outlines="mesh", outputs=("color", "lines", "depth"), **_front())
     # the mesh keeps its mesh-space lines; the cloud's ink is image-space, so it adds no lines
     assert "lines" in r.passes and "edges" in r.passes
-    alone = tm.render(box, outlines="mesh", outputs=("lines",), **_front())
+    alone = tm.render(ball, outlines="mesh", outputs=("lines",), **_front())
     assert "edges" not in alone.passes
     assert len(r.lines) > 0
+    drawn = np.isfinite(r.depth)
+    assert drawn[:, : SIZE // 2].any() and drawn[:, SIZE // 2:].any()  # both, side by side
     cloud_only = tm.render(cloud, outlines="mesh", outputs=("color", "lines"), **_front())
     assert len(cloud_only.lines) == 0
 
