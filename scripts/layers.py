@@ -36,7 +36,7 @@ def frame_effects() -> List[str]:
 # Lowest first. A module belongs to the first pattern that matches its path.
 LAYERS: List[List[str]] = [
     ["error", "real", "cancel", "parallel", "huge_pages", "names"],
-    ["mesh", "mesh::*"],
+    ["mesh", "mesh::*", "points", "points::*"],
     ["edges", "edges::*", "smooth", "smooth::*"],
     # plain data: settings, uniform blocks, WGSL text, and the per-pixel effects (no device)
     [
@@ -56,7 +56,7 @@ LAYERS: List[List[str]] = [
      *[m for name in frame_effects() for m in (f"render::effects::{name}", f"render::effects::{name}::*")]],
     # the registries that list the frame effects, and what is built from them
     ["render::effects", "render::effects::frame", "render::plan", "render::shader"],
-    ["render::renderer", "render::draft", "render::draft::*", "render"],
+    ["render::renderer", "render::splats", "render::draft", "render::draft::*", "render"],
     ["py", "py::*", "lib"],
 ]
 

@@ -10,6 +10,7 @@ pub mod huge_pages;
 pub mod mesh;
 pub mod names;
 pub mod parallel;
+pub mod points;
 pub mod real;
 pub mod render;
 pub mod smooth;

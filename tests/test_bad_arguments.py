@@ -366,6 +366,12 @@ CASES += [
 
 # ------------------------------------------------------------------------------------------------
 # The renderer's table: 16x16 images, one shared Renderer
+#: A point cloud's positions: (N, 3) floats, finite, at least one point.
+POINT_POSITIONS = (("float64", V, OK), ("float32", V.astype(np.float32), OK), ("one point", V[:1], OK),
+                   ("nested list", V.tolist(), OK), ("none", np.zeros((0, 3)), ValueError),
+                   ("2 columns", V[:, :2], ValueError), ("nan", _with(V, (3, 1), np.nan), ValueError),
+                   ("inf", _with(V, (0, 0), np.inf), ValueError), ("strings", V.astype(str), TypeError),
+                   ("a string", "points", TypeError))
 RENDERER = tm.Renderer()
 HANDLE = RENDERER.add_mesh(V, F)
 OTHER_HANDLE = tm.Renderer().add_mesh(V, F)  # a mesh of another renderer
@@ -494,6 +500,8 @@ KINDS: Dict[str, Any] = {
     "Paper": (("a Paper", tm.Paper(), OK),
               ("a Paper on the surface, of an image", tm.Paper(np.eye(3), space="surface"), OK),
               ("True", True, TypeError), ("a name", "paper", TypeError), ("a Rim", tm.Rim(), TypeError)),
+    "EyeDome": (("an EyeDome", tm.EyeDome(), OK), ("a strong, wide EyeDome", tm.EyeDome(strength=3.0, radius=4.0), OK),
+                ("True", True, TypeError), ("a number", 1.0, TypeError), ("a Paper", tm.Paper(), TypeError)),
     "Rim": (("a Rim", tm.Rim(), OK),
             ("a coloured, lit-side Rim", tm.Rim("#3366ff", width=0.5, side="lit", blend="mix"), OK),
             ("True", True, TypeError), ("a name", "rim", TypeError), ("a colour", (1.0, 1.0, 1.0), TypeError),
@@ -630,7 +638,7 @@ def _options_of(o: Any) -> Dict[str, Any]:
 # one other than their first parameter left out.
 USE: Dict[str, Callable[[Any], Dict[str, Any]]] = {
     "Material": lambda m: dict(material=m), "Dither": lambda d: dict(material=tm.Material.bands(dither=d)),
-    "Paper": lambda paper: dict(paper=paper), "Rim": lambda rim: dict(material=tm.Material.lambert(rim=rim)),
+    "Paper": lambda paper: dict(paper=paper), "EyeDome": lambda e: dict(eye_dome=e), "Rim": lambda rim: dict(material=tm.Material.lambert(rim=rim)),
     "Light": lambda light: dict(lights=light), "Camera": lambda c: dict(camera=c),
     "Shadows": lambda sh: dict(lights=tm.Light.directional((1.0, -1.0, -2.0), shadows=sh)),
     "LineStyle": lambda s: dict(outlines=tm.Outlines("mesh", silhouette=s)), "Outlines": lambda o: dict(outlines=o),
@@ -666,6 +674,29 @@ CASES += SETTING_CASES + [_replace_case(c) for c in SETTING_CASES] + [
           SMOOTH_ITERATIONS, *CAMERA, BACKEND_PARAM, *FRAME]),
     Case("render(no outlines)", tm.render, dict(vertices=V, faces=F, **dict(FRAMED, outlines=None)),
          [Param("outputs", OUTPUTS_WITHOUT_OUTLINES, none=OK)]),
+    Case("Points", tm.Points, dict(positions=V),
+         [Param("positions", POINT_POSITIONS),
+          Param("normals", (("unit", V / np.linalg.norm(V, axis=1, keepdims=True), OK), ("scaled", V * 3.0, OK),
+                            ("a zero row", _with(V, (1, 0), 0.0) * np.eye(3)[0], ValueError),
+                            ("too few rows", V[:2], ValueError), ("2 columns", V[:, :2], ValueError),
+                            ("nan", _with(V, (0, 1), np.nan), ValueError), ("strings", V.astype(str), TypeError)),
+                none=OK),
+          Param("colors", (("uint8 RGB", np.full((len(V), 3), 200, np.uint8), OK),
+                           ("float RGBA", np.full((len(V), 4), 0.5), OK), ("above 1", np.full((len(V), 3), 2.0), ValueError),
+                           ("5 columns", np.zeros((len(V), 5)), ValueError), ("too few rows", np.zeros((2, 3)), ValueError)),
+                none=OK),
+          Param("radius", (("a float", 0.1, OK), ("one per point", np.full(len(V), 0.1), OK), ("zero", 0.0, ValueError),
+                           ("negative", -1.0, ValueError), ("nan", np.nan, ValueError),
+                           ("wrong length", np.full(2, 0.1), ValueError)),
+                none=OK)]),
+    Case("Renderer.add_points", RENDERER.add_points, dict(points=tm.Points(V)),
+         [Param("points", (("Points", tm.Points(V), OK), ("an array", V, TypeError), ("a Mesh", tm.Mesh(V, F), TypeError),
+                           ("a Points of one point", tm.Points(V[:1]), OK), ("duplicates", tm.Points(np.ones((9, 3))), OK)))]),
+    Case("points.normals", tm.points.normals, dict(positions=V, k=None),
+         [Param("positions", POINT_POSITIONS),
+          Param("k", (("12", 12, OK), ("3", 3, OK), ("256", 256, OK), ("2", 2, ValueError), ("257", 257, ValueError),
+                      ("negative", -5, ValueError), ("a float", 3.5, TypeError), ("a string", "12", TypeError)),
+                none=OK)]),
     Case("Renderer", tm.Renderer, dict(backend=None), [BACKEND_PARAM]),
     Case("gpu_info", tm.gpu_info, dict(backend=None), [BACKEND_PARAM]),
     Case("Renderer.render", RENDERER.render, dict(meshes=HANDLE, **FRAMED),
@@ -880,6 +911,9 @@ def _same(a: Any, b: Any) -> bool:
                                                                                             "normals"))
     if isinstance(a, tm.Renderer):
         return isinstance(b, tm.Renderer) and a.backend == b.backend
+    if isinstance(a, tm.Points):  # its arrays, checked and kept
+        return isinstance(b, tm.Points) and all(_same(getattr(a, k), getattr(b, k)) for k in
+                                                ("positions", "normals", "colors", "radius", "material", "transform"))
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and np.array_equal(a, b, equal_nan=True)
     if isinstance(a, (tuple, list)):

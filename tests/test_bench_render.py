@@ -7,6 +7,7 @@ import io
 import json
 import sys
 
+import numpy as np
 import pytest
 
 from toonmesh.bench import _peers
@@ -98,3 +99,10 @@ def test_stroke_smoothing_table_keeps_every_point_within_the_radius():
         assert 0 <= float(moved.split()[0]) <= radius and points > 0 and float(turning) > 0
     turns = {r[0]: float(r[1]) for r in rows}
     assert turns["contours='auto', smooth=4"] < turns["contours='auto', smooth=0"]
+
+
+def test_the_points_table_times_both_uploads_and_frames(capsys):
+    rows = bench.points_cost(2000, 32, repeat=1)
+    assert rows and all(len(r) == 6 and r[-1].endswith("x") for r in rows)
+    V, F = bench.uv_sphere(2000)
+    assert abs(len(F) - 2000) < 200 and np.allclose(np.linalg.norm(V, axis=1), 1.0)

@@ -13,7 +13,7 @@ import pytest
 from test_cli import in_process, one_line_error
 from toonmesh import _core, batch, cli, smooth
 from toonmesh.arguments import _described_flags
-from toonmesh._core import Dither, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
+from toonmesh._core import Dither, EyeDome, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
 
 #: (command, dest) -> (class, constructor, parameter): flags whose default is the described one.
 DESCRIBED = {
@@ -21,6 +21,7 @@ DESCRIBED = {
     ("render", "rim_color"): (Rim, "", "color"),
     ("render", "rim_width"): (Rim, "", "width"),
     ("render", "paper_strength"): (Paper, "", "strength"),
+    ("render", "eye_dome_radius"): (EyeDome, "", "radius"),
     ("render", "hatch_spacing"): (Material, "hatching", "spacing"),
     ("render", "hatch_width"): (Material, "hatching", "width"),
     ("render", "hatch_mode"): (Material, "hatching", "mode"),
@@ -62,7 +63,7 @@ DEMO_CHOICES = {"kind", "crease_angle"}
 #: Flags whose default is the command line's own (a file, a size, a word of its own), or nothing.
 OWN = {
     ("render", "out"), ("render", "video"), ("edges", "out"), ("render", "size"), ("render", "style"), ("render", "color"), ("render", "dither"), ("render", "shadows"),
-    ("render", "rim"), ("render", "paper"),
+    ("render", "rim"), ("render", "paper"), ("render", "eye_dome"),
     ("render", "outline_width"), ("render", "views"), ("render", "fps"), ("render", "up"), ("render", "smooth"),
     ("render", "smooth_method"), ("render", "normals"), ("render", "backend"),
     ("smooth", "out"), ("smooth", "method"), ("smooth", "weld"), ("smooth", "crease_angle"), ("smooth", "force"),

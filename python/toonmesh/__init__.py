@@ -4,7 +4,7 @@ from toonmesh.rendering._runtime_dir import ensure_runtime_dir
 
 ensure_runtime_dir()  # before any GPU device is made: keeps Mesa's Wayland probe quiet
 
-from toonmesh import edges, shapes, smooth
+from toonmesh import edges, points, shapes, smooth
 from toonmesh._core import (
     ConvergenceError,
     GpuError,
@@ -18,6 +18,7 @@ from toonmesh._core import (
 from toonmesh._core import (
     Camera,
     Dither,
+    EyeDome,
     Light,
     LineStyle,
     Material,
@@ -50,6 +51,7 @@ __all__ = [
     "Points",
     "Camera",
     "Dither",
+    "EyeDome",
     "Light",
     "LineStyle",
     "Material",

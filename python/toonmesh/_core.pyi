@@ -42,6 +42,7 @@ __all__ = [
     "Outlines",
     "Material",
     "Paper",
+    "EyeDome",
     "RenderOptions",
     "ConvergenceError",
     "GpuError",
@@ -55,6 +56,7 @@ __all__ = [
     "_intersection_lines",
     "_intersections",
     "_normal_mode",
+    "_point_normals",
     "_up_axis",
     "_paper_edges",
     "_pen_strokes",
@@ -153,6 +155,7 @@ class _RenderKeywords(TypedDict, total=False):
     glass_layers: Optional[int]
     outlines: Optional[Union[str, Outlines]]
     paper: Optional[Paper]
+    eye_dome: Optional[EyeDome]
 
 class _Settings:
     @staticmethod
@@ -644,6 +647,25 @@ class Paper(_Settings):
     def replace(self, *, grain: Optional[npt.ArrayLike] = ..., space: Optional[Literal['screen', 'surface']] = ..., scale: Optional[float] = ..., strength: Optional[float] = ..., tone: Optional[float] = ...) -> Paper: ...
 
 @final
+class EyeDome(_Settings):
+    """Eye-dome lighting (Boucheny's EDL, as CloudCompare and Potree draw point clouds): each pixel
+    is darkened by how far its log-depth lies behind its neighbours', so depth steps (a point
+    cloud's silhouettes and creases) show without normals. Over the surfaces after shading,
+    before the ink; the background is left as it is. With d the log2 of a pixel's linear depth
+    and d_k its eight neighbours' at ``radius`` pixels (those on the background left out), the
+    pixel's colour is multiplied by ``exp(-300 * strength * sum(max(0, d - d_k)) / 8)`` in
+    linear light. strength: 0 to 10 (default 1). radius: 0.5 to 16 output pixels (default 1.4).
+    Give it to a render: ``render(..., eye_dome=EyeDome())``.
+
+    Fields: strength: how strongly a pixel behind its neighbours darkens, 0 to 10; radius: how
+    far its neighbours lie, 0.5 to 16 output pixels.
+    """
+    def __new__(cls, *, strength: Optional[float] = ..., radius: Optional[float] = ...) -> EyeDome: ...
+    strength: Final[float]
+    radius: Final[float]
+    def replace(self, *, strength: Optional[float] = ..., radius: Optional[float] = ...) -> EyeDome: ...
+
+@final
 class RenderOptions(_Settings):
     """Every render setting besides the meshes, checked, with the core's defaults: made from the
     keywords of :class:`RenderKeywords` (``RenderOptions(width=640, outlines="mesh")``), which
@@ -667,9 +689,11 @@ class RenderOptions(_Settings):
     borders); glass_layers: the most glass surfaces (meshes with opacity below 1) one pixel
     composites, nearest first: each layer costs one more draw of the glass meshes and one full-
     screen pass; opaque scenes pay nothing; outlines: ink outlines: None, 'mesh', 'image',
-    'both' or an Outlines; paper: paper grain over the image: None or a Paper.
+    'both' or an Outlines; paper: paper grain over the image: None or a Paper; eye_dome: eye-
+    dome lighting (surfaces darkened where they lie behind their neighbours, as point-cloud
+    viewers draw): None or an EyeDome.
     """
-    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., glass_layers: Optional[int] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    def __new__(cls, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., glass_layers: Optional[int] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ..., eye_dome: Optional[EyeDome] = ...) -> RenderOptions: ...
     material: Final[Material]
     transform: Final[List[List[float]]]
     camera: Final[Camera]
@@ -687,7 +711,8 @@ class RenderOptions(_Settings):
     glass_layers: Final[int]
     outlines: Final[Optional[Outlines]]
     paper: Final[Optional[Paper]]
-    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., glass_layers: Optional[int] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ...) -> RenderOptions: ...
+    eye_dome: Final[Optional[EyeDome]]
+    def replace(self, *, material: Optional[Material] = ..., transform: Optional[Any] = ..., camera: Optional[Camera] = ..., up: Optional[Literal['x', 'y', 'z']] = ..., lights: Optional[Union[Light, Sequence[Light]]] = ..., ambient: Optional[_Color] = ..., background: Optional[_Color] = ..., width: Optional[int] = ..., height: Optional[int] = ..., outputs: Optional[Union[str, Sequence[str]]] = ..., msaa: Optional[int] = ..., supersample: Optional[int] = ..., pixel_ratio: Optional[float] = ..., band_antialias: Optional[bool] = ..., glass_layers: Optional[int] = ..., outlines: Optional[Union[str, Outlines]] = ..., paper: Optional[Paper] = ..., eye_dome: Optional[EyeDome] = ...) -> RenderOptions: ...
 
 def _restore(cls: str, state: str) -> Any: ...
 def kang_table() -> npt.NDArray[np.float64]: ...
@@ -705,6 +730,8 @@ class Renderer:
         normals: Any,  # a mode, None or an (N, 3) float array
         **colors: Any,  # vertex_colors, face_colors, uv, texture, texture_filter, texture_wrap, alpha_cutoff, alpha_blend
     ) -> Tuple[int, Any, List[str]]: ...
+    # a point cloud as splats: (N, 3) positions, normals, colours and radius or None, k or None
+    def add_points(self, positions: Any, normals: Any, colors: Any, radius: Any, k: Optional[int]) -> int: ...
     def remove_mesh(self, mesh: int) -> bool: ...
     def render(
         self, items: Any, options: RenderOptions, *cameras: Any, lines: Optional[Any] = ...
@@ -717,6 +744,7 @@ def encode_png_rgba(color: Any) -> bytes: ...
 def decode_png(data: bytes) -> npt.NDArray[np.uint8]: ...
 def _srgb_from_linear(values: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]: ...
 def _normal_mode(normals: Any, n_vertices: int) -> Any: ...
+def _point_normals(positions: npt.ArrayLike, k: Optional[int]) -> npt.NDArray[np.floating[Any]]: ...
 def _up_axis(up: Any) -> Optional[str]: ...
 def _transform(transform: Any) -> npt.NDArray[np.float64]: ...
 def _shadow_truth(

@@ -44,7 +44,8 @@ from toonmesh.files._load import (
     OWN_COLOURS_WHITE, Surface, file_up_axis, read_mesh, read_surfaces, up_conventions,
 )
 from toonmesh.edges import feature_edges
-from toonmesh._core import Camera, Dither, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim, Shadows
+from toonmesh._core import (Camera, Dither, EyeDome, Light, LineStyle, Material, Outlines, Paper, RenderOptions, Rim,
+                            Shadows)
 from toonmesh.rendering._render import Mesh, RenderResult, gpu_info, render
 from toonmesh.scene._scene import normal_mode
 from toonmesh.rendering._video import DEFAULT_FPS, DEFAULT_SECONDS, VIDEO_SUFFIXES, check_fps, check_video_size, save_video, video_writer
@@ -245,6 +246,9 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
     if args.paper != NONE:
         with errors_as_flags(args, Paper):
             options["paper"] = Paper(space=args.paper, strength=args.paper_strength)
+    if args.eye_dome is not None:
+        with errors_as_flags(args, EyeDome):
+            options["eye_dome"] = EyeDome(strength=args.eye_dome, radius=args.eye_dome_radius)
     if args.shadows:
         with errors_as_flags(args, Shadows):
             options["lights"] = [Light.key().replace(shadows=Shadows(size=args.shadow_size, bias=args.shadow_bias, strength=args.shadow_strength))]
@@ -630,6 +634,10 @@ def build_parser(prog: str = "toonmesh") -> argparse.ArgumentParser:
     add_described(p, "--paper", Paper, "space", default=NONE, extra_choices=(NONE,),
                   help_before="paper grain over the image; ", also_sets=[(RenderOptions, "paper")])
     add_described(p, "--paper-strength", Paper, "strength", metavar="S")
+    add_described(p, "--eye-dome", EyeDome, "strength", default=None, metavar="S", shown_default="off",
+                  help_before="eye-dome lighting at this strength (surfaces darkened behind their neighbours, "
+                              "as point-cloud viewers draw); ", also_sets=[(RenderOptions, "eye_dome")])
+    add_described(p, "--eye-dome-radius", EyeDome, "radius", metavar="PX")
     for name in HATCH_FLAGS:
         add_described(p, f"--hatch-{name}", Material, name, constructor=HATCHING, help_before=f"--style {HATCHING}: ",
                       metavar=None if name == "mode" else "PX")

@@ -14,7 +14,7 @@ use crate::render::albedo::Albedo;
 use crate::render::color::linear_to_srgb;
 
 /// An sRGB array (the argument `arg`): uint8 codes, or float32 or float64 values.
-fn channels(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Channels> {
+pub(super) fn channels(arg: &str, obj: &Bound<'_, PyAny>) -> Result<Channels> {
     let obj = &native_order(obj)?;
     let a = untyped(arg, obj)?;
     let wrong_dtype =

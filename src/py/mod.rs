@@ -7,6 +7,7 @@ mod draft;
 mod edges;
 mod errors;
 mod mesh_input;
+mod points;
 mod render;
 mod runtime;
 mod settings;
@@ -39,6 +40,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(strokes::_pen_strokes, m)?,
         wrap_pyfunction!(strokes::_plotter_order, m)?,
         wrap_pyfunction!(strokes::_svg_document, m)?,
+        wrap_pyfunction!(points::_point_normals, m)?,
         wrap_pyfunction!(render::_shadow_truth, m)?,
         wrap_pyfunction!(albedo::_srgb_from_linear, m)?,
         wrap_pyfunction!(render::_normal_mode, m)?,

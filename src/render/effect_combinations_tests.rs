@@ -168,7 +168,12 @@ fn every_combination_of_effects_and_mesh_colour_matches_the_cpu_references_on_bo
                     .with_effects(effects.clone())
                     .unwrap();
                 let scene = Scene {
-                    items: vec![SceneItem { mesh: id, transform: IDENTITY, material: material.clone() }],
+                    items: vec![SceneItem {
+                        mesh: id,
+                        transform: IDENTITY,
+                        material: material.clone(),
+                        splats: false,
+                    }],
                     camera,
                     lights: lights.clone(),
                     ..Default::default()

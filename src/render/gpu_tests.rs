@@ -56,7 +56,7 @@ pub(super) fn sphere_scene(r: &Renderer, material: Material, normals: NormalMode
     let id = r.add_mesh(&v, f, normals).unwrap();
     let placement = Placement::Fit { direction: Some([0.35, 0.3, 1.0]), up: None, margin: 1.05, turn: 0.0 };
     Scene {
-        items: vec![SceneItem { mesh: id, transform: IDENTITY, material }],
+        items: vec![SceneItem { mesh: id, transform: IDENTITY, material, splats: false }],
         camera: Camera { placement, ..Camera::default() },
         lights: vec![
             Light::default(),
@@ -290,8 +290,8 @@ fn two_spheres(r: &Renderer, outlines: Outlines) -> Scene {
     let front = [[0.5, 0.0, 0.0, 0.4], [0.0, 0.5, 0.0, 0.2], [0.0, 0.0, 0.5, 1.2], [0.0, 0.0, 0.0, 1.0]];
     Scene {
         items: vec![
-            SceneItem { mesh: id, transform: IDENTITY, material: Material::default() },
-            SceneItem { mesh: id, transform: front, material: Material::default() },
+            SceneItem { mesh: id, transform: IDENTITY, material: Material::default(), splats: false },
+            SceneItem { mesh: id, transform: front, material: Material::default(), splats: false },
         ],
         camera: Camera {
             placement: Placement::LookAt { eye: [0.3, 0.4, 5.0], target: [0.0; 3], up: [0.0, 1.0, 0.0] },

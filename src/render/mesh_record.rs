@@ -11,12 +11,20 @@ use super::gpu_mesh::{GpuMesh, HostMesh};
 pub struct MeshRecord {
     pub gpu: GpuMesh,
     pub host: HostMesh,
+    /// A point cloud's splats (`render::splats`): inked in image space, never by its edges.
+    pub splats: bool,
     derived: Mutex<HashMap<TypeId, Arc<dyn Any + Send + Sync>>>,
 }
 
 impl MeshRecord {
     pub fn new(gpu: GpuMesh, host: HostMesh) -> Self {
-        MeshRecord { gpu, host, derived: Mutex::new(HashMap::new()) }
+        MeshRecord { gpu, host, splats: false, derived: Mutex::new(HashMap::new()) }
+    }
+
+    /// The record, marked as a point cloud's splats where `splats`.
+    pub fn marked_splats(mut self, splats: bool) -> Self {
+        self.splats = splats;
+        self
     }
 
     /// The value of type `T` kept with this mesh, made by `make` the first time it is asked

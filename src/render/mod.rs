@@ -37,6 +37,7 @@ pub mod renderer;
 pub mod scene;
 pub mod settings;
 pub mod shader;
+pub mod splats;
 pub mod stage_part;
 pub mod uniforms;
 pub mod wgsl;

@@ -257,7 +257,12 @@ mod tests {
             ..Light::default()
         };
         Scene {
-            items: vec![SceneItem { mesh: 1, transform: IDENTITY, material: Default::default() }],
+            items: vec![SceneItem {
+                mesh: 1,
+                transform: IDENTITY,
+                material: Default::default(),
+                splats: false,
+            }],
             lights: vec![if shadows {
                 Light {
                     kind: crate::render::scene::light::LightKind::Directional { direction: [0.0, -1.0, 0.0] },

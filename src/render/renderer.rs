@@ -212,7 +212,18 @@ impl Renderer {
         normals: impl Into<MeshNormals>,
         albedo: Option<Albedo>,
     ) -> Result<(MeshId, Vec<String>)> {
-        let normals = normals.into();
+        self.upload(positions, faces, normals.into(), albedo, false)
+    }
+
+    /// Every upload: a mesh (`add_mesh_with`), or a point cloud's splats (`add_points`).
+    pub(crate) fn upload<T: Real>(
+        &self,
+        positions: &[Vec3<T>],
+        faces: Vec<[u32; 3]>,
+        normals: MeshNormals,
+        albedo: Option<Albedo>,
+        splats: bool,
+    ) -> Result<(MeshId, Vec<String>)> {
         self.ctx.check_process()?;
         crate::mesh::check_positions("vertices", positions)?;
         if let Some(bad) = faces.iter().flatten().find(|&&i| i as usize >= positions.len()) {
@@ -243,7 +254,10 @@ impl Renderer {
             None => None,
         };
         // a sheet stored double-sided is drawn once, or its shared vertices' normals cancel
-        let (faces, albedo) = match crate::parallel::install(|| back_to_back_faces(&faces, None))? {
+        // (splats share no vertices and carry their own normals: nothing to look for)
+        let twins =
+            if splats { None } else { crate::parallel::install(|| back_to_back_faces(&faces, None))? };
+        let (faces, albedo) = match twins {
             Some(keep) => {
                 let twins = keep.iter().filter(|k| !**k).count();
                 notes.push(format!(
@@ -262,7 +276,7 @@ impl Renderer {
         self.meshes
             .lock()
             .unwrap_or_else(|e| e.into_inner())
-            .insert(id, Arc::new(MeshRecord::new(gpu, host)));
+            .insert(id, Arc::new(MeshRecord::new(gpu, host).marked_splats(splats)));
         Ok((id, notes))
     }
 
@@ -287,13 +301,14 @@ impl Renderer {
         let info = &self.ctx.info;
         let limits =
             DeviceLimits { max_texture_size: info.max_texture_size, msaa_samples: info.msaa_samples.clone() };
-        let checked = CheckedScene::check(scene, frame, &limits)?;
+        let mut checked = CheckedScene::check(scene, frame, &limits)?;
         check_effects(&checked)?;
-        for (i, item) in checked.scene.items.iter().enumerate() {
-            self.mesh(item.mesh).map_err(|e| match e {
+        for (i, item) in checked.scene.items.iter_mut().enumerate() {
+            let rec = self.mesh(item.mesh).map_err(|e| match e {
                 Error::InvalidValue { reason, .. } => Error::invalid(format!("meshes[{i}]"), reason),
                 other => other,
             })?;
+            item.splats = rec.splats;
         }
         Ok(checked)
     }

@@ -13,11 +13,12 @@ Then: one-shot ``tm.render`` (upload included) against a frame of a mesh already
 upload of each normal mode (``"auto"`` splits vertices at creases); ``render_many`` of a turntable against as many ``render`` calls; what outlines add to a frame;
 Kang, Kim and Yoon's scenes (their four small models with outlines, toon shading and shadows at
 640x480, next to the paper's frames per second); the accuracy knobs and outline accuracy
-(:func:`accuracy`); and a fresh process from import to the first PNG.
+(:func:`accuracy`); a point cloud's splats against a mesh of as many faces (``points``); and a
+fresh process from import to the first PNG.
 
 Options after the suite name: ``--size N`` (the square frame), ``--wide WxH``,
 ``--subdivisions S``, ``--skip-peers``, ``--only TABLE,...`` (frames, oneshot, normals, stream,
-outlines, kang, accuracy, cold).
+outlines, kang, points, accuracy, cold).
 """
 
 from __future__ import annotations
@@ -38,7 +39,7 @@ from toonmesh.bench._timing import median_time, ms, table
 
 EYE = _peers.EYE
 FOV_Y = _peers.FOV_Y
-TABLES = ("frames", "oneshot", "normals", "stream", "outlines", "kang", "accuracy", "cold")
+TABLES = ("frames", "oneshot", "normals", "stream", "outlines", "kang", "points", "accuracy", "cold")
 
 # A frame kind: (label, outputs, width, height)
 Frame = Tuple[str, str, int, int]
@@ -312,6 +313,65 @@ def _line_steps(subdiv: int, size: int, repeat: int) -> None:
 # Kang, Kim and Yoon (2001): frames per second of their software renderer on a Pentium III, as
 # ranges over their models: outlines only, outlines + toon shading, + shadows.
 KANG_PAPER_FPS = ("about 80", "60-69", "45-50")
+
+
+def sphere_cloud(n: int, seed: int = 0) -> np.ndarray:
+    """``n`` points drawn uniformly on the unit sphere."""
+    v = np.random.default_rng(seed).normal(size=(n, 3))
+    return v / np.linalg.norm(v, axis=1, keepdims=True)
+
+
+def uv_sphere(faces: int) -> Tuple[np.ndarray, np.ndarray]:
+    """A unit sphere of about ``faces`` triangles (a latitude-longitude grid, poles included)."""
+    m = max(2, int(round(np.sqrt(faces / 4))))  # m rings of 2m quads: 4 m^2 triangles
+    theta, phi = np.meshgrid(np.linspace(0, np.pi, m + 1), np.linspace(0, 2 * np.pi, 2 * m, endpoint=False),
+                             indexing="ij")
+    V = np.stack([np.sin(theta) * np.cos(phi), np.cos(theta), np.sin(theta) * np.sin(phi)], -1).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(m), np.arange(2 * m), indexing="ij")
+    a, b = i * 2 * m + j, i * 2 * m + (j + 1) % (2 * m)
+    c, d = a + 2 * m, b + 2 * m
+    F = np.concatenate([np.stack([a, c, d], -1).reshape(-1, 3), np.stack([a, d, b], -1).reshape(-1, 3)])
+    return V, F
+
+
+def points_cost(n: int, size: int, repeat: int, backends: Optional[Sequence[str]] = None) -> List[Sequence[Any]]:
+    """Frames of ``n`` points on a sphere (splats, normals estimated at upload) against a sphere
+    mesh of ``n`` faces, both uploaded once, in turns; rows (backend, upload of the points,
+    upload of the mesh, frame of the points, frame of the mesh, ratio)."""
+    import toonmesh as tm
+
+    cloud = tm.Points(sphere_cloud(n))
+    V, F = uv_sphere(n)
+    kw = dict(width=size, height=size, camera=tm.Camera.fit((0.3, 0.4, 1.0)))
+    rows = []
+    for backend, r in _renderers():
+        if backends is not None and backend not in backends:
+            continue
+        t0 = time.perf_counter()
+        splats = r.add_points(cloud)
+        up_points = time.perf_counter() - t0
+        t0 = time.perf_counter()
+        mesh = r.add_mesh(V, F)
+        up_mesh = time.perf_counter() - t0
+        t_points, t_mesh = [], []
+        for k in range(max(1, repeat) + 1):  # the first round warms up
+            for handle, times in ((splats, t_points), (mesh, t_mesh)):
+                t0 = time.perf_counter()
+                r.render(handle, **kw)
+                if k:
+                    times.append(time.perf_counter() - t0)
+        p, m = float(np.median(t_points)), float(np.median(t_mesh))
+        rows.append((f"toonmesh {backend}", ms(up_points), ms(up_mesh), ms(p), ms(m), f"{p / m:.2f}x"))
+        r.remove_mesh(splats)
+        r.remove_mesh(mesh)
+    return rows
+
+
+def _points(n: int, size: int, repeat: int) -> None:
+    print(table(["renderer", "upload: points (normals, splats)", "upload: mesh", "frame: points", "frame: mesh",
+                 "points / mesh"], points_cost(n, size, repeat),
+                title=f"Point clouds: {n:,} points on a sphere as splats against a sphere mesh of {n:,} faces at "
+                      f"{size}x{size}, each uploaded once; median of {repeat} frames in turns"))
 
 
 def _kang_models() -> List[Tuple[str, Any, int, float]]:
@@ -648,6 +708,8 @@ def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> Non
         _line_steps(subdiv, size, repeat)
     if "kang" in only:
         _kang(320 if quick else 640, 240 if quick else 480, 6 if quick else 30, repeat)
+    if "points" in only:
+        _points(20_000 if quick else 1_000_000, 128 if quick else 512, repeat)
     if "accuracy" in only:
         accuracy(quick, repeat, extra)
     if "cold" in only:

@@ -29,7 +29,7 @@ from toonmesh.files import _load
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions, kang_table
 from toonmesh.arguments._input import mesh_arrays
 from toonmesh.rendering._results import RenderResult, RenderStack, stack_of
-from toonmesh.scene._points import Lines
+from toonmesh.scene._points import Lines, Points
 from toonmesh.scene._scene import Mesh, MeshHandle, Normals, geometry_key, normal_mode, own_normals
 
 if TYPE_CHECKING:
@@ -119,6 +119,16 @@ class Renderer:
             warnings.warn(f"{source}: {note}" if source else note, UserWarning, stacklevel=3)
         return MeshHandle(self, mesh_id, len(V), len(F), normals)
 
+    def add_points(self, points: Points) -> MeshHandle:
+        """Uploads a point cloud (a :class:`Points`) as splats, for many views of it; the handle
+        places it in a scene like a mesh's (its material, transform and up axis are the scene
+        item's: wrap it in a :class:`Mesh` to give them). Normals the cloud lacks are estimated
+        here, once, from each point's nearest neighbours (:func:`toonmesh.points.normals`)."""
+        if not isinstance(points, Points):
+            raise TypeError(f"points: expected a toonmesh.Points, got {type(points).__name__}")
+        mesh_id = self._engine.add_points(points.positions, points.normals, points.colors, points.radius, None)
+        return MeshHandle(self, mesh_id, 3 * len(points), len(points), None)
+
     def remove_mesh(self, mesh: MeshHandle) -> None:
         """Frees a mesh's GPU memory."""
         if not isinstance(mesh, MeshHandle):
@@ -174,8 +184,8 @@ class PlacedMesh(NamedTuple):
 
 def place_meshes(renderer: Renderer, meshes: Any, smooth_iterations: int = 0,
                  where: str = "meshes") -> Tuple[List[PlacedMesh], List[MeshHandle]]:
-    """The scene's items (a :class:`Mesh`, a :class:`MeshHandle`, a list of them or None) on
-    ``renderer``'s device, in order, and the handles uploaded for them, which the caller frees
+    """The scene's items (a :class:`Mesh`, a :class:`Points`, a :class:`MeshHandle`, a list of
+    them or None) on ``renderer``'s device, in order, and the handles uploaded for them, which the caller frees
     with :func:`remove_meshes`. Meshes not yet there are uploaded, after ``smooth_iterations``
     of Laplacian smoothing; meshes that share their arrays (instances of one geometry) share one
     upload. ``where`` names the items in errors. Nothing stays uploaded when it fails."""
@@ -187,8 +197,16 @@ def place_meshes(renderer: Renderer, meshes: Any, smooth_iterations: int = 0,
         for i, item in enumerate(items):
             if isinstance(item, MeshHandle):
                 item = Mesh(item)
+            elif isinstance(item, Points):
+                handle = by_geometry.get(("points", id(item)))
+                if handle is None:
+                    handle = by_geometry[("points", id(item))] = renderer.add_points(item)
+                    uploaded.append(handle)
+                placed.append(PlacedMesh(handle, item.material, item.transform, item.up))
+                continue
             elif not isinstance(item, Mesh):
-                raise TypeError(f"{where}[{i}]: expected a toonmesh.Mesh or MeshHandle, got {type(item).__name__}")
+                raise TypeError(f"{where}[{i}]: expected a toonmesh.Mesh, Points or MeshHandle, "
+                                f"got {type(item).__name__}")
             handle = item.handle
             if handle is None:
                 key = geometry_key(item)
@@ -300,9 +318,9 @@ def render(
     ``vertices``: (N, 3) float32/float64 with ``faces`` (M, 3) int32/int64/uint32; or a
     ``trimesh.Trimesh``; or a ``trimesh.Scene`` or a mesh file's path (str or os.PathLike),
     read as :func:`toonmesh.load` reads them (every node, its transform and colours); or a
-    :class:`Mesh` or list of them (each with its own material and transform), where
-    :class:`Lines` items may stand beside the meshes (segments drawn as ink, hidden by the
-    surfaces in front of them); None for an empty scene. With no ``material`` given, meshes that carry colours or a texture and name no
+    :class:`Mesh` or :class:`Points` (a point cloud, drawn as splats) or a list of them (each
+    with its own material and transform), where :class:`Lines` items may stand beside them
+    (segments drawn as ink, hidden by the surfaces in front of them); None for an empty scene. With no ``material`` given, meshes that carry colours or a texture and name no
     material of their own are drawn under the default shading model in white, so their colours
     show as they are, however they were given. Inputs are never modified. Meshes that share their vertex and face arrays (the
     instances of one geometry) are uploaded once.
@@ -334,8 +352,8 @@ def scene_items(vertices: Any, faces: Any = None, normals: Normals = None) -> Li
     """The scene's items as :func:`render` reads its first arguments (so does the viewer): (V, F)
     arrays or a ``trimesh.Trimesh`` as one :class:`Mesh` with ``normals``; a mesh file's path
     (str or os.PathLike) or a ``trimesh.Scene`` read as :func:`toonmesh.load` reads them (with
-    ``normals`` in place of a file's own where given); a :class:`Mesh`, or a list of
-    :class:`Mesh`, :class:`MeshHandle` and ``trimesh.Trimesh`` items (a trimesh made a
+    ``normals`` in place of a file's own where given); a :class:`Mesh` or :class:`Points`, or a
+    list of :class:`Mesh`, :class:`Points`, :class:`MeshHandle` and ``trimesh.Trimesh`` items (a trimesh made a
     :class:`Mesh` with ``normals``); None for an empty scene. Errors name ``vertices``/``faces``."""
     if isinstance(vertices, (list, tuple)) and faces is None:
         return [Mesh(x, normals=normals) if _is_trimesh(x) else _given_normals(x, normals) for x in vertices]
@@ -345,6 +363,8 @@ def scene_items(vertices: Any, faces: Any = None, normals: Normals = None) -> Li
         return [vertices]
     if isinstance(vertices, (Mesh, MeshHandle)):
         return [_given_normals(vertices, normals)]
+    if isinstance(vertices, Points):
+        return [vertices]
     if faces is None and (isinstance(vertices, (str, os.PathLike)) or _load.is_scene(vertices)):
         loaded = _load.load(vertices) if isinstance(vertices, (str, os.PathLike)) else _load.scene_meshes(vertices)
         return loaded if normals is None else [_with_normals(m, normals) for m in loaded]
@@ -383,7 +403,18 @@ def own_colours(items: List[Any], opts: RenderOptions, material: Optional[Materi
     """``items`` as :func:`render` draws them with ``material`` (None where none was given):
     see :func:`own_colours_material`. The caller's meshes are not changed (copies)."""
     white = own_colours_material(opts, material)
-    return items if white is None else _load.under_own_colours(items, white)
+    if white is None:
+        return items
+    return [_under(p, white) if isinstance(p, Points) else p for p in _load.under_own_colours(items, white)]
+
+
+def _under(points: Points, material: Material) -> Points:
+    """A cloud with colours of its own and no material drawn under ``material`` (a copy)."""
+    if points.colors is None or points.material is not None:
+        return points
+    points = copy.copy(points)
+    points.material = material
+    return points
 
 
 def _with_normals(m: Mesh, normals: Normals) -> Mesh:

@@ -16,6 +16,7 @@ from typing import Any, List, Tuple
 import numpy as np
 
 from toonmesh.rendering._render import PlacedMesh, Renderer, place_meshes, remove_meshes
+from toonmesh.scene._points import Points
 from toonmesh.scene._scene import Mesh, own_normals
 
 
@@ -31,6 +32,8 @@ def _digest(value: Any) -> Tuple[Any, ...]:
 def content_key(mesh: Mesh) -> Tuple[Any, ...]:
     """What a mesh's upload depends on, by content: its arrays, colours and normals (a
     MeshHandle is its own upload: by identity)."""
+    if isinstance(mesh, Points):  # a cloud: its arrays and radius
+        return ("points", *(_digest(getattr(mesh, k)) for k in ("positions", "normals", "colors")), repr(mesh.radius))
     if mesh.handle is not None:
         return ("handle", id(mesh.handle))
     normals = _digest(mesh.normals) if own_normals(mesh.normals) else ("mode", mesh.normals)

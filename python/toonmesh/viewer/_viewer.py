@@ -50,6 +50,7 @@ from toonmesh.files._load import is_scene
 from toonmesh.rendering._render import (PlacedMesh, Renderer, _core_items, draw, draw_views, own_colours,
                               scene_items, shared_renderer)
 from toonmesh.rendering._results import RenderResult
+from toonmesh.scene._points import Points
 from toonmesh.scene._scene import Mesh, MeshHandle, Normals, own_normals
 from toonmesh.viewer._layout import KEYWORDS as LAYOUT, Layout, checked
 from toonmesh.viewer._uploads import SharedUpload, shared_upload
@@ -523,7 +524,7 @@ class Viewer:
         items = scene_items(vertices, faces, normals)
         if not items:
             raise ValueError("vertices: the scene has no mesh")
-        meshes = [item if isinstance(item, Mesh) else Mesh(item) for item in items]  # a MeshHandle in a list
+        meshes = [item if isinstance(item, (Mesh, Points)) else Mesh(item) for item in items]  # a MeshHandle in a list
         upload = shared_upload(self._renderer, meshes, smooth_iterations, where="vertices")
         self._uploads.append(upload)
         self._parts = _part_names(meshes)
@@ -544,10 +545,11 @@ class Viewer:
         lows: List[np.ndarray] = []
         highs: List[np.ndarray] = []
         for mesh in meshes:
-            if mesh.vertices is None:
+            arrays = mesh.positions if isinstance(mesh, Points) else mesh.vertices
+            if arrays is None:
                 continue
             transform = mesh.transform if mesh.transform is not None else self._options_transform()
-            V = mesh.vertices @ transform[:3, :3].T + transform[:3, 3]
+            V = arrays @ transform[:3, :3].T + transform[:3, 3]
             lows.append(V.min(axis=0))
             highs.append(V.max(axis=0))
         return (np.min(lows, axis=0) + np.max(highs, axis=0)) / 2 if lows else np.zeros(3)

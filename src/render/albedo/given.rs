@@ -61,6 +61,7 @@ fn named<T: Default>(arg: &str, name: Option<String>, parse: fn(&str, &str) -> R
 }
 
 /// The colour keywords given (None: not given).
+#[derive(Default)]
 pub struct Given {
     pub vertex_colors: Option<Channels>,
     pub face_colors: Option<Channels>,

@@ -7,10 +7,11 @@ use crate::render::graph::effect::{FrameEffect, FrameInputs};
 use crate::render::scene::checked::CheckedScene;
 use crate::render::uniforms::{lighting_block, view_block, LightingBlock, Members, ViewBlock};
 
-use super::{outlines, paper, shadows};
+use super::{eye_dome, outlines, paper, shadows};
 
 /// Every frame effect.
-pub static FRAME: &[&dyn FrameEffect] = &[&shadows::EFFECT, &outlines::EFFECT, &paper::EFFECT];
+pub static FRAME: &[&dyn FrameEffect] =
+    &[&shadows::EFFECT, &eye_dome::EFFECT, &outlines::EFFECT, &paper::EFFECT];
 
 /// The members of `Frame`: the view's and the lights' blocks, then every frame effect's.
 pub fn frame_members() -> Members {

@@ -3,10 +3,11 @@
 //!
 //! - Per-pixel (surface) effects (`surface`: hatching, dithering, rim light) are carried by a material and
 //!   compiled into the shading pipeline through hooks; they add no pass.
-//! - Frame effects (`frame`: shadows, outlines) add passes and host steps to the frame
+//! - Frame effects (`frame`: shadows, eye-dome lighting, outlines, paper) add passes and host steps to the frame
 //!   (`graph::effect::FrameEffect`).
 
 pub mod dither;
+pub mod eye_dome;
 pub mod frame;
 pub mod hatching;
 pub mod outlines;

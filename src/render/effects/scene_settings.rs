@@ -50,4 +50,6 @@ macro_rules! scene_effects {
 
 scene_effects! {
     paper: Paper = super::paper::settings::Paper, "paper grain over the image: None or a Paper",
+    eye_dome: EyeDome = super::eye_dome::settings::EyeDome,
+        "eye-dome lighting (surfaces darkened where they lie behind their neighbours, as point-cloud viewers draw): None or an EyeDome",
 }

@@ -154,6 +154,9 @@ pub struct SceneItem {
     /// Row-major 4x4 affine model -> world transform (applied to column vectors).
     pub transform: [[f64; 4]; 4],
     pub material: Material,
+    /// A point cloud's splats (set from its mesh when the scene is checked): no mesh-space
+    /// lines; image-space edges ink it.
+    pub splats: bool,
 }
 
 pub const IDENTITY: [[f64; 4]; 4] =

@@ -145,6 +145,7 @@ impl RenderOptions {
                     mesh: *mesh,
                     material: material.clone().unwrap_or_else(|| self.material.clone()),
                     transform: transform.unwrap_or(self.transform),
+                    splats: false,
                 })
                 .collect(),
             camera: self.camera,

@@ -24,6 +24,7 @@ macro_rules! settings_classes {
                 fn lambert; fn phong; fn thresholded_phong; fn bands; fn hatching; fn lut;
             }
             Paper("effects/paper/docs") = $crate::render::effects::paper::settings::Paper { new; }
+            EyeDome("effects/eye_dome/docs") = $crate::render::effects::eye_dome::settings::EyeDome { new; }
             RenderOptions("settings/docs") = $crate::render::scene::options::RenderOptions { new; }
         }
     };

@@ -42,6 +42,9 @@ impl HostStep for Intersections {
         for i in 0..items.len() {
             let from_world = to_world[i].inverse();
             for j in i + 1..items.len() {
+                if items[i].splats || items[j].splats {
+                    continue;
+                }
                 let j_to_i = from_world * to_world[j];
                 let find = || chain(&crate::parallel::install(|| between(bvhs[i], bvhs[j], Some(&j_to_i))));
                 let lines = lines[i].crossings_with(&cx.records[j], &j_to_i, find);

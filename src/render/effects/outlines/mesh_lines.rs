@@ -581,6 +581,11 @@ pub fn scene_outlines(
 ) -> Result<Vec<MeshOutline>> {
     let mut outlines = Vec::with_capacity(items.len());
     for (item, rec) in items.iter().zip(records) {
+        if item.splats {
+            // a splat's edges are no lines of the surface: image-space edges ink the cloud
+            outlines.push(MeshOutline { edges: Outline::default(), curves: Vec::new() });
+            continue;
+        }
         let view = stored_view(cam, item.model_matrix(), &rec.gpu);
         let flat = rec.gpu.normals == NormalMode::Flat;
         outlines.push(MeshLines::of(rec).outline(&rec.host, flat, view, o)?);

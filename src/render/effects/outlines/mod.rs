@@ -88,9 +88,14 @@ fn exact(scene: &CheckedScene) -> bool {
     line_rules(scene).is_some_and(|o| o.visibility == settings::VisibilityRule::Exact)
 }
 
-/// What the scene draws: lines (mesh-space lines or `Lines` items), image-space edges.
+/// What the scene draws: lines (mesh-space lines or `Lines` items), image-space edges. A point
+/// cloud's ink is the image-space edges': a scene with one gets them even where the outlines
+/// name mesh-space lines only (which its meshes keep).
 fn draws(scene: &CheckedScene) -> (bool, bool) {
-    let image = scene.scene.outlines.as_ref().is_some_and(|o| o.draws_image_edges());
+    let splats = scene.scene.items.iter().any(|item| item.splats);
+    let outlines = scene.scene.outlines.as_ref();
+    let mesh = outlines.is_some_and(settings::Outlines::draws_mesh_lines);
+    let image = outlines.is_some_and(|o| o.draws_image_edges()) || (mesh && splats);
     (line_rules(scene).is_some(), image)
 }
 
@@ -191,8 +196,8 @@ impl FrameEffect for OutlinesEffect {
         let visible = mesh && o.has(Output::Lines);
         if let Some(outlines) = rules.as_ref().filter(|_| lines || visible) {
             let view = Arc::default();
-            let crossing =
-                outlines.styles[LineKind::Intersection as usize].is_some() && cx.scene.scene.items.len() > 1;
+            let crossing = outlines.styles[LineKind::Intersection as usize].is_some()
+                && cx.scene.scene.items.iter().filter(|item| !item.splats).count() > 1;
             let intersections = crossing.then(|| {
                 let found = intersection_lines::IntersectionSlot::default();
                 steps

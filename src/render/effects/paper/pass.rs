@@ -10,7 +10,7 @@ use crate::render::device::COLOR_FORMAT;
 use crate::render::graph::build::{fullscreen_pipeline, texture_group};
 use crate::render::graph::target::{Access, Target, Use};
 use crate::render::graph::{loaded, FrameCtx, Pass, Recorder};
-use crate::render::pipelines::blended;
+use crate::render::pipelines::{blended, KEEP};
 use crate::render::settings::GreyImage;
 
 pub const WGSL: &str = include_str!("paper.wgsl");
@@ -23,11 +23,7 @@ pub const PAPER_BLEND: wgpu::BlendState = wgpu::BlendState {
         dst_factor: wgpu::BlendFactor::SrcAlpha,
         operation: wgpu::BlendOperation::Add,
     },
-    alpha: wgpu::BlendComponent {
-        src_factor: wgpu::BlendFactor::Zero,
-        dst_factor: wgpu::BlendFactor::One,
-        operation: wgpu::BlendOperation::Add,
-    },
+    alpha: KEEP,
 };
 
 #[derive(Debug)]
