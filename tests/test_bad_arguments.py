@@ -613,6 +613,14 @@ def _added(**kw: Any) -> Any:
         RENDERER.remove_mesh(handle)
 
 
+EDGES = np.array([[0, 1], [1, 2], [2, 0]], np.int64)  # a triangle of the mesh's first vertices
+
+
+def _lines_rendered(**kw: Any) -> Any:
+    """The mesh with a Lines item of ``kw`` beside it, rendered."""
+    return RENDERER.render([HANDLE, tm.Lines(**kw)], **SMALL, outputs=("color", "normal"))
+
+
 def _mesh_rendered(**kw: Any) -> Any:
     return RENDERER.render(tm.Mesh(**kw), **SMALL, outputs=("color", "normal"))
 
@@ -689,6 +697,16 @@ CASES += SETTING_CASES + [_replace_case(c) for c in SETTING_CASES] + [
                            ("negative", -1.0, ValueError), ("nan", np.nan, ValueError),
                            ("wrong length", np.full(2, 0.1), ValueError)),
                 none=OK)]),
+    Case("Lines", _lines_rendered, dict(positions=V, segments=None, color=None, width=None, transform=None),
+         [Param("positions", _but(POINT_POSITIONS, {"one point": ValueError}), none=TypeError),
+          Param("segments", (("int64", EDGES, OK), ("int32", EDGES.astype(np.int32), OK),
+                             ("uint32", EDGES.astype(np.uint32), OK), ("none of them", EDGES[:0], OK),
+                             ("past the end", _with(EDGES, (1, 1), len(V)), IndexError),
+                             ("negative", _with(EDGES, (0, 0), -1), IndexError), ("floats", EDGES * 1.0, TypeError),
+                             ("3 columns", np.hstack([EDGES, EDGES[:, :1]]), ValueError),
+                             ("flat", EDGES.ravel(), ValueError), ("a string", "segments", TypeError)), none=OK),
+          Param("color", KINDS["color"], none=OK), Param("width", Number(0.0, 64.0, open_lo=True), none=OK),
+          Param("transform", KINDS["matrix"], none=OK)]),
     Case("Renderer.add_points", RENDERER.add_points, dict(points=tm.Points(V)),
          [Param("points", (("Points", tm.Points(V), OK), ("an array", V, TypeError), ("a Mesh", tm.Mesh(V, F), TypeError),
                            ("a Points of one point", tm.Points(V[:1]), OK), ("duplicates", tm.Points(np.ones((9, 3))), OK)))]),

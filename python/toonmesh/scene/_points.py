@@ -8,7 +8,7 @@ from typing import Any, Optional
 import numpy as np
 
 from toonmesh import _core
-from toonmesh._core import Material
+from toonmesh._core import LineStyle, Material
 
 
 def _floats(name: str, value: Any, width: int, n: Optional[int] = None) -> np.ndarray:
@@ -112,9 +112,9 @@ class Lines:
 
     ``positions``: (N, 3) float32/float64 in world units. ``segments``: (K, 2) integer indices
     into ``positions``, each a segment; None (default): one polyline through the positions in
-    order. ``color``: the ink's sRGB colour (3 floats in [0, 1]); None (default): the outlines'
-    ink colour. ``width``: the ink's width in output pixels (> 0); None (default): the outlines'
-    line width. ``transform``, ``up`` and ``name`` as for :class:`toonmesh.Mesh`.
+    order. ``color``: the ink's sRGB colour, as :class:`LineStyle` takes it (``"#203040"``, 3
+    floats in [0, 1]); None (default): the outlines' ink colour. ``width``: the ink's width in
+    output pixels, in (0, 64]; None (default): the outlines' line width. ``transform``, ``up`` and ``name`` as for :class:`toonmesh.Mesh`.
     """
 
     def __init__(
@@ -146,18 +146,9 @@ class Lines:
                 bad = int(np.argmax(((s < 0) | (s >= n)).any(axis=1)))
                 raise IndexError(f"segments: row {bad + 1} (1-based) indexes past the {n} positions")
             self.segments = np.ascontiguousarray(s, dtype=np.int64)
-        self.color: Optional[tuple] = None
-        if color is not None:
-            c = tuple(float(x) for x in np.asarray(color, dtype=np.float64).reshape(-1))
-            if len(c) != 3 or not all(0 <= x <= 1 for x in c):
-                raise ValueError(f"color: expected 3 sRGB floats in [0, 1], got {color!r}")
-            self.color = c
-        self.width: Optional[float] = None
-        if width is not None:
-            w = float(width)
-            if not (np.isfinite(w) and w > 0):
-                raise ValueError(f"width: must be > 0 pixels, got {width!r}")
-            self.width = w
+        # checked as a LineStyle checks them: any colour the settings take (hex, floats, codes)
+        self.color: Optional[tuple] = None if color is None else tuple(LineStyle(color=color).color)
+        self.width: Optional[float] = None if width is None else float(LineStyle(width=width).width)
         self.transform: Optional[np.ndarray] = None if transform is None else _core._transform(transform)
         self.up: Optional[str] = _core._up_axis(up)
         #: The file the lines were read from ("" for none).
