@@ -521,3 +521,42 @@ def test_a_zoom_toward_the_cursor_keeps_the_point_under_it(orthographic):
     seen = ((point - target) @ right / size, -(point - target) @ true_up / size)
     assert np.allclose(seen, (90, 35), atol=1e-6), seen
     v.close()
+
+
+def test_a_draft_blends_glass_over_what_it_covers_and_leaves_the_exact_layers_and_line_items_to_the_frame(
+        browser, tmp_path):
+    """A pawn in a glass case: the draft shows the pawn through the glass (blended by the glass's
+    opacity over it, as the exact frame composites it), and names what it leaves out: the exact
+    compositing of the layers in depth order, and the scene's own lines."""
+    from toonmesh.bench.lines import slab
+
+    pawn = tm.Mesh(*tm.shapes.pawn(), material=tm.Material.bands("#f08a4b"))
+    case = tm.Mesh(*slab((-0.7, -0.1, -0.7), (0.7, 1.2, 0.7)), material=tm.Material.bands("#9fd3ff", opacity=0.3))
+    scenes = {"glass": [pawn, case], "opaque": [pawn, tm.Mesh(case.vertices, case.faces, material=tm.Material.bands("#9fd3ff"))],
+              "lines": [pawn, tm.Lines([[-0.7, -0.1, 0.8], [0.7, 1.2, 0.8]], width=3.0)]}
+    drafts, exacts, titles = {}, {}, {}
+    for name, scene in scenes.items():
+        v = tm.Viewer(scene, width=SIZE[0], height=SIZE[1])
+        try:
+            v.orbit(30, -20)
+            v.to_html(tmp_path / f"{name}.html")
+            exacts[name] = v.frame.copy()
+            page = _open(browser, tmp_path / f"{name}.html")
+            drafts[name] = _draft(page, v._camera_state())
+            titles[name] = page.locator(".toonmesh-viewer").get_attribute("title")
+            page.close()
+        finally:
+            v.close()
+    assert "exact transparency" in titles["glass"] and "exact transparency" not in titles["opaque"], titles
+    assert "the scene's own lines (tm.Lines)" in titles["lines"], titles["lines"]
+    # the pawn shows through: orange (red well above blue) where the exact frame shows it
+    # through the glass, in the draft too; the opaque case hides it
+    def orange(img):
+        c = img[..., :3].astype(int)
+        return (c[..., 0] - c[..., 2]) > 40
+    seen = orange(exacts["glass"])
+    assert seen.sum() > 500, seen.sum()
+    assert orange(drafts["glass"])[seen].mean() > 0.9
+    assert orange(drafts["opaque"]).sum() < 0.05 * seen.sum()
+    share = _agreement(drafts["glass"], exacts["glass"], reach=1)
+    assert share >= 0.95, f"{share:.1%} of the covered pixels agree within 8 levels (or one pixel away)"

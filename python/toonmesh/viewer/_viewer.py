@@ -47,8 +47,8 @@ from toonmesh import _core
 from toonmesh._core import Camera, Light, Material, Outlines, RenderOptions
 from toonmesh.arguments._described import default
 from toonmesh.files._load import is_scene
-from toonmesh.rendering._render import (PlacedMesh, Renderer, _core_items, draw, draw_views, own_colours,
-                              scene_items, shared_renderer)
+from toonmesh.rendering._render import (PlacedMesh, Renderer, _core_items, _core_lines, draw, draw_views, own_colours,
+                              scene_items, shared_renderer, split_lines)
 from toonmesh.rendering._results import RenderResult
 from toonmesh.scene._points import Points
 from toonmesh.scene._scene import Mesh, MeshHandle, Normals, own_normals
@@ -521,8 +521,8 @@ class Viewer:
         """The scene's meshes on the renderer (uploaded once), read as tm.render reads them; as
         placed, and as drawn with no material given (meshes with colours of their own under
         tm.render's white material); and the centre of their bounding box in world space."""
-        items = scene_items(vertices, faces, normals)
-        if not items:
+        items, self._lines = split_lines(scene_items(vertices, faces, normals))  # Lines: drawn as ink, always shown
+        if not items and not self._lines:
             raise ValueError("vertices: the scene has no mesh")
         meshes = [item if isinstance(item, (Mesh, Points)) else Mesh(item) for item in items]  # a MeshHandle in a list
         upload = shared_upload(self._renderer, meshes, smooth_iterations, where="vertices")
@@ -533,19 +533,19 @@ class Viewer:
         try:
             own = own_colours(meshes, self._options, None)  # the same meshes, some under another material
             placed_own = [p._replace(material=o.material) for p, o in zip(placed, own)]
-            center = self._center_of(meshes)
+            center = self._center_of([*meshes, *self._lines])
         except BaseException:
             self._free_meshes()
             raise
         return placed, placed_own, center
 
-    def _center_of(self, meshes: List[Mesh]) -> np.ndarray:
-        """The centre of the world-space bounding box of the meshes given as arrays (a
-        MeshHandle's arrays are on the device only)."""
+    def _center_of(self, meshes: List[Any]) -> np.ndarray:
+        """The centre of the world-space bounding box of the items (meshes, points, lines) given
+        as arrays (a MeshHandle's arrays are on the device only)."""
         lows: List[np.ndarray] = []
         highs: List[np.ndarray] = []
         for mesh in meshes:
-            arrays = mesh.positions if isinstance(mesh, Points) else mesh.vertices
+            arrays = mesh.vertices if isinstance(mesh, Mesh) else mesh.positions  # Points and Lines: positions
             if arrays is None:
                 continue
             transform = mesh.transform if mesh.transform is not None else self._options_transform()
@@ -813,7 +813,7 @@ class Viewer:
         with self._render_lock:
             self._check_open()
             options = self._options.replace(camera=camera, width=width, height=height, outputs=("color",))
-            result = draw(self._renderer, self._scene(), options)
+            result = draw(self._renderer, self._scene(), options, self._lines)
             self.render_count += 1
             return result
 
@@ -859,7 +859,7 @@ class Viewer:
             with self._state_lock:
                 camera = self._view.camera()
             options = self._options.replace(camera=camera, outputs=("color",))
-            spec, blob = self._renderer._engine._draft(_core_items(self._scene()), options)
+            spec, blob = self._renderer._engine._draft(_core_items(self._scene()), options, lines=_core_lines(self._lines))
             data = bytes(blob)
             return spec, self._uploads[0].shared_bytes(data) if self._uploads else data
 
@@ -920,7 +920,7 @@ class Viewer:
             opts = self.options.replace(**options)
             placed = self._placed if "material" in self._given or options.get("material") is not None else self._placed_own
             placed = self._shown_of(placed)
-            result = draw(self._renderer, placed, opts)
+            result = draw(self._renderer, placed, opts, self._lines)
             self.render_count += 1
             return result
 
@@ -951,7 +951,7 @@ class Viewer:
         with self._render_lock:
             self._check_open()
             options = self._options.replace(camera=None, outputs=("color",))
-            stack = draw_views(self._renderer, self._scene(), cameras, options)
+            stack = draw_views(self._renderer, self._scene(), cameras, options, self._lines)
             self.render_count += count
         return stack.save(path, fps=fps)
 

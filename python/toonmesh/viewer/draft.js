@@ -329,7 +329,20 @@ function createDraft(canvas, spec, blob) {
     // drawn smaller than the frame they were made for: while the view moves)
     const smaller = coarseFaces * spec.pixels_per_coarse_face > w * h;
     lastFaces = 0;
-    for (const m of meshes) {
+    // opaque meshes first, then glass blended over them by its opacity, in the order given,
+    // writing neither depth nor the geometry target (the exact frame composites its layers in
+    // depth order)
+    const opaqueFirst = meshes.filter((m) => m.spec.opacity === null).concat(meshes.filter((m) => m.spec.opacity !== null));
+    let blending = false;
+    for (const m of opaqueFirst) {
+      if (m.spec.opacity !== null && !blending) {
+        blending = true;
+        gl.enable(gl.BLEND);
+        gl.blendFunc(gl.CONSTANT_ALPHA, gl.ONE_MINUS_CONSTANT_ALPHA);
+        gl.depthMask(false);
+        if (targets.geometry) gl.drawBuffers([gl.COLOR_ATTACHMENT0, gl.NONE]);
+      }
+      if (blending) gl.blendColor(0, 0, 0, m.spec.opacity);
       const mv = mat4Mul(vn, m.spec.model);
       m.f32.set(mv, D.modelView);
       m.f32.set(normalMatrix(mv), D.normal);
@@ -344,6 +357,11 @@ function createDraft(canvas, spec, blob) {
       gl.bindVertexArray(v.vao);
       if (v.indexed) gl.drawElements(gl.TRIANGLES, v.count, gl.UNSIGNED_INT, 0);
       else gl.drawArrays(gl.TRIANGLES, 0, v.count);
+    }
+    if (blending) {
+      gl.disable(gl.BLEND);
+      gl.depthMask(true);
+      if (targets.geometry) gl.drawBuffers([gl.COLOR_ATTACHMENT0, gl.COLOR_ATTACHMENT1]);
     }
     gl.disable(gl.DEPTH_TEST);
     gl.bindVertexArray(emptyVao);

@@ -52,6 +52,9 @@ use glsl::GlslProgram;
 /// The passes of the exact frame a draft draws too (or that give nothing to see).
 const DRAWN: &[&str] = &["shade", "edge_bits", "edges", "silhouettes", "lines", "gbuffer", "clear_outline"];
 
+/// What a draft leaves out of a scene with `Lines` items.
+const LINE_ITEMS: &str = "the scene's own lines (tm.Lines)";
+
 /// What a step of the exact frame that a draft leaves out draws, in the words a tooltip uses.
 fn described(step: &str) -> &str {
     match step {
@@ -59,6 +62,9 @@ fn described(step: &str) -> &str {
         "shadow_map" | "shadow" => "shadows",
         "downsample" => "supersampling",
         "intersections" => "intersection lines",
+        "glass_clear" | "glass_peel" | "glass_under" | "glass_composite" => "exact transparency",
+        "glass_lines" => "glass's own lines",
+        "item_lines" => LINE_ITEMS,
         other => other,
     }
 }
@@ -168,6 +174,10 @@ pub struct DraftMesh {
     /// smooth contours are traced on, drawn with `Draft::contours`.
     pub lines: Option<DraftLines>,
     pub contours: Option<DraftContours>,
+    /// Glass (`checked::is_glass`): its material's opacity, which the page blends it by, drawn
+    /// after the opaque meshes without writing depth or the geometry target (the exact frame
+    /// composites every layer in depth order, and the colour's own alpha); None: opaque.
+    pub opacity: Option<f64>,
 }
 
 /// A mesh for smooth contours (`lines::ContourFaces`): its vertices (`Draft::contour_vertices`)
@@ -431,7 +441,7 @@ impl Renderer {
         // the coarse copies' faces, shared among the meshes as their own faces are
         let faces: usize = records.iter().map(|r| r.gpu.draw_count as usize / 3).sum();
         let coarse_faces = (frame.width as usize * frame.height as usize) / PIXELS_PER_COARSE_FACE;
-        for (item, rec) in scene.scene.items.iter().zip(&records) {
+        for ((item, rec), glass) in scene.scene.items.iter().zip(&records).zip(&scene.glass) {
             let g = &rec.gpu;
             let shading = ShadingVariant::of(&item.material, g.albedo.as_ref());
             let stages = shading.stages(geometry);
@@ -534,6 +544,7 @@ impl Renderer {
                 coarse,
                 lines,
                 contours,
+                opacity: glass.then_some(item.material.opacity as f64),
             });
         }
         let (mut edge_bits_program, mut edges_program) = (None, None);
@@ -600,6 +611,9 @@ impl Renderer {
             if !DRAWN.contains(&name) && !name.starts_with("readback") {
                 leave(described(name));
             }
+        }
+        if !scene.scene.lines.is_empty() {
+            leave(LINE_ITEMS);
         }
         if let Some(o) = line_rules {
             let draws = |k: LineKind| o.styles[k as usize].is_some();

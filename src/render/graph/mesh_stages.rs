@@ -8,11 +8,11 @@
 
 use std::sync::OnceLock;
 
+use super::glass_layer as glass;
 use crate::render::device::COLOR_FORMAT;
 use crate::render::effects::surface;
 use crate::render::gpu_albedo;
 use crate::render::gpu_mesh::GpuMesh;
-use crate::render::passes::glass;
 use crate::render::pipelines::target;
 use crate::render::stage_part::{Bindings, Part, VertexData, ANCHORS};
 

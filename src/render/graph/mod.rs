@@ -5,6 +5,7 @@
 
 pub mod build;
 pub mod effect;
+pub mod glass_layer;
 pub mod mesh_stages;
 pub mod report;
 pub mod resources;

@@ -2,8 +2,8 @@
 //! reads (`Use`); the frame's resources are allocated from those declarations, with the usage
 //! flags every declaring pass needs and nothing else.
 
+use super::glass_layer as glass;
 use crate::render::device::COLOR_FORMAT;
-use crate::render::passes::glass;
 
 /// The depth buffer used for visibility.
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;

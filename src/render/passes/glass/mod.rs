@@ -26,14 +26,9 @@ use crate::render::passes::clear::Clear;
 use crate::render::passes::shade::{variant::ShadingVariant, WGSL as SHADE_WGSL};
 use crate::render::pipelines::{blended, PipelineKey};
 
-/// The module-scope WGSL of the `glass` stage part.
-pub const PEEL_WGSL: &str = include_str!("peel.wgsl");
 /// The full-screen passes' WGSL.
 pub const WGSL: &str = include_str!("glass.wgsl");
-/// Premultiplied linear colour of a layer and of their sum (GL renders and blends to it).
-pub const LAYER_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
-/// Linear depth of a layer as f32 bits (GL cannot render to 32-bit float formats).
-pub const PEELED_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
+pub use crate::render::graph::glass_layer::{peel_layout, LAYER_FORMAT, PEELED_FORMAT, PEEL_WGSL};
 
 /// The layer under the layers so far: sum += (1 - sum.a) layer (front to back).
 const UNDER: wgpu::BlendComponent = wgpu::BlendComponent {
@@ -41,24 +36,6 @@ const UNDER: wgpu::BlendComponent = wgpu::BlendComponent {
     dst_factor: wgpu::BlendFactor::One,
     operation: wgpu::BlendOperation::Add,
 };
-
-/// The `glass` part's bindings: the opaque surface's depth and the last layer's.
-pub fn peel_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
-    let entry = |binding| wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::FRAGMENT,
-        ty: wgpu::BindingType::Texture {
-            sample_type: wgpu::TextureSampleType::Uint,
-            view_dimension: wgpu::TextureViewDimension::D2,
-            multisampled: false,
-        },
-        count: None,
-    };
-    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some("glass peel"),
-        entries: &[entry(0), entry(1)],
-    })
-}
 
 /// The glass stage's passes for `layers` layers: a clear of the depth the first peel starts
 /// from, a peel and its addition per layer, the composite.
