@@ -560,3 +560,23 @@ def test_a_draft_blends_glass_over_what_it_covers_and_leaves_the_exact_layers_an
     assert orange(drafts["opaque"]).sum() < 0.05 * seen.sum()
     share = _agreement(drafts["glass"], exacts["glass"], reach=1)
     assert share >= 0.95, f"{share:.1%} of the covered pixels agree within 8 levels (or one pixel away)"
+
+
+def test_a_draft_draws_a_point_cloud_s_splats_as_the_exact_frame_does(browser, tmp_path):
+    rng = np.random.default_rng(3)
+    P = rng.normal(size=(20_000, 3))
+    P /= np.linalg.norm(P, axis=1, keepdims=True)
+    v = tm.Viewer(tm.Points(P), width=SIZE[0], height=SIZE[1])
+    try:
+        v.orbit(30, -20)
+        v.to_html(tmp_path / "points.html")
+        exact = v.frame.copy()
+        page = _open(browser, tmp_path / "points.html")
+        draft = _draft(page, v._camera_state())
+        page.close()
+    finally:
+        v.close()
+    covered = _covered(exact)
+    assert covered.mean() > 0.2, covered.mean()  # the sphere fills the view
+    share = _agreement(draft, exact, reach=1)
+    assert share >= 0.97, f"{share:.1%} of the covered pixels agree within 8 levels (or one pixel away)"
