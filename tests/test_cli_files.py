@@ -471,3 +471,27 @@ def test_smooth_and_edges_of_points_or_lines_alone_say_so_in_one_line(tmp_path, 
     r = in_process(capsys, "edges", wire, "-o", str(tmp_path / "e.svg"), check=False)
     one_line_error(r, "obj_wireframe.obj: no triangles in the file (it holds 12 segments)")
     assert not (tmp_path / "s.ply").exists() and not (tmp_path / "e.svg").exists()
+
+
+CORPUS = Path(__file__).resolve().parent / "data" / "corpus"
+
+
+@pytest.mark.parametrize("name, drawn", [
+    ("khronos/MeshPrimitiveModes.gltf", "16 faces, 7 points, 19 segments"),
+    ("trimesh/points_emptyface.ply", "1,024 points"),
+    ("trimesh/obj_wireframe.obj", "12 segments"),
+])
+def test_render_draws_other_projects_point_and_line_files(tmp_path, capsys, name, drawn):
+    """Points drawn as splats, lines as ink: the file's picture has them, and the summary line
+    counts what was drawn."""
+    out = tmp_path / "out.png"
+    r = in_process(capsys, "render", str(CORPUS / name), "-o", str(out), "--size", "200x150")
+    assert f"(200x150, {drawn})" in r.stdout, r.stdout
+    img = read_png(out)[..., :3].astype(int)
+    dark = (img.max(axis=2) < 80).sum()  # ink
+    toned = ((img.max(axis=2) - img.min(axis=2)) > 60).sum()  # the splats' and faces' colour
+    assert dark > 100, dark
+    if "points" in drawn or "faces" in drawn:
+        assert toned > 300, toned
+    else:
+        assert toned == 0, toned  # lines alone: only ink on white

@@ -27,8 +27,10 @@ import numpy as np
 from toonmesh import _core, smooth
 from toonmesh.files._write import check_distinct_names, image_suffix, save_result, view_paths
 from toonmesh.files._load import load, under_own_colours
-from toonmesh.rendering._render import RenderOptions, after_smoothing, draw, place_meshes, remove_meshes, shared_renderer
+from toonmesh.rendering._render import (RenderOptions, after_smoothing, draw, place_meshes, remove_meshes, shared_renderer,
+                                        split_lines)
 from toonmesh.scene._scene import Mesh, Normals, normal_mode
+from toonmesh.scene._points import Points
 from toonmesh.rendering._views import check_views, turntable
 
 __all__ = ["render_file", "render_files"]
@@ -101,22 +103,25 @@ def render_views(
     meshes = load(mesh_path)
     if own_colors_material is not None:
         meshes = under_own_colours(meshes, own_colors_material)
-    meshes = _prepared(meshes, normals, smooth_method, smooth_iterations)
+    meshes, lines = split_lines(_prepared(meshes, normals, smooth_method, smooth_iterations))
     at_upload = smooth_iterations if smooth_method == AT_UPLOAD or not smooth_iterations else 0
     scene, uploaded = place_meshes(renderer, meshes, at_upload)
+    n_points = sum(len(m) for m in meshes if isinstance(m, Points))
     n_vertices = sum(p.handle.n_vertices for p in scene)
-    n_faces = sum(p.handle.n_faces for p in scene)
+    n_faces = sum(p.handle.n_faces for p in scene) - n_points  # a splat is a face on the device
+    n_segments = sum(len(l) for l in lines)
     load_s = time.perf_counter() - t0
     worker = f"{socket.gethostname()}:{os.getpid()}"
     rows = []
     try:
         for k, (camera, path) in enumerate(zip(cameras, files)):
             t1 = time.perf_counter()
-            result = draw(renderer, scene, options.replace(camera=camera))
+            result = draw(renderer, scene, options.replace(camera=camera), lines)
             t2 = time.perf_counter()
             save(result, path)
             rows.append({
                 "mesh": mesh_path, "view": k, "path": path, "vertices": n_vertices, "faces": n_faces,
+                "points": n_points, "segments": n_segments,
                 "up": result.up, "load_s": load_s if k == 0 else 0.0, "render_s": t2 - t1,
                 "write_s": time.perf_counter() - t2, "worker": worker,
             })
@@ -164,7 +169,8 @@ def render_files(
     Returns:
         A list of dicts, one per image, in the order of ``paths`` and then views: ``mesh``,
         ``view`` (0-based), ``path`` (the file written), ``vertices``, ``faces`` (summed over
-        the scene's placed meshes, as drawn), ``up`` (the up axis the view used), ``load_s``
+        the scene's placed meshes, as drawn), ``points`` and ``segments`` (of its point clouds
+        and lines), ``up`` (the up axis the view used), ``load_s``
         (reading, smoothing and uploading the mesh; on the first view's row), ``render_s``,
         ``write_s`` (seconds) and ``worker`` (host:pid). ``pandas.DataFrame(rows)`` makes it a
         table.

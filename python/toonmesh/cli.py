@@ -335,7 +335,9 @@ def _render_to(args: argparse.Namespace, options: Dict[str, Any], targets: List[
         pass
     elif len(rows) == 1:
         r = rows[0]
-        print(f"wrote {r['path']} ({args.size[0]}x{args.size[1]}, {r['faces']:,} faces) in {secs:.2f} s {where}")
+        drawn = ", ".join(f"{r[k]:,} {k}" for k in ("faces", "points", "segments") if r[k] or k == "faces" and not
+                          (r["points"] or r["segments"]))
+        print(f"wrote {r['path']} ({args.size[0]}x{args.size[1]}, {drawn}) in {secs:.2f} s {where}")
     else:
         render_s = sum(r["render_s"] for r in rows)
         print(f"wrote {len(rows)} images to {args.out} ({len(args.meshes)} meshes x {args.views} views) "

@@ -35,6 +35,8 @@ pub struct Local {
     pub normal: [f64; 3],
     /// The distance to its k-th nearest neighbour (to its farthest, in a cloud of k or fewer).
     pub reach: f64,
+    /// The distance to its nearest neighbour.
+    pub nearest: f64,
 }
 
 /// Each point's `Local`, from its `k` nearest neighbours (the point itself left out); in
@@ -49,8 +51,9 @@ pub fn neighbourhoods(points: &[[f64; 3]], k: usize) -> Vec<Local> {
             .map(|(i, &p)| {
                 let near = tree.nearest(p, k, Some(i as u32));
                 let reach = near.last().map_or(0.0, |n| n.1.sqrt());
+                let nearest = near.first().map_or(0.0, |n| n.1.sqrt());
                 let normal = plane_normal(p, near.iter().map(|n| points[n.0 as usize]), centroid);
-                Local { normal, reach }
+                Local { normal, reach, nearest }
             })
             .collect()
     })

@@ -18,6 +18,11 @@ use crate::render::Renderer;
 /// ink marks as depth jumps).
 pub const RADIUS_PER_REACH: f64 = 0.9;
 
+/// The default splat radius of a cloud of no more points than the neighbours a reach counts (it
+/// samples no surface to cover: its reach spans the cloud, and its splats would merge into a
+/// blob), in units of the mean distance to the nearest neighbour: dots that do not overlap.
+pub const SPARSE_RADIUS_PER_NEAREST: f64 = 0.4;
+
 /// The side in texels of the disc texture.
 const DISC_TEXELS: u32 = 64;
 
@@ -80,7 +85,7 @@ pub fn splat_frames(
         Radius::Each(r) => {
             return Err(Error::invalid("radius", format!("expected {} radii, got {}", points.len(), r.len())))
         }
-        Radius::Spacing => vec![spacing_radius(points, local.as_deref().unwrap_or(&[])); points.len()],
+        Radius::Spacing => vec![spacing_radius(points, local.as_deref().unwrap_or(&[]), k); points.len()],
     };
     if let Some(bad) = radii.iter().find(|r| !(r.is_finite() && **r > 0.0)) {
         return Err(Error::invalid("radius", format!("must be finite and > 0, got {bad}")));
@@ -88,11 +93,16 @@ pub fn splat_frames(
     Ok((normals, radii))
 }
 
-/// `RADIUS_PER_REACH` times the mean reach; for a cloud with no spacing (one point, or all
-/// points at one place), a hundredth of its distance from the origin, else 1.
-fn spacing_radius(points: &[[f64; 3]], local: &[Local]) -> f64 {
+/// `RADIUS_PER_REACH` times the mean reach of `k` neighbours (`SPARSE_RADIUS_PER_NEAREST` times
+/// the mean nearest distance in a cloud of k points or fewer); for a cloud with no spacing (one
+/// point, or all points at one place), a hundredth of its distance from the origin, else 1.
+fn spacing_radius(points: &[[f64; 3]], local: &[Local], k: usize) -> f64 {
     let n = local.len().max(1) as f64;
     let mean = crate::parallel::deterministic_sum(local.len(), |i| local[i].reach / n);
+    let nearest = crate::parallel::deterministic_sum(local.len(), |i| local[i].nearest / n);
+    if points.len() <= k && nearest > 0.0 && nearest.is_finite() {
+        return SPARSE_RADIUS_PER_NEAREST * nearest;
+    }
     if mean > 0.0 && mean.is_finite() {
         return RADIUS_PER_REACH * mean;
     }
@@ -227,6 +237,24 @@ mod tests {
         assert!((s[0] - r[0] * 1e-3).abs() < 1e-9 * r[0]);
         let (_, one) = splat_frames(&[[0.0; 3]], None, &Radius::Spacing, 12).unwrap();
         assert_eq!(one, vec![1.0]);
+    }
+
+    #[test]
+    fn a_sparse_cloud_draws_dots_that_do_not_overlap() {
+        // a hexagon of side 2 around its centre (glTF's sample of points): every point's nearest
+        // neighbour 2 away, its 12-neighbour reach across the cloud
+        let mut hexagon = vec![[0.0; 3]];
+        hexagon.extend((0..6).map(|j| {
+            let a = j as f64 * std::f64::consts::FRAC_PI_3;
+            [2.0 * a.cos(), 2.0 * a.sin(), 0.0]
+        }));
+        let (_, r) = splat_frames(&hexagon, None, &Radius::Spacing, 12).unwrap();
+        assert!(r.iter().all(|x| (x - SPARSE_RADIUS_PER_NEAREST * 2.0).abs() < 1e-9), "{r:?}");
+        assert!(2.0 * r[0] < 2.0, "neighbouring dots stay apart");
+        // one point more than the neighbours: the spacing rule again
+        let grid: Vec<[f64; 3]> = (0..13).map(|i| [(i % 4) as f64, (i / 4) as f64, 0.0]).collect();
+        let (_, g) = splat_frames(&grid, None, &Radius::Spacing, 12).unwrap();
+        assert!(g[0] > 1.0, "{}", g[0]);
     }
 
     #[test]

@@ -46,7 +46,8 @@ class Points:
     nearest neighbours. ``colors``: (N, 3) or (N, 4) sRGB(A) per point, uint8 codes or floats in
     [0, 1]; None (default): white (the material's colour shows). ``radius``: the splats' radius
     in world units, a float or an (N,) array, > 0; None (default): from the cloud's own spacing,
-    so any scale works. ``material``, ``transform``, ``up`` and ``name`` as for
+    so any scale works (0.9 times the mean distance to the 12th nearest neighbour; a cloud of 12
+    points or fewer samples no surface, and gets dots 0.4 times the mean nearest distance). ``material``, ``transform``, ``up`` and ``name`` as for
     :class:`toonmesh.Mesh`. Nothing given is modified.
     """
 

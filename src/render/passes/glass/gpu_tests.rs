@@ -31,7 +31,7 @@ fn scene(squares: &[(MeshId, [f64; 3], f32)]) -> Scene {
         .iter()
         .map(|&(mesh, color, opacity)| {
             let material = Material { opacity, ..Material::lambert(color, None, false).unwrap() };
-            SceneItem { mesh, transform: IDENTITY, material }
+            SceneItem { mesh, transform: IDENTITY, material, splats: false }
         })
         .collect();
     Scene { items, camera, ..Default::default() }
