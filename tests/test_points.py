@@ -165,3 +165,17 @@ def test_eye_dome_lighting_runs_only_when_asked_for_and_darkens_depth_steps(back
     assert tm.EyeDome().strength > 0 and tm.EyeDome(radius=3).radius == 3
     with pytest.raises(ValueError, match="radius"):
         tm.EyeDome(radius=-1)
+
+
+def test_a_cloud_alone_runs_no_mesh_line_steps_and_with_a_mesh_they_run():
+    """Simulate only what the scene calls for: splats have no mesh-space lines, so a cloud
+    alone under outlines="mesh" runs the image-space edges only; a mesh beside it brings the
+    line steps back."""
+    points = tm.Points(_sphere_points(2000))
+    alone = tm.render(points, outlines="mesh", width=64, height=64).passes
+    assert "edges" in alone and not {"silhouettes", "visible_lines", "lines"} & set(alone), alone
+    V, F = tm.shapes.icosphere(2)
+    beside = tm.render([points, tm.Mesh(V + 3.0, F)], outlines="mesh", width=64, height=64).passes
+    assert {"silhouettes", "lines", "edges"} <= set(beside), beside
+    # the 'lines' output of a cloud alone: no line, not an error
+    assert tm.render(points, outlines="mesh", width=64, height=64, outputs=("color", "lines")).lines == []

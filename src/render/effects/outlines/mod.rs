@@ -99,6 +99,12 @@ fn draws(scene: &CheckedScene) -> (bool, bool) {
     (line_rules(scene).is_some(), image)
 }
 
+/// Whether the scene has anything mesh-space lines are found on: a mesh that is no point cloud's
+/// splats, or a `Lines` item (a cloud alone has none, so its frame draws no lines pass).
+fn line_sources(scene: &CheckedScene) -> bool {
+    scene.scene.items.iter().any(|item| !item.splats) || !scene.scene.lines.is_empty()
+}
+
 impl FrameEffect for OutlinesEffect {
     fn name(&self) -> &'static str {
         "outlines"
@@ -167,7 +173,7 @@ impl FrameEffect for OutlinesEffect {
         let (mesh, image) = draws(scene);
         if image && ink {
             Some(GeometryLayout::NormalDepth)
-        } else if mesh && (ink || (o.has(Output::Lines) && !exact(scene))) {
+        } else if mesh && ((ink && line_sources(scene)) || (o.has(Output::Lines) && !exact(scene))) {
             Some(GeometryLayout::Depth)
         } else {
             None
@@ -192,7 +198,7 @@ impl FrameEffect for OutlinesEffect {
             }
             steps.after.push(Box::new(edges::Edges { ink, rule: outlines.image_rule }));
         }
-        let lines = mesh && (color || outline);
+        let lines = mesh && (color || outline) && line_sources(cx.scene);
         let visible = mesh && o.has(Output::Lines);
         if let Some(outlines) = rules.as_ref().filter(|_| lines || visible) {
             let view = Arc::default();
