@@ -106,9 +106,9 @@ def render_views(
     meshes, lines = split_lines(_prepared(meshes, normals, smooth_method, smooth_iterations))
     at_upload = smooth_iterations if smooth_method == AT_UPLOAD or not smooth_iterations else 0
     scene, uploaded = place_meshes(renderer, meshes, at_upload)
-    n_points = sum(len(m) for m in meshes if isinstance(m, Points))
     n_vertices = sum(p.handle.n_vertices for p in scene)
-    n_faces = sum(p.handle.n_faces for p in scene) - n_points  # a splat is a face on the device
+    n_faces = sum(p.handle.n_faces for p, m in zip(scene, meshes) if not isinstance(m, Points))  # placed in order
+    n_points = sum(len(m) for m in meshes if isinstance(m, Points))
     n_segments = sum(len(l) for l in lines)
     load_s = time.perf_counter() - t0
     worker = f"{socket.gethostname()}:{os.getpid()}"

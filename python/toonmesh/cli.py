@@ -335,8 +335,7 @@ def _render_to(args: argparse.Namespace, options: Dict[str, Any], targets: List[
         pass
     elif len(rows) == 1:
         r = rows[0]
-        drawn = ", ".join(f"{r[k]:,} {k}" for k in ("faces", "points", "segments") if r[k] or k == "faces" and not
-                          (r["points"] or r["segments"]))
+        drawn = ", ".join(f"{r[k]:,} {k}" for k in ("faces", "points", "segments") if r[k]) or "0 faces"
         print(f"wrote {r['path']} ({args.size[0]}x{args.size[1]}, {drawn}) in {secs:.2f} s {where}")
     else:
         render_s = sum(r["render_s"] for r in rows)

@@ -216,6 +216,8 @@ function createDraft(canvas, spec, blob) {
     return { spec: m, full, coarse, ubo, draw, f32, lengths, texture, lines, coarseLines, program: programs[m.program] };
   });
   const emptyVao = gl.createVertexArray();
+  // the opaque meshes, then the glass in the order given
+  const drawOrder = meshes.filter((m) => m.spec.opacity === null).concat(meshes.filter((m) => m.spec.opacity !== null));
   const coarseFaces = meshes.reduce((n, m) => n + m.coarse.count / 3, 0);
   let lastFaces = 0;  // the faces the last draft drew
 
@@ -329,12 +331,10 @@ function createDraft(canvas, spec, blob) {
     // drawn smaller than the frame they were made for: while the view moves)
     const smaller = coarseFaces * spec.pixels_per_coarse_face > w * h;
     lastFaces = 0;
-    // opaque meshes first, then glass blended over them by its opacity, in the order given,
-    // writing neither depth nor the geometry target (the exact frame composites its layers in
-    // depth order)
-    const opaqueFirst = meshes.filter((m) => m.spec.opacity === null).concat(meshes.filter((m) => m.spec.opacity !== null));
+    // opaque meshes first, then glass blended over them by its opacity (drawOrder), writing
+    // neither depth nor the geometry target (the exact frame composites its layers in depth order)
     let blending = false;
-    for (const m of opaqueFirst) {
+    for (const m of drawOrder) {
       if (m.spec.opacity !== null && !blending) {
         blending = true;
         gl.enable(gl.BLEND);

@@ -99,10 +99,11 @@ impl CheckedScene {
         Ok(CheckedScene { scene, frame, caster, shader_lights, point_lights, glass })
     }
 
-    /// Marks as glass the items whose mesh's colour alpha counts (`blended(i)` for item i).
+    /// Marks as glass the items whose mesh's colour alpha counts (`blended(i)` for item i), as
+    /// well as those whose material lets light through.
     pub fn mark_blended(&mut self, blended: impl Fn(usize) -> bool) {
-        for (i, g) in self.glass.iter_mut().enumerate() {
-            *g = *g || is_glass(1.0, blended(i));
+        for (i, (g, item)) in self.glass.iter_mut().zip(&self.scene.items).enumerate() {
+            *g = is_glass(item.material.opacity, blended(i));
         }
     }
 
