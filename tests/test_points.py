@@ -179,3 +179,20 @@ def test_a_cloud_alone_runs_no_mesh_line_steps_and_with_a_mesh_they_run():
     assert {"silhouettes", "lines", "edges"} <= set(beside), beside
     # the 'lines' output of a cloud alone: no line, not an error
     assert tm.render(points, outlines="mesh", width=64, height=64, outputs=("color", "lines")).lines == []
+
+
+def test_colour_alpha_is_said_not_drawn_and_a_material_opacity_makes_a_cloud_see_through():
+    """A point colour's alpha does not cut splats away (they stay, opaque, with a warning that
+    says so); the material's opacity is what makes a cloud glass."""
+    P = _sphere_points(4000)
+    rgba = np.zeros((len(P), 4))
+    rgba[:, 0], rgba[:, 3] = 1.0, 0.3
+    with pytest.warns(UserWarning, match="alpha channel is not drawn"):
+        cloud = tm.Points(P, colors=rgba)
+    r = tm.render(cloud, width=64, height=64, camera=tm.Camera.fit((0.0, 0.0, 1.0)))
+    centre = r.color[32, 32, :3].astype(int)
+    assert centre[0] > 150 and centre[1] < 30 and centre[2] < 30, centre  # red, drawn whole
+    glass = tm.render(tm.Points(P, material=tm.Material.bands("#ff0000", opacity=0.4)), width=64, height=64,
+                      camera=tm.Camera.fit((0.0, 0.0, 1.0)), background="#0000ff")
+    mixed = glass.color[32, 32, :3].astype(int)
+    assert "glass_composite" in glass.passes and mixed[0] > 100 and mixed[2] > 50, mixed  # red over blue

@@ -163,7 +163,7 @@ fn tangents(n: [f64; 3]) -> ([f64; 3], [f64; 3]) {
 impl Renderer {
     /// Uploads a point cloud as splats (see the module) and returns its id: `normals` unit, one
     /// per point (None: estimated from `k` neighbours); `colors` linear RGBA, one per point
-    /// (None: white).
+    /// (None: white; their alpha is not drawn).
     pub fn add_points(
         &self,
         points: &[[f64; 3]],
@@ -186,7 +186,9 @@ impl Renderer {
         let (normals, radii) = crate::parallel::install(|| splat_frames(points, normals, radius, k))?;
         let mesh = splat_mesh(points, &normals, &radii);
         let albedo = Albedo {
-            colors: colors.map(|c| Colors::Vertex(c.iter().flat_map(|x| [*x; 3]).collect())),
+            // opaque: the cutoff is the disc's shape, which a colour's alpha must not cut away
+            colors: colors
+                .map(|c| Colors::Vertex(c.iter().flat_map(|&[r, g, b, _]| [[r, g, b, 1.0]; 3]).collect())),
             uv: Some(mesh.uv),
             texture: Some(disc_texture()),
             sampling: Sampling {

@@ -3,6 +3,7 @@ splats) and :class:`Lines` (segments drawn as ink), beside :class:`toonmesh.Mesh
 
 from __future__ import annotations
 
+import warnings
 from typing import Any, Optional
 
 import numpy as np
@@ -44,7 +45,8 @@ class Points:
     ``positions``: (N, 3) float32/float64 in world units (N >= 1). ``normals``: (N, 3) floats,
     one per point, not zero (scaled to unit length); None (default): estimated from each point's
     nearest neighbours. ``colors``: (N, 3) or (N, 4) sRGB(A) per point, uint8 codes or floats in
-    [0, 1]; None (default): white (the material's colour shows). ``radius``: the splats' radius
+    [0, 1] (an alpha channel is not drawn: a warning says so); None (default): white (the
+    material's colour shows). ``radius``: the splats' radius
     in world units, a float or an (N,) array, > 0; None (default): from the cloud's own spacing,
     so any scale works (0.9 times the mean distance to the 12th nearest neighbour; a cloud of 12
     points or fewer samples no surface, and gets dots 0.4 times the mean nearest distance). ``material``, ``transform``, ``up`` and ``name`` as for
@@ -82,6 +84,10 @@ class Points:
                 self.colors = np.ascontiguousarray(c)
             elif not ((self.colors >= 0) & (self.colors <= 1)).all():
                 raise ValueError("colors: floats must be in [0, 1] (uint8 codes for 0 to 255)")
+            opaque = 255 if self.colors.dtype == np.uint8 else 1.0
+            if width == 4 and (self.colors[:, 3] < opaque).any():
+                warnings.warn("colors: the alpha channel is not drawn on points (splats are opaque; a material's "
+                              "opacity makes a cloud see-through)", UserWarning, stacklevel=2)
         self.radius: Any = None
         if radius is not None:
             r = np.asarray(radius, dtype=np.float64)
