@@ -841,6 +841,22 @@ PEER_ITERATIONS = Param("iterations", Integer(0, 10**6, slow_above=20), none=OK)
 SHARE = Param("share", Number(0.0, 1.0))
 COMPARED_MESHES = [Param("actual", COMPARED), Param("expected", COMPARED)]
 POSITIVE_TOLERANCE = Number(0.0, math.inf, open_hi=True)
+# one 8x8 frame of temporal_popping as another renderer gives it: ink, depth, view, projection
+_INK = np.zeros((8, 8), bool)
+_INK[3, 2:6] = True
+_PERSPECTIVE = np.array([[2.0, 0, 0, 0], [0, 2.0, 0, 0], [0, 0, -1.0, -0.1], [0, 0, -1.0, 0]])
+POPPING_FRAME = (_INK, np.full((8, 8), 2.0), np.eye(4), _PERSPECTIVE)
+POPPING_FRAMES = (
+    ("three frames", [POPPING_FRAME] * 3, OK), ("a tuple of frames", (POPPING_FRAME, POPPING_FRAME), OK),
+    ("coverage as floats", [POPPING_FRAME, (_INK.astype(np.float32),) + POPPING_FRAME[1:]], OK),
+    ("one frame", [POPPING_FRAME], ValueError), ("empty", [], ValueError), ("a string", "frames", TypeError),
+    ("a dict", {0: POPPING_FRAME}, TypeError), ("not a frame", [POPPING_FRAME, 3], TypeError),
+    ("three of four parts", [POPPING_FRAME, POPPING_FRAME[:3]], TypeError),
+    ("NaN depth", [POPPING_FRAME, (_INK, np.full((8, 8), np.nan)) + POPPING_FRAME[2:]], ValueError),
+    ("shapes differ", [POPPING_FRAME, (_INK[:4],) + POPPING_FRAME[1:]], ValueError),
+    ("a 3x3 view", [POPPING_FRAME, POPPING_FRAME[:2] + (np.eye(3), _PERSPECTIVE)], ValueError),
+    ("a singular projection", [POPPING_FRAME, POPPING_FRAME[:3] + (np.zeros((4, 4)),)], ValueError),
+)
 SNAPSHOT_VALUES = (("a render", COLOUR_AND_LINES, OK), ("an image", IMG8, OK), ("an SVG", LINES.svg(), OK),
                    ("lines", list(LINES.lines), OK), ("not SVG", "x", ValueError), ("an int", 3, TypeError))
 # The peers each smooth the methods whose presets name them (the others of the family are refused).
@@ -884,6 +900,10 @@ CASES += [
     Case("testing.curvature_vs_libigl", testing.curvature_vs_libigl, dict(vertices=V, faces=F, radius=2, smoothing=0.0),
          [Param("vertices", PEER_VERTICES), Param("faces", PEER_FACES), Param("radius", Integer(1, 10)),
           Param("smoothing", POSITIVE)]),
+    Case("testing.temporal_popping", testing.temporal_popping,
+         dict(frames=[POPPING_FRAME, POPPING_FRAME], pixels=2.0, ink=0.5, depth_tolerance=0.01),
+         [Param("frames", POPPING_FRAMES), Param("pixels", Number(0.0, 64.0)),
+          Param("ink", Number(0.0, 1.0, open_lo=True)), Param("depth_tolerance", Number(0.0, 1.0))]),
     # values near float64's limit overflow in scikit-image's filter (not in toonmesh's)
     Case("testing.sobel_vs_skimage", testing.sobel_vs_skimage, dict(image=IMG, mask=None, which="sobel"),
          [Param("image", _but(IMAGES, {"huge values": None})),
@@ -1003,7 +1023,7 @@ def test_every_public_callable_is_in_the_table() -> None:
     no_arguments |= {"Viewer.close", "Viewer.code", "Viewer.reframe", "Viewer.home"}  # tests/test_viewer.py
     # toonmesh.testing: what its comparisons return, and need_peer (test_testing.py: it imports a peer)
     no_arguments |= {"testing.MeshDifference", "testing.ImageDifference", "testing.DrawingDifference",
-                     "testing.CurvatureAgreement", "testing.SobelDifference", "testing.PeerMissingError",
+                     "testing.CurvatureAgreement", "testing.SobelDifference", "testing.TemporalPopping", "testing.PeerMissingError",
                      "testing.need_peer"}
     public = {f"smooth.{n}" for n in tm.smooth.__all__} | {f"shapes.{n}" for n in tm.shapes.__all__}
     public |= {f"edges.{n}" for n in te.__all__} | {"set_num_threads", "get_num_threads", "data.bunny", "data.load_obj"}

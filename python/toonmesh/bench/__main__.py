@@ -10,7 +10,7 @@ from typing import Any, Dict, List, Sequence
 
 from toonmesh.bench import _timing
 
-SUITES = ("smooth", "denoise", "edges", "lines", "render", "effects", "viewer", "viewer_browser", "scenes")
+SUITES = ("smooth", "denoise", "edges", "lines", "render", "effects", "viewer", "viewer_browser", "scenes", "temporal")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -13,6 +13,8 @@ reproduces (trimesh, pymeshlab, libigl, scikit-image) on your own meshes.
   apart they are. A peer that is not installed skips the test under pytest (or raises
   :class:`PeerMissingError` outside it) and fails loudly where ``CI=true``
   (:func:`need_peer`);
+- :func:`temporal_popping`: how much of a sequence's line drawing pops from frame to frame
+  (ink that vanishes from where its surface went), for turntables and fly-bys;
 - :class:`Snapshot`: a reference image or drawing kept beside a test, what the ``toon_snapshot``
   fixture of toonmesh's pytest plugin (:mod:`toonmesh.pytest_plugin`) gives a test.
 
@@ -30,13 +32,13 @@ import re
 from collections import Counter
 from pathlib import Path
 from types import ModuleType
-from typing import Any, Dict, List, NamedTuple, Optional, Tuple, Union
+from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from toonmesh import edges, smooth
 from toonmesh.rendering import _strokes
-from toonmesh.testing import _drawings, _png
+from toonmesh.testing import _drawings, _png, _temporal
 from toonmesh.arguments._checks import number
 from toonmesh.rendering._results import RenderResult
 
@@ -46,6 +48,7 @@ __all__ = [
     "LINE_PIXELS",
     "LINE_SHARE",
     "MESH_RTOL",
+    "POPPING_PIXELS",
     "CurvatureAgreement",
     "DrawingDifference",
     "ImageDifference",
@@ -53,6 +56,7 @@ __all__ = [
     "PeerMissingError",
     "Snapshot",
     "SobelDifference",
+    "TemporalPopping",
     "assert_drawings_close",
     "assert_images_close",
     "assert_mesh_close",
@@ -64,6 +68,7 @@ __all__ = [
     "smoothing_vs_pymeshlab",
     "smoothing_vs_trimesh",
     "sobel_vs_skimage",
+    "temporal_popping",
 ]
 
 #: A pixel differs when one of its channels differs by more than this many 8-bit levels (of
@@ -1073,3 +1078,118 @@ def sobel_vs_skimage(image: Any, mask: Any = None, *, which: str = "sobel") -> S
     diff[(a == b) | (np.isnan(a) & np.isnan(b))] = 0.0  # the same inf or nan passed through
     diff[np.isnan(diff)] = np.inf
     return SobelDifference(float(np.max(diff, initial=0.0)), ours.dtype, theirs.dtype)
+
+
+# ------------------------------------------------------------------------------------------------
+# Lines over time
+
+#: Ink within this many pixels of where a surface point went counts as the same ink
+#: (:func:`temporal_popping`).
+POPPING_PIXELS = 2.0
+
+
+class TemporalPopping(NamedTuple):
+    """How much ink pops from frame to frame of a sequence (:func:`temporal_popping`).
+
+    Attributes:
+        share: popped ink pixels over counted ink pixels, all steps together (a fraction: 0.001
+            is 0.1% per step).
+        steps: (K - 1,) float64, each step's share (nan where the step counted no ink).
+        counted: (K - 1,) int64, each step's ink pixels whose surface point the next frame sees.
+        popped: (K - 1,) int64, those of them with no ink within ``pixels`` of where the point
+            went.
+        appearing: the same measure run backward (ink of each next frame with no ink near where
+            its point was in the frame before): lines that pop in rather than out.
+    """
+
+    share: float
+    steps: np.ndarray
+    counted: np.ndarray
+    popped: np.ndarray
+    appearing: float
+
+
+def _popping_frame(i: int, frame: Any, ink: float) -> _temporal.Frame:
+    where = f"frames[{i}]"
+    if isinstance(frame, RenderResult):
+        for name in ("outline", "depth"):
+            if getattr(frame, name) is None:
+                raise ValueError(f"{where}: has no {name!r} image; render with outputs including "
+                                 "'outline' and 'depth'")
+        coverage, depth, view, projection = frame.outline, frame.depth, frame.view_matrix, frame.projection
+    elif isinstance(frame, (tuple, list)) and len(frame) == 4:
+        coverage, depth, view, projection = frame
+    else:
+        raise TypeError(f"{where}: expected a toonmesh.RenderResult or a tuple (ink, depth, view_matrix, "
+                        f"projection), got {type(frame).__name__}")
+    coverage = np.asarray(coverage)
+    depth = np.asarray(depth, dtype=np.float64)
+    view = np.asarray(view, dtype=np.float64)
+    projection = np.asarray(projection, dtype=np.float64)
+    if coverage.ndim != 2 or depth.shape != coverage.shape:
+        raise ValueError(f"{where}: ink and depth must be (H, W) images of one shape, got "
+                         f"{coverage.shape} and {depth.shape}")
+    for name, m in (("view_matrix", view), ("projection", projection)):
+        if m.shape != (4, 4) or not np.isfinite(m).all():
+            raise ValueError(f"{where}: {name} must be a finite 4x4 matrix, got shape {m.shape}")
+        if not np.isfinite(np.linalg.cond(m)) or np.linalg.cond(m) > 1e12:
+            raise ValueError(f"{where}: {name} must be invertible (a camera's matrix)")
+    if np.isnan(depth).any():
+        raise ValueError(f"{where}: depth has NaN (inf marks where no surface is)")
+    ink_mask = coverage if coverage.dtype == bool else coverage.astype(np.float64) >= ink
+    return _temporal.Frame(ink_mask, depth, view, projection)
+
+
+def temporal_popping(frames: Any, *, pixels: float = POPPING_PIXELS, ink: float = 0.5,
+                     depth_tolerance: float = 0.01) -> TemporalPopping:
+    """How much of a sequence's ink pops: the share of ink pixels that have no ink within
+    ``pixels`` after exact reprojection into the next frame through the depth buffer.
+
+    Each ink pixel of frame k is taken back to the surface point it was drawn on (its depth
+    and frame k's camera), carried into frame k + 1's image by that frame's camera, and pops
+    when frame k + 1 has no ink within ``pixels`` of where it lands. Only points that frame
+    k + 1 sees are counted (in the image and not behind a nearer surface, within
+    ``depth_tolerance``), so a line that turns behind the model has not popped; ink over the
+    background (just outside a silhouette) takes the depth of the nearest surface within
+    ``pixels``. The scene must hold still while the camera moves (a turntable, a fly-by).
+
+    Args:
+        frames: a sequence of K >= 2 frames in order: :class:`toonmesh.RenderResult` (a
+            :class:`toonmesh.RenderStack` from ``render_many(..., outputs=("outline",
+            "depth"))``, with its outline coverage as the ink), or tuples ``(ink, depth,
+            view_matrix, projection)`` from another renderer: ink an (H, W) bool mask or
+            coverage in [0, 1], depth (H, W) linear view depth in world units (inf where no
+            surface is), the 4x4 world-to-view matrix (right-handed, looking down -z) and the
+            4x4 projection to clip space with z in [0, 1]. Never modified.
+        pixels: the distance, in pixels, within which ink counts as the same (default
+            :data:`POPPING_PIXELS`, 2).
+        ink: the coverage at and above which a pixel is ink (default 0.5).
+        depth_tolerance: how much farther than the surface a point may be and still be seen,
+            relative to its depth (default 0.01).
+
+    Returns:
+        :class:`TemporalPopping` (``share`` is the figure: a fraction, per step).
+
+    Raises:
+        TypeError, ValueError: a bad argument, naming it (``frames[i]`` for one frame).
+    """
+    if isinstance(frames, (str, bytes)) or not isinstance(frames, Sequence):
+        raise TypeError(f"frames: expected a sequence of frames, got {type(frames).__name__}")
+    if len(frames) < 2:
+        raise ValueError(f"frames: need at least 2 frames to compare, got {len(frames)}")
+    pixels = number("pixels", pixels, 0.0, 64.0)
+    ink = number("ink", ink, 0.0, 1.0, open_lo=True)
+    depth_tolerance = number("depth_tolerance", depth_tolerance, 0.0, 1.0)
+    seq = [_popping_frame(i, f, ink) for i, f in enumerate(frames)]
+    forward = [_temporal.step(a, b, pixels, depth_tolerance) for a, b in zip(seq[:-1], seq[1:])]
+    backward = [_temporal.step(b, a, pixels, depth_tolerance) for a, b in zip(seq[:-1], seq[1:])]
+    counted = np.array([s.counted for s in forward], dtype=np.int64)
+    popped = np.array([s.popped for s in forward], dtype=np.int64)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        steps = np.where(counted > 0, popped / np.maximum(counted, 1), np.nan)
+
+    def share(c: int, p: int) -> float:
+        return p / c if c > 0 else 0.0
+
+    return TemporalPopping(share(int(counted.sum()), int(popped.sum())), steps, counted, popped,
+                           share(sum(s.counted for s in backward), sum(s.popped for s in backward)))
