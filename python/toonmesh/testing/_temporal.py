@@ -5,8 +5,9 @@ Each ink pixel of a frame is taken back to the surface point it was drawn on (th
 and the frame's camera), that point is carried into the next frame's image, and the pixel pops
 when the next frame has no ink within ``radius`` pixels of where the point lands. Points that the
 next frame does not see (occluded, or out of the image) are not counted: a line that goes behind
-the model has not popped. Ink drawn just outside a silhouette (over the background) belongs to
-the nearest surface within ``radius`` pixels, whose depth it takes.
+the model has not popped. Each ink pixel takes the depth of the nearest surface within
+``radius`` pixels: ink drawn just outside a silhouette, over the background or over a farther
+surface, belongs to the occluding surface.
 """
 
 from __future__ import annotations
@@ -74,9 +75,9 @@ def surface_points(frame: Frame, ys: np.ndarray, xs: np.ndarray, depth: np.ndarr
 def step(a: Frame, b: Frame, radius: float, depth_tolerance: float) -> Step:
     """How much of ``a``'s ink pops going to ``b``."""
     offsets = disc_offsets(radius)
-    finite = np.where(np.isfinite(a.depth), a.depth, np.inf)
-    # ink over the background takes the depth of the nearest surface within the radius
-    near_depth = np.where(np.isfinite(finite), finite, spread(finite, offsets, np.minimum, np.inf))
+    # a line is drawn on the nearest surface around it: ink just outside a silhouette, over the
+    # background or over a farther surface, belongs to the occluding surface
+    near_depth = spread(a.depth, offsets, np.minimum, np.inf)
     ys, xs = np.nonzero(a.ink & np.isfinite(near_depth))
     if len(ys) == 0:
         return Step(0, 0)
