@@ -19,7 +19,7 @@ import shutil
 import statistics
 import subprocess
 import tempfile
-from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -70,9 +70,9 @@ def blender_camera(view: np.ndarray, projection: np.ndarray) -> Dict[str, Any]:
 
 
 def write_obj(path: str, vertices: np.ndarray, faces: np.ndarray) -> None:
-    """The mesh as a Wavefront OBJ file (positions to 9 significant digits: float32 exactly)."""
+    """The mesh as a Wavefront OBJ file, its positions exact (17 significant digits)."""
     with open(path, "w") as f:
-        f.writelines("v %.9g %.9g %.9g\n" % tuple(v) for v in np.asarray(vertices, dtype=np.float64))
+        f.writelines("v %.17g %.17g %.17g\n" % tuple(v) for v in np.asarray(vertices, dtype=np.float64))
         f.writelines("f %d %d %d\n" % tuple(t) for t in np.asarray(faces, dtype=np.int64) + 1)
 
 
@@ -99,8 +99,8 @@ def draw(blender: str, obj: str, frames: Sequence[Frame], suggestive: bool, widt
                 info = json.load(f)
             ink = []
             for i in range(len(frames)):
-                with open(os.path.join(out, "frame_%04d.png" % i), "rb") as f:
-                    ink.append(_png.decode(f.read(), "frame")[:, :, 3].astype(np.float32) / 255.0)
+                with open(os.path.join(out, "frame_%04d.png" % i), "rb") as png:
+                    ink.append(_png.decode(png.read(), "frame")[:, :, 3].astype(np.float32) / 255.0)
             return Drawing(ink, info["seconds"], info["version"], info["engine"])
     raise RuntimeError(f"Blender drew no frames: {last}")
 
@@ -131,7 +131,7 @@ def agreement(drawing: Drawing, frames: Sequence[Frame]) -> Tuple[float, float]:
 
 
 def rows(blender: Optional[str], vertices: np.ndarray, faces: np.ndarray,
-         ours: Dict[str, Sequence[Frame]]) -> List[List[Any]]:
+         ours: Mapping[str, Sequence[Frame]]) -> List[Sequence[Any]]:
     """The benchmark's rows for Freestyle: label, popping, appearing, frame time, mean ink
     pixels counted and camera agreement, each run measured on the cameras, depth and ink of
     ``ours[setting]`` (toonmesh's frames of the setting beside it, see :data:`RUNS`); one row
@@ -139,7 +139,7 @@ def rows(blender: Optional[str], vertices: np.ndarray, faces: np.ndarray,
     if blender is None:
         return [["Freestyle: not installed", "", "", "", "", ""]]
     width = tm.LineStyle().width  # toonmesh's default line width, in pixels
-    out: List[List[Any]] = []
+    out: List[Sequence[Any]] = []
     with tempfile.TemporaryDirectory(prefix="toonmesh-freestyle-mesh-") as folder:
         obj = os.path.join(folder, "mesh.obj")
         write_obj(obj, vertices, faces)
