@@ -91,6 +91,7 @@ def main():
     if job["engine"] == "CYCLES":
         scene.cycles.device = "CPU"
         scene.cycles.samples = job["samples"]
+        scene.cycles.use_denoising = False  # Debian's build has no denoiser; lines need none
     else:
         scene.eevee.taa_render_samples = job["samples"]
     render.resolution_x = render.resolution_y = job["size"]
