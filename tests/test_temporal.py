@@ -5,6 +5,7 @@ and the benchmark prints the figure."""
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 
@@ -12,6 +13,7 @@ import numpy as np
 import pytest
 
 import toonmesh as tm
+from toonmesh.bench._freestyle import CLIP_MARGIN, blender_camera, write_obj
 from toonmesh.bench.temporal import turntable
 from toonmesh.data import bunny
 from toonmesh.testing import POPPING_PIXELS, temporal_popping
@@ -102,9 +104,42 @@ def test_bad_frames_are_named(frames):
 
 
 def test_the_benchmark_prints_the_figure():
+    # without Blender on PATH: its peer is optional, and the test must not need it
+    path = os.pathsep.join(d for d in os.environ.get("PATH", "").split(os.pathsep)
+                           if not os.path.exists(os.path.join(d, "blender")))
     r = subprocess.run([sys.executable, "-m", "toonmesh.bench", "temporal", "--quick"], capture_output=True,
-                       text=True, timeout=600)
+                       text=True, timeout=600, env=dict(os.environ, PATH=path))
     assert r.returncode == 0, r.stderr
     rows = {line.split("|")[1].strip(): line for line in r.stdout.splitlines() if line.startswith("| mesh")}
     assert set(rows) == {"mesh lines", "mesh lines + suggestive"}, r.stdout
     assert "Popping per 1-degree step" in r.stdout and "%" in rows["mesh lines"]
+    assert "| Freestyle: not installed" in r.stdout, r.stdout
+
+
+def test_freestyle_camera_puts_a_point_where_toonmesh_does():
+    # Blender's camera looks down its local -z, +y up; with the sensor fit vertical its frame's
+    # half height at unit distance is tan(fov_y / 2) and its half width that times the aspect
+    V, F = bunny()
+    camera = tm.Camera.look_at((0.3, 0.2, 0.4), target=(0, 0.1, 0), fov_y=40, near=0.1, far=3.0)
+    r = tm.render(tm.Mesh(V, F), width=96, height=64, camera=camera, outputs=("depth",))
+    blender = blender_camera(r.view_matrix, r.projection)
+    to_world = np.array(blender["matrix"])
+    assert np.allclose(to_world[:3, :3].T @ to_world[:3, :3], np.eye(3)) and np.isclose(np.linalg.det(to_world), 1)
+    assert np.isclose(blender["fov_y"], 40.0)
+    assert np.allclose(blender["clip"], [0.1 * CLIP_MARGIN[0], 3.0 * CLIP_MARGIN[1]])
+    points = np.concatenate([V[::997], np.ones((len(V[::997]), 1))], axis=1)
+    seen = points @ np.linalg.inv(to_world).T
+    half = np.tan(np.radians(blender["fov_y"]) / 2)
+    theirs = np.stack([seen[:, 0] / -seen[:, 2] / (half * 96 / 64), seen[:, 1] / -seen[:, 2] / half], axis=1)
+    clip = points @ (r.projection @ r.view_matrix).T
+    ours = clip[:, :2] / clip[:, 3:4]
+    assert np.abs(ours).max() > 0.3 and np.allclose(theirs, ours, atol=1e-9)
+
+
+def test_freestyle_gets_the_mesh_exactly(tmp_path):
+    V, F = bunny()
+    write_obj(str(tmp_path / "mesh.obj"), V, F)
+    lines = (tmp_path / "mesh.obj").read_text().splitlines()
+    read_v = np.array([[float(x) for x in ln.split()[1:]] for ln in lines if ln.startswith("v ")])
+    read_f = np.array([[int(x) - 1 for x in ln.split()[1:]] for ln in lines if ln.startswith("f ")])
+    assert np.array_equal(read_v.astype(V.dtype), V) and np.array_equal(read_f, F)

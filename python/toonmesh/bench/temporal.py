@@ -9,6 +9,14 @@ from the bounding box's centre, a 40-degree field of view, turning about the up 
 1-degree steps (a whole turn; 15 steps with ``--quick``), all views in one
 :meth:`toonmesh.Renderer.render_many`.
 
+Blender's Freestyle is the peer (:mod:`toonmesh.bench._freestyle`), when a ``blender`` executable
+is on PATH ("Freestyle: not installed" otherwise): its smooth contours, and with suggestive
+contours, on the same cameras, measured the same way, with its frame time and how well its
+drawing agrees with toonmesh's (the share of its ink within 2 px of toonmesh's lines of the same
+kinds, and the share of the model's outline it inks). A full run turns Freestyle through the
+first ``FREESTYLE_STEPS`` steps only, with toonmesh's settings measured again on those steps
+beside it.
+
     python -m toonmesh.bench temporal [--quick] [--json FILE]
 """
 
@@ -21,8 +29,10 @@ import numpy as np
 
 import toonmesh as tm
 import toonmesh.data
+from toonmesh.bench import _freestyle
 from toonmesh.bench._timing import table
 from toonmesh.testing import temporal_popping
+from toonmesh.testing._temporal import Frame
 
 #: The line settings compared, as keywords of tm.Outlines.
 SETTINGS: Dict[str, Dict[str, Any]] = {
@@ -35,6 +45,10 @@ SETTINGS: Dict[str, Dict[str, Any]] = {
 SIZE = 512
 EYE_RADII = 2.4
 FOV_Y = 40.0
+#: Steps of the turntable that Blender's Freestyle draws in a full run (a frame takes it seconds).
+FREESTYLE_STEPS = 90
+HEADERS = ["lines", "popping per step", "appearing per step", "frame", "ink px",
+           "camera agreement (ink / outline)"]
 
 
 def turntable(vertices: np.ndarray, steps: int, step_degrees: float = 1.0) -> List[tm.Camera]:
@@ -56,7 +70,14 @@ def popping_table(quick: bool) -> str:
     cameras = turntable(V, steps)
     renderer = tm.Renderer()
     mesh = renderer.add_mesh(V, F)
+    blender = _freestyle.find_blender()
+    # Freestyle takes seconds a frame: beside it, every drawing is measured on its shorter turn
+    peer_steps = min(steps, FREESTYLE_STEPS)
+    apart = blender is not None and peer_steps < steps
+    beside = {setting for setting, _ in _freestyle.RUNS.values()}
+    ours: Dict[str, List[Frame]] = {}  # toonmesh's frames of the settings beside Freestyle's
     rows: List[Sequence[Any]] = []
+    peer_rows: List[Sequence[Any]] = []
     for label, keywords in SETTINGS.items():
         kw = dict(keywords)
         outlines = tm.Outlines(kw.pop("kind"), **kw)
@@ -69,11 +90,25 @@ def popping_table(quick: bool) -> str:
         t0 = time.perf_counter()
         stack = draw()
         frame = (time.perf_counter() - t0) / len(cameras)
-        p = temporal_popping(stack)
-        rows.append([label, f"{100 * p.share:.3f}%", f"{100 * p.appearing:.3f}%", f"{frame * 1e3:.1f} ms",
-                     f"{p.counted.mean():.0f}"])
-    return table(["lines", "popping per step", "appearing per step", "frame", "ink px"], rows,
-                 f"Popping per 1-degree step ({steps} steps, bunny {SIZE}x{SIZE}, {renderer.info['backend']})")
+        rows.append(_row(label, temporal_popping(stack), frame))
+        head = [stack[i] for i in range(peer_steps + 1)]
+        if apart:
+            peer_rows.append(_row(label, temporal_popping(head), frame))
+        if label in beside and blender is not None:
+            ours[label] = [Frame(np.array(r.outline) >= 0.5, np.array(r.depth, dtype=np.float64), r.view_matrix,
+                                 r.projection) for r in head]
+        del stack, head
+    freestyle = _freestyle.rows(blender, V, F, ours)
+    title = f"Popping per 1-degree step ({{}} steps, bunny {SIZE}x{SIZE}, {renderer.info['backend']})"
+    if not apart:
+        return table(HEADERS, rows + freestyle, title.format(steps))
+    return (table(HEADERS[:-1], [r[:-1] for r in rows], title.format(steps)) + "\n"
+            + table(HEADERS, peer_rows + freestyle, "Beside Blender's Freestyle: " + title.format(peer_steps)))
+
+
+def _row(label: str, p: Any, frame: float) -> List[Any]:
+    return [label, f"{100 * p.share:.3f}%", f"{100 * p.appearing:.3f}%", f"{frame * 1e3:.1f} ms",
+            f"{p.counted.mean():.0f}", ""]
 
 
 def main(quick: bool = False, repeat: int = 3, extra: Sequence[str] = ()) -> None:
