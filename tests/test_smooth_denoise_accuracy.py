@@ -152,3 +152,16 @@ def test_the_held_out_parts_are_closed_irregular_and_have_their_creases():
     assert (angles["chamfered-box"] > 25).sum() > 800
     fandisk = angles["fandisk-like"]
     assert (fandisk > 50).sum() > 500 and ((fandisk > 1) & (fandisk < 10)).sum() > 1000  # the arc
+
+
+def test_the_default_beats_the_paper_preset_on_the_held_out_sphere_and_prism():
+    # The default departs from Zhang et al.'s rule where the held-out parts measured it better;
+    # the paper's rule is kept as a preset.
+    total = {"default": 0.0, "paper": 0.0}
+    for name in ("sharp-sphere", "twelve-prism"):
+        V, F = held_out.part(name, 20000)
+        for kind, level, _ in HELD_OUT_CASES:
+            N = parts.noisy(V, F, level, kind, seed=1)
+            total["default"] += parts.normal_error(tm.smooth.guided(N, F), F, V)
+            total["paper"] += parts.normal_error(tm.smooth.guided(N, F, preset="paper"), F, V)
+    assert total["default"] < 0.8 * total["paper"], total

@@ -21,7 +21,10 @@ included:
     (one step per iteration, and one iteration by default, like one call).
 ``preset="paper"``
     Al-Rousan et al. 2016: every vertex moves to the plain mean of its neighbours
-    (``laplacian`` only; a full step, boundaries free).
+    (``laplacian`` only; a full step, boundaries free); for :func:`guided`, Zhang et al.
+    2015's rule as their published code has it (vertices fitted after every pass, the faces
+    within two mean distances between adjacent centroids, ``sigma_s`` in those distances,
+    ``sigma_r=0.35``, no comparison of the faces' own normals).
 
 Each function's keywords, their ranges and their defaults (with each preset's own) are the
 core's description of the method (``toonmesh._core._smoothing_description()``), from which the
@@ -290,7 +293,13 @@ class BilateralOptions(SmoothingOptions, total=False):
     sigma_r: Optional[float]
 
 
-GuidedOptions = BilateralOptions
+class GuidedOptions(SmoothingOptions, total=False):
+    """The keywords of :func:`guided`, for type checkers (see its docstring)."""
+
+    vertex_iterations: Optional[int]
+    sigma_s: Optional[float]
+    sigma_r: Optional[float]
+    preset: Optional[str]
 # @end generated keywords
 
 

@@ -413,11 +413,28 @@ const GUIDED: &[Keyword] = &[
         "vertex_iterations",
         STEPS,
         10,
-        "vertex-fitting steps after each of the later passes of normal filtering, whose next pass \
-         filters the fitted mesh's normals (0 returns the input unchanged)",
+        "vertex-fitting steps after each of the later passes of normal filtering (the paper \
+         preset: after every pass), whose next pass filters the fitted mesh's normals (0 returns \
+         the input unchanged)",
     ),
-    SIGMA_S,
-    SIGMA_R,
+    Keyword::float(
+        "sigma_s",
+        POSITIVE,
+        1.0,
+        "width of the spatial kernel, in mean edge lengths of the input mesh (so that it suits any \
+         scale and resolution); the paper preset: in mean distances between the centroids of \
+         faces sharing an edge, re-measured at every pass, over the faces whose centroids lie \
+         within two such distances",
+    ),
+    SIGMA_R.with_presets(&[(Paper, Value::Float(0.35))]),
+    Keyword::choice(
+        "preset",
+        &["paper"],
+        Value::Unset,
+        "'paper': Zhang et al.'s rule as their code has it (vertices fitted after every pass, their \
+         neighbourhood and widths, no comparison of the faces' own normals); None: the rule \
+         measured best on irregular parts",
+    ),
     WELD,
 ];
 

@@ -19,6 +19,8 @@
 //!   code defaults to a fixed 0.35, so that one default suits every noise level;
 //! - the range weight also compares the faces' own normals (`options::GUIDED_OWN_NORMALS`);
 //! - the vertices are fitted after the later passes only (`options::GUIDED_NORMALS_ALONE`).
+//!
+//! The paper preset (`Preset::Paper`) runs the paper's rule as the authors' code has it.
 
 use rayon::prelude::*;
 

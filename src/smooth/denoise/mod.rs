@@ -12,6 +12,7 @@
 pub mod bilateral;
 pub mod faces;
 pub mod guidance;
+pub mod neighbourhood;
 pub mod noise;
 pub mod options;
 pub mod rings;
@@ -22,6 +23,7 @@ use rayon::prelude::*;
 use crate::cancel::Cancel;
 use crate::error::Result;
 use crate::real::{Real, Vec3};
+use crate::smooth::preset::Preset;
 pub use options::{resolve, Args, Filter, Options};
 
 /// `x0` smoothed as `opts` says, at a fitted scale and on the welded mesh where asked (see
@@ -55,7 +57,7 @@ pub(crate) fn denoise_mesh<T: Real>(
         Filter::Bilateral => {
             for _ in 0..opts.iterations {
                 cancel.check()?;
-                bilateral::filter(&rings, &data, &normals, None, kernels, &mut filtered);
+                bilateral::filter(&rings.ring, &data, &normals, None, kernels, &mut filtered);
                 std::mem::swap(&mut normals, &mut filtered);
             }
             for _ in 0..opts.vertex_iterations {
@@ -67,10 +69,25 @@ pub(crate) fn denoise_mesh<T: Real>(
             let mut guide = vec![[0.0; 3]; faces.len()];
             let mut scratch = guidance::Scratch::default();
             let alone = opts.passes_before_fitting();
+            // The paper preset: Zhang et al.'s neighbourhood and spatial width, from the
+            // distances between adjacent centroids (the width re-measured at every pass).
+            let paper = opts.preset == Preset::Paper;
+            let mut kernels = kernels;
+            let within;
+            let near = if paper {
+                let d = neighbourhood::mean_centroid_distance(&rings, &data);
+                within = neighbourhood::within(&rings, &data, neighbourhood::PAPER_RADIUS * d);
+                &within
+            } else {
+                &rings.ring
+            };
             for pass in 0..opts.iterations {
                 cancel.check()?;
+                if paper {
+                    kernels.sigma_s = opts.sigma_s * neighbourhood::mean_centroid_distance(&rings, &data);
+                }
                 guidance::guidance(&rings, faces, &data, &normals, &mut scratch, &mut guide);
-                bilateral::filter(&rings, &data, &normals, Some(&guide), kernels, &mut filtered);
+                bilateral::filter(near, &data, &normals, Some(&guide), kernels, &mut filtered);
                 if pass < alone {
                     std::mem::swap(&mut normals, &mut filtered);
                     continue;

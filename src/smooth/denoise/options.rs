@@ -6,6 +6,7 @@
 use crate::error::{Error, Result};
 use crate::smooth::described::{self, Value, SIGMA_R_MAX, SIGMA_R_MIN, SIGMA_R_PER_NOISE};
 use crate::smooth::given::args;
+use crate::smooth::options::parse_preset;
 use crate::smooth::preset::Preset;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -36,6 +37,7 @@ args! {
     vertex_iterations: i64,
     sigma_s: f64,
     sigma_r: f64,
+    preset: String,
     weld: bool,
 }
 
@@ -50,6 +52,8 @@ pub struct Options {
     /// Spatial kernel width, in mean edge lengths.
     pub sigma_s: f64,
     pub sigma_r: Option<f64>,
+    /// `Paper`: Zhang et al.'s rule as their code has it (see `denoise_mesh`); else `Clean`.
+    pub preset: Preset,
     pub weld: bool,
 }
 
@@ -86,14 +90,19 @@ pub fn resolve(filter: Filter, a: &Args) -> Result<Options> {
     if let Some(k) = a.given().find(|k| described.keyword(k).is_none()) {
         return Err(Error::wrong_type(k, format!("not an option of {name}")));
     }
+    let preset = match &a.preset {
+        None => Preset::Clean,
+        // The method's own choices, so that the error lists only the presets it has.
+        Some(given) => parse_preset(keyword("preset")?.choose(given)?)?,
+    };
     let count = |k: &str, given: Option<i64>| -> Result<u32> {
         let kw = keyword(k)?;
-        Ok(kw.check_int(Preset::Clean, given.map_or_else(|| kw.default.int(k), Ok)?)? as u32)
+        Ok(kw.check_int(preset, given.map_or_else(|| kw.default_for(preset).int(k), Ok)?)? as u32)
     };
     let width = |k: &str, given: Option<f64>| -> Result<Option<f64>> {
         let kw = keyword(k)?;
-        match (given, kw.default) {
-            (Some(x), _) => kw.check_float(Preset::Clean, x).map(Some),
+        match (given, kw.default_for(preset)) {
+            (Some(x), _) => kw.check_float(preset, x).map(Some),
             (None, Value::Measured(_)) => Ok(None),
             (None, d) => d.float(k).map(Some),
         }
@@ -104,6 +113,7 @@ pub fn resolve(filter: Filter, a: &Args) -> Result<Options> {
         vertex_iterations: count("vertex_iterations", a.vertex_iterations)?,
         sigma_s: width("sigma_s", a.sigma_s)?.ok_or_else(|| Error::Internal("sigma_s: measured".into()))?,
         sigma_r: width("sigma_r", a.sigma_r)?,
+        preset,
         weld: match a.weld {
             Some(weld) => weld,
             None => keyword("weld")?.default.flag("weld")?,
@@ -125,13 +135,17 @@ impl Options {
     /// How many of the guided filter's first passes filter the normals alone
     /// (`GUIDED_NORMALS_ALONE`); at least the last pass fits the vertices.
     pub fn passes_before_fitting(&self) -> u32 {
+        if self.preset == Preset::Paper {
+            return 0;
+        }
         ((GUIDED_NORMALS_ALONE * self.iterations as f64).floor() as u32)
             .min(self.iterations.saturating_sub(1))
     }
 
     /// The guided filter's range width for the faces' own normals (`GUIDED_OWN_NORMALS`), None
-    /// for the bilateral filter.
+    /// for the bilateral filter and the paper preset.
     pub fn sigma_own_for(&self, noise: f64) -> Option<f64> {
-        (self.filter == Filter::Guided).then(|| measured_sigma_r(noise) / GUIDED_OWN_NORMALS.sqrt())
+        (self.filter == Filter::Guided && self.preset != Preset::Paper)
+            .then(|| measured_sigma_r(noise) / GUIDED_OWN_NORMALS.sqrt())
     }
 }
