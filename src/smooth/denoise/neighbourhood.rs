@@ -69,3 +69,37 @@ pub fn within(rings: &FaceRings, data: &[FaceData], radius: f64) -> Csr {
         },
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::smooth::denoise::faces::face_data;
+
+    /// A strip of unit right triangles along x: faces 2k and 2k + 1 fill the square [k, k + 1].
+    fn strip(squares: u32) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
+        let x = (0..=squares).flat_map(|k| [[k as f64, 0.0, 0.0], [k as f64, 1.0, 0.0]]).collect();
+        let faces = (0..squares)
+            .flat_map(|k| [[2 * k, 2 * k + 2, 2 * k + 3], [2 * k, 2 * k + 3, 2 * k + 1]])
+            .collect();
+        (x, faces)
+    }
+
+    #[test]
+    fn the_radius_takes_the_faces_whose_centroids_are_near_through_near_faces() {
+        let (x, faces) = strip(6);
+        let rings = FaceRings::new(x.len(), &faces);
+        let mut data = Vec::new();
+        face_data(&x, &faces, &mut data);
+        // Adjacent centroids: across a square's diagonal (sqrt(2) / 3) and between squares.
+        let d = mean_centroid_distance(&rings, &data);
+        assert!(d > 0.4 && d < 1.0, "{d}");
+        let near = within(&rings, &data, 1.5);
+        // Face 6 (square 3, centroid (3.67, 0.33)) takes the faces of squares 2-4 within 1.5,
+        // not those of square 5 (1.7 and 2.0 away) that square 4's faces touch, nor itself.
+        let row = near.row(6);
+        assert!([4, 7, 8, 9].iter().all(|f| row.contains(f)), "{row:?}");
+        assert!([1, 6, 10, 11].iter().all(|f| !row.contains(f)), "{row:?}");
+        assert!(row.windows(2).all(|w| w[0] < w[1]));
+        assert_eq!(within(&rings, &data, 0.0).row(6), &[] as &[u32]);
+    }
+}

@@ -149,3 +149,26 @@ impl Options {
             .then(|| measured_sigma_r(noise) / GUIDED_OWN_NORMALS.sqrt())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_guided_filter_fits_the_vertices_in_its_later_passes_or_every_one_under_the_paper() {
+        let opts = |iterations: u32, preset: Preset| Options {
+            filter: Filter::Guided,
+            iterations,
+            vertex_iterations: 10,
+            sigma_s: 1.0,
+            sigma_r: None,
+            preset,
+            weld: false,
+        };
+        let alone = |n| opts(n, Preset::Clean).passes_before_fitting();
+        assert_eq!([alone(20), alone(10), alone(2), alone(1), alone(0)], [12, 6, 1, 0, 0]);
+        assert_eq!(opts(20, Preset::Paper).passes_before_fitting(), 0);
+        assert!(opts(20, Preset::Clean).sigma_own_for(0.5).is_some());
+        assert!(opts(20, Preset::Paper).sigma_own_for(0.5).is_none());
+    }
+}
