@@ -143,6 +143,19 @@ def test_bad_mesh_input_names_the_argument():
         tm.smooth.bilateral(np.eye(3), np.array([[0, 1, 3]]))
 
 
+def test_the_paper_preset_is_its_own_rule_with_a_fixed_range_width(noisy_box):
+    N, F, clean = noisy_box
+    paper = tm.smooth.guided(N, F, preset="paper")
+    assert not np.array_equal(paper, tm.smooth.guided(N, F))
+    assert np.array_equal(paper, tm.smooth.guided(N, F, preset="PAPER", sigma_r=0.35))
+    assert not np.array_equal(paper, tm.smooth.guided(N, F, preset="paper", sigma_r=0.5))
+    assert parts.normal_error(paper, F, clean) < 0.3 * parts.normal_error(N, F, clean)
+    with pytest.raises(ValueError, match="preset: unknown value 'trimesh'; expected one of 'paper'"):
+        tm.smooth.guided(N, F, preset="trimesh")
+    with pytest.raises(TypeError, match="preset"):
+        tm.smooth.bilateral(N, F, preset="paper")
+
+
 def test_zero_vertex_iterations_returns_a_copy(noisy_box):
     N, F, _ = noisy_box
     out = tm.smooth.guided(N, F, vertex_iterations=0)

@@ -21,7 +21,10 @@ included:
     (one step per iteration, and one iteration by default, like one call).
 ``preset="paper"``
     Al-Rousan et al. 2016: every vertex moves to the plain mean of its neighbours
-    (``laplacian`` only; a full step, boundaries free).
+    (``laplacian`` only; a full step, boundaries free); for :func:`guided`, Zhang et al.
+    2015's rule as their published code has it (vertices fitted after every pass, the faces
+    within two mean distances between adjacent centroids, ``sigma_s`` in those distances,
+    ``sigma_r=0.35``, no comparison of the faces' own normals).
 
 Each function's keywords, their ranges and their defaults (with each preset's own) are the
 core's description of the method (``toonmesh._core._smoothing_description()``), from which the
@@ -290,7 +293,13 @@ class BilateralOptions(SmoothingOptions, total=False):
     sigma_r: Optional[float]
 
 
-GuidedOptions = BilateralOptions
+class GuidedOptions(SmoothingOptions, total=False):
+    """The keywords of :func:`guided`, for type checkers (see its docstring)."""
+
+    vertex_iterations: Optional[int]
+    sigma_s: Optional[float]
+    sigma_r: Optional[float]
+    preset: Optional[str]
 # @end generated keywords
 
 
@@ -355,8 +364,11 @@ _NORMAL_FILTERING = """
     stays sharp. Then the vertices are moved ``vertex_iterations`` times to fit the filtered
     normals (Sun et al. 2007: each vertex moves by the mean of its offsets to its faces'
     planes); a move that would turn a face against its filtered normal is undone, so no face
-    flips. Boundaries, degenerate and non-manifold faces are allowed: a face with no area has
-    no normal and no weight, and its vertices fit their other faces. The work runs in parallel
+    flips. ``bilateral`` fits once, after its passes; ``guided`` after each of its later
+    passes (the last 8 of the default 20), each next pass filtering the fitted mesh's normals,
+    as Zhang et al.'s local scheme does after every pass. Boundaries, degenerate and
+    non-manifold faces are allowed: a face with no area has no normal and no weight, and its
+    vertices fit their other faces. The work runs in parallel
     outside the GIL and gives the same bits for any thread count.
 """
 
@@ -406,7 +418,8 @@ def guided(vertices: Any, faces: Any = None, **options: Unpack[GuidedOptions]) -
     ring) that contains it, so a face next to a crease is guided by the side it lies on even
     where the noise is as strong as the crease; the faces' own normals weigh in too, so that
     features a few faces wide, where every patch crosses a crease, keep their sides apart.
-    Better than :func:`bilateral` at medium and heavy noise, at about twice its cost.
+    Better than :func:`bilateral` at medium and heavy noise and on irregular meshes, at two to
+    three times its cost.
     """
     return _call(guided, vertices, faces, options)
 

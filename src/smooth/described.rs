@@ -371,34 +371,69 @@ fn measured_sigma_r() -> String {
     )
 }
 
-const NORMAL_FILTERS: &[Keyword] = &[
-    Keyword::int(
-        "iterations",
-        STEPS,
-        20,
-        "passes of normal filtering: more removes stronger noise, at a cost linear in the count",
-    ),
+const PASSES: Keyword = Keyword::int(
+    "iterations",
+    STEPS,
+    20,
+    "passes of normal filtering: more removes stronger noise, at a cost linear in the count",
+);
+const SIGMA_S: Keyword = Keyword::float(
+    "sigma_s",
+    POSITIVE,
+    1.0,
+    "width of the spatial kernel, in mean edge lengths of the input mesh (so that it suits any \
+     scale and resolution)",
+);
+const SIGMA_R: Keyword = Keyword::new(
+    "sigma_r",
+    Kind::Float,
+    POSITIVE,
+    Value::Measured(measured_sigma_r),
+    "width of the range kernel, a distance between unit normals (2 sin(angle / 2): 0.35 is about \
+     20 degrees); smaller keeps more detail (and noise), larger smooths more (and rounds weaker \
+     creases)",
+);
+
+const BILATERAL: &[Keyword] = &[
+    PASSES,
     Keyword::int(
         "vertex_iterations",
         STEPS,
         20,
         "vertex-fitting steps after the normals are filtered (0 returns the input unchanged)",
     ),
+    SIGMA_S,
+    SIGMA_R,
+    WELD,
+];
+
+const GUIDED: &[Keyword] = &[
+    PASSES,
+    Keyword::int(
+        "vertex_iterations",
+        STEPS,
+        10,
+        "vertex-fitting steps after each of the later passes of normal filtering (the paper \
+         preset: after every pass), whose next pass filters the fitted mesh's normals (0 returns \
+         the input unchanged)",
+    ),
     Keyword::float(
         "sigma_s",
         POSITIVE,
         1.0,
         "width of the spatial kernel, in mean edge lengths of the input mesh (so that it suits any \
-         scale and resolution)",
+         scale and resolution); the paper preset: in mean distances between the centroids of \
+         faces sharing an edge, re-measured at every pass, over the faces whose centroids lie \
+         within two such distances",
     ),
-    Keyword::new(
-        "sigma_r",
-        Kind::Float,
-        POSITIVE,
-        Value::Measured(measured_sigma_r),
-        "width of the range kernel, a distance between unit normals (2 sin(angle / 2): 0.35 is about \
-         20 degrees); smaller keeps more detail (and noise), larger smooths more (and rounds weaker \
-         creases)",
+    SIGMA_R.with_presets(&[(Paper, Value::Float(0.35))]),
+    Keyword::choice(
+        "preset",
+        &["paper"],
+        Value::Unset,
+        "'paper': Zhang et al.'s rule as their code has it (vertices fitted after every pass, their \
+         neighbourhood and widths, no comparison of the faces' own normals); None: the rule \
+         measured best on irregular parts",
     ),
     WELD,
 ];
@@ -429,12 +464,12 @@ pub const METHODS: [Described; 6] = [
     Described {
         name: "bilateral",
         help: "feature-preserving smoothing by bilateral normal filtering (Zheng et al. 2011)",
-        keywords: NORMAL_FILTERS,
+        keywords: BILATERAL,
     },
     Described {
         name: "guided",
         help: "feature-preserving smoothing by guided normal filtering (Zhang et al. 2015)",
-        keywords: NORMAL_FILTERS,
+        keywords: GUIDED,
     },
 ];
 

@@ -1,5 +1,6 @@
-//! The presets of the Laplacian family: another library's filter reproduced, quirks included
-//! (`options::resolve`), each with its name (`described` lists which method has which).
+//! The presets: another library's filter reproduced, quirks included (`options::resolve`), or a
+//! paper's rule as published (`denoise::resolve` for the guided filter), each with its name
+//! (`described` lists which method has which).
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Preset {
@@ -7,7 +8,8 @@ pub enum Preset {
     Clean,
     Trimesh,
     Pymeshlab,
-    /// Al-Rousan et al.: every vertex moves to the plain mean of its neighbours.
+    /// Al-Rousan et al.: every vertex moves to the plain mean of its neighbours; for the guided
+    /// filter, Zhang et al.'s rule as their code has it.
     Paper,
 }
 

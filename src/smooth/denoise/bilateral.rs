@@ -7,7 +7,7 @@
 use rayon::prelude::*;
 
 use super::faces::{dist2, unit_or_zero, FaceData};
-use super::rings::FaceRings;
+use super::rings::Csr;
 
 /// The Gaussian kernels' widths: `sigma_s` a length (between face centroids), `sigma_r` a
 /// distance between unit normals (|n_i - n_j| = 2 sin(angle / 2)) compared in the guide;
@@ -19,11 +19,11 @@ pub struct Kernels {
     pub sigma_own: Option<f64>,
 }
 
-/// `out[i]`: face i's filtered normal from `normals`, with range weights from `guide` (the
-/// normals themselves when None; `k.sigma_own` is then ignored). A face whose weights all vanish
-/// (degenerate faces only) keeps its normal.
+/// `out[i]`: face i's filtered normal from `normals` over itself and `near.row(i)`, with range
+/// weights from `guide` (the normals themselves when None; `k.sigma_own` is then ignored). A
+/// face whose weights all vanish (degenerate faces only) keeps its normal.
 pub fn filter(
-    rings: &FaceRings,
+    near: &Csr,
     data: &[FaceData],
     normals: &[[f64; 3]],
     guide: Option<&[[f64; 3]]>,
@@ -42,7 +42,7 @@ pub fn filter(
         };
         let w = term(i);
         let mut sum = normals[i].map(|c| w * c);
-        for &j in rings.ring.row(i) {
+        for &j in near.row(i) {
             let j = j as usize;
             let w = term(j);
             for (s, n) in sum.iter_mut().zip(normals[j]) {

@@ -37,14 +37,24 @@ impl Csr {
     /// Rows built in parallel by `f`, a chunk of rows at a time (no allocation per row), then
     /// packed in order.
     fn from_rows(n: usize, f: impl Fn(usize, &mut Vec<u32>) + Sync) -> Csr {
+        Csr::from_rows_with(n, || (), |_, i, out| f(i, out))
+    }
+
+    /// As `from_rows`, with scratch state `S` made by `init` once per chunk and handed to `f`.
+    pub(super) fn from_rows_with<S>(
+        n: usize,
+        init: impl Fn() -> S + Sync,
+        f: impl Fn(&mut S, usize, &mut Vec<u32>) + Sync,
+    ) -> Csr {
         const CHUNK: usize = 4096;
         let chunks: Vec<(Vec<u32>, Vec<u32>)> = (0..n.div_ceil(CHUNK))
             .into_par_iter()
             .map(|c| {
                 let (mut lens, mut items) = (Vec::with_capacity(CHUNK), Vec::with_capacity(CHUNK * 16));
+                let mut state = init();
                 for i in c * CHUNK..((c + 1) * CHUNK).min(n) {
                     let before = items.len();
-                    f(i, &mut items);
+                    f(&mut state, i, &mut items);
                     lens.push((items.len() - before) as u32);
                 }
                 (lens, items)
