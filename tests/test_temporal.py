@@ -79,6 +79,9 @@ def test_points_the_next_frame_does_not_see_are_not_counted(frames):
     # the same, with the ink gone but the surface seen: every counted pixel pops
     gone = temporal_popping([as_tuple(f), as_tuple(f, ink=np.zeros_like(f.outline))])
     assert gone.share == 1.0 and gone.counted[0] > 100
+    # where it popped: every place is an ink pixel of the frame it leaves
+    rows, cols = gone.where[0].T
+    assert len(rows) == gone.popped[0] and (f.outline[rows, cols] >= 0.5).all()
 
 
 def test_bad_frames_are_named(frames):

@@ -1100,6 +1100,8 @@ class TemporalPopping(NamedTuple):
             went.
         appearing: the same measure run backward (ink of each next frame with no ink near where
             its point was in the frame before): lines that pop in rather than out.
+        where: K - 1 arrays, each (popped, 2) int64: the (row, column) of every popped ink pixel
+            of a step, in the frame it leaves (to see where a drawing pops).
     """
 
     share: float
@@ -1107,6 +1109,7 @@ class TemporalPopping(NamedTuple):
     counted: np.ndarray
     popped: np.ndarray
     appearing: float
+    where: List[np.ndarray]
 
 
 def _popping_frame(i: int, frame: Any, ink: float) -> _temporal.Frame:
@@ -1192,4 +1195,5 @@ def temporal_popping(frames: Any, *, pixels: float = POPPING_PIXELS, ink: float 
         return p / c if c > 0 else 0.0
 
     return TemporalPopping(share(int(counted.sum()), int(popped.sum())), steps, counted, popped,
-                           share(sum(s.counted for s in backward), sum(s.popped for s in backward)))
+                           share(sum(s.counted for s in backward), sum(s.popped for s in backward)),
+                           [s.where for s in forward])

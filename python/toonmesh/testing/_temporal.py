@@ -31,6 +31,7 @@ class Step(NamedTuple):
 
     counted: int
     popped: int
+    where: np.ndarray  # (popped, 2) int64: (row, column) of each popped ink pixel
 
 
 def disc_offsets(radius: float) -> List[Tuple[int, int]]:
@@ -80,7 +81,7 @@ def step(a: Frame, b: Frame, radius: float, depth_tolerance: float) -> Step:
     near_depth = spread(a.depth, offsets, np.minimum, np.inf)
     ys, xs = np.nonzero(a.ink & np.isfinite(near_depth))
     if len(ys) == 0:
-        return Step(0, 0)
+        return Step(0, 0, np.zeros((0, 2), np.int64))
     world = surface_points(a, ys, xs, near_depth[ys, xs])
     view = np.concatenate([world, np.ones((len(world), 1))], axis=1) @ b.view.T
     clip = view @ b.projection.T
@@ -91,10 +92,12 @@ def step(a: Frame, b: Frame, radius: float, depth_tolerance: float) -> Step:
     py = np.rint((1.0 - ndc[:, 1]) * 0.5 * h - 0.5).astype(np.int64)
     inside = ahead & (px >= 0) & (px < w) & (py >= 0) & (py < h)
     px, py, seen_depth = px[inside], py[inside], -view[inside, 2]
+    ys, xs = ys[inside], xs[inside]
     # seen in b: no nearer than the farthest surface b shows within the radius (a silhouette
     # point may fall just beside its surface), within the tolerance
     b_depth = np.where(np.isfinite(b.depth), b.depth, -np.inf)
     farthest = spread(b_depth, offsets, np.maximum, -np.inf)[py, px]
     seen = seen_depth <= farthest * (1.0 + depth_tolerance)
     near_ink = spread(b.ink, offsets, np.logical_or, False)[py, px]
-    return Step(int(seen.sum()), int((seen & ~near_ink).sum()))
+    popped = seen & ~near_ink
+    return Step(int(seen.sum()), int(popped.sum()), np.stack([ys[popped], xs[popped]], axis=1).astype(np.int64))
