@@ -42,6 +42,7 @@ DESCRIBED = {
     ("edges", "suggestive"): (Outlines, "", "suggestive"),
     ("edges", "curvature_smoothing"): (Outlines, "", "curvature_smoothing"),
     ("edges", "join_kinds"): (Outlines, "", "join_kinds"),
+    ("edges", "suggestive_coherence"): (Outlines, "", "suggestive_coherence"),
     ("edges", "stroke_width"): (LineStyle, "", "width"),
     ("render", "hidden"): (Outlines, "", "hidden"),
     ("render", "intersection"): (Outlines, "", "intersection"),
@@ -54,6 +55,7 @@ DESCRIBED = {
 FROM_THE_DEMO = {
     "outlines": "kind", "crease_angle": "crease_angle", "taper": "taper", "width_by_depth": "width_by_depth",
     "contours": "contours", "curvature_smoothing": "curvature_smoothing", "join_kinds": "join_kinds",
+    "suggestive_coherence": "suggestive_coherence",
     "image_rule": "image_rule", "normal_angle": "normal_angle", "depth_jump": "depth_jump",
     "normal_threshold": "normal_threshold", "depth_threshold": "depth_threshold",
     "visibility": "visibility", "max_occlusion": "max_occlusion",

@@ -438,20 +438,22 @@ class Outlines(_Settings):
     so seams are not drawn as boundaries; contours: how silhouettes are found: 'faces', 'smooth'
     or 'auto'; suggestive_threshold: the suggestive contours' derivative test, relative to the
     mesh's feature size; curvature_smoothing: width in mean edge lengths over which suggestive
-    contours' curvature is averaged (None: 2, at most 1% of the diagonal); min_crease_length:
-    crease pieces shorter than this fraction of the bounding-box diagonal are not drawn;
-    max_crease_turn: crease pieces turning by more than this many degrees on average are not
-    drawn (180: all); image_rule: how image-space edges are found; normal_angle: degrees of
-    normal turn between pixels drawn as an edge; depth_jump: depth jump between pixels drawn as
-    an edge, in pixel footprints; normal_threshold: the paper rule's Sobel threshold on normals;
-    depth_threshold: the paper rule's Sobel threshold on depth; depth_offset: the depth rule's
-    tolerance in pixel footprints; visibility: how lines behind surfaces are found: 'exact'
-    (against the surfaces) or 'depth' (the depth image); max_occlusion: hidden lines are drawn
-    behind at most this many surfaces (None: any number); taper: pixels over which lines thin
-    toward their ends (0: none); width_by_depth: scale line widths by the scene centre's depth
-    over the line's; join_kinds: join strokes of different kinds that meet end to end.
+    contours' curvature is averaged (None: 2, at most 1% of the diagonal); suggestive_coherence:
+    suggestive contours hold still across render_many's views: faded by how fast they slide,
+    with hysteresis between frames; min_crease_length: crease pieces shorter than this fraction
+    of the bounding-box diagonal are not drawn; max_crease_turn: crease pieces turning by more
+    than this many degrees on average are not drawn (180: all); image_rule: how image-space
+    edges are found; normal_angle: degrees of normal turn between pixels drawn as an edge;
+    depth_jump: depth jump between pixels drawn as an edge, in pixel footprints;
+    normal_threshold: the paper rule's Sobel threshold on normals; depth_threshold: the paper
+    rule's Sobel threshold on depth; depth_offset: the depth rule's tolerance in pixel
+    footprints; visibility: how lines behind surfaces are found: 'exact' (against the surfaces)
+    or 'depth' (the depth image); max_occlusion: hidden lines are drawn behind at most this many
+    surfaces (None: any number); taper: pixels over which lines thin toward their ends (0:
+    none); width_by_depth: scale line widths by the scene centre's depth over the line's;
+    join_kinds: join strokes of different kinds that meet end to end.
     """
-    def __new__(cls, kind: Optional[Literal['mesh', 'image', 'both']] = ..., *, color: Optional[_Color] = ..., width: Optional[float] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., crease: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., intersection: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., hidden: Optional[Union[bool, LineStyle, _Color]] = ..., max_occlusion: Optional[int] = ..., visibility: Optional[Literal['exact', 'depth']] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
+    def __new__(cls, kind: Optional[Literal['mesh', 'image', 'both']] = ..., *, color: Optional[_Color] = ..., width: Optional[float] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., crease: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., intersection: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., hidden: Optional[Union[bool, LineStyle, _Color]] = ..., max_occlusion: Optional[int] = ..., visibility: Optional[Literal['exact', 'depth']] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., suggestive_coherence: Optional[bool] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
     kind: Final[str]
     silhouette: Final[Optional[Union[LineStyle, bool]]]
     boundary: Final[Optional[Union[LineStyle, bool]]]
@@ -468,6 +470,7 @@ class Outlines(_Settings):
     contours: Final[str]
     suggestive_threshold: Final[float]
     curvature_smoothing: Final[Optional[float]]
+    suggestive_coherence: Final[bool]
     min_crease_length: Final[float]
     max_crease_turn: Final[float]
     image_rule: Final[str]
@@ -482,7 +485,7 @@ class Outlines(_Settings):
     width_by_depth: Final[bool]
     join_kinds: Final[bool]
     styles: Final[Dict[str, Optional[LineStyle]]]
-    def replace(self, *, kind: Optional[Literal['mesh', 'image', 'both']] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., intersection: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., hidden: Optional[Union[bool, LineStyle, _Color]] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., visibility: Optional[Literal['exact', 'depth']] = ..., max_occlusion: Optional[int] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
+    def replace(self, *, kind: Optional[Literal['mesh', 'image', 'both']] = ..., silhouette: Optional[Union[bool, LineStyle, _Color]] = ..., boundary: Optional[Union[bool, LineStyle, _Color]] = ..., nonmanifold: Optional[Union[bool, LineStyle, _Color]] = ..., ridge: Optional[Union[bool, LineStyle, _Color]] = ..., valley: Optional[Union[bool, LineStyle, _Color]] = ..., suggestive: Optional[Union[bool, LineStyle, _Color]] = ..., material: Optional[Union[bool, LineStyle, _Color]] = ..., intersection: Optional[Union[bool, LineStyle, _Color]] = ..., image: Optional[Union[bool, LineStyle, _Color]] = ..., hidden: Optional[Union[bool, LineStyle, _Color]] = ..., crease_angle: Optional[float] = ..., weld: Optional[bool] = ..., contours: Optional[Literal['faces', 'smooth', 'auto']] = ..., suggestive_threshold: Optional[float] = ..., curvature_smoothing: Optional[float] = ..., suggestive_coherence: Optional[bool] = ..., min_crease_length: Optional[float] = ..., max_crease_turn: Optional[float] = ..., image_rule: Optional[Literal['discontinuity', 'paper']] = ..., normal_angle: Optional[float] = ..., depth_jump: Optional[float] = ..., normal_threshold: Optional[float] = ..., depth_threshold: Optional[float] = ..., depth_offset: Optional[float] = ..., visibility: Optional[Literal['exact', 'depth']] = ..., max_occlusion: Optional[int] = ..., taper: Optional[float] = ..., width_by_depth: Optional[bool] = ..., join_kinds: Optional[bool] = ...) -> Outlines: ...
 
 @final
 class Material(_Settings):

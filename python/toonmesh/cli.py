@@ -260,6 +260,7 @@ def render_options(args: argparse.Namespace) -> Dict[str, Any]:
                 args.outlines, width=args.outline_width, crease_angle=args.crease_angle, contours=args.contours,
                 join_kinds=args.join_kinds, taper=args.taper, width_by_depth=args.width_by_depth,
                 suggestive=args.suggestive or None, curvature_smoothing=args.curvature_smoothing,
+                suggestive_coherence=args.suggestive_coherence,
                 **_visibility_options(args), image_rule=args.image_rule, normal_angle=args.normal_angle, depth_jump=args.depth_jump,
                 normal_threshold=args.normal_threshold, depth_threshold=args.depth_threshold)
     return options
@@ -491,6 +492,8 @@ def _add_contour_arguments(p: argparse.ArgumentParser, base: Optional[Outlines] 
     add_described(p, "--suggestive", Outlines, "suggestive", action="store_true")
     add_described(p, "--curvature-smoothing", Outlines, "curvature_smoothing", default=default("curvature_smoothing"),
                   metavar="EDGES")
+    add_described(p, "--suggestive-coherence", Outlines, "suggestive_coherence",
+                  default=default("suggestive_coherence"))
     add_described(p, "--join-kinds", Outlines, "join_kinds", default=default("join_kinds"))
     add_described(p, "--visibility", Outlines, "visibility", default=default("visibility"))
     add_described(p, "--hidden", Outlines, "hidden", action="store_true", help_before="draw ")
@@ -520,7 +523,8 @@ def cmd_edges(args: argparse.Namespace) -> int:
     with errors_as_flags(args, Outlines):
         outlines = Outlines("mesh", width=args.stroke_width, crease_angle=args.crease_angle, weld=args.weld,
                             contours=args.contours, suggestive=args.suggestive or None, join_kinds=args.join_kinds,
-                            curvature_smoothing=args.curvature_smoothing, **_visibility_options(args))
+                            curvature_smoothing=args.curvature_smoothing,
+                            suggestive_coherence=args.suggestive_coherence, **_visibility_options(args))
     path = mesh_file(args.mesh)
     V, F = read_mesh(path)
     with errors_as_flags(args, Camera):

@@ -14,9 +14,10 @@ use std::sync::{Arc, Mutex, OnceLock};
 
 use rayon::prelude::*;
 
+use super::coherence::{coherent_suggestive_contours, Drawn, Motion};
 use super::face_clusters::{FaceClusters, Sides};
 use super::silhouette::View;
-use super::zero_set::{zero_set, Polylines};
+use super::zero_set::{zero_set, zero_set_marking, Polylines};
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::mesh::crease_normals::{split_normals, ListedEdges};
@@ -169,6 +170,22 @@ impl ContourMesh {
         let basis = self.suggestive_basis(smoothing, cancel)?;
         Ok(suggestive_contours(&basis, view, threshold))
     }
+
+    /// Suggestive contours of `view` in a sequence of views (`coherence`): `before` and
+    /// `after` the views next to it (kept where related), `drawn` what the view before drew,
+    /// replaced by what this one draws.
+    pub fn coherent_suggestive(
+        &self,
+        (before, view, after): (Option<View>, View, Option<View>),
+        threshold: f64,
+        smoothing: Option<f64>,
+        drawn: &mut Drawn,
+        cancel: &Cancel,
+    ) -> Result<Polylines> {
+        let basis = self.suggestive_basis(smoothing, cancel)?;
+        let motion = Motion::between(before, view, after, &self.positions);
+        Ok(coherent_suggestive_contours(&basis, view, threshold, &motion, drawn))
+    }
 }
 
 /// The derivative threshold of suggestive contours, relative to the feature size squared, when
@@ -284,24 +301,41 @@ pub fn feature_size(positions: &[[f64; 3]], c: &Curvature) -> f64 {
     }
 }
 
-/// Suggestive contours of one view from the mesh's curvature (its normals and principal
-/// frame): the zero set of kr where D_w kr / |w| > threshold / feature_size^2 and n . v > 0,
-/// over the faces where some view finds kr = 0.
-pub fn suggestive_contours(basis: &SuggestiveBasis, view: View, threshold: f64) -> Polylines {
-    let c = &basis.curvature;
-    let cutoff = threshold / (basis.feature_size * basis.feature_size);
-    // per vertex (local numbering): (kr sin^2, the derivative test, n . v)
-    let fields = |local: u32| {
-        let i = basis.vertices[local as usize] as usize;
-        let v = to_viewer(view, basis.positions[local as usize]);
+/// The radial curvature's fields at one vertex of a basis (local numbering) in one view.
+#[derive(Clone, Copy, Debug)]
+pub struct Radial {
+    /// kr sin^2(theta), theta the angle of the view to the normal: the same zero set as kr
+    /// where the view is not along the normal.
+    pub kr_sin2: f64,
+    /// sin^2(theta).
+    pub sin2: f64,
+    /// D_w kr sin(theta) / cos(theta) with its terms as below; the derivative test is
+    /// `num - cutoff * ndotv` (-1 where the view is along the normal: no direction w).
+    pub num: Option<f64>,
+    pub ndotv: f64,
+}
+
+impl Radial {
+    /// The derivative test against `cutoff` (relative to nothing: 1 / length^2): positive
+    /// where it passes.
+    pub fn test(&self, cutoff: f64) -> f64 {
+        self.num.map_or(-1.0, |num| num - cutoff * self.ndotv)
+    }
+}
+
+impl SuggestiveBasis {
+    /// The radial curvature's fields at vertex `local` seen from `view`.
+    pub fn radial(&self, local: u32, view: View) -> Radial {
+        let c = &self.curvature;
+        let i = self.vertices[local as usize] as usize;
+        let v = to_viewer(view, self.positions[local as usize]);
         let ndotv = dot(c.normals[i], v);
         let (u, w) = (dot(v, c.d1[i]), dot(v, c.d2[i]));
         let (u2, w2) = (u * u, w * w);
         let sin2 = u2 + w2;
-        // kr sin^2(theta): the same zero set as kr where the view is not along the normal
-        let kr = c.k1[i] * u2 + c.k2[i] * w2;
+        let kr_sin2 = c.k1[i] * u2 + c.k2[i] * w2;
         if !(sin2 > 1e-12) {
-            return [kr, -1.0, ndotv];
+            return Radial { kr_sin2, sin2, num: None, ndotv };
         }
         let [c0, c1, c2, c3] = c.derivatives[i];
         // D_w kr sin(theta) / cos(theta): the third-order term C(w, w, w) and the term of the
@@ -309,20 +343,63 @@ pub fn suggestive_contours(basis: &SuggestiveBasis, view: View, threshold: f64) 
         let cw = u2 * (u * c0 + 3.0 * w * c1) + w2 * (3.0 * u * c2 + w * c3);
         let torsion = (c.k2[i] - c.k1[i]) * u * w / sin2;
         let num = cw / sin2 - 2.0 * ndotv * torsion * torsion;
-        [kr, num - cutoff * ndotv, ndotv]
-    };
-    // a cluster that faces away fails the n . v > 0 condition everywhere
-    let faces = basis.clusters.select(view, |s| s != Sides::Back);
-    let fade = SUGGESTIVE_FADE / (basis.feature_size * basis.feature_size);
-    zero_set(
+        Radial { kr_sin2, sin2, num: Some(num), ndotv }
+    }
+
+    /// Its vertices' positions (local numbering).
+    pub fn positions(&self) -> &[[f64; 3]] {
+        &self.positions
+    }
+
+    /// The derivative threshold `threshold` (relative to the feature size squared) and the
+    /// fade `SUGGESTIVE_FADE` in the mesh's units (1 / length^2).
+    pub fn cutoff_and_fade(&self, threshold: f64) -> (f64, f64) {
+        let squared = self.feature_size * self.feature_size;
+        (threshold / squared, SUGGESTIVE_FADE / squared)
+    }
+
+    /// The faces a view can find suggestive contours on: a cluster that faces away fails the
+    /// n . v > 0 condition everywhere.
+    pub fn faces_seen(&self, view: View) -> Vec<&[[u32; 3]]> {
+        self.clusters.select(view, |s| s != Sides::Back)
+    }
+
+    /// How many vertices it numbers.
+    pub fn n_vertices(&self) -> usize {
+        self.vertices.len()
+    }
+}
+
+/// The strength of a suggestive contour's point from its derivative test and n . v
+/// (interpolated there): the test divided by n . v is how far D_w kr / |w| passes the threshold.
+pub fn test_strength(test: f64, ndotv: f64, fade: f64) -> f64 {
+    strength(test / ndotv, fade)
+}
+
+/// Suggestive contours of one view from the mesh's curvature (its normals and principal
+/// frame): the zero set of kr where D_w kr / |w| > threshold / feature_size^2 and n . v > 0,
+/// over the faces where some view finds kr = 0.
+pub fn suggestive_contours(basis: &SuggestiveBasis, view: View, threshold: f64) -> Polylines {
+    suggestive_contours_marking(basis, view, threshold, |_| {})
+}
+
+/// `suggestive_contours`, calling `mark` with each face a line runs through.
+pub fn suggestive_contours_marking(
+    basis: &SuggestiveBasis,
+    view: View,
+    threshold: f64,
+    mark: impl Fn(&[u32; 3]) + Sync,
+) -> Polylines {
+    let (cutoff, fade) = basis.cutoff_and_fade(threshold);
+    zero_set_marking(
         &basis.positions,
-        &faces,
-        |v| fields(v)[0],
+        &basis.faces_seen(view),
+        |v| basis.radial(v, view).kr_sin2,
         |v| {
-            let [_, test, ndotv] = fields(v);
-            [test, ndotv]
+            let r = basis.radial(v, view);
+            [r.test(cutoff), r.ndotv]
         },
-        // the test divided by n . v: how far D_w kr / |w| passes the threshold
-        |[test, ndotv]| strength(test / ndotv, fade),
+        |[test, ndotv]| test_strength(test, ndotv, fade),
+        mark,
     )
 }

@@ -2,6 +2,7 @@
 //! (Kang, Kim and Yoon), and Sobel edges found in images (Borquez and Yepez).
 
 pub mod chains;
+pub mod coherence;
 pub mod contours;
 pub mod crease_pieces;
 pub mod crooked_creases;

@@ -73,10 +73,25 @@ pub fn zero_set<const K: usize>(
     conditions: impl Fn(u32) -> [f64; K] + Sync,
     strength: impl Fn([f64; K]) -> f64 + Sync,
 ) -> Polylines {
+    zero_set_marking(positions, faces, value, conditions, strength, |_| {})
+}
+
+/// `zero_set`, calling `mark` with each face that holds a piece of it (from several threads):
+/// what a sequence of views remembers of where lines were drawn.
+pub fn zero_set_marking<const K: usize>(
+    positions: &[[f64; 3]],
+    faces: &[&[[u32; 3]]],
+    value: impl Fn(u32) -> f64 + Sync,
+    conditions: impl Fn(u32) -> [f64; K] + Sync,
+    strength: impl Fn([f64; K]) -> f64 + Sync,
+    mark: impl Fn(&[u32; 3]) + Sync,
+) -> Polylines {
     let fields = Fields { value, conditions, strength };
     let pieces: Vec<[End; 2]> = faces
         .par_iter()
-        .flat_map_iter(|chunk| chunk.iter().filter_map(|f| face_piece(positions, f, &fields)))
+        .flat_map_iter(|chunk| {
+            chunk.iter().filter_map(|f| face_piece(positions, f, &fields).inspect(|_| mark(f)))
+        })
         .collect();
     chain_pieces(&pieces, K > 0)
 }

@@ -323,7 +323,7 @@ fn screen_lines(
     let outlines = scene.outlines.as_ref().unwrap();
     let mut lines = Vec::new();
     let reference = reference_depth(&scene.items, &p.records, &p.cam);
-    let outlines_of = scene_outlines(&scene.items, &p.records, &p.cam, outlines).unwrap();
+    let outlines_of = scene_outlines(&scene.items, &p.records, &p.cam, outlines, None).unwrap();
     let projectors: Vec<Projector> = scene
         .items
         .iter()

@@ -23,6 +23,7 @@ use super::culling::culls;
 use super::derived_vertices::derived_buffer;
 use super::device::{BackendChoice, GpuInfo};
 use super::effects::frame::{check as check_effects, frame_bytes};
+use super::effects::outlines::sequence::{is_sequence, sequence, SequenceFrame};
 use super::framing::{flat_normal, scene_support, with_lines};
 use super::gpu_mesh::{GpuMesh, MeshNormals};
 use super::graph::effect::{FrameInputs, HostInputs, HostStep};
@@ -344,7 +345,9 @@ impl Renderer {
 
     /// Renders a checked scene once from each of `cameras` into `outs` (one set of buffers a
     /// view), keeping `IN_FLIGHT` frames submitted at once so that the GPU draws one while the
-    /// host reads the last back. Gives the same bits as rendering each view alone. `cancel` is
+    /// host reads the last back. Gives the same bits as rendering each view alone, except for
+    /// suggestive contours with coherence on (`Outlines::suggestive_coherence`), which hold
+    /// still across related views (`edges::coherence`). `cancel` is
     /// checked between frames: once raised, the frames in flight are waited for and dropped and
     /// the call returns `Error::Interrupted`.
     pub fn render_views(
@@ -361,9 +364,11 @@ impl Renderer {
         let mut outs = outs.into_iter();
         let mut reports = Vec::with_capacity(cameras.len());
         let mut run = || -> Result<()> {
+            let mut frames = self.sequence(scene, cameras)?.into_iter();
             for camera in cameras {
                 cancel.check()?;
-                in_flight.push_back(self.submit(scene.with_camera(*camera))?);
+                let frame = scene.with_camera(*camera).in_sequence(frames.next());
+                in_flight.push_back(self.submit(frame)?);
                 if in_flight.len() >= IN_FLIGHT {
                     let f = in_flight.pop_front().expect("just pushed");
                     reports.push(self.finish(f, outs.next().expect("one a camera"))?);
@@ -384,6 +389,17 @@ impl Renderer {
             self.ctx.frames.give_back(f.res);
         }
         result.map(|_| reports)
+    }
+
+    /// Each frame's place in the sequence of `cameras`, where their suggestive contours hold
+    /// still (`sequence`); nothing for one camera or a scene without them.
+    fn sequence(&self, scene: &CheckedScene, cameras: &[Camera]) -> Result<Vec<SequenceFrame>> {
+        if cameras.len() < 2 || !is_sequence(scene) {
+            return Ok(Vec::new());
+        }
+        let resolved: Vec<ResolvedCamera> =
+            cameras.iter().map(|c| Ok(self.resolve(&scene.with_camera(*c))?.2)).collect::<Result<_>>()?;
+        Ok(sequence(&resolved, scene.scene.items.len()))
     }
 
     /// The scene's meshes (in the order of its items), its bounds, and its camera resolved for

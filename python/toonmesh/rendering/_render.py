@@ -152,8 +152,13 @@ class Renderer:
         """Renders the same scene from each of ``cameras`` (a turntable, a dataset sweep),
         keeping a few frames in flight so that the GPU draws one view while the last is read
         back. Returns a :class:`RenderStack`: the views' images stacked, (K, H, W, 4) colour and
-        so on, and one :class:`RenderResult` a view (the same bits as rendering each view alone).
-        ``options`` as in :meth:`render` (``camera`` is not one of them here).
+        so on, and one :class:`RenderResult` a view (the same bits as rendering each view alone,
+        except for suggestive contours with ``Outlines(suggestive_coherence=True)``, the
+        default: between consecutive views whose eye turns by less than 10 degrees about each
+        mesh's centre, they fade by how fast they slide across the surface and a line drawn in
+        the view before needs a weaker test to stay, so that a turntable's lines hold still;
+        views farther apart are drawn as they are alone). ``options`` as in :meth:`render`
+        (``camera`` is not one of them here).
         """
         if "camera" in options:
             raise TypeError("camera: render_many takes cameras=, a list of them")

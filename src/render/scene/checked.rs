@@ -7,6 +7,7 @@ use crate::error::Result;
 use super::camera::Camera;
 use super::light::{shadow_caster, validate_lights, Light, LightKind};
 use super::{check_transform, FrameSpec, Scene};
+use crate::render::effects::outlines::sequence::SequenceFrame;
 use crate::render::effects::shadows::settings::Shadows;
 
 /// The light that casts shadows.
@@ -37,6 +38,9 @@ pub struct CheckedScene {
     /// Whether each item is glass (`is_glass`): from its material, and once its mesh is known,
     /// from the mesh's colour (`mark_blended`).
     pub glass: Vec<bool>,
+    /// The frame's place in a sequence of views whose suggestive contours hold still
+    /// (`Renderer::render_views`); None for a frame alone.
+    pub sequence: Option<SequenceFrame>,
 }
 
 /// Whether a mesh lets light through: its material's opacity is below 1, or its colour's alpha
@@ -96,7 +100,7 @@ impl CheckedScene {
             .filter(|(_, l)| matches!(l.kind, LightKind::Point { .. }))
             .fold(0, |bits, (k, _)| bits | 1 << k);
         let glass = scene.items.iter().map(|i| is_glass(i.material.opacity, false)).collect();
-        Ok(CheckedScene { scene, frame, caster, shader_lights, point_lights, glass })
+        Ok(CheckedScene { scene, frame, caster, shader_lights, point_lights, glass, sequence: None })
     }
 
     /// Marks as glass the items whose mesh's colour alpha counts (`blended(i)` for item i), as
@@ -117,6 +121,12 @@ impl CheckedScene {
         let mut c = self.clone();
         c.scene.camera = camera;
         c
+    }
+
+    /// The same, as a frame of a sequence of views.
+    pub fn in_sequence(mut self, sequence: Option<SequenceFrame>) -> Self {
+        self.sequence = sequence;
+        self
     }
 
     /// Each line set's ink (its colour and width resolved when the scene was checked).

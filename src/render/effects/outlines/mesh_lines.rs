@@ -12,6 +12,7 @@ use glam::{DMat4, DVec3};
 
 use crate::cancel::Cancel;
 use crate::edges::chains::chain_edges;
+use crate::edges::coherence::Drawn;
 use crate::edges::contours::ContourMesh;
 use crate::edges::outlines::{LineKind, Outline, Statics};
 use crate::edges::short_creases::keep_drawn_creases;
@@ -28,6 +29,7 @@ use crate::render::scene::lines::LineSet;
 use crate::render::scene::SceneItem;
 
 use super::projection::{Projector, ScreenLine};
+use super::sequence::SequenceFrame;
 use super::settings::{ContourRule, Outlines, HIDDEN_KIND, LINES_KIND};
 use super::shared_borders::shared_borders;
 use super::stroke_width::{strength_factor, StrokeWidth};
@@ -225,13 +227,16 @@ impl MeshLines {
     /// The lines of one view (`view` in the mesh's stored coordinates): silhouettes (face edges,
     /// or smooth contours between creases and face edges on them, as `outlines.contours` says
     /// for a mesh drawn with `flat` normals or not), then the cached view-independent lines, and
-    /// suggestive contours, keeping the kinds `outlines` draws.
+    /// suggestive contours, keeping the kinds `outlines` draws. In a sequence of views,
+    /// `sequence` holds the views before and after (in the same coordinates) and what the view
+    /// before drew, and suggestive contours hold still across them (`edges::coherence`).
     pub fn outline(
         &self,
         host: &HostMesh,
         flat: bool,
         view: View,
         outlines: &Outlines,
+        sequence: Option<(Option<View>, Option<View>, &mut Drawn)>,
     ) -> Result<MeshOutline> {
         let draws = |k: LineKind| outlines.styles[k as usize].is_some();
         let index = self.index(host, outlines.weld)?;
@@ -254,8 +259,12 @@ impl MeshLines {
             let m = self.contour_mesh(host, outlines.weld);
             let threshold = outlines.suggestive_threshold;
             let smoothing = outlines.curvature_smoothing;
-            let lines =
-                crate::parallel::install(|| m.suggestive(view, threshold, smoothing, Cancel::never()))?;
+            let lines = crate::parallel::install(|| match sequence {
+                Some((before, after, drawn)) => {
+                    m.coherent_suggestive((before, view, after), threshold, smoothing, drawn, Cancel::never())
+                }
+                None => m.suggestive(view, threshold, smoothing, Cancel::never()),
+            })?;
             curves.push((LineKind::Suggestive, lines));
         }
         // boundaries are kept for the borders between items found across the scene
@@ -578,17 +587,25 @@ pub fn scene_outlines(
     records: &[Arc<MeshRecord>],
     cam: &ResolvedCamera,
     o: &Outlines,
+    sequence: Option<&SequenceFrame>,
 ) -> Result<Vec<MeshOutline>> {
     let mut outlines = Vec::with_capacity(items.len());
-    for (item, rec) in items.iter().zip(records) {
+    let mut drawn = sequence.map(|s| s.drawn.lock().unwrap_or_else(|e| e.into_inner()));
+    for (i, (item, rec)) in items.iter().zip(records).enumerate() {
         if item.splats {
             // a splat's edges are no lines of the surface: image-space edges ink the cloud
             outlines.push(MeshOutline { edges: Outline::default(), curves: Vec::new() });
             continue;
         }
-        let view = stored_view(cam, item.model_matrix(), &rec.gpu);
+        let stored = |cam: &ResolvedCamera| stored_view(cam, item.model_matrix(), &rec.gpu);
         let flat = rec.gpu.normals == NormalMode::Flat;
-        outlines.push(MeshLines::of(rec).outline(&rec.host, flat, view, o)?);
+        let in_sequence = match (sequence, drawn.as_mut()) {
+            (Some(s), Some(d)) => {
+                Some((s.before.as_ref().map(stored), s.after.as_ref().map(stored), &mut d[i]))
+            }
+            _ => None,
+        };
+        outlines.push(MeshLines::of(rec).outline(&rec.host, flat, stored(cam), o, in_sequence)?);
     }
     if items.len() > 1 {
         let mut edges: Vec<&mut Outline> = outlines.iter_mut().map(|out| &mut out.edges).collect();

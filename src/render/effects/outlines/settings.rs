@@ -196,6 +196,10 @@ pub struct Outlines {
     /// `edges::contours::auto_smoothing`.
     #[serde(default)]
     pub curvature_smoothing: Option<f64>,
+    /// Suggestive contours hold still across the related views of a sequence
+    /// (`edges::coherence`): faded by how fast they slide, with hysteresis between frames.
+    #[serde(default = "default_suggestive_coherence")]
+    pub suggestive_coherence: bool,
     /// Hidden-line removal: a line point is visible when its depth is at most the largest
     /// surface depth in the 3x3 output pixels around it plus this many pixel footprints (the
     /// world size of one pixel at that depth); a silhouette or boundary with background among
@@ -223,6 +227,14 @@ impl Default for VisibilityRule {
     }
 }
 
+/// Settings saved before coherence existed load with it on, its default.
+fn default_suggestive_coherence() -> bool {
+    DEFAULT_SUGGESTIVE_COHERENCE
+}
+
+/// Suggestive contours hold still across a sequence of views unless asked not to.
+pub const DEFAULT_SUGGESTIVE_COHERENCE: bool = true;
+
 /// Settings saved before the turn rule existed load with it at its default.
 fn default_max_crease_turn() -> f64 {
     DEFAULT_MAX_CREASE_TURN
@@ -247,6 +259,7 @@ impl Outlines {
             contours: ContourRule::Auto,
             suggestive_threshold: DEFAULT_SUGGESTIVE_THRESHOLD,
             curvature_smoothing: None,
+            suggestive_coherence: DEFAULT_SUGGESTIVE_COHERENCE,
             crease_angle: DEFAULT_CREASE_ANGLE,
             min_crease_length: DEFAULT_MIN_CREASE_LENGTH,
             max_crease_turn: DEFAULT_MAX_CREASE_TURN,
@@ -363,6 +376,8 @@ declared_fields! {
             "the suggestive contours' derivative test, relative to the mesh's feature size";
         curvature_smoothing: Option<f64> [.curvature_smoothing] => float(NON_NEGATIVE.slider(0.0, 8.0)),
             "width in mean edge lengths over which suggestive contours' curvature is averaged (None: 2, at most 1% of the diagonal)", optional;
+        suggestive_coherence: bool [.suggestive_coherence] => boolean(),
+            "suggestive contours hold still across render_many's views: faded by how fast they slide, with hysteresis between frames";
         min_crease_length: f64 [.min_crease_length] => float(NON_NEGATIVE.slider(0.0, 0.2)),
             "crease pieces shorter than this fraction of the bounding-box diagonal are not drawn";
         max_crease_turn: f64 [.max_crease_turn] => float(DEGREES),
@@ -445,6 +460,7 @@ const PARAMS: &[&str] = &[
     "contours",
     "suggestive_threshold",
     "curvature_smoothing",
+    "suggestive_coherence",
     "min_crease_length",
     "max_crease_turn",
     "image_rule",

@@ -41,7 +41,8 @@ impl HostStep for Silhouettes {
         let by_depth = self.outlines.stroke_width.by_depth;
         let reference = if by_depth { reference_depth(items, cx.records, cx.cam) } else { 1.0 };
         let mut found: Vec<Vec<Chain>> = if self.outlines.draws_mesh_lines() {
-            let outlines = scene_outlines(items, cx.records, cx.cam, &self.outlines)?;
+            let outlines =
+                scene_outlines(items, cx.records, cx.cam, &self.outlines, cx.scene.sequence.as_ref())?;
             outlines.iter().zip(cx.records).map(|(o, rec)| chains(o, &rec.host.positions)).collect()
         } else {
             vec![Vec::new(); items.len()]
