@@ -114,7 +114,7 @@ def test_the_benchmark_prints_the_figure():
                        text=True, timeout=600, env=dict(os.environ, PATH=path))
     assert r.returncode == 0, r.stderr
     rows = {line.split("|")[1].strip(): line for line in r.stdout.splitlines() if line.startswith("| mesh")}
-    assert set(rows) == {"mesh lines", "mesh lines + suggestive"}, r.stdout
+    assert set(rows) == {"mesh lines", "mesh lines + suggestive", "mesh lines + suggestive, each view alone"}, r.stdout
     assert "Popping per 1-degree step" in r.stdout and "%" in rows["mesh lines"]
     assert "| Freestyle: not installed" in r.stdout, r.stdout
 

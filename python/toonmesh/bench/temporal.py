@@ -38,6 +38,7 @@ from toonmesh.testing._temporal import Frame
 SETTINGS: Dict[str, Dict[str, Any]] = {
     "mesh lines": {"kind": "mesh"},
     "mesh lines + suggestive": {"kind": "mesh", "suggestive": True},
+    "mesh lines + suggestive, each view alone": {"kind": "mesh", "suggestive": True, "suggestive_coherence": False},
     "image-space lines": {"kind": "image"},
     "both": {"kind": "both"},
     "both + suggestive": {"kind": "both", "suggestive": True},
