@@ -17,9 +17,11 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Weak};
 
-use super::contours::{suggestive_contours_marking, test_strength, SuggestiveBasis};
+use super::contours::{suggestive_contours_marking, test_strength, ContourMesh, SuggestiveBasis};
 use super::silhouette::View;
 use super::zero_set::{zero_set_marking, Polylines};
+use crate::cancel::Cancel;
+use crate::error::Result;
 use crate::mesh::Bounds;
 use crate::real::{dot, sub};
 
@@ -163,6 +165,24 @@ pub fn coherent_suggestive_contours(
     let vertices: Vec<bool> = marks.into_iter().map(AtomicBool::into_inner).collect();
     *drawn = Drawn { basis: Arc::downgrade(basis), vertices };
     lines
+}
+
+impl ContourMesh {
+    /// Suggestive contours of `view` in a sequence of views: `before` and `after` the views
+    /// next to it (kept where related), `drawn` what the view before drew, replaced by what
+    /// this one draws.
+    pub fn coherent_suggestive(
+        &self,
+        (before, view, after): (Option<View>, View, Option<View>),
+        threshold: f64,
+        smoothing: Option<f64>,
+        drawn: &mut Drawn,
+        cancel: &Cancel,
+    ) -> Result<Polylines> {
+        let basis = self.suggestive_basis(smoothing, cancel)?;
+        let motion = Motion::between(before, view, after, self.positions());
+        Ok(coherent_suggestive_contours(&basis, view, threshold, &motion, drawn))
+    }
 }
 
 #[cfg(test)]

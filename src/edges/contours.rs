@@ -14,7 +14,6 @@ use std::sync::{Arc, Mutex, OnceLock};
 
 use rayon::prelude::*;
 
-use super::coherence::{coherent_suggestive_contours, Drawn, Motion};
 use super::face_clusters::{FaceClusters, Sides};
 use super::silhouette::View;
 use super::zero_set::{zero_set, zero_set_marking, Polylines};
@@ -169,22 +168,6 @@ impl ContourMesh {
     ) -> Result<Polylines> {
         let basis = self.suggestive_basis(smoothing, cancel)?;
         Ok(suggestive_contours(&basis, view, threshold))
-    }
-
-    /// Suggestive contours of `view` in a sequence of views (`coherence`): `before` and
-    /// `after` the views next to it (kept where related), `drawn` what the view before drew,
-    /// replaced by what this one draws.
-    pub fn coherent_suggestive(
-        &self,
-        (before, view, after): (Option<View>, View, Option<View>),
-        threshold: f64,
-        smoothing: Option<f64>,
-        drawn: &mut Drawn,
-        cancel: &Cancel,
-    ) -> Result<Polylines> {
-        let basis = self.suggestive_basis(smoothing, cancel)?;
-        let motion = Motion::between(before, view, after, &self.positions);
-        Ok(coherent_suggestive_contours(&basis, view, threshold, &motion, drawn))
     }
 }
 

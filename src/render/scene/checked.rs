@@ -6,8 +6,8 @@ use crate::error::Result;
 
 use super::camera::Camera;
 use super::light::{shadow_caster, validate_lights, Light, LightKind};
+use super::sequence::SequenceFrame;
 use super::{check_transform, FrameSpec, Scene};
-use crate::render::effects::outlines::sequence::SequenceFrame;
 use crate::render::effects::shadows::settings::Shadows;
 
 /// The light that casts shadows.

@@ -14,6 +14,7 @@ pub mod material;
 pub mod model;
 pub mod options;
 pub mod outputs;
+pub mod sequence;
 pub mod up;
 
 use glam::{DMat3, DMat4, DVec3};

@@ -29,10 +29,10 @@ use crate::render::scene::lines::LineSet;
 use crate::render::scene::SceneItem;
 
 use super::projection::{Projector, ScreenLine};
-use super::sequence::SequenceFrame;
 use super::settings::{ContourRule, Outlines, HIDDEN_KIND, LINES_KIND};
 use super::shared_borders::shared_borders;
 use super::stroke_width::{strength_factor, StrokeWidth};
+use crate::render::scene::sequence::SequenceFrame;
 
 /// A mesh's outline analysis, kept with it.
 #[derive(Default)]
