@@ -23,7 +23,6 @@ use super::culling::culls;
 use super::derived_vertices::derived_buffer;
 use super::device::{BackendChoice, GpuInfo};
 use super::effects::frame::{check as check_effects, frame_bytes};
-use super::effects::outlines::sequence::is_sequence;
 use super::framing::{flat_normal, scene_support, with_lines};
 use super::gpu_mesh::{GpuMesh, MeshNormals};
 use super::graph::effect::{FrameInputs, HostInputs, HostStep};
@@ -395,7 +394,7 @@ impl Renderer {
     /// Each frame's place in the sequence of `cameras`, where their suggestive contours hold
     /// still (`sequence`); nothing for one camera or a scene without them.
     fn sequence(&self, scene: &CheckedScene, cameras: &[Camera]) -> Result<Vec<SequenceFrame>> {
-        if cameras.len() < 2 || !is_sequence(scene) {
+        if cameras.len() < 2 || !scene.scene.outlines.as_ref().is_some_and(|o| o.holds_suggestive_still()) {
             return Ok(Vec::new());
         }
         let resolved: Vec<ResolvedCamera> =

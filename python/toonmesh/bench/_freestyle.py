@@ -24,7 +24,7 @@ from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Sequence, Tup
 import numpy as np
 
 import toonmesh as tm
-from toonmesh.testing import POPPING_PIXELS, TemporalPopping, _png, _temporal, temporal_popping
+from toonmesh.testing import INK_COVERAGE, POPPING_PIXELS, TemporalPopping, _png, _temporal, temporal_popping
 from toonmesh.testing._temporal import Frame
 
 #: The Freestyle runs: label, the toonmesh line setting (of the temporal benchmark) drawing the same
@@ -122,7 +122,7 @@ def agreement(drawing: Drawing, frames: Sequence[Frame]) -> Tuple[float, float]:
     cross = [(0, 1), (1, 0), (0, -1), (-1, 0)]
     on, ink_px, covered, outline_px = 0, 0, 0, 0
     for theirs, frame in zip(drawing.ink, frames):
-        a, b = theirs >= 0.5, frame.ink
+        a, b = theirs >= INK_COVERAGE, frame.ink
         on += int((a & _temporal.spread(b, disc, np.logical_or, False)).sum())
         ink_px += int(a.sum())
         surface = np.isfinite(frame.depth)

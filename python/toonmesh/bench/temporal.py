@@ -31,7 +31,7 @@ import toonmesh as tm
 import toonmesh.data
 from toonmesh.bench import _freestyle
 from toonmesh.bench._timing import table
-from toonmesh.testing import temporal_popping
+from toonmesh.testing import INK_COVERAGE, _popping_frame, temporal_popping
 from toonmesh.testing._temporal import Frame
 
 #: The line settings compared, as keywords of tm.Outlines.
@@ -96,8 +96,7 @@ def popping_table(quick: bool) -> str:
         if apart:
             peer_rows.append(_row(label, temporal_popping(head), frame))
         if label in beside and blender is not None:
-            ours[label] = [Frame(np.array(r.outline) >= 0.5, np.array(r.depth, dtype=np.float64), r.view_matrix,
-                                 r.projection) for r in head]
+            ours[label] = [_popping_frame(i, r, INK_COVERAGE) for i, r in enumerate(head)]
         del stack, head
     freestyle = _freestyle.rows(blender, V, F, ours)
     title = f"Popping per 1-degree step ({{}} steps, bunny {SIZE}x{SIZE}, {renderer.info['backend']})"

@@ -45,6 +45,7 @@ from toonmesh.rendering._results import RenderResult
 __all__ = [
     "IMAGE_LEVELS",
     "IMAGE_SHARE",
+    "INK_COVERAGE",
     "LINE_PIXELS",
     "LINE_SHARE",
     "MESH_RTOL",
@@ -1086,6 +1087,8 @@ def sobel_vs_skimage(image: Any, mask: Any = None, *, which: str = "sobel") -> S
 #: Ink within this many pixels of where a surface point went counts as the same ink
 #: (:func:`temporal_popping`).
 POPPING_PIXELS = 2.0
+#: A pixel is ink where its outline coverage is at least this (:func:`temporal_popping`).
+INK_COVERAGE = 0.5
 
 
 class TemporalPopping(NamedTuple):
@@ -1143,7 +1146,7 @@ def _popping_frame(i: int, frame: Any, ink: float) -> _temporal.Frame:
     return _temporal.Frame(ink_mask, depth, view, projection)
 
 
-def temporal_popping(frames: Any, *, pixels: float = POPPING_PIXELS, ink: float = 0.5,
+def temporal_popping(frames: Any, *, pixels: float = POPPING_PIXELS, ink: float = INK_COVERAGE,
                      depth_tolerance: float = 0.01) -> TemporalPopping:
     """How much of a sequence's ink pops: the share of ink pixels that have no ink within
     ``pixels`` after exact reprojection into the next frame through the depth buffer.
@@ -1166,7 +1169,7 @@ def temporal_popping(frames: Any, *, pixels: float = POPPING_PIXELS, ink: float 
             4x4 projection to clip space with z in [0, 1]. Never modified.
         pixels: the distance, in pixels, within which ink counts as the same (default
             :data:`POPPING_PIXELS`, 2).
-        ink: the coverage at and above which a pixel is ink (default 0.5).
+        ink: the coverage at and above which a pixel is ink (default :data:`INK_COVERAGE`, 0.5).
         depth_tolerance: how much farther than the surface a point may be and still be seen,
             relative to its depth (default 0.01).
 

@@ -70,12 +70,13 @@ pub(crate) fn denoise_mesh<T: Real>(
             let mut scratch = guidance::Scratch::default();
             let alone = opts.passes_before_fitting();
             // The paper preset: Zhang et al.'s neighbourhood and spatial width, from the
-            // distances between adjacent centroids (the width re-measured at every pass).
+            // distances between adjacent centroids (the width re-measured after every fit).
             let paper = opts.preset == Preset::Paper;
             let mut kernels = kernels;
             let within;
             let near = if paper {
                 let d = neighbourhood::mean_centroid_distance(&rings, &data);
+                kernels.sigma_s = opts.sigma_s * d;
                 within = neighbourhood::within(&rings, &data, neighbourhood::PAPER_RADIUS * d);
                 &within
             } else {
@@ -83,9 +84,6 @@ pub(crate) fn denoise_mesh<T: Real>(
             };
             for pass in 0..opts.iterations {
                 cancel.check()?;
-                if paper {
-                    kernels.sigma_s = opts.sigma_s * neighbourhood::mean_centroid_distance(&rings, &data);
-                }
                 guidance::guidance(&rings, faces, &data, &normals, &mut scratch, &mut guide);
                 bilateral::filter(near, &data, &normals, Some(&guide), kernels, &mut filtered);
                 if pass < alone {
@@ -101,6 +99,9 @@ pub(crate) fn denoise_mesh<T: Real>(
                 faces::face_data(&x, faces, &mut data);
                 for (n, d) in normals.iter_mut().zip(&data) {
                     *n = d.normal;
+                }
+                if paper {
+                    kernels.sigma_s = opts.sigma_s * neighbourhood::mean_centroid_distance(&rings, &data);
                 }
             }
         }

@@ -13,7 +13,6 @@ pub mod mesh_lines;
 pub mod occluded;
 pub mod pen;
 pub mod projection;
-pub mod sequence;
 pub mod settings;
 pub mod shared_borders;
 pub mod silhouettes;

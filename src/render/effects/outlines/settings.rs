@@ -308,6 +308,14 @@ impl Outlines {
         self.mesh && self.styles[..LineKind::COUNT].iter().any(Option::is_some)
     }
 
+    /// Whether the views of a sequence hold their suggestive contours still
+    /// (`edges::coherence`): they are drawn, with coherence.
+    pub fn holds_suggestive_still(&self) -> bool {
+        self.suggestive_coherence
+            && self.draws_mesh_lines()
+            && self.styles[LineKind::Suggestive as usize].is_some()
+    }
+
     pub fn draws_image_edges(&self) -> bool {
         self.image && self.styles[IMAGE_KIND].is_some()
     }
