@@ -17,10 +17,24 @@ from pathlib import Path
 import numpy as np
 
 import toonmesh as tm
-from toonmesh.bench.lines import pipe, slab
 
 # white paper: one band, so only the ink shows
 PAPER = tm.Material.bands("#ffffff", thresholds=(2.0,), values=(1.0, 1.0))
+
+
+def slab(lo, hi):
+    """A box from corner ``lo`` to corner ``hi``, faces wound outward."""
+    V = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])], float)
+    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+    return V, F
+
+
+def pipe(axis, radius, half_length, sections=96):
+    """A capped cylinder along ``axis`` (0, 1 or 2: x, y or z) through the origin."""
+    profile = [(0, -half_length), (radius, -half_length), (radius, half_length), (0, half_length)]
+    V, F = tm.shapes.lathe(profile, sections)  # about y
+    return V[:, np.roll([0, 1, 2], axis - 1)], F  # y becomes the axis asked for
 
 
 def part(mesh, name, offset=(0, 0, 0)):

@@ -14,11 +14,29 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from PIL import Image
+from PIL import Image, ImageDraw, ImageFont
 
 import toonmesh as tm
-from toonmesh.bench.lines import slab
 from toonmesh.data import bunny
+
+
+def slab(lo, hi):
+    """A box from corner ``lo`` to corner ``hi``, faces wound outward."""
+    V = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])], float)
+    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+    return V, F
+
+
+def label(image: np.ndarray, text: str) -> np.ndarray:
+    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
+    pil = Image.fromarray(image)
+    draw = ImageDraw.Draw(pil)
+    font = ImageFont.load_default(size=13)
+    box = draw.textbbox((6, 4), text, font=font)
+    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
+    draw.text((6, 4), text, font=font, fill="black")
+    return np.asarray(pil)
 
 
 def glass_case(width: int) -> tm.RenderResult:
@@ -47,7 +65,8 @@ def main(folder: Path, width: int = 720) -> None:
     half = width // 2
     left, right = glass_case(half), scan(half)
     folder.mkdir(parents=True, exist_ok=True)
-    Image.fromarray(np.hstack([left.color, right.color])).save(folder / "glass.png")
+    panels = [label(left.color, "glass: Material.bands(opacity=0.3)"), label(right.color, "tm.Points + tm.EyeDome()")]
+    Image.fromarray(np.hstack(panels)).save(folder / "glass.png")
     print("glass case:", ", ".join(left.passes))
     print("scan:", ", ".join(right.passes))
 
