@@ -1,8 +1,8 @@
 """Outlines found on the mesh and in the image.
 
 Mesh-space outlines (toonmesh.edges.EdgeIndex) and image-space outlines
-(toonmesh.edges.detect_edges) of the test meshes. Needs matplotlib and trimesh (not package
-dependencies).
+(toonmesh.edges.detect_edges) of the fandisk (``toonmesh.data``) and the teapot
+(``toonmesh.shapes``). Needs matplotlib (``pip install matplotlib``).
 
 Hidden lines are removed with a small NumPy z-buffer, which also provides the normal and depth
 buffers for the image-space panel.
@@ -15,12 +15,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-import trimesh  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
+import toonmesh as tm  # noqa: E402
 from toonmesh import edges as te  # noqa: E402
-
-ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
+from toonmesh.data import fandisk  # noqa: E402
 SIZE = 260
 DISTANCE = 2.6  # eye distance in bounding-sphere radii
 
@@ -107,9 +106,8 @@ def toon(normal, depth):
     return np.dstack([img * 0.98, img * 0.96, img])
 
 
-def panel(ax, name, eye_dir, title, crease_angle=30.0, image_space=False):
-    mesh = trimesh.load(ROOT / "tests" / "data" / "meshes" / name, process=False, force="mesh")
-    V, F = np.asarray(mesh.vertices, float), np.asarray(mesh.faces)
+def panel(ax, mesh, eye_dir, title, crease_angle=30.0, image_space=False):
+    V, F = mesh
     eye, R, radius = camera(V, eye_dir)
     depth, normal = rasterise(V, F, eye, R, radius)
     ax.imshow(toon(normal, depth), extent=(0, SIZE, SIZE, 0), interpolation="nearest")
@@ -140,9 +138,10 @@ def panel(ax, name, eye_dir, title, crease_angle=30.0, image_space=False):
 
 def main():
     fig, axes = plt.subplots(1, 3, figsize=(7.5, 2.8), dpi=100, layout="constrained")
-    panel(axes[0], "fandisk.obj", (1.0, 0.8, -1.4), "EdgeIndex: fandisk, crease_angle=30")
-    panel(axes[1], "teapot.obj", (0.8, 0.9, 1.5), "EdgeIndex: teapot, crease_angle=60", crease_angle=60.0)
-    panel(axes[2], "fandisk.obj", (1.0, 0.8, -1.4), "detect_edges: normal + depth", image_space=True)
+    part, teapot = fandisk(), tm.shapes.teapot()
+    panel(axes[0], part, (1.0, 0.8, -1.4), "EdgeIndex: fandisk, crease_angle=30")
+    panel(axes[1], teapot, (0.8, 0.9, 1.5), "EdgeIndex: teapot, crease_angle=60", crease_angle=60.0)
+    panel(axes[2], part, (1.0, 0.8, -1.4), "detect_edges: normal + depth", image_space=True)
     out = Path("edges.png")
     fig.savefig(out, dpi=100)
     print("wrote", out, out.stat().st_size // 1024, "KB")

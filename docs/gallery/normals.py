@@ -3,21 +3,27 @@
 The three normal modes (rows: ``"smooth"``, ``"flat"``, ``"auto"``) on
 a box, a chess pawn (``shapes.pawn``), the fandisk CAD part and the bunny, with toon bands.
 Smooth shading bends the bands across the box's edges and the pawn's rims, flat shading facets
-the curved parts, and auto keeps both right; on the bunny auto is close to smooth. Needs trimesh
-to read the OBJ file.
+the curved parts, and auto keeps both right; on the bunny auto is close to smooth.
 """
 
-from pathlib import Path
-
 import numpy as np
-from PIL import Image
-import trimesh
+from PIL import Image, ImageDraw, ImageFont
 
 import toonmesh as tm
-from toonmesh.data import bunny
+from toonmesh.data import bunny, fandisk
 
-ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 220
+
+
+def label(image: np.ndarray, text: str) -> np.ndarray:
+    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
+    pil = Image.fromarray(image)
+    draw = ImageDraw.Draw(pil)
+    font = ImageFont.load_default(size=13)
+    box = draw.textbbox((6, 4), text, font=font)
+    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
+    draw.text((6, 4), text, font=font, fill="black")
+    return np.asarray(pil)
 
 
 def box():
@@ -27,17 +33,17 @@ def box():
 
 
 def main() -> None:
-    fandisk = trimesh.load(ROOT / "tests/data/meshes/fandisk.obj", process=False)
     models = [
         (box(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (tm.shapes.pawn(48), tm.Camera.fit((0.0, 0.35, 1.0)), "#e8c07a"),
-        ((np.asarray(fandisk.vertices), np.asarray(fandisk.faces)), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
+        (fandisk(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (bunny(), tm.Camera.fit((0.35, 0.3, 1.0)), "#f08a3c"),
     ]
     rows = []
     for normals in ("smooth", "flat", "auto"):
-        row = [tm.render(V, F, normals=normals, camera=camera, material=tm.Material.bands(colour), width=SIZE,
-                         height=SIZE, supersample=2).color for (V, F), camera, colour in models]
+        row = [label(tm.render(V, F, normals=normals, camera=camera, material=tm.Material.bands(colour), width=SIZE,
+                               height=SIZE, supersample=2).color, f'normals="{normals}"')
+               for (V, F), camera, colour in models]
         rows.append(np.concatenate(row, axis=1))
     figure = np.ascontiguousarray(np.concatenate(rows, axis=0))
     Image.fromarray(figure).save("normals.png", optimize=True)

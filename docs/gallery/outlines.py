@@ -5,20 +5,26 @@ mesh-space lines (silhouettes, boundaries, creases as ridges and valleys: Kang, 
 with image-space lines (between pixels whose normals turn or whose depths jump, the default
 rule; no threshold to scale with the model), and the
 line drawing alone (the ``outline`` output). Bottom row: the same for the smoothed bunny.
-Needs trimesh to read the OBJ file.
 """
 
-from pathlib import Path
-
 import numpy as np
-from PIL import Image
-import trimesh
+from PIL import Image, ImageDraw, ImageFont
 
 import toonmesh as tm
-from toonmesh.data import bunny
+from toonmesh.data import bunny, fandisk
 
-ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 360
+
+
+def label(image: np.ndarray, text: str) -> np.ndarray:
+    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
+    pil = Image.fromarray(image)
+    draw = ImageDraw.Draw(pil)
+    font = ImageFont.load_default(size=13)
+    box = draw.textbbox((6, 4), text, font=font)
+    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
+    draw.text((6, 4), text, font=font, fill="black")
+    return np.asarray(pil)
 
 
 def panels(V, F, material, camera, crease_angle):
@@ -30,12 +36,12 @@ def panels(V, F, material, camera, crease_angle):
     ink = tm.render(V, F, outlines=tm.Outlines("both", crease_angle=crease_angle, width=1.8),
                     outputs="outline", **kw).outline
     c = np.dstack([np.repeat(((1 - ink) * 255).astype(np.uint8)[..., None], 3, axis=2), np.full(ink.shape, 255, np.uint8)])
-    return np.concatenate([a, b, c], axis=1)
+    labels = ('Outlines("mesh")', 'Outlines("image")', 'Outlines("both"): outputs="outline"')
+    return np.concatenate([label(x, t) for x, t in zip((a, b, c), labels)], axis=1)
 
 
 def main() -> None:
-    fandisk = trimesh.load(ROOT / "tests/data/meshes/fandisk.obj", process=False)
-    V1, F1 = np.asarray(fandisk.vertices), np.asarray(fandisk.faces)
+    V1, F1 = fandisk()
     V2, F2 = bunny()
     V2 = tm.smooth.laplacian(V2, F2, iterations=5, preset="paper")
     top = panels(V1, F1, tm.Material.bands("#8fb8de"), tm.Camera.fit((0.6, 0.5, 1.0)), 40.0)

@@ -15,14 +15,33 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from PIL import Image
+from PIL import Image, ImageDraw, ImageFont
 
 import toonmesh as tm
-from toonmesh.bench.temporal import turntable
 from toonmesh.data import bunny
 from toonmesh.testing import temporal_popping
 
 START, STEPS = 60, 20
+
+
+def turntable(V: np.ndarray, steps: int) -> list:
+    """``steps + 1`` cameras one degree apart about +y, the eye at 2.4 bounding radii."""
+    centre = 0.5 * (V.min(axis=0) + V.max(axis=0))
+    radius = float(np.linalg.norm(V - centre, axis=1).max())
+    a = np.radians(np.arange(steps + 1))
+    eyes = centre + 2.4 * radius * np.c_[np.sin(a), np.zeros_like(a), np.cos(a)]
+    return [tm.Camera.look_at(tuple(eye), target=tuple(centre), up=(0, 1, 0), fov_y=40.0) for eye in eyes]
+
+
+def label(image: np.ndarray, text: str) -> np.ndarray:
+    """``image`` (H, W, 3) uint8 with ``text`` on a white box at its top left."""
+    pil = Image.fromarray(image)
+    draw = ImageDraw.Draw(pil)
+    font = ImageFont.load_default(size=13)
+    box = draw.textbbox((6, 4), text, font=font)
+    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
+    draw.text((6, 4), text, font=font, fill="black")
+    return np.asarray(pil)
 
 
 def panel(renderer: tm.Renderer, mesh: tm.MeshHandle, cameras: list, coherence: bool, size: int) -> np.ndarray:
@@ -45,7 +64,8 @@ def panel(renderer: tm.Renderer, mesh: tm.MeshHandle, cameras: list, coherence: 
         grown[:, 1:] |= grown[:, :-1].copy()
         grown[:, :-1] |= grown[:, 1:].copy()
     image[grown] = (230, 20, 20)
-    return np.asarray(Image.fromarray(image).resize((size, size), Image.LANCZOS))
+    image = np.asarray(Image.fromarray(image).resize((size, size), Image.LANCZOS))
+    return label(image, f"suggestive_coherence={coherence}: {100 * popping.share:.3f}% pops")
 
 
 def main(folder: Path, width: int = 720) -> None:
