@@ -6,7 +6,8 @@ error is the RMS error of the radius. Right: the renderer's accuracy knobs on th
 at 256x256 in toon bands, against the same frame supersampled 4 times: the mean difference of
 the pixels (0-255) against the frame's time. Times are medians of 3 on the machine that built
 this page; the tables of the [accuracy page](../accuracy.md) were measured the same way at
-larger sizes (``python -m toonmesh.bench all --accuracy``).
+larger sizes (``python -m toonmesh.bench all --accuracy``). Needs matplotlib
+(``pip install matplotlib``).
 """
 
 import time

@@ -2,7 +2,7 @@
 
 A glTF scene written with trimesh, a box placed by four nodes, read back by ``toonmesh.load``
 as four meshes that share one pair of arrays (the renderer uploads the box once), and drawn with
-outlines and a shadow on a floor.
+outlines and a shadow on a floor. Needs trimesh (``pip install 'toonmesh[io]'``).
 """
 
 import numpy as np

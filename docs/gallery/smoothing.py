@@ -8,7 +8,7 @@ pipeline: 5 iterations of the plain neighbour mean (``preset="paper"``).
 """
 
 import numpy as np
-from PIL import Image, ImageDraw
+from PIL import Image, ImageDraw, ImageFont
 
 import toonmesh as tm
 from toonmesh.data import bunny
@@ -17,8 +17,13 @@ SIZE = 200
 
 
 def label(image: np.ndarray, text: str) -> np.ndarray:
+    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
     pil = Image.fromarray(image)
-    ImageDraw.Draw(pil).text((6, 6), text, fill=(0, 0, 0, 255))
+    draw = ImageDraw.Draw(pil)
+    font = ImageFont.load_default(size=13)
+    box = draw.textbbox((6, 4), text, font=font)
+    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
+    draw.text((6, 4), text, font=font, fill="black")
     return np.asarray(pil)
 
 
