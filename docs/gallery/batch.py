@@ -11,20 +11,11 @@ import os
 import numpy as np
 import trimesh
 from dask.distributed import Client, LocalCluster
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.batch import render_files
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 3 or 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
+from toonmesh.figures import panels
 
 
 if __name__ == "__main__":
@@ -39,6 +30,7 @@ if __name__ == "__main__":
         rows = render_files(paths, "frames", views=4, client=client, up="y", width=160, height=160,
                             material=tm.Material.thresholded_phong("#3c8af0"), outlines="mesh")
     print(len(rows), "images, on workers", sorted({row["worker"] for row in rows}))
-    sheet = [[label(np.asarray(Image.open(row["path"])), os.path.basename(row["path"])) for row in rows
-              if row["mesh"] == path] for path in paths]
-    Image.fromarray(np.concatenate([np.concatenate(r, axis=1) for r in sheet], axis=0)).save("batch.png")
+    ordered = sorted(rows, key=lambda row: (paths.index(row["mesh"]), row["path"]))  # one row a mesh
+    images = [np.asarray(Image.open(row["path"])) for row in ordered]
+    labels = [os.path.basename(row["path"]) for row in ordered]
+    Image.fromarray(panels(images, labels, columns=4)).save("batch.png")

@@ -12,25 +12,16 @@ about the format's up axis that fills the frame. Needs trimesh to read and write
 
 import numpy as np
 import trimesh
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import fandisk
+from toonmesh.figures import panels
 
 SIZE = 260
 # a flange: (radius, height) up the outside, a bore of radius 0.25 through it
 FLANGE = [(0.25, 0.0), (1.0, 0.0), (1.0, 0.2), (0.5, 0.2), (0.5, 0.9), (0.25, 0.9), (0.25, 0.0)]
 
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
 
 def plate_with_hole(segments: int = 48):
@@ -57,10 +48,8 @@ def main() -> None:
     before = [tm.render(f, normals="smooth", camera=tm.Camera.fit((0.35, 0.3, 1.0)), up="y", **look).color
               for f in files]
     after = [tm.render(f, **look).color for f in files]
-    before = [label(image, f"before: {name}") for image, name in zip(before, files)]
-    after = [label(image, f"defaults: {name}") for image, name in zip(after, files)]
-    figure = np.concatenate([np.concatenate(before, axis=1), np.concatenate(after, axis=1)], axis=0)
-    Image.fromarray(np.ascontiguousarray(figure)).save("cad_files.png", optimize=True)
+    labels = [f"before: {name}" for name in files] + [f"defaults: {name}" for name in files]
+    Image.fromarray(panels(before + after, labels, columns=3)).save("cad_files.png", optimize=True)
 
 
 if __name__ == "__main__":

@@ -14,23 +14,14 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny
+from toonmesh.figures import panels
 
 SIZE = 360
 
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 3 or 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
 
 def can_scene(path: Path) -> None:
@@ -72,8 +63,7 @@ def main() -> None:
         cans = tm.load(path)
     scene = tm.render(cans, material=tm.Material.bands("#ffffff"), outlines=tm.Outlines("mesh", material="#2040a0"),
                       camera=tm.Camera.fit((0.2, 0.6, 1.0), margin=0.9), **kw).color
-    panels = [(bunny_image, "vertex_colors"), (textured, "uv + texture"), (scene, "tm.load(\"cans.glb\")")]
-    row = np.concatenate([label(image, text) for image, text in panels], axis=1)
+    row = panels([bunny_image, textured, scene], ["vertex_colors", "uv + texture", 'tm.load("cans.glb")'])
     out = Path("colour.png")
     Image.fromarray(row).save(out, optimize=True)
     print("wrote", out)

@@ -18,6 +18,7 @@ from PIL import Image, ImageDraw, ImageFont
 
 import toonmesh as tm
 from toonmesh.data import cow, fandisk
+from toonmesh.figures import panels
 
 TILE, COLUMNS = 150, 6
 FONT = ImageFont.load_default(size=12)
@@ -66,23 +67,17 @@ def write_files() -> list:
 
 
 def main() -> None:
-    tiles, refused = [], []
+    tiles, names, refused = [], [], []
     for name in write_files():
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # each file's warnings are its own business here
             try:
                 tm.load(name)
-                image = Image.fromarray(tm.render(name, width=TILE, height=TILE, supersample=2).color)
+                tiles.append(tm.render(name, width=TILE, height=TILE, supersample=2).color)
+                names.append(name)
             except (ValueError, ImportError) as exc:
                 refused.append(str(exc))
-                continue
-            image = image.convert("RGB")
-        ImageDraw.Draw(image).text((4, TILE - 16), name[:24], fill=(0, 0, 0), font=FONT)
-        tiles.append(np.asarray(image))
-    rows = -(-len(tiles) // COLUMNS)
-    blank = np.full((TILE, TILE, 3), 255, np.uint8)
-    tiles += [blank] * (rows * COLUMNS - len(tiles))
-    grid = np.concatenate([np.concatenate(tiles[r * COLUMNS:(r + 1) * COLUMNS], axis=1) for r in range(rows)])
+    grid = panels(tiles, names, columns=COLUMNS)
     notes = Image.new("RGB", (grid.shape[1], 16 * len(refused) + 8), "white")
     draw = ImageDraw.Draw(notes)
     for k, line in enumerate(refused):

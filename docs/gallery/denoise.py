@@ -12,13 +12,13 @@ from pathlib import Path
 
 import numpy as np
 import pymeshlab
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import fandisk
+from toonmesh.figures import panels
 
 SIZE = 320
-FONT = ImageFont.load_default(size=14)
 
 
 def face_normals(V: np.ndarray, F: np.ndarray) -> np.ndarray:
@@ -52,7 +52,7 @@ def two_step(V: np.ndarray, F: np.ndarray) -> np.ndarray:
 def main() -> None:
     V, F = fandisk()
     N = noisy(V, F, 0.4, seed=1)
-    panels = {
+    smoothed = {
         "clean": V,
         "noisy": N,
         "taubin": tm.smooth.taubin(N, F),
@@ -62,18 +62,13 @@ def main() -> None:
     }
     camera = tm.Camera.fit((-0.6, 0.5, 1.0))
     light = [tm.Light.directional((0.5, -0.6, -1.0))]
-    images = []
-    for label, X in panels.items():
-        img = tm.render(X, F, camera=camera, lights=light, outlines="mesh", width=SIZE, height=SIZE,
-                        supersample=2).color
-        pil = Image.fromarray(img)
-        if label != "clean":
-            label += f": {normal_error(X, F, V):.1f} deg"
-        ImageDraw.Draw(pil).text((8, 8), label, fill=(0, 0, 0, 255), font=FONT)
-        images.append(np.asarray(pil))
+    images, labels = [], []
+    for label, X in smoothed.items():
+        images.append(tm.render(X, F, camera=camera, lights=light, outlines="mesh", width=SIZE, height=SIZE,
+                                supersample=2).color)
+        labels.append(label if label == "clean" else f"{label}: {normal_error(X, F, V):.1f} deg")
     out = Path("denoise.png")
-    grid = np.concatenate([np.concatenate(images[:3], axis=1), np.concatenate(images[3:], axis=1)], axis=0)
-    Image.fromarray(grid).save(out, optimize=True)
+    Image.fromarray(panels(images, labels, columns=3)).save(out, optimize=True)
     print("wrote", out)
 
 

@@ -13,23 +13,14 @@ band borders show as the renderer draws them.
 from pathlib import Path
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny, cow
+from toonmesh.figures import panels
 
 SIZE = 300
 
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
 
 def torus_over_floor():
@@ -45,7 +36,7 @@ def main() -> None:
     Vs, Fs = cow()
     (Vt, Ft), direction, eye = torus_over_floor(), (0.5, -2.0, 0.3), (0.3, 1.5, 1.2)
     light = [tm.Light.directional((0.6, -0.5, -1.0))]
-    rows = []
+    images, labels = [], []
     for before in (True, False):
         kw = dict(width=SIZE, height=SIZE, outlines="mesh", band_antialias=not before)
         bands = tm.Material.bands("#f08a3c", preset="paper" if before else None)
@@ -61,9 +52,10 @@ def main() -> None:
         ]
         names = ["bands", "hatching", "bands", "hatching", "shadows"]
         when = "before" if before else "defaults"
-        rows.append(np.concatenate([label(c, f"{when}: {n}") for c, n in zip(cells, names)], axis=1))
+        images += cells
+        labels += [f"{when}: {name}" for name in names]
     out = Path("effects.png")
-    Image.fromarray(np.concatenate(rows, axis=0)).save(out, optimize=True)
+    Image.fromarray(panels(images, labels, columns=5)).save(out, optimize=True)
     print("wrote", out)
 
 

@@ -14,10 +14,11 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny
+from toonmesh.figures import panels
 
 
 def slab(lo, hi):
@@ -27,16 +28,6 @@ def slab(lo, hi):
                   [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
     return V, F
 
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
 
 def glass_case(width: int) -> tm.RenderResult:
@@ -65,8 +56,8 @@ def main(folder: Path, width: int = 720) -> None:
     half = width // 2
     left, right = glass_case(half), scan(half)
     folder.mkdir(parents=True, exist_ok=True)
-    panels = [label(left.color, "glass: Material.bands(opacity=0.3)"), label(right.color, "tm.Points + tm.EyeDome()")]
-    Image.fromarray(np.hstack(panels)).save(folder / "glass.png")
+    labels = ["glass: Material.bands(opacity=0.3)", "tm.Points + tm.EyeDome()"]
+    Image.fromarray(panels([left.color, right.color], labels)).save(folder / "glass.png")
     print("glass case:", ", ".join(left.passes))
     print("scan:", ", ".join(right.passes))
 

@@ -7,23 +7,14 @@ the curved parts, and auto keeps both right; on the bunny auto is close to smoot
 """
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny, fandisk
+from toonmesh.figures import panels
 
 SIZE = 220
 
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
 
 def box():
@@ -39,14 +30,13 @@ def main() -> None:
         (fandisk(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (bunny(), tm.Camera.fit((0.35, 0.3, 1.0)), "#f08a3c"),
     ]
-    rows = []
+    images, labels = [], []
     for normals in ("smooth", "flat", "auto"):
-        row = [label(tm.render(V, F, normals=normals, camera=camera, material=tm.Material.bands(colour), width=SIZE,
-                               height=SIZE, supersample=2).color, f'normals="{normals}"')
-               for (V, F), camera, colour in models]
-        rows.append(np.concatenate(row, axis=1))
-    figure = np.ascontiguousarray(np.concatenate(rows, axis=0))
-    Image.fromarray(figure).save("normals.png", optimize=True)
+        for (V, F), camera, colour in models:
+            images.append(tm.render(V, F, normals=normals, camera=camera, material=tm.Material.bands(colour),
+                                    width=SIZE, height=SIZE, supersample=2).color)
+            labels.append(f'normals="{normals}"')
+    Image.fromarray(panels(images, labels, columns=len(models))).save("normals.png", optimize=True)
 
 
 if __name__ == "__main__":

@@ -8,26 +8,18 @@ line drawing alone (the ``outline`` output). Bottom row: the same for the smooth
 """
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny, fandisk
+from toonmesh.figures import panels
 
 SIZE = 360
 
 
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
-
-def panels(V, F, material, camera, crease_angle):
+def row(V, F, material, camera, crease_angle):
+    """The model with mesh outlines, with image outlines, and its ink alone."""
     mesh = tm.Outlines("mesh", crease_angle=crease_angle, ridge="#202060", valley="#a02020", width=1.8)
     image = tm.Outlines("image", width=1.8)
     kw = dict(material=material, camera=camera, width=SIZE, height=SIZE, supersample=2)
@@ -36,18 +28,18 @@ def panels(V, F, material, camera, crease_angle):
     ink = tm.render(V, F, outlines=tm.Outlines("both", crease_angle=crease_angle, width=1.8),
                     outputs="outline", **kw).outline
     c = np.dstack([np.repeat(((1 - ink) * 255).astype(np.uint8)[..., None], 3, axis=2), np.full(ink.shape, 255, np.uint8)])
-    labels = ('Outlines("mesh")', 'Outlines("image")', 'Outlines("both"): outputs="outline"')
-    return np.concatenate([label(x, t) for x, t in zip((a, b, c), labels)], axis=1)
+    return [a, b, c]
 
 
 def main() -> None:
     V1, F1 = fandisk()
     V2, F2 = bunny()
     V2 = tm.smooth.laplacian(V2, F2, iterations=5, preset="paper")
-    top = panels(V1, F1, tm.Material.bands("#8fb8de"), tm.Camera.fit((0.6, 0.5, 1.0)), 40.0)
-    bottom = panels(V2, F2, tm.Material.thresholded_phong("#f08a3c", t_h=0.1, t_s=0.9), tm.Camera.fit((0.35, 0.3, 1.0)), 60.0)
-    figure = np.ascontiguousarray(np.concatenate([top, bottom], axis=0))
-    Image.fromarray(figure).save("outlines.png", optimize=True)
+    top = row(V1, F1, tm.Material.bands("#8fb8de"), tm.Camera.fit((0.6, 0.5, 1.0)), 40.0)
+    toon = tm.Material.thresholded_phong("#f08a3c", t_h=0.1, t_s=0.9)
+    bottom = row(V2, F2, toon, tm.Camera.fit((0.35, 0.3, 1.0)), 60.0)
+    labels = ['Outlines("mesh")', 'Outlines("image")', 'Outlines("both"): outputs="outline"'] * 2
+    Image.fromarray(panels(top + bottom, labels, columns=3)).save("outlines.png", optimize=True)
 
 
 if __name__ == "__main__":

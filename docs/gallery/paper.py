@@ -10,24 +10,15 @@ weave made here with NumPy).
 from pathlib import Path
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny
+from toonmesh.figures import panels
 
 SIZE = 260
 LABELS = ["no paper", "Paper()", "hatching, strength=0.9", 'Paper(space="surface")', "Paper(canvas())"]
 
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
 
 def canvas(n: int = 32) -> np.ndarray:
@@ -50,8 +41,7 @@ def main() -> None:
         tm.render(V, F, material=bands, paper=tm.Paper(canvas(), strength=0.5, scale=1.0), **kw).color,
     ]
     out = Path("paper.png")
-    figure = np.concatenate([label(c, t) for c, t in zip(cells, LABELS)], axis=1)
-    Image.fromarray(figure).save(out, optimize=True)
+    Image.fromarray(panels(cells, LABELS)).save(out, optimize=True)
     print("wrote", out)
 
 

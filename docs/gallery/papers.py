@@ -11,24 +11,15 @@ their pipeline, the normal and depth buffers, the edges found by Sobel on them
 """
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh import edges
 from toonmesh.data import bunny
+from toonmesh.figures import panels
 
 SIZE = 200
 
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 3 or 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
 
 V, F = bunny()
@@ -72,9 +63,7 @@ composite[found.mask] = 0
 row3 = [(np.where(inside[..., None], (first.normal + 1) / 2, 1.0) * 255).astype(np.uint8),
         gray(np.where(inside, 0.2 + 0.8 * np.nan_to_num(depth), 1.0)), gray(~found.mask), composite]
 
-labels = (["Al-Rousan: raw", "3 iterations", "5 iterations", "10 iterations"],
-          ["Kang: torus", "pawn", "teapot", "sphere"],
-          ["Borquez: normals", "depth", "Sobel edges", "composite"])
-rows = [np.concatenate([label(np.ascontiguousarray(im[..., :3]), text) for im, text in zip(row, names)], axis=1)
-        for row, names in zip((row1, row2, row3), labels)]
-Image.fromarray(np.concatenate(rows, axis=0)).save("papers.png", optimize=True)
+labels = ["Al-Rousan: raw", "3 iterations", "5 iterations", "10 iterations",
+          "Kang: torus", "pawn", "teapot", "sphere",
+          "Borquez: normals", "depth", "Sobel edges", "composite"]
+Image.fromarray(panels(row1 + row2 + row3, labels, columns=4)).save("papers.png", optimize=True)

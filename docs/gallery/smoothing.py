@@ -8,23 +8,14 @@ pipeline: 5 iterations of the plain neighbour mean (``preset="paper"``).
 """
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny
+from toonmesh.figures import panels
 
 SIZE = 200
 
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
 
 sphere = tm.shapes.icosphere(4, noise=0.03, seed=0)
@@ -37,9 +28,8 @@ methods = {
     "implicit": lambda V, F: tm.smooth.implicit(V, F, step=5.0),
     "paper preset, 5": lambda V, F: tm.smooth.laplacian(V, F, iterations=5, preset="paper"),
 }
-rows = []
+images, labels = [], []
 for (V, F), camera in ((sphere, tm.Camera.fit((0.5, 0.4, 1.0))), (scan, tm.Camera.fit((0.35, 0.3, 1.0)))):
-    row = []
     for name, smooth in methods.items():
         X = smooth(V, F)
         r = tm.render(X, F, camera=camera, material=tm.Material.bands("#f08a3c"), outlines="mesh",
@@ -47,6 +37,6 @@ for (V, F), camera in ((sphere, tm.Camera.fit((0.5, 0.4, 1.0))), (scan, tm.Camer
         text = name
         if V is sphere[0]:
             text += f"  rms {np.sqrt(np.mean((np.linalg.norm(X, axis=1) - 1) ** 2)):.4f}"
-        row.append(label(r.color, text))
-    rows.append(np.concatenate(row, axis=1))
-Image.fromarray(np.concatenate(rows, axis=0)).save("smoothing.png", optimize=True)
+        images.append(r.color)
+        labels.append(text)
+Image.fromarray(panels(images, labels, columns=len(methods))).save("smoothing.png", optimize=True)

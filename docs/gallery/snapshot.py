@@ -12,7 +12,9 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
+
+from toonmesh.figures import panels
 
 TEST = '''
 import toonmesh as tm
@@ -24,16 +26,6 @@ def test_bunny(toon_snapshot):
     V, F = tm.shapes.icosphere(3, noise=0.02, seed=1)
     toon_snapshot(tm.render(V, F, material=tm.Material.bands(COLOUR), outlines="mesh", width=160, height=160))
 '''
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 3 or 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
 
 folder = Path("snapshot_tests")
@@ -48,5 +40,5 @@ print(failed.stdout.splitlines()[-1])
 shots = folder / "__snapshots__"
 print(sorted(p.name for p in shots.iterdir()))
 names = {"test_bunny.png": "reference", "test_bunny.actual.png": "actual", "test_bunny.diff.png": "difference"}
-strip = [label(np.asarray(Image.open(shots / name).convert("RGB")), text) for name, text in names.items()]
-Image.fromarray(np.concatenate(strip, axis=1)).save("snapshot.png")
+strip = [np.asarray(Image.open(shots / name).convert("RGB")) for name in names]
+Image.fromarray(panels(strip, list(names.values()))).save("snapshot.png")

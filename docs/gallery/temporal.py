@@ -15,10 +15,11 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny
+from toonmesh.figures import panels
 from toonmesh.testing import temporal_popping
 
 START, STEPS = 60, 20
@@ -33,18 +34,9 @@ def turntable(V: np.ndarray, steps: int) -> list:
     return [tm.Camera.look_at(tuple(eye), target=tuple(centre), up=(0, 1, 0), fov_y=40.0) for eye in eyes]
 
 
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 3) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
 
-
-def panel(renderer: tm.Renderer, mesh: tm.MeshHandle, cameras: list, coherence: bool, size: int) -> np.ndarray:
+def panel(renderer: tm.Renderer, mesh: tm.MeshHandle, cameras: list, coherence: bool, size: int) -> tuple:
+    """The first frame with the popping ink in red, at ``size`` pixels, and its label."""
     outlines = tm.Outlines("mesh", suggestive=True, suggestive_coherence=coherence)
     stack = renderer.render_many(mesh, cameras, width=512, height=512, outlines=outlines,
                                  material=tm.Material.bands("#e9e4da"), background="#ffffff",
@@ -65,7 +57,7 @@ def panel(renderer: tm.Renderer, mesh: tm.MeshHandle, cameras: list, coherence: 
         grown[:, :-1] |= grown[:, 1:].copy()
     image[grown] = (230, 20, 20)
     image = np.asarray(Image.fromarray(image).resize((size, size), Image.LANCZOS))
-    return label(image, f"suggestive_coherence={coherence}: {100 * popping.share:.3f}% pops")
+    return image, f"suggestive_coherence={coherence}: {100 * popping.share:.3f}% pops"
 
 
 def main(folder: Path, width: int = 720) -> None:
@@ -75,8 +67,8 @@ def main(folder: Path, width: int = 720) -> None:
     mesh = renderer.add_mesh(V, F)
     half = width // 2
     folder.mkdir(parents=True, exist_ok=True)
-    left, right = (panel(renderer, mesh, cameras, c, half) for c in (False, True))
-    Image.fromarray(np.hstack([left, right])).save(folder / "temporal.png")
+    (left, off), (right, on) = (panel(renderer, mesh, cameras, c, half) for c in (False, True))
+    Image.fromarray(panels([left, right], [off, on])).save(folder / "temporal.png")
 
 
 if __name__ == "__main__":

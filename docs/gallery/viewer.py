@@ -7,30 +7,22 @@ strip shows the frames it drew.
 """
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    """``image`` (H, W, 3 or 4) uint8 with ``text`` on a white box at its top left."""
-    pil = Image.fromarray(image)
-    draw = ImageDraw.Draw(pil)
-    font = ImageFont.load_default(size=13)
-    box = draw.textbbox((6, 4), text, font=font)
-    draw.rectangle((box[0] - 3, box[1] - 2, box[2] + 3, box[3] + 2), fill="white")
-    draw.text((6, 4), text, font=font, fill="black")
-    return np.asarray(pil)
+from toonmesh.figures import panels
 
 
 V, F = bunny()
 v = tm.Viewer(V, F, outlines="mesh", width=256, height=256)
-frames = [label(v.frame, "start")]
+frames = [v.frame]
 v.orbit(120, -20)                          # as a drag of 120 pixels right, 20 up
-frames.append(label(v.frame, "orbit(120, -20)"))
+frames.append(v.frame)
 v.zoom(1.6)
-frames.append(label(v.frame, "zoom(1.6)"))
+frames.append(v.frame)
 v.material = tm.Material.hatching()        # every setting re-renders when set
-frames.append(label(v.frame, "material = hatching"))
+frames.append(v.frame)
 print(v.code())
-Image.fromarray(np.concatenate(frames, axis=1)).save("viewer_frames.png", optimize=True)
+labels = ["start", "orbit(120, -20)", "zoom(1.6)", "material = hatching"]
+Image.fromarray(panels(frames, labels)).save("viewer_frames.png", optimize=True)
