@@ -23,7 +23,6 @@ SIZE = 260
 FLANGE = [(0.25, 0.0), (1.0, 0.0), (1.0, 0.2), (0.5, 0.2), (0.5, 0.9), (0.25, 0.9), (0.25, 0.0)]
 
 
-
 def plate_with_hole(segments: int = 48):
     """A square plate 2 wide and 0.4 thick with a round hole through it, z up."""
     a = np.linspace(0, 2 * np.pi, segments, endpoint=False)

@@ -23,7 +23,6 @@ from toonmesh.figures import panels
 SIZE = 360
 
 
-
 def can_scene(path: Path) -> None:
     """Three cans (side and lids as parts with their own base colours) written as a GLB."""
     can = trimesh.creation.cylinder(radius=0.5, height=1.2, sections=48)

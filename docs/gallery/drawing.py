@@ -22,14 +22,6 @@ import toonmesh as tm
 PAPER = tm.Material.bands("#ffffff", thresholds=(2.0,), values=(1.0, 1.0))
 
 
-def slab(lo, hi):
-    """A box from corner ``lo`` to corner ``hi``, faces wound outward."""
-    V = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])], float)
-    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
-                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
-    return V, F
-
-
 def pipe(axis, radius, half_length, sections=96):
     """A capped cylinder along ``axis`` (0, 1 or 2: x, y or z) through the origin."""
     profile = [(0, -half_length), (radius, -half_length), (radius, half_length), (0, half_length)]
@@ -46,8 +38,8 @@ def part(mesh, name, offset=(0, 0, 0)):
 def assembly():
     """The parts, in millimetres, y up: plate, bearing block, shaft, pulley and two pins."""
     return [
-        part(slab((-70, 0, -40), (70, 10, 40)), "plate"),
-        part(slab((-22, 10, -22), (22, 56, 22)), "block"),
+        part(tm.shapes.box((-70, 0, -40), (70, 10, 40)), "plate"),
+        part(tm.shapes.box((-22, 10, -22), (22, 56, 22)), "block"),
         part(pipe(0, radius=8, half_length=55), "shaft", (0, 36, 0)),    # along x, through the block
         part(pipe(0, radius=22, half_length=4), "pulley", (48, 36, 0)),  # on the shaft's end
         part(pipe(1, radius=5, half_length=12, sections=48), "pin", (-50, 5, 22)),  # along y, through the plate

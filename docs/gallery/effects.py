@@ -22,7 +22,6 @@ from toonmesh.figures import panels
 SIZE = 300
 
 
-
 def torus_over_floor():
     """A torus 0.8 above a square floor 6 wide: the scene as one mesh."""
     V, F = tm.shapes.torus(1.0, 0.35, 48, 24)

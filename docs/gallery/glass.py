@@ -13,7 +13,6 @@ WIDTH pixels (the README's copy: ``docs 520``).
 import sys
 from pathlib import Path
 
-import numpy as np
 from PIL import Image
 
 import toonmesh as tm
@@ -21,20 +20,11 @@ from toonmesh.data import bunny
 from toonmesh.figures import panels
 
 
-def slab(lo, hi):
-    """A box from corner ``lo`` to corner ``hi``, faces wound outward."""
-    V = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])], float)
-    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
-                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
-    return V, F
-
-
-
 def glass_case(width: int) -> tm.RenderResult:
     V, F = bunny()
     lo, hi = V.min(axis=0), V.max(axis=0)
     pad = 0.12 * (hi - lo).max()
-    case = tm.Mesh(*slab(tuple(lo - pad), tuple(hi + pad)), name="case",
+    case = tm.Mesh(*tm.shapes.box(lo - pad, hi + pad), name="case",
                    material=tm.Material.bands("#9cc8ff", opacity=0.3))
     model = tm.Mesh(V, F, name="bunny", material=tm.Material.bands("#f08a4b"))
     camera = tm.Camera.fit((0.9, 0.5, 1.4), margin=1.05)

@@ -6,7 +6,6 @@ Smooth shading bends the bands across the box's edges and the pawn's rims, flat 
 the curved parts, and auto keeps both right; on the bunny auto is close to smooth.
 """
 
-import numpy as np
 from PIL import Image
 
 import toonmesh as tm
@@ -16,16 +15,9 @@ from toonmesh.figures import panels
 SIZE = 220
 
 
-
-def box():
-    V = np.array([[i & 1, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)], float) - 0.5
-    quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
-    return V, np.array([t for q in quads for t in ([q[0], q[1], q[2]], [q[0], q[2], q[3]])])
-
-
 def main() -> None:
     models = [
-        (box(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
+        (tm.shapes.box(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (tm.shapes.pawn(48), tm.Camera.fit((0.0, 0.35, 1.0)), "#e8c07a"),
         (fandisk(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (bunny(), tm.Camera.fit((0.35, 0.3, 1.0)), "#f08a3c"),

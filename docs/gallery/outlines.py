@@ -17,7 +17,6 @@ from toonmesh.figures import panels
 SIZE = 360
 
 
-
 def row(V, F, material, camera, crease_angle):
     """The model with mesh outlines, with image outlines, and its ink alone."""
     mesh = tm.Outlines("mesh", crease_angle=crease_angle, ridge="#202060", valley="#a02020", width=1.8)

@@ -20,7 +20,6 @@ SIZE = 260
 LABELS = ["no paper", "Paper()", "hatching, strength=0.9", 'Paper(space="surface")', "Paper(canvas())"]
 
 
-
 def canvas(n: int = 32) -> np.ndarray:
     """A canvas weave: over-and-under threads, as an (n, n) grey image in [0, 1]."""
     t = np.linspace(0, 4 * np.pi, n, endpoint=False)

@@ -21,7 +21,6 @@ from toonmesh.figures import panels
 SIZE = 200
 
 
-
 V, F = bunny()
 camera = tm.Camera.fit((0.35, 0.3, 1.0))
 

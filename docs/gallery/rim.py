@@ -9,7 +9,6 @@ as rim light is usually shown.
 
 from pathlib import Path
 
-import numpy as np
 from PIL import Image
 
 import toonmesh as tm
@@ -18,7 +17,6 @@ from toonmesh.figures import panels
 
 SIZE = 260
 LABELS = ["no rim", "Rim()", 'Rim(side="lit")', 'Rim(side="shadowed")', "hatching + Rim"]
-
 
 
 def main() -> None:

@@ -17,7 +17,6 @@ from toonmesh.figures import panels
 SIZE = 200
 
 
-
 sphere = tm.shapes.icosphere(4, noise=0.03, seed=0)
 scan = bunny()
 methods = {

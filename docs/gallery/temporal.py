@@ -34,7 +34,6 @@ def turntable(V: np.ndarray, steps: int) -> list:
     return [tm.Camera.look_at(tuple(eye), target=tuple(centre), up=(0, 1, 0), fov_y=40.0) for eye in eyes]
 
 
-
 def panel(renderer: tm.Renderer, mesh: tm.MeshHandle, cameras: list, coherence: bool, size: int) -> tuple:
     """The first frame with the popping ink in red, at ``size`` pixels, and its label."""
     outlines = tm.Outlines("mesh", suggestive=True, suggestive_coherence=coherence)

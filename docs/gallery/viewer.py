@@ -6,7 +6,6 @@ the material to hatching, and prints the ``tm.render`` call that reproduces the 
 strip shows the frames it drew.
 """
 
-import numpy as np
 from PIL import Image
 
 import toonmesh as tm
