@@ -20,14 +20,15 @@ from toonmesh.data import cow
 WHITE = tm.Material.bands("#ffffff", thresholds=(2.0,), values=(1.0, 1.0))  # one band: only the ink shows
 
 
-def standing(mesh, height, x, z, turn=0.0):
-    """``mesh`` scaled to ``height``, turned ``turn`` degrees about y and stood on y = 0 at (x, z)."""
+def placed(mesh, height, x, z, name):
+    """``mesh`` as a scene item scaled to ``height`` and stood on the table at (x, z) by its
+    ``transform`` (the arrays stay as they are: one upload however it is placed)."""
     V, F = mesh
-    V = (V - V.min(axis=0)) * (height / np.ptp(V[:, 1]))
-    V -= [0.5 * V[:, 0].max(), 0.0, 0.5 * V[:, 2].max()]
-    a = np.radians(turn)
-    V = V @ np.array([[np.cos(a), 0, -np.sin(a)], [0, 1, 0], [np.sin(a), 0, np.cos(a)]])
-    return V + [x, 0.0, z], F
+    lo, hi = V.min(axis=0), V.max(axis=0)
+    s = height / (hi[1] - lo[1])
+    transform = np.diag([s, s, s, 1.0])
+    transform[:3, 3] = [x - s * (lo[0] + hi[0]) / 2, -s * lo[1], z - s * (lo[2] + hi[2]) / 2]
+    return tm.Mesh(V, F, transform=transform, name=name)
 
 
 def pen_up_travel(svg: str) -> float:
@@ -45,10 +46,10 @@ def main() -> None:
     floor = np.array([[-4.0, 0, -3], [4, 0, -3], [4, 0, 9], [-4, 0, 9]]), np.array([[0, 2, 1], [0, 3, 2]])
     scene = [
         tm.Mesh(*floor, name="table"),
-        tm.Mesh(*standing(tm.shapes.teapot(10), 1.6, -0.5, -0.5, turn=-30), name="teapot"),
-        tm.Mesh(*standing(cow(), 1.3, 1.7, 0.1, turn=-35), name="cow"),
-        tm.Mesh(*standing(tm.shapes.pawn(48), 1.3, 0.3, 1.3), name="pawn"),
-        tm.Mesh(*standing(tm.shapes.torus(0.7, 0.28, 64, 32), 0.5, -1.6, 1.1), name="torus"),
+        placed(tm.shapes.teapot(10), 1.6, -0.5, -0.5, "teapot"),
+        placed(cow(), 1.3, 1.7, 0.1, "cow"),
+        placed(tm.shapes.pawn(48), 1.3, 0.3, 1.3, "pawn"),
+        placed(tm.shapes.torus(0.7, 0.28, 64, 32), 0.5, -1.6, 1.1, "torus"),
     ]
     outlines = tm.Outlines("mesh", width=1.4, suggestive=tm.LineStyle(color="#2f5fa8", width=1.0))
     camera = tm.Camera.look_at((0.9, 3.2, 6.4), target=(0.1, 0.55, 0.35), up=(0, 1, 0), fov_y=38.0)
