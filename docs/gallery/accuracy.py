@@ -45,9 +45,19 @@ for name, smooth in methods.items():
         X, ms = timed(lambda: smooth(n))
         points.append((ms, np.sqrt(np.mean((np.linalg.norm(X, axis=1) - 1) ** 2))))
     left.plot(*zip(*points), "o-", label=name)
-left.axhline(np.sqrt(np.mean((np.linalg.norm(V, axis=1) - 1) ** 2)), color="gray", ls=":", label="input")
-left.set(xscale="log", yscale="log", xlabel="time (ms)", ylabel="RMS error of the radius",
-         title="smoothing: 1, 3, 10, 30 iterations")
+left.axhline(
+    np.sqrt(np.mean((np.linalg.norm(V, axis=1) - 1) ** 2)),
+    color="gray",
+    ls=":",
+    label="input",
+)
+left.set(
+    xscale="log",
+    yscale="log",
+    xlabel="time (ms)",
+    ylabel="RMS error of the radius",
+    title="smoothing: 1, 3, 10, 30 iterations",
+)
 left.legend(fontsize=8)
 
 B, G = bunny()
@@ -69,8 +79,14 @@ for name, knob in knobs.items():
     r, ms = timed(lambda: renderer.render(mesh, **size, **knob))
     error = np.abs(r.color.astype(float) - reference).mean()
     right.plot(ms, error, "o")
-    right.annotate(name, (ms, error), fontsize=8, xytext=(4, 4), textcoords="offset points")
-right.set(xlabel="frame time (ms)", ylabel="mean difference to 4x supersampling (0-255)",
-          title="rendering: accuracy knobs, 256x256", yscale="log")
+    right.annotate(
+        name, (ms, error), fontsize=8, xytext=(4, 4), textcoords="offset points"
+    )
+right.set(
+    xlabel="frame time (ms)",
+    ylabel="mean difference to 4x supersampling (0-255)",
+    title="rendering: accuracy knobs, 256x256",
+    yscale="log",
+)
 fig.tight_layout()
 fig.savefig("accuracy.png", dpi=90)

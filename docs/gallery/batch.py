@@ -17,7 +17,6 @@ import toonmesh as tm
 from toonmesh.batch import render_files
 from toonmesh.figures import panels
 
-
 if __name__ == "__main__":
     os.makedirs("meshes", exist_ok=True)
     paths = []
@@ -26,11 +25,25 @@ if __name__ == "__main__":
         paths.append(f"meshes/blob{seed}.ply")
         trimesh.Trimesh(V, F, process=False).export(paths[-1])
 
-    with LocalCluster(n_workers=2, threads_per_worker=1) as cluster, Client(cluster) as client:
-        rows = render_files(paths, "frames", views=4, client=client, up="y", width=160, height=160,
-                            material=tm.Material.thresholded_phong("#3c8af0"), outlines="mesh")
+    with (
+        LocalCluster(n_workers=2, threads_per_worker=1) as cluster,
+        Client(cluster) as client,
+    ):
+        rows = render_files(
+            paths,
+            "frames",
+            views=4,
+            client=client,
+            up="y",
+            width=160,
+            height=160,
+            material=tm.Material.thresholded_phong("#3c8af0"),
+            outlines="mesh",
+        )
     print(len(rows), "images, on workers", sorted({row["worker"] for row in rows}))
-    ordered = sorted(rows, key=lambda row: (paths.index(row["mesh"]), row["path"]))  # one row a mesh
+    ordered = sorted(
+        rows, key=lambda row: (paths.index(row["mesh"]), row["path"])
+    )  # one row a mesh
     images = [np.asarray(Image.open(row["path"])) for row in ordered]
     labels = [os.path.basename(row["path"]) for row in ordered]
     Image.fromarray(panels(images, labels, columns=4)).save("batch.png")

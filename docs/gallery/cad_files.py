@@ -20,7 +20,15 @@ from toonmesh.figures import panels
 
 SIZE = 260
 # a flange: (radius, height) up the outside, a bore of radius 0.25 through it
-FLANGE = [(0.25, 0.0), (1.0, 0.0), (1.0, 0.2), (0.5, 0.2), (0.5, 0.9), (0.25, 0.9), (0.25, 0.0)]
+FLANGE = [
+    (0.25, 0.0),
+    (1.0, 0.0),
+    (1.0, 0.2),
+    (0.5, 0.2),
+    (0.5, 0.9),
+    (0.25, 0.9),
+    (0.25, 0.0),
+]
 
 
 def plate_with_hole(segments: int = 48):
@@ -28,27 +36,57 @@ def plate_with_hole(segments: int = 48):
     a = np.linspace(0, 2 * np.pi, segments, endpoint=False)
     ring = np.c_[np.cos(a), np.sin(a)]
     square = ring / np.abs(ring).max(axis=1, keepdims=True)
-    V = np.vstack([np.c_[r, np.full(segments, z)] for z in (0.0, 0.4) for r in (square, 0.5 * ring)])
+    V = np.vstack(
+        [np.c_[r, np.full(segments, z)] for z in (0.0, 0.4) for r in (square, 0.5 * ring)]
+    )
     ob, ib, ot, it = (np.arange(segments) + k * segments for k in range(4))
     F = []
     for i in range(segments):
         j = (i + 1) % segments
-        F += [[ot[i], it[i], it[j]], [ot[i], it[j], ot[j]], [ob[i], ib[j], ib[i]], [ob[i], ob[j], ib[j]]]
-        F += [[ob[i], ot[j], ot[i]], [ob[i], ob[j], ot[j]], [ib[i], it[i], it[j]], [ib[i], it[j], ib[j]]]
+        F += [
+            [ot[i], it[i], it[j]],
+            [ot[i], it[j], ot[j]],
+            [ob[i], ib[j], ib[i]],
+            [ob[i], ob[j], ib[j]],
+        ]
+        F += [
+            [ob[i], ot[j], ot[i]],
+            [ob[i], ob[j], ot[j]],
+            [ib[i], it[i], it[j]],
+            [ib[i], it[j], ib[j]],
+        ]
     return V, np.array(F)
 
 
 def main() -> None:
-    trimesh.Trimesh(*fandisk(), process=False).export("fandisk.obj", include_normals=False)
-    trimesh.Trimesh(*tm.shapes.lathe(FLANGE, 64), process=False).export("flange.obj", include_normals=False)
+    trimesh.Trimesh(*fandisk(), process=False).export(
+        "fandisk.obj", include_normals=False
+    )
+    trimesh.Trimesh(*tm.shapes.lathe(FLANGE, 64), process=False).export(
+        "flange.obj", include_normals=False
+    )
     trimesh.Trimesh(*plate_with_hole(), process=False).export("plate.stl")
     files = ["fandisk.obj", "flange.obj", "plate.stl"]
-    look = dict(material=tm.Material.bands("#8fb8de"), outlines="mesh", width=SIZE, height=SIZE, supersample=2)
-    before = [tm.render(f, normals="smooth", camera=tm.Camera.fit((0.35, 0.3, 1.0)), up="y", **look).color
-              for f in files]
+    look = dict(
+        material=tm.Material.bands("#8fb8de"),
+        outlines="mesh",
+        width=SIZE,
+        height=SIZE,
+        supersample=2,
+    )
+    before = [
+        tm.render(
+            f, normals="smooth", camera=tm.Camera.fit((0.35, 0.3, 1.0)), up="y", **look
+        ).color
+        for f in files
+    ]
     after = [tm.render(f, **look).color for f in files]
-    labels = [f"before: {name}" for name in files] + [f"defaults: {name}" for name in files]
-    Image.fromarray(panels(before + after, labels, columns=3)).save("cad_files.png", optimize=True)
+    labels = [f"before: {name}" for name in files] + [
+        f"defaults: {name}" for name in files
+    ]
+    Image.fromarray(panels(before + after, labels, columns=3)).save(
+        "cad_files.png", optimize=True
+    )
 
 
 if __name__ == "__main__":

@@ -29,16 +29,28 @@ SETTINGS = [
 
 def panel(r, mesh, camera, kw):
     """The drawing as an RGB image (ink over white) and its strokes by kind."""
-    res = r.render(mesh, camera=camera, width=SIZE, height=SIZE, outlines=tm.Outlines("mesh", **kw),
-                   material=PAPER, outputs=("color", "lines"))
+    res = r.render(
+        mesh,
+        camera=camera,
+        width=SIZE,
+        height=SIZE,
+        outlines=tm.Outlines("mesh", **kw),
+        material=PAPER,
+        outputs=("color", "lines"),
+    )
     kinds = {k: sum(1 for x in res.line_kinds if x == k) for k in set(res.line_kinds)}
     return res, kinds
 
 
 def main():
-    rows = [(bunny(), (0.35, 0.3, 1.0), "the raw Stanford bunny"),
-            (tm.shapes.teapot(12), (0.25, 0.5, 1.0), "the teapot"), (cow(), (0.9, 0.3, 1.0), "the cow")]
-    fig, axes = plt.subplots(len(rows), len(SETTINGS), figsize=(7.8, 7.8), dpi=100, layout="constrained")
+    rows = [
+        (bunny(), (0.35, 0.3, 1.0), "the raw Stanford bunny"),
+        (tm.shapes.teapot(12), (0.25, 0.5, 1.0), "the teapot"),
+        (cow(), (0.9, 0.3, 1.0), "the cow"),
+    ]
+    fig, axes = plt.subplots(
+        len(rows), len(SETTINGS), figsize=(7.8, 7.8), dpi=100, layout="constrained"
+    )
     r = tm.Renderer()
     for ((V, F), eye, label), ax_row in zip(rows, axes):
         mesh = r.add_mesh(V, F)

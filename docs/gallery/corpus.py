@@ -52,28 +52,48 @@ def write_files() -> list:
     trimesh.Trimesh(*tm.shapes.pawn(48), process=False).export("pawn.off")
     trimesh.Trimesh(*tm.shapes.teapot(8), process=False).export("teapot.glb")
     scene = trimesh.Scene()
-    scene.add_geometry(trimesh.Trimesh(*tm.shapes.torus(1.0, 0.35, 48, 24)), node_name="ring")
-    scene.add_geometry(trimesh.Trimesh(*tm.shapes.icosphere(3)), node_name="ball",
-                       transform=trimesh.transformations.translation_matrix((0, 0.2, 0)))
+    scene.add_geometry(
+        trimesh.Trimesh(*tm.shapes.torus(1.0, 0.35, 48, 24)), node_name="ring"
+    )
+    scene.add_geometry(
+        trimesh.Trimesh(*tm.shapes.icosphere(3)),
+        node_name="ball",
+        transform=trimesh.transformations.translation_matrix((0, 0.2, 0)),
+    )
     scene.export("ring_and_ball.glb")
     np.savetxt("points.xyz", tm.shapes.icosphere(3)[0])  # positions only: a point cloud
-    texts = {"quads.obj": QUADS, "concave.obj": CONCAVE, "lines.obj": LINES, "CUBE.OBJ": QUADS,
-             "points.obj": "".join(f"v {x} {y} {z}\n" for x, y, z in tm.shapes.uv_sphere(16, 16)[0]),
-             "empty.obj": "", "two_corners.obj": TWO_CORNERS}
+    texts = {
+        "quads.obj": QUADS,
+        "concave.obj": CONCAVE,
+        "lines.obj": LINES,
+        "CUBE.OBJ": QUADS,
+        "points.obj": "".join(
+            f"v {x} {y} {z}\n" for x, y, z in tm.shapes.uv_sphere(16, 16)[0]
+        ),
+        "empty.obj": "",
+        "two_corners.obj": TWO_CORNERS,
+    }
     for name, text in texts.items():
         Path(name).write_text(text)
-    return sorted(p.name for p in Path(".").iterdir() if p.suffix.lower() in
-                  (".obj", ".ply", ".stl", ".off", ".glb", ".xyz"))
+    return sorted(
+        p.name
+        for p in Path(".").iterdir()
+        if p.suffix.lower() in (".obj", ".ply", ".stl", ".off", ".glb", ".xyz")
+    )
 
 
 def main() -> None:
     tiles, names, refused = [], [], []
     for name in write_files():
         with warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # each file's warnings are its own business here
+            warnings.simplefilter(
+                "ignore"
+            )  # each file's warnings are its own business here
             try:
                 tm.load(name)
-                tiles.append(tm.render(name, width=TILE, height=TILE, supersample=2).color)
+                tiles.append(
+                    tm.render(name, width=TILE, height=TILE, supersample=2).color
+                )
                 names.append(name)
             except (ValueError, ImportError) as exc:
                 refused.append(str(exc))

@@ -27,13 +27,17 @@ def face_normals(V: np.ndarray, F: np.ndarray) -> np.ndarray:
 
 
 def noisy(V: np.ndarray, F: np.ndarray, level: float, seed: int) -> np.ndarray:
-    """``V`` moved along its vertex normals by Gaussian noise of ``level`` mean edge lengths."""
+    """``V`` moved along its vertex normals by Gaussian noise of ``level`` mean
+    edge lengths."""
     n = np.zeros_like(V)
     for k in range(3):
         np.add.at(n, F[:, k], np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]]))
     n /= np.linalg.norm(n, axis=1, keepdims=True)
     edge = np.linalg.norm(V[F] - V[np.roll(F, 1, axis=1)], axis=2).mean()
-    return V + level * edge * np.random.default_rng(seed).standard_normal(len(V))[:, None] * n
+    return (
+        V
+        + level * edge * np.random.default_rng(seed).standard_normal(len(V))[:, None] * n
+    )
 
 
 def normal_error(X: np.ndarray, F: np.ndarray, clean: np.ndarray) -> float:
@@ -64,9 +68,21 @@ def main() -> None:
     light = [tm.Light.directional((0.5, -0.6, -1.0))]
     images, labels = [], []
     for label, X in smoothed.items():
-        images.append(tm.render(X, F, camera=camera, lights=light, outlines="mesh", width=SIZE, height=SIZE,
-                                supersample=2).color)
-        labels.append(label if label == "clean" else f"{label}: {normal_error(X, F, V):.1f} deg")
+        images.append(
+            tm.render(
+                X,
+                F,
+                camera=camera,
+                lights=light,
+                outlines="mesh",
+                width=SIZE,
+                height=SIZE,
+                supersample=2,
+            ).color
+        )
+        labels.append(
+            label if label == "clean" else f"{label}: {normal_error(X, F, V):.1f} deg"
+        )
     out = Path("denoise.png")
     Image.fromarray(panels(images, labels, columns=3)).save(out, optimize=True)
     print("wrote", out)

@@ -20,6 +20,7 @@ from matplotlib.collections import LineCollection  # noqa: E402
 import toonmesh as tm  # noqa: E402
 from toonmesh import edges as te  # noqa: E402
 from toonmesh.data import fandisk  # noqa: E402
+
 SIZE = 260
 DISTANCE = 2.6  # eye distance in bounding-sphere radii
 
@@ -79,14 +80,22 @@ def visible_segments(V, edges, eye, R, radius, depth, steps=12):
     if len(edges) == 0:
         return []
     t = np.linspace(0, 1, steps + 1)
-    P = V[edges[:, 0]][:, None] * (1 - t[None, :, None]) + V[edges[:, 1]][:, None] * t[None, :, None]
+    P = (
+        V[edges[:, 0]][:, None] * (1 - t[None, :, None])
+        + V[edges[:, 1]][:, None] * t[None, :, None]
+    )
     x, y, z = project(P.reshape(-1, 3), eye, R, radius)
     x, y, z = x.reshape(P.shape[:2]), y.reshape(P.shape[:2]), z.reshape(P.shape[:2])
     xi = np.clip(x.astype(int), 0, SIZE - 1)
     yi = np.clip(y.astype(int), 0, SIZE - 1)
-    # visible when not behind the farthest surface around it (background counts as infinitely far)
+    # visible when not behind the farthest surface around it
+    # (the background counts as infinitely far)
     far = np.maximum.reduce(
-        [depth[np.clip(yi + dy, 0, SIZE - 1), np.clip(xi + dx, 0, SIZE - 1)] for dy in (-1, 0, 1) for dx in (-1, 0, 1)]
+        [
+            depth[np.clip(yi + dy, 0, SIZE - 1), np.clip(xi + dx, 0, SIZE - 1)]
+            for dy in (-1, 0, 1)
+            for dx in (-1, 0, 1)
+        ]
     )
     ok = z <= far * 1.01
     segs = []
@@ -113,7 +122,9 @@ def panel(ax, mesh, eye_dir, title, crease_angle=30.0, image_space=False):
     ax.imshow(toon(normal, depth), extent=(0, SIZE, SIZE, 0), interpolation="nearest")
     if image_space:
         finite = np.where(np.isinf(depth), np.nan, depth)
-        det = te.detect_edges(normal, depth / np.nanmax(finite), normal_threshold=1.2, depth_threshold=0.2)
+        det = te.detect_edges(
+            normal, depth / np.nanmax(finite), normal_threshold=1.2, depth_threshold=0.2
+        )
         overlay = np.zeros((SIZE, SIZE, 4))
         overlay[det.mask] = (0.05, 0.05, 0.1, 1.0)
         ax.imshow(overlay, extent=(0, SIZE, SIZE, 0), interpolation="nearest")
@@ -128,7 +139,9 @@ def panel(ax, mesh, eye_dir, title, crease_angle=30.0, image_space=False):
         ]
         for edges, colour, label in layers:
             segs = visible_segments(V, edges, eye, R, radius, depth)
-            ax.add_collection(LineCollection(segs, colors=colour, linewidths=1.0, label=label))
+            ax.add_collection(
+                LineCollection(segs, colors=colour, linewidths=1.0, label=label)
+            )
         ax.legend(loc="lower left", fontsize=6, frameon=False, handlelength=1.2)
     ax.set_xlim(0, SIZE)
     ax.set_ylim(SIZE, 0)
@@ -140,8 +153,16 @@ def main():
     fig, axes = plt.subplots(1, 3, figsize=(7.5, 2.8), dpi=100, layout="constrained")
     part, teapot = fandisk(), tm.shapes.teapot()
     panel(axes[0], part, (1.0, 0.8, -1.4), "EdgeIndex: fandisk, crease_angle=30")
-    panel(axes[1], teapot, (0.8, 0.9, 1.5), "EdgeIndex: teapot, crease_angle=60", crease_angle=60.0)
-    panel(axes[2], part, (1.0, 0.8, -1.4), "detect_edges: normal + depth", image_space=True)
+    panel(
+        axes[1],
+        teapot,
+        (0.8, 0.9, 1.5),
+        "EdgeIndex: teapot, crease_angle=60",
+        crease_angle=60.0,
+    )
+    panel(
+        axes[2], part, (1.0, 0.8, -1.4), "detect_edges: normal + depth", image_space=True
+    )
     out = Path("edges.png")
     fig.savefig(out, dpi=100)
     print("wrote", out, out.stat().st_size // 1024, "KB")

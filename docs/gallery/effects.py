@@ -26,7 +26,9 @@ def torus_over_floor():
     """A torus 0.8 above a square floor 6 wide: the scene as one mesh."""
     V, F = tm.shapes.torus(1.0, 0.35, 48, 24)
     floor = np.array([[-3.0, 0, -3], [3, 0, -3], [3, 0, 3], [-3, 0, 3]])
-    return np.vstack([V + (0, 0.8, 0), floor]), np.vstack([F, np.array([[0, 2, 1], [0, 3, 2]]) + len(V)])
+    return np.vstack([V + (0, 0.8, 0), floor]), np.vstack(
+        [F, np.array([[0, 2, 1], [0, 3, 2]]) + len(V)]
+    )
 
 
 def main() -> None:
@@ -44,10 +46,22 @@ def main() -> None:
         cells = [
             tm.render(Vb, Fb, material=bands, lights=light, **kw).color,
             tm.render(Vb, Fb, material=hatching, lights=light, **kw).color,
-            tm.render(Vs, Fs, material=tm.Material.bands("#d8c8f0", preset="paper" if before else None), **side, **kw).color,
+            tm.render(
+                Vs,
+                Fs,
+                material=tm.Material.bands("#d8c8f0", preset="paper" if before else None),
+                **side,
+                **kw,
+            ).color,
             tm.render(Vs, Fs, material=hatching, **side, **kw).color,
-            tm.render(Vt, Ft, material=tm.Material.bands("#e8a040", preset="paper" if before else None),
-                      lights=[tm.Light.directional(direction, shadows=True)], camera=tm.Camera.fit(eye), **kw).color,
+            tm.render(
+                Vt,
+                Ft,
+                material=tm.Material.bands("#e8a040", preset="paper" if before else None),
+                lights=[tm.Light.directional(direction, shadows=True)],
+                camera=tm.Camera.fit(eye),
+                **kw,
+            ).color,
         ]
         names = ["bands", "hatching", "bands", "hatching", "shadows"]
         when = "before" if before else "defaults"

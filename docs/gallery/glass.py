@@ -24,22 +24,40 @@ def glass_case(width: int) -> tm.RenderResult:
     V, F = bunny()
     lo, hi = V.min(axis=0), V.max(axis=0)
     pad = 0.12 * (hi - lo).max()
-    case = tm.Mesh(*tm.shapes.box(lo - pad, hi + pad), name="case",
-                   material=tm.Material.bands("#9cc8ff", opacity=0.3))
+    case = tm.Mesh(
+        *tm.shapes.box(lo - pad, hi + pad),
+        name="case",
+        material=tm.Material.bands("#9cc8ff", opacity=0.3),
+    )
     model = tm.Mesh(V, F, name="bunny", material=tm.Material.bands("#f08a4b"))
     camera = tm.Camera.fit((0.9, 0.5, 1.4), margin=1.05)
-    return tm.render([model, case], camera=camera, width=width, height=width, outlines="mesh",
-                     background="#ffffff", supersample=2)
+    return tm.render(
+        [model, case],
+        camera=camera,
+        width=width,
+        height=width,
+        outlines="mesh",
+        background="#ffffff",
+        supersample=2,
+    )
 
 
 def scan(width: int) -> tm.RenderResult:
     V, _ = bunny()
     cloud = tm.Points(V, name="scan", material=tm.Material.bands("#7fb07a"))
     camera = tm.Camera.fit((0.9, 0.5, 1.4), margin=1.05)
-    # ink where the depth jumps and where normals turn by more than 80 degrees (a scan's
-    # estimated normals are noisy: the default 25 degrees marks its bumps), eye-dome lighting
-    return tm.render(cloud, camera=camera, width=width, height=width, background="#ffffff",
-                     outlines=tm.Outlines("image", normal_angle=80.0), eye_dome=tm.EyeDome())
+    # ink where the depth jumps and where normals turn by more than 80 degrees
+    # (a scan's estimated normals are noisy: the default 25 degrees marks its
+    # bumps), eye-dome lighting
+    return tm.render(
+        cloud,
+        camera=camera,
+        width=width,
+        height=width,
+        background="#ffffff",
+        outlines=tm.Outlines("image", normal_angle=80.0),
+        eye_dome=tm.EyeDome(),
+    )
 
 
 def main(folder: Path, width: int = 720) -> None:

@@ -25,10 +25,22 @@ def main() -> None:
     images, labels = [], []
     for normals in ("smooth", "flat", "auto"):
         for (V, F), camera, colour in models:
-            images.append(tm.render(V, F, normals=normals, camera=camera, material=tm.Material.bands(colour),
-                                    width=SIZE, height=SIZE, supersample=2).color)
+            images.append(
+                tm.render(
+                    V,
+                    F,
+                    normals=normals,
+                    camera=camera,
+                    material=tm.Material.bands(colour),
+                    width=SIZE,
+                    height=SIZE,
+                    supersample=2,
+                ).color
+            )
             labels.append(f'normals="{normals}"')
-    Image.fromarray(panels(images, labels, columns=len(models))).save("normals.png", optimize=True)
+    Image.fromarray(panels(images, labels, columns=len(models))).save(
+        "normals.png", optimize=True
+    )
 
 
 if __name__ == "__main__":

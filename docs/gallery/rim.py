@@ -28,11 +28,30 @@ def main() -> None:
     cells = [
         tm.render(V, F, material=tm.Material.bands(colour), **kw).color,
         tm.render(V, F, material=tm.Material.bands(colour, rim=tm.Rim()), **kw).color,
-        tm.render(V, F, material=tm.Material.bands(colour, rim=tm.Rim(width=0.4, strength=0.8, side="lit")), **kw).color,
-        tm.render(V, F, material=tm.Material.bands(colour, rim=tm.Rim("#5080ff", width=0.4, side="shadowed", blend="mix")),
-                  **kw).color,
-        tm.render(V, F, material=tm.Material.hatching(rim=tm.Rim("#ff9020", width=0.5, softness=0.3, strength=1.0, blend="mix")),
-                  **kw).color,
+        tm.render(
+            V,
+            F,
+            material=tm.Material.bands(
+                colour, rim=tm.Rim(width=0.4, strength=0.8, side="lit")
+            ),
+            **kw,
+        ).color,
+        tm.render(
+            V,
+            F,
+            material=tm.Material.bands(
+                colour, rim=tm.Rim("#5080ff", width=0.4, side="shadowed", blend="mix")
+            ),
+            **kw,
+        ).color,
+        tm.render(
+            V,
+            F,
+            material=tm.Material.hatching(
+                rim=tm.Rim("#ff9020", width=0.5, softness=0.3, strength=1.0, blend="mix")
+            ),
+            **kw,
+        ).color,
     ]
     out = Path("rim.png")
     Image.fromarray(panels(cells, LABELS)).save(out, optimize=True)

@@ -25,17 +25,31 @@ methods = {
     "taubin": lambda V, F: tm.smooth.taubin(V, F, iterations=10),
     "hc": lambda V, F: tm.smooth.hc(V, F, iterations=10),
     "implicit": lambda V, F: tm.smooth.implicit(V, F, step=5.0),
-    "paper preset, 5": lambda V, F: tm.smooth.laplacian(V, F, iterations=5, preset="paper"),
+    "paper preset, 5": lambda V, F: tm.smooth.laplacian(
+        V, F, iterations=5, preset="paper"
+    ),
 }
 images, labels = [], []
-for (V, F), camera in ((sphere, tm.Camera.fit((0.5, 0.4, 1.0))), (scan, tm.Camera.fit((0.35, 0.3, 1.0)))):
+for (V, F), camera in (
+    (sphere, tm.Camera.fit((0.5, 0.4, 1.0))),
+    (scan, tm.Camera.fit((0.35, 0.3, 1.0))),
+):
     for name, smooth in methods.items():
         X = smooth(V, F)
-        r = tm.render(X, F, camera=camera, material=tm.Material.bands("#f08a3c"), outlines="mesh",
-                      width=SIZE, height=SIZE)
+        r = tm.render(
+            X,
+            F,
+            camera=camera,
+            material=tm.Material.bands("#f08a3c"),
+            outlines="mesh",
+            width=SIZE,
+            height=SIZE,
+        )
         text = name
         if V is sphere[0]:
             text += f"  rms {np.sqrt(np.mean((np.linalg.norm(X, axis=1) - 1) ** 2)):.4f}"
         images.append(r.color)
         labels.append(text)
-Image.fromarray(panels(images, labels, columns=len(methods))).save("smoothing.png", optimize=True)
+Image.fromarray(panels(images, labels, columns=len(methods))).save(
+    "smoothing.png", optimize=True
+)

@@ -31,18 +31,33 @@ def turntable(V: np.ndarray, steps: int) -> list:
     radius = float(np.linalg.norm(V - centre, axis=1).max())
     a = np.radians(np.arange(steps + 1))
     eyes = centre + 2.4 * radius * np.c_[np.sin(a), np.zeros_like(a), np.cos(a)]
-    return [tm.Camera.look_at(tuple(eye), target=tuple(centre), up=(0, 1, 0), fov_y=40.0) for eye in eyes]
+    return [
+        tm.Camera.look_at(tuple(eye), target=tuple(centre), up=(0, 1, 0), fov_y=40.0)
+        for eye in eyes
+    ]
 
 
-def panel(renderer: tm.Renderer, mesh: tm.MeshHandle, cameras: list, coherence: bool, size: int) -> tuple:
+def panel(
+    renderer: tm.Renderer, mesh: tm.MeshHandle, cameras: list, coherence: bool, size: int
+) -> tuple:
     """The first frame with the popping ink in red, at ``size`` pixels, and its label."""
     outlines = tm.Outlines("mesh", suggestive=True, suggestive_coherence=coherence)
-    stack = renderer.render_many(mesh, cameras, width=512, height=512, outlines=outlines,
-                                 material=tm.Material.bands("#e9e4da"), background="#ffffff",
-                                 outputs=("color", "outline", "depth"))
+    stack = renderer.render_many(
+        mesh,
+        cameras,
+        width=512,
+        height=512,
+        outlines=outlines,
+        material=tm.Material.bands("#e9e4da"),
+        background="#ffffff",
+        outputs=("color", "outline", "depth"),
+    )
     popping = temporal_popping(stack)
-    print(f"coherence {'on ' if coherence else 'off'}: {100 * popping.share:.3f}% of the ink pops per step "
-          f"({popping.popped.sum()} pixels over {STEPS} steps)")
+    print(
+        f"coherence {'on ' if coherence else 'off'}: "
+        f"{100 * popping.share:.3f}% of the ink pops per step "
+        f"({popping.popped.sum()} pixels over {STEPS} steps)"
+    )
     image = stack[0].color[..., :3].copy()
     red = np.zeros(image.shape[:2], bool)
     for where in popping.where:
@@ -66,7 +81,9 @@ def main(folder: Path, width: int = 720) -> None:
     mesh = renderer.add_mesh(V, F)
     half = width // 2
     folder.mkdir(parents=True, exist_ok=True)
-    (left, off), (right, on) = (panel(renderer, mesh, cameras, c, half) for c in (False, True))
+    (left, off), (right, on) = (
+        panel(renderer, mesh, cameras, c, half) for c in (False, True)
+    )
     Image.fromarray(panels([left, right], [off, on])).save(folder / "temporal.png")
 
 
