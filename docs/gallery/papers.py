@@ -7,7 +7,7 @@ Middle, Kang, Kim and Yoon: their four models (the donut, the chess piece, the t
 sphere, built by ``toonmesh.shapes`` with the paper's face counts) with mesh-space outlines,
 their lookup-table shading and a shadow on a floor. Bottom, Borquez and Yepez: the stages of
 their pipeline, the normal and depth buffers, the edges found by Sobel on them
-(``edges.detect_edges``), the toon bands and the composite.
+(``edges.detect_edges``) and the composite: the edges over the toon bands.
 """
 
 import numpy as np
