@@ -138,7 +138,8 @@ def _environment(site: Path, repository: Path) -> Dict[str, str]:
 
 # ``python -I`` ignores PYTHONPATH: toonmesh is put first on the path as an installed package
 # would be, and the script runs as ``__main__`` from its downloaded copy
-_START = "import runpy, sys; sys.path.insert(0, sys.argv[1]); sys.argv = sys.argv[2:]; runpy.run_path(sys.argv[0], run_name='__main__')"
+_START = ("import runpy, sys; sys.path.insert(0, sys.argv[1]); sys.argv = sys.argv[2:]; "
+          "runpy.run_path(sys.argv[0], run_name='__main__')")
 
 
 def _run(script: Path, repository: Path) -> Tuple[str, float, Dict[str, bytes], str]:
