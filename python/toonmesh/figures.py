@@ -1,6 +1,6 @@
 """Figures that compare renders: labelled panels side by side, as the gallery draws them.
 
-Needs Pillow to draw the text (``pip install pillow``, or ``'toonmesh[io]'``).
+Needs Pillow 10.1 or later to draw the text (``pip install pillow``, or ``'toonmesh[io]'``).
 """
 
 from __future__ import annotations
