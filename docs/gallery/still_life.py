@@ -33,35 +33,21 @@ def table(half=4.0):
 
 
 def main() -> None:
-    torus = tm.shapes.torus(0.7, 0.28, 64, 32)
     V, F = bunny()
-    smooth_bunny = (
-        tm.smooth.laplacian(V, F, iterations=5, preset="paper"),
-        F,
-    )  # the scan's noise off
-    scene = [
-        tm.Mesh(*table(), name="table", material=tm.Material.bands("#efe3c8")),
-        tm.Mesh(
-            *standing(tm.shapes.teapot(10), 1.6, -0.6, -0.4, turn=-30),
-            name="teapot",
-            material=tm.Material.hatching("#d9e4f2"),
-        ),
-        tm.Mesh(
-            *standing(smooth_bunny, 1.5, 1.5, 0.2, turn=-20),
-            name="bunny",
-            material=tm.Material.bands("#f08a3c"),
-        ),
-        tm.Mesh(
-            *standing(tm.shapes.pawn(48), 1.3, 0.4, 1.4),
-            name="pawn",
-            material=tm.Material.bands("#8fb8de"),
-        ),
-        tm.Mesh(
-            *standing(torus, 0.5, -1.5, 1.2),
-            name="torus",
-            material=tm.Material.bands("#9cc98a"),
-        ),
+    # the scan's noise smoothed away first
+    bunny_smoothed = tm.smooth.laplacian(V, F, iterations=5, preset="paper"), F
+    torus = tm.shapes.torus(0.7, 0.28, 64, 32)
+    bands, hatching = tm.Material.bands, tm.Material.hatching
+    objects = [  # name, mesh, height, (x, z) on the table, turn about y, material
+        ("teapot", tm.shapes.teapot(10), 1.6, (-0.6, -0.4), -30, hatching("#d9e4f2")),
+        ("bunny", bunny_smoothed, 1.5, (1.5, 0.2), -20, bands("#f08a3c")),
+        ("pawn", tm.shapes.pawn(48), 1.3, (0.4, 1.4), 0, bands("#8fb8de")),
+        ("torus", torus, 0.5, (-1.5, 1.2), 0, bands("#9cc98a")),
     ]
+    scene = [tm.Mesh(*table(), name="table", material=bands("#efe3c8"))]
+    for name, mesh, height, (x, z), turn, material in objects:
+        V, F = standing(mesh, height, x, z, turn)
+        scene.append(tm.Mesh(V, F, name=name, material=material))
     sun = tm.Light.directional((0.9, -0.9, -0.5), shadows=True)
     camera = tm.Camera.look_at(
         (0.9, 3.2, 6.4), target=(0.1, 0.55, 0.35), up=(0, 1, 0), fov_y=38.0
