@@ -20,7 +20,7 @@ log = logging.getLogger("mkdocs.hooks.api")
 #: the documented modules: the package (with toonmesh.smooth, .edges and .shapes, which it lists in
 #: __all__) and the public modules it does not import
 MODULES = ("toonmesh", "toonmesh.smooth", "toonmesh.edges", "toonmesh.shapes", "toonmesh.batch",
-           "toonmesh.data", "toonmesh.cli", "toonmesh.testing", "toonmesh.pytest_plugin")
+           "toonmesh.data", "toonmesh.figures", "toonmesh.cli", "toonmesh.testing", "toonmesh.pytest_plugin")
 
 
 def undocumented(python_dir: Path) -> List[str]:

@@ -147,3 +147,73 @@ def test_the_home_page_and_a_gallery_page_show_every_picture_in_a_browser(site, 
             browser.close()
     assert all(s.stat().st_size > 10_000 for s in shots)
     print("screenshots:", *shots)
+
+
+def _gallery_hook():
+    """scripts/docs_gallery.py, the hook that runs the gallery, as a module."""
+    need("mkdocs")
+    spec = importlib.util.spec_from_file_location("docs_gallery", ROOT / "scripts" / "docs_gallery.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_gallery_scripts_import_public_modules_only_and_reach_no_file_outside_their_folder():
+    hook = _gallery_hook()
+    for script in sorted((ROOT / "docs" / "gallery").glob("*.py")):
+        assert list(hook.offences(script.read_text())) == [], script.name
+    bad = ('"""A script."""\nimport toonmesh._core\nfrom toonmesh.bench.lines import slab\n'
+           'from toonmesh import _files\nfrom toonmesh.files._load import read_mesh\n'
+           'ROOT = __file__\nopen("../../tests/data/meshes/cow.obj")\nopen("/etc/hostname")\n'
+           'from toonmesh.data import bunny\nimport toonmesh.shapes\n')
+    found = list(hook.offences(bad))
+    assert [f.split(":")[0] for f in found] == [f"line {n}" for n in range(2, 9)], found
+    assert "toonmesh._core" in found[0] and "toonmesh.bench.lines" in found[1] and "toonmesh._files" in found[2]
+    assert "__file__" in found[4] and "'../../tests/data/meshes/cow.obj'" in found[5] and "'/etc/hostname'" in found[6]
+    # a path in the docstring is text (a link to another page), not a file the script reads
+    assert list(hook.offences('"""See [the accuracy page](../accuracy.md)."""\nimport toonmesh\n')) == []
+
+
+def test_a_gallery_script_runs_alone_in_an_empty_folder_as_a_pip_user_runs_it(tmp_path):
+    """The hook names the script and the offence, refuses before running what it can read, and
+    runs the rest in an empty folder with ``python -I``: neither the repository's files, nor a
+    module beside the script, nor PYTHONPATH reach it; toonmesh is the one this build imports."""
+    from mkdocs.exceptions import PluginError
+
+    hook = _gallery_hook()
+    folder = tmp_path / "gallery"
+    folder.mkdir()
+    private = folder / "private.py"
+    private.write_text('"""Private."""\nfrom toonmesh.bench import parts\n')
+    with pytest.raises(PluginError, match=r"gallery/private\.py would not run as downloaded: line 2: imports "
+                                          r"toonmesh\.bench"):
+        hook._run(private, ROOT)
+    relative = folder / "relative.py"  # no path a reader can see: the empty folder stops it
+    relative.write_text('"""Relative."""\nopen("tests/data/meshes/cow.obj").read()\n')
+    with pytest.raises(PluginError, match=r"(?s)gallery/relative\.py failed in an empty folder.*FileNotFoundError"):
+        hook._run(relative, ROOT)
+    (folder / "helper.py").write_text("X = 1\n")
+    beside = folder / "beside.py"
+    beside.write_text('"""Beside."""\nimport helper\n')
+    with pytest.raises(PluginError, match=r"(?s)gallery/beside\.py failed.*No module named 'helper'"):
+        hook._run(beside, ROOT)
+    report = folder / "report.py"
+    report.write_text('"""Report."""\nimport json, os, sys\nimport numpy as np\nimport toonmesh\n'
+                      'print(json.dumps({"here": os.listdir("."), "flags": sys.flags.isolated, '
+                      '"toonmesh": os.path.realpath(toonmesh.__file__), "environ": dict(os.environ)}))\n'
+                      'open("figure.svg", "w").write("<svg xmlns=\'http://www.w3.org/2000/svg\'/>")\n')
+    name, took, figures, output = hook._run(report, ROOT)
+    seen = __import__("json").loads(output)
+    assert name == "report" and list(figures) == ["figure.svg"] and took > 0
+    assert seen["here"] == [] and seen["flags"] == 1
+    assert seen["toonmesh"] == str((hook._package() / "__init__.py").resolve())
+    inside = [k for k, v in seen["environ"].items() if str(ROOT) in v and str(Path(sys.prefix).resolve()) not in v]
+    assert inside == [], inside
+
+
+def test_each_gallery_page_offers_its_script_to_download(site):
+    for script in sorted((ROOT / "docs" / "gallery").glob("*.py")):
+        page = (site / "gallery" / f"{script.stem}.html").read_text()
+        assert re.search(rf'<a [^>]*download="{script.stem}\.py"[^>]*>|<a [^>]*href="{script.stem}\.py"[^>]*download',
+                         page), script.name
+        assert (site / "gallery" / script.name).read_bytes() == script.read_bytes(), script.name

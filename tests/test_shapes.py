@@ -121,3 +121,28 @@ def test_shapes_render():
     for (V, F), _ in KANG_MODELS.values():
         res = r.render(r.add_mesh(V, F), width=32, height=32, outputs=("color", "depth"))
         assert np.isfinite(res.depth).mean() > 0.1
+
+
+def test_a_box_spans_its_corners_closed_and_facing_outward():
+    lo, hi = (-1.0, 0.0, -2.0), (3.0, 0.5, 2.0)
+    V, F = tm.shapes.box(lo, hi)
+    assert V.dtype == np.float64 and V.shape == (8, 3) and F.dtype == np.int64 and F.shape == (12, 3)
+    np.testing.assert_array_equal(V.min(axis=0), lo)
+    np.testing.assert_array_equal(V.max(axis=0), hi)
+    per_edge, per_directed = edge_faces(F)
+    assert (per_edge == 2).all() and (per_directed == 1).all()
+    assert outward_measure(V, F) / 6 == pytest.approx(4.0 * 0.5 * 4.0)
+    V, _ = tm.shapes.box()
+    np.testing.assert_array_equal(np.abs(V), 0.5)  # the unit cube about the origin
+
+
+@pytest.mark.parametrize("lo, hi, error, words", [
+    ((0, 0), (1, 1, 1), TypeError, "lo: expected 3 numbers"),
+    ((0, 0, 0), "abc", TypeError, "hi: expected 3 numbers"),
+    ((0, 0, np.nan), (1, 1, 1), ValueError, "lo: must be finite"),
+    ((0, 0, 0), (1, 0, 1), ValueError, "hi: must exceed lo on every axis"),
+])
+def test_a_box_names_a_bad_corner(lo, hi, error, words):
+    with pytest.raises(error) as caught:
+        tm.shapes.box(lo, hi)
+    assert words in str(caught.value)

@@ -6,7 +6,8 @@ error is the RMS error of the radius. Right: the renderer's accuracy knobs on th
 at 256x256 in toon bands, against the same frame supersampled 4 times: the mean difference of
 the pixels (0-255) against the frame's time. Times are medians of 3 on the machine that built
 this page; the tables of the [accuracy page](../accuracy.md) were measured the same way at
-larger sizes (``python -m toonmesh.bench all --accuracy``).
+larger sizes (``python -m toonmesh.bench all --accuracy``). Needs matplotlib
+(``pip install matplotlib``).
 """
 
 import time
@@ -44,9 +45,19 @@ for name, smooth in methods.items():
         X, ms = timed(lambda: smooth(n))
         points.append((ms, np.sqrt(np.mean((np.linalg.norm(X, axis=1) - 1) ** 2))))
     left.plot(*zip(*points), "o-", label=name)
-left.axhline(np.sqrt(np.mean((np.linalg.norm(V, axis=1) - 1) ** 2)), color="gray", ls=":", label="input")
-left.set(xscale="log", yscale="log", xlabel="time (ms)", ylabel="RMS error of the radius",
-         title="smoothing: 1, 3, 10, 30 iterations")
+left.axhline(
+    np.sqrt(np.mean((np.linalg.norm(V, axis=1) - 1) ** 2)),
+    color="gray",
+    ls=":",
+    label="input",
+)
+left.set(
+    xscale="log",
+    yscale="log",
+    xlabel="time (ms)",
+    ylabel="RMS error of the radius",
+    title="smoothing: 1, 3, 10, 30 iterations",
+)
 left.legend(fontsize=8)
 
 B, G = bunny()
@@ -68,8 +79,14 @@ for name, knob in knobs.items():
     r, ms = timed(lambda: renderer.render(mesh, **size, **knob))
     error = np.abs(r.color.astype(float) - reference).mean()
     right.plot(ms, error, "o")
-    right.annotate(name, (ms, error), fontsize=8, xytext=(4, 4), textcoords="offset points")
-right.set(xlabel="frame time (ms)", ylabel="mean difference to 4x supersampling (0-255)",
-          title="rendering: accuracy knobs, 256x256", yscale="log")
+    right.annotate(
+        name, (ms, error), fontsize=8, xytext=(4, 4), textcoords="offset points"
+    )
+right.set(
+    xlabel="frame time (ms)",
+    ylabel="mean difference to 4x supersampling (0-255)",
+    title="rendering: accuracy knobs, 256x256",
+    yscale="log",
+)
 fig.tight_layout()
 fig.savefig("accuracy.png", dpi=90)

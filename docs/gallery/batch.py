@@ -3,7 +3,7 @@
 ``toonmesh.batch.render_files`` renders many mesh files and views on a Dask cluster, one task a
 mesh: here three noisy blobs, four views each, on a local cluster of two worker processes, put
 together as a contact sheet (one row a mesh). Pointed at a remote scheduler
-(``Client("tcp://scheduler:8786")``) it runs the same way across machines.
+(``Client("tcp://scheduler:8786")``) it runs the same way across machines. Needs Dask and trimesh (``pip install 'toonmesh[batch]'``).
 """
 
 import os
@@ -15,6 +15,7 @@ from PIL import Image
 
 import toonmesh as tm
 from toonmesh.batch import render_files
+from toonmesh.figures import panels
 
 if __name__ == "__main__":
     os.makedirs("meshes", exist_ok=True)
@@ -24,9 +25,25 @@ if __name__ == "__main__":
         paths.append(f"meshes/blob{seed}.ply")
         trimesh.Trimesh(V, F, process=False).export(paths[-1])
 
-    with LocalCluster(n_workers=2, threads_per_worker=1) as cluster, Client(cluster) as client:
-        rows = render_files(paths, "frames", views=4, client=client, up="y", width=160, height=160,
-                            material=tm.Material.thresholded_phong("#3c8af0"), outlines="mesh")
+    with (
+        LocalCluster(n_workers=2, threads_per_worker=1) as cluster,
+        Client(cluster) as client,
+    ):
+        rows = render_files(
+            paths,
+            "frames",
+            views=4,
+            client=client,
+            up="y",
+            width=160,
+            height=160,
+            material=tm.Material.thresholded_phong("#3c8af0"),
+            outlines="mesh",
+        )
     print(len(rows), "images, on workers", sorted({row["worker"] for row in rows}))
-    sheet = [[np.asarray(Image.open(row["path"])) for row in rows if row["mesh"] == path] for path in paths]
-    Image.fromarray(np.concatenate([np.concatenate(r, axis=1) for r in sheet], axis=0)).save("batch.png")
+    ordered = sorted(
+        rows, key=lambda row: (paths.index(row["mesh"]), row["path"])
+    )  # one row a mesh
+    images = [np.asarray(Image.open(row["path"])) for row in ordered]
+    labels = [os.path.basename(row["path"]) for row in ordered]
+    Image.fromarray(panels(images, labels, columns=4)).save("batch.png")

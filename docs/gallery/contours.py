@@ -1,10 +1,10 @@
 """Line drawings and SVG: contours and suggestive contours.
 
 Line drawings by the renderer of the raw Stanford
-bunny, spot and the cow, with Kang et al.'s face-edge silhouettes (``contours="faces"``), the
+bunny, the cow (``toonmesh.data``) and the teapot (``toonmesh.shapes``), with Kang et al.'s face-edge silhouettes (``contours="faces"``), the
 default (smooth contours between creases) and the default plus suggestive contours (in blue),
 hidden lines removed; each panel's title counts its strokes. The SVG is the bunny's last panel as
-``RenderResult.save_svg`` writes it. Needs matplotlib and trimesh.
+``RenderResult.save_svg`` writes it. Needs matplotlib (``pip install matplotlib``).
 """
 
 from pathlib import Path
@@ -13,12 +13,9 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import trimesh  # noqa: E402
-
 import toonmesh as tm  # noqa: E402
+from toonmesh.data import bunny, cow  # noqa: E402
 
-ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 360
 BLUE = (0.18, 0.37, 0.66)
 # white paper: one band, so only the ink shows
@@ -32,28 +29,39 @@ SETTINGS = [
 
 def panel(r, mesh, camera, kw):
     """The drawing as an RGB image (ink over white) and its strokes by kind."""
-    res = r.render(mesh, camera=camera, width=SIZE, height=SIZE, outlines=tm.Outlines("mesh", **kw),
-                   material=PAPER, outputs=("color", "lines"))
+    res = r.render(
+        mesh,
+        camera=camera,
+        width=SIZE,
+        height=SIZE,
+        outlines=tm.Outlines("mesh", **kw),
+        material=PAPER,
+        outputs=("color", "lines"),
+    )
     kinds = {k: sum(1 for x in res.line_kinds if x == k) for k in set(res.line_kinds)}
     return res, kinds
 
 
 def main():
-    rows = [("stanford-bunny.obj", (0.35, 0.3, 1.0), "the raw Stanford bunny"),
-            ("spot.obj", (1.0, 0.35, 0.9), "spot"), ("cow.obj", (0.9, 0.3, 1.0), "the cow")]
-    fig, axes = plt.subplots(len(rows), len(SETTINGS), figsize=(7.8, 7.8), dpi=100, layout="constrained")
+    rows = [
+        (bunny(), (0.35, 0.3, 1.0), "the raw Stanford bunny"),
+        (tm.shapes.teapot(12), (0.25, 0.5, 1.0), "the teapot"),
+        (cow(), (0.9, 0.3, 1.0), "the cow"),
+    ]
+    fig, axes = plt.subplots(
+        len(rows), len(SETTINGS), figsize=(7.8, 7.8), dpi=100, layout="constrained"
+    )
     r = tm.Renderer()
-    for (name, eye, label), ax_row in zip(rows, axes):
-        m = trimesh.load(ROOT / "tests" / "data" / "meshes" / name, process=False, force="mesh")
-        mesh = r.add_mesh(np.asarray(m.vertices, float), np.asarray(m.faces))
+    for ((V, F), eye, label), ax_row in zip(rows, axes):
+        mesh = r.add_mesh(V, F)
         camera = tm.Camera.fit(eye)
         for (title, kw), ax in zip(SETTINGS, ax_row):
             res, kinds = panel(r, mesh, camera, kw)
             ax.imshow(res.color[..., :3])
             counts = ", ".join(f"{n} {k}" for k, n in sorted(kinds.items()))
-            ax.set_title(f"{label}: {title}\n{counts}", fontsize=6.5)
+            ax.set_title(f"{label}: {title}\n{counts}", fontsize=6)
             ax.axis("off")
-            if name == "stanford-bunny.obj" and kw.get("suggestive"):
+            if label == rows[0][2] and kw.get("suggestive"):
                 res.save_svg("contours.svg")
         r.remove_mesh(mesh)
     out = Path("contours.png")

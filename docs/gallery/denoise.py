@@ -1,25 +1,49 @@
 """Denoising that keeps creases: bilateral and guided filtering.
 
-The fandisk model (tests/data/meshes/fandisk.obj, 12,946 faces) with
+The fandisk model (``toonmesh.data.fandisk``, 12,946 faces) with
 Gaussian noise of 0.4 mean edge lengths along its normals, before and after each smoother, all
 with their defaults, rendered with mesh outlines (silhouettes and creases, Kang et al.). Top row:
 clean, noisy, Taubin; bottom row: pymeshlab's two-step smoothing, bilateral, guided; each panel gives
 its mean face-normal error to the clean model. The outlines show what each smoother leaves of
-the creases. Needs trimesh and pymeshlab.
+the creases. Needs pymeshlab (``pip install pymeshlab``) for its panel.
 """
 
 from pathlib import Path
 
 import numpy as np
 import pymeshlab
-import trimesh
-from PIL import Image, ImageDraw
+from PIL import Image
 
 import toonmesh as tm
-from toonmesh.bench import parts
+from toonmesh.data import fandisk
+from toonmesh.figures import panels
 
-ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 320
+
+
+def face_normals(V: np.ndarray, F: np.ndarray) -> np.ndarray:
+    n = np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]])
+    return n / np.linalg.norm(n, axis=1, keepdims=True)
+
+
+def noisy(V: np.ndarray, F: np.ndarray, level: float, seed: int) -> np.ndarray:
+    """``V`` moved along its vertex normals by Gaussian noise of ``level`` mean
+    edge lengths."""
+    n = np.zeros_like(V)
+    for k in range(3):
+        np.add.at(n, F[:, k], np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]]))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    edge = np.linalg.norm(V[F] - V[np.roll(F, 1, axis=1)], axis=2).mean()
+    return (
+        V
+        + level * edge * np.random.default_rng(seed).standard_normal(len(V))[:, None] * n
+    )
+
+
+def normal_error(X: np.ndarray, F: np.ndarray, clean: np.ndarray) -> float:
+    """Mean angle, in degrees, between the face normals of ``X`` and of ``clean``."""
+    cos = np.einsum("ij,ij->i", face_normals(X, F), face_normals(clean, F))
+    return float(np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))).mean())
 
 
 def two_step(V: np.ndarray, F: np.ndarray) -> np.ndarray:
@@ -30,10 +54,9 @@ def two_step(V: np.ndarray, F: np.ndarray) -> np.ndarray:
 
 
 def main() -> None:
-    m = trimesh.load(ROOT / "tests" / "data" / "meshes" / "fandisk.obj", process=False, force="mesh")
-    V, F = np.asarray(m.vertices, np.float64), np.asarray(m.faces, np.int64)
-    N = parts.noisy(V, F, 0.4, seed=1)
-    panels = {
+    V, F = fandisk()
+    N = noisy(V, F, 0.4, seed=1)
+    smoothed = {
         "clean": V,
         "noisy": N,
         "taubin": tm.smooth.taubin(N, F),
@@ -43,18 +66,25 @@ def main() -> None:
     }
     camera = tm.Camera.fit((-0.6, 0.5, 1.0))
     light = [tm.Light.directional((0.5, -0.6, -1.0))]
-    images = []
-    for label, X in panels.items():
-        img = tm.render(X, F, camera=camera, lights=light, outlines="mesh", width=SIZE, height=SIZE,
-                        supersample=2).color
-        pil = Image.fromarray(img)
-        if label != "clean":
-            label += f": {parts.normal_error(X, F, V):.1f} deg"
-        ImageDraw.Draw(pil).text((8, 8), label, fill=(0, 0, 0, 255))
-        images.append(np.asarray(pil))
+    images, labels = [], []
+    for label, X in smoothed.items():
+        images.append(
+            tm.render(
+                X,
+                F,
+                camera=camera,
+                lights=light,
+                outlines="mesh",
+                width=SIZE,
+                height=SIZE,
+                supersample=2,
+            ).color
+        )
+        labels.append(
+            label if label == "clean" else f"{label}: {normal_error(X, F, V):.1f} deg"
+        )
     out = Path("denoise.png")
-    grid = np.concatenate([np.concatenate(images[:3], axis=1), np.concatenate(images[3:], axis=1)], axis=0)
-    Image.fromarray(grid).save(out, optimize=True)
+    Image.fromarray(panels(images, labels, columns=3)).save(out, optimize=True)
     print("wrote", out)
 
 

@@ -17,10 +17,21 @@ from pathlib import Path
 import numpy as np
 
 import toonmesh as tm
-from toonmesh.bench.lines import pipe, slab
 
 # white paper: one band, so only the ink shows
 PAPER = tm.Material.bands("#ffffff", thresholds=(2.0,), values=(1.0, 1.0))
+
+
+def pipe(axis, radius, half_length, sections=96):
+    """A capped cylinder along ``axis`` (0, 1 or 2: x, y or z) through the origin."""
+    profile = [
+        (0, -half_length),
+        (radius, -half_length),
+        (radius, half_length),
+        (0, half_length),
+    ]
+    V, F = tm.shapes.lathe(profile, sections)  # about y
+    return V[:, np.roll([0, 1, 2], axis - 1)], F  # y becomes the axis asked for
 
 
 def part(mesh, name, offset=(0, 0, 0)):
@@ -30,24 +41,39 @@ def part(mesh, name, offset=(0, 0, 0)):
 
 
 def assembly():
-    """The parts, in millimetres, y up: plate, bearing block, shaft, pulley and two pins."""
+    """The parts in mm, y up: plate, bearing block, shaft, pulley and two pins."""
     return [
-        part(slab((-70, 0, -40), (70, 10, 40)), "plate"),
-        part(slab((-22, 10, -22), (22, 56, 22)), "block"),
-        part(pipe(0, radius=8, half_length=55), "shaft", (0, 36, 0)),    # along x, through the block
-        part(pipe(0, radius=22, half_length=4), "pulley", (48, 36, 0)),  # on the shaft's end
-        part(pipe(1, radius=5, half_length=12, sections=48), "pin", (-50, 5, 22)),  # along y, through the plate
+        part(tm.shapes.box((-70, 0, -40), (70, 10, 40)), "plate"),
+        part(tm.shapes.box((-22, 10, -22), (22, 56, 22)), "block"),
+        part(
+            pipe(0, radius=8, half_length=55), "shaft", (0, 36, 0)
+        ),  # along x, through the block
+        part(
+            pipe(0, radius=22, half_length=4), "pulley", (48, 36, 0)
+        ),  # on the shaft's end
+        part(
+            pipe(1, radius=5, half_length=12, sections=48), "pin", (-50, 5, 22)
+        ),  # along y, through the plate
         part(pipe(1, radius=5, half_length=12, sections=48), "pin", (50, 5, -22)),
     ]
 
 
 def main(folder: Path, width: int = 720) -> None:
-    # hidden=True: grey, 2/3 of the width, dashed (or a LineStyle(color, width, dash=...) of your own)
+    # hidden=True: grey, 2/3 of the width, dashed
+    # (or a LineStyle(color, width, dash=...) of your own)
     outlines = tm.Outlines("mesh", width=1.6, hidden=True)
     camera = tm.Camera.fit((1.0, 0.7, 1.3), orthographic=True, margin=1.08)
-    res = tm.Renderer().render(assembly(), camera=camera, width=width, height=width * 2 // 3, material=PAPER,
-                               background="#ffffff", outlines=outlines, supersample=2,
-                               outputs=("color", "lines"))
+    res = tm.Renderer().render(
+        assembly(),
+        camera=camera,
+        width=width,
+        height=width * 2 // 3,
+        material=PAPER,
+        background="#ffffff",
+        outlines=outlines,
+        supersample=2,
+        outputs=("color", "lines"),
+    )
     folder.mkdir(parents=True, exist_ok=True)
     res.save(folder / "drawing.png")
     res.save_svg(folder / "drawing.svg", order="plotter", widths="kind")

@@ -1,8 +1,8 @@
 """Outlines found on the mesh and in the image.
 
 Mesh-space outlines (toonmesh.edges.EdgeIndex) and image-space outlines
-(toonmesh.edges.detect_edges) of the test meshes. Needs matplotlib and trimesh (not package
-dependencies).
+(toonmesh.edges.detect_edges) of the fandisk (``toonmesh.data``) and the teapot
+(``toonmesh.shapes``). Needs matplotlib (``pip install matplotlib``).
 
 Hidden lines are removed with a small NumPy z-buffer, which also provides the normal and depth
 buffers for the image-space panel.
@@ -15,12 +15,12 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-import trimesh  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
+import toonmesh as tm  # noqa: E402
 from toonmesh import edges as te  # noqa: E402
+from toonmesh.data import fandisk  # noqa: E402
 
-ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 260
 DISTANCE = 2.6  # eye distance in bounding-sphere radii
 
@@ -80,14 +80,22 @@ def visible_segments(V, edges, eye, R, radius, depth, steps=12):
     if len(edges) == 0:
         return []
     t = np.linspace(0, 1, steps + 1)
-    P = V[edges[:, 0]][:, None] * (1 - t[None, :, None]) + V[edges[:, 1]][:, None] * t[None, :, None]
+    P = (
+        V[edges[:, 0]][:, None] * (1 - t[None, :, None])
+        + V[edges[:, 1]][:, None] * t[None, :, None]
+    )
     x, y, z = project(P.reshape(-1, 3), eye, R, radius)
     x, y, z = x.reshape(P.shape[:2]), y.reshape(P.shape[:2]), z.reshape(P.shape[:2])
     xi = np.clip(x.astype(int), 0, SIZE - 1)
     yi = np.clip(y.astype(int), 0, SIZE - 1)
-    # visible when not behind the farthest surface around it (background counts as infinitely far)
+    # visible when not behind the farthest surface around it
+    # (the background counts as infinitely far)
     far = np.maximum.reduce(
-        [depth[np.clip(yi + dy, 0, SIZE - 1), np.clip(xi + dx, 0, SIZE - 1)] for dy in (-1, 0, 1) for dx in (-1, 0, 1)]
+        [
+            depth[np.clip(yi + dy, 0, SIZE - 1), np.clip(xi + dx, 0, SIZE - 1)]
+            for dy in (-1, 0, 1)
+            for dx in (-1, 0, 1)
+        ]
     )
     ok = z <= far * 1.01
     segs = []
@@ -107,15 +115,16 @@ def toon(normal, depth):
     return np.dstack([img * 0.98, img * 0.96, img])
 
 
-def panel(ax, name, eye_dir, title, crease_angle=30.0, image_space=False):
-    mesh = trimesh.load(ROOT / "tests" / "data" / "meshes" / name, process=False, force="mesh")
-    V, F = np.asarray(mesh.vertices, float), np.asarray(mesh.faces)
+def panel(ax, mesh, eye_dir, title, crease_angle=30.0, image_space=False):
+    V, F = mesh
     eye, R, radius = camera(V, eye_dir)
     depth, normal = rasterise(V, F, eye, R, radius)
     ax.imshow(toon(normal, depth), extent=(0, SIZE, SIZE, 0), interpolation="nearest")
     if image_space:
         finite = np.where(np.isinf(depth), np.nan, depth)
-        det = te.detect_edges(normal, depth / np.nanmax(finite), normal_threshold=1.2, depth_threshold=0.2)
+        det = te.detect_edges(
+            normal, depth / np.nanmax(finite), normal_threshold=1.2, depth_threshold=0.2
+        )
         overlay = np.zeros((SIZE, SIZE, 4))
         overlay[det.mask] = (0.05, 0.05, 0.1, 1.0)
         ax.imshow(overlay, extent=(0, SIZE, SIZE, 0), interpolation="nearest")
@@ -130,7 +139,9 @@ def panel(ax, name, eye_dir, title, crease_angle=30.0, image_space=False):
         ]
         for edges, colour, label in layers:
             segs = visible_segments(V, edges, eye, R, radius, depth)
-            ax.add_collection(LineCollection(segs, colors=colour, linewidths=1.0, label=label))
+            ax.add_collection(
+                LineCollection(segs, colors=colour, linewidths=1.0, label=label)
+            )
         ax.legend(loc="lower left", fontsize=6, frameon=False, handlelength=1.2)
     ax.set_xlim(0, SIZE)
     ax.set_ylim(SIZE, 0)
@@ -140,9 +151,18 @@ def panel(ax, name, eye_dir, title, crease_angle=30.0, image_space=False):
 
 def main():
     fig, axes = plt.subplots(1, 3, figsize=(7.5, 2.8), dpi=100, layout="constrained")
-    panel(axes[0], "fandisk.obj", (1.0, 0.8, -1.4), "EdgeIndex: fandisk, crease_angle=30")
-    panel(axes[1], "teapot.obj", (0.8, 0.9, 1.5), "EdgeIndex: teapot, crease_angle=60", crease_angle=60.0)
-    panel(axes[2], "fandisk.obj", (1.0, 0.8, -1.4), "detect_edges: normal + depth", image_space=True)
+    part, teapot = fandisk(), tm.shapes.teapot()
+    panel(axes[0], part, (1.0, 0.8, -1.4), "EdgeIndex: fandisk, crease_angle=30")
+    panel(
+        axes[1],
+        teapot,
+        (0.8, 0.9, 1.5),
+        "EdgeIndex: teapot, crease_angle=60",
+        crease_angle=60.0,
+    )
+    panel(
+        axes[2], part, (1.0, 0.8, -1.4), "detect_edges: normal + depth", image_space=True
+    )
     out = Path("edges.png")
     fig.savefig(out, dpi=100)
     print("wrote", out, out.stat().st_size // 1024, "KB")

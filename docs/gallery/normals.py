@@ -3,44 +3,44 @@
 The three normal modes (rows: ``"smooth"``, ``"flat"``, ``"auto"``) on
 a box, a chess pawn (``shapes.pawn``), the fandisk CAD part and the bunny, with toon bands.
 Smooth shading bends the bands across the box's edges and the pawn's rims, flat shading facets
-the curved parts, and auto keeps both right; on the bunny auto is close to smooth. Needs trimesh
-to read the OBJ file.
+the curved parts, and auto keeps both right; on the bunny auto is close to smooth.
 """
 
-from pathlib import Path
-
-import numpy as np
 from PIL import Image
-import trimesh
 
 import toonmesh as tm
-from toonmesh.data import bunny
+from toonmesh.data import bunny, fandisk
+from toonmesh.figures import panels
 
-ROOT = Path(__file__).resolve().parents[2]  # the repository: its test meshes
 SIZE = 220
 
 
-def box():
-    V = np.array([[i & 1, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)], float) - 0.5
-    quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
-    return V, np.array([t for q in quads for t in ([q[0], q[1], q[2]], [q[0], q[2], q[3]])])
-
-
 def main() -> None:
-    fandisk = trimesh.load(ROOT / "tests/data/meshes/fandisk.obj", process=False)
     models = [
-        (box(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
+        (tm.shapes.box(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (tm.shapes.pawn(48), tm.Camera.fit((0.0, 0.35, 1.0)), "#e8c07a"),
-        ((np.asarray(fandisk.vertices), np.asarray(fandisk.faces)), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
+        (fandisk(), tm.Camera.fit((0.6, 0.5, 1.0)), "#8fb8de"),
         (bunny(), tm.Camera.fit((0.35, 0.3, 1.0)), "#f08a3c"),
     ]
-    rows = []
+    images, labels = [], []
     for normals in ("smooth", "flat", "auto"):
-        row = [tm.render(V, F, normals=normals, camera=camera, material=tm.Material.bands(colour), width=SIZE,
-                         height=SIZE, supersample=2).color for (V, F), camera, colour in models]
-        rows.append(np.concatenate(row, axis=1))
-    figure = np.ascontiguousarray(np.concatenate(rows, axis=0))
-    Image.fromarray(figure).save("normals.png", optimize=True)
+        for (V, F), camera, colour in models:
+            images.append(
+                tm.render(
+                    V,
+                    F,
+                    normals=normals,
+                    camera=camera,
+                    material=tm.Material.bands(colour),
+                    width=SIZE,
+                    height=SIZE,
+                    supersample=2,
+                ).color
+            )
+            labels.append(f'normals="{normals}"')
+    Image.fromarray(panels(images, labels, columns=len(models))).save(
+        "normals.png", optimize=True
+    )
 
 
 if __name__ == "__main__":

@@ -9,13 +9,14 @@ as rim light is usually shown.
 
 from pathlib import Path
 
-import numpy as np
 from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny
+from toonmesh.figures import panels
 
 SIZE = 260
+LABELS = ["no rim", "Rim()", 'Rim(side="lit")', 'Rim(side="shadowed")', "hatching + Rim"]
 
 
 def main() -> None:
@@ -27,14 +28,33 @@ def main() -> None:
     cells = [
         tm.render(V, F, material=tm.Material.bands(colour), **kw).color,
         tm.render(V, F, material=tm.Material.bands(colour, rim=tm.Rim()), **kw).color,
-        tm.render(V, F, material=tm.Material.bands(colour, rim=tm.Rim(width=0.4, strength=0.8, side="lit")), **kw).color,
-        tm.render(V, F, material=tm.Material.bands(colour, rim=tm.Rim("#5080ff", width=0.4, side="shadowed", blend="mix")),
-                  **kw).color,
-        tm.render(V, F, material=tm.Material.hatching(rim=tm.Rim("#ff9020", width=0.5, softness=0.3, strength=1.0, blend="mix")),
-                  **kw).color,
+        tm.render(
+            V,
+            F,
+            material=tm.Material.bands(
+                colour, rim=tm.Rim(width=0.4, strength=0.8, side="lit")
+            ),
+            **kw,
+        ).color,
+        tm.render(
+            V,
+            F,
+            material=tm.Material.bands(
+                colour, rim=tm.Rim("#5080ff", width=0.4, side="shadowed", blend="mix")
+            ),
+            **kw,
+        ).color,
+        tm.render(
+            V,
+            F,
+            material=tm.Material.hatching(
+                rim=tm.Rim("#ff9020", width=0.5, softness=0.3, strength=1.0, blend="mix")
+            ),
+            **kw,
+        ).color,
     ]
     out = Path("rim.png")
-    Image.fromarray(np.concatenate(cells, axis=1)).save(out, optimize=True)
+    Image.fromarray(panels(cells, LABELS)).save(out, optimize=True)
     print("wrote", out)
 
 

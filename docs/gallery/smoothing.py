@@ -8,18 +8,13 @@ pipeline: 5 iterations of the plain neighbour mean (``preset="paper"``).
 """
 
 import numpy as np
-from PIL import Image, ImageDraw
+from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny
+from toonmesh.figures import panels
 
 SIZE = 200
-
-
-def label(image: np.ndarray, text: str) -> np.ndarray:
-    pil = Image.fromarray(image)
-    ImageDraw.Draw(pil).text((6, 6), text, fill=(0, 0, 0, 255))
-    return np.asarray(pil)
 
 
 sphere = tm.shapes.icosphere(4, noise=0.03, seed=0)
@@ -30,18 +25,31 @@ methods = {
     "taubin": lambda V, F: tm.smooth.taubin(V, F, iterations=10),
     "hc": lambda V, F: tm.smooth.hc(V, F, iterations=10),
     "implicit": lambda V, F: tm.smooth.implicit(V, F, step=5.0),
-    "paper preset, 5": lambda V, F: tm.smooth.laplacian(V, F, iterations=5, preset="paper"),
+    "paper preset, 5": lambda V, F: tm.smooth.laplacian(
+        V, F, iterations=5, preset="paper"
+    ),
 }
-rows = []
-for (V, F), camera in ((sphere, tm.Camera.fit((0.5, 0.4, 1.0))), (scan, tm.Camera.fit((0.35, 0.3, 1.0)))):
-    row = []
+images, labels = [], []
+for (V, F), camera in (
+    (sphere, tm.Camera.fit((0.5, 0.4, 1.0))),
+    (scan, tm.Camera.fit((0.35, 0.3, 1.0))),
+):
     for name, smooth in methods.items():
         X = smooth(V, F)
-        r = tm.render(X, F, camera=camera, material=tm.Material.bands("#f08a3c"), outlines="mesh",
-                      width=SIZE, height=SIZE)
+        r = tm.render(
+            X,
+            F,
+            camera=camera,
+            material=tm.Material.bands("#f08a3c"),
+            outlines="mesh",
+            width=SIZE,
+            height=SIZE,
+        )
         text = name
         if V is sphere[0]:
             text += f"  rms {np.sqrt(np.mean((np.linalg.norm(X, axis=1) - 1) ** 2)):.4f}"
-        row.append(label(r.color, text))
-    rows.append(np.concatenate(row, axis=1))
-Image.fromarray(np.concatenate(rows, axis=0)).save("smoothing.png", optimize=True)
+        images.append(r.color)
+        labels.append(text)
+Image.fromarray(panels(images, labels, columns=len(methods))).save(
+    "smoothing.png", optimize=True
+)

@@ -14,7 +14,9 @@ from pathlib import Path
 import numpy as np
 from PIL import Image
 
-TEST = '''
+from toonmesh.figures import panels
+
+TEST = """
 import toonmesh as tm
 
 COLOUR = "{colour}"
@@ -22,20 +24,43 @@ COLOUR = "{colour}"
 
 def test_bunny(toon_snapshot):
     V, F = tm.shapes.icosphere(3, noise=0.02, seed=1)
-    toon_snapshot(tm.render(V, F, material=tm.Material.bands(COLOUR), outlines="mesh", width=160, height=160))
-'''
+    material = tm.Material.bands(COLOUR)
+    r = tm.render(V, F, material=material, outlines="mesh", width=160, height=160)
+    toon_snapshot(r)
+"""
+
 
 folder = Path("snapshot_tests")
 folder.mkdir(exist_ok=True)
 (folder / "test_look.py").write_text(TEST.format(colour="#f08a3c"))
-pytest = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p", "toonmesh.pytest_plugin", str(folder)]
-subprocess.run(pytest + ["--toon-update"], check=True)           # writes __snapshots__/test_bunny.png
-(folder / "test_look.py").write_text(TEST.format(colour="#3c8af0"))  # a change of look ...
-failed = subprocess.run(pytest, capture_output=True, text=True)  # ... fails the test, naming the difference
+pytest = [
+    sys.executable,
+    "-m",
+    "pytest",
+    "-q",
+    "-p",
+    "no:cacheprovider",
+    "-p",
+    "toonmesh.pytest_plugin",
+    str(folder),
+]
+subprocess.run(
+    pytest + ["--toon-update"], check=True
+)  # writes __snapshots__/test_bunny.png
+(folder / "test_look.py").write_text(
+    TEST.format(colour="#3c8af0")
+)  # a change of look ...
+failed = subprocess.run(
+    pytest, capture_output=True, text=True
+)  # ... fails the test, naming the difference
 assert failed.returncode == 1, failed.stdout
 print(failed.stdout.splitlines()[-1])
 shots = folder / "__snapshots__"
 print(sorted(p.name for p in shots.iterdir()))
-strip = [np.asarray(Image.open(shots / name).convert("RGB")) for name in
-         ("test_bunny.png", "test_bunny.actual.png", "test_bunny.diff.png")]
-Image.fromarray(np.concatenate(strip, axis=1)).save("snapshot.png")
+names = {
+    "test_bunny.png": "reference",
+    "test_bunny.actual.png": "actual",
+    "test_bunny.diff.png": "difference",
+}
+strip = [np.asarray(Image.open(shots / name).convert("RGB")) for name in names]
+Image.fromarray(panels(strip, list(names.values()))).save("snapshot.png")

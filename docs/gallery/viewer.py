@@ -6,20 +6,21 @@ the material to hatching, and prints the ``tm.render`` call that reproduces the 
 strip shows the frames it drew.
 """
 
-import numpy as np
 from PIL import Image
 
 import toonmesh as tm
 from toonmesh.data import bunny
+from toonmesh.figures import panels
 
 V, F = bunny()
 v = tm.Viewer(V, F, outlines="mesh", width=256, height=256)
 frames = [v.frame]
-v.orbit(120, -20)                          # as a drag of 120 pixels right, 20 up
+v.orbit(120, -20)  # as a drag of 120 pixels right, 20 up
 frames.append(v.frame)
 v.zoom(1.6)
 frames.append(v.frame)
-v.material = tm.Material.hatching()        # every setting re-renders when set
+v.material = tm.Material.hatching()  # every setting re-renders when set
 frames.append(v.frame)
 print(v.code())
-Image.fromarray(np.concatenate(frames, axis=1)).save("viewer_frames.png", optimize=True)
+labels = ["start", "orbit(120, -20)", "zoom(1.6)", "material = hatching"]
+Image.fromarray(panels(frames, labels)).save("viewer_frames.png", optimize=True)

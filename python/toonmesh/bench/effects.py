@@ -19,11 +19,8 @@ Mesh = Tuple[np.ndarray, np.ndarray]
 
 
 def box(center: Sequence[float], half: float) -> Mesh:
-    """A cube of half-size ``half`` at ``center``, faces wound outward."""
-    V = np.array([[x, y, z] for x in (-1.0, 1.0) for y in (-1.0, 1.0) for z in (-1.0, 1.0)]) * half + center
-    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
-                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
-    return V, F
+    """A cube of half-size ``half`` at ``center``, faces wound outward (``toonmesh.shapes.box``)."""
+    return tm.shapes.box(np.subtract(center, half), np.add(center, half))
 
 
 def plane(half: float, y: float = 0.0) -> Mesh:

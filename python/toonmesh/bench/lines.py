@@ -28,12 +28,8 @@ VARIANTS: Dict[str, Dict[str, Any]] = {
 
 
 def slab(lo: Sequence[float], hi: Sequence[float]) -> Mesh:
-    """A box from corner ``lo`` to corner ``hi``, faces wound outward."""
-    lo_, hi_ = np.asarray(lo, float), np.asarray(hi, float)
-    V = np.array([[x, y, z] for x in (lo_[0], hi_[0]) for y in (lo_[1], hi_[1]) for z in (lo_[2], hi_[2])])
-    F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
-                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
-    return V, F
+    """A box from corner ``lo`` to corner ``hi``, faces wound outward (``toonmesh.shapes.box``)."""
+    return tm.shapes.box(lo, hi)
 
 
 def pipe(axis: int, radius: float = 1.0, half_length: float = 2.0, sections: int = 96) -> Mesh:

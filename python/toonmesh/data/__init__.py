@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gzip
 import os
 from typing import List, Tuple
 
@@ -62,3 +63,27 @@ def bunny() -> Tuple[np.ndarray, np.ndarray]:
     (V, F) as float64 (N, 3) and int64 (M, 3); y is up. About 1,100 vertices are used by no face.
     """
     return load_obj(os.path.join(_HERE, "bunny.obj"))
+
+
+def _load_gzipped(name: str) -> Tuple[np.ndarray, np.ndarray]:
+    """A shipped OBJ kept gzip-compressed (``<name>.obj.gz``), parsed like :func:`load_obj`."""
+    with gzip.open(os.path.join(_HERE, name + ".obj.gz"), "rb") as f:
+        return _parse_obj(f.read())
+
+
+def fandisk() -> Tuple[np.ndarray, np.ndarray]:
+    """The fandisk CAD part (Hoppe et al. 1994): 6,475 vertices, 12,946 faces.
+
+    (V, F) as float64 (N, 3) and int64 (M, 3); y is up, about 5 units across. Flat faces meet at
+    sharp creases, the case for crease lines, ``normals="auto"`` and crease-keeping denoising.
+    """
+    return _load_gzipped("fandisk")
+
+
+def cow() -> Tuple[np.ndarray, np.ndarray]:
+    """The cow (Viewpoint), as in Princeton's suggestive-contours models: 2,903 vertices, 5,804 faces.
+
+    (V, F) as float64 (N, 3) and int64 (M, 3); y is up, about 10 units long along x. Closed and smooth,
+    the case for contours and suggestive contours.
+    """
+    return _load_gzipped("cow")

@@ -3,7 +3,8 @@
 Besides the icosphere and the grid, the test models of Kang, Kim and Yoon (2001), with their
 face counts: :func:`torus` (the donut, 450 faces), :func:`pawn` (the chess piece, 480),
 :func:`teapot` (Newell's teapot, 992 of its 1024 triangles; the rest are points) and
-:func:`uv_sphere` (264), and :func:`lathe`, which turns any profile into a surface of revolution.
+:func:`uv_sphere` (264), :func:`lathe`, which turns any profile into a surface of revolution, and
+:func:`box`, an axis-aligned box between two corners.
 Every model is closed and outward-oriented unless its docstring says otherwise, with y up.
 """
 
@@ -18,7 +19,7 @@ from toonmesh import _core
 from toonmesh.arguments._checks import integer, number
 from toonmesh.shapes._teapot import teapot_mesh
 
-__all__ = ["icosphere", "grid", "torus", "lathe", "pawn", "uv_sphere", "teapot"]
+__all__ = ["icosphere", "grid", "torus", "lathe", "pawn", "uv_sphere", "teapot", "box"]
 
 Mesh = Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]
 
@@ -247,3 +248,44 @@ def teapot(subdivisions: int = 4) -> Mesh:
     (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
     """
     return teapot_mesh(integer("subdivisions", subdivisions, 2, 64))
+
+
+# the box's 12 triangles over its corners, numbered x-major (corner k = (x, y, z) bits of k: 4 2 1)
+_BOX_FACES = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+              [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]]
+
+
+def box(lo: npt.ArrayLike = (-0.5, -0.5, -0.5), hi: npt.ArrayLike = (0.5, 0.5, 0.5)) -> Mesh:
+    """An axis-aligned box from corner ``lo`` to corner ``hi``: closed, outward-oriented.
+
+    Parameters
+    ----------
+    lo, hi : 3 numbers each, default the unit cube about the origin
+        The smallest and the largest corner (x, y, z); ``hi`` must exceed ``lo`` on every axis.
+
+    Returns
+    -------
+    (V, F): (8, 3) float64 corners (corner k has x from ``hi`` when bit 4 of k is set, y bit
+    2, z bit 1) and (12, 3) int64 faces, two per side.
+
+    Raises
+    ------
+    TypeError when a corner is not 3 numbers; ValueError for a corner that is not finite
+    or a ``hi`` not above ``lo`` on an axis.
+    """
+    corners = []
+    for name, value in (("lo", lo), ("hi", hi)):
+        try:
+            c = np.asarray(value)
+        except Exception as exc:  # ragged lists and other non-arrays
+            raise TypeError(f"{name}: expected 3 numbers (x, y, z) ({exc})") from None
+        if c.dtype.kind not in "iuf" or c.shape != (3,):
+            raise TypeError(f"{name}: expected 3 numbers (x, y, z), got {value!r}")
+        if not np.isfinite(c).all():
+            raise ValueError(f"{name}: must be finite, got {value!r}")
+        corners.append(c.astype(np.float64))
+    a, b = corners
+    if not (b > a).all():
+        raise ValueError(f"hi: must exceed lo on every axis, got lo={lo!r}, hi={hi!r}")
+    V = np.array([[x, y, z] for x in (a[0], b[0]) for y in (a[1], b[1]) for z in (a[2], b[2])])
+    return V, np.array(_BOX_FACES, dtype=np.int64)
