@@ -153,7 +153,12 @@ def _requests_from_the_web(page) -> List[str]:
     """Collects, as the page loads things, every request that leaves the disk (a site read
     offline must make none) and every request that fails."""
     seen: List[str] = []
-    page.on("request", lambda r: seen.append(r.url) if urlsplit(r.url).scheme not in ("file", "data", "about", "blob") else None)
+
+    def request(r) -> None:
+        if urlsplit(r.url).scheme not in ("file", "data", "about", "blob"):
+            seen.append(r.url)
+
+    page.on("request", request)
     page.on("requestfailed", lambda r: seen.append(f"{r.url} ({r.failure})"))
     return seen
 
@@ -189,11 +194,12 @@ def test_searching_plotter_from_file_lists_a_page_about_it(site, tmp_path):
             assert targets and all(t.is_file() and site in t.parents for t in targets), links
             about = [t for t in targets if "plotter" in re.sub("<[^>]+>", " ", t.read_text()).lower()]
             assert about, targets
-            # a section whose heading says "plotter" is among the results, by its anchor
+            # a guide's section whose heading says "plotter" is among the results, by its anchor
             every = page.eval_on_selector_all(".md-search-result a", "links => links.map(a => a.href)")
             found = {(Path(unquote(urlsplit(link).path)), urlsplit(link).fragment) for link in every}
             heading = re.compile(r'<h[1-6] id="([^"]+)"[^>]*>((?:(?!</h).)*plotter(?:(?!</h).)*)</h', re.I | re.S)
-            sections = {(t, m.group(1)) for t in site.rglob("*.html") for m in heading.finditer(t.read_text())}
+            guides = [site / f"{name}.html" for name in GUIDES]
+            sections = {(t, m.group(1)) for t in guides for m in heading.finditer(t.read_text())}
             assert sections <= found, (sections - found, every)
             # the version, in the footer
             version = page.locator(".tm-version")
