@@ -205,6 +205,9 @@ def test_searching_plotter_from_file_lists_a_page_about_it(site, tmp_path):
             version = page.locator(".tm-version")
             version.scroll_into_view_if_needed()
             assert version.is_visible() and "toonmesh " in version.inner_text()
+            # a notebook's page too (nbconvert's pages load widget managers and MathJax from the web)
+            page.goto((site / "notebooks" / "quickstart.html").as_uri())
+            page.wait_for_load_state("load")
             assert outside == [], outside
         finally:
             browser.close()
