@@ -68,87 +68,6 @@ def test_every_gallery_script_ran_and_left_its_figures_in_the_built_site(site):
     assert len(re.findall(r"gallery: \w+\.py ran in", log)) == len(scripts), log
 
 
-class _Links(HTMLParser):
-    def __init__(self) -> None:
-        super().__init__()
-        self.links: List[str] = []
-        self.ids: Set[str] = set()
-
-    def handle_starttag(self, tag: str, attrs: List[Tuple[str, "str | None"]]) -> None:
-        a = dict(attrs)
-        if a.get("id"):
-            self.ids.add(a["id"] or "")
-        for key in ("href", "src"):
-            if a.get(key):
-                self.links.append(a[key] or "")
-
-
-def _parse(path: Path) -> _Links:
-    parser = _Links()
-    parser.feed(path.read_text(encoding="utf-8"))
-    return parser
-
-
-def test_every_internal_link_of_the_built_site_resolves(site):
-    pages: Dict[Path, _Links] = {p: _parse(p) for p in site.rglob("*.html") if p.name != "404.html"}
-    broken = []
-    checked = 0
-    for page, parsed in pages.items():
-        for link in parsed.links:
-            parts = urlsplit(link)
-            if parts.scheme or link.startswith("//") or link.startswith("mailto:"):
-                continue
-            target = (page.parent / unquote(parts.path)).resolve() if parts.path else page
-            if parts.path.endswith("/"):
-                target = target / "index.html"
-            checked += 1
-            if not target.exists():
-                broken.append(f"{page.relative_to(site)}: {link}")
-            elif parts.fragment and target.suffix == ".html":
-                ids = pages[target].ids if target in pages else _parse(target).ids
-                if parts.fragment not in ids:
-                    broken.append(f"{page.relative_to(site)}: {link} (no such anchor)")
-    assert checked > 500
-    assert broken == [], broken
-
-
-def test_the_api_reference_documents_every_public_function_class_and_method(site):
-    need("griffe")
-    spec = importlib.util.spec_from_file_location("docs_api", ROOT / "scripts" / "docs_api.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    assert module.undocumented(ROOT / "python") == []
-    api = (site / "api.html").read_text()
-    for name in ("render", "Renderer", "Material", "Camera", "Light", "RenderResult", "Viewer", "smooth.laplacian",
-                 "edges.feature_edges", "testing.assert_images_close", "batch.render_files"):
-        assert f'id="toonmesh.{name}"' in api, name
-    assert "band_antialias" in api  # the render keywords (RenderKeywords), from the core's docstring
-
-
-def test_the_home_page_and_a_gallery_page_show_every_picture_in_a_browser(site, tmp_path):
-    sync_api = need("playwright.sync_api")
-    executable = chromium()
-    shots = []
-    with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=executable, args=["--no-sandbox"])
-        try:
-            page = browser.new_page(viewport={"width": 1280, "height": 900})
-            for name in ("index.html", "gallery/index.html", "gallery/papers.html"):
-                page.goto((site / name).as_uri())
-                page.wait_for_load_state("load")
-                images = page.evaluate("Array.from(document.images).map(i => [i.src, i.complete, i.naturalWidth])")
-                assert len(images) >= 1, name
-                broken = [src for src, complete, width in images if not complete or width == 0]
-                assert broken == [], (name, broken)
-                shot = tmp_path / (name.replace("/", "-").replace(".html", ".png"))
-                page.screenshot(path=str(shot), full_page=True)
-                shots.append(shot)
-        finally:
-            browser.close()
-    assert all(s.stat().st_size > 10_000 for s in shots)
-    print("screenshots:", *shots)
-
-
 def _requests_from_the_web(page) -> List[str]:
     """Collects, as the page loads things, every request that leaves the disk (a site read
     offline must make none) and every request that fails."""
@@ -291,3 +210,85 @@ def test_no_page_loads_a_script_or_a_style_from_the_web(site):
     loaded = {page.relative_to(site).as_posix(): tags.findall(page.read_text(encoding="utf-8"))
               for page in _pages(site)}
     assert {name: found for name, found in loaded.items() if found} == {}
+
+
+class _Links(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.links: List[str] = []
+        self.ids: Set[str] = set()
+
+    def handle_starttag(self, tag: str, attrs: List[Tuple[str, "str | None"]]) -> None:
+        a = dict(attrs)
+        if a.get("id"):
+            self.ids.add(a["id"] or "")
+        for key in ("href", "src"):
+            if a.get(key):
+                self.links.append(a[key] or "")
+
+
+def _parse(path: Path) -> _Links:
+    parser = _Links()
+    parser.feed(path.read_text(encoding="utf-8"))
+    return parser
+
+
+def test_every_internal_link_of_the_built_site_resolves(site):
+    pages: Dict[Path, _Links] = {p: _parse(p) for p in site.rglob("*.html") if p.name != "404.html"}
+    broken = []
+    checked = 0
+    for page, parsed in pages.items():
+        for link in parsed.links:
+            parts = urlsplit(link)
+            if parts.scheme or link.startswith("//") or link.startswith("mailto:"):
+                continue
+            target = (page.parent / unquote(parts.path)).resolve() if parts.path else page
+            if parts.path.endswith("/"):
+                target = target / "index.html"
+            checked += 1
+            if not target.exists():
+                broken.append(f"{page.relative_to(site)}: {link}")
+            elif parts.fragment and target.suffix == ".html":
+                ids = pages[target].ids if target in pages else _parse(target).ids
+                if parts.fragment not in ids:
+                    broken.append(f"{page.relative_to(site)}: {link} (no such anchor)")
+    assert checked > 500
+    assert broken == [], broken
+
+
+def test_the_api_reference_documents_every_public_function_class_and_method(site):
+    need("griffe")
+    spec = importlib.util.spec_from_file_location("docs_api", ROOT / "scripts" / "docs_api.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    assert module.undocumented(ROOT / "python") == []
+    api = (site / "api.html").read_text()
+    for name in ("render", "Renderer", "Material", "Camera", "Light", "RenderResult", "Viewer", "smooth.laplacian",
+                 "edges.feature_edges", "testing.assert_images_close", "batch.render_files"):
+        assert f'id="toonmesh.{name}"' in api, name
+    assert "band_antialias" in api  # the render keywords (RenderKeywords), from the core's docstring
+
+
+def test_the_home_page_and_a_gallery_page_show_every_picture_in_a_browser(site, tmp_path):
+    sync_api = need("playwright.sync_api")
+    executable = chromium()
+    shots = []
+    with sync_api.sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=executable, args=["--no-sandbox"])
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            for name in ("index.html", "gallery/index.html", "gallery/papers.html"):
+                page.goto((site / name).as_uri())
+                page.wait_for_load_state("load")
+                images = page.evaluate("Array.from(document.images).map(i => [i.src, i.complete, i.naturalWidth])")
+                assert len(images) >= 1, name
+                broken = [src for src, complete, width in images if not complete or width == 0]
+                assert broken == [], (name, broken)
+                shot = tmp_path / (name.replace("/", "-").replace(".html", ".png"))
+                page.screenshot(path=str(shot), full_page=True)
+                shots.append(shot)
+        finally:
+            browser.close()
+    assert all(s.stat().st_size > 10_000 for s in shots)
+    print("screenshots:", *shots)
+
