@@ -291,4 +291,3 @@ def test_the_home_page_and_a_gallery_page_show_every_picture_in_a_browser(site, 
             browser.close()
     assert all(s.stat().st_size > 10_000 for s in shots)
     print("screenshots:", *shots)
-
