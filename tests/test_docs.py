@@ -68,6 +68,150 @@ def test_every_gallery_script_ran_and_left_its_figures_in_the_built_site(site):
     assert len(re.findall(r"gallery: \w+\.py ran in", log)) == len(scripts), log
 
 
+def _requests_from_the_web(page) -> List[str]:
+    """Collects, as the page loads things, every request that leaves the disk (a site read
+    offline must make none) and every request that fails."""
+    seen: List[str] = []
+
+    def request(r) -> None:
+        if urlsplit(r.url).scheme not in ("file", "data", "about", "blob"):
+            seen.append(r.url)
+
+    page.on("request", request)
+    page.on("requestfailed", lambda r: seen.append(f"{r.url} ({r.failure})"))
+    return seen
+
+
+def test_searching_plotter_from_file_lists_a_page_about_it(site, tmp_path):
+    sync_api = need("playwright.sync_api")
+    executable = chromium()
+    assert (site / "search" / "search_index.js").is_file()  # the index as a script, for file:// pages
+    with sync_api.sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=executable, args=["--no-sandbox"])
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            outside = _requests_from_the_web(page)
+            page.goto((site / "index.html").as_uri())
+            page.wait_for_load_state("load")
+            box = page.locator(".md-search__input")
+            assert box.is_visible()  # in the header, not behind an icon, at 1280 px
+            header = page.locator(".md-header").bounding_box()
+            where = box.bounding_box()
+            assert header and where and where["y"] + where["height"] <= header["y"] + header["height"]
+            box.click()
+            box.type("plotter")
+            items = page.locator(".md-search-result__item")
+            items.first.wait_for(state="visible", timeout=20_000)
+            shot = tmp_path / "search-plotter.png"
+            page.screenshot(path=str(shot))
+            visible = [item for item in items.all() if item.is_visible()]
+            assert visible, "no search result is visible"
+            meta = page.locator(".md-search-result__meta").inner_text()
+            assert "matching" in meta and not meta.startswith("No"), meta
+            links = page.eval_on_selector_all(".md-search-result__item > a", "links => links.map(a => a.href)")
+            targets = {Path(unquote(urlsplit(link).path)) for link in links}
+            assert targets and all(t.is_file() and site in t.parents for t in targets), links
+            about = [t for t in targets if "plotter" in re.sub("<[^>]+>", " ", t.read_text()).lower()]
+            assert about, targets
+            # a guide's section whose heading says "plotter" is among the results, by its anchor
+            every = page.eval_on_selector_all(".md-search-result a", "links => links.map(a => a.href)")
+            found = {(Path(unquote(urlsplit(link).path)), urlsplit(link).fragment) for link in every}
+            heading = re.compile(r'<h[1-6] id="([^"]+)"[^>]*>((?:(?!</h).)*plotter(?:(?!</h).)*)</h', re.I | re.S)
+            guides = [site / f"{name}.html" for name in GUIDES]
+            sections = {(t, m.group(1)) for t in guides for m in heading.finditer(t.read_text())}
+            assert sections <= found, (sections - found, every)
+            # the version, in the footer
+            version = page.locator(".tm-version")
+            version.scroll_into_view_if_needed()
+            assert version.is_visible() and "toonmesh " in version.inner_text()
+            # a notebook's page too (nbconvert's pages load widget managers and MathJax from the web)
+            page.goto((site / "notebooks" / "quickstart.html").as_uri())
+            page.wait_for_load_state("load")
+            assert outside == [], outside
+        finally:
+            browser.close()
+    assert shot.stat().st_size > 10_000
+    print("screenshots:", shot)
+
+
+def _pages(site: Path) -> List[Path]:
+    return sorted(p for p in site.rglob("*.html"))
+
+
+def test_every_page_shows_the_version_it_documents(site):
+    import toonmesh
+
+    version = toonmesh.__version__
+    assert re.fullmatch(r"\d+\.\d+\.\d+\S*", version)
+    pages = _pages(site)
+    assert len(pages) > 40
+    footer = re.compile(r'<div class="md-copyright__highlight tm-version">\s*toonmesh ([^\s<]+)')
+    shown = {page.relative_to(site).as_posix(): footer.findall(page.read_text(encoding="utf-8")) for page in pages}
+    assert {name: found for name, found in shown.items() if found != [version]} == {}
+
+
+def test_the_changelog_is_a_page_of_the_nav_with_this_version(site):
+    import toonmesh
+
+    text = (site / "changelog.html").read_text(encoding="utf-8")
+    words = re.sub("<[^>]+>", " ", text)
+    assert f"[{toonmesh.__version__}]" in words  # the current release has its section
+    entries = re.findall(r"<li>", text.split('class="md-content"', 1)[1])
+    assert len(entries) >= 20, len(entries)
+    # every heading of CHANGELOG.md is on the page, so the page is that file
+    headings = re.findall(r"^#+ (.+)$", (ROOT / "CHANGELOG.md").read_text(), flags=re.M)
+    assert headings and all(h in words for h in headings), headings
+    # linked from the nav and from every page's footer
+    index = (site / "index.html").read_text(encoding="utf-8")
+    nav = index.split('class="md-nav md-nav--primary"', 1)[1]
+    assert 'href="changelog.html"' in nav
+    assert 'href="../changelog.html">Changelog' in (site / "gallery" / "index.html").read_text(encoding="utf-8")
+
+
+def test_the_notebooks_are_pages_with_their_figures_and_their_ipynb_to_download(site):
+    nbformat = need("nbformat")
+    from PIL import Image
+    import base64
+    import io
+
+    index = (site / "notebooks.html").read_text(encoding="utf-8")
+    ran, with_figures = [], []
+    for stored in sorted((ROOT / "notebooks").glob("*.ipynb")):
+        name = stored.stem
+        assert f'href="notebooks/{name}.html"' in index, name  # the notebooks page links to it
+        html = (site / "notebooks" / f"{name}.html").read_text(encoding="utf-8")
+        download = re.findall(r'<a href="([^"]+)" download class="md-button tm-download"', html)
+        assert download == [f"{name}.ipynb"], download
+        offered = site / "notebooks" / download[0]
+        notebook = nbformat.read(str(offered), as_version=4)
+        nbformat.validate(notebook)
+        assert offered.read_bytes() == stored.read_bytes()  # the notebook as stored
+        figures = []
+        for data in re.findall(r'<img[^>]+src="data:image/png;base64,([^"]+)"', html):
+            with Image.open(io.BytesIO(base64.b64decode(data))) as image:
+                figures.append(image.size)
+        if "Shown without its outputs" in html:  # a notebook the build does not run says so
+            assert not figures and '<div class="jp-OutputArea-child' not in html, name
+        else:
+            ran.append(name)
+            assert '<div class="jp-OutputArea-child' in html, name
+        assert all(w >= 100 and h >= 100 for w, h in figures), (name, figures)
+        if figures:
+            with_figures.append(name)
+        # a live widget cannot run offline: no widget state is kept, and its still frame is shown
+        assert "application/vnd.jupyter.widget-state+json" not in html, name
+    assert {"quickstart", "papers"} <= set(with_figures), with_figures
+    log = (site / "build.log").read_text()
+    assert sorted(re.findall(r"notebooks: (\w+)\.ipynb ran in", log)) == ran, log
+
+
+def test_no_page_loads_a_script_or_a_style_from_the_web(site):
+    tags = re.compile(r'<(?:script[^>]*\ssrc|link[^>]*\shref)="(?:https?:)?//[^"]*"')
+    loaded = {page.relative_to(site).as_posix(): tags.findall(page.read_text(encoding="utf-8"))
+              for page in _pages(site)}
+    assert {name: found for name, found in loaded.items() if found} == {}
+
+
 class _Links(HTMLParser):
     def __init__(self) -> None:
         super().__init__()
