@@ -177,7 +177,8 @@ def render_files(
 
     Raises:
         ImportError: dask.distributed is not installed.
-        The first task's error (a missing or unreadable file, a bad option) as it was raised.
+        Exception: the first task's error (a missing or unreadable file, a bad option), as it
+            was raised.
     """
     try:
         from dask.distributed import Client, LocalCluster

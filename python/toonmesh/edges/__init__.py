@@ -257,7 +257,8 @@ def contours(
     in :func:`silhouette`. Hidden parts are not removed (a rendered frame removes them).
 
     Args:
-        vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        vertices: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        faces: as in :func:`feature_edges`.
         weld: merge vertices at equal positions first, so that normal or UV seams neither split
             the normals nor cut the lines. Default False.
 
@@ -287,7 +288,11 @@ def suggestive_contours(
     shape has none.
 
     Args:
-        vertices, faces, eye, direction, weld: as in :func:`contours`.
+        vertices: as in :func:`contours`.
+        faces: as in :func:`contours`.
+        eye: as in :func:`contours`.
+        direction: as in :func:`contours`.
+        weld: as in :func:`contours`.
         threshold: the derivative test, D_w kr / |w| > threshold / s^2, with s the mesh's
             feature size (1% of the reciprocal of the 10th percentile of |k|, at most 5% of half
             the bounding box's diagonal, as in the authors' implementation), so it does not
@@ -332,7 +337,8 @@ def silhouette(
     For many views of one mesh, build an :class:`EdgeIndex` once instead.
 
     Args:
-        vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        vertices: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        faces: as in :func:`feature_edges`.
         weld: as in :func:`feature_edges`.
     """
     V, F = mesh_arrays(vertices, faces)
@@ -349,8 +355,9 @@ class EdgeIndex:
     immutable: one index may serve several threads at once.
 
     Args:
-        vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too). They are
-            copied; later changes to the caller's arrays do not affect the index.
+        vertices: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too), copied: later
+            changes to the caller's arrays do not affect the index.
+        faces: as in :func:`feature_edges`, copied too.
         crease_angle: threshold in degrees for :attr:`features` (None, the default: the core's
             default, 30).
         weld: merge coincident vertices first, as in :func:`feature_edges`.

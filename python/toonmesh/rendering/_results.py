@@ -148,7 +148,7 @@ class RenderResult:
         at its kind's width, or, where the width varies along the stroke, a filled ``<path>``
         outlining the ink as the render draws it (:attr:`line_widths`).
 
-        Args:
+        Keyword Args:
             order: "drawing" (default: the order the renderer found them) or "plotter": within
                 each group, each next stroke is the one whose nearer end is closest to where the
                 pen stopped, drawn from that end (greedy nearest neighbour, as vpype's
