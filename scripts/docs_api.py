@@ -43,6 +43,10 @@ STUB = ROOT / "python" / "toonmesh" / "_core.pyi"
 MODULES = ("toonmesh", "toonmesh.smooth", "toonmesh.edges", "toonmesh.shapes", "toonmesh.batch",
            "toonmesh.data", "toonmesh.cli", "toonmesh.testing", "toonmesh.pytest_plugin")
 
+#: the render keywords' table's anchor (docs/api/rendering.md), which roles naming the
+#: ``RenderKeywords`` TypedDict link to
+RENDER_KEYWORDS = "toonmesh.RenderKeywords"
+RENDER_KEYWORDS_ANCHOR = "render-keywords"
 #: the API pages' folder in docs/
 API_DIR = "api/"
 #: a mkdocstrings entry in a page: ``::: toonmesh.render``
@@ -163,9 +167,19 @@ def _signatures_from_stub(runtime: griffe.Object, stub: griffe.Object) -> None:
 
 
 def _readable(p: griffe.Parameter) -> griffe.Parameter:
-    """A stub's parameter with ``None`` for the stub's ``...`` default (None takes the core's)."""
+    """A stub's parameter with ``None`` for the stub's ``...`` default (None takes the core's),
+    and ``Color`` for the stub's ``_Color``."""
     default = "None" if p.default is not None and str(p.default) == "..." else p.default
-    return griffe.Parameter(p.name, annotation=p.annotation, kind=p.kind, default=default)
+    annotation = p.annotation
+    if annotation is not None and "_Color" in str(annotation):
+        annotation = readable_type(str(annotation))
+    return griffe.Parameter(p.name, annotation=annotation, kind=p.kind, default=default)
+
+
+def readable_type(annotation: str) -> str:
+    """A stub's type as the reference shows it: its colour type ``_Color`` (a string
+    ``'#rrggbb'`` or three numbers in [0, 1], see the settings page) as ``Color``."""
+    return annotation.replace("_Color", "Color")
 
 
 #: names a module holds that are not its API: ``from __future__ import annotations``, the
@@ -263,6 +277,7 @@ _IDS: Dict[str, str] = {}
 def on_files(files, config):
     _IDS.clear()
     _IDS.update(_documented(_package(config), files))
+    _IDS[RENDER_KEYWORDS] = "api/rendering.md"  # the anchor above the render keywords' table
     return files
 
 
@@ -298,12 +313,12 @@ def _shown(name: str) -> str:
 
 def summary(rows: List[Tuple[str, griffe.Object]]) -> str:
     """A table of ``rows`` (identifier, object): each name linked to its entry, and one line."""
-    lines = ["| Name | What it is |", "| --- | --- |"]
+    lines = ['<div class="tm-api-table" markdown>', "", "| Name | What it is |", "| --- | --- |"]
     for identifier, obj in rows:
         short = identifier[len("toonmesh."):]
         call = "()" if obj.is_function else ""
         lines.append(f"| [`{short}{call}`][{identifier}] | {_first_line(obj)} |")
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines + ["", "</div>"]) + "\n"
 
 
 def render_keywords() -> str:
@@ -315,14 +330,15 @@ def render_keywords() -> str:
     stubs = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(stubs)
     start = toonmesh.RenderOptions()
-    lines = ["| Keyword | Type | Default | Meaning |", "| --- | --- | --- | --- |"]
+    lines = ['<div class="tm-api-table" markdown>', "", "| Keyword | Type | Default | Meaning |",
+             "| --- | --- | --- | --- |"]
     for f in toonmesh.RenderOptions.describe()["fields"]:
-        kind = stubs.takes(f) + (" or None" if f["optional"] else "")
+        kind = readable_type(stubs.takes(f)) + (" or None" if f["optional"] else "")
         default = repr(getattr(start, f["name"]))
         help_ = f["help"].replace("|", "\\|")
         lines.append(f'| <span id="render-keywords.{f["name"]}">`{f["name"]}`</span> | `{kind}` | '
                      f"`{default}` | {help_} |")
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines + ["", "</div>"]) + "\n"
 
 
 def on_page_markdown(markdown: str, page, config, files) -> str:
@@ -346,6 +362,8 @@ def on_page_markdown(markdown: str, page, config, files) -> str:
         markdown = markdown.replace("<!-- api-index -->", "\n".join(sections))
     if "<!-- render-keywords -->" in markdown:
         markdown = markdown.replace("<!-- render-keywords -->", render_keywords())
+        # the table's heading is the entry that links to RenderKeywords reach
+        config.plugins["autorefs"].register_anchor(page, RENDER_KEYWORDS, anchor=RENDER_KEYWORDS_ANCHOR)
     return markdown
 
 

@@ -1,9 +1,5 @@
 """Render many mesh files, and many views of each, in this process or on a Dask cluster.
 
->>> from toonmesh.batch import render_files
->>> rows = render_files(["a.obj", "b.ply"], "frames/", views=8, width=512, height=512)
->>> # on a cluster: render_files(..., client=Client("tcp://scheduler:8786"))
-
 Each mesh is one task: it is read, uploaded once, and rendered from every view by the worker's
 own :class:`toonmesh.Renderer` (one per worker process and backend, kept between tasks), then
 its images are written to ``out_dir`` (a folder every worker can reach). The result is a list of
@@ -12,6 +8,11 @@ turns it into a table.
 
 Needs ``pip install 'toonmesh[batch]'`` (``dask[distributed]`` and trimesh) for
 :func:`render_files`; :func:`render_file` needs trimesh only.
+
+Examples:
+    >>> from toonmesh.batch import render_files
+    >>> rows = render_files(["a.obj", "b.ply"], "frames/", views=8, width=512, height=512)
+    >>> # on a cluster: render_files(..., client=Client("tcp://scheduler:8786"))
 """
 
 from __future__ import annotations

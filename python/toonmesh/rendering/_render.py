@@ -70,9 +70,11 @@ class Renderer:
     made before ``os.fork()`` cannot render in the child (its device stays with the parent):
     make a new one there (:func:`render` does so by itself).
 
-    >>> r = Renderer()
-    >>> bunny = r.add_mesh(V, F)
-    >>> frames = [r.render(bunny, camera=Camera.fit((np.sin(a), 0.3, np.cos(a)))) for a in angles]
+    Examples:
+        >>> r = Renderer()
+        >>> bunny = r.add_mesh(V, F)
+        >>> views = [Camera.fit((np.sin(a), 0.3, np.cos(a))) for a in angles]
+        >>> frames = [r.render(bunny, camera=camera) for camera in views]
     """
 
     def __init__(self, backend: Optional[str] = None):
@@ -138,10 +140,18 @@ class Renderer:
         self._engine.remove_mesh(mesh.id)
 
     def render(self, meshes: Any = None, **options: "Unpack[RenderKeywords]") -> RenderResult:
-        """Renders ``meshes`` (a MeshHandle, a :class:`Mesh`, a :class:`Lines` drawn as ink, or a
-        list of them; None or [] for an empty scene) with ``options``: the keywords of :class:`RenderOptions` (``width``,
-        ``height``, ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...), each
-        defaulting as that class says. Only the outputs asked for are computed and read back.
+        """Renders ``meshes`` with ``options``. Only the outputs asked for are computed and read
+        back.
+
+        Args:
+            meshes: a :class:`MeshHandle`, a :class:`Mesh`, a :class:`Lines` drawn as ink, or a
+                list of them; None (default) or [] for an empty scene.
+            **options: the render keywords (:class:`RenderKeywords`: ``width``, ``height``,
+                ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...), each with
+                its type, default and meaning.
+
+        Returns:
+            The images asked for in ``outputs``.
         """
         opts = RenderOptions(**options)
         meshes, lines = split_lines(meshes)
@@ -157,8 +167,15 @@ class Renderer:
         default: between consecutive views whose eye turns by less than 10 degrees about each
         mesh's centre, they fade by how fast they slide across the surface and a line drawn in
         the view before needs a weaker test to stay, so that a turntable's lines hold still;
-        views farther apart are drawn as they are alone). ``options`` as in :meth:`render`
-        (``camera`` is not one of them here).
+        views farther apart are drawn as they are alone).
+
+        Args:
+            meshes: as in :meth:`render`.
+            cameras: the views, a sequence of :class:`Camera`.
+            **options: the render keywords (:class:`RenderKeywords`) but ``camera``.
+
+        Returns:
+            The views' images and results, a :class:`RenderStack`.
         """
         if "camera" in options:
             raise TypeError("camera: render_many takes cameras=, a list of them")
@@ -320,29 +337,41 @@ def render(
 ) -> RenderResult:
     """Renders a mesh (or several) to a toon-shaded image, headless, and returns NumPy arrays.
 
-    ``vertices``: (N, 3) float32/float64 with ``faces`` (M, 3) int32/int64/uint32; or a
-    ``trimesh.Trimesh``; or a ``trimesh.Scene`` or a mesh file's path (str or os.PathLike),
-    read as :func:`toonmesh.load` reads them (every node, its transform and colours); or a
-    :class:`Mesh` or :class:`Points` (a point cloud, drawn as splats) or a list of them (each
-    with its own material and transform), where :class:`Lines` items may stand beside them
-    (segments drawn as ink, hidden by the surfaces in front of them); None for an empty scene. With no ``material`` given, meshes that carry colours or a texture and name no
-    material of their own are drawn under the default shading model in white, so their colours
-    show as they are, however they were given. Inputs are never modified. Meshes that share their vertex and face arrays (the
-    instances of one geometry) are uploaded once.
-    ``normals``: None (default: a file's own normals where it has them, else ``"auto"``: hard
-    edges at the creases a drawing keeps, for boxes and CAD parts, and smooth scans),
-    ``"smooth"``, ``"flat"``, ``"auto"``, ``("auto", degrees)``, or the mesh's own (N, 3)
-    vertex normals; see :class:`Mesh`. A mode given replaces a file's normals and a :class:`Mesh`'s
-    (a copy: the caller's mesh is not changed); a :class:`MeshHandle`'s are fixed at its upload, so
-    giving ``normals`` with one is a ValueError.
-    ``smooth_iterations``: Laplacian smoothing first (Al-Rousan et al.'s pipeline). The scene's
-    up axis (the ``up`` option, see :class:`RenderOptions`) is a file's convention unless given:
-    ``render("part.stl")`` keeps +z up.
-    ``backend`` as in :class:`Renderer`. ``options``: the keywords of :class:`RenderOptions`
-    (``width``, ``height``, ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...),
-    each defaulting as that class says.
+    Inputs are never modified. Meshes that share their vertex and face arrays (the instances of
+    one geometry) are uploaded once. With no ``material`` given, meshes that carry colours or a
+    texture and name no material of their own are drawn under the default shading model in
+    white, so their colours show as they are, however they were given.
 
-    >>> img = toonmesh.render(V, F, width=640, height=480, outlines="mesh").color   # (480, 640, 4) uint8
+    Args:
+        vertices: (N, 3) float32/float64 with ``faces``; or a ``trimesh.Trimesh``; or a
+            ``trimesh.Scene`` or a mesh file's path (str or os.PathLike), read as
+            :func:`toonmesh.load` reads them (every node, its transform and colours); or a
+            :class:`Mesh` or :class:`Points` (a point cloud, drawn as splats) or a list of them
+            (each with its own material and transform), where :class:`Lines` items may stand
+            beside them (segments drawn as ink, hidden by the surfaces in front of them); None
+            (default) for an empty scene.
+        faces: (M, 3) int32/int64/uint32 with ``vertices`` given as an array; else None.
+        normals: None (default: a file's own normals where it has them, else ``"auto"``: hard
+            edges at the creases a drawing keeps, for boxes and CAD parts, and smooth scans),
+            ``"smooth"``, ``"flat"``, ``"auto"``, ``("auto", degrees)``, or the mesh's own
+            (N, 3) vertex normals; see :class:`Mesh`. A mode given replaces a file's normals and
+            a :class:`Mesh`'s (a copy: the caller's mesh is not changed); a
+            :class:`MeshHandle`'s are fixed at its upload, so giving ``normals`` with one is a
+            ValueError.
+        smooth_iterations: Laplacian smoothing first (Al-Rousan et al.'s pipeline), default 0.
+        backend: as in :class:`Renderer`; default None.
+        **options: the render keywords (:class:`RenderKeywords`: ``width``, ``height``,
+            ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...), each with its
+            type, default and meaning. The scene's up axis (``up``) is a file's convention
+            unless given: ``render("part.stl")`` keeps +z up.
+
+    Returns:
+        The images asked for in ``outputs``, as NumPy arrays (``color``: (H, W, 4) uint8).
+
+    Examples:
+        >>> img = toonmesh.render(V, F, width=640, height=480, outlines="mesh").color
+        >>> img.shape, img.dtype
+        ((480, 640, 4), dtype('uint8'))
     """
     iterations = _smoothing_iterations(smooth_iterations)
     opts = RenderOptions(**options)  # checked before any upload
