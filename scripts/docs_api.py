@@ -27,6 +27,7 @@ import inspect
 import logging
 import re
 import sys
+import textwrap
 import warnings
 from pathlib import Path
 from typing import Dict, Iterator, List, Optional, Tuple
@@ -141,6 +142,7 @@ class PublicApi(griffe.Extension):
             return
         stub = griffe.visit("_core", filepath=STUB, code=STUB.read_text(encoding="utf-8"))
         _signatures_from_stub(pkg["_core"], stub)
+        _settings_sections(pkg["_core"])
         _tidy(pkg, set())
 
 
@@ -164,6 +166,80 @@ def _signatures_from_stub(runtime: griffe.Object, stub: griffe.Object) -> None:
         elif declared.is_function:
             found.parameters = griffe.Parameters(*(_readable(p) for p in declared.parameters))
             found.returns = declared.returns
+
+
+def _stubs():
+    """scripts/stubs.py, which writes the stub: how it spells each kind of field's type."""
+    spec = importlib.util.spec_from_file_location("toonmesh_stubs", ROOT / "scripts" / "stubs.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def shown(value) -> str:
+    """A described default as the reference shows it: floats to 6 significant digits."""
+    if isinstance(value, float):
+        return f"{value:g}"
+    if isinstance(value, (tuple, list)):
+        inner = ", ".join(shown(v) for v in value)
+        return f"({inner}{',' if len(value) == 1 else ''})" if isinstance(value, tuple) else f"[{inner}]"
+    return repr(value)
+
+
+def _sentence(text: str) -> str:
+    text = " ".join(text.split())
+    return text if text.endswith(".") else text + "."
+
+
+def _settings_sections(core: griffe.Object) -> None:
+    """Each settings class's fields (an "Attributes" section: type, help, default) and each of
+    its constructors' keywords (an "Args" section: help, default), from the core's description
+    of the class (``Class.describe()``), after the docstring the module gives it."""
+    import toonmesh._core as runtime
+
+    stubs = _stubs()
+    for name in runtime.SETTINGS_CLASSES:
+        cls = getattr(runtime, name)
+        described = cls.describe()
+        try:
+            start = cls()
+        except TypeError:
+            start = None  # built by its static methods only: no one default for its fields
+        taken = set()  # the fields the plain constructor takes: its "Args" say them
+        for c in described["constructors"]:
+            target = core[name].members.get(c["name"]) if c["name"] else core[name]
+            if target is None:
+                continue
+            if not c["name"]:
+                taken = {p["name"] for p in c["params"]}
+            function = target if target.is_function else target.members.get("__init__")
+            defaults = {p["name"]: p.get("default") for p in c["params"]}
+            for parameter in function.parameters if function is not None else ():
+                if defaults.get(parameter.name) is not None:
+                    parameter.default = shown(defaults[parameter.name])  # what omitting it gives
+            _append_section(target, "Args", [f"{p['name']}: {_sentence(p['help'])}" for p in c["params"]])
+        fields = []
+        for f in described["fields"]:
+            if f["name"] in taken:
+                continue
+            entry = f"{f['name']} ({stubs.gives(f)}): {_sentence(f['help'])}"
+            if start is not None:
+                entry += f" Default ``{shown(getattr(start, f['name']))}``."
+            fields.append(entry)
+        _append_section(core[name], "Attributes", fields)
+
+
+def _append_section(obj: griffe.Object, title: str, entries: List[str]) -> None:
+    if not entries:
+        return
+    lines = [f"{title}:"]
+    for entry in entries:
+        wrapped = textwrap.wrap(entry, 92)
+        lines += ["    " + wrapped[0], *("        " + w for w in wrapped[1:])]
+    if obj.docstring:  # keeps the parser mkdocstrings gave it
+        obj.docstring.value = obj.docstring.value.rstrip() + "\n\n" + "\n".join(lines)
+    else:
+        obj.docstring = griffe.Docstring("\n".join(lines), parent=obj)
 
 
 def _readable(p: griffe.Parameter) -> griffe.Parameter:
@@ -326,15 +402,13 @@ def render_keywords() -> str:
     description of ``RenderOptions``; the types are the stub's (scripts/stubs.py)."""
     import toonmesh
 
-    spec = importlib.util.spec_from_file_location("toonmesh_stubs", ROOT / "scripts" / "stubs.py")
-    stubs = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(stubs)
+    stubs = _stubs()
     start = toonmesh.RenderOptions()
     lines = ['<div class="tm-api-table" markdown>', "", "| Keyword | Type | Default | Meaning |",
              "| --- | --- | --- | --- |"]
     for f in toonmesh.RenderOptions.describe()["fields"]:
         kind = readable_type(stubs.takes(f)) + (" or None" if f["optional"] else "")
-        default = repr(getattr(start, f["name"]))
+        default = shown(getattr(start, f["name"]))
         help_ = f["help"].replace("|", "\\|")
         lines.append(f'| <span id="render-keywords.{f["name"]}">`{f["name"]}`</span> | `{kind}` | '
                      f"`{default}` | {help_} |")
