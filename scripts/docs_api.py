@@ -436,8 +436,15 @@ def on_page_markdown(markdown: str, page, config, files) -> str:
         markdown = markdown.replace("<!-- api-index -->", "\n".join(sections))
     if "<!-- render-keywords -->" in markdown:
         markdown = markdown.replace("<!-- render-keywords -->", render_keywords())
-        # the table's heading is the entry that links to RenderKeywords reach
-        config.plugins["autorefs"].register_anchor(page, RENDER_KEYWORDS, anchor=RENDER_KEYWORDS_ANCHOR)
+        # the table's heading is the entry that links to RenderKeywords reach, roles and the
+        # signatures' ``Unpack[RenderKeywords]`` (named by the module Python gives the TypedDict
+        # the core makes)
+        import toonmesh
+
+        autorefs = config.plugins["autorefs"]
+        autorefs.register_anchor(page, RENDER_KEYWORDS, anchor=RENDER_KEYWORDS_ANCHOR)
+        made_in = f"{toonmesh.RenderKeywords.__module__}.RenderKeywords"
+        autorefs.register_anchor(page, made_in, anchor=RENDER_KEYWORDS_ANCHOR, primary=False)
     return markdown
 
 
