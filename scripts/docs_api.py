@@ -370,9 +370,10 @@ def resolve(name: str, known: Dict[str, str]) -> Optional[str]:
 
 
 def _first_line(obj: griffe.Object) -> str:
-    """The docstring's first sentence (up to its first blank line), roles as links."""
+    """The docstring's first sentence (in its first paragraph), roles as links."""
     doc = obj.docstring.value.strip() if obj.docstring else ""
     first = " ".join(doc.split("\n\n")[0].split())
+    first = re.split(r"(?<=[a-z0-9)\]`'])\. (?=[A-Z])", first, maxsplit=1)[0]
     first = ROLE_MD.sub(lambda m: _md_link(m.group(1)), first)
     return first.replace("|", "\\|")
 
@@ -426,7 +427,8 @@ def on_page_markdown(markdown: str, page, config, files) -> str:
         markdown = markdown.replace("<!-- api-summary -->", summary(entries(package, markdown)))
     if "<!-- api-index -->" in markdown:
         sections = []
-        for f in sorted(files, key=lambda f: f.src_uri):
+        # the pages in the navigation's order
+        for f in [child.file for child in page.parent.children if child.is_page] if page.parent else []:
             if f.src_uri.startswith(API_DIR) and f.src_uri.endswith(".md") and f.src_uri != uri:
                 text = Path(f.abs_src_path).read_text(encoding="utf-8")
                 title = re.search(r"^# (.+)$", text, re.M)
