@@ -218,6 +218,10 @@ def _settings_sections(core: griffe.Object) -> None:
                 if defaults.get(parameter.name) is not None:
                     parameter.default = shown(defaults[parameter.name])  # what omitting it gives
             _append_section(target, "Args", [f"{p['name']}: {_sentence(p['help'])}" for p in c["params"]])
+        replace = core[name].members.get("replace")
+        if replace is not None:  # takes every field a value can change
+            _append_section(replace, "Args", [f"{f['name']}: {_sentence(f['help'])}" for f in described["fields"]
+                                              if not f["fixed"]])
         fields = []
         for f in described["fields"]:
             if f["name"] in taken:

@@ -95,15 +95,23 @@ class Renderer:
         smooth_iterations: int = 0,
         **colors: "Unpack[MeshColors]",
     ) -> MeshHandle:
-        """Uploads a mesh ((N, 3) float32/float64 and (M, 3) int faces, or a trimesh.Trimesh).
+        """Uploads a mesh, for many views of it.
 
-        ``normals``: None (default: ``"auto"``), ``"smooth"``, ``"flat"``, ``"auto"`` (split at
-        the creases a drawing keeps, sharper than 30 degrees), ``("auto", degrees)``, or the
-        mesh's own (N, 3) vertex normals; see :class:`Mesh`. ``smooth_iterations``: Laplacian smoothing
-        first (each vertex to the mean of its neighbours, n times), as in Al-Rousan et al.
-        ``vertex_colors``, ``face_colors``, ``uv``, ``texture``, ``texture_filter``,
-        ``texture_wrap``, ``alpha_cutoff``, ``alpha_blend``: the mesh's colour, as :class:`Mesh` describes (a
-        trimesh brings its own).
+        Args:
+            vertices: (N, 3) float32/float64 positions, or a ``trimesh.Trimesh`` (which brings
+                its own colours).
+            faces: (M, 3) int faces with ``vertices`` given as an array; else None.
+            normals: None (default: ``"auto"``), ``"smooth"``, ``"flat"``, ``"auto"`` (split at
+                the creases a drawing keeps, sharper than 30 degrees), ``("auto", degrees)``, or
+                the mesh's own (N, 3) vertex normals; see :class:`Mesh`.
+            smooth_iterations: Laplacian smoothing first (each vertex to the mean of its
+                neighbours, n times), as in Al-Rousan et al.; default 0.
+            **colors: ``vertex_colors``, ``face_colors``, ``uv``, ``texture``,
+                ``texture_filter``, ``texture_wrap``, ``alpha_cutoff``, ``alpha_blend``: the
+                mesh's colour, as :class:`Mesh` describes.
+
+        Returns:
+            The uploaded mesh, to render with :meth:`render` or place in a :class:`Mesh`.
         """
         return self._add(vertices, faces, normals, smooth_iterations, _colors.gather(vertices, colors, "add_mesh"))
 
@@ -122,17 +130,32 @@ class Renderer:
         return MeshHandle(self, mesh_id, len(V), len(F), normals)
 
     def add_points(self, points: Points) -> MeshHandle:
-        """Uploads a point cloud (a :class:`Points`) as splats, for many views of it; the handle
-        places it in a scene like a mesh's (its material, transform and up axis are the scene
-        item's: wrap it in a :class:`Mesh` to give them). Normals the cloud lacks are estimated
-        here, once, from each point's nearest neighbours (:func:`toonmesh.points.normals`)."""
+        """Uploads a point cloud as splats, for many views of it.
+
+        The handle places it in a scene like a mesh's (its material, transform and up axis are
+        the scene item's: wrap it in a :class:`Mesh` to give them). Normals the cloud lacks are
+        estimated here, once, from each point's nearest neighbours
+        (:func:`toonmesh.points.normals`).
+
+        Args:
+            points: the cloud, a :class:`Points`.
+
+        Returns:
+            The uploaded cloud, a :class:`MeshHandle`."""
         if not isinstance(points, Points):
             raise TypeError(f"points: expected a toonmesh.Points, got {type(points).__name__}")
         mesh_id = self._engine.add_points(points.positions, points.normals, points.colors, points.radius, None)
         return MeshHandle(self, mesh_id, 3 * len(points), len(points), None)
 
     def remove_mesh(self, mesh: MeshHandle) -> None:
-        """Frees a mesh's GPU memory."""
+        """Frees a mesh's GPU memory.
+
+        Args:
+            mesh: a handle this renderer's :meth:`add_mesh` or :meth:`add_points` returned.
+
+        Raises:
+            ValueError: ``mesh`` belongs to another renderer.
+        """
         if not isinstance(mesh, MeshHandle):
             raise TypeError(f"mesh: expected a toonmesh.MeshHandle, got {type(mesh).__name__}")
         if mesh.renderer is not self:
@@ -459,11 +482,18 @@ def _with_normals(m: Mesh, normals: Normals) -> Mesh:
 
 
 def gpu_info(backend: Optional[str] = None) -> Dict[str, Any]:
-    """The adapter renders use: ``name``, ``backend`` ("vulkan" or "gl"), ``device_type``
-    ("cpu" for Mesa's lavapipe/llvmpipe), ``driver``, ``driver_info``, ``max_texture_size``,
-    ``msaa_samples`` and ``timestamps`` (whether passes are timed on the GPU). Creates the
-    process-wide GPU context if needed; raises :class:`toonmesh.GpuUnavailableError` when there
-    is no adapter.
+    """The adapter renders use. Creates the process-wide GPU context if needed.
+
+    Args:
+        backend: as in :class:`Renderer`; default None.
+
+    Returns:
+        A dict: ``name``, ``backend`` ("vulkan" or "gl"), ``device_type`` ("cpu" for Mesa's
+        lavapipe/llvmpipe), ``driver``, ``driver_info``, ``max_texture_size``,
+        ``msaa_samples`` and ``timestamps`` (whether passes are timed on the GPU).
+
+    Raises:
+        GpuUnavailableError: there is no adapter.
     """
     return _core.gpu_info(backend)
 

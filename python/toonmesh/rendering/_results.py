@@ -208,8 +208,11 @@ class RenderResult:
         return groups
 
     def save_svg(self, path: Any, **options: "Unpack[SvgOptions]") -> None:
-        """Writes :meth:`svg` (with its ``order``, ``simplify``, ``smooth`` and ``widths``) to
-        ``path``."""
+        """Writes :meth:`svg`'s document to ``path``.
+
+        Args:
+            path: the file to write (str or os.PathLike).
+            **options: :meth:`svg`'s ``order``, ``simplify``, ``smooth`` and ``widths``."""
         text = self.svg(**options)
         with open(path, "w", encoding="utf-8") as f:
             f.write(text)
@@ -261,11 +264,17 @@ class RenderStack(Sequence[RenderResult]):
 
     def save(self, path: "str | os.PathLike[str]", fps: int = DEFAULT_FPS, progress: bool = True) -> str:
         """Writes the views' colour images as a video, one frame a view in order (a turntable
-        from :meth:`Renderer.render_many`): ``path`` a ``.gif`` (Pillow), ``.mp4`` (H.264) or
-        ``.webm`` (VP9; both through imageio-ffmpeg, which ships its own ffmpeg; width and height
-        even), ``fps`` an int in [1, 60] frames per second (default 24), with a progress bar
-        (tqdm) while it is written when ``progress`` and there are 8 views or more. Returns the
-        path written, as a string."""
+        from :meth:`Renderer.render_many`).
+
+        Args:
+            path: a ``.gif`` (Pillow), ``.mp4`` (H.264) or ``.webm`` (VP9; both through
+                imageio-ffmpeg, which ships its own ffmpeg; width and height even).
+            fps: frames per second, an int in [1, 60]; default 24.
+            progress: show a progress bar (tqdm) while it is written, where there are 8 views
+                or more; default True.
+
+        Returns:
+            The path written, as a string."""
         if self.color is None:
             raise ValueError("path: a video holds the colour images: render them (outputs=('color', ...))")
         return save_video(path, self.color, fps, progress)
