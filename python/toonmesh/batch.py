@@ -132,7 +132,17 @@ def render_views(
 
 
 def render_file(mesh_path: str, out_dir: str, *, views: int = 1, **options: Any) -> List[Dict[str, Any]]:
-    """Renders one mesh file in this process into ``out_dir``; options as in :func:`render_files`."""
+    """Renders one mesh file in this process into ``out_dir``.
+
+    Args:
+        mesh_path: the mesh file.
+        out_dir: the folder the images are written to.
+        views: as in :func:`render_files`.
+        **options: as in :func:`render_files`.
+
+    Returns:
+        One dict per image written, as :func:`render_files` gives them.
+    """
     outputs = options.get("outputs", ("color",))
     outputs = [outputs] if isinstance(outputs, str) else list(outputs)
     os.makedirs(out_dir, exist_ok=True)

@@ -785,8 +785,12 @@ class Viewer:
         return self._options.replace(camera=self.camera)
 
     def set(self, **options: "Unpack[RenderKeywords]") -> None:
-        """Changes several render settings at once, then renders once; where the settings or
-        the render are refused, the viewer keeps the settings it had."""
+        """Changes several render settings at once, then renders once; where the settings or the
+        render are refused, the viewer keeps the settings it had.
+
+        Args:
+            **options: render keywords (:class:`toonmesh.RenderKeywords`).
+        """
         self._check_open()
         if "outputs" in options:
             raise TypeError("outputs: a Viewer shows the colour image; use snapshot(outputs=...) for others")
