@@ -8,8 +8,11 @@ The reference is made by mkdocstrings from the docstrings, read by griffe. This 
 - gives the compiled core's functions and classes the signatures of its type stub
   (python/toonmesh/_core.pyi, generated from the core's description of its settings), where the
   compiled module has none (``bands(*args, **kwargs)``), while their docstrings stay the module's;
-- leaves out what is not an entry: namedtuple fields' "Alias for field number N" (the fields are
-  described in their class's docstring) and descriptors' memory addresses shown as defaults;
+- adds to each settings class of the core its constructors' keywords and its fields (help,
+  type, default), read from the core's description of the class (``Class.describe()``);
+- leaves out what is not an entry: names a module imports or leaves out of its ``__all__``,
+  namedtuple fields' "Alias for field number N" (the fields are described in their class's
+  docstring) and descriptors' memory addresses shown as defaults;
 - writes each API page's summary table (``<!-- api-summary -->``), the index page's table of
   every entry (``<!-- api-index -->``) and the render keywords' table
   (``<!-- render-keywords -->``), read from the core's description of ``RenderOptions``;
@@ -23,7 +26,6 @@ from __future__ import annotations
 
 import html
 import importlib.util
-import inspect
 import logging
 import re
 import sys
@@ -377,7 +379,7 @@ def _first_line(obj: griffe.Object) -> str:
     """The docstring's first sentence (in its first paragraph), roles as links."""
     doc = obj.docstring.value.strip() if obj.docstring else ""
     first = " ".join(doc.split("\n\n")[0].split())
-    first = re.split(r"(?<=[a-z0-9)\]`'])\. (?=[A-Z])", first, maxsplit=1)[0]
+    first = re.split(r"(?<=[a-z0-9)\]`'])\. (?=[A-Z])", first, maxsplit=1)[0].rstrip(".") + "."
     first = ROLE_MD.sub(lambda m: _md_link(m.group(1)), first)
     return first.replace("|", "\\|")
 
