@@ -64,11 +64,14 @@ def _smoothed(vertices: np.ndarray, faces: np.ndarray, iterations: int) -> np.nd
 class Renderer:
     """Keeps meshes on the GPU so that many views of them upload nothing again.
 
-    ``backend`` is ``"vulkan"``, ``"gl"`` or ``"auto"`` (Vulkan, then GL through EGL); None reads
-    the ``TOONMESH_BACKEND`` environment variable, then uses ``"auto"``. The GPU context is made
-    once per process and shared. Methods may be called from several threads at once. A renderer
+    The GPU context is made once per process and shared. Methods may be called from several threads at once. A renderer
     made before ``os.fork()`` cannot render in the child (its device stays with the parent):
     make a new one there (:func:`render` does so by itself).
+
+    Args:
+        backend: ``"vulkan"``, ``"gl"`` or ``"auto"`` (Vulkan, then GL through EGL); None
+            (default) reads the ``TOONMESH_BACKEND`` environment variable, then uses
+            ``"auto"``.
 
     Examples:
         >>> r = Renderer()

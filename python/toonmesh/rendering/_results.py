@@ -108,7 +108,11 @@ class RenderResult:
         return _core.encode_png_rgba(self._color())
 
     def save(self, path: Any) -> None:
-        """Writes the colour image to ``path`` as PNG (whatever the file name's extension)."""
+        """Writes the colour image as PNG (whatever the file name's extension).
+
+        Args:
+            path: the file to write (str or os.PathLike).
+        """
         data = self.png_bytes()
         with open(path, "wb") as f:
             f.write(data)

@@ -327,20 +327,31 @@ class Viewer:
     """An interactive toon render of a mesh in Jupyter, rendered by toonmesh in the kernel.
 
     ``Viewer(V, F, **render keywords)`` takes the scene as :func:`toonmesh.render` does (one
-    function reads it for both): ``vertices`` (N, 3) float32/float64 with ``faces`` (M, 3)
-    int32/int64/uint32, a ``trimesh.Trimesh``, a mesh file's path, a ``trimesh.Scene``, a
-    :class:`toonmesh.Mesh` or a list of meshes; ``normals`` and ``smooth_iterations`` as in
-    :func:`toonmesh.render`; any keyword of :class:`toonmesh.RenderOptions` (``material``,
-    ``lights``, ``outlines``, ``camera``, ...). ``width`` and ``height`` are the view's size in
-    layout (CSS) pixels: without a width the view fits the notebook cell's width (512 until the
-    browser reports it), the height defaults to 512; the frames are rendered at the screen's
-    pixel ratio (``pixel_ratio``: given, or the browser's device pixel ratio), so on a 2x screen
-    they have twice the pixels each way with every length in pixels doubled: the same picture,
-    sharp. Full screen fills the screen while it lasts.
-    With no ``material``, meshes that carry colours or a texture are drawn as
-    :func:`toonmesh.render` draws them (under a white material), so the view shows what
-    ``tm.render`` shows. The meshes are uploaded once, to ``renderer`` (default: the process's
-    shared renderer for ``backend``).
+    function reads it for both). ``width`` and ``height`` are the view's size in layout (CSS)
+    pixels: without a width the view fits the notebook cell's width (512 until the browser
+    reports it), the height defaults to 512; the frames are rendered at the screen's pixel
+    ratio (``pixel_ratio``: given, or the browser's device pixel ratio), so on a 2x screen they
+    have twice the pixels each way with every length in pixels doubled: the same picture,
+    sharp. Full screen fills the screen while it lasts. With no ``material``, meshes that carry
+    colours or a texture are drawn as :func:`toonmesh.render` draws them (under a white
+    material), so the view shows what ``tm.render`` shows.
+
+    Args:
+        vertices: (N, 3) float32/float64 with ``faces``, a ``trimesh.Trimesh``, a mesh file's
+            path, a ``trimesh.Scene``, a :class:`toonmesh.Mesh` or a list of meshes.
+        faces: (M, 3) int32/int64/uint32 with ``vertices`` given as an array; else None.
+        normals: as in :func:`toonmesh.render`.
+        smooth_iterations: as in :func:`toonmesh.render`.
+        backend: as in :class:`toonmesh.Renderer`.
+        renderer: the renderer the meshes are uploaded to, once; None (default): the process's
+            shared renderer for ``backend``.
+        controls: show ipywidgets controls beside the frame; default False (see below).
+        image_format: of the full-size frames, ``"png"`` (default) or ``"jpeg"``.
+        drag_scale: the size of the frames drawn while the pointer moves, as a fraction of the
+            full size (0.05 to 1, default 0.5; the browser draws them smaller where it cannot
+            keep up, the kernel's are sent as JPEG).
+        **options: the render keywords (:class:`toonmesh.RenderKeywords`: ``material``,
+            ``lights``, ``outlines``, ``camera``, ``width``, ``height``, ...).
 
     In the browser: drag to orbit, wheel to zoom (once the view has focus: click it; otherwise
     the wheel scrolls the notebook), shift-drag or right-drag to pan, double-click to frame the
@@ -353,16 +364,12 @@ class Viewer:
     ``parts`` and ``visible`` (show or hide parts), and every render setting as an attribute
     that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
 
-    Viewer options: ``controls=True`` shows ipywidgets controls beside the frame, one per field
-    of the material, the first light, the outlines (and each line kind's style), the camera's
-    field of view, the paper and the other render options, in collapsible sections (the
-    material's open), each following the core's description of the field (its kind, bounds and
-    choices) and showing the settings as they are now (``controls`` is that column as a widget,
-    to place yourself);
-    ``image_format`` of the full-size frames, ``"png"`` (default) or ``"jpeg"``; ``drag_scale``,
-    the size of the frames drawn while the pointer moves, as a fraction of the full size
-    (0.05 to 1, default 0.5; the browser draws them smaller where it cannot keep up, the kernel's
-    are sent as JPEG).
+    ``controls=True`` shows ipywidgets controls beside the frame, one per field of the
+    material, the first light, the outlines (and each line kind's style), the camera's field of
+    view, the paper and the other render options, in collapsible sections (the material's
+    open), each following the core's description of the field (its kind, bounds and choices)
+    and showing the settings as they are now (``controls`` is that column as a widget, to place
+    yourself).
 
     While the pointer moves, the browser draws the drafts in WebGL2 from toonmesh's own shaders:
     the bands, tones, colours and texture, dithering, rim light, hatching, image-space ink and
