@@ -42,7 +42,7 @@ def site(tmp_path_factory) -> Path:
 
 
 def test_the_site_has_the_guides_the_measurements_and_the_api_reference(site):
-    for page in ("index", "install", *GUIDES, "accuracy", "benchmarks", "hard-cases", "api", "internals",
+    for page in ("index", "install", *GUIDES, "accuracy", "benchmarks", "hard-cases", "api/index", "internals",
                  "development"):
         assert (site / f"{page}.html").is_file(), page
     text = (site / "smoothing.html").read_text()
@@ -256,17 +256,58 @@ def test_every_internal_link_of_the_built_site_resolves(site):
     assert broken == [], broken
 
 
-def test_the_api_reference_documents_every_public_function_class_and_method(site):
-    need("griffe")
-    spec = importlib.util.spec_from_file_location("docs_api", ROOT / "scripts" / "docs_api.py")
+def _script(name: str):
+    spec = importlib.util.spec_from_file_location(name, ROOT / "scripts" / f"{name}.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    assert module.undocumented(ROOT / "python") == []
-    api = (site / "api.html").read_text()
+    return module
+
+
+API_PAGES = ("index", "rendering", "settings", "lines", "smoothing", "files", "viewer", "testing")
+
+
+def test_the_api_reference_documents_every_public_function_class_and_method(site):
+    need("griffe")
+    assert _script("docs_api").undocumented(ROOT / "python") == []
+    pages = {name: (site / "api" / f"{name}.html").read_text() for name in API_PAGES}
+    api = "".join(pages.values())
     for name in ("render", "Renderer", "Material", "Camera", "Light", "RenderResult", "Viewer", "smooth.laplacian",
-                 "edges.feature_edges", "testing.assert_images_close", "batch.render_files"):
-        assert f'id="toonmesh.{name}"' in api, name
-    assert "band_antialias" in api  # the render keywords (RenderKeywords), from the core's docstring
+                 "edges.feature_edges", "testing.assert_images_close", "batch.render_files", "Renderer.render_many",
+                 "Material.bands", "load", "shapes.torus", "data.bunny", "ViewerClosedError"):
+        assert api.count(f'id="toonmesh.{name}"') == 1, name
+    # each area's page opens with a table of its entries, linked; the index lists every page's
+    for name in API_PAGES[1:]:
+        table = pages[name].split("<table>")[1].split("</table>")[0]
+        assert table.count('href="#toonmesh.') >= 2, name
+        assert f'href="{name}.html#toonmesh.' in pages["index"], name
+
+    # no noise: namedtuple field aliases, raw roles, memory addresses, command-line internals
+    figures = _script("docs_metrics").measure(site)["api"]
+    assert figures["pages"] == len(API_PAGES), figures
+    assert {k: figures[k] for k in ("field_aliases", "raw_roles", "memory_addresses", "cli_internals")} == {
+        "field_aliases": 0, "raw_roles": 0, "memory_addresses": 0, "cli_internals": 0}, figures
+    assert figures["render_signature_typed"], figures
+    # the roles became links: render's docstring names Mesh and load, linked to their entries
+    rendering = pages["rendering"]
+    entry = rendering.split('id="toonmesh.render"')[1].split('id="toonmesh.Renderer"')[0]
+    assert 'href="#toonmesh.Mesh"' in entry and 'href="files.html#toonmesh.load"' in entry
+    # the settings classes' signatures are their stub's, typed, not (*args, **kwargs)
+    settings = re.sub(r"<[^>]+>", "", pages["settings"])
+    assert "*args" not in settings and "**kwargs" not in settings
+    assert re.search(r"bands\(\s*color:\s*Optional\[Color\]", settings), settings[:2000]
+
+    # the render keywords: a table of every keyword (type, default, meaning), from the core's
+    # description, linked from render's entry and from Renderer.render and render_many
+    import toonmesh
+
+    keywords = rendering.split('id="render-keywords"')[1]
+    for field in toonmesh.RenderOptions.describe()["fields"]:
+        assert f'id="render-keywords.{field["name"]}"' in keywords, field["name"]
+    assert "<code>Material.bands()</code>" in keywords and "<code>512</code>" in keywords
+    assert 'href="#render-keywords"' in entry
+    for method in ("render", "render_many"):
+        part = rendering.split(f'id="toonmesh.Renderer.{method}"')[1][:6000]
+        assert 'href="#render-keywords"' in part, method
 
 
 def test_the_home_page_and_a_gallery_page_show_every_picture_in_a_browser(site, tmp_path):

@@ -1,7 +1,7 @@
 """The core's description of the smoothing methods (``_core._smoothing_description()``) is what
 the functions do, take and document: each described default, given explicitly, gives the same
 bits as leaving it out, for every method and preset; another value in range gives others; the
-signatures and the docstrings' Parameters lines are the description's."""
+signatures and the docstrings' Args entries are the description's."""
 
 from __future__ import annotations
 
@@ -88,7 +88,7 @@ def test_signatures_and_docstrings_are_the_description(method):
     assert list(inspect.signature(f).parameters) == ["vertices", "faces", *names, "pinned"]
     doc = f.__doc__
     for k in described["keywords"]:
-        (line,) = [i for i, text in enumerate(doc.splitlines()) if text.startswith(f"    {k['name']} : ")]
+        (line,) = [i for i, text in enumerate(doc.splitlines()) if text.startswith(f"        {k['name']}: ")]
         entry = " ".join(doc.splitlines()[line: line + 12])
         default = k["default"]
         if k["default_words"]:

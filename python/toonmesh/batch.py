@@ -1,9 +1,5 @@
 """Render many mesh files, and many views of each, in this process or on a Dask cluster.
 
->>> from toonmesh.batch import render_files
->>> rows = render_files(["a.obj", "b.ply"], "frames/", views=8, width=512, height=512)
->>> # on a cluster: render_files(..., client=Client("tcp://scheduler:8786"))
-
 Each mesh is one task: it is read, uploaded once, and rendered from every view by the worker's
 own :class:`toonmesh.Renderer` (one per worker process and backend, kept between tasks), then
 its images are written to ``out_dir`` (a folder every worker can reach). The result is a list of
@@ -12,6 +8,11 @@ turns it into a table.
 
 Needs ``pip install 'toonmesh[batch]'`` (``dask[distributed]`` and trimesh) for
 :func:`render_files`; :func:`render_file` needs trimesh only.
+
+Examples:
+    >>> from toonmesh.batch import render_files
+    >>> rows = render_files(["a.obj", "b.ply"], "frames/", views=8, width=512, height=512)
+    >>> # on a cluster: render_files(..., client=Client("tcp://scheduler:8786"))
 """
 
 from __future__ import annotations
@@ -131,7 +132,17 @@ def render_views(
 
 
 def render_file(mesh_path: str, out_dir: str, *, views: int = 1, **options: Any) -> List[Dict[str, Any]]:
-    """Renders one mesh file in this process into ``out_dir``; options as in :func:`render_files`."""
+    """Renders one mesh file in this process into ``out_dir``.
+
+    Args:
+        mesh_path: the mesh file.
+        out_dir: the folder the images are written to.
+        views: as in :func:`render_files`.
+        **options: as in :func:`render_files`.
+
+    Returns:
+        One dict per image written, as :func:`render_files` gives them.
+    """
     outputs = options.get("outputs", ("color",))
     outputs = [outputs] if isinstance(outputs, str) else list(outputs)
     os.makedirs(out_dir, exist_ok=True)
@@ -177,7 +188,8 @@ def render_files(
 
     Raises:
         ImportError: dask.distributed is not installed.
-        The first task's error (a missing or unreadable file, a bad option) as it was raised.
+        Exception: the first task's error (a missing or unreadable file, a bad option), as it
+            was raised.
     """
     try:
         from dask.distributed import Client, LocalCluster

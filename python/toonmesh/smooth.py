@@ -83,38 +83,38 @@ _TYPES = {"int": int, "float": float, "choice": str, "bool": bool}
 #: The keyword every function takes besides the described ones: it is the mesh's, not the method's.
 _PINNED = "pinned"
 
-_COMMON = """
-    Parameters shared by every smoothing function
-    ----------------------------------------------
-    vertices : (N, 3) float32 or float64 array, or trimesh.Trimesh
-        Vertex positions, any memory order. With a Trimesh, leave ``faces`` as None.
-    faces : (M, 3) int32, int64, uint32 or uint64 array
-        Triangles as vertex indices. Degenerate, duplicate, flipped and non-manifold faces are
-        allowed; vertices no face uses stay where they are (except under ``preset="trimesh"``).
-    pinned : 1-D array of vertex indices (any integer dtype), or (N,) bool mask, optional
-        Vertices that must not move (a list or tuple works too; an empty one pins nothing). With
-        ``weld=True``, a position is pinned when any of its copies is.
+#: What every smoothing function's docstring says of the mesh, ``pinned`` and the result
+#: (Google-style sections; the described keywords' entries go between ``_MESH`` and ``_PINNED``).
+_MESH = """
+        vertices: (N, 3) float32 or float64 array, or a ``trimesh.Trimesh``. Vertex positions,
+            any memory order. With a Trimesh, leave ``faces`` as None.
+        faces: (M, 3) int32, int64, uint32 or uint64 array. Triangles as vertex indices.
+            Degenerate, duplicate, flipped and non-manifold faces are allowed; vertices no face
+            uses stay where they are (except under ``preset="trimesh"``).
+"""
 
-    Returns
-    -------
-    (N, 3) ndarray of the input's float dtype: a new array.
+_PINNED_ENTRY = """
+        pinned: 1-D array of vertex indices (any integer dtype), or (N,) bool mask, optional.
+            Vertices that must not move (a list or tuple works too; an empty one pins nothing).
+            With ``weld=True``, a position is pinned when any of its copies is.
+"""
 
-    Raises
-    ------
-    TypeError
-        A wrong dtype (positions must be float32/float64, faces int32/int64/uint32/uint64, in
-        either byte order), or an option of the wrong Python type: integers take ints (or NumPy
-        integers), numbers take ints or floats (or NumPy numbers), never bools or strings;
-        ``volume_constraint`` takes True or False (or a NumPy bool) only.
-    ValueError
-        A wrong shape, NaN or inf, an empty mesh, an unknown option or one the preset lacks, a
-        value out of range (NaN never is in range; an int beyond 64 bits is refused), or a
-        result that would overflow the dtype.
-    IndexError
-        A face or pinned index outside ``[0, N)``.
-    KeyboardInterrupt
-        Ctrl-C (or any signal whose handler raises) stops the work between two steps, or two
-        iterations of the implicit solve, within a few milliseconds.
+_RESULT = """
+    Returns:
+        (N, 3) ndarray of the input's float dtype: a new array.
+
+    Raises:
+        TypeError: A wrong dtype (positions must be float32/float64, faces
+            int32/int64/uint32/uint64, in either byte order), or an option of the wrong Python
+            type: integers take ints (or NumPy integers), numbers take ints or floats (or NumPy
+            numbers), never bools or strings; ``volume_constraint`` takes True or False (or a
+            NumPy bool) only.
+        ValueError: A wrong shape, NaN or inf, an empty mesh, an unknown option or one the
+            preset lacks, a value out of range (NaN never is in range; an int beyond 64 bits is
+            refused), or a result that would overflow the dtype.
+        IndexError: A face or pinned index outside ``[0, N)``.
+        KeyboardInterrupt: Ctrl-C (or any signal whose handler raises) stops the work between
+            two steps, or two iterations of the implicit solve, within a few milliseconds.
 """
 
 
@@ -150,7 +150,7 @@ def _allowed(rule: Mapping[str, Any]) -> str:
 
 
 def _kind_in_words(keyword: Mapping[str, Any]) -> str:
-    """What a keyword takes, as a NumPy-style docstring's type: ``float in [0, 1]``, or its
+    """What a keyword takes, as its docstring entry opens: ``float in [0, 1]``, or its
     choices."""
     if keyword["kind"] == "choice":
         names = [f'"{c}"' for c in keyword["choices"]]
@@ -183,21 +183,17 @@ def _sentence(text: str) -> str:
 
 
 def _parameters(method: str) -> str:
-    """The "Parameters" section of ``method``'s docstring, a keyword per entry, from its
-    description: the type and range, the default (the presets' own in brackets, or on the
-    first line of the text where the line would be too long), then the help."""
-    lines = ["", "    Parameters", "    ----------"]
+    """The entries of ``method``'s keywords in its docstring's "Args" section, one a keyword,
+    from its description: ``name: type and range, default (the presets' own). Help.``"""
+    lines = []
     for k in _DESCRIBED[method]["keywords"]:
-        header, text = f"    {k['name']} : {_kind_in_words(k)}, {_default_in_words(k)}", _sentence(k["help"])
+        text = f"{k['name']}: {_kind_in_words(k)}, {_default_in_words(k)}"
         presets = _presets_in_words(k)
-        if presets and len(header) + len(presets) + 3 <= 96:
-            header += f" ({presets})"
-        elif presets:
-            text = f"{_sentence(presets)} {text}"
+        text += f" ({presets}). " if presets else ". "
+        text += _sentence(k["help"])
         if k.get("default_words"):
             text += f" By default {k['default_words']}."
-        lines.append(header)
-        lines += textwrap.wrap(text, 96, initial_indent=" " * 8, subsequent_indent=" " * 8)
+        lines += textwrap.wrap(text, 96, initial_indent=" " * 8, subsequent_indent=" " * 12)
     return "\n".join(lines) + "\n"
 
 
@@ -372,30 +368,27 @@ _NORMAL_FILTERING = """
     outside the GIL and gives the same bits for any thread count.
 """
 
-_NORMAL_FILTERING_COMMON = """
-    Parameters shared by both filters
-    ---------------------------------
-    vertices, faces
-        As in :func:`laplacian`.
-    pinned : 1-D array of vertex indices, or (N,) bool mask, optional
-        Vertices that must not move; they come back bit for bit.
+_NORMAL_FILTERING_MESH = """
+        vertices: As in :func:`laplacian`.
+        faces: As in :func:`laplacian`.
+"""
 
-    Returns
-    -------
-    (N, 3) ndarray of the input's float dtype (float32 or float64): a new array, in the
-    input's units. Vertices no face uses, and pinned vertices, are returned exactly.
+_NORMAL_FILTERING_PINNED = """
+        pinned: 1-D array of vertex indices, or (N,) bool mask, optional. Vertices that must
+            not move; they come back bit for bit.
+"""
 
-    Raises
-    ------
-    TypeError
-        A wrong dtype or an option of the wrong Python type (counts take ints, widths numbers,
-        ``weld`` a bool).
-    ValueError
-        A wrong shape, NaN or inf, an empty mesh, or a value out of range.
-    IndexError
-        A face or pinned index outside ``[0, N)``.
-    KeyboardInterrupt
-        Ctrl-C stops the work between two passes.
+_NORMAL_FILTERING_RESULT = """
+    Returns:
+        (N, 3) ndarray of the input's float dtype (float32 or float64): a new array, in the
+        input's units. Vertices no face uses, and pinned vertices, are returned exactly.
+
+    Raises:
+        TypeError: A wrong dtype or an option of the wrong Python type (counts take ints,
+            widths numbers, ``weld`` a bool).
+        ValueError: A wrong shape, NaN or inf, an empty mesh, or a value out of range.
+        IndexError: A face or pinned index outside ``[0, N)``.
+        KeyboardInterrupt: Ctrl-C stops the work between two passes.
 """
 
 
@@ -426,14 +419,15 @@ def guided(vertices: Any, faces: Any = None, **options: Unpack[GuidedOptions]) -
 
 # each function's keywords, as callers see them (signature), their lines of its docstring
 # (from the core's description), and the documentation of what it shares with its family
-for _f, _before, _after in (
-    (laplacian, "", _COMMON),
-    (taubin, "", _COMMON),
-    (hc, "", _COMMON),
-    (implicit, "", _COMMON),
-    (bilateral, _NORMAL_FILTERING, _NORMAL_FILTERING_COMMON),
-    (guided, _NORMAL_FILTERING, _NORMAL_FILTERING_COMMON),
+for _f, _before, _mesh, _pinned, _after in (
+    (laplacian, "", _MESH, _PINNED_ENTRY, _RESULT),
+    (taubin, "", _MESH, _PINNED_ENTRY, _RESULT),
+    (hc, "", _MESH, _PINNED_ENTRY, _RESULT),
+    (implicit, "", _MESH, _PINNED_ENTRY, _RESULT),
+    (bilateral, _NORMAL_FILTERING, _NORMAL_FILTERING_MESH, _NORMAL_FILTERING_PINNED, _NORMAL_FILTERING_RESULT),
+    (guided, _NORMAL_FILTERING, _NORMAL_FILTERING_MESH, _NORMAL_FILTERING_PINNED, _NORMAL_FILTERING_RESULT),
 ):
     _f.__signature__ = _signature(_f.__name__)  # type: ignore[union-attr]
-    _f.__doc__ = (_f.__doc__ or "") + _before + _parameters(_f.__name__) + _after
-del _f, _before, _after
+    _f.__doc__ = ((_f.__doc__ or "") + _before + "\n    Args:" + _mesh + _parameters(_f.__name__)
+                  + _pinned.lstrip("\n") + _after)
+del _f, _before, _mesh, _pinned, _after

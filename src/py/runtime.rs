@@ -57,22 +57,25 @@ fn on_main_thread(py: Python<'_>) -> bool {
     main.unwrap_or(false)
 }
 
-/// set_num_threads(n: int) -> None
-///
 /// Sets how many worker threads toonmesh's parallel work uses, from the next call on.
+/// Results are the same bits for any count.
 ///
-/// n: a count from 1 to 1024, or 0 to restore the default (the ``TOONMESH_NUM_THREADS``
-/// environment variable if set, else the number of cores). Results are the same bits for any
-/// count. Raises TypeError for anything but an int (or NumPy integer; bools are refused) and
-/// ValueError below 0 or above 1024.
+/// Args:
+///     n: a count from 1 to 1024, or 0 to restore the default (the ``TOONMESH_NUM_THREADS``
+///         environment variable if set, else the number of cores).
+///
+/// Raises:
+///     TypeError: anything but an int (or NumPy integer; bools are refused).
+///     ValueError: below 0 or above 1024.
 #[pyfunction]
 pub(super) fn set_num_threads(n: &Bound<'_, PyAny>) -> PyResult<()> {
     Ok(parallel::set_num_threads(args::integer("n", n)?)?)
 }
 
-/// get_num_threads() -> int
+/// The number of worker threads the next parallel call will use (see :func:`set_num_threads`).
 ///
-/// The number of worker threads the next parallel call will use (see ``set_num_threads``).
+/// Returns:
+///     The count, an int.
 #[pyfunction]
 pub(super) fn get_num_threads() -> usize {
     parallel::num_threads()

@@ -22,8 +22,12 @@ def packaged(name: str) -> "str | None":
 def load_obj(path: "str | os.PathLike[str]") -> Tuple[np.ndarray, np.ndarray]:
     """Reads the vertices and faces of a Wavefront OBJ file.
 
-    Returns (V, F): (N, 3) float64 positions and (M, 3) int64 triangles (polygons are split
-    into fans; texture and normal indices are ignored; negative indices count from the end).
+    Args:
+        path: the OBJ file (str, bytes or os.PathLike).
+
+    Returns:
+        (V, F): (N, 3) float64 positions and (M, 3) int64 triangles (polygons are split into
+        fans; texture and normal indices are ignored; negative indices count from the end).
 
     Raises:
         TypeError: ``path`` is not a str, bytes or ``os.PathLike``.

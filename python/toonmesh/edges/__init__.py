@@ -257,7 +257,8 @@ def contours(
     in :func:`silhouette`. Hidden parts are not removed (a rendered frame removes them).
 
     Args:
-        vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        vertices: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        faces: as in :func:`feature_edges`.
         weld: merge vertices at equal positions first, so that normal or UV seams neither split
             the normals nor cut the lines. Default False.
 
@@ -287,7 +288,11 @@ def suggestive_contours(
     shape has none.
 
     Args:
-        vertices, faces, eye, direction, weld: as in :func:`contours`.
+        vertices: as in :func:`contours`.
+        faces: as in :func:`contours`.
+        eye: as in :func:`contours`.
+        direction: as in :func:`contours`.
+        weld: as in :func:`contours`.
         threshold: the derivative test, D_w kr / |w| > threshold / s^2, with s the mesh's
             feature size (1% of the reciprocal of the 10th percentile of |k|, at most 5% of half
             the bounding box's diagonal, as in the authors' implementation), so it does not
@@ -314,11 +319,7 @@ def silhouette(
 ) -> np.ndarray:
     """Silhouette edges for one view: (K, 2) int64, smaller index first, sorted.
 
-    Give exactly one of:
-        eye: (3,) camera position, perspective view. The view vector is taken from the eye to
-            each face (not one global direction), so the answer is exact per face.
-        direction: (3,) direction the orthographic camera looks in (from the camera into the
-            scene); its length does not matter.
+    Give exactly one of ``eye`` and ``direction``.
 
     A face is front-facing when n . V < 0, with V the view vector (face point minus eye, or the
     direction), and back-facing otherwise: a face exactly edge-on (n . V = 0) counts as
@@ -332,7 +333,12 @@ def silhouette(
     For many views of one mesh, build an :class:`EdgeIndex` once instead.
 
     Args:
-        vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        vertices: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too).
+        faces: as in :func:`feature_edges`.
+        eye: (3,) camera position, perspective view. The view vector is taken from the eye to
+            each face (not one global direction), so the answer is exact per face.
+        direction: (3,) direction the orthographic camera looks in (from the camera into the
+            scene); its length does not matter.
         weld: as in :func:`feature_edges`.
     """
     V, F = mesh_arrays(vertices, faces)
@@ -349,8 +355,9 @@ class EdgeIndex:
     immutable: one index may serve several threads at once.
 
     Args:
-        vertices, faces: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too). They are
-            copied; later changes to the caller's arrays do not affect the index.
+        vertices: as in :func:`feature_edges` (a ``trimesh.Trimesh`` works too), copied: later
+            changes to the caller's arrays do not affect the index.
+        faces: as in :func:`feature_edges`, copied too.
         crease_angle: threshold in degrees for :attr:`features` (None, the default: the core's
             default, 30).
         weld: merge coincident vertices first, as in :func:`feature_edges`.
@@ -409,32 +416,67 @@ class EdgeIndex:
         return self.features.nonmanifold
 
     def feature_edges(self, crease_angle: Optional[float] = None) -> FeatureEdges:
-        """:class:`FeatureEdges` at another threshold (None: the core's default, 30), without
-        rebuilding anything."""
+        """:class:`FeatureEdges` at another threshold, without rebuilding anything.
+
+        Args:
+            crease_angle: threshold in degrees; None (default): the core's default, 30.
+        """
         angle = _crease_angle(crease_angle)
         return _features(self._index.feature_edges(angle), angle)
 
     def silhouette(self, *, eye: Any = None, direction: Any = None) -> np.ndarray:
-        """Silhouette edges for one view, (K, 2) int64; rules as in :func:`silhouette`."""
+        """Silhouette edges for one view; rules as in :func:`silhouette`.
+
+        Args:
+            eye: the eye's position for a perspective view, as in :func:`silhouette`.
+            direction: the view direction for an orthographic view, as in :func:`silhouette`.
+
+        Returns:
+            (K, 2) int64 edges.
+        """
         return self._index.view_lines("silhouette", eye, direction)
 
     def outlines(self, *, eye: Any = None, direction: Any = None, kinds: bool = False) -> Any:
-        """Silhouettes of this view plus boundary, crease and non-manifold edges, (K, 2) int64,
-        sorted, each edge once: everything a mesh-space outline pass draws (the renderer's own
-        outline set). With ``kinds=True``, also each edge's kind as (K,) str: the first of
-        "silhouette", "boundary", "nonmanifold", "ridge", "valley" that it is."""
+        """Silhouettes of this view plus boundary, crease and non-manifold edges: everything a
+        mesh-space outline pass draws (the renderer's own outline set).
+
+        Args:
+            eye: the eye's position for a perspective view, as in :func:`silhouette`.
+            direction: the view direction for an orthographic view, as in :func:`silhouette`.
+            kinds: also return each edge's kind; default False.
+
+        Returns:
+            (K, 2) int64 edges, sorted, each edge once; with ``kinds=True``, also each edge's kind
+            as (K,) str: the first of "silhouette", "boundary", "nonmanifold", "ridge", "valley"
+            that it is.
+        """
         edges, codes = self._index.outlines(self.features.crease_angle, eye, direction, kinds)
         if codes is not None:
             return edges, np.asarray(_LINE_KINDS)[codes]
         return edges
 
     def segments(self, edges: Any) -> np.ndarray:
-        """Edge end points of this mesh, (K, 2, 3) float64; see :func:`segments`."""
+        """Edge end points of this mesh; see :func:`segments`.
+
+        Args:
+            edges: (K, 2) vertex indices.
+
+        Returns:
+            (K, 2, 3) float64 end points.
+        """
         return segments(self.vertices, edges)
 
     def contours(self, *, eye: Any = None, direction: Any = None) -> List[np.ndarray]:
         """Smooth contours of one view, as :func:`contours` finds them (the index's ``weld``),
-        without redoing the per-mesh work: a list of (K, 3) float64 polylines."""
+        without redoing the per-mesh work.
+
+        Args:
+            eye: the eye's position for a perspective view, as in :func:`contours`.
+            direction: the view direction for an orthographic view, as in :func:`contours`.
+
+        Returns:
+            A list of (K, 3) float64 polylines.
+        """
         return _polylines(*self._index.view_lines("contours", eye, direction))
 
     def suggestive_contours(
@@ -446,8 +488,18 @@ class EdgeIndex:
         smoothing: Optional[float] = None,
     ) -> List[np.ndarray]:
         """Suggestive contours of one view, as :func:`suggestive_contours` finds them; the
-        mesh's curvature is computed on the first call and kept for the next views with the
-        same ``smoothing``."""
+        mesh's curvature is computed on the first call and kept for the next views with the same
+        ``smoothing``.
+
+        Args:
+            eye: as in :func:`suggestive_contours`.
+            direction: as in :func:`suggestive_contours`.
+            threshold: as in :func:`suggestive_contours`.
+            smoothing: as in :func:`suggestive_contours`.
+
+        Returns:
+            A list of (K, 3) float64 polylines.
+        """
         return _polylines(*self._index.view_lines("suggestive", eye, direction, threshold, smoothing))
 
     def __repr__(self) -> str:
@@ -558,9 +610,16 @@ def intersections(meshes: Any, *, self_intersections: bool = False) -> np.ndarra
 
 def intersection_lines(meshes: Any, *, self_intersections: bool = False) -> List[np.ndarray]:
     """The segments of :func:`intersections` joined into polylines where their ends meet, as
-    :func:`chains` joins edges: a list of (K, 3) float64 polylines in the meshes' coordinates; a
-    closed one (a pin through a plate gives one per face of the plate it crosses) repeats its
-    first point at the end. Arguments as :func:`intersections`."""
+    :func:`chains` joins edges. A closed one (a pin through a plate gives one per face of the
+    plate it crosses) repeats its first point at the end.
+
+    Args:
+        meshes: as in :func:`intersections`.
+        self_intersections: as in :func:`intersections`.
+
+    Returns:
+        A list of (K, 3) float64 polylines in the meshes' coordinates.
+    """
     return _polylines(*_core._intersection_lines(_mesh_list(meshes), self_intersections))
 
 

@@ -64,15 +64,20 @@ def _smoothed(vertices: np.ndarray, faces: np.ndarray, iterations: int) -> np.nd
 class Renderer:
     """Keeps meshes on the GPU so that many views of them upload nothing again.
 
-    ``backend`` is ``"vulkan"``, ``"gl"`` or ``"auto"`` (Vulkan, then GL through EGL); None reads
-    the ``TOONMESH_BACKEND`` environment variable, then uses ``"auto"``. The GPU context is made
-    once per process and shared. Methods may be called from several threads at once. A renderer
+    The GPU context is made once per process and shared. Methods may be called from several threads at once. A renderer
     made before ``os.fork()`` cannot render in the child (its device stays with the parent):
     make a new one there (:func:`render` does so by itself).
 
-    >>> r = Renderer()
-    >>> bunny = r.add_mesh(V, F)
-    >>> frames = [r.render(bunny, camera=Camera.fit((np.sin(a), 0.3, np.cos(a)))) for a in angles]
+    Args:
+        backend: ``"vulkan"``, ``"gl"`` or ``"auto"`` (Vulkan, then GL through EGL); None
+            (default) reads the ``TOONMESH_BACKEND`` environment variable, then uses
+            ``"auto"``.
+
+    Examples:
+        >>> r = Renderer()
+        >>> bunny = r.add_mesh(V, F)
+        >>> views = [Camera.fit((np.sin(a), 0.3, np.cos(a))) for a in angles]
+        >>> frames = [r.render(bunny, camera=camera) for camera in views]
     """
 
     def __init__(self, backend: Optional[str] = None):
@@ -93,15 +98,23 @@ class Renderer:
         smooth_iterations: int = 0,
         **colors: "Unpack[MeshColors]",
     ) -> MeshHandle:
-        """Uploads a mesh ((N, 3) float32/float64 and (M, 3) int faces, or a trimesh.Trimesh).
+        """Uploads a mesh, for many views of it.
 
-        ``normals``: None (default: ``"auto"``), ``"smooth"``, ``"flat"``, ``"auto"`` (split at
-        the creases a drawing keeps, sharper than 30 degrees), ``("auto", degrees)``, or the
-        mesh's own (N, 3) vertex normals; see :class:`Mesh`. ``smooth_iterations``: Laplacian smoothing
-        first (each vertex to the mean of its neighbours, n times), as in Al-Rousan et al.
-        ``vertex_colors``, ``face_colors``, ``uv``, ``texture``, ``texture_filter``,
-        ``texture_wrap``, ``alpha_cutoff``, ``alpha_blend``: the mesh's colour, as :class:`Mesh` describes (a
-        trimesh brings its own).
+        Args:
+            vertices: (N, 3) float32/float64 positions, or a ``trimesh.Trimesh`` (which brings
+                its own colours).
+            faces: (M, 3) int faces with ``vertices`` given as an array; else None.
+            normals: None (default: ``"auto"``), ``"smooth"``, ``"flat"``, ``"auto"`` (split at
+                the creases a drawing keeps, sharper than 30 degrees), ``("auto", degrees)``, or
+                the mesh's own (N, 3) vertex normals; see :class:`Mesh`.
+            smooth_iterations: Laplacian smoothing first (each vertex to the mean of its
+                neighbours, n times), as in Al-Rousan et al.; default 0.
+            **colors: ``vertex_colors``, ``face_colors``, ``uv``, ``texture``,
+                ``texture_filter``, ``texture_wrap``, ``alpha_cutoff``, ``alpha_blend``: the
+                mesh's colour, as :class:`Mesh` describes.
+
+        Returns:
+            The uploaded mesh, to render with :meth:`render` or place in a :class:`Mesh`.
         """
         return self._add(vertices, faces, normals, smooth_iterations, _colors.gather(vertices, colors, "add_mesh"))
 
@@ -120,17 +133,32 @@ class Renderer:
         return MeshHandle(self, mesh_id, len(V), len(F), normals)
 
     def add_points(self, points: Points) -> MeshHandle:
-        """Uploads a point cloud (a :class:`Points`) as splats, for many views of it; the handle
-        places it in a scene like a mesh's (its material, transform and up axis are the scene
-        item's: wrap it in a :class:`Mesh` to give them). Normals the cloud lacks are estimated
-        here, once, from each point's nearest neighbours (:func:`toonmesh.points.normals`)."""
+        """Uploads a point cloud as splats, for many views of it.
+
+        The handle places it in a scene like a mesh's (its material, transform and up axis are
+        the scene item's: wrap it in a :class:`Mesh` to give them). Normals the cloud lacks are
+        estimated here, once, from each point's nearest neighbours
+        (:func:`toonmesh.points.normals`).
+
+        Args:
+            points: the cloud, a :class:`Points`.
+
+        Returns:
+            The uploaded cloud, a :class:`MeshHandle`."""
         if not isinstance(points, Points):
             raise TypeError(f"points: expected a toonmesh.Points, got {type(points).__name__}")
         mesh_id = self._engine.add_points(points.positions, points.normals, points.colors, points.radius, None)
         return MeshHandle(self, mesh_id, 3 * len(points), len(points), None)
 
     def remove_mesh(self, mesh: MeshHandle) -> None:
-        """Frees a mesh's GPU memory."""
+        """Frees a mesh's GPU memory.
+
+        Args:
+            mesh: a handle this renderer's :meth:`add_mesh` or :meth:`add_points` returned.
+
+        Raises:
+            ValueError: ``mesh`` belongs to another renderer.
+        """
         if not isinstance(mesh, MeshHandle):
             raise TypeError(f"mesh: expected a toonmesh.MeshHandle, got {type(mesh).__name__}")
         if mesh.renderer is not self:
@@ -138,10 +166,18 @@ class Renderer:
         self._engine.remove_mesh(mesh.id)
 
     def render(self, meshes: Any = None, **options: "Unpack[RenderKeywords]") -> RenderResult:
-        """Renders ``meshes`` (a MeshHandle, a :class:`Mesh`, a :class:`Lines` drawn as ink, or a
-        list of them; None or [] for an empty scene) with ``options``: the keywords of :class:`RenderOptions` (``width``,
-        ``height``, ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...), each
-        defaulting as that class says. Only the outputs asked for are computed and read back.
+        """Renders ``meshes`` with ``options``. Only the outputs asked for are computed and read
+        back.
+
+        Args:
+            meshes: a :class:`MeshHandle`, a :class:`Mesh`, a :class:`Lines` drawn as ink, or a
+                list of them; None (default) or [] for an empty scene.
+            **options: the render keywords (:class:`RenderKeywords`: ``width``, ``height``,
+                ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...), each with
+                its type, default and meaning.
+
+        Returns:
+            The images asked for in ``outputs``.
         """
         opts = RenderOptions(**options)
         meshes, lines = split_lines(meshes)
@@ -157,8 +193,15 @@ class Renderer:
         default: between consecutive views whose eye turns by less than 10 degrees about each
         mesh's centre, they fade by how fast they slide across the surface and a line drawn in
         the view before needs a weaker test to stay, so that a turntable's lines hold still;
-        views farther apart are drawn as they are alone). ``options`` as in :meth:`render`
-        (``camera`` is not one of them here).
+        views farther apart are drawn as they are alone).
+
+        Args:
+            meshes: as in :meth:`render`.
+            cameras: the views, a sequence of :class:`Camera`.
+            **options: the render keywords (:class:`RenderKeywords`) but ``camera``.
+
+        Returns:
+            The views' images and results, a :class:`RenderStack`.
         """
         if "camera" in options:
             raise TypeError("camera: render_many takes cameras=, a list of them")
@@ -320,29 +363,41 @@ def render(
 ) -> RenderResult:
     """Renders a mesh (or several) to a toon-shaded image, headless, and returns NumPy arrays.
 
-    ``vertices``: (N, 3) float32/float64 with ``faces`` (M, 3) int32/int64/uint32; or a
-    ``trimesh.Trimesh``; or a ``trimesh.Scene`` or a mesh file's path (str or os.PathLike),
-    read as :func:`toonmesh.load` reads them (every node, its transform and colours); or a
-    :class:`Mesh` or :class:`Points` (a point cloud, drawn as splats) or a list of them (each
-    with its own material and transform), where :class:`Lines` items may stand beside them
-    (segments drawn as ink, hidden by the surfaces in front of them); None for an empty scene. With no ``material`` given, meshes that carry colours or a texture and name no
-    material of their own are drawn under the default shading model in white, so their colours
-    show as they are, however they were given. Inputs are never modified. Meshes that share their vertex and face arrays (the
-    instances of one geometry) are uploaded once.
-    ``normals``: None (default: a file's own normals where it has them, else ``"auto"``: hard
-    edges at the creases a drawing keeps, for boxes and CAD parts, and smooth scans),
-    ``"smooth"``, ``"flat"``, ``"auto"``, ``("auto", degrees)``, or the mesh's own (N, 3)
-    vertex normals; see :class:`Mesh`. A mode given replaces a file's normals and a :class:`Mesh`'s
-    (a copy: the caller's mesh is not changed); a :class:`MeshHandle`'s are fixed at its upload, so
-    giving ``normals`` with one is a ValueError.
-    ``smooth_iterations``: Laplacian smoothing first (Al-Rousan et al.'s pipeline). The scene's
-    up axis (the ``up`` option, see :class:`RenderOptions`) is a file's convention unless given:
-    ``render("part.stl")`` keeps +z up.
-    ``backend`` as in :class:`Renderer`. ``options``: the keywords of :class:`RenderOptions`
-    (``width``, ``height``, ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...),
-    each defaulting as that class says.
+    Inputs are never modified. Meshes that share their vertex and face arrays (the instances of
+    one geometry) are uploaded once. With no ``material`` given, meshes that carry colours or a
+    texture and name no material of their own are drawn under the default shading model in
+    white, so their colours show as they are, however they were given.
 
-    >>> img = toonmesh.render(V, F, width=640, height=480, outlines="mesh").color   # (480, 640, 4) uint8
+    Args:
+        vertices: (N, 3) float32/float64 with ``faces``; or a ``trimesh.Trimesh``; or a
+            ``trimesh.Scene`` or a mesh file's path (str or os.PathLike), read as
+            :func:`toonmesh.load` reads them (every node, its transform and colours); or a
+            :class:`Mesh` or :class:`Points` (a point cloud, drawn as splats) or a list of them
+            (each with its own material and transform), where :class:`Lines` items may stand
+            beside them (segments drawn as ink, hidden by the surfaces in front of them); None
+            (default) for an empty scene.
+        faces: (M, 3) int32/int64/uint32 with ``vertices`` given as an array; else None.
+        normals: None (default: a file's own normals where it has them, else ``"auto"``: hard
+            edges at the creases a drawing keeps, for boxes and CAD parts, and smooth scans),
+            ``"smooth"``, ``"flat"``, ``"auto"``, ``("auto", degrees)``, or the mesh's own
+            (N, 3) vertex normals; see :class:`Mesh`. A mode given replaces a file's normals and
+            a :class:`Mesh`'s (a copy: the caller's mesh is not changed); a
+            :class:`MeshHandle`'s are fixed at its upload, so giving ``normals`` with one is a
+            ValueError.
+        smooth_iterations: Laplacian smoothing first (Al-Rousan et al.'s pipeline), default 0.
+        backend: as in :class:`Renderer`; default None.
+        **options: the render keywords (:class:`RenderKeywords`: ``width``, ``height``,
+            ``material``, ``camera``, ``lights``, ``outputs``, ``outlines``, ...), each with its
+            type, default and meaning. The scene's up axis (``up``) is a file's convention
+            unless given: ``render("part.stl")`` keeps +z up.
+
+    Returns:
+        The images asked for in ``outputs``, as NumPy arrays (``color``: (H, W, 4) uint8).
+
+    Examples:
+        >>> img = toonmesh.render(V, F, width=640, height=480, outlines="mesh").color
+        >>> img.shape, img.dtype
+        ((480, 640, 4), dtype('uint8'))
     """
     iterations = _smoothing_iterations(smooth_iterations)
     opts = RenderOptions(**options)  # checked before any upload
@@ -430,11 +485,18 @@ def _with_normals(m: Mesh, normals: Normals) -> Mesh:
 
 
 def gpu_info(backend: Optional[str] = None) -> Dict[str, Any]:
-    """The adapter renders use: ``name``, ``backend`` ("vulkan" or "gl"), ``device_type``
-    ("cpu" for Mesa's lavapipe/llvmpipe), ``driver``, ``driver_info``, ``max_texture_size``,
-    ``msaa_samples`` and ``timestamps`` (whether passes are timed on the GPU). Creates the
-    process-wide GPU context if needed; raises :class:`toonmesh.GpuUnavailableError` when there
-    is no adapter.
+    """The adapter renders use. Creates the process-wide GPU context if needed.
+
+    Args:
+        backend: as in :class:`Renderer`; default None.
+
+    Returns:
+        A dict: ``name``, ``backend`` ("vulkan" or "gl"), ``device_type`` ("cpu" for Mesa's
+        lavapipe/llvmpipe), ``driver``, ``driver_info``, ``max_texture_size``,
+        ``msaa_samples`` and ``timestamps`` (whether passes are timed on the GPU).
+
+    Raises:
+        GpuUnavailableError: there is no adapter.
     """
     return _core.gpu_info(backend)
 

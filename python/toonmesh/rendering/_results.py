@@ -108,7 +108,11 @@ class RenderResult:
         return _core.encode_png_rgba(self._color())
 
     def save(self, path: Any) -> None:
-        """Writes the colour image to ``path`` as PNG (whatever the file name's extension)."""
+        """Writes the colour image as PNG (whatever the file name's extension).
+
+        Args:
+            path: the file to write (str or os.PathLike).
+        """
         data = self.png_bytes()
         with open(path, "wb") as f:
             f.write(data)
@@ -148,7 +152,7 @@ class RenderResult:
         at its kind's width, or, where the width varies along the stroke, a filled ``<path>``
         outlining the ink as the render draws it (:attr:`line_widths`).
 
-        Args:
+        Keyword Args:
             order: "drawing" (default: the order the renderer found them) or "plotter": within
                 each group, each next stroke is the one whose nearer end is closest to where the
                 pen stopped, drawn from that end (greedy nearest neighbour, as vpype's
@@ -208,8 +212,11 @@ class RenderResult:
         return groups
 
     def save_svg(self, path: Any, **options: "Unpack[SvgOptions]") -> None:
-        """Writes :meth:`svg` (with its ``order``, ``simplify``, ``smooth`` and ``widths``) to
-        ``path``."""
+        """Writes :meth:`svg`'s document to ``path``.
+
+        Args:
+            path: the file to write (str or os.PathLike).
+            **options: :meth:`svg`'s ``order``, ``simplify``, ``smooth`` and ``widths``."""
         text = self.svg(**options)
         with open(path, "w", encoding="utf-8") as f:
             f.write(text)
@@ -261,11 +268,17 @@ class RenderStack(Sequence[RenderResult]):
 
     def save(self, path: "str | os.PathLike[str]", fps: int = DEFAULT_FPS, progress: bool = True) -> str:
         """Writes the views' colour images as a video, one frame a view in order (a turntable
-        from :meth:`Renderer.render_many`): ``path`` a ``.gif`` (Pillow), ``.mp4`` (H.264) or
-        ``.webm`` (VP9; both through imageio-ffmpeg, which ships its own ffmpeg; width and height
-        even), ``fps`` an int in [1, 60] frames per second (default 24), with a progress bar
-        (tqdm) while it is written when ``progress`` and there are 8 views or more. Returns the
-        path written, as a string."""
+        from :meth:`Renderer.render_many`).
+
+        Args:
+            path: a ``.gif`` (Pillow), ``.mp4`` (H.264) or ``.webm`` (VP9; both through
+                imageio-ffmpeg, which ships its own ffmpeg; width and height even).
+            fps: frames per second, an int in [1, 60]; default 24.
+            progress: show a progress bar (tqdm) while it is written, where there are 8 views
+                or more; default True.
+
+        Returns:
+            The path written, as a string."""
         if self.color is None:
             raise ValueError("path: a video holds the colour images: render them (outputs=('color', ...))")
         return save_video(path, self.color, fps, progress)

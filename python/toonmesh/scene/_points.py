@@ -42,15 +42,23 @@ class Points:
     """A point cloud placed in a scene, drawn as splats (small discs) with the material's toon
     tones, like a surface.
 
-    ``positions``: (N, 3) float32/float64 in world units (N >= 1). ``normals``: (N, 3) floats,
-    one per point, not zero (scaled to unit length); None (default): estimated from each point's
-    nearest neighbours. ``colors``: (N, 3) or (N, 4) sRGB(A) per point, uint8 codes or floats in
-    [0, 1] (an alpha channel is not drawn: a warning says so); None (default): white (the
-    material's colour shows). ``radius``: the splats' radius
-    in world units, a float or an (N,) array, > 0; None (default): from the cloud's own spacing,
-    so any scale works (0.9 times the mean distance to the 12th nearest neighbour; a cloud of 12
-    points or fewer samples no surface, and gets dots 0.4 times the mean nearest distance). ``material``, ``transform``, ``up`` and ``name`` as for
-    :class:`toonmesh.Mesh`. Nothing given is modified.
+    Nothing given is modified.
+
+    Args:
+        positions: (N, 3) float32/float64 in world units (N >= 1).
+        normals: (N, 3) floats, one per point, not zero (scaled to unit length); None
+            (default): estimated from each point's nearest neighbours.
+        colors: (N, 3) or (N, 4) sRGB(A) per point, uint8 codes or floats in [0, 1] (an alpha
+            channel is not drawn: a warning says so); None (default): white (the material's
+            colour shows).
+        radius: the splats' radius in world units, a float or an (N,) array, > 0; None
+            (default): from the cloud's own spacing, so any scale works (0.9 times the mean
+            distance to the 12th nearest neighbour; a cloud of 12 points or fewer samples no
+            surface, and gets dots 0.4 times the mean nearest distance).
+        material: as for :class:`toonmesh.Mesh`.
+        transform: as for :class:`toonmesh.Mesh`.
+        up: as for :class:`toonmesh.Mesh`.
+        name: as for :class:`toonmesh.Mesh`.
     """
 
     def __init__(
@@ -117,11 +125,17 @@ class Lines:
     """Line segments placed in a scene, drawn as ink (a wire, a path, a glTF ``LINES``
     primitive or an OBJ ``l`` element), hidden by surfaces in front of them, in the SVG.
 
-    ``positions``: (N, 3) float32/float64 in world units. ``segments``: (K, 2) integer indices
-    into ``positions``, each a segment; None (default): one polyline through the positions in
-    order. ``color``: the ink's sRGB colour, as :class:`LineStyle` takes it (``"#203040"``, 3
-    floats in [0, 1]); None (default): the outlines' ink colour. ``width``: the ink's width in
-    output pixels, in (0, 64]; None (default): the outlines' line width. ``transform``, ``up`` and ``name`` as for :class:`toonmesh.Mesh`.
+    Args:
+        positions: (N, 3) float32/float64 in world units.
+        segments: (K, 2) integer indices into ``positions``, each a segment; None (default):
+            one polyline through the positions in order.
+        color: the ink's sRGB colour, as :class:`LineStyle` takes it (``"#203040"``, 3 floats
+            in [0, 1]); None (default): the outlines' ink colour.
+        width: the ink's width in output pixels, in (0, 64]; None (default): the outlines'
+            line width.
+        transform: as for :class:`toonmesh.Mesh`.
+        up: as for :class:`toonmesh.Mesh`.
+        name: as for :class:`toonmesh.Mesh`.
     """
 
     def __init__(

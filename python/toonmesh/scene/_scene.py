@@ -45,15 +45,24 @@ class MeshHandle:
 class Mesh:
     """A mesh placed in a scene: geometry, material, transform, normals and up axis.
 
-    ``vertices`` is an (N, 3) float32/float64 array with ``faces`` (M, 3) int32/int64/uint32, a
-    ``trimesh.Trimesh`` (faces None), or a :class:`MeshHandle` already on a renderer's device.
-    ``material``: a :class:`Material` (default: the render's ``material``). ``transform`` is a
-    4x4 affine model -> world matrix (row-major, applied to column vectors). ``up``: the axis
-    that is up for this mesh, ``"x"``, ``"y"`` or ``"z"`` (:func:`toonmesh.load` sets its file
-    format's convention); None (default): the mesh names none. A render's fitted camera keeps
-    the scene's up axis up: its ``up`` option, else its meshes' (which must agree), else y.
-    ``name``: what the mesh is called (default ``""``; :func:`toonmesh.load` gives each mesh its
-    geometry's name in the file); :class:`toonmesh.Viewer`'s parts list shows it.
+    A render's fitted camera keeps the scene's up axis up: its ``up`` option, else its meshes'
+    (which must agree), else y.
+
+    Args:
+        vertices: an (N, 3) float32/float64 array, a ``trimesh.Trimesh`` (faces None), or a
+            :class:`MeshHandle` already on a renderer's device.
+        faces: (M, 3) int32/int64/uint32 with ``vertices`` given as an array; else None.
+        material: a :class:`Material`; None (default): the render's ``material``.
+        transform: a 4x4 affine model -> world matrix (row-major, applied to column vectors);
+            None (default): the render's ``transform``.
+        normals: how the surface is shaded between vertices; see below. None (default):
+            ``"auto"``.
+        up: the axis that is up for this mesh, ``"x"``, ``"y"`` or ``"z"``
+            (:func:`toonmesh.load` sets its file format's convention); None (default): the mesh
+            names none.
+        name: what the mesh is called (default ``""``; :func:`toonmesh.load` gives each mesh
+            its geometry's name in the file); :class:`toonmesh.Viewer`'s parts list shows it.
+        **colors: the colour keywords below.
 
     ``normals`` says how the surface is shaded between vertices:
 

@@ -27,24 +27,21 @@ Mesh = Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]
 def icosphere(subdivisions: int = 3, noise: float = 0.0, seed: int = 0) -> Mesh:
     """A unit icosphere, optionally with seeded radial noise.
 
-    Parameters
-    ----------
-    subdivisions : int in [0, 10], default 3
-        Rounds of 1-to-4 triangle splitting: 10 * 4**s + 2 vertices (s=5: 10,242; s=7: 163,842;
-        s=8: 655,362) and 20 * 4**s faces.
-    noise : float >= 0, default 0.0
-        Each vertex's radius is multiplied by ``1 + noise * u``, u uniform in [-1, 1).
-    seed : int, default 0
-        Seed of the noise; the same seed gives the same mesh on every platform.
+    Args:
+        subdivisions: int in [0, 10], default 3. Rounds of 1-to-4 triangle splitting: 10 * 4**s
+            + 2 vertices (s=5: 10,242; s=7: 163,842; s=8: 655,362) and 20 * 4**s faces.
+        noise: float >= 0, default 0.0. Each vertex's radius is multiplied by ``1 + noise * u``,
+            u uniform in [-1, 1).
+        seed: int, default 0. Seed of the noise; the same seed gives the same mesh on every
+            platform.
 
-    Returns
-    -------
-    (V, F): (N, 3) float64 positions and (M, 3) int64 faces, outward-oriented, closed.
+    Returns:
+        (V, F): (N, 3) float64 positions and (M, 3) int64 faces, outward-oriented, closed.
 
-    Raises
-    ------
-    TypeError for a non-integer ``subdivisions`` or ``seed`` or a non-number ``noise`` (bools
-    and strings are refused); ValueError for values out of range (a seed is in [0, 2**64)).
+    Raises:
+        TypeError: a non-integer ``subdivisions`` or ``seed`` or a non-number ``noise`` (bools
+            and strings are refused).
+        ValueError: values out of range (a seed is in [0, 2**64)).
     """
     return _core.icosphere(subdivisions, noise, seed)
 
@@ -52,21 +49,17 @@ def icosphere(subdivisions: int = 3, noise: float = 0.0, seed: int = 0) -> Mesh:
 def grid(n: int = 32, noise: float = 0.0, seed: int = 0) -> Mesh:
     """An open, flat ``n`` x ``n`` vertex grid on [0, 1]^2 with seeded noise in z.
 
-    Parameters
-    ----------
-    n : int in [2, 4096], default 32
-        Vertices per side: n*n vertices and 2*(n-1)**2 faces.
-    noise : float >= 0, default 0.0
-        z of each vertex is ``noise * u``, u uniform in [-1, 1).
-    seed : int, default 0
+    Args:
+        n: int in [2, 4096], default 32. Vertices per side: n*n vertices and 2*(n-1)**2 faces.
+        noise: float >= 0, default 0.0. z of each vertex is ``noise * u``, u uniform in [-1, 1).
+        seed: int, default 0.
 
-    Returns
-    -------
-    (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+    Returns:
+        (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
 
-    Raises
-    ------
-    TypeError, ValueError: as :func:`icosphere`.
+    Raises:
+        TypeError: as :func:`icosphere`.
+        ValueError: as :func:`icosphere`.
     """
     return _core.grid(n, noise, seed)
 
@@ -74,23 +67,20 @@ def grid(n: int = 32, noise: float = 0.0, seed: int = 0) -> Mesh:
 def torus(major: float = 1.0, minor: float = 0.4, segments: int = 15, tube_segments: int = 15) -> Mesh:
     """A torus (a donut) about the y axis, centred on the origin: closed, outward-oriented.
 
-    Parameters
-    ----------
-    major : float > 0, default 1.0
-        Distance from the axis to the centre of the tube.
-    minor : float in (0, major), default 0.4
-        Radius of the tube.
-    segments, tube_segments : int in [3, 4096], default 15 and 15
-        Steps around the axis and around the tube: ``segments * tube_segments`` vertices and
-        ``2 * segments * tube_segments`` faces (the defaults give Kang et al.'s donut: 450).
+    Args:
+        major: float > 0, default 1.0. Distance from the axis to the centre of the tube.
+        minor: float in (0, major), default 0.4. Radius of the tube.
+        segments: int in [3, 4096], default 15. Steps around the axis.
+        tube_segments: int in [3, 4096], default 15. Steps around the tube: ``segments *
+            tube_segments`` vertices and ``2 * segments * tube_segments`` faces (the defaults
+            give Kang et al.'s donut: 450).
 
-    Returns
-    -------
-    (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+    Returns:
+        (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
 
-    Raises
-    ------
-    TypeError for a non-number radius or a non-integer count; ValueError for values out of range.
+    Raises:
+        TypeError: a non-number radius or a non-integer count.
+        ValueError: values out of range.
     """
     R = number("major", major, 0.0, open_lo=True)
     r = number("minor", minor, 0.0, open_lo=True)
@@ -112,28 +102,23 @@ def torus(major: float = 1.0, minor: float = 0.4, segments: int = 15, tube_segme
 def lathe(profile: npt.ArrayLike, segments: int = 24) -> Mesh:
     """A surface of revolution: ``profile`` turned about the y axis.
 
-    Parameters
-    ----------
-    profile : (K, 2) array-like of float, K >= 2
-        (radius, height) points, in order along the surface. A point at radius 0 is a pole
-        (one vertex), allowed only at either end, where it closes the surface; an end at a
-        radius above 0 is left open (a boundary). Run the profile upward along the outside
-        (from the bottom pole to the top one, say) for outward-facing triangles; the reverse
-        order gives inward-facing ones.
-    segments : int in [3, 4096], default 24
-        Steps around the axis.
+    Args:
+        profile: (K, 2) array-like of float, K >= 2. (radius, height) points, in order along the
+            surface. A point at radius 0 is a pole (one vertex), allowed only at either end, where
+            it closes the surface; an end at a radius above 0 is left open (a boundary). Run the
+            profile upward along the outside (from the bottom pole to the top one, say) for
+            outward-facing triangles; the reverse order gives inward-facing ones.
+        segments: int in [3, 4096], default 24. Steps around the axis.
 
-    Returns
-    -------
-    (V, F): (N, 3) float64 positions and (M, 3) int64 faces: ``segments`` vertices per point
-    of the profile (one at a pole); ``2 * segments`` faces per step of the profile, ``segments``
-    for a step that ends at a pole. Closed when both ends are poles.
+    Returns:
+        (V, F): (N, 3) float64 positions and (M, 3) int64 faces: ``segments`` vertices per point
+        of the profile (one at a pole); ``2 * segments`` faces per step of the profile, ``segments``
+        for a step that ends at a pole. Closed when both ends are poles.
 
-    Raises
-    ------
-    TypeError when ``profile`` is not numbers or ``segments`` not an int; ValueError for a
-    profile of the wrong shape, with non-finite or negative radii, a pole inside it, or two
-    equal points in a row, and for ``segments`` out of range.
+    Raises:
+        TypeError: ``profile`` is not numbers or ``segments`` not an int.
+        ValueError: a profile of the wrong shape, with non-finite or negative radii, a pole
+            inside it, or two equal points in a row, or ``segments`` out of range.
     """
     try:
         P = np.asarray(profile)
@@ -186,15 +171,12 @@ def pawn(segments: int = 24) -> Mesh:
     """A chess pawn (base, collar and head) made with :func:`lathe`: closed, outward-oriented,
     standing on y = 0, 1.08 high, base radius 0.5.
 
-    Parameters
-    ----------
-    segments : int in [3, 4096], default 24
-        Steps around the axis: ``20 * segments`` faces (the default gives Kang et al.'s chess
-        piece: 480) and ``10 * segments + 2`` vertices.
+    Args:
+        segments: int in [3, 4096], default 24. Steps around the axis: ``20 * segments`` faces
+            (the default gives Kang et al.'s chess piece: 480) and ``10 * segments + 2`` vertices.
 
-    Returns
-    -------
-    (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+    Returns:
+        (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
     """
     return lathe(_PAWN_PROFILE, integer("segments", segments, 3, 4096))
 
@@ -204,17 +186,14 @@ def uv_sphere(segments: int = 12, rings: int = 12) -> Mesh:
     outward-oriented. The icosphere (:func:`icosphere`) has more even triangles; this is the
     sphere of many older papers.
 
-    Parameters
-    ----------
-    segments : int in [3, 4096], default 12
-        Steps of longitude.
-    rings : int in [2, 4096], default 12
-        Bands of latitude from pole to pole: ``2 * segments * (rings - 1)`` faces (the defaults
-        give Kang et al.'s sphere: 264) and ``segments * (rings - 1) + 2`` vertices.
+    Args:
+        segments: int in [3, 4096], default 12. Steps of longitude.
+        rings: int in [2, 4096], default 12. Bands of latitude from pole to pole: ``2 * segments
+            * (rings - 1)`` faces (the defaults give Kang et al.'s sphere: 264) and ``segments *
+            (rings - 1) + 2`` vertices.
 
-    Returns
-    -------
-    (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+    Returns:
+        (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
     """
     n = integer("segments", segments, 3, 4096)
     rings = integer("rings", rings, 2, 4096)
@@ -238,14 +217,12 @@ def teapot(subdivisions: int = 4) -> Mesh:
     without being joined to it. Each part is consistently oriented, facing outward; no edge
     has more than two faces.
 
-    Parameters
-    ----------
-    subdivisions : int in [2, 64], default 4
-        (At 1 the handle and spout would fold onto themselves.)
+    Args:
+        subdivisions: int in [2, 64], default 4. (At 1 the handle and spout would fold onto
+            themselves.)
 
-    Returns
-    -------
-    (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
+    Returns:
+        (V, F): (N, 3) float64 positions and (M, 3) int64 faces.
     """
     return teapot_mesh(integer("subdivisions", subdivisions, 2, 64))
 

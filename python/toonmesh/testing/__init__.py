@@ -218,18 +218,20 @@ def mesh_difference(actual: Any, expected: Any) -> MeshDifference:
     """How far each vertex of ``actual`` is from the same vertex of ``expected``.
 
     Args:
-        actual, expected: meshes with the same number of vertices, each a ``(vertices, faces)``
-            pair, an object with ``vertices`` and ``faces`` (a ``trimesh.Trimesh``), or just
-            the (N, 3) positions; positions of any real dtype (compared in float64), finite.
-            Faces are not looked at here (:func:`assert_mesh_close` checks them).
+        actual: a mesh: a ``(vertices, faces)`` pair, an object with ``vertices`` and
+            ``faces`` (a ``trimesh.Trimesh``), or just the (N, 3) positions; positions of any
+            real dtype (compared in float64), finite. Faces are not looked at here
+            (:func:`assert_mesh_close` checks them).
+        expected: a mesh as ``actual``, with the same number of vertices.
 
     Returns:
         :class:`MeshDifference`: distances in the mesh's units, and the largest relative to the
         expected mesh's bounding-box diagonal (so the same for the mesh at any scale).
 
     Raises:
-        TypeError, ValueError, IndexError: an argument that is not a mesh, naming it;
-        ValueError naming both when their vertex counts differ.
+        TypeError: an argument that is not a mesh, naming it.
+        ValueError: likewise, or vertex counts that differ (naming both).
+        IndexError: likewise.
     """
     __tracebackhide__ = True  # pytest shows the caller's line
     V, _ = _mesh("actual", actual)
@@ -290,9 +292,10 @@ def assert_mesh_close(
     order of the rows and any rotation of a face's corners.
 
     Args:
-        actual, expected: each a ``(vertices, faces)`` pair, an object with ``vertices`` and
-            ``faces`` (a ``trimesh.Trimesh``), or (N, 3) positions alone; positions of any real
-            dtype, finite; faces (M, 3) integer indices.
+        actual: a ``(vertices, faces)`` pair, an object with ``vertices`` and ``faces`` (a
+            ``trimesh.Trimesh``), or (N, 3) positions alone; positions of any real dtype,
+            finite; faces (M, 3) integer indices.
+        expected: a mesh as ``actual``.
         rtol: float >= 0, default :data:`MESH_RTOL` (1e-6): the tolerance as a share of the
             expected mesh's bounding-box diagonal.
         atol: float >= 0, default 0: an absolute tolerance added, in the mesh's units.
@@ -413,9 +416,10 @@ def image_difference(actual: Any, expected: Any, *, levels: int = IMAGE_LEVELS) 
     """How two images of the same size differ, in 8-bit levels.
 
     Args:
-        actual, expected: a :class:`toonmesh.RenderResult` (its ``color``, sRGB) or an image
-            array: (H, W) or (H, W, C) with C in 1..4 channels, of uint8 levels, other integers
-            in [0, 255], bools (0 or 255) or floats in [0, 1] (255 levels, rounded).
+        actual: a :class:`toonmesh.RenderResult` (its ``color``, sRGB) or an image array:
+            (H, W) or (H, W, C) with C in 1..4 channels, of uint8 levels, other integers in
+            [0, 255], bools (0 or 255) or floats in [0, 1] (255 levels, rounded).
+        expected: an image as ``actual``, of the same size.
         levels: int in [0, 255], default :data:`IMAGE_LEVELS` (8): a pixel counts as
             differing when one of its channels differs by more.
 
@@ -447,7 +451,8 @@ def assert_images_close(
     asks for the same bits.
 
     Args:
-        actual, expected: as in :func:`image_difference` (renders or image arrays).
+        actual: as in :func:`image_difference` (a render or an image array).
+        expected: as in :func:`image_difference`.
         levels: int in [0, 255], default :data:`IMAGE_LEVELS`.
         share: float in [0, 1], default :data:`IMAGE_SHARE` (0.001).
 
@@ -564,10 +569,11 @@ def drawing_difference(actual: Any, expected: Any, *, pixels: float = LINE_PIXEL
     split into strokes and in which order they are drawn do not count.
 
     Args:
-        actual, expected: a :class:`toonmesh.RenderResult` rendered with the ``lines`` output
-            (its :meth:`~toonmesh.RenderResult.svg`), an SVG document (str: polylines,
-            polygons, lines and paths, one group per kind), or a list of (K, 2) arrays of pixel
+        actual: a :class:`toonmesh.RenderResult` rendered with the ``lines`` output (its
+            :meth:`~toonmesh.RenderResult.svg`), an SVG document (str: polylines, polygons,
+            lines and paths, one group per kind), or a list of (K, 2) arrays of pixel
             coordinates (one kind).
+        expected: a drawing as ``actual``.
         pixels: float in [0, 1e6], default :data:`LINE_PIXELS` (1.0): a point counts as
             differing when it lies farther than this from the other drawing.
 
@@ -590,7 +596,8 @@ def assert_drawings_close(
     kind's style (colour, width) must be the same.
 
     Args:
-        actual, expected: as in :func:`drawing_difference`.
+        actual: as in :func:`drawing_difference`.
+        expected: as in :func:`drawing_difference`.
         pixels: float in [0, 1e6], default :data:`LINE_PIXELS` (1.0 pixel).
         share: float in [0, 1], default :data:`LINE_SHARE` (0.005).
 

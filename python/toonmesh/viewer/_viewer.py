@@ -327,20 +327,31 @@ class Viewer:
     """An interactive toon render of a mesh in Jupyter, rendered by toonmesh in the kernel.
 
     ``Viewer(V, F, **render keywords)`` takes the scene as :func:`toonmesh.render` does (one
-    function reads it for both): ``vertices`` (N, 3) float32/float64 with ``faces`` (M, 3)
-    int32/int64/uint32, a ``trimesh.Trimesh``, a mesh file's path, a ``trimesh.Scene``, a
-    :class:`toonmesh.Mesh` or a list of meshes; ``normals`` and ``smooth_iterations`` as in
-    :func:`toonmesh.render`; any keyword of :class:`toonmesh.RenderOptions` (``material``,
-    ``lights``, ``outlines``, ``camera``, ...). ``width`` and ``height`` are the view's size in
-    layout (CSS) pixels: without a width the view fits the notebook cell's width (512 until the
-    browser reports it), the height defaults to 512; the frames are rendered at the screen's
-    pixel ratio (``pixel_ratio``: given, or the browser's device pixel ratio), so on a 2x screen
-    they have twice the pixels each way with every length in pixels doubled: the same picture,
-    sharp. Full screen fills the screen while it lasts.
-    With no ``material``, meshes that carry colours or a texture are drawn as
-    :func:`toonmesh.render` draws them (under a white material), so the view shows what
-    ``tm.render`` shows. The meshes are uploaded once, to ``renderer`` (default: the process's
-    shared renderer for ``backend``).
+    function reads it for both). ``width`` and ``height`` are the view's size in layout (CSS)
+    pixels: without a width the view fits the notebook cell's width (512 until the browser
+    reports it), the height defaults to 512; the frames are rendered at the screen's pixel
+    ratio (``pixel_ratio``: given, or the browser's device pixel ratio), so on a 2x screen they
+    have twice the pixels each way with every length in pixels doubled: the same picture,
+    sharp. Full screen fills the screen while it lasts. With no ``material``, meshes that carry
+    colours or a texture are drawn as :func:`toonmesh.render` draws them (under a white
+    material), so the view shows what ``tm.render`` shows.
+
+    Args:
+        vertices: (N, 3) float32/float64 with ``faces``, a ``trimesh.Trimesh``, a mesh file's
+            path, a ``trimesh.Scene``, a :class:`toonmesh.Mesh` or a list of meshes.
+        faces: (M, 3) int32/int64/uint32 with ``vertices`` given as an array; else None.
+        normals: as in :func:`toonmesh.render`.
+        smooth_iterations: as in :func:`toonmesh.render`.
+        backend: as in :class:`toonmesh.Renderer`.
+        renderer: the renderer the meshes are uploaded to, once; None (default): the process's
+            shared renderer for ``backend``.
+        controls: show ipywidgets controls beside the frame; default False (see below).
+        image_format: of the full-size frames, ``"png"`` (default) or ``"jpeg"``.
+        drag_scale: the size of the frames drawn while the pointer moves, as a fraction of the
+            full size (0.05 to 1, default 0.5; the browser draws them smaller where it cannot
+            keep up, the kernel's are sent as JPEG).
+        **options: the render keywords (:class:`toonmesh.RenderKeywords`: ``material``,
+            ``lights``, ``outlines``, ``camera``, ``width``, ``height``, ...).
 
     In the browser: drag to orbit, wheel to zoom (once the view has focus: click it; otherwise
     the wheel scrolls the notebook), shift-drag or right-drag to pan, double-click to frame the
@@ -353,16 +364,12 @@ class Viewer:
     ``parts`` and ``visible`` (show or hide parts), and every render setting as an attribute
     that re-renders when set (``v.outlines = "both"``, ``v.width = 640``).
 
-    Viewer options: ``controls=True`` shows ipywidgets controls beside the frame, one per field
-    of the material, the first light, the outlines (and each line kind's style), the camera's
-    field of view, the paper and the other render options, in collapsible sections (the
-    material's open), each following the core's description of the field (its kind, bounds and
-    choices) and showing the settings as they are now (``controls`` is that column as a widget,
-    to place yourself);
-    ``image_format`` of the full-size frames, ``"png"`` (default) or ``"jpeg"``; ``drag_scale``,
-    the size of the frames drawn while the pointer moves, as a fraction of the full size
-    (0.05 to 1, default 0.5; the browser draws them smaller where it cannot keep up, the kernel's
-    are sent as JPEG).
+    ``controls=True`` shows ipywidgets controls beside the frame, one per field of the
+    material, the first light, the outlines (and each line kind's style), the camera's field of
+    view, the paper and the other render options, in collapsible sections (the material's
+    open), each following the core's description of the field (its kind, bounds and choices)
+    and showing the settings as they are now (``controls`` is that column as a widget, to place
+    yourself).
 
     While the pointer moves, the browser draws the drafts in WebGL2 from toonmesh's own shaders:
     the bands, tones, colours and texture, dithering, rim light, hatching, image-space ink and
@@ -620,23 +627,36 @@ class Viewer:
             self._view = view
 
     def orbit(self, dx: float, dy: float) -> None:
-        """Orbits about the target as a drag of ``dx``, ``dy`` pixels would (x right, y down; a
-        drag over the frame's height turns half way round; each at most 1e6 either way), then
-        renders the full-size frame."""
+        """Orbits about the target as a drag would, then renders the full-size frame.
+
+        Args:
+            dx: pixels dragged right (a drag over the frame's height turns half way round); at
+                most 1e6 either way.
+            dy: pixels dragged down; at most 1e6 either way.
+        """
         self._check_open()
         self._move("orbit", _pixels("dx", dx), _pixels("dy", dy))
         self._show(draft=False)
 
     def pan(self, dx: float, dy: float) -> None:
-        """Moves the view as a shift-drag of ``dx``, ``dy`` pixels would (the scene follows the
-        pointer; each at most 1e6 either way), then renders the full-size frame."""
+        """Moves the view as a shift-drag would (the scene follows the pointer), then renders the
+        full-size frame.
+
+        Args:
+            dx: pixels dragged right; at most 1e6 either way.
+            dy: pixels dragged down; at most 1e6 either way.
+        """
         self._check_open()
         self._move("pan", _pixels("dx", dx), _pixels("dy", dy))
         self._show(draft=False)
 
     def zoom(self, factor: float) -> None:
-        """Zooms in by ``factor`` (0.001 to 1000; 2 halves the distance to the target or the
-        orthographic view's height, 0.5 doubles it), then renders the full-size frame."""
+        """Zooms in by ``factor``, then renders the full-size frame.
+
+        Args:
+            factor: 0.001 to 1000; 2 halves the distance to the target or the orthographic view's
+                height, 0.5 doubles it.
+        """
         self._check_open()
         factor = _number("factor", factor, 1.0 / _MAX_ZOOM, _MAX_ZOOM)
         self._move("zoom", factor, 0.0)
@@ -656,11 +676,14 @@ class Viewer:
         self._show(draft=False)
 
     def view_from(self, axis: str) -> None:
-        """Frames the scene seen from the side ``axis`` names (``"+x"``, ``"-x"``, ``"+y"``,
-        ``"-y"``, ``"+z"`` or ``"-z"``: the eye on that side, looking back along the axis; the
-        toolbar's axis buttons), keeping the projection and the world's up; from the up axis's
-        ends the view stays a degree short of the pole, as orbiting does. Renders the full-size
-        frame."""
+        """Frames the scene seen from the side ``axis`` names (the toolbar's axis buttons),
+        keeping the projection and the world's up, and renders the full-size frame. From the up
+        axis's ends the view stays a degree short of the pole, as orbiting does.
+
+        Args:
+            axis: ``"+x"``, ``"-x"``, ``"+y"``, ``"-y"``, ``"+z"`` or ``"-z"``: the eye on that
+                side, looking back along the axis.
+        """
         self._check_open()
         self._view_from(_axis(axis))
         self._show(draft=False)
@@ -769,8 +792,12 @@ class Viewer:
         return self._options.replace(camera=self.camera)
 
     def set(self, **options: "Unpack[RenderKeywords]") -> None:
-        """Changes several render settings at once, then renders once; where the settings or
-        the render are refused, the viewer keeps the settings it had."""
+        """Changes several render settings at once, then renders once; where the settings or the
+        render are refused, the viewer keeps the settings it had.
+
+        Args:
+            **options: render keywords (:class:`toonmesh.RenderKeywords`).
+        """
         self._check_open()
         if "outputs" in options:
             raise TypeError("outputs: a Viewer shows the colour image; use snapshot(outputs=...) for others")
@@ -888,16 +915,23 @@ class Viewer:
         self._widget.show_draft(spec, blob, self._moves())
 
     def to_html(self, path: "str | os.PathLike[str]") -> str:
-        """Writes a standalone HTML page to ``path`` that orbits the scene from the current view,
-        drawn in the browser by WebGL2 with toonmesh's own shaders (translated to GLSL ES 3.00 by
-        the core; the draft the viewer shows while the pointer moves: the toon shading, the
-        mesh's colours and texture, hatching, image-space ink and mesh-space lines; smooth
+        """Writes a standalone HTML page that orbits the scene from the current view.
+
+        The page draws it in the browser by WebGL2 with toonmesh's own shaders (translated to GLSL
+        ES 3.00 by the core; the draft the viewer shows while the pointer moves: the toon shading,
+        the mesh's colours and texture, hatching, image-space ink and mesh-space lines; smooth
         contours, shadows, paper and supersampling are left out, and the page's tooltip says
-        which). Everything is
-        inlined (the script, the shaders, the mesh as base64): the page needs no kernel and no
-        network. Drag to orbit, shift-drag to pan, wheel to zoom, double-click for the first
-        view. The page's root element has the ``toonmesh-viewer`` class and counts the frames
-        drawn in ``data-frames-shown``. Returns the path written, as a string."""
+        which). Everything is inlined (the script, the shaders, the mesh as base64): the page needs
+        no kernel and no network. Drag to orbit, shift-drag to pan, wheel to zoom, double-click for
+        the first view. The page's root element has the ``toonmesh-viewer`` class and counts the
+        frames drawn in ``data-frames-shown``.
+
+        Args:
+            path: the HTML file to write (str or os.PathLike).
+
+        Returns:
+            The path written, as a string.
+        """
         self._check_open()
         target = os.fspath(path) if isinstance(path, (str, os.PathLike)) else None
         if not isinstance(target, str):
@@ -911,10 +945,17 @@ class Viewer:
         return target
 
     def snapshot(self, **options: "Unpack[RenderKeywords]") -> RenderResult:
-        """The current view rendered at full quality as a :class:`toonmesh.RenderResult`;
-        ``options`` override the viewer's settings for this render only (``width``, ``height``
-        in output pixels, ``supersample``, ``outputs``, ...; by default the frame's size and
-        pixel ratio, so ``pixel_ratio=1`` for widths as ``tm.render`` draws them)."""
+        """The current view rendered at full quality.
+
+        Args:
+            **options: render keywords (:class:`toonmesh.RenderKeywords`) that override the
+                viewer's settings for this render only (``width``, ``height`` in output pixels,
+                ``supersample``, ``outputs``, ...; by default the frame's size and pixel ratio, so
+                ``pixel_ratio=1`` for widths as ``tm.render`` draws them).
+
+        Returns:
+            The render, a :class:`toonmesh.RenderResult`.
+        """
         self._check_open()
         with self._render_lock:
             opts = self.options.replace(**options)
@@ -925,13 +966,21 @@ class Viewer:
             return result
 
     def turntable(self, path: "str | os.PathLike[str]", seconds: float = DEFAULT_SECONDS, fps: int = DEFAULT_FPS) -> str:
-        """Writes a turn of the view about its target and the world's up (from the current view,
-        all the way round, ``seconds`` long at ``fps`` frames per second: ``round(seconds * fps)``
-        frames, at least one, at the viewer's size and settings) to ``path``, a ``.gif`` (Pillow),
-        ``.mp4`` (H.264) or ``.webm`` (VP9; both through imageio-ffmpeg, width and height even),
-        with a progress bar while it is written (:meth:`toonmesh.RenderStack.save`). The views are
-        drawn by the renderer's many-view render (:meth:`toonmesh.Renderer.render_many`). Returns
-        the path written, as a string. ``seconds`` in (0, 600], ``fps`` an int in [1, 60]."""
+        """Writes a turn of the view about its target and the world's up, from the current view
+        all the way round, at the viewer's size and settings, with a progress bar while it is
+        written (:meth:`toonmesh.RenderStack.save`). The views are drawn by the renderer's
+        many-view render (:meth:`toonmesh.Renderer.render_many`).
+
+        Args:
+            path: a ``.gif`` (Pillow), ``.mp4`` (H.264) or ``.webm`` (VP9; both through
+                imageio-ffmpeg, width and height even).
+            seconds: the turn's length, in (0, 600]; default 4.
+            fps: frames per second, an int in [1, 60]; default 24. The video has
+                ``round(seconds * fps)`` frames, at least one.
+
+        Returns:
+            The path written, as a string.
+        """
         self._check_open()
         kind = video_kind(path)
         seconds = _number("seconds", seconds, 0.0, 600.0)

@@ -46,11 +46,13 @@ impl Material {
     }
 }
 
-/// kang_table() -> ndarray
+/// Kang et al.'s 256-to-3-level lookup table, for ``Material.lut``.
 ///
-/// Kang et al.'s 256-to-3-level lookup table as (256,) float64: 0.3, 0.65 and 1.0 in thirds.
 /// The paper maps 256 Phong intensities to three tones without giving numbers; these split the
 /// range in thirds.
+///
+/// Returns:
+///     (256,) float64: 0.3, 0.65 and 1.0 in thirds.
 #[pyfunction]
 pub fn kang_table(py: Python<'_>) -> Bound<'_, numpy::PyArray1<f64>> {
     use numpy::IntoPyArray;
