@@ -4,6 +4,7 @@ reference documents every public name, and a browser shows its pages without a b
 
 from __future__ import annotations
 
+import html
 import importlib.util
 import os
 import re
@@ -310,6 +311,31 @@ def test_the_api_reference_documents_every_public_function_class_and_method(site
         assert 'href="#render-keywords"' in part, method
 
 
+def test_the_guides_read_in_short_paragraphs_with_code_that_fits_the_page(site):
+    """No paragraph of a guide or a measurement page runs over PARAGRAPH_WORDS words (a list
+    without a blank line before it collapses into one), and at most 5% of their code lines run
+    past CODE_COLUMNS characters (where a comment scrolls out of sight)."""
+    metrics = _script("docs_metrics")
+    figures = metrics.measure(site)
+    print({key: figures[key] for key in ("code_lines", "wide_code_lines", "wide_by_page")})
+    assert figures["long_paragraphs"] == [], figures["long_paragraphs"]
+    assert figures["code_lines"] > 500
+    assert figures["wide_code_lines"] <= 0.05 * figures["code_lines"], figures["wide_by_page"]
+
+
+def test_a_user_finds_the_tasks_by_their_headings(site):
+    """What a user comes to do is a heading of a guide, and the home page links to each."""
+    headings: Dict[str, str] = {}
+    for page in site.glob("*.html"):
+        for _, text in re.findall(r"<h([1-3])[^>]*>(.*?)</h\1>", page.read_text(encoding="utf-8"), re.S):
+            headings[html.unescape(re.sub(r"<[^>]+>", "", text)).replace("¶", "").strip()] = page.name
+    home = (site / "index.html").read_text(encoding="utf-8")
+    for task in ("Render your own file", "SVG for a pen plotter", "Use it in Jupyter", "Hatching and shadows"):
+        assert task in headings, (task, sorted(headings))
+        anchor = re.sub(r"[^a-z0-9 -]", "", task.lower()).replace(" ", "-")
+        assert f'href="{headings[task]}#{anchor}"' in home, task
+
+
 def test_the_home_page_and_a_gallery_page_show_every_picture_in_a_browser(site, tmp_path):
     sync_api = need("playwright.sync_api")
     executable = chromium()
@@ -318,11 +344,17 @@ def test_the_home_page_and_a_gallery_page_show_every_picture_in_a_browser(site, 
         browser = p.chromium.launch(executable_path=executable, args=["--no-sandbox"])
         try:
             page = browser.new_page(viewport={"width": 1280, "height": 900})
-            for name in ("index.html", "gallery/index.html", "gallery/papers.html"):
+            for name in ("index.html", "api/rendering.html", "gallery/index.html", "gallery/still_life.html",
+                         "gallery/papers.html"):
                 page.goto((site / name).as_uri())
                 page.wait_for_load_state("load")
                 images = page.evaluate("Array.from(document.images).map(i => [i.src, i.complete, i.naturalWidth])")
-                assert len(images) >= 1, name
+                if name.startswith("api/"):
+                    # an API page: its summary table and render's typed entry are on screen
+                    assert page.locator(".tm-api-table table").first.is_visible(), name
+                    assert page.locator("[id='toonmesh.render']").is_visible(), name
+                else:
+                    assert len(images) >= 1, name
                 broken = [src for src, complete, width in images if not complete or width == 0]
                 assert broken == [], (name, broken)
                 shot = tmp_path / (name.replace("/", "-").replace(".html", ".png"))
