@@ -271,6 +271,13 @@ PROFILES = (("list of pairs", [(0, 0), (1, 0.5), (0, 1)], OK), ("open ends", [(1
             ("complex", np.array([[0, 0], [1j, 1], [0, 2]]), TypeError),
             ("strings", [("a", "b"), ("c", "d")], TypeError), ("ragged", [(0, 0), (1,), (0, 2)], TypeError),
             ("a string", "profile", TypeError))
+# shapes.box: a corner is 3 finite numbers (hi's legal probes sit above lo=(-1, -1, -1), lo's
+# below hi=(1, 1, 1) once negated)
+CORNERS = (("tuple", (1, 2, 3), OK), ("float32", np.array([1, 1, 1], np.float32), OK),
+           ("two numbers", (1.0, 1.0), TypeError), ("nan", (1.0, np.nan, 1.0), ValueError),
+           ("inf", (1.0, 1.0, np.inf), ValueError), ("bools", (True, True, True), TypeError),
+           ("strings", ("a", "b", "c"), TypeError), ("ragged", [(1, 2), 3], TypeError),
+           ("a string", "box", TypeError))
 NORMAL_BUF = np.dstack([IMG, 1 - IMG, np.ones_like(IMG)]).astype(np.float32)
 DEPTH_BUF = 1.0 + IMG
 
@@ -357,6 +364,9 @@ CASES += [
           Param("minor", Number(0.0, 1.0, open_lo=True, open_hi=True)), SEGMENTS._replace(name="tube_segments")]),
     Case("shapes.lathe", tm.shapes.lathe, dict(profile=[(0.0, 0.0), (1.0, 0.5), (0.0, 1.0)], segments=5),
          [Param("profile", PROFILES), SEGMENTS]),
+    Case("shapes.box", tm.shapes.box, dict(lo=(-1.0, -1.0, -1.0), hi=(1.0, 1.0, 1.0)),
+         [Param("lo", tuple((label, -np.asarray(v) if want is OK else v, want) for label, v, want in CORNERS)),
+          Param("hi", CORNERS)]),
     Case("shapes.pawn", tm.shapes.pawn, dict(segments=5), [SEGMENTS]),
     Case("shapes.uv_sphere", tm.shapes.uv_sphere, dict(segments=5, rings=4),
          [SEGMENTS, Param("rings", Integer(2, 4096, slow_above=64))]),
