@@ -114,11 +114,8 @@ def undocumented(python_dir: Path) -> List[str]:
             if name.startswith("_"):
                 continue
             if member.is_alias:
-                try:
-                    member = member.final_target
-                except (griffe.AliasResolutionError, griffe.CyclicAliasError):
-                    continue
-                if not member.path.startswith("toonmesh"):
+                member = _target(member)
+                if member is None or not member.path.startswith("toonmesh"):
                     continue  # imported from elsewhere (numpy, typing): not toonmesh's to document
             if obj.is_class and member.parent is not obj:
                 continue  # inherited

@@ -30,27 +30,23 @@ def _image(k: int, value: object) -> np.ndarray:
 def panels(images: Sequence[np.ndarray], labels: Sequence[str], columns: Optional[int] = None) -> np.ndarray:
     """The images in rows of ``columns``, each with its label at its top left, as one image.
 
-    Parameters
-    ----------
-    images : sequence of (H, W, 3) or (H, W, 4) uint8 arrays, all of one H and W
-        The panels, in reading order (``RenderResult.color`` is one); alpha is dropped.
-    labels : sequence of str, one per image
-        What each panel shows, drawn in black on a white box at its top left
-        (``LABEL_SIZE`` pixels high; "" for none).
-    columns : int >= 1, default None
-        Panels per row; None puts them all in one row. A last row that is not full is
-        filled with white.
+    Args:
+        images: sequence of (H, W, 3) or (H, W, 4) uint8 arrays, all of one H and W. The
+            panels, in reading order (``RenderResult.color`` is one); alpha is dropped.
+        labels: sequence of str, one per image. What each panel shows, drawn in black on a
+            white box at its top left (``LABEL_SIZE`` pixels high; "" for none).
+        columns: int >= 1, default None. Panels per row; None puts them all in one row. A last
+            row that is not full is filled with white.
 
-    Returns
-    -------
-    (rows * H, columns * W, 3) uint8 array, RGB; the inputs are not modified.
+    Returns:
+        (rows * H, columns * W, 3) uint8 array, RGB; the inputs are not modified.
 
-    Raises
-    ------
-    TypeError for an image that is not a uint8 array, a label that is not a str or a
-    ``columns`` that is not an int; ValueError for no images, images of other shapes or
-    sizes, as many labels as images missing, or ``columns`` below 1. ImportError without
-    Pillow.
+    Raises:
+        TypeError: an image that is not a uint8 array, a label that is not a str or a
+            ``columns`` that is not an int.
+        ValueError: no images, images of other shapes or sizes, not one label per image, or
+            ``columns`` below 1.
+        ImportError: Pillow is not installed.
     """
     try:
         from PIL import Image, ImageDraw, ImageFont

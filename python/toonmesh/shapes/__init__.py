@@ -235,20 +235,18 @@ _BOX_FACES = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
 def box(lo: npt.ArrayLike = (-0.5, -0.5, -0.5), hi: npt.ArrayLike = (0.5, 0.5, 0.5)) -> Mesh:
     """An axis-aligned box from corner ``lo`` to corner ``hi``: closed, outward-oriented.
 
-    Parameters
-    ----------
-    lo, hi : 3 numbers each, default the unit cube about the origin
-        The smallest and the largest corner (x, y, z); ``hi`` must exceed ``lo`` on every axis.
+    Args:
+        lo: 3 numbers (x, y, z), default (-0.5, -0.5, -0.5). The smallest corner.
+        hi: 3 numbers (x, y, z), default (0.5, 0.5, 0.5). The largest corner: it must exceed
+            ``lo`` on every axis.
 
-    Returns
-    -------
-    (V, F): (8, 3) float64 corners (corner k has x from ``hi`` when bit 4 of k is set, y bit
-    2, z bit 1) and (12, 3) int64 faces, two per side.
+    Returns:
+        (V, F): (8, 3) float64 corners (corner k has x from ``hi`` when bit 4 of k is set, y bit
+        2, z bit 1) and (12, 3) int64 faces, two per side.
 
-    Raises
-    ------
-    TypeError when a corner is not 3 numbers; ValueError for a corner that is not finite
-    or a ``hi`` not above ``lo`` on an axis.
+    Raises:
+        TypeError: a corner that is not 3 numbers.
+        ValueError: a corner that is not finite, or a ``hi`` not above ``lo`` on an axis.
     """
     corners = []
     for name, value in (("lo", lo), ("hi", hi)):
